@@ -1,0 +1,31 @@
+#pragma once
+
+#include <QString>
+#include <QVector>
+
+namespace opentop {
+
+// A code a device reports (alarm, warning, communication error) with what an engineer needs.
+struct CodeEntry
+{
+    qint64 code = 0;
+    QString panel;     // what the drive's display shows, e.g. "AL00B", "WR017"
+    QString name;
+    QString reset;     // how it is cleared: "alarm-reset", "power", "auto", "none"
+    QString resetText; // the same, for people
+    QString cause;
+    QString remedy;
+    QString led;       // DBU MONITOR LED colour while active: red, purple, blue
+    int exceptionCode = 0; // communication errors: the Modbus exception code that goes with it
+};
+
+struct CodeTable
+{
+    QString id;
+    QString label;
+    QVector<CodeEntry> entries;
+
+    const CodeEntry* find(qint64 code) const;
+};
+
+} // namespace opentop

@@ -1,0 +1,11 @@
+// GoogleTest entry point for non-GUI tests: a QCoreApplication so that Qt event loops,
+// queued signals and resources work.
+#include <QCoreApplication>
+#include <gtest/gtest.h>
+
+int main(int argc, char** argv)
+{
+    QCoreApplication app(argc, argv);
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}

@@ -1,0 +1,66 @@
+#pragma once
+
+#include "ConnectionSettings.h"
+#include "ModbusRequest.h"
+#include "ModbusResult.h"
+
+#include <QObject>
+#include <functional>
+#include <memory>
+
+namespace opentop {
+
+class ModbusBackend;
+class TrafficLog;
+class ModbusClientWorker;
+
+// The bus as the rest of the program sees it. A worker thread owns the backend (and so the
+// libmodbus context); callers queue requests and get results asynchronously. User requests
+// overtake queued polling. Destruction stops the worker within a bounded time.
+class ModbusClient : public QObject
+{
+    Q_OBJECT
+public:
+    using RequestId = quint64;
+    using Callback = std::function<void(const ModbusResult&)>;
+
+    ModbusClient(std::unique_ptr<ModbusBackend> backend, const ConnectionSettings& settings,
+                 QObject* parent = nullptr);
+    ~ModbusClient() override;
+
+    const ConnectionSettings& settings() const { return m_settings; }
+    QString describe() const;
+
+    // Opens the connection on the worker; the result arrives as opened().
+    void open();
+    // Blocking open for non-GUI threads; returns an error text, empty on success.
+    QString openBlocking();
+    void close();
+    bool isOpen() const;
+
+    // Queues a request. `callback` runs on `context`'s thread; finished() is emitted as well.
+    RequestId submit(const ModbusRequest& request, QObject* context = nullptr,
+                     Callback callback = {});
+    // Blocking convenience for the command line and tests. Never call it on the GUI thread.
+    ModbusResult execute(const ModbusRequest& request);
+    // Removes a request that has not been sent yet; true when it was still queued. A request on
+    // the wire completes (a half-sent frame would leave the bus in an unknown state).
+    bool cancel(RequestId id);
+    void cancelAll();
+    int pendingCount() const;
+
+signals:
+    void opened(bool ok, const QString& error);
+    void closed();
+    void finished(quint64 id, const opentop::ModbusResult& result);
+    // The port failed while in use (e.g. USB adapter unplugged).
+    void connectionLost(const QString& error);
+
+private:
+    ConnectionSettings m_settings;
+    std::unique_ptr<ModbusClientWorker> m_worker;
+};
+
+} // namespace opentop
+
+Q_DECLARE_METATYPE(opentop::ModbusResult)

@@ -1,0 +1,48 @@
+#pragma once
+
+#include "TrafficEntry.h"
+
+#include <QMutex>
+#include <QObject>
+#include <QVector>
+#include <deque>
+#include <functional>
+
+namespace opentop {
+
+struct ModbusRequest;
+
+// Thread-safe record of every frame sent and received. Backends append from the worker thread;
+// the GUI listens to entryAdded (queued), the command line prints with a sink.
+class TrafficLog : public QObject
+{
+    Q_OBJECT
+public:
+    // Adds meaning to a frame's summary (e.g. parameter names from a profile); set by the model.
+    using Describer = std::function<QString(const TrafficEntry& entry, const ModbusRequest* request)>;
+
+    explicit TrafficLog(int capacity = 20000, QObject* parent = nullptr);
+
+    void append(TrafficEntry entry, const ModbusRequest* request = nullptr);
+    QVector<TrafficEntry> entries() const;
+    void clear();
+    int capacity() const { return m_capacity; }
+    void setDescriber(Describer describer);
+    // Called for every entry on the appending thread (e.g. --trace to stderr).
+    void setSink(std::function<void(const TrafficEntry&)> sink);
+
+signals:
+    void entryAdded(const opentop::TrafficEntry& entry);
+
+private:
+    mutable QMutex m_mutex;
+    std::deque<TrafficEntry> m_entries;
+    int m_capacity;
+    quint64 m_sequence = 0;
+    Describer m_describer;
+    std::function<void(const TrafficEntry&)> m_sink;
+};
+
+} // namespace opentop
+
+Q_DECLARE_METATYPE(opentop::TrafficEntry)
