@@ -9,13 +9,13 @@ namespace opentop {
 struct CodeEntry
 {
     qint64 code = 0;
-    QString panel;     // what the drive's display shows, e.g. "AL00B", "WR017"
+    QString panel; // what the drive's display shows, e.g. "AL00B", "WR017"
     QString name;
     QString reset;     // how it is cleared: "alarm-reset", "power", "auto", "none"
     QString resetText; // the same, for people
     QString cause;
     QString remedy;
-    QString led;       // DBU MONITOR LED colour while active: red, purple, blue
+    QString led;           // DBU MONITOR LED colour while active: red, purple, blue
     int exceptionCode = 0; // communication errors: the Modbus exception code that goes with it
 };
 

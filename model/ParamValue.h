@@ -8,13 +8,13 @@ namespace opentop {
 // A decoded value in all the forms callers need.
 struct ParamValue
 {
-    bool valid = false;        // false when the registers could not be decoded
+    bool valid = false; // false when the registers could not be decoded
     QVector<quint16> registers;
-    double raw = 0;            // integer types: the integer; f32: the float
-    double number = 0;         // engineering value (raw * scale)
-    QString text;              // strings: the text; enumerations: the label
-    QString error;             // why not valid, or why outside the allowed set
-    bool allowed = true;       // false when the device holds a value the profile does not allow
+    double raw = 0;      // integer types: the integer; f32: the float
+    double number = 0;   // engineering value (raw * scale)
+    QString text;        // strings: the text; enumerations: the label
+    QString error;       // why not valid, or why outside the allowed set
+    bool allowed = true; // false when the device holds a value the profile does not allow
 };
 
 } // namespace opentop

@@ -9,8 +9,22 @@ namespace opentop {
 
 struct ValueContext;
 
-enum class DataType { U16, S16, U32, S32, F32, String, Bits };
-enum class Access { ReadOnly, ReadWrite, WriteOnly };
+enum class DataType
+{
+    U16,
+    S16,
+    U32,
+    S32,
+    F32,
+    String,
+    Bits
+};
+enum class Access
+{
+    ReadOnly,
+    ReadWrite,
+    WriteOnly
+};
 
 // An enumeration code with its label. Codes are raw register values.
 struct EnumOption
@@ -40,14 +54,14 @@ struct BitField
 // What may change with the drive variant or with another parameter's value.
 struct ValueSpec
 {
-    double scale = 1.0;        // engineering = raw * scale
-    QString unit;              // "s", "r/min", "A", "%"...
-    int decimals = 0;          // shown after the point
-    QVector<ValueRange> ranges;    // allowed intervals (raw)
-    QVector<EnumOption> options;   // allowed codes with labels (also allowed beside ranges)
+    double scale = 1.0;               // engineering = raw * scale
+    QString unit;                     // "s", "r/min", "A", "%"...
+    int decimals = 0;                 // shown after the point
+    QVector<ValueRange> ranges;       // allowed intervals (raw)
+    QVector<EnumOption> options;      // allowed codes with labels (also allowed beside ranges)
     std::optional<double> defaultRaw; // factory default (raw); none when the manual gives none
-    QString defaultText;       // string parameters
-    QString note;              // short context, e.g. "PWM duty in this speed mode"
+    QString defaultText;              // string parameters
+    QString note;                     // short context, e.g. "PWM duty in this speed mode"
 };
 
 // A ValueSpec that applies when the variant is `variant`, or parameter `param` holds `equals`.
@@ -63,23 +77,23 @@ struct ValueCondition
 // Metadata only: values live in the device model, conversions in ValueCodec.
 struct ParameterMeta
 {
-    QString name;        // stable dotted name, unique in its profile: "spno2.speed"
+    QString name; // stable dotted name, unique in its profile: "spno2.speed"
     QString label;
     QString help;
-    QString group;       // id of a ProfileGroup
+    QString group; // id of a ProfileGroup
     quint16 address = 0;
     quint8 readFunction = 0;  // 3 or 4; 0 when not readable
     quint8 writeFunction = 0; // 6 or 16; 0 when not writable
     DataType type = DataType::U16;
     int registerCount = 1;
     Access access = Access::ReadWrite;
-    QString kind;        // setting | status | info | command | record | reserved
-    QString safety;      // commands only: motion | reset | erase | init | store | comm
-    QString codeTable;   // record and code registers: id of a CodeTable
-    QString storeWith;   // settings that are temporary until this command parameter is written
+    QString kind;      // setting | status | info | command | record | reserved
+    QString safety;    // commands only: motion | reset | erase | init | store | comm
+    QString codeTable; // record and code registers: id of a CodeTable
+    QString storeWith; // settings that are temporary until this command parameter is written
     QVector<BitField> bits;
-    ValueSpec spec;                      // the base spec
-    QVector<ValueCondition> conditions;  // first match overrides the base spec
+    ValueSpec spec;                     // the base spec
+    QVector<ValueCondition> conditions; // first match overrides the base spec
     bool backup = false; // part of a backup / restore (readable and writable settings)
 
     bool isReadable() const { return readFunction != 0; }
@@ -91,7 +105,7 @@ struct ParameterMeta
     // The spec in force for `context`. When it depends on a parameter whose value is not known,
     // returns the base spec and sets *unresolved to that parameter's name.
     const ValueSpec& specFor(const ValueContext& context, QString* unresolved = nullptr) const;
-    QString addressText() const; // "0x0109"
+    QString addressText() const;   // "0x0109"
     QString functionsText() const; // "03/06", "04", "06"
 };
 

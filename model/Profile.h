@@ -11,9 +11,9 @@ namespace opentop {
 
 struct ProfileVariant
 {
-    QString id;     // "dbu200"
-    QString model;  // "DBU200-D"
-    QString label;  // "DBU200-D, 24 V, 200 W, 250–3000 r/min"
+    QString id;        // "dbu200"
+    QString model;     // "DBU200-D"
+    QString label;     // "DBU200-D, 24 V, 200 W, 250–3000 r/min"
     QString nameMatch; // device name prefix that identifies this variant, if the device tells
 };
 
@@ -55,11 +55,11 @@ struct SerialDefaults
 class Profile
 {
 public:
-    QString family;      // "dbu", "dcpid"
+    QString family; // "dbu", "dcpid"
     QString name;
     QString vendor;
     QString manual;
-    QString sourceFile;  // where it was loaded from, for error messages
+    QString sourceFile; // where it was loaded from, for error messages
     SerialDefaults serial;
     int maxReadRegisters = 125;
     int maxWriteRegisters = 123;
@@ -74,7 +74,7 @@ public:
     QHash<QString, CodeTable> codeTables;
     QVector<ParameterMeta> parameters;
 
-    const ParameterMeta* parameter(const QString& name) const;
+    const ParameterMeta* parameter(const QString& parameterName) const;
     // The parameter whose registers include `address` in the read (3/4) or write space.
     const ParameterMeta* parameterAt(quint8 function, quint16 address) const;
     const ProfileVariant* variant(const QString& id) const;

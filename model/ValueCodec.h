@@ -35,7 +35,8 @@ public:
     static QVector<quint16> rawToRegisters(const ParameterMeta& meta, double raw);
     static double registersToRaw(const ParameterMeta& meta, const QVector<quint16>& registers);
     // Empty when `raw` is allowed; otherwise a message naming the allowed values.
-    static QString checkRaw(const ParameterMeta& meta, double raw, const ValueContext& context = {});
+    static QString checkRaw(const ParameterMeta& meta, double raw,
+                            const ValueContext& context = {});
     // "0 or 250–3000 r/min", "CW (0), CCW (1)", "0.5 or 2.0–30.0 s".
     static QString allowedText(const ParameterMeta& meta, const ValueContext& context = {});
     // "2.5 s", "CCW", "1500 r/min", "-3 r/min".
