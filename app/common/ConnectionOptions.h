@@ -1,0 +1,23 @@
+#pragma once
+
+#include "ConnectionSettings.h"
+
+#include <QCommandLineParser>
+#include <QString>
+#include <optional>
+
+namespace opentop {
+
+// The connection options every OpenTOP program takes (--port, --tcp, --sim, --baud, ...), and
+// their translation into ConnectionSettings with the defaults of the device family.
+class ConnectionOptions
+{
+public:
+    static void addTo(QCommandLineParser& parser);
+    // `fallbackSim`: the simulated bus to use when no connection is named (the GUI's default);
+    // empty means a connection must be named.
+    static std::optional<ConnectionSettings> fromParser(const QCommandLineParser& parser,
+                                                        const QString& fallbackSim, QString* error);
+};
+
+} // namespace opentop

@@ -1,0 +1,37 @@
+#pragma once
+
+#include <QMetaType>
+#include <QString>
+
+namespace opentop {
+
+// What a scan or identification learned about one machine number.
+struct DeviceInfo
+{
+    enum class State
+    {
+        Unknown,      // not asked yet
+        Present,      // answered and identified
+        Absent,       // no answer
+        Garbled,      // answered with corrupt frames: two drives with one machine number?
+        Unidentified, // answered, but no profile matches
+    };
+
+    int slave = 0;
+    State state = State::Unknown;
+    QString family;   // profile family, empty when not identified
+    QString variant;  // empty when the device does not tell its variant
+    QString model;    // variant model, or the profile's name
+    QString name;     // device name register
+    QString firmware; // "1.5"
+    QString detail;   // the error or remark behind the state
+
+    // Machine number as the DBU's rotary switches show it: 150 -> "96h", "SW1=9 SW2=6".
+    static QString hexText(int slave);
+    static QString switchText(int slave);
+    static QString stateText(State state);
+};
+
+} // namespace opentop
+
+Q_DECLARE_METATYPE(opentop::DeviceInfo)

@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# OpenTOP set-up for a Debian 12 machine, run as root from the source tree.
+#   scripts/setup.sh gui   install what is missing, build, open the GUI on a simulated bus
+#   scripts/setup.sh test  install what is missing, build, run the whole test suite
+# Both are idempotent: packages already present are not reinstalled, and an up-to-date build
+# does nothing.
+set -euo pipefail
+
+mode="${1:-}"
+case "$mode" in
+gui | test) ;;
+*)
+    echo "usage: $0 gui|test" >&2
+    exit 2
+    ;;
+esac
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${OPENTOP_BUILD_DIR:-$root/build}"
+jobs="$(nproc 2>/dev/null || echo 2)"
+
+packages=(
+    build-essential cmake ninja-build pkg-config ccache
+    qt6-base-dev qt6-serialport-dev qt6-charts-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
+    libmodbus-dev libgtest-dev libgmock-dev
+    mbpoll socat python3-pymodbus
+    xvfb xauth imagemagick
+)
+
+missing=()
+for p in "${packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+        missing+=("$p")
+    fi
+done
+if ((${#missing[@]})); then
+    echo "== installing: ${missing[*]}"
+    if [ "$(id -u)" -ne 0 ]; then
+        echo "error: packages are missing and this is not root; run as root or install: ${missing[*]}" >&2
+        exit 1
+    fi
+    apt-get update -q
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+if [ ! -f "$build/CMakeCache.txt" ]; then
+    cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOPENTOP_WERROR=ON
+fi
+echo "== building in $build"
+cmake --build "$build" -j "$jobs"
+
+if [ "$mode" = test ]; then
+    echo "== running the test suite"
+    cd "$build"
+    exec ctest --output-on-failure --timeout 300 -j "$jobs"
+fi
+
+sim_bus="${OPENTOP_SIM_BUS:-dbu200@1,dbu400@150,dcpid@7}"
+if [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; then
+    exec "$build/app/opentop" --sim "$sim_bus"
+fi
+# No display (e.g. an ssh session): run the real program under Xvfb and save a screenshot.
+shot="$build/opentop-screenshot.png"
+echo "== no display found: starting OpenTOP under Xvfb; screenshot in $shot (Ctrl-C to stop)"
+exec xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
+    "$0" --sim "$1" & app=$!
+    sleep 4; import -window root "$2" && echo "screenshot saved: $2"
+    wait $app' "$build/app/opentop" "$sim_bus" "$shot"
