@@ -2,8 +2,10 @@
 
 #include "ModbusRequest.h"
 #include "ModbusResult.h"
+#include "TrafficEntry.h"
 
 #include <QString>
+#include <atomic>
 
 namespace opentop {
 
@@ -25,16 +27,35 @@ public:
     virtual ModbusResult transact(const ModbusRequest& request, int timeoutMs) = 0;
     virtual QString describe() const = 0;
 
+    // May be called from any thread (the pointer is atomic).
     void setTrafficLog(TrafficLog* log) { m_log = log; }
     TrafficLog* trafficLog() const { return m_log; }
+
+    // Set by the client worker: once *flag is true, waits inside transact() end early with
+    // Cancelled, so that the worker can stop within a bounded time.
+    void setInterruptFlag(const std::atomic<bool>* flag) { m_interrupt = flag; }
+    bool interrupted() const { return m_interrupt && m_interrupt->load(); }
+
+    // One-line meaning of a reply for logs: "→ 1500", "echo 0x0003 = 1",
+    // "exception 02 Illegal data address".
+    static QString describeReply(const ModbusRequest& request, const ModbusResult& result);
 
 protected:
     // Records a frame in the traffic log, if there is one.
     void logFrame(bool tx, const QByteArray& adu, const ModbusRequest& request,
                   const QString& summary, const QString& error, double responseMs = -1);
+    // Records a reply (or its absence) with the slave and function it really carried.
+    void logReply(const QByteArray& adu, int slave, int function, const ModbusRequest& request,
+                  const ModbusResult& result);
+    // Records something that is not a frame, e.g. "no reply within 200 ms".
+    void logEvent(const ModbusRequest& request, const QString& summary, const QString& error);
+    void logEntry(TrafficEntry entry, const ModbusRequest* request);
+    // Sleeps in short slices; false when interrupted first.
+    bool sleepInterruptible(double ms) const;
 
 private:
-    TrafficLog* m_log = nullptr;
+    std::atomic<TrafficLog*> m_log{nullptr};
+    const std::atomic<bool>* m_interrupt = nullptr;
 };
 
 } // namespace opentop

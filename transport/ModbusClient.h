@@ -38,7 +38,10 @@ public:
     void close();
     bool isOpen() const;
 
-    // Queues a request. `callback` runs on `context`'s thread; finished() is emitted as well.
+    // Queues a request. `callback` runs on `context`'s thread (this client's when null);
+    // finished() is emitted as well. Invalid requests are answered with InvalidRequest, never
+    // synchronously. A context deleted before its result arrives gets no callback; delete it
+    // on its own thread. Nothing is delivered once the client is destroyed.
     RequestId submit(const ModbusRequest& request, QObject* context = nullptr,
                      Callback callback = {});
     // Blocking convenience for the command line and tests. Never call it on the GUI thread.
@@ -53,7 +56,8 @@ signals:
     void opened(bool ok, const QString& error);
     void closed();
     void finished(quint64 id, const opentop::ModbusResult& result);
-    // The port failed while in use (e.g. USB adapter unplugged).
+    // The port failed while in use (e.g. USB adapter unplugged): a PortError after which the
+    // backend closed itself. Emitted once per open(); later requests get NotConnected.
     void connectionLost(const QString& error);
 
 private:

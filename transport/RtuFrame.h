@@ -15,9 +15,12 @@ public:
     // Client side.
     static QByteArray encodeRequest(const ModbusRequest& request); // slave + PDU + CRC
     // Length of the complete reply to `request`, once enough of `received` is there to tell;
-    // 0 while more bytes are needed. Handles exception replies and 0x2B object lists.
+    // 0 while more bytes are needed. Handles exception replies and 0x2B object lists. Goes by
+    // the reply's own function code; -1 when that code's length is unknown (frame by silence).
     static int expectedReplyLength(const ModbusRequest& request, const QByteArray& received);
-    // Decodes a complete reply ADU into `result` (error, registers, rawData).
+    // Decodes a complete reply ADU into `result` (error, registers, rawData). Checks in this
+    // order: length, CRC (CrcError), slave id (WrongSlave), exception (Exception with code),
+    // function, byte count, echo of a write (MalformedReply). Writes return the written values.
     static void decodeReply(const ModbusRequest& request, const QByteArray& adu, ModbusResult* result);
 
     // Server side.

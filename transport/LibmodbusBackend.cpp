@@ -1,0 +1,351 @@
+#include "LibmodbusBackend.h"
+
+#include "RtuFrame.h"
+#include "TransportLog.h"
+
+#include <QCoreApplication>
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <modbus.h>
+#include <poll.h>
+#include <unistd.h>
+
+namespace opentop {
+
+namespace {
+
+constexpr int kBufferSize = MODBUS_TCP_MAX_ADU_LENGTH; // large enough for RTU too
+constexpr double kSliceMs = 20; // waits are sliced so that an interrupt is seen quickly
+
+QString errnoText(int err)
+{
+    return QString::fromLocal8Bit(modbus_strerror(err));
+}
+
+} // namespace
+
+LibmodbusBackend::LibmodbusBackend(const ConnectionSettings& settings)
+    : m_settings(settings)
+{
+}
+
+LibmodbusBackend::~LibmodbusBackend()
+{
+    // Subclasses call close() in their destructors; this only catches a missed one.
+    if (m_ctx) {
+        modbus_close(m_ctx);
+        modbus_free(m_ctx);
+    }
+}
+
+int LibmodbusBackend::turnaroundMs() const
+{
+    return m_turnaroundMs >= 0 ? m_turnaroundMs : defaultTurnaroundMs();
+}
+
+QString LibmodbusBackend::openErrorText(int err) const
+{
+    return QCoreApplication::translate("opentop::Transport", "Cannot open %1: %2")
+        .arg(describe(), errnoText(err));
+}
+
+bool LibmodbusBackend::open(QString* error)
+{
+    close();
+    errno = 0;
+    m_ctx = createContext();
+    if (!m_ctx) {
+        if (error)
+            *error = openErrorText(errno ? errno : EINVAL);
+        return false;
+    }
+    modbus_set_error_recovery(m_ctx, MODBUS_ERROR_RECOVERY_NONE);
+    // For TCP this is the connect timeout: bounded so that closing never waits long.
+    setResponseTimeout(std::clamp(m_settings.timeoutMs, 1000, 3000));
+    const int byteTimeoutMs = m_settings.effectiveByteTimeoutMs();
+    modbus_set_byte_timeout(m_ctx, uint32_t(byteTimeoutMs / 1000),
+                            uint32_t((byteTimeoutMs % 1000) * 1000));
+    if (modbus_connect(m_ctx) == -1) {
+        const int err = errno;
+        modbus_free(m_ctx);
+        m_ctx = nullptr;
+        if (error)
+            *error = openErrorText(err);
+        qCWarning(lcTransport) << "open failed:" << describe() << errnoText(err);
+        return false;
+    }
+    modbus_flush(m_ctx);
+    m_open = true;
+    qCDebug(lcTransport) << "opened" << describe();
+    return true;
+}
+
+void LibmodbusBackend::close()
+{
+    if (!m_ctx)
+        return;
+    modbus_close(m_ctx);
+    modbus_free(m_ctx);
+    m_ctx = nullptr;
+    m_open = false;
+    qCDebug(lcTransport) << "closed" << describe();
+}
+
+bool LibmodbusBackend::isOpen() const
+{
+    return m_open;
+}
+
+int LibmodbusBackend::descriptor() const
+{
+    return m_ctx ? modbus_get_socket(m_ctx) : -1;
+}
+
+void LibmodbusBackend::setResponseTimeout(double ms)
+{
+    // libmodbus rejects 0 s 0 µs.
+    const auto us = static_cast<uint32_t>(std::max(1000.0, std::ceil(ms * 1000)));
+    modbus_set_response_timeout(m_ctx, us / 1000000, us % 1000000);
+}
+
+ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeoutMs)
+{
+    ModbusResult result;
+    if (!isOpen()) {
+        result.error = ModbusError::NotConnected;
+        result.message =
+            QCoreApplication::translate("opentop::Transport", "%1 is not open").arg(describe());
+        return result;
+    }
+    if (timeoutMs <= 0)
+        timeoutMs = m_settings.timeoutMs;
+
+    discardStaleInput(request);
+    const QByteArray raw = char(request.slave) + request.pdu();
+    const QByteArray sent = txAdu(request);
+    logFrame(true, sent, request, request.describe(), QString());
+    m_timer.start();
+    if (modbus_send_raw_request(m_ctx, reinterpret_cast<const uint8_t*>(raw.constData()),
+                                int(raw.size())) == -1) {
+        portFailure(errno, QCoreApplication::translate("opentop::Transport", "send failed"),
+                    &result);
+        logEvent(request, QString(), result.errorText());
+        return result;
+    }
+
+    if (request.isBroadcast()) {
+        // No device answers a broadcast; they need the turnaround to execute it before the
+        // next frame, counted from when the frame has left the UART.
+        if (!sleepInterruptible(wireTimeMs(int(sent.size())) + turnaroundMs())) {
+            result.error = ModbusError::Cancelled;
+            return result;
+        }
+        result.error = ModbusError::Ok;
+        result.elapsedMs = elapsedMs();
+        return result;
+    }
+
+    const int ready = waitReadable(timeoutMs);
+    if (ready <= 0) {
+        result.elapsedMs = elapsedMs();
+        if (ready < 0) {
+            result.error = ModbusError::Cancelled;
+            result.message =
+                QCoreApplication::translate("opentop::Transport", "interrupted while waiting");
+            return result;
+        }
+        result.error = ModbusError::Timeout;
+        result.message = QCoreApplication::translate("opentop::Transport", "no reply within %1 ms")
+                             .arg(timeoutMs);
+        logEvent(request, result.message, result.errorText());
+        recover(request);
+        return result;
+    }
+
+    QByteArray adu;
+    if (request.raw)
+        readRawReply(request, timeoutMs, &adu, &result);
+    else
+        receiveStandard(request, timeoutMs, &adu, &result);
+    result.reply = adu;
+    result.elapsedMs = elapsedMs();
+
+    if (result.error == ModbusError::PortError || result.error == ModbusError::Cancelled) {
+        logEvent(request, QString(), result.errorText());
+        return result;
+    }
+    if (adu.isEmpty()) {
+        logEvent(request, result.message, result.errorText());
+    } else {
+        const QByteArray rtu = toRtuAdu(adu);
+        logReply(adu, quint8(rtu.at(0)), rtu.size() > 1 ? quint8(rtu.at(1)) : -1, request, result);
+    }
+    if (result.error != ModbusError::Ok && result.error != ModbusError::Exception)
+        recover(request);
+    return result;
+}
+
+void LibmodbusBackend::receiveStandard(const ModbusRequest& request, int timeoutMs, QByteArray* adu,
+                                       ModbusResult* result)
+{
+    QByteArray buffer(kBufferSize, '\0');
+    modbus_set_slave(m_ctx, request.slave);
+    setResponseTimeout(std::max(1.0, timeoutMs - elapsedMs()));
+    errno = 0;
+    const int rc = modbus_receive_confirmation(m_ctx, reinterpret_cast<uint8_t*>(buffer.data()));
+    const int err = errno;
+    if (rc > 0) {
+        *adu = buffer.left(rc);
+        RtuFrame::decodeReply(request, toRtuAdu(*adu), result);
+        return;
+    }
+    if (rc == 0) {
+        // libmodbus read a whole frame (by its function code) but it carries another id; it
+        // did not check the CRC, so a garbled frame is told apart here.
+        *adu = buffer.left(receivedLength(buffer));
+        RtuFrame::decodeReply(request, toRtuAdu(*adu), result);
+        if (result->error == ModbusError::Ok || result->error == ModbusError::Exception) {
+            result->error = ModbusError::WrongSlave;
+            result->message = QCoreApplication::translate("opentop::Transport",
+                                                          "reply from slave %1, expected %2")
+                                  .arg(quint8(adu->at(0)))
+                                  .arg(request.slave);
+        }
+        return;
+    }
+    switch (err) {
+    case ETIMEDOUT:
+        // The reply started but stopped: a master discards such a frame.
+        result->error = ModbusError::Timeout;
+        result->message = QCoreApplication::translate("opentop::Transport", "reply incomplete");
+        break;
+    case EMBBADCRC:
+        *adu = buffer.left(receivedLength(buffer));
+        result->error = ModbusError::CrcError;
+        result->message = QCoreApplication::translate("opentop::Transport", "CRC mismatch");
+        break;
+    case EMBBADDATA:
+        result->error = ModbusError::MalformedReply;
+        result->message = errnoText(err);
+        break;
+    default:
+        portFailure(err, QCoreApplication::translate("opentop::Transport", "receive failed"),
+                    result);
+        break;
+    }
+}
+
+int LibmodbusBackend::waitReadable(double timeoutMs) const
+{
+    const int fd = descriptor();
+    if (fd < 0)
+        return 0;
+    QElapsedTimer timer;
+    timer.start();
+    for (;;) {
+        if (interrupted())
+            return -1;
+        const double left = timeoutMs - double(timer.nsecsElapsed()) / 1e6;
+        const double slice = std::clamp(left, 0.0, kSliceMs);
+        pollfd pfd{fd, POLLIN, 0};
+        const int rc = ::poll(&pfd, 1, int(std::ceil(slice)));
+        if (rc > 0)
+            return 1; // data, hangup or error: the read that follows tells which
+        if (rc < 0 && errno != EINTR)
+            return 1;
+        if (left <= kSliceMs)
+            return 0;
+    }
+}
+
+int LibmodbusBackend::readSome(char* buffer, int maximum) const
+{
+    const int fd = descriptor();
+    if (fd < 0) {
+        errno = EBADF;
+        return -1;
+    }
+    for (;;) {
+        const ssize_t n = ::read(fd, buffer, size_t(maximum));
+        if (n < 0 && errno == EINTR)
+            continue;
+        return int(n);
+    }
+}
+
+bool LibmodbusBackend::isFatalErrno(int err)
+{
+    switch (err) {
+    case EIO:
+    case ENXIO:
+    case EBADF:
+    case ENODEV:
+    case ECONNRESET:
+    case ECONNABORTED:
+    case EPIPE:
+    case ENOTCONN:
+    case ESHUTDOWN:
+        return true;
+    default:
+        return false;
+    }
+}
+
+void LibmodbusBackend::portFailure(int err, const QString& what, ModbusResult* result)
+{
+    result->error = ModbusError::PortError;
+    result->message = QStringLiteral("%1: %2").arg(what, errnoText(err));
+    if (isFatalErrno(err)) {
+        qCWarning(lcTransport) << describe() << "lost:" << result->message;
+        close();
+        result->message +=
+            QCoreApplication::translate("opentop::Transport", " (connection closed)");
+    }
+}
+
+void LibmodbusBackend::discardStaleInput(const ModbusRequest& request)
+{
+    // Bytes waiting before we send belong to no request of ours (a late reply, noise).
+    QByteArray stale;
+    char chunk[kBufferSize];
+    while (stale.size() < 4096 && waitReadable(0) == 1) {
+        const int n = readSome(chunk, kBufferSize);
+        if (n <= 0)
+            break; // the send that follows reports a failed port
+        stale.append(chunk, n);
+    }
+    if (stale.isEmpty())
+        return;
+    modbus_flush(m_ctx);
+    logFrame(
+        false, stale, request, QString(),
+        QCoreApplication::translate("opentop::Transport", "stale bytes discarded before sending"));
+}
+
+void LibmodbusBackend::recover(const ModbusRequest& request)
+{
+    // Wait until the line has been quiet for about one frame time, swallowing whatever
+    // arrives (a late or second reply), then flush: the next request must not read it.
+    const int quietMs = recoveryQuietMs(request);
+    const double limitMs = 4.0 * quietMs + 100; // a babbling line must not hold the bus
+    QElapsedTimer timer;
+    timer.start();
+    QByteArray late;
+    char chunk[kBufferSize];
+    while (double(timer.elapsed()) < limitMs && waitReadable(quietMs) == 1) {
+        const int n = readSome(chunk, kBufferSize);
+        if (n <= 0)
+            break;
+        late.append(chunk, n);
+    }
+    if (!m_ctx)
+        return;
+    modbus_flush(m_ctx);
+    if (!late.isEmpty())
+        logFrame(false, late, request, QString(),
+                 QCoreApplication::translate("opentop::Transport",
+                                             "late bytes discarded after an error"));
+}
+
+} // namespace opentop

@@ -1,0 +1,77 @@
+#pragma once
+
+#include "ConnectionSettings.h"
+#include "ModbusBackend.h"
+
+#include <QElapsedTimer>
+
+struct _modbus; // libmodbus' modbus_t, kept out of this header
+
+namespace opentop {
+
+// What RTU and TCP share on top of libmodbus: every request goes out through
+// modbus_send_raw_request (so the traffic log shows the exact bytes), standard replies come
+// back through modbus_receive_confirmation, raw replies are read from the socket. Errors are
+// classified from errno; after an error the line is drained for about one frame time and
+// flushed so that a late reply cannot be taken for the answer to the next request.
+class LibmodbusBackend : public ModbusBackend
+{
+public:
+    ~LibmodbusBackend() override;
+
+    bool open(QString* error) override;
+    void close() override;
+    bool isOpen() const override;
+    ModbusResult transact(const ModbusRequest& request, int timeoutMs) override;
+
+    const ConnectionSettings& settings() const { return m_settings; }
+    // Bus silence after a broadcast; < 0 restores the default.
+    void setTurnaroundMs(int ms) { m_turnaroundMs = ms; }
+    int turnaroundMs() const;
+    virtual int defaultTurnaroundMs() const = 0;
+
+protected:
+    explicit LibmodbusBackend(const ConnectionSettings& settings);
+
+    virtual _modbus* createContext() = 0;
+    virtual QString openErrorText(int err) const;
+    // The ADU exactly as libmodbus puts it on the wire.
+    virtual QByteArray txAdu(const ModbusRequest& request) const = 0;
+    // A received ADU as an RTU frame (id + PDU + CRC), for RtuFrame::decodeReply.
+    virtual QByteArray toRtuAdu(const QByteArray& received) const = 0;
+    // Length of the frame libmodbus read into `buffer` (for logging a rejected reply).
+    virtual int receivedLength(const QByteArray& buffer) const = 0;
+    // Reads a raw reply whose first byte is waiting; fills adu (as received) and result.
+    virtual void readRawReply(const ModbusRequest& request, int timeoutMs, QByteArray* adu,
+                              ModbusResult* result) = 0;
+    // Time the line needs for `bytes` bytes (0 for TCP) and quiet time after an error.
+    virtual double wireTimeMs(int bytes) const = 0;
+    virtual int recoveryQuietMs(const ModbusRequest& request) const = 0;
+
+    // 1 readable, 0 timed out, -1 interrupted; waits in short slices.
+    int waitReadable(double timeoutMs) const;
+    // read() on the connection's descriptor: bytes read, 0 at end of stream, -1 (errno) on error.
+    int readSome(char* buffer, int maximum) const;
+    // Errors after which the connection is gone (unplugged adapter, closed socket).
+    static bool isFatalErrno(int err);
+    // Fills `result` with a PortError; closes the backend when the error is fatal.
+    void portFailure(int err, const QString& what, ModbusResult* result);
+    double elapsedMs() const { return double(m_timer.nsecsElapsed()) / 1e6; }
+    _modbus* context() const { return m_ctx; }
+    int descriptor() const;
+
+private:
+    void receiveStandard(const ModbusRequest& request, int timeoutMs, QByteArray* adu,
+                         ModbusResult* result);
+    void discardStaleInput(const ModbusRequest& request);
+    void recover(const ModbusRequest& request);
+    void setResponseTimeout(double ms);
+
+    ConnectionSettings m_settings;
+    _modbus* m_ctx = nullptr;
+    bool m_open = false;
+    int m_turnaroundMs = -1;
+    QElapsedTimer m_timer; // since the current request was sent
+};
+
+} // namespace opentop

@@ -1,0 +1,361 @@
+#include "ModbusClientWorker.h"
+
+#include "ModbusBackend.h"
+#include "TransportLog.h"
+
+#include <QCoreApplication>
+#include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <deque>
+#include <mutex>
+
+namespace opentop {
+
+struct ModbusClientWorker::Item
+{
+    quint64 id = 0;
+    ModbusRequest request;
+    QPointer<QObject> context; // guarded: a deleted context gets no callback
+    bool hasContext = false;
+    ModbusClient::Callback callback;
+    Promise promise;
+};
+
+struct ModbusClientWorker::State
+{
+    struct Control
+    {
+        bool open = true; // false: close
+        std::shared_ptr<std::promise<QString>> done;
+    };
+
+    std::mutex mutex; // guards the queues, controls, inFlight, stop and backend's lifetime
+    std::condition_variable wake;
+    std::deque<Item> queues[3]; // indexed by ModbusRequest::Priority
+    std::deque<Control> controls;
+    quint64 inFlight = 0;
+    bool stop = false;
+
+    std::atomic<bool> interrupt{false};
+    std::atomic<bool> open{false};
+    std::atomic<quint64> nextId{1};
+    bool lostReported = false; // worker thread only
+
+    std::unique_ptr<ModbusBackend> backend;
+    ConnectionSettings settings;
+    QString description;
+
+    std::mutex deliveryMutex; // held while posting to the client, so it can be cut off
+    ModbusClient* client = nullptr;
+    std::promise<void> exited;
+
+    // Runs `f(client)` on the client's thread, unless the client is gone.
+    template <typename F> void postToClient(F f)
+    {
+        std::lock_guard<std::mutex> lock(deliveryMutex);
+        if (!client)
+            return;
+        ModbusClient* target = client;
+        QMetaObject::invokeMethod(
+            target, [target, f] { f(target); }, Qt::QueuedConnection);
+    }
+};
+
+namespace {
+
+ModbusResult makeResult(ModbusError error, const QString& message)
+{
+    ModbusResult result;
+    result.error = error;
+    result.message = message;
+    return result;
+}
+
+} // namespace
+
+ModbusClientWorker::ModbusClientWorker(ModbusClient* client, std::unique_ptr<ModbusBackend> backend,
+                                       const ConnectionSettings& settings)
+    : m_state(std::make_shared<State>())
+{
+    Q_ASSERT(backend);
+    m_state->client = client;
+    m_state->settings = settings;
+    m_state->description = backend->describe();
+    backend->setInterruptFlag(&m_state->interrupt);
+    m_state->backend = std::move(backend);
+    m_exited = m_state->exited.get_future();
+    m_thread = std::thread(&ModbusClientWorker::run, m_state);
+}
+
+ModbusClientWorker::~ModbusClientWorker()
+{
+    {
+        std::lock_guard<std::mutex> lock(m_state->deliveryMutex);
+        m_state->client = nullptr;
+    }
+    {
+        std::lock_guard<std::mutex> lock(m_state->mutex);
+        m_state->stop = true;
+    }
+    m_state->interrupt = true;
+    m_state->wake.notify_all();
+    if (m_exited.wait_for(std::chrono::milliseconds(kStopWaitMs)) == std::future_status::ready) {
+        m_thread.join();
+        return;
+    }
+    // The backend is stuck in a call that ignores the interrupt (e.g. a TCP connect). Let it
+    // finish on its own thread, which then closes the port; it must not log to a TrafficLog
+    // that may be gone by then.
+    qCWarning(lcTransport) << "bus worker did not stop in time; detaching" << m_state->description;
+    {
+        std::lock_guard<std::mutex> lock(m_state->mutex);
+        if (m_state->backend)
+            m_state->backend->setTrafficLog(nullptr);
+    }
+    m_thread.detach();
+}
+
+void ModbusClientWorker::open(std::shared_ptr<std::promise<QString>> done)
+{
+    {
+        std::lock_guard<std::mutex> lock(m_state->mutex);
+        m_state->controls.push_back({true, std::move(done)});
+    }
+    m_state->wake.notify_all();
+}
+
+void ModbusClientWorker::close()
+{
+    {
+        std::lock_guard<std::mutex> lock(m_state->mutex);
+        m_state->controls.push_back({false, {}});
+    }
+    m_state->wake.notify_all();
+}
+
+bool ModbusClientWorker::isOpen() const
+{
+    return m_state->open;
+}
+
+QString ModbusClientWorker::describe() const
+{
+    return m_state->description;
+}
+
+quint64 ModbusClientWorker::submit(const ModbusRequest& request, QObject* context,
+                                   ModbusClient::Callback callback, Promise promise)
+{
+    Item item;
+    item.id = m_state->nextId++;
+    item.request = request;
+    item.context = context;
+    item.hasContext = context != nullptr;
+    item.callback = std::move(callback);
+    item.promise = std::move(promise);
+
+    const QString invalid = request.validate();
+    if (!invalid.isEmpty()) {
+        deliver(*m_state, item, makeResult(ModbusError::InvalidRequest, invalid));
+        return item.id;
+    }
+    const quint64 id = item.id;
+    const int queue = std::clamp(int(request.priority), 0, 2);
+    {
+        std::lock_guard<std::mutex> lock(m_state->mutex);
+        m_state->queues[queue].push_back(std::move(item));
+    }
+    m_state->wake.notify_all();
+    return id;
+}
+
+bool ModbusClientWorker::cancel(quint64 id)
+{
+    Item found;
+    {
+        std::lock_guard<std::mutex> lock(m_state->mutex);
+        bool removed = false;
+        for (auto& queue : m_state->queues) {
+            for (auto it = queue.begin(); it != queue.end(); ++it) {
+                if (it->id == id) {
+                    found = std::move(*it);
+                    queue.erase(it);
+                    removed = true;
+                    break;
+                }
+            }
+            if (removed)
+                break;
+        }
+        if (!removed)
+            return false;
+    }
+    deliver(
+        *m_state, found,
+        makeResult(ModbusError::Cancelled,
+                   QCoreApplication::translate("opentop::Transport", "cancelled before sending")));
+    return true;
+}
+
+void ModbusClientWorker::cancelAll()
+{
+    std::deque<Item> dropped;
+    {
+        std::lock_guard<std::mutex> lock(m_state->mutex);
+        for (int q = 2; q >= 0; --q) {
+            for (auto& item : m_state->queues[q])
+                dropped.push_back(std::move(item));
+            m_state->queues[q].clear();
+        }
+    }
+    for (const Item& item : dropped)
+        deliver(*m_state, item,
+                makeResult(
+                    ModbusError::Cancelled,
+                    QCoreApplication::translate("opentop::Transport", "cancelled before sending")));
+}
+
+int ModbusClientWorker::pendingCount() const
+{
+    std::lock_guard<std::mutex> lock(m_state->mutex);
+    int count = m_state->inFlight ? 1 : 0;
+    for (const auto& queue : m_state->queues)
+        count += int(queue.size());
+    return count;
+}
+
+void ModbusClientWorker::run(std::shared_ptr<State> state)
+{
+    State& s = *state;
+    for (;;) {
+        std::unique_lock<std::mutex> lock(s.mutex);
+        s.wake.wait(lock, [&s] {
+            return s.stop || !s.controls.empty() || !s.queues[0].empty() || !s.queues[1].empty() ||
+                   !s.queues[2].empty();
+        });
+        if (s.stop)
+            break;
+        if (!s.controls.empty()) {
+            State::Control control = s.controls.front();
+            s.controls.pop_front();
+            lock.unlock();
+            if (control.open) {
+                QString error;
+                const bool ok = s.backend->isOpen() || s.backend->open(&error);
+                if (!ok && error.isEmpty())
+                    error = QCoreApplication::translate("opentop::Transport", "cannot open %1")
+                                .arg(s.description);
+                s.open = ok;
+                s.lostReported = false;
+                if (control.done)
+                    control.done->set_value(ok ? QString() : error);
+                s.postToClient([ok, error](ModbusClient* c) { emit c->opened(ok, error); });
+            } else {
+                s.backend->close();
+                s.open = false;
+                s.postToClient([](ModbusClient* c) { emit c->closed(); });
+            }
+            continue;
+        }
+        Item item;
+        for (int q = 2; q >= 0; --q) {
+            if (!s.queues[q].empty()) {
+                item = std::move(s.queues[q].front());
+                s.queues[q].pop_front();
+                break;
+            }
+        }
+        s.inFlight = item.id;
+        lock.unlock();
+        const ModbusResult result = execute(s, item);
+        lock.lock();
+        s.inFlight = 0;
+        lock.unlock();
+        deliver(s, item, result);
+    }
+
+    // Stopping: what is still queued is never sent. Only blocked execute() callers hear of it.
+    std::deque<Item> dropped;
+    std::deque<State::Control> controls;
+    {
+        std::lock_guard<std::mutex> lock(s.mutex);
+        for (auto& queue : s.queues) {
+            for (auto& item : queue)
+                dropped.push_back(std::move(item));
+            queue.clear();
+        }
+        controls.swap(s.controls);
+    }
+    const QString closing = QCoreApplication::translate("opentop::Transport", "client closed");
+    for (const Item& item : dropped)
+        deliver(s, item, makeResult(ModbusError::Cancelled, closing));
+    for (const auto& control : controls)
+        if (control.done)
+            control.done->set_value(closing);
+    // The libmodbus context is freed here, on the thread that used it.
+    std::unique_ptr<ModbusBackend> backend;
+    {
+        std::lock_guard<std::mutex> lock(s.mutex);
+        backend = std::move(s.backend);
+    }
+    backend->close();
+    backend.reset();
+    s.open = false;
+    s.exited.set_value();
+}
+
+ModbusResult ModbusClientWorker::execute(State& s, const Item& item)
+{
+    const ModbusRequest& request = item.request;
+    if (!s.backend->isOpen())
+        return makeResult(
+            ModbusError::NotConnected,
+            QCoreApplication::translate("opentop::Transport", "%1 is not open").arg(s.description));
+    const int timeoutMs = request.timeoutMs >= 0 ? request.timeoutMs : s.settings.timeoutMs;
+    // A broadcast is never repeated: every device would execute it again.
+    const int retries =
+        request.isBroadcast() ? 0 : (request.retries >= 0 ? request.retries : s.settings.retries);
+    ModbusResult result;
+    for (int attempt = 1;; ++attempt) {
+        result = s.backend->transact(request, timeoutMs);
+        result.attempts = attempt;
+        if (result.error == ModbusError::PortError && !s.backend->isOpen()) {
+            s.open = false;
+            if (!s.lostReported) {
+                s.lostReported = true;
+                const QString message = result.message;
+                s.postToClient([message](ModbusClient* c) { emit c->connectionLost(message); });
+            }
+        }
+        const bool retryable =
+            result.error == ModbusError::Timeout || result.error == ModbusError::CrcError;
+        if (!retryable || attempt > retries || s.interrupt)
+            break;
+        qCDebug(lcTransport) << "retrying" << request.describe() << "after" << result.errorText();
+    }
+    return result;
+}
+
+void ModbusClientWorker::deliver(State& s, const Item& item, const ModbusResult& result)
+{
+    if (item.promise)
+        item.promise->set_value(result);
+    std::lock_guard<std::mutex> lock(s.deliveryMutex);
+    if (!s.client)
+        return;
+    ModbusClient* client = s.client;
+    if (item.callback) {
+        QObject* target = item.hasContext ? item.context.data() : client;
+        if (target) {
+            auto callback = item.callback;
+            QMetaObject::invokeMethod(
+                target, [callback, result] { callback(result); }, Qt::QueuedConnection);
+        }
+    }
+    const quint64 id = item.id;
+    QMetaObject::invokeMethod(
+        client, [client, id, result] { emit client->finished(id, result); }, Qt::QueuedConnection);
+}
+
+} // namespace opentop

@@ -1,0 +1,58 @@
+#pragma once
+
+#include "ConnectionSettings.h"
+#include "ModbusClient.h"
+#include "ModbusRequest.h"
+#include "ModbusResult.h"
+
+#include <QPointer>
+#include <future>
+#include <memory>
+#include <thread>
+
+namespace opentop {
+
+class ModbusBackend;
+
+// The thread behind ModbusClient. It owns the backend: open, every transact and close run on
+// it, so a libmodbus context never changes threads. Requests wait in one queue per priority
+// (User > Normal > Poll), FIFO within each. Results go back as queued calls to each request's
+// context object and as ModbusClient::finished.
+class ModbusClientWorker
+{
+public:
+    using Promise = std::shared_ptr<std::promise<ModbusResult>>;
+
+    ModbusClientWorker(ModbusClient* client, std::unique_ptr<ModbusBackend> backend,
+                       const ConnectionSettings& settings);
+    // Stops the thread: queued requests are dropped, a request on the wire is interrupted.
+    // Returns within about 1.5 s; a backend stuck in a call that cannot be interrupted is left
+    // to finish (and close its port) on its own thread.
+    ~ModbusClientWorker();
+
+    void open(std::shared_ptr<std::promise<QString>> done = {});
+    void close();
+    bool isOpen() const;
+    QString describe() const;
+
+    quint64 submit(const ModbusRequest& request, QObject* context, ModbusClient::Callback callback,
+                   Promise promise = {});
+    bool cancel(quint64 id);
+    void cancelAll();
+    int pendingCount() const;
+
+    static constexpr int kStopWaitMs = 1500;
+
+private:
+    struct State;
+    struct Item;
+    static void run(std::shared_ptr<State> state);
+    static ModbusResult execute(State& state, const Item& item);
+    static void deliver(State& state, const Item& item, const ModbusResult& result);
+
+    std::shared_ptr<State> m_state;
+    std::thread m_thread;
+    std::future<void> m_exited;
+};
+
+} // namespace opentop

@@ -1,0 +1,164 @@
+#include "RtuBackend.h"
+
+#include "RtuFrame.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <modbus.h>
+#include <sys/file.h>
+
+namespace opentop {
+
+namespace {
+
+constexpr int kMaxAdu = MODBUS_RTU_MAX_ADU_LENGTH;
+
+// Length of the reply `request` normally gets, to size the quiet time after an error. The
+// drain restarts with every byte, so this only has to cover a reply that starts late.
+int typicalReplyBytes(const ModbusRequest& request)
+{
+    if (request.raw)
+        return 40; // a basic device identification
+    if (request.isRead())
+        return 5 + 2 * request.count;
+    return 8;
+}
+
+} // namespace
+
+RtuBackend::RtuBackend(const ConnectionSettings& settings)
+    : LibmodbusBackend(settings)
+{
+}
+
+RtuBackend::~RtuBackend()
+{
+    close();
+}
+
+bool RtuBackend::open(QString* error)
+{
+    if (!LibmodbusBackend::open(error))
+        return false;
+    if (::flock(descriptor(), LOCK_EX | LOCK_NB) == 0 || errno != EWOULDBLOCK)
+        return true; // a file system without locks must not stop us
+    close();
+    if (error)
+        *error = QCoreApplication::translate("opentop::Transport",
+                                             "Cannot open %1: the port is in use by another "
+                                             "OpenTOP connection.")
+                     .arg(settings().port);
+    return false;
+}
+
+QString RtuBackend::describe() const
+{
+    return settings().describe();
+}
+
+int RtuBackend::defaultTurnaroundMs() const
+{
+    return std::max(10, int(std::ceil(3.5 * settings().charTimeMs() + 5)));
+}
+
+_modbus* RtuBackend::createContext()
+{
+    const ConnectionSettings& s = settings();
+    return modbus_new_rtu(QFile::encodeName(s.port).constData(), s.baud, s.parity, s.dataBits,
+                          s.stopBits);
+}
+
+QString RtuBackend::openErrorText(int err) const
+{
+    QString text = LibmodbusBackend::openErrorText(err);
+    if (err == EACCES)
+        text += QCoreApplication::translate("opentop::Transport",
+                                            " (is your user in the dialout group?)");
+    else if (err == EINVAL && settings().parity != 'N')
+        text += QCoreApplication::translate(
+            "opentop::Transport", " (the device may not support this parity; ptys need N)");
+    return text;
+}
+
+QByteArray RtuBackend::txAdu(const ModbusRequest& request) const
+{
+    return RtuFrame::encodeRequest(request);
+}
+
+QByteArray RtuBackend::toRtuAdu(const QByteArray& received) const
+{
+    return received;
+}
+
+int RtuBackend::receivedLength(const QByteArray& buffer) const
+{
+    // libmodbus reads a reply by its function code; for codes it does not know that is
+    // id, function, one byte and the CRC.
+    const int length = RtuFrame::expectedReplyLength(ModbusRequest(), buffer);
+    return length > 0 ? std::min(length, kMaxAdu) : 5;
+}
+
+void RtuBackend::readRawReply(const ModbusRequest& request, int timeoutMs, QByteArray* adu,
+                              ModbusResult* result)
+{
+    // libmodbus does not know the length of replies to functions it has no API for (0x2B):
+    // read by the reply's own length (its object list), or until the line goes silent.
+    const int gapMs = settings().effectiveByteTimeoutMs();
+    char chunk[kMaxAdu];
+    for (;;) {
+        const int need = RtuFrame::expectedReplyLength(request, *adu);
+        if (need > kMaxAdu) {
+            result->error = ModbusError::MalformedReply;
+            result->message =
+                QCoreApplication::translate("opentop::Transport", "reply announces %1 bytes, "
+                                                                  "more than an RTU frame holds")
+                    .arg(need);
+            return;
+        }
+        if (need > 0 && adu->size() >= need)
+            break;
+        if (adu->size() >= kMaxAdu)
+            break;
+        const double wait = adu->isEmpty() ? std::max(1.0, timeoutMs - elapsedMs()) : gapMs;
+        const int ready = waitReadable(wait);
+        if (ready < 0) {
+            result->error = ModbusError::Cancelled;
+            return;
+        }
+        if (ready == 0) {
+            if (need < 0 && !adu->isEmpty())
+                break; // unknown length: the silence ends the frame
+            result->error = ModbusError::Timeout;
+            result->message =
+                adu->isEmpty()
+                    ? QCoreApplication::translate("opentop::Transport", "no reply")
+                    : QCoreApplication::translate("opentop::Transport", "reply incomplete");
+            return;
+        }
+        const int want = need > 0 ? need - int(adu->size()) : kMaxAdu - int(adu->size());
+        const int n = readSome(chunk, want);
+        if (n <= 0) {
+            portFailure(n == 0 ? EIO : errno,
+                        QCoreApplication::translate("opentop::Transport", "receive failed"),
+                        result);
+            return;
+        }
+        adu->append(chunk, n);
+    }
+    RtuFrame::decodeReply(request, *adu, result);
+}
+
+double RtuBackend::wireTimeMs(int bytes) const
+{
+    return bytes * settings().charTimeMs();
+}
+
+int RtuBackend::recoveryQuietMs(const ModbusRequest& request) const
+{
+    return int(std::ceil((typicalReplyBytes(request) + 3.5) * settings().charTimeMs())) + 10;
+}
+
+} // namespace opentop

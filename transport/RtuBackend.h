@@ -1,0 +1,34 @@
+#pragma once
+
+#include "LibmodbusBackend.h"
+
+namespace opentop {
+
+// Modbus RTU on a serial device (or a pty) through libmodbus. The libmodbus context is created
+// in open() and freed in close(): both must run on the thread that calls transact().
+class RtuBackend : public LibmodbusBackend
+{
+public:
+    explicit RtuBackend(const ConnectionSettings& settings);
+    ~RtuBackend() override;
+
+    // Also takes an advisory lock (flock) on the device, so that a second OpenTOP on the same
+    // port fails cleanly instead of stealing bytes; the lock goes with the descriptor.
+    bool open(QString* error) override;
+    QString describe() const override;
+    // max(3.5 character times + 5 ms, 10 ms): the T-net manual's broadcast gap (T2 > C3.5 + 5 ms).
+    int defaultTurnaroundMs() const override;
+
+protected:
+    _modbus* createContext() override;
+    QString openErrorText(int err) const override;
+    QByteArray txAdu(const ModbusRequest& request) const override;
+    QByteArray toRtuAdu(const QByteArray& received) const override;
+    int receivedLength(const QByteArray& buffer) const override;
+    void readRawReply(const ModbusRequest& request, int timeoutMs, QByteArray* adu,
+                      ModbusResult* result) override;
+    double wireTimeMs(int bytes) const override;
+    int recoveryQuietMs(const ModbusRequest& request) const override;
+};
+
+} // namespace opentop

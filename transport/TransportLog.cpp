@@ -1,0 +1,7 @@
+#include "TransportLog.h"
+
+namespace opentop {
+
+Q_LOGGING_CATEGORY(lcTransport, "opentop.transport", QtInfoMsg)
+
+} // namespace opentop
