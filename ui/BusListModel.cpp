@@ -59,7 +59,7 @@ QVariant BusListModel::data(const QModelIndex& index, int role) const
         case Model:
             return d.variant.isEmpty() && d.state == DeviceInfo::State::Present &&
                            !d.detail.isEmpty()
-                       ? d.model + tr(" (variant not reported)")
+                       ? tr("%1 — variant unknown").arg(d.family.toUpper())
                        : d.model;
         case Firmware:
             return d.firmware.isEmpty() ? tr("—") : tr("V%1").arg(d.firmware);

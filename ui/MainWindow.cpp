@@ -88,13 +88,36 @@ void MainWindow::identifyAll()
         pending.slave = slave;
         m_model->upsert(pending);
         ++m_outstanding;
-        m_identifier->identify(slave, [this](const DeviceInfo& info) {
+        m_identifier->identify(slave, [this](DeviceInfo info) {
+            applyAssignedVariant(&info);
             m_model->upsert(info);
-            if (--m_outstanding == 0)
-                statusBar()->showMessage(tr("%n drive(s) identified", nullptr, m_model->rowCount()),
-                                         5000);
+            if (--m_outstanding == 0) {
+                int present = 0;
+                for (int row = 0; row < m_model->rowCount(); ++row)
+                    present += m_model->device(row)->state == DeviceInfo::State::Present ? 1 : 0;
+                statusBar()->showMessage(tr("%n drive(s) answering", nullptr, present), 5000);
+            }
         });
     }
+}
+
+} // namespace opentop
+
+namespace opentop {
+
+void MainWindow::applyAssignedVariant(DeviceInfo* info) const
+{
+    if (info->state != DeviceInfo::State::Present || !info->variant.isEmpty())
+        return;
+    QString variant;
+    const Profile* profile =
+        ProfileRegistry::builtIn().forDeviceType(m_assignedTypes.value(info->slave), &variant);
+    if (!profile || profile->family != info->family || variant.isEmpty())
+        return;
+    info->variant = variant;
+    info->model = profile->variant(variant)->model;
+    info->detail =
+        tr("The drive does not report its variant; %1 is the configured one.").arg(info->model);
 }
 
 } // namespace opentop

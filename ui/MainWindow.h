@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QHash>
 #include <QMainWindow>
 #include <QVector>
 
@@ -11,6 +12,7 @@ namespace opentop {
 class BusListModel;
 class DeviceIdentifier;
 class ModbusClient;
+struct DeviceInfo;
 
 // The main window: the drives on the bus. It owns no bus logic; the client and identifier do
 // the talking, asynchronously.
@@ -23,6 +25,9 @@ public:
     ~MainWindow() override;
 
     BusListModel* busModel() const { return m_model; }
+    // Variants the user (or the simulated bus list) says are at these machine numbers; used
+    // where a drive does not report its variant.
+    void setAssignedTypes(const QHash<int, QString>& types) { m_assignedTypes = types; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -30,9 +35,11 @@ protected:
 private:
     void onOpened(bool ok, const QString& error);
     void identifyAll();
+    void applyAssignedVariant(DeviceInfo* info) const;
 
     ModbusClient* m_client;
     QVector<int> m_expected;
+    QHash<int, QString> m_assignedTypes;
     BusListModel* m_model;
     DeviceIdentifier* m_identifier;
     QTableView* m_table;

@@ -1,0 +1,36 @@
+#include "BackendFactory.h"
+
+#include "ModbusClient.h"
+#include "RtuBackend.h"
+#include "SimBackend.h"
+#include "SimBus.h"
+#include "TcpBackend.h"
+
+namespace opentop {
+
+BackendFactory::Made BackendFactory::makeClient(const ConnectionSettings& settings)
+{
+    Made made;
+    made.error = settings.validate();
+    if (!made.error.isEmpty())
+        return made;
+    std::unique_ptr<ModbusBackend> backend;
+    switch (settings.kind) {
+    case ConnectionSettings::Kind::Serial:
+        backend = std::make_unique<RtuBackend>(settings);
+        break;
+    case ConnectionSettings::Kind::Tcp:
+        backend = std::make_unique<TcpBackend>(settings);
+        break;
+    case ConnectionSettings::Kind::Simulated:
+        made.simBus = SimBus::fromSpec(settings.simSpec, &made.error);
+        if (!made.simBus)
+            return made;
+        backend = std::make_unique<SimBackend>(made.simBus, false, settings.baud);
+        break;
+    }
+    made.client = std::make_unique<ModbusClient>(std::move(backend), settings);
+    return made;
+}
+
+} // namespace opentop

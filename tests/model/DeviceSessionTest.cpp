@@ -1,0 +1,164 @@
+#include "DeviceIdentifier.h"
+#include "DeviceSession.h"
+#include "ModbusClient.h"
+#include "ProfileRegistry.h"
+#include "SimBackend.h"
+#include "SimBus.h"
+#include "SimDevice.h"
+#include "TrafficLog.h"
+
+#include <QEventLoop>
+#include <QTimer>
+#include <gtest/gtest.h>
+
+using namespace opentop;
+
+namespace {
+
+// A DBU200 at 1 and a DBU400 at 150 and a DC controller at 7, in process.
+class DeviceSessionTest : public ::testing::Test
+{
+protected:
+    void SetUp() override
+    {
+        QString error;
+        bus = SimBus::fromSpec(QStringLiteral("dbu200@1,dbu400@150,dcpid@7"), &error);
+        ASSERT_TRUE(bus) << qPrintable(error);
+        auto backend = std::make_unique<SimBackend>(bus);
+        backend->setTrafficLog(&log);
+        ConnectionSettings settings;
+        settings.kind = ConnectionSettings::Kind::Simulated;
+        settings.simSpec = bus->spec();
+        settings.timeoutMs = 100;
+        client = std::make_unique<ModbusClient>(std::move(backend), settings);
+        ASSERT_TRUE(client->openBlocking().isEmpty());
+    }
+
+    DeviceSession::Outcome wait(const std::function<void(DeviceSession::Done)>& start)
+    {
+        DeviceSession::Outcome result;
+        bool finished = false;
+        QEventLoop loop;
+        start([&](const DeviceSession::Outcome& o) {
+            result = o;
+            finished = true;
+            loop.quit();
+        });
+        QTimer::singleShot(5000, &loop, &QEventLoop::quit);
+        if (!finished)
+            loop.exec();
+        EXPECT_TRUE(finished) << "no answer within 5 s";
+        return result;
+    }
+
+    int framesSent() const
+    {
+        int n = 0;
+        for (const TrafficEntry& e : log.entries())
+            n += e.direction == TrafficEntry::Direction::Tx ? 1 : 0;
+        return n;
+    }
+
+    const Profile& dbu() const { return *ProfileRegistry::builtIn().family(QStringLiteral("dbu")); }
+
+    TrafficLog log;
+    std::shared_ptr<SimBus> bus;
+    std::unique_ptr<ModbusClient> client;
+};
+
+} // namespace
+
+TEST_F(DeviceSessionTest, WritesByNameAndVerifiesByReadingBack)
+{
+    DeviceSession session(client.get(), dbu(), 1, QStringLiteral("dbu200"));
+    const auto o = wait([&](auto done) { session.write(QStringLiteral("spno2.accel"), QStringLiteral("2.5"), {}, done); });
+    EXPECT_TRUE(o.ok) << qPrintable(o.error);
+    EXPECT_TRUE(o.verified);
+    EXPECT_DOUBLE_EQ(o.value.number, 2.5);
+    // The simulated drive holds the new raw value (25 at 0.1 s).
+    const auto held = bus->control(1, {QStringLiteral("get"), QStringLiteral("0x1303")});
+    EXPECT_TRUE(held.text.contains(QStringLiteral("25"))) << qPrintable(held.text);
+}
+
+TEST_F(DeviceSessionTest, InvalidValueIsRefusedAndNothingIsSent)
+{
+    DeviceSession session(client.get(), dbu(), 150, QStringLiteral("dbu400"));
+    const int before = framesSent();
+    const auto o = wait([&](auto done) { session.write(QStringLiteral("spno2.speed"), QStringLiteral("280"), {}, done); });
+    EXPECT_FALSE(o.ok);
+    EXPECT_FALSE(o.sent);
+    EXPECT_TRUE(o.error.contains(QStringLiteral("0 or 300–3000 r/min"))) << qPrintable(o.error);
+    EXPECT_EQ(framesSent(), before);
+}
+
+TEST_F(DeviceSessionTest, CommandsNeedAnExplicitRequest)
+{
+    DeviceSession session(client.get(), dbu(), 1, QStringLiteral("dbu200"));
+    const int before = framesSent();
+    const auto refused = wait([&](auto done) { session.write(QStringLiteral("run.start"), QStringLiteral("START"), {}, done); });
+    EXPECT_FALSE(refused.ok);
+    EXPECT_FALSE(refused.sent);
+    EXPECT_EQ(framesSent(), before);
+    // Asked explicitly, but the drive is in I/O priority: the drive refuses (exception 04) and
+    // the communication error register tells why.
+    DeviceSession::WriteOptions explicitly;
+    explicitly.explicitCommand = true;
+    const auto o = wait([&](auto done) { session.write(QStringLiteral("run.start"), QStringLiteral("START"), explicitly, done); });
+    EXPECT_FALSE(o.ok);
+    EXPECT_TRUE(o.sent);
+    EXPECT_TRUE(o.error.contains(QStringLiteral("04"))) << qPrintable(o.error);
+    EXPECT_TRUE(o.deviceError.startsWith(QStringLiteral("E2h"))) << qPrintable(o.deviceError);
+}
+
+TEST_F(DeviceSessionTest, DependentEnumerationReadsItsControllingParameterFirst)
+{
+    DeviceSession session(client.get(), dbu(), 1, QStringLiteral("dbu200"));
+    EXPECT_FALSE(session.hasCached(QStringLiteral("core.control_mode")));
+    // Mode2 is the default: RUN/STOP (a Mode1 function) is refused without sending a write.
+    const auto o = wait([&](auto done) { session.write(QStringLiteral("io.x0"), QStringLiteral("RUN/STOP"), {}, done); });
+    EXPECT_FALSE(o.ok);
+    EXPECT_TRUE(session.hasCached(QStringLiteral("core.control_mode")));
+    EXPECT_TRUE(o.error.contains(QStringLiteral("CW/STOP"))) << qPrintable(o.error);
+    const auto ok = wait([&](auto done) { session.write(QStringLiteral("io.x0"), QStringLiteral("M2"), {}, done); });
+    EXPECT_TRUE(ok.ok) << qPrintable(ok.error);
+    EXPECT_EQ(ok.value.registers, QVector<quint16>{0x17});
+}
+
+TEST_F(DeviceSessionTest, ReadsDecodeAndTimeoutsAreReported)
+{
+    DeviceSession dc(client.get(), *ProfileRegistry::builtIn().family(QStringLiteral("dcpid")), 7, QString());
+    const auto name = wait([&](auto done) { dc.read(QStringLiteral("info.device_name"), done); });
+    EXPECT_TRUE(name.ok) << qPrintable(name.error);
+    EXPECT_FALSE(name.value.text.isEmpty());
+    DeviceSession absent(client.get(), dbu(), 99, QString());
+    const auto o = wait([&](auto done) { absent.read(QStringLiteral("status.current_speed"), done); });
+    EXPECT_FALSE(o.ok);
+    EXPECT_TRUE(o.error.contains(QStringLiteral("timeout"), Qt::CaseInsensitive)) << qPrintable(o.error);
+}
+
+TEST_F(DeviceSessionTest, IdentifierTellsFamiliesApart)
+{
+    DeviceIdentifier identifier(client.get(), ProfileRegistry::builtIn());
+    QVector<DeviceInfo> found;
+    QEventLoop loop;
+    for (int slave : {1, 7, 150, 42}) {
+        identifier.identify(slave, [&](const DeviceInfo& info) {
+            found << info;
+            if (found.size() == 4)
+                loop.quit();
+        });
+    }
+    QTimer::singleShot(5000, &loop, &QEventLoop::quit);
+    loop.exec();
+    ASSERT_EQ(found.size(), 4);
+    std::sort(found.begin(), found.end(), [](const DeviceInfo& a, const DeviceInfo& b) { return a.slave < b.slave; });
+    EXPECT_EQ(found[0].family, QStringLiteral("dbu"));
+    EXPECT_EQ(found[0].state, DeviceInfo::State::Present);
+    EXPECT_FALSE(found[0].firmware.isEmpty());
+    EXPECT_EQ(found[1].family, QStringLiteral("dcpid"));
+    EXPECT_EQ(found[2].state, DeviceInfo::State::Absent);
+    EXPECT_EQ(found[3].slave, 150);
+    EXPECT_EQ(found[3].family, QStringLiteral("dbu"));
+    EXPECT_EQ(DeviceInfo::hexText(150), QStringLiteral("96h"));
+    EXPECT_EQ(DeviceInfo::switchText(150), QStringLiteral("SW1=9 SW2=6"));
+}
