@@ -38,7 +38,8 @@ int main(int argc, char* argv[])
     QVector<int> expected;
     QHash<int, QString> types;
     if (settings->kind == opentop::ConnectionSettings::Kind::Simulated) {
-        for (const auto& entry : *opentop::BusSpec::parse(settings->simSpec, nullptr)) {
+        const auto entries = opentop::BusSpec::parse(settings->simSpec, nullptr);
+        for (const auto& entry : entries.value_or(QVector<opentop::BusSpecEntry>())) {
             expected << entry.slave;
             types.insert(entry.slave, entry.type);
         }

@@ -1,0 +1,346 @@
+#include "DcPidSimDevice.h"
+
+#include "DeviceIdentification.h"
+#include "ModbusRequest.h"
+#include "SimLog.h"
+#include "ValueCodec.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace opentop {
+
+namespace {
+
+constexpr double kRunPerSecond = 2.0;   // full output in 0.5 s
+constexpr double kBrakePerSecond = 5.0; // braking stops from full output in 0.2 s
+constexpr double kCoastPerSecond = 0.5; // natural stop takes 2 s from full output
+
+struct StoreBlock
+{
+    const char* first; // first parameter of the block
+    int count;         // registers a 0x10 must write to store the block
+};
+
+// "0x10 of 15 registers from 0x0080", 7 from 0x0090, 4 from 0x00A0, 5 from 0x0050.
+const StoreBlock kBlocks[] = {
+    {"config.speed_mode", 15}, {"pid.p", 7}, {"preset.speed_mode", 4}, {"gpio.ai1_direction", 5}};
+
+// Values the profile gives no default for (the manual names none): a plausible factory state.
+struct Factory
+{
+    const char* name;
+    double raw;
+};
+const Factory kFactory[] = {{"info.device_id", 1},
+                            {"info.version", 0x0100},
+                            {"info.pwm_resolution", 1000},
+                            {"info.pwm_frequency", 16000},
+                            {"info.max_current", 2000},
+                            {"info.current_resolution", 10},
+                            {"config.rated_current", 500},
+                            {"config.max_current", 1000},
+                            {"config.brake_current", 200},
+                            {"pid.p", 0.1},
+                            {"pid.i", 0.01},
+                            {"pid.d", 0},
+                            {"pid.d_period", 10},
+                            {"preset.forward_speed", 500},
+                            {"preset.reverse_speed", 500}};
+const char* const kGpio[] = {"gpio.ai1_direction", "gpio.ai2_direction", "gpio.ai1_level",
+                             "gpio.ai2_level"};
+
+QString name(const char* text)
+{
+    return QString::fromLatin1(text);
+}
+
+} // namespace
+
+DcPidSimDevice::DcPidSimDevice(const Profile& profile, const QString& variant, int slave)
+    : SimDevice(profile, variant, slave)
+{
+    for (const Factory& f : kFactory) {
+        const ParameterMeta* p = param(name(f.name));
+        if (p && !p->specFor(context()).defaultRaw)
+            registers().setRaw(*p, f.raw);
+    }
+    if (const ParameterMeta* p = param(QStringLiteral("info.device_name")))
+        registers().setText(*p, QStringLiteral("DCPID-20A"), '\0');
+    for (const char* store : {"store.config", "store.pid", "store.preset"})
+        registers().storeGroup(name(store));
+    for (const char* n : kGpio) {
+        if (const ParameterMeta* p = param(name(n)))
+            registers().storeParameter(*p); // GPIO is temporary until a 5-register write
+    }
+    takeLineSettings();
+    refreshStatus(0);
+}
+
+char DcPidSimDevice::parityForCode(int code)
+{
+    return code == 1 ? 'O' : code == 2 ? 'E' : 'N';
+}
+
+void DcPidSimDevice::takeLineSettings()
+{
+    m_lineBaud = int(rawOf(QStringLiteral("config.baud")));
+    m_lineParity = parityForCode(int(rawOf(QStringLiteral("config.parity"))));
+}
+
+void DcPidSimDevice::configureLine(int baud, char parity)
+{
+    setRawOf(QStringLiteral("config.baud"), baud);
+    setRawOf(QStringLiteral("config.parity"), parity == 'O' ? 1 : parity == 'E' ? 2 : 0);
+    for (const char* n : {"config.baud", "config.parity"}) {
+        if (const ParameterMeta* p = param(name(n)))
+            registers().storeParameter(*p);
+    }
+    takeLineSettings();
+}
+
+bool DcPidSimDevice::supportsFunction(quint8 function) const
+{
+    return function == 0x03 || function == 0x06 || function == 0x10 || function == 0x2B;
+}
+
+quint8 DcPidSimDevice::exceptionCode(SimError error) const
+{
+    switch (error) {
+    case SimError::IllegalFunction:
+        return 0x01;
+    case SimError::IllegalAddress:
+    case SimError::ReadOnly:
+        return 0x02;
+    case SimError::BadFormat:
+    case SimError::OutOfRange:
+        return 0x03;
+    case SimError::Busy:
+        return 0x06;
+    case SimError::Prohibited:
+        return 0x40;
+    default:
+        return 0x04;
+    }
+}
+
+bool DcPidSimDevice::allowsPartialWrite(const ParameterMeta& meta) const
+{
+    return meta.registerCount > 1; // PID floats and the baud rate by halves (06)
+}
+
+bool DcPidSimDevice::acceptsGapWrite(quint16 address) const
+{
+    return registers().inReadBlock(3, address); // reserved registers inside the blocks
+}
+
+SimError DcPidSimDevice::checkWrite(const ParameterMeta& meta, double raw, qint64)
+{
+    const bool serial =
+        meta.name == QLatin1String("config.baud") || meta.name == QLatin1String("config.parity");
+    if (serial && rawOf(QStringLiteral("config.serial_lock")) == 1 && raw != rawOf(meta.name))
+        return SimError::Prohibited;
+    return SimError::None;
+}
+
+void DcPidSimDevice::afterWrite(const ParameterMeta& meta, double raw, qint64 nowMs)
+{
+    const QString& n = meta.name;
+    if (n == QLatin1String("speed.command")) {
+        m_command = int(raw);
+        m_drive = m_command == 0 ? Drive::Braking : Drive::Running;
+    } else if (n == QLatin1String("speed.lock")) {
+        m_command = 0;
+        m_drive = Drive::Locked;
+    } else if (n == QLatin1String("speed.release")) {
+        m_command = 0;
+        m_drive = Drive::Coasting;
+    } else if (n == QLatin1String("store.config") && raw == 0) {
+        registers().reloadGroup(n);
+    } else {
+        SimDevice::afterWrite(meta, raw, nowMs);
+    }
+}
+
+void DcPidSimDevice::afterBlockWrite(quint8 function, quint16 address, int count, qint64)
+{
+    if (function != ModbusRequest::WriteMultiple)
+        return;
+    for (const StoreBlock& b : kBlocks) {
+        const ParameterMeta* first = param(name(b.first));
+        if (!first || first->address != address || count != b.count)
+            continue;
+        qCDebug(lcSim) << "slave" << slave() << "stores the block of" << b.first;
+        if (!first->storeWith.isEmpty()) {
+            registers().storeGroup(first->storeWith);
+            continue;
+        }
+        for (const char* n : kGpio) {
+            if (const ParameterMeta* p = param(name(n)))
+                registers().storeParameter(*p);
+        }
+    }
+}
+
+double DcPidSimDevice::commandFraction() const
+{
+    static const double fullScale[] = {1000, 2000, 1000, 500}; // per config.speed_mode
+    const int mode = std::clamp(int(rawOf(QStringLiteral("config.speed_mode"))), 0, 3);
+    return std::clamp(m_command / fullScale[mode], -1.0, 1.0);
+}
+
+void DcPidSimDevice::step(qint64 nowMs, int dtMs)
+{
+    const double lossMs = rawOf(QStringLiteral("config.comm_loss_time")) * 100;
+    if (m_drive == Drive::Running && lossMs > 0 && nowMs - m_lastFrameMs >= lossMs) {
+        qCInfo(lcSim) << "slave" << slave() << "communication lost: braking";
+        m_drive = Drive::Braking;
+        m_command = 0;
+    }
+    double target = m_drive == Drive::Running ? commandFraction() : 0;
+    if (rawOf(QStringLiteral("config.limit_enable")) == 1) {
+        const bool sq1 = m_inputs & 1;
+        const bool sq2 = m_inputs & 2;
+        if (target > 0 && sq1 == (rawOf(QStringLiteral("config.sq1_level")) == 1))
+            target = 0; // forward limit
+        if (target < 0 && sq2 == (rawOf(QStringLiteral("config.sq2_level")) == 1))
+            target = 0; // reverse limit
+    }
+    const double down = m_drive == Drive::Coasting  ? kCoastPerSecond
+                        : m_drive == Drive::Running ? kRunPerSecond
+                                                    : kBrakePerSecond;
+    m_ramp.step(target, kRunPerSecond, down, dtMs);
+    if (m_drive != Drive::Running && m_ramp.value() == 0 && m_drive != Drive::Locked)
+        m_drive = Drive::Idle;
+}
+
+void DcPidSimDevice::refreshStatus(qint64)
+{
+    const double level = std::abs(m_ramp.value());
+    const int mode = int(rawOf(QStringLiteral("config.speed_mode")));
+    const double rated = rawOf(QStringLiteral("config.rated_current"));
+    const double maxCurrent = rawOf(QStringLiteral("config.max_current"));
+    double current = 0;
+    if (mode == 1)
+        current = level * 2000;
+    else if (level > 0)
+        current = rated * (0.15 + 0.55 * level) + 0.1 * rated * std::abs(m_ramp.rate());
+    current *= 1 + m_loadOffset / 100.0;
+    if (maxCurrent > 0)
+        current = std::min(current, maxCurrent);
+    if (m_drive == Drive::Braking && level > 0)
+        current = std::min(rawOf(QStringLiteral("config.brake_current")), current);
+
+    auto put = [this](const char* n, double value) {
+        const ParameterMeta* p = param(name(n));
+        if (p)
+            setRawOf(p->name, p->isSigned() ? value : std::abs(value));
+    };
+    put("status.pwm", std::round(m_ramp.value() * 1000));
+    put("status.current", std::round(current));
+    put("status.commutation", std::round(m_ramp.value() * 1000));
+    put("status.sq1_level", m_inputs & 1);
+    put("status.sq2_level", (m_inputs >> 1) & 1);
+    put("status.de_level", (m_inputs >> 2) & 1);
+    put("status.ai_diff",
+        rawOf(QStringLiteral("status.ai1_voltage")) - rawOf(QStringLiteral("status.ai2_voltage")));
+}
+
+void DcPidSimDevice::onPowerCycle(qint64 nowMs)
+{
+    m_ramp.set(0);
+    m_drive = Drive::Idle;
+    m_command = 0;
+    m_lastFrameMs = nowMs;
+    for (const char* n : kGpio) {
+        if (const ParameterMeta* p = param(name(n)))
+            registers().restoreParameter(*p);
+    }
+    takeLineSettings();
+}
+
+QByteArray DcPidSimDevice::handleOther(const ModbusRequest& request, qint64, SimError* error)
+{
+    if (request.function != ModbusRequest::EncapsulatedInterface) {
+        *error = SimError::IllegalFunction;
+        return {};
+    }
+    const QByteArray& d = request.rawData;
+    if (d.size() != 3) {
+        *error = SimError::BadFormat;
+        return {};
+    }
+    if (quint8(d.at(0)) != 0x0E) {
+        *error = SimError::IllegalFunction;
+        return {};
+    }
+    return identification(quint8(d.at(1)), quint8(d.at(2)), error);
+}
+
+QByteArray DcPidSimDevice::identification(quint8 readCode, quint8 objectId, SimError* error) const
+{
+    // Basic category only: 0 vendor, 1 product code, 2 revision.
+    QString product;
+    QString revision;
+    for (const ParameterMeta& p : profile().parameters) {
+        if (!p.name.startsWith(QLatin1String("info.")))
+            continue;
+        if (p.type == DataType::String && product.isEmpty()) {
+            const ParamValue v = ValueCodec::decode(p, registers().registers(p), context());
+            product = v.text.trimmed();
+        } else if (p.name.contains(QLatin1String("version")) ||
+                   p.name.contains(QLatin1String("release"))) {
+            const int raw = int(registers().raw(p));
+            revision = QStringLiteral("V%1.%2").arg(raw >> 8).arg(raw & 0xFF);
+        }
+    }
+    if (readCode < 1 || readCode > 4) {
+        *error = SimError::BadFormat;
+        return {};
+    }
+    if (readCode == 4 && objectId > 2) {
+        *error = SimError::IllegalAddress;
+        return {};
+    }
+    const QByteArray objects[] = {profile().vendor.toLatin1(), product.toLatin1(),
+                                  revision.toLatin1()};
+    DeviceIdentification id;
+    id.readCode = readCode;
+    id.conformity = 0x81; // basic category, stream and individual access
+    const int first = readCode == 4 ? objectId : (objectId > 2 ? 0 : objectId);
+    const int last = readCode == 4 ? objectId : 2;
+    for (int object = first; object <= last; ++object)
+        id.objects.insert(quint8(object), objects[object]);
+    return QByteArray(1, char(ModbusRequest::EncapsulatedInterface)) + id.encode();
+}
+
+QString DcPidSimDevice::stateText() const
+{
+    static const char* const drives[] = {"idle", "running", "braking", "coasting", "locked"};
+    return tr("%1 %2, output %3 %, command %4, line %5 %6")
+        .arg(type(), QLatin1String(drives[int(m_drive)]),
+             QString::number(std::lround(m_ramp.value() * 100)), QString::number(m_command),
+             QString::number(m_lineBaud), QString(QLatin1Char(m_lineParity)));
+}
+
+SimControlResult DcPidSimDevice::controlCommand(const QStringList& args, qint64 nowMs)
+{
+    const QString& cmd = args.first();
+    const bool input = cmd == QLatin1String("input");
+    if (input || cmd == QLatin1String("load")) {
+        const std::optional<qint64> v = args.size() == 2 ? parseNumber(args.at(1)) : std::nullopt;
+        const qint64 min = input ? 0 : -100;
+        const qint64 max = input ? 7 : 200;
+        if (!v || *v < min || *v > max)
+            return fail(tr("usage: %1 ID VALUE with VALUE %2..%3 %4")
+                            .arg(cmd)
+                            .arg(min)
+                            .arg(max)
+                            .arg(input ? tr("(bit0 SQ1, bit1 SQ2, bit2 DE)") : tr("(% current)")));
+        (input ? m_inputs : m_loadOffset) = int(*v);
+        return {true, tr("%1 = %2").arg(cmd).arg(*v)};
+    }
+    return SimDevice::controlCommand(args, nowMs);
+}
+
+} // namespace opentop

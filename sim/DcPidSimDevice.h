@@ -1,0 +1,66 @@
+#pragma once
+
+#include "SimDevice.h"
+#include "SpeedRamp.h"
+
+namespace opentop {
+
+// The 9–36 V / 20 A DC motor controller with PID speed control (its manual, section 1): 03, 06,
+// 10 and 2B/0E, exception 0x40 for locked serial settings, speed command per speed mode with a
+// simple ramp, temporary configuration until stored, braking on communication loss.
+class DcPidSimDevice : public SimDevice
+{
+    Q_DECLARE_TR_FUNCTIONS(opentop::DcPidSimDevice)
+public:
+    enum class Drive
+    {
+        Idle,
+        Running,
+        Braking,
+        Coasting,
+        Locked
+    };
+
+    DcPidSimDevice(const Profile& profile, const QString& variant, int slave);
+
+    QString stateText() const override;
+    int lineBaud() const override { return m_lineBaud; }
+    char lineParity() const override { return m_lineParity; }
+    void configureLine(int baud, char parity) override;
+
+    Drive drive() const { return m_drive; }
+    double level() const { return m_ramp.value(); } // -1 .. 1 of full output
+
+    static char parityForCode(int code);
+
+protected:
+    bool supportsFunction(quint8 function) const override;
+    quint8 exceptionCode(SimError error) const override;
+    QByteArray handleOther(const ModbusRequest& request, qint64 nowMs, SimError* error) override;
+    bool allowsPartialWrite(const ParameterMeta& meta) const override;
+    bool acceptsGapWrite(quint16 address) const override;
+    SimError checkWrite(const ParameterMeta& meta, double raw, qint64 nowMs) override;
+    void afterWrite(const ParameterMeta& meta, double raw, qint64 nowMs) override;
+    void afterBlockWrite(quint8 function, quint16 address, int count, qint64 nowMs) override;
+    void frameSeen(qint64 nowMs) override { m_lastFrameMs = nowMs; }
+    void step(qint64 nowMs, int dtMs) override;
+    void refreshStatus(qint64 nowMs) override;
+    void onPowerCycle(qint64 nowMs) override;
+    SimControlResult controlCommand(const QStringList& args, qint64 nowMs) override;
+
+private:
+    double commandFraction() const;
+    QByteArray identification(quint8 readCode, quint8 objectId, SimError* error) const;
+    void takeLineSettings();
+
+    SpeedRamp m_ramp;
+    Drive m_drive = Drive::Idle;
+    int m_command = 0;
+    qint64 m_lastFrameMs = 0;
+    int m_inputs = 0; // bit0 SQ1, bit1 SQ2, bit2 DE
+    int m_loadOffset = 0;
+    int m_lineBaud = 0;
+    char m_lineParity = 0;
+};
+
+} // namespace opentop

@@ -1,0 +1,10 @@
+#include "GenericSimDevice.h"
+
+namespace opentop {
+
+GenericSimDevice::GenericSimDevice(const Profile& profile, const QString& variant, int slave)
+    : SimDevice(profile, variant, slave)
+{
+}
+
+} // namespace opentop

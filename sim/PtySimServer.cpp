@@ -1,0 +1,198 @@
+#include "PtySimServer.h"
+
+#include "ModbusCrc.h"
+#include "SimBus.h"
+#include "SimLog.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
+#include <QPointer>
+#include <QSocketNotifier>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <pty.h>
+#include <termios.h>
+#include <unistd.h>
+
+namespace opentop {
+
+namespace {
+
+constexpr int kSilenceMs = 20; // framing of unknown functions and discarding partial frames
+
+} // namespace
+
+PtySimServer::PtySimServer(std::shared_ptr<SimBus> bus, const WireTiming& timing, bool wireTiming,
+                           QObject* parent)
+    : QObject(parent)
+    , m_bus(std::move(bus))
+    , m_timing(timing)
+    , m_wireTiming(wireTiming)
+{
+    m_silence.setSingleShot(true);
+    m_silence.setInterval(kSilenceMs);
+    connect(&m_silence, &QTimer::timeout, this, &PtySimServer::onSilence);
+}
+
+PtySimServer::~PtySimServer()
+{
+    close();
+}
+
+bool PtySimServer::open(const QString& linkPath, QString* error)
+{
+    char name[256] = {};
+    if (::openpty(&m_master, &m_slave, name, nullptr, nullptr) != 0) {
+        if (error)
+            *error = tr("cannot open a pseudo-terminal: %1")
+                         .arg(QString::fromLocal8Bit(strerror(errno)));
+        return false;
+    }
+    m_slavePath = QString::fromLocal8Bit(name);
+    termios tio = {};
+    if (::tcgetattr(m_slave, &tio) == 0) {
+        ::cfmakeraw(&tio);
+        ::tcsetattr(m_slave, TCSANOW, &tio);
+    }
+    ::fcntl(m_master, F_SETFL, ::fcntl(m_master, F_GETFL) | O_NONBLOCK);
+    if (!linkPath.isEmpty()) {
+        const QFileInfo info(linkPath);
+        if (info.isSymLink()) {
+            QFile::remove(linkPath);
+        } else if (info.exists()) {
+            if (error)
+                *error = tr("%1 exists and is not a symlink; refusing to replace it").arg(linkPath);
+            close();
+            return false;
+        }
+        if (!QFile::link(m_slavePath, linkPath)) {
+            if (error)
+                *error = tr("cannot create the symlink %1 -> %2").arg(linkPath, m_slavePath);
+            close();
+            return false;
+        }
+        m_linkPath = linkPath;
+    }
+    m_notifier = new QSocketNotifier(m_master, QSocketNotifier::Read, this);
+    connect(m_notifier, &QSocketNotifier::activated, this, &PtySimServer::onReadable);
+    qCInfo(lcSim) << "serving" << m_bus->spec() << "on" << m_slavePath;
+    return true;
+}
+
+void PtySimServer::close()
+{
+    delete m_notifier;
+    m_notifier = nullptr;
+    if (!m_linkPath.isEmpty()) {
+        if (QFileInfo(m_linkPath).symLinkTarget() == m_slavePath)
+            QFile::remove(m_linkPath);
+        m_linkPath.clear();
+    }
+    if (m_master >= 0)
+        ::close(m_master);
+    if (m_slave >= 0)
+        ::close(m_slave);
+    m_master = m_slave = -1;
+}
+
+int PtySimServer::requestLength(const QByteArray& buffer)
+{
+    if (buffer.size() < 2)
+        return 0;
+    const quint8 function = quint8(buffer.at(1));
+    if (function >= 0x01 && function <= 0x06)
+        return 8;
+    if (function == 0x0F || function == 0x10)
+        return buffer.size() < 7 ? 0 : 9 + quint8(buffer.at(6));
+    if (function == 0x2B)
+        return 7;
+    return -1;
+}
+
+void PtySimServer::onReadable()
+{
+    char chunk[512];
+    for (;;) {
+        const ssize_t n = ::read(m_master, chunk, sizeof chunk);
+        if (n > 0) {
+            m_buffer.append(chunk, int(n));
+            continue;
+        }
+        break; // EAGAIN (all read) or EIO (no client): wait for the next notification
+    }
+    processBuffer();
+}
+
+void PtySimServer::processBuffer()
+{
+    while (!m_buffer.isEmpty()) {
+        const int length = requestLength(m_buffer);
+        if (length <= 0 || m_buffer.size() < length)
+            break; // more bytes, or a silence gap, will tell
+        const QByteArray frame = m_buffer.left(length);
+        m_buffer.remove(0, length);
+        if (!ModbusCrc::check(frame)) {
+            // Out of step (noise, a frame for an unknown length): resynchronise at silence.
+            qCInfo(lcSim) << "rx" << frame.toHex(' ') << "bad CRC: ignored";
+            m_buffer.clear();
+            break;
+        }
+        dispatch(frame);
+    }
+    if (!m_buffer.isEmpty())
+        m_silence.start();
+}
+
+void PtySimServer::onSilence()
+{
+    if (m_buffer.isEmpty())
+        return;
+    if (requestLength(m_buffer) < 0) {
+        dispatch(m_buffer); // unknown function: the frame is everything before the gap
+    } else {
+        qCInfo(lcSim) << "rx" << m_buffer.toHex(' ') << "incomplete frame: ignored";
+    }
+    m_buffer.clear();
+}
+
+void PtySimServer::dispatch(const QByteArray& frame)
+{
+    const SimOutcome outcome = m_bus->handleFrame(frame);
+    qCInfo(lcSim).noquote() << "rx" << frame.toHex(' ') << "tx"
+                            << (outcome.reply.isEmpty()
+                                    ? QStringLiteral("-")
+                                    : QString::fromLatin1(outcome.reply.toHex(' ')));
+    if (outcome.reply.isEmpty())
+        return;
+    double delay = outcome.delayMs;
+    if (m_wireTiming)
+        delay += m_timing.replyDelayMs(frame.size(), outcome.reply.size());
+    if (delay < 0.5) {
+        send(outcome.reply);
+        return;
+    }
+    const QByteArray reply = outcome.reply;
+    QTimer::singleShot(int(delay + 0.5), Qt::PreciseTimer, this, [this, reply] { send(reply); });
+}
+
+void PtySimServer::send(const QByteArray& reply)
+{
+    if (m_master < 0)
+        return;
+    int written = 0;
+    while (written < reply.size()) {
+        const ssize_t n =
+            ::write(m_master, reply.constData() + written, size_t(reply.size() - written));
+        if (n < 0) {
+            if (errno == EINTR || errno == EAGAIN)
+                continue;
+            qCWarning(lcSim) << "pty write failed:" << strerror(errno);
+            return;
+        }
+        written += int(n);
+    }
+}
+
+} // namespace opentop

@@ -1,0 +1,57 @@
+#pragma once
+
+#include "WireTiming.h"
+
+#include <QByteArray>
+#include <QObject>
+#include <QTimer>
+#include <memory>
+
+class QSocketNotifier;
+
+namespace opentop {
+
+class SimBus;
+
+// Serves a SimBus on a pseudo-terminal: clients (libmodbus RTU, mbpoll) open the slave path as
+// if it were a serial port. Requests are framed by length per function code, unknown functions
+// by a silence gap; frames with a bad CRC are ignored, as on a line.
+class PtySimServer : public QObject
+{
+    Q_OBJECT
+public:
+    PtySimServer(std::shared_ptr<SimBus> bus, const WireTiming& timing, bool wireTiming,
+                 QObject* parent = nullptr);
+    ~PtySimServer() override;
+
+    // Opens the pty; with a linkPath, also a symlink to the slave (an existing symlink is
+    // replaced, any other file is refused).
+    bool open(const QString& linkPath, QString* error);
+    void close();
+    QString slavePath() const { return m_slavePath; }
+    QString linkPath() const { return m_linkPath; }
+
+    // Length of the request at the start of `buffer`: 0 while more bytes are needed, -1 when
+    // the function code gives no length (framing by silence).
+    static int requestLength(const QByteArray& buffer);
+
+private:
+    void onReadable();
+    void onSilence();
+    void processBuffer();
+    void dispatch(const QByteArray& frame);
+    void send(const QByteArray& reply);
+
+    std::shared_ptr<SimBus> m_bus;
+    WireTiming m_timing;
+    bool m_wireTiming;
+    int m_master = -1;
+    int m_slave = -1;
+    QString m_slavePath;
+    QString m_linkPath;
+    QSocketNotifier* m_notifier = nullptr;
+    QByteArray m_buffer;
+    QTimer m_silence;
+};
+
+} // namespace opentop

@@ -1,0 +1,191 @@
+#include "SimApp.h"
+
+#include "PtySimServer.h"
+#include "SimBus.h"
+#include "SimConsole.h"
+#include "SimLog.h"
+#include "TcpSimServer.h"
+
+#include <QCoreApplication>
+#include <QLoggingCategory>
+#include <QSocketNotifier>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <fcntl.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+namespace opentop {
+
+namespace {
+
+int g_signalWriteFd = -1;
+
+void onPosixSignal(int)
+{
+    const char byte = 1;
+    if (g_signalWriteFd >= 0)
+        (void)::write(g_signalWriteFd, &byte, 1);
+}
+
+void printOut(const QString& text)
+{
+    std::fputs(text.toLocal8Bit().constData(), stdout);
+    std::fputc('\n', stdout);
+    std::fflush(stdout);
+}
+
+void printErr(const QString& text)
+{
+    std::fputs(text.toLocal8Bit().constData(), stderr);
+    std::fputc('\n', stderr);
+    std::fflush(stderr);
+}
+
+} // namespace
+
+SimApp::SimApp(QObject* parent)
+    : QObject(parent)
+{
+}
+
+SimApp::~SimApp()
+{
+    shutdown();
+    if (g_signalWriteFd == m_signalFds[0])
+        g_signalWriteFd = -1;
+    for (int fd : m_signalFds) {
+        if (fd >= 0)
+            ::close(fd);
+    }
+}
+
+void SimApp::installSignalHandlers(int writeFd)
+{
+    g_signalWriteFd = writeFd;
+    struct sigaction action = {};
+    action.sa_handler = onPosixSignal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESTART;
+    ::sigaction(SIGINT, &action, nullptr);
+    ::sigaction(SIGTERM, &action, nullptr);
+    ::signal(SIGPIPE, SIG_IGN);
+}
+
+int SimApp::start(const QStringList& arguments)
+{
+    QString error;
+    const std::optional<SimOptions> options = SimOptions::parse(arguments.mid(1), &error);
+    if (!options) {
+        printErr(QStringLiteral("opentop-sim: ") + error);
+        return 2;
+    }
+    m_options = *options;
+    if (m_options.help) {
+        printOut(SimOptions::usage());
+        return 0;
+    }
+    QLoggingCategory::setFilterRules(
+        m_options.quiet ? QStringLiteral("opentop.*.debug=false\nopentop.*.info=false")
+                        : QStringLiteral("opentop.*.debug=false"));
+    m_bus = SimBus::fromSpec(m_options.devices, &error);
+    if (!m_bus) {
+        printErr(QStringLiteral("opentop-sim: --devices: ") + error);
+        return 2;
+    }
+    m_bus->setLine(m_options.baud, m_options.parity);
+    for (SimDevice* d : m_bus->devices()) {
+        if (d->lineBaud() && (d->lineBaud() != m_options.baud ||
+                              (d->lineParity() && d->lineParity() != m_options.parity)))
+            printErr(tr("opentop-sim: warning: %1@%2 cannot use %3 %4 and will not answer")
+                         .arg(d->type())
+                         .arg(d->slave())
+                         .arg(m_options.baud)
+                         .arg(QLatin1Char(m_options.parity)));
+    }
+    m_bus->setFaults(FaultInjector(m_options.faults, m_options.seed));
+
+    if (::socketpair(AF_UNIX, SOCK_STREAM, 0, m_signalFds) == 0) {
+        for (int fd : m_signalFds)
+            ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
+        installSignalHandlers(m_signalFds[0]);
+        m_signals = new QSocketNotifier(m_signalFds[1], QSocketNotifier::Read, this);
+        connect(m_signals, &QSocketNotifier::activated, this, &SimApp::onSignal);
+    }
+
+    const WireTiming timing(m_options.baud, m_options.parity, m_options.turnaroundMs);
+    if (m_options.pty) {
+        m_pty = new PtySimServer(m_bus, timing, m_options.wireTiming, this);
+        if (!m_pty->open(m_options.ptyLink, &error)) {
+            printErr(QStringLiteral("opentop-sim: ") + error);
+            return 1;
+        }
+        printOut(QStringLiteral("pty: ") + m_pty->slavePath());
+    }
+    if (m_options.tcp) {
+        m_tcp = new TcpSimServer(m_bus, timing, m_options.wireTiming, this);
+        if (!m_tcp->listen(QHostAddress(m_options.tcpHost), m_options.tcpPort, &error)) {
+            printErr(QStringLiteral("opentop-sim: ") + error);
+            return 1;
+        }
+        printOut(QStringLiteral("tcp: %1:%2").arg(m_options.tcpHost).arg(m_tcp->port()));
+    }
+
+    m_console = std::make_unique<SimConsole>(m_bus);
+    m_stdin = new QSocketNotifier(STDIN_FILENO, QSocketNotifier::Read, this);
+    connect(m_stdin, &QSocketNotifier::activated, this, &SimApp::onStdin);
+    connect(qApp, &QCoreApplication::aboutToQuit, this, &SimApp::shutdown);
+    printOut(QStringLiteral("ready"));
+    return -1;
+}
+
+void SimApp::onStdin()
+{
+    // One read per notification: stdin stays blocking (it may be the user's terminal, shared
+    // with the shell), and the notifier says a read will not block.
+    char chunk[1024];
+    const ssize_t n = ::read(STDIN_FILENO, chunk, sizeof chunk);
+    const bool eof = n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR);
+    if (n > 0)
+        m_stdinBuffer.append(chunk, int(n));
+    if (eof && !m_stdinBuffer.isEmpty() && !m_stdinBuffer.endsWith('\n'))
+        m_stdinBuffer.append('\n'); // a last command without a newline
+    int newline;
+    while ((newline = m_stdinBuffer.indexOf('\n')) >= 0) {
+        const QString line = QString::fromLocal8Bit(m_stdinBuffer.left(newline));
+        m_stdinBuffer.remove(0, newline + 1);
+        const SimControlResult result = m_console->execute(line);
+        if (!result.text.isEmpty())
+            printOut(result.ok ? result.text : tr("error: %1").arg(result.text));
+        if (m_console->quitRequested()) {
+            QCoreApplication::quit();
+            return;
+        }
+    }
+    if (eof) {
+        // No console (stdin at its end, e.g. /dev/null): keep serving until a signal.
+        m_stdin->setEnabled(false);
+    }
+}
+
+void SimApp::onSignal()
+{
+    char byte;
+    while (::read(m_signalFds[1], &byte, 1) > 0) {
+    }
+    qCInfo(lcSim) << "signal received, stopping";
+    QCoreApplication::quit();
+}
+
+void SimApp::shutdown()
+{
+    if (m_pty)
+        m_pty->close();
+    if (m_tcp)
+        m_tcp->close();
+    if (m_stdin)
+        m_stdin->setEnabled(false);
+}
+
+} // namespace opentop

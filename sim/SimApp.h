@@ -1,0 +1,48 @@
+#pragma once
+
+#include "SimOptions.h"
+
+#include <QObject>
+#include <memory>
+
+class QSocketNotifier;
+
+namespace opentop {
+
+class PtySimServer;
+class SimBus;
+class SimConsole;
+class TcpSimServer;
+
+// opentop-sim: options, the bus, its servers, the stdin console and clean shutdown on
+// SIGINT/SIGTERM/quit (exit 0, the pty symlink removed).
+class SimApp : public QObject
+{
+    Q_OBJECT
+public:
+    explicit SimApp(QObject* parent = nullptr);
+    ~SimApp() override;
+
+    // Sets everything up from the command line (with the program name first). Returns an exit
+    // code when the program should end at once (--help: 0, bad arguments: 2, failure: 1), or
+    // -1 when the event loop should run.
+    int start(const QStringList& arguments);
+    void shutdown();
+
+private:
+    void onStdin();
+    void onSignal();
+    static void installSignalHandlers(int writeFd);
+
+    SimOptions m_options;
+    std::shared_ptr<SimBus> m_bus;
+    std::unique_ptr<SimConsole> m_console;
+    PtySimServer* m_pty = nullptr;
+    TcpSimServer* m_tcp = nullptr;
+    QSocketNotifier* m_stdin = nullptr;
+    QSocketNotifier* m_signals = nullptr;
+    QByteArray m_stdinBuffer;
+    int m_signalFds[2] = {-1, -1};
+};
+
+} // namespace opentop

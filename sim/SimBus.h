@@ -1,0 +1,81 @@
+#pragma once
+
+#include "FaultInjector.h"
+#include "SimClock.h"
+#include "SimDevice.h"
+
+#include <QByteArray>
+#include <QCoreApplication>
+#include <QList>
+#include <QMutex>
+#include <map>
+#include <memory>
+
+namespace opentop {
+
+struct ModbusRequest;
+
+// What the bus does with one request frame.
+struct SimOutcome
+{
+    QByteArray reply; // reply ADU; empty when nobody answers
+    int delayMs = 0;  // extra delay before the reply is sent (late fault)
+    FaultInjector::Fault fault = FaultInjector::Fault::None;
+};
+
+// An RS-485 line with simulated slaves: routes request frames by machine number, executes
+// broadcasts (id 0) on every device without reply, lets DBU group members execute writes to
+// their group's address silently, stays silent for unknown ids and bad CRCs, injects faults.
+// Thread-safe: every entry point takes the bus lock.
+class SimBus
+{
+    Q_DECLARE_TR_FUNCTIONS(opentop::SimBus)
+public:
+    explicit SimBus(std::shared_ptr<SimClock> clock = {});
+    ~SimBus();
+
+    // "dbu200@1,dbu400@150,dcpid@7".
+    static std::shared_ptr<SimBus> fromSpec(const QString& spec, QString* error,
+                                            std::shared_ptr<SimClock> clock = {});
+    // A device of a family or variant id ("dbu", "dbu400", "dcpid", any profiled family).
+    static std::unique_ptr<SimDevice> createDevice(const QString& type, int slave, QString* error);
+
+    bool addDevice(std::unique_ptr<SimDevice> device, QString* error = nullptr);
+    SimDevice* device(int slave) const;
+    QList<SimDevice*> devices() const;
+    QString spec() const;
+
+    SimOutcome handleFrame(const QByteArray& requestAdu, qint64 nowMs);
+    SimOutcome handleFrame(const QByteArray& requestAdu)
+    {
+        return handleFrame(requestAdu, nowMs());
+    }
+    // Runs a console command on device `slave` at the clock's time.
+    SimControlResult control(int slave, const QStringList& args);
+
+    void setFaults(const FaultInjector& faults);
+    // The line's settings; devices whose settings in force differ do not hear the frames.
+    // The devices present are configured to match, as an installer would have done.
+    void setLine(int baud, char parity);
+    int lineBaud() const { return m_lineBaud; }
+
+    SimClock& clock() const { return *m_clock; }
+    qint64 nowMs() const { return m_clock->nowMs(); }
+    QMutex& mutex() const { return m_mutex; }
+
+    // Parses a CRC-checked request ADU as far as it goes; rawData holds the bytes after the
+    // function code, so that devices can check the structure themselves.
+    static bool decodeRequest(const QByteArray& adu, ModbusRequest* request);
+
+private:
+    bool hears(const SimDevice& device) const;
+
+    std::shared_ptr<SimClock> m_clock;
+    std::map<int, std::unique_ptr<SimDevice>> m_devices;
+    FaultInjector m_faults;
+    int m_lineBaud = 0;
+    char m_lineParity = 0;
+    mutable QMutex m_mutex;
+};
+
+} // namespace opentop

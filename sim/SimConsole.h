@@ -1,0 +1,30 @@
+#pragma once
+
+#include "SimDevice.h"
+
+#include <QCoreApplication>
+#include <QString>
+#include <memory>
+
+namespace opentop {
+
+class SimBus;
+
+// The simulator's text console: one command per line (help, list, quit and the per-device
+// backdoors alarm, warning, load, vr, input, ignore-stop, power-cycle, get, set).
+class SimConsole
+{
+    Q_DECLARE_TR_FUNCTIONS(opentop::SimConsole)
+public:
+    explicit SimConsole(std::shared_ptr<SimBus> bus);
+
+    SimControlResult execute(const QString& line);
+    bool quitRequested() const { return m_quit; }
+    static QString helpText();
+
+private:
+    std::shared_ptr<SimBus> m_bus;
+    bool m_quit = false;
+};
+
+} // namespace opentop

@@ -1,0 +1,139 @@
+#include "SimOptions.h"
+
+namespace opentop {
+
+const QList<int>& SimOptions::bauds()
+{
+    static const QList<int> list = {1200,  2400,  4800,  9600,  14400,
+                                    19200, 28800, 38400, 57600, 115200};
+    return list;
+}
+
+QString SimOptions::usage()
+{
+    return tr(
+        "Usage: opentop-sim --devices SPEC [options]\n"
+        "Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.\n\n"
+        "  --devices SPEC     devices and machine numbers, e.g. dbu200@1,dbu400@150,dcpid@7\n"
+        "  --pty [PATH]       serve on a pty (default); PATH: also create this symlink\n"
+        "  --tcp HOST:PORT    serve Modbus TCP (HOST defaults to 127.0.0.1, PORT 0: any)\n"
+        "  --baud N           line speed for wire timing and device settings (19200)\n"
+        "  --parity N|E|O     line parity (N)\n"
+        "  --wire-timing      delay replies as a real line at --baud would\n"
+        "  --turnaround MS    device turnaround with --wire-timing (2)\n"
+        "  --faults LIST      e.g. drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000\n"
+        "  --seed N           seed of the fault injection (1)\n"
+        "  --quiet            no frame trace on stderr\n"
+        "  --help             this text\n\n"
+        "Prints \"pty: PATH\" (and \"tcp: HOST:PORT\"), then \"ready\". Reads console commands\n"
+        "from stdin (type help). Stops on SIGINT, SIGTERM or quit.\n");
+}
+
+std::optional<SimOptions> SimOptions::parse(const QStringList& arguments, QString* error)
+{
+    SimOptions o;
+    auto failed = [error](const QString& message) {
+        if (error)
+            *error = message;
+        return std::nullopt;
+    };
+    for (int i = 0; i < arguments.size(); ++i) {
+        QString arg = arguments.at(i);
+        QString inlineValue;
+        bool hasInline = false;
+        if (arg.startsWith(QLatin1String("--")) && arg.contains(QLatin1Char('='))) {
+            inlineValue = arg.mid(arg.indexOf(QLatin1Char('=')) + 1);
+            arg = arg.left(arg.indexOf(QLatin1Char('=')));
+            hasInline = true;
+        }
+        // The value of an option that needs one.
+        auto value = [&](QString* out) {
+            if (hasInline) {
+                *out = inlineValue;
+                return true;
+            }
+            if (i + 1 >= arguments.size())
+                return false;
+            *out = arguments.at(++i);
+            return true;
+        };
+        QString v;
+        if (arg == QLatin1String("--help") || arg == QLatin1String("-h")) {
+            o.help = true;
+        } else if (arg == QLatin1String("--devices")) {
+            if (!value(&o.devices) || o.devices.isEmpty())
+                return failed(tr("--devices needs a device list such as dbu200@1,dcpid@7"));
+        } else if (arg == QLatin1String("--pty")) {
+            o.pty = true;
+            if (hasInline)
+                o.ptyLink = inlineValue;
+            else if (i + 1 < arguments.size() && !arguments.at(i + 1).startsWith(QLatin1Char('-')))
+                o.ptyLink = arguments.at(++i);
+        } else if (arg == QLatin1String("--tcp")) {
+            if (!value(&v))
+                return failed(tr("--tcp needs HOST:PORT, e.g. 127.0.0.1:5020"));
+            const int colon = v.lastIndexOf(QLatin1Char(':'));
+            const QString host = colon >= 0 ? v.left(colon) : QString();
+            bool ok = false;
+            const int port = (colon >= 0 ? v.mid(colon + 1) : v).toInt(&ok);
+            if (!ok || port < 0 || port > 65535)
+                return failed(tr("--tcp needs HOST:PORT with PORT 0..65535, got '%1'").arg(v));
+            o.tcp = true;
+            if (!host.isEmpty())
+                o.tcpHost = host;
+            o.tcpPort = quint16(port);
+        } else if (arg == QLatin1String("--baud")) {
+            bool ok = false;
+            const int baud = value(&v) ? v.toInt(&ok) : 0;
+            if (!ok || !bauds().contains(baud)) {
+                QStringList allowed;
+                for (int b : bauds())
+                    allowed << QString::number(b);
+                return failed(tr("--baud must be one of %1, got '%2'")
+                                  .arg(allowed.join(QStringLiteral(", ")), v));
+            }
+            o.baud = baud;
+        } else if (arg == QLatin1String("--parity")) {
+            const QString p = value(&v) ? v.toUpper() : QString();
+            if (p != QLatin1String("N") && p != QLatin1String("E") && p != QLatin1String("O"))
+                return failed(tr("--parity must be N, E or O, got '%1'").arg(v));
+            o.parity = p.at(0).toLatin1();
+        } else if (arg == QLatin1String("--wire-timing")) {
+            o.wireTiming = true;
+        } else if (arg == QLatin1String("--turnaround")) {
+            bool ok = false;
+            const double ms = value(&v) ? v.toDouble(&ok) : -1;
+            if (!ok || ms < 0 || ms > 1000)
+                return failed(tr("--turnaround must be 0..1000 ms, got '%1'").arg(v));
+            o.turnaroundMs = ms;
+        } else if (arg == QLatin1String("--faults")) {
+            if (!value(&v))
+                return failed(tr("--faults needs a list such as drop=0.02,crc=0.01"));
+            QString why;
+            const std::optional<FaultInjector::Rates> rates = FaultInjector::parse(v, &why);
+            if (!rates)
+                return failed(tr("--faults: %1").arg(why));
+            o.faults = *rates;
+        } else if (arg == QLatin1String("--seed")) {
+            bool ok = false;
+            const uint seed = value(&v) ? v.toUInt(&ok) : 0;
+            if (!ok)
+                return failed(tr("--seed must be a whole number 0..4294967295, got '%1'").arg(v));
+            o.seed = seed;
+        } else if (arg == QLatin1String("--quiet") || arg == QLatin1String("-q")) {
+            o.quiet = true;
+        } else {
+            return failed(tr("unknown argument '%1'; options: --devices, --pty, --tcp, --baud, "
+                             "--parity, --wire-timing, --turnaround, --faults, --seed, --quiet, "
+                             "--help")
+                              .arg(arguments.at(i)));
+        }
+    }
+    if (!o.help && o.devices.isEmpty())
+        return failed(tr("--devices SPEC is required, e.g. --devices dbu200@1,dcpid@7"));
+    if (!o.pty && !o.tcp)
+        o.pty = true;
+    return o;
+}
+
+} // namespace opentop

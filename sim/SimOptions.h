@@ -1,0 +1,39 @@
+#pragma once
+
+#include "FaultInjector.h"
+
+#include <QCoreApplication>
+#include <QString>
+#include <QStringList>
+#include <optional>
+
+namespace opentop {
+
+// The command line of opentop-sim.
+struct SimOptions
+{
+    Q_DECLARE_TR_FUNCTIONS(opentop::SimOptions)
+public:
+    QString devices;
+    bool pty = false;
+    QString ptyLink; // symlink to create, empty for none
+    bool tcp = false;
+    QString tcpHost = QStringLiteral("127.0.0.1");
+    quint16 tcpPort = 502;
+    int baud = 19200;
+    char parity = 'N';
+    bool wireTiming = false;
+    double turnaroundMs = 2.0;
+    FaultInjector::Rates faults;
+    quint32 seed = 1;
+    bool quiet = false;
+    bool help = false;
+
+    // `arguments` without the program name. On error returns nothing and sets *error to a
+    // message that names the allowed values.
+    static std::optional<SimOptions> parse(const QStringList& arguments, QString* error);
+    static QString usage();
+    static const QList<int>& bauds();
+};
+
+} // namespace opentop

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <QtGlobal>
+
+namespace opentop {
+
+// How long frames take on a real RS-485 line, for simulators on a pty or in process where bytes
+// arrive instantly: a reply comes after the request's transmission, the 3.5 character gap, the
+// device's turnaround and the reply's own transmission.
+class WireTiming
+{
+public:
+    WireTiming(int baud = 19200, char parity = 'N', double turnaroundMs = 2.0);
+
+    int bitsPerChar() const; // start + 8 data + parity + stop: 10 without parity, 11 with
+    double charMs() const;
+    double frameMs(int bytes) const;
+    double gapMs() const; // 3.5 characters, at least 1.75 ms above 19200 bit/s (Modbus spec)
+    // From the end of writing the request to the end of the reply on the wire.
+    double replyDelayMs(int requestBytes, int replyBytes) const;
+    // Quiet time after a broadcast before the next request.
+    double broadcastDelayMs(int requestBytes) const;
+
+    int baud() const { return m_baud; }
+    double turnaroundMs() const { return m_turnaroundMs; }
+
+private:
+    int m_baud;
+    char m_parity;
+    double m_turnaroundMs;
+};
+
+} // namespace opentop
