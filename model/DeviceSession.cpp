@@ -67,18 +67,22 @@ void DeviceSession::acceptRegisters(const QString& name, const QVector<quint16>&
     emit valueUpdated(name, ValueCodec::decode(*meta, registers, context()));
 }
 
+const ParameterMeta* DeviceSession::lookup(const QString& name, Outcome* outcome) const
+{
+    outcome->parameter = name;
+    const ParameterMeta* meta = m_profile.parameter(name);
+    if (!meta)
+        outcome->error = tr("%1 has no parameter \"%2\"").arg(m_profile.family, name);
+    return meta;
+}
+
 void DeviceSession::read(const QString& name, Done done)
 {
     Outcome outcome;
-    outcome.parameter = name;
-    const ParameterMeta* meta = m_profile.parameter(name);
-    if (!meta) {
-        outcome.error = tr("%1 has no parameter \"%2\"").arg(m_profile.family, name);
-        done(outcome);
-        return;
-    }
-    if (!meta->isReadable()) {
+    const ParameterMeta* meta = lookup(name, &outcome);
+    if (meta && !meta->isReadable())
         outcome.error = tr("%1 cannot be read (it is a write-only command)").arg(name);
+    if (!outcome.error.isEmpty()) {
         done(outcome);
         return;
     }
@@ -120,15 +124,10 @@ void DeviceSession::write(const QString& name, const QString& text, const WriteO
                           Done done)
 {
     Outcome outcome;
-    outcome.parameter = name;
-    const ParameterMeta* meta = m_profile.parameter(name);
-    if (!meta) {
-        outcome.error = tr("%1 has no parameter \"%2\"").arg(m_profile.family, name);
-        done(outcome);
-        return;
-    }
-    if (!meta->isWritable()) {
+    const ParameterMeta* meta = lookup(name, &outcome);
+    if (meta && !meta->isWritable())
         outcome.error = tr("%1 is read-only").arg(name);
+    if (!outcome.error.isEmpty()) {
         done(outcome);
         return;
     }

@@ -70,6 +70,7 @@ signals:
     void valueUpdated(const QString& name, const opentop::ParamValue& value);
 
 private:
+    const ParameterMeta* lookup(const QString& name, Outcome* outcome) const;
     void ensureControllingValues(const ParameterMeta& meta, std::function<void(QString)> then);
     void explainFailure(const ModbusResult& result, Outcome outcome, Done done);
     void verifyWrite(const ParameterMeta& meta, const QVector<quint16>& written, Outcome outcome,

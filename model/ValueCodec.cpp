@@ -241,12 +241,18 @@ ValueCodec::Encoded ValueCodec::encodeNumber(const ParameterMeta& meta, double v
         }
         raw = rounded;
     }
+    return encodeRaw(meta, raw, context);
+}
+
+ValueCodec::Encoded ValueCodec::encodeRaw(const ParameterMeta& meta, double raw,
+                                          const ValueContext& context)
+{
+    Encoded e;
     e.error = checkRaw(meta, raw, context);
-    if (!e.error.isEmpty())
-        return e;
-    e.ok = true;
+    e.ok = e.error.isEmpty();
     e.raw = raw;
-    e.registers = rawToRegisters(meta, raw);
+    if (e.ok)
+        e.registers = rawToRegisters(meta, raw);
     return e;
 }
 
@@ -287,14 +293,8 @@ ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QStr
     // An enumeration label first: "CCW", "cw/stop", "Disabled".
     const QString wanted = normalizedLabel(text);
     for (const EnumOption& o : spec.options) {
-        if (normalizedLabel(o.label) == wanted) {
-            e.error = checkRaw(meta, double(o.value), context);
-            e.ok = e.error.isEmpty();
-            e.raw = double(o.value);
-            if (e.ok)
-                e.registers = rawToRegisters(meta, e.raw);
-            return e;
-        }
+        if (normalizedLabel(o.label) == wanted)
+            return encodeRaw(meta, double(o.value), context);
     }
     // A hexadecimal code is a raw value ("0x0011"), for enumerations and bit fields.
     if (text.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)) {
@@ -305,12 +305,7 @@ ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QStr
                           .arg(meta.name, text, allowedText(meta, context));
             return e;
         }
-        e.error = checkRaw(meta, double(raw), context);
-        e.ok = e.error.isEmpty();
-        e.raw = double(raw);
-        if (e.ok)
-            e.registers = rawToRegisters(meta, e.raw);
-        return e;
+        return encodeRaw(meta, double(raw), context);
     }
     // A number, optionally followed by the unit ("2.5 s", "1500 r/min", "1500rpm").
     QString number = text;
@@ -328,14 +323,8 @@ ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QStr
         return e;
     }
     // Enumeration codes are raw values; everything else is in engineering units.
-    if (spec.ranges.isEmpty() && !spec.options.isEmpty()) {
-        e.error = checkRaw(meta, value, context);
-        e.ok = e.error.isEmpty();
-        e.raw = value;
-        if (e.ok)
-            e.registers = rawToRegisters(meta, value);
-        return e;
-    }
+    if (spec.ranges.isEmpty() && !spec.options.isEmpty())
+        return encodeRaw(meta, value, context);
     return encodeNumber(meta, value, context);
 }
 

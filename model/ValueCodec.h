@@ -31,6 +31,9 @@ public:
     // code, or a string. "2.5", "2.5 s", "CCW", "1", "0x0001".
     static Encoded encodeText(const ParameterMeta& meta, const QString& text,
                               const ValueContext& context = {});
+    // Raw value -> registers after checking it against the profile.
+    static Encoded encodeRaw(const ParameterMeta& meta, double raw,
+                             const ValueContext& context = {});
     // Raw value -> registers without validation (for the simulator and for raw service access).
     static QVector<quint16> rawToRegisters(const ParameterMeta& meta, double raw);
     static double registersToRaw(const ParameterMeta& meta, const QVector<quint16>& registers);

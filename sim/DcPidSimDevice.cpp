@@ -106,22 +106,8 @@ bool DcPidSimDevice::supportsFunction(quint8 function) const
 
 quint8 DcPidSimDevice::exceptionCode(SimError error) const
 {
-    switch (error) {
-    case SimError::IllegalFunction:
-        return 0x01;
-    case SimError::IllegalAddress:
-    case SimError::ReadOnly:
-        return 0x02;
-    case SimError::BadFormat:
-    case SimError::OutOfRange:
-        return 0x03;
-    case SimError::Busy:
-        return 0x06;
-    case SimError::Prohibited:
-        return 0x40;
-    default:
-        return 0x04;
-    }
+    // The controller's extended code 0x40 "prohibited action" (manual 1.2.4.2).
+    return error == SimError::Prohibited ? 0x40 : SimDevice::exceptionCode(error);
 }
 
 bool DcPidSimDevice::allowsPartialWrite(const ParameterMeta& meta) const

@@ -7,13 +7,18 @@ namespace opentop {
 // How to reach a bus. Exactly one kind is used at a time.
 struct ConnectionSettings
 {
-    enum class Kind { Serial, Tcp, Simulated };
+    enum class Kind
+    {
+        Serial,
+        Tcp,
+        Simulated
+    };
 
     Kind kind = Kind::Serial;
     // Serial (libmodbus RTU).
-    QString port;        // /dev/ttyUSB0, a pty path, COM3 ...
-    int baud = 19200;    // 1200 ... 115200
-    char parity = 'N';   // 'N', 'E', 'O'
+    QString port;      // /dev/ttyUSB0, a pty path, COM3 ...
+    int baud = 19200;  // 1200 ... 115200
+    char parity = 'N'; // 'N', 'E', 'O'
     int dataBits = 8;
     int stopBits = 1;
     // Modbus TCP gateway.
@@ -22,9 +27,9 @@ struct ConnectionSettings
     // In-process simulated bus: a device list such as "dbu200@1,dbu400@150,dcpid@7".
     QString simSpec;
 
-    int timeoutMs = 200;      // response timeout per attempt
-    int retries = 1;          // extra attempts after the first
-    int byteTimeoutMs = 0;    // 0: derived from the baud rate
+    int timeoutMs = 200;   // response timeout per attempt
+    int retries = 1;       // extra attempts after the first
+    int byteTimeoutMs = 0; // 0: derived from the baud rate
 
     // Empty when the settings are usable; otherwise what is wrong and what is allowed.
     QString validate() const;

@@ -11,7 +11,8 @@ namespace opentop {
 // an ADU (RTU or TCP); RtuFrame builds the PDU so that tests can check bytes against the manuals.
 struct ModbusRequest
 {
-    enum Function : quint8 {
+    enum Function : quint8
+    {
         ReadHolding = 0x03,
         ReadInput = 0x04,
         WriteSingle = 0x06,
@@ -19,23 +20,29 @@ struct ModbusRequest
         EncapsulatedInterface = 0x2B,
     };
     // User commands always go before background polling on the bus.
-    enum class Priority { Poll = 0, Normal = 1, User = 2 };
+    enum class Priority
+    {
+        Poll = 0,
+        Normal = 1,
+        User = 2
+    };
 
     quint8 slave = 1;
     quint8 function = ReadHolding;
     quint16 address = 0;
-    quint16 count = 0;         // registers to read or written by 0x10
-    QVector<quint16> values;   // 0x06: one value; 0x10: count values
-    QByteArray rawData;        // raw requests: bytes after the function code
-    bool raw = false;          // function code libmodbus has no API for
-    int timeoutMs = -1;        // -1: the connection's default
-    int retries = -1;          // -1: the connection's default
+    quint16 count = 0;       // registers to read or written by 0x10
+    QVector<quint16> values; // 0x06: one value; 0x10: count values
+    QByteArray rawData;      // raw requests: bytes after the function code
+    bool raw = false;        // function code libmodbus has no API for
+    int timeoutMs = -1;      // -1: the connection's default
+    int retries = -1;        // -1: the connection's default
     Priority priority = Priority::Normal;
 
     static ModbusRequest readHolding(quint8 slave, quint16 address, quint16 count);
     static ModbusRequest readInput(quint8 slave, quint16 address, quint16 count);
     static ModbusRequest writeSingle(quint8 slave, quint16 address, quint16 value);
-    static ModbusRequest writeMultiple(quint8 slave, quint16 address, const QVector<quint16>& values);
+    static ModbusRequest writeMultiple(quint8 slave, quint16 address,
+                                       const QVector<quint16>& values);
     static ModbusRequest rawRequest(quint8 slave, quint8 function, const QByteArray& data);
     // 0x2B / 0x0E read device identification (basic or regular category).
     static ModbusRequest readDeviceIdentification(quint8 slave, quint8 readCode = 1,

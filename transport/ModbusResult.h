@@ -6,17 +6,18 @@
 
 namespace opentop {
 
-enum class ModbusError {
+enum class ModbusError
+{
     Ok,
-    Timeout,          // no reply within the response timeout
-    CrcError,         // a reply arrived with a bad CRC
-    WrongSlave,       // a reply from another machine number (a likely duplicate address)
-    Exception,        // the device answered with an exception code
-    MalformedReply,   // reply with the right CRC but wrong length, function or echo
-    PortError,        // the port failed or vanished
-    NotConnected,     // no open connection
-    InvalidRequest,   // rejected before anything was sent
-    Cancelled,        // cancelled by the caller before it was sent
+    Timeout,        // no reply within the response timeout
+    CrcError,       // a reply arrived with a bad CRC
+    WrongSlave,     // a reply from another machine number (a likely duplicate address)
+    Exception,      // the device answered with an exception code
+    MalformedReply, // reply with the right CRC but wrong length, function or echo
+    PortError,      // the port failed or vanished
+    NotConnected,   // no open connection
+    InvalidRequest, // rejected before anything was sent
+    Cancelled,      // cancelled by the caller before it was sent
 };
 
 QString modbusErrorName(ModbusError error);
@@ -32,7 +33,7 @@ struct ModbusResult
     QByteArray rawData;         // raw requests: bytes after the function code, CRC stripped
     QString message;            // human detail, e.g. the OS error for PortError
     int attempts = 0;
-    double elapsedMs = 0;       // of the last attempt
+    double elapsedMs = 0; // of the last attempt
 
     bool ok() const { return error == ModbusError::Ok; }
     // One line for users: "timeout after 3 attempts", "exception 02 Illegal data address".

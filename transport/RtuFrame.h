@@ -21,7 +21,8 @@ public:
     // Decodes a complete reply ADU into `result` (error, registers, rawData). Checks in this
     // order: length, CRC (CrcError), slave id (WrongSlave), exception (Exception with code),
     // function, byte count, echo of a write (MalformedReply). Writes return the written values.
-    static void decodeReply(const ModbusRequest& request, const QByteArray& adu, ModbusResult* result);
+    static void decodeReply(const ModbusRequest& request, const QByteArray& adu,
+                            ModbusResult* result);
 
     // Server side.
     // Length of the complete request at the start of `buffer`, 0 while more bytes are needed,
@@ -29,13 +30,14 @@ public:
     static int expectedRequestLength(const QByteArray& buffer);
     // Parses a CRC-checked request ADU. Returns false for a frame too short for its function.
     static bool decodeRequest(const QByteArray& adu, ModbusRequest* request);
-    static QByteArray encodeReadReply(quint8 slave, quint8 function, const QVector<quint16>& values);
+    static QByteArray encodeReadReply(quint8 slave, quint8 function,
+                                      const QVector<quint16>& values);
     static QByteArray encodeWriteSingleReply(quint8 slave, quint16 address, quint16 value);
     static QByteArray encodeWriteMultipleReply(quint8 slave, quint16 address, quint16 count);
     static QByteArray encodeException(quint8 slave, quint8 function, quint8 code);
     static QByteArray encodeRaw(quint8 slave, quint8 function, const QByteArray& data);
 
-    static QString toHex(const QByteArray& bytes); // "01 03 CA 03 00 01 4B D2"
+    static QString toHex(const QByteArray& bytes);  // "01 03 CA 03 00 01 4B D2"
     static QByteArray fromHex(const QString& text); // accepts spaces, "h" suffixes
 };
 

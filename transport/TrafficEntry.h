@@ -9,16 +9,21 @@ namespace opentop {
 // One frame on the wire, as the traffic log keeps it.
 struct TrafficEntry
 {
-    enum class Direction { Tx, Rx, Event };
+    enum class Direction
+    {
+        Tx,
+        Rx,
+        Event
+    };
 
     quint64 sequence = 0;
     QDateTime time;
     Direction direction = Direction::Tx;
     quint8 slave = 0;
     quint8 function = 0;
-    QByteArray bytes;   // the whole ADU as sent or received
-    QString summary;    // decoded meaning, e.g. "read 04 0x0109 x1" or "= 1500"
-    QString error;      // empty when none
+    QByteArray bytes;       // the whole ADU as sent or received
+    QString summary;        // decoded meaning, e.g. "read 04 0x0109 x1" or "= 1500"
+    QString error;          // empty when none
     double responseMs = -1; // Rx only: time from request to reply
 
     QString directionText() const;

@@ -21,7 +21,8 @@ public:
     // Adds meaning to a frame's summary (e.g. parameter names from a profile); set by the model.
     // Returns the summary to keep (typically entry.summary plus names); empty keeps it as is.
     // Runs on the appending thread, without the log's lock held.
-    using Describer = std::function<QString(const TrafficEntry& entry, const ModbusRequest* request)>;
+    using Describer =
+        std::function<QString(const TrafficEntry& entry, const ModbusRequest* request)>;
 
     explicit TrafficLog(int capacity = 20000, QObject* parent = nullptr);
 

@@ -1,5 +1,5 @@
-#include "DeviceIdentifier.h"
 #include "DeviceSession.h"
+#include "DeviceIdentifier.h"
 #include "ModbusClient.h"
 #include "ProfileRegistry.h"
 #include "SimBackend.h"
@@ -71,7 +71,9 @@ protected:
 TEST_F(DeviceSessionTest, WritesByNameAndVerifiesByReadingBack)
 {
     DeviceSession session(client.get(), dbu(), 1, QStringLiteral("dbu200"));
-    const auto o = wait([&](auto done) { session.write(QStringLiteral("spno2.accel"), QStringLiteral("2.5"), {}, done); });
+    const auto o = wait([&](auto done) {
+        session.write(QStringLiteral("spno2.accel"), QStringLiteral("2.5"), {}, done);
+    });
     EXPECT_TRUE(o.ok) << qPrintable(o.error);
     EXPECT_TRUE(o.verified);
     EXPECT_DOUBLE_EQ(o.value.number, 2.5);
@@ -84,7 +86,9 @@ TEST_F(DeviceSessionTest, InvalidValueIsRefusedAndNothingIsSent)
 {
     DeviceSession session(client.get(), dbu(), 150, QStringLiteral("dbu400"));
     const int before = framesSent();
-    const auto o = wait([&](auto done) { session.write(QStringLiteral("spno2.speed"), QStringLiteral("280"), {}, done); });
+    const auto o = wait([&](auto done) {
+        session.write(QStringLiteral("spno2.speed"), QStringLiteral("280"), {}, done);
+    });
     EXPECT_FALSE(o.ok);
     EXPECT_FALSE(o.sent);
     EXPECT_TRUE(o.error.contains(QStringLiteral("0 or 300–3000 r/min"))) << qPrintable(o.error);
@@ -95,7 +99,9 @@ TEST_F(DeviceSessionTest, CommandsNeedAnExplicitRequest)
 {
     DeviceSession session(client.get(), dbu(), 1, QStringLiteral("dbu200"));
     const int before = framesSent();
-    const auto refused = wait([&](auto done) { session.write(QStringLiteral("run.start"), QStringLiteral("START"), {}, done); });
+    const auto refused = wait([&](auto done) {
+        session.write(QStringLiteral("run.start"), QStringLiteral("START"), {}, done);
+    });
     EXPECT_FALSE(refused.ok);
     EXPECT_FALSE(refused.sent);
     EXPECT_EQ(framesSent(), before);
@@ -103,7 +109,9 @@ TEST_F(DeviceSessionTest, CommandsNeedAnExplicitRequest)
     // the communication error register tells why.
     DeviceSession::WriteOptions explicitly;
     explicitly.explicitCommand = true;
-    const auto o = wait([&](auto done) { session.write(QStringLiteral("run.start"), QStringLiteral("START"), explicitly, done); });
+    const auto o = wait([&](auto done) {
+        session.write(QStringLiteral("run.start"), QStringLiteral("START"), explicitly, done);
+    });
     EXPECT_FALSE(o.ok);
     EXPECT_TRUE(o.sent);
     EXPECT_TRUE(o.error.contains(QStringLiteral("04"))) << qPrintable(o.error);
@@ -115,25 +123,31 @@ TEST_F(DeviceSessionTest, DependentEnumerationReadsItsControllingParameterFirst)
     DeviceSession session(client.get(), dbu(), 1, QStringLiteral("dbu200"));
     EXPECT_FALSE(session.hasCached(QStringLiteral("core.control_mode")));
     // Mode2 is the default: RUN/STOP (a Mode1 function) is refused without sending a write.
-    const auto o = wait([&](auto done) { session.write(QStringLiteral("io.x0"), QStringLiteral("RUN/STOP"), {}, done); });
+    const auto o = wait([&](auto done) {
+        session.write(QStringLiteral("io.x0"), QStringLiteral("RUN/STOP"), {}, done);
+    });
     EXPECT_FALSE(o.ok);
     EXPECT_TRUE(session.hasCached(QStringLiteral("core.control_mode")));
     EXPECT_TRUE(o.error.contains(QStringLiteral("CW/STOP"))) << qPrintable(o.error);
-    const auto ok = wait([&](auto done) { session.write(QStringLiteral("io.x0"), QStringLiteral("M2"), {}, done); });
+    const auto ok = wait(
+        [&](auto done) { session.write(QStringLiteral("io.x0"), QStringLiteral("M2"), {}, done); });
     EXPECT_TRUE(ok.ok) << qPrintable(ok.error);
     EXPECT_EQ(ok.value.registers, QVector<quint16>{0x17});
 }
 
 TEST_F(DeviceSessionTest, ReadsDecodeAndTimeoutsAreReported)
 {
-    DeviceSession dc(client.get(), *ProfileRegistry::builtIn().family(QStringLiteral("dcpid")), 7, QString());
+    DeviceSession dc(client.get(), *ProfileRegistry::builtIn().family(QStringLiteral("dcpid")), 7,
+                     QString());
     const auto name = wait([&](auto done) { dc.read(QStringLiteral("info.device_name"), done); });
     EXPECT_TRUE(name.ok) << qPrintable(name.error);
     EXPECT_FALSE(name.value.text.isEmpty());
     DeviceSession absent(client.get(), dbu(), 99, QString());
-    const auto o = wait([&](auto done) { absent.read(QStringLiteral("status.current_speed"), done); });
+    const auto o =
+        wait([&](auto done) { absent.read(QStringLiteral("status.current_speed"), done); });
     EXPECT_FALSE(o.ok);
-    EXPECT_TRUE(o.error.contains(QStringLiteral("timeout"), Qt::CaseInsensitive)) << qPrintable(o.error);
+    EXPECT_TRUE(o.error.contains(QStringLiteral("timeout"), Qt::CaseInsensitive))
+        << qPrintable(o.error);
 }
 
 TEST_F(DeviceSessionTest, IdentifierTellsFamiliesApart)
@@ -151,7 +165,8 @@ TEST_F(DeviceSessionTest, IdentifierTellsFamiliesApart)
     QTimer::singleShot(5000, &loop, &QEventLoop::quit);
     loop.exec();
     ASSERT_EQ(found.size(), 4);
-    std::sort(found.begin(), found.end(), [](const DeviceInfo& a, const DeviceInfo& b) { return a.slave < b.slave; });
+    std::sort(found.begin(), found.end(),
+              [](const DeviceInfo& a, const DeviceInfo& b) { return a.slave < b.slave; });
     EXPECT_EQ(found[0].family, QStringLiteral("dbu"));
     EXPECT_EQ(found[0].state, DeviceInfo::State::Present);
     EXPECT_FALSE(found[0].firmware.isEmpty());
