@@ -1,5 +1,7 @@
 #include "Profile.h"
 
+#include <algorithm>
+
 namespace opentop {
 
 namespace {
@@ -56,6 +58,25 @@ const CodeTable* Profile::codeTable(const QString& id) const
 {
     const auto it = codeTables.constFind(id);
     return it == codeTables.cend() ? nullptr : &it.value();
+}
+
+const ProfileRole* Profile::role(const QString& roleName) const
+{
+    const auto it = roles.constFind(roleName);
+    return it == roles.cend() ? nullptr : &it.value();
+}
+
+QVector<const ParameterMeta*> Profile::records(const QString& table) const
+{
+    QVector<const ParameterMeta*> result;
+    for (const ParameterMeta& p : parameters) {
+        if (p.kind == QLatin1String("record") && p.codeTable == table)
+            result << &p;
+    }
+    std::sort(result.begin(), result.end(), [](const ParameterMeta* a, const ParameterMeta* b) {
+        return a->address < b->address;
+    });
+    return result;
 }
 
 QVector<const ParameterMeta*> Profile::parametersInGroup(const QString& groupId) const

@@ -5,7 +5,9 @@
 
 #include <QHash>
 #include <QString>
+#include <QStringList>
 #include <QVector>
+#include <optional>
 
 namespace opentop {
 
@@ -43,6 +45,17 @@ struct IdentifyRule
     QString nameMatch;        // regular expression the name must match; empty: any
 };
 
+// What a parameter (or a value of it) means to generic code: "stop" is writing 0 to run.start
+// on a DBU and 0 to speed.command on the DC controller; "running" is a status bit or a
+// non-zero value. Keeps family knowledge in the data.
+struct ProfileRole
+{
+    QString parameter;           // single-parameter roles
+    QString field;               // a bit field of `parameter` (bits type)
+    std::optional<qint64> value; // the raw value to write, for command roles
+    QStringList parameters;      // list roles, e.g. "monitor"
+};
+
 struct SerialDefaults
 {
     int baud = 19200;
@@ -72,6 +85,7 @@ public:
     QVector<ReadBlock> readBlocks;
     IdentifyRule identify;
     QHash<QString, CodeTable> codeTables;
+    QHash<QString, ProfileRole> roles;
     QVector<ParameterMeta> parameters;
 
     const ParameterMeta* parameter(const QString& parameterName) const;
@@ -80,6 +94,9 @@ public:
     const ProfileVariant* variant(const QString& id) const;
     const ProfileGroup* group(const QString& id) const;
     const CodeTable* codeTable(const QString& id) const;
+    const ProfileRole* role(const QString& roleName) const;
+    // Parameters of kind "record" decoded by `codeTable`, in address order (newest first).
+    QVector<const ParameterMeta*> records(const QString& codeTable) const;
     QVector<const ParameterMeta*> parametersInGroup(const QString& group) const;
     // Builds the name index; called by the loader.
     void index();

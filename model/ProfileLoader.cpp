@@ -9,6 +9,7 @@
 #include <QJsonDocument>
 #include <QRegularExpression>
 #include <QSet>
+#include <algorithm>
 
 namespace opentop {
 
@@ -36,14 +37,14 @@ bool rawAllowedBy(const ValueSpec& spec, double raw)
 
 bool readHeader(const QJsonObject& root, JsonReader& json, Profile* p)
 {
-    if (!json.onlyKeys(root,
-                       {QStringLiteral("schema"), QStringLiteral("family"), QStringLiteral("name"),
-                        QStringLiteral("vendor"), QStringLiteral("manual"),
-                        QStringLiteral("serial"), QStringLiteral("limits"),
-                        QStringLiteral("variants"), QStringLiteral("identify"),
-                        QStringLiteral("readBlocks"), QStringLiteral("groups"),
-                        QStringLiteral("codeTables"), QStringLiteral("parameters")},
-                       tr("top level")))
+    if (!json.onlyKeys(
+            root,
+            {QStringLiteral("schema"), QStringLiteral("family"), QStringLiteral("name"),
+             QStringLiteral("vendor"), QStringLiteral("manual"), QStringLiteral("serial"),
+             QStringLiteral("limits"), QStringLiteral("variants"), QStringLiteral("identify"),
+             QStringLiteral("readBlocks"), QStringLiteral("groups"), QStringLiteral("codeTables"),
+             QStringLiteral("parameters"), QStringLiteral("roles")},
+            tr("top level")))
         return false;
     if (json.integer(root, QStringLiteral("schema")).value_or(0) != 1)
         return json.fail(tr("\"schema\" must be 1"));
@@ -247,6 +248,67 @@ bool crossCheck(const QJsonObject& root, JsonReader& json, Profile* p)
     return true;
 }
 
+bool readRoles(const QJsonObject& root, JsonReader& json, Profile* p)
+{
+    const QJsonObject roles = root.value(QStringLiteral("roles")).toObject();
+    for (auto it = roles.begin(); it != roles.end(); ++it) {
+        const QString where = QStringLiteral("roles.%1").arg(it.key());
+        ProfileRole role;
+        auto known = [&](const QString& name) {
+            if (!p->parameter(name))
+                return json.fail(tr("%1: unknown parameter \"%2\"").arg(where, name));
+            return true;
+        };
+        if (it.value().isString()) {
+            role.parameter = it.value().toString();
+        } else if (it.value().isArray()) {
+            for (const QJsonValue& v : it.value().toArray()) {
+                if (!known(v.toString()))
+                    return false;
+                role.parameters << v.toString();
+            }
+        } else if (it.value().isObject()) {
+            const QJsonObject o = it.value().toObject();
+            if (!json.onlyKeys(
+                    o, {QStringLiteral("param"), QStringLiteral("field"), QStringLiteral("value")},
+                    where))
+                return false;
+            role.parameter = o.value(QStringLiteral("param")).toString();
+            role.field = o.value(QStringLiteral("field")).toString();
+            if (o.contains(QStringLiteral("value"))) {
+                const auto v = json.integerValue(o.value(QStringLiteral("value")),
+                                                 where + QStringLiteral(".value"));
+                if (!v)
+                    return false;
+                role.value = *v;
+            }
+        } else {
+            return json.fail(
+                tr("%1 must be a parameter name, a list of names or an object").arg(where));
+        }
+        if (role.parameters.isEmpty() && !known(role.parameter))
+            return false;
+        if (!role.field.isEmpty()) {
+            const ParameterMeta* m = p->parameter(role.parameter);
+            const bool found = std::any_of(m->bits.begin(), m->bits.end(),
+                                           [&](const BitField& b) { return b.name == role.field; });
+            if (!found)
+                return json.fail(tr("%1: \"%2\" has no bit field \"%3\"")
+                                     .arg(where, role.parameter, role.field));
+        }
+        if (role.value) {
+            const ParameterMeta* m = p->parameter(role.parameter);
+            if (!m->isWritable() || !rawAllowedBy(m->spec, double(*role.value)))
+                return json.fail(tr("%1: %2 is not a value \"%3\" can be written with")
+                                     .arg(where)
+                                     .arg(*role.value)
+                                     .arg(role.parameter));
+        }
+        p->roles.insert(it.key(), role);
+    }
+    return true;
+}
+
 } // namespace
 
 std::optional<Profile> ProfileLoader::loadJson(const QByteArray& data, const QString& sourceName,
@@ -294,7 +356,7 @@ std::optional<Profile> ProfileLoader::loadJson(const QByteArray& data, const QSt
         profile.parameters << meta;
     }
     profile.index();
-    if (!crossCheck(root, json, &profile))
+    if (!crossCheck(root, json, &profile) || !readRoles(root, json, &profile))
         return failWith(detail);
     return profile;
 }

@@ -201,3 +201,48 @@ TEST(ProfileLoader, RejectsDuplicateNamesAndBrokenJson)
     EXPECT_FALSE(ProfileLoader::loadFile(QStringLiteral("/nonexistent/p.json"), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("/nonexistent/p.json: cannot open")));
 }
+
+TEST(ProfileLoader, RolesBindMeaningToParameters)
+{
+    QJsonObject root = testProfileJson();
+    root[QStringLiteral("roles")] = QJsonObject{
+        {QStringLiteral("stop"), QJsonObject{{QStringLiteral("param"), QStringLiteral("start")},
+                                             {QStringLiteral("value"), 0}}},
+        {QStringLiteral("running"),
+         QJsonObject{{QStringLiteral("param"), QStringLiteral("status")},
+                     {QStringLiteral("field"), QStringLiteral("running")}}},
+        {QStringLiteral("currentSpeed"), QStringLiteral("speed")},
+        {QStringLiteral("monitor"), QJsonArray{QStringLiteral("status"), QStringLiteral("speed")}}};
+    QString error;
+    const auto profile = ProfileLoader::loadJson(toJson(root), QStringLiteral("tdev.json"), &error);
+    ASSERT_TRUE(profile) << qPrintable(error);
+    EXPECT_EQ(profile->role(QStringLiteral("stop"))->parameter, QStringLiteral("start"));
+    EXPECT_EQ(*profile->role(QStringLiteral("stop"))->value, 0);
+    EXPECT_EQ(profile->role(QStringLiteral("running"))->field, QStringLiteral("running"));
+    EXPECT_EQ(profile->role(QStringLiteral("monitor"))->parameters.size(), 2);
+    EXPECT_EQ(profile->role(QStringLiteral("nothing")), nullptr);
+    EXPECT_EQ(profile->records(QStringLiteral("alarm")).size(), 1);
+
+    const struct
+    {
+        QJsonValue role;
+        const char* expected;
+    } bad[] = {
+        {QStringLiteral("nope"), "roles.r: unknown parameter \"nope\""},
+        {QJsonObject{{QStringLiteral("param"), QStringLiteral("status")},
+                     {QStringLiteral("field"), QStringLiteral("x")}},
+         "has no bit field \"x\""},
+        {QJsonObject{{QStringLiteral("param"), QStringLiteral("start")},
+                     {QStringLiteral("value"), 7}},
+         "7 is not a value \"start\" can be written with"},
+        {QJsonObject{{QStringLiteral("param"), QStringLiteral("speed")},
+                     {QStringLiteral("valeu"), 1}},
+         "unknown key \"valeu\""},
+        {42, "must be a parameter name"},
+    };
+    for (const auto& b : bad) {
+        root[QStringLiteral("roles")] = QJsonObject{{QStringLiteral("r"), b.role}};
+        EXPECT_FALSE(ProfileLoader::loadJson(toJson(root), QStringLiteral("tdev.json"), &error));
+        EXPECT_TRUE(error.contains(QString::fromUtf8(b.expected))) << qPrintable(error);
+    }
+}
