@@ -40,6 +40,10 @@ ValueContext DeviceSession::context() const
 {
     ValueContext c;
     c.variant = m_variant;
+    if (m_variant.isEmpty()) {
+        for (const ProfileVariant& v : m_profile.variants)
+            c.possibleVariants << v.id;
+    }
     c.parameterRaw = [this](const QString& name) -> std::optional<qint64> {
         const ParameterMeta* meta = m_profile.parameter(name);
         const auto it = m_cache.constFind(name);

@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 #include <QRegularExpression>
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -152,6 +153,24 @@ QString ValueCodec::allowedText(const ParameterMeta& meta, const ValueContext& c
 
 QString ValueCodec::checkRaw(const ParameterMeta& meta, double raw, const ValueContext& context)
 {
+    if (context.variant.isEmpty() && !context.possibleVariants.isEmpty()) {
+        const bool variantDependent =
+            std::any_of(meta.conditions.begin(), meta.conditions.end(),
+                        [](const ValueCondition& c) { return !c.variant.isEmpty(); });
+        if (variantDependent) {
+            for (const QString& v : context.possibleVariants) {
+                ValueContext one = context;
+                one.variant = v;
+                one.possibleVariants.clear();
+                const QString error = checkRaw(meta, raw, one);
+                if (!error.isEmpty())
+                    return error + tr(" (the variant is not known, so the value must suit %1; name "
+                                      "the variant to use its own range)")
+                                       .arg(context.possibleVariants.join(QStringLiteral(", ")));
+            }
+            return QString();
+        }
+    }
     QString unresolved;
     const ValueSpec& spec = meta.specFor(context, &unresolved);
     if (!unresolved.isEmpty())

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QString>
+#include <QStringList>
 #include <functional>
 #include <optional>
 
@@ -10,6 +11,9 @@ namespace opentop {
 struct ValueContext
 {
     QString variant; // empty when not known
+    // With the variant unknown: every variant the device could be. A value must then suit all
+    // of them (e.g. 300–3000 r/min for a DBU that may be a DBU400).
+    QStringList possibleVariants;
     std::function<std::optional<qint64>(const QString& parameter)> parameterRaw;
 
     std::optional<qint64> rawOf(const QString& parameter) const

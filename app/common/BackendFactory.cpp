@@ -8,7 +8,7 @@
 
 namespace opentop {
 
-BackendFactory::Made BackendFactory::makeClient(const ConnectionSettings& settings)
+BackendFactory::Made BackendFactory::makeClient(const ConnectionSettings& settings, TrafficLog* log)
 {
     Made made;
     made.error = settings.validate();
@@ -29,6 +29,7 @@ BackendFactory::Made BackendFactory::makeClient(const ConnectionSettings& settin
         backend = std::make_unique<SimBackend>(made.simBus, false, settings.baud);
         break;
     }
+    backend->setTrafficLog(log);
     made.client = std::make_unique<ModbusClient>(std::move(backend), settings);
     return made;
 }

@@ -10,6 +10,7 @@ namespace opentop {
 class ModbusBackend;
 class ModbusClient;
 class SimBus;
+class TrafficLog;
 
 // Makes the backend a ConnectionSettings names: libmodbus RTU, libmodbus TCP, or the
 // in-process simulated bus.
@@ -22,7 +23,8 @@ public:
         std::shared_ptr<SimBus> simBus; // set for a simulated bus (tests and the sim console)
         QString error;
     };
-    static Made makeClient(const ConnectionSettings& settings);
+    // `log`, when given, records every frame of the connection (it must outlive the client).
+    static Made makeClient(const ConnectionSettings& settings, TrafficLog* log = nullptr);
 };
 
 } // namespace opentop

@@ -35,6 +35,13 @@ void ConnectionOptions::addTo(QCommandLineParser& parser)
     });
 }
 
+QStringList ConnectionOptions::names()
+{
+    return {QStringLiteral("port"),      QStringLiteral("tcp"),     QStringLiteral("sim"),
+            QStringLiteral("family"),    QStringLiteral("baud"),    QStringLiteral("parity"),
+            QStringLiteral("stop-bits"), QStringLiteral("timeout"), QStringLiteral("retries")};
+}
+
 std::optional<ConnectionSettings> ConnectionOptions::fromParser(const QCommandLineParser& parser,
                                                                 const QString& fallbackSim,
                                                                 QString* error)

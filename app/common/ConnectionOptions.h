@@ -14,6 +14,7 @@ class ConnectionOptions
 {
 public:
     static void addTo(QCommandLineParser& parser);
+    static QStringList names(); // the option names addTo() adds
     // `fallbackSim`: the simulated bus to use when no connection is named (the GUI's default);
     // empty means a connection must be named.
     static std::optional<ConnectionSettings> fromParser(const QCommandLineParser& parser,

@@ -219,3 +219,15 @@ TEST(ValueCodec, DecodeFlagsValuesOutsideTheProfile)
     EXPECT_TRUE(v.error.contains(QStringLiteral("100 r/min is not allowed")));
     EXPECT_TRUE(ValueCodec::decode(meta("speed"), {1000}).allowed);
 }
+
+TEST(ValueCodec, UnknownVariantMustSuitEveryVariant)
+{
+    ValueContext unknown;
+    unknown.possibleVariants = QStringList{QStringLiteral("t200"), QStringLiteral("t400")};
+    const auto e = ValueCodec::encodeNumber(meta("speed"), 250, unknown);
+    EXPECT_FALSE(e.ok);
+    EXPECT_TRUE(e.error.contains(QStringLiteral("0 or 300–3000 r/min"))) << qPrintable(e.error);
+    EXPECT_TRUE(e.error.contains(QStringLiteral("variant is not known"))) << qPrintable(e.error);
+    EXPECT_TRUE(ValueCodec::encodeNumber(meta("speed"), 300, unknown).ok);
+    EXPECT_TRUE(ValueCodec::encodeNumber(meta("accel"), 2.5, unknown).ok); // not variant-dependent
+}

@@ -1,0 +1,158 @@
+#include "CliApp.h"
+
+#include "CliCommands.h"
+#include "CliContext.h"
+#include "ConnectionOptions.h"
+#include "ExitCode.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QSet>
+#include <QTextStream>
+
+namespace opentop {
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("opentop::CliApp", text);
+}
+
+QList<QCommandLineOption> globalOptions()
+{
+    return {
+        {QStringLiteral("json"), tr("Machine-readable JSON on standard output.")},
+        {QStringLiteral("trace"), tr("Print every frame sent and received on standard error.")},
+        {QStringLiteral("variant"),
+         tr("Drive variant where the drive does not report it: VARIANT, or ID=VARIANT,... (e.g. "
+            "dbu400, 150=dbu400)."),
+         tr("VARIANT")},
+        {{QStringLiteral("h"), QStringLiteral("help")},
+         tr("Show this help, or a command's help after the command.")},
+        {QStringLiteral("version"), tr("Show the version.")},
+    };
+}
+
+} // namespace
+
+CliApp::CliApp()
+{
+    m_commands = makeCliCommands();
+}
+
+CliApp::~CliApp() = default;
+
+CliCommand* CliApp::find(const QString& name) const
+{
+    for (const auto& c : m_commands) {
+        if (c->name() == name)
+            return c.get();
+    }
+    return nullptr;
+}
+
+QString CliApp::helpText(const QString& program) const
+{
+    QString text = tr("Usage: %1 [options] COMMAND [arguments]\n\n"
+                      "Commissioning tool for RS-485 Modbus-RTU motor drives.\n\nCommands:\n")
+                       .arg(program);
+    for (const auto& c : m_commands)
+        text += QStringLiteral("  %1  %2\n").arg(c->synopsis().leftJustified(44), c->summary());
+    text += tr("\nConnection (every command that talks to drives):\n"
+               "  --port PATH | --tcp HOST:PORT | --sim SPEC\n"
+               "  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N\n"
+               "  Defaults follow the family: dbu 19200 8N1, dcpid 9600 8E1.\n"
+               "Output: --json  --trace  --variant VARIANT\n\n"
+               "Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file\n"
+               "(nothing written), 4 verification mismatch or a drive that did not stop,\n"
+               "130 interrupted (what was done is reported).\n\n"
+               "\"%1 help COMMAND\" shows a command's options.\n")
+                .arg(program);
+    return text;
+}
+
+int CliApp::run(const QStringList& arguments, QTextStream& out, QTextStream& err)
+{
+    const QString program = QFileInfo(arguments.value(0, QStringLiteral("opentop-cli"))).fileName();
+    QCommandLineParser parser;
+    parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    QSet<QString> global;
+    auto add = [&](const QCommandLineOption& o, QSet<QString>* names) {
+        parser.addOption(o);
+        for (const QString& n : o.names())
+            names->insert(n);
+    };
+    for (const QCommandLineOption& o : globalOptions())
+        add(o, &global);
+    ConnectionOptions::addTo(parser);
+    for (const QString& n : ConnectionOptions::names())
+        global.insert(n);
+    QHash<QString, QSet<QString>> commandOptions;
+    QSet<QString> added = global;
+    for (const auto& c : m_commands) {
+        for (const QCommandLineOption& o : c->options()) {
+            for (const QString& n : o.names())
+                commandOptions[c->name()].insert(n);
+            if (!added.contains(o.names().first()))
+                add(o, &added);
+        }
+    }
+    if (!parser.parse(arguments)) {
+        err << program << ": " << parser.errorText() << '\n'
+            << tr("Try \"%1 --help\".").arg(program) << Qt::endl;
+        return ExitUsage;
+    }
+    if (parser.isSet(QStringLiteral("version"))) {
+        out << "opentop-cli " << OPENTOP_VERSION << Qt::endl;
+        return ExitOk;
+    }
+    QStringList positional = parser.positionalArguments();
+    const bool help =
+        parser.isSet(QStringLiteral("help")) || positional.value(0) == QLatin1String("help");
+    if (positional.value(0) == QLatin1String("help"))
+        positional.removeFirst();
+    if (positional.isEmpty()) {
+        (help ? out : err) << helpText(program);
+        (help ? out : err).flush();
+        return help ? ExitOk : ExitUsage;
+    }
+    CliCommand* command = find(positional.first());
+    if (!command) {
+        err << tr("%1: unknown command \"%2\"; commands: ").arg(program, positional.first());
+        QStringList names;
+        for (const auto& c : m_commands)
+            names << c->name();
+        err << names.join(QStringLiteral(", ")) << Qt::endl;
+        return ExitUsage;
+    }
+    if (help) {
+        out << tr("Usage: %1 [options] %2\n%3\n")
+                   .arg(program, command->synopsis(), command->summary());
+        for (const QCommandLineOption& o : command->options())
+            out << QStringLiteral("  --%1%2  %3\n")
+                       .arg(o.names().last(),
+                            o.valueName().isEmpty() ? QString() : QLatin1Char(' ') + o.valueName(),
+                            o.description());
+        out.flush();
+        return ExitOk;
+    }
+    for (const QString& name : parser.optionNames()) {
+        if (!global.contains(name) && !commandOptions.value(command->name()).contains(name)) {
+            err << tr("%1 %2: --%3 is not an option of this command; see \"%1 help %2\"")
+                       .arg(program, command->name(), name)
+                << Qt::endl;
+            return ExitUsage;
+        }
+    }
+    CliContext context(parser, out, err);
+    const int code = command->run(context, positional.mid(1));
+    out.flush();
+    err.flush();
+    if (context.interrupted() && code == ExitOk)
+        return ExitInterrupted;
+    return code;
+}
+
+} // namespace opentop

@@ -1,0 +1,31 @@
+#pragma once
+
+#include "CliCommand.h"
+
+#include <QStringList>
+#include <memory>
+#include <vector>
+
+class QTextStream;
+
+namespace opentop {
+
+// opentop-cli: parses the command line, picks the command, runs it, returns the exit code.
+// Output streams are parameters so that tests run commands in-process.
+class CliApp
+{
+public:
+    CliApp();
+    ~CliApp();
+
+    int run(const QStringList& arguments, QTextStream& out, QTextStream& err);
+    const std::vector<std::unique_ptr<CliCommand>>& commands() const { return m_commands; }
+
+private:
+    CliCommand* find(const QString& name) const;
+    QString helpText(const QString& program) const;
+
+    std::vector<std::unique_ptr<CliCommand>> m_commands;
+};
+
+} // namespace opentop

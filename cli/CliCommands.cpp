@@ -1,0 +1,15 @@
+#include "CliCommands.h"
+
+namespace opentop {
+
+CliCommandList makeCliCommands()
+{
+    CliCommandList list;
+    addParameterCommands(list);
+    addScanCommands(list);
+    addFileCommands(list);
+    addDriveCommands(list);
+    return list;
+}
+
+} // namespace opentop

@@ -1,0 +1,19 @@
+#pragma once
+
+#include "CliCommand.h"
+
+#include <memory>
+#include <vector>
+
+namespace opentop {
+
+using CliCommandList = std::vector<std::unique_ptr<CliCommand>>;
+
+// Every command, in the order `--help` lists them. Each group lives with its commands.
+CliCommandList makeCliCommands();
+void addParameterCommands(CliCommandList& list); // ports, params, get, set
+void addScanCommands(CliCommandList& list);      // scan
+void addFileCommands(CliCommandList& list);      // backup, restore, compare
+void addDriveCommands(CliCommandList& list);     // monitor, alarms, run, stop-all
+
+} // namespace opentop

@@ -1,0 +1,224 @@
+#include "CliContext.h"
+
+#include "BackendFactory.h"
+#include "BusSpec.h"
+#include "ConnectionOptions.h"
+#include "DeviceIdentifier.h"
+#include "DeviceSession.h"
+#include "ModbusBackend.h"
+#include "ModbusClient.h"
+#include "ProfileRegistry.h"
+#include "SimBus.h"
+#include "TrafficLog.h"
+
+#include <QCoreApplication>
+#include <QEventLoop>
+#include <QTimer>
+#include <atomic>
+#include <csignal>
+
+namespace opentop {
+
+namespace {
+
+std::atomic<bool> g_interrupted{false};
+
+extern "C" void onInterrupt(int)
+{
+    // Stop between transactions: the current one completes, nothing new starts.
+    g_interrupted.store(true);
+}
+
+} // namespace
+
+CliContext::CliContext(const QCommandLineParser& parser, QTextStream& out, QTextStream& err,
+                       QObject* parent)
+    : QObject(parent)
+    , m_parser(parser)
+    , m_out(out)
+    , m_err(err)
+    , m_log(std::make_unique<TrafficLog>())
+{
+}
+
+CliContext::~CliContext()
+{
+    qDeleteAll(m_sessions);
+    m_sessions.clear();
+    m_client.reset(); // bounded shutdown of the bus worker before the log goes
+}
+
+void CliContext::installInterruptHandler()
+{
+    std::signal(SIGINT, onInterrupt);
+    std::signal(SIGTERM, onInterrupt);
+}
+
+bool CliContext::interrupted() const
+{
+    return g_interrupted.load();
+}
+
+bool CliContext::connectBus()
+{
+    if (m_client)
+        return true;
+    QString error;
+    const auto settings = ConnectionOptions::fromParser(m_parser, QString(), &error);
+    if (!settings) {
+        m_err << tr("error: %1").arg(error) << Qt::endl;
+        return false;
+    }
+    m_settings = *settings;
+    if (m_parser.isSet(QStringLiteral("trace"))) {
+        m_log->setSink([this](const TrafficEntry& e) {
+            // The sink runs on the bus thread; stderr is line-buffered and lines are short.
+            const QByteArray line = e.toLine().toLocal8Bit() + '\n';
+            std::fwrite(line.constData(), 1, size_t(line.size()), stderr);
+        });
+    }
+    BackendFactory::Made made = BackendFactory::makeClient(m_settings, m_log.get());
+    if (!made.client) {
+        m_err << tr("error: %1").arg(made.error) << Qt::endl;
+        return false;
+    }
+    m_simBus = made.simBus;
+    m_client = std::move(made.client);
+    const QString openError = m_client->openBlocking();
+    if (!openError.isEmpty()) {
+        m_err << tr("error: cannot open %1: %2").arg(m_client->describe(), openError) << Qt::endl;
+        m_client.reset();
+        return false;
+    }
+    if (m_settings.kind == ConnectionSettings::Kind::Simulated) {
+        for (const BusSpecEntry& e :
+             BusSpec::parse(m_settings.simSpec, nullptr).value_or(QVector<BusSpecEntry>())) {
+            m_knownSlaves << e.slave;
+            m_simTypes.insert(e.slave, e.type);
+        }
+    }
+    return true;
+}
+
+QString CliContext::assignedVariant(int slave, const QString& family) const
+{
+    const ProfileRegistry& registry = ProfileRegistry::builtIn();
+    auto fits = [&](const QString& type) {
+        QString variant;
+        const Profile* p = registry.forDeviceType(type, &variant);
+        return p && p->family == family && !variant.isEmpty() ? variant : QString();
+    };
+    if (m_parser.isSet(QStringLiteral("variant"))) {
+        for (const QString& item :
+             m_parser.value(QStringLiteral("variant")).split(QLatin1Char(','))) {
+            const int eq = item.indexOf(QLatin1Char('='));
+            if (eq < 0) {
+                if (!fits(item.trimmed()).isEmpty())
+                    return fits(item.trimmed());
+            } else if (item.left(eq).trimmed().toInt() == slave) {
+                return fits(item.mid(eq + 1).trimmed());
+            }
+        }
+    }
+    return fits(m_simTypes.value(slave));
+}
+
+DeviceInfo CliContext::identify(int slave)
+{
+    if (m_identified.contains(slave))
+        return m_identified.value(slave);
+    DeviceInfo info;
+    info.slave = slave;
+    if (!connectBus())
+        return info;
+    DeviceIdentifier identifier(m_client.get(), ProfileRegistry::builtIn());
+    wait([&](std::function<void()> finish) {
+        identifier.identify(slave, [&info, finish](const DeviceInfo& found) {
+            info = found;
+            finish();
+        });
+    });
+    if (info.state == DeviceInfo::State::Present && info.variant.isEmpty()) {
+        info.variant = assignedVariant(slave, info.family);
+        const Profile* p = ProfileRegistry::builtIn().family(info.family);
+        if (p && p->variant(info.variant))
+            info.model = p->variant(info.variant)->model;
+    }
+    m_identified.insert(slave, info);
+    return info;
+}
+
+DeviceSession* CliContext::session(int slave, QString* error)
+{
+    if (DeviceSession* s = m_sessions.value(slave))
+        return s;
+    const DeviceInfo info = identify(slave);
+    if (info.state != DeviceInfo::State::Present) {
+        if (error)
+            *error = tr("machine number %1: %2%3")
+                         .arg(slave)
+                         .arg(DeviceInfo::stateText(info.state),
+                              info.detail.isEmpty()
+                                  ? QString()
+                                  : QStringLiteral(" (") + info.detail + QLatin1Char(')'));
+        return nullptr;
+    }
+    const Profile* profile = ProfileRegistry::builtIn().family(info.family);
+    auto* s = new DeviceSession(m_client.get(), *profile, slave, info.variant);
+    m_sessions.insert(slave, s);
+    return s;
+}
+
+bool CliContext::wait(const std::function<void(std::function<void()> finish)>& start)
+{
+    if (interrupted())
+        return false;
+    QEventLoop loop;
+    bool done = false;
+    start([&done, &loop] {
+        done = true;
+        loop.quit();
+    });
+    if (done)
+        return true;
+    QTimer poll;
+    QObject::connect(&poll, &QTimer::timeout, &loop, [&loop, this] {
+        if (interrupted())
+            loop.quit();
+    });
+    poll.start(50);
+    loop.exec();
+    if (!done && m_client)
+        m_client->cancelAll();
+    return done;
+}
+
+std::optional<QVector<int>> CliContext::parseIds(const QString& text, QString* error)
+{
+    QVector<int> ids;
+    for (const QString& part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const QStringList range = part.split(QLatin1Char('-'));
+        bool ok1 = false;
+        bool ok2 = range.size() == 1;
+        const int first = range.value(0).trimmed().toInt(&ok1);
+        const int last = range.size() == 2 ? range.value(1).trimmed().toInt(&ok2) : first;
+        if (!ok1 || !ok2 || range.size() > 2 || first < 1 || last > 247 || first > last) {
+            if (error)
+                *error =
+                    tr("\"%1\" is not a machine number 1–247 or a range such as 3-8").arg(part);
+            return std::nullopt;
+        }
+        for (int id = first; id <= last; ++id) {
+            if (!ids.contains(id))
+                ids << id;
+        }
+    }
+    if (ids.isEmpty()) {
+        if (error)
+            *error = tr("no machine number given");
+        return std::nullopt;
+    }
+    return ids;
+}
+
+} // namespace opentop

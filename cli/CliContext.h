@@ -1,0 +1,78 @@
+#pragma once
+
+#include "ConnectionSettings.h"
+#include "DeviceInfo.h"
+#include "ExitCode.h"
+
+#include <QCommandLineParser>
+#include <QHash>
+#include <QObject>
+#include <QTextStream>
+#include <functional>
+#include <memory>
+
+namespace opentop {
+
+class DeviceSession;
+class ModbusClient;
+class SimBus;
+class TrafficLog;
+
+// What every command works with: the parsed command line, the output streams, the bus
+// connection, identified devices, and a synchronous way to wait for asynchronous model work
+// that Ctrl-C can interrupt between transactions.
+class CliContext : public QObject
+{
+    Q_OBJECT
+public:
+    CliContext(const QCommandLineParser& parser, QTextStream& out, QTextStream& err,
+               QObject* parent = nullptr);
+    ~CliContext() override;
+
+    const QCommandLineParser& parser() const { return m_parser; }
+    QTextStream& out() { return m_out; }
+    QTextStream& err() { return m_err; }
+    bool json() const { return m_parser.isSet(QStringLiteral("json")); }
+
+    // Opens the bus named by the connection options; prints the reason and returns false if it
+    // cannot. Commands that need no bus (ports, params) never call it.
+    bool connectBus();
+    ModbusClient* client() const { return m_client.get(); }
+    SimBus* simBus() const { return m_simBus.get(); }
+    TrafficLog* trafficLog() const { return m_log.get(); }
+    const ConnectionSettings& settings() const { return m_settings; }
+    // Machine numbers the connection already knows (a simulated bus's device list).
+    QVector<int> knownSlaves() const { return m_knownSlaves; }
+
+    // Identifies `slave` (once) and returns its session; nullptr with *error when nobody
+    // answers or the device is not a profiled family. Applies --variant and the simulated
+    // bus's variants where the device does not report its own.
+    DeviceSession* session(int slave, QString* error);
+    DeviceInfo identify(int slave);
+    // The variant given for `slave` (--variant VARIANT or --variant ID=VARIANT,...).
+    QString assignedVariant(int slave, const QString& family) const;
+
+    // Runs `start`, which must eventually call the `finish` it is given, and processes events
+    // until then. Returns false when Ctrl-C arrived first (queued requests are cancelled).
+    bool wait(const std::function<void(std::function<void()> finish)>& start);
+    bool interrupted() const;
+    // Parses "1,2,5-7" (machine numbers 1–247).
+    static std::optional<QVector<int>> parseIds(const QString& text, QString* error);
+
+    static void installInterruptHandler();
+
+private:
+    const QCommandLineParser& m_parser;
+    QTextStream& m_out;
+    QTextStream& m_err;
+    ConnectionSettings m_settings;
+    std::unique_ptr<TrafficLog> m_log;
+    std::shared_ptr<SimBus> m_simBus;
+    std::unique_ptr<ModbusClient> m_client;
+    QVector<int> m_knownSlaves;
+    QHash<int, QString> m_simTypes;
+    QHash<int, DeviceSession*> m_sessions;
+    QHash<int, DeviceInfo> m_identified;
+};
+
+} // namespace opentop

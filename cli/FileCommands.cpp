@@ -1,0 +1,8 @@
+#include "CliCommands.h"
+
+namespace opentop {
+
+// Being written: replaced by the file commands.
+void addFileCommands(CliCommandList&) {}
+
+} // namespace opentop

@@ -1,0 +1,7 @@
+#include "CliCommands.h"
+
+namespace opentop {
+
+void addParameterCommands(CliCommandList&) {}
+
+} // namespace opentop
