@@ -1,6 +1,7 @@
 #include "DeviceSession.h"
 
 #include "ModbusClient.h"
+#include "ReadPlanner.h"
 #include "ValueCodec.h"
 
 namespace opentop {
@@ -103,6 +104,76 @@ void DeviceSession::read(const QString& name, Done done)
                          outcome.error = outcome.value.error;
                          done(outcome);
                      });
+}
+
+struct DeviceSession::ManyState
+{
+    QVector<ReadBlockPlan> queue;
+    ReadManyOutcome outcome;
+    ManyDone done;
+};
+
+void DeviceSession::readMany(const QStringList& names, ManyDone done)
+{
+    auto state = std::make_shared<ManyState>();
+    state->done = std::move(done);
+    state->outcome.order = names;
+    QVector<const ParameterMeta*> metas;
+    for (const QString& name : names) {
+        Outcome o;
+        const ParameterMeta* meta = lookup(name, &o);
+        if (meta && !meta->isReadable())
+            o.error = tr("%1 cannot be read (it is a write-only command)").arg(name);
+        if (!o.error.isEmpty()) {
+            state->outcome.results.insert(name, o);
+            ++state->outcome.failed;
+            continue;
+        }
+        metas << meta;
+    }
+    state->queue = ReadPlanner::plan(m_profile, metas);
+    nextBlock(state);
+}
+
+void DeviceSession::nextBlock(std::shared_ptr<ManyState> state)
+{
+    if (state->queue.isEmpty()) {
+        state->done(state->outcome);
+        return;
+    }
+    const ReadBlockPlan plan = state->queue.takeFirst();
+    const ModbusRequest request =
+        plan.function == 4 ? ModbusRequest::readInput(quint8(m_slave), plan.address, plan.count)
+                           : ModbusRequest::readHolding(quint8(m_slave), plan.address, plan.count);
+    ++state->outcome.requests;
+    m_client->submit(request, this, [this, plan, state](const ModbusResult& r) {
+        if (!r.ok() && r.error == ModbusError::Exception && plan.parameters.size() > 1) {
+            // The device refuses the block: ask for each parameter on its own.
+            const QVector<ReadBlockPlan> singles = ReadPlanner::singles(plan.parameters);
+            for (int i = singles.size() - 1; i >= 0; --i)
+                state->queue.prepend(singles[i]);
+            nextBlock(state);
+            return;
+        }
+        for (const ParameterMeta* meta : plan.parameters) {
+            Outcome o;
+            o.parameter = meta->name;
+            o.sent = true;
+            if (!r.ok()) {
+                o.error = r.errorText();
+                ++state->outcome.failed;
+            } else {
+                const QVector<quint16> regs =
+                    r.registers.mid(meta->address - plan.address, meta->registerCount);
+                acceptRegisters(meta->name, regs);
+                o.value = ValueCodec::decode(*meta, regs, context());
+                o.ok = o.value.valid;
+                o.error = o.value.error;
+            }
+            state->outcome.results.insert(meta->name, o);
+        }
+        nextBlock(state);
+    });
 }
 
 void DeviceSession::ensureControllingValues(const ParameterMeta& meta,

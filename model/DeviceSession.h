@@ -8,6 +8,7 @@
 #include <QObject>
 #include <QVector>
 #include <functional>
+#include <memory>
 
 namespace opentop {
 
@@ -36,6 +37,15 @@ public:
     };
     using Done = std::function<void(const Outcome&)>;
 
+    struct ReadManyOutcome
+    {
+        QHash<QString, Outcome> results; // by parameter name
+        QStringList order;               // names in the order asked
+        int requests = 0;                // requests sent, fallbacks included
+        int failed = 0;                  // parameters that could not be read
+    };
+    using ManyDone = std::function<void(const ReadManyOutcome&)>;
+
     struct WriteOptions
     {
         // Commands that move a motor, reset, erase, initialise, store or change communication
@@ -60,6 +70,9 @@ public:
     ParamValue cachedValue(const QString& name) const;
 
     void read(const QString& name, Done done);
+    // Reads several parameters in as few requests as the device allows (ReadPlanner), falling
+    // back to one request per parameter where the device refuses a block.
+    void readMany(const QStringList& names, ManyDone done);
     // Validates `text` (engineering units or enumeration label), writes, reads back.
     void write(const QString& name, const QString& text, const WriteOptions& options, Done done);
     // Stores registers obtained elsewhere (a block read) as device values.
@@ -71,6 +84,8 @@ signals:
 
 private:
     const ParameterMeta* lookup(const QString& name, Outcome* outcome) const;
+    struct ManyState;
+    void nextBlock(std::shared_ptr<ManyState> state);
     void ensureControllingValues(const ParameterMeta& meta, std::function<void(QString)> then);
     void explainFailure(const ModbusResult& result, Outcome outcome, Done done);
     void verifyWrite(const ParameterMeta& meta, const QVector<quint16>& written, Outcome outcome,

@@ -177,3 +177,45 @@ TEST_F(DeviceSessionTest, IdentifierTellsFamiliesApart)
     EXPECT_EQ(DeviceInfo::hexText(150), QStringLiteral("96h"));
     EXPECT_EQ(DeviceInfo::switchText(150), QStringLiteral("SW1=9 SW2=6"));
 }
+
+TEST_F(DeviceSessionTest, ReadManyUsesBlocksAndFallsBackWhereRefused)
+{
+    DeviceSession session(client.get(), dbu(), 1, QStringLiteral("dbu200"));
+    QStringList names;
+    for (const ParameterMeta& m : dbu().parameters) {
+        if (m.backup)
+            names << m.name;
+    }
+    DeviceSession::ReadManyOutcome result;
+    QEventLoop loop;
+    session.readMany(names, [&](const DeviceSession::ReadManyOutcome& o) {
+        result = o;
+        loop.quit();
+    });
+    loop.exec();
+    EXPECT_EQ(result.failed, 0);
+    EXPECT_EQ(result.results.size(), names.size());
+    EXPECT_LT(result.requests, names.size() / 3);
+    EXPECT_DOUBLE_EQ(result.results.value(QStringLiteral("spno2.speed")).value.number, 1000);
+
+    // A profile that claims a block the device does not answer: one refusal, then singles;
+    // the register the device really lacks is reported, the other is read.
+    Profile wrong = dbu();
+    ParameterMeta ghost = *dbu().parameter(QStringLiteral("spno8.direction"));
+    ghost.name = QStringLiteral("ghost");
+    ghost.address = 0x0321;
+    wrong.parameters << ghost;
+    wrong.readBlocks = {ReadBlock{3, 0x0311, 0x0321}};
+    wrong.index();
+    DeviceSession fallback(client.get(), wrong, 1, QStringLiteral("dbu200"));
+    fallback.readMany({QStringLiteral("spno8.direction"), QStringLiteral("ghost")},
+                      [&](const DeviceSession::ReadManyOutcome& o) {
+                          result = o;
+                          loop.quit();
+                      });
+    loop.exec();
+    EXPECT_EQ(result.requests, 3); // the refused block, then one each
+    EXPECT_EQ(result.failed, 1);
+    EXPECT_TRUE(result.results.value(QStringLiteral("spno8.direction")).ok);
+    EXPECT_TRUE(result.results.value(QStringLiteral("ghost")).error.contains(QStringLiteral("02")));
+}
