@@ -54,6 +54,7 @@ public:
 
     // Runs `start`, which must eventually call the `finish` it is given, and processes events
     // until then. Returns false when Ctrl-C arrived first (queued requests are cancelled).
+    // Callbacks must capture `finish` by value: `start` returns before they run.
     bool wait(const std::function<void(std::function<void()> finish)>& start);
     bool interrupted() const;
     // Parses "1,2,5-7" (machine numbers 1–247).

@@ -264,6 +264,7 @@ void DeviceSession::verifyWrite(const ParameterMeta& meta, const QVector<quint16
             acceptRegisters(meta.name, r.registers);
             outcome.value = ValueCodec::decode(meta, r.registers, context());
             if (r.registers != written) {
+            outcome.mismatch = true;
                 outcome.error =
                     tr("verification failed: wrote %1, the device holds %2")
                         .arg(ValueCodec::format(meta, ValueCodec::decode(meta, written, context()),

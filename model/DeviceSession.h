@@ -34,6 +34,7 @@ public:
         QString deviceError;   // decoded device error register, when there is one
         bool sent = false;     // whether anything reached the wire (false: refused before)
         bool verified = false; // a write was read back and matched
+        bool mismatch = false; // a write was read back and differed
     };
     using Done = std::function<void(const Outcome&)>;
 

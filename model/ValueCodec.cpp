@@ -315,6 +315,19 @@ ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QStr
         if (normalizedLabel(o.label) == wanted)
             return encodeRaw(meta, double(o.value), context);
     }
+    // A label that exists in another case: say when it is available (a Mode1 function on a
+    // drive in Mode2).
+    for (const ValueCondition& c : meta.conditions) {
+        for (const EnumOption& o : c.spec.options) {
+            if (!c.param.isEmpty() && normalizedLabel(o.label) == wanted) {
+                e.error = tr("%1: \"%2\" is only available when %3 is %4; allowed now: %5")
+                              .arg(meta.name, text, c.param)
+                              .arg(c.equals)
+                              .arg(allowedText(meta, context));
+                return e;
+            }
+        }
+    }
     // A hexadecimal code is a raw value ("0x0011"), for enumerations and bit fields.
     if (text.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)) {
         bool ok = false;

@@ -1,0 +1,320 @@
+#include "SetCommand.h"
+
+#include "CliContext.h"
+#include "DeviceSession.h"
+#include "ModbusClient.h"
+#include "TextTable.h"
+#include "ValueCodec.h"
+
+#include <QCoreApplication>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <algorithm>
+
+namespace opentop {
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("opentop::SetCommand", text);
+}
+
+struct Assignment
+{
+    QString name;
+    QString text;
+    const ParameterMeta* meta = nullptr;
+    DeviceSession::Outcome outcome;
+};
+
+} // namespace
+
+QString SetCommand::summary() const
+{
+    return tr("Write parameters by name, validated, read back and verified");
+}
+
+QList<QCommandLineOption> SetCommand::options() const
+{
+    return {
+        {QStringLiteral("yes"),
+         tr("Confirm commands that move a motor, reset, erase, initialise or store.")},
+        {QStringLiteral("raw"),
+         tr("Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16)."),
+         tr("ADDR=VALUE")},
+        {QStringLiteral("fc"), tr("Function code for --raw writes: 6 (default) or 16."), tr("FC")}};
+}
+
+int SetCommand::run(CliContext& context, const QStringList& args)
+{
+    QString error;
+    const auto ids = args.isEmpty() ? std::nullopt : CliContext::parseIds(args.first(), &error);
+    const bool raw = context.parser().isSet(QStringLiteral("raw"));
+    if (!ids || ids->size() != 1 || (args.size() < 2) != raw) {
+        context.err() << tr("error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or "
+                            "set ID --raw ADDR=VALUE")
+                      << Qt::endl;
+        return ExitUsage;
+    }
+    const int slave = ids->first();
+    if (raw)
+        return runRaw(context, slave, context.parser().values(QStringLiteral("raw")));
+    QVector<Assignment> assignments;
+    for (const QString& arg : args.mid(1)) {
+        const int eq = arg.indexOf(QLatin1Char('='));
+        if (eq <= 0) {
+            context.err() << tr("error: \"%1\" is not NAME=VALUE").arg(arg) << Qt::endl;
+            return ExitUsage;
+        }
+        assignments.append({arg.left(eq).trimmed(), arg.mid(eq + 1).trimmed(), nullptr, {}});
+    }
+    DeviceSession* session = context.session(slave, &error);
+    if (!session) {
+        context.err() << tr("error: %1").arg(error) << Qt::endl;
+        return ExitCommunication;
+    }
+    const Profile& profile = session->profile();
+    const bool confirmed = context.parser().isSet(QStringLiteral("yes"));
+    QStringList problems;
+    QStringList controlling;
+    for (Assignment& a : assignments) {
+        a.meta = profile.parameter(a.name);
+        if (!a.meta)
+            problems << tr("%1 has no parameter \"%2\"; see \"opentop-cli params --family %1\"")
+                            .arg(profile.family, a.name);
+        else if (!a.meta->isWritable())
+            problems << tr("%1 is read-only").arg(a.name);
+        else if (!a.meta->safety.isEmpty() && !confirmed)
+            problems << tr("%1 is a %2 command; add --yes to send it").arg(a.name, a.meta->safety);
+        else
+            for (const QString& c : a.meta->controllingParameters())
+                if (!session->hasCached(c) && !controlling.contains(c))
+                    controlling << c;
+    }
+    // What allowed values depend on must be known before anything can be validated.
+    if (problems.isEmpty() && !controlling.isEmpty()) {
+        DeviceSession::ReadManyOutcome read;
+        context.wait([&](std::function<void()> finish) {
+            session->readMany(controlling,
+                              [&read, finish](const DeviceSession::ReadManyOutcome& o) {
+                                  read = o;
+                                  finish();
+                              });
+        });
+        if (read.failed > 0) {
+            context.err() << tr("error: cannot read %1 to check the values; nothing written")
+                                 .arg(controlling.join(QStringLiteral(", ")))
+                          << Qt::endl;
+            return ExitCommunication;
+        }
+    }
+    // Writes that others depend on go first; each value is validated against what the drive
+    // will hold when it is written.
+    std::stable_sort(
+        assignments.begin(), assignments.end(), [](const Assignment& x, const Assignment& y) {
+            return x.meta && y.meta && y.meta->controllingParameters().contains(x.name);
+        });
+    if (problems.isEmpty()) {
+        QHash<QString, qint64> pending;
+        ValueContext overlay = session->context();
+        const auto base = overlay.parameterRaw;
+        overlay.parameterRaw = [&pending, base](const QString& n) -> std::optional<qint64> {
+            return pending.contains(n) ? std::optional<qint64>(pending.value(n)) : base(n);
+        };
+        for (const Assignment& a : assignments) {
+            const ValueCodec::Encoded e = ValueCodec::encodeText(*a.meta, a.text, overlay);
+            if (!e.ok)
+                problems << e.error;
+            else
+                pending.insert(a.name, qint64(e.raw));
+        }
+    }
+    if (!problems.isEmpty()) {
+        for (const QString& p : problems)
+            context.err() << tr("error: %1").arg(p) << Qt::endl;
+        context.err() << tr("nothing was written") << Qt::endl;
+        return ExitInvalid;
+    }
+    int code = ExitOk;
+    bool stopped = false;
+    for (Assignment& a : assignments) {
+        DeviceSession::WriteOptions options;
+        options.explicitCommand = confirmed;
+        if (stopped || !context.wait([&](std::function<void()> finish) {
+                session->write(a.name, a.text, options,
+                               [&a, finish](const DeviceSession::Outcome& o) {
+                                   a.outcome = o;
+                                   finish();
+                               });
+            })) {
+            stopped = true;
+            a.outcome.error = tr("not written (interrupted)");
+            code = ExitInterrupted;
+            continue;
+        }
+        if (!a.outcome.ok && code == ExitOk)
+            code = a.outcome.mismatch ? ExitMismatch : ExitCommunication;
+    }
+    const ValueContext valueContext = session->context();
+    if (context.json()) {
+        QJsonArray results;
+        for (const Assignment& a : assignments) {
+            QJsonObject r{{QStringLiteral("name"), a.name},
+                          {QStringLiteral("requested"), a.text},
+                          {QStringLiteral("ok"), a.outcome.ok},
+                          {QStringLiteral("verified"), a.outcome.verified}};
+            if (a.outcome.value.valid)
+                r.insert(QStringLiteral("text"),
+                         ValueCodec::format(*a.meta, a.outcome.value, valueContext));
+            if (!a.outcome.error.isEmpty())
+                r.insert(QStringLiteral("error"), a.outcome.error);
+            results.append(r);
+        }
+        context.out() << QJsonDocument(QJsonObject{{QStringLiteral("slave"), slave},
+                                                   {QStringLiteral("results"), results}})
+                             .toJson(QJsonDocument::Indented);
+    } else {
+        TextTable table({tr("Parameter"), tr("Value"), tr("Result")});
+        for (const Assignment& a : assignments) {
+            const QString value = a.outcome.value.valid
+                                      ? ValueCodec::format(*a.meta, a.outcome.value, valueContext)
+                                      : a.text;
+            const QString result =
+                a.outcome.ok ? (a.outcome.verified ? tr("written, verified")
+                                                   : tr("written (command, not readable)"))
+                             : a.outcome.error;
+            table.addRow({a.name, value, result});
+        }
+        table.print(context.out());
+    }
+    return code;
+}
+
+int SetCommand::runRaw(CliContext& context, int slave, const QStringList& assignments)
+{
+    const int fc = context.parser().isSet(QStringLiteral("fc"))
+                       ? context.parser().value(QStringLiteral("fc")).toInt()
+                       : 6;
+    if (fc != 6 && fc != 16) {
+        context.err() << tr("error: --fc for raw writes is 6 or 16") << Qt::endl;
+        return ExitUsage;
+    }
+    auto number = [](const QString& text, bool* ok) {
+        const QString t = text.trimmed();
+        return t.startsWith(QLatin1String("0x"), Qt::CaseInsensitive) ? t.mid(2).toUInt(ok, 16)
+                                                                      : t.toUInt(ok);
+    };
+    struct RawWrite
+    {
+        quint16 address;
+        QVector<quint16> values;
+    };
+    QVector<RawWrite> writes;
+    for (const QString& a : assignments) {
+        const int eq = a.indexOf(QLatin1Char('='));
+        bool ok = eq > 0;
+        const uint address = ok ? number(a.left(eq), &ok) : 0;
+        RawWrite w{quint16(address), {}};
+        for (const QString& v : a.mid(eq + 1).split(QLatin1Char(','))) {
+            bool okValue = false;
+            const uint value = number(v, &okValue);
+            ok = ok && okValue && value <= 0xFFFF;
+            w.values << quint16(value);
+        }
+        if (!ok || address > 0xFFFF || (fc == 6 && w.values.size() != 1) || w.values.size() > 123) {
+            context.err() << tr("error: \"%1\" is not ADDR=VALUE (0x.. or decimal, 0–65535; "
+                                "several values, comma separated, only with --fc 16)")
+                                 .arg(a)
+                          << Qt::endl;
+            return ExitUsage;
+        }
+        writes << w;
+    }
+    // Raw writes are for service work, but they still never bypass the profile's checks or the
+    // confirmation that commands need.
+    QString error;
+    DeviceSession* session = context.session(slave, &error);
+    const bool confirmed = context.parser().isSet(QStringLiteral("yes"));
+    for (const RawWrite& w : writes) {
+        const ParameterMeta* meta =
+            session ? session->profile().parameterAt(quint8(fc), w.address) : nullptr;
+        if (!meta && !confirmed) {
+            context.err() << tr("error: 0x%1 is not a register the profile knows; add --yes to "
+                                "write it anyway; nothing was written")
+                                 .arg(w.address, 4, 16, QLatin1Char('0'))
+                          << Qt::endl;
+            return ExitInvalid;
+        }
+        if (meta && w.address == meta->address && w.values.size() == meta->registerCount) {
+            const QString problem = ValueCodec::checkRaw(
+                *meta, ValueCodec::registersToRaw(*meta, w.values), session->context());
+            if (!problem.isEmpty() || (!meta->safety.isEmpty() && !confirmed)) {
+                context.err() << tr("error: %1; nothing was written")
+                                     .arg(problem.isEmpty() ? tr("%1 is a %2 command; add --yes")
+                                                                  .arg(meta->name, meta->safety)
+                                                            : problem)
+                              << Qt::endl;
+                return ExitInvalid;
+            }
+        } else if (meta && !confirmed) {
+            context.err() << tr("error: the write covers part of %1; add --yes to write it anyway; "
+                                "nothing was written")
+                                 .arg(meta->name)
+                          << Qt::endl;
+            return ExitInvalid;
+        }
+    }
+    if (!context.connectBus())
+        return ExitCommunication;
+    int code = ExitOk;
+    TextTable table({tr("Address"), tr("Written"), tr("Result")});
+    for (const RawWrite& w : writes) {
+        const ModbusRequest request =
+            fc == 6 ? ModbusRequest::writeSingle(quint8(slave), w.address, w.values.first())
+                    : ModbusRequest::writeMultiple(quint8(slave), w.address, w.values);
+        ModbusResult result;
+        if (!context.wait([&](std::function<void()> finish) {
+                context.client()->submit(request, &context,
+                                         [&result, finish](const ModbusResult& r) {
+                                             result = r;
+                                             finish();
+                                         });
+            }))
+            return ExitInterrupted;
+        QStringList hex;
+        for (quint16 v : w.values)
+            hex << QStringLiteral("%1").arg(v, 4, 16, QLatin1Char('0')).toUpper();
+        const QString where = QStringLiteral("0x%1").arg(w.address, 4, 16, QLatin1Char('0'));
+        if (!result.ok()) {
+            table.addRow({where, hex.join(QLatin1Char(' ')), result.errorText()});
+            code = ExitCommunication;
+            continue;
+        }
+        // Read back where the address is a readable holding register.
+        const ModbusRequest readBack =
+            ModbusRequest::readHolding(quint8(slave), w.address, quint16(w.values.size()));
+        ModbusResult back;
+        context.wait([&](std::function<void()> finish) {
+            context.client()->submit(readBack, &context, [&back, finish](const ModbusResult& r) {
+                back = r;
+                finish();
+            });
+        });
+        QString verdict = tr("written");
+        if (back.ok() && back.registers == w.values) {
+            verdict = tr("written, verified");
+        } else if (back.ok()) {
+            verdict = tr("written, but reads back differently");
+            code = ExitMismatch;
+        } else {
+            verdict = tr("written (not readable back: %1)").arg(back.errorText());
+        }
+        table.addRow({where, hex.join(QLatin1Char(' ')), verdict});
+    }
+    table.print(context.out());
+    return code;
+}
+
+} // namespace opentop
