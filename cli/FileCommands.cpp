@@ -1,8 +1,15 @@
+#include "BackupCommand.h"
 #include "CliCommands.h"
+#include "CompareCommand.h"
+#include "RestoreCommand.h"
 
 namespace opentop {
 
-// Being written: replaced by the file commands.
-void addFileCommands(CliCommandList&) {}
+void addFileCommands(CliCommandList& list)
+{
+    list.push_back(std::make_unique<BackupCommand>());
+    list.push_back(std::make_unique<RestoreCommand>());
+    list.push_back(std::make_unique<CompareCommand>());
+}
 
 } // namespace opentop

@@ -1,0 +1,197 @@
+#include "BackupCommand.h"
+
+#include "BackupFile.h"
+#include "BackupReader.h"
+#include "BusScanner.h"
+#include "CliContext.h"
+#include "ExitCode.h"
+#include "FileCommandSupport.h"
+#include "ProfileRegistry.h"
+
+#include <QCoreApplication>
+#include <QJsonArray>
+
+namespace opentop {
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("opentop::BackupCommand", text);
+}
+
+QString trn(const char* text, int n)
+{
+    return QCoreApplication::translate("opentop::BackupCommand", text, nullptr, n);
+}
+
+} // namespace
+
+QString BackupCommand::summary() const
+{
+    return tr("Save every setting of drives to a backup file (written only when all were read)");
+}
+
+QList<QCommandLineOption> BackupCommand::options() const
+{
+    return {{{QStringLiteral("o"), QStringLiteral("output")},
+             tr("The backup file to write (replaced atomically)."),
+             tr("FILE")},
+            {QStringLiteral("all"),
+             tr("Every drive the connection knows (a simulated bus), or every drive a scan "
+                "finds.")}};
+}
+
+std::optional<QVector<int>> BackupCommand::selectIds(CliContext& context, const QStringList& args)
+{
+    const bool all = context.parser().isSet(QStringLiteral("all"));
+    if (all == !args.isEmpty()) {
+        context.err() << tr("error: name the machine numbers, or give --all: backup ID... -o FILE")
+                      << Qt::endl;
+        return std::nullopt;
+    }
+    if (all)
+        return QVector<int>();
+    QString error;
+    const auto ids = CliContext::parseIds(args.join(QLatin1Char(',')), &error);
+    if (!ids)
+        context.err() << tr("error: %1").arg(error) << Qt::endl;
+    return ids;
+}
+
+QVector<int> BackupCommand::allDrives(CliContext& context, bool* interrupted)
+{
+    if (!context.knownSlaves().isEmpty())
+        return context.knownSlaves();
+    if (!context.json())
+        context.err() << tr("scanning the bus for drives…") << Qt::endl;
+    BusScanner scanner(context.client(), ProfileRegistry::builtIn());
+    scanner.setRange(1, 247);
+    const bool completed = context.wait([&scanner](std::function<void()> finish) {
+        QObject::connect(&scanner, &BusScanner::finished, &scanner, [finish] { finish(); });
+        scanner.start();
+    });
+    if (!completed)
+        scanner.cancel();
+    *interrupted = !completed || scanner.wasCancelled();
+    QVector<int> ids;
+    for (const DeviceInfo& info : scanner.devices()) {
+        if (info.state == DeviceInfo::State::Present)
+            ids << info.slave;
+    }
+    return ids;
+}
+
+int BackupCommand::run(CliContext& context, const QStringList& args)
+{
+    const QString path = context.parser().value(QStringLiteral("o"));
+    if (path.isEmpty()) {
+        context.err() << tr("error: give the file to write: backup ID... -o FILE") << Qt::endl;
+        return ExitUsage;
+    }
+    std::optional<QVector<int>> ids = selectIds(context, args);
+    if (!ids)
+        return ExitUsage;
+    if (!context.connectBus())
+        return ExitCommunication;
+    if (ids->isEmpty()) {
+        bool interrupted = false;
+        *ids = allDrives(context, &interrupted);
+        if (interrupted) {
+            context.err() << tr("interrupted: nothing written") << Qt::endl;
+            return ExitInterrupted;
+        }
+        if (ids->isEmpty()) {
+            context.err() << tr("error: no drive answers on %1; nothing written")
+                                 .arg(context.settings().describe())
+                          << Qt::endl;
+            return ExitCommunication;
+        }
+    }
+
+    BackupFile file;
+    file.tool = BackupFile::toolName();
+    file.created = QDateTime::currentDateTimeUtc();
+    file.connection = BackupFile::connectionOf(context.settings());
+    QStringList failures;
+    bool communication = false;
+    QJsonArray drives;
+    for (int id : *ids) {
+        QString error;
+        DeviceSession* session = context.session(id, &error);
+        if (!session) {
+            failures << error;
+            communication = true;
+            continue;
+        }
+        BackupReader reader(session);
+        BackupReader::Result result;
+        const bool completed = context.wait([&reader, &result](std::function<void()> finish) {
+            reader.read([&result, finish](const BackupReader::Result& r) {
+                result = r;
+                finish();
+            });
+        });
+        if (!completed) {
+            context.err()
+                << tr("interrupted while reading machine number %1: nothing written").arg(id)
+                << Qt::endl;
+            return ExitInterrupted;
+        }
+        const QString title = result.device.title();
+        for (const QString& f : result.failures)
+            failures << tr("%1: cannot read %2").arg(title, f);
+        for (const QString& d : result.disallowed)
+            failures << tr("%1 holds a value its profile does not allow, so the backup could "
+                           "not be restored: %2")
+                            .arg(title, d);
+        communication = communication || !result.failures.isEmpty();
+        drives << QJsonObject{{QStringLiteral("slave"), id},
+                              {QStringLiteral("family"), result.device.family},
+                              {QStringLiteral("variant"), result.device.variant},
+                              {QStringLiteral("model"), result.device.model},
+                              {QStringLiteral("parameters"), result.parameters},
+                              {QStringLiteral("requests"), result.requests},
+                              {QStringLiteral("elapsedMs"), result.elapsedMs},
+                              {QStringLiteral("ok"), result.ok}};
+        if (!context.json())
+            context.out() << tr("%1: %2 settings read in %3 requests, %4 ms")
+                                 .arg(title)
+                                 .arg(result.parameters)
+                                 .arg(result.requests)
+                                 .arg(result.elapsedMs)
+                          << Qt::endl;
+        if (result.ok)
+            file.devices << result.device;
+    }
+
+    QString saveError;
+    const bool written =
+        failures.isEmpty() && file.save(path, ProfileRegistry::builtIn(), &saveError);
+    if (context.json()) {
+        FileCommandSupport::printJson(
+            context, {{QStringLiteral("command"), QStringLiteral("backup")},
+                      {QStringLiteral("file"), path},
+                      {QStringLiteral("written"), written},
+                      {QStringLiteral("drives"), drives},
+                      {QStringLiteral("errors"),
+                       QJsonArray::fromStringList(saveError.isEmpty() ? failures
+                                                                      : QStringList{saveError})}});
+    }
+    for (const QString& f : failures)
+        context.err() << tr("error: %1").arg(f) << Qt::endl;
+    if (!failures.isEmpty()) {
+        context.err() << tr("nothing written to %1").arg(path) << Qt::endl;
+        return communication ? ExitCommunication : ExitInvalid;
+    }
+    if (!written) {
+        context.err() << tr("error: %1").arg(saveError) << Qt::endl;
+        return ExitUsage;
+    }
+    if (!context.json())
+        context.out() << trn("wrote %1: %n drive(s)", int(file.devices.size())).arg(path)
+                      << Qt::endl;
+    return ExitOk;
+}
+
+} // namespace opentop

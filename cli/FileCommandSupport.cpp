@@ -1,0 +1,102 @@
+#include "FileCommandSupport.h"
+
+#include "CliContext.h"
+#include "ExitCode.h"
+#include "ProfileRegistry.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QJsonDocument>
+
+namespace opentop {
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("opentop::FileCommandSupport", text);
+}
+
+} // namespace
+
+std::optional<BackupFile> FileCommandSupport::load(CliContext& context, const QString& path,
+                                                   int* exitCode)
+{
+    if (!QFileInfo(path).isFile()) {
+        context.err() << tr("error: %1: no such file").arg(path) << Qt::endl;
+        *exitCode = ExitUsage;
+        return std::nullopt;
+    }
+    QString error;
+    std::optional<BackupFile> file = BackupFile::load(path, ProfileRegistry::builtIn(), &error);
+    if (!file) {
+        context.err() << tr("error: %1 refused: %2").arg(path, error) << Qt::endl;
+        *exitCode = ExitInvalid;
+    }
+    return file;
+}
+
+void FileCommandSupport::printJson(CliContext& context, const QJsonObject& object)
+{
+    context.out() << QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Indented));
+    context.out().flush();
+}
+
+QJsonArray FileCommandSupport::registersJson(const QVector<quint16>& registers)
+{
+    QJsonArray array;
+    for (quint16 r : registers)
+        array << int(r);
+    return array;
+}
+
+QJsonObject FileCommandSupport::planJson(const RestorePlan& plan)
+{
+    QJsonArray items;
+    for (const RestorePlan::Item& item : plan.items) {
+        QJsonObject o{{QStringLiteral("parameter"), item.parameter},
+                      {QStringLiteral("action"), RestorePlan::actionText(item.action)},
+                      {QStringLiteral("status"), RestorePlan::statusKey(item.status)}};
+        if (item.action != RestorePlan::Item::Action::Store) {
+            o.insert(QStringLiteral("file"), item.fileText);
+            o.insert(QStringLiteral("fileRegisters"), registersJson(item.fileRegisters));
+            o.insert(QStringLiteral("device"), item.deviceText);
+            o.insert(QStringLiteral("deviceRegisters"), registersJson(item.deviceRegisters));
+        }
+        if (!item.error.isEmpty())
+            o.insert(QStringLiteral("error"), item.error);
+        if (item.mismatch)
+            o.insert(QStringLiteral("mismatch"), true);
+        items << o;
+    }
+    using Status = RestorePlan::Item::Status;
+    int stored = 0;
+    for (const RestorePlan::Item& item : plan.items)
+        stored +=
+            item.action == RestorePlan::Item::Action::Store && item.status == Status::Verified;
+    return QJsonObject{
+        {QStringLiteral("slave"), plan.slave},
+        {QStringLiteral("drive"), plan.title},
+        {QStringLiteral("outcome"), RestorePlan::outcomeKey(plan.outcome)},
+        {QStringLiteral("reason"), plan.reason},
+        {QStringLiteral("problems"), QJsonArray::fromStringList(plan.problems)},
+        {QStringLiteral("notes"), QJsonArray::fromStringList(plan.notes)},
+        {QStringLiteral("toWrite"), plan.count(RestorePlan::Item::Action::Write)},
+        {QStringLiteral("unchanged"), plan.count(Status::Unchanged)},
+        {QStringLiteral("verified"), plan.count(Status::Verified) - stored},
+        {QStringLiteral("stored"), stored},
+        {QStringLiteral("failed"), plan.count(Status::Failed)},
+        {QStringLiteral("notAttempted"), plan.count(Status::NotAttempted)},
+        {QStringLiteral("items"), items},
+    };
+}
+
+QString FileCommandSupport::idList(const QVector<int>& ids)
+{
+    QStringList list;
+    for (int id : ids)
+        list << QString::number(id);
+    return list.join(QStringLiteral(", "));
+}
+
+} // namespace opentop
