@@ -10,11 +10,12 @@ namespace opentop {
 
 namespace {
 
-// The profile format has no marker for settings that change the line itself; these are the
-// ones the built-in families have (DBU: the "communication" group; DC controller: baud rate,
-// parity and the lock that freezes both).
-const char* const kCommunicationSettings[] = {"config.baud", "config.parity", "config.serial_lock"};
-const char* const kSerialLock = "config.serial_lock";
+// The setting that locks the line settings, if the family has one (role "serialLock").
+QString serialLock(const Profile& profile)
+{
+    const ProfileRole* role = profile.role(QStringLiteral("serialLock"));
+    return role ? role->parameter : QString();
+}
 
 // Text that DeviceSession::write encodes to exactly these registers: a raw hexadecimal code
 // where possible (no rounding through the scale), the shortest exact decimal otherwise.
@@ -46,15 +47,11 @@ QString storeText(const ParameterMeta& command)
 
 } // namespace
 
-bool RestorePlan::isCommunicationSetting(const ParameterMeta& meta)
+bool RestorePlan::isCommunicationSetting(const Profile& profile, const ParameterMeta& meta)
 {
-    if (meta.group == QLatin1String("communication"))
-        return true;
-    for (const char* name : kCommunicationSettings) {
-        if (meta.name == QLatin1String(name))
-            return true;
-    }
-    return false;
+    // Settings that change the line itself (role "communication"): written last.
+    const ProfileRole* role = profile.role(QStringLiteral("communication"));
+    return role && role->parameters.contains(meta.name);
 }
 
 RestorePlan RestorePlan::check(const Profile& profile, const QString& liveVariant,
@@ -128,14 +125,14 @@ RestorePlan RestorePlan::check(const Profile& profile, const QString& liveVarian
         const ParameterMeta* meta = profile.parameter(p.name);
         if (!meta || order.contains(p.name))
             continue;
-        if (!isCommunicationSetting(*meta))
+        if (!isCommunicationSetting(profile, *meta))
             ordinary << p.name;
-        else if (p.name != QLatin1String(kSerialLock))
+        else if (p.name != serialLock(profile))
             communication << p.name;
     }
     order += ordinary + communication;
-    if (file.parameter(QLatin1String(kSerialLock)))
-        order << QLatin1String(kSerialLock);
+    if (!serialLock(profile).isEmpty() && file.parameter(serialLock(profile)))
+        order << serialLock(profile);
 
     QStringList stores;
     for (const QString& name : order) {
@@ -197,7 +194,7 @@ void RestorePlan::build(const Profile& profile, const QString& liveVariant,
         if (item.action == Item::Action::Store)
             continue;
         const ParameterMeta* meta = profile.parameter(item.parameter);
-        if (firstCommunication < 0 && meta && isCommunicationSetting(*meta))
+        if (firstCommunication < 0 && meta && isCommunicationSetting(profile, *meta))
             firstCommunication = i;
         item.deviceRegisters = live.value(item.parameter);
         item.deviceText = drive.text(profile, item.parameter);
@@ -208,7 +205,8 @@ void RestorePlan::build(const Profile& profile, const QString& liveVariant,
     // A lock being released goes before the settings it locks.
     for (int i = 0; i < items.size(); ++i) {
         const Item& item = items.at(i);
-        const bool releases = item.parameter == QLatin1String(kSerialLock) &&
+        const bool releases = !serialLock(profile).isEmpty() &&
+                              item.parameter == serialLock(profile) &&
                               item.action == Item::Action::Write &&
                               std::all_of(item.fileRegisters.begin(), item.fileRegisters.end(),
                                           [](quint16 r) { return r == 0; });

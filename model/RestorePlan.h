@@ -76,7 +76,7 @@ public:
     int count(Item::Status status) const;
     int count(Item::Action action) const;
     bool refused() const { return outcome == Outcome::Refused; }
-    static bool isCommunicationSetting(const ParameterMeta& meta);
+    static bool isCommunicationSetting(const Profile& profile, const ParameterMeta& meta);
     static QString actionText(Item::Action action);
     static QString statusText(const Item& item);
     static QString outcomeText(Outcome outcome);

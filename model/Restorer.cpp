@@ -190,7 +190,7 @@ void Restorer::finish(RestorePlan::Outcome outcome)
     for (const Item& item : m_plan.items) {
         const ParameterMeta* meta = m_session->profile().parameter(item.parameter);
         if (meta && item.status == Item::Status::Verified &&
-            RestorePlan::isCommunicationSetting(*meta))
+            RestorePlan::isCommunicationSetting(m_session->profile(), *meta))
             changedLine << QStringLiteral("%1 = %2").arg(item.parameter, item.fileText);
     }
     if (!changedLine.isEmpty())
