@@ -1,8 +1,17 @@
+#include "AlarmsCommand.h"
 #include "CliCommands.h"
+#include "MonitorCommand.h"
+#include "RunCommand.h"
+#include "StopAllCommand.h"
 
 namespace opentop {
 
-// Being written: replaced by the drive commands.
-void addDriveCommands(CliCommandList&) {}
+void addDriveCommands(CliCommandList& list)
+{
+    list.push_back(std::make_unique<MonitorCommand>());
+    list.push_back(std::make_unique<AlarmsCommand>());
+    list.push_back(std::make_unique<RunCommand>());
+    list.push_back(std::make_unique<StopAllCommand>());
+}
 
 } // namespace opentop

@@ -1,0 +1,22 @@
+#pragma once
+
+#include "CliCommand.h"
+
+namespace opentop {
+
+// `monitor ID... [--interval MS] [--count N] [--csv FILE]`: live values of one or more drives,
+// one aligned line per sample and drive (JSON Lines with --json), optionally logged to CSV.
+class MonitorCommand : public CliCommand
+{
+public:
+    QString name() const override { return QStringLiteral("monitor"); }
+    QString synopsis() const override
+    {
+        return QStringLiteral("monitor ID... [--interval MS] [--count N] [--csv FILE]");
+    }
+    QString summary() const override;
+    QList<QCommandLineOption> options() const override;
+    int run(CliContext& context, const QStringList& args) override;
+};
+
+} // namespace opentop

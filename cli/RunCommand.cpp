@@ -1,0 +1,156 @@
+#include "RunCommand.h"
+
+#include "CliContext.h"
+#include "DeviceSession.h"
+#include "ProfileRegistry.h"
+#include "RunControl.h"
+
+#include <QCoreApplication>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+namespace opentop {
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("opentop::RunCommand", text);
+}
+
+// Drives update their status within a few cycles of a command.
+constexpr int kSettleMs = 200;
+
+int exitCodeOf(RunControl::Failure failure)
+{
+    switch (failure) {
+    case RunControl::Failure::None:
+        return ExitOk;
+    case RunControl::Failure::Unsupported:
+        return ExitUsage;
+    case RunControl::Failure::InvalidValue:
+    case RunControl::Failure::Priority:
+        return ExitInvalid; // nothing was sent
+    case RunControl::Failure::Communication:
+        return ExitCommunication;
+    case RunControl::Failure::Mismatch:
+        return ExitMismatch;
+    }
+    return ExitCommunication;
+}
+
+} // namespace
+
+QString RunCommand::summary() const
+{
+    return tr("Test run: start, stop, direction, running data, hold/free, speed (needs --yes)");
+}
+
+QList<QCommandLineOption> RunCommand::options() const
+{
+    return {{QStringLiteral("yes"), tr("Send the command (it moves or stops a motor).")}};
+}
+
+int RunCommand::run(CliContext& context, const QStringList& args)
+{
+    QTextStream& out = context.out();
+    QTextStream& err = context.err();
+    QString error;
+    const auto ids = args.isEmpty() ? std::nullopt : CliContext::parseIds(args.first(), &error);
+    if (!ids || ids->size() != 1 || args.size() < 2) {
+        err << tr("error: usage: %1 (one machine number; a negative speed after --)")
+                   .arg(synopsis())
+            << Qt::endl;
+        return ExitUsage;
+    }
+    const int slave = ids->first();
+    const std::optional<RunControl::Command> command = RunControl::parse(args.mid(1), &error);
+    if (!command) {
+        err << tr("error: %1").arg(error) << Qt::endl;
+        return ExitUsage;
+    }
+    DeviceSession* session = context.session(slave, &error);
+    if (!session) {
+        err << tr("error: %1").arg(error) << Qt::endl;
+        return ExitCommunication;
+    }
+    const RunControl::Plan plan = RunControl::plan(*session, *command);
+    if (plan.failure != RunControl::Failure::None) {
+        err << tr("error: %1").arg(plan.error) << Qt::endl;
+        return exitCodeOf(plan.failure);
+    }
+    if (!context.parser().isSet(QStringLiteral("yes"))) {
+        err << tr("Would send to machine number %1: %2\nThis moves or stops a motor: add --yes to "
+                  "send it.")
+                   .arg(slave)
+                   .arg(plan.description)
+            << Qt::endl;
+        return ExitUsage;
+    }
+
+    RunControl control(context.client(), ProfileRegistry::builtIn());
+    RunControl::Outcome outcome;
+    if (!context.wait([&](std::function<void()> finish) {
+            control.execute(session, *command, [&outcome, finish](const RunControl::Outcome& o) {
+                outcome = o;
+                finish();
+            });
+        }))
+        return ExitInterrupted;
+    QJsonObject json{{QStringLiteral("slave"), slave},
+                     {QStringLiteral("family"), session->profile().family},
+                     {QStringLiteral("command"), args.mid(1).join(QLatin1Char(' '))},
+                     {QStringLiteral("write"), plan.description},
+                     {QStringLiteral("sent"), outcome.sent},
+                     {QStringLiteral("ok"), outcome.ok}};
+    if (!outcome.error.isEmpty())
+        json.insert(QStringLiteral("error"), outcome.error);
+    if (!outcome.explanation.isEmpty())
+        json.insert(QStringLiteral("explanation"), outcome.explanation);
+    if (!context.json()) {
+        if (outcome.ok)
+            out << tr("Sent to machine number %1: %2").arg(slave).arg(plan.description) << '\n';
+        else
+            err << tr("error: %1").arg(outcome.error) << '\n'
+                << (outcome.explanation.isEmpty() ? QString()
+                                                  : outcome.explanation + QLatin1Char('\n'));
+    }
+    // What the drive does now, when something was sent and the drive answers.
+    if (outcome.sent && (outcome.ok || outcome.failure != RunControl::Failure::Communication ||
+                         !outcome.deviceError.isEmpty())) {
+        RunControl::State state;
+        if (!context.wait([&](std::function<void()> finish) {
+                control.readState(
+                    session,
+                    [&state, finish](const RunControl::State& s) {
+                        state = s;
+                        finish();
+                    },
+                    outcome.sent ? kSettleMs : 0);
+            }))
+            return ExitInterrupted;
+        QJsonObject items;
+        int width = 0;
+        for (const auto& item : state.items)
+            width = std::max(width, int(item.first.size()));
+        if (!context.json())
+            out << tr("State of machine number %1:").arg(slave) << '\n';
+        for (const auto& item : state.items) {
+            items.insert(item.first, item.second);
+            if (!context.json())
+                out << "  " << item.first.leftJustified(width) << "  " << item.second << '\n';
+        }
+        if (!state.error.isEmpty() && !context.json())
+            out << "  " << tr("(not read: %1)").arg(state.error) << '\n';
+        QJsonObject s{{QStringLiteral("values"), items}};
+        if (state.running)
+            s.insert(QStringLiteral("running"), *state.running);
+        json.insert(QStringLiteral("state"), s);
+    }
+    if (context.json())
+        out << QJsonDocument(json).toJson(QJsonDocument::Indented);
+    return exitCodeOf(outcome.failure);
+}
+
+} // namespace opentop

@@ -1,0 +1,297 @@
+#include "DeviceMonitor.h"
+
+#include "DeviceSession.h"
+#include "ModbusClient.h"
+#include "ReadPlanner.h"
+#include "RoleEvaluator.h"
+#include "ValueCodec.h"
+
+namespace opentop {
+
+namespace {
+
+const QString kRunning = QStringLiteral("running");
+const QString kAlarmActive = QStringLiteral("alarmActive");
+const QString kAlarmTable = QStringLiteral("alarm");
+
+ModbusRequest pollRequest(int slave, const ReadBlockPlan& plan)
+{
+    ModbusRequest r = plan.function == 4
+                          ? ModbusRequest::readInput(quint8(slave), plan.address, plan.count)
+                          : ModbusRequest::readHolding(quint8(slave), plan.address, plan.count);
+    r.priority = ModbusRequest::Priority::Poll;
+    return r;
+}
+
+} // namespace
+
+const MonitorValue* MonitorSample::find(const QString& parameter) const
+{
+    for (const MonitorValue& v : values) {
+        if (v.meta && v.meta->name == parameter)
+            return &v;
+    }
+    return nullptr;
+}
+
+std::optional<double> MonitorSample::signedSpeed(const QString& parameter) const
+{
+    const MonitorValue* speed = find(parameter);
+    if (!speed || !speed->value.valid)
+        return std::nullopt;
+    double number = speed->value.number;
+    // A register that holds the magnitude only: the status bits tell the direction.
+    for (const MonitorValue& v : values) {
+        if (!v.meta || !v.value.valid)
+            continue;
+        if (const BitField* f = RoleEvaluator::bitField(*v.meta, QStringLiteral("direction"))) {
+            if (RoleEvaluator::fieldValue(*f, v.value.raw) == 1 && number > 0)
+                number = -number;
+        }
+    }
+    return number;
+}
+
+struct DeviceMonitor::Poll
+{
+    quint64 generation = 0;
+    QDateTime timestamp;
+    int pending = 0;
+    QHash<QString, ParamValue> values;
+    QStringList errors;
+};
+
+DeviceMonitor::DeviceMonitor(DeviceSession* session, QObject* parent)
+    : QObject(parent)
+    , m_session(session)
+{
+    const Profile& profile = session->profile();
+    if (const ProfileRole* role = profile.role(QStringLiteral("monitor")))
+        m_names = role->parameters.isEmpty() && !role->parameter.isEmpty()
+                      ? QStringList{role->parameter}
+                      : role->parameters;
+    for (const QString& role : {kRunning, kAlarmActive}) {
+        const ParameterMeta* meta = RoleEvaluator::parameter(profile, role);
+        if (meta && meta->isReadable() && !m_names.contains(meta->name))
+            m_names << meta->name;
+    }
+    m_timer.setSingleShot(true);
+    m_timer.setTimerType(Qt::PreciseTimer); // samples at the interval, not about it
+    connect(&m_timer, &QTimer::timeout, this, &DeviceMonitor::poll);
+}
+
+DeviceMonitor::~DeviceMonitor()
+{
+    stop();
+}
+
+void DeviceMonitor::prepare(std::function<void(const QString&)> done)
+{
+    const SpeedDisplay::Names names = SpeedDisplay::Names::withPrefix();
+    if (!SpeedDisplay::supported(m_session->profile(), names)) {
+        m_display.reset();
+        done(QString());
+        return;
+    }
+    m_session->readMany(names.all(), [this, names, done](const DeviceSession::ReadManyOutcome& o) {
+        QString error;
+        m_display = SpeedDisplay::fromValues(
+            names,
+            [&o](const QString& name) -> std::optional<double> {
+                const DeviceSession::Outcome r = o.results.value(name);
+                return r.value.valid ? std::optional<double>(r.value.number) : std::nullopt;
+            },
+            &error);
+        done(error);
+    });
+}
+
+void DeviceMonitor::start()
+{
+    if (m_active)
+        return;
+    m_active = true;
+    ++m_generation;
+    m_busy = false;
+    poll();
+}
+
+void DeviceMonitor::stop()
+{
+    m_active = false;
+    ++m_generation; // results of the poll under way are dropped
+    m_busy = false;
+    m_timer.stop();
+    // Requests of this monitor still queued are not needed any more.
+    for (ModbusClient::RequestId id : std::as_const(m_queued))
+        m_session->client()->cancel(id);
+    m_queued.clear();
+}
+
+void DeviceMonitor::poll()
+{
+    if (!m_active || m_busy)
+        return;
+    m_busy = true;
+    m_pollClock.restart();
+    auto p = std::make_shared<Poll>();
+    p->generation = m_generation;
+    p->timestamp = QDateTime::currentDateTime();
+    QVector<const ParameterMeta*> metas;
+    for (const QString& name : m_names) {
+        const ParameterMeta* meta = m_session->profile().parameter(name);
+        if (meta && meta->isReadable())
+            metas << meta;
+        else
+            p->errors << tr("%1 cannot be read").arg(name);
+    }
+    const QVector<ReadBlockPlan> plans = ReadPlanner::plan(m_session->profile(), metas);
+    p->pending = plans.size();
+    if (plans.isEmpty()) {
+        finish(p);
+        return;
+    }
+    for (const ReadBlockPlan& plan : plans)
+        submitPlan(p, plan);
+}
+
+void DeviceMonitor::submit(const ReadBlockPlan& plan,
+                           const std::function<void(const ModbusResult&)>& handle)
+{
+    auto id = std::make_shared<ModbusClient::RequestId>(0);
+    *id = m_session->client()->submit(pollRequest(m_session->slave(), plan), this,
+                                      [this, id, handle](const ModbusResult& r) {
+                                          m_queued.remove(*id);
+                                          handle(r);
+                                      });
+    m_queued.insert(*id);
+}
+
+void DeviceMonitor::submitPlan(const std::shared_ptr<Poll>& p, const ReadBlockPlan& plan)
+{
+    submit(plan, [this, p, plan](const ModbusResult& r) {
+        if (p->generation != m_generation)
+            return;
+        if (!r.ok() && r.error == ModbusError::Exception && plan.parameters.size() > 1) {
+            // The drive refuses the block: one request per parameter.
+            const QVector<ReadBlockPlan> singles = ReadPlanner::singles(plan.parameters);
+            p->pending += singles.size();
+            for (const ReadBlockPlan& single : singles)
+                submitPlan(p, single);
+            planDone(p);
+            return;
+        }
+        QStringList names;
+        for (const ParameterMeta* meta : plan.parameters) {
+            names << meta->name;
+            if (!r.ok())
+                continue;
+            const QVector<quint16> regs =
+                r.registers.mid(meta->address - plan.address, meta->registerCount);
+            m_session->acceptRegisters(meta->name, regs);
+            p->values.insert(meta->name, ValueCodec::decode(*meta, regs, m_session->context()));
+        }
+        if (!r.ok())
+            p->errors << QStringLiteral("%1: %2").arg(names.join(QStringLiteral(", ")),
+                                                      r.errorText());
+        planDone(p);
+    });
+}
+
+void DeviceMonitor::planDone(const std::shared_ptr<Poll>& p)
+{
+    if (--p->pending > 0)
+        return;
+    const Profile& profile = m_session->profile();
+    const std::optional<bool> alarm =
+        RoleEvaluator::flag(profile, kAlarmActive, [&p](const QString& n) {
+            const auto it = p->values.constFind(n);
+            return it == p->values.cend() ? std::nullopt : std::optional<double>(it->raw);
+        });
+    if (!alarm.value_or(false))
+        m_activeAlarmCode.reset();
+    else if (!m_activeAlarmCode && p->errors.isEmpty() && !profile.records(kAlarmTable).isEmpty()) {
+        readActiveAlarm(p);
+        return;
+    }
+    finish(p);
+}
+
+void DeviceMonitor::readActiveAlarm(const std::shared_ptr<Poll>& p)
+{
+    // The drive reports that an alarm is active, not which: the newest record is the one.
+    const ParameterMeta* newest = m_session->profile().records(kAlarmTable).first();
+    submit(ReadPlanner::singles({newest}).first(), [this, p, newest](const ModbusResult& r) {
+        if (p->generation != m_generation)
+            return;
+        if (r.ok() && r.registers.size() == newest->registerCount) {
+            m_session->acceptRegisters(newest->name, r.registers);
+            m_activeAlarmCode = qint64(ValueCodec::registersToRaw(*newest, r.registers));
+        }
+        finish(p);
+    });
+}
+
+void DeviceMonitor::finish(const std::shared_ptr<Poll>& p)
+{
+    m_busy = false;
+    if (!p->errors.isEmpty()) {
+        emit error(tr("machine number %1: %2")
+                       .arg(m_session->slave())
+                       .arg(p->errors.join(QStringLiteral("; "))));
+    } else {
+        const MonitorSample s = buildSample(*p);
+        emit sample(s.timestamp, s);
+    }
+    scheduleNext();
+}
+
+void DeviceMonitor::scheduleNext()
+{
+    if (!m_active)
+        return;
+    const qint64 elapsed = m_pollClock.isValid() ? m_pollClock.elapsed() : 0;
+    m_timer.start(int(std::max<qint64>(0, m_intervalMs - elapsed)));
+}
+
+MonitorSample DeviceMonitor::buildSample(const Poll& p) const
+{
+    const Profile& profile = m_session->profile();
+    const ValueContext context = m_session->context();
+    MonitorSample s;
+    s.slave = m_session->slave();
+    s.timestamp = p.timestamp;
+    for (const QString& name : m_names) {
+        MonitorValue v;
+        v.meta = profile.parameter(name);
+        v.value = p.values.value(name);
+        if (v.meta)
+            v.text = ValueCodec::format(*v.meta, v.value, context);
+        s.values << v;
+    }
+    const auto raw = [&p](const QString& n) {
+        const auto it = p.values.constFind(n);
+        return it == p.values.cend() ? std::nullopt : std::optional<double>(it->raw);
+    };
+    s.running = RoleEvaluator::flag(profile, kRunning, raw);
+    s.alarmActive = RoleEvaluator::flag(profile, kAlarmActive, raw);
+    if (s.alarmActive.value_or(false) && m_activeAlarmCode) {
+        s.activeAlarmCode = m_activeAlarmCode;
+        const CodeTable* table = profile.codeTable(kAlarmTable);
+        if (const CodeEntry* e = table ? table->find(*m_activeAlarmCode) : nullptr)
+            s.activeAlarm = *e;
+    }
+    if (m_display) {
+        for (const auto& [role, shown] :
+             {std::make_pair(QStringLiteral("currentSpeed"), &s.currentShown),
+              std::make_pair(QStringLiteral("targetSpeed"), &s.targetShown)}) {
+            const ParameterMeta* meta = RoleEvaluator::parameter(profile, role);
+            const std::optional<double> speed = meta ? s.signedSpeed(meta->name) : std::nullopt;
+            if (speed)
+                *shown = m_display->show(*speed);
+        }
+    }
+    return s;
+}
+
+} // namespace opentop
