@@ -201,16 +201,16 @@ AlarmHistory::Report AlarmHistory::decode(const QHash<QString, double>& raw,
     return report;
 }
 
+QString AlarmHistory::eraseMethodParameter() const
+{
+    const ProfileRole* role = m_session->profile().role(QStringLiteral("alarmEraseByPower"));
+    return role ? role->parameter : QString();
+}
+
 bool AlarmHistory::eraseMethodIsPower(double raw) const
 {
-    const ParameterMeta* meta = m_session->profile().parameter(eraseMethodParameter());
-    if (!meta)
-        return false;
-    for (const EnumOption& o : meta->specFor(m_session->context()).options) {
-        if (o.value == qint64(raw))
-            return o.label.contains(QLatin1String("power"), Qt::CaseInsensitive);
-    }
-    return false;
+    const ProfileRole* role = m_session->profile().role(QStringLiteral("alarmEraseByPower"));
+    return role && role->value && qint64(raw) == *role->value;
 }
 
 void AlarmHistory::reset(ResetDone done)

@@ -99,9 +99,8 @@ public:
     // back to confirm they are empty.
     void clearRecords(ClearDone done);
 
-    // Parameter whose value tells that alarms are cleared by a power restart only (the drive's
-    // alarm erase method); when present, an option whose label mentions "power" means so.
-    static QString eraseMethodParameter() { return QStringLiteral("core.alarm_erase"); }
+    // Setting whose value (role "alarmEraseByPower") means alarms clear by a power restart only.
+    QString eraseMethodParameter() const;
 
 private:
     struct ResetState

@@ -41,14 +41,8 @@ std::optional<double> MonitorSample::signedSpeed(const QString& parameter) const
         return std::nullopt;
     double number = speed->value.number;
     // A register that holds the magnitude only: the status bits tell the direction.
-    for (const MonitorValue& v : values) {
-        if (!v.meta || !v.value.valid)
-            continue;
-        if (const BitField* f = RoleEvaluator::bitField(*v.meta, QStringLiteral("direction"))) {
-            if (RoleEvaluator::fieldValue(*f, v.value.raw) == 1 && number > 0)
-                number = -number;
-        }
-    }
+    if (reverse.value_or(false) && number > 0)
+        number = -number;
     return number;
 }
 
@@ -275,6 +269,7 @@ MonitorSample DeviceMonitor::buildSample(const Poll& p) const
     };
     s.running = RoleEvaluator::flag(profile, kRunning, raw);
     s.alarmActive = RoleEvaluator::flag(profile, kAlarmActive, raw);
+    s.reverse = RoleEvaluator::flag(profile, QStringLiteral("reverse"), raw);
     if (s.alarmActive.value_or(false) && m_activeAlarmCode) {
         s.activeAlarmCode = m_activeAlarmCode;
         const CodeTable* table = profile.codeTable(kAlarmTable);

@@ -37,6 +37,7 @@ struct MonitorSample
     QVector<MonitorValue> values; // in the order of the profile's "monitor" role
     std::optional<bool> running;  // the "running" role, when the profile has it
     std::optional<bool> alarmActive;
+    std::optional<bool> reverse; // the "reverse" role: the motor turns CCW
     // While an alarm is active: the newest alarm record, decoded by the "alarm" code table.
     std::optional<qint64> activeAlarmCode;
     std::optional<CodeEntry> activeAlarm;
@@ -45,8 +46,8 @@ struct MonitorSample
     std::optional<SpeedDisplay::Shown> targetShown;
 
     const MonitorValue* find(const QString& parameter) const;
-    // A speed parameter's value made signed: negative when a bit field named "direction" in
-    // the sample says 1 (CCW), for registers that hold the magnitude only.
+    // A speed parameter's value made signed: negative when the "reverse" role holds, for
+    // registers that hold the magnitude only.
     std::optional<double> signedSpeed(const QString& parameter) const;
 };
 

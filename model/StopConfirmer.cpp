@@ -31,14 +31,9 @@ StopConfirmer::StopConfirmer(DeviceSession* session, const QElapsedTimer& sinceS
 
 QStringList StopConfirmer::decelParameters() const
 {
-    QStringList names;
-    for (const ParameterMeta& p : m_session->profile().parameters) {
-        if (p.kind == QLatin1String("setting") && p.isReadable() &&
-            p.name.section(QLatin1Char('.'), -1).endsWith(QLatin1String("decel")) &&
-            p.spec.unit == QLatin1String("s"))
-            names << p.name;
-    }
-    return names;
+    // Role "decelerations": the settings (in s) that bound how long stopping may take.
+    const ProfileRole* role = m_session->profile().role(QStringLiteral("decelerations"));
+    return role ? role->parameters : QStringList();
 }
 
 void StopConfirmer::start(std::function<void(const StopResult&)> done)
