@@ -2,7 +2,6 @@
 
 #include "DeviceSession.h"
 #include "ModbusClient.h"
-#include "ReadPlanner.h"
 #include "RoleEvaluator.h"
 #include "ValueCodec.h"
 
@@ -13,15 +12,6 @@ namespace {
 const QString kRunning = QStringLiteral("running");
 const QString kAlarmActive = QStringLiteral("alarmActive");
 const QString kAlarmTable = QStringLiteral("alarm");
-
-ModbusRequest pollRequest(int slave, const ReadBlockPlan& plan)
-{
-    ModbusRequest r = plan.function == 4
-                          ? ModbusRequest::readInput(quint8(slave), plan.address, plan.count)
-                          : ModbusRequest::readHolding(quint8(slave), plan.address, plan.count);
-    r.priority = ModbusRequest::Priority::Poll;
-    return r;
-}
 
 } // namespace
 
@@ -50,7 +40,6 @@ struct DeviceMonitor::Poll
 {
     quint64 generation = 0;
     QDateTime timestamp;
-    int pending = 0;
     QHash<QString, ParamValue> values;
     QStringList errors;
 };
@@ -116,10 +105,6 @@ void DeviceMonitor::stop()
     ++m_generation; // results of the poll under way are dropped
     m_busy = false;
     m_timer.stop();
-    // Requests of this monitor still queued are not needed any more.
-    for (ModbusClient::RequestId id : std::as_const(m_queued))
-        m_session->client()->cancel(id);
-    m_queued.clear();
 }
 
 void DeviceMonitor::poll()
@@ -131,71 +116,25 @@ void DeviceMonitor::poll()
     auto p = std::make_shared<Poll>();
     p->generation = m_generation;
     p->timestamp = QDateTime::currentDateTime();
-    QVector<const ParameterMeta*> metas;
-    for (const QString& name : m_names) {
-        const ParameterMeta* meta = m_session->profile().parameter(name);
-        if (meta && meta->isReadable())
-            metas << meta;
-        else
-            p->errors << tr("%1 cannot be read").arg(name);
-    }
-    const QVector<ReadBlockPlan> plans = ReadPlanner::plan(m_session->profile(), metas);
-    p->pending = plans.size();
-    if (plans.isEmpty()) {
-        finish(p);
-        return;
-    }
-    for (const ReadBlockPlan& plan : plans)
-        submitPlan(p, plan);
+    m_session->readMany(
+        m_names,
+        [this, p](const DeviceSession::ReadManyOutcome& o) {
+            if (p->generation != m_generation)
+                return; // stopped (or restarted) meanwhile
+            for (const QString& name : o.order) {
+                const DeviceSession::Outcome r = o.results.value(name);
+                if (r.value.valid)
+                    p->values.insert(name, r.value);
+                else
+                    p->errors << QStringLiteral("%1: %2").arg(name, r.error);
+            }
+            pollDone(p);
+        },
+        ModbusRequest::Priority::Poll);
 }
 
-void DeviceMonitor::submit(const ReadBlockPlan& plan,
-                           const std::function<void(const ModbusResult&)>& handle)
+void DeviceMonitor::pollDone(const std::shared_ptr<Poll>& p)
 {
-    auto id = std::make_shared<ModbusClient::RequestId>(0);
-    *id = m_session->client()->submit(pollRequest(m_session->slave(), plan), this,
-                                      [this, id, handle](const ModbusResult& r) {
-                                          m_queued.remove(*id);
-                                          handle(r);
-                                      });
-    m_queued.insert(*id);
-}
-
-void DeviceMonitor::submitPlan(const std::shared_ptr<Poll>& p, const ReadBlockPlan& plan)
-{
-    submit(plan, [this, p, plan](const ModbusResult& r) {
-        if (p->generation != m_generation)
-            return;
-        if (!r.ok() && r.error == ModbusError::Exception && plan.parameters.size() > 1) {
-            // The drive refuses the block: one request per parameter.
-            const QVector<ReadBlockPlan> singles = ReadPlanner::singles(plan.parameters);
-            p->pending += singles.size();
-            for (const ReadBlockPlan& single : singles)
-                submitPlan(p, single);
-            planDone(p);
-            return;
-        }
-        QStringList names;
-        for (const ParameterMeta* meta : plan.parameters) {
-            names << meta->name;
-            if (!r.ok())
-                continue;
-            const QVector<quint16> regs =
-                r.registers.mid(meta->address - plan.address, meta->registerCount);
-            m_session->acceptRegisters(meta->name, regs);
-            p->values.insert(meta->name, ValueCodec::decode(*meta, regs, m_session->context()));
-        }
-        if (!r.ok())
-            p->errors << QStringLiteral("%1: %2").arg(names.join(QStringLiteral(", ")),
-                                                      r.errorText());
-        planDone(p);
-    });
-}
-
-void DeviceMonitor::planDone(const std::shared_ptr<Poll>& p)
-{
-    if (--p->pending > 0)
-        return;
     const Profile& profile = m_session->profile();
     const std::optional<bool> alarm =
         RoleEvaluator::flag(profile, kAlarmActive, [&p](const QString& n) {
@@ -215,15 +154,17 @@ void DeviceMonitor::readActiveAlarm(const std::shared_ptr<Poll>& p)
 {
     // The drive reports that an alarm is active, not which: the newest record is the one.
     const ParameterMeta* newest = m_session->profile().records(kAlarmTable).first();
-    submit(ReadPlanner::singles({newest}).first(), [this, p, newest](const ModbusResult& r) {
-        if (p->generation != m_generation)
-            return;
-        if (r.ok() && r.registers.size() == newest->registerCount) {
-            m_session->acceptRegisters(newest->name, r.registers);
-            m_activeAlarmCode = qint64(ValueCodec::registersToRaw(*newest, r.registers));
-        }
-        finish(p);
-    });
+    m_session->readMany(
+        {newest->name},
+        [this, p, newest](const DeviceSession::ReadManyOutcome& o) {
+            if (p->generation != m_generation)
+                return;
+            const DeviceSession::Outcome r = o.results.value(newest->name);
+            if (r.ok)
+                m_activeAlarmCode = qint64(r.value.raw);
+            finish(p);
+        },
+        ModbusRequest::Priority::Poll);
 }
 
 void DeviceMonitor::finish(const std::shared_ptr<Poll>& p)

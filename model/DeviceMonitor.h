@@ -18,7 +18,6 @@ namespace opentop {
 
 class DeviceSession;
 struct ParameterMeta;
-struct ReadBlockPlan;
 struct ModbusResult;
 
 // One decoded value of a sample.
@@ -84,9 +83,7 @@ signals:
 private:
     struct Poll;
     void poll();
-    void submit(const ReadBlockPlan& plan, const std::function<void(const ModbusResult&)>& handle);
-    void submitPlan(const std::shared_ptr<Poll>& poll, const ReadBlockPlan& plan);
-    void planDone(const std::shared_ptr<Poll>& poll);
+    void pollDone(const std::shared_ptr<Poll>& poll);
     void readActiveAlarm(const std::shared_ptr<Poll>& poll);
     void finish(const std::shared_ptr<Poll>& poll);
     void scheduleNext();
@@ -98,7 +95,6 @@ private:
     bool m_active = false;
     bool m_busy = false;
     quint64 m_generation = 0; // polls of an earlier start() are ignored
-    QSet<quint64> m_queued;   // requests submitted and not answered yet
     QTimer m_timer;
     QElapsedTimer m_pollClock;
     std::optional<SpeedDisplay> m_display;

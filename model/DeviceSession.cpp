@@ -111,11 +111,14 @@ struct DeviceSession::ManyState
     QVector<ReadBlockPlan> queue;
     ReadManyOutcome outcome;
     ManyDone done;
+    ModbusRequest::Priority priority = ModbusRequest::Priority::Normal;
 };
 
-void DeviceSession::readMany(const QStringList& names, ManyDone done)
+void DeviceSession::readMany(const QStringList& names, ManyDone done,
+                             ModbusRequest::Priority priority)
 {
     auto state = std::make_shared<ManyState>();
+    state->priority = priority;
     state->done = std::move(done);
     state->outcome.order = names;
     QVector<const ParameterMeta*> metas;
@@ -142,9 +145,10 @@ void DeviceSession::nextBlock(std::shared_ptr<ManyState> state)
         return;
     }
     const ReadBlockPlan plan = state->queue.takeFirst();
-    const ModbusRequest request =
+    ModbusRequest request =
         plan.function == 4 ? ModbusRequest::readInput(quint8(m_slave), plan.address, plan.count)
                            : ModbusRequest::readHolding(quint8(m_slave), plan.address, plan.count);
+    request.priority = state->priority;
     ++state->outcome.requests;
     m_client->submit(request, this, [this, plan, state](const ModbusResult& r) {
         if (!r.ok() && r.error == ModbusError::Exception && plan.parameters.size() > 1) {
@@ -264,7 +268,7 @@ void DeviceSession::verifyWrite(const ParameterMeta& meta, const QVector<quint16
             acceptRegisters(meta.name, r.registers);
             outcome.value = ValueCodec::decode(meta, r.registers, context());
             if (r.registers != written) {
-            outcome.mismatch = true;
+                outcome.mismatch = true;
                 outcome.error =
                     tr("verification failed: wrote %1, the device holds %2")
                         .arg(ValueCodec::format(meta, ValueCodec::decode(meta, written, context()),

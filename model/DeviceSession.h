@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ModbusRequest.h"
 #include "ParamValue.h"
 #include "Profile.h"
 #include "ValueContext.h"
@@ -73,7 +74,9 @@ public:
     void read(const QString& name, Done done);
     // Reads several parameters in as few requests as the device allows (ReadPlanner), falling
     // back to one request per parameter where the device refuses a block.
-    void readMany(const QStringList& names, ManyDone done);
+    // `priority` Poll lets user requests overtake background polling.
+    void readMany(const QStringList& names, ManyDone done,
+                  ModbusRequest::Priority priority = ModbusRequest::Priority::Normal);
     // Validates `text` (engineering units or enumeration label), writes, reads back.
     void write(const QString& name, const QString& text, const WriteOptions& options, Done done);
     // Stores registers obtained elsewhere (a block read) as device values.
