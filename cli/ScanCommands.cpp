@@ -1,8 +1,11 @@
 #include "CliCommands.h"
+#include "ScanCommand.h"
 
 namespace opentop {
 
-// Being written: replaced by the scan commands.
-void addScanCommands(CliCommandList&) {}
+void addScanCommands(CliCommandList& list)
+{
+    list.push_back(std::make_unique<ScanCommand>());
+}
 
 } // namespace opentop

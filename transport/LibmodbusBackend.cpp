@@ -28,6 +28,7 @@ QString errnoText(int err)
 LibmodbusBackend::LibmodbusBackend(const ConnectionSettings& settings)
     : m_settings(settings)
 {
+    m_clock.start();
 }
 
 LibmodbusBackend::~LibmodbusBackend()
@@ -89,6 +90,7 @@ void LibmodbusBackend::close()
     modbus_free(m_ctx);
     m_ctx = nullptr;
     m_open = false;
+    m_lateWatch.clear();
     qCDebug(lcTransport) << "closed" << describe();
 }
 
@@ -121,6 +123,7 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
     if (timeoutMs <= 0)
         timeoutMs = m_settings.timeoutMs;
 
+    awaitLateReplies(request);
     discardStaleInput(request);
     const QByteArray raw = char(request.slave) + request.pdu();
     const QByteArray sent = txAdu(request);
@@ -159,7 +162,7 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
         result.message = QCoreApplication::translate("opentop::Transport", "no reply within %1 ms")
                              .arg(timeoutMs);
         logEvent(request, result.message, result.errorText());
-        recover(request);
+        deferRecovery(request);
         return result;
     }
 
@@ -328,16 +331,56 @@ void LibmodbusBackend::recover(const ModbusRequest& request)
     // Wait until the line has been quiet for about one frame time, swallowing whatever
     // arrives (a late or second reply), then flush: the next request must not read it.
     const int quietMs = recoveryQuietMs(request);
+    drain(request, quietMs, quietMs);
+}
+
+void LibmodbusBackend::deferRecovery(const ModbusRequest& request)
+{
+    const int quietMs = recoveryQuietMs(request);
+    const double nowMs = double(m_clock.nsecsElapsed()) / 1e6;
+    m_lateWatch.append({request.slave, nowMs + quietMs, quietMs});
+}
+
+void LibmodbusBackend::awaitLateReplies(const ModbusRequest& request)
+{
+    const double nowMs = double(m_clock.nsecsElapsed()) / 1e6;
+    m_lateWatch.erase(std::remove_if(m_lateWatch.begin(), m_lateWatch.end(),
+                                     [nowMs](const LateWatch& w) { return w.untilMs <= nowMs; }),
+                      m_lateWatch.end());
+    if (m_lateWatch.isEmpty())
+        return;
+    // A late reply from the slave we are about to ask again would look like its answer, and a
+    // broadcast gets no answer to check at all: wait out the quiet time. So do bytes already
+    // arriving: a reply in progress would collide with our request on the line.
+    const bool sameSlave =
+        std::any_of(m_lateWatch.begin(), m_lateWatch.end(),
+                    [&](const LateWatch& w) { return w.slave == request.slave; });
+    if (!sameSlave && !request.isBroadcast() && waitReadable(0) != 1)
+        return;
+    double untilMs = nowMs;
+    int quietMs = 0;
+    for (const LateWatch& w : m_lateWatch) {
+        untilMs = std::max(untilMs, w.untilMs);
+        quietMs = std::max(quietMs, w.quietMs);
+    }
+    m_lateWatch.clear();
+    drain(request, untilMs - nowMs, quietMs);
+}
+
+void LibmodbusBackend::drain(const ModbusRequest& request, double firstWindowMs, int quietMs)
+{
     const double limitMs = 4.0 * quietMs + 100; // a babbling line must not hold the bus
     QElapsedTimer timer;
     timer.start();
     QByteArray late;
     char chunk[kBufferSize];
-    while (double(timer.elapsed()) < limitMs && waitReadable(quietMs) == 1) {
+    double window = std::max(0.0, firstWindowMs);
+    while (double(timer.elapsed()) < limitMs && waitReadable(window) == 1) {
         const int n = readSome(chunk, kBufferSize);
         if (n <= 0)
             break;
         late.append(chunk, n);
+        window = quietMs; // quiet again for a whole frame time after every byte
     }
     if (!m_ctx)
         return;

@@ -4,6 +4,7 @@
 #include "ModbusBackend.h"
 
 #include <QElapsedTimer>
+#include <QVector>
 
 struct _modbus; // libmodbus' modbus_t, kept out of this header
 
@@ -13,7 +14,11 @@ namespace opentop {
 // modbus_send_raw_request (so the traffic log shows the exact bytes), standard replies come
 // back through modbus_receive_confirmation, raw replies are read from the socket. Errors are
 // classified from errno; after an error the line is drained for about one frame time and
-// flushed so that a late reply cannot be taken for the answer to the next request.
+// flushed so that a late reply cannot be taken for the answer to the next request. After a
+// timeout with nothing received that drain is deferred: it happens before the next request to
+// the same slave (or a broadcast, or when bytes are arriving), while a request to another
+// slave goes out at once, because a late reply carries its sender's id and is then rejected
+// as a wrong-slave reply. This keeps scans of empty addresses at one wait each.
 class LibmodbusBackend : public ModbusBackend
 {
 public:
@@ -65,6 +70,13 @@ private:
                          ModbusResult* result);
     void discardStaleInput(const ModbusRequest& request);
     void recover(const ModbusRequest& request);
+    // Reads and discards until the line has been quiet for `quietMs` (the first window may be
+    // shorter), then flushes.
+    void drain(const ModbusRequest& request, double firstWindowMs, int quietMs);
+    // After a silent timeout: remembers until when a late reply from that slave could start.
+    void deferRecovery(const ModbusRequest& request);
+    // Before sending: completes a deferred drain where the id check cannot protect us.
+    void awaitLateReplies(const ModbusRequest& request);
     void setResponseTimeout(double ms);
 
     ConnectionSettings m_settings;
@@ -72,6 +84,14 @@ private:
     bool m_open = false;
     int m_turnaroundMs = -1;
     QElapsedTimer m_timer; // since the current request was sent
+    struct LateWatch
+    {
+        quint8 slave = 0;
+        double untilMs = 0; // on m_clock
+        int quietMs = 0;
+    };
+    QVector<LateWatch> m_lateWatch; // slaves that timed out silently, quiet time not yet over
+    QElapsedTimer m_clock;          // monotonic time for m_lateWatch
 };
 
 } // namespace opentop

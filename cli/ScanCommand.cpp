@@ -1,0 +1,377 @@
+#include "ScanCommand.h"
+
+#include "BusScanner.h"
+#include "CliContext.h"
+#include "ModbusClient.h"
+#include "ProfileRegistry.h"
+#include "TextTable.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <unistd.h>
+
+namespace opentop {
+
+namespace {
+
+// The documented --wait range starts at 5 ms; the transport's shortest timeout is 10 ms.
+constexpr int kMinWaitArgument = 5;
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("opentop::ScanCommand", text);
+}
+
+bool isTerminal(QTextStream& stream)
+{
+    auto* file = qobject_cast<QFile*>(stream.device());
+    return file && file->handle() >= 0 && ::isatty(file->handle());
+}
+
+QString seconds(double ms)
+{
+    return QString::number(ms / 1000.0, 'f', 1);
+}
+
+QString stateId(DeviceInfo::State state)
+{
+    switch (state) {
+    case DeviceInfo::State::Present:
+        return QStringLiteral("present");
+    case DeviceInfo::State::Absent:
+        return QStringLiteral("absent");
+    case DeviceInfo::State::Garbled:
+        return QStringLiteral("garbled");
+    case DeviceInfo::State::Unidentified:
+        return QStringLiteral("unidentified");
+    case DeviceInfo::State::Unknown:
+        break;
+    }
+    return QStringLiteral("unknown");
+}
+
+bool isDrive(const DeviceInfo& info)
+{
+    return info.state == DeviceInfo::State::Present ||
+           info.state == DeviceInfo::State::Unidentified;
+}
+
+// Progress on standard error: one updating line on a terminal, a line per 10 % otherwise (a
+// log file or a CI job should not fill up with carriage returns).
+struct Progress
+{
+    QTextStream& err;
+    bool terminal;
+    int lastTenth = 0;
+    int found = 0;
+    int width = 0;
+
+    void update(int done, int total, int slave)
+    {
+        if (terminal) {
+            const QString line = tr("scanning %1/%2 (%3 %), machine number %4, %5 found")
+                                     .arg(done)
+                                     .arg(total)
+                                     .arg(100 * done / total)
+                                     .arg(slave)
+                                     .arg(found);
+            width = std::max(width, int(line.size()));
+            err << '\r' << line.leftJustified(width);
+            err.flush();
+            return;
+        }
+        const int tenth = 10 * done / total;
+        if (tenth <= lastTenth)
+            return;
+        lastTenth = tenth;
+        err << tr("scan: %1 % (%2 of %3 machine numbers), %4 found")
+                   .arg(100 * done / total)
+                   .arg(done)
+                   .arg(total)
+                   .arg(found)
+            << Qt::endl;
+    }
+
+    void clear()
+    {
+        if (terminal && width > 0) {
+            err << '\r' << QString(width, QLatin1Char(' ')) << '\r';
+            err.flush();
+        }
+    }
+};
+
+} // namespace
+
+QString ScanCommand::summary() const
+{
+    return tr("Find and identify the drives on the bus (machine numbers 1–247)");
+}
+
+QList<QCommandLineOption> ScanCommand::options() const
+{
+    return {
+        {QStringLiteral("from"), tr("First machine number to ask, 1–247 (default 1)."), tr("N")},
+        {QStringLiteral("to"), tr("Last machine number to ask, 1–247 (default 247)."), tr("N")},
+        {QStringLiteral("wait"),
+         tr("Wait per machine number in ms, 5–5000 (default: derived from the baud rate; "
+            "raise it for slow adapters or gateways)."),
+         tr("MS")},
+    };
+}
+
+bool ScanCommand::parseRange(CliContext& context, const QStringList& args, Range* range)
+{
+    const QCommandLineParser& p = context.parser();
+    auto number = [&](const QString& option, int min, int max, int* target) {
+        if (!p.isSet(option))
+            return true;
+        bool ok = false;
+        const int value = p.value(option).toInt(&ok);
+        if (!ok || value < min || value > max) {
+            context.err() << tr("error: --%1 must be a number %2–%3, not \"%4\"")
+                                 .arg(option)
+                                 .arg(min)
+                                 .arg(max)
+                                 .arg(p.value(option))
+                          << Qt::endl;
+            return false;
+        }
+        *target = value;
+        return true;
+    };
+    if (!args.isEmpty()) {
+        context.err() << tr("error: scan takes no arguments; use --from N --to N") << Qt::endl;
+        return false;
+    }
+    if (!number(QStringLiteral("from"), 1, 247, &range->from) ||
+        !number(QStringLiteral("to"), 1, 247, &range->to) ||
+        !number(QStringLiteral("wait"), kMinWaitArgument, BusScanner::kMaxWaitMs, &range->waitMs))
+        return false;
+    if (range->from > range->to) {
+        context.err() << tr("error: --from %1 is after --to %2").arg(range->from).arg(range->to)
+                      << Qt::endl;
+        return false;
+    }
+    return true;
+}
+
+int ScanCommand::run(CliContext& context, const QStringList& args)
+{
+    Range range;
+    if (!parseRange(context, args, &range))
+        return ExitUsage;
+    if (!context.connectBus())
+        return ExitCommunication;
+
+    BusScanner scanner(context.client(), ProfileRegistry::builtIn());
+    scanner.setRange(range.from, range.to);
+    scanner.setWaitMs(range.waitMs);
+    if (range.waitMs > 0 && range.waitMs < BusScanner::kMinWaitMs)
+        context.err() << tr("note: --wait %1 ms is below the shortest response timeout the "
+                            "transport allows; waiting %2 ms")
+                             .arg(range.waitMs)
+                             .arg(BusScanner::kMinWaitMs)
+                      << Qt::endl;
+    context.err() << tr("Scanning machine numbers %1–%2 on %3, %4 ms each…")
+                         .arg(range.from)
+                         .arg(range.to)
+                         .arg(context.client()->describe())
+                         .arg(scanner.waitMs())
+                  << Qt::endl;
+    Progress progress{context.err(), isTerminal(context.err())};
+    QObject::connect(&scanner, &BusScanner::found, &scanner, [&progress](const DeviceInfo& info) {
+        progress.found += info.state == DeviceInfo::State::Absent ? 0 : 1;
+    });
+    QObject::connect(
+        &scanner, &BusScanner::progress, &scanner,
+        [&progress](int done, int total, int slave) { progress.update(done, total, slave); });
+    const bool completed = context.wait([&scanner](std::function<void()> finish) {
+        QObject::connect(&scanner, &BusScanner::finished, &scanner, [finish] { finish(); });
+        scanner.start();
+    });
+    if (!completed)
+        scanner.cancel(); // Ctrl-C: the event loop has stopped, nothing more is asked
+    progress.clear();
+    const bool interrupted = !completed || (scanner.wasCancelled() && context.interrupted());
+
+    QVector<DeviceInfo> devices = scanner.devices();
+    completeVariants(context, &devices);
+    if (context.json())
+        printJson(context, scanner, devices, interrupted);
+    else if (!devices.isEmpty())
+        printTable(context, devices);
+
+    const int scanned = scanner.scannedCount();
+    if (interrupted) {
+        if (scanned == 0)
+            context.err() << tr("Interrupted before any machine number was scanned.") << Qt::endl;
+        else
+            context.err() << tr("Interrupted: machine numbers %1–%2 were scanned (%3 of %4); "
+                                "%5–%6 were not asked.")
+                                 .arg(range.from)
+                                 .arg(range.from + scanned - 1)
+                                 .arg(scanned)
+                                 .arg(scanner.total())
+                                 .arg(range.from + scanned)
+                                 .arg(range.to)
+                          << Qt::endl;
+        if (!context.json())
+            context.out() << summaryLine(devices, scanner.elapsedMs()) << Qt::endl;
+        return ExitInterrupted;
+    }
+    if (!scanner.error().isEmpty()) {
+        context.err() << tr("error: the scan stopped at machine number %1: %2")
+                             .arg(range.from + scanned)
+                             .arg(scanner.error())
+                      << Qt::endl;
+        return ExitCommunication;
+    }
+    if (!context.json())
+        context.out() << summaryLine(devices, scanner.elapsedMs()) << Qt::endl;
+    warnDuplicates(context, devices);
+    if (scanner.lateAnswers() > 0)
+        context.err() << tr("note: %1 drive(s) answered only after the %2 ms wait and were asked "
+                            "again; if scans miss drives, give a longer --wait.")
+                             .arg(scanner.lateAnswers())
+                             .arg(scanner.waitMs())
+                      << Qt::endl;
+    if (devices.isEmpty()) {
+        context.err() << tr("No drive answered at machine numbers %1–%2. Check:\n"
+                            "  - the wiring, and the A/B polarity (swap A and B if unsure);\n"
+                            "  - baud rate and parity: the drives' settings must match %3 "
+                            "(--baud, --parity, --family);\n"
+                            "  - the termination (120 Ω at both ends of the bus) and that the "
+                            "drives are powered.")
+                             .arg(range.from)
+                             .arg(range.to)
+                             .arg(context.client()->describe())
+                      << Qt::endl;
+        return ExitCommunication;
+    }
+    return ExitOk;
+}
+
+void ScanCommand::completeVariants(CliContext& context, QVector<DeviceInfo>* devices)
+{
+    const ProfileRegistry& registry = ProfileRegistry::builtIn();
+    for (DeviceInfo& info : *devices) {
+        const Profile* profile = registry.family(info.family);
+        if (info.state != DeviceInfo::State::Present || !profile)
+            continue;
+        if (profile->variants.isEmpty()) {
+            // One model per family: the device's own name says more than the family's title.
+            if (!info.name.trimmed().isEmpty())
+                info.model = info.name.trimmed();
+            continue;
+        }
+        if (!info.variant.isEmpty())
+            continue;
+        info.variant = context.assignedVariant(info.slave, info.family);
+        if (const ProfileVariant* v = profile->variant(info.variant)) {
+            info.model = v->model;
+            info.detail.clear();
+        } else {
+            const QString name =
+                info.name.trimmed().isEmpty() ? profile->family.toUpper() : info.name.trimmed();
+            info.model = tr("%1 — variant unknown").arg(name);
+            info.detail = tr("the drive does not report its variant; give it with --variant "
+                             "%1=VARIANT (%2)")
+                              .arg(info.slave)
+                              .arg([&] {
+                                  QStringList ids;
+                                  for (const ProfileVariant& pv : profile->variants)
+                                      ids << pv.id;
+                                  return ids.join(QStringLiteral(", "));
+                              }());
+        }
+    }
+}
+
+void ScanCommand::printTable(CliContext& context, const QVector<DeviceInfo>& devices)
+{
+    TextTable table({tr("ID"), tr("hex"), tr("switches"), tr("family"), tr("model"), tr("firmware"),
+                     tr("state")});
+    table.setRightAligned(0);
+    table.setRightAligned(1);
+    for (const DeviceInfo& info : devices) {
+        table.addRow({QString::number(info.slave), DeviceInfo::hexText(info.slave),
+                      DeviceInfo::switchText(info.slave), info.family, info.model,
+                      info.firmware.isEmpty() ? QString() : QStringLiteral("V") + info.firmware,
+                      DeviceInfo::stateText(info.state)});
+    }
+    table.print(context.out());
+}
+
+void ScanCommand::printJson(CliContext& context, const BusScanner& scanner,
+                            const QVector<DeviceInfo>& devices, bool interrupted)
+{
+    QJsonArray list;
+    for (const DeviceInfo& info : devices) {
+        list.append(QJsonObject{
+            {QStringLiteral("slave"), info.slave},
+            {QStringLiteral("hex"), DeviceInfo::hexText(info.slave)},
+            {QStringLiteral("switches"), DeviceInfo::switchText(info.slave)},
+            {QStringLiteral("family"), info.family},
+            {QStringLiteral("variant"), info.variant},
+            {QStringLiteral("model"), info.model},
+            {QStringLiteral("firmware"), info.firmware},
+            {QStringLiteral("state"), stateId(info.state)},
+            {QStringLiteral("detail"), info.detail},
+        });
+    }
+    QJsonObject scan{
+        {QStringLiteral("from"), scanner.from()},
+        {QStringLiteral("to"), scanner.to()},
+        {QStringLiteral("waitMs"), scanner.waitMs()},
+        {QStringLiteral("elapsedMs"), qRound(scanner.elapsedMs())},
+        {QStringLiteral("devices"), list},
+    };
+    if (interrupted) {
+        scan.insert(QStringLiteral("interrupted"), true);
+        scan.insert(QStringLiteral("scannedTo"), scanner.from() + scanner.scannedCount() - 1);
+    }
+    context.out() << QJsonDocument(QJsonObject{{QStringLiteral("scan"), scan}}).toJson();
+}
+
+QString ScanCommand::summaryLine(const QVector<DeviceInfo>& devices, double elapsedMs)
+{
+    int drives = 0;
+    QStringList duplicates;
+    for (const DeviceInfo& info : devices) {
+        drives += isDrive(info) ? 1 : 0;
+        if (info.state == DeviceInfo::State::Garbled)
+            duplicates << QString::number(info.slave);
+    }
+    // Whole sentences per number, so that translators get complete phrases.
+    QString line = drives == 1 ? tr("1 drive found in %1 s").arg(seconds(elapsedMs))
+                               : tr("%1 drives found in %2 s").arg(drives).arg(seconds(elapsedMs));
+    if (duplicates.size() == 1)
+        line += tr("; 1 possible duplicate machine number: %1").arg(duplicates.first());
+    else if (duplicates.size() > 1)
+        line += tr("; %1 possible duplicate machine numbers: %2")
+                    .arg(duplicates.size())
+                    .arg(duplicates.join(QStringLiteral(", ")));
+    return line;
+}
+
+void ScanCommand::warnDuplicates(CliContext& context, const QVector<DeviceInfo>& devices)
+{
+    for (const DeviceInfo& info : devices) {
+        if (info.state != DeviceInfo::State::Garbled)
+            continue;
+        context.err() << tr("warning: machine number %1 (%2, %3) answers with garbled replies: "
+                            "two drives probably have the same machine number. Check the SW1/SW2 "
+                            "switches of the drives on this bus, give each drive its own machine "
+                            "number, power them off and on, and scan again.")
+                             .arg(info.slave)
+                             .arg(DeviceInfo::hexText(info.slave),
+                                  DeviceInfo::switchText(info.slave))
+                      << Qt::endl;
+    }
+}
+
+} // namespace opentop

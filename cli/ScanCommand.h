@@ -1,0 +1,45 @@
+#pragma once
+
+#include "CliCommand.h"
+#include "DeviceInfo.h"
+
+#include <QVector>
+
+namespace opentop {
+
+class BusScanner;
+class CliContext;
+
+// `scan [--from N] [--to N] [--wait MS]`: finds and identifies the drives on the bus, with
+// progress on standard error, a table (or --json) on standard output, and a warning for machine
+// numbers that two drives seem to share.
+class ScanCommand : public CliCommand
+{
+public:
+    QString name() const override { return QStringLiteral("scan"); }
+    QString synopsis() const override
+    {
+        return QStringLiteral("scan [--from N] [--to N] [--wait MS]");
+    }
+    QString summary() const override;
+    QList<QCommandLineOption> options() const override;
+    int run(CliContext& context, const QStringList& args) override;
+
+private:
+    struct Range
+    {
+        int from = 1;
+        int to = 247;
+        int waitMs = 0; // 0: derived from the baud rate
+    };
+    static bool parseRange(CliContext& context, const QStringList& args, Range* range);
+    // Fills in variants the drives do not report (--variant, the simulated bus list).
+    static void completeVariants(CliContext& context, QVector<DeviceInfo>* devices);
+    static void printTable(CliContext& context, const QVector<DeviceInfo>& devices);
+    static void printJson(CliContext& context, const BusScanner& scanner,
+                          const QVector<DeviceInfo>& devices, bool interrupted);
+    static QString summaryLine(const QVector<DeviceInfo>& devices, double elapsedMs);
+    static void warnDuplicates(CliContext& context, const QVector<DeviceInfo>& devices);
+};
+
+} // namespace opentop

@@ -1,0 +1,150 @@
+// The opentop-cli executable scanning an opentop-sim process over a pty with wire timing: the
+// real RTU backend, real processes, real exit codes and signals. Small ranges keep it fast.
+#include "SimProcess.h"
+
+#include <QElapsedTimer>
+#include <QProcess>
+#include <QThread>
+#include <csignal>
+
+using namespace opentop::test;
+
+namespace {
+
+struct CliResult
+{
+    int code = -1;
+    QString out;
+    QString err;
+};
+
+QString cliProgram()
+{
+    return QStringLiteral(OPENTOP_BIN_DIR "/opentop-cli");
+}
+
+CliResult finish(QProcess& cli)
+{
+    CliResult r;
+    if (!cli.waitForFinished(30000)) {
+        cli.kill();
+        cli.waitForFinished(2000);
+    }
+    r.code = cli.exitStatus() == QProcess::NormalExit ? cli.exitCode() : -1;
+    r.out = QString::fromUtf8(cli.readAllStandardOutput());
+    r.err = QString::fromUtf8(cli.readAllStandardError());
+    return r;
+}
+
+CliResult runScan(const SimProcess& sim, const QStringList& args)
+{
+    QProcess cli;
+    cli.start(cliProgram(),
+              QStringList{QStringLiteral("--port"), sim.pty, QStringLiteral("scan")} + args);
+    EXPECT_TRUE(cli.waitForStarted(5000));
+    return finish(cli);
+}
+
+bool startSim(SimProcess& sim, const QString& devices, const QStringList& extra = {})
+{
+    QString error;
+    const bool ok =
+        sim.start(QStringList{QStringLiteral("--devices"), devices, QStringLiteral("--wire-timing"),
+                              QStringLiteral("--baud"), QStringLiteral("19200")} +
+                      extra,
+                  &error);
+    EXPECT_TRUE(ok) << error.toStdString();
+    return ok;
+}
+
+QString row(const QString& out, int slave)
+{
+    for (const QString& line : out.split(QLatin1Char('\n'))) {
+        if (line.trimmed().startsWith(QString::number(slave) + QLatin1Char(' ')))
+            return line.simplified();
+    }
+    return QString();
+}
+
+} // namespace
+
+TEST(CliScanE2e, FindsTheDrivesOfASimulatedLine)
+{
+    SimProcess sim;
+    ASSERT_TRUE(startSim(sim, QStringLiteral("dbu200@1,dcpid@7,dbu400@18,dbu200@150")));
+    const CliResult r = runScan(sim, {QStringLiteral("--from"), QStringLiteral("1"),
+                                      QStringLiteral("--to"), QStringLiteral("20")});
+    ASSERT_EQ(r.code, 0) << r.err.toStdString();
+    // A separate process gets no simulated bus list: the DBU variants stay unknown.
+    EXPECT_EQ(row(r.out, 1),
+              QStringLiteral("1 01h SW1=0 SW2=1 dbu DBU — variant unknown V1.5 online"))
+        << r.out.toStdString();
+    EXPECT_EQ(row(r.out, 7), QStringLiteral("7 07h SW1=0 SW2=7 dcpid DCPID-20A V1.0 online"));
+    EXPECT_EQ(row(r.out, 18),
+              QStringLiteral("18 12h SW1=1 SW2=2 dbu DBU — variant unknown V1.5 online"));
+    EXPECT_TRUE(row(r.out, 150).isEmpty());
+    EXPECT_TRUE(r.out.contains(QStringLiteral("3 drives found in "))) << r.out.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("Scanning machine numbers 1–20 on ")));
+    EXPECT_TRUE(r.err.contains(QStringLiteral("scan: 100 % (20 of 20 machine numbers), 3 found")))
+        << r.err.toStdString();
+    EXPECT_EQ(sim.terminate(), 0);
+}
+
+TEST(CliScanE2e, VariantOptionAndNoDriveInRange)
+{
+    SimProcess sim;
+    ASSERT_TRUE(startSim(sim, QStringLiteral("dbu400@30")));
+    CliResult r = runScan(sim, {QStringLiteral("--from"), QStringLiteral("30"),
+                                QStringLiteral("--to"), QStringLiteral("31"),
+                                QStringLiteral("--variant"), QStringLiteral("30=dbu400")});
+    ASSERT_EQ(r.code, 0) << r.err.toStdString();
+    EXPECT_EQ(row(r.out, 30), QStringLiteral("30 1Eh SW1=1 SW2=E dbu DBU400-D4 V1.5 online"));
+
+    r = runScan(sim, {QStringLiteral("--from"), QStringLiteral("1"), QStringLiteral("--to"),
+                      QStringLiteral("4")});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("A/B polarity"))) << r.err.toStdString();
+}
+
+TEST(CliScanE2e, GarbledRepliesAreReportedAsAPossibleDuplicate)
+{
+    SimProcess sim;
+    // Every reply of the drive at 3 arrives with a broken CRC, as when two drives answer at once.
+    ASSERT_TRUE(startSim(sim, QStringLiteral("dbu200@3"),
+                         {QStringLiteral("--faults"), QStringLiteral("crc=1")}));
+    const CliResult r = runScan(sim, {QStringLiteral("--from"), QStringLiteral("1"),
+                                      QStringLiteral("--to"), QStringLiteral("5")});
+    EXPECT_EQ(r.code, 0) << r.err.toStdString();
+    EXPECT_TRUE(row(r.out, 3).contains(QStringLiteral("garbled replies"))) << r.out.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("1 possible duplicate machine number: 3")))
+        << r.out.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("warning: machine number 3 (03h, SW1=0 SW2=3)")))
+        << r.err.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("SW1/SW2 switches")));
+}
+
+TEST(CliScanE2e, CtrlCStopsTheScanAndReportsWhatWasScanned)
+{
+    SimProcess sim;
+    ASSERT_TRUE(startSim(sim, QStringLiteral("dbu200@2")));
+    QProcess cli;
+    cli.start(cliProgram(), {QStringLiteral("--port"), sim.pty, QStringLiteral("scan"),
+                             QStringLiteral("--wait"), QStringLiteral("100")});
+    ASSERT_TRUE(cli.waitForStarted(5000));
+    // Wait until the scan is under way (progress after 10 % would take 2.5 s: read the banner).
+    QElapsedTimer timer;
+    timer.start();
+    while (!cli.readAllStandardError().contains("Scanning") && timer.elapsed() < 5000)
+        cli.waitForReadyRead(100);
+    QThread::msleep(600);
+    ::kill(pid_t(cli.processId()), SIGINT);
+    timer.restart();
+    const CliResult r = finish(cli);
+    EXPECT_LT(timer.elapsed(), 2000);
+    EXPECT_EQ(r.code, 130) << r.err.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("Interrupted: machine numbers 1–")))
+        << r.err.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("were not asked")));
+    EXPECT_TRUE(row(r.out, 2).contains(QStringLiteral("online"))) << r.out.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("1 drive found in ")));
+}
