@@ -18,7 +18,6 @@ namespace opentop {
 namespace {
 
 // The documented --wait range starts at 5 ms; the transport's shortest timeout is 10 ms.
-constexpr int kMinWaitArgument = 5;
 
 QString tr(const char* text)
 {
@@ -117,7 +116,7 @@ QList<QCommandLineOption> ScanCommand::options() const
         {QStringLiteral("from"), tr("First machine number to ask, 1–247 (default 1)."), tr("N")},
         {QStringLiteral("to"), tr("Last machine number to ask, 1–247 (default 247)."), tr("N")},
         {QStringLiteral("wait"),
-         tr("Wait per machine number in ms, 5–5000 (default: derived from the baud rate; "
+         tr("Wait per machine number in ms, 10–5000 (default: derived from the baud rate; "
             "raise it for slow adapters or gateways)."),
          tr("MS")},
     };
@@ -149,7 +148,8 @@ bool ScanCommand::parseRange(CliContext& context, const QStringList& args, Range
     }
     if (!number(QStringLiteral("from"), 1, 247, &range->from) ||
         !number(QStringLiteral("to"), 1, 247, &range->to) ||
-        !number(QStringLiteral("wait"), kMinWaitArgument, BusScanner::kMaxWaitMs, &range->waitMs))
+        !number(QStringLiteral("wait"), BusScanner::kMinWaitMs, BusScanner::kMaxWaitMs,
+                &range->waitMs))
         return false;
     if (range->from > range->to) {
         context.err() << tr("error: --from %1 is after --to %2").arg(range->from).arg(range->to)
@@ -170,12 +170,6 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
     BusScanner scanner(context.client(), ProfileRegistry::builtIn());
     scanner.setRange(range.from, range.to);
     scanner.setWaitMs(range.waitMs);
-    if (range.waitMs > 0 && range.waitMs < BusScanner::kMinWaitMs)
-        context.err() << tr("note: --wait %1 ms is below the shortest response timeout the "
-                            "transport allows; waiting %2 ms")
-                             .arg(range.waitMs)
-                             .arg(BusScanner::kMinWaitMs)
-                      << Qt::endl;
     context.err() << tr("Scanning machine numbers %1–%2 on %3, %4 ms each…")
                          .arg(range.from)
                          .arg(range.to)

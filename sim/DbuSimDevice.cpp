@@ -198,6 +198,12 @@ void DbuSimDevice::step(qint64, int dtMs)
         raiseAlarm(events.alarm);
 }
 
+bool DbuSimDevice::quiescent() const
+{
+    // Stopped with nothing commanded: every step until the next frame would change nothing.
+    return m_motor.speed() == 0 && m_target == 0 && !m_started;
+}
+
 void DbuSimDevice::raiseAlarm(int code)
 {
     if (m_alarm)

@@ -64,6 +64,7 @@ private:
     DbuTerminals m_terminals;
     Command m_command;   // what the drive executes now
     double m_target = 0; // signed r/min
+    bool quiescent() const override;
     bool m_started = false;
     bool m_offline = false;
     bool m_ignoreStop = false;

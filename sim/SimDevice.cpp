@@ -251,8 +251,12 @@ void SimDevice::advance(qint64 nowMs)
     if (m_lastAdvanceMs < 0 || nowMs < m_lastAdvanceMs) {
         m_lastAdvanceMs = nowMs;
     } else if (nowMs > m_lastAdvanceMs) {
-        // Fixed 10 ms steps; coarser after long silences so that an idle hour stays cheap.
-        const qint64 stepMs = std::max<qint64>(kStepMs, (nowMs - m_lastAdvanceMs) / 20000);
+        // Fixed 10 ms steps; coarser after long silences so that an idle hour stays cheap, and a
+        // single step while the device is quiescent (the answer must not wait for the catch-up).
+        const qint64 gap = nowMs - m_lastAdvanceMs;
+        const qint64 stepMs = quiescent()
+                                  ? std::max<qint64>(kStepMs, std::min<qint64>(gap, 3600000))
+                                  : std::max<qint64>(kStepMs, gap / 20000);
         qint64 t = m_lastAdvanceMs;
         while (t < nowMs) {
             const qint64 dt = std::min(stepMs, nowMs - t);

@@ -109,7 +109,10 @@ protected:
     virtual void afterBlockWrite(quint8, quint16, int, qint64) {}
     // Called for every frame this device executes (addressed, group or broadcast).
     virtual void frameSeen(qint64) {}
-    virtual void step(qint64, int) {}     // simulation step ending at nowMs, dtMs long
+    virtual void step(qint64, int) {} // simulation step ending at nowMs, dtMs long
+    // True while nothing moves or counts down: a long silence is then one step, so that an
+    // idle device answers as fast after an hour as after a second.
+    virtual bool quiescent() const { return false; }
     virtual void refreshStatus(qint64) {} // status registers from the state
     virtual void onPowerCycle(qint64) {}
     virtual SimControlResult controlCommand(const QStringList& args, qint64 nowMs);

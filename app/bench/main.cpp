@@ -2,11 +2,12 @@
 // to this executable) with wire timing on a pty, talks to it through the real RTU backend and
 // prints plain figures with units. Exits non-zero when a benchmark fails.
 //
-// Each figure comes from a named benchmark in benchmarks() below; a new figure (for example a
-// single-drive backup) is one more entry there.
+// Each figure comes from a named benchmark in benchmarks() below.
+#include "BackupReader.h"
 #include "BusScanner.h"
 #include "BusSpec.h"
 #include "ConnectionSettings.h"
+#include "DeviceSession.h"
 #include "ModbusClient.h"
 #include "ProfileRegistry.h"
 #include "RtuBackend.h"
@@ -159,15 +160,60 @@ bool absentAddresses(BenchBus& bus, QVector<Figure>* figures, QString* error)
     return true;
 }
 
-// The benchmarks, in the order they run. Extension point: add an entry (name, description,
-// run function) for a new figure, e.g. "backup" timing a single-drive backup of the first drive
-// in bus.devices through bus.client.
+// A single-drive backup of the first drive of each family on the bus: the time a field
+// engineer waits, and how many requests it takes at the line's speed.
+bool backups(BenchBus& bus, QVector<Figure>* figures, QString* error)
+{
+    QStringList done;
+    for (const BusSpecEntry& e : bus.devices) {
+        QString variant;
+        const Profile* profile = ProfileRegistry::builtIn().forDeviceType(e.type, &variant);
+        if (!profile || done.contains(profile->family))
+            continue;
+        done << profile->family;
+        DeviceSession session(bus.client, *profile, e.slave, variant);
+        BackupReader reader(&session);
+        BackupReader::Result result;
+        QEventLoop loop;
+        bool finished = false;
+        reader.read([&](const BackupReader::Result& r) {
+            result = r;
+            finished = true;
+            loop.quit();
+        });
+        QTimer::singleShot(60000, &loop, &QEventLoop::quit);
+        if (!finished)
+            loop.exec();
+        if (!finished || !result.ok) {
+            *error = tr("backup of machine number %1 failed: %2")
+                         .arg(e.slave)
+                         .arg(finished ? result.failures.join(QStringLiteral("; "))
+                                       : tr("no result within 60 s"));
+            return false;
+        }
+        const QString key = QStringLiteral("backup.") + profile->family;
+        *figures << Figure{key + QStringLiteral(".time"), double(result.elapsedMs),
+                           QStringLiteral("ms"), 0}
+                 << Figure{key + QStringLiteral(".requests"), double(result.requests), QString(), 0}
+                 << Figure{key + QStringLiteral(".settings"), double(result.parameters), QString(),
+                           0};
+    }
+    if (done.isEmpty()) {
+        *error = tr("no drive of a profiled family on the bus");
+        return false;
+    }
+    return true;
+}
+
+// The benchmarks, in the order they run; a new figure is one more entry (name, description,
+// run function).
 QVector<Benchmark> benchmarks()
 {
     return {
         {QStringLiteral("scan"), tr("full scan of machine numbers 1–247"), fullScan},
         {QStringLiteral("scan-absent"), tr("time per machine number nobody answers"),
          absentAddresses},
+        {QStringLiteral("backup"), tr("single-drive backup of each family's first drive"), backups},
     };
 }
 
