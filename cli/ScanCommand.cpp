@@ -17,8 +17,6 @@ namespace opentop {
 
 namespace {
 
-// The documented --wait range starts at 5 ms; the transport's shortest timeout is 10 ms.
-
 QString tr(const char* text)
 {
     return QCoreApplication::translate("opentop::ScanCommand", text);
