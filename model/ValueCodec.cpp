@@ -315,6 +315,18 @@ ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QStr
         if (normalizedLabel(o.label) == wanted)
             return encodeRaw(meta, double(o.value), context);
     }
+    // The start of exactly one label: "communication" for "Communication priority".
+    const EnumOption* prefixMatch = nullptr;
+    int prefixMatches = 0;
+    for (const EnumOption& o : spec.options) {
+        if (!wanted.isEmpty() && !wanted.front().isDigit() &&
+            normalizedLabel(o.label).startsWith(wanted)) {
+            prefixMatch = &o;
+            ++prefixMatches;
+        }
+    }
+    if (prefixMatches == 1)
+        return encodeRaw(meta, double(prefixMatch->value), context);
     // A label that exists in another case: say when it is available (a Mode1 function on a
     // drive in Mode2).
     for (const ValueCondition& c : meta.conditions) {

@@ -231,3 +231,14 @@ TEST(ValueCodec, UnknownVariantMustSuitEveryVariant)
     EXPECT_TRUE(ValueCodec::encodeNumber(meta("speed"), 300, unknown).ok);
     EXPECT_TRUE(ValueCodec::encodeNumber(meta("accel"), 2.5, unknown).ok); // not variant-dependent
 }
+
+TEST(ValueCodec, UniqueLabelPrefixesAreAccepted)
+{
+    // "ccw" is a whole label; "c" would be the start of two labels and is refused.
+    EXPECT_EQ(ValueCodec::encodeText(meta("mode"), QStringLiteral("mode2")).registers,
+              QVector<quint16>{1});
+    EXPECT_EQ(ValueCodec::encodeText(meta("group"), QStringLiteral("dis")).registers,
+              QVector<quint16>{0xFFFF});
+    EXPECT_FALSE(ValueCodec::encodeText(meta("direction"), QStringLiteral("c")).ok);
+    EXPECT_FALSE(ValueCodec::encodeText(meta("mode"), QStringLiteral("mode")).ok);
+}
