@@ -1,14 +1,12 @@
 #include "CliApp.h"
-#include "CliTestSupport.h"
 #include "CliContext.h"
+#include "CliTestSupport.h"
 #include "ExitCode.h"
 
 #include <QTextStream>
 #include <gtest/gtest.h>
 
 using namespace opentop;
-
-
 
 TEST(CliApp, HelpListsCommandsAndExitCodes)
 {

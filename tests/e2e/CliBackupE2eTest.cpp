@@ -1,5 +1,6 @@
 // opentop-cli backing up and restoring drives of an opentop-sim process over a pty with wire
 // timing: real processes, the real RTU backend, files on disk, exit codes and Ctrl-C.
+#include "CliProcess.h"
 #include "SimProcess.h"
 
 #include <QElapsedTimer>
@@ -10,13 +11,6 @@
 using namespace opentop::test;
 
 namespace {
-
-struct CliResult
-{
-    int code = -1;
-    QString out;
-    QString err;
-};
 
 class CliBackupE2e : public ::testing::Test
 {
@@ -40,25 +34,12 @@ protected:
                command;
     }
 
-    static CliResult finish(QProcess& cli)
-    {
-        CliResult r;
-        if (!cli.waitForFinished(30000)) {
-            cli.kill();
-            cli.waitForFinished(2000);
-        }
-        r.code = cli.exitStatus() == QProcess::NormalExit ? cli.exitCode() : -1;
-        r.out = QString::fromUtf8(cli.readAllStandardOutput());
-        r.err += QString::fromUtf8(cli.readAllStandardError());
-        return r;
-    }
-
     CliResult run(const QStringList& command)
     {
         QProcess cli;
-        cli.start(QStringLiteral(OPENTOP_BIN_DIR "/opentop-cli"), arguments(command));
+        cli.start(cliProgram(), arguments(command));
         EXPECT_TRUE(cli.waitForStarted(5000));
-        return finish(cli);
+        return finishCli(cli);
     }
 
     SimProcess sim;
@@ -104,9 +85,8 @@ TEST_F(CliBackupE2e, CtrlCStopsARestoreBetweenTransactionsAndASecondRunCompletes
                 QStringLiteral("set 1 0x%1 100").arg(base + 2 * spno, 4, 16, QLatin1Char('0')));
     }
     QProcess cli;
-    cli.start(QStringLiteral(OPENTOP_BIN_DIR "/opentop-cli"),
-              arguments({QStringLiteral("restore"), file, QStringLiteral("--yes"),
-                         QStringLiteral("--trace")}));
+    cli.start(cliProgram(), arguments({QStringLiteral("restore"), file, QStringLiteral("--yes"),
+                                       QStringLiteral("--trace")}));
     ASSERT_TRUE(cli.waitForStarted(5000));
     // Ctrl-C as soon as the first write frame is on the wire.
     QString trace;
@@ -118,7 +98,7 @@ TEST_F(CliBackupE2e, CtrlCStopsARestoreBetweenTransactionsAndASecondRunCompletes
     }
     ASSERT_TRUE(trace.contains(QStringLiteral(" 01 06 "))) << trace.toStdString();
     ::kill(pid_t(cli.processId()), SIGINT);
-    CliResult r = finish(cli);
+    CliResult r = finishCli(cli);
     EXPECT_EQ(r.code, 130) << (r.out + r.err).toStdString();
     EXPECT_TRUE(r.out.contains(QStringLiteral("not attempted"))) << r.out.toStdString();
     EXPECT_TRUE(r.out.contains(QStringLiteral("run the restore again to complete it")))

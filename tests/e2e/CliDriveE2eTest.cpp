@@ -1,5 +1,6 @@
 // The opentop-cli binary against an opentop-sim process over a pty: a test run, the live
 // monitor (ended by --count and by Ctrl-C), alarms and stop-all.
+#include "CliProcess.h"
 #include "SimProcess.h"
 
 #include <QElapsedTimer>
@@ -10,33 +11,9 @@ using namespace opentop::test;
 
 namespace {
 
-struct CliResult
-{
-    int code = -1;
-    QString out;
-    QString err;
-};
-
-QString cliProgram()
-{
-    return QStringLiteral(OPENTOP_BIN_DIR "/opentop-cli");
-}
-
 CliResult cli(const QString& port, const QStringList& args, int timeoutMs = 20000)
 {
-    QProcess p;
-    p.start(cliProgram(), QStringList{QStringLiteral("--port"), port} + args);
-    CliResult r;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished(2000);
-        r.err = QStringLiteral("<timed out>");
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return runCliOn(port, args, timeoutMs);
 }
 
 QStringList lines(const QString& text)

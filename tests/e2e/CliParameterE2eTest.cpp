@@ -1,6 +1,7 @@
 // get and set through the opentop-cli executable over a pty against an opentop-sim process:
 // the values reach the drive (checked through the simulator's own console), a wrong value sends
 // nothing, and injected faults are survived by retries or reported.
+#include "CliProcess.h"
 #include "SimProcess.h"
 
 #include <QProcess>
@@ -9,27 +10,9 @@ using namespace opentop::test;
 
 namespace {
 
-struct CliResult
-{
-    int code = -1;
-    QString out;
-    QString err;
-};
-
 CliResult cli(const SimProcess& sim, const QStringList& args)
 {
-    QProcess process;
-    process.start(QStringLiteral(OPENTOP_BIN_DIR "/opentop-cli"),
-                  QStringList{QStringLiteral("--port"), sim.pty} + args);
-    EXPECT_TRUE(process.waitForStarted(5000));
-    if (!process.waitForFinished(30000))
-        process.kill();
-    process.waitForFinished(2000);
-    CliResult r;
-    r.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
-    r.out = QString::fromUtf8(process.readAllStandardOutput());
-    r.err = QString::fromUtf8(process.readAllStandardError());
-    return r;
+    return runCliOn(sim.pty, args);
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 // The opentop-cli executable scanning an opentop-sim process over a pty with wire timing: the
 // real RTU backend, real processes, real exit codes and signals. Small ranges keep it fast.
+#include "CliProcess.h"
 #include "SimProcess.h"
 
 #include <QElapsedTimer>
@@ -11,38 +12,13 @@ using namespace opentop::test;
 
 namespace {
 
-struct CliResult
-{
-    int code = -1;
-    QString out;
-    QString err;
-};
-
-QString cliProgram()
-{
-    return QStringLiteral(OPENTOP_BIN_DIR "/opentop-cli");
-}
-
-CliResult finish(QProcess& cli)
-{
-    CliResult r;
-    if (!cli.waitForFinished(30000)) {
-        cli.kill();
-        cli.waitForFinished(2000);
-    }
-    r.code = cli.exitStatus() == QProcess::NormalExit ? cli.exitCode() : -1;
-    r.out = QString::fromUtf8(cli.readAllStandardOutput());
-    r.err = QString::fromUtf8(cli.readAllStandardError());
-    return r;
-}
-
 CliResult runScan(const SimProcess& sim, const QStringList& args)
 {
     QProcess cli;
     cli.start(cliProgram(),
               QStringList{QStringLiteral("--port"), sim.pty, QStringLiteral("scan")} + args);
     EXPECT_TRUE(cli.waitForStarted(5000));
-    return finish(cli);
+    return finishCli(cli);
 }
 
 bool startSim(SimProcess& sim, const QString& devices, const QStringList& extra = {})
@@ -139,7 +115,7 @@ TEST(CliScanE2e, CtrlCStopsTheScanAndReportsWhatWasScanned)
     QThread::msleep(600);
     ::kill(pid_t(cli.processId()), SIGINT);
     timer.restart();
-    const CliResult r = finish(cli);
+    const CliResult r = finishCli(cli);
     EXPECT_LT(timer.elapsed(), 2000);
     EXPECT_EQ(r.code, 130) << r.err.toStdString();
     EXPECT_TRUE(r.err.contains(QStringLiteral("Interrupted: machine numbers 1–")))
