@@ -103,7 +103,8 @@ DeviceInfo DeviceIdentifier::interpret(int slave, int profileIndex,
     }
     info.state = DeviceInfo::State::Present;
     info.family = profile.family;
-    info.model = profile.name;
+    // A family of one model: the device's own name says which ("DCPID-20A").
+    info.model = profile.variants.isEmpty() && !info.name.isEmpty() ? info.name : profile.name;
     for (const ProfileVariant& variant : profile.variants) {
         if (!variant.nameMatch.isEmpty() && info.name.startsWith(variant.nameMatch)) {
             info.variant = variant.id;
