@@ -1,0 +1,56 @@
+#pragma once
+
+#include <QStringList>
+#include <QWidget>
+
+class QLabel;
+class QPushButton;
+
+namespace opentop {
+
+class DeviceParameters;
+
+// A page of a drive's workspace: some of its parameters, edited through DeviceParameters.
+// The base class gives every page the same bottom row — Write page, Revert, Re-read — and a
+// status line; subclasses lay out their fields in contentArea() and list their parameters.
+// Edits stay pending (marked) until written; device values never overwrite an edit.
+class ParameterPage : public QWidget
+{
+    Q_OBJECT
+public:
+    ParameterPage(DeviceParameters* parameters, const QString& title, QWidget* parent = nullptr);
+
+    DeviceParameters* parameters() const { return m_parameters; }
+    QString title() const { return m_title; }
+    // Every parameter this page shows (read on refresh, written by Write page).
+    virtual QStringList parameterNames() const = 0;
+
+    void refresh();   // reads the page's parameters; pending edits stay
+    void writePage(); // writes the page's pending edits, verified
+    void revertPage();
+    bool busy() const { return m_busy; }
+
+signals:
+    void pendingChanged();    // the number of pending edits on this page changed
+    void operationFinished(); // a refresh or write completed (for tests and the status bar)
+
+protected:
+    QWidget* contentArea() const { return m_content; }
+    void setStatus(const QString& text, bool error = false);
+    // Called when a parameter's device value, edit or state changed.
+    virtual void parameterChanged(const QString& name) = 0;
+
+private:
+    void updateButtons();
+
+    DeviceParameters* m_parameters;
+    QString m_title;
+    QWidget* m_content;
+    QLabel* m_status;
+    QPushButton* m_write;
+    QPushButton* m_revert;
+    QPushButton* m_reread;
+    bool m_busy = false;
+};
+
+} // namespace opentop
