@@ -24,6 +24,7 @@ struct ProfileGroup
     QString id;
     QString label;
     QString help;
+    QString editor; // a specialised editor page for this group; empty: the generic one
 };
 
 // Address range the device answers block reads for (unused registers inside read as 0).

@@ -113,7 +113,8 @@ bool readVariantsGroupsBlocks(const QJsonObject& root, JsonReader& json, Profile
         const QJsonObject g = groups[i].toObject();
         ProfileGroup group{json.string(g, QStringLiteral("id")).value_or(QString()),
                            json.string(g, QStringLiteral("label")).value_or(QString()),
-                           json.string(g, QStringLiteral("help"), false).value_or(QString())};
+                           json.string(g, QStringLiteral("help"), false).value_or(QString()),
+                           json.string(g, QStringLiteral("editor"), false).value_or(QString())};
         if (json.failed() || p->group(group.id))
             return json.fail(tr("groups[%1] needs a unique id and a label").arg(i));
         p->groups << group;
