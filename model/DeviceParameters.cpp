@@ -147,6 +147,16 @@ QStringList DeviceParameters::pendingNames(const QString& group) const
     return names;
 }
 
+bool DeviceParameters::hasPending() const
+{
+    for (const Entry& e : m_entries) {
+        if (e.state == State::Pending || e.state == State::Writing ||
+            (e.state == State::Failed && !e.pendingText.isEmpty()))
+            return true;
+    }
+    return false;
+}
+
 QStringList DeviceParameters::orderForWrite(QStringList names) const
 {
     // A stable order in which every parameter comes after the ones it depends on.

@@ -55,7 +55,8 @@ public:
     void revert(const QString& name);
     void revertAll();
     QStringList pendingNames(const QString& group = QString()) const;
-    bool hasPending() const { return !pendingNames().isEmpty(); }
+    // Edits not yet confirmed on the drive: pending, being written, or failed.
+    bool hasPending() const;
     // Writes the pending edits among `names` (all when empty) in dependency order: what
     // others' allowed values depend on goes first. `done` gets the number that failed.
     void write(const QStringList& names, std::function<void(int failed)> done = {});

@@ -140,6 +140,15 @@ void DriveWorkspace::writeAll()
 {
     if (!m_parameters || !m_parameters->hasPending())
         return;
+    for (int i = 0; i < m_tabs->count(); ++i) {
+        auto* page = qobject_cast<ParameterPage*>(m_tabs->widget(i));
+        const QString blocker = page ? page->writeBlocker() : QString();
+        if (!blocker.isEmpty()) {
+            m_status->setText(tr("%1: %2 Nothing was written.").arg(page->title(), blocker));
+            m_tabs->setCurrentIndex(i);
+            return;
+        }
+    }
     const int count = m_parameters->pendingNames().size();
     m_status->setText(tr("Writing %n value(s)…", nullptr, count));
     m_parameters->write({}, [this, count](int failed) {

@@ -1,123 +1,228 @@
 #include "MainWindow.h"
 
-#include "BusListModel.h"
+#include "BusDrives.h"
+#include "BusPanel.h"
+#include "ConnectionDialog.h"
 #include "DeviceIdentifier.h"
+#include "DeviceParameters.h"
+#include "DriveStatusPoller.h"
+#include "DriveWorkspace.h"
 #include "ModbusClient.h"
+#include "MultiDriveWriteDialog.h"
 #include "ProfileRegistry.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QCloseEvent>
-#include <QHeaderView>
 #include <QLabel>
+#include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
+#include <QSplitter>
 #include <QStatusBar>
-#include <QTableView>
 #include <QToolBar>
 
 namespace opentop {
 
-MainWindow::MainWindow(ModbusClient* client, const QVector<int>& expected, QWidget* parent)
+MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     : QMainWindow(parent)
-    , m_client(client)
-    , m_expected(expected)
-    , m_model(new BusListModel(this))
-    , m_identifier(new DeviceIdentifier(client, ProfileRegistry::builtIn(), this))
-    , m_table(new QTableView(this))
+    , m_factory(std::move(factory))
+    , m_workspace(new DriveWorkspace(this))
+    , m_splitter(new QSplitter(this))
     , m_connectionLabel(new QLabel(this))
 {
-    setWindowTitle(tr("OpenTOP — %1").arg(client->describe()));
-    m_table->setModel(m_model);
-    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
-    m_table->setAlternatingRowColors(true);
-    m_table->verticalHeader()->hide();
-    m_table->horizontalHeader()->setStretchLastSection(true);
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    setCentralWidget(m_table);
-
-    QToolBar* toolbar = addToolBar(tr("Bus"));
-    toolbar->setObjectName(QStringLiteral("busToolbar"));
-    QAction* identify = toolbar->addAction(tr("&Identify drives"));
-    identify->setShortcut(QKeySequence::Refresh);
-    identify->setToolTip(tr("Ask every known machine number who it is (F5)"));
-    connect(identify, &QAction::triggered, this, &MainWindow::identifyAll);
-
+    setWindowTitle(tr("OpenTOP"));
+    m_splitter->setObjectName(QStringLiteral("mainSplitter"));
+    m_splitter->addWidget(new QWidget(m_splitter)); // the bus panel, once connected
+    m_splitter->addWidget(m_workspace);
+    m_splitter->setStretchFactor(1, 1);
+    setCentralWidget(m_splitter);
     statusBar()->addPermanentWidget(m_connectionLabel);
-    m_connectionLabel->setText(tr("Connecting to %1…").arg(client->describe()));
-    connect(client, &ModbusClient::opened, this, &MainWindow::onOpened);
-    connect(client, &ModbusClient::connectionLost, this, [this](const QString& error) {
-        m_connectionLabel->setText(tr("Connection lost: %1").arg(error));
-    });
-
+    buildActions();
     QSettings settings;
-    restoreGeometry(settings.value(QStringLiteral("mainWindow/geometry")).toByteArray());
+    if (!restoreGeometry(settings.value(QStringLiteral("mainWindow/geometry")).toByteArray()))
+        resize(1280, 800);
     restoreState(settings.value(QStringLiteral("mainWindow/state")).toByteArray());
-    if (!settings.contains(QStringLiteral("mainWindow/geometry")))
-        resize(960, 560);
-    client->open();
+    m_splitter->restoreState(settings.value(QStringLiteral("mainWindow/splitter")).toByteArray());
 }
 
-MainWindow::~MainWindow() = default;
-
-void MainWindow::closeEvent(QCloseEvent* event)
+MainWindow::~MainWindow()
 {
-    QSettings settings;
-    settings.setValue(QStringLiteral("mainWindow/geometry"), saveGeometry());
-    settings.setValue(QStringLiteral("mainWindow/state"), saveState());
-    event->accept();
+    teardown();
+}
+
+void MainWindow::buildActions()
+{
+    QMenu* file = menuBar()->addMenu(tr("&Bus"));
+    QToolBar* toolbar = addToolBar(tr("Main"));
+    toolbar->setObjectName(QStringLiteral("mainToolbar"));
+    QAction* connectAction = file->addAction(tr("&Connect…"), this, &MainWindow::chooseConnection);
+    connectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
+    connectAction->setToolTip(tr("Choose the serial port, gateway or simulated bus (Ctrl+K)"));
+    toolbar->addAction(connectAction);
+    QAction* scan = file->addAction(tr("&Scan bus"), this, [this] {
+        if (m_panel && !m_panel->isScanning())
+            m_panel->startScan(1, 247);
+    });
+    scan->setShortcut(QKeySequence(Qt::Key_F5));
+    toolbar->addAction(scan);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* drive = menuBar()->addMenu(tr("&Drive"));
+    QAction* writeAll =
+        drive->addAction(tr("&Write all pending"), m_workspace, &DriveWorkspace::writeAll);
+    writeAll->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_W));
+    QAction* reread =
+        drive->addAction(tr("&Re-read all"), m_workspace, &DriveWorkspace::refreshAll);
+    reread->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    m_multiWrite = drive->addAction(tr("Write a setting to the selected drives…"), this,
+                                    &MainWindow::writeToSelected);
+    m_multiWrite->setEnabled(false);
+    toolbar->addAction(writeAll);
+    toolbar->addAction(m_multiWrite);
+}
+
+void MainWindow::teardown()
+{
+    m_workspace->setDrive(nullptr, QString());
+    delete m_panel;
+    m_panel = nullptr;
+    delete m_poller;
+    m_poller = nullptr;
+    delete m_drives;
+    m_drives = nullptr;
+    m_client.reset(); // bounded shutdown of the bus worker
+    m_connected = false;
+}
+
+void MainWindow::connectTo(const ConnectionSettings& settings,
+                           const QHash<int, QString>& knownTypes)
+{
+    teardown();
+    m_settings = settings;
+    m_knownTypes = knownTypes;
+    QString error;
+    m_client = m_factory(settings, &error);
+    if (!m_client) {
+        m_connectionLabel->setText(tr("Not connected"));
+        QMessageBox::warning(this, tr("Cannot connect"), error);
+        emit connectionChanged(false);
+        return;
+    }
+    m_drives = new BusDrives(m_client.get(), ProfileRegistry::builtIn(), this);
+    m_poller = new DriveStatusPoller(m_drives, this);
+    m_panel = new BusPanel(m_drives, m_poller, m_splitter);
+    delete m_splitter->widget(0);
+    m_splitter->insertWidget(0, m_panel);
+    m_splitter->setStretchFactor(0, 0);
+    connect(m_panel, &BusPanel::selectionChanged, this, &MainWindow::showDrive);
+    connect(m_client.get(), &ModbusClient::opened, this, &MainWindow::onOpened);
+    connect(m_client.get(), &ModbusClient::connectionLost, this, [this](const QString& lost) {
+        m_connectionLabel->setText(tr("Connection lost: %1").arg(lost));
+        QMessageBox::warning(this, tr("Connection lost"),
+                             ConnectionDialog::explainOpenError(m_settings, lost));
+    });
+    setWindowTitle(tr("OpenTOP — %1").arg(m_client->describe()));
+    m_connectionLabel->setText(tr("Connecting to %1…").arg(m_client->describe()));
+    m_client->open();
 }
 
 void MainWindow::onOpened(bool ok, const QString& error)
 {
+    m_connected = ok;
     if (!ok) {
         m_connectionLabel->setText(tr("Not connected"));
         QMessageBox::warning(this, tr("Cannot connect"),
-                             tr("Could not open %1:\n%2").arg(m_client->describe(), error));
+                             ConnectionDialog::explainOpenError(m_settings, error));
+        emit connectionChanged(false);
         return;
     }
     m_connectionLabel->setText(tr("Connected: %1").arg(m_client->describe()));
-    identifyAll();
+    m_poller->start();
+    identifyKnown();
+    emit connectionChanged(true);
 }
 
-void MainWindow::identifyAll()
+void MainWindow::identifyKnown()
 {
-    if (m_outstanding > 0)
-        return;
-    for (int slave : m_expected) {
-        DeviceInfo pending;
-        pending.slave = slave;
-        m_model->upsert(pending);
-        ++m_outstanding;
-        m_identifier->identify(slave, [this](DeviceInfo info) {
-            applyAssignedVariant(&info);
-            m_model->upsert(info);
-            if (--m_outstanding == 0) {
-                int present = 0;
-                for (int row = 0; row < m_model->rowCount(); ++row)
-                    present += m_model->device(row)->state == DeviceInfo::State::Present ? 1 : 0;
-                statusBar()->showMessage(tr("%n drive(s) answering", nullptr, present), 5000);
+    auto* identifier = new DeviceIdentifier(m_client.get(), ProfileRegistry::builtIn(), m_drives);
+    for (auto it = m_knownTypes.cbegin(); it != m_knownTypes.cend(); ++it) {
+        const int slave = it.key();
+        const QString type = it.value();
+        identifier->identify(slave, [this, type](DeviceInfo info) {
+            QString variant;
+            const Profile* p = ProfileRegistry::builtIn().forDeviceType(type, &variant);
+            if (info.state == DeviceInfo::State::Present && info.variant.isEmpty() && p &&
+                p->family == info.family && p->variant(variant)) {
+                info.variant = variant;
+                info.model = p->variant(variant)->model;
+                info.detail = tr("The drive does not report its variant; %1 is the configured one.")
+                                  .arg(info.model);
             }
+            m_drives->update(info);
         });
     }
 }
 
-} // namespace opentop
-
-namespace opentop {
-
-void MainWindow::applyAssignedVariant(DeviceInfo* info) const
+void MainWindow::showDrive(const QVector<int>& slaves)
 {
-    if (info->state != DeviceInfo::State::Present || !info->variant.isEmpty())
+    m_selected = slaves;
+    // Several drives of one family: one setting can be written to all of them.
+    bool sameFamily = slaves.size() > 1;
+    for (int s : slaves)
+        sameFamily = sameFamily && m_drives->parameters(s) &&
+                     m_drives->info(s).family == m_drives->info(slaves.first()).family;
+    m_multiWrite->setEnabled(sameFamily);
+    if (slaves.isEmpty() || !m_drives->parameters(slaves.first())) {
+        m_workspace->setDrive(nullptr, QString());
         return;
-    QString variant;
-    const Profile* profile =
-        ProfileRegistry::builtIn().forDeviceType(m_assignedTypes.value(info->slave), &variant);
-    if (!profile || profile->family != info->family || variant.isEmpty())
+    }
+    const DeviceInfo info = m_drives->info(slaves.first());
+    m_workspace->setDrive(m_drives->parameters(info.slave),
+                          tr("Machine number %1 (%2, %3) — %4, firmware V%5")
+                              .arg(info.slave)
+                              .arg(DeviceInfo::hexText(info.slave),
+                                   DeviceInfo::switchText(info.slave), info.model, info.firmware));
+}
+
+void MainWindow::writeToSelected()
+{
+    if (m_selected.size() < 2)
         return;
-    info->variant = variant;
-    info->model = profile->variant(variant)->model;
-    info->detail =
-        tr("The drive does not report its variant; %1 is the configured one.").arg(info->model);
+    MultiDriveWriteDialog dialog(m_drives, m_selected, QString(), this);
+    dialog.exec();
+}
+
+void MainWindow::chooseConnection()
+{
+    ConnectionDialog dialog(this);
+    if (dialog.exec() == QDialog::Accepted)
+        connectTo(dialog.settings());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    int pending = 0;
+    if (m_drives) {
+        for (int s : m_drives->slaves())
+            pending += m_drives->parameters(s) ? m_drives->parameters(s)->pendingNames().size() : 0;
+    }
+    if (pending > 0 &&
+        QMessageBox::question(
+            this, tr("Unwritten changes"),
+            tr("%n edit(s) have not been written to the drives. Quit and discard them?", nullptr,
+               pending),
+            QMessageBox::Discard | QMessageBox::Cancel,
+            QMessageBox::Cancel) != QMessageBox::Discard) {
+        event->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue(QStringLiteral("mainWindow/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("mainWindow/state"), saveState());
+    settings.setValue(QStringLiteral("mainWindow/splitter"), m_splitter->saveState());
+    event->accept();
 }
 
 } // namespace opentop

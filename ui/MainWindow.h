@@ -1,50 +1,77 @@
 #pragma once
 
+#include "ConnectionSettings.h"
+
 #include <QHash>
 #include <QMainWindow>
 #include <QVector>
+#include <functional>
+#include <memory>
 
+class QAction;
 class QLabel;
-class QTableView;
+class QSplitter;
 
 namespace opentop {
 
-class BusListModel;
-class DeviceIdentifier;
+class BusDrives;
+class BusPanel;
+class DriveStatusPoller;
+class DriveWorkspace;
 class ModbusClient;
-struct DeviceInfo;
 
-// The main window: the drives on the bus. It owns no bus logic; the client and identifier do
-// the talking, asynchronously.
+// The main window: the bus on the left (scan, drives, status lights), the selected drive's
+// pages on the right. It owns the connection; all bus work happens on the client's worker
+// thread and comes back asynchronously, so the window never waits on the wire.
 class MainWindow : public QMainWindow
 {
     Q_OBJECT
 public:
-    // `expected`: machine numbers to identify once connected (the simulated bus's devices).
-    MainWindow(ModbusClient* client, const QVector<int>& expected, QWidget* parent = nullptr);
+    // Makes a client for a connection (the program's backends live outside ui/).
+    using ClientFactory =
+        std::function<std::unique_ptr<ModbusClient>(const ConnectionSettings&, QString* error)>;
+
+    MainWindow(ClientFactory factory, QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    BusListModel* busModel() const { return m_model; }
-    // Variants the user (or the simulated bus list) says are at these machine numbers; used
-    // where a drive does not report its variant.
-    void setAssignedTypes(const QHash<int, QString>& types) { m_assignedTypes = types; }
+    // Opens `settings` (closing the current connection). `knownTypes`: drives said to be at
+    // these machine numbers (a simulated bus's list); they are identified at once, and their
+    // variants used where a drive does not report its own.
+    void connectTo(const ConnectionSettings& settings, const QHash<int, QString>& knownTypes = {});
+    bool isConnected() const { return m_connected; }
+    ModbusClient* client() const { return m_client.get(); }
+    BusDrives* drives() const { return m_drives; }
+    BusPanel* busPanel() const { return m_panel; }
+    DriveWorkspace* workspace() const { return m_workspace; }
+
+signals:
+    void connectionChanged(bool connected);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    void buildActions();
+    void teardown();
     void onOpened(bool ok, const QString& error);
-    void identifyAll();
-    void applyAssignedVariant(DeviceInfo* info) const;
+    void identifyKnown();
+    void showDrive(const QVector<int>& slaves);
+    void writeToSelected();
+    void chooseConnection();
 
-    ModbusClient* m_client;
-    QVector<int> m_expected;
-    QHash<int, QString> m_assignedTypes;
-    BusListModel* m_model;
-    DeviceIdentifier* m_identifier;
-    QTableView* m_table;
+    ClientFactory m_factory;
+    ConnectionSettings m_settings;
+    QHash<int, QString> m_knownTypes;
+    std::unique_ptr<ModbusClient> m_client;
+    bool m_connected = false;
+    BusDrives* m_drives = nullptr;
+    DriveStatusPoller* m_poller = nullptr;
+    BusPanel* m_panel = nullptr;
+    DriveWorkspace* m_workspace;
+    QSplitter* m_splitter;
     QLabel* m_connectionLabel;
-    int m_outstanding = 0;
+    QVector<int> m_selected;
+    QAction* m_multiWrite = nullptr;
 };
 
 } // namespace opentop

@@ -18,6 +18,22 @@ bool isEnumeration(const ValueSpec& spec)
     return spec.ranges.isEmpty() && !spec.options.isEmpty();
 }
 
+// The label a code has in any context (a Mode2 input code while Mode1 is pending), or the code.
+QString anyLabel(const ParameterMeta& meta, qint64 code)
+{
+    for (const EnumOption& o : meta.spec.options) {
+        if (o.value == code)
+            return o.label;
+    }
+    for (const ValueCondition& c : meta.conditions) {
+        for (const EnumOption& o : c.spec.options) {
+            if (o.value == code)
+                return o.label;
+        }
+    }
+    return QString::number(code);
+}
+
 } // namespace
 
 ParameterField::ParameterField(DeviceParameters* parameters, const QString& name, QWidget* parent)
@@ -70,11 +86,21 @@ void ParameterField::enter(const QString& text)
     commit(text);
 }
 
+void ParameterField::setContextProvider(std::function<ValueContext()> provider)
+{
+    m_contextProvider = std::move(provider);
+    sync();
+}
+
+ValueContext ParameterField::context() const
+{
+    return m_contextProvider ? m_contextProvider() : m_parameters->session()->context();
+}
+
 void ParameterField::check(const QString& text)
 {
     const DeviceParameters::Entry* e = m_parameters->entry(m_name);
-    const ValueCodec::Encoded encoded =
-        ValueCodec::encodeText(*e->meta, text, m_parameters->session()->context());
+    const ValueCodec::Encoded encoded = ValueCodec::encodeText(*e->meta, text, context());
     m_problem = text.trimmed().isEmpty() ? QString() : encoded.error;
     applyStyle();
 }
@@ -91,7 +117,7 @@ void ParameterField::sync()
 {
     const DeviceParameters::Entry* e = m_parameters->entry(m_name);
     const ParameterMeta& meta = *e->meta;
-    const ValueContext context = m_parameters->session()->context();
+    const ValueContext context = this->context();
     const ValueSpec& spec = meta.specFor(context);
     m_syncing = true;
     m_unit->setText(spec.unit);
@@ -109,7 +135,7 @@ void ParameterField::sync()
             const double raw = ValueCodec::registersToRaw(meta, shown);
             index = m_combo->findData(QString::number(qint64(raw)));
             if (index < 0) { // a code this context does not offer: show it, marked
-                m_combo->addItem(tr("%1 (not valid now)").arg(qint64(raw)),
+                m_combo->addItem(tr("%1 (not valid now)").arg(anyLabel(meta, qint64(raw))),
                                  QString::number(qint64(raw)));
                 index = m_combo->count() - 1;
             }

@@ -1,6 +1,9 @@
 #pragma once
 
+#include "ValueContext.h"
+
 #include <QWidget>
+#include <functional>
 
 class QComboBox;
 class QLabel;
@@ -29,11 +32,16 @@ public:
     QString problem() const { return m_problem; }
     // Programmatic input, as if typed and confirmed (tests, multi-field editors).
     void enter(const QString& text);
+    // Where allowed values and drop-down options come from; by default the session's context
+    // (device values). A page whose choices must follow another parameter's pending edit (the
+    // I/O functions of a pending control mode) supplies its own. Re-syncs the field.
+    void setContextProvider(std::function<ValueContext()> provider);
 
 private:
     void commit(const QString& text);
     void check(const QString& text);
     void applyStyle();
+    ValueContext context() const;
 
     DeviceParameters* m_parameters;
     QString m_name;
@@ -42,6 +50,7 @@ private:
     QLabel* m_unit;
     QString m_problem;
     bool m_syncing = false;
+    std::function<ValueContext()> m_contextProvider;
 };
 
 } // namespace opentop

@@ -5,6 +5,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QTimer>
 #include <QVBoxLayout>
 
 namespace opentop {
@@ -43,7 +44,8 @@ ParameterPage::ParameterPage(DeviceParameters* parameters, const QString& title,
             emit pendingChanged();
         }
     });
-    updateButtons();
+    // parameterNames() is the subclass's: ask it once construction is complete.
+    QTimer::singleShot(0, this, [this] { updateButtons(); });
 }
 
 void ParameterPage::setStatus(const QString& text, bool error)
@@ -95,6 +97,11 @@ void ParameterPage::writePage()
     }
     if (pending.isEmpty())
         return;
+    const QString blocker = writeBlocker();
+    if (!blocker.isEmpty()) {
+        setStatus(blocker, true); // nothing is sent
+        return;
+    }
     m_busy = true;
     updateButtons();
     setStatus(tr("Writing %n value(s)…", nullptr, pending.size()));

@@ -29,6 +29,9 @@ public:
     void writePage(); // writes the page's pending edits, verified
     void revertPage();
     bool busy() const { return m_busy; }
+    // Why the page's edits must not be written as they are (e.g. terminals whose function is
+    // not valid in the control mode being written); empty when they may.
+    virtual QString writeBlocker() const { return QString(); }
 
 signals:
     void pendingChanged();    // the number of pending edits on this page changed

@@ -1,14 +1,15 @@
-// opentop: the desktop application. Composition root only: parse options, make the bus
-// client, show the main window.
+// opentop: the desktop application. Composition root only: options, the backend factory and
+// the main window.
 #include "BackendFactory.h"
 #include "BusSpec.h"
+#include "ConnectionDialog.h"
 #include "ConnectionOptions.h"
+#include "EditorRegistry.h"
 #include "MainWindow.h"
 #include "ModbusClient.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QMessageBox>
 
 int main(int argc, char* argv[])
 {
@@ -16,7 +17,6 @@ int main(int argc, char* argv[])
     QApplication::setOrganizationName(QStringLiteral("OpenTOP"));
     QApplication::setApplicationName(QStringLiteral("OpenTOP"));
     QApplication::setApplicationVersion(QStringLiteral(OPENTOP_VERSION));
-
     QCommandLineParser parser;
     parser.setApplicationDescription(
         QApplication::translate("main", "Commissioning tool for RS-485 Modbus-RTU motor drives."));
@@ -24,28 +24,38 @@ int main(int argc, char* argv[])
     parser.addVersionOption();
     opentop::ConnectionOptions::addTo(parser);
     parser.process(app);
+    opentop::registerBuiltInEditors();
 
+    // A connection on the command line wins; otherwise the last one used; otherwise a
+    // simulated bus, so that the program can be tried without hardware.
+    bool remembered = false;
+    opentop::ConnectionSettings settings = opentop::ConnectionDialog::remembered(&remembered);
+    const bool named = parser.isSet(QStringLiteral("sim")) ||
+                       parser.isSet(QStringLiteral("port")) || parser.isSet(QStringLiteral("tcp"));
     QString error;
-    const auto settings = opentop::ConnectionOptions::fromParser(
-        parser, QStringLiteral("dbu200@1,dbu400@150,dcpid@7"), &error);
-    auto made =
-        settings ? opentop::BackendFactory::makeClient(*settings) : opentop::BackendFactory::Made{};
-    if (!made.client) {
-        QMessageBox::critical(nullptr, QApplication::translate("main", "OpenTOP"),
-                              settings ? made.error : error);
-        return 2;
-    }
-    QVector<int> expected;
-    QHash<int, QString> types;
-    if (settings->kind == opentop::ConnectionSettings::Kind::Simulated) {
-        const auto entries = opentop::BusSpec::parse(settings->simSpec, nullptr);
-        for (const auto& entry : entries.value_or(QVector<opentop::BusSpecEntry>())) {
-            expected << entry.slave;
-            types.insert(entry.slave, entry.type);
+    if (named || !remembered) {
+        const auto parsed = opentop::ConnectionOptions::fromParser(
+            parser, QStringLiteral("dbu200@1,dbu400@150,dcpid@7"), &error);
+        if (!parsed) {
+            std::fprintf(stderr, "opentop: %s\n", qPrintable(error));
+            return 2;
         }
+        settings = *parsed;
     }
-    opentop::MainWindow window(made.client.get(), expected);
-    window.setAssignedTypes(types);
+    QHash<int, QString> known;
+    for (const auto& e : opentop::BusSpec::parse(settings.simSpec, nullptr)
+                             .value_or(QVector<opentop::BusSpecEntry>()))
+        known.insert(e.slave, e.type);
+
+    opentop::MainWindow window([](const opentop::ConnectionSettings& s, QString* e) {
+        auto made = opentop::BackendFactory::makeClient(s);
+        if (e)
+            *e = made.error;
+        return std::move(made.client);
+    });
     window.show();
+    window.connectTo(settings, settings.kind == opentop::ConnectionSettings::Kind::Simulated
+                                   ? known
+                                   : QHash<int, QString>());
     return app.exec();
 }

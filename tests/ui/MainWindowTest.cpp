@@ -1,10 +1,25 @@
+// The whole window against an in-process simulated bus: connect, the configured drives are
+// identified with their variants, selecting one opens its pages, an edit written from the
+// workspace reaches the drive, several drives of one family enable the multi-drive write.
 #include "MainWindow.h"
 #include "BackendFactory.h"
+#include "BusDrives.h"
 #include "BusListModel.h"
+#include "BusPanel.h"
+#include "DeviceParameters.h"
+#include "DriveWorkspace.h"
+#include "EditorRegistry.h"
 #include "ModbusClient.h"
+#include "ParameterField.h"
+#include "ParameterPage.h"
+#include "SimBus.h"
 
 #include <QCoreApplication>
 #include <QDeadlineTimer>
+#include <QItemSelectionModel>
+#include <QRegularExpression>
+#include <QSettings>
+#include <QTabWidget>
 #include <QTableView>
 #include <gtest/gtest.h>
 
@@ -12,7 +27,7 @@ using namespace opentop;
 
 namespace {
 
-bool waitFor(const std::function<bool()>& condition, int ms = 5000)
+bool waitFor(const std::function<bool()>& condition, int ms = 10000)
 {
     QDeadlineTimer deadline(ms);
     while (!condition() && !deadline.hasExpired())
@@ -20,51 +35,112 @@ bool waitFor(const std::function<bool()>& condition, int ms = 5000)
     return condition();
 }
 
+class MainWindowTest : public ::testing::Test
+{
+protected:
+    void SetUp() override
+    {
+        QCoreApplication::setOrganizationName(QStringLiteral("OpenTOP-test"));
+        QSettings().clear();
+        registerBuiltInEditors();
+        window = std::make_unique<MainWindow>([this](const ConnectionSettings& s, QString* error) {
+            auto made = BackendFactory::makeClient(s);
+            bus = made.simBus;
+            if (error)
+                *error = made.error;
+            return std::move(made.client);
+        });
+        ConnectionSettings settings;
+        settings.kind = ConnectionSettings::Kind::Simulated;
+        settings.simSpec = QStringLiteral("dbu200@1,dbu200@2,dbu400@150,dcpid@7");
+        settings.timeoutMs = 100;
+        window->show();
+        window->connectTo(settings, {{1, QStringLiteral("dbu200")},
+                                     {2, QStringLiteral("dbu200")},
+                                     {150, QStringLiteral("dbu400")},
+                                     {7, QStringLiteral("dcpid")}});
+        ASSERT_TRUE(
+            waitFor([this] { return window->drives() && window->drives()->slaves().size() == 4; }));
+    }
+
+    int simRegister(int slave, quint16 address)
+    {
+        const QString text =
+            bus->control(slave, {QStringLiteral("get"), QString::number(address)}).text;
+        const QRegularExpressionMatch m =
+            QRegularExpression(QStringLiteral("= (\\d+) ")).match(text);
+        return m.hasMatch() ? m.captured(1).toInt() : -1;
+    }
+
+    void select(const QVector<int>& slaves)
+    {
+        QTableView* view = window->busPanel()->view();
+        view->clearSelection();
+        for (int slave : slaves) {
+            const int row = window->busPanel()->model()->rowOf(slave);
+            view->selectionModel()->select(view->model()->index(row, 0),
+                                           QItemSelectionModel::Select | QItemSelectionModel::Rows);
+        }
+    }
+
+    std::shared_ptr<SimBus> bus;
+    std::unique_ptr<MainWindow> window;
+};
+
 } // namespace
 
-TEST(MainWindow, ListsTheSimulatedDrivesWithSwitchPositionsAndVariants)
+TEST_F(MainWindowTest, ConfiguredDrivesAreIdentifiedWithTheirVariants)
 {
-    ConnectionSettings settings;
-    settings.kind = ConnectionSettings::Kind::Simulated;
-    settings.simSpec = QStringLiteral("dbu200@1,dbu400@150,dcpid@7");
-    settings.timeoutMs = 100;
-    auto made = BackendFactory::makeClient(settings);
-    ASSERT_TRUE(made.client) << qPrintable(made.error);
-    MainWindow window(made.client.get(), {1, 7, 150, 42});
-    window.setAssignedTypes({{1, QStringLiteral("dbu200")}, {150, QStringLiteral("dbu400")}});
-    window.show();
-    BusListModel* model = window.busModel();
-    ASSERT_TRUE(waitFor([&] {
-        if (model->rowCount() != 4)
-            return false;
-        for (int r = 0; r < 4; ++r) {
-            if (model->device(r)->state == DeviceInfo::State::Unknown)
-                return false;
-        }
-        return true;
-    }));
-    auto text = [&](int row, int column) { return model->index(row, column).data().toString(); };
-    EXPECT_EQ(text(0, BusListModel::MachineNumber), QStringLiteral("1"));
-    EXPECT_EQ(text(0, BusListModel::Model), QStringLiteral("DBU200-D"));
-    EXPECT_EQ(text(1, BusListModel::Family), QStringLiteral("DCPID"));
-    EXPECT_EQ(text(2, BusListModel::State), DeviceInfo::stateText(DeviceInfo::State::Absent));
-    EXPECT_EQ(text(3, BusListModel::Switches), QStringLiteral("96h  SW1=9 SW2=6"));
-    EXPECT_EQ(text(3, BusListModel::Model), QStringLiteral("DBU400-D4"));
-    EXPECT_TRUE(text(3, BusListModel::Firmware).startsWith(QStringLiteral("V")));
+    BusDrives* drives = window->drives();
+    EXPECT_TRUE(window->isConnected());
+    EXPECT_EQ(drives->info(1).model, QStringLiteral("DBU200-D"));
+    EXPECT_EQ(drives->info(150).model, QStringLiteral("DBU400-D4"));
+    EXPECT_EQ(drives->info(7).family, QStringLiteral("dcpid"));
+    BusListModel* model = window->busPanel()->model();
+    const int row = model->rowOf(150);
+    ASSERT_GE(row, 0);
+    EXPECT_EQ(model->index(row, BusListModel::Switches).data().toString(),
+              QStringLiteral("96h  SW1=9 SW2=6"));
 }
 
-TEST(MainWindow, ABadConnectionIsRefusedWithAReason)
+TEST_F(MainWindowTest, SelectingADriveOpensItsPagesAndAnEditReachesTheDrive)
 {
-    ConnectionSettings settings;
-    settings.kind = ConnectionSettings::Kind::Simulated;
-    settings.simSpec = QStringLiteral("dbu999@1");
-    auto made = BackendFactory::makeClient(settings);
-    EXPECT_FALSE(made.client);
-    EXPECT_TRUE(made.error.contains(QStringLiteral("unknown device type")))
-        << qPrintable(made.error);
-    settings.kind = ConnectionSettings::Kind::Serial;
-    settings.port.clear();
-    made = BackendFactory::makeClient(settings);
-    EXPECT_FALSE(made.client);
-    EXPECT_FALSE(made.error.isEmpty());
+    select({1});
+    DriveWorkspace* workspace = window->workspace();
+    ASSERT_TRUE(waitFor([&] { return workspace->drive() != nullptr; }));
+    QStringList titles;
+    for (int i = 0; i < workspace->tabs()->count(); ++i)
+        titles << qobject_cast<ParameterPage*>(workspace->tabs()->widget(i))->title();
+    for (const char* expected : {"Running data", "Core parameters", "Speed display"})
+        EXPECT_TRUE(
+            std::any_of(titles.begin(), titles.end(),
+                        [&](const QString& t) { return t.contains(QString::fromUtf8(expected)); }))
+            << expected << " not in " << titles.join(QStringLiteral(", ")).toStdString();
+    DeviceParameters* params = window->drives()->parameters(1);
+    ASSERT_TRUE(
+        waitFor([&] { return params->entry(QStringLiteral("spno2.speed"))->device.valid; }));
+    auto* field = workspace->findChild<ParameterField*>(QString(), Qt::FindChildrenRecursively);
+    ASSERT_NE(field, nullptr);
+    const QList<ParameterField*> fields = workspace->findChildren<ParameterField*>();
+    ParameterField* speed = nullptr;
+    for (ParameterField* f : fields)
+        speed = f->parameterName() == QLatin1String("spno2.speed") ? f : speed;
+    ASSERT_NE(speed, nullptr);
+    speed->enter(QStringLiteral("2200"));
+    EXPECT_TRUE(params->hasPending());
+    workspace->writeAll();
+    ASSERT_TRUE(waitFor([&] { return !params->hasPending(); }));
+    EXPECT_EQ(simRegister(1, 0xCA03), 2200);
+}
+
+TEST_F(MainWindowTest, SeveralDrivesOfOneFamilyEnableTheMultiDriveWrite)
+{
+    QAction* multi = nullptr;
+    for (QAction* a : window->findChildren<QAction*>())
+        multi = a->text().contains(QStringLiteral("selected drives")) ? a : multi;
+    ASSERT_NE(multi, nullptr);
+    select({1, 2});
+    ASSERT_TRUE(waitFor([&] { return multi->isEnabled(); }));
+    select({1, 7}); // a DBU and a DC controller have no setting in common
+    ASSERT_TRUE(waitFor([&] { return !multi->isEnabled(); }));
 }
