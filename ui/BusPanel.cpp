@@ -128,6 +128,12 @@ BusPanel::~BusPanel()
 void BusPanel::syncDrive(int slave)
 {
     m_model->upsert(m_drives->info(slave));
+    // The first drive that answers is selected, so its pages open without a click.
+    if (m_view->selectionModel()->selectedRows().isEmpty() &&
+        m_drives->info(slave).state == DeviceInfo::State::Present) {
+        m_view->selectRow(m_model->rowOf(slave));
+        m_view->setCurrentIndex(m_model->index(m_model->rowOf(slave), 0));
+    }
 }
 
 void BusPanel::scanClicked()

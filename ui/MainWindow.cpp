@@ -43,7 +43,7 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     if (!restoreGeometry(settings.value(QStringLiteral("mainWindow/geometry")).toByteArray()))
         resize(1280, 800);
     restoreState(settings.value(QStringLiteral("mainWindow/state")).toByteArray());
-    m_splitter->restoreState(settings.value(QStringLiteral("mainWindow/splitter")).toByteArray());
+    m_splitterState = settings.value(QStringLiteral("mainWindow/splitter")).toByteArray();
 }
 
 MainWindow::~MainWindow()
@@ -116,6 +116,9 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
     delete m_splitter->widget(0);
     m_splitter->insertWidget(0, m_panel);
     m_splitter->setStretchFactor(0, 0);
+    // The remembered division, or one where the bus list's columns fit.
+    if (!m_splitter->restoreState(m_splitterState))
+        m_splitter->setSizes({width() * 45 / 100, width() * 55 / 100});
     connect(m_panel, &BusPanel::selectionChanged, this, &MainWindow::showDrive);
     connect(m_client.get(), &ModbusClient::opened, this, &MainWindow::onOpened);
     connect(m_client.get(), &ModbusClient::connectionLost, this, [this](const QString& lost) {
@@ -221,7 +224,8 @@ void MainWindow::closeEvent(QCloseEvent* event)
     QSettings settings;
     settings.setValue(QStringLiteral("mainWindow/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("mainWindow/state"), saveState());
-    settings.setValue(QStringLiteral("mainWindow/splitter"), m_splitter->saveState());
+    m_splitterState = m_splitter->saveState();
+    settings.setValue(QStringLiteral("mainWindow/splitter"), m_splitterState);
     event->accept();
 }
 

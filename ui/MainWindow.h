@@ -69,6 +69,7 @@ private:
     BusPanel* m_panel = nullptr;
     DriveWorkspace* m_workspace;
     QSplitter* m_splitter;
+    QByteArray m_splitterState;
     QLabel* m_connectionLabel;
     QVector<int> m_selected;
     QAction* m_multiWrite = nullptr;
