@@ -49,7 +49,7 @@ public:
     // Bit 0: Y0, bit 1: Y1.
     int outputs(const State& state) const;
 
-    static constexpr int kPulsesPerRevolution = 30; // Speed-out
+    static constexpr int kPulsesPerRevolution = 24; // Speed-out, manual 5-6
 
 private:
     int level(int function, const State& state) const;

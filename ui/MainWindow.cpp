@@ -12,6 +12,8 @@
 #include "ProfileRegistry.h"
 
 #include <QAction>
+#include <QHeaderView>
+#include <QTableView>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QLabel>
@@ -117,8 +119,10 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
     m_splitter->insertWidget(0, m_panel);
     m_splitter->setStretchFactor(0, 0);
     // The remembered division, or one where the bus list's columns fit.
-    if (!m_splitter->restoreState(m_splitterState))
-        m_splitter->setSizes({width() * 45 / 100, width() * 55 / 100});
+    if (!m_splitter->restoreState(m_splitterState)) {
+        const int list = std::max(560, m_panel->view()->horizontalHeader()->length() + 24);
+        m_splitter->setSizes({list, std::max(600, width() - list)});
+    }
     connect(m_panel, &BusPanel::selectionChanged, this, &MainWindow::showDrive);
     connect(m_client.get(), &ModbusClient::opened, this, &MainWindow::onOpened);
     connect(m_client.get(), &ModbusClient::connectionLost, this, [this](const QString& lost) {
