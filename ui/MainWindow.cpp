@@ -12,16 +12,16 @@
 #include "ProfileRegistry.h"
 
 #include <QAction>
-#include <QHeaderView>
-#include <QTableView>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QHeaderView>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QTableView>
 #include <QToolBar>
 
 namespace opentop {
