@@ -243,6 +243,10 @@ TEST_F(BusPanelTest, MultiSelectionReportsTheMachineNumbers)
     QObject::connect(panel.get(), &BusPanel::selectionChanged,
                      [&](const QVector<int>& slaves) { reported = slaves; });
     QItemSelectionModel* selection = panel->view()->selectionModel();
+    // The first drive found is selected by itself; start from nothing.
+    EXPECT_EQ(panel->selectedSlaves(), QVector<int>{1});
+    selection->clearSelection();
+    EXPECT_TRUE(reported.isEmpty());
     selection->select(model()->index(0, 0),
                       QItemSelectionModel::Select | QItemSelectionModel::Rows);
     EXPECT_EQ(reported, QVector<int>{1});

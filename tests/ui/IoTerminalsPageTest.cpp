@@ -1,42 +1,15 @@
 #include "IoTerminalsPage.h"
-#include "../model/DriveSimFixture.h"
 #include "DeviceParameters.h"
+#include "PageFixture.h"
 #include "ParameterField.h"
 
 #include <QComboBox>
 
 using namespace opentop;
 
-class IoTerminalsPageTest : public test::DriveSimFixture
+class IoTerminalsPageTest : public test::PageFixture<IoTerminalsPage>
 {
 protected:
-    void SetUp() override
-    {
-        startBus(QStringLiteral("dbu200@1"));
-        parameters = std::make_unique<DeviceParameters>(session(1));
-        page = std::make_unique<IoTerminalsPage>(parameters.get());
-        page->show();
-        ASSERT_TRUE(run([this] { page->refresh(); }));
-    }
-
-    void TearDown() override
-    {
-        page.reset();
-        parameters.reset();
-        DriveSimFixture::TearDown();
-    }
-
-    bool run(const std::function<void()>& start)
-    {
-        bool finished = false;
-        const auto c = QObject::connect(page.get(), &ParameterPage::operationFinished,
-                                        [&finished] { finished = true; });
-        start();
-        const bool ok = waitUntil([&finished] { return finished; }, 10000);
-        QObject::disconnect(c);
-        return ok;
-    }
-
     QComboBox* combo(const QString& name)
     {
         return qobject_cast<QComboBox*>(page->field(name)->editor());
@@ -58,9 +31,6 @@ protected:
     {
         return bus->control(1, {QStringLiteral("get"), QLatin1String(address)}).text;
     }
-
-    std::unique_ptr<DeviceParameters> parameters;
-    std::unique_ptr<IoTerminalsPage> page;
 };
 
 TEST_F(IoTerminalsPageTest, OffersOnlyMode2FunctionsByDefault)

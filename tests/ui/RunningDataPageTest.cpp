@@ -1,6 +1,6 @@
 #include "RunningDataPage.h"
-#include "../model/DriveSimFixture.h"
 #include "DeviceParameters.h"
+#include "PageFixture.h"
 #include "ParameterField.h"
 
 #include <QApplication>
@@ -35,44 +35,13 @@ QString registerOn(SimBus& bus, const char* address)
 
 } // namespace
 
-class RunningDataPageTest : public test::DriveSimFixture
+class RunningDataPageTest : public test::PageFixture<RunningDataPage>
 {
 protected:
-    void SetUp() override
-    {
-        startBus(QStringLiteral("dbu200@1"));
-        parameters = std::make_unique<DeviceParameters>(session(1));
-        page = std::make_unique<RunningDataPage>(parameters.get());
-        page->show();
-        ASSERT_TRUE(run([this] { page->refresh(); }));
-    }
-
-    void TearDown() override
-    {
-        page.reset();
-        parameters.reset();
-        DriveSimFixture::TearDown();
-    }
-
-    // Starts a page operation and waits for it to finish.
-    bool run(const std::function<void()>& start)
-    {
-        bool finished = false;
-        const auto c = QObject::connect(page.get(), &ParameterPage::operationFinished,
-                                        [&finished] { finished = true; });
-        start();
-        const bool ok = waitUntil([&finished] { return finished; }, 10000);
-        QObject::disconnect(c);
-        return ok;
-    }
-
     QLineEdit* edit(const char* name)
     {
         return qobject_cast<QLineEdit*>(page->field(QLatin1String(name))->editor());
     }
-
-    std::unique_ptr<DeviceParameters> parameters;
-    std::unique_ptr<RunningDataPage> page;
 };
 
 TEST_F(RunningDataPageTest, ShowsTheGridWithUnitsAndTheVariantsSpeedRange)
