@@ -1,6 +1,10 @@
 #include "MainWindow.h"
 
+#include "AlarmBanner.h"
+#include "AlarmExport.h"
+#include "AlarmsPage.h"
 #include "BusDrives.h"
+#include "BusListModel.h"
 #include "BusPanel.h"
 #include "ConnectionDialog.h"
 #include "DeviceIdentifier.h"
@@ -10,10 +14,17 @@
 #include "ModbusClient.h"
 #include "MultiDriveWriteDialog.h"
 #include "ProfileRegistry.h"
+#include "StopAllButton.h"
+#include "TestRunPanel.h"
+#include "TrafficDescriber.h"
+#include "TrafficLog.h"
+#include "TrafficLogView.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
 #include <QHeaderView>
 #include <QLabel>
 #include <QMenuBar>
@@ -21,15 +32,19 @@
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QTableView>
 #include <QToolBar>
+#include <QVBoxLayout>
 
 namespace opentop {
 
 MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     : QMainWindow(parent)
     , m_factory(std::move(factory))
+    , m_log(std::make_unique<TrafficLog>())
     , m_workspace(new DriveWorkspace(this))
+    , m_central(new QWidget(this))
     , m_splitter(new QSplitter(this))
     , m_connectionLabel(new QLabel(this))
 {
@@ -38,7 +53,16 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     m_splitter->addWidget(new QWidget(m_splitter)); // the bus panel, once connected
     m_splitter->addWidget(m_workspace);
     m_splitter->setStretchFactor(1, 1);
-    setCentralWidget(m_splitter);
+    auto* column = new QVBoxLayout(m_central);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->addWidget(m_splitter, 1); // the alarm banner goes above it once connected
+    setCentralWidget(m_central);
+    // Every frame, decoded with parameter names, in a dock that can be shown or hidden.
+    auto* trafficDock = new QDockWidget(tr("Traffic log"), this);
+    trafficDock->setObjectName(QStringLiteral("trafficDock"));
+    trafficDock->setWidget(new TrafficLogView(m_log.get(), trafficDock));
+    addDockWidget(Qt::BottomDockWidgetArea, trafficDock);
+    trafficDock->hide();
     statusBar()->addPermanentWidget(m_connectionLabel);
     buildActions();
     QSettings settings;
@@ -58,6 +82,7 @@ void MainWindow::buildActions()
     QMenu* file = menuBar()->addMenu(tr("&Bus"));
     QToolBar* toolbar = addToolBar(tr("Main"));
     toolbar->setObjectName(QStringLiteral("mainToolbar"));
+    m_toolbar = toolbar;
     QAction* connectAction = file->addAction(tr("&Connect…"), this, &MainWindow::chooseConnection);
     connectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
     connectAction->setToolTip(tr("Choose the serial port, gateway or simulated bus (Ctrl+K)"));
@@ -68,6 +93,7 @@ void MainWindow::buildActions()
     });
     scan->setShortcut(QKeySequence(Qt::Key_F5));
     toolbar->addAction(scan);
+    file->addAction(tr("&Export alarm histories…"), this, &MainWindow::exportAlarms);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -83,11 +109,29 @@ void MainWindow::buildActions()
     m_multiWrite->setEnabled(false);
     toolbar->addAction(writeAll);
     toolbar->addAction(m_multiWrite);
+    toolbar->addSeparator();
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    QAction* traffic = view->addAction(tr("&Traffic log"));
+    traffic->setCheckable(true);
+    traffic->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_T));
+    connect(traffic, &QAction::toggled, this, [this](bool on) {
+        if (auto* dock = findChild<QDockWidget*>(QStringLiteral("trafficDock")))
+            dock->setVisible(on);
+    });
 }
 
 void MainWindow::teardown()
 {
     m_workspace->setDrive(nullptr, QString());
+    if (m_stopAllAction) {
+        m_toolbar->removeAction(m_stopAllAction);
+        m_stopAllAction = nullptr;
+    }
+    delete m_stopAll;
+    m_stopAll = nullptr;
+    delete m_banner;
+    m_banner = nullptr;
+    m_log->setDescriber({});
     delete m_panel;
     m_panel = nullptr;
     delete m_poller;
@@ -105,7 +149,7 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
     m_settings = settings;
     m_knownTypes = knownTypes;
     QString error;
-    m_client = m_factory(settings, &error);
+    m_client = m_factory(settings, m_log.get(), &error);
     if (!m_client) {
         m_connectionLabel->setText(tr("Not connected"));
         QMessageBox::warning(this, tr("Cannot connect"), error);
@@ -115,6 +159,19 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
     m_drives = new BusDrives(m_client.get(), ProfileRegistry::builtIn(), this);
     m_poller = new DriveStatusPoller(m_drives, this);
     m_panel = new BusPanel(m_drives, m_poller, m_splitter);
+    m_log->setDescriber(TrafficDescriber(m_drives, ProfileRegistry::builtIn()).describer());
+    // STOP ALL is always on the toolbar and on the keyboard (StopAllButton::shortcuts()).
+    m_stopAll = new StopAllButton(m_drives, m_toolbar);
+    m_stopAllAction = m_toolbar->addWidget(m_stopAll);
+    m_banner = new AlarmBanner(m_poller, m_central);
+    static_cast<QVBoxLayout*>(m_central->layout())->insertWidget(0, m_banner);
+    connect(m_banner, &AlarmBanner::showAlarms, this, [this](int slave) {
+        m_panel->view()->selectRow(m_panel->model()->rowOf(slave));
+        for (int i = 0; i < m_workspace->tabs()->count(); ++i) {
+            if (qobject_cast<AlarmsPage*>(m_workspace->tabs()->widget(i)))
+                m_workspace->tabs()->setCurrentIndex(i);
+        }
+    });
     delete m_splitter->widget(0);
     m_splitter->insertWidget(0, m_panel);
     m_splitter->setStretchFactor(0, 0);
@@ -186,11 +243,20 @@ void MainWindow::showDrive(const QVector<int>& slaves)
         return;
     }
     const DeviceInfo info = m_drives->info(slaves.first());
+    if (m_workspace->drive() == m_drives->parameters(info.slave))
+        return;
     m_workspace->setDrive(m_drives->parameters(info.slave),
                           tr("Machine number %1 (%2, %3) — %4, firmware V%5")
                               .arg(info.slave)
                               .arg(DeviceInfo::hexText(info.slave),
                                    DeviceInfo::switchText(info.slave), info.model, info.firmware));
+    // The monitoring side of the drive: test run and alarm histories.
+    auto* run = new TestRunPanel(m_drives, info.slave, m_workspace->tabs());
+    run->setPollingActive(m_poller->isActive());
+    m_workspace->tabs()->addTab(run, tr("Test run"));
+    auto* alarms = new AlarmsPage(m_drives->session(info.slave), m_workspace->tabs());
+    m_workspace->tabs()->addTab(alarms, tr("Alarms"));
+    alarms->refresh();
 }
 
 void MainWindow::writeToSelected()
@@ -199,6 +265,22 @@ void MainWindow::writeToSelected()
         return;
     MultiDriveWriteDialog dialog(m_drives, m_selected, QString(), this);
     dialog.exec();
+}
+
+void MainWindow::exportAlarms()
+{
+    if (!m_drives || m_drives->slaves().isEmpty())
+        return;
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export alarm histories"), QStringLiteral("alarms.csv"), tr("CSV files (*.csv)"));
+    if (path.isEmpty())
+        return;
+    auto* exporter = new AlarmExport(m_drives, this);
+    connect(exporter, &AlarmExport::finished, this, [this, exporter](bool, const QString& message) {
+        statusBar()->showMessage(message, 10000);
+        exporter->deleteLater();
+    });
+    exporter->exportTo(path);
 }
 
 void MainWindow::chooseConnection()

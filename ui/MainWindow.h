@@ -11,6 +11,7 @@
 class QAction;
 class QLabel;
 class QSplitter;
+class QToolBar;
 
 namespace opentop {
 
@@ -18,7 +19,10 @@ class BusDrives;
 class BusPanel;
 class DriveStatusPoller;
 class DriveWorkspace;
+class AlarmBanner;
 class ModbusClient;
+class StopAllButton;
+class TrafficLog;
 
 // The main window: the bus on the left (scan, drives, status lights), the selected drive's
 // pages on the right. It owns the connection; all bus work happens on the client's worker
@@ -28,8 +32,9 @@ class MainWindow : public QMainWindow
     Q_OBJECT
 public:
     // Makes a client for a connection (the program's backends live outside ui/).
-    using ClientFactory =
-        std::function<std::unique_ptr<ModbusClient>(const ConnectionSettings&, QString* error)>;
+    // Every frame of the connection goes to `log`.
+    using ClientFactory = std::function<std::unique_ptr<ModbusClient>(
+        const ConnectionSettings&, TrafficLog* log, QString* error)>;
 
     MainWindow(ClientFactory factory, QWidget* parent = nullptr);
     ~MainWindow() override;
@@ -43,6 +48,8 @@ public:
     BusDrives* drives() const { return m_drives; }
     BusPanel* busPanel() const { return m_panel; }
     DriveWorkspace* workspace() const { return m_workspace; }
+    TrafficLog* trafficLog() const { return m_log.get(); }
+    StopAllButton* stopAllButton() const { return m_stopAll; }
 
 signals:
     void connectionChanged(bool connected);
@@ -58,8 +65,10 @@ private:
     void showDrive(const QVector<int>& slaves);
     void writeToSelected();
     void chooseConnection();
+    void exportAlarms();
 
     ClientFactory m_factory;
+    std::unique_ptr<TrafficLog> m_log;
     ConnectionSettings m_settings;
     QHash<int, QString> m_knownTypes;
     std::unique_ptr<ModbusClient> m_client;
@@ -68,6 +77,11 @@ private:
     DriveStatusPoller* m_poller = nullptr;
     BusPanel* m_panel = nullptr;
     DriveWorkspace* m_workspace;
+    QWidget* m_central;
+    AlarmBanner* m_banner = nullptr;
+    StopAllButton* m_stopAll = nullptr;
+    QAction* m_stopAllAction = nullptr;
+    QToolBar* m_toolbar = nullptr;
     QSplitter* m_splitter;
     QByteArray m_splitterState;
     QLabel* m_connectionLabel;

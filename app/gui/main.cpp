@@ -7,6 +7,7 @@
 #include "EditorRegistry.h"
 #include "MainWindow.h"
 #include "ModbusClient.h"
+#include "TrafficLog.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -47,12 +48,13 @@ int main(int argc, char* argv[])
                              .value_or(QVector<opentop::BusSpecEntry>()))
         known.insert(e.slave, e.type);
 
-    opentop::MainWindow window([](const opentop::ConnectionSettings& s, QString* e) {
-        auto made = opentop::BackendFactory::makeClient(s);
-        if (e)
-            *e = made.error;
-        return std::move(made.client);
-    });
+    opentop::MainWindow window(
+        [](const opentop::ConnectionSettings& s, opentop::TrafficLog* log, QString* e) {
+            auto made = opentop::BackendFactory::makeClient(s, log);
+            if (e)
+                *e = made.error;
+            return std::move(made.client);
+        });
     window.show();
     window.connectTo(settings, settings.kind == opentop::ConnectionSettings::Kind::Simulated
                                    ? known

@@ -13,6 +13,8 @@
 #include "ParameterField.h"
 #include "ParameterPage.h"
 #include "SimBus.h"
+#include "StopAllButton.h"
+#include "TrafficLog.h"
 
 #include <QCoreApplication>
 #include <QDeadlineTimer>
@@ -43,13 +45,14 @@ protected:
         QCoreApplication::setOrganizationName(QStringLiteral("OpenTOP-test"));
         QSettings().clear();
         registerBuiltInEditors();
-        window = std::make_unique<MainWindow>([this](const ConnectionSettings& s, QString* error) {
-            auto made = BackendFactory::makeClient(s);
-            bus = made.simBus;
-            if (error)
-                *error = made.error;
-            return std::move(made.client);
-        });
+        window = std::make_unique<MainWindow>(
+            [this](const ConnectionSettings& s, TrafficLog* log, QString* error) {
+                auto made = BackendFactory::makeClient(s, log);
+                bus = made.simBus;
+                if (error)
+                    *error = made.error;
+                return std::move(made.client);
+            });
         ConnectionSettings settings;
         settings.kind = ConnectionSettings::Kind::Simulated;
         settings.simSpec = QStringLiteral("dbu200@1,dbu200@2,dbu400@150,dcpid@7");
@@ -110,8 +113,9 @@ TEST_F(MainWindowTest, SelectingADriveOpensItsPagesAndAnEditReachesTheDrive)
     ASSERT_TRUE(waitFor([&] { return workspace->drive() != nullptr; }));
     QStringList titles;
     for (int i = 0; i < workspace->tabs()->count(); ++i)
-        titles << qobject_cast<ParameterPage*>(workspace->tabs()->widget(i))->title();
-    for (const char* expected : {"Running data", "Core parameters", "Speed display"})
+        titles << workspace->tabs()->tabText(i).remove(QLatin1Char('&'));
+    for (const char* expected :
+         {"Running data", "Core parameters", "Speed display", "Test run", "Alarms"})
         EXPECT_TRUE(
             std::any_of(titles.begin(), titles.end(),
                         [&](const QString& t) { return t.contains(QString::fromUtf8(expected)); }))
@@ -143,4 +147,18 @@ TEST_F(MainWindowTest, SeveralDrivesOfOneFamilyEnableTheMultiDriveWrite)
     ASSERT_TRUE(waitFor([&] { return multi->isEnabled(); }));
     select({1, 7}); // a DBU and a DC controller have no setting in common
     ASSERT_TRUE(waitFor([&] { return !multi->isEnabled(); }));
+}
+
+TEST_F(MainWindowTest, StopAllIsOnTheToolbarAndFramesReachTheTrafficLog)
+{
+    ASSERT_NE(window->stopAllButton(), nullptr);
+    EXPECT_TRUE(window->stopAllButton()->isVisibleTo(window.get()));
+    // Once the drives are known, their frames (the status poll) carry parameter names.
+    EXPECT_TRUE(waitFor([&] {
+        for (const TrafficEntry& e : window->trafficLog()->entries()) {
+            if (e.summary.contains(QStringLiteral("core.control_priority")))
+                return true;
+        }
+        return false;
+    }));
 }

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <QFrame>
+
+class QLabel;
+
+namespace opentop {
+
+class DeviceSession;
+
+// Shown while a drive does not take motion commands over the bus (its "motionPriority" role
+// does not hold): explains what its current setting means and what switching does, and offers
+// to switch after a confirmation.
+class MotionPriorityBox : public QFrame
+{
+    Q_OBJECT
+public:
+    explicit MotionPriorityBox(DeviceSession* session, QWidget* parent = nullptr);
+
+    // `current`: the setting's text as read, e.g. "I/O priority".
+    void setCurrent(const QString& current);
+    QString explanation() const;
+
+signals:
+    void switching();
+    // The write finished; `message` says what became of it.
+    void switched(bool ok, const QString& message);
+
+private:
+    void askToSwitch();
+    void sendSwitch();
+    QString wantedLabel() const;
+
+    DeviceSession* m_session;
+    QLabel* m_text;
+};
+
+} // namespace opentop
