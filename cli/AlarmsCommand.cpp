@@ -27,13 +27,7 @@ QString hexCode(qint64 code)
 
 QString clearedBy(const QString& reset)
 {
-    if (reset == QLatin1String("alarm-reset"))
-        return tr("Alarm-Reset");
-    if (reset == QLatin1String("power"))
-        return tr("power cycle");
-    if (reset == QLatin1String("auto"))
-        return tr("by itself");
-    return tr("—");
+    return CodeEntry::clearedByText(reset);
 }
 
 QJsonObject entryJson(qint64 code, const std::optional<CodeEntry>& e)

@@ -17,6 +17,9 @@ struct CodeEntry
     QString remedy;
     QString led;           // DBU MONITOR LED colour while active: red, purple, blue
     int exceptionCode = 0; // communication errors: the Modbus exception code that goes with it
+
+    // How a code is cleared, for people: "Alarm-Reset", "power cycle", "by itself".
+    static QString clearedByText(const QString& reset);
 };
 
 struct CodeTable

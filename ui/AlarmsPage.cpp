@@ -134,13 +134,7 @@ QString AlarmsPage::codeText(qint64 code)
 
 QString AlarmsPage::clearedByText(const QString& reset)
 {
-    if (reset == QLatin1String("alarm-reset"))
-        return tr("Alarm-Reset");
-    if (reset == QLatin1String("power"))
-        return tr("power cycle");
-    if (reset == QLatin1String("auto"))
-        return tr("by itself");
-    return tr("—");
+    return CodeEntry::clearedByText(reset);
 }
 
 template <typename T>
