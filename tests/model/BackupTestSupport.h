@@ -5,6 +5,7 @@
 
 #include "BackupReader.h"
 #include "DeviceSession.h"
+#include "DriveSimFixture.h"
 #include "ModbusClient.h"
 #include "ProfileRegistry.h"
 #include "Restorer.h"
@@ -19,58 +20,19 @@
 
 namespace opentop::test {
 
-class SimBusFixture : public ::testing::Test
+class SimBusFixture : public DriveSimFixture
 {
 protected:
-    void SetUp() override
-    {
-        QString error;
-        bus = SimBus::fromSpec(QStringLiteral("dbu200@1,dbu400@150,dcpid@7"), &error);
-        ASSERT_TRUE(bus) << qPrintable(error);
-        auto backend = std::make_unique<SimBackend>(bus);
-        backend->setTrafficLog(&log);
-        ConnectionSettings settings;
-        settings.kind = ConnectionSettings::Kind::Simulated;
-        settings.simSpec = bus->spec();
-        settings.timeoutMs = 50;
-        settings.retries = 1;
-        client = std::make_unique<ModbusClient>(std::move(backend), settings);
-        ASSERT_TRUE(client->openBlocking().isEmpty());
-    }
+    void SetUp() override { startBus(QStringLiteral("dbu200@1,dbu400@150,dcpid@7"), 0, 50, 1); }
 
     static const Profile& profile(const char* family)
     {
         return *ProfileRegistry::builtIn().family(QString::fromLatin1(family));
     }
 
-    // A session as the program makes one: DBUs with their variant named, the DC as it is.
-    DeviceSession* session(int slave)
-    {
-        if (!sessions.count(slave)) {
-            const QString variant = slave == 1     ? QStringLiteral("dbu200")
-                                    : slave == 150 ? QStringLiteral("dbu400")
-                                                   : QString();
-            const Profile& p = profile(slave == 7 ? "dcpid" : "dbu");
-            sessions[slave] = std::make_unique<DeviceSession>(client.get(), p, slave, variant);
-        }
-        return sessions[slave].get();
-    }
-
     template <typename Result, typename Start> Result waitFor(Start start)
     {
-        Result result{};
-        bool finished = false;
-        QEventLoop loop;
-        start([&](const Result& r) {
-            result = r;
-            finished = true;
-            loop.quit();
-        });
-        QTimer::singleShot(10000, &loop, &QEventLoop::quit);
-        if (!finished)
-            loop.exec();
-        EXPECT_TRUE(finished) << "no answer within 10 s";
-        return result;
+        return await<Result>(start, 10000);
     }
 
     BackupReader::Result backup(int slave)
@@ -134,11 +96,6 @@ protected:
     }
 
     int logSize() const { return int(log.entries().size()); }
-
-    TrafficLog log;
-    std::shared_ptr<SimBus> bus;
-    std::unique_ptr<ModbusClient> client;
-    std::map<int, std::unique_ptr<DeviceSession>> sessions;
 };
 
 } // namespace opentop::test

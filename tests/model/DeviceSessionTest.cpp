@@ -1,5 +1,6 @@
 #include "DeviceSession.h"
 #include "DeviceIdentifier.h"
+#include "DriveSimFixture.h"
 #include "ModbusClient.h"
 #include "ProfileRegistry.h"
 #include "SimBackend.h"
@@ -16,54 +17,17 @@ using namespace opentop;
 namespace {
 
 // A DBU200 at 1 and a DBU400 at 150 and a DC controller at 7, in process.
-class DeviceSessionTest : public ::testing::Test
+class DeviceSessionTest : public test::DriveSimFixture
 {
 protected:
-    void SetUp() override
-    {
-        QString error;
-        bus = SimBus::fromSpec(QStringLiteral("dbu200@1,dbu400@150,dcpid@7"), &error);
-        ASSERT_TRUE(bus) << qPrintable(error);
-        auto backend = std::make_unique<SimBackend>(bus);
-        backend->setTrafficLog(&log);
-        ConnectionSettings settings;
-        settings.kind = ConnectionSettings::Kind::Simulated;
-        settings.simSpec = bus->spec();
-        settings.timeoutMs = 100;
-        client = std::make_unique<ModbusClient>(std::move(backend), settings);
-        ASSERT_TRUE(client->openBlocking().isEmpty());
-    }
+    void SetUp() override { startBus(QStringLiteral("dbu200@1,dbu400@150,dcpid@7"), 0, 100, 1); }
 
     DeviceSession::Outcome wait(const std::function<void(DeviceSession::Done)>& start)
     {
-        DeviceSession::Outcome result;
-        bool finished = false;
-        QEventLoop loop;
-        start([&](const DeviceSession::Outcome& o) {
-            result = o;
-            finished = true;
-            loop.quit();
-        });
-        QTimer::singleShot(5000, &loop, &QEventLoop::quit);
-        if (!finished)
-            loop.exec();
-        EXPECT_TRUE(finished) << "no answer within 5 s";
-        return result;
-    }
-
-    int framesSent() const
-    {
-        int n = 0;
-        for (const TrafficEntry& e : log.entries())
-            n += e.direction == TrafficEntry::Direction::Tx ? 1 : 0;
-        return n;
+        return await<DeviceSession::Outcome>(start, 5000);
     }
 
     const Profile& dbu() const { return *ProfileRegistry::builtIn().family(QStringLiteral("dbu")); }
-
-    TrafficLog log;
-    std::shared_ptr<SimBus> bus;
-    std::unique_ptr<ModbusClient> client;
 };
 
 } // namespace

@@ -25,7 +25,7 @@ class DriveSimFixture : public ::testing::Test
 {
 protected:
     // `spec` as on the command line; wire timing at `baud` when > 0.
-    void startBus(const QString& spec, int wireBaud = 0)
+    void startBus(const QString& spec, int wireBaud = 0, int timeoutMs = 100, int retries = 0)
     {
         QString error;
         bus = SimBus::fromSpec(spec, &error);
@@ -36,8 +36,8 @@ protected:
         ConnectionSettings settings;
         settings.kind = ConnectionSettings::Kind::Simulated;
         settings.simSpec = bus->spec();
-        settings.timeoutMs = 100;
-        settings.retries = 0;
+        settings.timeoutMs = timeoutMs;
+        settings.retries = retries;
         client = std::make_unique<ModbusClient>(std::move(backend), settings);
         ASSERT_TRUE(client->openBlocking().isEmpty());
     }
