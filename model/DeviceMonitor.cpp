@@ -5,6 +5,8 @@
 #include "RoleEvaluator.h"
 #include "ValueCodec.h"
 
+#include <QPointer>
+
 namespace opentop {
 
 namespace {
@@ -76,7 +78,11 @@ void DeviceMonitor::prepare(std::function<void(const QString&)> done)
         done(QString());
         return;
     }
-    m_session->readMany(names.all(), [this, names, done](const DeviceSession::ReadManyOutcome& o) {
+    // The monitor may be gone when the answer comes (its view closed): the guard drops it.
+    m_session->readMany(names.all(), [this, self = QPointer<DeviceMonitor>(this), names,
+                                      done](const DeviceSession::ReadManyOutcome& o) {
+        if (!self)
+            return;
         QString error;
         m_display = SpeedDisplay::fromValues(
             names,
@@ -118,9 +124,9 @@ void DeviceMonitor::poll()
     p->timestamp = QDateTime::currentDateTime();
     m_session->readMany(
         m_names,
-        [this, p](const DeviceSession::ReadManyOutcome& o) {
-            if (p->generation != m_generation)
-                return; // stopped (or restarted) meanwhile
+        [this, self = QPointer<DeviceMonitor>(this), p](const DeviceSession::ReadManyOutcome& o) {
+            if (!self || p->generation != m_generation)
+                return; // gone, stopped or restarted meanwhile
             for (const QString& name : o.order) {
                 const DeviceSession::Outcome r = o.results.value(name);
                 if (r.value.valid)
@@ -156,8 +162,9 @@ void DeviceMonitor::readActiveAlarm(const std::shared_ptr<Poll>& p)
     const ParameterMeta* newest = m_session->profile().records(kAlarmTable).first();
     m_session->readMany(
         {newest->name},
-        [this, p, newest](const DeviceSession::ReadManyOutcome& o) {
-            if (p->generation != m_generation)
+        [this, self = QPointer<DeviceMonitor>(this), p,
+         newest](const DeviceSession::ReadManyOutcome& o) {
+            if (!self || p->generation != m_generation)
                 return;
             const DeviceSession::Outcome r = o.results.value(newest->name);
             if (r.ok)
