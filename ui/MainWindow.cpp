@@ -5,13 +5,17 @@
 #include "AlarmsPage.h"
 #include "BusDrives.h"
 #include "BusListModel.h"
+#include "BusOverview.h"
 #include "BusPanel.h"
 #include "ConnectionDialog.h"
 #include "DeviceIdentifier.h"
 #include "DeviceParameters.h"
 #include "DriveStatusPoller.h"
 #include "DriveWorkspace.h"
+#include "FileActions.h"
 #include "ModbusClient.h"
+#include "MonitorHub.h"
+#include "MonitorPage.h"
 #include "MultiDriveWriteDialog.h"
 #include "ProfileRegistry.h"
 #include "StopAllButton.h"
@@ -19,6 +23,7 @@
 #include "TrafficDescriber.h"
 #include "TrafficLog.h"
 #include "TrafficLogView.h"
+#include "TrendPanel.h"
 
 #include <QAction>
 #include <QApplication>
@@ -63,6 +68,15 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     trafficDock->setWidget(new TrafficLogView(m_log.get(), trafficDock));
     addDockWidget(Qt::BottomDockWidgetArea, trafficDock);
     trafficDock->hide();
+    // Live views of the whole bus; their contents are made per connection.
+    for (const auto& [name, title] : {std::pair(QStringLiteral("overviewDock"), tr("Bus overview")),
+                                      std::pair(QStringLiteral("trendDock"), tr("Trends"))}) {
+        auto* d = new QDockWidget(title, this);
+        d->setObjectName(name);
+        d->setWidget(new QLabel(tr("Not connected"), d));
+        addDockWidget(Qt::BottomDockWidgetArea, d);
+        d->hide();
+    }
     statusBar()->addPermanentWidget(m_connectionLabel);
     buildActions();
     QSettings settings;
@@ -97,6 +111,11 @@ void MainWindow::buildActions()
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
+    // Backup, restore, compare and the file viewer (they take the bus as it is when used).
+    new FileActions(
+        this, menuBar()->addMenu(tr("&Files")), [this] { return m_drives; },
+        [this] { return m_selected; }, [this] { return m_settings; }, this);
+
     QMenu* drive = menuBar()->addMenu(tr("&Drive"));
     QAction* writeAll =
         drive->addAction(tr("&Write all pending"), m_workspace, &DriveWorkspace::writeAll);
@@ -111,18 +130,36 @@ void MainWindow::buildActions()
     toolbar->addAction(m_multiWrite);
     toolbar->addSeparator();
     QMenu* view = menuBar()->addMenu(tr("&View"));
-    QAction* traffic = view->addAction(tr("&Traffic log"));
-    traffic->setCheckable(true);
-    traffic->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_T));
-    connect(traffic, &QAction::toggled, this, [this](bool on) {
-        if (auto* dock = findChild<QDockWidget*>(QStringLiteral("trafficDock")))
-            dock->setVisible(on);
-    });
+    // The docks' own actions keep the menu's check marks in step with a dock closed by its
+    // title bar button.
+    const std::tuple<QString, QString, QKeySequence> docks[] = {
+        {QStringLiteral("trafficDock"), tr("&Traffic log"), QKeySequence(Qt::CTRL | Qt::Key_T)},
+        {QStringLiteral("overviewDock"), tr("Bus &overview"),
+         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O)},
+        {QStringLiteral("trendDock"), tr("T&rends"), QKeySequence(Qt::CTRL | Qt::Key_G)}};
+    for (const auto& [name, text, key] : docks) {
+        QAction* a = dock(name)->toggleViewAction();
+        a->setText(text);
+        a->setShortcut(key);
+        view->addAction(a);
+    }
 }
 
 void MainWindow::teardown()
 {
+    // The pages watch drives through the hub and use their sessions: gone before them.
+    while (m_workspace->tabs()->count() > 0)
+        delete m_workspace->tabs()->widget(0);
     m_workspace->setDrive(nullptr, QString());
+    for (const QString& name : {QStringLiteral("overviewDock"), QStringLiteral("trendDock")}) {
+        QWidget* old = dock(name)->widget();
+        dock(name)->setWidget(new QLabel(tr("Not connected"), dock(name)));
+        delete old;
+    }
+    m_overview = nullptr;
+    m_trends = nullptr;
+    delete m_hub; // before the drives: its monitors use their sessions
+    m_hub = nullptr;
     if (m_stopAllAction) {
         m_toolbar->removeAction(m_stopAllAction);
         m_stopAllAction = nullptr;
@@ -159,6 +196,8 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
     m_drives = new BusDrives(m_client.get(), ProfileRegistry::builtIn(), this);
     m_poller = new DriveStatusPoller(m_drives, this);
     m_panel = new BusPanel(m_drives, m_poller, m_splitter);
+    m_hub = new MonitorHub(m_drives, this);
+    buildMonitorDocks();
     m_log->setDescriber(TrafficDescriber(m_drives, ProfileRegistry::builtIn()).describer());
     // STOP ALL is always on the toolbar and on the keyboard (StopAllButton::shortcuts()).
     m_stopAll = new StopAllButton(m_drives, m_toolbar);
@@ -172,7 +211,10 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
                 m_workspace->tabs()->setCurrentIndex(i);
         }
     });
-    delete m_splitter->widget(0);
+    // The placeholder of the first connection; on a reconnection the old panel is gone and
+    // the first widget is the workspace, which stays.
+    if (m_splitter->widget(0) != m_workspace)
+        delete m_splitter->widget(0);
     m_splitter->insertWidget(0, m_panel);
     m_splitter->setStretchFactor(0, 0);
     // The remembered division, or one where the bus list's columns fit.
@@ -250,13 +292,46 @@ void MainWindow::showDrive(const QVector<int>& slaves)
                               .arg(info.slave)
                               .arg(DeviceInfo::hexText(info.slave),
                                    DeviceInfo::switchText(info.slave), info.model, info.firmware));
-    // The monitoring side of the drive: test run and alarm histories.
+    // The monitoring side of the drive: live values, test run and alarm histories.
+    auto* monitor = new MonitorPage(m_hub, m_drives->parameters(info.slave), m_workspace->tabs());
+    // First: what a drive is doing is what one wants to see on selecting it (as on a TOP-1).
+    m_workspace->tabs()->insertTab(0, monitor, tr("Monitor"));
+    m_workspace->tabs()->setCurrentIndex(0);
     auto* run = new TestRunPanel(m_drives, info.slave, m_workspace->tabs());
     run->setPollingActive(m_poller->isActive());
     m_workspace->tabs()->addTab(run, tr("Test run"));
     auto* alarms = new AlarmsPage(m_drives->session(info.slave), m_workspace->tabs());
     m_workspace->tabs()->addTab(alarms, tr("Alarms"));
     alarms->refresh();
+}
+
+void MainWindow::buildMonitorDocks()
+{
+    m_overview = new BusOverview(m_drives, m_hub, dock(QStringLiteral("overviewDock")));
+    connect(m_overview, &BusOverview::driveActivated, this,
+            [this](int slave) { m_panel->view()->selectRow(m_panel->model()->rowOf(slave)); });
+    m_trends = new TrendPanel(m_hub, dock(QStringLiteral("trendDock")));
+    for (const auto& [name, widget] :
+         {std::pair(QStringLiteral("overviewDock"), (QWidget*)m_overview),
+          std::pair(QStringLiteral("trendDock"), (QWidget*)m_trends)}) {
+        QWidget* old = dock(name)->widget();
+        dock(name)->setWidget(widget);
+        delete old;
+    }
+}
+
+QDockWidget* MainWindow::dock(const QString& name) const
+{
+    return findChild<QDockWidget*>(name);
+}
+
+void MainWindow::monitorAll()
+{
+    if (!m_drives)
+        return;
+    dock(QStringLiteral("overviewDock"))->show();
+    dock(QStringLiteral("trendDock"))->show();
+    m_trends->showDrives(m_drives->slaves());
 }
 
 void MainWindow::writeToSelected()

@@ -9,6 +9,7 @@
 #include <memory>
 
 class QAction;
+class QDockWidget;
 class QLabel;
 class QSplitter;
 class QToolBar;
@@ -22,6 +23,9 @@ class DriveWorkspace;
 class AlarmBanner;
 class ModbusClient;
 class StopAllButton;
+class BusOverview;
+class MonitorHub;
+class TrendPanel;
 class TrafficLog;
 
 // The main window: the bus on the left (scan, drives, status lights), the selected drive's
@@ -50,6 +54,11 @@ public:
     DriveWorkspace* workspace() const { return m_workspace; }
     TrafficLog* trafficLog() const { return m_log.get(); }
     StopAllButton* stopAllButton() const { return m_stopAll; }
+    MonitorHub* monitorHub() const { return m_hub; }
+    BusOverview* busOverview() const { return m_overview; }
+    TrendPanel* trendPanel() const { return m_trends; }
+    // Shows the bus overview and the trends of every drive (they poll while shown).
+    void monitorAll();
 
 signals:
     void connectionChanged(bool connected);
@@ -66,6 +75,8 @@ private:
     void writeToSelected();
     void chooseConnection();
     void exportAlarms();
+    void buildMonitorDocks();
+    QDockWidget* dock(const QString& name) const;
 
     ClientFactory m_factory;
     std::unique_ptr<TrafficLog> m_log;
@@ -87,6 +98,9 @@ private:
     QLabel* m_connectionLabel;
     QVector<int> m_selected;
     QAction* m_multiWrite = nullptr;
+    MonitorHub* m_hub = nullptr;
+    BusOverview* m_overview = nullptr;
+    TrendPanel* m_trends = nullptr;
 };
 
 } // namespace opentop

@@ -4,6 +4,7 @@
 
 #include <QBrush>
 #include <QColor>
+#include <algorithm>
 
 namespace opentop {
 
@@ -15,15 +16,25 @@ TrafficLogModel::TrafficLogModel(int capacity, QObject* parent)
 
 void TrafficLogModel::append(const TrafficEntry& entry)
 {
-    const int excess = int(m_entries.size()) + 1 - m_capacity;
+    append(QVector<TrafficEntry>{entry});
+}
+
+void TrafficLogModel::append(const QVector<TrafficEntry>& entries)
+{
+    if (entries.isEmpty())
+        return;
+    // One removal and one insertion per batch: views re-lay out once, not once per frame.
+    const int incoming = std::min(int(entries.size()), m_capacity);
+    const int excess = int(m_entries.size()) + incoming - m_capacity;
     if (excess > 0) {
         beginRemoveRows(QModelIndex(), 0, excess - 1);
         m_entries.erase(m_entries.begin(), m_entries.begin() + excess);
         endRemoveRows();
     }
     const int row = int(m_entries.size());
-    beginInsertRows(QModelIndex(), row, row);
-    m_entries.push_back(entry);
+    beginInsertRows(QModelIndex(), row, row + incoming - 1);
+    for (auto it = entries.cend() - incoming; it != entries.cend(); ++it)
+        m_entries.push_back(*it);
     endInsertRows();
 }
 

@@ -3,6 +3,7 @@
 #include "TrafficEntry.h"
 
 #include <QAbstractTableModel>
+#include <QVector>
 #include <deque>
 
 namespace opentop {
@@ -33,6 +34,7 @@ public:
     explicit TrafficLogModel(int capacity, QObject* parent = nullptr);
 
     void append(const TrafficEntry& entry);
+    void append(const QVector<TrafficEntry>& entries);
     void clear();
     const TrafficEntry& entry(int row) const { return m_entries[size_t(row)]; }
     int capacity() const { return m_capacity; }

@@ -145,6 +145,7 @@ void TrafficLogView::setPaused(bool paused)
 
 void TrafficLogView::clear()
 {
+    m_pending.clear();
     m_model->clear();
     m_statistics.clear();
     refresh();
@@ -152,6 +153,7 @@ void TrafficLogView::clear()
 
 bool TrafficLogView::saveTo(const QString& path, QString* error)
 {
+    flush();
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly | QIODevice::Text)) {
         if (error)
@@ -175,7 +177,8 @@ void TrafficLogView::addEntry(const TrafficEntry& entry)
     if (m_paused || entry.sequence <= m_lastSequence)
         return; // paused: catchUp() takes it from the log; older: already shown
     m_lastSequence = entry.sequence;
-    m_model->append(entry);
+    // Rows are added in batches by refresh(): hundreds of frames a second, one re-layout.
+    m_pending.append(entry);
     m_statistics.add(entry);
     addDriveChoice(entry.slave);
     refreshSoon();
@@ -188,6 +191,7 @@ void TrafficLogView::catchUp()
     const QVector<TrafficEntry> entries = m_log->entries();
     for (const TrafficEntry& entry : entries)
         addEntry(entry);
+    flush();
     m_table->scrollToBottom();
 }
 
@@ -214,8 +218,15 @@ void TrafficLogView::refreshSoon()
         m_refresh->start();
 }
 
+void TrafficLogView::flush()
+{
+    m_model->append(m_pending);
+    m_pending.clear();
+}
+
 void TrafficLogView::refresh()
 {
+    flush();
     if (!m_paused)
         m_table->scrollToBottom();
     const QVector<int> slaves = m_statistics.slaves();

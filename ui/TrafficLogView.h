@@ -2,6 +2,7 @@
 
 #include "TrafficStatistics.h"
 
+#include <QVector>
 #include <QWidget>
 
 class QCheckBox;
@@ -45,6 +46,7 @@ private:
     void applyFilters();
     void refreshSoon();
     void refresh();
+    void flush(); // pending entries into the model
     void save();
 
     TrafficLog* m_log;
@@ -52,6 +54,7 @@ private:
     TrafficLogFilter* m_filter;
     TrafficStatistics m_statistics;
     quint64 m_lastSequence = 0;
+    QVector<TrafficEntry> m_pending;
     bool m_paused = false;
     QComboBox* m_drive;
     QComboBox* m_direction;

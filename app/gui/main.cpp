@@ -7,10 +7,12 @@
 #include "EditorRegistry.h"
 #include "MainWindow.h"
 #include "ModbusClient.h"
+#include "MonitorOptions.h"
 #include "TrafficLog.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <cstdio>
 
 int main(int argc, char* argv[])
 {
@@ -24,6 +26,7 @@ int main(int argc, char* argv[])
     parser.addHelpOption();
     parser.addVersionOption();
     opentop::ConnectionOptions::addTo(parser);
+    opentop::MonitorOptions::addTo(parser);
     parser.process(app);
     opentop::registerBuiltInEditors();
 
@@ -59,5 +62,10 @@ int main(int argc, char* argv[])
     window.connectTo(settings, settings.kind == opentop::ConnectionSettings::Kind::Simulated
                                    ? known
                                    : QHash<int, QString>());
+    QString optionError;
+    if (!opentop::MonitorOptions::apply(parser, &window, &optionError)) {
+        std::fprintf(stderr, "opentop: %s\n", qPrintable(optionError));
+        return 2;
+    }
     return app.exec();
 }

@@ -5,11 +5,15 @@
 #include "BackendFactory.h"
 #include "BusDrives.h"
 #include "BusListModel.h"
+#include "BusOverview.h"
+#include "BusOverviewModel.h"
 #include "BusPanel.h"
 #include "DeviceParameters.h"
 #include "DriveWorkspace.h"
 #include "EditorRegistry.h"
 #include "ModbusClient.h"
+#include "MonitorHub.h"
+#include "MonitorPage.h"
 #include "ParameterField.h"
 #include "ParameterPage.h"
 #include "SimBus.h"
@@ -18,6 +22,7 @@
 
 #include <QCoreApplication>
 #include <QDeadlineTimer>
+#include <QDockWidget>
 #include <QItemSelectionModel>
 #include <QRegularExpression>
 #include <QSettings>
@@ -161,4 +166,40 @@ TEST_F(MainWindowTest, StopAllIsOnTheToolbarAndFramesReachTheTrafficLog)
         }
         return false;
     }));
+}
+
+TEST_F(MainWindowTest, ADrivesMonitorComesFirstAndTheBusViewsPollOnlyWhileShown)
+{
+    select({2});
+    DriveWorkspace* workspace = window->workspace();
+    ASSERT_TRUE(waitFor([&] { return workspace->drive() != nullptr; }));
+    auto* monitor = qobject_cast<MonitorPage*>(workspace->tabs()->currentWidget());
+    ASSERT_NE(monitor, nullptr);
+    EXPECT_EQ(workspace->tabs()->indexOf(monitor), 0);
+    // Only the drive shown is polled (the page of the one selected before has gone).
+    EXPECT_TRUE(waitFor([&] { return window->monitorHub()->watched() == QVector<int>{2}; }))
+        << window->monitorHub()->watched().size();
+    ASSERT_TRUE(waitFor([&] { return monitor->samplesShown() > 0; }));
+    // The overview and the trends watch every drive while shown, and none once closed.
+    window->monitorAll();
+    EXPECT_EQ(window->monitorHub()->watched(), (QVector<int>{1, 2, 7, 150}));
+    ASSERT_TRUE(waitFor([&] { return window->monitorHub()->latest(150).has_value(); }));
+    EXPECT_EQ(window->busOverview()->model()->rowCount(), 4);
+    for (QDockWidget* dock : window->findChildren<QDockWidget*>())
+        dock->hide();
+    EXPECT_EQ(window->monitorHub()->watched(), QVector<int>{2});
+    // Another page of the drive in front: its monitor stops polling.
+    workspace->tabs()->setCurrentIndex(1);
+    EXPECT_TRUE(window->monitorHub()->watched().isEmpty());
+    // Another connection: the views of the old bus go with it, new ones watch the new bus.
+    ConnectionSettings other;
+    other.kind = ConnectionSettings::Kind::Simulated;
+    other.simSpec = QStringLiteral("dcpid@9");
+    window->connectTo(other, {{9, QStringLiteral("dcpid")}});
+    ASSERT_TRUE(waitFor([&] { return window->drives()->slaves() == QVector<int>{9}; }));
+    // The drive that answered first is selected and its monitor shown: only it is polled.
+    EXPECT_TRUE(waitFor([&] { return window->monitorHub()->watched() == QVector<int>{9}; }));
+    window->monitorAll();
+    EXPECT_EQ(window->monitorHub()->watched(), QVector<int>{9});
+    EXPECT_TRUE(waitFor([&] { return window->monitorHub()->latest(9).has_value(); }));
 }

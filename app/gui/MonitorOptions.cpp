@@ -1,0 +1,100 @@
+#include "MonitorOptions.h"
+
+#include "BusDrives.h"
+#include "BusPanel.h"
+#include "MainWindow.h"
+#include "MonitorHub.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QTimer>
+#include <cstdio>
+
+namespace opentop {
+
+namespace {
+
+const QString kMonitorAll = QStringLiteral("monitor-all");
+const QString kPollMs = QStringLiteral("poll-ms");
+const QString kQuitAfter = QStringLiteral("quit-after");
+
+void printStatistics(const MonitorHub& hub)
+{
+    double total = 0;
+    qint64 samples = 0;
+    qint64 errors = 0;
+    for (int slave : hub.watched()) {
+        const MonitorHub::Statistics st = hub.statistics(slave);
+        std::printf("drive %d: %lld samples, %lld errors, %.2f samples/s\n", slave,
+                    static_cast<long long>(st.samples), static_cast<long long>(st.errors),
+                    st.rate());
+        total += st.rate();
+        samples += st.samples;
+        errors += st.errors;
+    }
+    std::printf("monitored %d drives: %lld samples, %lld errors, %.1f samples/s in all\n",
+                int(hub.watched().size()), static_cast<long long>(samples),
+                static_cast<long long>(errors), total);
+    std::fflush(stdout);
+}
+
+} // namespace
+
+void MonitorOptions::addTo(QCommandLineParser& parser)
+{
+    parser.addOptions(
+        {{kMonitorAll,
+          QApplication::translate("main", "Open the bus overview and the trends of every drive.")},
+         {kPollMs, QApplication::translate("main", "Monitoring poll interval in milliseconds."),
+          QStringLiteral("ms")},
+         {kQuitAfter,
+          QApplication::translate("main", "Quit after this many seconds and print the monitoring "
+                                          "statistics (for measurements)."),
+          QStringLiteral("seconds")}});
+}
+
+bool MonitorOptions::apply(const QCommandLineParser& parser, MainWindow* window, QString* error)
+{
+    bool ok = true;
+    const int interval = parser.isSet(kPollMs) ? parser.value(kPollMs).toInt(&ok) : 0;
+    if (!ok || interval < 0) {
+        *error = QApplication::translate("main", "--poll-ms needs a number of milliseconds");
+        return false;
+    }
+    const double seconds = parser.isSet(kQuitAfter) ? parser.value(kQuitAfter).toDouble(&ok) : 0;
+    if (!ok || seconds < 0) {
+        *error = QApplication::translate("main", "--quit-after needs a number of seconds");
+        return false;
+    }
+    const bool all = parser.isSet(kMonitorAll);
+    QObject::connect(window, &MainWindow::connectionChanged, window,
+                     [window, interval, all](bool connected) {
+                         if (!connected || !window->monitorHub())
+                             return;
+                         if (interval > 0)
+                             window->monitorHub()->setInterval(interval);
+                         if (!all)
+                             return;
+                         // A simulated bus's drives are identified at once; on a real line
+                         // they are found by a scan first.
+                         QTimer::singleShot(1000, window, [window] {
+                             if (!window->drives()->slaves().isEmpty()) {
+                                 window->monitorAll();
+                                 return;
+                             }
+                             QObject::connect(window->busPanel(), &BusPanel::scanFinished, window,
+                                              [window] { window->monitorAll(); });
+                             window->busPanel()->startScan(1, 247);
+                         });
+                     });
+    if (seconds > 0) {
+        QTimer::singleShot(int(seconds * 1000), window, [window] {
+            if (window->monitorHub())
+                printStatistics(*window->monitorHub());
+            QApplication::quit();
+        });
+    }
+    return true;
+}
+
+} // namespace opentop

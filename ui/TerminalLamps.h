@@ -1,0 +1,38 @@
+#pragma once
+
+#include <QWidget>
+#include <optional>
+
+class QLabel;
+
+namespace opentop {
+
+struct ParameterMeta;
+
+// The ON/OFF fields of a bits parameter as lamps, e.g. the input terminals X0–X3 or outputs
+// Y0–Y1: a filled green lamp with "ON" or a hollow grey one with "OFF" under its name, so that
+// the state is never told by colour alone.
+class TerminalLamps : public QWidget
+{
+    Q_OBJECT
+public:
+    TerminalLamps(const ParameterMeta& meta, QWidget* parent = nullptr);
+
+    // Fields of `meta` shown as lamps: single bits whose values are OFF/ON (or unnamed).
+    static bool isLampField(const QStringList& values);
+    void setRaw(std::optional<double> raw); // nothing: not read (all lamps unknown)
+    // "X0 ON, X1 OFF, ..." as shown.
+    QString stateText() const;
+
+private:
+    struct Lamp
+    {
+        int bit = 0;
+        QString name;
+        QLabel* lamp = nullptr;
+        QLabel* state = nullptr;
+    };
+    QVector<Lamp> m_lamps;
+};
+
+} // namespace opentop
