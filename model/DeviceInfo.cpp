@@ -1,5 +1,7 @@
 #include "DeviceInfo.h"
 
+#include "ProfileRegistry.h"
+
 #include <QCoreApplication>
 
 namespace opentop {
@@ -35,6 +37,19 @@ QString DeviceInfo::stateText(State state)
         return QCoreApplication::translate("opentop::DeviceInfo", "unknown device");
     }
     return QString();
+}
+
+bool DeviceInfo::variantUnknown() const
+{
+    if (state != State::Present || !variant.isEmpty())
+        return false;
+    const Profile* p = ProfileRegistry::builtIn().family(family);
+    return p && !p->variants.isEmpty();
+}
+
+QString DeviceInfo::shortModel() const
+{
+    return variantUnknown() || model.isEmpty() ? family.toUpper() : model;
 }
 
 } // namespace opentop

@@ -27,6 +27,10 @@ struct DeviceInfo
     QString detail;   // the error or remark behind the state
 
     // Machine number as the DBU's rotary switches show it: 150 -> "96h", "SW1=9 SW2=6".
+    // Present, of a family with variants, and the drive did not say which (nor did anyone).
+    bool variantUnknown() const;
+    // The model for short labels: "DBU200-D", or the family ("DBU") while the variant is unknown.
+    QString shortModel() const;
     static QString hexText(int slave);
     static QString switchText(int slave);
     static QString stateText(State state);

@@ -38,6 +38,20 @@ std::optional<double> MonitorSample::signedSpeed(const QString& parameter) const
     return number;
 }
 
+QString MonitorSample::signedText(const QString& parameter) const
+{
+    const MonitorValue* v = find(parameter);
+    const std::optional<double> number = signedSpeed(parameter);
+    if (!v || !v->meta || !number)
+        return QString();
+    // Only a magnitude made negative needs new text; everything else keeps the codec's.
+    if (*number >= 0 || v->value.number < 0 || !v->meta->spec.options.isEmpty())
+        return v->text;
+    const QString digits = QString::number(*number, 'f', v->meta->spec.decimals);
+    return v->meta->spec.unit.isEmpty() ? digits
+                                        : QStringLiteral("%1 %2").arg(digits, v->meta->spec.unit);
+}
+
 struct DeviceMonitor::Poll
 {
     quint64 generation = 0;

@@ -48,6 +48,9 @@ struct MonitorSample
     // A speed parameter's value made signed: negative when the "reverse" role holds, for
     // registers that hold the magnitude only.
     std::optional<double> signedSpeed(const QString& parameter) const;
+    // The value as text with its unit, signed like signedSpeed(): "-900 r/min"; empty when
+    // not read.
+    QString signedText(const QString& parameter) const;
 };
 
 // Polls a drive's "monitor" role parameters at an interval, in as few requests as the drive

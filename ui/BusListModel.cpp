@@ -15,14 +15,6 @@ namespace {
 const QColor kProblem(0xb0, 0x1c, 0x1c);
 const QColor kGood(0x1b, 0x7f, 0x2a);
 
-bool variantUnknown(const DeviceInfo& d)
-{
-    if (d.state != DeviceInfo::State::Present || !d.variant.isEmpty())
-        return false;
-    const Profile* p = ProfileRegistry::builtIn().family(d.family);
-    return p && !p->variants.isEmpty();
-}
-
 } // namespace
 
 BusListModel::BusListModel(QObject* parent)
@@ -113,7 +105,7 @@ QVariant BusListModel::display(const DeviceInfo& d, int column) const
     case Family:
         return d.family.isEmpty() ? tr("—") : d.family.toUpper();
     case Model:
-        if (variantUnknown(d))
+        if (d.variantUnknown())
             return tr("%1 — variant unknown").arg(d.family.toUpper());
         return d.model.isEmpty() ? tr("—") : d.model;
     case Firmware:
@@ -141,7 +133,7 @@ QString BusListModel::toolTip(const DeviceInfo& d, int column) const
     case Light:
         return tr("Status light %1: %2").arg(DriveStatus::ledName(s.led), s.ledText());
     case Model:
-        if (variantUnknown(d))
+        if (d.variantUnknown())
             return tr("The drive does not report its variant. Choose it from the context menu "
                       "(Variant) so that values are checked against the right limits.");
         break;

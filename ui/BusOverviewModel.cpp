@@ -101,7 +101,7 @@ QString BusOverviewModel::cell(int slave, int column) const
 {
     const DeviceInfo info = m_drives->info(slave);
     if (column == Drive)
-        return tr("%1 %2").arg(slave).arg(info.model);
+        return tr("%1 %2").arg(slave).arg(info.shortModel());
     const std::optional<MonitorSample> s = m_hub->latest(slave);
     if (column == Communication) {
         if (m_errors.contains(slave))
@@ -115,10 +115,10 @@ QString BusOverviewModel::cell(int slave, int column) const
     if (!session)
         return QString();
     const Profile& profile = session->profile();
+    // Speeds signed by the direction, as the drive's own display shows them.
     const auto roleText = [&](const QString& role) {
         const ParameterMeta* m = RoleEvaluator::parameter(profile, role);
-        const MonitorValue* v = m ? s->find(m->name) : nullptr;
-        return v && v->value.valid ? v->text : QString();
+        return m ? s->signedText(m->name) : QString();
     };
     switch (column) {
     case State: {
@@ -129,13 +129,8 @@ QString BusOverviewModel::cell(int slave, int column) const
             state += QLatin1Char(' ') + (*s->reverse ? tr("CCW") : tr("CW"));
         return state;
     }
-    case Speed: {
-        const ParameterMeta* m = RoleEvaluator::parameter(profile, QStringLiteral("currentSpeed"));
-        const std::optional<double> v = m ? s->signedSpeed(m->name) : std::nullopt;
-        if (v && m->spec.unit == QLatin1String("r/min"))
-            return tr("%1 r/min").arg(*v, 0, 'f', 0);
+    case Speed:
         return roleText(QStringLiteral("currentSpeed"));
-    }
     case DisplaySpeed:
         return s->currentShown
                    ? QStringLiteral("%1 %2").arg(s->currentShown->text, s->currentShown->unit)

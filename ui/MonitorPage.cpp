@@ -291,17 +291,13 @@ void MonitorPage::showSample(const MonitorSample& s)
                                          : tr("not read"));
         }
     }
+    // Speeds signed by the direction: a register holding the magnitude would hide a reverse run.
     const auto text = [&](const QString& role) {
         const ParameterMeta* m = RoleEvaluator::parameter(profile, role);
-        const MonitorValue* v = m ? s.find(m->name) : nullptr;
-        return v && v->value.valid ? v->text : QStringLiteral("—");
+        const QString t = m ? s.signedText(m->name) : QString();
+        return t.isEmpty() ? QStringLiteral("—") : t;
     };
-    const ParameterMeta* speed = RoleEvaluator::parameter(profile, kCurrent);
-    const std::optional<double> signedSpeed = speed ? s.signedSpeed(speed->name) : std::nullopt;
-    // The sign is the direction: a register holding the magnitude would hide a reverse run.
-    m_current->setText(signedSpeed && speed->spec.unit == QLatin1String("r/min")
-                           ? tr("%1 r/min").arg(*signedSpeed, 0, 'f', 0)
-                           : text(kCurrent));
+    m_current->setText(text(kCurrent));
     m_currentDisplay->setText(
         s.currentShown && s.currentShown->unit != QLatin1String("r/min")
             ? tr("%1 %2 on the drive's display").arg(s.currentShown->text, s.currentShown->unit)

@@ -96,9 +96,7 @@ TrendChart::~TrendChart()
 QString TrendChart::driveTitle(const BusDrives* drives, int slave)
 {
     const DeviceInfo info = drives ? drives->info(slave) : DeviceInfo();
-    QString name = info.model;
-    if (name.isEmpty())
-        name = info.family.toUpper(); // as the bus list shows a drive of unknown variant
+    const QString name = info.shortModel(); // "DBU" while the variant is unknown
     return name.isEmpty() ? tr("Drive %1").arg(slave)
                           : QStringLiteral("%1 %2").arg(slave).arg(name);
 }

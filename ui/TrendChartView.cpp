@@ -24,6 +24,9 @@ TrendChartView::TrendChartView(QChart* chart, QWidget* parent)
     setRubberBand(QChartView::NoRubberBand);
     setRenderHint(QPainter::Antialiasing);
     setMouseTracking(false);
+    // The markers are painted over the scene: a partial update after the time axis scrolled
+    // would leave their old labels behind.
+    setViewportUpdateMode(QGraphicsView::FullViewportUpdate);
 }
 
 void TrendChartView::setMarkers(std::optional<qint64> a, std::optional<qint64> b)

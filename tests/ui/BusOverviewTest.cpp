@@ -66,6 +66,8 @@ TEST_F(BusOverviewTest, ShowsEveryDriveLiveWhileShown)
         [&] { return cell(2, BusOverviewModel::Speed) == QStringLiteral("-1200 r/min"); }, 8000))
         << qPrintable(cell(2, BusOverviewModel::Speed));
     EXPECT_EQ(cell(2, BusOverviewModel::State), QStringLiteral("Running CCW"));
+    // The target register holds the magnitude; shown signed like the speed.
+    EXPECT_EQ(cell(2, BusOverviewModel::Target), QStringLiteral("-1200 r/min"));
     EXPECT_EQ(cell(1, BusOverviewModel::State), QStringLiteral("Stopped"));
     EXPECT_EQ(cell(1, BusOverviewModel::Speed), QStringLiteral("0 r/min"));
     EXPECT_EQ(cell(1, BusOverviewModel::Load), QStringLiteral("0 %"));
