@@ -104,37 +104,3 @@ TEST_F(CompareDialogTest, ARefusedFileSaysWhy)
     EXPECT_TRUE(dialog.errorText().contains(QStringLiteral("JSON")))
         << qPrintable(dialog.errorText());
 }
-
-// Screenshots for the README: only when OPENTOP_SHOT_DIR names a directory.
-TEST_F(CompareDialogTest, ScreenshotsWhenAsked)
-{
-    const QString shots = qEnvironmentVariable("OPENTOP_SHOT_DIR");
-    if (shots.isEmpty())
-        GTEST_SKIP() << "set OPENTOP_SHOT_DIR to save screenshots";
-    start(QStringLiteral("dbu200@1,dcpid@5"), {1, 5});
-    const QString file = path(QStringLiteral("bus.json"));
-    ASSERT_TRUE(backUp({1, 5}, file));
-    setRegister(1, address(kDbu, kAccel), 123);
-    setRegister(1, address(kDbu, QStringLiteral("spno2.decel")), 45);
-    CompareDialog dialog(drives.get());
-    dialog.setDriveSide(CompareDialog::A, 1);
-    ASSERT_TRUE(dialog.setFileSide(CompareDialog::B, file, 1));
-    dialog.show();
-    ASSERT_TRUE(compare(dialog));
-    dialog.table()->scrollToItem(dialog.table()->item(0, 0));
-    waitUntil([] { return false; }, 300);
-    EXPECT_TRUE(dialog.grab().save(shots + QStringLiteral("/compare.png")));
-    dialog.setDifferencesOnly(true);
-    waitUntil([] { return false; }, 100);
-    EXPECT_TRUE(dialog.grab().save(shots + QStringLiteral("/compare-differences.png")));
-
-    RestoreDialog restore(drives.get());
-    ASSERT_TRUE(restore.setPath(file));
-    restore.show();
-    ASSERT_TRUE(runUntil(&restore, &RestoreDialog::previewFinished, [&] { restore.preview(); }));
-    waitUntil([] { return false; }, 300);
-    EXPECT_TRUE(restore.grab().save(shots + QStringLiteral("/restore-preview.png")));
-    ASSERT_TRUE(runUntil(&restore, &RestoreDialog::writeFinished, [&] { restore.write(); }));
-    waitUntil([] { return false; }, 300);
-    EXPECT_TRUE(restore.grab().save(shots + QStringLiteral("/restore-report.png")));
-}
