@@ -120,3 +120,41 @@ TEST_F(MonitorHubTest, ADriveWatchedBeforeItIsIdentifiedStartsOnceItIs)
     drives->update(info);
     EXPECT_TRUE(waitUntil([&] { return hub->statistics(3).samples >= 1; }));
 }
+
+TEST_F(MonitorHubTest, CommandsOvertakePollingAndTheDrivesShareTheRestEvenly)
+{
+    // Sixteen drives on a real-speed line (19200 bit/s): polling alone keeps the bus busy.
+    startBus(QStringLiteral("dbu200@1-16"), 19200);
+    drives = std::make_unique<BusDrives>(client.get(), ProfileRegistry::builtIn());
+    for (int s = 1; s <= 16; ++s) {
+        DeviceInfo info;
+        info.slave = s;
+        info.state = DeviceInfo::State::Present;
+        info.family = QStringLiteral("dbu");
+        drives->update(info);
+    }
+    hub = std::make_unique<MonitorHub>(drives.get());
+    hub->setInterval(20);
+    QObject view;
+    for (int s = 1; s <= 16; ++s)
+        hub->watch(s, &view);
+    ASSERT_TRUE(waitUntil([&] { return hub->statistics(16).samples >= 3; }, 10000));
+    // A user's read while every drive has polls queued: it waits at most for the transaction
+    // on the wire (about 15 ms), not for the queue (16 drives × 4 requests, 0.2–0.8 s).
+    QElapsedTimer timer;
+    timer.start();
+    const DeviceSession::Outcome read = await<DeviceSession::Outcome>(
+        [&](auto done) { drives->session(5)->read(QStringLiteral("spno2.speed"), done); });
+    const qint64 elapsed = timer.elapsed();
+    ASSERT_TRUE(read.ok) << qPrintable(read.error);
+    EXPECT_LT(elapsed, 100);
+    idle(1500);
+    double lowest = 1e9;
+    double highest = 0;
+    for (int s = 1; s <= 16; ++s) {
+        lowest = std::min(lowest, hub->statistics(s).rate());
+        highest = std::max(highest, hub->statistics(s).rate());
+    }
+    EXPECT_GT(lowest, 0.0);
+    EXPECT_GT(lowest / highest, 0.8) << lowest << " .. " << highest;
+}
