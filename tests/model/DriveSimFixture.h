@@ -3,6 +3,7 @@
 // An in-process simulated bus with sessions and helpers to wait for asynchronous engines, for
 // the monitor, alarm history and run control tests.
 
+#include "BusDrives.h"
 #include "DeviceSession.h"
 #include "ModbusClient.h"
 #include "ProfileRegistry.h"
@@ -61,6 +62,27 @@ protected:
                                                 device ? device->variant() : QString());
         }
         return s.get();
+    }
+
+    // A BusDrives over this bus's client with `slaves` identified as the simulator has them:
+    // family and variant, the variant in capitals (or the family's) as the model.
+    std::unique_ptr<BusDrives> identifiedDrives(const QVector<int>& slaves)
+    {
+        auto drives = std::make_unique<BusDrives>(client.get(), ProfileRegistry::builtIn());
+        for (int slave : slaves) {
+            SimDevice* device = bus->device(slave);
+            EXPECT_TRUE(device) << "no simulated drive at " << slave;
+            if (!device)
+                continue;
+            DeviceInfo info;
+            info.slave = slave;
+            info.state = DeviceInfo::State::Present;
+            info.family = device->profile().family;
+            info.variant = device->variant();
+            info.model = (info.variant.isEmpty() ? info.family : info.variant).toUpper();
+            drives->update(info);
+        }
+        return drives;
     }
 
     // Runs `start`, which must call the callback it gets, and returns what it delivered.

@@ -15,14 +15,7 @@ protected:
     void start(const QString& spec, const QVector<int>& slaves)
     {
         startBus(spec);
-        drives = std::make_unique<BusDrives>(client.get(), ProfileRegistry::builtIn());
-        for (int s : slaves) {
-            DeviceInfo info;
-            info.slave = s;
-            info.state = DeviceInfo::State::Present;
-            info.family = session(s)->profile().family;
-            drives->update(info);
-        }
+        drives = identifiedDrives(slaves);
         hub = std::make_unique<MonitorHub>(drives.get());
         hub->setInterval(50);
     }
@@ -125,14 +118,7 @@ TEST_F(MonitorHubTest, CommandsOvertakePollingAndTheDrivesShareTheRestEvenly)
 {
     // Sixteen drives on a real-speed line (19200 bit/s): polling alone keeps the bus busy.
     startBus(QStringLiteral("dbu200@1-16"), 19200);
-    drives = std::make_unique<BusDrives>(client.get(), ProfileRegistry::builtIn());
-    for (int s = 1; s <= 16; ++s) {
-        DeviceInfo info;
-        info.slave = s;
-        info.state = DeviceInfo::State::Present;
-        info.family = QStringLiteral("dbu");
-        drives->update(info);
-    }
+    drives = identifiedDrives({1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16});
     hub = std::make_unique<MonitorHub>(drives.get());
     hub->setInterval(20);
     QObject view;

@@ -20,15 +20,7 @@ protected:
     void SetUp() override
     {
         startBus(QStringLiteral("dbu200@1,dbu400@2,dcpid@7"));
-        drives = std::make_unique<BusDrives>(client.get(), ProfileRegistry::builtIn());
-        for (int s : {1, 2, 7}) {
-            DeviceInfo info;
-            info.slave = s;
-            info.state = DeviceInfo::State::Present;
-            info.family = session(s)->profile().family;
-            info.model = s == 7 ? QStringLiteral("DCPID-20A") : bus->device(s)->variant().toUpper();
-            drives->update(info);
-        }
+        drives = identifiedDrives({1, 2, 7});
         hub = std::make_unique<MonitorHub>(drives.get());
         hub->setInterval(50);
         overview = std::make_unique<BusOverview>(drives.get(), hub.get());
@@ -75,7 +67,7 @@ TEST_F(BusOverviewTest, ShowsEveryDriveLiveWhileShown)
     EXPECT_EQ(cell(1, BusOverviewModel::DisplaySpeed), QStringLiteral("0.000 r/min"));
     // The DC controller: its speed is a commutation frequency.
     EXPECT_EQ(cell(7, BusOverviewModel::Speed), QStringLiteral("0 1/s"));
-    EXPECT_EQ(cell(7, BusOverviewModel::Drive), QStringLiteral("7 DCPID-20A"));
+    EXPECT_EQ(cell(7, BusOverviewModel::Drive), QStringLiteral("7 DCPID"));
 }
 
 TEST_F(BusOverviewTest, AnAlarmIsNamedAndMarkedRed)

@@ -19,18 +19,7 @@ protected:
     void start(const QString& spec, const QVector<int>& slaves)
     {
         startBus(spec);
-        drives = std::make_unique<BusDrives>(client.get(), ProfileRegistry::builtIn());
-        for (int slave : slaves) {
-            SimDevice* device = bus->device(slave);
-            ASSERT_TRUE(device);
-            DeviceInfo info;
-            info.slave = slave;
-            info.state = DeviceInfo::State::Present;
-            info.family = device->profile().family;
-            info.variant = device->variant();
-            info.model = device->variant().isEmpty() ? info.family : device->variant().toUpper();
-            drives->update(info);
-        }
+        drives = identifiedDrives(slaves);
         settings.kind = ConnectionSettings::Kind::Simulated;
         settings.simSpec = bus->spec();
     }

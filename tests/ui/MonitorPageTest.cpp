@@ -22,13 +22,7 @@ protected:
     void open(const QString& spec, int slave)
     {
         startBus(spec);
-        drives = std::make_unique<BusDrives>(client.get(), ProfileRegistry::builtIn());
-        DeviceInfo info;
-        info.slave = slave;
-        info.state = DeviceInfo::State::Present;
-        info.family = session(slave)->profile().family;
-        info.variant = bus->device(slave)->variant();
-        drives->update(info);
+        drives = identifiedDrives({slave});
         hub = std::make_unique<MonitorHub>(drives.get());
         hub->setInterval(50);
         bool read = false;

@@ -14,16 +14,7 @@ protected:
     void SetUp() override
     {
         startBus(QStringLiteral("dbu200@1,dbu200@2"));
-        drives = std::make_unique<BusDrives>(client.get(), ProfileRegistry::builtIn());
-        for (int slave : {1, 2}) {
-            DeviceInfo info;
-            info.slave = slave;
-            info.state = DeviceInfo::State::Present;
-            info.family = QStringLiteral("dbu");
-            info.variant = QStringLiteral("dbu200");
-            info.model = QStringLiteral("DBU200");
-            drives->update(info);
-        }
+        drives = identifiedDrives({1, 2});
         hub = std::make_unique<MonitorHub>(drives.get());
         hub->setInterval(50);
     }
