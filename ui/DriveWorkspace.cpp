@@ -120,7 +120,11 @@ void DriveWorkspace::updateButtons()
         int onPage = 0;
         for (const QString& n : m_parameters->pendingNames())
             onPage += page->parameterNames().contains(n) ? 1 : 0;
-        m_tabs->setTabText(i, onPage ? QStringLiteral("%1 ●").arg(page->title()) : page->title());
+        // Only on a change: every monitor sample updates entries, and a new tab text makes the
+        // tab bar lay itself out again.
+        const QString text = onPage ? QStringLiteral("%1 ●").arg(page->title()) : page->title();
+        if (m_tabs->tabText(i) != text)
+            m_tabs->setTabText(i, text);
     }
 }
 

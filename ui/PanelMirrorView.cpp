@@ -79,10 +79,13 @@ void PanelMirrorView::paintPanel()
 {
     // Segment displays: red digits on black; an alarm flashes.
     const bool lit = !m_shown.alarm || m_blinkOn;
+    m_panel->setText(m_shown.text);
+    if (m_lit == lit)
+        return; // style sheets are costly to apply
+    m_lit = lit;
     m_panel->setStyleSheet(
         QStringLiteral("QLabel#panelDigits { background: #111; color: %1; border-radius: 6px; }")
             .arg(lit ? QStringLiteral("#ff3b30") : QStringLiteral("#3a0d0b")));
-    m_panel->setText(m_shown.text);
 }
 
 } // namespace opentop

@@ -4,6 +4,7 @@
 
 #include <QTimer>
 #include <QWidget>
+#include <optional>
 
 class QLabel;
 
@@ -35,6 +36,7 @@ private:
     PanelMirror::Shown m_shown;
     QTimer m_blink;
     bool m_blinkOn = true;
+    std::optional<bool> m_lit; // the style applied
 };
 
 } // namespace opentop

@@ -54,6 +54,10 @@ TerminalLamps::TerminalLamps(const ParameterMeta& meta, QWidget* parent)
 
 void TerminalLamps::setRaw(std::optional<double> raw)
 {
+    // Style sheets are costly to apply; samples mostly repeat the state shown.
+    if (m_shown && raw == *m_shown)
+        return;
+    m_shown = raw;
     for (Lamp& l : m_lamps) {
         if (!raw) {
             l.lamp->setStyleSheet(kUnknown);

@@ -33,6 +33,7 @@ private:
         QLabel* state = nullptr;
     };
     QVector<Lamp> m_lamps;
+    std::optional<std::optional<double>> m_shown; // what the lamps show (nothing: not set yet)
 };
 
 } // namespace opentop
