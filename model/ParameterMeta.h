@@ -49,6 +49,7 @@ struct BitField
     QString name;
     QString label;
     QStringList values; // label per field value, optional
+    QString function;   // a terminal's state: the setting that assigns its function ("io.x0")
 };
 
 // What may change with the drive variant or with another parameter's value.

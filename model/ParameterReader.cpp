@@ -297,7 +297,7 @@ bool ParameterReader::readBits(const QJsonArray& a, ParameterMeta* meta)
         if (!m_json.onlyKeys(b,
                              {QStringLiteral("bit"), QStringLiteral("width"),
                               QStringLiteral("name"), QStringLiteral("label"),
-                              QStringLiteral("values")},
+                              QStringLiteral("values"), QStringLiteral("function")},
                              where))
             return false;
         BitField field;
@@ -305,6 +305,7 @@ bool ParameterReader::readBits(const QJsonArray& a, ParameterMeta* meta)
         field.width = int(m_json.integer(b, QStringLiteral("width"), false).value_or(1));
         field.name = m_json.string(b, QStringLiteral("name")).value_or(QString());
         field.label = m_json.string(b, QStringLiteral("label")).value_or(QString());
+        field.function = m_json.string(b, QStringLiteral("function"), false).value_or(QString());
         if (m_json.failed())
             return false;
         if (field.bit < 0 || field.width < 1 || field.bit + field.width > width)

@@ -200,6 +200,13 @@ bool crossCheck(const QJsonObject& root, JsonReader& json, Profile* p)
         }
         if (m.spec.defaultRaw && !rawAllowedBy(m.spec, *m.spec.defaultRaw))
             return json.fail(tr("%1: the default is not among its allowed values").arg(where));
+        for (const BitField& b : m.bits) {
+            const ParameterMeta* f = b.function.isEmpty() ? nullptr : p->parameter(b.function);
+            if (!b.function.isEmpty() && (!f || !f->isReadable()))
+                return json.fail(tr("%1: bit field \"%2\": function \"%3\" is not a readable "
+                                    "parameter")
+                                     .arg(where, b.name, b.function));
+        }
         for (const ValueCondition& c : m.conditions) {
             if (!c.param.isEmpty() && (c.param == m.name || !p->parameter(c.param)))
                 return json.fail(

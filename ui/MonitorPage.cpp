@@ -132,6 +132,11 @@ MonitorPage::MonitorPage(MonitorHub* hub, DeviceParameters* parameters, QWidget*
                 const DeviceParameters::Entry* e = m_parameters->entry(n);
                 if (displayNames.contains(n) && e && e->state == DeviceParameters::State::Clean)
                     m_displayChanged.start();
+                // A terminal's function read or written: what its lamp means.
+                for (TerminalLamps* lamps : std::as_const(m_lamps)) {
+                    if (lamps->functionParameters().contains(n))
+                        lamps->setFunctionText(n, m_parameters->deviceText(n));
+                }
                 if (m_last)
                     showPanel(*m_last);
             });
@@ -260,6 +265,8 @@ void MonitorPage::buildRows(const MonitorSample& sample)
                 auto* row = new TerminalLamps(*v.meta, this);
                 m_lamps.insert(v.meta->name, row);
                 m_details->addRow(v.meta->label + QLatin1Char(':'), row);
+                for (const QString& f : row->functionParameters())
+                    row->setFunctionText(f, m_parameters->deviceText(f));
             }
             continue;
         }

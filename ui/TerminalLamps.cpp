@@ -36,7 +36,12 @@ TerminalLamps::TerminalLamps(const ParameterMeta& meta, QWidget* parent)
         if (f.width != 1 || !isLampField(f.values))
             continue;
         const int column = m_lamps.size();
-        Lamp lamp{f.bit, f.label.isEmpty() ? f.name : f.label, new QLabel(this), new QLabel(this)};
+        Lamp lamp{f.bit,
+                  f.label.isEmpty() ? f.name : f.label,
+                  new QLabel(this),
+                  new QLabel(this),
+                  f.function,
+                  nullptr};
         lamp.lamp->setFixedSize(18, 18);
         lamp.lamp->setObjectName(QStringLiteral("lamp_%1").arg(f.name));
         auto* name = new QLabel(lamp.name, this);
@@ -46,6 +51,11 @@ TerminalLamps::TerminalLamps(const ParameterMeta& meta, QWidget* parent)
         grid->addWidget(name, 0, column, Qt::AlignHCenter);
         grid->addWidget(lamp.lamp, 1, column, Qt::AlignHCenter);
         grid->addWidget(lamp.state, 2, column, Qt::AlignHCenter);
+        if (!f.function.isEmpty()) {
+            lamp.functionLabel = new QLabel(this);
+            lamp.functionLabel->setEnabled(false); // secondary: what the terminal is for
+            grid->addWidget(lamp.functionLabel, 3, column, Qt::AlignHCenter);
+        }
         m_lamps << lamp;
     }
     grid->setColumnStretch(m_lamps.size(), 1);
@@ -71,6 +81,33 @@ void TerminalLamps::setRaw(std::optional<double> raw)
         l.lamp->setToolTip(on ? tr("%1 is ON").arg(l.name) : tr("%1 is OFF").arg(l.name));
         l.lamp->setAccessibleName(l.lamp->toolTip());
     }
+}
+
+QStringList TerminalLamps::functionParameters() const
+{
+    QStringList names;
+    for (const Lamp& l : m_lamps) {
+        if (!l.function.isEmpty())
+            names << l.function;
+    }
+    return names;
+}
+
+void TerminalLamps::setFunctionText(const QString& parameter, const QString& text)
+{
+    for (Lamp& l : m_lamps) {
+        if (l.function == parameter && l.functionLabel)
+            l.functionLabel->setText(text);
+    }
+}
+
+QString TerminalLamps::functionText(const QString& parameter) const
+{
+    for (const Lamp& l : m_lamps) {
+        if (l.function == parameter && l.functionLabel)
+            return l.functionLabel->text();
+    }
+    return QString();
 }
 
 QString TerminalLamps::stateText() const

@@ -23,6 +23,12 @@ public:
     void setRaw(std::optional<double> raw); // nothing: not read (all lamps unknown)
     // "X0 ON, X1 OFF, ..." as shown.
     QString stateText() const;
+    // Settings that assign the terminals' functions (a field's "function"), in lamp order.
+    QStringList functionParameters() const;
+    // Shows under the terminal what `parameter` assigns to it ("Warning-Out"), so that a lit
+    // output says what it means.
+    void setFunctionText(const QString& parameter, const QString& text);
+    QString functionText(const QString& parameter) const;
 
 private:
     struct Lamp
@@ -31,6 +37,8 @@ private:
         QString name;
         QLabel* lamp = nullptr;
         QLabel* state = nullptr;
+        QString function;
+        QLabel* functionLabel = nullptr;
     };
     QVector<Lamp> m_lamps;
     std::optional<std::optional<double>> m_shown; // what the lamps show (nothing: not set yet)

@@ -162,6 +162,15 @@ INSTANTIATE_TEST_SUITE_P(
         Rejection{"string without count", 10,
                   [](QJsonObject& p) { p.remove(QStringLiteral("count")); },
                   "string parameters need \"count\""},
+        Rejection{"terminal function not a parameter", 12,
+                  [](QJsonObject& p) {
+                      p[QStringLiteral("bits")] = QJsonArray{
+                          QJsonObject{{QStringLiteral("bit"), 0},
+                                      {QStringLiteral("name"), QStringLiteral("x0")},
+                                      {QStringLiteral("label"), QStringLiteral("X0")},
+                                      {QStringLiteral("function"), QStringLiteral("io.x9")}}};
+                  },
+                  "bit field \"x0\": function \"io.x9\" is not a readable parameter"},
         Rejection{"storeWith not a command", 1,
                   [](QJsonObject& p) { p[QStringLiteral("storeWith")] = QStringLiteral("speed"); },
                   "storeWith \"speed\" is not a command parameter"},

@@ -78,6 +78,12 @@ TEST_F(MonitorPageTest, AStartedDriveRampsUpAndItsTerminalsLight)
     EXPECT_EQ(page->valueText(QStringLiteral("status.driver.spno_bits")), QStringLiteral("SPno1"));
     EXPECT_EQ(page->lamps(QStringLiteral("status.inputs"))->stateText(),
               QStringLiteral("X0 ON, X1 OFF, X2 OFF, X3 OFF"));
+    // Each terminal says what it is for (Mode2 defaults: X0 is CW/STOP).
+    EXPECT_EQ(page->lamps(QStringLiteral("status.inputs"))->functionText(QStringLiteral("io.x0")),
+              drives->parameters(1)->deviceText(QStringLiteral("io.x0")));
+    EXPECT_FALSE(page->lamps(QStringLiteral("status.outputs"))
+                     ->functionText(QStringLiteral("io.y0"))
+                     .isEmpty());
     // The panel shows the speed in its unit (r/min with 3 decimals, fitted to 5 digits).
     EXPECT_EQ(page->panel()->panelText(), QStringLiteral("2400.0"));
     EXPECT_EQ(page->panel()->light()->led(), DriveStatus::Led::Orange);
@@ -125,4 +131,23 @@ TEST_F(MonitorPageTest, DcControllerSpeedNeedsTheMotorsCommutationsPerRevolution
     EXPECT_TRUE(page->currentSpeedText().endsWith(QStringLiteral("0 r/min")))
         << qPrintable(page->currentSpeedText());
     EXPECT_EQ(QSettings().value(QStringLiteral("monitor/commutationsPerRevolution/7")).toInt(), 6);
+}
+
+TEST_F(MonitorPageTest, AnOutputLampSaysWhatItsTerminalIsAssignedTo)
+{
+    open(QStringLiteral("dbu200@1"), 1);
+    ASSERT_TRUE(waitUntil([&] { return page->samplesShown() >= 1; }));
+    TerminalLamps* outputs = page->lamps(QStringLiteral("status.outputs"));
+    ASSERT_NE(outputs, nullptr);
+    EXPECT_EQ(outputs->functionParameters(),
+              (QStringList{QStringLiteral("io.y0"), QStringLiteral("io.y1")}));
+    // Y1 set to another function on the drive: once read, its lamp says so.
+    DeviceParameters* parameters = drives->parameters(1);
+    const QString before = outputs->functionText(QStringLiteral("io.y1"));
+    EXPECT_EQ(before, QStringLiteral("Alarm-Out")); // the factory default
+    control(1, {QStringLiteral("set"), QStringLiteral("0x210B"), QStringLiteral("5")});
+    bool read = false;
+    parameters->refresh({QStringLiteral("io.y1")}, [&read](int) { read = true; });
+    ASSERT_TRUE(waitUntil([&] { return read; }));
+    EXPECT_EQ(outputs->functionText(QStringLiteral("io.y1")), QStringLiteral("Warning-Out"));
 }
