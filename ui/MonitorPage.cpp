@@ -10,6 +10,7 @@
 #include "StatusLight.h"
 #include "TerminalLamps.h"
 #include "TrendChart.h"
+#include "TrendDefaults.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -106,13 +107,7 @@ MonitorPage::MonitorPage(MonitorHub* hub, DeviceParameters* parameters, QWidget*
     splitter->setStretchFactor(1, 1);
     layout->addWidget(splitter, 1);
 
-    // The chart: speeds and load of this drive.
-    QVector<TrendSource> sources;
-    for (const QString& role : {kCurrent, kTarget, kLoad}) {
-        if (const ParameterMeta* m = RoleEvaluator::parameter(parameters->profile(), role))
-            sources << TrendSource{m_slave, m->name};
-    }
-    m_chart->setSources(sources);
+    m_chart->setSources(TrendDefaults::forDrive(parameters->profile(), m_slave));
 
     connect(hub, &MonitorHub::sample, this, [this](int slave, const MonitorSample& s) {
         if (slave == m_slave)
@@ -170,14 +165,18 @@ QWidget* MonitorPage::buildReadouts()
     big->addWidget(caption(kCurrent, tr("Speed")), 0, 0);
     big->addWidget(m_current, 1, 0);
     big->addWidget(m_currentDisplay, 2, 0);
-    big->addWidget(caption(kTarget, tr("Target speed")), 0, 1);
-    big->addWidget(m_target, 1, 1);
-    big->addWidget(caption(kLoad, tr("Load")), 0, 2);
-    big->addWidget(m_load, 1, 2);
+    // A family without a target speed or a load role shows neither caption nor value.
+    for (const auto& [role, label, at] :
+         {std::tuple(kTarget, m_target, 1), std::tuple(kLoad, m_load, 2)}) {
+        if (!RoleEvaluator::parameter(profile, role)) {
+            label->hide();
+            continue;
+        }
+        big->addWidget(caption(role, QString()), 0, at);
+        big->addWidget(label, 1, at);
+    }
     big->addWidget(new QLabel(tr("State"), this), 0, 3);
     big->addWidget(m_state, 1, 3);
-    m_target->setVisible(RoleEvaluator::parameter(profile, kTarget));
-    m_load->setVisible(RoleEvaluator::parameter(profile, kLoad));
     column->addLayout(big);
     m_alarm->setWordWrap(true);
     m_alarm->setVisible(false);

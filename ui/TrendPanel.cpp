@@ -5,6 +5,7 @@
 #include "MonitorHub.h"
 #include "RoleEvaluator.h"
 #include "TrendChart.h"
+#include "TrendDefaults.h"
 
 #include <QComboBox>
 #include <QFileDialog>
@@ -158,15 +159,13 @@ QSet<TrendPanel::Key> TrendPanel::defaultsFor(int slave) const
     const DeviceSession* session = m_hub->drives()->session(slave);
     if (!session)
         return keys;
-    const QStringList roles =
-        !m_preselected ? QStringList{QStringLiteral("currentSpeed")}
-        : m_selected.contains(slave)
-            ? QStringList{QStringLiteral("currentSpeed"), QStringLiteral("targetSpeed"),
-                          QStringLiteral("load")}
-            : QStringList();
-    for (const QString& role : roles) {
-        if (const ParameterMeta* meta = RoleEvaluator::parameter(session->profile(), role))
+    if (!m_preselected) {
+        if (const ParameterMeta* meta =
+                RoleEvaluator::parameter(session->profile(), QStringLiteral("currentSpeed")))
             keys.insert(Key(slave, meta->name));
+    } else if (m_selected.contains(slave)) {
+        for (const TrendSource& s : TrendDefaults::forDrive(session->profile(), slave))
+            keys.insert(Key(slave, s.key));
     }
     return keys;
 }

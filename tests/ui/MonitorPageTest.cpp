@@ -8,6 +8,7 @@
 #include "PanelMirrorView.h"
 #include "StatusLight.h"
 #include "TerminalLamps.h"
+#include "TrendChart.h"
 
 #include <QSettings>
 
@@ -122,6 +123,11 @@ TEST_F(MonitorPageTest, DcControllerSpeedNeedsTheMotorsCommutationsPerRevolution
     QSettings().remove(QStringLiteral("monitor"));
     open(QStringLiteral("dcpid@7"), 7);
     EXPECT_EQ(page->panel(), nullptr); // the controller has no panel to mirror
+    // No target or load: the chart shows the frequency with the PWM duty and the current.
+    EXPECT_EQ(page->chart()->sources(),
+              (QVector<TrendSource>{{7, QStringLiteral("status.commutation")},
+                                    {7, QStringLiteral("status.pwm")},
+                                    {7, QStringLiteral("status.current")}}));
     ASSERT_TRUE(waitUntil([&] { return page->samplesShown() >= 1; }));
     EXPECT_TRUE(page->currentSpeedText().contains(QStringLiteral("set the commutations")))
         << qPrintable(page->currentSpeedText());
