@@ -36,13 +36,30 @@ void TrendAxes::setQuantities(const QVector<QPair<QString, QString>>& quantities
         }
         const QString names = labels.join(QStringLiteral(", "));
         titles << (unit.isEmpty() ? names : tr("%1 [%2]").arg(names, unit));
-        units << (unit.isEmpty() ? names : tr("[%1]").arg(unit));
+        // Too long for the axis: the word the labels share ("Current speed", "Target speed"
+        // -> "Speed [r/min]"), else the unit alone.
+        const QString shared = sharedWord(labels);
+        units << (unit.isEmpty()     ? names
+                  : shared.isEmpty() ? tr("[%1]").arg(unit)
+                                     : tr("%1 [%2]").arg(shared, unit));
     }
     m_titles[0] = {titles.value(0), units.value(0)};
     m_titles[1] = {titles.mid(1).join(QStringLiteral(" / ")),
                    units.mid(1).join(QStringLiteral(" / "))};
     m_axes[1]->setVisible(m_units.size() > 1);
     fitTitles(0);
+}
+
+QString TrendAxes::sharedWord(const QStringList& labels)
+{
+    if (labels.size() < 2)
+        return QString();
+    const QString last = labels.first().section(QLatin1Char(' '), -1);
+    for (const QString& l : labels) {
+        if (l.section(QLatin1Char(' '), -1).compare(last, Qt::CaseInsensitive) != 0)
+            return QString();
+    }
+    return last.left(1).toUpper() + last.mid(1);
 }
 
 void TrendAxes::setRange(int side, double lo, double hi)

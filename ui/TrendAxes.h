@@ -26,13 +26,16 @@ public:
     QValueAxis* axis(int side) const { return m_axes[side == 0 ? 0 : 1]; }
     // Covers [lo, hi] (lo > hi: no values) with some air and round ticks.
     void setRange(int side, double lo, double hi);
-    // Titles that do not fit the plot height show the unit alone; Qt would cut the unit off.
+    // Titles that do not fit the plot height show the shared word and the unit ("Speed
+    // [r/min]") or the unit alone; Qt would cut the unit off.
     void fitTitles(double plotHeight);
+    // The last word every label ends with, capitalised; empty when they differ or there is one.
+    static QString sharedWord(const QStringList& labels);
 
 private:
     std::array<QValueAxis*, 2> m_axes;
     QStringList m_units;
-    std::array<QPair<QString, QString>, 2> m_titles; // full title, unit alone
+    std::array<QPair<QString, QString>, 2> m_titles; // full title, short title
 };
 
 } // namespace opentop
