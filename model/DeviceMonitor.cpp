@@ -52,6 +52,17 @@ QString MonitorSample::signedText(const QString& parameter) const
                                         : QStringLiteral("%1 %2").arg(digits, v->meta->spec.unit);
 }
 
+QString MonitorSample::stateText() const
+{
+    if (!running)
+        return QString();
+    if (!*running)
+        return DeviceMonitor::tr("Stopped");
+    if (!reverse)
+        return DeviceMonitor::tr("Running");
+    return *reverse ? DeviceMonitor::tr("Running CCW") : DeviceMonitor::tr("Running CW");
+}
+
 struct DeviceMonitor::Poll
 {
     quint64 generation = 0;

@@ -51,6 +51,8 @@ struct MonitorSample
     // The value as text with its unit, signed like signedSpeed(): "-900 r/min"; empty when
     // not read.
     QString signedText(const QString& parameter) const;
+    // "Running CW", "Running CCW", "Stopped"; empty when the family reports no running state.
+    QString stateText() const;
 };
 
 // Polls a drive's "monitor" role parameters at an interval, in as few requests as the drive

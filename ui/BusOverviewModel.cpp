@@ -121,14 +121,8 @@ QString BusOverviewModel::cell(int slave, int column) const
         return m ? s->signedText(m->name) : QString();
     };
     switch (column) {
-    case State: {
-        if (!s->running)
-            return QString();
-        QString state = *s->running ? tr("Running") : tr("Stopped");
-        if (*s->running && s->reverse)
-            state += QLatin1Char(' ') + (*s->reverse ? tr("CCW") : tr("CW"));
-        return state;
-    }
+    case State:
+        return s->stateText();
     case Speed:
         return roleText(QStringLiteral("currentSpeed"));
     case DisplaySpeed:

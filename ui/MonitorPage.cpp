@@ -311,10 +311,7 @@ void MonitorPage::showSample(const MonitorSample& s)
     m_currentDisplay->setVisible(!m_currentDisplay->text().isEmpty());
     m_target->setText(text(kTarget));
     m_load->setText(text(kLoad));
-    QString state = s.running ? (*s.running ? tr("Running") : tr("Stopped")) : tr("—");
-    if (s.running.value_or(false) && s.reverse)
-        state += QLatin1Char(' ') + (*s.reverse ? tr("CCW") : tr("CW"));
-    m_state->setText(state);
+    m_state->setText(s.running ? s.stateText() : QStringLiteral("—"));
     const bool alarm = s.alarmActive.value_or(false);
     m_alarm->setVisible(alarm);
     if (alarm) {

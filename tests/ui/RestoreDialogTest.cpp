@@ -31,6 +31,22 @@ protected:
         return runUntil(&dialog, &RestoreDialog::previewFinished, [&] { dialog.preview(); });
     }
 
+    // Drive 1 backed up with SPno2 times 2.5 s / 3.0 s (raw 25, 30), then both changed on the
+    // drive (123, 45). Returns the file.
+    QString backUpThenChangeBoth()
+    {
+        start(QStringLiteral("dbu200@1"), {1});
+        const quint16 accel = address(kDbu, kAccel);
+        const quint16 decel = address(kDbu, kDecel);
+        setRegister(1, accel, 25);
+        setRegister(1, decel, 30);
+        const QString file = path(QStringLiteral("drive1.json"));
+        EXPECT_TRUE(backUp({1}, file));
+        setRegister(1, accel, 123);
+        setRegister(1, decel, 45);
+        return file;
+    }
+
     bool write(RestoreDialog& dialog)
     {
         return runUntil(&dialog, &RestoreDialog::writeFinished,
@@ -87,15 +103,9 @@ TEST_F(RestoreDialogTest, RestoresAChangedSettingAndVerifiesIt)
 
 TEST_F(RestoreDialogTest, WritesOnlyTheChosenParameters)
 {
-    start(QStringLiteral("dbu200@1"), {1});
+    const QString file = backUpThenChangeBoth();
     const quint16 accel = address(kDbu, kAccel);
     const quint16 decel = address(kDbu, kDecel);
-    setRegister(1, accel, 25);
-    setRegister(1, decel, 30);
-    const QString file = path(QStringLiteral("drive1.json"));
-    ASSERT_TRUE(backUp({1}, file));
-    setRegister(1, accel, 123);
-    setRegister(1, decel, 45);
 
     RestoreDialog dialog(drives.get());
     ASSERT_TRUE(dialog.setPath(file));
@@ -177,15 +187,9 @@ TEST_F(RestoreDialogTest, RefusesADcControllerFileOnADbuWithTheReason)
 
 TEST_F(RestoreDialogTest, ClosingWhileWritingCancelsAndReportsWhatWasWritten)
 {
-    start(QStringLiteral("dbu200@1"), {1});
+    const QString file = backUpThenChangeBoth();
     const quint16 accel = address(kDbu, kAccel);
     const quint16 decel = address(kDbu, kDecel);
-    setRegister(1, accel, 25);
-    setRegister(1, decel, 30);
-    const QString file = path(QStringLiteral("drive1.json"));
-    ASSERT_TRUE(backUp({1}, file));
-    setRegister(1, accel, 123);
-    setRegister(1, decel, 45);
 
     RestoreDialog dialog(drives.get());
     dialog.show();
