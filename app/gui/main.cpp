@@ -58,14 +58,15 @@ int main(int argc, char* argv[])
                 *e = made.error;
             return std::move(made.client);
         });
-    window.show();
-    window.connectTo(settings, settings.kind == opentop::ConnectionSettings::Kind::Simulated
-                                   ? known
-                                   : QHash<int, QString>());
+    // Before the window shows and connects: a bad value ends the program with nothing opened.
     QString optionError;
     if (!opentop::MonitorOptions::apply(parser, &window, &optionError)) {
         std::fprintf(stderr, "opentop: %s\n", qPrintable(optionError));
         return 2;
     }
+    window.show();
+    window.connectTo(settings, settings.kind == opentop::ConnectionSettings::Kind::Simulated
+                                   ? known
+                                   : QHash<int, QString>());
     return app.exec();
 }
