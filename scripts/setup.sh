@@ -20,11 +20,17 @@ build="${OPENTOP_BUILD_DIR:-$root/build}"
 jobs="$(nproc 2>/dev/null || echo 2)"
 
 packages=(
+    # compiler and build
     build-essential cmake ninja-build pkg-config ccache
-    qt6-base-dev qt6-serialport-dev qt6-charts-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
+    # Qt 6: libqt6opengl6-dev is only *recommended* by qt6-base-dev, but Qt6Charts' CMake files
+    # need it; with --no-install-recommends it has to be named.
+    qt6-base-dev libqt6opengl6-dev qt6-serialport-dev qt6-charts-dev
+    qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
     libmodbus-dev libgtest-dev libgmock-dev
+    # independent Modbus peers the tests cross-check against
     mbpoll socat python3-pymodbus
-    xvfb xauth imagemagick
+    # the GUI without a display: a virtual X server, its auth, a screenshot tool and fonts
+    xvfb xauth imagemagick fonts-dejavu-core
 )
 
 missing=()
