@@ -2,15 +2,16 @@
 # OpenTOP set-up for a Debian 12 machine, run as root from the source tree.
 #   scripts/setup.sh gui   install what is missing, build, open the GUI on a simulated bus
 #   scripts/setup.sh test  install what is missing, build, run the whole test suite
-# Both are idempotent: packages already present are not reinstalled, and an up-to-date build
-# does nothing.
+#   scripts/setup.sh build install what is missing and build (for scripts such as the package check)
+# All are idempotent: packages already present are not reinstalled, and an up-to-date build
+# does nothing. OPENTOP_GUI_QUIT_AFTER=SECONDS makes the GUI quit by itself (for checks).
 set -euo pipefail
 
 mode="${1:-}"
 case "$mode" in
-gui | test) ;;
+gui | test | build) ;;
 *)
-    echo "usage: $0 gui|test" >&2
+    echo "usage: $0 gui|test|build" >&2
     exit 2
     ;;
 esac
@@ -55,6 +56,9 @@ fi
 echo "== building in $build"
 cmake --build "$build" -j "$jobs"
 
+if [ "$mode" = build ]; then
+    exit 0
+fi
 if [ "$mode" = test ]; then
     echo "== running the test suite"
     cd "$build"
@@ -62,13 +66,18 @@ if [ "$mode" = test ]; then
 fi
 
 sim_bus="${OPENTOP_SIM_BUS:-dbu200@1,dbu400@150,dcpid@7}"
+gui_args=(--sim "$sim_bus")
+if [ -n "${OPENTOP_GUI_QUIT_AFTER:-}" ]; then
+    gui_args+=(--quit-after "$OPENTOP_GUI_QUIT_AFTER")
+fi
 if [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; then
-    exec "$build/app/opentop" --sim "$sim_bus"
+    exec "$build/app/opentop" "${gui_args[@]}"
 fi
 # No display (e.g. an ssh session): run the real program under Xvfb and save a screenshot.
 shot="$build/opentop-screenshot.png"
 echo "== no display found: starting OpenTOP under Xvfb; screenshot in $shot (Ctrl-C to stop)"
 exec xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
-    "$0" --sim "$1" & app=$!
-    sleep 4; import -window root "$2" && echo "screenshot saved: $2"
-    wait $app' "$build/app/opentop" "$sim_bus" "$shot"
+    app_bin=$1 shot=$2; shift 2
+    "$app_bin" "$@" & app=$!
+    sleep 4; import -window root "$shot" && echo "screenshot saved: $shot"
+    wait $app' bash "$build/app/opentop" "$shot" "${gui_args[@]}"

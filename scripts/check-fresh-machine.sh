@@ -1,0 +1,273 @@
+#!/usr/bin/env bash
+# Proves the README's set-up commands and the Debian package on brand-new minimal Debian 12 roots,
+# the way a new user's machine starts: nothing installed by hand.
+#
+#   scripts/check-fresh-machine.sh test      README test command (bash scripts/setup.sh test)
+#   scripts/check-fresh-machine.sh gui       README GUI command; the screenshot of the real window
+#                                            must be written and not blank
+#   scripts/check-fresh-machine.sh package   build the .deb, lintian + appstream + desktop checks,
+#                                            then install it in a second fresh root, run it, remove it
+#   scripts/check-fresh-machine.sh test gui package   all three; one build serves all of them
+#
+# Needs root and mmdebstrap (installed from Debian's packages when missing). The roots come from
+# the machine's own apt sources; the checked tree is a clean clone of HEAD (uncommitted changes
+# are not included) with ../shared beside it. Results (logs, screenshots, the .deb, lintian's
+# report) go to build-fresh/ in this tree.
+#
+# Environment:
+#   OPENTOP_FRESH_CACHE=0     don't reuse downloaded .debs and compiler outputs between runs
+#                             (default: kept in /var/cache/opentop-fresh; they only save time, the
+#                             set of installed packages is the same)
+#   OPENTOP_FRESH_KEEP=1      keep the roots afterwards (in /var/tmp/opentop-fresh.*)
+set -euo pipefail
+
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+forms=("$@")
+((${#forms[@]})) || forms=(test)
+for f in "${forms[@]}"; do
+    case "$f" in
+    test | gui | package) ;;
+    *)
+        echo "usage: $0 test|gui|package [...]" >&2
+        exit 2
+        ;;
+    esac
+done
+want() {
+    local f
+    for f in "${forms[@]}"; do [ "$f" = "$1" ] && return 0; done
+    return 1
+}
+
+if [ "$(id -u)" -ne 0 ]; then
+    echo "error: a fresh root needs root (chroot, mounts); run as root" >&2
+    exit 3
+fi
+if ! command -v mmdebstrap >/dev/null; then
+    echo "== installing mmdebstrap"
+    apt-get update -q >/dev/null
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends mmdebstrap >/dev/null
+fi
+
+out="$repo/build-fresh"
+mkdir -p "$out"
+work="$(mktemp -d /var/tmp/opentop-fresh.XXXXXX)"
+cache="/var/cache/opentop-fresh"
+use_cache="${OPENTOP_FRESH_CACHE:-1}"
+mounted=()
+
+# --- phase timing ---------------------------------------------------------------------------
+phase_names=()
+phase_secs=()
+phase_start=0
+phase_name=""
+begin() {
+    phase_name="$1"
+    phase_start=$SECONDS
+    echo
+    echo "== [$(date +%H:%M:%S)] $1"
+}
+end() {
+    local took=$((SECONDS - phase_start))
+    phase_names+=("$phase_name")
+    phase_secs+=("$took")
+    echo "== $phase_name: ${took} s"
+}
+report_phases() {
+    echo
+    echo "== time per phase"
+    local i total=0
+    for i in "${!phase_names[@]}"; do
+        printf '   %-58s %5d s\n' "${phase_names[$i]}" "${phase_secs[$i]}"
+        total=$((total + phase_secs[i]))
+    done
+    printf '   %-58s %5d s\n' "total" "$total"
+}
+
+# --- roots and mounts -------------------------------------------------------------------------
+cleanup() {
+    local status=$?
+    local i
+    for ((i = ${#mounted[@]} - 1; i >= 0; i--)); do
+        umount "${mounted[$i]}" 2>/dev/null || umount -l "${mounted[$i]}" 2>/dev/null || true
+    done
+    if grep -q " $work/" /proc/mounts; then
+        echo "warning: something is still mounted under $work; not removing it" >&2
+    elif [ "${OPENTOP_FRESH_KEEP:-0}" = 1 ]; then
+        echo "roots kept in $work"
+    else
+        rm -rf --one-file-system "$work"
+    fi
+    exit "$status"
+}
+trap cleanup EXIT
+trap 'exit 130' INT TERM HUP
+
+bind() { # bind SOURCE TARGET
+    mkdir -p "$2"
+    mount --bind "$1" "$2"
+    mounted+=("$2")
+}
+
+base_tar="$work/base.tar"
+make_base() {
+    begin "fresh minimal Debian 12 root (mmdebstrap --variant=minbase)"
+    local sources=()
+    [ -f /etc/apt/sources.list.d/debian.sources ] && sources+=(/etc/apt/sources.list.d/debian.sources)
+    [ -s /etc/apt/sources.list ] && sources+=(/etc/apt/sources.list)
+    mmdebstrap --quiet --variant=minbase --include=ca-certificates,git \
+        bookworm "$base_tar" "${sources[@]}"
+    end
+}
+
+# new_root NAME: a root unpacked from the base, with /proc, /sys, /dev, /dev/pts bound in
+new_root() {
+    local root="$work/$1"
+    mkdir -p "$root"
+    tar -C "$root" -xf "$base_tar"
+    bind /proc "$root/proc"
+    bind /sys "$root/sys"
+    bind /dev "$root/dev"
+    bind /dev/pts "$root/dev/pts"
+    [ -d /dev/shm ] && bind /dev/shm "$root/dev/shm"
+    if [ "$use_cache" = 1 ]; then
+        mkdir -p "$cache/apt-archives/partial" "$cache/ccache"
+        bind "$cache/apt-archives" "$root/var/cache/apt/archives"
+        bind "$cache/ccache" "$root/root/.cache/ccache"
+    fi
+    echo "$root"
+}
+
+# in_root ROOT COMMAND: run COMMAND with bash in ROOT, with nothing of this machine's environment
+in_root() {
+    chroot "$1" env -i HOME=/root PATH=/usr/sbin:/usr/bin:/sbin:/bin LANG=C.UTF-8 TERM=dumb \
+        CI="${CI:-}" OPENTOP_GUI_QUIT_AFTER="${OPENTOP_GUI_QUIT_AFTER:-}" bash -c "$2"
+}
+
+# not_blank ROOT PNG: the screenshot exists and shows more than one flat colour
+not_blank() {
+    local stats
+    if [ ! -s "$1$2" ]; then
+        echo "FAIL: no screenshot at $2" >&2
+        return 1
+    fi
+    stats="$(in_root "$1" "convert '$2' -format '%k %[fx:standard_deviation]' info:")"
+    echo "   screenshot $2: $stats (distinct colours, standard deviation)"
+    read -r colours deviation <<<"$stats"
+    if [ "$colours" -lt 64 ] || awk -v d="$deviation" 'BEGIN { exit !(d < 0.03) }'; then
+        echo "FAIL: the screenshot $2 is blank or nearly so" >&2
+        return 1
+    fi
+}
+
+# --- the checks -------------------------------------------------------------------------------
+commit="$(git -C "$repo" rev-parse --short HEAD)"
+echo "== checking commit $commit of $repo on fresh Debian 12 roots: ${forms[*]}"
+if [ -n "$(git -C "$repo" status --porcelain --untracked-files=no)" ]; then
+    echo "   (uncommitted changes in $repo are not part of the check)"
+fi
+
+make_base
+
+root_a="$(new_root root-a)"
+git clone -q --no-hardlinks "$repo" "$root_a/src/main"
+if [ -d "$repo/../shared" ]; then
+    cp -a "$repo/../shared" "$root_a/src/shared"
+fi
+
+if want test; then
+    begin "README test command: bash scripts/setup.sh test"
+    in_root "$root_a" 'cd /src/main && bash scripts/setup.sh test' 2>&1 | tee "$out/test.log"
+    end
+fi
+
+if want gui; then
+    begin "README GUI command: bash scripts/setup.sh gui (no display: Xvfb, screenshot)"
+    OPENTOP_GUI_QUIT_AFTER=10 in_root "$root_a" 'cd /src/main && bash scripts/setup.sh gui' 2>&1 |
+        tee "$out/gui.log"
+    not_blank "$root_a" /src/main/build/opentop-screenshot.png
+    cp "$root_a/src/main/build/opentop-screenshot.png" "$out/gui-screenshot.png"
+    end
+fi
+
+if want package; then
+    begin "build the Debian package (cmake --build build --target package)"
+    in_root "$root_a" 'cd /src/main && bash scripts/setup.sh build >/dev/null &&
+        cmake --build build --target package' 2>&1 | tail -n 5
+    deb="$(cd "$root_a/src/main/build" && ls opentop_*_amd64.deb | head -n 1)"
+    [ -n "$deb" ] || {
+        echo "FAIL: no opentop_*_amd64.deb was made" >&2
+        exit 1
+    }
+    cp "$root_a/src/main/build/$deb" "$out/"
+    echo "   $deb: $(du -k "$out/$deb" | cut -f1) KiB, Installed-Size $(dpkg-deb -f "$out/$deb" Installed-Size) KiB"
+    end
+
+    begin "lintian, appstreamcli validate, desktop-file-validate"
+    in_root "$root_a" 'DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends \
+        lintian appstream desktop-file-utils >/dev/null'
+    in_root "$root_a" "cd /src/main/build && lintian --info --display-info --suppress-tags-from-file /dev/null '$deb'" \
+        >"$out/lintian.txt" 2>&1 || true
+    cat "$out/lintian.txt"
+    if grep -q '^E: ' "$out/lintian.txt"; then
+        echo "FAIL: lintian reports errors" >&2
+        exit 1
+    fi
+    in_root "$root_a" "set -e; rm -rf /tmp/deb && dpkg-deb -x '/src/main/build/$deb' /tmp/deb
+        appstreamcli validate --no-net /tmp/deb/usr/share/metainfo/*.metainfo.xml
+        desktop-file-validate /tmp/deb/usr/share/applications/*.desktop && echo 'desktop entry: valid'"
+    end
+
+    begin "install the package on a second fresh root, run it, remove it"
+    root_b="$(new_root root-b)"
+    cp "$out/$deb" "$root_b/tmp/"
+    in_root "$root_b" "set -e
+        apt-get update -q >/dev/null
+        # tools of the check itself, not of OpenTOP: a virtual display and a screenshot tool
+        DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends \
+            xvfb xauth imagemagick >/dev/null
+        dpkg-query -W -f '\${Package}\n' | sort >/tmp/before
+        DEBIAN_FRONTEND=noninteractive apt-get install -y -q /tmp/$deb >/tmp/install.log
+        dpkg-query -W -f '\${Package}\n' | sort >/tmp/after
+        comm -13 /tmp/before /tmp/after >/tmp/pulled
+        echo \"   the package pulled in \$(wc -l </tmp/pulled) packages\"
+        if grep -E -- '-dev(:|\$)' /tmp/pulled; then echo 'FAIL: -dev packages pulled in' >&2; exit 1; fi
+        dpkg -L opentop >/tmp/files
+        version=\$(dpkg-query -W -f '\${Version}' opentop)
+        for p in opentop opentop-cli opentop-sim; do
+            v=\$(\$p --version 2>&1)
+            echo \"   \$p --version: \$v\"
+            case \"\$v\" in *\"\${version%%-*}\"*) ;; *) echo \"FAIL: \$p --version\" >&2; exit 1;; esac
+        done
+        opentop-sim --help >/dev/null
+        opentop-cli --sim dbu200@1,dcpid@7 scan | tee /tmp/scan
+        grep -q '2 drives found' /tmp/scan || { echo 'FAIL: the scan did not find both drives' >&2; exit 1; }
+        test -s /usr/share/man/man1/opentop-cli.1.gz
+        # a user outside the dialout group is told the exact fix
+        useradd -m checker
+        mknod -m 660 /srv/ttyCHECK c 4 64 && chgrp dialout /srv/ttyCHECK
+        su checker -c 'opentop-cli --port /srv/ttyCHECK scan' >/tmp/denied 2>&1 || true
+        sed 's/^/   checker: /' /tmp/denied
+        grep -q 'usermod -aG dialout' /tmp/denied || { echo 'FAIL: no dialout advice' >&2; exit 1; }
+        rm -f /srv/ttyCHECK
+        xvfb-run -a -s '-screen 0 1366x768x24' bash -c '
+            opentop --sim dbu200@1,dcpid@7 --quit-after 8 & app=\$!
+            sleep 5; import -window root /tmp/package-gui.png; wait \$app'
+    " 2>&1 | tee "$out/package.log"
+    not_blank "$root_b" /tmp/package-gui.png
+    cp "$root_b/tmp/package-gui.png" "$out/package-screenshot.png"
+    in_root "$root_b" "set -e
+        DEBIAN_FRONTEND=noninteractive apt-get purge -y -q opentop >/dev/null
+        left=0
+        while read -r f; do
+            if [ -e \"\$f\" ] && [ ! -d \"\$f\" ]; then echo \"left behind: \$f\"; left=1; fi
+        done </tmp/files
+        for d in /usr/share/doc/opentop /usr/share/opentop /etc/opentop; do
+            if [ -e \"\$d\" ]; then echo \"left behind: \$d\"; left=1; fi
+        done
+        [ \$left = 0 ] && echo '   removed: nothing of the package is left'
+        exit \$left" 2>&1 | tee -a "$out/package.log"
+    end
+fi
+
+report_phases | tee "$out/phases.txt"
