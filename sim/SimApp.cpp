@@ -89,6 +89,10 @@ int SimApp::start(const QStringList& arguments)
         printOut(SimOptions::usage());
         return 0;
     }
+    if (m_options.version) {
+        printOut(QStringLiteral("opentop-sim " OPENTOP_VERSION));
+        return 0;
+    }
     QLoggingCategory::setFilterRules(
         m_options.quiet ? QStringLiteral("opentop.*.debug=false\nopentop.*.info=false")
                         : QStringLiteral("opentop.*.debug=false"));
