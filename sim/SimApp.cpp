@@ -25,8 +25,11 @@ int g_signalWriteFd = -1;
 void onPosixSignal(int)
 {
     const char byte = 1;
-    if (g_signalWriteFd >= 0)
-        (void)::write(g_signalWriteFd, &byte, 1);
+    if (g_signalWriteFd >= 0) {
+        // A full pipe already holds a wake-up: nothing to do when the write fails.
+        const ssize_t written = ::write(g_signalWriteFd, &byte, 1);
+        static_cast<void>(written);
+    }
 }
 
 void printOut(const QString& text)
@@ -84,6 +87,10 @@ int SimApp::start(const QStringList& arguments)
     m_options = *options;
     if (m_options.help) {
         printOut(SimOptions::usage());
+        return 0;
+    }
+    if (m_options.version) {
+        printOut(QStringLiteral("opentop-sim " OPENTOP_VERSION));
         return 0;
     }
     QLoggingCategory::setFilterRules(

@@ -24,7 +24,8 @@ QString SimOptions::usage()
         "  --faults LIST      e.g. drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000\n"
         "  --seed N           seed of the fault injection (1)\n"
         "  --quiet            no frame trace on stderr\n"
-        "  --help             this text\n\n"
+        "  --help             this text\n"
+        "  --version          the program's version\n\n"
         "Prints \"pty: PATH\" (and \"tcp: HOST:PORT\"), then \"ready\". Reads console commands\n"
         "from stdin (type help). Stops on SIGINT, SIGTERM or quit.\n");
 }
@@ -60,6 +61,8 @@ std::optional<SimOptions> SimOptions::parse(const QStringList& arguments, QStrin
         QString v;
         if (arg == QLatin1String("--help") || arg == QLatin1String("-h")) {
             o.help = true;
+        } else if (arg == QLatin1String("--version")) {
+            o.version = true;
         } else if (arg == QLatin1String("--devices")) {
             if (!value(&o.devices) || o.devices.isEmpty())
                 return failed(tr("--devices needs a device list such as dbu200@1,dcpid@7"));
@@ -125,11 +128,11 @@ std::optional<SimOptions> SimOptions::parse(const QStringList& arguments, QStrin
         } else {
             return failed(tr("unknown argument '%1'; options: --devices, --pty, --tcp, --baud, "
                              "--parity, --wire-timing, --turnaround, --faults, --seed, --quiet, "
-                             "--help")
+                             "--help, --version")
                               .arg(arguments.at(i)));
         }
     }
-    if (!o.help && o.devices.isEmpty())
+    if (!o.help && !o.version && o.devices.isEmpty())
         return failed(tr("--devices SPEC is required, e.g. --devices dbu200@1,dcpid@7"));
     if (!o.pty && !o.tcp)
         o.pty = true;

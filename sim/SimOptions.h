@@ -28,6 +28,7 @@ public:
     quint32 seed = 1;
     bool quiet = false;
     bool help = false;
+    bool version = false;
 
     // `arguments` without the program name. On error returns nothing and sets *error to a
     // message that names the allowed values.

@@ -75,8 +75,11 @@ QString RtuBackend::openErrorText(int err) const
 {
     QString text = LibmodbusBackend::openErrorText(err);
     if (err == EACCES)
-        text += QCoreApplication::translate("opentop::Transport",
-                                            " (is your user in the dialout group?)");
+        text += QCoreApplication::translate(
+            "opentop::Transport",
+            ": your user may not open serial ports. Add it to the dialout group with\n"
+            "    sudo usermod -aG dialout $USER\n"
+            "then log out and in again (the group applies to new sessions only).");
     else if (err == EINVAL && settings().parity != 'N')
         text += QCoreApplication::translate(
             "opentop::Transport", " (the device may not support this parity; ptys need N)");

@@ -12,14 +12,34 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QIcon>
 #include <cstdio>
+#include <cstring>
 
 int main(int argc, char* argv[])
 {
+    // --version and --help only print: they work without a display (an ssh session, a build).
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--version") == 0 || std::strcmp(argv[i], "-v") == 0) {
+            std::printf("opentop %s\n", OPENTOP_VERSION);
+            return 0;
+        }
+        const bool help = std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0 ||
+                          std::strcmp(argv[i], "-?") == 0 ||
+                          std::strcmp(argv[i], "--help-all") == 0;
+        if (help && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+            qputenv("QT_QPA_PLATFORM", "offscreen");
+    }
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("OpenTOP"));
     QApplication::setApplicationName(QStringLiteral("OpenTOP"));
     QApplication::setApplicationVersion(QStringLiteral(OPENTOP_VERSION));
+    // One id for the desktop entry, the icon and the AppStream metainfo (packaging/).
+    QApplication::setDesktopFileName(QStringLiteral("io.github.opentop.OpenTOP"));
+    QIcon icon;
+    for (int size : {16, 24, 32, 48, 64, 128, 256})
+        icon.addFile(QStringLiteral(":/icons/%1/opentop.png").arg(size), QSize(size, size));
+    QApplication::setWindowIcon(icon);
     QCommandLineParser parser;
     parser.setApplicationDescription(
         QApplication::translate("main", "Commissioning tool for RS-485 Modbus-RTU motor drives."));
