@@ -20,6 +20,7 @@
 #                             set of installed packages is the same)
 #   OPENTOP_FRESH_KEEP=1      keep the roots afterwards (in /var/tmp/opentop-fresh.*)
 set -euo pipefail
+{ # read to the closing brace before anything runs: editing this file mid-run is harmless
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 forms=("$@")
@@ -115,14 +116,23 @@ make_base() {
     local sources=()
     [ -f /etc/apt/sources.list.d/debian.sources ] && sources+=(/etc/apt/sources.list.d/debian.sources)
     [ -s /etc/apt/sources.list ] && sources+=(/etc/apt/sources.list)
-    mmdebstrap --quiet --variant=minbase --include=ca-certificates,git \
+    local hooks=()
+    if [ "$use_cache" = 1 ]; then
+        mkdir -p "$cache/base-archives"
+        hooks=(--skip=essential/unlink
+            --setup-hook="mkdir -p \"\$1\"/var/cache/apt/archives/"
+            --setup-hook="sync-in $cache/base-archives /var/cache/apt/archives/"
+            --customize-hook="sync-out /var/cache/apt/archives $cache/base-archives")
+    fi
+    mmdebstrap --quiet --variant=minbase --include=ca-certificates,git "${hooks[@]}" \
         bookworm "$base_tar" "${sources[@]}"
     end
 }
 
-# new_root NAME: a root unpacked from the base, with /proc, /sys, /dev, /dev/pts bound in
+# new_root NAME: a root unpacked from the base, with /proc, /sys, /dev, /dev/pts bound in; its
+# path in $root (not printed: the mounts must be recorded in this shell, not in a subshell)
 new_root() {
-    local root="$work/$1"
+    root="$work/$1"
     mkdir -p "$root"
     tar -C "$root" -xf "$base_tar"
     bind /proc "$root/proc"
@@ -135,7 +145,6 @@ new_root() {
         bind "$cache/apt-archives" "$root/var/cache/apt/archives"
         bind "$cache/ccache" "$root/root/.cache/ccache"
     fi
-    echo "$root"
 }
 
 # in_root ROOT COMMAND: run COMMAND with bash in ROOT, with nothing of this machine's environment
@@ -169,7 +178,8 @@ fi
 
 make_base
 
-root_a="$(new_root root-a)"
+new_root root-a
+root_a="$root"
 git clone -q --no-hardlinks "$repo" "$root_a/src/main"
 if [ -d "$repo/../shared" ]; then
     cp -a "$repo/../shared" "$root_a/src/shared"
@@ -219,7 +229,8 @@ if want package; then
     end
 
     begin "install the package on a second fresh root, run it, remove it"
-    root_b="$(new_root root-b)"
+    new_root root-b
+    root_b="$root"
     cp "$out/$deb" "$root_b/tmp/"
     in_root "$root_b" "set -e
         apt-get update -q >/dev/null
@@ -271,3 +282,5 @@ if want package; then
 fi
 
 report_phases | tee "$out/phases.txt"
+exit 0
+}

@@ -6,6 +6,7 @@
 # All are idempotent: packages already present are not reinstalled, and an up-to-date build
 # does nothing. OPENTOP_GUI_QUIT_AFTER=SECONDS makes the GUI quit by itself (for checks).
 set -euo pipefail
+{ # read to the closing brace before anything runs: editing this file mid-run is harmless
 
 mode="${1:-}"
 case "$mode" in
@@ -23,6 +24,8 @@ jobs="$(nproc 2>/dev/null || echo 2)"
 packages=(
     # compiler and build
     build-essential cmake ninja-build pkg-config ccache
+    # CPack's Debian package generator runs file(1) on every binary
+    file
     # Qt 6: libqt6opengl6-dev is only *recommended* by qt6-base-dev, but Qt6Charts' CMake files
     # need it; with --no-install-recommends it has to be named.
     qt6-base-dev libqt6opengl6-dev qt6-serialport-dev qt6-charts-dev
@@ -81,3 +84,4 @@ exec xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
     "$app_bin" "$@" & app=$!
     sleep 4; import -window root "$shot" && echo "screenshot saved: $shot"
     wait $app' bash "$build/app/opentop" "$shot" "${gui_args[@]}"
+}
