@@ -73,22 +73,29 @@ end() {
     phase_names+=("$phase_name")
     phase_secs+=("$took")
     echo "== $phase_name: ${took} s"
+    phase_name=""
 }
 report_phases() {
     echo
     echo "== time per phase"
     local i total=0
     for i in "${!phase_names[@]}"; do
-        printf '   %-58s %5d s\n' "${phase_names[$i]}" "${phase_secs[$i]}"
+        printf '   %-78s %5d s\n' "${phase_names[$i]}" "${phase_secs[$i]}"
         total=$((total + phase_secs[i]))
     done
-    printf '   %-58s %5d s\n' "total" "$total"
+    printf '   %-78s %5d s\n' "total" "$total"
 }
 
 # --- roots and mounts -------------------------------------------------------------------------
 cleanup() {
     local status=$?
     local i
+    if [ "$status" -ne 0 ] && [ -n "$phase_name" ]; then
+        phase_names+=("$phase_name (FAILED)")
+        phase_secs+=("$((SECONDS - phase_start))")
+        report_phases
+        echo "== FAILED in: $phase_name"
+    fi
     for ((i = ${#mounted[@]} - 1; i >= 0; i--)); do
         umount "${mounted[$i]}" 2>/dev/null || umount -l "${mounted[$i]}" 2>/dev/null || true
     done
