@@ -1,7 +1,7 @@
 #include "ConnectionOptions.h"
 
-#include "BusSpec.h"
-#include "ProfileRegistry.h"
+#include "bus/BusSpec.h"
+#include "profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
 

@@ -4,7 +4,7 @@
 #include "ModbusRequest.h"
 #include "SimBackdoor.h"
 #include "SimLog.h"
-#include "ValueCodec.h"
+#include "profile/ValueCodec.h"
 
 #include <algorithm>
 

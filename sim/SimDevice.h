@@ -1,8 +1,8 @@
 #pragma once
 
-#include "Profile.h"
 #include "SimRegisters.h"
-#include "ValueContext.h"
+#include "profile/Profile.h"
+#include "profile/ValueContext.h"
 
 #include <QByteArray>
 #include <QCoreApplication>

@@ -1,7 +1,7 @@
 #include "AlarmBanner.h"
 
-#include "BusDrives.h"
-#include "DriveStatusPoller.h"
+#include "bus/BusDrives.h"
+#include "bus/DriveStatusPoller.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

@@ -1,8 +1,8 @@
 #include "AlarmExport.h"
 
 #include "AlarmsPage.h"
-#include "BusDrives.h"
-#include "DeviceSession.h"
+#include "bus/BusDrives.h"
+#include "session/DeviceSession.h"
 
 #include <QPointer>
 #include <QSaveFile>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "AlarmHistory.h"
+#include "alarms/AlarmHistory.h"
 
 #include <QObject>
 #include <QVector>

@@ -1,6 +1,6 @@
 #include "AlarmsPage.h"
 
-#include "DeviceSession.h"
+#include "session/DeviceSession.h"
 
 #include <QGroupBox>
 #include <QHBoxLayout>

@@ -1,10 +1,10 @@
 #include "BackupDialog.h"
 
-#include "BackupFile.h"
-#include "BackupReader.h"
-#include "BusDrives.h"
-#include "DeviceSession.h"
-#include "ProfileRegistry.h"
+#include "bus/BusDrives.h"
+#include "files/BackupFile.h"
+#include "files/BackupReader.h"
+#include "profile/ProfileRegistry.h"
+#include "session/DeviceSession.h"
 
 #include <QDateTime>
 #include <QHBoxLayout>

@@ -7,9 +7,9 @@
 #include <QStringList>
 #include <QVector>
 
-#include "BackupDevice.h"
-#include "BackupReader.h"
-#include "BusDrives.h"
+#include "bus/BusDrives.h"
+#include "files/BackupDevice.h"
+#include "files/BackupReader.h"
 
 class QLabel;
 class QProgressBar;

@@ -1,6 +1,6 @@
 #include "BackupViewer.h"
 
-#include "ProfileRegistry.h"
+#include "profile/ProfileRegistry.h"
 
 #include <QFileDialog>
 #include <QFileInfo>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "BackupFile.h"
+#include "files/BackupFile.h"
 
 #include <QDialog>
 #include <optional>

@@ -1,7 +1,7 @@
 #include "BusListModel.h"
 
-#include "ProfileRegistry.h"
 #include "StatusLight.h"
+#include "profile/ProfileRegistry.h"
 
 #include <QBrush>
 #include <QColor>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "DeviceInfo.h"
-#include "DriveStatusPoller.h"
+#include "bus/DriveStatusPoller.h"
+#include "session/DeviceInfo.h"
 
 #include <QAbstractTableModel>
 #include <QHash>

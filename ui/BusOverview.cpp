@@ -1,8 +1,8 @@
 #include "BusOverview.h"
 
-#include "BusDrives.h"
 #include "BusOverviewModel.h"
-#include "MonitorHub.h"
+#include "bus/BusDrives.h"
+#include "monitor/MonitorHub.h"
 
 #include <QHeaderView>
 #include <QLabel>

@@ -1,9 +1,9 @@
 #include "BusOverviewModel.h"
 
-#include "BusDrives.h"
-#include "DeviceSession.h"
-#include "MonitorHub.h"
-#include "RoleEvaluator.h"
+#include "bus/BusDrives.h"
+#include "monitor/MonitorHub.h"
+#include "profile/RoleEvaluator.h"
+#include "session/DeviceSession.h"
 
 #include <QBrush>
 #include <QColor>

@@ -1,12 +1,12 @@
 #include "BusPanel.h"
 
-#include "BusDrives.h"
 #include "BusListModel.h"
-#include "BusScanner.h"
-#include "DeviceIdentifier.h"
-#include "DriveStatusPoller.h"
 #include "ModbusClient.h"
-#include "ProfileRegistry.h"
+#include "bus/BusDrives.h"
+#include "bus/BusScanner.h"
+#include "bus/DriveStatusPoller.h"
+#include "profile/ProfileRegistry.h"
+#include "session/DeviceIdentifier.h"
 
 #include <QActionGroup>
 #include <QHBoxLayout>

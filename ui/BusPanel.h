@@ -1,6 +1,6 @@
 #pragma once
 
-#include "DeviceInfo.h"
+#include "session/DeviceInfo.h"
 
 #include <QVector>
 #include <QWidget>

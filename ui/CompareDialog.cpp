@@ -1,10 +1,10 @@
 #include "CompareDialog.h"
 
-#include "BackupReader.h"
-#include "BusDrives.h"
-#include "Comparer.h"
-#include "DeviceSession.h"
-#include "ProfileRegistry.h"
+#include "bus/BusDrives.h"
+#include "files/BackupReader.h"
+#include "files/Comparer.h"
+#include "profile/ProfileRegistry.h"
+#include "session/DeviceSession.h"
 
 #include <QCheckBox>
 #include <QComboBox>

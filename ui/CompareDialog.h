@@ -1,8 +1,8 @@
 #pragma once
 
-#include "BackupDevice.h"
-#include "BackupFile.h"
-#include "BusDrives.h"
+#include "bus/BusDrives.h"
+#include "files/BackupDevice.h"
+#include "files/BackupFile.h"
 
 #include <QDialog>
 #include <QPointer>

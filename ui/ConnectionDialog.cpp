@@ -1,8 +1,8 @@
 #include "ConnectionDialog.h"
 
-#include "BusSpec.h"
-#include "ProfileRegistry.h"
 #include "SerialPortList.h"
+#include "bus/BusSpec.h"
+#include "profile/ProfileRegistry.h"
 
 #include <QButtonGroup>
 #include <QComboBox>

@@ -1,9 +1,9 @@
 #include "DcControllerPage.h"
 
-#include "DeviceSession.h"
 #include "ParameterField.h"
 #include "PendingValues.h"
-#include "ValueCodec.h"
+#include "profile/ValueCodec.h"
+#include "session/DeviceSession.h"
 
 #include <QFormLayout>
 #include <QFrame>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "DeviceParameters.h"
 #include "ParameterPage.h"
+#include "session/DeviceParameters.h"
 
 #include <QHash>
 #include <functional>

@@ -1,7 +1,7 @@
 #include "DriveWorkspace.h"
 
-#include "DeviceParameters.h"
 #include "GroupPage.h"
+#include "session/DeviceParameters.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

@@ -2,9 +2,9 @@
 
 #include "BackupDialog.h"
 #include "BackupViewer.h"
-#include "BusDrives.h"
 #include "CompareDialog.h"
 #include "RestoreDialog.h"
+#include "bus/BusDrives.h"
 
 #include <QAction>
 #include <QDateTime>

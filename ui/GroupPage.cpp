@@ -1,7 +1,7 @@
 #include "GroupPage.h"
 
-#include "DeviceParameters.h"
 #include "ParameterField.h"
+#include "session/DeviceParameters.h"
 
 #include <QFormLayout>
 #include <QLabel>

@@ -1,10 +1,10 @@
 #include "IoTerminalsPage.h"
 
-#include "DeviceParameters.h"
-#include "DeviceSession.h"
 #include "ParameterField.h"
 #include "PendingValues.h"
-#include "ValueCodec.h"
+#include "profile/ValueCodec.h"
+#include "session/DeviceParameters.h"
+#include "session/DeviceSession.h"
 
 #include <QFormLayout>
 #include <QGridLayout>

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "ParameterPage.h"
-#include "ValueContext.h"
+#include "profile/ValueContext.h"
 
 #include <QHash>
 #include <optional>

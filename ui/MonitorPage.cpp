@@ -1,16 +1,16 @@
 #include "MonitorPage.h"
 
-#include "DeviceParameters.h"
-#include "DeviceSession.h"
-#include "DriveStatusPoller.h"
-#include "MonitorHub.h"
 #include "PanelMirrorView.h"
-#include "RoleEvaluator.h"
-#include "SpeedDisplay.h"
 #include "StatusLight.h"
 #include "TerminalLamps.h"
 #include "TrendChart.h"
 #include "TrendDefaults.h"
+#include "bus/DriveStatusPoller.h"
+#include "monitor/MonitorHub.h"
+#include "profile/RoleEvaluator.h"
+#include "profile/SpeedDisplay.h"
+#include "session/DeviceParameters.h"
+#include "session/DeviceSession.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "DeviceMonitor.h"
+#include "monitor/DeviceMonitor.h"
 
 #include <QHash>
 #include <QTimer>

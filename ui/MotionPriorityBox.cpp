@@ -1,8 +1,8 @@
 #include "MotionPriorityBox.h"
 
 #include "ConfirmBox.h"
-#include "DeviceSession.h"
-#include "RoleEvaluator.h"
+#include "profile/RoleEvaluator.h"
+#include "session/DeviceSession.h"
 
 #include <QLabel>
 #include <QPointer>

@@ -1,8 +1,8 @@
 #include "MultiDriveWriteDialog.h"
 
-#include "BusDrives.h"
-#include "DeviceSession.h"
-#include "ValueCodec.h"
+#include "bus/BusDrives.h"
+#include "profile/ValueCodec.h"
+#include "session/DeviceSession.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "PanelMirror.h"
+#include "monitor/PanelMirror.h"
 
 #include <QTimer>
 #include <QWidget>

@@ -1,8 +1,8 @@
 #include "ParameterField.h"
 
-#include "DeviceParameters.h"
-#include "DeviceSession.h"
-#include "ValueCodec.h"
+#include "profile/ValueCodec.h"
+#include "session/DeviceParameters.h"
+#include "session/DeviceSession.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ValueContext.h"
+#include "profile/ValueContext.h"
 
 #include <QWidget>
 #include <functional>

@@ -1,6 +1,6 @@
 #include "ParameterPage.h"
 
-#include "DeviceParameters.h"
+#include "session/DeviceParameters.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

@@ -1,8 +1,8 @@
 #include "PendingValues.h"
 
-#include "DeviceParameters.h"
-#include "DeviceSession.h"
-#include "ValueCodec.h"
+#include "profile/ValueCodec.h"
+#include "session/DeviceParameters.h"
+#include "session/DeviceSession.h"
 
 namespace opentop {
 

@@ -1,8 +1,8 @@
 #include "RestoreChoice.h"
 
-#include "BusDrives.h"
-#include "DeviceSession.h"
-#include "ProfileRegistry.h"
+#include "bus/BusDrives.h"
+#include "profile/ProfileRegistry.h"
+#include "session/DeviceSession.h"
 
 #include <QComboBox>
 #include <QHeaderView>

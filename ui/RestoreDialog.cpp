@@ -1,13 +1,13 @@
 #include "RestoreDialog.h"
 
-#include "BusDrives.h"
 #include "ConfirmBox.h"
-#include "DeviceSession.h"
-#include "ProfileRegistry.h"
 #include "RestoreChoice.h"
 #include "RestorePlanTable.h"
 #include "RestoreReport.h"
-#include "Restorer.h"
+#include "bus/BusDrives.h"
+#include "files/Restorer.h"
+#include "profile/ProfileRegistry.h"
+#include "session/DeviceSession.h"
 
 #include <QFileDialog>
 #include <QFileInfo>

@@ -1,11 +1,11 @@
 #pragma once
 
-#include "BackupFile.h"
-#include "BusDrives.h"
 #include "RestoreChoice.h"
-#include "RestorePlan.h"
 #include "RestorePlanTable.h"
-#include "Restorer.h"
+#include "bus/BusDrives.h"
+#include "files/BackupFile.h"
+#include "files/RestorePlan.h"
+#include "files/Restorer.h"
 
 #include <QDialog>
 #include <QPointer>

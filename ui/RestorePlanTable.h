@@ -1,6 +1,6 @@
 #pragma once
 
-#include "RestorePlan.h"
+#include "files/RestorePlan.h"
 
 #include <QTableWidget>
 

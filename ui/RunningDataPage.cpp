@@ -1,9 +1,9 @@
 #include "RunningDataPage.h"
 
-#include "DeviceParameters.h"
-#include "DeviceSession.h"
 #include "ParameterField.h"
-#include "ValueCodec.h"
+#include "profile/ValueCodec.h"
+#include "session/DeviceParameters.h"
+#include "session/DeviceSession.h"
 
 #include <QGridLayout>
 #include <QLabel>

@@ -1,9 +1,9 @@
 #include "SpeedUnitsPage.h"
 
-#include "DeviceParameters.h"
 #include "ParameterField.h"
 #include "PendingValues.h"
-#include "ValueCodec.h"
+#include "profile/ValueCodec.h"
+#include "session/DeviceParameters.h"
 
 #include <QComboBox>
 #include <QFontDatabase>

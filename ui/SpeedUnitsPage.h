@@ -1,7 +1,7 @@
 #pragma once
 
 #include "ParameterPage.h"
-#include "SpeedDisplay.h"
+#include "profile/SpeedDisplay.h"
 
 #include <QHash>
 #include <QVector>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "DriveStatusPoller.h"
+#include "bus/DriveStatusPoller.h"
 
 #include <QWidget>
 

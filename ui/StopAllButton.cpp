@@ -1,9 +1,9 @@
 #include "StopAllButton.h"
 
-#include "BusDrives.h"
-#include "DeviceSession.h"
-#include "ProfileRegistry.h"
-#include "ValueCodec.h"
+#include "bus/BusDrives.h"
+#include "profile/ProfileRegistry.h"
+#include "profile/ValueCodec.h"
+#include "session/DeviceSession.h"
 
 #include <QMessageBox>
 #include <QShortcut>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "StopAll.h"
+#include "run/StopAll.h"
 
 #include <QPointer>
 #include <QPushButton>

@@ -1,6 +1,6 @@
 #include "TerminalLamps.h"
 
-#include "ParameterMeta.h"
+#include "profile/ParameterMeta.h"
 
 #include <QGridLayout>
 #include <QLabel>

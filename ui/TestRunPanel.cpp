@@ -1,12 +1,12 @@
 #include "TestRunPanel.h"
 
-#include "BusDrives.h"
 #include "ConfirmBox.h"
-#include "DeviceSession.h"
 #include "MotionPriorityBox.h"
-#include "ProfileRegistry.h"
-#include "RoleEvaluator.h"
-#include "ValueCodec.h"
+#include "bus/BusDrives.h"
+#include "profile/ProfileRegistry.h"
+#include "profile/RoleEvaluator.h"
+#include "profile/ValueCodec.h"
+#include "session/DeviceSession.h"
 
 #include <QComboBox>
 #include <QGridLayout>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "RunControl.h"
+#include "run/RunControl.h"
 
 #include <QSet>
 #include <QWidget>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "TrafficStatistics.h"
+#include "traffic/TrafficStatistics.h"
 
 #include <QVector>
 #include <QWidget>

@@ -1,12 +1,12 @@
 #include "TrendChart.h"
 
-#include "BusDrives.h"
-#include "DeviceSession.h"
-#include "MonitorHub.h"
 #include "TrendChartView.h"
-#include "TrendCsv.h"
 #include "TrendPoints.h"
 #include "TrendReadout.h"
+#include "bus/BusDrives.h"
+#include "monitor/MonitorHub.h"
+#include "monitor/TrendCsv.h"
+#include "session/DeviceSession.h"
 
 #include <QChart>
 #include <QDateTime>

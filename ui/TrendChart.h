@@ -1,8 +1,8 @@
 #pragma once
 
-#include "MonitorHub.h"
 #include "TrendAxes.h"
-#include "TrendHistory.h"
+#include "monitor/MonitorHub.h"
+#include "monitor/TrendHistory.h"
 
 #include <QPointer>
 #include <QTimer>

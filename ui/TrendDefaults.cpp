@@ -1,7 +1,7 @@
 #include "TrendDefaults.h"
 
-#include "Profile.h"
-#include "RoleEvaluator.h"
+#include "profile/Profile.h"
+#include "profile/RoleEvaluator.h"
 
 namespace opentop {
 

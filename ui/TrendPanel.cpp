@@ -1,11 +1,11 @@
 #include "TrendPanel.h"
 
-#include "BusDrives.h"
-#include "DeviceSession.h"
-#include "MonitorHub.h"
-#include "RoleEvaluator.h"
 #include "TrendChart.h"
 #include "TrendDefaults.h"
+#include "bus/BusDrives.h"
+#include "monitor/MonitorHub.h"
+#include "profile/RoleEvaluator.h"
+#include "session/DeviceSession.h"
 
 #include <QComboBox>
 #include <QFileDialog>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "TrendHistory.h"
+#include "monitor/TrendHistory.h"
 
 #include <QCoreApplication>
 #include <QVector>

@@ -1,7 +1,6 @@
 // opentop: the desktop application. Composition root only: options, the backend factory and
 // the main window.
 #include "BackendFactory.h"
-#include "BusSpec.h"
 #include "ConnectionDialog.h"
 #include "ConnectionOptions.h"
 #include "EditorRegistry.h"
@@ -9,6 +8,7 @@
 #include "ModbusClient.h"
 #include "MonitorOptions.h"
 #include "TrafficLog.h"
+#include "bus/BusSpec.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

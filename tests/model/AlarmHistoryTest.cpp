@@ -1,6 +1,6 @@
 // Alarm and warning records, the communication error register, alarm reset and erasing,
 // against the in-process simulated DBU.
-#include "AlarmHistory.h"
+#include "alarms/AlarmHistory.h"
 #include "DriveSimFixture.h"
 
 using namespace opentop;

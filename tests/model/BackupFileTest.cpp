@@ -1,9 +1,9 @@
 // Backup files: what is written, that it reads back identically, and every reason a file is
 // refused (not JSON, not ours, a newer version, changed after writing, unknown drives or
 // parameters, wrong register counts, values the profile does not allow).
-#include "BackupFile.h"
+#include "files/BackupFile.h"
 #include "BackupTestSupport.h"
-#include "Comparer.h"
+#include "files/Comparer.h"
 
 #include <QCryptographicHash>
 #include <QJsonArray>

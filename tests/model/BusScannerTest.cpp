@@ -1,13 +1,13 @@
 // BusScanner against in-process simulated buses: a SimBackend for clean buses, a MockBackend
 // in front of a SimBus where replies have to be corrupted the way two drives with one machine
 // number corrupt them.
-#include "BusScanner.h"
+#include "bus/BusScanner.h"
 #include "MockBackend.h"
 #include "ModbusClient.h"
 #include "ModbusCrc.h"
-#include "ProfileRegistry.h"
 #include "SimBackend.h"
 #include "SimBus.h"
+#include "profile/ProfileRegistry.h"
 
 #include <QEventLoop>
 #include <QTimer>

@@ -1,7 +1,7 @@
 // Comparing parameter sets: by name, with each side's units and meaning, and against the
 // profile's factory defaults, where a parameter without a documented default is listed and
 // never counted as a difference.
-#include "Comparer.h"
+#include "files/Comparer.h"
 #include "BackupTestSupport.h"
 
 using namespace opentop;

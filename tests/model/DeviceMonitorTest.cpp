@@ -1,5 +1,5 @@
 // The live monitor against the in-process simulated bus.
-#include "DeviceMonitor.h"
+#include "monitor/DeviceMonitor.h"
 #include "DriveSimFixture.h"
 
 using namespace opentop;

@@ -1,9 +1,9 @@
-#include "DeviceParameters.h"
-#include "DeviceSession.h"
+#include "session/DeviceParameters.h"
 #include "DriveSimFixture.h"
 #include "FaultInjector.h"
 #include "ModbusClient.h"
 #include "SimBus.h"
+#include "session/DeviceSession.h"
 
 #include <QEventLoop>
 #include <QTimer>

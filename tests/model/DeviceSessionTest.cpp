@@ -1,12 +1,12 @@
-#include "DeviceSession.h"
-#include "DeviceIdentifier.h"
+#include "session/DeviceSession.h"
 #include "DriveSimFixture.h"
 #include "ModbusClient.h"
-#include "ProfileRegistry.h"
 #include "SimBackend.h"
 #include "SimBus.h"
 #include "SimDevice.h"
 #include "TrafficLog.h"
+#include "profile/ProfileRegistry.h"
+#include "session/DeviceIdentifier.h"
 
 #include <QEventLoop>
 #include <QTimer>

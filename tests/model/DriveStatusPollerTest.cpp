@@ -1,10 +1,10 @@
-#include "DriveStatusPoller.h"
-#include "BusDrives.h"
-#include "DeviceSession.h"
+#include "bus/DriveStatusPoller.h"
 #include "ModbusClient.h"
-#include "ProfileRegistry.h"
 #include "SimBackend.h"
 #include "SimBus.h"
+#include "bus/BusDrives.h"
+#include "profile/ProfileRegistry.h"
+#include "session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <QDeadlineTimer>

@@ -1,8 +1,8 @@
 // Shared live monitoring against the in-process simulated bus.
-#include "MonitorHub.h"
-#include "BusDrives.h"
+#include "monitor/MonitorHub.h"
 #include "DriveSimFixture.h"
-#include "ProfileRegistry.h"
+#include "bus/BusDrives.h"
+#include "profile/ProfileRegistry.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -1,7 +1,7 @@
 // What the DBU's 5-digit panel shows, worked out from samples of the DBU profile.
-#include "PanelMirror.h"
-#include "DeviceMonitor.h"
-#include "ProfileRegistry.h"
+#include "monitor/PanelMirror.h"
+#include "monitor/DeviceMonitor.h"
+#include "profile/ProfileRegistry.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "ProfileLoader.h"
+#include "profile/ProfileLoader.h"
 #include "TestProfileJson.h"
 
 #include <QJsonArray>

@@ -1,6 +1,6 @@
-#include "ProfileRegistry.h"
-#include "BusSpec.h"
-#include "ProfileLoader.h"
+#include "profile/ProfileRegistry.h"
+#include "bus/BusSpec.h"
+#include "profile/ProfileLoader.h"
 
 #include <QDir>
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-#include "ReadPlanner.h"
-#include "ProfileRegistry.h"
+#include "session/ReadPlanner.h"
+#include "profile/ProfileRegistry.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Test runs and stop-all against the in-process simulated bus.
-#include "RunControl.h"
+#include "run/RunControl.h"
 #include "DriveSimFixture.h"
 
 using namespace opentop;

@@ -1,7 +1,7 @@
 // What the drive's speed display shows: formulas of docs/speed-display.md against values worked
 // out by hand.
-#include "SpeedDisplay.h"
-#include "ProfileRegistry.h"
+#include "profile/SpeedDisplay.h"
+#include "profile/ProfileRegistry.h"
 
 #include <QHash>
 #include <gtest/gtest.h>

@@ -1,9 +1,9 @@
-#include "TrafficDescriber.h"
+#include "traffic/TrafficDescriber.h"
 #include "DriveSimFixture.h"
 
 #include "ModbusRequest.h"
-#include "ProfileRegistry.h"
 #include "RtuFrame.h"
+#include "profile/ProfileRegistry.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -1,4 +1,4 @@
-#include "TrafficStatistics.h"
+#include "traffic/TrafficStatistics.h"
 #include "DriveSimFixture.h"
 
 #include "FaultInjector.h"

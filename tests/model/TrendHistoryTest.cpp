@@ -1,8 +1,8 @@
 // Trend history and its CSV form, from hand-made samples of the DBU profile.
-#include "TrendHistory.h"
-#include "DeviceMonitor.h"
-#include "ProfileRegistry.h"
-#include "TrendCsv.h"
+#include "monitor/TrendHistory.h"
+#include "monitor/DeviceMonitor.h"
+#include "monitor/TrendCsv.h"
+#include "profile/ProfileRegistry.h"
 
 #include <gtest/gtest.h>
 

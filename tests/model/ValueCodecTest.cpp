@@ -1,6 +1,6 @@
-#include "ValueCodec.h"
-#include "ProfileLoader.h"
+#include "profile/ValueCodec.h"
 #include "TestProfileJson.h"
+#include "profile/ProfileLoader.h"
 
 #include <gtest/gtest.h>
 

@@ -2,9 +2,9 @@
 #include "AlarmsPage.h"
 #include "AlarmBanner.h"
 #include "AlarmExport.h"
-#include "BusDrives.h"
-#include "DriveStatusPoller.h"
 #include "UiSimFixture.h"
+#include "bus/BusDrives.h"
+#include "bus/DriveStatusPoller.h"
 
 #include <QApplication>
 #include <QFile>

@@ -1,7 +1,7 @@
-#include "BackupFile.h"
 #include "BackupViewer.h"
 #include "FileActions.h"
 #include "FileDialogsFixture.h"
+#include "files/BackupFile.h"
 
 #include <QFileInfo>
 #include <QMenu>

@@ -2,9 +2,9 @@
 // it is shown, an alarm marked, nothing polled while it is hidden.
 #include "BusOverview.h"
 #include "../model/DriveSimFixture.h"
-#include "BusDrives.h"
 #include "BusOverviewModel.h"
-#include "MonitorHub.h"
+#include "bus/BusDrives.h"
+#include "monitor/MonitorHub.h"
 
 #include <QBrush>
 #include <QTableView>

@@ -1,12 +1,12 @@
 #include "BusPanel.h"
 #include "BackendFactory.h"
-#include "BusDrives.h"
 #include "BusListModel.h"
-#include "DeviceSession.h"
-#include "DriveStatusPoller.h"
 #include "ModbusClient.h"
-#include "ProfileRegistry.h"
 #include "SimBus.h"
+#include "bus/BusDrives.h"
+#include "bus/DriveStatusPoller.h"
+#include "profile/ProfileRegistry.h"
+#include "session/DeviceSession.h"
 
 #include <QAction>
 #include <QBrush>

@@ -1,7 +1,7 @@
 #include "CompareDialog.h"
-#include "Comparer.h"
 #include "FileDialogsFixture.h"
 #include "RestoreDialog.h"
+#include "files/Comparer.h"
 
 #include <QTableWidget>
 

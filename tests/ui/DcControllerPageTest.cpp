@@ -1,7 +1,7 @@
 #include "DcControllerPage.h"
-#include "DeviceParameters.h"
 #include "ParameterField.h"
 #include "UiSimFixture.h"
+#include "session/DeviceParameters.h"
 
 using namespace opentop;
 

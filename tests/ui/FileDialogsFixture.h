@@ -4,9 +4,9 @@
 // fixture's client with every simulated drive identified, a temporary directory for files.
 
 #include "BackupDialog.h"
-#include "BusDrives.h"
 #include "SimDevice.h"
 #include "UiSimFixture.h"
+#include "bus/BusDrives.h"
 
 #include <QFile>
 #include <QTemporaryDir>

@@ -1,7 +1,7 @@
 #include "IoTerminalsPage.h"
-#include "DeviceParameters.h"
 #include "PageFixture.h"
 #include "ParameterField.h"
+#include "session/DeviceParameters.h"
 
 #include <QComboBox>
 

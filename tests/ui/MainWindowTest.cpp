@@ -3,22 +3,22 @@
 // workspace reaches the drive, several drives of one family enable the multi-drive write.
 #include "MainWindow.h"
 #include "BackendFactory.h"
-#include "BusDrives.h"
 #include "BusListModel.h"
 #include "BusOverview.h"
 #include "BusOverviewModel.h"
 #include "BusPanel.h"
-#include "DeviceParameters.h"
 #include "DriveWorkspace.h"
 #include "EditorRegistry.h"
 #include "ModbusClient.h"
-#include "MonitorHub.h"
 #include "MonitorPage.h"
 #include "ParameterField.h"
 #include "ParameterPage.h"
 #include "SimBus.h"
 #include "StopAllButton.h"
 #include "TrafficLog.h"
+#include "bus/BusDrives.h"
+#include "monitor/MonitorHub.h"
+#include "session/DeviceParameters.h"
 
 #include <QCoreApplication>
 #include <QDeadlineTimer>

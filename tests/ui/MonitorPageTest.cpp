@@ -2,13 +2,13 @@
 // terminals light, the drive's panel is mirrored, an alarm is shown with its remedy.
 #include "MonitorPage.h"
 #include "../model/DriveSimFixture.h"
-#include "BusDrives.h"
-#include "DeviceParameters.h"
-#include "MonitorHub.h"
 #include "PanelMirrorView.h"
 #include "StatusLight.h"
 #include "TerminalLamps.h"
 #include "TrendChart.h"
+#include "bus/BusDrives.h"
+#include "monitor/MonitorHub.h"
+#include "session/DeviceParameters.h"
 
 #include <QSettings>
 

@@ -1,6 +1,6 @@
 #include "MultiDriveWriteDialog.h"
-#include "BusDrives.h"
 #include "UiSimFixture.h"
+#include "bus/BusDrives.h"
 
 #include <QComboBox>
 

@@ -1,7 +1,7 @@
 #include "RunningDataPage.h"
-#include "DeviceParameters.h"
 #include "PageFixture.h"
 #include "ParameterField.h"
+#include "session/DeviceParameters.h"
 
 #include <QApplication>
 #include <QKeyEvent>

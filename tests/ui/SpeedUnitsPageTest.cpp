@@ -1,7 +1,7 @@
 #include "SpeedUnitsPage.h"
-#include "DeviceParameters.h"
 #include "ParameterField.h"
 #include "UiSimFixture.h"
+#include "session/DeviceParameters.h"
 
 #include <QLineEdit>
 

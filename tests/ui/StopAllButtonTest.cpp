@@ -1,7 +1,7 @@
 #include "StopAllButton.h"
-#include "BusDrives.h"
-#include "RunControl.h"
 #include "UiSimFixture.h"
+#include "bus/BusDrives.h"
+#include "run/RunControl.h"
 
 #include <QApplication>
 #include <QMessageBox>

@@ -1,8 +1,8 @@
 #include "TestRunPanel.h"
-#include "BusDrives.h"
-#include "RunControl.h"
 #include "StopAllButton.h"
 #include "UiSimFixture.h"
+#include "bus/BusDrives.h"
+#include "run/RunControl.h"
 
 #include <QApplication>
 #include <QComboBox>

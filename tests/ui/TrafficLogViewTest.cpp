@@ -1,10 +1,10 @@
 #include "TrafficLogView.h"
 
-#include "BusDrives.h"
-#include "TrafficDescriber.h"
 #include "TrafficLogFilter.h"
 #include "TrafficLogModel.h"
 #include "UiSimFixture.h"
+#include "bus/BusDrives.h"
+#include "traffic/TrafficDescriber.h"
 
 #include <QCheckBox>
 #include <QFile>

@@ -2,9 +2,9 @@
 
 // Trend chart tests: two simulated DBU drives on a BusDrives with a MonitorHub polling fast.
 
-#include "BusDrives.h"
-#include "MonitorHub.h"
 #include "UiSimFixture.h"
+#include "bus/BusDrives.h"
+#include "monitor/MonitorHub.h"
 
 namespace opentop::test {
 
