@@ -1,8 +1,8 @@
 #include "MonitorOptions.h"
 
-#include "BusPanel.h"
-#include "MainWindow.h"
 #include "bus/BusDrives.h"
+#include "bus/BusPanel.h"
+#include "main/MainWindow.h"
 #include "monitor/MonitorHub.h"
 
 #include <QApplication>

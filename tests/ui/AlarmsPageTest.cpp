@@ -1,8 +1,8 @@
 // The alarms page, the alarm banner and the CSV export against the in-process simulated DBU.
-#include "AlarmsPage.h"
-#include "AlarmBanner.h"
-#include "AlarmExport.h"
+#include "alarms/AlarmsPage.h"
 #include "UiSimFixture.h"
+#include "alarms/AlarmBanner.h"
+#include "alarms/AlarmExport.h"
 #include "bus/BusDrives.h"
 #include "bus/DriveStatusPoller.h"
 

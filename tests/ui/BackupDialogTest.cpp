@@ -1,7 +1,7 @@
-#include "BackupViewer.h"
-#include "FileActions.h"
 #include "FileDialogsFixture.h"
 #include "files/BackupFile.h"
+#include "files/BackupViewer.h"
+#include "files/FileActions.h"
 
 #include <QFileInfo>
 #include <QMenu>

@@ -1,9 +1,9 @@
 // The bus overview against the in-process simulated bus: every drive live in one grid while
 // it is shown, an alarm marked, nothing polled while it is hidden.
-#include "BusOverview.h"
+#include "bus/BusOverview.h"
 #include "../model/DriveSimFixture.h"
-#include "BusOverviewModel.h"
 #include "bus/BusDrives.h"
+#include "bus/BusOverviewModel.h"
 #include "monitor/MonitorHub.h"
 
 #include <QBrush>

@@ -1,7 +1,7 @@
-#include "CompareDialog.h"
+#include "files/CompareDialog.h"
 #include "FileDialogsFixture.h"
-#include "RestoreDialog.h"
 #include "files/Comparer.h"
+#include "files/RestoreDialog.h"
 
 #include <QTableWidget>
 

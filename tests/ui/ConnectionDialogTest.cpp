@@ -1,4 +1,4 @@
-#include "ConnectionDialog.h"
+#include "connection/ConnectionDialog.h"
 
 #include <QCoreApplication>
 #include <QSettings>

@@ -1,7 +1,7 @@
-#include "DcControllerPage.h"
-#include "ParameterField.h"
+#include "pages/DcControllerPage.h"
 #include "UiSimFixture.h"
 #include "session/DeviceParameters.h"
+#include "workspace/ParameterField.h"
 
 using namespace opentop;
 

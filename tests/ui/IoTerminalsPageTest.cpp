@@ -1,7 +1,7 @@
-#include "IoTerminalsPage.h"
+#include "pages/IoTerminalsPage.h"
 #include "PageFixture.h"
-#include "ParameterField.h"
 #include "session/DeviceParameters.h"
+#include "workspace/ParameterField.h"
 
 #include <QComboBox>
 

@@ -1,24 +1,24 @@
 // The whole window against an in-process simulated bus: connect, the configured drives are
 // identified with their variants, selecting one opens its pages, an edit written from the
 // workspace reaches the drive, several drives of one family enable the multi-drive write.
-#include "MainWindow.h"
+#include "main/MainWindow.h"
 #include "BackendFactory.h"
-#include "BusListModel.h"
-#include "BusOverview.h"
-#include "BusOverviewModel.h"
-#include "BusPanel.h"
-#include "DriveWorkspace.h"
-#include "EditorRegistry.h"
 #include "ModbusClient.h"
-#include "MonitorPage.h"
-#include "ParameterField.h"
-#include "ParameterPage.h"
 #include "SimBus.h"
-#include "StopAllButton.h"
 #include "TrafficLog.h"
 #include "bus/BusDrives.h"
+#include "bus/BusListModel.h"
+#include "bus/BusOverview.h"
+#include "bus/BusOverviewModel.h"
+#include "bus/BusPanel.h"
 #include "monitor/MonitorHub.h"
+#include "monitor/MonitorPage.h"
+#include "pages/EditorRegistry.h"
+#include "run/StopAllButton.h"
 #include "session/DeviceParameters.h"
+#include "workspace/DriveWorkspace.h"
+#include "workspace/ParameterField.h"
+#include "workspace/ParameterPage.h"
 
 #include <QCoreApplication>
 #include <QDeadlineTimer>

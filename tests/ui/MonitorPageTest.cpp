@@ -1,14 +1,14 @@
 // The monitor page against the in-process simulated bus: a started drive ramps up, the
 // terminals light, the drive's panel is mirrored, an alarm is shown with its remedy.
-#include "MonitorPage.h"
+#include "monitor/MonitorPage.h"
 #include "../model/DriveSimFixture.h"
-#include "PanelMirrorView.h"
-#include "StatusLight.h"
-#include "TerminalLamps.h"
-#include "TrendChart.h"
 #include "bus/BusDrives.h"
 #include "monitor/MonitorHub.h"
+#include "monitor/PanelMirrorView.h"
+#include "monitor/TerminalLamps.h"
 #include "session/DeviceParameters.h"
+#include "trends/TrendChart.h"
+#include "widgets/StatusLight.h"
 
 #include <QSettings>
 

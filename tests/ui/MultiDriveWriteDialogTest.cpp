@@ -1,4 +1,4 @@
-#include "MultiDriveWriteDialog.h"
+#include "workspace/MultiDriveWriteDialog.h"
 #include "UiSimFixture.h"
 #include "bus/BusDrives.h"
 

@@ -2,8 +2,8 @@
 
 // A page under test on a one-drive simulated bus, with its parameters read once.
 #include "../model/DriveSimFixture.h"
-#include "ParameterPage.h"
 #include "session/DeviceParameters.h"
+#include "workspace/ParameterPage.h"
 
 namespace opentop::test {
 

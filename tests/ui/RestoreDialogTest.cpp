@@ -1,4 +1,4 @@
-#include "RestoreDialog.h"
+#include "files/RestoreDialog.h"
 #include "FileDialogsFixture.h"
 
 using namespace opentop;

@@ -1,7 +1,7 @@
-#include "RunningDataPage.h"
+#include "pages/RunningDataPage.h"
 #include "PageFixture.h"
-#include "ParameterField.h"
 #include "session/DeviceParameters.h"
+#include "workspace/ParameterField.h"
 
 #include <QApplication>
 #include <QKeyEvent>

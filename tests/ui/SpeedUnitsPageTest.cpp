@@ -1,7 +1,7 @@
-#include "SpeedUnitsPage.h"
-#include "ParameterField.h"
+#include "pages/SpeedUnitsPage.h"
 #include "UiSimFixture.h"
 #include "session/DeviceParameters.h"
+#include "workspace/ParameterField.h"
 
 #include <QLineEdit>
 

@@ -1,4 +1,4 @@
-#include "StopAllButton.h"
+#include "run/StopAllButton.h"
 #include "UiSimFixture.h"
 #include "bus/BusDrives.h"
 #include "run/RunControl.h"

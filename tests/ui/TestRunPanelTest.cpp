@@ -1,8 +1,8 @@
-#include "TestRunPanel.h"
-#include "StopAllButton.h"
+#include "run/TestRunPanel.h"
 #include "UiSimFixture.h"
 #include "bus/BusDrives.h"
 #include "run/RunControl.h"
+#include "run/StopAllButton.h"
 
 #include <QApplication>
 #include <QComboBox>

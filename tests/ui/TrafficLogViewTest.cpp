@@ -1,10 +1,10 @@
-#include "TrafficLogView.h"
+#include "traffic/TrafficLogView.h"
 
-#include "TrafficLogFilter.h"
-#include "TrafficLogModel.h"
 #include "UiSimFixture.h"
 #include "bus/BusDrives.h"
 #include "traffic/TrafficDescriber.h"
+#include "traffic/TrafficLogFilter.h"
+#include "traffic/TrafficLogModel.h"
 
 #include <QCheckBox>
 #include <QFile>

@@ -1,7 +1,7 @@
-#include "TrendChart.h"
-#include "TrendChartView.h"
+#include "trends/TrendChart.h"
 #include "TrendFixture.h"
-#include "TrendReadout.h"
+#include "trends/TrendChartView.h"
+#include "trends/TrendReadout.h"
 
 #include <QChart>
 #include <QDateTimeAxis>

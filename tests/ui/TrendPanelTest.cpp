@@ -1,6 +1,6 @@
-#include "TrendPanel.h"
-#include "TrendChart.h"
+#include "trends/TrendPanel.h"
 #include "TrendFixture.h"
+#include "trends/TrendChart.h"
 
 #include <QChart>
 #include <QComboBox>

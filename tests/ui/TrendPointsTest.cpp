@@ -1,5 +1,5 @@
 // What a trend chart draws: thinning out long series and round axis ranges.
-#include "TrendPoints.h"
+#include "trends/TrendPoints.h"
 
 #include <gtest/gtest.h>
 
