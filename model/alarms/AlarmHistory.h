@@ -1,5 +1,6 @@
 #pragma once
 
+#include "alarms/AlarmRecords.h"
 #include "profile/CodeTable.h"
 #include "session/DeviceSession.h"
 
@@ -14,47 +15,17 @@ namespace opentop {
 
 struct ParameterMeta;
 
-// A drive's alarm and warning records and its communication error register, decoded with the
-// profile's code tables; alarm reset and erasing the records. Tables and roles come from the
+// A drive's alarm and warning records and its communication error register read from the drive
+// (decoded by AlarmRecords); alarm reset and erasing the records. Tables and roles come from the
 // profile: code tables "alarm", "warning" and "comm_error"; roles "alarmActive", "alarmReset",
 // "eraseAlarms", "eraseWarnings".
 class AlarmHistory : public QObject
 {
     Q_OBJECT
 public:
-    // One record slot, 1 = newest.
-    struct Record
-    {
-        int index = 0;
-        qint64 code = 0;
-        bool empty = true;              // code 0: nothing recorded in this slot
-        std::optional<CodeEntry> entry; // the code table's entry; none for unknown codes
-    };
-    struct History
-    {
-        QString table; // "alarm", "warning"
-        QString label; // the code table's label
-        QVector<Record> records;
-        bool ok = false;
-        QString error;
-        int used() const;
-        // Codes present, each once, newest first.
-        QVector<CodeEntry> distinctEntries() const;
-    };
-    struct Report
-    {
-        bool ok = false;            // everything could be read
-        QVector<History> histories; // alarm, then warning (those the profile has)
-        QString commErrorParameter; // e.g. "status.comm_error"; empty when the profile has none
-        std::optional<qint64> commErrorCode;
-        std::optional<CodeEntry> commError; // decoded; none for 0 or unknown codes
-        std::optional<bool> alarmActive;
-        // The drive is set to clear every alarm by a power restart (see eraseMethodParameter).
-        bool powerRestartOnly = false;
-        QString eraseMethod; // "core.alarm_erase = Restart power"; empty when not known
-        int requests = 0;
-        QStringList errors;
-    };
+    using Record = AlarmRecords::Record;
+    using History = AlarmRecords::History;
+    using Report = AlarmRecords::Report;
     using ReportDone = std::function<void(const Report&)>;
 
     struct ResetOutcome
@@ -112,13 +83,10 @@ private:
     void sendReset(const DeviceSession::ReadManyOutcome& before, ResetDone done);
     void finishReset(const std::shared_ptr<ResetState>& state, std::optional<bool> still,
                      ResetDone done);
-    QVector<const ParameterMeta*> recordParameters() const;
-    const ParameterMeta* commErrorMeta() const;
-    Report decode(const QHash<QString, double>& raw, const QHash<QString, QString>& errors) const;
     void writeRoles(const QStringList& roles, std::function<void(QStringList errors)> done);
-    bool eraseMethodIsPower(double raw) const;
 
     DeviceSession* m_session;
+    AlarmRecords m_records;
 };
 
 } // namespace opentop
