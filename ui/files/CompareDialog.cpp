@@ -7,11 +7,7 @@
 #include "session/DeviceSession.h"
 
 #include <QCheckBox>
-#include <QComboBox>
-#include <QFileDialog>
 #include <QFileInfo>
-#include <QFormLayout>
-#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -40,9 +36,14 @@ CompareDialog::CompareDialog(BusDrives* drives, QWidget* parent)
     , m_compare(new QPushButton(tr("Co&mpare")))
 {
     setWindowTitle(tr("Compare settings"));
+    m_sides[A] = new CompareSide(tr("Side A"), false, drives);
+    m_sides[B] = new CompareSide(tr("Side B"), true, drives);
     auto* sides = new QHBoxLayout;
-    sides->addWidget(buildSide(A));
-    sides->addWidget(buildSide(B));
+    for (Side side : {A, B}) {
+        sides->addWidget(m_sides[side]);
+        connect(m_sides[side], &CompareSide::fileChosen, this,
+                [this, side](const QString& path) { setFileSide(side, path); });
+    }
 
     m_table->setHorizontalHeaderLabels({tr("Setting"), tr("Parameter"), tr("A"), tr("B")});
     m_table->verticalHeader()->hide();
@@ -80,99 +81,25 @@ CompareDialog::CompareDialog(BusDrives* drives, QWidget* parent)
     connect(close, &QPushButton::clicked, this, &QDialog::accept);
 }
 
-QWidget* CompareDialog::buildSide(Side side)
-{
-    SideWidgets& w = m_sides[side];
-    auto* box = new QGroupBox(side == A ? tr("Side A") : tr("Side B"));
-    w.source = new QComboBox;
-    w.source->addItem(tr("Drive on the bus"), BusDrive);
-    w.source->addItem(tr("Drive in a backup file"), FileDrive);
-    if (side == B)
-        w.source->addItem(tr("Factory defaults"), Defaults);
-    w.drive = new QComboBox;
-    if (m_drives) {
-        for (int slave : m_drives->slaves()) {
-            if (m_drives->session(slave))
-                w.drive->addItem(tr("Drive %1 (%2)").arg(slave).arg(m_drives->info(slave).model),
-                                 slave);
-        }
-    }
-    w.path = new QLineEdit;
-    w.path->setPlaceholderText(tr("Backup file"));
-    w.browse = new QPushButton(tr("Browse…"));
-    w.fileDrive = new QComboBox;
-    auto* fileRow = new QHBoxLayout;
-    fileRow->addWidget(w.path, 1);
-    fileRow->addWidget(w.browse);
-    auto* form = new QFormLayout(box);
-    form->addRow(tr("Source:"), w.source);
-    form->addRow(tr("Drive:"), w.drive);
-    form->addRow(tr("File:"), fileRow);
-    form->addRow(tr("Drive in file:"), w.fileDrive);
-    // A file or no drives: start where something can be compared.
-    if (w.drive->count() == 0)
-        w.source->setCurrentIndex(1);
-    else if (side == B && w.drive->count() < 2)
-        w.source->setCurrentIndex(2);
-    connect(w.source, &QComboBox::currentIndexChanged, this, [this, side] { updateSide(side); });
-    connect(w.browse, &QPushButton::clicked, this, [this, side] { chooseFile(side); });
-    connect(w.path, &QLineEdit::editingFinished, this, [this, side] {
-        if (m_sides[side].path->text() != QString())
-            setFileSide(side, m_sides[side].path->text());
-    });
-    updateSide(side);
-    return box;
-}
-
-void CompareDialog::updateSide(Side side)
-{
-    SideWidgets& w = m_sides[side];
-    const int source = w.source->currentData().toInt();
-    w.drive->setEnabled(source == BusDrive);
-    w.path->setEnabled(source == FileDrive);
-    w.browse->setEnabled(source == FileDrive);
-    w.fileDrive->setEnabled(source == FileDrive);
-}
-
 void CompareDialog::setDriveSide(Side side, int slave)
 {
-    SideWidgets& w = m_sides[side];
-    w.source->setCurrentIndex(w.source->findData(BusDrive));
-    w.drive->setCurrentIndex(w.drive->findData(slave));
+    m_sides[side]->chooseBusDrive(slave);
 }
 
 void CompareDialog::setDefaultsSide()
 {
-    m_sides[B].source->setCurrentIndex(m_sides[B].source->findData(Defaults));
+    m_sides[B]->chooseDefaults();
 }
 
 bool CompareDialog::setFileSide(Side side, const QString& path, int slave)
 {
-    SideWidgets& w = m_sides[side];
-    w.source->setCurrentIndex(w.source->findData(FileDrive));
-    w.path->setText(path);
-    w.fileDrive->clear();
     QString error;
-    w.file = BackupFile::load(path, ProfileRegistry::builtIn(), &error);
-    if (!w.file) {
+    if (!m_sides[side]->loadFile(path, slave, &error)) {
         showError(tr("%1 refused: %2").arg(QFileInfo(path).fileName(), error));
         return false;
     }
-    for (const BackupDevice& d : w.file->devices)
-        w.fileDrive->addItem(d.title(), d.slave);
-    if (slave > 0)
-        w.fileDrive->setCurrentIndex(std::max(0, w.fileDrive->findData(slave)));
     showError(QString());
     return true;
-}
-
-void CompareDialog::chooseFile(Side side)
-{
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Open backup file"), m_sides[side].path->text(),
-                                     tr("OpenTOP backups (*.json);;All files (*)"));
-    if (!path.isEmpty())
-        setFileSide(side, path);
 }
 
 void CompareDialog::compare()
@@ -206,32 +133,30 @@ void CompareDialog::compare()
 
 void CompareDialog::resolve(Side side, const std::function<void(bool)>& next)
 {
-    SideWidgets& w = m_sides[side];
+    CompareSide* w = m_sides[side];
     const QString sideName = side == A ? tr("side A") : tr("side B");
-    switch (w.source->currentData().toInt()) {
-    case Defaults: {
+    switch (w->source()) {
+    case CompareSide::Defaults: {
         // Built in fill(), from side A's family and variant.
-        w.title = tr("Factory defaults");
+        w->setResolved(w->device(), tr("Factory defaults"));
         next(true);
         return;
     }
-    case FileDrive: {
-        const BackupDevice* d =
-            w.file ? w.file->device(w.fileDrive->currentData().toInt()) : nullptr;
+    case CompareSide::FileDrive: {
+        const BackupDevice* d = w->fileDevice();
         if (!d) {
             showError(tr("Choose a backup file and a drive in it for %1.").arg(sideName));
             next(false);
             return;
         }
-        w.device = *d;
-        w.title = tr("%1: %2").arg(QFileInfo(w.path->text()).fileName(), d->title());
+        w->setResolved(*d, tr("%1: %2").arg(w->fileName(), d->title()));
         next(true);
         return;
     }
     default:
         break;
     }
-    const int slave = w.drive->currentData().toInt();
+    const int slave = w->busSlave();
     DeviceSession* session = m_drives ? m_drives->session(slave) : nullptr;
     if (!session) {
         showError(tr("Choose an identified drive on the bus for %1.").arg(sideName));
@@ -247,8 +172,7 @@ void CompareDialog::resolve(Side side, const std::function<void(bool)>& next)
             next(false);
             return;
         }
-        m_sides[side].device = r.device;
-        m_sides[side].title = r.device.title();
+        m_sides[side]->setResolved(r.device, r.device.title());
         next(true);
     });
 }
@@ -265,14 +189,15 @@ void CompareDialog::fill()
     m_table->setRowCount(0);
     m_different.clear();
     m_differences.clear();
-    const BackupDevice& a = m_sides[A].device;
+    const BackupDevice& a = m_sides[A]->device();
     const Profile* profile = ProfileRegistry::builtIn().family(a.family);
     if (!profile) {
         showError(tr("Unknown family %1").arg(a.family));
         return;
     }
-    const bool defaults = m_sides[B].source->currentData().toInt() == Defaults;
-    BackupDevice b = defaults ? Comparer::factoryDefaults(*profile, a.variant) : m_sides[B].device;
+    const bool defaults = m_sides[B]->source() == CompareSide::Defaults;
+    BackupDevice b =
+        defaults ? Comparer::factoryDefaults(*profile, a.variant) : m_sides[B]->device();
     const Comparer::Result result =
         defaults ? Comparer::compareWithDefaults(*profile, a) : Comparer::compare(*profile, a, b);
     if (!result.refusal.isEmpty()) {
@@ -286,10 +211,10 @@ void CompareDialog::fill()
         m_differences << d.parameter;
     }
     m_table->setHorizontalHeaderLabels(
-        {tr("Setting"), tr("Parameter"), tr("A: %1").arg(m_sides[A].title),
+        {tr("Setting"), tr("Parameter"), tr("A: %1").arg(m_sides[A]->title()),
          tr("B: %1").arg(
              defaults ? tr("factory defaults (%1)").arg(a.variant.isEmpty() ? a.family : a.variant)
-                      : m_sides[B].title)});
+                      : m_sides[B]->title())});
     for (const ParameterMeta& meta : profile->parameters) {
         if (!meta.backup || (!a.parameter(meta.name) && !b.parameter(meta.name) &&
                              !result.noDefault.contains(meta.name)))

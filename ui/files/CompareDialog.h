@@ -1,17 +1,14 @@
 #pragma once
 
 #include "bus/BusDrives.h"
-#include "files/BackupDevice.h"
-#include "files/BackupFile.h"
+#include "files/CompareSide.h"
 
 #include <QDialog>
 #include <QPointer>
 #include <QSet>
 #include <functional>
-#include <optional>
 
 class QCheckBox;
-class QComboBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
@@ -31,12 +28,7 @@ public:
         A,
         B
     };
-    enum Source
-    {
-        BusDrive,
-        FileDrive,
-        Defaults // side B only
-    };
+    using Source = CompareSide::Source; // BusDrive, FileDrive, Defaults (side B only)
     enum Column
     {
         Label,
@@ -71,21 +63,6 @@ signals:
     void compareFinished(bool ok);
 
 private:
-    struct SideWidgets
-    {
-        QComboBox* source = nullptr;
-        QComboBox* drive = nullptr;
-        QLineEdit* path = nullptr;
-        QPushButton* browse = nullptr;
-        QComboBox* fileDrive = nullptr;
-        std::optional<BackupFile> file;
-        BackupDevice device; // as resolved for the last comparison
-        QString title;
-    };
-
-    QWidget* buildSide(Side side);
-    void updateSide(Side side);
-    void chooseFile(Side side); // modal file dialog
     void resolve(Side side, const std::function<void(bool)>& next);
     void showError(const QString& error);
     void fill();
@@ -93,7 +70,7 @@ private:
     int rowOf(const QString& parameter) const;
 
     QPointer<BusDrives> m_drives;
-    SideWidgets m_sides[2];
+    CompareSide* m_sides[2];
     QTableWidget* m_table;
     QCheckBox* m_differencesOnly;
     QLineEdit* m_filter;
