@@ -1,7 +1,9 @@
 #include "monitor/MonitorPage.h"
 
 #include "bus/DriveStatusPoller.h"
+#include "monitor/MonitorDetails.h"
 #include "monitor/MonitorHub.h"
+#include "monitor/MotorSpeedBox.h"
 #include "monitor/PanelMirrorView.h"
 #include "monitor/TerminalLamps.h"
 #include "profile/RoleEvaluator.h"
@@ -13,13 +15,11 @@
 #include "widgets/StatusLight.h"
 
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
-#include <QSettings>
 #include <QSplitter>
 #include <QTime>
 #include <QVBoxLayout>
@@ -41,11 +41,6 @@ QLabel* bigLabel(QWidget* parent, qreal factor)
     l->setFont(f);
     l->setTextInteractionFlags(Qt::TextSelectableByMouse);
     return l;
-}
-
-QString settingsKey(int slave)
-{
-    return QStringLiteral("monitor/commutationsPerRevolution/%1").arg(slave);
 }
 
 } // namespace
@@ -127,11 +122,7 @@ MonitorPage::MonitorPage(MonitorHub* hub, DeviceParameters* parameters, QWidget*
                 const DeviceParameters::Entry* e = m_parameters->entry(n);
                 if (displayNames.contains(n) && e && e->state == DeviceParameters::State::Clean)
                     m_displayChanged.start();
-                // A terminal's function read or written: what its lamp means.
-                for (TerminalLamps* lamps : std::as_const(m_lamps)) {
-                    if (lamps->functionParameters().contains(n))
-                        lamps->setFunctionText(n, m_parameters->deviceText(n));
-                }
+                m_details->parameterChanged(n);
                 if (m_last)
                     showPanel(*m_last);
             });
@@ -183,8 +174,8 @@ QWidget* MonitorPage::buildReadouts()
     m_alarm->setStyleSheet(QStringLiteral("QLabel { background: #e51c23; color: white; "
                                           "padding: 4px; border-radius: 4px; }"));
     column->addWidget(m_alarm);
-    m_details = new QFormLayout;
-    column->addLayout(m_details);
+    m_details = new MonitorDetails(m_parameters, box);
+    column->addWidget(m_details);
     column->addStretch(1);
     return box;
 }
@@ -199,31 +190,11 @@ QWidget* MonitorPage::buildSide()
         m_panel = new PanelMirrorView(side);
         column->addWidget(m_panel);
     }
-    // A speed measured as a frequency (the DC controller's commutations per second) becomes
-    // r/min only with the motor's commutations per revolution, which the controller does not
-    // know: the user says, and it is remembered for this machine number.
+    // A speed measured as a frequency (the DC controller's) needs the motor's commutations.
     const ParameterMeta* speed = RoleEvaluator::parameter(profile, kCurrent);
-    if (speed && speed->spec.unit == QLatin1String("1/s")) {
-        auto* box = new QGroupBox(tr("Motor speed"), side);
-        auto* form = new QFormLayout(box);
-        m_commutations = new QDoubleSpinBox(box);
-        m_commutations->setObjectName(QStringLiteral("commutationsPerRevolution"));
-        m_commutations->setRange(0, 1000);
-        m_commutations->setDecimals(0);
-        m_commutations->setSpecialValueText(tr("not set"));
-        m_commutations->setToolTip(tr("Commutations per motor revolution (a motor property, "
-                                      "see its data sheet). r/min = %1 ÷ this × 60.")
-                                       .arg(speed->label));
-        m_commutations->setValue(QSettings().value(settingsKey(m_slave), 0).toDouble());
-        form->addRow(tr("Commutations per revolution"), m_commutations);
-        m_frequencySpeed = bigLabel(box, 1.3);
-        form->addRow(tr("Motor speed"), m_frequencySpeed);
-        connect(m_commutations, &QDoubleSpinBox::valueChanged, this, [this](double v) {
-            QSettings().setValue(settingsKey(m_slave), v);
-            if (m_last)
-                showFrequencySpeed(*m_last);
-        });
-        column->addWidget(box);
+    if (MotorSpeedBox::appliesTo(speed)) {
+        m_motorSpeed = new MotorSpeedBox(*speed, m_slave, side);
+        column->addWidget(m_motorSpeed);
     }
     column->addStretch(1);
     return side;
@@ -231,72 +202,25 @@ QWidget* MonitorPage::buildSide()
 
 void MonitorPage::setCommutationsPerRevolution(double count)
 {
-    if (m_commutations)
-        m_commutations->setValue(count);
-}
-
-void MonitorPage::buildRows(const MonitorSample& sample)
-{
-    // The speeds and the load are shown large above; not twice.
-    const Profile& profile = m_parameters->profile();
-    QStringList large;
-    for (const QString& role : {kCurrent, kTarget, kLoad}) {
-        if (const ParameterMeta* m = RoleEvaluator::parameter(profile, role))
-            large << m->name;
-    }
-    for (const MonitorValue& v : sample.values) {
-        if (!v.meta || large.contains(v.meta->name))
-            continue;
-        if (v.meta->type == DataType::Bits) {
-            bool lamps = false;
-            for (const BitField& f : v.meta->bits) {
-                if (f.width == 1 && TerminalLamps::isLampField(f.values)) {
-                    lamps = true;
-                    continue;
-                }
-                // A field with named states ("CCW", "SPno2", "Mode2") is a text row.
-                auto* label = new QLabel(this);
-                label->setTextInteractionFlags(Qt::TextSelectableByMouse);
-                m_values.insert(v.meta->name + QLatin1Char('.') + f.name, label);
-                m_details->addRow(f.label + QLatin1Char(':'), label);
-            }
-            if (lamps) {
-                auto* row = new TerminalLamps(*v.meta, this);
-                m_lamps.insert(v.meta->name, row);
-                m_details->addRow(v.meta->label + QLatin1Char(':'), row);
-                for (const QString& f : row->functionParameters())
-                    row->setFunctionText(f, m_parameters->deviceText(f));
-            }
-            continue;
-        }
-        auto* label = new QLabel(this);
-        label->setTextInteractionFlags(Qt::TextSelectableByMouse);
-        m_values.insert(v.meta->name, label);
-        m_details->addRow(v.meta->label + QLatin1Char(':'), label);
-    }
+    if (m_motorSpeed)
+        m_motorSpeed->setCommutationsPerRevolution(count);
 }
 
 void MonitorPage::showSample(const MonitorSample& s)
 {
-    if (m_values.isEmpty() && m_lamps.isEmpty())
-        buildRows(s);
+    const Profile& profile = m_parameters->profile();
+    if (!m_details->isBuilt()) {
+        // The speeds and the load are shown large above; not twice.
+        QStringList large;
+        for (const QString& role : {kCurrent, kTarget, kLoad}) {
+            if (const ParameterMeta* m = RoleEvaluator::parameter(profile, role))
+                large << m->name;
+        }
+        m_details->build(s, large);
+    }
     m_last = s;
     ++m_samples;
-    const Profile& profile = m_parameters->profile();
-    for (const MonitorValue& v : s.values) {
-        if (!v.meta)
-            continue;
-        if (QLabel* l = m_values.value(v.meta->name))
-            l->setText(v.value.valid ? v.text : tr("not read"));
-        if (TerminalLamps* lamps = m_lamps.value(v.meta->name))
-            lamps->setRaw(v.value.valid ? std::optional<double>(v.value.raw) : std::nullopt);
-        for (const BitField& f : v.meta->bits) {
-            if (QLabel* l = m_values.value(v.meta->name + QLatin1Char('.') + f.name))
-                l->setText(v.value.valid ? RoleEvaluator::fieldText(
-                                               f, RoleEvaluator::fieldValue(f, v.value.raw))
-                                         : tr("not read"));
-        }
-    }
+    m_details->showSample(s);
     // Speeds signed by the direction: a register holding the magnitude would hide a reverse run.
     const auto text = [&](const QString& role) {
         const ParameterMeta* m = RoleEvaluator::parameter(profile, role);
@@ -325,7 +249,8 @@ void MonitorPage::showSample(const MonitorSample& s)
                           .arg(s.timestamp.time().toString(QStringLiteral("HH:mm:ss.zzz")))
                           .arg(stats.rate(), 0, 'f', 1));
     showPanel(s);
-    showFrequencySpeed(s);
+    if (m_motorSpeed)
+        m_motorSpeed->showSample(s);
 }
 
 void MonitorPage::showPanel(const MonitorSample& s)
@@ -360,22 +285,6 @@ void MonitorPage::showPanel(const MonitorSample& s)
     m_panel->light()->setStatus(status);
 }
 
-void MonitorPage::showFrequencySpeed(const MonitorSample& s)
-{
-    if (!m_frequencySpeed)
-        return;
-    const ParameterMeta* speed = RoleEvaluator::parameter(m_parameters->profile(), kCurrent);
-    const MonitorValue* v = speed ? s.find(speed->name) : nullptr;
-    const double perRevolution = m_commutations->value();
-    if (perRevolution <= 0)
-        m_frequencySpeed->setText(tr("set the commutations per revolution"));
-    else if (!v || !v->value.valid)
-        m_frequencySpeed->setText(QStringLiteral("—"));
-    else
-        m_frequencySpeed->setText(
-            tr("%1 r/min").arg(v->value.number / perRevolution * 60.0, 0, 'f', 0));
-}
-
 void MonitorPage::showError(const QString& text)
 {
     m_status->setText(
@@ -391,14 +300,19 @@ QString MonitorPage::valueText(const QString& parameter) const
         if (m && m->name == parameter)
             return label->text();
     }
-    const QLabel* l = m_values.value(parameter);
+    const QLabel* l = m_details->value(parameter);
     return l ? l->text() : QString();
 }
 
 QString MonitorPage::currentSpeedText() const
 {
-    return m_frequencySpeed ? m_current->text() + QStringLiteral(" · ") + m_frequencySpeed->text()
-                            : m_current->text();
+    return m_motorSpeed ? m_current->text() + QStringLiteral(" · ") + m_motorSpeed->speedText()
+                        : m_current->text();
+}
+
+TerminalLamps* MonitorPage::lamps(const QString& parameter) const
+{
+    return m_details->lamps(parameter);
 }
 
 QString MonitorPage::displaySpeedText() const

@@ -2,21 +2,20 @@
 
 #include "monitor/DeviceMonitor.h"
 
-#include <QHash>
 #include <QTimer>
 #include <QWidget>
 #include <optional>
 
 class QComboBox;
-class QDoubleSpinBox;
-class QFormLayout;
 class QLabel;
 class QPushButton;
 
 namespace opentop {
 
 class DeviceParameters;
+class MonitorDetails;
 class MonitorHub;
+class MotorSpeedBox;
 class PanelMirrorView;
 class TerminalLamps;
 class TrendChart;
@@ -42,7 +41,7 @@ public:
     QString alarmText() const;
     QString statusText() const;
     PanelMirrorView* panel() const { return m_panel; }
-    TerminalLamps* lamps(const QString& parameter) const { return m_lamps.value(parameter); }
+    TerminalLamps* lamps(const QString& parameter) const;
     TrendChart* chart() const { return m_chart; }
     int samplesShown() const { return m_samples; }
     // DC controller: commutations per motor revolution for the r/min read-out (0: not set).
@@ -53,10 +52,8 @@ protected:
     void hideEvent(QHideEvent* event) override;
 
 private:
-    void buildRows(const MonitorSample& sample);
     void showSample(const MonitorSample& sample);
     void showPanel(const MonitorSample& sample);
-    void showFrequencySpeed(const MonitorSample& sample);
     void showError(const QString& text);
     QWidget* buildReadouts();
     QWidget* buildSide();
@@ -73,12 +70,9 @@ private:
     QLabel* m_load;
     QLabel* m_state;
     QLabel* m_alarm;
-    QFormLayout* m_details = nullptr;
-    QHash<QString, QLabel*> m_values;
-    QHash<QString, TerminalLamps*> m_lamps;
+    MonitorDetails* m_details = nullptr;
     PanelMirrorView* m_panel = nullptr;
-    QDoubleSpinBox* m_commutations = nullptr;
-    QLabel* m_frequencySpeed = nullptr;
+    MotorSpeedBox* m_motorSpeed = nullptr; // DC controller only
     TrendChart* m_chart;
     std::optional<MonitorSample> m_last;
     int m_samples = 0;
