@@ -3,9 +3,7 @@
 #include "bus/BusDrives.h"
 #include "monitor/MonitorHub.h"
 #include "monitor/TrendCsv.h"
-#include "session/DeviceSession.h"
 #include "trends/TrendChartView.h"
-#include "trends/TrendPoints.h"
 #include "trends/TrendReadout.h"
 
 #include <QChart>
@@ -18,7 +16,6 @@
 #include <QSet>
 #include <QVBoxLayout>
 #include <QValueAxis>
-#include <limits>
 
 namespace opentop {
 
@@ -26,20 +23,6 @@ namespace {
 
 constexpr int kRedrawMs = 200;      // 5 Hz is smooth enough to watch and cheap
 constexpr qint64 kMinSpanMs = 1000; // zooming further shows nothing useful
-
-// One colour per drive, one dash pattern per quantity of a drive.
-QPen penFor(int driveIndex, int quantityIndex)
-{
-    static const QColor colours[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28),
-                                     QColor(0x2c, 0xa0, 0x2c), QColor(0xff, 0x7f, 0x0e),
-                                     QColor(0x94, 0x67, 0xbd), QColor(0x8c, 0x56, 0x4b),
-                                     QColor(0xe3, 0x77, 0xc2), QColor(0x17, 0xbe, 0xcf)};
-    static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine,
-                                          Qt::DashDotLine};
-    QPen pen(colours[driveIndex % 8], 2);
-    pen.setStyle(styles[quantityIndex % 4]);
-    return pen;
-}
 
 } // namespace
 
@@ -51,6 +34,7 @@ TrendChart::TrendChart(MonitorHub* hub, QWidget* parent)
     , m_readout(new QLabel(this))
     , m_timeAxis(new QDateTimeAxis(m_chart))
     , m_axes(m_chart)
+    , m_lines(hub, m_chart, m_timeAxis, &m_axes)
 {
     // Line samples in the legend: the dash pattern tells a drive's quantities apart.
     m_chart->legend()->setMarkerShape(QLegend::MarkerShapeFromSeries);
@@ -77,7 +61,7 @@ TrendChart::TrendChart(MonitorHub* hub, QWidget* parent)
     connect(&m_timer, &QTimer::timeout, this, &TrendChart::refresh);
     // Identified again (another model at the number): the names must say so.
     connect(hub->drives(), &BusDrives::driveChanged, this, [this](int slave) {
-        for (const Line& line : std::as_const(m_lines)) {
+        for (const TrendLines::Line& line : m_lines.lines()) {
             if (line.source.slave == slave)
                 line.series->setName(seriesName(line.source));
         }
@@ -103,32 +87,11 @@ QString TrendChart::driveTitle(const BusDrives* drives, int slave)
 
 QString TrendChart::seriesName(const TrendSource& source) const
 {
-    for (const Line& line : m_lines) {
+    for (const TrendLines::Line& line : m_lines.lines()) {
         if (line.source == source)
             return QStringLiteral("%1 %2").arg(driveTitle(drives(), source.slave), line.label);
     }
     return QString();
-}
-
-const TrendHistory::Series* TrendChart::historyOf(const TrendSource& source) const
-{
-    // Looked up each time: the hub drops a drive's history when the drive is removed.
-    const TrendHistory* history = m_hub ? m_hub->history(source.slave) : nullptr;
-    return history ? history->find(source.key) : nullptr;
-}
-
-void TrendChart::describe(Line& line) const
-{
-    if (const TrendHistory::Series* s = historyOf(line.source)) {
-        line.label = s->label;
-        line.unit = s->unit;
-        return;
-    }
-    // Before the first sample: what the profile says.
-    const DeviceSession* session = m_hub ? m_hub->drives()->session(line.source.slave) : nullptr;
-    const ParameterMeta* meta = session ? session->profile().parameter(line.source.key) : nullptr;
-    line.label = meta ? meta->label : line.source.key;
-    line.unit = meta ? meta->spec.unit : QString();
 }
 
 void TrendChart::setSources(const QVector<TrendSource>& sources)
@@ -136,13 +99,7 @@ void TrendChart::setSources(const QVector<TrendSource>& sources)
     if (sources == this->sources())
         return;
     watch(false);
-    m_lines.clear();
-    for (const TrendSource& s : sources) {
-        Line line;
-        line.source = s;
-        describe(line);
-        m_lines << line;
-    }
+    m_lines.setSources(sources);
     rebuild();
     if (isVisible())
         watch(true);
@@ -151,40 +108,12 @@ void TrendChart::setSources(const QVector<TrendSource>& sources)
 
 QVector<TrendSource> TrendChart::sources() const
 {
-    QVector<TrendSource> list;
-    for (const Line& line : m_lines)
-        list << line.source;
-    return list;
+    return m_lines.sources();
 }
 
 void TrendChart::rebuild()
 {
-    m_chart->removeAllSeries();
-    QVector<QPair<QString, QString>> quantities;
-    for (const Line& line : m_lines)
-        quantities << qMakePair(line.label, line.unit);
-    m_axes.setQuantities(quantities);
-
-    // Names elided in a row under the chart could be misread: a column beside it when many.
-    m_chart->legend()->setAlignment(m_lines.size() > 3 ? Qt::AlignRight : Qt::AlignBottom);
-    QVector<int> slaves;
-    for (Line& line : m_lines) {
-        if (!slaves.contains(line.source.slave))
-            slaves << line.source.slave;
-        int quantity = 0;
-        for (const Line& other : m_lines) {
-            if (&other == &line)
-                break;
-            quantity += other.source.slave == line.source.slave ? 1 : 0;
-        }
-        line.series = new QLineSeries(m_chart);
-        line.series->setName(seriesName(line.source));
-        line.series->setPen(penFor(int(slaves.indexOf(line.source.slave)), quantity));
-        m_chart->addSeries(line.series);
-        line.series->attachAxis(m_timeAxis);
-        line.series->attachAxis(m_axes.axis(m_axes.sideOf(line.unit)));
-        line.drawnCount = -1;
-    }
+    m_lines.rebuild([this](const TrendSource& source) { return seriesName(source); });
 }
 
 void TrendChart::watch(bool on)
@@ -193,7 +122,7 @@ void TrendChart::watch(bool on)
         return;
     m_watching = on;
     QSet<int> slaves;
-    for (const Line& line : m_lines)
+    for (const TrendLines::Line& line : m_lines.lines())
         slaves.insert(line.source.slave);
     for (int slave : slaves) {
         if (on)
@@ -280,57 +209,15 @@ void TrendChart::refresh()
     m_timeAxis->setRange(QDateTime::fromMSecsSinceEpoch(m_from),
                          QDateTime::fromMSecsSinceEpoch(m_to));
     // Lines whose history had no unit yet when they were added get their axis now.
-    bool changed = false;
-    for (Line& line : m_lines) {
-        const QString unit = line.unit;
-        const QString label = line.label;
-        describe(line);
-        changed = changed || unit != line.unit || label != line.label;
-    }
-    if (changed)
+    if (m_lines.describeAgain())
         rebuild();
     // At most about two points per pixel column are worth drawing.
     const int buckets = std::max(100, int(m_chart->plotArea().width()));
-    for (Line& line : m_lines)
-        drawLine(line, buckets);
+    m_lines.draw(m_from, m_to, buckets);
     m_axes.fitTitles(m_chart->plotArea().height());
-    updateValueAxes();
+    m_lines.fitValueAxes(m_from, m_to);
     if (m_markers[0] || m_markers[1])
         updateReadout();
-}
-
-void TrendChart::drawLine(Line& line, int buckets)
-{
-    const TrendHistory::Series* s = historyOf(line.source);
-    const int count = s ? int(s->points.size()) : 0;
-    const qint64 last = count ? s->points.last().ms : -1;
-    if (line.drawnFrom == m_from && line.drawnTo == m_to && line.drawnCount == count &&
-        line.drawnLast == last)
-        return;
-    line.drawnFrom = m_from;
-    line.drawnTo = m_to;
-    line.drawnCount = count;
-    line.drawnLast = last;
-    line.series->replace(s ? TrendPoints::visible(*s, m_from, m_to, buckets) : QList<QPointF>());
-}
-
-void TrendChart::updateValueAxes()
-{
-    for (int side : {0, 1}) {
-        double lo = std::numeric_limits<double>::max();
-        double hi = std::numeric_limits<double>::lowest();
-        for (const Line& line : m_lines) {
-            if (m_axes.sideOf(line.unit) != side)
-                continue;
-            for (const QPointF& p : line.series->points()) {
-                if (p.x() >= double(m_from) && p.x() <= double(m_to)) {
-                    lo = std::min(lo, p.y());
-                    hi = std::max(hi, p.y());
-                }
-            }
-        }
-        m_axes.setRange(side, lo, hi);
-    }
 }
 
 void TrendChart::placeMarker(qint64 ms)
@@ -366,9 +253,9 @@ std::optional<qint64> TrendChart::marker(int index) const
 QString TrendChart::markerText() const
 {
     QVector<TrendReadout::Row> rows;
-    for (const Line& line : m_lines)
+    for (const TrendLines::Line& line : m_lines.lines())
         rows << TrendReadout::Row{line.series ? line.series->name() : QString(), line.unit,
-                                  historyOf(line.source)};
+                                  m_lines.historyOf(line.source)};
     return TrendReadout::text(rows, m_markers[0], m_markers[1]);
 }
 
@@ -380,8 +267,8 @@ void TrendChart::updateReadout()
 bool TrendChart::exportCsv(const QString& path, QString* error) const
 {
     QVector<TrendCsv::Column> columns;
-    for (const Line& line : m_lines) {
-        if (const TrendHistory::Series* s = historyOf(line.source))
+    for (const TrendLines::Line& line : m_lines.lines()) {
+        if (const TrendHistory::Series* s = m_lines.historyOf(line.source))
             columns << TrendCsv::Column{driveTitle(drives(), line.source.slave), s};
     }
     if (columns.isEmpty()) {

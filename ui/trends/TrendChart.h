@@ -1,8 +1,8 @@
 #pragma once
 
 #include "monitor/MonitorHub.h"
-#include "monitor/TrendHistory.h"
 #include "trends/TrendAxes.h"
+#include "trends/TrendLines.h"
 
 #include <QPointer>
 #include <QTimer>
@@ -14,24 +14,11 @@
 class QChart;
 class QDateTimeAxis;
 class QLabel;
-class QLineSeries;
 
 namespace opentop {
 
 class BusDrives;
 class TrendChartView;
-
-// One series of a trend chart: a numeric monitor quantity of one drive.
-struct TrendSource
-{
-    int slave = 0;
-    QString key; // TrendHistory series key: "status.current_speed"
-};
-
-inline bool operator==(const TrendSource& a, const TrendSource& b)
-{
-    return a.slave == b.slave && a.key == b.key;
-}
 
 // A live trend chart of monitor quantities from a MonitorHub: a scrolling time axis, one value
 // axis per unit, zoom, pause, markers A and B with a read-out of the values and their
@@ -89,26 +76,9 @@ protected:
     void hideEvent(QHideEvent* event) override;
 
 private:
-    struct Line
-    {
-        TrendSource source;
-        QString label;
-        QString unit;
-        QLineSeries* series = nullptr;
-        // What was drawn last, to skip redrawing an unchanged frozen view.
-        qint64 drawnFrom = -1;
-        qint64 drawnTo = -1;
-        qint64 drawnLast = -1;
-        int drawnCount = -1;
-    };
-
     BusDrives* drives() const { return m_hub ? m_hub->drives() : nullptr; }
-    const TrendHistory::Series* historyOf(const TrendSource& source) const;
-    void describe(Line& line) const;
-    void rebuild();
+    void rebuild(); // the lines on the chart, named by seriesName()
     void watch(bool on);
-    void drawLine(Line& line, int buckets);
-    void updateValueAxes();
     void updateReadout();
     void placeMarker(qint64 ms);
     void zoomAround(qint64 centerMs, double factor);
@@ -120,7 +90,7 @@ private:
     QLabel* m_readout;
     QDateTimeAxis* m_timeAxis;
     TrendAxes m_axes;
-    QVector<Line> m_lines;
+    TrendLines m_lines;
     QTimer m_timer;
     int m_windowMs = 60000;
     bool m_paused = false;
