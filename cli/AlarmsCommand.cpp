@@ -1,9 +1,9 @@
 #include "AlarmsCommand.h"
 
-#include "AlarmHistory.h"
 #include "CliContext.h"
-#include "DeviceSession.h"
 #include "TextTable.h"
+#include "alarms/AlarmHistory.h"
+#include "session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

@@ -1,12 +1,12 @@
 #include "BackupCommand.h"
 
-#include "BackupFile.h"
-#include "BackupReader.h"
-#include "BusScanner.h"
 #include "CliContext.h"
 #include "ExitCode.h"
 #include "FileCommandSupport.h"
-#include "ProfileRegistry.h"
+#include "bus/BusScanner.h"
+#include "files/BackupFile.h"
+#include "files/BackupReader.h"
+#include "profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

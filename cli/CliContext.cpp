@@ -1,15 +1,15 @@
 #include "CliContext.h"
 
 #include "BackendFactory.h"
-#include "BusSpec.h"
 #include "ConnectionOptions.h"
-#include "DeviceIdentifier.h"
-#include "DeviceSession.h"
 #include "ModbusBackend.h"
 #include "ModbusClient.h"
-#include "ProfileRegistry.h"
 #include "SimBus.h"
 #include "TrafficLog.h"
+#include "bus/BusSpec.h"
+#include "profile/ProfileRegistry.h"
+#include "session/DeviceIdentifier.h"
+#include "session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>

@@ -1,8 +1,8 @@
 #pragma once
 
 #include "ConnectionSettings.h"
-#include "DeviceInfo.h"
 #include "ExitCode.h"
+#include "session/DeviceInfo.h"
 
 #include <QCommandLineParser>
 #include <QHash>

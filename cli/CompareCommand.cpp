@@ -1,12 +1,12 @@
 #include "CompareCommand.h"
 
-#include "BackupReader.h"
 #include "CliContext.h"
-#include "Comparer.h"
 #include "ExitCode.h"
 #include "FileCommandSupport.h"
-#include "ProfileRegistry.h"
 #include "TextTable.h"
+#include "files/BackupReader.h"
+#include "files/Comparer.h"
+#include "profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "BackupDevice.h"
 #include "CliCommand.h"
+#include "files/BackupDevice.h"
 
 #include <optional>
 

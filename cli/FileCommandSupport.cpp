@@ -2,7 +2,7 @@
 
 #include "CliContext.h"
 #include "ExitCode.h"
-#include "ProfileRegistry.h"
+#include "profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "BackupFile.h"
-#include "RestorePlan.h"
+#include "files/BackupFile.h"
+#include "files/RestorePlan.h"
 
 #include <QJsonArray>
 #include <QJsonObject>

@@ -1,9 +1,9 @@
 #include "MonitorCommand.h"
 
 #include "CliContext.h"
-#include "DeviceMonitor.h"
-#include "DeviceSession.h"
 #include "MonitorOutput.h"
+#include "monitor/DeviceMonitor.h"
+#include "session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <QFile>

@@ -1,9 +1,9 @@
 #include "MonitorOutput.h"
 
-#include "DeviceMonitor.h"
-#include "DeviceSession.h"
-#include "RoleEvaluator.h"
-#include "ValueCodec.h"
+#include "monitor/DeviceMonitor.h"
+#include "profile/RoleEvaluator.h"
+#include "profile/ValueCodec.h"
+#include "session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <algorithm>

@@ -1,9 +1,9 @@
 #include "ParamsCommand.h"
 
 #include "CliContext.h"
-#include "ProfileRegistry.h"
 #include "TextTable.h"
-#include "ValueCodec.h"
+#include "profile/ProfileRegistry.h"
+#include "profile/ValueCodec.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

@@ -1,11 +1,11 @@
 #include "RestoreCommand.h"
 
 #include "CliContext.h"
-#include "DeviceSession.h"
 #include "ExitCode.h"
 #include "FileCommandSupport.h"
-#include "Restorer.h"
 #include "TextTable.h"
+#include "files/Restorer.h"
+#include "session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "CliCommand.h"
-#include "RestorePlan.h"
+#include "files/RestorePlan.h"
 
 namespace opentop {
 

@@ -1,9 +1,9 @@
 #include "RunCommand.h"
 
 #include "CliContext.h"
-#include "DeviceSession.h"
-#include "ProfileRegistry.h"
-#include "RunControl.h"
+#include "profile/ProfileRegistry.h"
+#include "run/RunControl.h"
+#include "session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

@@ -1,10 +1,10 @@
 #include "ScanCommand.h"
 
-#include "BusScanner.h"
 #include "CliContext.h"
 #include "ModbusClient.h"
-#include "ProfileRegistry.h"
 #include "TextTable.h"
+#include "bus/BusScanner.h"
+#include "profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
 #include <QFile>

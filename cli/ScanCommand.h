@@ -1,7 +1,7 @@
 #pragma once
 
 #include "CliCommand.h"
-#include "DeviceInfo.h"
+#include "session/DeviceInfo.h"
 
 #include <QVector>
 

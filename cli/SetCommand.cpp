@@ -1,10 +1,10 @@
 #include "SetCommand.h"
 
 #include "CliContext.h"
-#include "DeviceSession.h"
 #include "ModbusClient.h"
 #include "TextTable.h"
-#include "ValueCodec.h"
+#include "profile/ValueCodec.h"
+#include "session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

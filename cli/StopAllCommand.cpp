@@ -2,10 +2,10 @@
 
 #include "CliContext.h"
 #include "ConnectionSettings.h"
-#include "ProfileRegistry.h"
-#include "RunControl.h"
 #include "TextTable.h"
-#include "ValueCodec.h"
+#include "profile/ProfileRegistry.h"
+#include "profile/ValueCodec.h"
+#include "run/RunControl.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

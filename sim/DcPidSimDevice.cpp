@@ -3,7 +3,7 @@
 #include "DeviceIdentification.h"
 #include "ModbusRequest.h"
 #include "SimLog.h"
-#include "ValueCodec.h"
+#include "profile/ValueCodec.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,14 +1,14 @@
 #include "SimBus.h"
 
-#include "BusSpec.h"
 #include "DbuSimDevice.h"
 #include "DcPidSimDevice.h"
 #include "GenericSimDevice.h"
 #include "ModbusCrc.h"
 #include "ModbusRequest.h"
-#include "ProfileRegistry.h"
 #include "SimLog.h"
 #include "SteadySimClock.h"
+#include "bus/BusSpec.h"
+#include "profile/ProfileRegistry.h"
 
 namespace opentop {
 

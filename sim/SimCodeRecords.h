@@ -1,6 +1,6 @@
 #pragma once
 
-#include "CodeTable.h"
+#include "profile/CodeTable.h"
 
 #include <QString>
 

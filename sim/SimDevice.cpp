@@ -1,10 +1,10 @@
 #include "SimDevice.h"
 
-#include "ModbusCrc.h"
 #include "ModbusRequest.h"
 #include "SimBackdoor.h"
 #include "SimLog.h"
-#include "ValueCodec.h"
+#include "SimRequestHandler.h"
+#include "profile/ValueCodec.h"
 
 #include <algorithm>
 
@@ -13,12 +13,6 @@ namespace opentop {
 namespace {
 
 constexpr qint64 kStepMs = 10;
-
-void appendWord(QByteArray* bytes, quint16 value)
-{
-    bytes->append(char(value >> 8));
-    bytes->append(char(value & 0xFF));
-}
 
 } // namespace
 
@@ -41,6 +35,16 @@ SimDevice::SimDevice(const Profile& profile, const QString& variant, int slave)
 
 SimDevice::~SimDevice() = default;
 
+QByteArray SimDevice::handle(const ModbusRequest& request, qint64 nowMs, bool addressedDirectly)
+{
+    return SimRequestHandler(*this).handle(request, nowMs, addressedDirectly);
+}
+
+QByteArray SimDevice::busyReply(const ModbusRequest& request, qint64 nowMs)
+{
+    return SimRequestHandler(*this).busyReply(request, nowMs);
+}
+
 void SimDevice::applyDefault(const ParameterMeta& meta)
 {
     const ValueSpec& spec = meta.specFor(context());
@@ -49,138 +53,6 @@ void SimDevice::applyDefault(const ParameterMeta& meta)
     } else if (spec.defaultRaw) {
         m_regs.setRaw(meta, *spec.defaultRaw);
     }
-}
-
-QByteArray SimDevice::handle(const ModbusRequest& request, qint64 nowMs, bool addressedDirectly)
-{
-    advance(nowMs);
-    const bool reply = addressedDirectly && request.slave != 0;
-    if (!reply && request.function != ModbusRequest::WriteSingle &&
-        request.function != ModbusRequest::WriteMultiple)
-        return {}; // broadcasts and group copies only execute writes
-    frameSeen(nowMs);
-
-    SimError error = SimError::None;
-    QByteArray pdu;
-    pdu.append(char(request.function));
-    if (!supportsFunction(request.function)) {
-        error = SimError::IllegalFunction;
-    } else if (request.function == ModbusRequest::ReadHolding ||
-               request.function == ModbusRequest::ReadInput) {
-        QVector<quint16> values;
-        error = doRead(request, &values);
-        pdu.append(char(values.size() * 2));
-        for (quint16 v : values)
-            appendWord(&pdu, v);
-    } else if (request.function == ModbusRequest::WriteSingle ||
-               request.function == ModbusRequest::WriteMultiple) {
-        error = doWrite(request, nowMs);
-        appendWord(&pdu, request.address);
-        appendWord(&pdu, request.function == ModbusRequest::WriteSingle
-                             ? (request.values.isEmpty() ? 0 : request.values.first())
-                             : request.count);
-    } else {
-        pdu = handleOther(request, nowMs, &error);
-    }
-    if (error != SimError::None) {
-        qCDebug(lcSim) << "slave" << m_slave << "refuses" << request.describe() << int(error);
-        recordError(error);
-        return reply ? exceptionAdu(request.function, error) : QByteArray();
-    }
-    refreshStatus(nowMs);
-    return reply ? adu(pdu) : QByteArray();
-}
-
-QByteArray SimDevice::busyReply(const ModbusRequest& request, qint64 nowMs)
-{
-    advance(nowMs);
-    frameSeen(nowMs);
-    recordError(SimError::Busy);
-    return exceptionAdu(request.function, SimError::Busy);
-}
-
-SimError SimDevice::doRead(const ModbusRequest& request, QVector<quint16>* values) const
-{
-    if ((!request.rawData.isEmpty() && request.rawData.size() != 4) || request.count == 0 ||
-        request.count > m_profile.maxReadRegisters)
-        return SimError::BadFormat;
-    if (int(request.address) + request.count > 0x10000)
-        return SimError::IllegalAddress;
-    for (int i = 0; i < request.count; ++i) {
-        const quint16 a = quint16(request.address + i);
-        if (!m_regs.readable(request.function, a) && !m_regs.inReadBlock(request.function, a))
-            return SimError::IllegalAddress;
-        values->append(m_regs.readValue(request.function, a));
-    }
-    return SimError::None;
-}
-
-SimError SimDevice::doWrite(const ModbusRequest& request, qint64 nowMs)
-{
-    const bool multiple = request.function == ModbusRequest::WriteMultiple;
-    if (request.values.isEmpty() ||
-        (!multiple && !request.rawData.isEmpty() && request.rawData.size() != 4))
-        return SimError::BadFormat;
-    if (multiple) {
-        if (request.count == 0 || request.count > m_profile.maxWriteRegisters ||
-            request.values.size() != request.count)
-            return SimError::BadFormat;
-        // rawData: address(2) count(2) byte count(1) data; the byte count must match.
-        if (!request.rawData.isEmpty() &&
-            (request.rawData.size() < 5 || quint8(request.rawData.at(4)) != request.count * 2 ||
-             request.rawData.size() != 5 + request.count * 2))
-            return SimError::BadFormat;
-    }
-    const int count = multiple ? request.count : 1;
-    if (int(request.address) + count > 0x10000)
-        return SimError::IllegalAddress;
-
-    SimRegisters next = m_regs;
-    QVector<const ParameterMeta*> touched;
-    for (int i = 0; i < count; ++i) {
-        const quint16 a = quint16(request.address + i);
-        const ParameterMeta* p = m_regs.writable(a);
-        if (!p) {
-            const ParameterMeta* d = m_regs.declared(a);
-            if (multiple && ((d && d->kind == QLatin1String("reserved")) || acceptsGapWrite(a)))
-                continue; // reserved registers inside a block write: ignored
-            return m_regs.readable(3, a) ? SimError::ReadOnly : SimError::IllegalAddress;
-        }
-        const bool whole = p->address >= request.address &&
-                           p->address + p->registerCount <= request.address + count;
-        if (p->registerCount > 1 && !whole && !allowsPartialWrite(*p))
-            return SimError::IllegalAddress;
-        // A parameter the profile writes with 0x10 only takes 06 where parts may be written.
-        if (!multiple && p->writeFunction == ModbusRequest::WriteMultiple &&
-            !(p->registerCount > 1 && allowsPartialWrite(*p)))
-            return SimError::IllegalAddress;
-        next.setValue(SimRegisters::spaceOf(*p), a, request.values.at(i));
-        if (!touched.contains(p) && p->kind != QLatin1String("reserved"))
-            touched << p;
-    }
-
-    const ValueContext nextContext = contextOf(next);
-    for (const ParameterMeta* p : touched) {
-        const bool whole = p->address >= request.address &&
-                           p->address + p->registerCount <= request.address + count;
-        if (!whole)
-            continue; // half of a 32-bit value: checked when the whole value is written
-        const QString why = ValueCodec::checkRaw(*p, next.raw(*p), nextContext);
-        if (!why.isEmpty()) {
-            qCDebug(lcSim) << "slave" << m_slave << p->name << why;
-            return SimError::OutOfRange;
-        }
-    }
-    for (const ParameterMeta* p : touched) {
-        const SimError e = checkWrite(*p, next.raw(*p), nowMs);
-        if (e != SimError::None)
-            return e;
-    }
-    m_regs = next;
-    for (const ParameterMeta* p : touched)
-        afterWrite(*p, m_regs.raw(*p), nowMs);
-    afterBlockWrite(request.function, request.address, count, nowMs);
-    return SimError::None;
 }
 
 void SimDevice::afterWrite(const ParameterMeta& meta, double, qint64)
@@ -231,19 +103,6 @@ QByteArray SimDevice::handleOther(const ModbusRequest&, qint64, SimError* error)
 {
     *error = SimError::IllegalFunction;
     return {};
-}
-
-QByteArray SimDevice::exceptionAdu(quint8 function, SimError error) const
-{
-    QByteArray pdu;
-    pdu.append(char(function | 0x80));
-    pdu.append(char(exceptionCode(error)));
-    return adu(pdu);
-}
-
-QByteArray SimDevice::adu(const QByteArray& pdu) const
-{
-    return ModbusCrc::append(QByteArray(1, char(m_slave)) + pdu);
 }
 
 void SimDevice::advance(qint64 nowMs)

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "Profile.h"
 #include "SimRegisters.h"
-#include "ValueContext.h"
+#include "profile/Profile.h"
+#include "profile/ValueContext.h"
 
 #include <QByteArray>
 #include <QCoreApplication>
@@ -126,10 +126,7 @@ protected:
     void applyDefault(const ParameterMeta& meta);
 
 private:
-    SimError doRead(const ModbusRequest& request, QVector<quint16>* values) const;
-    SimError doWrite(const ModbusRequest& request, qint64 nowMs);
-    QByteArray exceptionAdu(quint8 function, SimError error) const;
-    QByteArray adu(const QByteArray& pdu) const;
+    friend class SimRequestHandler; // the request handling calls the hooks above
     ValueContext contextOf(const SimRegisters& regs) const;
 
     Profile m_profile;

@@ -1,6 +1,6 @@
 #include "SimRegisters.h"
 
-#include "ValueCodec.h"
+#include "profile/ValueCodec.h"
 
 namespace opentop {
 

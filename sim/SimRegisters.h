@@ -1,6 +1,6 @@
 #pragma once
 
-#include "Profile.h"
+#include "profile/Profile.h"
 
 #include <QHash>
 #include <QStringList>

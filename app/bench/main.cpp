@@ -3,14 +3,14 @@
 // prints plain figures with units. Exits non-zero when a benchmark fails.
 //
 // Each figure comes from a named benchmark in benchmarks() below.
-#include "BackupReader.h"
-#include "BusScanner.h"
-#include "BusSpec.h"
 #include "ConnectionSettings.h"
-#include "DeviceSession.h"
 #include "ModbusClient.h"
-#include "ProfileRegistry.h"
 #include "RtuBackend.h"
+#include "bus/BusScanner.h"
+#include "bus/BusSpec.h"
+#include "files/BackupReader.h"
+#include "profile/ProfileRegistry.h"
+#include "session/DeviceSession.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

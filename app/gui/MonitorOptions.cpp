@@ -1,9 +1,9 @@
 #include "MonitorOptions.h"
 
-#include "BusDrives.h"
-#include "BusPanel.h"
-#include "MainWindow.h"
-#include "MonitorHub.h"
+#include "bus/BusDrives.h"
+#include "bus/BusPanel.h"
+#include "main/MainWindow.h"
+#include "monitor/MonitorHub.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

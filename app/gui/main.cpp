@@ -1,14 +1,14 @@
 // opentop: the desktop application. Composition root only: options, the backend factory and
 // the main window.
 #include "BackendFactory.h"
-#include "BusSpec.h"
-#include "ConnectionDialog.h"
 #include "ConnectionOptions.h"
-#include "EditorRegistry.h"
-#include "MainWindow.h"
 #include "ModbusClient.h"
 #include "MonitorOptions.h"
 #include "TrafficLog.h"
+#include "bus/BusSpec.h"
+#include "connection/ConnectionDialog.h"
+#include "main/MainWindow.h"
+#include "pages/EditorRegistry.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

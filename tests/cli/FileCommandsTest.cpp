@@ -1,12 +1,12 @@
 // backup, restore and compare as a user runs them. A simulated bus served over Modbus TCP in
 // this process keeps its drives between commands (each --sim command starts a fresh bus), and
 // its console backdoor changes them behind the program's back.
-#include "BackupFile.h"
 #include "CliTestSupport.h"
 #include "ExitCode.h"
-#include "ProfileRegistry.h"
 #include "SimBus.h"
 #include "TcpSimServer.h"
+#include "files/BackupFile.h"
+#include "profile/ProfileRegistry.h"
 
 #include <QFile>
 #include <QJsonArray>

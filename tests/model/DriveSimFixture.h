@@ -3,13 +3,13 @@
 // An in-process simulated bus with sessions and helpers to wait for asynchronous engines, for
 // the monitor, alarm history and run control tests.
 
-#include "BusDrives.h"
-#include "DeviceSession.h"
 #include "ModbusClient.h"
-#include "ProfileRegistry.h"
 #include "SimBackend.h"
 #include "SimBus.h"
 #include "TrafficLog.h"
+#include "bus/BusDrives.h"
+#include "profile/ProfileRegistry.h"
+#include "session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -3,7 +3,7 @@
 #include "SimTestSupport.h"
 
 #include "GenericSimDevice.h"
-#include "ProfileLoader.h"
+#include "profile/ProfileLoader.h"
 
 using namespace opentop;
 using namespace opentop::test;

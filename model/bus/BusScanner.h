@@ -1,0 +1,104 @@
+#pragma once
+
+#include "session/DeviceInfo.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QVector>
+
+namespace opentop {
+
+class DeviceIdentifier;
+class ModbusClient;
+class ProfileRegistry;
+struct ConnectionSettings;
+struct ModbusResult;
+
+// Finds the drives on a bus: asks every machine number of a range with each profile's identify
+// read (DeviceIdentifier decodes the replies), one transaction at a time, asynchronously.
+// Absent addresses cost one request with a short wait derived from the baud rate; an address
+// that answers with garbled frames is asked once more before it is reported as a likely
+// duplicate machine number, and a drive whose reply turns up late (during the next address's
+// wait) is asked again with a longer wait instead of being lost. Usable from the GUI and the
+// command line alike.
+class BusScanner : public QObject
+{
+    Q_OBJECT
+public:
+    // ModbusRequest refuses timeouts below 10 ms; shorter waits are raised to it.
+    static constexpr int kMinWaitMs = 10;
+    static constexpr int kMaxWaitMs = 5000;
+    // What a present device is allowed for its answer after the request (the T-net drives
+    // answer within a few ms).
+    static constexpr double kAnswerBudgetMs = 10.0;
+
+    BusScanner(ModbusClient* client, const ProfileRegistry& registry, QObject* parent = nullptr);
+    ~BusScanner() override;
+
+    // Per-address wait for `settings`: request transmission + answer budget + the longest
+    // identify reply's transmission + 3.5 character gap + a small margin.
+    static int defaultWaitMs(const ConnectionSettings& settings, const ProfileRegistry& registry);
+
+    // Range and wait for the next start(); waitMs 0 uses defaultWaitMs().
+    void setRange(int from, int to);
+    void setWaitMs(int ms);
+    int from() const { return m_from; }
+    int to() const { return m_to; }
+    int waitMs() const;
+
+    void start();
+    // Stops between transactions: the one on the wire completes, then finished() follows.
+    void cancel();
+    bool isRunning() const { return m_running; }
+    bool wasCancelled() const { return m_cancelled; }
+    // Why the scan stopped early (the port failed); empty otherwise.
+    QString error() const { return m_error; }
+
+    // Machine numbers finished so far (from() .. from() + scannedCount() - 1).
+    int scannedCount() const { return m_done; }
+    int total() const { return m_to - m_from + 1; }
+    int requestsSent() const { return m_requests; }
+    // Drives that answered only after the wait and were asked again with a longer one.
+    int lateAnswers() const { return m_lateAnswers; }
+    double elapsedMs() const;
+    // Every address that answered, in machine number order.
+    QVector<DeviceInfo> devices() const { return m_devices; }
+
+signals:
+    void progress(int done, int total, int slave);
+    void found(const opentop::DeviceInfo& info);
+    void finished(const QVector<opentop::DeviceInfo>& devices);
+
+private:
+    void askProfile(int profileIndex, bool confirming);
+    void handleReply(int profileIndex, bool confirming, const ModbusResult& result);
+    void noteLateAnswer(const ModbusResult& result);
+    void addressDone(DeviceInfo info);
+    void nextAddress();
+    void finish();
+
+    ModbusClient* m_client;
+    const ProfileRegistry& m_registry;
+    DeviceIdentifier* m_identifier;
+    int m_from = 1;
+    int m_to = 247;
+    int m_waitMs = 0;
+    int m_effectiveWaitMs = 0;
+    int m_cursor = 1; // the next address of the pass through the range
+    int m_slave = 0;  // the address being asked
+    bool m_reasking = false;
+    QVector<int> m_late; // answered after the wait: to be asked again
+    int m_lateAnswers = 0;
+    int m_done = 0;
+    int m_requests = 0;
+    quint64 m_pendingId = 0; // the request of ours that is queued or on the wire
+    bool m_running = false;
+    bool m_cancelled = false;
+    bool m_cancelRequested = false;
+    QString m_error;
+    QVector<DeviceInfo> m_devices;
+    QElapsedTimer m_timer;
+    double m_elapsedMs = 0;
+};
+
+} // namespace opentop

@@ -1,0 +1,77 @@
+#include "bus/BusSpec.h"
+
+#include "profile/ProfileRegistry.h"
+
+#include <QCoreApplication>
+#include <QSet>
+#include <QStringList>
+
+namespace opentop {
+
+namespace {
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("opentop::BusSpec", text);
+}
+} // namespace
+
+std::optional<QVector<BusSpecEntry>> BusSpec::parse(const QString& text, QString* error)
+{
+    auto fail = [&](const QString& message) {
+        if (error)
+            *error = message;
+        return std::nullopt;
+    };
+    const ProfileRegistry& registry = ProfileRegistry::builtIn();
+    const QString types = registry.deviceTypes().join(QStringLiteral(", "));
+    QVector<BusSpecEntry> entries;
+    QSet<int> used;
+    const QStringList items = text.split(QLatin1Char(','), Qt::SkipEmptyParts);
+    if (items.isEmpty())
+        return fail(tr("empty device list; write TYPE@ID[,TYPE@ID...], e.g. dbu200@1,dcpid@7 "
+                       "(types: %1)")
+                        .arg(types));
+    for (const QString& rawItem : items) {
+        const QString item = rawItem.trimmed();
+        const int at = item.indexOf(QLatin1Char('@'));
+        if (at <= 0)
+            return fail(tr("\"%1\": write TYPE@ID or TYPE@FIRST-LAST, e.g. dbu200@1").arg(item));
+        const QString type = item.left(at).trimmed().toLower();
+        const Profile* profile = registry.forDeviceType(type);
+        if (!profile)
+            return fail(
+                tr("\"%1\": unknown device type \"%2\"; known types: %3").arg(item, type, types));
+        const QStringList ids = item.mid(at + 1).split(QLatin1Char('-'));
+        bool ok1 = false;
+        bool ok2 = ids.size() == 1;
+        const int first = ids.value(0).trimmed().toInt(&ok1);
+        const int last = ids.size() == 2 ? ids.value(1).trimmed().toInt(&ok2) : first;
+        if (!ok1 || !ok2 || ids.size() > 2 || last < first)
+            return fail(tr("\"%1\": the machine number must be a number or a range such as 1-16")
+                            .arg(item));
+        for (int id = first; id <= last; ++id) {
+            if (id < profile->minSlave || id > profile->maxSlave)
+                return fail(tr("\"%1\": machine number %2 is outside %3–%4 for %5")
+                                .arg(item)
+                                .arg(id)
+                                .arg(profile->minSlave)
+                                .arg(profile->maxSlave)
+                                .arg(type));
+            if (used.contains(id))
+                return fail(tr("machine number %1 is given twice").arg(id));
+            used.insert(id);
+            entries.append({type, id});
+        }
+    }
+    return entries;
+}
+
+QString BusSpec::toString(const QVector<BusSpecEntry>& entries)
+{
+    QStringList items;
+    for (const BusSpecEntry& e : entries)
+        items << QStringLiteral("%1@%2").arg(e.type).arg(e.slave);
+    return items.join(QLatin1Char(','));
+}
+
+} // namespace opentop

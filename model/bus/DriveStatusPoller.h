@@ -1,0 +1,114 @@
+#pragma once
+
+#include "profile/CodeTable.h"
+
+#include <QHash>
+#include <QObject>
+#include <QTimer>
+#include <QVector>
+#include <optional>
+
+namespace opentop {
+
+class BusDrives;
+class DeviceSession;
+
+// What the bus list shows about one drive between polls: whether it answers, whether it runs
+// and which way, its active alarm, its control priority, and the colour its MONITOR LED has.
+struct DriveStatus
+{
+    // The DBU's own LED colours (manual, "MONITOR Status indicator"); Grey: no answer.
+    enum class Led
+    {
+        Grey,
+        Green,
+        Orange,
+        SkyBlue,
+        Red,
+        Purple,
+        Blue
+    };
+
+    bool polled = false;         // at least one poll finished
+    bool answered = false;       // the drive has answered a poll since the start
+    int consecutiveFailures = 0; // polls in a row that could not be read
+    QString error;               // the last poll's communication error
+    std::optional<bool> running; // the "running" role
+    std::optional<bool> reverse; // the "reverse" role (CCW)
+    std::optional<bool> alarmActive;
+    std::optional<qint64> alarmCode; // the newest alarm record while the alarm is active
+    std::optional<CodeEntry> alarm;  // decoded by the profile's "alarm" code table
+    QString priorityText;            // the "motionPriority" setting, e.g. "Communication priority"
+    std::optional<bool> motionPriority; // whether it holds the value motion by bus needs
+    Led led = Led::Grey;
+
+    // Failures in a row after which a drive counts as not answering (grey, not blue).
+    static constexpr int kNoAnswerAfter = 3;
+
+    bool online() const { return polled && consecutiveFailures == 0; }
+    // "online", "communication error (2 in a row)", "no answer"
+    QString communicationText() const;
+    // What the LED means for this drive: "Alarm AL007 Overload", "Running CW", ...
+    QString ledText() const;
+    static QString ledName(Led led); // "red", "sky blue"
+};
+
+// Polls every identified drive of a BusDrives for the few values the bus list shows, one drive
+// after the other, at Poll priority so that everything a user asks for goes first. A cycle
+// starts only when the previous one is complete; the interval is measured start to start.
+// Families without some roles get what applies (the DC controller: running from PWM, no
+// alarm, no priority setting).
+class DriveStatusPoller : public QObject
+{
+    Q_OBJECT
+public:
+    explicit DriveStatusPoller(BusDrives* drives, QObject* parent = nullptr);
+    ~DriveStatusPoller() override;
+
+    BusDrives* drives() const { return m_drives; }
+    void setInterval(int ms) { m_intervalMs = ms; }
+    int interval() const { return m_intervalMs; }
+
+    void start();
+    void stop();
+    bool isActive() const { return m_active; }
+    // Polls at once (a new cycle starts when the one under way completes).
+    void pollNow();
+
+    // The status of `slave`; a default (grey, not polled) one for drives not polled yet.
+    DriveStatus status(int slave) const { return m_status.value(slave); }
+    // Parameters polled for `slave` (empty for drives without a session).
+    QStringList parametersFor(int slave) const;
+    int cyclesCompleted() const { return m_cycles; }
+    // The DBU's LED rules applied to a status (public for tests and other views).
+    static DriveStatus::Led ledFor(const DriveStatus& status);
+
+signals:
+    void statusChanged(int slave);
+    void cycleFinished();
+
+private:
+    void startCycle();
+    void pollNext();
+    void pollDrive(int slave);
+    void readAlarm(int slave, quint64 generation);
+    void driveDone(int slave, const DriveStatus& status);
+    void scheduleNext();
+    void skipIfGone(int slave);
+
+    BusDrives* m_drives;
+    int m_intervalMs = 1000;
+    bool m_active = false;
+    bool m_busy = false;
+    bool m_pollAgain = false;
+    quint64 m_generation = 0; // results of an earlier start() are dropped
+    QVector<int> m_queue;     // drives still to poll this cycle
+    int m_current = 0;        // the drive being polled
+    DeviceSession* m_currentSession = nullptr;
+    QHash<int, DriveStatus> m_status;
+    QTimer m_timer;
+    qint64 m_cycleStartMs = 0;
+    int m_cycles = 0;
+};
+
+} // namespace opentop

@@ -1,0 +1,227 @@
+#include "monitor/MonitorHub.h"
+
+#include "ModelLog.h"
+#include "bus/BusDrives.h"
+#include "session/DeviceSession.h"
+
+namespace opentop {
+
+double MonitorHub::Statistics::rate() const
+{
+    return samples > 1 && lastMs > firstMs ? (samples - 1) * 1000.0 / double(lastMs - firstMs)
+                                           : 0.0;
+}
+
+MonitorHub::MonitorHub(BusDrives* drives, QObject* parent)
+    : QObject(parent)
+    , m_drives(drives)
+{
+    connect(drives, &BusDrives::driveRemoved, this, &MonitorHub::forget);
+    connect(drives, &BusDrives::driveAdded, this, &MonitorHub::identified);
+    connect(drives, &BusDrives::driveChanged, this, &MonitorHub::identified);
+}
+
+// A drive identified again may have a new session: the old monitor would poll a dead one.
+void MonitorHub::identified(int slave)
+{
+    const auto it = m_list.find(slave);
+    if (it == m_list.end())
+        return;
+    if (it->second->monitor && it->second->monitor->session() != m_drives->session(slave)) {
+        it->second->monitor.reset();
+        it->second->prepared = false;
+    }
+    // Watched before it was identified: it can be polled now.
+    startOrStop(slave);
+}
+
+MonitorHub::~MonitorHub() = default;
+
+MonitorHub::Drive* MonitorHub::driveFor(int slave)
+{
+    auto& d = m_list[slave];
+    if (!d)
+        d = std::make_unique<Drive>();
+    return d.get();
+}
+
+void MonitorHub::watch(int slave, QObject* watcher)
+{
+    Drive* d = driveFor(slave);
+    if (d->watchers.contains(watcher))
+        return;
+    d->watchers.insert(watcher);
+    // A view that goes away stops watching by itself.
+    if (!m_watchers.contains(watcher)) {
+        m_watchers.insert(watcher);
+        connect(watcher, &QObject::destroyed, this, [this, watcher] { release(watcher); });
+    }
+    startOrStop(slave);
+    emit watchedChanged();
+}
+
+void MonitorHub::unwatch(int slave, QObject* watcher)
+{
+    const auto it = m_list.find(slave);
+    if (it == m_list.end() || !it->second->watchers.remove(watcher))
+        return;
+    startOrStop(slave);
+    emit watchedChanged();
+}
+
+void MonitorHub::release(QObject* watcher)
+{
+    m_watchers.remove(watcher);
+    QVector<int> slaves;
+    for (const auto& [slave, d] : m_list) {
+        if (d->watchers.contains(watcher))
+            slaves << slave;
+    }
+    for (int slave : slaves)
+        unwatch(slave, watcher);
+}
+
+bool MonitorHub::isWatched(int slave) const
+{
+    const auto it = m_list.find(slave);
+    return it != m_list.end() && !it->second->watchers.isEmpty();
+}
+
+QVector<int> MonitorHub::watched() const
+{
+    QVector<int> slaves;
+    for (const auto& [slave, d] : m_list) {
+        if (!d->watchers.isEmpty())
+            slaves << slave;
+    }
+    std::sort(slaves.begin(), slaves.end());
+    return slaves;
+}
+
+void MonitorHub::startOrStop(int slave)
+{
+    Drive* d = driveFor(slave);
+    const bool wanted = !d->watchers.isEmpty() && !m_paused;
+    if (!wanted) {
+        if (d->monitor)
+            d->monitor->stop();
+        return;
+    }
+    DeviceSession* session = m_drives->session(slave);
+    if (!session)
+        return; // not identified (yet): driveChanged starts it
+    if (!d->monitor) {
+        d->monitor = std::make_unique<DeviceMonitor>(session);
+        d->monitor->setInterval(m_intervalMs);
+        connect(d->monitor.get(), &DeviceMonitor::sample, this,
+                [this, slave](const QDateTime&, const MonitorSample& s) {
+                    Drive* drive = driveFor(slave);
+                    const qint64 ms = s.timestamp.toMSecsSinceEpoch();
+                    if (drive->stats.samples++ == 0)
+                        drive->stats.firstMs = ms;
+                    drive->stats.lastMs = ms;
+                    drive->latest = s;
+                    drive->lastError.clear();
+                    drive->history.append(s);
+                    emit sample(slave, s);
+                });
+        connect(d->monitor.get(), &DeviceMonitor::error, this, [this, slave](const QString& text) {
+            Drive* drive = driveFor(slave);
+            ++drive->stats.errors;
+            drive->lastError = text;
+            emit error(slave, text);
+        });
+    }
+    if (d->monitor->isActive())
+        return;
+    if (d->prepared) {
+        d->monitor->start();
+        return;
+    }
+    // The speed display settings first, so that samples carry the drive's display values.
+    d->monitor->prepare([this, slave](const QString& problem) {
+        if (m_list.find(slave) == m_list.end())
+            return; // forgotten meanwhile
+        Drive* drive = driveFor(slave);
+        drive->prepared = true;
+        if (!problem.isEmpty())
+            qCWarning(lcModel) << "speed display of" << slave << ":" << problem;
+        if (drive->monitor && !drive->watchers.isEmpty() && !m_paused)
+            drive->monitor->start();
+    });
+}
+
+void MonitorHub::setInterval(int ms)
+{
+    ms = std::max(20, ms);
+    if (ms == m_intervalMs)
+        return;
+    m_intervalMs = ms;
+    for (auto& [slave, d] : m_list) {
+        if (d->monitor)
+            d->monitor->setInterval(ms);
+    }
+    emit intervalChanged(ms);
+}
+
+void MonitorHub::setPaused(bool paused)
+{
+    if (paused == m_paused)
+        return;
+    m_paused = paused;
+    QVector<int> slaves;
+    for (const auto& [slave, d] : m_list)
+        slaves << slave;
+    for (int slave : slaves)
+        startOrStop(slave);
+    emit pausedChanged(paused);
+}
+
+std::optional<MonitorSample> MonitorHub::latest(int slave) const
+{
+    const auto it = m_list.find(slave);
+    return it == m_list.end() ? std::nullopt : it->second->latest;
+}
+
+const TrendHistory* MonitorHub::history(int slave) const
+{
+    const auto it = m_list.find(slave);
+    return it == m_list.end() ? nullptr : &it->second->history;
+}
+
+MonitorHub::Statistics MonitorHub::statistics(int slave) const
+{
+    const auto it = m_list.find(slave);
+    return it == m_list.end() ? Statistics() : it->second->stats;
+}
+
+QString MonitorHub::lastError(int slave) const
+{
+    const auto it = m_list.find(slave);
+    return it == m_list.end() ? QString() : it->second->lastError;
+}
+
+void MonitorHub::refreshDisplay(int slave)
+{
+    const auto it = m_list.find(slave);
+    if (it == m_list.end() || !it->second->monitor)
+        return;
+    it->second->monitor->prepare([](const QString& problem) {
+        if (!problem.isEmpty())
+            qCWarning(lcModel) << "speed display:" << problem;
+    });
+}
+
+DeviceMonitor* MonitorHub::monitor(int slave) const
+{
+    const auto it = m_list.find(slave);
+    return it == m_list.end() ? nullptr : it->second->monitor.get();
+}
+
+void MonitorHub::forget(int slave)
+{
+    m_list.erase(slave);
+    emit watchedChanged();
+}
+
+} // namespace opentop

@@ -1,0 +1,94 @@
+#pragma once
+
+#include "monitor/DeviceMonitor.h"
+#include "monitor/TrendHistory.h"
+
+#include <QHash>
+#include <QObject>
+#include <QPointer>
+#include <QSet>
+#include <memory>
+#include <optional>
+#include <unordered_map>
+
+namespace opentop {
+
+class BusDrives;
+
+// Live monitoring of the drives of a bus, shared by every view that shows it (a drive's
+// monitor page, the trend charts, the bus overview): one DeviceMonitor per drive, polling
+// while at least one view watches it, all at one selectable interval and at Poll priority, so
+// that user commands always go first and the drives share the bus in turn. Keeps each drive's
+// latest sample and a bounded history for trends, also after the last view has closed.
+class MonitorHub : public QObject
+{
+    Q_OBJECT
+public:
+    struct Statistics
+    {
+        qint64 samples = 0;
+        qint64 errors = 0;
+        qint64 firstMs = 0; // time of the first sample since watching started
+        qint64 lastMs = 0;
+        // Samples per second over the watched time.
+        double rate() const;
+    };
+
+    explicit MonitorHub(BusDrives* drives, QObject* parent = nullptr);
+    ~MonitorHub() override;
+
+    BusDrives* drives() const { return m_drives; }
+    // Starts polling `slave` while `watcher` exists and has not called unwatch().
+    void watch(int slave, QObject* watcher);
+    void unwatch(int slave, QObject* watcher);
+    bool isWatched(int slave) const;
+    QVector<int> watched() const;
+
+    // Milliseconds from the start of one poll of a drive to the start of its next.
+    void setInterval(int ms);
+    int interval() const { return m_intervalMs; }
+    // Stops and resumes every drive's polling (the views keep what they have).
+    void setPaused(bool paused);
+    bool isPaused() const { return m_paused; }
+
+    std::optional<MonitorSample> latest(int slave) const;
+    const TrendHistory* history(int slave) const;
+    Statistics statistics(int slave) const;
+    QString lastError(int slave) const;
+    // Re-reads the speed display settings of `slave` (after they were written).
+    void refreshDisplay(int slave);
+    DeviceMonitor* monitor(int slave) const;
+
+signals:
+    void sample(int slave, const opentop::MonitorSample& sample);
+    void error(int slave, const QString& text);
+    void watchedChanged();
+    void intervalChanged(int ms);
+    void pausedChanged(bool paused);
+
+private:
+    struct Drive
+    {
+        std::unique_ptr<DeviceMonitor> monitor;
+        QSet<QObject*> watchers;
+        std::optional<MonitorSample> latest;
+        TrendHistory history;
+        Statistics stats;
+        QString lastError;
+        bool prepared = false;
+    };
+
+    Drive* driveFor(int slave);
+    void startOrStop(int slave);
+    void forget(int slave);
+    void identified(int slave);
+    void release(QObject* watcher);
+
+    BusDrives* m_drives;
+    std::unordered_map<int, std::unique_ptr<Drive>> m_list;
+    QSet<QObject*> m_watchers; // connected to their destroyed() signal
+    int m_intervalMs = 200;
+    bool m_paused = false;
+};
+
+} // namespace opentop

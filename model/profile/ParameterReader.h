@@ -1,0 +1,35 @@
+#pragma once
+
+#include "profile/JsonReader.h"
+#include "profile/ParameterMeta.h"
+#include "profile/Profile.h"
+
+#include <QJsonObject>
+
+namespace opentop {
+
+// Reads and checks one parameter entry of a profile. Checks that need the whole parameter list
+// (references, overlapping addresses) are the loader's.
+class ParameterReader
+{
+public:
+    ParameterReader(const Profile& profile, JsonReader& json)
+        : m_profile(profile)
+        , m_json(json)
+    {
+    }
+
+    bool read(const QJsonObject& o, ParameterMeta* meta);
+
+private:
+    bool readSpec(const QJsonObject& o, const ParameterMeta& meta, ValueSpec* spec);
+    bool readRanges(const QJsonArray& a, const ParameterMeta& meta, double scale, ValueSpec* spec);
+    bool readOptions(const QJsonArray& a, const ParameterMeta& meta, ValueSpec* spec);
+    bool readBits(const QJsonArray& a, ParameterMeta* meta);
+    bool readConditions(const QJsonArray& a, ParameterMeta* meta);
+
+    const Profile& m_profile;
+    JsonReader& m_json;
+};
+
+} // namespace opentop

@@ -1,0 +1,109 @@
+#pragma once
+
+#include "profile/CodeTable.h"
+#include "profile/ParameterMeta.h"
+
+#include <QHash>
+#include <QString>
+#include <QStringList>
+#include <QVector>
+#include <optional>
+
+namespace opentop {
+
+struct ProfileVariant
+{
+    QString id;        // "dbu200"
+    QString model;     // "DBU200-D"
+    QString label;     // "DBU200-D, 24 V, 200 W, 250–3000 r/min"
+    QString nameMatch; // device name prefix that identifies this variant, if the device tells
+};
+
+struct ProfileGroup
+{
+    QString id;
+    QString label;
+    QString help;
+    QString editor; // a specialised editor page for this group; empty: the generic one
+};
+
+// Address range the device answers block reads for (unused registers inside read as 0).
+struct ReadBlock
+{
+    quint8 function = 3;
+    quint16 first = 0;
+    quint16 last = 0;
+};
+
+// How a scan recognises the family: a read that only this family answers as expected.
+struct IdentifyRule
+{
+    quint8 function = 3;
+    quint16 address = 0;
+    quint16 count = 1;
+    QString nameParameter;    // decoded for the device name
+    QString versionParameter; // decoded for the firmware version ("hi.lo" byte format)
+    QString nameMatch;        // regular expression the name must match; empty: any
+};
+
+// What a parameter (or a value of it) means to generic code: "stop" is writing 0 to run.start
+// on a DBU and 0 to speed.command on the DC controller; "running" is a status bit or a
+// non-zero value. Keeps family knowledge in the data.
+struct ProfileRole
+{
+    QString parameter;           // single-parameter roles
+    QString field;               // a bit field of `parameter` (bits type)
+    std::optional<qint64> value; // the raw value to write, for command roles
+    QStringList parameters;      // list roles, e.g. "monitor"
+};
+
+struct SerialDefaults
+{
+    int baud = 19200;
+    char parity = 'N';
+    int stopBits = 1;
+    QVector<int> bauds;
+};
+
+// A device family described by data: parameters, groups, code tables, limits.
+class Profile
+{
+public:
+    QString family; // "dbu", "dcpid"
+    QString name;
+    QString vendor;
+    QString manual;
+    QString sourceFile; // where it was loaded from, for error messages
+    SerialDefaults serial;
+    int maxReadRegisters = 125;
+    int maxWriteRegisters = 123;
+    int minSlave = 1;
+    int maxSlave = 247;
+    bool supportsBroadcast = true;
+    bool supportsGroups = false;
+    QVector<ProfileVariant> variants;
+    QVector<ProfileGroup> groups;
+    QVector<ReadBlock> readBlocks;
+    IdentifyRule identify;
+    QHash<QString, CodeTable> codeTables;
+    QHash<QString, ProfileRole> roles;
+    QVector<ParameterMeta> parameters;
+
+    const ParameterMeta* parameter(const QString& parameterName) const;
+    // The parameter whose registers include `address` in the read (3/4) or write space.
+    const ParameterMeta* parameterAt(quint8 function, quint16 address) const;
+    const ProfileVariant* variant(const QString& id) const;
+    const ProfileGroup* group(const QString& id) const;
+    const CodeTable* codeTable(const QString& id) const;
+    const ProfileRole* role(const QString& roleName) const;
+    // Parameters of kind "record" decoded by `codeTable`, in address order (newest first).
+    QVector<const ParameterMeta*> records(const QString& codeTable) const;
+    QVector<const ParameterMeta*> parametersInGroup(const QString& group) const;
+    // Builds the name index; called by the loader.
+    void index();
+
+private:
+    QHash<QString, int> m_byName;
+};
+
+} // namespace opentop

@@ -1,0 +1,383 @@
+#include "profile/ProfileLoader.h"
+
+#include "profile/JsonReader.h"
+#include "profile/ParameterReader.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QRegularExpression>
+#include <QSet>
+#include <algorithm>
+
+namespace opentop {
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("opentop::ProfileLoader", text);
+}
+
+bool rawAllowedBy(const ValueSpec& spec, double raw)
+{
+    if (spec.ranges.isEmpty() && spec.options.isEmpty())
+        return true;
+    for (const EnumOption& o : spec.options) {
+        if (double(o.value) == raw)
+            return true;
+    }
+    for (const ValueRange& r : spec.ranges) {
+        if (raw >= r.min && raw <= r.max)
+            return true;
+    }
+    return false;
+}
+
+bool readHeader(const QJsonObject& root, JsonReader& json, Profile* p)
+{
+    if (!json.onlyKeys(
+            root,
+            {QStringLiteral("schema"), QStringLiteral("family"), QStringLiteral("name"),
+             QStringLiteral("vendor"), QStringLiteral("manual"), QStringLiteral("serial"),
+             QStringLiteral("limits"), QStringLiteral("variants"), QStringLiteral("identify"),
+             QStringLiteral("readBlocks"), QStringLiteral("groups"), QStringLiteral("codeTables"),
+             QStringLiteral("parameters"), QStringLiteral("roles")},
+            tr("top level")))
+        return false;
+    if (json.integer(root, QStringLiteral("schema")).value_or(0) != 1)
+        return json.fail(tr("\"schema\" must be 1"));
+    p->family = json.string(root, QStringLiteral("family")).value_or(QString());
+    p->name = json.string(root, QStringLiteral("name")).value_or(QString());
+    p->vendor = json.string(root, QStringLiteral("vendor"), false).value_or(QString());
+    p->manual = json.string(root, QStringLiteral("manual"), false).value_or(QString());
+    if (json.failed())
+        return false;
+    static const QRegularExpression idRe(QStringLiteral("^[a-z][a-z0-9_]*$"));
+    if (!idRe.match(p->family).hasMatch())
+        return json.fail(tr("\"family\" must be a lower-case id"));
+
+    const QJsonObject serial = json.object(root, QStringLiteral("serial")).value_or(QJsonObject());
+    p->serial.baud = int(json.integer(serial, QStringLiteral("baud")).value_or(0));
+    const QString parity = json.string(serial, QStringLiteral("parity")).value_or(QString());
+    p->serial.stopBits = int(json.integer(serial, QStringLiteral("stopBits")).value_or(0));
+    if (json.failed())
+        return false;
+    if (parity != QLatin1String("N") && parity != QLatin1String("E") &&
+        parity != QLatin1String("O"))
+        return json.fail(tr("serial.parity must be N, E or O"));
+    p->serial.parity = parity.at(0).toLatin1();
+    if (p->serial.baud < 1200 || p->serial.baud > 115200 ||
+        (p->serial.stopBits != 1 && p->serial.stopBits != 2))
+        return json.fail(tr("serial: baud must be 1200–115200 and stopBits 1 or 2"));
+    for (const QJsonValue& b : serial.value(QStringLiteral("bauds")).toArray())
+        p->serial.bauds << b.toInt();
+
+    const QJsonObject limits = json.object(root, QStringLiteral("limits")).value_or(QJsonObject());
+    p->maxReadRegisters = int(json.integer(limits, QStringLiteral("maxReadRegisters")).value_or(0));
+    p->maxWriteRegisters =
+        int(json.integer(limits, QStringLiteral("maxWriteRegisters")).value_or(0));
+    p->minSlave = int(json.integer(limits, QStringLiteral("minSlave")).value_or(0));
+    p->maxSlave = int(json.integer(limits, QStringLiteral("maxSlave")).value_or(0));
+    p->supportsBroadcast = limits.value(QStringLiteral("broadcast")).toBool(false);
+    p->supportsGroups = limits.value(QStringLiteral("groups")).toBool(false);
+    if (json.failed())
+        return false;
+    if (p->maxReadRegisters < 1 || p->maxReadRegisters > 125 || p->maxWriteRegisters < 1 ||
+        p->maxWriteRegisters > 123)
+        return json.fail(tr("limits: maxReadRegisters 1–125, maxWriteRegisters 1–123"));
+    if (p->minSlave < 1 || p->maxSlave > 247 || p->minSlave > p->maxSlave)
+        return json.fail(tr("limits: slaves must lie in 1–247"));
+    return true;
+}
+
+bool readVariantsGroupsBlocks(const QJsonObject& root, JsonReader& json, Profile* p)
+{
+    const QJsonArray variants = root.value(QStringLiteral("variants")).toArray();
+    for (int i = 0; i < variants.size(); ++i) {
+        const QJsonObject v = variants[i].toObject();
+        ProfileVariant variant;
+        variant.id = json.string(v, QStringLiteral("id")).value_or(QString());
+        variant.model = json.string(v, QStringLiteral("model")).value_or(QString());
+        variant.label = json.string(v, QStringLiteral("label")).value_or(QString());
+        variant.nameMatch = json.string(v, QStringLiteral("nameMatch"), false).value_or(QString());
+        if (json.failed())
+            return json.fail(tr("variants[%1] needs id, model and label").arg(i));
+        if (p->variant(variant.id))
+            return json.fail(tr("variants[%1]: id \"%2\" repeated").arg(i).arg(variant.id));
+        p->variants << variant;
+    }
+    const QJsonArray groups = json.array(root, QStringLiteral("groups")).value_or(QJsonArray());
+    for (int i = 0; i < groups.size(); ++i) {
+        const QJsonObject g = groups[i].toObject();
+        ProfileGroup group{json.string(g, QStringLiteral("id")).value_or(QString()),
+                           json.string(g, QStringLiteral("label")).value_or(QString()),
+                           json.string(g, QStringLiteral("help"), false).value_or(QString()),
+                           json.string(g, QStringLiteral("editor"), false).value_or(QString())};
+        if (json.failed() || p->group(group.id))
+            return json.fail(tr("groups[%1] needs a unique id and a label").arg(i));
+        p->groups << group;
+    }
+    const QJsonArray blocks = root.value(QStringLiteral("readBlocks")).toArray();
+    for (int i = 0; i < blocks.size(); ++i) {
+        const QJsonObject b = blocks[i].toObject();
+        const auto fc = json.integer(b, QStringLiteral("function"));
+        const auto first = json.integer(b, QStringLiteral("first"));
+        const auto last = json.integer(b, QStringLiteral("last"));
+        if (json.failed() || (*fc != 3 && *fc != 4) || *first < 0 || *last > 0xFFFF ||
+            *first > *last)
+            return json.fail(tr("readBlocks[%1] needs function 3 or 4 and first ≤ last").arg(i));
+        p->readBlocks << ReadBlock{quint8(*fc), quint16(*first), quint16(*last)};
+    }
+    return true;
+}
+
+bool readCodeTables(const QJsonObject& root, JsonReader& json, Profile* p)
+{
+    static const QStringList resets = {QStringLiteral("alarm-reset"), QStringLiteral("power"),
+                                       QStringLiteral("auto"), QStringLiteral("none")};
+    const QJsonObject tables = root.value(QStringLiteral("codeTables")).toObject();
+    for (auto it = tables.begin(); it != tables.end(); ++it) {
+        CodeTable table;
+        table.id = it.key();
+        const QJsonObject t = it.value().toObject();
+        table.label = t.value(QStringLiteral("label")).toString();
+        const QJsonArray entries = t.value(QStringLiteral("entries")).toArray();
+        for (int i = 0; i < entries.size(); ++i) {
+            const QJsonObject e = entries[i].toObject();
+            const QString where = QStringLiteral("codeTables.%1.entries[%2]").arg(table.id).arg(i);
+            if (!json.onlyKeys(
+                    e,
+                    {QStringLiteral("code"), QStringLiteral("panel"), QStringLiteral("name"),
+                     QStringLiteral("reset"), QStringLiteral("resetText"), QStringLiteral("cause"),
+                     QStringLiteral("remedy"), QStringLiteral("led"), QStringLiteral("exception")},
+                    where))
+                return false;
+            CodeEntry entry;
+            const auto code =
+                json.integerValue(e.value(QStringLiteral("code")), where + QStringLiteral(".code"));
+            if (!code)
+                return false;
+            entry.code = *code;
+            entry.panel = e.value(QStringLiteral("panel")).toString();
+            entry.name = e.value(QStringLiteral("name")).toString();
+            entry.reset = e.value(QStringLiteral("reset")).toString();
+            entry.resetText = e.value(QStringLiteral("resetText")).toString();
+            entry.cause = e.value(QStringLiteral("cause")).toString();
+            entry.remedy = e.value(QStringLiteral("remedy")).toString();
+            entry.led = e.value(QStringLiteral("led")).toString();
+            entry.exceptionCode = e.value(QStringLiteral("exception")).toInt();
+            if (entry.name.isEmpty())
+                return json.fail(tr("%1 has no name").arg(where));
+            if (!entry.reset.isEmpty() && !resets.contains(entry.reset))
+                return json.fail(tr("%1: reset must be one of %2")
+                                     .arg(where, resets.join(QStringLiteral(", "))));
+            if (table.find(entry.code))
+                return json.fail(tr("%1: code %2 repeated").arg(where).arg(entry.code));
+            table.entries << entry;
+        }
+        p->codeTables.insert(table.id, table);
+    }
+    return true;
+}
+
+} // namespace
+
+namespace {
+
+// Checks that need every parameter: references, defaults, overlaps, the identify read.
+bool crossCheck(const QJsonObject& root, JsonReader& json, Profile* p)
+{
+    QHash<quint32, QString> holding, input;
+    for (const ParameterMeta& m : p->parameters) {
+        const QString where = QStringLiteral("\"%1\"").arg(m.name);
+        if (!m.storeWith.isEmpty()) {
+            const ParameterMeta* store = p->parameter(m.storeWith);
+            if (!store || store->kind != QLatin1String("command"))
+                return json.fail(
+                    tr("%1: storeWith \"%2\" is not a command parameter").arg(where, m.storeWith));
+        }
+        if (m.spec.defaultRaw && !rawAllowedBy(m.spec, *m.spec.defaultRaw))
+            return json.fail(tr("%1: the default is not among its allowed values").arg(where));
+        for (const BitField& b : m.bits) {
+            const ParameterMeta* f = b.function.isEmpty() ? nullptr : p->parameter(b.function);
+            if (!b.function.isEmpty() && (!f || !f->isReadable()))
+                return json.fail(tr("%1: bit field \"%2\": function \"%3\" is not a readable "
+                                    "parameter")
+                                     .arg(where, b.name, b.function));
+        }
+        for (const ValueCondition& c : m.conditions) {
+            if (!c.param.isEmpty() && (c.param == m.name || !p->parameter(c.param)))
+                return json.fail(
+                    tr("%1: condition on unknown parameter \"%2\"").arg(where, c.param));
+            if (c.spec.defaultRaw && !rawAllowedBy(c.spec, *c.spec.defaultRaw))
+                return json.fail(tr("%1: the default is not allowed when %2")
+                                     .arg(where, c.variant.isEmpty() ? c.param : c.variant));
+        }
+        if (m.kind == QLatin1String("reserved") && !m.readFunction && !m.writeFunction)
+            continue;
+        const bool inInput = m.readFunction == 4;
+        QHash<quint32, QString>& space = inInput ? input : holding;
+        for (int r = 0; r < m.registerCount; ++r) {
+            const quint32 address = quint32(m.address) + r;
+            if (address > 0xFFFF)
+                return json.fail(tr("%1 runs past address 0xFFFF").arg(where));
+            if (space.contains(address))
+                return json.fail(
+                    tr("%1 overlaps \"%2\" at 0x%3 (%4 registers)")
+                        .arg(where, space.value(address))
+                        .arg(address, 4, 16, QLatin1Char('0'))
+                        .arg(inInput ? QStringLiteral("input") : QStringLiteral("holding")));
+            space.insert(address, m.name);
+        }
+    }
+    const QJsonObject id = json.object(root, QStringLiteral("identify")).value_or(QJsonObject());
+    p->identify.function = quint8(json.integer(id, QStringLiteral("function")).value_or(0));
+    p->identify.address = quint16(json.integer(id, QStringLiteral("address")).value_or(0));
+    p->identify.count = quint16(json.integer(id, QStringLiteral("count")).value_or(0));
+    p->identify.nameParameter = json.string(id, QStringLiteral("name")).value_or(QString());
+    p->identify.versionParameter =
+        json.string(id, QStringLiteral("version"), false).value_or(QString());
+    p->identify.nameMatch = json.string(id, QStringLiteral("nameMatch"), false).value_or(QString());
+    if (json.failed())
+        return false;
+    for (const QString& name : {p->identify.nameParameter, p->identify.versionParameter}) {
+        if (name.isEmpty())
+            continue;
+        const ParameterMeta* m = p->parameter(name);
+        if (!m || m->readFunction != p->identify.function || m->address < p->identify.address ||
+            m->address + m->registerCount > p->identify.address + p->identify.count)
+            return json.fail(
+                tr("identify: \"%1\" must be a parameter inside the identify read").arg(name));
+    }
+    if (!QRegularExpression(p->identify.nameMatch).isValid())
+        return json.fail(tr("identify.nameMatch is not a valid regular expression"));
+    return true;
+}
+
+bool readRoles(const QJsonObject& root, JsonReader& json, Profile* p)
+{
+    const QJsonObject roles = root.value(QStringLiteral("roles")).toObject();
+    for (auto it = roles.begin(); it != roles.end(); ++it) {
+        const QString where = QStringLiteral("roles.%1").arg(it.key());
+        ProfileRole role;
+        auto known = [&](const QString& name) {
+            if (!p->parameter(name))
+                return json.fail(tr("%1: unknown parameter \"%2\"").arg(where, name));
+            return true;
+        };
+        if (it.value().isString()) {
+            role.parameter = it.value().toString();
+        } else if (it.value().isArray()) {
+            for (const QJsonValue& v : it.value().toArray()) {
+                if (!known(v.toString()))
+                    return false;
+                role.parameters << v.toString();
+            }
+        } else if (it.value().isObject()) {
+            const QJsonObject o = it.value().toObject();
+            if (!json.onlyKeys(
+                    o, {QStringLiteral("param"), QStringLiteral("field"), QStringLiteral("value")},
+                    where))
+                return false;
+            role.parameter = o.value(QStringLiteral("param")).toString();
+            role.field = o.value(QStringLiteral("field")).toString();
+            if (o.contains(QStringLiteral("value"))) {
+                const auto v = json.integerValue(o.value(QStringLiteral("value")),
+                                                 where + QStringLiteral(".value"));
+                if (!v)
+                    return false;
+                role.value = *v;
+            }
+        } else {
+            return json.fail(
+                tr("%1 must be a parameter name, a list of names or an object").arg(where));
+        }
+        if (role.parameters.isEmpty() && !known(role.parameter))
+            return false;
+        if (!role.field.isEmpty()) {
+            const ParameterMeta* m = p->parameter(role.parameter);
+            const bool found = std::any_of(m->bits.begin(), m->bits.end(),
+                                           [&](const BitField& b) { return b.name == role.field; });
+            if (!found)
+                return json.fail(tr("%1: \"%2\" has no bit field \"%3\"")
+                                     .arg(where, role.parameter, role.field));
+        }
+        if (role.value) {
+            const ParameterMeta* m = p->parameter(role.parameter);
+            if (!m->isWritable() || !rawAllowedBy(m->spec, double(*role.value)))
+                return json.fail(tr("%1: %2 is not a value \"%3\" can be written with")
+                                     .arg(where)
+                                     .arg(*role.value)
+                                     .arg(role.parameter));
+        }
+        p->roles.insert(it.key(), role);
+    }
+    return true;
+}
+
+} // namespace
+
+std::optional<Profile> ProfileLoader::loadJson(const QByteArray& data, const QString& sourceName,
+                                               QString* error)
+{
+    QString detail;
+    auto failWith = [&](const QString& message) {
+        if (error)
+            *error = sourceName + QStringLiteral(": ") + message;
+        return std::nullopt;
+    };
+    QJsonParseError parseError;
+    const QJsonDocument doc = QJsonDocument::fromJson(data, &parseError);
+    if (parseError.error != QJsonParseError::NoError)
+        return failWith(tr("not valid JSON at offset %1: %2")
+                            .arg(parseError.offset)
+                            .arg(parseError.errorString()));
+    if (!doc.isObject())
+        return failWith(tr("the top level must be a JSON object"));
+    const QJsonObject root = doc.object();
+    JsonReader json(&detail);
+    Profile profile;
+    profile.sourceFile = sourceName;
+    if (!readHeader(root, json, &profile) || !readVariantsGroupsBlocks(root, json, &profile) ||
+        !readCodeTables(root, json, &profile))
+        return failWith(detail);
+
+    const QJsonArray params = json.array(root, QStringLiteral("parameters")).value_or(QJsonArray());
+    if (json.failed() || params.isEmpty())
+        return failWith(json.failed() ? detail : tr("\"parameters\" is empty"));
+    QSet<QString> names;
+    for (int i = 0; i < params.size(); ++i) {
+        const QJsonObject o = params[i].toObject();
+        ParameterMeta meta;
+        ParameterReader reader(profile, json);
+        const QString label = QStringLiteral("parameters[%1] \"%2\"")
+                                  .arg(i)
+                                  .arg(o.value(QStringLiteral("name")).toString());
+        if (!params[i].isObject() || !reader.read(o, &meta))
+            return failWith(label + QStringLiteral(": ") +
+                            (detail.isEmpty() ? tr("must be an object") : detail));
+        if (names.contains(meta.name))
+            return failWith(label + QStringLiteral(": ") + tr("name repeated"));
+        names.insert(meta.name);
+        profile.parameters << meta;
+    }
+    profile.index();
+    if (!crossCheck(root, json, &profile) || !readRoles(root, json, &profile))
+        return failWith(detail);
+    return profile;
+}
+
+std::optional<Profile> ProfileLoader::loadFile(const QString& path, QString* error)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        if (error)
+            *error = tr("%1: cannot open: %2").arg(path, file.errorString());
+        return std::nullopt;
+    }
+    return loadJson(file.readAll(), QFileInfo(path).fileName(), error);
+}
+
+} // namespace opentop

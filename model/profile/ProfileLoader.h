@@ -1,0 +1,21 @@
+#pragma once
+
+#include "profile/Profile.h"
+
+#include <QByteArray>
+#include <QString>
+#include <optional>
+
+namespace opentop {
+
+// Reads a profile from JSON and validates it completely; a malformed profile is refused with a
+// message naming the file and the entry.
+class ProfileLoader
+{
+public:
+    static std::optional<Profile> loadFile(const QString& path, QString* error);
+    static std::optional<Profile> loadJson(const QByteArray& json, const QString& sourceName,
+                                           QString* error);
+};
+
+} // namespace opentop

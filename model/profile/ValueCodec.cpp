@@ -1,0 +1,395 @@
+#include "profile/ValueCodec.h"
+
+#include <QCoreApplication>
+#include <QRegularExpression>
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace opentop {
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("opentop::ValueCodec", text);
+}
+
+// Integer bounds of the wire type, in raw units.
+std::pair<double, double> typeBounds(DataType type)
+{
+    switch (type) {
+    case DataType::U16:
+        return {0, 65535};
+    case DataType::S16:
+        return {-32768, 32767};
+    case DataType::U32:
+        return {0, 4294967295.0};
+    case DataType::S32:
+        return {-2147483648.0, 2147483647.0};
+    case DataType::Bits:
+        return {0, 4294967295.0};
+    case DataType::F32:
+        return {-std::numeric_limits<float>::max(), std::numeric_limits<float>::max()};
+    case DataType::String:
+        return {0, 0};
+    }
+    return {0, 0};
+}
+
+bool isInteger(DataType type)
+{
+    return type != DataType::F32 && type != DataType::String;
+}
+
+QString normalizedLabel(QString text)
+{
+    text = text.trimmed().toLower();
+    text.remove(QRegularExpression(QStringLiteral("[\\s_\\-/().]")));
+    return text;
+}
+
+const EnumOption* findOption(const ValueSpec& spec, double raw)
+{
+    for (const EnumOption& o : spec.options) {
+        if (static_cast<double>(o.value) == raw)
+            return &o;
+    }
+    return nullptr;
+}
+
+} // namespace
+
+double ValueCodec::registersToRaw(const ParameterMeta& meta, const QVector<quint16>& regs)
+{
+    const quint32 wide =
+        regs.size() >= 2 ? (quint32(regs[0]) << 16) | regs[1] : (regs.isEmpty() ? 0u : regs[0]);
+    switch (meta.type) {
+    case DataType::U16:
+        return regs.isEmpty() ? 0 : regs[0];
+    case DataType::S16:
+        return regs.isEmpty() ? 0 : static_cast<qint16>(regs[0]);
+    case DataType::U32:
+        return wide;
+    case DataType::S32:
+        return static_cast<qint32>(wide);
+    case DataType::Bits:
+        return meta.registerCount >= 2 ? wide : (regs.isEmpty() ? 0 : regs[0]);
+    case DataType::F32: {
+        float f;
+        std::memcpy(&f, &wide, sizeof f);
+        return f;
+    }
+    case DataType::String:
+        return 0;
+    }
+    return 0;
+}
+
+QVector<quint16> ValueCodec::rawToRegisters(const ParameterMeta& meta, double raw)
+{
+    switch (meta.type) {
+    case DataType::U16:
+    case DataType::S16:
+        return {static_cast<quint16>(static_cast<qint64>(std::llround(raw)) & 0xFFFF)};
+    case DataType::Bits:
+        if (meta.registerCount < 2)
+            return {static_cast<quint16>(static_cast<qint64>(std::llround(raw)) & 0xFFFF)};
+        [[fallthrough]];
+    case DataType::U32:
+    case DataType::S32: {
+        const quint32 v = static_cast<quint32>(static_cast<qint64>(std::llround(raw)) & 0xFFFFFFFF);
+        return {static_cast<quint16>(v >> 16), static_cast<quint16>(v & 0xFFFF)};
+    }
+    case DataType::F32: {
+        const float f = static_cast<float>(raw);
+        quint32 v;
+        std::memcpy(&v, &f, sizeof v);
+        return {static_cast<quint16>(v >> 16), static_cast<quint16>(v & 0xFFFF)};
+    }
+    case DataType::String:
+        return QVector<quint16>(meta.registerCount, 0);
+    }
+    return {};
+}
+
+QString ValueCodec::formatNumber(double number, int decimals)
+{
+    QString text = QString::number(number, 'f', decimals);
+    if (text.startsWith(QLatin1Char('-')) && text.toDouble() == 0.0)
+        text.remove(0, 1); // no "-0.0"
+    return text;
+}
+
+QString ValueCodec::allowedText(const ParameterMeta& meta, const ValueContext& context)
+{
+    QString unresolved;
+    const ValueSpec& spec = meta.specFor(context, &unresolved);
+    if (!unresolved.isEmpty())
+        return tr("depends on %1, which is not known yet").arg(unresolved);
+    if (meta.type == DataType::String)
+        return tr("text of up to %1 characters").arg(meta.registerCount * 2);
+    QStringList ranges;
+    for (const ValueRange& r : spec.ranges) {
+        const QString lo = formatNumber(r.min * spec.scale, spec.decimals);
+        const QString hi = formatNumber(r.max * spec.scale, spec.decimals);
+        ranges << (r.min == r.max ? lo : lo + QStringLiteral("–") + hi);
+    }
+    QString text;
+    if (!ranges.isEmpty()) {
+        const QString last = ranges.takeLast();
+        text = ranges.isEmpty() ? last : ranges.join(QStringLiteral(", ")) + tr(" or ") + last;
+        if (!spec.unit.isEmpty())
+            text += QLatin1Char(' ') + spec.unit;
+    }
+    QStringList options;
+    for (const EnumOption& o : spec.options)
+        options << QStringLiteral("%1 (%2)").arg(o.label).arg(o.value);
+    if (!options.isEmpty())
+        text += (text.isEmpty() ? QString() : tr(", or ")) + options.join(QStringLiteral(", "));
+    return text.isEmpty() ? tr("any value") : text;
+}
+
+QString ValueCodec::checkRaw(const ParameterMeta& meta, double raw, const ValueContext& context)
+{
+    if (context.variant.isEmpty() && !context.possibleVariants.isEmpty()) {
+        const bool variantDependent =
+            std::any_of(meta.conditions.begin(), meta.conditions.end(),
+                        [](const ValueCondition& c) { return !c.variant.isEmpty(); });
+        if (variantDependent) {
+            for (const QString& v : context.possibleVariants) {
+                ValueContext one = context;
+                one.variant = v;
+                one.possibleVariants.clear();
+                const QString error = checkRaw(meta, raw, one);
+                if (!error.isEmpty())
+                    return error + tr(" (the variant is not known, so the value must suit %1; name "
+                                      "the variant to use its own range)")
+                                       .arg(context.possibleVariants.join(QStringLiteral(", ")));
+            }
+            return QString();
+        }
+    }
+    QString unresolved;
+    const ValueSpec& spec = meta.specFor(context, &unresolved);
+    if (!unresolved.isEmpty())
+        return tr("%1: the allowed values depend on %2, which has not been read")
+            .arg(meta.name, unresolved);
+    const auto [lo, hi] = typeBounds(meta.type);
+    if (!std::isfinite(raw) || raw < lo || raw > hi ||
+        (isInteger(meta.type) && raw != std::floor(raw)))
+        return tr("%1: value out of the register's range; allowed: %2")
+            .arg(meta.name, allowedText(meta, context));
+    if (spec.ranges.isEmpty() && spec.options.isEmpty())
+        return QString();
+    if (findOption(spec, raw))
+        return QString();
+    const double eps = meta.type == DataType::F32 ? 1e-9 * std::max(1.0, std::fabs(raw)) : 0.0;
+    for (const ValueRange& r : spec.ranges) {
+        if (raw >= r.min - eps && raw <= r.max + eps)
+            return QString();
+    }
+    const QString shown = formatNumber(raw * spec.scale, spec.decimals);
+    return tr("%1: %2 is not allowed; allowed: %3")
+        .arg(meta.name, shown + (spec.unit.isEmpty() ? QString() : QLatin1Char(' ') + spec.unit),
+             allowedText(meta, context));
+}
+
+ParamValue ValueCodec::decode(const ParameterMeta& meta, const QVector<quint16>& registers,
+                              const ValueContext& context)
+{
+    ParamValue v;
+    v.registers = registers;
+    if (registers.size() != meta.registerCount) {
+        v.error = tr("%1: expected %2 registers, got %3")
+                      .arg(meta.name)
+                      .arg(meta.registerCount)
+                      .arg(registers.size());
+        return v;
+    }
+    v.valid = true;
+    if (meta.type == DataType::String) {
+        QByteArray bytes;
+        for (quint16 r : registers) {
+            bytes.append(char(r >> 8));
+            bytes.append(char(r & 0xFF));
+        }
+        const int nul = bytes.indexOf('\0');
+        if (nul >= 0)
+            bytes.truncate(nul);
+        v.text = QString::fromLatin1(bytes).trimmed();
+        return v;
+    }
+    QString unresolved;
+    const ValueSpec& spec = meta.specFor(context, &unresolved);
+    v.raw = registersToRaw(meta, registers);
+    v.number = v.raw * spec.scale;
+    if (const EnumOption* o = findOption(spec, v.raw))
+        v.text = o->label;
+    if (unresolved.isEmpty() && meta.kind != QLatin1String("command")) {
+        v.error = checkRaw(meta, v.raw, context);
+        v.allowed = v.error.isEmpty();
+    }
+    return v;
+}
+
+ValueCodec::Encoded ValueCodec::encodeNumber(const ParameterMeta& meta, double value,
+                                             const ValueContext& context)
+{
+    Encoded e;
+    if (meta.type == DataType::String) {
+        e.error = tr("%1 is text, not a number").arg(meta.name);
+        return e;
+    }
+    QString unresolved;
+    const ValueSpec& spec = meta.specFor(context, &unresolved);
+    if (!unresolved.isEmpty()) {
+        e.error = checkRaw(meta, 0, context);
+        return e;
+    }
+    double raw = value / spec.scale;
+    if (isInteger(meta.type)) {
+        const double rounded = std::round(raw);
+        if (std::fabs(raw - rounded) > 1e-6 * std::max(1.0, std::fabs(raw))) {
+            e.error =
+                tr("%1: %2 is finer than the step of %3 %4; allowed: %5")
+                    .arg(meta.name, QString::number(value), formatNumber(spec.scale, spec.decimals),
+                         spec.unit, allowedText(meta, context));
+            return e;
+        }
+        raw = rounded;
+    }
+    return encodeRaw(meta, raw, context);
+}
+
+ValueCodec::Encoded ValueCodec::encodeRaw(const ParameterMeta& meta, double raw,
+                                          const ValueContext& context)
+{
+    Encoded e;
+    e.error = checkRaw(meta, raw, context);
+    e.ok = e.error.isEmpty();
+    e.raw = raw;
+    if (e.ok)
+        e.registers = rawToRegisters(meta, raw);
+    return e;
+}
+
+ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QString& input,
+                                           const ValueContext& context)
+{
+    Encoded e;
+    const QString text = input.trimmed();
+    if (meta.type == DataType::String) {
+        const int capacity = meta.registerCount * 2;
+        if (text.size() > capacity) {
+            e.error = tr("%1: at most %2 characters").arg(meta.name).arg(capacity);
+            return e;
+        }
+        QByteArray bytes = text.toLatin1();
+        for (QChar c : text) {
+            if (c.unicode() < 0x20 || c.unicode() > 0x7E) {
+                e.error = tr("%1: only printable ASCII characters are allowed").arg(meta.name);
+                return e;
+            }
+        }
+        bytes.append(QByteArray(capacity - bytes.size(), '\0'));
+        for (int i = 0; i < capacity; i += 2)
+            e.registers << quint16((quint8(bytes[i]) << 8) | quint8(bytes[i + 1]));
+        e.ok = true;
+        return e;
+    }
+    if (text.isEmpty()) {
+        e.error = tr("%1: no value given; allowed: %2").arg(meta.name, allowedText(meta, context));
+        return e;
+    }
+    QString unresolved;
+    const ValueSpec& spec = meta.specFor(context, &unresolved);
+    if (!unresolved.isEmpty()) {
+        e.error = checkRaw(meta, 0, context);
+        return e;
+    }
+    // An enumeration label first: "CCW", "cw/stop", "Disabled".
+    const QString wanted = normalizedLabel(text);
+    for (const EnumOption& o : spec.options) {
+        if (normalizedLabel(o.label) == wanted)
+            return encodeRaw(meta, double(o.value), context);
+    }
+    // The start of exactly one label: "communication" for "Communication priority".
+    const EnumOption* prefixMatch = nullptr;
+    int prefixMatches = 0;
+    for (const EnumOption& o : spec.options) {
+        if (!wanted.isEmpty() && !wanted.front().isDigit() &&
+            normalizedLabel(o.label).startsWith(wanted)) {
+            prefixMatch = &o;
+            ++prefixMatches;
+        }
+    }
+    if (prefixMatches == 1)
+        return encodeRaw(meta, double(prefixMatch->value), context);
+    // A label that exists in another case: say when it is available (a Mode1 function on a
+    // drive in Mode2).
+    for (const ValueCondition& c : meta.conditions) {
+        for (const EnumOption& o : c.spec.options) {
+            if (!c.param.isEmpty() && normalizedLabel(o.label) == wanted) {
+                e.error = tr("%1: \"%2\" is only available when %3 is %4; allowed now: %5")
+                              .arg(meta.name, text, c.param)
+                              .arg(c.equals)
+                              .arg(allowedText(meta, context));
+                return e;
+            }
+        }
+    }
+    // A hexadecimal code is a raw value ("0x0011"), for enumerations and bit fields.
+    if (text.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)) {
+        bool ok = false;
+        const qulonglong raw = text.mid(2).toULongLong(&ok, 16);
+        if (!ok || !isInteger(meta.type)) {
+            e.error = tr("%1: \"%2\" is not a valid value; allowed: %3")
+                          .arg(meta.name, text, allowedText(meta, context));
+            return e;
+        }
+        return encodeRaw(meta, double(raw), context);
+    }
+    // A number, optionally followed by the unit ("2.5 s", "1500 r/min", "1500rpm").
+    QString number = text;
+    QString unit = spec.unit;
+    if (!unit.isEmpty() && number.endsWith(unit, Qt::CaseInsensitive))
+        number.chop(unit.size());
+    else if (unit == QLatin1String("r/min") &&
+             number.endsWith(QLatin1String("rpm"), Qt::CaseInsensitive))
+        number.chop(3);
+    bool ok = false;
+    const double value = number.trimmed().toDouble(&ok);
+    if (!ok) {
+        e.error = tr("%1: \"%2\" is not a valid value; allowed: %3")
+                      .arg(meta.name, text, allowedText(meta, context));
+        return e;
+    }
+    // Enumeration codes are raw values; everything else is in engineering units.
+    if (spec.ranges.isEmpty() && !spec.options.isEmpty())
+        return encodeRaw(meta, value, context);
+    return encodeNumber(meta, value, context);
+}
+
+QString ValueCodec::format(const ParameterMeta& meta, const ParamValue& value,
+                           const ValueContext& context)
+{
+    if (!value.valid)
+        return tr("(invalid)");
+    if (meta.type == DataType::String)
+        return value.text;
+    if (meta.type == DataType::Bits) {
+        const int digits = meta.registerCount * 4;
+        return QStringLiteral("0x%1").arg(qulonglong(value.raw), digits, 16, QLatin1Char('0'));
+    }
+    const ValueSpec& spec = meta.specFor(context);
+    if (const EnumOption* o = findOption(spec, value.raw))
+        return o->label;
+    if (spec.ranges.isEmpty() && !spec.options.isEmpty())
+        return tr("unknown code %1").arg(qlonglong(value.raw));
+    const QString number = formatNumber(value.number, spec.decimals);
+    return spec.unit.isEmpty() ? number : number + QLatin1Char(' ') + spec.unit;
+}
+
+} // namespace opentop

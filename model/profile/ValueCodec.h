@@ -1,0 +1,51 @@
+#pragma once
+
+#include "profile/ParamValue.h"
+#include "profile/ParameterMeta.h"
+#include "profile/ValueContext.h"
+
+#include <QString>
+#include <QVector>
+
+namespace opentop {
+
+// The one place where raw registers and engineering values are converted and validated.
+class ValueCodec
+{
+public:
+    struct Encoded
+    {
+        bool ok = false;
+        QVector<quint16> registers;
+        double raw = 0;
+        QString error; // names the allowed values when a value is refused
+    };
+
+    // Registers as read from the device -> value. Flags values outside the allowed set.
+    static ParamValue decode(const ParameterMeta& meta, const QVector<quint16>& registers,
+                             const ValueContext& context = {});
+    // Engineering value (e.g. 2.5 for 2.5 s) -> registers, refusing anything not allowed.
+    static Encoded encodeNumber(const ParameterMeta& meta, double value,
+                                const ValueContext& context = {});
+    // Text typed by a user: a number (optionally followed by the unit), an enumeration label or
+    // code, or a string. "2.5", "2.5 s", "CCW", "1", "0x0001".
+    static Encoded encodeText(const ParameterMeta& meta, const QString& text,
+                              const ValueContext& context = {});
+    // Raw value -> registers after checking it against the profile.
+    static Encoded encodeRaw(const ParameterMeta& meta, double raw,
+                             const ValueContext& context = {});
+    // Raw value -> registers without validation (for the simulator and for raw service access).
+    static QVector<quint16> rawToRegisters(const ParameterMeta& meta, double raw);
+    static double registersToRaw(const ParameterMeta& meta, const QVector<quint16>& registers);
+    // Empty when `raw` is allowed; otherwise a message naming the allowed values.
+    static QString checkRaw(const ParameterMeta& meta, double raw,
+                            const ValueContext& context = {});
+    // "0 or 250–3000 r/min", "CW (0), CCW (1)", "0.5 or 2.0–30.0 s".
+    static QString allowedText(const ParameterMeta& meta, const ValueContext& context = {});
+    // "2.5 s", "CCW", "1500 r/min", "-3 r/min".
+    static QString format(const ParameterMeta& meta, const ParamValue& value,
+                          const ValueContext& context = {});
+    static QString formatNumber(double number, int decimals);
+};
+
+} // namespace opentop

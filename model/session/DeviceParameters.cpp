@@ -1,0 +1,246 @@
+#include "session/DeviceParameters.h"
+
+#include "profile/ValueCodec.h"
+#include "session/DeviceSession.h"
+
+#include <algorithm>
+
+namespace opentop {
+
+struct DeviceParameters::WriteState
+{
+    QStringList queue;
+    int failed = 0;
+    std::function<void(int)> done;
+};
+
+DeviceParameters::DeviceParameters(DeviceSession* session, QObject* parent)
+    : QObject(parent)
+    , m_session(session)
+{
+    for (const ParameterMeta& m : session->profile().parameters) {
+        if (m.kind == QLatin1String("reserved"))
+            continue;
+        Entry e;
+        e.meta = &m;
+        m_entries.insert(m.name, e);
+    }
+    // Values the session reads for anyone (a monitor, another page) are device values too.
+    connect(session, &DeviceSession::valueUpdated, this,
+            [this](const QString& name, const ParamValue& value) {
+                auto it = m_entries.find(name);
+                if (it == m_entries.end())
+                    return;
+                it->device = value;
+                if (it->state == State::Unread)
+                    it->state = State::Clean;
+                emit entryChanged(name);
+            });
+}
+
+const Profile& DeviceParameters::profile() const
+{
+    return m_session->profile();
+}
+
+const DeviceParameters::Entry* DeviceParameters::entry(const QString& name) const
+{
+    const auto it = m_entries.constFind(name);
+    return it == m_entries.cend() ? nullptr : &it.value();
+}
+
+void DeviceParameters::refresh(const QStringList& names, std::function<void(int failed)> done)
+{
+    QStringList wanted = names;
+    if (wanted.isEmpty()) {
+        for (const ParameterMeta& m : profile().parameters) {
+            if (m.isReadable() && m_entries.contains(m.name))
+                wanted << m.name;
+        }
+    }
+    m_session->readMany(wanted, [this, done](const DeviceSession::ReadManyOutcome& o) {
+        for (const QString& name : o.order) {
+            const DeviceSession::Outcome r = o.results.value(name);
+            auto it = m_entries.find(name);
+            if (it == m_entries.end() || r.ok)
+                continue; // successful reads arrived through valueUpdated
+            it->message = r.error;
+            emit entryChanged(name);
+        }
+        if (done)
+            done(o.failed);
+    });
+}
+
+QString DeviceParameters::setPending(const QString& name, const QString& text)
+{
+    auto it = m_entries.find(name);
+    if (it == m_entries.end())
+        return tr("%1 has no parameter \"%2\"").arg(profile().family, name);
+    if (!it->meta->isWritable())
+        return tr("%1 is read-only").arg(name);
+    if (!it->meta->safety.isEmpty())
+        return tr("%1 is a command, not a setting; commands are sent one by one on request")
+            .arg(name);
+    // Validate against what the drive will hold once the other pending edits are written.
+    ValueContext context = m_session->context();
+    const auto base = context.parameterRaw;
+    context.parameterRaw = [this, base](const QString& other) -> std::optional<qint64> {
+        const auto e = m_entries.constFind(other);
+        if (e != m_entries.cend() && e->state == State::Pending && !e->pendingRegisters.isEmpty())
+            return qint64(ValueCodec::registersToRaw(*e->meta, e->pendingRegisters));
+        return base(other);
+    };
+    const ValueCodec::Encoded encoded = ValueCodec::encodeText(*it->meta, text, context);
+    if (!encoded.ok)
+        return encoded.error;
+    if (it->device.valid && encoded.registers == it->device.registers) {
+        revert(name); // typing the device's own value back is no edit
+        return QString();
+    }
+    it->pendingText = text.trimmed();
+    it->pendingRegisters = encoded.registers;
+    it->state = State::Pending;
+    it->message.clear();
+    emit entryChanged(name);
+    // Edits whose allowed values depend on this one are checked again.
+    for (auto other = m_entries.begin(); other != m_entries.end(); ++other) {
+        if (other->state == State::Pending && other->meta->controllingParameters().contains(name)) {
+            const ValueCodec::Encoded again =
+                ValueCodec::encodeText(*other->meta, other->pendingText, context);
+            other->message = again.ok ? QString() : again.error;
+            emit entryChanged(other.key());
+        }
+    }
+    return QString();
+}
+
+void DeviceParameters::revert(const QString& name)
+{
+    auto it = m_entries.find(name);
+    if (it == m_entries.end())
+        return;
+    it->pendingText.clear();
+    it->pendingRegisters.clear();
+    it->message.clear();
+    it->state = it->device.valid ? State::Clean : State::Unread;
+    emit entryChanged(name);
+}
+
+void DeviceParameters::revertAll()
+{
+    for (const QString& name : pendingNames())
+        revert(name);
+}
+
+QStringList DeviceParameters::pendingNames(const QString& group) const
+{
+    QStringList names;
+    for (const ParameterMeta& m : profile().parameters) {
+        const auto it = m_entries.constFind(m.name);
+        if (it != m_entries.cend() &&
+            (it->state == State::Pending ||
+             (it->state == State::Failed && !it->pendingText.isEmpty())) &&
+            (group.isEmpty() || m.group == group))
+            names << m.name;
+    }
+    return names;
+}
+
+bool DeviceParameters::hasPending() const
+{
+    for (const Entry& e : m_entries) {
+        if (e.state == State::Pending || e.state == State::Writing ||
+            (e.state == State::Failed && !e.pendingText.isEmpty()))
+            return true;
+    }
+    return false;
+}
+
+QStringList DeviceParameters::orderForWrite(QStringList names) const
+{
+    // A stable order in which every parameter comes after the ones it depends on.
+    QStringList ordered;
+    while (!names.isEmpty()) {
+        bool moved = false;
+        for (int i = 0; i < names.size(); ++i) {
+            const QStringList needs = m_entries.value(names[i]).meta->controllingParameters();
+            const bool ready = std::none_of(needs.begin(), needs.end(), [&names](const QString& n) {
+                return names.contains(n);
+            });
+            if (ready) {
+                ordered << names.takeAt(i);
+                moved = true;
+                break;
+            }
+        }
+        if (!moved) { // a cycle cannot happen in a valid profile; keep the rest as they are
+            ordered += names;
+            break;
+        }
+    }
+    return ordered;
+}
+
+void DeviceParameters::write(const QStringList& names, std::function<void(int failed)> done)
+{
+    auto state = std::make_shared<WriteState>();
+    state->done = std::move(done);
+    const QStringList pending = pendingNames();
+    QStringList wanted;
+    for (const QString& n : names.isEmpty() ? pending : names) {
+        if (pending.contains(n))
+            wanted << n;
+    }
+    state->queue = orderForWrite(wanted);
+    for (const QString& n : state->queue) {
+        m_entries[n].state = State::Writing;
+        emit entryChanged(n);
+    }
+    writeNext(state);
+}
+
+void DeviceParameters::writeNext(std::shared_ptr<WriteState> state)
+{
+    if (state->queue.isEmpty()) {
+        if (state->done)
+            state->done(state->failed);
+        return;
+    }
+    const QString name = state->queue.takeFirst();
+    DeviceSession::WriteOptions options; // settings only: commands are never pending edits
+    m_session->write(name, m_entries.value(name).pendingText, options,
+                     [this, name, state](const DeviceSession::Outcome& o) {
+                         Entry& e = m_entries[name];
+                         if (o.ok) {
+                             e.pendingText.clear();
+                             e.pendingRegisters.clear();
+                             e.message.clear();
+                             e.state = State::Clean;
+                             if (o.value.valid)
+                                 e.device = o.value;
+                         } else {
+                             e.state = State::Failed;
+                             e.message = o.error;
+                             ++state->failed;
+                         }
+                         emit entryChanged(name);
+                         writeNext(state);
+                     });
+}
+
+QString DeviceParameters::deviceText(const QString& name) const
+{
+    const Entry* e = entry(name);
+    if (!e || !e->device.valid)
+        return QString();
+    return ValueCodec::format(*e->meta, e->device, m_session->context());
+}
+
+QString DeviceParameters::allowedText(const QString& name) const
+{
+    const Entry* e = entry(name);
+    return e ? ValueCodec::allowedText(*e->meta, m_session->context()) : QString();
+}
+
+} // namespace opentop

@@ -1,0 +1,311 @@
+#include "session/DeviceSession.h"
+
+#include "ModbusClient.h"
+#include "profile/ValueCodec.h"
+#include "session/ReadPlanner.h"
+
+namespace opentop {
+
+namespace {
+
+ModbusRequest readRequest(int slave, const ParameterMeta& meta)
+{
+    return meta.readFunction == 4
+               ? ModbusRequest::readInput(quint8(slave), meta.address, quint16(meta.registerCount))
+               : ModbusRequest::readHolding(quint8(slave), meta.address,
+                                            quint16(meta.registerCount));
+}
+
+const ParameterMeta* commErrorParameter(const Profile& profile)
+{
+    for (const ParameterMeta& p : profile.parameters) {
+        if (p.codeTable == QLatin1String("comm_error") && p.isReadable())
+            return &p;
+    }
+    return nullptr;
+}
+
+} // namespace
+
+DeviceSession::DeviceSession(ModbusClient* client, const Profile& profile, int slave,
+                             const QString& variant, QObject* parent)
+    : QObject(parent)
+    , m_client(client)
+    , m_profile(profile)
+    , m_slave(slave)
+    , m_variant(variant)
+{
+}
+
+ValueContext DeviceSession::context() const
+{
+    ValueContext c;
+    c.variant = m_variant;
+    if (m_variant.isEmpty()) {
+        for (const ProfileVariant& v : m_profile.variants)
+            c.possibleVariants << v.id;
+    }
+    c.parameterRaw = [this](const QString& name) -> std::optional<qint64> {
+        const ParameterMeta* meta = m_profile.parameter(name);
+        const auto it = m_cache.constFind(name);
+        if (!meta || it == m_cache.cend())
+            return std::nullopt;
+        return qint64(ValueCodec::registersToRaw(*meta, it.value()));
+    };
+    return c;
+}
+
+ParamValue DeviceSession::cachedValue(const QString& name) const
+{
+    const ParameterMeta* meta = m_profile.parameter(name);
+    if (!meta || !m_cache.contains(name))
+        return {};
+    return ValueCodec::decode(*meta, m_cache.value(name), context());
+}
+
+void DeviceSession::acceptRegisters(const QString& name, const QVector<quint16>& registers)
+{
+    const ParameterMeta* meta = m_profile.parameter(name);
+    if (!meta || registers.size() != meta->registerCount)
+        return;
+    m_cache.insert(name, registers);
+    emit valueUpdated(name, ValueCodec::decode(*meta, registers, context()));
+}
+
+const ParameterMeta* DeviceSession::lookup(const QString& name, Outcome* outcome) const
+{
+    outcome->parameter = name;
+    const ParameterMeta* meta = m_profile.parameter(name);
+    if (!meta)
+        outcome->error = tr("%1 has no parameter \"%2\"").arg(m_profile.family, name);
+    return meta;
+}
+
+void DeviceSession::read(const QString& name, Done done)
+{
+    Outcome outcome;
+    const ParameterMeta* meta = lookup(name, &outcome);
+    if (meta && !meta->isReadable())
+        outcome.error = tr("%1 cannot be read (it is a write-only command)").arg(name);
+    if (!outcome.error.isEmpty()) {
+        done(outcome);
+        return;
+    }
+    outcome.sent = true;
+    m_client->submit(readRequest(m_slave, *meta), this,
+                     [this, meta, outcome, done](const ModbusResult& r) mutable {
+                         if (!r.ok()) {
+                             explainFailure(r, outcome, done);
+                             return;
+                         }
+                         acceptRegisters(meta->name, r.registers);
+                         outcome.value = ValueCodec::decode(*meta, r.registers, context());
+                         outcome.ok = outcome.value.valid;
+                         outcome.error = outcome.value.error;
+                         done(outcome);
+                     });
+}
+
+struct DeviceSession::ManyState
+{
+    QVector<ReadBlockPlan> queue;
+    ReadManyOutcome outcome;
+    ManyDone done;
+    ModbusRequest::Priority priority = ModbusRequest::Priority::Normal;
+};
+
+void DeviceSession::readMany(const QStringList& names, ManyDone done,
+                             ModbusRequest::Priority priority)
+{
+    auto state = std::make_shared<ManyState>();
+    state->priority = priority;
+    state->done = std::move(done);
+    state->outcome.order = names;
+    QVector<const ParameterMeta*> metas;
+    for (const QString& name : names) {
+        Outcome o;
+        const ParameterMeta* meta = lookup(name, &o);
+        if (meta && !meta->isReadable())
+            o.error = tr("%1 cannot be read (it is a write-only command)").arg(name);
+        if (!o.error.isEmpty()) {
+            state->outcome.results.insert(name, o);
+            ++state->outcome.failed;
+            continue;
+        }
+        metas << meta;
+    }
+    state->queue = ReadPlanner::plan(m_profile, metas);
+    nextBlock(state);
+}
+
+void DeviceSession::nextBlock(std::shared_ptr<ManyState> state)
+{
+    if (state->queue.isEmpty()) {
+        state->done(state->outcome);
+        return;
+    }
+    const ReadBlockPlan plan = state->queue.takeFirst();
+    ModbusRequest request =
+        plan.function == 4 ? ModbusRequest::readInput(quint8(m_slave), plan.address, plan.count)
+                           : ModbusRequest::readHolding(quint8(m_slave), plan.address, plan.count);
+    request.priority = state->priority;
+    ++state->outcome.requests;
+    m_client->submit(request, this, [this, plan, state](const ModbusResult& r) {
+        if (!r.ok() && r.error == ModbusError::Exception && plan.parameters.size() > 1) {
+            // The device refuses the block: ask for each parameter on its own.
+            const QVector<ReadBlockPlan> singles = ReadPlanner::singles(plan.parameters);
+            for (int i = singles.size() - 1; i >= 0; --i)
+                state->queue.prepend(singles[i]);
+            nextBlock(state);
+            return;
+        }
+        for (const ParameterMeta* meta : plan.parameters) {
+            Outcome o;
+            o.parameter = meta->name;
+            o.sent = true;
+            if (!r.ok()) {
+                o.error = r.errorText();
+                ++state->outcome.failed;
+            } else {
+                const QVector<quint16> regs =
+                    r.registers.mid(meta->address - plan.address, meta->registerCount);
+                acceptRegisters(meta->name, regs);
+                o.value = ValueCodec::decode(*meta, regs, context());
+                o.ok = o.value.valid;
+                o.error = o.value.error;
+            }
+            state->outcome.results.insert(meta->name, o);
+        }
+        nextBlock(state);
+    });
+}
+
+void DeviceSession::ensureControllingValues(const ParameterMeta& meta,
+                                            std::function<void(QString)> then)
+{
+    for (const QString& controlling : meta.controllingParameters()) {
+        if (m_cache.contains(controlling))
+            continue;
+        // Read what the allowed values depend on first, then try again.
+        read(controlling, [this, &meta, then](const Outcome& o) {
+            if (!o.ok) {
+                then(tr("cannot check the value: reading %1 failed: %2").arg(o.parameter, o.error));
+                return;
+            }
+            ensureControllingValues(meta, then);
+        });
+        return;
+    }
+    then(QString());
+}
+
+void DeviceSession::write(const QString& name, const QString& text, const WriteOptions& options,
+                          Done done)
+{
+    Outcome outcome;
+    const ParameterMeta* meta = lookup(name, &outcome);
+    if (meta && !meta->isWritable())
+        outcome.error = tr("%1 is read-only").arg(name);
+    if (!outcome.error.isEmpty()) {
+        done(outcome);
+        return;
+    }
+    if (!meta->safety.isEmpty() && !options.explicitCommand) {
+        outcome.error = tr("%1 is a %2 command; it is only sent when explicitly requested")
+                            .arg(name, meta->safety);
+        done(outcome);
+        return;
+    }
+    ensureControllingValues(*meta, [this, meta, text, options, outcome,
+                                    done](const QString& problem) mutable {
+        if (!problem.isEmpty()) {
+            outcome.error = problem;
+            done(outcome);
+            return;
+        }
+        const ValueCodec::Encoded encoded = ValueCodec::encodeText(*meta, text, context());
+        if (!encoded.ok) {
+            outcome.error = encoded.error; // nothing is sent
+            done(outcome);
+            return;
+        }
+        const ModbusRequest request =
+            meta->writeFunction == 16
+                ? ModbusRequest::writeMultiple(quint8(m_slave), meta->address, encoded.registers)
+                : ModbusRequest::writeSingle(quint8(m_slave), meta->address,
+                                             encoded.registers.first());
+        outcome.sent = true;
+        const QVector<quint16> written = encoded.registers;
+        m_client->submit(
+            request, this,
+            [this, meta, written, options, outcome, done](const ModbusResult& r) mutable {
+                if (!r.ok()) {
+                    explainFailure(r, outcome, done);
+                    return;
+                }
+                if (!options.verify || !meta->isReadable()) {
+                    outcome.ok = true;
+                    outcome.value = ValueCodec::decode(*meta, written, context());
+                    done(outcome);
+                    return;
+                }
+                verifyWrite(*meta, written, outcome, done);
+            });
+    });
+}
+
+void DeviceSession::verifyWrite(const ParameterMeta& meta, const QVector<quint16>& written,
+                                Outcome outcome, Done done)
+{
+    m_client->submit(
+        readRequest(m_slave, meta), this,
+        [this, &meta, written, outcome, done](const ModbusResult& r) mutable {
+            if (!r.ok()) {
+                outcome.error = tr("written, but reading it back failed: %1").arg(r.errorText());
+                done(outcome);
+                return;
+            }
+            acceptRegisters(meta.name, r.registers);
+            outcome.value = ValueCodec::decode(meta, r.registers, context());
+            if (r.registers != written) {
+                outcome.mismatch = true;
+                outcome.error =
+                    tr("verification failed: wrote %1, the device holds %2")
+                        .arg(ValueCodec::format(meta, ValueCodec::decode(meta, written, context()),
+                                                context()),
+                             ValueCodec::format(meta, outcome.value, context()));
+                done(outcome);
+                return;
+            }
+            outcome.ok = true;
+            outcome.verified = true;
+            done(outcome);
+        });
+}
+
+void DeviceSession::explainFailure(const ModbusResult& result, Outcome outcome, Done done)
+{
+    outcome.error = result.errorText();
+    const ParameterMeta* errorRegister = commErrorParameter(m_profile);
+    if (result.error != ModbusError::Exception || !errorRegister) {
+        done(outcome);
+        return;
+    }
+    // The DBU leaves the reason for an exception in its communication error register.
+    m_client->submit(readRequest(m_slave, *errorRegister), this,
+                     [this, errorRegister, outcome, done](const ModbusResult& r) mutable {
+                         if (r.ok() && !r.registers.isEmpty()) {
+                             const CodeTable* table = m_profile.codeTable(errorRegister->codeTable);
+                             const qint64 code = r.registers.first();
+                             const CodeEntry* entry = table ? table->find(code) : nullptr;
+                             const QString hex =
+                                 QString::number(code, 16).toUpper() + QLatin1Char('h');
+                             outcome.deviceError = entry ? hex + QLatin1Char(' ') + entry->name
+                                                         : tr("error code %1").arg(hex);
+                             outcome.error += QStringLiteral(" — ") + outcome.deviceError;
+                         }
+                         done(outcome);
+                     });
+}
+
+} // namespace opentop

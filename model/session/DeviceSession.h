@@ -1,0 +1,105 @@
+#pragma once
+
+#include "ModbusRequest.h"
+#include "profile/ParamValue.h"
+#include "profile/Profile.h"
+#include "profile/ValueContext.h"
+
+#include <QHash>
+#include <QObject>
+#include <QVector>
+#include <functional>
+#include <memory>
+
+namespace opentop {
+
+class ModbusClient;
+struct ModbusResult;
+
+// One drive on the bus, as the rest of the program works with it: parameters by name, values
+// validated against the profile before any frame is built, writes read back and verified, and
+// device errors explained (for the DBU, the communication error register is read and decoded).
+//
+// Values read from the device update the cache and emit valueUpdated(); they never cause a
+// write. Only write() sends values, and only ones the caller asked for.
+class DeviceSession : public QObject
+{
+    Q_OBJECT
+public:
+    struct Outcome
+    {
+        bool ok = false;
+        QString parameter;
+        ParamValue value;      // the value read (or read back after a write)
+        QString error;         // what went wrong, for people
+        QString deviceError;   // decoded device error register, when there is one
+        bool sent = false;     // whether anything reached the wire (false: refused before)
+        bool verified = false; // a write was read back and matched
+        bool mismatch = false; // a write was read back and differed
+    };
+    using Done = std::function<void(const Outcome&)>;
+
+    struct ReadManyOutcome
+    {
+        QHash<QString, Outcome> results; // by parameter name
+        QStringList order;               // names in the order asked
+        int requests = 0;                // requests sent, fallbacks included
+        int failed = 0;                  // parameters that could not be read
+    };
+    using ManyDone = std::function<void(const ReadManyOutcome&)>;
+
+    struct WriteOptions
+    {
+        // Commands that move a motor, reset, erase, initialise, store or change communication
+        // are refused unless the caller states that the user asked for exactly this.
+        bool explicitCommand = false;
+        bool verify = true;
+    };
+
+    DeviceSession(ModbusClient* client, const Profile& profile, int slave, const QString& variant,
+                  QObject* parent = nullptr);
+
+    const Profile& profile() const { return m_profile; }
+    int slave() const { return m_slave; }
+    QString variant() const { return m_variant; }
+    void setVariant(const QString& variant) { m_variant = variant; }
+    ModbusClient* client() const { return m_client; }
+
+    // The variant and the cached raw values other parameters' allowed sets depend on.
+    ValueContext context() const;
+    bool hasCached(const QString& name) const { return m_cache.contains(name); }
+    QVector<quint16> cachedRegisters(const QString& name) const { return m_cache.value(name); }
+    ParamValue cachedValue(const QString& name) const;
+
+    void read(const QString& name, Done done);
+    // Reads several parameters in as few requests as the device allows (ReadPlanner), falling
+    // back to one request per parameter where the device refuses a block.
+    // `priority` Poll lets user requests overtake background polling.
+    void readMany(const QStringList& names, ManyDone done,
+                  ModbusRequest::Priority priority = ModbusRequest::Priority::Normal);
+    // Validates `text` (engineering units or enumeration label), writes, reads back.
+    void write(const QString& name, const QString& text, const WriteOptions& options, Done done);
+    // Stores registers obtained elsewhere (a block read) as device values.
+    void acceptRegisters(const QString& name, const QVector<quint16>& registers);
+
+signals:
+    // A value read from the device (never an echo of a user edit).
+    void valueUpdated(const QString& name, const opentop::ParamValue& value);
+
+private:
+    const ParameterMeta* lookup(const QString& name, Outcome* outcome) const;
+    struct ManyState;
+    void nextBlock(std::shared_ptr<ManyState> state);
+    void ensureControllingValues(const ParameterMeta& meta, std::function<void(QString)> then);
+    void explainFailure(const ModbusResult& result, Outcome outcome, Done done);
+    void verifyWrite(const ParameterMeta& meta, const QVector<quint16>& written, Outcome outcome,
+                     Done done);
+
+    ModbusClient* m_client;
+    const Profile& m_profile;
+    int m_slave;
+    QString m_variant;
+    QHash<QString, QVector<quint16>> m_cache;
+};
+
+} // namespace opentop

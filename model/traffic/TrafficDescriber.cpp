@@ -1,0 +1,157 @@
+#include "traffic/TrafficDescriber.h"
+
+#include "ModbusRequest.h"
+#include "bus/BusDrives.h"
+#include "profile/Profile.h"
+#include "profile/ProfileRegistry.h"
+#include "profile/ValueCodec.h"
+
+#include <QHash>
+#include <QMutex>
+#include <QMutexLocker>
+#include <QStringList>
+
+namespace opentop {
+
+namespace {
+
+constexpr int kMaxNames = 4; // names listed for a block read before "…"
+
+// The registers of a read reply (RTU or TCP ADU); empty when the bytes do not carry them.
+QVector<quint16> replyRegisters(const TrafficEntry& entry, const ModbusRequest& request)
+{
+    const QByteArray& b = entry.bytes;
+    for (int offset : {0, 6}) { // RTU: slave first; TCP: 6 bytes of MBAP header before it
+        if (b.size() < offset + 3 || quint8(b[offset]) != request.slave ||
+            quint8(b[offset + 1]) != request.function)
+            continue;
+        const int byteCount = quint8(b[offset + 2]);
+        if (byteCount != 2 * request.count || b.size() < offset + 3 + byteCount)
+            continue;
+        QVector<quint16> registers;
+        for (int i = 0; i < request.count; ++i)
+            registers << quint16((quint8(b[offset + 3 + 2 * i]) << 8) |
+                                 quint8(b[offset + 4 + 2 * i]));
+        return registers;
+    }
+    return {};
+}
+
+// "name = value unit" when `registers` (starting at `first`) cover the parameter, else the name.
+QString nameAndValue(const ParameterMeta& p, quint16 first, const QVector<quint16>& registers)
+{
+    const int start = int(p.address) - int(first);
+    if (start < 0 || start + p.registerCount > registers.size())
+        return p.name;
+    const ParamValue value = ValueCodec::decode(p, registers.mid(start, p.registerCount));
+    if (!value.valid)
+        return p.name;
+    return QStringLiteral("%1 = %2").arg(p.name, ValueCodec::format(p, value));
+}
+
+// The parameters a request touches, described with `registers` (values) when known.
+QString parameterText(const Profile& profile, const ModbusRequest& request,
+                      const QVector<quint16>& registers)
+{
+    const int count = request.function == ModbusRequest::WriteSingle ? 1 : request.count;
+    QStringList names;
+    const ParameterMeta* last = nullptr;
+    bool more = false;
+    for (int i = 0; i < count; ++i) {
+        const ParameterMeta* p =
+            profile.parameterAt(request.function, quint16(request.address + i));
+        if (!p || p == last)
+            continue;
+        last = p;
+        if (names.size() == kMaxNames) {
+            more = true;
+            break;
+        }
+        names << nameAndValue(*p, request.address, registers);
+    }
+    if (names.isEmpty())
+        return QString();
+    if (more)
+        names << QStringLiteral("…");
+    return names.join(QStringLiteral(", "));
+}
+
+} // namespace
+
+struct TrafficDescriber::State
+{
+    ProfileLookup lookup;
+    QMutex mutex; // guards profiles (BusDrives mode)
+    QHash<int, const Profile*> profiles;
+};
+
+TrafficDescriber::TrafficDescriber(ProfileLookup lookup)
+    : m_state(std::make_shared<State>())
+{
+    m_state->lookup = std::move(lookup);
+}
+
+TrafficDescriber::TrafficDescriber(BusDrives* drives, const ProfileRegistry& registry)
+    : m_state(std::make_shared<State>())
+{
+    std::weak_ptr<State> weak = m_state;
+    m_state->lookup = [weak](int slave) -> const Profile* {
+        const std::shared_ptr<State> state = weak.lock();
+        if (!state)
+            return nullptr;
+        QMutexLocker lock(&state->mutex);
+        return state->profiles.value(slave);
+    };
+    const std::shared_ptr<State> state = m_state;
+    const ProfileRegistry* reg = &registry;
+    auto update = [state, drives, reg](int slave) {
+        const Profile* profile =
+            drives->contains(slave) ? reg->family(drives->info(slave).family) : nullptr;
+        QMutexLocker lock(&state->mutex);
+        if (profile)
+            state->profiles.insert(slave, profile);
+        else
+            state->profiles.remove(slave);
+    };
+    for (int slave : drives->slaves())
+        update(slave);
+    QObject::connect(drives, &BusDrives::driveAdded, drives, update);
+    QObject::connect(drives, &BusDrives::driveChanged, drives, update);
+    QObject::connect(drives, &BusDrives::driveRemoved, drives, update);
+}
+
+QString TrafficDescriber::describe(const TrafficEntry& entry, const ModbusRequest* request) const
+{
+    if (!request || request->raw || request->isBroadcast() || !m_state->lookup)
+        return QString();
+    if (!request->isRead() && !request->isWrite())
+        return QString();
+    const Profile* profile = m_state->lookup(request->slave);
+    if (!profile)
+        return QString();
+
+    QVector<quint16> values;
+    const bool exception = (entry.function & 0x80) != 0;
+    if (request->isWrite() && entry.direction != TrafficEntry::Direction::Event)
+        values = request->values; // the request carries them; an echo repeats them
+    else if (entry.direction == TrafficEntry::Direction::Rx && entry.error.isEmpty() && !exception)
+        values = replyRegisters(entry, *request);
+    if (exception)
+        values.clear();
+    const QString names = parameterText(*profile, *request, values);
+    if (names.isEmpty())
+        return QString();
+    if (entry.summary.isEmpty())
+        return QStringLiteral("(%1)").arg(names);
+    return QStringLiteral("%1 (%2)").arg(entry.summary, names);
+}
+
+TrafficLog::Describer TrafficDescriber::describer() const
+{
+    const TrafficDescriber copy = *this;
+    return [copy](const TrafficEntry& entry, const ModbusRequest* request) {
+        return copy.describe(entry, request);
+    };
+}
+
+} // namespace opentop

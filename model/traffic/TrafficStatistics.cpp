@@ -1,0 +1,83 @@
+#include "traffic/TrafficStatistics.h"
+
+#include "ModbusResult.h"
+
+#include <algorithm>
+
+namespace opentop {
+
+void TrafficStatistics::add(const TrafficEntry& entry)
+{
+    if (entry.direction == TrafficEntry::Direction::Tx) {
+        m_lastRequestSlave = entry.slave;
+        ++stats(entry.slave).requests;
+        return;
+    }
+    const int slave = m_lastRequestSlave >= 0 ? m_lastRequestSlave : entry.slave;
+    DriveTrafficStats& s = stats(slave);
+    if (entry.direction == TrafficEntry::Direction::Event) {
+        // Events carry the error of a request that got no usable frame back.
+        if (entry.error.startsWith(modbusErrorName(ModbusError::Timeout)))
+            ++s.timeouts;
+        return;
+    }
+    ++s.replies;
+    if (entry.responseMs >= 0) {
+        ++s.timedReplies;
+        s.totalMs += entry.responseMs;
+        s.maxMs = std::max(s.maxMs, entry.responseMs);
+    }
+    if (!entry.error.isEmpty()) {
+        if (entry.error.startsWith(modbusErrorName(ModbusError::CrcError)))
+            ++s.crcErrors;
+        else
+            ++s.garbled;
+    } else if (entry.function & 0x80) {
+        ++s.exceptions;
+    }
+}
+
+void TrafficStatistics::clear()
+{
+    m_drives.clear();
+    m_lastRequestSlave = -1;
+}
+
+QVector<int> TrafficStatistics::slaves() const
+{
+    return QVector<int>(m_drives.keyBegin(), m_drives.keyEnd());
+}
+
+DriveTrafficStats TrafficStatistics::drive(int slave) const
+{
+    DriveTrafficStats s = m_drives.value(slave);
+    s.slave = slave;
+    return s;
+}
+
+DriveTrafficStats TrafficStatistics::total() const
+{
+    DriveTrafficStats t;
+    t.slave = -1;
+    for (const DriveTrafficStats& s : m_drives) {
+        t.requests += s.requests;
+        t.replies += s.replies;
+        t.timeouts += s.timeouts;
+        t.crcErrors += s.crcErrors;
+        t.exceptions += s.exceptions;
+        t.garbled += s.garbled;
+        t.timedReplies += s.timedReplies;
+        t.totalMs += s.totalMs;
+        t.maxMs = std::max(t.maxMs, s.maxMs);
+    }
+    return t;
+}
+
+DriveTrafficStats& TrafficStatistics::stats(int slave)
+{
+    DriveTrafficStats& s = m_drives[slave];
+    s.slave = slave;
+    return s;
+}
+
+} // namespace opentop

@@ -1,0 +1,289 @@
+// BusScanner against in-process simulated buses: a SimBackend for clean buses, a MockBackend
+// in front of a SimBus where replies have to be corrupted the way two drives with one machine
+// number corrupt them.
+#include "bus/BusScanner.h"
+#include "MockBackend.h"
+#include "ModbusClient.h"
+#include "ModbusCrc.h"
+#include "SimBackend.h"
+#include "SimBus.h"
+#include "profile/ProfileRegistry.h"
+
+#include <QEventLoop>
+#include <QTimer>
+#include <gtest/gtest.h>
+#include <utility>
+
+using namespace opentop;
+
+namespace {
+
+std::unique_ptr<ModbusClient> simClient(const QString& spec)
+{
+    QString error;
+    auto bus = SimBus::fromSpec(spec, &error);
+    EXPECT_TRUE(bus) << qPrintable(error);
+    ConnectionSettings settings;
+    settings.kind = ConnectionSettings::Kind::Simulated;
+    settings.simSpec = spec;
+    auto client = std::make_unique<ModbusClient>(std::make_unique<SimBackend>(bus), settings);
+    EXPECT_TRUE(client->openBlocking().isEmpty());
+    return client;
+}
+
+// A client whose replies come from `bus` and pass through `tamper` first (it may corrupt them).
+std::unique_ptr<ModbusClient> tamperedClient(std::shared_ptr<SimBus> bus,
+                                             std::function<QByteArray(QByteArray)> tamper)
+{
+    auto backend = std::make_unique<MockBackend>([bus, tamper](const QByteArray& request) {
+        return tamper(bus->handleFrame(request).reply);
+    });
+    ConnectionSettings settings;
+    settings.kind = ConnectionSettings::Kind::Simulated;
+    settings.simSpec = bus->spec();
+    auto client = std::make_unique<ModbusClient>(std::move(backend), settings);
+    EXPECT_TRUE(client->openBlocking().isEmpty());
+    return client;
+}
+
+// Records what a scan reports.
+struct ScanRecord
+{
+    QVector<DeviceInfo> found;
+    QVector<DeviceInfo> finished;
+    int finishedCount = 0;
+    int lastDone = 0;
+    int lastTotal = 0;
+    int lastSlave = 0;
+
+    explicit ScanRecord(BusScanner& scanner)
+    {
+        QObject::connect(&scanner, &BusScanner::found,
+                         [this](const DeviceInfo& info) { found << info; });
+        QObject::connect(&scanner, &BusScanner::progress, [this](int done, int total, int slave) {
+            EXPECT_EQ(done, lastDone + 1); // every address once, in order
+            lastDone = done;
+            lastTotal = total;
+            lastSlave = slave;
+        });
+        QObject::connect(&scanner, &BusScanner::finished,
+                         [this](const QVector<DeviceInfo>& devices) {
+                             finished = devices;
+                             ++finishedCount;
+                         });
+    }
+
+    void waitFinished(int timeoutMs = 10000)
+    {
+        QEventLoop loop;
+        QTimer poll;
+        QObject::connect(&poll, &QTimer::timeout, &loop, [&] {
+            if (finishedCount > 0)
+                loop.quit();
+        });
+        poll.start(5);
+        QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+        loop.exec();
+        ASSERT_EQ(finishedCount, 1) << "the scan did not finish";
+    }
+};
+
+QVector<int> slavesOf(const QVector<DeviceInfo>& devices)
+{
+    QVector<int> slaves;
+    for (const DeviceInfo& d : devices)
+        slaves << d.slave;
+    return slaves;
+}
+
+} // namespace
+
+TEST(BusScannerTest, FindsExactlyTheConfiguredDrives)
+{
+    auto client = simClient(QStringLiteral("dbu200@1,dcpid@7,dbu400@9"));
+    BusScanner scanner(client.get(), ProfileRegistry::builtIn());
+    scanner.setRange(1, 10);
+    scanner.setWaitMs(10);
+    ScanRecord record(scanner);
+    scanner.start();
+    record.waitFinished();
+
+    EXPECT_EQ(slavesOf(record.found), (QVector<int>{1, 7, 9}));
+    EXPECT_EQ(slavesOf(record.finished), (QVector<int>{1, 7, 9}));
+    ASSERT_EQ(record.finished.size(), 3);
+    for (const DeviceInfo& d : record.finished)
+        EXPECT_EQ(d.state, DeviceInfo::State::Present) << d.slave << qPrintable(d.detail);
+    EXPECT_EQ(record.finished[0].family, QStringLiteral("dbu"));
+    EXPECT_EQ(record.finished[0].firmware, QStringLiteral("1.5"));
+    EXPECT_EQ(record.finished[1].family, QStringLiteral("dcpid"));
+    EXPECT_EQ(record.finished[2].family, QStringLiteral("dbu"));
+    EXPECT_EQ(record.lastDone, 10);
+    EXPECT_EQ(record.lastTotal, 10);
+    EXPECT_EQ(record.lastSlave, 10);
+    EXPECT_EQ(scanner.scannedCount(), 10);
+    EXPECT_FALSE(scanner.wasCancelled());
+    EXPECT_TRUE(scanner.error().isEmpty());
+    // One request per address, no retries of silence; the DC controller refuses the DBU's
+    // identify read and is asked with its own.
+    EXPECT_EQ(scanner.requestsSent(), 11);
+}
+
+TEST(BusScannerTest, CancelStopsBetweenTransactionsAndReports)
+{
+    auto client = simClient(QStringLiteral("dbu200@2"));
+    BusScanner scanner(client.get(), ProfileRegistry::builtIn());
+    scanner.setWaitMs(20);
+    ScanRecord record(scanner);
+    QObject::connect(&scanner, &BusScanner::progress, [&](int done, int, int) {
+        if (done == 5)
+            scanner.cancel();
+    });
+    scanner.start();
+    record.waitFinished();
+    EXPECT_TRUE(scanner.wasCancelled());
+    EXPECT_EQ(scanner.scannedCount(), 5);
+    EXPECT_EQ(record.lastDone, 5);
+    EXPECT_EQ(slavesOf(record.finished), (QVector<int>{2}));
+    EXPECT_EQ(scanner.requestsSent(), 5);
+    EXPECT_FALSE(scanner.isRunning());
+}
+
+TEST(BusScannerTest, CancelWhileARequestIsOnTheWire)
+{
+    auto client = simClient(QStringLiteral("dbu200@1"));
+    BusScanner scanner(client.get(), ProfileRegistry::builtIn());
+    scanner.setWaitMs(50);
+    ScanRecord record(scanner);
+    scanner.start();
+    QTimer::singleShot(120, &scanner, &BusScanner::cancel);
+    record.waitFinished();
+    EXPECT_TRUE(scanner.wasCancelled());
+    EXPECT_GE(scanner.scannedCount(), 1);
+    EXPECT_LT(scanner.scannedCount(), 10);
+    EXPECT_LT(scanner.elapsedMs(), 1000);
+}
+
+TEST(BusScannerTest, GarbledRepliesAreConfirmedAndFlagged)
+{
+    QString error;
+    auto bus = SimBus::fromSpec(QStringLiteral("dbu200@3,dbu200@4,dbu200@5,dbu200@6"), &error);
+    ASSERT_TRUE(bus) << qPrintable(error);
+    int repliesFrom4 = 0;
+    auto client = tamperedClient(bus, [&repliesFrom4](QByteArray reply) {
+        if (reply.isEmpty())
+            return reply;
+        const int slave = quint8(reply.at(0));
+        if (slave == 3) // two drives talking at once: every frame corrupt
+            reply[reply.size() - 1] = char(reply.at(reply.size() - 1) ^ 0x5A);
+        if (slave == 4 && ++repliesFrom4 == 1) // one burst of noise only
+            reply[3] = char(reply.at(3) ^ 0x01);
+        if (slave == 5) { // a reply carrying another machine number
+            reply[0] = char(6);
+            reply = ModbusCrc::append(reply.left(reply.size() - 2));
+        }
+        return reply;
+    });
+    BusScanner scanner(client.get(), ProfileRegistry::builtIn());
+    scanner.setRange(2, 7);
+    scanner.setWaitMs(10);
+    ScanRecord record(scanner);
+    scanner.start();
+    record.waitFinished();
+
+    ASSERT_EQ(slavesOf(record.finished), (QVector<int>{3, 4, 5, 6}));
+    const DeviceInfo& crc = record.finished[0];
+    EXPECT_EQ(crc.state, DeviceInfo::State::Garbled);
+    EXPECT_TRUE(crc.detail.contains(QStringLiteral("share machine number 3")))
+        << qPrintable(crc.detail);
+    EXPECT_TRUE(crc.detail.contains(QStringLiteral("SW1/SW2")));
+    EXPECT_EQ(record.finished[1].state, DeviceInfo::State::Present); // the second attempt was clean
+    EXPECT_EQ(repliesFrom4, 2);
+    EXPECT_EQ(record.finished[2].state, DeviceInfo::State::Garbled); // wrong slave
+    EXPECT_EQ(record.finished[3].state, DeviceInfo::State::Present);
+    // 2 and 7 silent, 6 once, 3, 4 and 5 twice.
+    EXPECT_EQ(scanner.requestsSent(), 9);
+}
+
+TEST(BusScannerTest, ADriveAnsweringLateIsAskedAgain)
+{
+    // The drive at 3 answers only after the wait: its reply turns up while 4 is being asked.
+    QString error;
+    auto bus = SimBus::fromSpec(QStringLiteral("dbu200@3,dbu200@5"), &error);
+    ASSERT_TRUE(bus) << qPrintable(error);
+    auto late = std::make_shared<QByteArray>();
+    auto slowOnce = std::make_shared<bool>(true);
+    auto backend = std::make_unique<MockBackend>([bus, late, slowOnce](const QByteArray& request) {
+        const QByteArray reply = bus->handleFrame(request).reply;
+        if (quint8(request.at(0)) == 3 && *slowOnce) {
+            *slowOnce = false;
+            *late = reply;
+            return QByteArray();
+        }
+        if (!late->isEmpty())
+            return std::exchange(*late, QByteArray());
+        return reply;
+    });
+    ModbusClient client(std::move(backend), ConnectionSettings());
+    ASSERT_TRUE(client.openBlocking().isEmpty());
+    BusScanner scanner(&client, ProfileRegistry::builtIn());
+    scanner.setRange(2, 6);
+    scanner.setWaitMs(10);
+    ScanRecord record(scanner);
+    scanner.start();
+    record.waitFinished();
+
+    ASSERT_EQ(slavesOf(record.finished), (QVector<int>{3, 5}));
+    EXPECT_EQ(record.finished[0].state, DeviceInfo::State::Present);
+    EXPECT_TRUE(record.finished[0].detail.contains(QStringLiteral("answered late")))
+        << qPrintable(record.finished[0].detail);
+    EXPECT_EQ(slavesOf(record.found), (QVector<int>{3, 5}));
+    EXPECT_EQ(scanner.lateAnswers(), 1);
+    EXPECT_EQ(record.lastDone, 5); // asking 3 again is not a step of the pass
+    // 2, 3, 4 twice (the late reply garbled it), 3 again, 5, 6.
+    EXPECT_EQ(scanner.requestsSent(), 7);
+}
+
+TEST(BusScannerTest, PortFailureStopsTheScan)
+{
+    auto backend = std::make_unique<MockBackend>([](const QByteArray&) { return QByteArray(); });
+    MockBackend* mock = backend.get();
+    ModbusClient client(std::move(backend), ConnectionSettings());
+    ASSERT_TRUE(client.openBlocking().isEmpty());
+    mock->failPort(QStringLiteral("adapter unplugged"));
+    BusScanner scanner(&client, ProfileRegistry::builtIn());
+    scanner.setWaitMs(10);
+    ScanRecord record(scanner);
+    scanner.start();
+    record.waitFinished();
+    EXPECT_TRUE(scanner.error().contains(QStringLiteral("adapter unplugged")))
+        << qPrintable(scanner.error());
+    EXPECT_EQ(scanner.scannedCount(), 0);
+}
+
+TEST(BusScannerTest, WaitIsDerivedFromTheBaudRate)
+{
+    const ProfileRegistry& registry = ProfileRegistry::builtIn();
+    ConnectionSettings s;
+    s.baud = 19200; // 8N1: 0.521 ms per character
+    // 8-byte request + 10 ms answer + 25-byte DC controller identify reply + 3.5 characters
+    // + 3 ms margin = 36.5 × 0.521 + 13 = 32.01 ms.
+    EXPECT_EQ(BusScanner::defaultWaitMs(s, registry), 33);
+    s.baud = 9600;
+    s.parity = 'E'; // 11 bits: 1.146 ms per character
+    EXPECT_EQ(BusScanner::defaultWaitMs(s, registry), 55);
+    s.baud = 115200;
+    s.parity = 'N';
+    EXPECT_EQ(BusScanner::defaultWaitMs(s, registry), 17);
+    s.kind = ConnectionSettings::Kind::Tcp; // a gateway's own latency on top
+    EXPECT_GT(BusScanner::defaultWaitMs(s, registry), 17 + 40);
+
+    auto client = simClient(QStringLiteral("dbu200@1"));
+    BusScanner scanner(client.get(), registry);
+    EXPECT_EQ(scanner.waitMs(), 33); // the simulated connection's default 19200 8N1
+    scanner.setWaitMs(5);            // the transport's shortest timeout is 10 ms
+    EXPECT_EQ(scanner.waitMs(), 10);
+    scanner.setWaitMs(120);
+    EXPECT_EQ(scanner.waitMs(), 120);
+    scanner.setWaitMs(0);
+    EXPECT_EQ(scanner.waitMs(), 33);
+}

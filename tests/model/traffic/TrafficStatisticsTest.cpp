@@ -1,0 +1,91 @@
+#include "traffic/TrafficStatistics.h"
+#include "DriveSimFixture.h"
+
+#include "FaultInjector.h"
+#include "ModbusRequest.h"
+
+using namespace opentop;
+using namespace opentop::test;
+
+namespace {
+
+TrafficEntry frame(TrafficEntry::Direction direction, int slave, int function,
+                   const QString& error = QString(), double ms = -1)
+{
+    TrafficEntry e;
+    e.direction = direction;
+    e.slave = quint8(slave);
+    e.function = quint8(function);
+    e.error = error;
+    e.responseMs = ms;
+    return e;
+}
+
+} // namespace
+
+TEST(TrafficStatisticsTest, CountsPerDrive)
+{
+    using D = TrafficEntry::Direction;
+    TrafficStatistics stats;
+    stats.add(frame(D::Tx, 1, 3));
+    stats.add(frame(D::Rx, 1, 3, QString(), 10));
+    stats.add(frame(D::Tx, 1, 3));
+    stats.add(frame(D::Rx, 1, 0x83, QString(), 30));
+    stats.add(frame(D::Tx, 2, 3));
+    stats.add(frame(D::Event, 2, 3, modbusErrorName(ModbusError::Timeout)));
+    stats.add(frame(D::Tx, 2, 3));
+    stats.add(frame(D::Rx, 2, 3, modbusErrorName(ModbusError::CrcError), 5));
+    stats.add(frame(D::Tx, 2, 3));
+    stats.add(frame(D::Rx, 9, 3, modbusErrorName(ModbusError::WrongSlave), 7)); // counts for 2
+
+    EXPECT_EQ(stats.slaves(), (QVector<int>{1, 2}));
+    const DriveTrafficStats one = stats.drive(1);
+    EXPECT_EQ(one.requests, 2);
+    EXPECT_EQ(one.replies, 2);
+    EXPECT_EQ(one.exceptions, 1);
+    EXPECT_DOUBLE_EQ(one.meanMs(), 20.0);
+    EXPECT_DOUBLE_EQ(one.maxMs, 30.0);
+    const DriveTrafficStats two = stats.drive(2);
+    EXPECT_EQ(two.requests, 3);
+    EXPECT_EQ(two.replies, 2);
+    EXPECT_EQ(two.timeouts, 1);
+    EXPECT_EQ(two.crcErrors, 1);
+    EXPECT_EQ(two.garbled, 1);
+    EXPECT_EQ(two.errors(), 3);
+    EXPECT_EQ(stats.total().requests, 5);
+    stats.clear();
+    EXPECT_TRUE(stats.slaves().isEmpty());
+}
+
+class TrafficStatisticsSimTest : public DriveSimFixture
+{
+};
+
+TEST_F(TrafficStatisticsSimTest, CountsFaultsOnTheSimulatedBus)
+{
+    startBus(QStringLiteral("dbu200@1"));
+    auto read = [this](int slave) {
+        return await<ModbusResult>([this, slave](auto done) {
+            client->submit(ModbusRequest::readHolding(quint8(slave), 0xCA03, 1), nullptr, done);
+        });
+    };
+    EXPECT_TRUE(read(1).ok());
+    EXPECT_EQ(read(5).error, ModbusError::Timeout); // nobody at 5
+    bus->setFaults(FaultInjector(*FaultInjector::parse(QStringLiteral("crc=1"), nullptr)));
+    EXPECT_EQ(read(1).error, ModbusError::CrcError);
+    bus->setFaults(FaultInjector());
+
+    TrafficStatistics stats;
+    for (const TrafficEntry& e : log.entries())
+        stats.add(e);
+    const DriveTrafficStats one = stats.drive(1);
+    EXPECT_EQ(one.requests, 2);
+    EXPECT_EQ(one.replies, 2);
+    EXPECT_EQ(one.crcErrors, 1);
+    EXPECT_EQ(one.timeouts, 0);
+    EXPECT_GE(one.maxMs, one.meanMs());
+    const DriveTrafficStats five = stats.drive(5);
+    EXPECT_EQ(five.requests, 1);
+    EXPECT_EQ(five.timeouts, 1);
+    EXPECT_EQ(five.replies, 0);
+}

@@ -1,0 +1,162 @@
+#include "connection/ConnectionDialog.h"
+
+#include <QCoreApplication>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <gtest/gtest.h>
+
+using namespace opentop;
+
+namespace {
+
+// Keeps QSettings of these tests in a temporary directory under a throw-away name.
+class ConnectionDialogTest : public ::testing::Test
+{
+protected:
+    void SetUp() override
+    {
+        ASSERT_TRUE(dir.isValid());
+        organization = QCoreApplication::organizationName();
+        application = QCoreApplication::applicationName();
+        QCoreApplication::setOrganizationName(QStringLiteral("OpenTOP-test"));
+        QCoreApplication::setApplicationName(QStringLiteral("ConnectionDialogTest"));
+        QSettings::setDefaultFormat(QSettings::IniFormat);
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, dir.path());
+    }
+    void TearDown() override
+    {
+        QSettings().clear();
+        QCoreApplication::setOrganizationName(organization);
+        QCoreApplication::setApplicationName(application);
+        QSettings::setDefaultFormat(QSettings::NativeFormat);
+    }
+
+    QTemporaryDir dir;
+    QString organization;
+    QString application;
+};
+
+} // namespace
+
+TEST_F(ConnectionDialogTest, RemembersTheAcceptedSettings)
+{
+    bool found = true;
+    ConnectionDialog::remembered(&found);
+    EXPECT_FALSE(found);
+
+    ConnectionSettings tcp;
+    tcp.kind = ConnectionSettings::Kind::Tcp;
+    tcp.host = QStringLiteral("10.0.0.5");
+    tcp.tcpPort = 1502;
+    tcp.timeoutMs = 300;
+    tcp.retries = 2;
+    {
+        ConnectionDialog dialog;
+        dialog.setSettings(tcp);
+        dialog.accept();
+        EXPECT_EQ(dialog.result(), QDialog::Accepted);
+    }
+    EXPECT_EQ(QSettings().value(QStringLiteral("connection/kind")).toString(),
+              QStringLiteral("tcp"));
+    ConnectionDialog again; // starts with what was accepted last
+    const ConnectionSettings s = again.settings();
+    EXPECT_EQ(s.kind, ConnectionSettings::Kind::Tcp);
+    EXPECT_EQ(s.host, QStringLiteral("10.0.0.5"));
+    EXPECT_EQ(s.tcpPort, 1502);
+    EXPECT_EQ(s.timeoutMs, 300);
+    EXPECT_EQ(s.retries, 2);
+}
+
+TEST_F(ConnectionDialogTest, ATypedPortPathAndLineSettingsRoundTrip)
+{
+    ConnectionSettings serial;
+    serial.port = QStringLiteral("/dev/pts/3");
+    serial.baud = 38400;
+    serial.parity = 'O';
+    serial.stopBits = 2;
+    ConnectionDialog dialog;
+    dialog.setSettings(serial);
+    dialog.accept();
+    ASSERT_EQ(dialog.result(), QDialog::Accepted) << qPrintable(dialog.errorText());
+    const ConnectionSettings s = ConnectionDialog::remembered();
+    EXPECT_EQ(s.kind, ConnectionSettings::Kind::Serial);
+    EXPECT_EQ(s.port, QStringLiteral("/dev/pts/3"));
+    EXPECT_EQ(s.baud, 38400);
+    EXPECT_EQ(s.parity, 'O');
+    EXPECT_EQ(s.stopBits, 2);
+}
+
+TEST_F(ConnectionDialogTest, FamilyPresetsFillTheLineSettings)
+{
+    ConnectionDialog dialog;
+    dialog.applyFamilyDefaults(QStringLiteral("dcpid"));
+    ConnectionSettings s = dialog.settings();
+    EXPECT_EQ(s.baud, 9600);
+    EXPECT_EQ(s.parity, 'E');
+    EXPECT_EQ(s.stopBits, 1);
+    dialog.applyFamilyDefaults(QStringLiteral("dbu"));
+    s = dialog.settings();
+    EXPECT_EQ(s.baud, 19200);
+    EXPECT_EQ(s.parity, 'N');
+}
+
+TEST_F(ConnectionDialogTest, InvalidInputIsExplainedAndTheDialogStaysOpen)
+{
+    ConnectionSettings serial;
+    serial.port.clear();
+    ConnectionDialog dialog;
+    dialog.setSettings(serial);
+    dialog.show();
+    dialog.accept();
+    EXPECT_TRUE(dialog.isVisible());
+    EXPECT_NE(dialog.result(), QDialog::Accepted);
+    EXPECT_TRUE(dialog.errorText().contains(QStringLiteral("No serial port given")))
+        << qPrintable(dialog.errorText());
+
+    ConnectionSettings sim;
+    sim.kind = ConnectionSettings::Kind::Simulated;
+    sim.simSpec = QStringLiteral("dbu999@1");
+    dialog.setSettings(sim);
+    dialog.accept();
+    EXPECT_TRUE(dialog.isVisible());
+    EXPECT_FALSE(dialog.errorText().isEmpty());
+    EXPECT_TRUE(dialog.errorText().contains(QStringLiteral("dbu999")))
+        << qPrintable(dialog.errorText());
+    EXPECT_FALSE(QSettings().contains(QStringLiteral("connection/kind"))); // nothing remembered
+
+    sim.simSpec = QStringLiteral("dbu200@1,dbu400@150,dcpid@7");
+    dialog.setSettings(sim);
+    dialog.accept();
+    EXPECT_FALSE(dialog.isVisible());
+    EXPECT_EQ(dialog.result(), QDialog::Accepted);
+    EXPECT_EQ(ConnectionDialog::remembered().simSpec, sim.simSpec);
+}
+
+TEST_F(ConnectionDialogTest, OpenErrorsSayWhatToCheck)
+{
+    ConnectionSettings s;
+    s.port = QStringLiteral("/dev/ttyUSB0");
+    const QString busy = ConnectionDialog::explainOpenError(
+        s, QStringLiteral("Cannot open /dev/ttyUSB0: the port is in use by another OpenTOP "
+                          "connection."));
+    EXPECT_TRUE(busy.contains(QStringLiteral("another program"))) << qPrintable(busy);
+    EXPECT_TRUE(busy.contains(QStringLiteral("in use by another OpenTOP connection")));
+
+    const QString denied = ConnectionDialog::explainOpenError(
+        s, QStringLiteral("Cannot open /dev/ttyUSB0 19200 8N1: Permission denied"));
+    EXPECT_TRUE(denied.contains(QStringLiteral("sudo usermod -aG dialout $USER")))
+        << qPrintable(denied);
+    EXPECT_TRUE(denied.contains(QStringLiteral("log out and in")));
+
+    const QString missing = ConnectionDialog::explainOpenError(
+        s, QStringLiteral("Cannot open /dev/ttyUSB0 19200 8N1: No such file or directory"));
+    EXPECT_TRUE(missing.contains(QStringLiteral("unplugged"))) << qPrintable(missing);
+    EXPECT_TRUE(missing.contains(QStringLiteral("/dev/ttyUSB0")));
+
+    const QString silent =
+        ConnectionDialog::explainOpenError(s, QStringLiteral("timeout after 2 attempts"));
+    EXPECT_TRUE(silent.contains(QStringLiteral("baud rate"))) << qPrintable(silent);
+    EXPECT_TRUE(silent.contains(QStringLiteral("parity")));
+    EXPECT_TRUE(silent.contains(QStringLiteral("A and B")));
+    EXPECT_FALSE(silent.contains(QStringLiteral("dialout")));
+}

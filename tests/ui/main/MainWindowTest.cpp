@@ -1,0 +1,205 @@
+// The whole window against an in-process simulated bus: connect, the configured drives are
+// identified with their variants, selecting one opens its pages, an edit written from the
+// workspace reaches the drive, several drives of one family enable the multi-drive write.
+#include "main/MainWindow.h"
+#include "BackendFactory.h"
+#include "ModbusClient.h"
+#include "SimBus.h"
+#include "TrafficLog.h"
+#include "bus/BusDrives.h"
+#include "bus/BusListModel.h"
+#include "bus/BusOverview.h"
+#include "bus/BusOverviewModel.h"
+#include "bus/BusPanel.h"
+#include "monitor/MonitorHub.h"
+#include "monitor/MonitorPage.h"
+#include "pages/EditorRegistry.h"
+#include "run/StopAllButton.h"
+#include "session/DeviceParameters.h"
+#include "workspace/DriveWorkspace.h"
+#include "workspace/ParameterField.h"
+#include "workspace/ParameterPage.h"
+
+#include <QCoreApplication>
+#include <QDeadlineTimer>
+#include <QDockWidget>
+#include <QItemSelectionModel>
+#include <QRegularExpression>
+#include <QSettings>
+#include <QTabWidget>
+#include <QTableView>
+#include <gtest/gtest.h>
+
+using namespace opentop;
+
+namespace {
+
+bool waitFor(const std::function<bool()>& condition, int ms = 10000)
+{
+    QDeadlineTimer deadline(ms);
+    while (!condition() && !deadline.hasExpired())
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+    return condition();
+}
+
+class MainWindowTest : public ::testing::Test
+{
+protected:
+    void SetUp() override
+    {
+        QCoreApplication::setOrganizationName(QStringLiteral("OpenTOP-test"));
+        QSettings().clear();
+        registerBuiltInEditors();
+        window = std::make_unique<MainWindow>(
+            [this](const ConnectionSettings& s, TrafficLog* log, QString* error) {
+                auto made = BackendFactory::makeClient(s, log);
+                bus = made.simBus;
+                if (error)
+                    *error = made.error;
+                return std::move(made.client);
+            });
+        ConnectionSettings settings;
+        settings.kind = ConnectionSettings::Kind::Simulated;
+        settings.simSpec = QStringLiteral("dbu200@1,dbu200@2,dbu400@150,dcpid@7");
+        settings.timeoutMs = 100;
+        window->show();
+        window->connectTo(settings, {{1, QStringLiteral("dbu200")},
+                                     {2, QStringLiteral("dbu200")},
+                                     {150, QStringLiteral("dbu400")},
+                                     {7, QStringLiteral("dcpid")}});
+        ASSERT_TRUE(
+            waitFor([this] { return window->drives() && window->drives()->slaves().size() == 4; }));
+    }
+
+    int simRegister(int slave, quint16 address)
+    {
+        const QString text =
+            bus->control(slave, {QStringLiteral("get"), QString::number(address)}).text;
+        const QRegularExpressionMatch m =
+            QRegularExpression(QStringLiteral("= (\\d+) ")).match(text);
+        return m.hasMatch() ? m.captured(1).toInt() : -1;
+    }
+
+    void select(const QVector<int>& slaves)
+    {
+        QTableView* view = window->busPanel()->view();
+        view->clearSelection();
+        for (int slave : slaves) {
+            const int row = window->busPanel()->model()->rowOf(slave);
+            view->selectionModel()->select(view->model()->index(row, 0),
+                                           QItemSelectionModel::Select | QItemSelectionModel::Rows);
+        }
+    }
+
+    std::shared_ptr<SimBus> bus;
+    std::unique_ptr<MainWindow> window;
+};
+
+} // namespace
+
+TEST_F(MainWindowTest, ConfiguredDrivesAreIdentifiedWithTheirVariants)
+{
+    BusDrives* drives = window->drives();
+    EXPECT_TRUE(window->isConnected());
+    EXPECT_EQ(drives->info(1).model, QStringLiteral("DBU200-D"));
+    EXPECT_EQ(drives->info(150).model, QStringLiteral("DBU400-D4"));
+    EXPECT_EQ(drives->info(7).family, QStringLiteral("dcpid"));
+    BusListModel* model = window->busPanel()->model();
+    const int row = model->rowOf(150);
+    ASSERT_GE(row, 0);
+    EXPECT_EQ(model->index(row, BusListModel::Switches).data().toString(),
+              QStringLiteral("96h  SW1=9 SW2=6"));
+}
+
+TEST_F(MainWindowTest, SelectingADriveOpensItsPagesAndAnEditReachesTheDrive)
+{
+    select({1});
+    DriveWorkspace* workspace = window->workspace();
+    ASSERT_TRUE(waitFor([&] { return workspace->drive() != nullptr; }));
+    QStringList titles;
+    for (int i = 0; i < workspace->tabs()->count(); ++i)
+        titles << workspace->tabs()->tabText(i).remove(QLatin1Char('&'));
+    for (const char* expected :
+         {"Running data", "Core parameters", "Speed display", "Test run", "Alarms"})
+        EXPECT_TRUE(
+            std::any_of(titles.begin(), titles.end(),
+                        [&](const QString& t) { return t.contains(QString::fromUtf8(expected)); }))
+            << expected << " not in " << titles.join(QStringLiteral(", ")).toStdString();
+    DeviceParameters* params = window->drives()->parameters(1);
+    ASSERT_TRUE(
+        waitFor([&] { return params->entry(QStringLiteral("spno2.speed"))->device.valid; }));
+    auto* field = workspace->findChild<ParameterField*>(QString(), Qt::FindChildrenRecursively);
+    ASSERT_NE(field, nullptr);
+    const QList<ParameterField*> fields = workspace->findChildren<ParameterField*>();
+    ParameterField* speed = nullptr;
+    for (ParameterField* f : fields)
+        speed = f->parameterName() == QLatin1String("spno2.speed") ? f : speed;
+    ASSERT_NE(speed, nullptr);
+    speed->enter(QStringLiteral("2200"));
+    EXPECT_TRUE(params->hasPending());
+    workspace->writeAll();
+    ASSERT_TRUE(waitFor([&] { return !params->hasPending(); }));
+    EXPECT_EQ(simRegister(1, 0xCA03), 2200);
+}
+
+TEST_F(MainWindowTest, SeveralDrivesOfOneFamilyEnableTheMultiDriveWrite)
+{
+    QAction* multi = nullptr;
+    for (QAction* a : window->findChildren<QAction*>())
+        multi = a->text().contains(QStringLiteral("selected drives")) ? a : multi;
+    ASSERT_NE(multi, nullptr);
+    select({1, 2});
+    ASSERT_TRUE(waitFor([&] { return multi->isEnabled(); }));
+    select({1, 7}); // a DBU and a DC controller have no setting in common
+    ASSERT_TRUE(waitFor([&] { return !multi->isEnabled(); }));
+}
+
+TEST_F(MainWindowTest, StopAllIsOnTheToolbarAndFramesReachTheTrafficLog)
+{
+    ASSERT_NE(window->stopAllButton(), nullptr);
+    EXPECT_TRUE(window->stopAllButton()->isVisibleTo(window.get()));
+    // Once the drives are known, their frames (the status poll) carry parameter names.
+    EXPECT_TRUE(waitFor([&] {
+        for (const TrafficEntry& e : window->trafficLog()->entries()) {
+            if (e.summary.contains(QStringLiteral("core.control_priority")))
+                return true;
+        }
+        return false;
+    }));
+}
+
+TEST_F(MainWindowTest, ADrivesMonitorComesFirstAndTheBusViewsPollOnlyWhileShown)
+{
+    select({2});
+    DriveWorkspace* workspace = window->workspace();
+    ASSERT_TRUE(waitFor([&] { return workspace->drive() != nullptr; }));
+    auto* monitor = qobject_cast<MonitorPage*>(workspace->tabs()->currentWidget());
+    ASSERT_NE(monitor, nullptr);
+    EXPECT_EQ(workspace->tabs()->indexOf(monitor), 0);
+    // Only the drive shown is polled (the page of the one selected before has gone).
+    EXPECT_TRUE(waitFor([&] { return window->monitorHub()->watched() == QVector<int>{2}; }))
+        << window->monitorHub()->watched().size();
+    ASSERT_TRUE(waitFor([&] { return monitor->samplesShown() > 0; }));
+    // The overview and the trends watch every drive while shown, and none once closed.
+    window->monitorAll();
+    EXPECT_EQ(window->monitorHub()->watched(), (QVector<int>{1, 2, 7, 150}));
+    ASSERT_TRUE(waitFor([&] { return window->monitorHub()->latest(150).has_value(); }));
+    EXPECT_EQ(window->busOverview()->model()->rowCount(), 4);
+    for (QDockWidget* dock : window->findChildren<QDockWidget*>())
+        dock->hide();
+    EXPECT_EQ(window->monitorHub()->watched(), QVector<int>{2});
+    // Another page of the drive in front: its monitor stops polling.
+    workspace->tabs()->setCurrentIndex(1);
+    EXPECT_TRUE(window->monitorHub()->watched().isEmpty());
+    // Another connection: the views of the old bus go with it, new ones watch the new bus.
+    ConnectionSettings other;
+    other.kind = ConnectionSettings::Kind::Simulated;
+    other.simSpec = QStringLiteral("dcpid@9");
+    window->connectTo(other, {{9, QStringLiteral("dcpid")}});
+    ASSERT_TRUE(waitFor([&] { return window->drives()->slaves() == QVector<int>{9}; }));
+    // The drive that answered first is selected and its monitor shown: only it is polled.
+    EXPECT_TRUE(waitFor([&] { return window->monitorHub()->watched() == QVector<int>{9}; }));
+    window->monitorAll();
+    EXPECT_EQ(window->monitorHub()->watched(), QVector<int>{9});
+    EXPECT_TRUE(waitFor([&] { return window->monitorHub()->latest(9).has_value(); }));
+}

@@ -1,0 +1,61 @@
+// What a trend chart draws: thinning out long series and round axis ranges.
+#include "trends/TrendPoints.h"
+
+#include <gtest/gtest.h>
+
+using namespace opentop;
+
+TEST(TrendPointsTest, ShortWindowsKeepEveryPointPlusOneEitherSide)
+{
+    TrendHistory::Series s;
+    for (int i = 0; i < 100; ++i)
+        s.points << TrendHistory::Point{1000 + i * 100, double(i)};
+    const QList<QPointF> p = TrendPoints::visible(s, 3000, 5000, 200);
+    ASSERT_EQ(p.size(), 21 + 2);
+    EXPECT_EQ(p.first().x(), 2900.0);
+    EXPECT_EQ(p.last().x(), 5100.0);
+    EXPECT_TRUE(TrendPoints::visible(TrendHistory::Series(), 0, 10, 10).isEmpty());
+}
+
+TEST(TrendPointsTest, LongWindowsKeepEachBucketsExtremesInTimeOrder)
+{
+    // An hour at 10 Hz with one spike: at most two points per bucket, the spike among them.
+    TrendHistory::Series s;
+    for (int i = 0; i < 36000; ++i)
+        s.points << TrendHistory::Point{qint64(i) * 100, i == 12345 ? 5000.0 : double(i % 50)};
+    const QList<QPointF> p = TrendPoints::visible(s, 0, 3600000, 800);
+    EXPECT_LE(p.size(), 2 * 800 + 2);
+    EXPECT_GT(p.size(), 800);
+    bool spike = false;
+    for (int i = 0; i < p.size(); ++i) {
+        spike = spike || p[i].y() == 5000.0;
+        if (i > 0) {
+            EXPECT_LT(p[i - 1].x(), p[i].x());
+        }
+    }
+    EXPECT_TRUE(spike);
+}
+
+TEST(TrendPointsTest, RangesGetAirAndRoundTicks)
+{
+    double lo = 0;
+    double hi = 2100;
+    TrendPoints::pad(&lo, &hi);
+    EXPECT_EQ(lo, 0.0); // a ramp from standstill does not reach below zero
+    EXPECT_DOUBLE_EQ(hi, 2205.0);
+    EXPECT_EQ(TrendPoints::niceTicks(&lo, &hi, 6), 6);
+    EXPECT_EQ(lo, 0.0);
+    EXPECT_EQ(hi, 2500.0);
+
+    lo = -1500;
+    hi = -1500;
+    TrendPoints::pad(&lo, &hi);
+    EXPECT_LT(lo, -1500.0);
+    EXPECT_GT(hi, -1500.0);
+    lo = 1;
+    hi = 0; // no values
+    TrendPoints::pad(&lo, &hi);
+    EXPECT_EQ(lo, 0.0);
+    EXPECT_EQ(hi, 1.0);
+    EXPECT_GE(TrendPoints::niceTicks(&lo, &hi, 6), 5);
+}

@@ -1,0 +1,136 @@
+#include "alarms/AlarmExport.h"
+
+#include "alarms/AlarmsPage.h"
+#include "bus/BusDrives.h"
+#include "session/DeviceSession.h"
+
+#include <QPointer>
+#include <QSaveFile>
+
+namespace opentop {
+
+namespace {
+
+QString field(const QString& text)
+{
+    static const QString special = QStringLiteral(",\"\r\n");
+    bool quote = false;
+    for (const QChar c : text)
+        quote = quote || special.contains(c);
+    if (!quote)
+        return text;
+    QString escaped = text;
+    escaped.replace(QLatin1Char('"'), QStringLiteral("\"\""));
+    return QLatin1Char('"') + escaped + QLatin1Char('"');
+}
+
+QString row(const QStringList& fields)
+{
+    QStringList quoted;
+    for (const QString& f : fields)
+        quoted << field(f);
+    return quoted.join(QLatin1Char(',')) + QStringLiteral("\r\n");
+}
+
+} // namespace
+
+AlarmExport::AlarmExport(BusDrives* drives, QObject* parent)
+    : QObject(parent)
+    , m_drives(drives)
+{
+}
+
+QString AlarmExport::csv(const QVector<DriveReport>& reports)
+{
+    QString text = row({tr("Machine"), tr("Model"), tr("Kind"), tr("Record"), tr("Code"),
+                        tr("Panel code"), tr("Name"), tr("Cleared by"), tr("Cause"), tr("Remedy")});
+    for (const DriveReport& d : reports) {
+        for (const AlarmHistory::History& h : d.report.histories) {
+            const QString kind = h.table == QLatin1String("alarm")     ? tr("alarm")
+                                 : h.table == QLatin1String("warning") ? tr("warning")
+                                                                       : h.table;
+            for (const AlarmHistory::Record& r : h.records) {
+                if (r.empty)
+                    continue;
+                const std::optional<CodeEntry>& e = r.entry;
+                text += row({QString::number(d.slave), d.model, kind, QString::number(r.index),
+                             AlarmsPage::codeText(r.code), e ? e->panel : QString(),
+                             e ? e->name : tr("unknown code"),
+                             e ? AlarmsPage::clearedByText(e->reset) : QString(),
+                             e ? e->cause : QString(), e ? e->remedy : QString()});
+            }
+        }
+    }
+    return text;
+}
+
+bool AlarmExport::exportTo(const QString& path)
+{
+    if (m_busy)
+        return false;
+    m_busy = true;
+    m_path = path;
+    m_queue = m_drives->slaves();
+    m_reports.clear();
+    m_errors.clear();
+    readNext();
+    return true;
+}
+
+void AlarmExport::readNext()
+{
+    while (!m_queue.isEmpty()) {
+        const int slave = m_queue.takeFirst();
+        DeviceSession* session = m_drives->session(slave);
+        if (!session)
+            continue;
+        // Parented to the session, so that it goes with a drive removed meanwhile.
+        auto* history = new AlarmHistory(session, session);
+        if (!history->supported()) {
+            delete history;
+            continue;
+        }
+        DriveReport d;
+        d.slave = slave;
+        d.model = m_drives->info(slave).model;
+        QPointer<AlarmExport> self(this);
+        history->read([self, history, d](const AlarmHistory::Report& report) mutable {
+            history->deleteLater();
+            if (!self)
+                return;
+            d.report = report;
+            if (!report.ok)
+                self->m_errors << tr("machine %1: %2")
+                                      .arg(d.slave)
+                                      .arg(report.errors.join(QStringLiteral("; ")));
+            self->m_reports << d;
+            self->readNext();
+        });
+        return;
+    }
+    writeFile();
+}
+
+void AlarmExport::writeFile()
+{
+    m_busy = false;
+    int records = 0;
+    for (const DriveReport& d : m_reports)
+        for (const AlarmHistory::History& h : d.report.histories)
+            records += h.used();
+    QSaveFile file(m_path);
+    const QByteArray bytes = csv(m_reports).toUtf8();
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
+        emit finished(false, tr("Could not write %1: %2").arg(m_path, file.errorString()));
+        return;
+    }
+    QString message = tr("%n record(s) of %1 drive(s) written to %2.", nullptr, records)
+                          .arg(m_reports.size())
+                          .arg(m_path);
+    if (!m_errors.isEmpty())
+        message += QLatin1Char(' ') +
+                   tr("Not everything could be read: %1").arg(m_errors.join(QStringLiteral("; ")));
+    emit finished(m_errors.isEmpty(), message);
+}
+
+} // namespace opentop

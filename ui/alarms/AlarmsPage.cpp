@@ -1,0 +1,393 @@
+#include "alarms/AlarmsPage.h"
+
+#include "session/DeviceSession.h"
+
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace opentop {
+
+namespace {
+
+enum Column
+{
+    ColIndex,
+    ColCode,
+    ColPanel,
+    ColName,
+    ColClearedBy,
+    ColumnCount
+};
+
+// Where each table's history is in a report: "alarm" and "warning".
+const AlarmHistory::History* historyOf(const AlarmHistory::Report& report, int which)
+{
+    const QString table = which == 0 ? QStringLiteral("alarm") : QStringLiteral("warning");
+    for (const AlarmHistory::History& h : report.histories)
+        if (h.table == table)
+            return &h;
+    return nullptr;
+}
+
+QString modelOf(DeviceSession* session)
+{
+    const ProfileVariant* variant = session->profile().variant(session->variant());
+    return variant ? variant->model : session->profile().name;
+}
+
+} // namespace
+
+AlarmsPage::AlarmsPage(DeviceSession* session, QWidget* parent)
+    : QWidget(parent)
+    , m_session(session)
+    // Parented to the session: a command under way outlives a page closed meanwhile.
+    , m_history(new AlarmHistory(session, session))
+    , m_title(new QLabel)
+    , m_status(new QLabel)
+    , m_detail(new QLabel)
+    , m_commError(new QLabel)
+    , m_reread(new QPushButton(tr("&Re-read")))
+    , m_reset(new QPushButton(tr("Reset &alarm…")))
+    , m_clear(new QPushButton(tr("&Clear records…")))
+{
+    m_title->setText(
+        tr("Alarms and warnings of machine %1 (%2)").arg(session->slave()).arg(modelOf(session)));
+    QFont bold = m_title->font();
+    bold.setBold(true);
+    m_title->setFont(bold);
+    m_status->setWordWrap(true);
+    m_detail->setWordWrap(true);
+    m_detail->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_detail->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    m_commError->setWordWrap(true);
+    m_commError->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(m_title);
+    layout->addWidget(m_status);
+    auto* tables = new QHBoxLayout;
+    for (int which = 0; which < 2; ++which) {
+        auto* box = new QVBoxLayout;
+        m_tableLabels[which] = new QLabel;
+        auto* table = new QTableWidget(0, ColumnCount);
+        table->setHorizontalHeaderLabels(
+            {tr("#"), tr("Code"), tr("Panel"), tr("Name"), tr("Cleared by")});
+        table->setSelectionBehavior(QAbstractItemView::SelectRows);
+        table->setSelectionMode(QAbstractItemView::SingleSelection);
+        table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+        table->verticalHeader()->hide();
+        table->horizontalHeader()->setSectionResizeMode(ColName, QHeaderView::Stretch);
+        m_tables[which] = table;
+        connect(table, &QTableWidget::itemSelectionChanged, this,
+                [this, which] { showDetail(which); });
+        box->addWidget(m_tableLabels[which]);
+        box->addWidget(table);
+        tables->addLayout(box);
+    }
+    layout->addLayout(tables, 1);
+    for (auto [title, label] : {std::pair(tr("Cause and remedy"), m_detail),
+                                std::pair(tr("Communication error register"), m_commError)}) {
+        auto* box = new QGroupBox(title);
+        (new QVBoxLayout(box))->addWidget(label);
+        layout->addWidget(box);
+    }
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(m_reread);
+    buttons->addStretch();
+    buttons->addWidget(m_reset);
+    buttons->addWidget(m_clear);
+    layout->addLayout(buttons);
+
+    m_reset->setToolTip(tr("Send the alarm reset command; tells whether the alarm is cleared or "
+                           "only a power cycle clears it"));
+    m_clear->setToolTip(tr("Erase the alarm and warning records kept by the drive"));
+    connect(m_reread, &QPushButton::clicked, this, &AlarmsPage::refresh);
+    connect(m_reset, &QPushButton::clicked, this, &AlarmsPage::resetAlarm);
+    connect(m_clear, &QPushButton::clicked, this, &AlarmsPage::clearRecords);
+
+    m_detail->setText(tr("Select a record to see its cause and remedy."));
+    m_commError->setText(tr("Not read yet."));
+    if (!m_history->supported())
+        m_status->setText(tr("This drive keeps no alarm or warning records."));
+    setBusy(false);
+}
+
+AlarmsPage::~AlarmsPage()
+{
+    // A command under way deletes the history when it ends (see guarded()).
+    if (!m_busy)
+        delete m_history.data();
+}
+
+QString AlarmsPage::codeText(qint64 code)
+{
+    return QString::number(code, 16).toUpper().rightJustified(2, QLatin1Char('0')) +
+           QLatin1Char('h');
+}
+
+QString AlarmsPage::clearedByText(const QString& reset)
+{
+    return CodeEntry::clearedByText(reset);
+}
+
+template <typename T>
+std::function<void(const T&)> AlarmsPage::guarded(void (AlarmsPage::*handler)(const T&))
+{
+    QPointer<AlarmsPage> self(this);
+    QPointer<AlarmHistory> history = m_history;
+    return [self, history, handler](const T& result) {
+        if (!self) {
+            if (history)
+                history->deleteLater();
+            return;
+        }
+        (self.data()->*handler)(result);
+    };
+}
+
+void AlarmsPage::setBusy(bool busy, const QString& status)
+{
+    m_busy = busy;
+    const bool usable = m_history && m_history->supported() && !busy;
+    m_reread->setEnabled(usable);
+    m_reset->setEnabled(usable && m_history->canReset());
+    m_clear->setEnabled(usable && m_history->canClear());
+    if (!status.isEmpty())
+        m_status->setText(status);
+}
+
+void AlarmsPage::refresh()
+{
+    if (m_busy || !m_history || !m_history->supported())
+        return;
+    setBusy(true, tr("Reading the records…"));
+    m_history->read(guarded<AlarmHistory::Report>(&AlarmsPage::readDone));
+}
+
+void AlarmsPage::readDone(const AlarmHistory::Report& report)
+{
+    showReport(report);
+    QStringList lines;
+    if (!m_commandResult.isEmpty())
+        lines << m_commandResult;
+    m_commandResult.clear();
+    if (report.alarmActive) {
+        const AlarmHistory::History* alarms = historyOf(report, 0);
+        const AlarmHistory::Record* newest =
+            alarms && !alarms->records.isEmpty() ? &alarms->records.first() : nullptr;
+        if (!*report.alarmActive)
+            lines << tr("No alarm is active.");
+        else if (newest && newest->entry)
+            lines << tr("Alarm active: %1 %2.").arg(newest->entry->panel, newest->entry->name);
+        else
+            lines << tr("An alarm is active.");
+    }
+    if (report.powerRestartOnly)
+        lines << tr("This drive is set to clear alarms by a power restart only (%1): Alarm-Reset "
+                    "clears none of them.")
+                     .arg(report.eraseMethod);
+    for (const QString& e : report.errors)
+        lines << tr("Could not be read: %1").arg(e);
+    finish(lines.join(QLatin1Char('\n')));
+}
+
+void AlarmsPage::finish(const QString& status)
+{
+    setBusy(false);
+    m_status->setText(status);
+    emit operationFinished();
+}
+
+void AlarmsPage::showReport(const AlarmHistory::Report& report)
+{
+    m_report = report;
+    for (int which = 0; which < 2; ++which)
+        fillTable(which, historyOf(report, which));
+    m_detail->setText(tr("Select a record to see its cause and remedy."));
+
+    const QString parameter = report.commErrorParameter;
+    if (parameter.isEmpty())
+        m_commError->setText(tr("This drive has no communication error register."));
+    else if (!report.commErrorCode)
+        m_commError->setText(tr("%1: could not be read.").arg(parameter));
+    else if (*report.commErrorCode == 0)
+        m_commError->setText(tr("%1: no error (0).").arg(parameter));
+    else if (!report.commError)
+        m_commError->setText(
+            tr("%1: %2, not a known code.").arg(parameter, codeText(*report.commErrorCode)));
+    else
+        m_commError->setText(tr("%1: %2 %3\nCause: %4\nRemedy: %5")
+                                 .arg(parameter, report.commError->panel, report.commError->name,
+                                      report.commError->cause, report.commError->remedy));
+}
+
+void AlarmsPage::fillTable(int which, const AlarmHistory::History* history)
+{
+    QTableWidget* table = m_tables[which];
+    QLabel* label = m_tableLabels[which];
+    table->clearContents();
+    table->setRowCount(0);
+    if (!history) {
+        label->setText(which == 0 ? tr("No alarm records") : tr("No warning records"));
+        table->setEnabled(false);
+        return;
+    }
+    table->setEnabled(true);
+    if (!history->ok) {
+        label->setText(tr("%1: could not be read: %2").arg(history->label, history->error));
+        return;
+    }
+    label->setText(tr("%1: %2 of %3 records, newest first")
+                       .arg(history->label)
+                       .arg(history->used())
+                       .arg(history->records.size()));
+    for (const AlarmHistory::Record& r : history->records) {
+        if (r.empty)
+            continue;
+        const int row = table->rowCount();
+        table->insertRow(row);
+        const QStringList cells{QString::number(r.index), codeText(r.code),
+                                r.entry ? r.entry->panel : QString(),
+                                r.entry ? r.entry->name : tr("unknown code"),
+                                r.entry ? clearedByText(r.entry->reset) : QString()};
+        for (int c = 0; c < ColumnCount; ++c) {
+            auto* item = new QTableWidgetItem(cells[c]);
+            item->setData(Qt::UserRole, r.index);
+            if (c == ColIndex)
+                item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            table->setItem(row, c, item);
+        }
+    }
+    table->resizeColumnsToContents();
+    table->horizontalHeader()->setSectionResizeMode(ColName, QHeaderView::Stretch);
+}
+
+void AlarmsPage::showDetail(int which)
+{
+    const QList<QTableWidgetItem*> selected = m_tables[which]->selectedItems();
+    if (selected.isEmpty())
+        return;
+    m_tables[1 - which]->clearSelection();
+    const int index = selected.first()->data(Qt::UserRole).toInt();
+    const AlarmHistory::History* history = historyOf(m_report, which);
+    if (!history)
+        return;
+    for (const AlarmHistory::Record& r : history->records) {
+        if (r.index != index)
+            continue;
+        if (!r.entry) {
+            m_detail->setText(tr("Record %1: code %2 is not in the %3 table.")
+                                  .arg(r.index)
+                                  .arg(codeText(r.code), history->label));
+            return;
+        }
+        QStringList lines{tr("%1 %2 (record %3)").arg(r.entry->panel, r.entry->name).arg(r.index)};
+        if (!r.entry->cause.isEmpty())
+            lines << tr("Cause: %1").arg(r.entry->cause);
+        if (!r.entry->remedy.isEmpty())
+            lines << tr("Remedy: %1").arg(r.entry->remedy);
+        if (!r.entry->resetText.isEmpty())
+            lines << tr("To clear: %1").arg(r.entry->resetText);
+        m_detail->setText(lines.join(QLatin1Char('\n')));
+        return;
+    }
+}
+
+void AlarmsPage::confirm(const QString& title, const QString& text, const QString& details,
+                         const QString& action, void (AlarmsPage::*then)())
+{
+    auto* box = new QMessageBox(QMessageBox::Question, title, text,
+                                QMessageBox::Yes | QMessageBox::Cancel, this);
+    box->setInformativeText(details);
+    box->button(QMessageBox::Yes)->setText(action);
+    box->setDefaultButton(QMessageBox::Cancel);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setWindowModality(Qt::ApplicationModal);
+    connect(box, &QMessageBox::buttonClicked, this, [this, box, then](QAbstractButton* button) {
+        if (button == box->button(QMessageBox::Yes))
+            (this->*then)();
+    });
+    box->show();
+}
+
+void AlarmsPage::resetAlarm()
+{
+    if (m_busy || !m_history || !m_history->canReset())
+        return;
+    QStringList details{tr("Writes: %1").arg(m_history->resetPlan().join(QStringLiteral(", "))),
+                        tr("This clears the active alarm if its cause is gone. Some alarms are "
+                           "cleared only by a power cycle; the result tells.")};
+    if (m_report.powerRestartOnly)
+        details << tr("This drive is set to clear alarms by a power restart only (%1).")
+                       .arg(m_report.eraseMethod);
+    confirm(tr("Reset alarm"),
+            tr("Send the alarm reset command to machine %1?").arg(m_session->slave()),
+            details.join(QStringLiteral("\n\n")), tr("Reset alarm"), &AlarmsPage::startReset);
+}
+
+void AlarmsPage::startReset()
+{
+    if (m_busy || !m_history)
+        return;
+    setBusy(true, tr("Sending the alarm reset…"));
+    m_history->reset(guarded<AlarmHistory::ResetOutcome>(&AlarmsPage::resetDone));
+}
+
+void AlarmsPage::resetDone(const AlarmHistory::ResetOutcome& outcome)
+{
+    m_commandResult = tr("Alarm reset: %1").arg(outcome.explanation);
+    if (outcome.powerCycleNeeded)
+        m_commandResult +=
+            QLatin1Char('\n') + tr("Turn the drive's power off, wait 5 s and turn it on again.");
+    m_busy = false;
+    refresh(); // the histories and the active alarm as they are now
+}
+
+void AlarmsPage::clearRecords()
+{
+    if (m_busy || !m_history || !m_history->canClear())
+        return;
+    QStringList erased;
+    for (const AlarmHistory::History& h : m_report.histories)
+        erased << (h.ok ? tr("%1 (%2 records)").arg(h.label).arg(h.used()) : h.label);
+    if (erased.isEmpty())
+        erased << tr("the alarm and warning records");
+    confirm(tr("Clear records"),
+            tr("Erase %1 of machine %2?").arg(erased.join(tr(" and "))).arg(m_session->slave()),
+            tr("The records cannot be restored. Writes: %1")
+                .arg(m_history->clearPlan().join(QStringLiteral(", "))),
+            tr("Erase"), &AlarmsPage::startClear);
+}
+
+void AlarmsPage::startClear()
+{
+    if (m_busy || !m_history)
+        return;
+    setBusy(true, tr("Erasing the records…"));
+    m_history->clearRecords(guarded<AlarmHistory::ClearOutcome>(&AlarmsPage::clearDone));
+}
+
+void AlarmsPage::clearDone(const AlarmHistory::ClearOutcome& outcome)
+{
+    QStringList lines;
+    if (!outcome.cleared.isEmpty())
+        lines << tr("Erased: %1 (%2 records); %3")
+                     .arg(outcome.cleared.join(QStringLiteral(", ")))
+                     .arg(outcome.erasedRecords)
+                     .arg(outcome.verified ? tr("read back empty.")
+                                           : tr("NOT empty when read back."));
+    for (const QString& e : outcome.errors)
+        lines << tr("Erasing failed: %1").arg(e);
+    m_commandResult = lines.join(QLatin1Char('\n'));
+    m_busy = false;
+    refresh();
+}
+
+} // namespace opentop

@@ -1,0 +1,279 @@
+#include "bus/BusListModel.h"
+
+#include "profile/ProfileRegistry.h"
+#include "widgets/StatusLight.h"
+
+#include <QBrush>
+#include <QColor>
+#include <QGuiApplication>
+#include <algorithm>
+
+namespace opentop {
+
+namespace {
+
+const QColor kProblem(0xb0, 0x1c, 0x1c);
+const QColor kGood(0x1b, 0x7f, 0x2a);
+
+} // namespace
+
+BusListModel::BusListModel(QObject* parent)
+    : QAbstractTableModel(parent)
+{
+}
+
+void BusListModel::setPoller(DriveStatusPoller* poller)
+{
+    if (m_poller)
+        disconnect(m_poller, nullptr, this, nullptr);
+    m_poller = poller;
+    if (poller)
+        connect(poller, &DriveStatusPoller::statusChanged, this, &BusListModel::statusChanged);
+    if (!m_devices.isEmpty())
+        emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1));
+}
+
+int BusListModel::rowCount(const QModelIndex& parent) const
+{
+    return parent.isValid() ? 0 : int(m_devices.size());
+}
+
+int BusListModel::columnCount(const QModelIndex& parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant BusListModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal)
+        return {};
+    if (role == Qt::ToolTipRole && section == Switches)
+        return tr("The machine number in hexadecimal, as the drive's rotary switches SW1 (high "
+                  "digit) and SW2 (low digit) are set");
+    if (role == Qt::ToolTipRole && section == Light)
+        return tr("The drive's MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, "
+                  "purple external interrupt, blue memory or communication error, grey no "
+                  "answer");
+    if (role != Qt::DisplayRole)
+        return {};
+    switch (section) {
+    case Light:
+        return tr("LED");
+    case MachineNumber:
+        return tr("Machine no.");
+    case Switches:
+        return tr("Hex / switches");
+    case Family:
+        return tr("Family");
+    case Model:
+        return tr("Model");
+    case Firmware:
+        return tr("Firmware");
+    case State:
+        return tr("State");
+    case Priority:
+        return tr("Control priority");
+    }
+    return {};
+}
+
+DriveStatus BusListModel::status(int slave) const
+{
+    return m_poller ? m_poller->status(slave) : DriveStatus();
+}
+
+QString BusListModel::duplicateHint(int slave)
+{
+    return tr("Two drives may share machine number %1 (%2, %3): check the SW1/SW2 switches of "
+              "every drive on the line, give each drive its own number and restart its power; "
+              "a bad termination or a swapped A/B pair also corrupts replies.")
+        .arg(slave)
+        .arg(DeviceInfo::hexText(slave), DeviceInfo::switchText(slave));
+}
+
+QVariant BusListModel::display(const DeviceInfo& d, int column) const
+{
+    const DriveStatus s = status(d.slave);
+    switch (column) {
+    case Light:
+        return QVariant();
+    case MachineNumber:
+        return d.slave;
+    case Switches:
+        return DeviceInfo::hexText(d.slave) + QStringLiteral("  ") +
+               DeviceInfo::switchText(d.slave);
+    case Family:
+        return d.family.isEmpty() ? tr("—") : d.family.toUpper();
+    case Model:
+        if (d.variantUnknown())
+            return tr("%1 — variant unknown").arg(d.family.toUpper());
+        return d.model.isEmpty() ? tr("—") : d.model;
+    case Firmware:
+        return d.firmware.isEmpty() ? tr("—") : tr("V%1").arg(d.firmware);
+    case State:
+        if (d.state == DeviceInfo::State::Present && s.polled)
+            return s.communicationText();
+        return DeviceInfo::stateText(d.state);
+    case Priority:
+        return s.priorityText.isEmpty() ? tr("—") : s.priorityText;
+    }
+    return {};
+}
+
+QString BusListModel::toolTip(const DeviceInfo& d, int column) const
+{
+    const DriveStatus s = status(d.slave);
+    if (d.state == DeviceInfo::State::Garbled) {
+        QString tip = DeviceInfo::stateText(d.state);
+        if (!d.detail.isEmpty())
+            tip += QStringLiteral("\n") + d.detail;
+        return tip + QStringLiteral("\n") + duplicateHint(d.slave);
+    }
+    switch (column) {
+    case Light:
+        return tr("Status light %1: %2").arg(DriveStatus::ledName(s.led), s.ledText());
+    case Model:
+        if (d.variantUnknown())
+            return tr("The drive does not report its variant. Choose it from the context menu "
+                      "(Variant) so that values are checked against the right limits.");
+        break;
+    case State:
+        if (!s.error.isEmpty())
+            return s.error;
+        break;
+    case Priority:
+        if (s.motionPriority && !*s.motionPriority)
+            return tr("The drive takes run commands from its I/O terminals; test runs over the "
+                      "bus need communication priority.");
+        break;
+    default:
+        break;
+    }
+    return d.detail;
+}
+
+QIcon BusListModel::ledIcon(DriveStatus::Led led) const
+{
+    auto it = m_icons.find(int(led));
+    if (it == m_icons.end()) {
+        // Painted at the screen's scale so that it stays round and sharp on HiDPI screens.
+        const qreal dpr = qApp ? qApp->devicePixelRatio() : 1.0;
+        QIcon icon;
+        icon.addPixmap(StatusLight::pixmap(led, 14, dpr));
+        if (dpr < 2.0)
+            icon.addPixmap(StatusLight::pixmap(led, 14, 2.0));
+        it = m_icons.insert(int(led), icon);
+    }
+    return *it;
+}
+
+QVariant BusListModel::data(const QModelIndex& index, int role) const
+{
+    if (!index.isValid() || index.row() >= m_devices.size())
+        return {};
+    const DeviceInfo& d = m_devices[index.row()];
+    const bool garbled = d.state == DeviceInfo::State::Garbled;
+    switch (role) {
+    case Qt::DisplayRole:
+        return display(d, index.column());
+    case Qt::ToolTipRole:
+        return toolTip(d, index.column());
+    case Qt::AccessibleTextRole:
+        if (index.column() == Light)
+            return toolTip(d, Light);
+        return display(d, index.column());
+    case Qt::DecorationRole:
+        if (index.column() == Light)
+            return ledIcon(status(d.slave).led);
+        return {};
+    case Qt::ForegroundRole:
+        if (garbled)
+            return QBrush(kProblem);
+        if (index.column() == State) {
+            if (d.state == DeviceInfo::State::Present)
+                return QBrush(status(d.slave).consecutiveFailures > 0 ? kProblem : kGood);
+            if (d.state == DeviceInfo::State::Absent)
+                return QBrush(kProblem);
+        }
+        return {};
+    case Qt::BackgroundRole:
+        if (garbled)
+            return QBrush(QColor(0xfd, 0xec, 0xea));
+        return {};
+    case Qt::TextAlignmentRole:
+        if (index.column() == MachineNumber)
+            return int(Qt::AlignRight | Qt::AlignVCenter);
+        return {};
+    case SlaveRole:
+        return d.slave;
+    case LedRole:
+        return int(status(d.slave).led);
+    case ProblemRole:
+        return garbled;
+    default:
+        return {};
+    }
+}
+
+void BusListModel::upsert(const DeviceInfo& info)
+{
+    const int existing = rowOf(info.slave);
+    if (existing >= 0) {
+        m_devices[existing] = info;
+        emit dataChanged(index(existing, 0), index(existing, ColumnCount - 1));
+        return;
+    }
+    const auto pos =
+        std::lower_bound(m_devices.begin(), m_devices.end(), info.slave,
+                         [](const DeviceInfo& d, int slave) { return d.slave < slave; });
+    const int row = int(pos - m_devices.begin());
+    beginInsertRows({}, row, row);
+    m_devices.insert(row, info);
+    endInsertRows();
+}
+
+void BusListModel::remove(int slave)
+{
+    const int row = rowOf(slave);
+    if (row < 0)
+        return;
+    beginRemoveRows({}, row, row);
+    m_devices.remove(row);
+    endRemoveRows();
+}
+
+void BusListModel::clear()
+{
+    beginResetModel();
+    m_devices.clear();
+    endResetModel();
+}
+
+const DeviceInfo* BusListModel::device(int row) const
+{
+    return row >= 0 && row < m_devices.size() ? &m_devices[row] : nullptr;
+}
+
+int BusListModel::slaveAt(int row) const
+{
+    const DeviceInfo* d = device(row);
+    return d ? d->slave : 0;
+}
+
+int BusListModel::rowOf(int slave) const
+{
+    for (int i = 0; i < m_devices.size(); ++i) {
+        if (m_devices[i].slave == slave)
+            return i;
+    }
+    return -1;
+}
+
+void BusListModel::statusChanged(int slave)
+{
+    const int row = rowOf(slave);
+    if (row >= 0)
+        emit dataChanged(index(row, 0), index(row, ColumnCount - 1));
+}
+
+} // namespace opentop

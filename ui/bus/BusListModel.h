@@ -1,0 +1,73 @@
+#pragma once
+
+#include "bus/DriveStatusPoller.h"
+#include "session/DeviceInfo.h"
+
+#include <QAbstractTableModel>
+#include <QHash>
+#include <QIcon>
+#include <QVector>
+
+namespace opentop {
+
+class DriveStatusPoller;
+
+// The drives on the bus, one row per machine number, as identification finds them, with the
+// status the poller reports: light, communication state and control priority.
+class BusListModel : public QAbstractTableModel
+{
+    Q_OBJECT
+public:
+    enum Column
+    {
+        Light,
+        MachineNumber,
+        Switches, // hex and SW1/SW2 positions
+        Family,
+        Model,
+        Firmware,
+        State, // identification, then communication state once polled
+        Priority,
+        ColumnCount
+    };
+    enum Role
+    {
+        SlaveRole = Qt::UserRole + 1, // int, every column
+        LedRole,                      // int(DriveStatus::Led), every column
+        ProblemRole,                  // bool: garbled replies, likely duplicate machine number
+    };
+
+    explicit BusListModel(QObject* parent = nullptr);
+
+    // Status lights, communication state and priority come from `poller` (may be null).
+    void setPoller(DriveStatusPoller* poller);
+
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation,
+                        int role = Qt::DisplayRole) const override;
+
+    // Adds or updates the row of info.slave, keeping rows sorted by machine number.
+    void upsert(const DeviceInfo& info);
+    void remove(int slave);
+    void clear();
+    const DeviceInfo* device(int row) const;
+    int rowOf(int slave) const;
+    int slaveAt(int row) const;
+    DriveStatus status(int slave) const;
+    // The hint shown for a garbled address: what to check.
+    static QString duplicateHint(int slave);
+
+private:
+    void statusChanged(int slave);
+    QVariant display(const DeviceInfo& d, int column) const;
+    QString toolTip(const DeviceInfo& d, int column) const;
+    QIcon ledIcon(DriveStatus::Led led) const;
+
+    QVector<DeviceInfo> m_devices;
+    DriveStatusPoller* m_poller = nullptr;
+    mutable QHash<int, QIcon> m_icons;
+};
+
+} // namespace opentop

@@ -1,0 +1,363 @@
+#include "bus/BusPanel.h"
+
+#include "ModbusClient.h"
+#include "bus/BusDrives.h"
+#include "bus/BusListModel.h"
+#include "bus/BusScanner.h"
+#include "bus/DriveStatusPoller.h"
+#include "profile/ProfileRegistry.h"
+#include "session/DeviceIdentifier.h"
+
+#include <QActionGroup>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMenu>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTableView>
+#include <QVBoxLayout>
+#include <algorithm>
+
+namespace opentop {
+
+BusPanel::BusPanel(BusDrives* drives, DriveStatusPoller* poller, QWidget* parent)
+    : QWidget(parent)
+    , m_drives(drives)
+    , m_poller(poller)
+    , m_model(new BusListModel(this))
+    , m_identifier(new DeviceIdentifier(drives->client(), ProfileRegistry::builtIn(), this))
+    , m_scan(new QPushButton(tr("&Scan"), this))
+    , m_from(new QSpinBox(this))
+    , m_to(new QSpinBox(this))
+    , m_add(new QPushButton(tr("A&dd drive…"), this))
+    , m_progress(new QProgressBar(this))
+    , m_cancel(new QPushButton(tr("Ca&ncel"), this))
+    , m_message(new QLabel(this))
+    , m_view(new QTableView(this))
+{
+    m_model->setPoller(poller);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+
+    auto* row = new QHBoxLayout;
+    m_scan->setToolTip(tr("Ask every machine number of the range who answers"));
+    row->addWidget(m_scan);
+    auto* fromLabel = new QLabel(tr("&from"), this);
+    fromLabel->setBuddy(m_from);
+    auto* toLabel = new QLabel(tr("&to"), this);
+    toLabel->setBuddy(m_to);
+    for (QSpinBox* s : {m_from, m_to}) {
+        s->setRange(1, 247);
+        s->setAccelerated(true);
+        s->setToolTip(tr("Machine numbers 1–247 (the DBU's SW1/SW2 switches in hex)"));
+    }
+    m_from->setValue(1);
+    m_to->setValue(247);
+    connect(m_from, qOverload<int>(&QSpinBox::valueChanged), this, [this](int v) {
+        if (m_to->value() < v)
+            m_to->setValue(v);
+    });
+    connect(m_to, qOverload<int>(&QSpinBox::valueChanged), this, [this](int v) {
+        if (m_from->value() > v)
+            m_from->setValue(v);
+    });
+    row->addWidget(fromLabel);
+    row->addWidget(m_from);
+    row->addWidget(toLabel);
+    row->addWidget(m_to);
+    row->addStretch(1);
+    m_add->setToolTip(tr("Identify one machine number and add it to the list"));
+    row->addWidget(m_add);
+    layout->addLayout(row);
+
+    auto* progressRow = new QHBoxLayout;
+    m_progress->setFormat(tr("%v of %m"));
+    m_progress->setAccessibleName(tr("Scan progress"));
+    progressRow->addWidget(m_progress, 1);
+    m_cancel->setToolTip(tr("Stop the scan after the request on the wire"));
+    progressRow->addWidget(m_cancel);
+    layout->addLayout(progressRow);
+    m_progress->setVisible(false);
+    m_cancel->setVisible(false);
+    m_message->setWordWrap(true);
+    m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(m_message);
+
+    m_view->setModel(m_model);
+    m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_view->setAlternatingRowColors(true);
+    m_view->setContextMenuPolicy(Qt::CustomContextMenu);
+    m_view->setTabKeyNavigation(false); // Tab leaves the list; arrows move inside it
+    m_view->verticalHeader()->hide();
+    m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_view->horizontalHeader()->setStretchLastSection(true);
+    m_view->setAccessibleName(tr("Drives on the bus"));
+    layout->addWidget(m_view, 1);
+
+    setTabOrder(m_scan, m_from);
+    setTabOrder(m_from, m_to);
+    setTabOrder(m_to, m_add);
+    setTabOrder(m_add, m_cancel);
+    setTabOrder(m_cancel, m_view);
+
+    connect(m_scan, &QPushButton::clicked, this, &BusPanel::scanClicked);
+    connect(m_add, &QPushButton::clicked, this, &BusPanel::addClicked);
+    connect(m_cancel, &QPushButton::clicked, this, &BusPanel::cancelScan);
+    connect(m_view, &QWidget::customContextMenuRequested, this, &BusPanel::showContextMenu);
+    connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            [this] { emit selectionChanged(selectedSlaves()); });
+
+    connect(drives, &BusDrives::driveAdded, this, &BusPanel::syncDrive);
+    connect(drives, &BusDrives::driveChanged, this, &BusPanel::syncDrive);
+    connect(drives, &BusDrives::driveRemoved, m_model, &BusListModel::remove);
+    for (int slave : drives->slaves())
+        syncDrive(slave);
+    updateButtons();
+}
+
+BusPanel::~BusPanel()
+{
+    if (m_scanner)
+        m_scanner->disconnect(this);
+}
+
+void BusPanel::syncDrive(int slave)
+{
+    m_model->upsert(m_drives->info(slave));
+    // The first drive that answers is selected, so its pages open without a click.
+    if (m_view->selectionModel()->selectedRows().isEmpty() &&
+        m_drives->info(slave).state == DeviceInfo::State::Present) {
+        m_view->selectRow(m_model->rowOf(slave));
+        m_view->setCurrentIndex(m_model->index(m_model->rowOf(slave), 0));
+    }
+}
+
+void BusPanel::scanClicked()
+{
+    startScan(m_from->value(), m_to->value());
+}
+
+void BusPanel::startScan(int from, int to)
+{
+    if (isScanning())
+        return;
+    m_from->setValue(from);
+    m_to->setValue(to);
+    delete m_scanner;
+    m_scanner = new BusScanner(m_drives->client(), ProfileRegistry::builtIn(), this);
+    m_scanner->setRange(from, to);
+    connect(m_scanner, &BusScanner::found, this,
+            [this](const DeviceInfo& info) { m_drives->update(info); });
+    connect(m_scanner, &BusScanner::progress, this, [this](int done, int total, int slave) {
+        m_progress->setMaximum(total);
+        m_progress->setValue(done);
+        m_progress->setFormat(tr("%v of %m (machine number %1)").arg(slave));
+    });
+    connect(m_scanner, &BusScanner::finished, this, &BusPanel::onScanFinished);
+    // The scan's short waits assume a quiet line: background polling pauses meanwhile.
+    m_resumePoller = m_poller && m_poller->isActive();
+    if (m_resumePoller)
+        m_poller->stop();
+    m_progress->setRange(0, to - from + 1);
+    m_progress->setValue(0);
+    m_progress->setFormat(tr("%v of %m"));
+    showMessage(tr("Scanning machine numbers %1–%2 on %3, %4 ms each…")
+                    .arg(from)
+                    .arg(to)
+                    .arg(m_drives->client()->describe())
+                    .arg(m_scanner->waitMs()));
+    m_scanner->start();
+    updateButtons();
+}
+
+bool BusPanel::isScanning() const
+{
+    return m_scanner && m_scanner->isRunning();
+}
+
+void BusPanel::cancelScan()
+{
+    if (!isScanning())
+        return;
+    m_cancel->setEnabled(false);
+    showMessage(tr("Cancelling after the request on the wire…"));
+    m_scanner->cancel();
+}
+
+void BusPanel::onScanFinished()
+{
+    const int from = m_scanner->from();
+    const int scanned = m_scanner->scannedCount();
+    const int found = int(m_scanner->devices().size());
+    // Drives listed earlier that no longer answer in the range asked are shown as such.
+    QVector<int> answered;
+    for (const DeviceInfo& d : m_scanner->devices())
+        answered << d.slave;
+    for (int slave : m_drives->slaves()) {
+        if (slave >= from && slave < from + scanned && !answered.contains(slave)) {
+            DeviceInfo gone = m_drives->info(slave);
+            gone.state = DeviceInfo::State::Absent;
+            gone.detail = tr("Did not answer the last scan.");
+            m_drives->update(gone);
+        }
+    }
+    const double seconds = m_scanner->elapsedMs() / 1000.0;
+    if (!m_scanner->error().isEmpty()) {
+        showMessage(tr("The scan stopped at machine number %1: %2")
+                        .arg(from + scanned)
+                        .arg(m_scanner->error()),
+                    true);
+    } else if (m_scanner->wasCancelled()) {
+        showMessage(tr("Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) "
+                       "found.",
+                       nullptr, found)
+                        .arg(from)
+                        .arg(from + scanned - 1)
+                        .arg(scanned)
+                        .arg(m_scanner->total()));
+    } else {
+        showMessage(tr("%n drive(s) found on machine numbers %1–%2 in %3 s.", nullptr, found)
+                        .arg(from)
+                        .arg(m_scanner->to())
+                        .arg(seconds, 0, 'f', 1));
+    }
+    if (m_resumePoller && m_poller)
+        m_poller->start();
+    m_resumePoller = false;
+    updateButtons();
+    emit scanFinished();
+}
+
+void BusPanel::addClicked()
+{
+    bool ok = false;
+    const int slave = QInputDialog::getInt(
+        this, tr("Add drive"), tr("Machine number (1–247; the DBU shows it in hex on SW1/SW2):"),
+        m_from->value(), 1, 247, 1, &ok);
+    if (ok)
+        addDrive(slave);
+}
+
+void BusPanel::addDrive(int slave)
+{
+    ++m_adding;
+    updateButtons();
+    showMessage(tr("Asking machine number %1…").arg(slave));
+    m_identifier->identify(slave, [this, slave](const DeviceInfo& info) {
+        --m_adding;
+        m_drives->update(info);
+        if (info.state == DeviceInfo::State::Present)
+            showMessage(tr("Machine number %1: %2 added.").arg(slave).arg(info.model));
+        else
+            showMessage(tr("Machine number %1: %2 %3")
+                            .arg(slave)
+                            .arg(DeviceInfo::stateText(info.state), info.detail),
+                        info.state != DeviceInfo::State::Unidentified);
+        if (m_poller)
+            m_poller->pollNow();
+        updateButtons();
+        emit driveAddedByNumber(slave);
+    });
+}
+
+QVector<int> BusPanel::selectedSlaves() const
+{
+    QVector<int> slaves;
+    for (const QModelIndex& i : m_view->selectionModel()->selectedRows())
+        slaves << m_model->slaveAt(i.row());
+    std::sort(slaves.begin(), slaves.end());
+    return slaves;
+}
+
+QString BusPanel::message() const
+{
+    return m_message->text();
+}
+
+void BusPanel::showMessage(const QString& text, bool problem)
+{
+    m_message->setText(text);
+    m_message->setStyleSheet(problem ? QStringLiteral("color: #b01c1c;") : QString());
+}
+
+void BusPanel::updateButtons()
+{
+    const bool scanning = isScanning();
+    m_scan->setEnabled(!scanning && m_adding == 0);
+    m_add->setEnabled(!scanning);
+    m_from->setEnabled(!scanning);
+    m_to->setEnabled(!scanning);
+    m_progress->setVisible(scanning || (m_scanner && m_progress->value() > 0));
+    m_cancel->setVisible(scanning);
+    m_cancel->setEnabled(scanning);
+}
+
+QMenu* BusPanel::contextMenuFor(const QVector<int>& slaves, QWidget* parent)
+{
+    auto* menu = new QMenu(parent);
+    if (slaves.isEmpty())
+        return menu;
+    const DeviceInfo first = m_drives->info(slaves.first());
+    const Profile* profile = ProfileRegistry::builtIn().family(first.family);
+    // A variant applies to the selected drives of the same family.
+    QVector<int> sameFamily;
+    for (int s : slaves) {
+        if (m_drives->info(s).family == first.family &&
+            m_drives->info(s).state == DeviceInfo::State::Present)
+            sameFamily << s;
+    }
+    if (profile && profile->variants.size() > 1 && !sameFamily.isEmpty()) {
+        QMenu* variants = menu->addMenu(tr("&Variant"));
+        variants->setToolTipsVisible(true);
+        auto* group = new QActionGroup(variants);
+        for (const ProfileVariant& v : profile->variants) {
+            QAction* a = variants->addAction(v.model);
+            a->setObjectName(v.id);
+            a->setToolTip(v.label);
+            a->setCheckable(true);
+            a->setChecked(first.variant == v.id);
+            group->addAction(a);
+            connect(a, &QAction::triggered, this, [this, sameFamily, id = v.id] {
+                for (int s : sameFamily)
+                    m_drives->setVariant(s, id);
+            });
+        }
+    }
+    QAction* identify = menu->addAction(tr("&Identify again"));
+    connect(identify, &QAction::triggered, this, [this, slaves] {
+        for (int s : slaves)
+            addDrive(s);
+    });
+    identify->setEnabled(!isScanning());
+    QAction* remove = menu->addAction(tr("&Remove from list"));
+    connect(remove, &QAction::triggered, this, [this, slaves] {
+        for (int s : slaves)
+            m_drives->remove(s);
+    });
+    remove->setEnabled(!isScanning());
+    return menu;
+}
+
+void BusPanel::showContextMenu(const QPoint& pos)
+{
+    // The keyboard's menu key asks about the current row, not the row under the mouse.
+    QModelIndex index = m_view->indexAt(pos);
+    if (!index.isValid())
+        index = m_view->currentIndex();
+    if (!index.isValid())
+        return;
+    QVector<int> slaves = selectedSlaves();
+    const int clicked = m_model->slaveAt(index.row());
+    if (!slaves.contains(clicked))
+        slaves = {clicked};
+    QMenu* menu = contextMenuFor(slaves, this);
+    menu->setAttribute(Qt::WA_DeleteOnClose);
+    menu->popup(m_view->viewport()->mapToGlobal(
+        m_view->indexAt(pos).isValid() ? pos : m_view->visualRect(index).center()));
+}
+
+} // namespace opentop

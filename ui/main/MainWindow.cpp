@@ -1,0 +1,393 @@
+#include "main/MainWindow.h"
+
+#include "ModbusClient.h"
+#include "TrafficLog.h"
+#include "alarms/AlarmBanner.h"
+#include "alarms/AlarmExport.h"
+#include "alarms/AlarmsPage.h"
+#include "bus/BusDrives.h"
+#include "bus/BusListModel.h"
+#include "bus/BusOverview.h"
+#include "bus/BusPanel.h"
+#include "bus/DriveStatusPoller.h"
+#include "connection/ConnectionDialog.h"
+#include "files/FileActions.h"
+#include "monitor/MonitorHub.h"
+#include "monitor/MonitorPage.h"
+#include "profile/ProfileRegistry.h"
+#include "run/StopAllButton.h"
+#include "run/TestRunPanel.h"
+#include "session/DeviceIdentifier.h"
+#include "session/DeviceParameters.h"
+#include "traffic/TrafficDescriber.h"
+#include "traffic/TrafficLogView.h"
+#include "trends/TrendPanel.h"
+#include "workspace/DriveWorkspace.h"
+#include "workspace/MultiDriveWriteDialog.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTableView>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+namespace opentop {
+
+MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
+    : QMainWindow(parent)
+    , m_factory(std::move(factory))
+    , m_log(std::make_unique<TrafficLog>())
+    , m_workspace(new DriveWorkspace(this))
+    , m_central(new QWidget(this))
+    , m_splitter(new QSplitter(this))
+    , m_connectionLabel(new QLabel(this))
+{
+    setWindowTitle(tr("OpenTOP"));
+    m_splitter->setObjectName(QStringLiteral("mainSplitter"));
+    m_splitter->addWidget(new QWidget(m_splitter)); // the bus panel, once connected
+    m_splitter->addWidget(m_workspace);
+    m_splitter->setStretchFactor(1, 1);
+    auto* column = new QVBoxLayout(m_central);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->addWidget(m_splitter, 1); // the alarm banner goes above it once connected
+    setCentralWidget(m_central);
+    // Every frame, decoded with parameter names, in a dock that can be shown or hidden.
+    auto* trafficDock = new QDockWidget(tr("Traffic log"), this);
+    trafficDock->setObjectName(QStringLiteral("trafficDock"));
+    trafficDock->setWidget(new TrafficLogView(m_log.get(), trafficDock));
+    addDockWidget(Qt::BottomDockWidgetArea, trafficDock);
+    trafficDock->hide();
+    // Live views of the whole bus; their contents are made per connection.
+    for (const auto& [name, title] : {std::pair(QStringLiteral("overviewDock"), tr("Bus overview")),
+                                      std::pair(QStringLiteral("trendDock"), tr("Trends"))}) {
+        auto* d = new QDockWidget(title, this);
+        d->setObjectName(name);
+        d->setWidget(new QLabel(tr("Not connected"), d));
+        addDockWidget(Qt::BottomDockWidgetArea, d);
+        d->hide();
+    }
+    statusBar()->addPermanentWidget(m_connectionLabel);
+    buildActions();
+    QSettings settings;
+    if (!restoreGeometry(settings.value(QStringLiteral("mainWindow/geometry")).toByteArray()))
+        resize(1280, 800);
+    restoreState(settings.value(QStringLiteral("mainWindow/state")).toByteArray());
+    m_splitterState = settings.value(QStringLiteral("mainWindow/splitter")).toByteArray();
+}
+
+MainWindow::~MainWindow()
+{
+    teardown();
+}
+
+void MainWindow::buildActions()
+{
+    QMenu* file = menuBar()->addMenu(tr("&Bus"));
+    QToolBar* toolbar = addToolBar(tr("Main"));
+    toolbar->setObjectName(QStringLiteral("mainToolbar"));
+    m_toolbar = toolbar;
+    QAction* connectAction = file->addAction(tr("&Connect…"), this, &MainWindow::chooseConnection);
+    connectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
+    connectAction->setToolTip(tr("Choose the serial port, gateway or simulated bus (Ctrl+K)"));
+    toolbar->addAction(connectAction);
+    QAction* scan = file->addAction(tr("&Scan bus"), this, [this] {
+        if (m_panel && !m_panel->isScanning())
+            m_panel->startScan(1, 247);
+    });
+    scan->setShortcut(QKeySequence(Qt::Key_F5));
+    toolbar->addAction(scan);
+    file->addAction(tr("&Export alarm histories…"), this, &MainWindow::exportAlarms);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    // Backup, restore, compare and the file viewer (they take the bus as it is when used).
+    new FileActions(
+        this, menuBar()->addMenu(tr("&Files")), [this] { return m_drives; },
+        [this] { return m_selected; }, [this] { return m_settings; }, this);
+
+    QMenu* drive = menuBar()->addMenu(tr("&Drive"));
+    QAction* writeAll =
+        drive->addAction(tr("&Write all pending"), m_workspace, &DriveWorkspace::writeAll);
+    writeAll->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_W));
+    QAction* reread =
+        drive->addAction(tr("&Re-read all"), m_workspace, &DriveWorkspace::refreshAll);
+    reread->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    m_multiWrite = drive->addAction(tr("Write a setting to the selected drives…"), this,
+                                    &MainWindow::writeToSelected);
+    m_multiWrite->setEnabled(false);
+    toolbar->addAction(writeAll);
+    toolbar->addAction(m_multiWrite);
+    toolbar->addSeparator();
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    // The docks' own actions keep the menu's check marks in step with a dock closed by its
+    // title bar button.
+    const std::tuple<QString, QString, QKeySequence> docks[] = {
+        {QStringLiteral("trafficDock"), tr("&Traffic log"), QKeySequence(Qt::CTRL | Qt::Key_T)},
+        {QStringLiteral("overviewDock"), tr("Bus &overview"),
+         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O)},
+        {QStringLiteral("trendDock"), tr("T&rends"), QKeySequence(Qt::CTRL | Qt::Key_G)}};
+    for (const auto& [name, text, key] : docks) {
+        QAction* a = dock(name)->toggleViewAction();
+        a->setText(text);
+        a->setShortcut(key);
+        view->addAction(a);
+    }
+}
+
+void MainWindow::teardown()
+{
+    // The pages watch drives through the hub and use their sessions: gone before them.
+    while (m_workspace->tabs()->count() > 0)
+        delete m_workspace->tabs()->widget(0);
+    m_workspace->setDrive(nullptr, QString());
+    for (const QString& name : {QStringLiteral("overviewDock"), QStringLiteral("trendDock")}) {
+        QWidget* old = dock(name)->widget();
+        dock(name)->setWidget(new QLabel(tr("Not connected"), dock(name)));
+        delete old;
+    }
+    m_overview = nullptr;
+    m_trends = nullptr;
+    delete m_hub; // before the drives: its monitors use their sessions
+    m_hub = nullptr;
+    if (m_stopAllAction) {
+        m_toolbar->removeAction(m_stopAllAction);
+        m_stopAllAction = nullptr;
+    }
+    delete m_stopAll;
+    m_stopAll = nullptr;
+    delete m_banner;
+    m_banner = nullptr;
+    m_log->setDescriber({});
+    delete m_panel;
+    m_panel = nullptr;
+    delete m_poller;
+    m_poller = nullptr;
+    delete m_drives;
+    m_drives = nullptr;
+    m_client.reset(); // bounded shutdown of the bus worker
+    m_connected = false;
+}
+
+void MainWindow::connectTo(const ConnectionSettings& settings,
+                           const QHash<int, QString>& knownTypes)
+{
+    teardown();
+    m_settings = settings;
+    m_knownTypes = knownTypes;
+    QString error;
+    m_client = m_factory(settings, m_log.get(), &error);
+    if (!m_client) {
+        m_connectionLabel->setText(tr("Not connected"));
+        QMessageBox::warning(this, tr("Cannot connect"), error);
+        emit connectionChanged(false);
+        return;
+    }
+    m_drives = new BusDrives(m_client.get(), ProfileRegistry::builtIn(), this);
+    m_poller = new DriveStatusPoller(m_drives, this);
+    m_panel = new BusPanel(m_drives, m_poller, m_splitter);
+    m_hub = new MonitorHub(m_drives, this);
+    buildMonitorDocks();
+    m_log->setDescriber(TrafficDescriber(m_drives, ProfileRegistry::builtIn()).describer());
+    // STOP ALL is always on the toolbar and on the keyboard (StopAllButton::shortcuts()).
+    m_stopAll = new StopAllButton(m_drives, m_toolbar);
+    m_stopAllAction = m_toolbar->addWidget(m_stopAll);
+    m_banner = new AlarmBanner(m_poller, m_central);
+    static_cast<QVBoxLayout*>(m_central->layout())->insertWidget(0, m_banner);
+    connect(m_banner, &AlarmBanner::showAlarms, this, [this](int slave) {
+        m_panel->view()->selectRow(m_panel->model()->rowOf(slave));
+        for (int i = 0; i < m_workspace->tabs()->count(); ++i) {
+            if (qobject_cast<AlarmsPage*>(m_workspace->tabs()->widget(i)))
+                m_workspace->tabs()->setCurrentIndex(i);
+        }
+    });
+    // The placeholder of the first connection; on a reconnection the old panel is gone and
+    // the first widget is the workspace, which stays.
+    if (m_splitter->widget(0) != m_workspace)
+        delete m_splitter->widget(0);
+    m_splitter->insertWidget(0, m_panel);
+    m_splitter->setStretchFactor(0, 0);
+    // The remembered division, or one where the bus list's columns fit.
+    if (!m_splitter->restoreState(m_splitterState)) {
+        const int list = std::max(560, m_panel->view()->horizontalHeader()->length() + 24);
+        m_splitter->setSizes({list, std::max(600, width() - list)});
+    }
+    connect(m_panel, &BusPanel::selectionChanged, this, &MainWindow::showDrive);
+    connect(m_client.get(), &ModbusClient::opened, this, &MainWindow::onOpened);
+    connect(m_client.get(), &ModbusClient::connectionLost, this, [this](const QString& lost) {
+        m_connectionLabel->setText(tr("Connection lost: %1").arg(lost));
+        QMessageBox::warning(this, tr("Connection lost"),
+                             ConnectionDialog::explainOpenError(m_settings, lost));
+    });
+    setWindowTitle(tr("OpenTOP — %1").arg(m_client->describe()));
+    m_connectionLabel->setText(tr("Connecting to %1…").arg(m_client->describe()));
+    m_client->open();
+}
+
+void MainWindow::onOpened(bool ok, const QString& error)
+{
+    m_connected = ok;
+    if (!ok) {
+        m_connectionLabel->setText(tr("Not connected"));
+        QMessageBox::warning(this, tr("Cannot connect"),
+                             ConnectionDialog::explainOpenError(m_settings, error));
+        emit connectionChanged(false);
+        return;
+    }
+    m_connectionLabel->setText(tr("Connected: %1").arg(m_client->describe()));
+    m_poller->start();
+    identifyKnown();
+    emit connectionChanged(true);
+}
+
+void MainWindow::identifyKnown()
+{
+    auto* identifier = new DeviceIdentifier(m_client.get(), ProfileRegistry::builtIn(), m_drives);
+    for (auto it = m_knownTypes.cbegin(); it != m_knownTypes.cend(); ++it) {
+        const int slave = it.key();
+        const QString type = it.value();
+        identifier->identify(slave, [this, type](DeviceInfo info) {
+            QString variant;
+            const Profile* p = ProfileRegistry::builtIn().forDeviceType(type, &variant);
+            if (info.state == DeviceInfo::State::Present && info.variant.isEmpty() && p &&
+                p->family == info.family && p->variant(variant)) {
+                info.variant = variant;
+                info.model = p->variant(variant)->model;
+                info.detail = tr("The drive does not report its variant; %1 is the configured one.")
+                                  .arg(info.model);
+            }
+            m_drives->update(info);
+        });
+    }
+}
+
+void MainWindow::showDrive(const QVector<int>& slaves)
+{
+    m_selected = slaves;
+    // Several drives of one family: one setting can be written to all of them.
+    bool sameFamily = slaves.size() > 1;
+    for (int s : slaves)
+        sameFamily = sameFamily && m_drives->parameters(s) &&
+                     m_drives->info(s).family == m_drives->info(slaves.first()).family;
+    m_multiWrite->setEnabled(sameFamily);
+    if (slaves.isEmpty() || !m_drives->parameters(slaves.first())) {
+        m_workspace->setDrive(nullptr, QString());
+        return;
+    }
+    const DeviceInfo info = m_drives->info(slaves.first());
+    if (m_workspace->drive() == m_drives->parameters(info.slave))
+        return;
+    m_workspace->setDrive(m_drives->parameters(info.slave),
+                          tr("Machine number %1 (%2, %3) — %4, firmware V%5")
+                              .arg(info.slave)
+                              .arg(DeviceInfo::hexText(info.slave),
+                                   DeviceInfo::switchText(info.slave), info.model, info.firmware));
+    // The monitoring side of the drive: live values, test run and alarm histories.
+    auto* monitor = new MonitorPage(m_hub, m_drives->parameters(info.slave), m_workspace->tabs());
+    // First: what a drive is doing is what one wants to see on selecting it (as on a TOP-1).
+    m_workspace->tabs()->insertTab(0, monitor, tr("Monitor"));
+    m_workspace->tabs()->setCurrentIndex(0);
+    auto* run = new TestRunPanel(m_drives, info.slave, m_workspace->tabs());
+    run->setPollingActive(m_poller->isActive());
+    m_workspace->tabs()->addTab(run, tr("Test run"));
+    auto* alarms = new AlarmsPage(m_drives->session(info.slave), m_workspace->tabs());
+    m_workspace->tabs()->addTab(alarms, tr("Alarms"));
+    alarms->refresh();
+}
+
+void MainWindow::buildMonitorDocks()
+{
+    m_overview = new BusOverview(m_drives, m_hub, dock(QStringLiteral("overviewDock")));
+    connect(m_overview, &BusOverview::driveActivated, this,
+            [this](int slave) { m_panel->view()->selectRow(m_panel->model()->rowOf(slave)); });
+    m_trends = new TrendPanel(m_hub, dock(QStringLiteral("trendDock")));
+    for (const auto& [name, widget] :
+         {std::pair(QStringLiteral("overviewDock"), (QWidget*)m_overview),
+          std::pair(QStringLiteral("trendDock"), (QWidget*)m_trends)}) {
+        QWidget* old = dock(name)->widget();
+        dock(name)->setWidget(widget);
+        delete old;
+    }
+}
+
+QDockWidget* MainWindow::dock(const QString& name) const
+{
+    return findChild<QDockWidget*>(name);
+}
+
+void MainWindow::monitorAll()
+{
+    if (!m_drives)
+        return;
+    dock(QStringLiteral("overviewDock"))->show();
+    dock(QStringLiteral("trendDock"))->show();
+    m_trends->showDrives(m_drives->slaves());
+}
+
+void MainWindow::writeToSelected()
+{
+    if (m_selected.size() < 2)
+        return;
+    MultiDriveWriteDialog dialog(m_drives, m_selected, QString(), this);
+    dialog.exec();
+}
+
+void MainWindow::exportAlarms()
+{
+    if (!m_drives || m_drives->slaves().isEmpty())
+        return;
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export alarm histories"), QStringLiteral("alarms.csv"), tr("CSV files (*.csv)"));
+    if (path.isEmpty())
+        return;
+    auto* exporter = new AlarmExport(m_drives, this);
+    connect(exporter, &AlarmExport::finished, this, [this, exporter](bool, const QString& message) {
+        statusBar()->showMessage(message, 10000);
+        exporter->deleteLater();
+    });
+    exporter->exportTo(path);
+}
+
+void MainWindow::chooseConnection()
+{
+    ConnectionDialog dialog(this);
+    if (dialog.exec() == QDialog::Accepted)
+        connectTo(dialog.settings());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    int pending = 0;
+    if (m_drives) {
+        for (int s : m_drives->slaves())
+            pending += m_drives->parameters(s) ? m_drives->parameters(s)->pendingNames().size() : 0;
+    }
+    if (pending > 0 &&
+        QMessageBox::question(
+            this, tr("Unwritten changes"),
+            tr("%n edit(s) have not been written to the drives. Quit and discard them?", nullptr,
+               pending),
+            QMessageBox::Discard | QMessageBox::Cancel,
+            QMessageBox::Cancel) != QMessageBox::Discard) {
+        event->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue(QStringLiteral("mainWindow/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("mainWindow/state"), saveState());
+    m_splitterState = m_splitter->saveState();
+    settings.setValue(QStringLiteral("mainWindow/splitter"), m_splitterState);
+    event->accept();
+}
+
+} // namespace opentop

@@ -1,0 +1,84 @@
+#include "monitor/MonitorDetails.h"
+
+#include "monitor/DeviceMonitor.h"
+#include "monitor/TerminalLamps.h"
+#include "profile/RoleEvaluator.h"
+#include "session/DeviceParameters.h"
+
+#include <QFormLayout>
+#include <QLabel>
+
+namespace opentop {
+
+MonitorDetails::MonitorDetails(DeviceParameters* parameters, QWidget* parent)
+    : QWidget(parent)
+    , m_parameters(parameters)
+    , m_form(new QFormLayout(this))
+{
+    m_form->setContentsMargins(0, 0, 0, 0);
+}
+
+QLabel* MonitorDetails::addTextRow(const QString& key, const QString& label)
+{
+    auto* value = new QLabel(this);
+    value->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_values.insert(key, value);
+    m_form->addRow(label + QLatin1Char(':'), value);
+    return value;
+}
+
+void MonitorDetails::build(const MonitorSample& sample, const QStringList& shownElsewhere)
+{
+    for (const MonitorValue& v : sample.values) {
+        if (!v.meta || shownElsewhere.contains(v.meta->name))
+            continue;
+        if (v.meta->type == DataType::Bits) {
+            bool lamps = false;
+            for (const BitField& f : v.meta->bits) {
+                if (f.width == 1 && TerminalLamps::isLampField(f.values)) {
+                    lamps = true;
+                    continue;
+                }
+                // A field with named states ("CCW", "SPno2", "Mode2") is a text row.
+                addTextRow(v.meta->name + QLatin1Char('.') + f.name, f.label);
+            }
+            if (lamps) {
+                auto* row = new TerminalLamps(*v.meta, this);
+                m_lamps.insert(v.meta->name, row);
+                m_form->addRow(v.meta->label + QLatin1Char(':'), row);
+                for (const QString& f : row->functionParameters())
+                    row->setFunctionText(f, m_parameters->deviceText(f));
+            }
+            continue;
+        }
+        addTextRow(v.meta->name, v.meta->label);
+    }
+}
+
+void MonitorDetails::showSample(const MonitorSample& s)
+{
+    for (const MonitorValue& v : s.values) {
+        if (!v.meta)
+            continue;
+        if (QLabel* l = m_values.value(v.meta->name))
+            l->setText(v.value.valid ? v.text : tr("not read"));
+        if (TerminalLamps* lamps = m_lamps.value(v.meta->name))
+            lamps->setRaw(v.value.valid ? std::optional<double>(v.value.raw) : std::nullopt);
+        for (const BitField& f : v.meta->bits) {
+            if (QLabel* l = m_values.value(v.meta->name + QLatin1Char('.') + f.name))
+                l->setText(v.value.valid ? RoleEvaluator::fieldText(
+                                               f, RoleEvaluator::fieldValue(f, v.value.raw))
+                                         : tr("not read"));
+        }
+    }
+}
+
+void MonitorDetails::parameterChanged(const QString& name)
+{
+    for (TerminalLamps* lamps : std::as_const(m_lamps)) {
+        if (lamps->functionParameters().contains(name))
+            lamps->setFunctionText(name, m_parameters->deviceText(name));
+    }
+}
+
+} // namespace opentop

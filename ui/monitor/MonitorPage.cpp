@@ -1,0 +1,333 @@
+#include "monitor/MonitorPage.h"
+
+#include "bus/DriveStatusPoller.h"
+#include "monitor/MonitorDetails.h"
+#include "monitor/MonitorHub.h"
+#include "monitor/MotorSpeedBox.h"
+#include "monitor/PanelMirrorView.h"
+#include "monitor/TerminalLamps.h"
+#include "profile/RoleEvaluator.h"
+#include "profile/SpeedDisplay.h"
+#include "session/DeviceParameters.h"
+#include "session/DeviceSession.h"
+#include "trends/TrendChart.h"
+#include "trends/TrendDefaults.h"
+#include "widgets/StatusLight.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSplitter>
+#include <QTime>
+#include <QVBoxLayout>
+
+namespace opentop {
+
+namespace {
+
+const QString kCurrent = QStringLiteral("currentSpeed");
+const QString kTarget = QStringLiteral("targetSpeed");
+const QString kLoad = QStringLiteral("load");
+
+QLabel* bigLabel(QWidget* parent, qreal factor)
+{
+    auto* l = new QLabel(QStringLiteral("—"), parent);
+    QFont f = l->font();
+    f.setPointSizeF(f.pointSizeF() * factor);
+    f.setBold(true);
+    l->setFont(f);
+    l->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    return l;
+}
+
+} // namespace
+
+MonitorPage::MonitorPage(MonitorHub* hub, DeviceParameters* parameters, QWidget* parent)
+    : QWidget(parent)
+    , m_hub(hub)
+    , m_parameters(parameters)
+    , m_slave(parameters->session()->slave())
+    , m_rate(new QComboBox(this))
+    , m_pause(new QPushButton(this))
+    , m_status(new QLabel(this))
+    , m_current(bigLabel(this, 2.2))
+    , m_currentDisplay(bigLabel(this, 1.3))
+    , m_target(bigLabel(this, 1.3))
+    , m_load(bigLabel(this, 1.3))
+    , m_state(bigLabel(this, 1.3))
+    , m_alarm(new QLabel(this))
+    , m_chart(new TrendChart(hub, this))
+{
+    auto* layout = new QVBoxLayout(this);
+    auto* bar = new QHBoxLayout;
+    bar->addWidget(new QLabel(tr("Poll every"), this));
+    for (int hz : {1, 2, 5, 10, 20})
+        m_rate->addItem(tr("%1 ms (%2 Hz)").arg(1000 / hz).arg(hz), 1000 / hz);
+    m_rate->setToolTip(tr("How often every monitored drive is read. Commands you give always "
+                          "go first; the drives share what is left of the bus in turn."));
+    bar->addWidget(m_rate);
+    bar->addWidget(m_pause);
+    bar->addWidget(m_status, 1);
+    layout->addLayout(bar);
+    const auto showRate = [this](int ms) {
+        const int i = m_rate->findData(ms);
+        if (i < 0)
+            m_rate->addItem(tr("%1 ms").arg(ms), ms);
+        m_rate->setCurrentIndex(m_rate->findData(ms));
+    };
+    showRate(hub->interval());
+    connect(hub, &MonitorHub::intervalChanged, this, showRate);
+    connect(m_rate, &QComboBox::activated, this,
+            [this] { m_hub->setInterval(m_rate->currentData().toInt()); });
+    const auto showPaused = [this](bool paused) {
+        m_pause->setText(paused ? tr("Resume polling") : tr("Pause polling"));
+        if (paused)
+            m_status->setText(tr("Polling paused: the values shown are the last ones read."));
+    };
+    showPaused(hub->isPaused());
+    connect(hub, &MonitorHub::pausedChanged, this, showPaused);
+    connect(m_pause, &QPushButton::clicked, this, [this] { m_hub->setPaused(!m_hub->isPaused()); });
+
+    auto* splitter = new QSplitter(Qt::Vertical, this);
+    auto* top = new QWidget(splitter);
+    auto* row = new QHBoxLayout(top);
+    row->setContentsMargins(0, 0, 0, 0);
+    row->addWidget(buildReadouts(), 3);
+    row->addWidget(buildSide(), 2);
+    splitter->addWidget(top);
+    splitter->addWidget(m_chart);
+    splitter->setStretchFactor(1, 1);
+    layout->addWidget(splitter, 1);
+
+    m_chart->setSources(TrendDefaults::forDrive(parameters->profile(), m_slave));
+
+    connect(hub, &MonitorHub::sample, this, [this](int slave, const MonitorSample& s) {
+        if (slave == m_slave)
+            showSample(s);
+    });
+    connect(hub, &MonitorHub::error, this, [this](int slave, const QString& text) {
+        if (slave == m_slave)
+            showError(text);
+    });
+    // Written speed display settings change what the display shows: read them again, once.
+    m_displayChanged.setSingleShot(true);
+    m_displayChanged.setInterval(300);
+    connect(&m_displayChanged, &QTimer::timeout, this, [this] { m_hub->refreshDisplay(m_slave); });
+    const QStringList displayNames = SpeedDisplay::Names::withPrefix().all();
+    connect(parameters, &DeviceParameters::entryChanged, this,
+            [this, displayNames](const QString& n) {
+                const DeviceParameters::Entry* e = m_parameters->entry(n);
+                if (displayNames.contains(n) && e && e->state == DeviceParameters::State::Clean)
+                    m_displayChanged.start();
+                m_details->parameterChanged(n);
+                if (m_last)
+                    showPanel(*m_last);
+            });
+    if (const auto latest = hub->latest(m_slave))
+        showSample(*latest);
+}
+
+// Polls while shown: a drive whose monitor tab is in the background costs no traffic.
+void MonitorPage::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    m_hub->watch(m_slave, this);
+}
+
+void MonitorPage::hideEvent(QHideEvent* event)
+{
+    QWidget::hideEvent(event);
+    m_hub->unwatch(m_slave, this);
+}
+
+QWidget* MonitorPage::buildReadouts()
+{
+    auto* box = new QGroupBox(tr("Live values"), this);
+    auto* column = new QVBoxLayout(box);
+    auto* big = new QGridLayout;
+    const Profile& profile = m_parameters->profile();
+    const auto caption = [this, &profile](const QString& role, const QString& fallback) {
+        const ParameterMeta* m = RoleEvaluator::parameter(profile, role);
+        return new QLabel(m ? m->label : fallback, this);
+    };
+    big->addWidget(caption(kCurrent, tr("Speed")), 0, 0);
+    big->addWidget(m_current, 1, 0);
+    big->addWidget(m_currentDisplay, 2, 0);
+    // A family without a target speed or a load role shows neither caption nor value.
+    for (const auto& [role, label, at] :
+         {std::tuple(kTarget, m_target, 1), std::tuple(kLoad, m_load, 2)}) {
+        if (!RoleEvaluator::parameter(profile, role)) {
+            label->hide();
+            continue;
+        }
+        big->addWidget(caption(role, QString()), 0, at);
+        big->addWidget(label, 1, at);
+    }
+    big->addWidget(new QLabel(tr("State"), this), 0, 3);
+    big->addWidget(m_state, 1, 3);
+    column->addLayout(big);
+    m_alarm->setWordWrap(true);
+    m_alarm->setVisible(false);
+    m_alarm->setStyleSheet(QStringLiteral("QLabel { background: #e51c23; color: white; "
+                                          "padding: 4px; border-radius: 4px; }"));
+    column->addWidget(m_alarm);
+    m_details = new MonitorDetails(m_parameters, box);
+    column->addWidget(m_details);
+    column->addStretch(1);
+    return box;
+}
+
+QWidget* MonitorPage::buildSide()
+{
+    auto* side = new QWidget(this);
+    auto* column = new QVBoxLayout(side);
+    column->setContentsMargins(0, 0, 0, 0);
+    const Profile& profile = m_parameters->profile();
+    if (PanelMirror::supported(profile)) {
+        m_panel = new PanelMirrorView(side);
+        column->addWidget(m_panel);
+    }
+    // A speed measured as a frequency (the DC controller's) needs the motor's commutations.
+    const ParameterMeta* speed = RoleEvaluator::parameter(profile, kCurrent);
+    if (MotorSpeedBox::appliesTo(speed)) {
+        m_motorSpeed = new MotorSpeedBox(*speed, m_slave, side);
+        column->addWidget(m_motorSpeed);
+    }
+    column->addStretch(1);
+    return side;
+}
+
+void MonitorPage::setCommutationsPerRevolution(double count)
+{
+    if (m_motorSpeed)
+        m_motorSpeed->setCommutationsPerRevolution(count);
+}
+
+void MonitorPage::showSample(const MonitorSample& s)
+{
+    const Profile& profile = m_parameters->profile();
+    if (!m_details->isBuilt()) {
+        // The speeds and the load are shown large above; not twice.
+        QStringList large;
+        for (const QString& role : {kCurrent, kTarget, kLoad}) {
+            if (const ParameterMeta* m = RoleEvaluator::parameter(profile, role))
+                large << m->name;
+        }
+        m_details->build(s, large);
+    }
+    m_last = s;
+    ++m_samples;
+    m_details->showSample(s);
+    // Speeds signed by the direction: a register holding the magnitude would hide a reverse run.
+    const auto text = [&](const QString& role) {
+        const ParameterMeta* m = RoleEvaluator::parameter(profile, role);
+        const QString t = m ? s.signedText(m->name) : QString();
+        return t.isEmpty() ? QStringLiteral("—") : t;
+    };
+    m_current->setText(text(kCurrent));
+    m_currentDisplay->setText(
+        s.currentShown && s.currentShown->unit != QLatin1String("r/min")
+            ? tr("%1 %2 on the drive's display").arg(s.currentShown->text, s.currentShown->unit)
+            : QString());
+    m_currentDisplay->setVisible(!m_currentDisplay->text().isEmpty());
+    m_target->setText(text(kTarget));
+    m_load->setText(text(kLoad));
+    m_state->setText(s.running ? s.stateText() : QStringLiteral("—"));
+    const bool alarm = s.alarmActive.value_or(false);
+    m_alarm->setVisible(alarm);
+    if (alarm) {
+        m_alarm->setText(s.activeAlarm ? tr("Alarm %1 %2 — %3")
+                                             .arg(s.activeAlarm->panel, s.activeAlarm->name,
+                                                  s.activeAlarm->remedy)
+                                       : tr("Alarm active (reading which one…)"));
+    }
+    const MonitorHub::Statistics stats = m_hub->statistics(m_slave);
+    m_status->setText(tr("Last sample %1 · %2 samples/s")
+                          .arg(s.timestamp.time().toString(QStringLiteral("HH:mm:ss.zzz")))
+                          .arg(stats.rate(), 0, 'f', 1));
+    showPanel(s);
+    if (m_motorSpeed)
+        m_motorSpeed->showSample(s);
+}
+
+void MonitorPage::showPanel(const MonitorSample& s)
+{
+    if (!m_panel)
+        return;
+    const Profile& profile = m_parameters->profile();
+    std::optional<PanelMirror::Content> content;
+    if (const ParameterMeta* m =
+            RoleEvaluator::parameter(profile, QStringLiteral("panelDisplay"))) {
+        const DeviceParameters::Entry* e = m_parameters->entry(m->name);
+        if (e && e->device.valid)
+            content = PanelMirror::Content(int(e->device.raw));
+    }
+    PanelMirror::Countdown countdown;
+    const ProfileRole* role = profile.role(QStringLiteral("countdown"));
+    int* parts[] = {&countdown.days, &countdown.hours, &countdown.minutes, &countdown.seconds};
+    for (int i = 0; role && i < 4 && i < role->parameters.size(); ++i) {
+        const DeviceParameters::Entry* e = m_parameters->entry(role->parameters[i]);
+        *parts[i] = e && e->device.valid ? int(e->device.number) : 0;
+    }
+    m_panel->setShown(PanelMirror::show(profile, s, content, countdown),
+                      content ? PanelMirror::contentName(*content) : QString());
+    DriveStatus status;
+    status.polled = status.answered = true;
+    status.running = s.running;
+    status.reverse = s.reverse;
+    status.alarmActive = s.alarmActive;
+    status.alarmCode = s.activeAlarmCode;
+    status.alarm = s.activeAlarm;
+    status.led = DriveStatusPoller::ledFor(status);
+    m_panel->light()->setStatus(status);
+}
+
+void MonitorPage::showError(const QString& text)
+{
+    m_status->setText(
+        tr("Cannot read the drive: %1 (the values shown are the last ones read)").arg(text));
+}
+
+QString MonitorPage::valueText(const QString& parameter) const
+{
+    const Profile& profile = m_parameters->profile();
+    for (const auto& [role, label] :
+         {std::pair(kCurrent, m_current), std::pair(kTarget, m_target), std::pair(kLoad, m_load)}) {
+        const ParameterMeta* m = RoleEvaluator::parameter(profile, role);
+        if (m && m->name == parameter)
+            return label->text();
+    }
+    const QLabel* l = m_details->value(parameter);
+    return l ? l->text() : QString();
+}
+
+QString MonitorPage::currentSpeedText() const
+{
+    return m_motorSpeed ? m_current->text() + QStringLiteral(" · ") + m_motorSpeed->speedText()
+                        : m_current->text();
+}
+
+TerminalLamps* MonitorPage::lamps(const QString& parameter) const
+{
+    return m_details->lamps(parameter);
+}
+
+QString MonitorPage::displaySpeedText() const
+{
+    return m_currentDisplay->text();
+}
+
+QString MonitorPage::alarmText() const
+{
+    return m_alarm->isHidden() ? QString() : m_alarm->text();
+}
+
+QString MonitorPage::statusText() const
+{
+    return m_state->text();
+}
+
+} // namespace opentop

@@ -1,0 +1,27 @@
+#include "pages/EditorRegistry.h"
+
+#include "pages/DcControllerPage.h"
+#include "pages/IoTerminalsPage.h"
+#include "pages/RunningDataPage.h"
+#include "pages/SpeedUnitsPage.h"
+#include "workspace/DriveWorkspace.h"
+
+namespace opentop {
+
+void registerBuiltInEditors()
+{
+    DriveWorkspace::registerEditor(
+        QStringLiteral("runningData"),
+        [](DeviceParameters* p, QWidget* parent) { return new RunningDataPage(p, parent); });
+    DriveWorkspace::registerEditor(
+        QStringLiteral("ioTerminals"),
+        [](DeviceParameters* p, QWidget* parent) { return new IoTerminalsPage(p, parent); });
+    DriveWorkspace::registerEditor(
+        QStringLiteral("speedUnits"),
+        [](DeviceParameters* p, QWidget* parent) { return new SpeedUnitsPage(p, parent); });
+    DriveWorkspace::registerEditor(
+        QStringLiteral("dcController"),
+        [](DeviceParameters* p, QWidget* parent) { return new DcControllerPage(p, parent); });
+}
+
+} // namespace opentop

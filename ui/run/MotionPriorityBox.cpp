@@ -1,0 +1,102 @@
+#include "run/MotionPriorityBox.h"
+
+#include "profile/RoleEvaluator.h"
+#include "session/DeviceSession.h"
+#include "widgets/ConfirmBox.h"
+
+#include <QLabel>
+#include <QPointer>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace opentop {
+
+namespace {
+
+const QString kPriority = QStringLiteral("motionPriority");
+
+} // namespace
+
+MotionPriorityBox::MotionPriorityBox(DeviceSession* session, QWidget* parent)
+    : QFrame(parent)
+    , m_session(session)
+{
+    setFrameShape(QFrame::StyledPanel);
+    auto* layout = new QVBoxLayout(this);
+    m_text = new QLabel(this);
+    m_text->setWordWrap(true);
+    layout->addWidget(m_text);
+    auto* button = new QPushButton(tr("Switch to communication priority…"), this);
+    button->setObjectName(QStringLiteral("switchPriority"));
+    connect(button, &QPushButton::clicked, this, &MotionPriorityBox::askToSwitch);
+    layout->addWidget(button, 0, Qt::AlignLeft);
+}
+
+QString MotionPriorityBox::wantedLabel() const
+{
+    const ParameterMeta* priority = RoleEvaluator::parameter(m_session->profile(), kPriority);
+    const qint64 wanted = m_session->profile().role(kPriority)->value.value_or(0);
+    const ValueContext context = m_session->context();
+    QString label = RoleEvaluator::valueText(*priority, wanted, context);
+    for (const EnumOption& e : priority->specFor(context).options) {
+        if (e.value == wanted)
+            label = e.label;
+    }
+    return label;
+}
+
+void MotionPriorityBox::setCurrent(const QString& current)
+{
+    const ParameterMeta* priority = RoleEvaluator::parameter(m_session->profile(), kPriority);
+    if (!priority)
+        return;
+    m_text->setText(
+        tr("Machine number %1 is in \"%2\" (%3): it takes run, stop, direction and speed "
+           "selection from its input terminals and refuses motion commands over the bus, so the "
+           "test run is disabled.\n\nSwitching to \"%4\" hands these commands to the bus: the "
+           "input terminals no longer start or stop the motor, and the machine's own controls "
+           "stay without effect until you switch back to \"%2\".")
+            .arg(m_session->slave())
+            .arg(current, priority->name, wantedLabel()));
+}
+
+QString MotionPriorityBox::explanation() const
+{
+    return m_text->text();
+}
+
+void MotionPriorityBox::askToSwitch()
+{
+    const ParameterMeta* priority = RoleEvaluator::parameter(m_session->profile(), kPriority);
+    if (!priority)
+        return;
+    ConfirmBox::ask(this, tr("Switch to communication priority"),
+                    tr("Machine number %1 will take run, stop, direction and speed selection "
+                       "from the bus (%2 = \"%3\"). Its input terminals then no longer start or "
+                       "stop the motor.")
+                        .arg(m_session->slave())
+                        .arg(priority->name, wantedLabel()),
+                    tr("Switch"), [this] { sendSwitch(); });
+}
+
+void MotionPriorityBox::sendSwitch()
+{
+    const ParameterMeta* priority = RoleEvaluator::parameter(m_session->profile(), kPriority);
+    const qint64 wanted = m_session->profile().role(kPriority)->value.value_or(0);
+    DeviceSession::WriteOptions explicitly;
+    explicitly.explicitCommand = true;
+    emit switching();
+    QPointer<MotionPriorityBox> self(this);
+    m_session->write(
+        priority->name, RoleEvaluator::writeText(*priority, wanted, m_session->context()),
+        explicitly, [self](const DeviceSession::Outcome& o) {
+            if (!self)
+                return;
+            emit self->switched(
+                o.ok, o.ok ? tr("Machine number %1 takes motion commands over the bus now.")
+                                 .arg(self->m_session->slave())
+                           : tr("Cannot switch the control priority: %1").arg(o.error));
+        });
+}
+
+} // namespace opentop

@@ -1,0 +1,54 @@
+#pragma once
+
+#include "run/StopAll.h"
+
+#include <QPointer>
+#include <QPushButton>
+
+class QMessageBox;
+
+namespace opentop {
+
+class BusDrives;
+
+// STOP ALL: big, red and always there. One click (or Ctrl+Shift+S anywhere in the window, see
+// install()) broadcasts every family's stop command and then confirms that each drive known in
+// the BusDrives has stopped. Never asks first: stopping is always allowed. The result shows in
+// a non-modal window that names each drive still running or not answering.
+class StopAllButton : public QPushButton
+{
+    Q_OBJECT
+public:
+    explicit StopAllButton(BusDrives* drives, QWidget* parent = nullptr);
+
+    // The key sequences that press STOP ALL in a window with install().
+    static QList<QKeySequence> shortcuts();
+    // Makes shortcuts() press the window's StopAllButton from anywhere in the application.
+    static void install(QWidget* window);
+
+    void setTiming(const StopConfirmer::Timing& timing) { m_timing = timing; }
+    bool isStopping() const { return m_running > 0; }
+    // The result of the last stop, as shown in the result window.
+    QString reportText() const { return m_reportText; }
+    // The non-modal result window of the last stop (nullptr once closed).
+    QMessageBox* resultWindow() const;
+
+public slots:
+    void stopAll();
+
+signals:
+    void started();
+    void finished(const opentop::StopReport& report);
+
+private:
+    void showReport(const StopReport& report);
+    static QString describe(const StopReport& report);
+
+    BusDrives* m_drives;
+    StopConfirmer::Timing m_timing;
+    int m_running = 0;
+    QString m_reportText;
+    QPointer<QMessageBox> m_result;
+};
+
+} // namespace opentop

@@ -1,0 +1,96 @@
+#pragma once
+
+#include "run/RunControl.h"
+
+#include <QSet>
+#include <QWidget>
+#include <functional>
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+
+namespace opentop {
+
+class BusDrives;
+class DeviceSession;
+class MotionPriorityBox;
+
+// Test run of one drive by its roles (RunControl): start, stop, direction, running data
+// selection, hold and free for a DBU; a speed set point in the current speed mode's unit,
+// brake (speed 0) and natural stop (coast) for the DC controller. The commands are enabled only
+// while the drive takes motion commands over the bus ("motionPriority"); otherwise the panel
+// explains how to switch and offers to do it after a confirmation. Starting a motor asks once
+// per drive and program run. After each command the drive's state is read back and shown.
+class TestRunPanel : public QWidget
+{
+    Q_OBJECT
+public:
+    TestRunPanel(BusDrives* drives, int slave, QWidget* parent = nullptr);
+
+    int slave() const { return m_slave; }
+    // Whether the drive takes motion commands over the bus (read by refresh()).
+    bool commandsEnabled() const { return m_enabled; }
+    QString priorityExplanation() const;
+    QString stateText() const;
+    QString messageText() const;
+    QString speedError() const;     // why the speed typed is refused; empty when it is allowed
+    QString pollingWarning() const; // the communication-loss warning shown, or empty
+    // Polling paused: a DC controller with a communication loss stop time brakes the motor.
+    void setPollingActive(bool active);
+
+    // Drives whose start the user has confirmed in this program run.
+    static bool startConfirmed(int slave) { return s_confirmed.contains(slave); }
+    static void forgetConfirmations() { s_confirmed.clear(); }
+
+public slots:
+    // Reads the control priority (DBU) or speed mode and communication loss time (DC).
+    void refresh();
+
+signals:
+    void refreshed();
+    // A command finished (sent or refused) and the state read back is shown.
+    void commandFinished(bool ok);
+
+private:
+    void buildDbu();
+    void buildDc();
+    QPushButton* addButton(const QString& text, const QString& name,
+                           const std::function<void()>& onClick);
+    void run(const RunControl::Command& command, bool starts);
+    void send(const RunControl::Command& command);
+    void showOutcome(const RunControl::Outcome& outcome);
+    void showState(const RunControl::State& state);
+    void updateEnabled();
+    void updateSpeed();
+    void updateWarning();
+    void setMessage(const QString& text, bool error);
+
+    BusDrives* m_drives;
+    int m_slave;
+    DeviceSession* m_session;
+    RunControl m_control;
+    bool m_isDc = false;
+    bool m_enabled = false;
+    bool m_busy = false;
+    bool m_pollingActive = true;
+    double m_commLossSeconds = 0;
+    QString m_currentPriority; // the priority setting's text, e.g. "I/O priority"
+
+    MotionPriorityBox* m_priorityBox = nullptr;
+    QWidget* m_commands = nullptr;
+    QList<QWidget*> m_whileIdle; // disabled while a command is under way (stops never are)
+    QComboBox* m_spno = nullptr;
+    QLineEdit* m_speed = nullptr;
+    QLabel* m_speedUnit = nullptr;
+    QLabel* m_speedError = nullptr;
+    QPushButton* m_setSpeed = nullptr;
+    QLabel* m_warning = nullptr;
+    QLabel* m_message = nullptr;
+    QLabel* m_state = nullptr;
+
+    static QSet<int> s_confirmed;
+};
+
+} // namespace opentop

@@ -1,0 +1,262 @@
+#include "traffic/TrafficLogView.h"
+
+#include "TrafficLog.h"
+#include "traffic/TrafficLogFilter.h"
+#include "traffic/TrafficLogModel.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QSplitter>
+#include <QTableView>
+#include <QTableWidget>
+#include <QTimer>
+#include <QVBoxLayout>
+
+namespace opentop {
+
+namespace {
+
+QTableWidgetItem* cell(const QString& text)
+{
+    auto* item = new QTableWidgetItem(text);
+    item->setFlags(Qt::ItemIsSelectable | Qt::ItemIsEnabled);
+    item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    return item;
+}
+
+} // namespace
+
+TrafficLogView::TrafficLogView(TrafficLog* log, QWidget* parent)
+    : QWidget(parent)
+    , m_log(log)
+    , m_model(new TrafficLogModel(log ? log->capacity() : 20000, this))
+    , m_filter(new TrafficLogFilter(this))
+    , m_drive(new QComboBox(this))
+    , m_direction(new QComboBox(this))
+    , m_errorsOnly(new QCheckBox(tr("&Errors only"), this))
+    , m_pause(new QPushButton(tr("&Pause"), this))
+    , m_table(new QTableView(this))
+    , m_stats(new QTableWidget(this))
+    , m_refresh(new QTimer(this))
+{
+    m_filter->setSourceModel(m_model);
+
+    m_drive->setObjectName(QStringLiteral("trafficDrive"));
+    m_drive->addItem(tr("All drives"), -1);
+    m_direction->setObjectName(QStringLiteral("trafficDirection"));
+    m_direction->addItem(tr("All"), int(TrafficLogFilter::DirectionFilter::All));
+    m_direction->addItem(tr("Tx (requests)"), int(TrafficLogFilter::DirectionFilter::Tx));
+    m_direction->addItem(tr("Rx (replies)"), int(TrafficLogFilter::DirectionFilter::Rx));
+    m_direction->addItem(tr("Events (no reply)"), int(TrafficLogFilter::DirectionFilter::Events));
+    m_errorsOnly->setObjectName(QStringLiteral("trafficErrorsOnly"));
+    m_pause->setObjectName(QStringLiteral("trafficPause"));
+    m_pause->setCheckable(true);
+    auto* clearButton = new QPushButton(tr("&Clear"), this);
+    clearButton->setObjectName(QStringLiteral("trafficClear"));
+    auto* saveButton = new QPushButton(tr("&Save…"), this);
+    saveButton->setObjectName(QStringLiteral("trafficSave"));
+
+    auto* driveLabel = new QLabel(tr("&Drive:"), this);
+    driveLabel->setBuddy(m_drive);
+    auto* directionLabel = new QLabel(tr("Di&rection:"), this);
+    directionLabel->setBuddy(m_direction);
+    auto* bar = new QHBoxLayout;
+    bar->addWidget(driveLabel);
+    bar->addWidget(m_drive);
+    bar->addWidget(directionLabel);
+    bar->addWidget(m_direction);
+    bar->addWidget(m_errorsOnly);
+    bar->addStretch();
+    bar->addWidget(m_pause);
+    bar->addWidget(clearButton);
+    bar->addWidget(saveButton);
+
+    m_table->setObjectName(QStringLiteral("trafficTable"));
+    m_table->setAccessibleName(tr("Frames"));
+    m_table->setModel(m_filter);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setWordWrap(false);
+    m_table->verticalHeader()->hide();
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->setColumnWidth(TrafficLogModel::Bytes, 260);
+    m_table->setColumnWidth(TrafficLogModel::Meaning, 320);
+
+    const QStringList statsHeaders = {tr("Drive"),         tr("Requests"),   tr("Replies"),
+                                      tr("Timeouts"),      tr("CRC errors"), tr("Exceptions"),
+                                      tr("Wrong/garbled"), tr("Mean ms"),    tr("Max ms")};
+    m_stats->setObjectName(QStringLiteral("trafficStatistics"));
+    m_stats->setAccessibleName(tr("Statistics per drive"));
+    m_stats->setColumnCount(int(statsHeaders.size()));
+    m_stats->setHorizontalHeaderLabels(statsHeaders);
+    m_stats->verticalHeader()->hide();
+    m_stats->setEditTriggers(QAbstractItemView::NoEditTriggers);
+
+    auto* splitter = new QSplitter(Qt::Vertical, this);
+    splitter->addWidget(m_table);
+    splitter->addWidget(m_stats);
+    splitter->setStretchFactor(0, 4);
+    splitter->setStretchFactor(1, 1);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(bar);
+    layout->addWidget(splitter);
+
+    m_refresh->setSingleShot(true);
+    m_refresh->setInterval(200);
+    connect(m_refresh, &QTimer::timeout, this, &TrafficLogView::refresh);
+    connect(m_drive, qOverload<int>(&QComboBox::currentIndexChanged), this,
+            &TrafficLogView::applyFilters);
+    connect(m_direction, qOverload<int>(&QComboBox::currentIndexChanged), this,
+            &TrafficLogView::applyFilters);
+    connect(m_errorsOnly, &QCheckBox::toggled, this, &TrafficLogView::applyFilters);
+    connect(m_pause, &QPushButton::toggled, this, &TrafficLogView::setPaused);
+    connect(clearButton, &QPushButton::clicked, this, &TrafficLogView::clear);
+    connect(saveButton, &QPushButton::clicked, this, &TrafficLogView::save);
+    if (m_log) {
+        connect(m_log, &TrafficLog::entryAdded, this, &TrafficLogView::addEntry,
+                Qt::QueuedConnection);
+        catchUp();
+    }
+    refresh();
+}
+
+void TrafficLogView::setPaused(bool paused)
+{
+    if (m_paused == paused)
+        return;
+    m_paused = paused;
+    {
+        const QSignalBlocker block(m_pause);
+        m_pause->setChecked(paused);
+    }
+    m_pause->setText(paused ? tr("&Resume") : tr("&Pause"));
+    if (!paused)
+        catchUp();
+}
+
+void TrafficLogView::clear()
+{
+    m_pending.clear();
+    m_model->clear();
+    m_statistics.clear();
+    refresh();
+}
+
+bool TrafficLogView::saveTo(const QString& path, QString* error)
+{
+    flush();
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Text)) {
+        if (error)
+            *error = file.errorString();
+        return false;
+    }
+    for (int row = 0; row < m_filter->rowCount(); ++row) {
+        const int source = m_filter->mapToSource(m_filter->index(row, 0)).row();
+        file.write(m_model->entry(source).toLine().toUtf8() + '\n');
+    }
+    if (!file.commit()) {
+        if (error)
+            *error = file.errorString();
+        return false;
+    }
+    return true;
+}
+
+void TrafficLogView::addEntry(const TrafficEntry& entry)
+{
+    if (m_paused || entry.sequence <= m_lastSequence)
+        return; // paused: catchUp() takes it from the log; older: already shown
+    m_lastSequence = entry.sequence;
+    // Rows are added in batches by refresh(): hundreds of frames a second, one re-layout.
+    m_pending.append(entry);
+    m_statistics.add(entry);
+    addDriveChoice(entry.slave);
+    refreshSoon();
+}
+
+void TrafficLogView::catchUp()
+{
+    if (!m_log)
+        return;
+    const QVector<TrafficEntry> entries = m_log->entries();
+    for (const TrafficEntry& entry : entries)
+        addEntry(entry);
+    flush();
+    m_table->scrollToBottom();
+}
+
+void TrafficLogView::addDriveChoice(int slave)
+{
+    if (m_drive->findData(slave) >= 0)
+        return;
+    int index = 1;
+    while (index < m_drive->count() && m_drive->itemData(index).toInt() < slave)
+        ++index;
+    m_drive->insertItem(index, slave == 0 ? tr("Broadcast") : tr("Drive %1").arg(slave), slave);
+}
+
+void TrafficLogView::applyFilters()
+{
+    m_filter->setSlave(m_drive->currentData().toInt());
+    m_filter->setDirection(TrafficLogFilter::DirectionFilter(m_direction->currentData().toInt()));
+    m_filter->setErrorsOnly(m_errorsOnly->isChecked());
+}
+
+void TrafficLogView::refreshSoon()
+{
+    if (!m_refresh->isActive())
+        m_refresh->start();
+}
+
+void TrafficLogView::flush()
+{
+    m_model->append(m_pending);
+    m_pending.clear();
+}
+
+void TrafficLogView::refresh()
+{
+    flush();
+    if (!m_paused)
+        m_table->scrollToBottom();
+    const QVector<int> slaves = m_statistics.slaves();
+    m_stats->setRowCount(int(slaves.size()));
+    for (int row = 0; row < slaves.size(); ++row) {
+        const DriveTrafficStats s = m_statistics.drive(slaves[row]);
+        const QStringList texts = {s.slave == 0 ? tr("Broadcast") : QString::number(s.slave),
+                                   QString::number(s.requests),
+                                   QString::number(s.replies),
+                                   QString::number(s.timeouts),
+                                   QString::number(s.crcErrors),
+                                   QString::number(s.exceptions),
+                                   QString::number(s.garbled),
+                                   QString::number(s.meanMs(), 'f', 1),
+                                   QString::number(s.maxMs, 'f', 1)};
+        for (int column = 0; column < texts.size(); ++column)
+            m_stats->setItem(row, column, cell(texts[column]));
+    }
+}
+
+void TrafficLogView::save()
+{
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save traffic log"), QStringLiteral("traffic.txt"), tr("Text files (*.txt)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!saveTo(path, &error))
+        QMessageBox::warning(this, tr("Save traffic log"),
+                             tr("Could not save %1: %2").arg(path, error));
+}
+
+} // namespace opentop

@@ -1,0 +1,68 @@
+#pragma once
+
+#include "traffic/TrafficStatistics.h"
+
+#include <QVector>
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+class QPushButton;
+class QTableView;
+class QTableWidget;
+class QTimer;
+
+namespace opentop {
+
+class TrafficLog;
+class TrafficLogFilter;
+class TrafficLogModel;
+struct TrafficEntry;
+
+// The frames on the bus as a table, with filters, pause, save and per-drive statistics. Follows
+// TrafficLog::entryAdded (queued: the log appends from the bus thread).
+class TrafficLogView : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit TrafficLogView(TrafficLog* log, QWidget* parent = nullptr);
+
+    // While paused the log keeps recording but the view stands still; resuming catches up.
+    void setPaused(bool paused);
+    bool isPaused() const { return m_paused; }
+    // Empties the view and the statistics (the log itself keeps its frames).
+    void clear();
+    // Writes the frames the filters show, one TrafficEntry::toLine per line.
+    bool saveTo(const QString& path, QString* error = nullptr);
+
+    TrafficLogModel* model() const { return m_model; }
+    TrafficLogFilter* filter() const { return m_filter; }
+    const TrafficStatistics& statistics() const { return m_statistics; }
+
+private:
+    void addEntry(const TrafficEntry& entry);
+    void catchUp();
+    void addDriveChoice(int slave);
+    void applyFilters();
+    void refreshSoon();
+    void refresh();
+    void flush(); // pending entries into the model
+    void save();
+
+    TrafficLog* m_log;
+    TrafficLogModel* m_model;
+    TrafficLogFilter* m_filter;
+    TrafficStatistics m_statistics;
+    quint64 m_lastSequence = 0;
+    QVector<TrafficEntry> m_pending;
+    bool m_paused = false;
+    QComboBox* m_drive;
+    QComboBox* m_direction;
+    QCheckBox* m_errorsOnly;
+    QPushButton* m_pause;
+    QTableView* m_table;
+    QTableWidget* m_stats;
+    QTimer* m_refresh;
+};
+
+} // namespace opentop

@@ -1,0 +1,80 @@
+#pragma once
+
+#include "monitor/MonitorHub.h"
+#include "monitor/TrendHistory.h"
+
+#include <QPointer>
+#include <QString>
+#include <QVector>
+#include <functional>
+
+class QChart;
+class QDateTimeAxis;
+class QLineSeries;
+
+namespace opentop {
+
+class TrendAxes;
+
+// One series of a trend chart: a numeric monitor quantity of one drive.
+struct TrendSource
+{
+    int slave = 0;
+    QString key; // TrendHistory series key: "status.current_speed"
+};
+
+inline bool operator==(const TrendSource& a, const TrendSource& b)
+{
+    return a.slave == b.slave && a.key == b.key;
+}
+
+// The lines of a trend chart: each source's label and unit (from the hub's history, or from
+// the profile before the first sample), its series on the chart with a pen per drive and
+// quantity and the value axis of its unit, and the visible points drawn into it. Remembers
+// what each line drew last, so that an unchanged frozen view is not drawn again.
+class TrendLines
+{
+public:
+    struct Line
+    {
+        TrendSource source;
+        QString label;
+        QString unit;
+        QLineSeries* series = nullptr;
+        qint64 drawnFrom = -1;
+        qint64 drawnTo = -1;
+        qint64 drawnLast = -1;
+        int drawnCount = -1;
+    };
+    using NameOf = std::function<QString(const TrendSource&)>;
+
+    TrendLines(MonitorHub* hub, QChart* chart, QDateTimeAxis* timeAxis, TrendAxes* axes);
+
+    // New sources, described; rebuild() puts them on the chart.
+    void setSources(const QVector<TrendSource>& sources);
+    QVector<TrendSource> sources() const;
+    const QVector<Line>& lines() const { return m_lines; }
+    // Looked up each time: the hub drops a drive's history when the drive is removed.
+    const TrendHistory::Series* historyOf(const TrendSource& source) const;
+
+    // The chart's series, pens and axes for the current lines, each named by `nameOf`.
+    void rebuild(const NameOf& nameOf);
+    // Describes every line again; true when a label or unit changed (rebuild() then).
+    bool describeAgain();
+    // The points of [fromMs, toMs], thinned to `buckets`.
+    void draw(qint64 fromMs, qint64 toMs, int buckets);
+    // Each value axis fitted to the points of its lines in [fromMs, toMs].
+    void fitValueAxes(qint64 fromMs, qint64 toMs);
+
+private:
+    void describe(Line& line) const;
+    void drawLine(Line& line, qint64 fromMs, qint64 toMs, int buckets);
+
+    QPointer<MonitorHub> m_hub; // the chart may outlive it while a window closes
+    QChart* m_chart;
+    QDateTimeAxis* m_timeAxis;
+    TrendAxes* m_axes;
+    QVector<Line> m_lines;
+};
+
+} // namespace opentop

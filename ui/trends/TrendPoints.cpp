@@ -1,0 +1,85 @@
+#include "trends/TrendPoints.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace opentop {
+
+QList<QPointF> TrendPoints::visible(const TrendHistory::Series& series, qint64 fromMs, qint64 toMs,
+                                    int buckets)
+{
+    const QVector<TrendHistory::Point>& p = series.points;
+    QList<QPointF> points;
+    if (p.isEmpty())
+        return points;
+    // One point either side of the window, so that the line reaches its edges.
+    const int first = std::max(0, TrendHistory::lowerBound(series, fromMs) - 1);
+    const int end = std::min(int(p.size()), TrendHistory::lowerBound(series, toMs + 1) + 1);
+    const int n = end - first;
+    buckets = std::max(1, buckets);
+    if (n <= 4 * buckets || toMs <= fromMs) {
+        points.reserve(std::max(0, n));
+        for (int i = first; i < end; ++i)
+            points << QPointF(double(p[i].ms), p[i].value);
+        return points;
+    }
+    // Minimum and maximum of each bucket, in time order: spikes stay visible.
+    const double width = double(toMs - fromMs) / buckets;
+    int i = first;
+    while (i < end) {
+        const double bucket = std::floor(double(p[i].ms - fromMs) / width) + 1;
+        const qint64 bucketEnd = fromMs + qint64(bucket * width);
+        int lo = i;
+        int hi = i;
+        int j = i;
+        for (; j < end && p[j].ms < bucketEnd; ++j) {
+            lo = p[j].value < p[lo].value ? j : lo;
+            hi = p[j].value > p[hi].value ? j : hi;
+        }
+        for (int k : {std::min(lo, hi), std::max(lo, hi)}) {
+            if (points.isEmpty() || points.last().x() < double(p[k].ms))
+                points << QPointF(double(p[k].ms), p[k].value);
+        }
+        i = std::max(j, i + 1);
+    }
+    return points;
+}
+
+void TrendPoints::pad(double* lo, double* hi)
+{
+    if (*lo > *hi) {
+        *lo = 0;
+        *hi = 1;
+    } else if (*hi - *lo < 1e-9) {
+        // A flat line in the middle, not on the frame.
+        const double air = std::max(1.0, std::abs(*hi) * 0.1);
+        *lo -= air;
+        *hi += air;
+    } else {
+        // Not across zero when the values do not cross it: no empty band below a speed ramp.
+        const double air = (*hi - *lo) * 0.05;
+        *lo = *lo >= 0 ? std::max(0.0, *lo - air) : *lo - air;
+        *hi = *hi <= 0 ? std::min(0.0, *hi + air) : *hi + air;
+    }
+}
+
+int TrendPoints::niceTicks(double* lo, double* hi, int wanted)
+{
+    // Steps of 1, 2, 2.5 or 5 × 10^n: labels people read at a glance.
+    const double raw = (*hi - *lo) / std::max(1, wanted - 1);
+    if (!(raw > 0))
+        return 2;
+    const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+    double step = 10 * magnitude;
+    for (double f : {1.0, 2.0, 2.5, 5.0}) {
+        if (f * magnitude >= raw) {
+            step = f * magnitude;
+            break;
+        }
+    }
+    *lo = std::floor(*lo / step) * step;
+    *hi = std::ceil(*hi / step) * step;
+    return int(std::lround((*hi - *lo) / step)) + 1;
+}
+
+} // namespace opentop

@@ -1,0 +1,98 @@
+#include "widgets/StatusLight.h"
+
+#include <QPainter>
+#include <QPixmap>
+#include <algorithm>
+
+namespace opentop {
+
+namespace {
+
+void paintLed(QPainter& p, const QRectF& box, const QColor& c)
+{
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setPen(QPen(c.darker(160), 1.0));
+    // A light spot at the top left makes it read as a lamp, not a flat dot.
+    QRadialGradient g(box.center() - QPointF(box.width() / 5, box.height() / 5), box.width() / 1.5);
+    g.setColorAt(0, c.lighter(150));
+    g.setColorAt(1, c);
+    p.setBrush(g);
+    p.drawEllipse(box.adjusted(0.5, 0.5, -0.5, -0.5));
+}
+
+} // namespace
+
+StatusLight::StatusLight(QWidget* parent)
+    : QWidget(parent)
+{
+    setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
+    setFocusPolicy(Qt::NoFocus);
+    setLed(DriveStatus::Led::Grey, tr("Status not known yet"));
+}
+
+void StatusLight::setStatus(const DriveStatus& status)
+{
+    setLed(status.led, status.ledText());
+}
+
+void StatusLight::setLed(DriveStatus::Led led, const QString& meaning)
+{
+    m_led = led;
+    m_meaning = meaning;
+    const QString text = tr("Status light %1: %2").arg(DriveStatus::ledName(led), meaning);
+    setToolTip(text);
+    setAccessibleName(text);
+    update();
+}
+
+QSize StatusLight::sizeHint() const
+{
+    // Follows the font so that it scales with the user's text size and the screen.
+    const int d = fontMetrics().height();
+    return {d, d};
+}
+
+QSize StatusLight::minimumSizeHint() const
+{
+    return {8, 8};
+}
+
+QColor StatusLight::color(DriveStatus::Led led)
+{
+    switch (led) {
+    case DriveStatus::Led::Grey:
+        return QColor(0x9e, 0x9e, 0x9e);
+    case DriveStatus::Led::Green:
+        return QColor(0x2e, 0xb8, 0x3c);
+    case DriveStatus::Led::Orange:
+        return QColor(0xff, 0x8c, 0x00);
+    case DriveStatus::Led::SkyBlue:
+        return QColor(0x4f, 0xc3, 0xf7);
+    case DriveStatus::Led::Red:
+        return QColor(0xe5, 0x1c, 0x23);
+    case DriveStatus::Led::Purple:
+        return QColor(0x9c, 0x27, 0xb0);
+    case DriveStatus::Led::Blue:
+        return QColor(0x15, 0x4d, 0xd6);
+    }
+    return Qt::gray;
+}
+
+QPixmap StatusLight::pixmap(DriveStatus::Led led, int size, qreal devicePixelRatio)
+{
+    QPixmap pm(QSize(size, size) * devicePixelRatio);
+    pm.setDevicePixelRatio(devicePixelRatio);
+    pm.fill(Qt::transparent);
+    QPainter p(&pm);
+    paintLed(p, QRectF(0, 0, size, size), color(led));
+    return pm;
+}
+
+void StatusLight::paintEvent(QPaintEvent*)
+{
+    QPainter p(this);
+    const qreal d = std::min(width(), height());
+    paintLed(p, QRectF((width() - d) / 2, (height() - d) / 2, d, d), color(m_led));
+}
+
+} // namespace opentop

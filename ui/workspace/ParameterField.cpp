@@ -1,0 +1,194 @@
+#include "workspace/ParameterField.h"
+
+#include "profile/ValueCodec.h"
+#include "session/DeviceParameters.h"
+#include "session/DeviceSession.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+
+namespace opentop {
+
+namespace {
+
+bool isEnumeration(const ValueSpec& spec)
+{
+    return spec.ranges.isEmpty() && !spec.options.isEmpty();
+}
+
+// The label a code has in any context (a Mode2 input code while Mode1 is pending), or the code.
+QString anyLabel(const ParameterMeta& meta, qint64 code)
+{
+    for (const EnumOption& o : meta.spec.options) {
+        if (o.value == code)
+            return o.label;
+    }
+    for (const ValueCondition& c : meta.conditions) {
+        for (const EnumOption& o : c.spec.options) {
+            if (o.value == code)
+                return o.label;
+        }
+    }
+    return QString::number(code);
+}
+
+} // namespace
+
+ParameterField::ParameterField(DeviceParameters* parameters, const QString& name, QWidget* parent)
+    : QWidget(parent)
+    , m_parameters(parameters)
+    , m_name(name)
+    , m_unit(new QLabel(this))
+{
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    const DeviceParameters::Entry* e = parameters->entry(name);
+    const ParameterMeta& meta = *e->meta;
+    const ValueSpec& spec = meta.specFor(parameters->session()->context());
+    if (isEnumeration(spec) && meta.isWritable()) {
+        m_combo = new QComboBox(this);
+        m_combo->setObjectName(name);
+        layout->addWidget(m_combo, 1);
+        connect(m_combo, qOverload<int>(&QComboBox::activated), this,
+                [this](int index) { commit(m_combo->itemData(index).toString()); });
+    } else {
+        m_edit = new QLineEdit(this);
+        m_edit->setObjectName(name);
+        m_edit->setReadOnly(!meta.isWritable());
+        layout->addWidget(m_edit, 1);
+        connect(m_edit, &QLineEdit::textEdited, this, &ParameterField::check);
+        connect(m_edit, &QLineEdit::editingFinished, this, [this] {
+            if (m_edit->isModified())
+                commit(m_edit->text());
+            m_edit->setModified(false);
+        });
+    }
+    layout->addWidget(m_unit);
+    setFocusProxy(editor());
+    sync();
+}
+
+QWidget* ParameterField::editor() const
+{
+    return m_combo ? static_cast<QWidget*>(m_combo) : m_edit;
+}
+
+void ParameterField::enter(const QString& text)
+{
+    if (m_combo) {
+        commit(text);
+        return;
+    }
+    m_edit->setText(text);
+    check(text);
+    commit(text);
+}
+
+void ParameterField::setContextProvider(std::function<ValueContext()> provider)
+{
+    m_contextProvider = std::move(provider);
+    sync();
+}
+
+ValueContext ParameterField::context() const
+{
+    return m_contextProvider ? m_contextProvider() : m_parameters->session()->context();
+}
+
+void ParameterField::check(const QString& text)
+{
+    const DeviceParameters::Entry* e = m_parameters->entry(m_name);
+    const ValueCodec::Encoded encoded = ValueCodec::encodeText(*e->meta, text, context());
+    m_problem = text.trimmed().isEmpty() ? QString() : encoded.error;
+    applyStyle();
+}
+
+void ParameterField::commit(const QString& text)
+{
+    if (m_syncing || text.trimmed().isEmpty())
+        return;
+    m_problem = m_parameters->setPending(m_name, text);
+    applyStyle(); // the field keeps the refused text so the user can correct it
+}
+
+void ParameterField::sync()
+{
+    const DeviceParameters::Entry* e = m_parameters->entry(m_name);
+    const ParameterMeta& meta = *e->meta;
+    const ValueContext context = this->context();
+    const ValueSpec& spec = meta.specFor(context);
+    m_syncing = true;
+    m_unit->setText(spec.unit);
+    m_unit->setVisible(!spec.unit.isEmpty());
+    const bool pending = e->state == DeviceParameters::State::Pending ||
+                         (e->state == DeviceParameters::State::Failed && !e->pendingText.isEmpty());
+    if (m_combo) {
+        // The options follow the context (the I/O functions of the current control mode).
+        m_combo->clear();
+        for (const EnumOption& o : spec.options)
+            m_combo->addItem(o.label, QString::number(o.value));
+        const QVector<quint16> shown = pending ? e->pendingRegisters : e->device.registers;
+        int index = -1;
+        if (!shown.isEmpty()) {
+            const double raw = ValueCodec::registersToRaw(meta, shown);
+            index = m_combo->findData(QString::number(qint64(raw)));
+            if (index < 0) { // a code this context does not offer: show it, marked
+                m_combo->addItem(tr("%1 (not valid now)").arg(anyLabel(meta, qint64(raw))),
+                                 QString::number(qint64(raw)));
+                index = m_combo->count() - 1;
+            }
+        }
+        m_combo->setCurrentIndex(index);
+    } else if (!m_edit->hasFocus() || !m_edit->isModified()) {
+        if (pending) {
+            m_edit->setText(e->pendingText);
+        } else if (e->device.valid) {
+            QString text = ValueCodec::format(meta, e->device, context);
+            if (!spec.unit.isEmpty() && text.endsWith(QLatin1Char(' ') + spec.unit))
+                text.chop(spec.unit.size() + 1);
+            m_edit->setText(text);
+        } else {
+            m_edit->clear();
+        }
+        m_edit->setPlaceholderText(e->device.valid ? QString() : tr("not read"));
+    }
+    m_syncing = false;
+    QString tip = QStringLiteral("<b>%1</b> (%2, %3)")
+                      .arg(meta.label.toHtmlEscaped(), meta.name, meta.addressText());
+    if (!meta.help.isEmpty())
+        tip += QStringLiteral("<br>") + meta.help.toHtmlEscaped();
+    if (meta.isWritable())
+        tip += QStringLiteral("<br>") +
+               tr("Allowed: %1").arg(ValueCodec::allowedText(meta, context).toHtmlEscaped());
+    if (e->device.valid)
+        tip += QStringLiteral("<br>") +
+               tr("On the drive: %1")
+                   .arg(ValueCodec::format(meta, e->device, context).toHtmlEscaped());
+    if (!e->message.isEmpty())
+        tip += QStringLiteral("<br><span style='color:#b01c1c'>%1</span>")
+                   .arg(e->message.toHtmlEscaped());
+    editor()->setToolTip(tip);
+    applyStyle();
+}
+
+void ParameterField::applyStyle()
+{
+    const DeviceParameters::Entry* e = m_parameters->entry(m_name);
+    QString style;
+    if (!m_problem.isEmpty() || e->state == DeviceParameters::State::Failed ||
+        !e->message.isEmpty())
+        style = QStringLiteral("border: 2px solid #c62828; background: #fdecea;");
+    else if (e->state == DeviceParameters::State::Pending)
+        style =
+            QStringLiteral("border: 2px solid #ef8f00; background: #fff4de; font-weight: bold;");
+    else if (e->state == DeviceParameters::State::Writing)
+        style = QStringLiteral("border: 2px solid #1565c0;");
+    editor()->setStyleSheet(style);
+    editor()->setAccessibleDescription(m_problem.isEmpty() ? e->message : m_problem);
+    if (!m_problem.isEmpty())
+        editor()->setToolTip(m_problem);
+}
+
+} // namespace opentop

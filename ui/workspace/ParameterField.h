@@ -1,0 +1,56 @@
+#pragma once
+
+#include "profile/ValueContext.h"
+
+#include <QWidget>
+#include <functional>
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+
+namespace opentop {
+
+class DeviceParameters;
+
+// One parameter as an input field: a drop-down for enumerations, a line edit for numbers and
+// text, with the unit beside it, help and allowed values in the tooltip. Input is checked as it
+// is typed (a refused value is marked red and says what is allowed) and becomes a pending edit
+// when accepted; pending, failed and read-only states are visible. Device values update the
+// field only while the user is not editing it.
+class ParameterField : public QWidget
+{
+    Q_OBJECT
+public:
+    ParameterField(DeviceParameters* parameters, const QString& name, QWidget* parent = nullptr);
+
+    QString parameterName() const { return m_name; }
+    QWidget* editor() const;
+    // Shows the current device value / pending edit / state. Called on entryChanged.
+    void sync();
+    // What the last typed text was refused for; empty when accepted.
+    QString problem() const { return m_problem; }
+    // Programmatic input, as if typed and confirmed (tests, multi-field editors).
+    void enter(const QString& text);
+    // Where allowed values and drop-down options come from; by default the session's context
+    // (device values). A page whose choices must follow another parameter's pending edit (the
+    // I/O functions of a pending control mode) supplies its own. Re-syncs the field.
+    void setContextProvider(std::function<ValueContext()> provider);
+
+private:
+    void commit(const QString& text);
+    void check(const QString& text);
+    void applyStyle();
+    ValueContext context() const;
+
+    DeviceParameters* m_parameters;
+    QString m_name;
+    QComboBox* m_combo = nullptr;
+    QLineEdit* m_edit = nullptr;
+    QLabel* m_unit;
+    QString m_problem;
+    bool m_syncing = false;
+    std::function<ValueContext()> m_contextProvider;
+};
+
+} // namespace opentop

@@ -1,0 +1,127 @@
+#include "workspace/ParameterPage.h"
+
+#include "session/DeviceParameters.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QTimer>
+#include <QVBoxLayout>
+
+namespace opentop {
+
+ParameterPage::ParameterPage(DeviceParameters* parameters, const QString& title, QWidget* parent)
+    : QWidget(parent)
+    , m_parameters(parameters)
+    , m_title(title)
+    , m_content(new QWidget(this))
+    , m_status(new QLabel(this))
+    , m_write(new QPushButton(tr("&Write page"), this))
+    , m_revert(new QPushButton(tr("Re&vert"), this))
+    , m_reread(new QPushButton(tr("Re-&read"), this))
+{
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(m_content, 1);
+    auto* buttons = new QHBoxLayout;
+    m_status->setWordWrap(true);
+    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    buttons->addWidget(m_status, 1);
+    buttons->addWidget(m_reread);
+    buttons->addWidget(m_revert);
+    buttons->addWidget(m_write);
+    layout->addLayout(buttons);
+    m_write->setToolTip(
+        tr("Write this page's pending edits to the drive and verify them by reading back"));
+    m_revert->setToolTip(tr("Discard this page's pending edits"));
+    m_reread->setToolTip(tr("Read this page's values from the drive again (edits stay)"));
+    connect(m_write, &QPushButton::clicked, this, &ParameterPage::writePage);
+    connect(m_revert, &QPushButton::clicked, this, &ParameterPage::revertPage);
+    connect(m_reread, &QPushButton::clicked, this, &ParameterPage::refresh);
+    connect(parameters, &DeviceParameters::entryChanged, this, [this](const QString& name) {
+        if (parameterNames().contains(name)) {
+            parameterChanged(name);
+            updateButtons();
+            emit pendingChanged();
+        }
+    });
+    // parameterNames() is the subclass's: ask it once construction is complete.
+    QTimer::singleShot(0, this, [this] { updateButtons(); });
+}
+
+void ParameterPage::setStatus(const QString& text, bool error)
+{
+    m_status->setText(text);
+    m_status->setStyleSheet(error ? QStringLiteral("color: #b01c1c;") : QString());
+}
+
+void ParameterPage::updateButtons()
+{
+    QStringList pending;
+    for (const QString& n : m_parameters->pendingNames()) {
+        if (parameterNames().contains(n))
+            pending << n;
+    }
+    m_write->setEnabled(!m_busy && !pending.isEmpty());
+    m_revert->setEnabled(!m_busy && !pending.isEmpty());
+    m_reread->setEnabled(!m_busy);
+    m_write->setText(pending.isEmpty() ? tr("&Write page")
+                                       : tr("&Write page (%1)").arg(pending.size()));
+}
+
+void ParameterPage::refresh()
+{
+    QStringList readable;
+    for (const QString& n : parameterNames()) {
+        const auto* e = m_parameters->entry(n);
+        if (e && e->meta->isReadable())
+            readable << n;
+    }
+    m_busy = true;
+    updateButtons();
+    setStatus(tr("Reading…"));
+    m_parameters->refresh(readable, [this](int failed) {
+        m_busy = false;
+        updateButtons();
+        setStatus(failed ? tr("%n value(s) could not be read", nullptr, failed) : QString(),
+                  failed > 0);
+        emit operationFinished();
+    });
+}
+
+void ParameterPage::writePage()
+{
+    QStringList pending;
+    for (const QString& n : m_parameters->pendingNames()) {
+        if (parameterNames().contains(n))
+            pending << n;
+    }
+    if (pending.isEmpty())
+        return;
+    const QString blocker = writeBlocker();
+    if (!blocker.isEmpty()) {
+        setStatus(blocker, true); // nothing is sent
+        return;
+    }
+    m_busy = true;
+    updateButtons();
+    setStatus(tr("Writing %n value(s)…", nullptr, pending.size()));
+    m_parameters->write(pending, [this, pending](int failed) {
+        m_busy = false;
+        updateButtons();
+        setStatus(failed ? tr("%n write(s) failed; see the marked fields", nullptr, failed)
+                         : tr("%n value(s) written and verified", nullptr, pending.size()),
+                  failed > 0);
+        emit operationFinished();
+    });
+}
+
+void ParameterPage::revertPage()
+{
+    for (const QString& n : m_parameters->pendingNames()) {
+        if (parameterNames().contains(n))
+            m_parameters->revert(n);
+    }
+    setStatus(QString());
+}
+
+} // namespace opentop
