@@ -86,7 +86,8 @@ bool CliContext::connectBus()
     m_client = std::move(made.client);
     const QString openError = m_client->openBlocking();
     if (!openError.isEmpty()) {
-        m_err << tr("error: cannot open %1: %2").arg(m_client->describe(), openError) << Qt::endl;
+        // The transport's text already names the port ("Cannot open /dev/ttyUSB0 19200 8N1: ...").
+        m_err << tr("error: %1").arg(openError) << Qt::endl;
         m_client.reset();
         return false;
     }

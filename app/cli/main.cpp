@@ -3,12 +3,16 @@
 #include "CliContext.h"
 
 #include <QCoreApplication>
+#include <QLoggingCategory>
 #include <QTextStream>
 #include <cstdio>
 
 int main(int argc, char* argv[])
 {
     QCoreApplication app(argc, argv);
+    // Every failure reaches the user as the command's own message; the modules' log lines are
+    // for developers (QT_LOGGING_RULES="opentop.*=true" shows them again).
+    QLoggingCategory::setFilterRules(QStringLiteral("opentop.*.warning=false"));
     QCoreApplication::setApplicationName(QStringLiteral("opentop-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(OPENTOP_VERSION));
     opentop::CliContext::installInterruptHandler();

@@ -27,7 +27,11 @@ QString ConnectionDialog::explainOpenError(const ConnectionSettings& settings, c
                      "or another OpenTOP window (\"in use by another OpenTOP connection\"). "
                      "Close it, or disconnect the other window, and connect again.");
     }
-    if (mentions(error, {"permission denied", "EACCES", "dialout", "not permitted"})) {
+    // The serial backend's own text may already give the usermod command: don't say it twice.
+    if (error.contains(QStringLiteral("usermod"))) {
+        checks << tr("Your user may not open serial ports: add it to the dialout group with the "
+                     "command above, then log out and in again.");
+    } else if (mentions(error, {"permission denied", "EACCES", "dialout", "not permitted"})) {
         checks << tr("Your user may not open serial ports. Add it to the dialout group:\n"
                      "    sudo usermod -aG dialout $USER\n"
                      "then log out and in again (the group applies to new sessions only).");

@@ -147,6 +147,14 @@ TEST_F(ConnectionDialogTest, OpenErrorsSayWhatToCheck)
     EXPECT_TRUE(denied.contains(QStringLiteral("sudo usermod -aG dialout $USER")))
         << qPrintable(denied);
     EXPECT_TRUE(denied.contains(QStringLiteral("log out and in")));
+    // The serial backend's own text already gives the command: the explanation does not repeat it.
+    const QString backendText = QStringLiteral(
+        "Cannot open /dev/ttyUSB0 19200 8N1: Permission denied: your user may not open serial "
+        "ports. Add it to the dialout group with\n    sudo usermod -aG dialout $USER\nthen log out "
+        "and in again (the group applies to new sessions only).");
+    const QString once = ConnectionDialog::explainOpenError(s, backendText);
+    EXPECT_EQ(once.count(QStringLiteral("usermod")), 1) << qPrintable(once);
+    EXPECT_TRUE(once.contains(QStringLiteral("dialout group with the command above")));
 
     const QString missing = ConnectionDialog::explainOpenError(
         s, QStringLiteral("Cannot open /dev/ttyUSB0 19200 8N1: No such file or directory"));
