@@ -15,7 +15,10 @@
 #include "monitor/MonitorHub.h"
 #include "monitor/MonitorPage.h"
 #include "profile/ProfileRegistry.h"
+#include "run/ExitCheck.h"
+#include "run/ExitGuard.h"
 #include "run/StopAllButton.h"
+#include "run/StopAllKeys.h"
 #include "run/TestRunPanel.h"
 #include "session/DeviceIdentifier.h"
 #include "session/DeviceParameters.h"
@@ -39,6 +42,7 @@
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTableView>
+#include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
 
@@ -79,6 +83,9 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     }
     statusBar()->addPermanentWidget(m_connectionLabel);
     buildActions();
+    // STOP ALL's keys work everywhere in the program, modal dialogs included; the button itself
+    // is made per connection.
+    new StopAllKeys([this] { return m_stopAll; }, this);
     QSettings settings;
     if (!restoreGeometry(settings.value(QStringLiteral("mainWindow/geometry")).toByteArray()))
         resize(1280, 800);
@@ -166,6 +173,10 @@ void MainWindow::teardown()
     }
     delete m_stopAll;
     m_stopAll = nullptr;
+    if (m_exitGuard) {
+        m_exitGuard->deleteLater(); // its answer may be what brought us here
+        m_exitGuard = nullptr;
+    }
     delete m_banner;
     m_banner = nullptr;
     m_log->setDescriber({});
@@ -202,6 +213,8 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
     // STOP ALL is always on the toolbar and on the keyboard (StopAllButton::shortcuts()).
     m_stopAll = new StopAllButton(m_drives, m_toolbar);
     m_stopAllAction = m_toolbar->addWidget(m_stopAll);
+    // No way out of this bus (quit, another connection) leaves a motor running unannounced.
+    m_exitGuard = new ExitGuard(m_drives, m_poller, this);
     m_banner = new AlarmBanner(m_poller, m_central);
     static_cast<QVBoxLayout*>(m_central->layout())->insertWidget(0, m_banner);
     connect(m_banner, &AlarmBanner::showAlarms, this, [this](int slave) {
@@ -361,8 +374,14 @@ void MainWindow::exportAlarms()
 void MainWindow::chooseConnection()
 {
     ConnectionDialog dialog(this);
-    if (dialog.exec() == QDialog::Accepted)
-        connectTo(dialog.settings());
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const ConnectionSettings settings = dialog.settings();
+    if (!m_exitGuard) {
+        connectTo(settings);
+        return;
+    }
+    m_exitGuard->check(tr("connect elsewhere"), [this, settings] { connectTo(settings); });
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)
@@ -380,6 +399,20 @@ void MainWindow::closeEvent(QCloseEvent* event)
             QMessageBox::Discard | QMessageBox::Cancel,
             QMessageBox::Cancel) != QMessageBox::Discard) {
         event->ignore();
+        return;
+    }
+    // Drives running or left in communication priority: ask first (outside this event).
+    if (!m_leavingChecked && m_exitGuard && m_drives && m_poller &&
+        !ExitCheck::collect(*m_drives, *m_poller).isEmpty()) {
+        event->ignore();
+        QTimer::singleShot(0, this, [this] {
+            if (m_exitGuard) {
+                m_exitGuard->check(tr("quit"), [this] {
+                    m_leavingChecked = true;
+                    close();
+                });
+            }
+        });
         return;
     }
     QSettings settings;

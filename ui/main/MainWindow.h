@@ -23,6 +23,7 @@ class DriveWorkspace;
 class AlarmBanner;
 class ModbusClient;
 class StopAllButton;
+class ExitGuard;
 class BusOverview;
 class MonitorHub;
 class TrendPanel;
@@ -54,6 +55,8 @@ public:
     DriveWorkspace* workspace() const { return m_workspace; }
     TrafficLog* trafficLog() const { return m_log.get(); }
     StopAllButton* stopAllButton() const { return m_stopAll; }
+    ExitGuard* exitGuard() const { return m_exitGuard; }
+    DriveStatusPoller* statusPoller() const { return m_poller; }
     MonitorHub* monitorHub() const { return m_hub; }
     BusOverview* busOverview() const { return m_overview; }
     TrendPanel* trendPanel() const { return m_trends; }
@@ -91,6 +94,8 @@ private:
     QWidget* m_central;
     AlarmBanner* m_banner = nullptr;
     StopAllButton* m_stopAll = nullptr;
+    ExitGuard* m_exitGuard = nullptr;
+    bool m_leavingChecked = false; // the user has answered the exit question: close now
     QAction* m_stopAllAction = nullptr;
     QToolBar* m_toolbar = nullptr;
     QSplitter* m_splitter;

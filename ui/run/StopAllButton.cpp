@@ -1,12 +1,13 @@
 #include "run/StopAllButton.h"
 
+#include "run/StopAllKeys.h"
+
 #include "bus/BusDrives.h"
 #include "profile/ProfileRegistry.h"
 #include "profile/ValueCodec.h"
 #include "session/DeviceSession.h"
 
 #include <QMessageBox>
-#include <QShortcut>
 
 namespace opentop {
 
@@ -40,15 +41,12 @@ QList<QKeySequence> StopAllButton::shortcuts()
 
 void StopAllButton::install(QWidget* window)
 {
-    for (const QKeySequence& keys : shortcuts()) {
-        auto* shortcut = new QShortcut(keys, window);
-        // Also while a non-modal window (a test run panel, a result) has the focus.
-        shortcut->setContext(Qt::ApplicationShortcut);
-        QObject::connect(shortcut, &QShortcut::activated, window, [window] {
-            if (auto* button = window->findChild<StopAllButton*>())
-                button->stopAll();
-        });
-    }
+    QPointer<QWidget> guarded(window);
+    new StopAllKeys(
+        [guarded]() -> StopAllButton* {
+            return guarded ? guarded->findChild<StopAllButton*>() : nullptr;
+        },
+        window);
 }
 
 QMessageBox* StopAllButton::resultWindow() const

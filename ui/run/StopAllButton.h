@@ -11,8 +11,8 @@ namespace opentop {
 
 class BusDrives;
 
-// STOP ALL: big, red and always there. One click (or Ctrl+Shift+S anywhere in the window, see
-// install()) broadcasts every family's stop command and then confirms that each drive known in
+// STOP ALL: big, red and always there. One click (or Pause / Ctrl+Shift+S anywhere in the
+// application, modal dialogs included: see install()) broadcasts every family's stop command and then confirms that each drive known in
 // the BusDrives has stopped. Never asks first: stopping is always allowed. The result shows in
 // a non-modal window that names each drive still running or not answering.
 class StopAllButton : public QPushButton
@@ -23,7 +23,8 @@ public:
 
     // The key sequences that press STOP ALL in a window with install().
     static QList<QKeySequence> shortcuts();
-    // Makes shortcuts() press the window's StopAllButton from anywhere in the application.
+    // Makes shortcuts() press the window's StopAllButton from anywhere in the application,
+    // modal dialogs included (StopAllKeys).
     static void install(QWidget* window);
 
     void setTiming(const StopConfirmer::Timing& timing) { m_timing = timing; }

@@ -11,23 +11,33 @@
 #include "bus/BusOverview.h"
 #include "bus/BusOverviewModel.h"
 #include "bus/BusPanel.h"
+#include "bus/DriveStatusPoller.h"
 #include "monitor/MonitorHub.h"
 #include "monitor/MonitorPage.h"
 #include "pages/EditorRegistry.h"
+#include "profile/ProfileRegistry.h"
+#include "run/ExitCheck.h"
+#include "run/ExitGuard.h"
+#include "run/RunControl.h"
 #include "run/StopAllButton.h"
 #include "session/DeviceParameters.h"
+#include "session/DeviceSession.h"
 #include "workspace/DriveWorkspace.h"
 #include "workspace/ParameterField.h"
 #include "workspace/ParameterPage.h"
 
+#include <QApplication>
 #include <QCoreApplication>
 #include <QDeadlineTimer>
 #include <QDockWidget>
 #include <QItemSelectionModel>
+#include <QMessageBox>
 #include <QRegularExpression>
 #include <QSettings>
 #include <QTabWidget>
 #include <QTableView>
+#include <QTest>
+#include <QTimer>
 #include <gtest/gtest.h>
 
 using namespace opentop;
@@ -89,6 +99,52 @@ protected:
             view->selectionModel()->select(view->model()->index(row, 0),
                                            QItemSelectionModel::Select | QItemSelectionModel::Rows);
         }
+    }
+
+    // Starts a DBU the way the Test run page does: communication priority, then start.
+    void startDrive(int slave)
+    {
+        bus->control(slave, {QStringLiteral("set"), QStringLiteral("0x100D"), QStringLiteral("2")});
+        RunControl control(window->client(), ProfileRegistry::builtIn());
+        RunControl::Command start;
+        start.action = RunControl::Action::Start;
+        bool done = false;
+        RunControl::Outcome outcome;
+        control.execute(window->drives()->session(slave), start, [&](const RunControl::Outcome& o) {
+            outcome = o;
+            done = true;
+        });
+        ASSERT_TRUE(waitFor([&] { return done; }));
+        ASSERT_TRUE(outcome.ok) << qPrintable(outcome.error);
+    }
+    int speedOf(int slave) { return simRegister(slave, 0x0109); }
+
+    // Answers the exit question with `key` (Return: the default button, Escape: Cancel) once it
+    // shows, and returns its text.
+    std::shared_ptr<QString> answerExitQuestion(Qt::Key key)
+    {
+        auto text = std::make_shared<QString>();
+        QObject::connect(
+            window->exitGuard(), &ExitGuard::asking, window.get(),
+            [text, key] {
+                auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+                ASSERT_NE(box, nullptr);
+                *text = box->text() + QLatin1Char('\n') + box->informativeText() +
+                        QLatin1Char('\n') + box->defaultButton()->text();
+                QTest::keyClick(box, key);
+            },
+            Qt::SingleShotConnection);
+        return text;
+    }
+    // The status poller has seen what the exit check needs to know.
+    bool leftBehind(int slave)
+    {
+        for (const DriveLeftBehind& d :
+             ExitCheck::collect(*window->drives(), *window->statusPoller())) {
+            if (d.slave == slave)
+                return true;
+        }
+        return false;
     }
 
     std::shared_ptr<SimBus> bus;
@@ -202,4 +258,72 @@ TEST_F(MainWindowTest, ADrivesMonitorComesFirstAndTheBusViewsPollOnlyWhileShown)
     window->monitorAll();
     EXPECT_EQ(window->monitorHub()->watched(), QVector<int>{9});
     EXPECT_TRUE(waitFor([&] { return window->monitorHub()->latest(9).has_value(); }));
+}
+
+TEST_F(MainWindowTest, PauseAndCtrlShiftSStopEveryDriveFromTheWindowAndFromAModalDialog)
+{
+    startDrive(1);
+    startDrive(2);
+    ASSERT_TRUE(waitFor([&] { return speedOf(1) > 0 && speedOf(2) > 0; }));
+
+    // Pause, pressed wherever the focus is in the main window.
+    window->activateWindow();
+    QWidget* focus = QApplication::focusWidget() ? QApplication::focusWidget() : window.get();
+    QTest::keyClick(focus, Qt::Key_Pause);
+    EXPECT_TRUE(waitFor([&] { return speedOf(1) == 0 && speedOf(2) == 0; }, 15000))
+        << "speeds " << speedOf(1) << ", " << speedOf(2);
+
+    // Ctrl+Shift+S while a modal dialog blocks the window (a QShortcut would not fire here).
+    startDrive(1);
+    ASSERT_TRUE(waitFor([&] { return speedOf(1) > 0; }));
+    bool pressed = false;
+    QTimer::singleShot(100, [&] {
+        QWidget* modal = QApplication::activeModalWidget();
+        ASSERT_NE(modal, nullptr);
+        QTest::keyClick(modal, Qt::Key_S, Qt::ControlModifier | Qt::ShiftModifier);
+        pressed = true;
+        QTimer::singleShot(0, modal, &QWidget::close);
+    });
+    QMessageBox::information(window.get(), QStringLiteral("modal"), QStringLiteral("a dialog"));
+    EXPECT_TRUE(pressed);
+    EXPECT_TRUE(waitFor([&] { return speedOf(1) == 0; }, 15000)) << "speed " << speedOf(1);
+}
+
+TEST_F(MainWindowTest, QuittingWithARunningDriveNamesItAndStopsItByDefault)
+{
+    startDrive(1);
+    ASSERT_TRUE(waitFor([&] { return speedOf(1) > 0 && leftBehind(1); }));
+    auto question = answerExitQuestion(Qt::Key_Return);
+    EXPECT_FALSE(window->close()); // not yet: the question comes first
+    ASSERT_TRUE(waitFor([&] { return !window->isVisible(); }, 20000)) << qPrintable(*question);
+    EXPECT_TRUE(question->contains(QStringLiteral("Machine number 1 (DBU200-D): Running CW")))
+        << qPrintable(*question);
+    EXPECT_TRUE(question->contains(QStringLiteral("communication priority")));
+    EXPECT_TRUE(question->endsWith(QStringLiteral("Stop the drives"))) << qPrintable(*question);
+    EXPECT_EQ(speedOf(1), 0); // stopped before the window closed
+}
+
+TEST_F(MainWindowTest, CancellingTheExitQuestionKeepsTheWindowAndTheDriveRunning)
+{
+    startDrive(1);
+    ASSERT_TRUE(waitFor([&] { return speedOf(1) > 0 && leftBehind(1); }));
+    auto question = answerExitQuestion(Qt::Key_Escape);
+    window->close();
+    ASSERT_TRUE(waitFor([&] { return !question->isEmpty(); }));
+    QTest::qWait(300);
+    EXPECT_TRUE(window->isVisible());
+    EXPECT_GT(speedOf(1), 0);
+}
+
+TEST_F(MainWindowTest, ADriveLeftInCommunicationPriorityIsGivenBackToItsInputs)
+{
+    bus->control(2, {QStringLiteral("set"), QStringLiteral("0x100D"), QStringLiteral("2")});
+    ASSERT_TRUE(waitFor([&] { return leftBehind(2); }));
+    auto question = answerExitQuestion(Qt::Key_Return); // not running: the default gives back
+    window->close();
+    ASSERT_TRUE(waitFor([&] { return !window->isVisible(); }, 20000)) << qPrintable(*question);
+    EXPECT_TRUE(question->contains(QStringLiteral("Machine number 2")));
+    EXPECT_FALSE(question->contains(QStringLiteral("Machine number 1")));
+    EXPECT_TRUE(question->endsWith(QStringLiteral("Give control back (I/O priority)")));
+    EXPECT_EQ(simRegister(2, 0x100D), 1); // I/O priority, written and verified
 }

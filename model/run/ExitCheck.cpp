@@ -1,0 +1,46 @@
+#include "run/ExitCheck.h"
+
+#include "bus/BusDrives.h"
+#include "bus/DriveStatusPoller.h"
+#include "session/DeviceSession.h"
+
+namespace opentop {
+
+namespace {
+const QString kIoPriority = QStringLiteral("ioPriority");
+}
+
+QString DriveLeftBehind::text() const
+{
+    QStringList what;
+    if (running)
+        what << state;
+    if (busPriority)
+        what << ExitCheck::tr("in communication priority (its own inputs cannot stop it)");
+    return ExitCheck::tr("Machine number %1 (%2): %3")
+        .arg(slave)
+        .arg(model, what.join(QStringLiteral(", ")));
+}
+
+QVector<DriveLeftBehind> ExitCheck::collect(const BusDrives& drives,
+                                            const DriveStatusPoller& poller)
+{
+    QVector<DriveLeftBehind> left;
+    for (int slave : drives.slaves()) {
+        const DriveStatus status = poller.status(slave);
+        DriveLeftBehind d;
+        d.slave = slave;
+        d.model = drives.info(slave).shortModel();
+        d.running = status.running.value_or(false);
+        d.busPriority = status.motionPriority.value_or(false);
+        if (!d.running && !d.busPriority)
+            continue;
+        d.state = status.ledText();
+        if (const DeviceSession* session = drives.session(slave))
+            d.canReturn = session->profile().role(kIoPriority) != nullptr;
+        left << d;
+    }
+    return left;
+}
+
+} // namespace opentop
