@@ -12,9 +12,10 @@ namespace opentop {
 class BusDrives;
 
 // STOP ALL: big, red and always there. One click (or Pause / Ctrl+Shift+S anywhere in the
-// application, modal dialogs included: see install()) broadcasts every family's stop command and then confirms that each drive known in
-// the BusDrives has stopped. Never asks first: stopping is always allowed. The result shows in
-// a non-modal window that names each drive still running or not answering.
+// application, modal dialogs included: see install()) broadcasts every family's stop command and
+// then confirms that each drive known in the BusDrives has stopped. Never asks first: stopping is
+// always allowed. The result shows in a non-modal window that names each drive still running or not
+// answering.
 class StopAllButton : public QPushButton
 {
     Q_OBJECT
