@@ -129,7 +129,11 @@ QWidget* ConnectionDialog::makeSerialPage()
     connect(refresh, &QPushButton::clicked, this, &ConnectionDialog::refreshPorts);
     portRow->addWidget(m_port, 1);
     portRow->addWidget(refresh);
-    form->addRow(tr("&Port:"), portRow);
+    // A row holding a layout gets no buddy from QFormLayout, and "&Port:" would show its "&".
+    auto* portLabel = new QLabel(tr("&Port:"), page);
+    portLabel->setObjectName(QStringLiteral("portLabel"));
+    portLabel->setBuddy(m_port);
+    form->addRow(portLabel, portRow);
     auto* hint = new QLabel(SerialPortList::typedPathHint(), page);
     hint->setWordWrap(true);
     form->addRow(QString(), hint);

@@ -188,6 +188,9 @@ void MainWindow::teardown()
     m_drives = nullptr;
     m_client.reset(); // bounded shutdown of the bus worker
     m_connected = false;
+    // A start confirmed for this bus says nothing about the next one (another machine may use
+    // the same machine numbers).
+    TestRunPanel::forgetConfirmations();
 }
 
 void MainWindow::connectTo(const ConnectionSettings& settings,

@@ -113,12 +113,19 @@ void StopAllButton::showReport(const StopReport& report)
 {
     m_reportText = describe(report);
     const bool ok = report.broadcastOk() && report.allStopped();
+    // With no drive known nothing was checked: the title must not claim they stopped.
+    const QString title = !report.broadcastOk()     ? tr("STOP ALL: the stop broadcast FAILED")
+                          : report.drives.isEmpty() ? tr("STOP ALL: stop sent, no drive checked")
+                          : ok                      ? tr("STOP ALL: every drive stopped")
+                               : tr("STOP ALL: not every drive is confirmed stopped");
+    m_reportTitle = title;
     if (m_result)
         m_result->close();
-    auto* box = new QMessageBox(ok ? QMessageBox::Information : QMessageBox::Critical,
-                                ok ? tr("STOP ALL: every drive stopped")
-                                   : tr("STOP ALL: not every drive is confirmed stopped"),
-                                m_reportText, QMessageBox::Close, window());
+    auto* box = new QMessageBox(ok && !report.drives.isEmpty() ? QMessageBox::Information
+                                                               : QMessageBox::Warning,
+                                title, m_reportText, QMessageBox::Close, window());
+    if (!ok)
+        box->setIcon(QMessageBox::Critical);
     box->setObjectName(QStringLiteral("stopAllResult"));
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->setWindowModality(Qt::NonModal);

@@ -32,6 +32,7 @@ public:
     bool isStopping() const { return m_running > 0; }
     // The result of the last stop, as shown in the result window.
     QString reportText() const { return m_reportText; }
+    QString reportTitle() const { return m_reportTitle; }
     // The non-modal result window of the last stop (nullptr once closed).
     QMessageBox* resultWindow() const;
 
@@ -50,6 +51,7 @@ private:
     StopConfirmer::Timing m_timing;
     int m_running = 0;
     QString m_reportText;
+    QString m_reportTitle;
     QPointer<QMessageBox> m_result;
 };
 

@@ -1,6 +1,8 @@
 #include "connection/ConnectionDialog.h"
 
+#include <QComboBox>
 #include <QCoreApplication>
+#include <QLabel>
 #include <QSettings>
 #include <QTemporaryDir>
 #include <gtest/gtest.h>
@@ -167,4 +169,20 @@ TEST_F(ConnectionDialogTest, OpenErrorsSayWhatToCheck)
     EXPECT_TRUE(silent.contains(QStringLiteral("parity")));
     EXPECT_TRUE(silent.contains(QStringLiteral("A and B")));
     EXPECT_FALSE(silent.contains(QStringLiteral("dialout")));
+}
+
+TEST_F(ConnectionDialogTest, EveryLabelWithAMnemonicHasABuddySoNoAmpersandShows)
+{
+    ConnectionDialog dialog;
+    int checked = 0;
+    for (QLabel* label : dialog.findChildren<QLabel*>()) {
+        if (!label->text().contains(QLatin1Char('&')) || label->textFormat() == Qt::RichText)
+            continue;
+        ++checked;
+        EXPECT_NE(label->buddy(), nullptr) << qPrintable(label->text());
+    }
+    EXPECT_GT(checked, 0);
+    auto* port = dialog.findChild<QLabel*>(QStringLiteral("portLabel"));
+    ASSERT_NE(port, nullptr);
+    EXPECT_EQ(port->buddy(), dialog.findChild<QComboBox*>(QStringLiteral("port")));
 }

@@ -20,6 +20,7 @@
 #include "run/ExitGuard.h"
 #include "run/RunControl.h"
 #include "run/StopAllButton.h"
+#include "run/TestRunPanel.h"
 #include "session/DeviceParameters.h"
 #include "session/DeviceSession.h"
 #include "workspace/DriveWorkspace.h"
@@ -32,6 +33,7 @@
 #include <QDockWidget>
 #include <QItemSelectionModel>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QRegularExpression>
 #include <QSettings>
 #include <QTabWidget>
@@ -326,4 +328,32 @@ TEST_F(MainWindowTest, ADriveLeftInCommunicationPriorityIsGivenBackToItsInputs)
     EXPECT_FALSE(question->contains(QStringLiteral("Machine number 1")));
     EXPECT_TRUE(question->endsWith(QStringLiteral("Give control back (I/O priority)")));
     EXPECT_EQ(simRegister(2, 0x100D), 1); // I/O priority, written and verified
+}
+
+TEST_F(MainWindowTest, AStartConfirmationDoesNotSurviveAReconnection)
+{
+    bus->control(1, {QStringLiteral("set"), QStringLiteral("0x100D"), QStringLiteral("2")});
+    select({1});
+    TestRunPanel* panel = nullptr;
+    ASSERT_TRUE(waitFor([&] {
+        panel = window->findChild<TestRunPanel*>();
+        return panel && panel->commandsEnabled();
+    }));
+    panel->findChild<QPushButton*>(QStringLiteral("start"))->click();
+    QMessageBox* box = nullptr;
+    ASSERT_TRUE(waitFor([&] {
+        box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        return box != nullptr;
+    }));
+    box->button(QMessageBox::Yes)->click();
+    ASSERT_TRUE(waitFor([&] { return speedOf(1) > 0; }));
+    EXPECT_TRUE(TestRunPanel::startConfirmed(1));
+
+    // Another connection may be another machine with the same numbers: ask again.
+    ConnectionSettings again;
+    again.kind = ConnectionSettings::Kind::Simulated;
+    again.simSpec = QStringLiteral("dbu200@1");
+    again.timeoutMs = 100;
+    window->connectTo(again, {{1, QStringLiteral("dbu200")}});
+    EXPECT_FALSE(TestRunPanel::startConfirmed(1));
 }

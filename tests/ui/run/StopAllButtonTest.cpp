@@ -112,4 +112,16 @@ TEST_F(StopAllButtonTest, StopsEveryDriveAndReportsTheOneThatIgnoresStop)
     EXPECT_EQ(report.drives[2].state, StopResult::State::NoAnswer);
     EXPECT_TRUE(button->reportText().contains(QStringLiteral("Machine number 9: NO ANSWER")))
         << qPrintable(button->reportText());
+    EXPECT_EQ(button->reportTitle(),
+              QStringLiteral("STOP ALL: not every drive is confirmed stopped"));
+
+    // No drive known: the stop is sent, and the title does not claim that any drive stopped.
+    for (int id : {1, 2, 9})
+        busDrives->remove(id);
+    finished = false;
+    button->click();
+    ASSERT_TRUE(waitUntil([&] { return finished; }, 20000));
+    EXPECT_TRUE(report.drives.isEmpty());
+    EXPECT_EQ(button->reportTitle(), QStringLiteral("STOP ALL: stop sent, no drive checked"));
+    EXPECT_TRUE(button->reportText().contains(QStringLiteral("none was checked")));
 }
