@@ -4,6 +4,7 @@
 #include "ModbusClient.h"
 #include "TextTable.h"
 #include "profile/ValueCodec.h"
+#include "session/DependentValues.h"
 #include "session/DeviceSession.h"
 
 #include <QCoreApplication>
@@ -88,10 +89,15 @@ int SetCommand::run(CliContext& context, const QStringList& args)
             problems << tr("%1 is read-only").arg(a.name);
         else if (!a.meta->safety.isEmpty() && !confirmed)
             problems << tr("%1 is a %2 command; add --yes to send it").arg(a.name, a.meta->safety);
-        else
+        else {
             for (const QString& c : a.meta->controllingParameters())
                 if (!session->hasCached(c) && !controlling.contains(c))
                     controlling << c;
+            // The settings that depend on this one are checked against its new value.
+            for (const QString& d : DependentValues::of(profile, *a.meta))
+                if (!session->hasCached(d) && !controlling.contains(d))
+                    controlling << d;
+        }
     }
     // What allowed values depend on must be known before anything can be validated.
     if (problems.isEmpty() && !controlling.isEmpty()) {
@@ -123,12 +129,21 @@ int SetCommand::run(CliContext& context, const QStringList& args)
         overlay.parameterRaw = [&pending, base](const QString& n) -> std::optional<qint64> {
             return pending.contains(n) ? std::optional<qint64>(pending.value(n)) : base(n);
         };
+        QStringList names;
+        for (const Assignment& a : assignments)
+            names << a.name;
         for (const Assignment& a : assignments) {
             const ValueCodec::Encoded e = ValueCodec::encodeText(*a.meta, a.text, overlay);
-            if (!e.ok)
+            if (!e.ok) {
                 problems << e.error;
-            else
-                pending.insert(a.name, qint64(e.raw));
+                continue;
+            }
+            // The same rule DeviceSession::write applies, before anything is sent.
+            const QString left =
+                DependentValues::problem(profile, *a.meta, qint64(e.raw), overlay, names);
+            if (!left.isEmpty())
+                problems << left;
+            pending.insert(a.name, qint64(e.raw));
         }
     }
     if (!problems.isEmpty()) {
@@ -139,9 +154,12 @@ int SetCommand::run(CliContext& context, const QStringList& args)
     }
     int code = ExitOk;
     bool stopped = false;
-    for (Assignment& a : assignments) {
+    for (int i = 0; i < assignments.size(); ++i) {
+        Assignment& a = assignments[i];
         DeviceSession::WriteOptions options;
         options.explicitCommand = confirmed;
+        for (int later = i + 1; later < assignments.size(); ++later)
+            options.companions << assignments.at(later).name;
         if (stopped || !context.wait([&](std::function<void()> finish) {
                 session->write(a.name, a.text, options,
                                [&a, finish](const DeviceSession::Outcome& o) {

@@ -105,6 +105,10 @@ void Restorer::writeNext()
     DeviceSession::WriteOptions options;
     // Storing is part of what the user asked for when asking for a restore.
     options.explicitCommand = item.action == Item::Action::Store;
+    for (int later = index + 1; later < m_plan.items.size(); ++later) {
+        if (m_plan.items.at(later).action == Item::Action::Write)
+            options.companions << m_plan.items.at(later).parameter;
+    }
     QPointer<Restorer> self(this);
     m_session->write(
         item.parameter, item.writeText, options, [self, index](const DeviceSession::Outcome& o) {

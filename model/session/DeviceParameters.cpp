@@ -209,6 +209,7 @@ void DeviceParameters::writeNext(std::shared_ptr<WriteState> state)
     }
     const QString name = state->queue.takeFirst();
     DeviceSession::WriteOptions options; // settings only: commands are never pending edits
+    options.companions = state->queue;   // written next, in dependency order
     m_session->write(name, m_entries.value(name).pendingText, options,
                      [this, name, state](const DeviceSession::Outcome& o) {
                          Entry& e = m_entries[name];

@@ -1,5 +1,7 @@
 #include "session/DeviceSession.h"
 
+#include "session/DependentValues.h"
+
 #include "ModbusClient.h"
 #include "profile/ValueCodec.h"
 #include "session/ReadPlanner.h"
@@ -229,29 +231,69 @@ void DeviceSession::write(const QString& name, const QString& text, const WriteO
             done(outcome);
             return;
         }
-        const ModbusRequest request =
-            meta->writeFunction == 16
-                ? ModbusRequest::writeMultiple(quint8(m_slave), meta->address, encoded.registers)
-                : ModbusRequest::writeSingle(quint8(m_slave), meta->address,
-                                             encoded.registers.first());
-        outcome.sent = true;
-        const QVector<quint16> written = encoded.registers;
-        m_client->submit(
-            request, this,
-            [this, meta, written, options, outcome, done](const ModbusResult& r) mutable {
-                if (!r.ok()) {
-                    explainFailure(r, outcome, done);
-                    return;
-                }
-                if (!options.verify || !meta->isReadable()) {
-                    outcome.ok = true;
-                    outcome.value = ValueCodec::decode(*meta, written, context());
-                    done(outcome);
-                    return;
-                }
-                verifyWrite(*meta, written, outcome, done);
-            });
+        // Settings that depend on this one must stay valid: know their values, then check.
+        QStringList dependents = DependentValues::of(m_profile, *meta);
+        for (const QString& c : options.companions)
+            dependents.removeAll(c);
+        const QVector<quint16> registers = encoded.registers;
+        ensureCached(dependents, [this, meta, registers, options, outcome,
+                                  done](const QString& readProblem) mutable {
+            const qint64 raw = qint64(ValueCodec::registersToRaw(*meta, registers));
+            const QString refusal =
+                readProblem.isEmpty()
+                    ? DependentValues::problem(m_profile, *meta, raw, context(), options.companions)
+                    : tr("%1 cannot be checked: %2").arg(meta->label, readProblem);
+            if (!refusal.isEmpty()) {
+                outcome.error = refusal; // nothing is sent
+                done(outcome);
+                return;
+            }
+            send(meta, registers, options, outcome, done);
+        });
     });
+}
+
+void DeviceSession::ensureCached(QStringList names, std::function<void(QString)> then)
+{
+    while (!names.isEmpty() && m_cache.contains(names.first()))
+        names.removeFirst();
+    if (names.isEmpty()) {
+        then(QString());
+        return;
+    }
+    const QString name = names.takeFirst();
+    read(name, [this, names, then](const Outcome& o) {
+        if (!o.ok && !m_cache.contains(o.parameter)) {
+            then(tr("reading %1 failed: %2").arg(o.parameter, o.error));
+            return;
+        }
+        ensureCached(names, then);
+    });
+}
+
+void DeviceSession::send(const ParameterMeta* meta, const QVector<quint16>& registers,
+                         const WriteOptions& options, Outcome outcome, Done done)
+{
+    const ModbusRequest request =
+        meta->writeFunction == 16
+            ? ModbusRequest::writeMultiple(quint8(m_slave), meta->address, registers)
+            : ModbusRequest::writeSingle(quint8(m_slave), meta->address, registers.first());
+    outcome.sent = true;
+    const QVector<quint16> written = registers;
+    m_client->submit(request, this,
+                     [this, meta, written, options, outcome, done](const ModbusResult& r) mutable {
+                         if (!r.ok()) {
+                             explainFailure(r, outcome, done);
+                             return;
+                         }
+                         if (!options.verify || !meta->isReadable()) {
+                             outcome.ok = true;
+                             outcome.value = ValueCodec::decode(*meta, written, context());
+                             done(outcome);
+                             return;
+                         }
+                         verifyWrite(*meta, written, outcome, done);
+                     });
 }
 
 void DeviceSession::verifyWrite(const ParameterMeta& meta, const QVector<quint16>& written,

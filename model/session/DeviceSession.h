@@ -54,6 +54,9 @@ public:
         // are refused unless the caller states that the user asked for exactly this.
         bool explicitCommand = false;
         bool verify = true;
+        // Settings written in the same operation, after this one: a setting whose allowed
+        // values depend on this one may be among them (DependentValues).
+        QStringList companions;
     };
 
     DeviceSession(ModbusClient* client, const Profile& profile, int slave, const QString& variant,
@@ -91,6 +94,10 @@ private:
     struct ManyState;
     void nextBlock(std::shared_ptr<ManyState> state);
     void ensureControllingValues(const ParameterMeta& meta, std::function<void(QString)> then);
+    // Reads those of `names` not cached yet; `then` gets the first failure, or nothing.
+    void ensureCached(QStringList names, std::function<void(QString)> then);
+    void send(const ParameterMeta* meta, const QVector<quint16>& registers,
+              const WriteOptions& options, Outcome outcome, Done done);
     void explainFailure(const ModbusResult& result, Outcome outcome, Done done);
     void verifyWrite(const ParameterMeta& meta, const QVector<quint16>& written, Outcome outcome,
                      Done done);

@@ -106,9 +106,17 @@ TEST(SetCommand, DependentValuesAreCheckedAgainstTheNewMode)
     EXPECT_EQ(r.code, ExitInvalid);
     EXPECT_TRUE(r.err.contains(QStringLiteral("only available when core.control_mode is 0")))
         << qPrintable(r.err);
-    // Switching the mode in the same command makes the Mode1 function valid; the mode goes first.
+    // The mode with only X0 would leave X1–X3 holding Mode2 functions: refused, named.
     r = runCli({QStringLiteral("set"), QStringLiteral("1"), QStringLiteral("io.x0=RUN/STOP"),
                 QStringLiteral("core.control_mode=Mode1"), kSim});
+    EXPECT_EQ(r.code, ExitInvalid);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("Input X1 function (CCW/STOP)")))
+        << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("nothing was written")));
+    // Switching the mode with a Mode1 function for every input; the mode goes first.
+    r = runCli({QStringLiteral("set"), QStringLiteral("1"), QStringLiteral("io.x0=RUN/STOP"),
+                QStringLiteral("io.x1=CW/CCW"), QStringLiteral("io.x2=M0"),
+                QStringLiteral("io.x3=M1"), QStringLiteral("core.control_mode=Mode1"), kSim});
     ASSERT_EQ(r.code, ExitOk) << qPrintable(r.err);
     EXPECT_LT(r.out.indexOf(QStringLiteral("core.control_mode")),
               r.out.indexOf(QStringLiteral("io.x0")));

@@ -83,11 +83,25 @@ TEST_F(DeviceParametersTest, ModeChangeRevalidatesTerminalEditsAndIsWrittenFirst
         params.setPending(QStringLiteral("core.control_mode"), QStringLiteral("Mode1")).isEmpty());
     ASSERT_TRUE(params.setPending(QStringLiteral("io.x0"), QStringLiteral("RUN/STOP")).isEmpty());
     EXPECT_EQ(params.pendingNames().size(), 2);
+    // X1–X3 still hold Mode2 functions: the mode alone would leave them invalid, so nothing of
+    // it is written (the model's rule; the I/O page offers the new mode's functions).
+    EXPECT_GE(wait([&](auto done) { params.write({}, done); }), 1);
+    EXPECT_EQ(simGet(1, 0x2015), 1);
+    EXPECT_TRUE(params.entry(QStringLiteral("core.control_mode"))
+                    ->message.contains(QStringLiteral("Input X1 function")))
+        << qPrintable(params.entry(QStringLiteral("core.control_mode"))->message);
+    ASSERT_TRUE(
+        params.setPending(QStringLiteral("core.control_mode"), QStringLiteral("Mode1")).isEmpty());
+    ASSERT_TRUE(params.setPending(QStringLiteral("io.x0"), QStringLiteral("RUN/STOP")).isEmpty());
+    ASSERT_TRUE(params.setPending(QStringLiteral("io.x1"), QStringLiteral("CW/CCW")).isEmpty());
+    ASSERT_TRUE(params.setPending(QStringLiteral("io.x2"), QStringLiteral("M0")).isEmpty());
+    ASSERT_TRUE(params.setPending(QStringLiteral("io.x3"), QStringLiteral("M1")).isEmpty());
     EXPECT_EQ(wait([&](auto done) { params.write({}, done); }), 0);
     EXPECT_EQ(simGet(1, 0x2015), 0);
     EXPECT_EQ(simGet(1, 0x2101), 1);
+    EXPECT_EQ(simGet(1, 0x2103), 2);
     // Switching back to Mode2 makes a pending Mode1 function invalid: it is flagged.
-    ASSERT_TRUE(params.setPending(QStringLiteral("io.x1"), QStringLiteral("CW/CCW")).isEmpty());
+    ASSERT_TRUE(params.setPending(QStringLiteral("io.x1"), QStringLiteral("RUN/STOP")).isEmpty());
     ASSERT_TRUE(
         params.setPending(QStringLiteral("core.control_mode"), QStringLiteral("Mode2")).isEmpty());
     EXPECT_FALSE(params.entry(QStringLiteral("io.x1"))->message.isEmpty());
