@@ -16,7 +16,7 @@ QString DriveLeftBehind::text() const
     if (running)
         what << state;
     if (busPriority)
-        what << ExitCheck::tr("in communication priority (its own inputs cannot stop it)");
+        what << ExitCheck::tr("in communication priority (its own inputs cannot start or stop it)");
     return ExitCheck::tr("Machine number %1 (%2): %3")
         .arg(slave)
         .arg(model, what.join(QStringLiteral(", ")));

@@ -40,20 +40,25 @@ void ExitGuard::check(const QString& leaving, std::function<void()> proceed)
     }
 
     QMessageBox box(
-        QMessageBox::Warning, tr("Drives are running"),
+        QMessageBox::Warning,
+        running.isEmpty() ? tr("Drives left in communication priority") : tr("Drives are running"),
         running.isEmpty()
             ? tr("Before you %1: these drives are left in communication priority.").arg(leaving)
             : tr("Before you %1: these drives are running or left in communication "
                  "priority.")
                   .arg(leaving),
         QMessageBox::NoButton, m_window);
-    box.setInformativeText(
-        lines.join(QLatin1Char('\n')) + QStringLiteral("\n\n") +
-        tr("In communication priority a drive takes run and stop only from the bus: once OpenTOP "
-           "lets go, only another bus master or switching its power off stops it. \"Stop\" "
-           "broadcasts every family's stop "
-           "command to the whole bus and checks each drive above has stopped. \"Give control "
-           "back\" sets I/O priority, so the machine's own inputs run the drives again."));
+    QString explanation = tr("In communication priority a drive takes run and stop only from the "
+                             "bus: once OpenTOP lets go, only another bus master or switching its "
+                             "power off stops it.");
+    if (!running.isEmpty())
+        explanation += QLatin1Char(' ') + tr("\"Stop\" broadcasts every family's stop command to "
+                                             "the whole bus and checks that each drive above has "
+                                             "stopped.");
+    if (!returnable.isEmpty())
+        explanation += QLatin1Char(' ') + tr("\"Give control back\" sets I/O priority, so the "
+                                             "machine's own inputs run the drives again.");
+    box.setInformativeText(lines.join(QLatin1Char('\n')) + QStringLiteral("\n\n") + explanation);
     QPushButton* stop =
         running.isEmpty() ? nullptr : box.addButton(tr("Stop the drives"), QMessageBox::AcceptRole);
     QPushButton* giveBack =
