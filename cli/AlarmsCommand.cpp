@@ -1,6 +1,7 @@
 #include "AlarmsCommand.h"
 
 #include "CliContext.h"
+#include "GroupCheck.h"
 #include "TextTable.h"
 #include "alarms/AlarmHistory.h"
 #include "session/DeviceSession.h"
@@ -206,6 +207,14 @@ int AlarmsCommand::run(CliContext& context, const QStringList& args)
                         reset && !history.canReset() ? tr("alarm reset") : tr("record erase"))
             << Qt::endl;
         return ExitUsage;
+    }
+    // Drives in the target's communication group execute a reset or erase too, silently.
+    GroupCheck group(context);
+    if (reset || clear) {
+        const int refused =
+            group.before(slave, context.parser().isSet(QStringLiteral("yes")), ExitUsage);
+        if (refused != ExitOk)
+            return refused;
     }
     if ((reset || clear) && !context.parser().isSet(QStringLiteral("yes"))) {
         err << tr("These change machine number %1; add --yes to send them:").arg(slave) << '\n';
