@@ -210,10 +210,8 @@ int AlarmsCommand::run(CliContext& context, const QStringList& args)
     }
     // Drives in the target's communication group execute a reset or erase too, silently.
     GroupCheck group(context);
-    if (reset || clear) {
-        const int refused =
-            group.before(slave, context.parser().isSet(QStringLiteral("yes")), ExitUsage);
-        if (refused != ExitOk)
+    if ((reset || clear) && context.parser().isSet(QStringLiteral("yes"))) {
+        if (const int refused = group.before(slave, true, ExitUsage); refused != ExitOk)
             return refused;
     }
     if ((reset || clear) && !context.parser().isSet(QStringLiteral("yes"))) {
@@ -228,6 +226,7 @@ int AlarmsCommand::run(CliContext& context, const QStringList& args)
             for (const QString& w : history.clearPlan())
                 err << "  " << w << '\n';
         err.flush();
+        group.before(slave, false, ExitUsage); // names the drives of its group, if any
         return ExitUsage;
     }
 

@@ -94,6 +94,10 @@ TEST(CliGroupE2e, ACommandToAGroupParentNamesTheChildrenAndReportsTheirState)
     EXPECT_TRUE(r.err.contains(QStringLiteral("also executed by 3, 5"))) << qPrintable(r.err);
     for (int id : {1, 3, 5})
         EXPECT_EQ(sim.get(id, 0x0109, 4), 0) << id;
+    // An alarm reset reaches the children as well.
+    r = cli(sim, {kBus, QStringLiteral("alarms"), QStringLiteral("1"), QStringLiteral("--reset")});
+    EXPECT_EQ(r.code, 2) << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("also executed by 3, 5"))) << qPrintable(r.err);
 
     r = cli(sim, {kBus, QStringLiteral("run"), QStringLiteral("1"), QStringLiteral("start"),
                   QStringLiteral("--yes")});
