@@ -2,6 +2,7 @@
 
 #include "CliContext.h"
 #include "TextTable.h"
+#include "profile/ProfileRegistry.h"
 #include "profile/ValueCodec.h"
 #include "session/DeviceSession.h"
 
@@ -155,6 +156,54 @@ QJsonArray GroupCheck::toJson(const QVector<ChildValue>& values)
         out.append(o);
     }
     return out;
+}
+
+void GroupCheck::readAll(CliContext& context, const QVector<DeviceInfo>& devices, BusGroups* groups,
+                         QHash<int, bool>* hasGroups)
+{
+    const ProfileRegistry& registry = ProfileRegistry::builtIn();
+    for (const DeviceInfo& info : devices) {
+        if (info.state != DeviceInfo::State::Present &&
+            info.state != DeviceInfo::State::Unidentified)
+            continue;
+        groups->addDrive(info.slave); // a parent may be any drive that answers
+        const Profile* profile = registry.family(info.family);
+        if (info.state != DeviceInfo::State::Present || !profile ||
+            BusGroups::groupParameter(*profile).isEmpty())
+            continue;
+        QString error;
+        DeviceSession* session = context.session(info.slave, &error);
+        if (session && readGroup(context, session, groups))
+            hasGroups->insert(info.slave, true);
+    }
+}
+
+QString GroupCheck::groupText(const BusGroups& groups, const QHash<int, bool>& hasGroups, int slave)
+{
+    if (!hasGroups.value(slave) && !groups.isParent(slave))
+        return QString();
+    const std::optional<int> group = groups.groupOf(slave);
+    const QString number = !hasGroups.value(slave) ? QStringLiteral("?")
+                           : group                 ? QString::number(*group)
+                                                   : tr("off");
+    const QString role = groups.roleText(slave);
+    return role == QStringLiteral("—") ? number : QStringLiteral("%1 (%2)").arg(number, role);
+}
+
+void GroupCheck::addJson(const BusGroups& groups, const QHash<int, bool>& hasGroups, int slave,
+                         QJsonObject* device)
+{
+    if (hasGroups.value(slave)) {
+        const std::optional<int> group = groups.groupOf(slave);
+        device->insert(QStringLiteral("group"), group ? QJsonValue(*group) : QJsonValue());
+        if (const std::optional<int> parent = groups.parentOf(slave))
+            device->insert(QStringLiteral("parent"), *parent);
+    }
+    QJsonArray children;
+    for (int child : groups.childrenOf(slave))
+        children.append(child);
+    if (!children.isEmpty())
+        device->insert(QStringLiteral("children"), children);
 }
 
 } // namespace opentop

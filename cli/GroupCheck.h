@@ -1,8 +1,11 @@
 #pragma once
 
 #include "bus/BusGroups.h"
+#include "session/DeviceInfo.h"
 
+#include <QHash>
 #include <QJsonArray>
+#include <QJsonObject>
 #include <QStringList>
 #include <QVector>
 
@@ -37,6 +40,15 @@ public:
     QVector<ChildValue> readChildren(const QStringList& names);
     void print(const QVector<ChildValue>& values);
     static QJsonArray toJson(const QVector<ChildValue>& values);
+
+    // For scan: the group of each drive found whose family has one (`hasGroups`: read).
+    static void readAll(CliContext& context, const QVector<DeviceInfo>& devices, BusGroups* groups,
+                        QHash<int, bool>* hasGroups);
+    // A scan row's group: "off (parent of 3)", "1 (child of 1)"; empty without a group.
+    static QString groupText(const BusGroups& groups, const QHash<int, bool>& hasGroups, int slave);
+    // A scan's JSON device: "group" (null: disabled), "parent", "children".
+    static void addJson(const BusGroups& groups, const QHash<int, bool>& hasGroups, int slave,
+                        QJsonObject* device);
 
 private:
     CliContext& m_context;

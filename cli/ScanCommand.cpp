@@ -1,12 +1,12 @@
 #include "ScanCommand.h"
 
 #include "CliContext.h"
+#include "GroupCheck.h"
 #include "ModbusClient.h"
 #include "TextTable.h"
 #include "bus/BusGroups.h"
 #include "bus/BusScanner.h"
 #include "profile/ProfileRegistry.h"
-#include "session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -197,7 +197,7 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
     BusGroups groups;
     QHash<int, bool> hasGroups;
     if (!interrupted)
-        readGroups(context, devices, &groups, &hasGroups);
+        GroupCheck::readAll(context, devices, &groups, &hasGroups);
     if (context.json())
         printJson(context, scanner, devices, interrupted, groups, hasGroups);
     else if (!devices.isEmpty())
@@ -291,52 +291,6 @@ void ScanCommand::completeVariants(CliContext& context, QVector<DeviceInfo>* dev
     }
 }
 
-void ScanCommand::readGroups(CliContext& context, const QVector<DeviceInfo>& devices,
-                             BusGroups* groups, QHash<int, bool>* hasGroups)
-{
-    const ProfileRegistry& registry = ProfileRegistry::builtIn();
-    for (const DeviceInfo& info : devices) {
-        if (!isDrive(info))
-            continue;
-        groups->addDrive(info.slave); // a parent may be any drive that answers
-        const Profile* profile = registry.family(info.family);
-        if (info.state != DeviceInfo::State::Present || !profile ||
-            BusGroups::groupParameter(*profile).isEmpty())
-            continue;
-        QString error;
-        DeviceSession* session = context.session(info.slave, &error);
-        if (!session)
-            continue;
-        const QString parameter = BusGroups::groupParameter(*profile);
-        DeviceSession::ReadManyOutcome read;
-        context.wait([&](std::function<void()> finish) {
-            session->readMany({parameter},
-                              [&read, finish](const DeviceSession::ReadManyOutcome& o) {
-                                  read = o;
-                                  finish();
-                              });
-        });
-        const ParamValue value = session->cachedValue(parameter);
-        if (read.failed == 0 && value.valid) {
-            groups->setGroupRaw(info.slave, qint64(value.raw));
-            hasGroups->insert(info.slave, true);
-        }
-    }
-}
-
-QString ScanCommand::groupText(const BusGroups& groups, const QHash<int, bool>& hasGroups,
-                               int slave)
-{
-    if (!hasGroups.value(slave) && !groups.isParent(slave))
-        return QString();
-    const std::optional<int> group = groups.groupOf(slave);
-    const QString number = !hasGroups.value(slave) ? QStringLiteral("?")
-                           : group                 ? QString::number(*group)
-                                                   : tr("off");
-    const QString role = groups.roleText(slave);
-    return role == QStringLiteral("—") ? number : QStringLiteral("%1 (%2)").arg(number, role);
-}
-
 void ScanCommand::printTable(CliContext& context, const QVector<DeviceInfo>& devices,
                              const BusGroups& groups, const QHash<int, bool>& hasGroups)
 {
@@ -360,7 +314,7 @@ void ScanCommand::printTable(CliContext& context, const QVector<DeviceInfo>& dev
                         info.firmware.isEmpty() ? QString() : QStringLiteral("V") + info.firmware,
                         DeviceInfo::stateText(info.state)};
         if (showGroups)
-            row << groupText(groups, hasGroups, info.slave);
+            row << GroupCheck::groupText(groups, hasGroups, info.slave);
         table.addRow(row);
     }
     table.print(context.out());
@@ -383,17 +337,7 @@ void ScanCommand::printJson(CliContext& context, const BusScanner& scanner,
             {QStringLiteral("state"), stateId(info.state)},
             {QStringLiteral("detail"), info.detail},
         };
-        if (hasGroups.value(info.slave)) {
-            const std::optional<int> group = groups.groupOf(info.slave);
-            device.insert(QStringLiteral("group"), group ? QJsonValue(*group) : QJsonValue());
-            if (const std::optional<int> parent = groups.parentOf(info.slave))
-                device.insert(QStringLiteral("parent"), *parent);
-        }
-        QJsonArray children;
-        for (int child : groups.childrenOf(info.slave))
-            children.append(child);
-        if (!children.isEmpty())
-            device.insert(QStringLiteral("children"), children);
+        GroupCheck::addJson(groups, hasGroups, info.slave, &device);
         list.append(device);
     }
     QJsonArray problems;

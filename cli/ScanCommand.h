@@ -37,10 +37,6 @@ private:
     static bool parseRange(CliContext& context, const QStringList& args, Range* range);
     // Fills in variants the drives do not report (--variant, the simulated bus list).
     static void completeVariants(CliContext& context, QVector<DeviceInfo>* devices);
-    // The communication group of each drive whose family has one (`hasGroups`: read).
-    static void readGroups(CliContext& context, const QVector<DeviceInfo>& devices,
-                           BusGroups* groups, QHash<int, bool>* hasGroups);
-    static QString groupText(const BusGroups& groups, const QHash<int, bool>& hasGroups, int slave);
     static void printTable(CliContext& context, const QVector<DeviceInfo>& devices,
                            const BusGroups& groups, const QHash<int, bool>& hasGroups);
     static void printJson(CliContext& context, const BusScanner& scanner,
