@@ -1,6 +1,7 @@
 #include "AlarmsCommand.h"
 
 #include "CliContext.h"
+#include "GroupCheck.h"
 #include "TextTable.h"
 #include "alarms/AlarmHistory.h"
 #include "session/DeviceSession.h"
@@ -207,6 +208,12 @@ int AlarmsCommand::run(CliContext& context, const QStringList& args)
             << Qt::endl;
         return ExitUsage;
     }
+    // Drives in the target's communication group execute a reset or erase too, silently.
+    GroupCheck group(context);
+    if ((reset || clear) && context.parser().isSet(QStringLiteral("yes"))) {
+        if (const int refused = group.before(slave, true, ExitUsage); refused != ExitOk)
+            return refused;
+    }
     if ((reset || clear) && !context.parser().isSet(QStringLiteral("yes"))) {
         err << tr("These change machine number %1; add --yes to send them:").arg(slave) << '\n';
         if (reset)
@@ -219,6 +226,7 @@ int AlarmsCommand::run(CliContext& context, const QStringList& args)
             for (const QString& w : history.clearPlan())
                 err << "  " << w << '\n';
         err.flush();
+        group.before(slave, false, ExitUsage); // names the drives of its group, if any
         return ExitUsage;
     }
 

@@ -29,6 +29,11 @@ QList<QCommandLineOption> globalOptions()
          tr("Drive variant where the drive does not report it: VARIANT, or ID=VARIANT,... (e.g. "
             "dbu400, 150=dbu400)."),
          tr("VARIANT")},
+        {QStringLiteral("bus-drives"),
+         tr("The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES): before a write "
+            "or command, their communication group is read to name every drive it also "
+            "reaches."),
+         tr("LIST")},
         {{QStringLiteral("h"), QStringLiteral("help")},
          tr("Show this help, or a command's help after the command.")},
         {QStringLiteral("version"), tr("Show the version.")},
@@ -64,7 +69,9 @@ QString CliApp::helpText(const QString& program) const
                "  --port PATH | --tcp HOST:PORT | --sim SPEC\n"
                "  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N\n"
                "  Defaults follow the family: dbu 19200 8N1, dcpid 9600 8E1.\n"
-               "Output: --json  --trace  --variant VARIANT\n\n"
+               "Output: --json  --trace  --variant VARIANT\n"
+               "Groups: --bus-drives LIST (or OPENTOP_BUS_DRIVES): the drives whose communication\n"
+               "group is checked before a write or command\n\n"
                "Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file\n"
                "(nothing written), 4 verification mismatch or a drive that did not stop,\n"
                "130 interrupted (what was done is reported).\n\n"

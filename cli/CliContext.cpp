@@ -39,6 +39,7 @@ CliContext::CliContext(const QCommandLineParser& parser, QTextStream& out, QText
     , m_err(err)
     , m_log(std::make_unique<TrafficLog>())
 {
+    m_log->setDescriber(m_describer.describer());
 }
 
 CliContext::~CliContext()
@@ -99,6 +100,26 @@ bool CliContext::connectBus()
         }
     }
     return true;
+}
+
+std::optional<QVector<int>> CliContext::busDrives(QString* error)
+{
+    const QString option = QStringLiteral("bus-drives");
+    QString text = m_parser.isSet(option) ? m_parser.value(option)
+                                          : qEnvironmentVariable("OPENTOP_BUS_DRIVES");
+    if (text.trimmed().isEmpty()) {
+        if (!connectBus())
+            return QVector<int>();
+        return m_knownSlaves;
+    }
+    QString parseError;
+    const auto ids = parseIds(text, &parseError);
+    if (!ids && error)
+        *error = tr("%1 \"%2\": %3")
+                     .arg(m_parser.isSet(option) ? QStringLiteral("--bus-drives")
+                                                 : QStringLiteral("OPENTOP_BUS_DRIVES"),
+                          text, parseError);
+    return ids;
 }
 
 QString CliContext::assignedVariant(int slave, const QString& family) const

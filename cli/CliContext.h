@@ -3,6 +3,7 @@
 #include "ConnectionSettings.h"
 #include "ExitCode.h"
 #include "session/DeviceInfo.h"
+#include "traffic/TrafficDescriber.h"
 
 #include <QCommandLineParser>
 #include <QHash>
@@ -13,6 +14,7 @@
 
 namespace opentop {
 
+class BusGroups;
 class DeviceSession;
 class ModbusClient;
 class SimBus;
@@ -44,6 +46,13 @@ public:
     // Machine numbers the connection already knows (a simulated bus's device list).
     QVector<int> knownSlaves() const { return m_knownSlaves; }
 
+    // The drives the user says are on the bus: --bus-drives LIST, else OPENTOP_BUS_DRIVES, else
+    // the simulated bus's list; empty when none is known; nullopt (with *error) when malformed.
+    std::optional<QVector<int>> busDrives(QString* error);
+
+    // The groups found before a write: --trace then shows who else a write to a parent reaches.
+    void setGroups(const BusGroups& groups) { m_describer.setGroups(groups); }
+
     // Identifies `slave` (once) and returns its session; nullptr with *error when nobody
     // answers or the device is not a profiled family. Applies --variant and the simulated
     // bus's variants where the device does not report its own.
@@ -68,6 +77,7 @@ private:
     QTextStream& m_err;
     ConnectionSettings m_settings;
     std::unique_ptr<TrafficLog> m_log;
+    TrafficDescriber m_describer{[](int) { return nullptr; }}; // adds only who else a write reaches
     std::shared_ptr<SimBus> m_simBus;
     std::unique_ptr<ModbusClient> m_client;
     QVector<int> m_knownSlaves;

@@ -3,6 +3,7 @@
 #include "CliContext.h"
 #include "ExitCode.h"
 #include "FileCommandSupport.h"
+#include "GroupCheck.h"
 #include "TextTable.h"
 #include "files/Restorer.h"
 #include "session/DeviceSession.h"
@@ -185,6 +186,11 @@ int RestoreCommand::run(CliContext& context, const QStringList& args)
             for (const QString& problem : check.problems)
                 context.err() << "  " << problem << Qt::endl;
         }
+        // Every write to a group parent is executed by its children too: say so (--yes is
+        // what makes a restore write at all).
+        GroupCheck group(context);
+        if (const int bad = group.before(id, true, ExitInvalid); bad != ExitOk)
+            return bad;
         sessions << session;
     }
     if (refused) {

@@ -1,6 +1,7 @@
 #include "RunCommand.h"
 
 #include "CliContext.h"
+#include "GroupCheck.h"
 #include "profile/ProfileRegistry.h"
 #include "run/RunControl.h"
 #include "session/DeviceSession.h"
@@ -80,14 +81,18 @@ int RunCommand::run(CliContext& context, const QStringList& args)
         err << tr("error: %1").arg(plan.error) << Qt::endl;
         return exitCodeOf(plan.failure);
     }
-    if (!context.parser().isSet(QStringLiteral("yes"))) {
+    const bool confirmed = context.parser().isSet(QStringLiteral("yes"));
+    if (!confirmed)
         err << tr("Would send to machine number %1: %2\nThis moves or stops a motor: add --yes to "
                   "send it.")
                    .arg(slave)
                    .arg(plan.description)
             << Qt::endl;
-        return ExitUsage;
-    }
+    // Drives in the target's communication group execute the command too, without replying.
+    GroupCheck group(context);
+    const int refused = group.before(slave, confirmed, ExitUsage);
+    if (!confirmed || refused != ExitOk)
+        return confirmed ? refused : ExitUsage;
 
     RunControl control(context.client(), ProfileRegistry::builtIn());
     RunControl::Outcome outcome;
@@ -109,33 +114,39 @@ int RunCommand::run(CliContext& context, const QStringList& args)
     if (!outcome.explanation.isEmpty())
         json.insert(QStringLiteral("explanation"), outcome.explanation);
     if (!context.json()) {
-        if (outcome.ok)
+        if (outcome.ok && group.children().isEmpty())
             out << tr("Sent to machine number %1: %2").arg(slave).arg(plan.description) << '\n';
+        else if (outcome.ok)
+            out << tr("Sent to machine number %1, executed also by %2 (communication group): %3")
+                       .arg(slave)
+                       .arg(BusGroups::listText(group.children()))
+                       .arg(plan.description)
+                << '\n';
         else
             err << tr("error: %1").arg(outcome.error) << '\n'
                 << (outcome.explanation.isEmpty() ? QString()
                                                   : outcome.explanation + QLatin1Char('\n'));
     }
-    // What the drive does now, when something was sent and the drive answers.
-    if (outcome.sent && (outcome.ok || outcome.failure != RunControl::Failure::Communication ||
-                         !outcome.deviceError.isEmpty())) {
+    // What a drive does now, read from it (children included: they executed the command too).
+    auto readState = [&](DeviceSession* target, const QString& title, int settleMs,
+                         QJsonObject* result) {
         RunControl::State state;
         if (!context.wait([&](std::function<void()> finish) {
                 control.readState(
-                    session,
+                    target,
                     [&state, finish](const RunControl::State& s) {
                         state = s;
                         finish();
                     },
-                    outcome.sent ? kSettleMs : 0);
+                    settleMs);
             }))
-            return ExitInterrupted;
+            return false;
         QJsonObject items;
         int width = 0;
         for (const auto& item : state.items)
             width = std::max(width, int(item.first.size()));
         if (!context.json())
-            out << tr("State of machine number %1:").arg(slave) << '\n';
+            out << title << '\n';
         for (const auto& item : state.items) {
             items.insert(item.first, item.second);
             if (!context.json())
@@ -143,10 +154,43 @@ int RunCommand::run(CliContext& context, const QStringList& args)
         }
         if (!state.error.isEmpty() && !context.json())
             out << "  " << tr("(not read: %1)").arg(state.error) << '\n';
-        QJsonObject s{{QStringLiteral("values"), items}};
+        *result = QJsonObject{{QStringLiteral("values"), items}};
         if (state.running)
-            s.insert(QStringLiteral("running"), *state.running);
+            result->insert(QStringLiteral("running"), *state.running);
+        return true;
+    };
+    if (outcome.sent && (outcome.ok || outcome.failure != RunControl::Failure::Communication ||
+                         !outcome.deviceError.isEmpty())) {
+        QJsonObject s;
+        if (!readState(session, tr("State of machine number %1:").arg(slave), kSettleMs, &s))
+            return ExitInterrupted;
         json.insert(QStringLiteral("state"), s);
+    }
+    if (outcome.sent && !group.children().isEmpty()) {
+        QJsonArray children;
+        for (int child : group.children()) {
+            DeviceSession* childSession = context.session(child, &error);
+            QJsonObject s{{QStringLiteral("slave"), child}};
+            if (!childSession) {
+                if (!context.json())
+                    out << tr("State of machine number %1 (communication group of %2): not read: "
+                              "%3")
+                               .arg(child)
+                               .arg(slave)
+                               .arg(error)
+                        << '\n';
+                s.insert(QStringLiteral("error"), error);
+            } else if (!readState(childSession,
+                                  tr("State of machine number %1 (communication group of %2):")
+                                      .arg(child)
+                                      .arg(slave),
+                                  0, &s)) {
+                return ExitInterrupted;
+            }
+            s.insert(QStringLiteral("slave"), child);
+            children.append(s);
+        }
+        json.insert(QStringLiteral("group"), children);
     }
     if (context.json())
         out << QJsonDocument(json).toJson(QJsonDocument::Indented);

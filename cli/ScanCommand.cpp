@@ -1,8 +1,10 @@
 #include "ScanCommand.h"
 
 #include "CliContext.h"
+#include "GroupCheck.h"
 #include "ModbusClient.h"
 #include "TextTable.h"
+#include "bus/BusGroups.h"
 #include "bus/BusScanner.h"
 #include "profile/ProfileRegistry.h"
 
@@ -192,10 +194,14 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
 
     QVector<DeviceInfo> devices = scanner.devices();
     completeVariants(context, &devices);
+    BusGroups groups;
+    QHash<int, bool> hasGroups;
+    if (!interrupted)
+        GroupCheck::readAll(context, devices, &groups, &hasGroups);
     if (context.json())
-        printJson(context, scanner, devices, interrupted);
+        printJson(context, scanner, devices, interrupted, groups, hasGroups);
     else if (!devices.isEmpty())
-        printTable(context, devices);
+        printTable(context, devices, groups, hasGroups);
 
     const int scanned = scanner.scannedCount();
     if (interrupted) {
@@ -225,6 +231,8 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
     if (!context.json())
         context.out() << summaryLine(devices, scanner.elapsedMs()) << Qt::endl;
     warnDuplicates(context, devices);
+    for (const BusGroups::Problem& problem : groups.problems())
+        context.err() << tr("warning: %1").arg(BusGroups::describe(problem)) << Qt::endl;
     if (scanner.lateAnswers() > 0)
         context.err() << tr("note: %1 drive(s) answered only after the %2 ms wait and were asked "
                             "again; if scans miss drives, give a longer --wait.")
@@ -283,27 +291,42 @@ void ScanCommand::completeVariants(CliContext& context, QVector<DeviceInfo>* dev
     }
 }
 
-void ScanCommand::printTable(CliContext& context, const QVector<DeviceInfo>& devices)
+void ScanCommand::printTable(CliContext& context, const QVector<DeviceInfo>& devices,
+                             const BusGroups& groups, const QHash<int, bool>& hasGroups)
 {
-    TextTable table({tr("ID"), tr("hex"), tr("switches"), tr("family"), tr("model"), tr("firmware"),
-                     tr("state")});
+    QStringList headers{tr("ID"),    tr("hex"),      tr("switches"), tr("family"),
+                        tr("model"), tr("firmware"), tr("state")};
+    // Only where a group is in use: a column of "off" would say nothing.
+    bool showGroups = false;
+    for (int slave : groups.drives())
+        showGroups = showGroups || (hasGroups.value(slave) && groups.groupOf(slave));
+    if (showGroups)
+        headers << tr("comm. group");
+    TextTable table(headers);
     table.setRightAligned(0);
     table.setRightAligned(1);
     for (const DeviceInfo& info : devices) {
-        table.addRow({QString::number(info.slave), DeviceInfo::hexText(info.slave),
-                      DeviceInfo::switchText(info.slave), info.family, info.model,
-                      info.firmware.isEmpty() ? QString() : QStringLiteral("V") + info.firmware,
-                      DeviceInfo::stateText(info.state)});
+        QStringList row{QString::number(info.slave),
+                        DeviceInfo::hexText(info.slave),
+                        DeviceInfo::switchText(info.slave),
+                        info.family,
+                        info.model,
+                        info.firmware.isEmpty() ? QString() : QStringLiteral("V") + info.firmware,
+                        DeviceInfo::stateText(info.state)};
+        if (showGroups)
+            row << GroupCheck::groupText(groups, hasGroups, info.slave);
+        table.addRow(row);
     }
     table.print(context.out());
 }
 
 void ScanCommand::printJson(CliContext& context, const BusScanner& scanner,
-                            const QVector<DeviceInfo>& devices, bool interrupted)
+                            const QVector<DeviceInfo>& devices, bool interrupted,
+                            const BusGroups& groups, const QHash<int, bool>& hasGroups)
 {
     QJsonArray list;
     for (const DeviceInfo& info : devices) {
-        list.append(QJsonObject{
+        QJsonObject device{
             {QStringLiteral("slave"), info.slave},
             {QStringLiteral("hex"), DeviceInfo::hexText(info.slave)},
             {QStringLiteral("switches"), DeviceInfo::switchText(info.slave)},
@@ -313,8 +336,13 @@ void ScanCommand::printJson(CliContext& context, const BusScanner& scanner,
             {QStringLiteral("firmware"), info.firmware},
             {QStringLiteral("state"), stateId(info.state)},
             {QStringLiteral("detail"), info.detail},
-        });
+        };
+        GroupCheck::addJson(groups, hasGroups, info.slave, &device);
+        list.append(device);
     }
+    QJsonArray problems;
+    for (const BusGroups::Problem& problem : groups.problems())
+        problems.append(BusGroups::describe(problem));
     QJsonObject scan{
         {QStringLiteral("from"), scanner.from()},
         {QStringLiteral("to"), scanner.to()},
@@ -322,6 +350,8 @@ void ScanCommand::printJson(CliContext& context, const BusScanner& scanner,
         {QStringLiteral("elapsedMs"), qRound(scanner.elapsedMs())},
         {QStringLiteral("devices"), list},
     };
+    if (!problems.isEmpty())
+        scan.insert(QStringLiteral("groupProblems"), problems);
     if (interrupted) {
         scan.insert(QStringLiteral("interrupted"), true);
         scan.insert(QStringLiteral("scannedTo"), scanner.from() + scanner.scannedCount() - 1);

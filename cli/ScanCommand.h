@@ -3,10 +3,12 @@
 #include "CliCommand.h"
 #include "session/DeviceInfo.h"
 
+#include <QHash>
 #include <QVector>
 
 namespace opentop {
 
+class BusGroups;
 class BusScanner;
 class CliContext;
 
@@ -35,9 +37,11 @@ private:
     static bool parseRange(CliContext& context, const QStringList& args, Range* range);
     // Fills in variants the drives do not report (--variant, the simulated bus list).
     static void completeVariants(CliContext& context, QVector<DeviceInfo>* devices);
-    static void printTable(CliContext& context, const QVector<DeviceInfo>& devices);
+    static void printTable(CliContext& context, const QVector<DeviceInfo>& devices,
+                           const BusGroups& groups, const QHash<int, bool>& hasGroups);
     static void printJson(CliContext& context, const BusScanner& scanner,
-                          const QVector<DeviceInfo>& devices, bool interrupted);
+                          const QVector<DeviceInfo>& devices, bool interrupted,
+                          const BusGroups& groups, const QHash<int, bool>& hasGroups);
     static QString summaryLine(const QVector<DeviceInfo>& devices, double elapsedMs);
     static void warnDuplicates(CliContext& context, const QVector<DeviceInfo>& devices);
 };

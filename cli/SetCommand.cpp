@@ -1,6 +1,7 @@
 #include "SetCommand.h"
 
 #include "CliContext.h"
+#include "GroupCheck.h"
 #include "ModbusClient.h"
 #include "TextTable.h"
 #include "profile/ValueCodec.h"
@@ -152,6 +153,10 @@ int SetCommand::run(CliContext& context, const QStringList& args)
         context.err() << tr("nothing was written") << Qt::endl;
         return ExitInvalid;
     }
+    // Drives in the target's communication group execute the writes too, silently.
+    GroupCheck group(context);
+    if (const int refused = group.before(slave, confirmed, ExitInvalid); refused != ExitOk)
+        return refused;
     int code = ExitOk;
     bool stopped = false;
     for (int i = 0; i < assignments.size(); ++i) {
@@ -176,6 +181,12 @@ int SetCommand::run(CliContext& context, const QStringList& args)
             code = a.outcome.mismatch ? ExitMismatch : ExitCommunication;
     }
     const ValueContext valueContext = session->context();
+    QStringList written;
+    for (const Assignment& a : assignments)
+        if (a.outcome.sent)
+            written << a.name;
+    const QVector<GroupCheck::ChildValue> childValues =
+        written.isEmpty() ? QVector<GroupCheck::ChildValue>() : group.readChildren(written);
     if (context.json()) {
         QJsonArray results;
         for (const Assignment& a : assignments) {
@@ -190,9 +201,10 @@ int SetCommand::run(CliContext& context, const QStringList& args)
                 r.insert(QStringLiteral("error"), a.outcome.error);
             results.append(r);
         }
-        context.out() << QJsonDocument(QJsonObject{{QStringLiteral("slave"), slave},
-                                                   {QStringLiteral("results"), results}})
-                             .toJson(QJsonDocument::Indented);
+        QJsonObject json{{QStringLiteral("slave"), slave}, {QStringLiteral("results"), results}};
+        if (!group.children().isEmpty())
+            json.insert(QStringLiteral("group"), GroupCheck::toJson(childValues));
+        context.out() << QJsonDocument(json).toJson(QJsonDocument::Indented);
     } else {
         TextTable table({tr("Parameter"), tr("Value"), tr("Result")});
         for (const Assignment& a : assignments) {
@@ -206,6 +218,7 @@ int SetCommand::run(CliContext& context, const QStringList& args)
             table.addRow({a.name, value, result});
         }
         table.print(context.out());
+        group.print(childValues);
     }
     return code;
 }
@@ -286,6 +299,15 @@ int SetCommand::runRaw(CliContext& context, int slave, const QStringList& assign
     }
     if (!context.connectBus())
         return ExitCommunication;
+    GroupCheck group(context);
+    if (const int refused = group.before(slave, confirmed, ExitInvalid); refused != ExitOk)
+        return refused;
+    QStringList known; // what the children are read back as, where the profile names it
+    for (const RawWrite& w : writes)
+        if (const ParameterMeta* meta =
+                session ? session->profile().parameterAt(quint8(fc), w.address) : nullptr)
+            if (meta->isReadable() && !known.contains(meta->name))
+                known << meta->name;
     int code = ExitOk;
     TextTable table({tr("Address"), tr("Written"), tr("Result")});
     for (const RawWrite& w : writes) {
@@ -332,6 +354,13 @@ int SetCommand::runRaw(CliContext& context, int slave, const QStringList& assign
         table.addRow({where, hex.join(QLatin1Char(' ')), verdict});
     }
     table.print(context.out());
+    if (!known.isEmpty())
+        group.print(group.readChildren(known));
+    else if (!group.children().isEmpty())
+        context.out() << tr("Also written to %1 (communication group); not read back: no "
+                            "parameter of the profile")
+                             .arg(BusGroups::listText(group.children()))
+                      << Qt::endl;
     return code;
 }
 

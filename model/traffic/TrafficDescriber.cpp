@@ -2,10 +2,12 @@
 
 #include "ModbusRequest.h"
 #include "bus/BusDrives.h"
+#include "bus/BusGroups.h"
 #include "profile/Profile.h"
 #include "profile/ProfileRegistry.h"
 #include "profile/ValueCodec.h"
 
+#include <QCoreApplication>
 #include <QHash>
 #include <QMutex>
 #include <QMutexLocker>
@@ -81,8 +83,9 @@ QString parameterText(const Profile& profile, const ModbusRequest& request,
 struct TrafficDescriber::State
 {
     ProfileLookup lookup;
-    QMutex mutex; // guards profiles (BusDrives mode)
+    QMutex mutex; // guards profiles (BusDrives mode) and children
     QHash<int, const Profile*> profiles;
+    QHash<int, QVector<int>> children; // group parent → its children
 };
 
 TrafficDescriber::TrafficDescriber(ProfileLookup lookup)
@@ -120,7 +123,45 @@ TrafficDescriber::TrafficDescriber(BusDrives* drives, const ProfileRegistry& reg
     QObject::connect(drives, &BusDrives::driveRemoved, drives, update);
 }
 
+void TrafficDescriber::setGroups(const BusGroups& groups)
+{
+    QHash<int, QVector<int>> children;
+    for (int slave : groups.drives())
+        if (const QVector<int> c = groups.childrenOf(slave); !c.isEmpty())
+            children.insert(slave, c);
+    QMutexLocker lock(&m_state->mutex);
+    m_state->children = children;
+}
+
 QString TrafficDescriber::describe(const TrafficEntry& entry, const ModbusRequest* request) const
+{
+    const QString names = describeNames(entry, request);
+    // Who else executes a write: nobody replies for them, so the frame alone does not say.
+    QString reach;
+    if (request && request->isWrite() && entry.direction == TrafficEntry::Direction::Tx) {
+        if (request->isBroadcast()) {
+            reach = QCoreApplication::translate("opentop::TrafficDescriber",
+                                                "broadcast: every drive executes it");
+        } else {
+            QVector<int> children;
+            {
+                QMutexLocker lock(&m_state->mutex);
+                children = m_state->children.value(request->slave);
+            }
+            if (!children.isEmpty())
+                reach = QCoreApplication::translate("opentop::TrafficDescriber",
+                                                    "to %1 (group parent: also %2)")
+                            .arg(request->slave)
+                            .arg(BusGroups::listText(children));
+        }
+    }
+    if (reach.isEmpty())
+        return names;
+    return QStringLiteral("%1 — %2").arg(names.isEmpty() ? entry.summary : names, reach);
+}
+
+QString TrafficDescriber::describeNames(const TrafficEntry& entry,
+                                        const ModbusRequest* request) const
 {
     if (!request || request->raw || request->isBroadcast() || !m_state->lookup)
         return QString();

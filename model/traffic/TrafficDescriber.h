@@ -9,6 +9,7 @@
 namespace opentop {
 
 class BusDrives;
+class BusGroups;
 class Profile;
 class ProfileRegistry;
 struct ModbusRequest;
@@ -28,12 +29,19 @@ public:
     // up in `registry`; the describer may then be called from any thread.
     explicit TrafficDescriber(BusDrives* drives, const ProfileRegistry& registry);
 
-    // The summary with parameter names added; empty when there is nothing to add.
+    // The communication groups of the bus: a write to a group parent is described as reaching
+    // its children too. A copy is kept (thread-safe); call again when the groups change.
+    void setGroups(const BusGroups& groups);
+
+    // The summary with parameter names added, and who else a write reaches (a broadcast, a
+    // group parent's children); empty when there is nothing to add.
     QString describe(const TrafficEntry& entry, const ModbusRequest* request) const;
     // For TrafficLog::setDescriber; stays valid after this object is gone.
     TrafficLog::Describer describer() const;
 
 private:
+    QString describeNames(const TrafficEntry& entry, const ModbusRequest* request) const;
+
     struct State;
     std::shared_ptr<State> m_state;
 };

@@ -3,6 +3,7 @@
 
 #include "ModbusRequest.h"
 #include "RtuFrame.h"
+#include "bus/BusGroups.h"
 #include "profile/ProfileRegistry.h"
 
 using namespace opentop;
@@ -101,4 +102,39 @@ TEST_F(TrafficDescriberSimTest, DescribesFramesOnTheSimulatedBus)
     EXPECT_TRUE(entries[0].summary.endsWith(QStringLiteral("(spno2.speed)")))
         << entries[0].summary.toStdString();
     EXPECT_EQ(entries[1].summary, QStringLiteral("→ 1000 (spno2.speed = 1000 r/min)"));
+}
+
+TEST(TrafficDescriberTest, AWriteToAGroupParentNamesItsChildrenAndABroadcastSaysSo)
+{
+    TrafficDescriber describer = dbuAt(1);
+    BusGroups groups;
+    groups.setGroupRaw(1, 0xFFFF);
+    groups.setGroupRaw(3, 1);
+    groups.setGroupRaw(5, 1);
+    describer.setGroups(groups);
+    const ModbusRequest w = ModbusRequest::writeSingle(1, 0xCA03, 1500);
+    const TrafficEntry tx =
+        entryFor(TrafficEntry::Direction::Tx, w, RtuFrame::encodeRequest(w), w.describe());
+    EXPECT_TRUE(describer.describe(tx, &w).endsWith(
+        QStringLiteral("(spno2.speed = 1500 r/min) — to 1 (group parent: also 3, 5)")))
+        << describer.describe(tx, &w).toStdString();
+    // A write to a child reaches the child only; reads reach nobody else.
+    const ModbusRequest toChild = ModbusRequest::writeSingle(3, 0xCA03, 1500);
+    EXPECT_FALSE(describer
+                     .describe(entryFor(TrafficEntry::Direction::Tx, toChild,
+                                        RtuFrame::encodeRequest(toChild), toChild.describe()),
+                               &toChild)
+                     .contains(QStringLiteral("group")));
+    const ModbusRequest read = ModbusRequest::readHolding(1, 0xCA03, 1);
+    EXPECT_FALSE(describer
+                     .describe(entryFor(TrafficEntry::Direction::Tx, read,
+                                        RtuFrame::encodeRequest(read), read.describe()),
+                               &read)
+                     .contains(QStringLiteral("group")));
+    const ModbusRequest all = ModbusRequest::writeSingle(0, 0x0100, 0);
+    EXPECT_TRUE(describer
+                    .describe(entryFor(TrafficEntry::Direction::Tx, all,
+                                       RtuFrame::encodeRequest(all), all.describe()),
+                              &all)
+                    .endsWith(QStringLiteral("broadcast: every drive executes it")));
 }

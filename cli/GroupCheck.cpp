@@ -1,0 +1,209 @@
+#include "GroupCheck.h"
+
+#include "CliContext.h"
+#include "TextTable.h"
+#include "profile/ProfileRegistry.h"
+#include "profile/ValueCodec.h"
+#include "session/DeviceSession.h"
+
+#include <QCoreApplication>
+#include <QJsonObject>
+
+namespace opentop {
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("opentop::GroupCheck", text);
+}
+
+// Reads the drive's group setting into `groups`; false when it has none or cannot be read.
+bool readGroup(CliContext& context, DeviceSession* session, BusGroups* groups)
+{
+    const QString parameter = BusGroups::groupParameter(session->profile());
+    if (parameter.isEmpty())
+        return false;
+    DeviceSession::ReadManyOutcome read;
+    context.wait([&](std::function<void()> finish) {
+        session->readMany({parameter}, [&read, finish](const DeviceSession::ReadManyOutcome& o) {
+            read = o;
+            finish();
+        });
+    });
+    const ParamValue value = session->cachedValue(parameter);
+    if (read.failed > 0 || !value.valid)
+        return false;
+    groups->setGroupRaw(session->slave(), qint64(value.raw));
+    return true;
+}
+
+} // namespace
+
+GroupCheck::GroupCheck(CliContext& context)
+    : m_context(context)
+{
+}
+
+int GroupCheck::before(int target, bool confirmed, int refusalCode)
+{
+    QString error;
+    DeviceSession* session = m_context.session(target, &error);
+    if (!session || BusGroups::groupParameter(session->profile()).isEmpty())
+        return ExitOk; // a family without groups: the write reaches the target only
+    const std::optional<QVector<int>> listed = m_context.busDrives(&error);
+    if (!listed) {
+        m_context.err() << tr("error: %1").arg(error) << Qt::endl;
+        return ExitUsage;
+    }
+    m_groups.addDrive(target);
+    readGroup(m_context, session, &m_groups);
+    QVector<int> others;
+    for (int slave : *listed)
+        if (slave != target)
+            others << slave;
+    if (others.isEmpty()) {
+        m_context.err() << tr("note: the other drives on the bus are not known, so drives in "
+                              "communication group %1 (which also execute what is sent to %1) "
+                              "were not looked for; name them with --bus-drives LIST or "
+                              "OPENTOP_BUS_DRIVES")
+                               .arg(target)
+                        << Qt::endl;
+        return ExitOk;
+    }
+    QVector<int> silent;
+    for (int slave : others) {
+        DeviceSession* other = m_context.session(slave, &error);
+        if (!other) {
+            silent << slave;
+            continue;
+        }
+        m_groups.addDrive(slave);
+        if (!readGroup(m_context, other, &m_groups) &&
+            !BusGroups::groupParameter(other->profile()).isEmpty())
+            silent << slave;
+    }
+    if (!silent.isEmpty())
+        m_context.err() << tr("warning: the communication group of %1 could not be read")
+                               .arg(BusGroups::listText(silent))
+                        << Qt::endl;
+    m_context.setGroups(m_groups);
+    m_children = m_groups.childrenOf(target);
+    if (m_children.isEmpty())
+        return ExitOk;
+    m_context.err()
+        << (confirmed ? tr("note: %1") : tr("error: %1")).arg(m_groups.reachText(target))
+        << Qt::endl;
+    if (!confirmed) {
+        m_context.err() << tr("add --yes to send it to all of %1 and %2; nothing was sent")
+                               .arg(target)
+                               .arg(BusGroups::listText(m_children))
+                        << Qt::endl;
+        return refusalCode;
+    }
+    return ExitOk;
+}
+
+QVector<GroupCheck::ChildValue> GroupCheck::readChildren(const QStringList& names)
+{
+    QVector<ChildValue> out;
+    for (int child : m_children) {
+        QString error;
+        DeviceSession* session = m_context.session(child, &error);
+        DeviceSession::ReadManyOutcome read;
+        if (session)
+            m_context.wait([&](std::function<void()> finish) {
+                session->readMany(names, [&read, finish](const DeviceSession::ReadManyOutcome& o) {
+                    read = o;
+                    finish();
+                });
+            });
+        for (const QString& name : names) {
+            ChildValue v{child, name, {}, error};
+            const DeviceSession::Outcome o = read.results.value(name);
+            const ParameterMeta* meta = session ? session->profile().parameter(name) : nullptr;
+            if (meta && o.ok && o.value.valid)
+                v.text = ValueCodec::format(*meta, o.value, session->context());
+            else if (v.error.isEmpty())
+                v.error = o.error.isEmpty() ? tr("not readable") : o.error;
+            out << v;
+        }
+    }
+    return out;
+}
+
+void GroupCheck::print(const QVector<ChildValue>& values)
+{
+    if (values.isEmpty())
+        return;
+    m_context.out() << tr("Read back from the drives of the group:") << '\n';
+    TextTable table({tr("Drive"), tr("Parameter"), tr("Value")});
+    for (const ChildValue& v : values)
+        table.addRow({QString::number(v.slave), v.name,
+                      v.error.isEmpty() ? v.text : tr("(not read: %1)").arg(v.error)});
+    table.print(m_context.out());
+}
+
+QJsonArray GroupCheck::toJson(const QVector<ChildValue>& values)
+{
+    QJsonArray out;
+    for (const ChildValue& v : values) {
+        QJsonObject o{{QStringLiteral("slave"), v.slave}, {QStringLiteral("name"), v.name}};
+        if (v.error.isEmpty())
+            o.insert(QStringLiteral("text"), v.text);
+        else
+            o.insert(QStringLiteral("error"), v.error);
+        out.append(o);
+    }
+    return out;
+}
+
+void GroupCheck::readAll(CliContext& context, const QVector<DeviceInfo>& devices, BusGroups* groups,
+                         QHash<int, bool>* hasGroups)
+{
+    const ProfileRegistry& registry = ProfileRegistry::builtIn();
+    for (const DeviceInfo& info : devices) {
+        if (info.state != DeviceInfo::State::Present &&
+            info.state != DeviceInfo::State::Unidentified)
+            continue;
+        groups->addDrive(info.slave); // a parent may be any drive that answers
+        const Profile* profile = registry.family(info.family);
+        if (info.state != DeviceInfo::State::Present || !profile ||
+            BusGroups::groupParameter(*profile).isEmpty())
+            continue;
+        QString error;
+        DeviceSession* session = context.session(info.slave, &error);
+        if (session && readGroup(context, session, groups))
+            hasGroups->insert(info.slave, true);
+    }
+}
+
+QString GroupCheck::groupText(const BusGroups& groups, const QHash<int, bool>& hasGroups, int slave)
+{
+    if (!hasGroups.value(slave) && !groups.isParent(slave))
+        return QString();
+    const std::optional<int> group = groups.groupOf(slave);
+    const QString number = !hasGroups.value(slave) ? QStringLiteral("?")
+                           : group                 ? QString::number(*group)
+                                                   : tr("off");
+    const QString role = groups.roleText(slave);
+    return role == QStringLiteral("—") ? number : QStringLiteral("%1 (%2)").arg(number, role);
+}
+
+void GroupCheck::addJson(const BusGroups& groups, const QHash<int, bool>& hasGroups, int slave,
+                         QJsonObject* device)
+{
+    if (hasGroups.value(slave)) {
+        const std::optional<int> group = groups.groupOf(slave);
+        device->insert(QStringLiteral("group"), group ? QJsonValue(*group) : QJsonValue());
+        if (const std::optional<int> parent = groups.parentOf(slave))
+            device->insert(QStringLiteral("parent"), *parent);
+    }
+    QJsonArray children;
+    for (int child : groups.childrenOf(slave))
+        children.append(child);
+    if (!children.isEmpty())
+        device->insert(QStringLiteral("children"), children);
+}
+
+} // namespace opentop

@@ -1,0 +1,134 @@
+// Communication groups through opentop-cli over a pty against opentop-sim: a write or command to
+// a group parent also reaches its children (TROY manual 11-3), so the CLI names them, refuses
+// without --yes (nothing sent), and with --yes reads back what the children hold; scan shows
+// each drive's group and the setups that are wrong.
+#include "CliProcess.h"
+#include "SimProcess.h"
+
+using namespace opentop::test;
+
+namespace {
+
+const QString kBus = QStringLiteral("--bus-drives=1,3,5");
+
+CliResult cli(const SimProcess& sim, const QStringList& args)
+{
+    return runCliOn(sim.pty, args);
+}
+
+// Drives 1, 3 and 5; 3 and 5 are children of 1.
+void startGroupedBus(SimProcess* sim, const QString& devices)
+{
+    QString error;
+    ASSERT_TRUE(sim->start({QStringLiteral("--devices"), devices}, &error)) << qPrintable(error);
+    for (const QString& child : {QStringLiteral("3"), QStringLiteral("5")}) {
+        const CliResult r =
+            cli(*sim, {QStringLiteral("set"), child, QStringLiteral("comm.group=1")});
+        ASSERT_EQ(r.code, 0) << qPrintable(r.err);
+    }
+    ASSERT_EQ(sim->get(3, 0x00F5), 1);
+    ASSERT_EQ(sim->get(5, 0x00F5), 1);
+}
+
+} // namespace
+
+TEST(CliGroupE2e, AWriteToAGroupParentIsRefusedWithoutYesAndReadBackFromTheChildrenWithIt)
+{
+    SimProcess sim;
+    startGroupedBus(&sim, QStringLiteral("dbu200@1,dbu200@3,dbu200@5"));
+    const int before1 = sim.get(1, 0xCA03);
+    const int before3 = sim.get(3, 0xCA03);
+    const int before5 = sim.get(5, 0xCA03);
+    ASSERT_NE(before1, 1777);
+
+    CliResult r = cli(sim, {kBus, QStringLiteral("set"), QStringLiteral("1"),
+                            QStringLiteral("spno2.speed=1777")});
+    EXPECT_EQ(r.code, 3) << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("also executed by 3, 5"))) << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("nothing was sent"))) << qPrintable(r.err);
+    EXPECT_EQ(sim.get(1, 0xCA03), before1);
+    EXPECT_EQ(sim.get(3, 0xCA03), before3);
+    EXPECT_EQ(sim.get(5, 0xCA03), before5);
+
+    // A write to a child reaches the child only: no question asked.
+    r = cli(sim,
+            {kBus, QStringLiteral("set"), QStringLiteral("3"), QStringLiteral("spno2.speed=1500")});
+    EXPECT_EQ(r.code, 0) << qPrintable(r.err);
+    EXPECT_EQ(sim.get(3, 0xCA03), 1500);
+    EXPECT_EQ(sim.get(1, 0xCA03), before1);
+
+    // Child 3 now holds 1500, 5 its old value: the report shows what each child holds after.
+    r = cli(sim, {kBus, QStringLiteral("--trace"), QStringLiteral("set"), QStringLiteral("1"),
+                  QStringLiteral("spno2.speed=1777"), QStringLiteral("--yes")});
+    ASSERT_EQ(r.code, 0) << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("(group parent: also 3, 5)"))) << qPrintable(r.err);
+    const qsizetype report =
+        r.out.indexOf(QStringLiteral("Read back from the drives of the group"));
+    ASSERT_GE(report, 0) << qPrintable(r.out);
+    const QString children = r.out.mid(report);
+    EXPECT_TRUE(children.contains(QRegularExpression(QStringLiteral("\\n3 +spno2\\.speed +1777"))))
+        << qPrintable(r.out);
+    EXPECT_TRUE(children.contains(QRegularExpression(QStringLiteral("\\n5 +spno2\\.speed +1777"))))
+        << qPrintable(r.out);
+    EXPECT_EQ(sim.get(1, 0xCA03), 1777);
+    EXPECT_EQ(sim.get(3, 0xCA03), 1777);
+    EXPECT_EQ(sim.get(5, 0xCA03), 1777);
+
+    // Without the list of drives the CLI cannot know the children, and says so.
+    r = cli(sim, {QStringLiteral("set"), QStringLiteral("1"), QStringLiteral("spno2.speed=1800")});
+    EXPECT_EQ(r.code, 0) << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("--bus-drives"))) << qPrintable(r.err);
+    sim.terminate();
+}
+
+TEST(CliGroupE2e, ACommandToAGroupParentNamesTheChildrenAndReportsTheirState)
+{
+    SimProcess sim;
+    startGroupedBus(&sim, QStringLiteral("dbu200@1,dbu200@3,dbu200@5"));
+    for (int id : {1, 3, 5})
+        sim.command(QStringLiteral("set %1 0x100D 2").arg(id)); // communication priority
+
+    CliResult r =
+        cli(sim, {kBus, QStringLiteral("run"), QStringLiteral("1"), QStringLiteral("start")});
+    EXPECT_EQ(r.code, 2) << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("also executed by 3, 5"))) << qPrintable(r.err);
+    for (int id : {1, 3, 5})
+        EXPECT_EQ(sim.get(id, 0x0109, 4), 0) << id;
+    // An alarm reset reaches the children as well.
+    r = cli(sim, {kBus, QStringLiteral("alarms"), QStringLiteral("1"), QStringLiteral("--reset")});
+    EXPECT_EQ(r.code, 2) << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("also executed by 3, 5"))) << qPrintable(r.err);
+
+    r = cli(sim, {kBus, QStringLiteral("run"), QStringLiteral("1"), QStringLiteral("start"),
+                  QStringLiteral("--yes")});
+    ASSERT_EQ(r.code, 0) << qPrintable(r.err);
+    EXPECT_TRUE(r.out.contains(QStringLiteral("executed also by 3, 5"))) << qPrintable(r.out);
+    for (int id : {3, 5}) {
+        const qsizetype at = r.out.indexOf(
+            QStringLiteral("State of machine number %1 (communication group of 1):").arg(id));
+        ASSERT_GE(at, 0) << qPrintable(r.out);
+        EXPECT_TRUE(r.out.mid(at).contains(QStringLiteral("Running"))) << qPrintable(r.out);
+    }
+    sim.terminate();
+}
+
+TEST(CliGroupE2e, ScanShowsTheGroupsAndAChildOfAMissingParent)
+{
+    SimProcess sim;
+    startGroupedBus(&sim, QStringLiteral("dbu200@1,dbu200@3,dbu200@5,dcpid@7"));
+    ASSERT_EQ(
+        cli(sim, {QStringLiteral("set"), QStringLiteral("5"), QStringLiteral("comm.group=9")}).code,
+        0);
+    const CliResult r =
+        cli(sim, {QStringLiteral("scan"), QStringLiteral("--to"), QStringLiteral("10")});
+    ASSERT_EQ(r.code, 0) << qPrintable(r.err);
+    EXPECT_TRUE(r.out.contains(QStringLiteral("comm. group"))) << qPrintable(r.out);
+    EXPECT_TRUE(r.out.contains(QStringLiteral("off (parent of 3)"))) << qPrintable(r.out);
+    EXPECT_TRUE(r.out.contains(QStringLiteral("1 (child of 1)"))) << qPrintable(r.out);
+    EXPECT_TRUE(r.out.contains(QStringLiteral("9 (child of 9)"))) << qPrintable(r.out);
+    EXPECT_TRUE(
+        r.err.contains(QStringLiteral("machine number 5 is in communication group 9, but no "
+                                      "drive 9 is known")))
+        << qPrintable(r.err);
+    sim.terminate();
+}
