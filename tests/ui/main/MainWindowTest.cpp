@@ -357,3 +357,40 @@ TEST_F(MainWindowTest, AStartConfirmationDoesNotSurviveAReconnection)
     window->connectTo(again, {{1, QStringLiteral("dbu200")}});
     EXPECT_FALSE(TestRunPanel::startConfirmed(1));
 }
+
+TEST_F(MainWindowTest, TheCoreParametersPageCannotWriteAModeThatInvalidatesTheInputFunctions)
+{
+    select({1});
+    DriveWorkspace* workspace = window->workspace();
+    DeviceParameters* params = window->drives()->parameters(1);
+    ASSERT_TRUE(waitFor([&] { return workspace->drive() == params; }));
+    ASSERT_TRUE(
+        waitFor([&] { return params->entry(QStringLiteral("core.control_mode"))->device.valid; }));
+    // The generic Core parameters page among the drive's tabs (the I/O terminals page has a mode
+    // field and a guard of its own; pages of a drive shown before may still await deletion).
+    ParameterField* mode = nullptr;
+    ParameterPage* page = nullptr;
+    for (int i = 0; i < workspace->tabs()->count() && !mode; ++i) {
+        auto* tab = qobject_cast<ParameterPage*>(workspace->tabs()->widget(i));
+        if (!tab || tab->inherits("opentop::IoTerminalsPage"))
+            continue;
+        for (ParameterField* f : tab->findChildren<ParameterField*>()) {
+            if (f->parameterName() == QLatin1String("core.control_mode")) {
+                mode = f;
+                page = tab;
+            }
+        }
+    }
+    ASSERT_NE(mode, nullptr);
+    mode->enter(QStringLiteral("Mode1"));
+    ASSERT_TRUE(params->hasPending());
+    const int modeBefore = simRegister(1, 0x2015);
+    page->writePage(); // the page's own write, which no other page's guard holds back
+    ASSERT_TRUE(waitFor([&] {
+        return params->entry(QStringLiteral("core.control_mode"))->state ==
+               DeviceParameters::State::Failed;
+    }));
+    EXPECT_EQ(simRegister(1, 0x2015), modeBefore);
+    EXPECT_TRUE(params->entry(QStringLiteral("core.control_mode"))
+                    ->message.contains(QStringLiteral("Input X0 function")));
+}
