@@ -202,7 +202,7 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
     QString error;
     m_client = m_factory(settings, m_log.get(), &error);
     if (!m_client) {
-        m_connectionLabel->setText(tr("Not connected"));
+        setConnectionText(tr("Not connected: %1").arg(error), true);
         QMessageBox::warning(this, tr("Cannot connect"), error);
         emit connectionChanged(false);
         return;
@@ -241,26 +241,39 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
     connect(m_panel, &BusPanel::selectionChanged, this, &MainWindow::showDrive);
     connect(m_client.get(), &ModbusClient::opened, this, &MainWindow::onOpened);
     connect(m_client.get(), &ModbusClient::connectionLost, this, [this](const QString& lost) {
-        m_connectionLabel->setText(tr("Connection lost: %1").arg(lost));
+        setConnectionText(tr("Connection lost: %1").arg(lost), true);
         QMessageBox::warning(this, tr("Connection lost"),
                              ConnectionDialog::explainOpenError(m_settings, lost));
     });
     setWindowTitle(tr("OpenTOP — %1").arg(m_client->describe()));
-    m_connectionLabel->setText(tr("Connecting to %1…").arg(m_client->describe()));
+    setConnectionText(tr("Connecting to %1…").arg(m_client->describe()), false);
     m_client->open();
+}
+
+void MainWindow::setConnectionText(const QString& text, bool problem)
+{
+    // A port error can be several long lines: the status bar shows the first, shortened, so
+    // that it never widens the window; the whole text is in the tooltip.
+    const QString first = text.section(QLatin1Char('\n'), 0, 0);
+    m_connectionLabel->setText(
+        m_connectionLabel->fontMetrics().elidedText(first, Qt::ElideRight, 520));
+    m_connectionLabel->setToolTip(text);
+    m_connectionLabel->setStyleSheet(problem ? QStringLiteral("color: white; background: #b01c1c; "
+                                                              "font-weight: bold; padding: 0 6px;")
+                                             : QString());
 }
 
 void MainWindow::onOpened(bool ok, const QString& error)
 {
     m_connected = ok;
     if (!ok) {
-        m_connectionLabel->setText(tr("Not connected"));
+        setConnectionText(tr("Not connected: %1").arg(error), true);
         QMessageBox::warning(this, tr("Cannot connect"),
                              ConnectionDialog::explainOpenError(m_settings, error));
         emit connectionChanged(false);
         return;
     }
-    m_connectionLabel->setText(tr("Connected: %1").arg(m_client->describe()));
+    setConnectionText(tr("Connected: %1").arg(m_client->describe()), false);
     m_poller->start();
     identifyKnown();
     emit connectionChanged(true);

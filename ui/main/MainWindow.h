@@ -57,6 +57,7 @@ public:
     StopAllButton* stopAllButton() const { return m_stopAll; }
     ExitGuard* exitGuard() const { return m_exitGuard; }
     DriveStatusPoller* statusPoller() const { return m_poller; }
+    QLabel* connectionLabel() const { return m_connectionLabel; }
     MonitorHub* monitorHub() const { return m_hub; }
     BusOverview* busOverview() const { return m_overview; }
     TrendPanel* trendPanel() const { return m_trends; }
@@ -73,6 +74,8 @@ private:
     void buildActions();
     void teardown();
     void onOpened(bool ok, const QString& error);
+    // The connection state in the status bar: one shortened line, red when something is wrong.
+    void setConnectionText(const QString& text, bool problem);
     void identifyKnown();
     void showDrive(const QVector<int>& slaves);
     void writeToSelected();

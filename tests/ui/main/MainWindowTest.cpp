@@ -32,6 +32,7 @@
 #include <QDeadlineTimer>
 #include <QDockWidget>
 #include <QItemSelectionModel>
+#include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -393,4 +394,26 @@ TEST_F(MainWindowTest, TheCoreParametersPageCannotWriteAModeThatInvalidatesTheIn
     EXPECT_EQ(simRegister(1, 0x2015), modeBefore);
     EXPECT_TRUE(params->entry(QStringLiteral("core.control_mode"))
                     ->message.contains(QStringLiteral("Input X0 function")));
+}
+
+TEST_F(MainWindowTest, ALostConnectionIsRedInTheStatusBarAndALongReasonDoesNotWidenTheWindow)
+{
+    window->resize(1366, 768);
+    const QString reason =
+        QStringLiteral("Cannot open /dev/ttyUSB0 19200 8N1: Input/output error: ") +
+        QString(3000, QLatin1Char('x')) + QStringLiteral("\nsecond line");
+    // The explanation comes in a modal window; close it as a person would.
+    QTimer::singleShot(200, [] {
+        if (QWidget* modal = QApplication::activeModalWidget())
+            modal->close();
+    });
+    emit window->client()->connectionLost(reason);
+    QLabel* label = window->connectionLabel();
+    EXPECT_TRUE(label->text().startsWith(QStringLiteral("Connection lost: Cannot open")))
+        << qPrintable(label->text());
+    EXPECT_FALSE(label->text().contains(QStringLiteral("second line")));
+    EXPECT_EQ(label->toolTip(), QStringLiteral("Connection lost: ") + reason);
+    EXPECT_TRUE(label->styleSheet().contains(QStringLiteral("#b01c1c")));
+    EXPECT_LE(window->minimumSizeHint().width(), 1366);
+    EXPECT_LE(label->sizeHint().width(), 600);
 }
