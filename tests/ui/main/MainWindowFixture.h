@@ -1,0 +1,157 @@
+// The whole program's window against an in-process simulated bus (dbu200@1, dbu200@2,
+// dbu400@150, dcpid@7), connected and identified; helpers that act as the user or the drive.
+#pragma once
+#include "main/MainWindow.h"
+#include "BackendFactory.h"
+#include "ModbusClient.h"
+#include "SimBus.h"
+#include "TrafficLog.h"
+#include "bus/BusDrives.h"
+#include "bus/BusListModel.h"
+#include "bus/BusOverview.h"
+#include "bus/BusOverviewModel.h"
+#include "bus/BusPanel.h"
+#include "bus/DriveStatusPoller.h"
+#include "monitor/MonitorHub.h"
+#include "monitor/MonitorPage.h"
+#include "pages/EditorRegistry.h"
+#include "profile/ProfileRegistry.h"
+#include "run/ExitCheck.h"
+#include "run/ExitGuard.h"
+#include "run/RunControl.h"
+#include "run/StopAllButton.h"
+#include "run/TestRunPanel.h"
+#include "session/DeviceParameters.h"
+#include "session/DeviceSession.h"
+#include "workspace/DriveWorkspace.h"
+#include "workspace/ParameterField.h"
+#include "workspace/ParameterPage.h"
+
+#include <QApplication>
+#include <QCoreApplication>
+#include <QDeadlineTimer>
+#include <QDockWidget>
+#include <QItemSelectionModel>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QSettings>
+#include <QTabWidget>
+#include <QTableView>
+#include <QTest>
+#include <QTimer>
+#include <gtest/gtest.h>
+
+namespace opentop::test {
+
+using namespace opentop;
+
+inline bool waitFor(const std::function<bool()>& condition, int ms = 10000)
+{
+    QDeadlineTimer deadline(ms);
+    while (!condition() && !deadline.hasExpired())
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+    return condition();
+}
+
+class MainWindowFixture : public ::testing::Test
+{
+protected:
+    void SetUp() override
+    {
+        QCoreApplication::setOrganizationName(QStringLiteral("OpenTOP-test"));
+        QSettings().clear();
+        registerBuiltInEditors();
+        window = std::make_unique<MainWindow>(
+            [this](const ConnectionSettings& s, TrafficLog* log, QString* error) {
+                auto made = BackendFactory::makeClient(s, log);
+                bus = made.simBus;
+                if (error)
+                    *error = made.error;
+                return std::move(made.client);
+            });
+        ConnectionSettings settings;
+        settings.kind = ConnectionSettings::Kind::Simulated;
+        settings.simSpec = QStringLiteral("dbu200@1,dbu200@2,dbu400@150,dcpid@7");
+        settings.timeoutMs = 100;
+        window->show();
+        window->connectTo(settings, {{1, QStringLiteral("dbu200")},
+                                     {2, QStringLiteral("dbu200")},
+                                     {150, QStringLiteral("dbu400")},
+                                     {7, QStringLiteral("dcpid")}});
+        ASSERT_TRUE(
+            waitFor([this] { return window->drives() && window->drives()->slaves().size() == 4; }));
+    }
+
+    int simRegister(int slave, quint16 address)
+    {
+        const QString text =
+            bus->control(slave, {QStringLiteral("get"), QString::number(address)}).text;
+        const QRegularExpressionMatch m =
+            QRegularExpression(QStringLiteral("= (\\d+) ")).match(text);
+        return m.hasMatch() ? m.captured(1).toInt() : -1;
+    }
+
+    void select(const QVector<int>& slaves)
+    {
+        QTableView* view = window->busPanel()->view();
+        view->clearSelection();
+        for (int slave : slaves) {
+            const int row = window->busPanel()->model()->rowOf(slave);
+            view->selectionModel()->select(view->model()->index(row, 0),
+                                           QItemSelectionModel::Select | QItemSelectionModel::Rows);
+        }
+    }
+
+    // Starts a DBU the way the Test run page does: communication priority, then start.
+    void startDrive(int slave)
+    {
+        bus->control(slave, {QStringLiteral("set"), QStringLiteral("0x100D"), QStringLiteral("2")});
+        RunControl control(window->client(), ProfileRegistry::builtIn());
+        RunControl::Command start;
+        start.action = RunControl::Action::Start;
+        bool done = false;
+        RunControl::Outcome outcome;
+        control.execute(window->drives()->session(slave), start, [&](const RunControl::Outcome& o) {
+            outcome = o;
+            done = true;
+        });
+        ASSERT_TRUE(waitFor([&] { return done; }));
+        ASSERT_TRUE(outcome.ok) << qPrintable(outcome.error);
+    }
+    int speedOf(int slave) { return simRegister(slave, 0x0109); }
+
+    // Answers the exit question with `key` (Return: the default button, Escape: Cancel) once it
+    // shows, and returns its text.
+    std::shared_ptr<QString> answerExitQuestion(Qt::Key key)
+    {
+        auto text = std::make_shared<QString>();
+        QObject::connect(
+            window->exitGuard(), &ExitGuard::asking, window.get(),
+            [text, key] {
+                auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+                ASSERT_NE(box, nullptr);
+                *text = box->text() + QLatin1Char('\n') + box->informativeText() +
+                        QLatin1Char('\n') + box->defaultButton()->text();
+                QTest::keyClick(box, key);
+            },
+            Qt::SingleShotConnection);
+        return text;
+    }
+    // The status poller has seen what the exit check needs to know.
+    bool leftBehind(int slave)
+    {
+        for (const DriveLeftBehind& d :
+             ExitCheck::collect(*window->drives(), *window->statusPoller())) {
+            if (d.slave == slave)
+                return true;
+        }
+        return false;
+    }
+
+    std::shared_ptr<SimBus> bus;
+    std::unique_ptr<MainWindow> window;
+};
+
+} // namespace opentop::test
