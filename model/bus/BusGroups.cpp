@@ -111,6 +111,29 @@ QString BusGroups::reachText(int slave) const
         .arg(listText(children));
 }
 
+QString BusGroups::andListText(const QVector<int>& slaves)
+{
+    if (slaves.size() < 2)
+        return listText(slaves);
+    return tr("%1 and %2").arg(listText(slaves.mid(0, slaves.size() - 1))).arg(slaves.last());
+}
+
+QString BusGroups::alsoReachesText(int slave) const
+{
+    const QVector<int> children = childrenOf(slave);
+    if (children.isEmpty())
+        return {};
+    return children.size() == 1
+               ? tr("This also reaches machine number %1 (the child of communication group %2; "
+                    "it executes it without replying).")
+                     .arg(children.first())
+                     .arg(slave)
+               : tr("This also reaches machine numbers %1 (the children of communication group "
+                    "%2; they execute it without replying).")
+                     .arg(andListText(children))
+                     .arg(slave);
+}
+
 QString BusGroups::roleText(int slave) const
 {
     QStringList parts;

@@ -38,6 +38,7 @@ public:
     void clear();
     // A drive known on the bus; without a group value it has no group (or it is unknown).
     void addDrive(int slave);
+    void removeDrive(int slave) { m_groups.remove(slave); }
     void setGroup(int slave, std::optional<int> group);
     // The raw group setting as read from the drive.
     void setGroupRaw(int slave, qint64 raw) { setGroup(slave, groupFromRaw(raw)); }
@@ -58,6 +59,12 @@ public:
     // "a write to 1 is also executed by 3, 5 (communication group 1; they do not reply)";
     // empty when `slave` has no children.
     QString reachText(int slave) const;
+    // "3 and 5", "3, 5 and 150"
+    static QString andListText(const QVector<int>& slaves);
+    // What a write or command to `slave` also reaches, for a question before sending it:
+    // "This also reaches machine numbers 2 and 150 (the children of communication group 1;
+    // they execute it without replying)." Empty when `slave` has no children.
+    QString alsoReachesText(int slave) const;
     // The role of a drive for a scan listing: "parent of 3, 5", "child of 1", "—".
     QString roleText(int slave) const;
     static QString describe(const Problem& problem);

@@ -286,6 +286,7 @@ void DeviceSession::send(const ParameterMeta* meta, const QVector<quint16>& regi
                              explainFailure(r, outcome, done);
                              return;
                          }
+                         emit this->written(meta->name);
                          if (!options.verify || !meta->isReadable()) {
                              outcome.ok = true;
                              outcome.value = ValueCodec::decode(*meta, written, context());

@@ -88,6 +88,9 @@ public:
 signals:
     // A value read from the device (never an echo of a user edit).
     void valueUpdated(const QString& name, const opentop::ParamValue& value);
+    // The drive acknowledged a write of `name` (before it is read back). Drives of a
+    // communication group whose parent this is executed it too (BusGroupTracker).
+    void written(const QString& name);
 
 private:
     const ParameterMeta* lookup(const QString& name, Outcome* outcome) const;

@@ -1,0 +1,108 @@
+#include "bus/BusMemory.h"
+
+#include "bus/BusDrives.h"
+
+#include <QCoreApplication>
+#include <QSettings>
+#include <QStringList>
+
+namespace opentop {
+
+namespace {
+
+QString settingsGroup(const QString& key)
+{
+    // Slashes separate QSettings groups: the key is stored encoded.
+    return QStringLiteral("busMemory/") +
+           QString::fromLatin1(key.toUtf8().toBase64(QByteArray::Base64UrlEncoding |
+                                                     QByteArray::OmitTrailingEquals));
+}
+
+} // namespace
+
+QString BusMemory::key(const ConnectionSettings& settings)
+{
+    switch (settings.kind) {
+    case ConnectionSettings::Kind::Serial:
+        return QStringLiteral("serial:") + settings.port;
+    case ConnectionSettings::Kind::Tcp:
+        return QStringLiteral("tcp:%1:%2").arg(settings.host).arg(settings.tcpPort);
+    case ConnectionSettings::Kind::Simulated:
+        return QStringLiteral("sim:") + settings.simSpec;
+    }
+    return {};
+}
+
+QString BusMemory::placeText(const ConnectionSettings& settings)
+{
+    switch (settings.kind) {
+    case ConnectionSettings::Kind::Serial:
+        return settings.port;
+    case ConnectionSettings::Kind::Tcp:
+        return QStringLiteral("%1:%2").arg(settings.host).arg(settings.tcpPort);
+    case ConnectionSettings::Kind::Simulated:
+        return QCoreApplication::translate("opentop::BusMemory", "the simulated bus");
+    }
+    return {};
+}
+
+void BusMemory::save(const QString& key, const BusDrives& drives)
+{
+    QSettings settings;
+    settings.remove(settingsGroup(key));
+    settings.beginWriteArray(settingsGroup(key));
+    int index = 0;
+    for (int slave : drives.slaves()) {
+        const DeviceInfo info = drives.info(slave);
+        if (info.state != DeviceInfo::State::Present || info.family.isEmpty())
+            continue;
+        settings.setArrayIndex(index++);
+        settings.setValue(QStringLiteral("slave"), slave);
+        settings.setValue(QStringLiteral("type"),
+                          info.variant.isEmpty() ? info.family : info.variant);
+        settings.setValue(QStringLiteral("model"), info.model);
+    }
+    settings.endArray();
+}
+
+QVector<BusMemory::Drive> BusMemory::load(const QString& key)
+{
+    QSettings settings;
+    QVector<Drive> out;
+    const int count = settings.beginReadArray(settingsGroup(key));
+    for (int i = 0; i < count; ++i) {
+        settings.setArrayIndex(i);
+        Drive d;
+        d.slave = settings.value(QStringLiteral("slave")).toInt();
+        d.type = settings.value(QStringLiteral("type")).toString();
+        d.model = settings.value(QStringLiteral("model")).toString();
+        if (d.slave >= 1 && d.slave <= 247 && !d.type.isEmpty())
+            out << d;
+    }
+    settings.endArray();
+    return out;
+}
+
+void BusMemory::forget(const QString& key)
+{
+    QSettings().remove(settingsGroup(key));
+}
+
+QHash<int, QString> BusMemory::types(const QVector<Drive>& drives)
+{
+    QHash<int, QString> out;
+    for (const Drive& d : drives)
+        out.insert(d.slave, d.type);
+    return out;
+}
+
+QString BusMemory::listText(const QVector<Drive>& drives)
+{
+    QStringList parts;
+    for (const Drive& d : drives)
+        parts << (d.model.isEmpty() ? QString::number(d.slave)
+                                    : QStringLiteral("%1 (%2)").arg(d.slave).arg(d.model));
+    return parts.join(QStringLiteral(", "));
+}
+
+} // namespace opentop
