@@ -5,6 +5,7 @@
 #include "files/RestorePlanTable.h"
 #include "files/RestoreReport.h"
 #include "files/Restorer.h"
+#include "groups/GroupWriteCheck.h"
 #include "profile/ProfileRegistry.h"
 #include "session/DeviceSession.h"
 #include "widgets/ConfirmBox.h"
@@ -362,15 +363,21 @@ void RestoreDialog::confirmAndWrite()
         return;
     int settings = 0;
     QStringList drives;
+    QStringList reached; // group parents' children execute the writes too
     for (const RestorePlan& plan : m_plans) {
         settings += plan.count(Item::Action::Write);
         drives << QString::number(plan.slave);
+        const QString reach =
+            GroupWriteCheck::reachText(m_drives ? m_drives->session(plan.slave) : nullptr);
+        if (!reach.isEmpty() && plan.count(Item::Action::Write) > 0)
+            reached << tr("Drive %1: %2").arg(plan.slave).arg(reach);
     }
-    ConfirmBox::ask(this, tr("Write to drives"),
-                    tr("Write %n setting(s) to drive(s) %1, each verified by reading it back?",
-                       nullptr, settings)
-                        .arg(drives.join(QStringLiteral(", "))),
-                    tr("&Write"), [this] { write(); });
+    QString question = tr("Write %n setting(s) to drive(s) %1, each verified by reading it back?",
+                          nullptr, settings)
+                           .arg(drives.join(QStringLiteral(", ")));
+    if (!reached.isEmpty())
+        question += QStringLiteral("\n\n") + reached.join(QLatin1Char('\n'));
+    ConfirmBox::ask(this, tr("Write to drives"), question, tr("&Write"), [this] { write(); });
 }
 
 void RestoreDialog::chooseReportPath()

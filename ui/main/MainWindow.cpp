@@ -6,12 +6,15 @@
 #include "alarms/AlarmExport.h"
 #include "alarms/AlarmsPage.h"
 #include "bus/BusDrives.h"
+#include "bus/BusGroupTracker.h"
 #include "bus/BusListModel.h"
 #include "bus/BusOverview.h"
 #include "bus/BusPanel.h"
+#include "bus/BusRecallBar.h"
 #include "bus/DriveStatusPoller.h"
 #include "connection/ConnectionDialog.h"
 #include "files/FileActions.h"
+#include "groups/GroupsView.h"
 #include "monitor/MonitorHub.h"
 #include "monitor/MonitorPage.h"
 #include "profile/ProfileRegistry.h"
@@ -56,6 +59,7 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     , m_central(new QWidget(this))
     , m_splitter(new QSplitter(this))
     , m_connectionLabel(new QLabel(this))
+    , m_simBanner(new QLabel(this))
 {
     setWindowTitle(tr("OpenTOP"));
     m_splitter->setObjectName(QStringLiteral("mainSplitter"));
@@ -64,6 +68,16 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     m_splitter->setStretchFactor(1, 1);
     auto* column = new QVBoxLayout(m_central);
     column->setContentsMargins(0, 0, 0, 0);
+    // A simulated bus is unmistakable: a permanent banner (and the window title) say so.
+    m_simBanner->setObjectName(QStringLiteral("simulatedBanner"));
+    m_simBanner->setText(tr("SIMULATED BUS — no hardware: these drives exist only in this "
+                            "program, nothing moves"));
+    m_simBanner->setWordWrap(true);
+    m_simBanner->setAlignment(Qt::AlignCenter);
+    m_simBanner->setStyleSheet(QStringLiteral("background: #f9a825; color: black; "
+                                              "font-weight: bold; padding: 4px;"));
+    m_simBanner->hide();
+    column->addWidget(m_simBanner);
     column->addWidget(m_splitter, 1); // the alarm banner goes above it once connected
     setCentralWidget(m_central);
     // Every frame, decoded with parameter names, in a dock that can be shown or hidden.
@@ -73,8 +87,10 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     addDockWidget(Qt::BottomDockWidgetArea, trafficDock);
     trafficDock->hide();
     // Live views of the whole bus; their contents are made per connection.
-    for (const auto& [name, title] : {std::pair(QStringLiteral("overviewDock"), tr("Bus overview")),
-                                      std::pair(QStringLiteral("trendDock"), tr("Trends"))}) {
+    for (const auto& [name, title] :
+         {std::pair(QStringLiteral("overviewDock"), tr("Bus overview")),
+          std::pair(QStringLiteral("trendDock"), tr("Trends")),
+          std::pair(QStringLiteral("groupsDock"), tr("Communication groups"))}) {
         auto* d = new QDockWidget(title, this);
         d->setObjectName(name);
         d->setWidget(new QLabel(tr("Not connected"), d));
@@ -114,6 +130,10 @@ void MainWindow::buildActions()
     });
     scan->setShortcut(QKeySequence(Qt::Key_F5));
     toolbar->addAction(scan);
+    file->addAction(tr("Communication &groups…"), this, [this] {
+        dock(QStringLiteral("groupsDock"))->show();
+        dock(QStringLiteral("groupsDock"))->raise();
+    });
     file->addAction(tr("&Export alarm histories…"), this, &MainWindow::exportAlarms);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
@@ -143,7 +163,9 @@ void MainWindow::buildActions()
         {QStringLiteral("trafficDock"), tr("&Traffic log"), QKeySequence(Qt::CTRL | Qt::Key_T)},
         {QStringLiteral("overviewDock"), tr("Bus &overview"),
          QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O)},
-        {QStringLiteral("trendDock"), tr("T&rends"), QKeySequence(Qt::CTRL | Qt::Key_G)}};
+        {QStringLiteral("trendDock"), tr("T&rends"), QKeySequence(Qt::CTRL | Qt::Key_G)},
+        {QStringLiteral("groupsDock"), tr("Communication &groups"),
+         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_G)}};
     for (const auto& [name, text, key] : docks) {
         QAction* a = dock(name)->toggleViewAction();
         a->setText(text);
@@ -158,13 +180,17 @@ void MainWindow::teardown()
     while (m_workspace->tabs()->count() > 0)
         delete m_workspace->tabs()->widget(0);
     m_workspace->setDrive(nullptr, QString());
-    for (const QString& name : {QStringLiteral("overviewDock"), QStringLiteral("trendDock")}) {
+    delete m_recall; // before the drives: it remembers what is left of them
+    m_recall = nullptr;
+    for (const QString& name : {QStringLiteral("overviewDock"), QStringLiteral("trendDock"),
+                                QStringLiteral("groupsDock")}) {
         QWidget* old = dock(name)->widget();
         dock(name)->setWidget(new QLabel(tr("Not connected"), dock(name)));
         delete old;
     }
     m_overview = nullptr;
     m_trends = nullptr;
+    m_groupsView = nullptr;
     delete m_hub; // before the drives: its monitors use their sessions
     m_hub = nullptr;
     if (m_stopAllAction) {
@@ -186,7 +212,9 @@ void MainWindow::teardown()
     m_poller = nullptr;
     delete m_drives;
     m_drives = nullptr;
-    m_client.reset(); // bounded shutdown of the bus worker
+    m_groups = nullptr; // the drives' child
+    m_client.reset();   // bounded shutdown of the bus worker
+    m_simBanner->hide();
     m_connected = false;
     // A start confirmed for this bus says nothing about the next one (another machine may use
     // the same machine numbers).
@@ -209,10 +237,15 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
     }
     m_drives = new BusDrives(m_client.get(), ProfileRegistry::builtIn(), this);
     m_poller = new DriveStatusPoller(m_drives, this);
+    m_groups = new BusGroupTracker(m_drives);
     m_panel = new BusPanel(m_drives, m_poller, m_splitter);
     m_hub = new MonitorHub(m_drives, this);
     buildMonitorDocks();
-    m_log->setDescriber(TrafficDescriber(m_drives, ProfileRegistry::builtIn()).describer());
+    // The traffic log names parameters and who else a write reaches (group children).
+    TrafficDescriber describer(m_drives, ProfileRegistry::builtIn());
+    m_log->setDescriber(describer.describer());
+    connect(m_groups, &BusGroupTracker::groupsChanged, m_groups,
+            [describer, groups = m_groups]() mutable { describer.setGroups(groups->groups()); });
     // STOP ALL is always on the toolbar and on the keyboard (StopAllButton::shortcuts()).
     m_stopAll = new StopAllButton(m_drives, m_toolbar);
     m_stopAllAction = m_toolbar->addWidget(m_stopAll);
@@ -220,6 +253,26 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
     m_exitGuard = new ExitGuard(m_drives, m_poller, this);
     m_banner = new AlarmBanner(m_poller, m_central);
     static_cast<QVBoxLayout*>(m_central->layout())->insertWidget(0, m_banner);
+    // The drives last seen here, offered back (not when the caller names the drives).
+    m_recall = new BusRecallBar(m_drives, settings, knownTypes.isEmpty(), m_central);
+    static_cast<QVBoxLayout*>(m_central->layout())->insertWidget(1, m_recall);
+    connect(m_recall, &BusRecallBar::restoreRequested, this,
+            [this](const QHash<int, QString>& types) {
+                m_knownTypes = types;
+                if (m_connected)
+                    identifyKnown();
+            });
+    connect(m_recall, &BusRecallBar::scanRequested, this, [this] {
+        if (m_panel && m_connected && !m_panel->isScanning())
+            m_panel->startScan(1, 247);
+    });
+    // The header names the model once the variant is known (identified or set by hand).
+    connect(m_drives, &BusDrives::driveChanged, this, [this](int slave) {
+        if (m_workspace->drive() && m_workspace->drive() == m_drives->parameters(slave))
+            m_workspace->setTitle(driveTitle(slave));
+    });
+    const bool simulated = settings.kind == ConnectionSettings::Kind::Simulated;
+    m_simBanner->setVisible(simulated);
     connect(m_banner, &AlarmBanner::showAlarms, this, [this](int slave) {
         m_panel->view()->selectRow(m_panel->model()->rowOf(slave));
         for (int i = 0; i < m_workspace->tabs()->count(); ++i) {
@@ -245,7 +298,9 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
         QMessageBox::warning(this, tr("Connection lost"),
                              ConnectionDialog::explainOpenError(m_settings, lost));
     });
-    setWindowTitle(tr("OpenTOP — %1").arg(m_client->describe()));
+    setWindowTitle(simulated
+                       ? tr("OpenTOP — SIMULATED BUS (no hardware) — %1").arg(m_client->describe())
+                       : tr("OpenTOP — %1").arg(m_client->describe()));
     setConnectionText(tr("Connecting to %1…").arg(m_client->describe()), false);
     m_client->open();
 }
@@ -273,7 +328,10 @@ void MainWindow::onOpened(bool ok, const QString& error)
         emit connectionChanged(false);
         return;
     }
-    setConnectionText(tr("Connected: %1").arg(m_client->describe()), false);
+    setConnectionText(m_settings.kind == ConnectionSettings::Kind::Simulated
+                          ? tr("Connected: %1 (simulated, no hardware)").arg(m_client->describe())
+                          : tr("Connected: %1").arg(m_client->describe()),
+                      false);
     m_poller->start();
     identifyKnown();
     emit connectionChanged(true);
@@ -316,11 +374,7 @@ void MainWindow::showDrive(const QVector<int>& slaves)
     const DeviceInfo info = m_drives->info(slaves.first());
     if (m_workspace->drive() == m_drives->parameters(info.slave))
         return;
-    m_workspace->setDrive(m_drives->parameters(info.slave),
-                          tr("Machine number %1 (%2, %3) — %4, firmware V%5")
-                              .arg(info.slave)
-                              .arg(DeviceInfo::hexText(info.slave),
-                                   DeviceInfo::switchText(info.slave), info.model, info.firmware));
+    m_workspace->setDrive(m_drives->parameters(info.slave), driveTitle(info.slave));
     // The monitoring side of the drive: live values, test run and alarm histories.
     auto* monitor = new MonitorPage(m_hub, m_drives->parameters(info.slave), m_workspace->tabs());
     // First: what a drive is doing is what one wants to see on selecting it (as on a TOP-1).
@@ -334,15 +388,26 @@ void MainWindow::showDrive(const QVector<int>& slaves)
     alarms->refresh();
 }
 
+QString MainWindow::driveTitle(int slave) const
+{
+    const DeviceInfo info = m_drives->info(slave);
+    return tr("Machine number %1 (%2, %3) — %4, firmware V%5")
+        .arg(info.slave)
+        .arg(DeviceInfo::hexText(info.slave), DeviceInfo::switchText(info.slave), info.model,
+             info.firmware);
+}
+
 void MainWindow::buildMonitorDocks()
 {
     m_overview = new BusOverview(m_drives, m_hub, dock(QStringLiteral("overviewDock")));
     connect(m_overview, &BusOverview::driveActivated, this,
             [this](int slave) { m_panel->view()->selectRow(m_panel->model()->rowOf(slave)); });
     m_trends = new TrendPanel(m_hub, dock(QStringLiteral("trendDock")));
+    m_groupsView = new GroupsView(m_groups, dock(QStringLiteral("groupsDock")));
     for (const auto& [name, widget] :
          {std::pair(QStringLiteral("overviewDock"), (QWidget*)m_overview),
-          std::pair(QStringLiteral("trendDock"), (QWidget*)m_trends)}) {
+          std::pair(QStringLiteral("trendDock"), (QWidget*)m_trends),
+          std::pair(QStringLiteral("groupsDock"), (QWidget*)m_groupsView)}) {
         QWidget* old = dock(name)->widget();
         dock(name)->setWidget(widget);
         delete old;

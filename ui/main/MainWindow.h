@@ -17,6 +17,9 @@ class QToolBar;
 namespace opentop {
 
 class BusDrives;
+class BusGroupTracker;
+class BusRecallBar;
+class GroupsView;
 class BusPanel;
 class DriveStatusPoller;
 class DriveWorkspace;
@@ -61,6 +64,13 @@ public:
     MonitorHub* monitorHub() const { return m_hub; }
     BusOverview* busOverview() const { return m_overview; }
     TrendPanel* trendPanel() const { return m_trends; }
+    // Every drive's communication group, kept up to date (writes to a parent re-read children).
+    BusGroupTracker* groups() const { return m_groups; }
+    GroupsView* groupsView() const { return m_groupsView; }
+    // The offer of the drives last seen on this connection (or to scan), per connection.
+    BusRecallBar* recallBar() const { return m_recall; }
+    // The permanent marker of a simulated bus (hidden on hardware).
+    QLabel* simulatedBanner() const { return m_simBanner; }
     // Shows the bus overview and the trends of every drive (they poll while shown).
     void monitorAll();
 
@@ -83,6 +93,7 @@ private:
     void exportAlarms();
     void buildMonitorDocks();
     QDockWidget* dock(const QString& name) const;
+    QString driveTitle(int slave) const;
 
     ClientFactory m_factory;
     std::unique_ptr<TrafficLog> m_log;
@@ -109,6 +120,10 @@ private:
     MonitorHub* m_hub = nullptr;
     BusOverview* m_overview = nullptr;
     TrendPanel* m_trends = nullptr;
+    BusGroupTracker* m_groups = nullptr;
+    GroupsView* m_groupsView = nullptr;
+    BusRecallBar* m_recall = nullptr;
+    QLabel* m_simBanner;
 };
 
 } // namespace opentop

@@ -1,5 +1,6 @@
 #include "pages/RunningDataPage.h"
 
+#include "groups/GroupWriteCheck.h"
 #include "profile/ValueCodec.h"
 #include "session/DeviceParameters.h"
 #include "session/DeviceSession.h"
@@ -242,6 +243,9 @@ void RunningDataPage::initializeRow(int spno)
         edits = edits || parameters()->pendingNames().contains(n);
     if (edits)
         details += QStringLiteral("\n\n") + tr("Your unwritten edits in this row are discarded.");
+    // A group parent's children execute the reset too.
+    if (const QString reach = GroupWriteCheck::reachText(session); !reach.isEmpty())
+        details += QStringLiteral("\n\n") + reach;
 
     QMessageBox box(QMessageBox::Warning, tr("Initialize SPno%1").arg(spno),
                     tr("Reset running data SPno%1 of drive %2 to these factory defaults?")

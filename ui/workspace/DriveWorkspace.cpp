@@ -1,6 +1,8 @@
 #include "workspace/DriveWorkspace.h"
 
+#include "groups/GroupWriteCheck.h"
 #include "session/DeviceParameters.h"
+#include "session/DeviceSession.h"
 #include "workspace/GroupPage.h"
 
 #include <QHBoxLayout>
@@ -52,6 +54,17 @@ DriveWorkspace::DriveWorkspace(QWidget* parent)
             m_parameters->revertAll();
     });
     setDrive(nullptr, QString());
+}
+
+void DriveWorkspace::setTitle(const QString& title)
+{
+    if (m_parameters)
+        m_title->setText(title);
+}
+
+QString DriveWorkspace::titleText() const
+{
+    return m_title->text();
 }
 
 void DriveWorkspace::setDrive(DeviceParameters* parameters, const QString& title)
@@ -154,6 +167,13 @@ void DriveWorkspace::writeAll()
         }
     }
     const int count = m_parameters->pendingNames().size();
+    if (!GroupWriteCheck::confirm(
+            this, m_parameters->session(),
+            tr("Write %n pending value(s) to machine number %1", nullptr, count)
+                .arg(m_parameters->session()->slave()))) {
+        m_status->setText(tr("Nothing was written."));
+        return;
+    }
     m_status->setText(tr("Writing %n value(s)…", nullptr, count));
     m_parameters->write({}, [this, count](int failed) {
         m_status->setText(failed ? tr("%n write(s) failed; see the marked fields", nullptr, failed)

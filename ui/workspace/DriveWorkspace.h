@@ -29,6 +29,9 @@ public:
 
     // Shows `parameters` (nullptr: nothing selected). `title` is the drive's identity line.
     void setDrive(DeviceParameters* parameters, const QString& title);
+    // The identity line of the drive shown (e.g. once its variant is known).
+    void setTitle(const QString& title);
+    QString titleText() const;
     DeviceParameters* drive() const { return m_parameters; }
     QTabWidget* tabs() const { return m_tabs; }
     ParameterPage* page(const QString& title) const;

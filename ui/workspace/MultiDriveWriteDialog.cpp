@@ -1,6 +1,8 @@
 #include "workspace/MultiDriveWriteDialog.h"
 
 #include "bus/BusDrives.h"
+#include "bus/BusGroupTracker.h"
+#include "groups/GroupWriteCheck.h"
 #include "profile/ValueCodec.h"
 #include "session/DeviceSession.h"
 
@@ -250,6 +252,14 @@ void MultiDriveWriteDialog::writeToAll()
     const QString text = m_value->text().trimmed();
     if (!m_problem.isEmpty() || text.isEmpty())
         return; // nothing is sent
+    // A group parent among them: its children execute the write too (even unselected ones).
+    if (!GroupWriteCheck::confirm(
+            this, BusGroupTracker::of(m_drives->session(m_writable.first())), m_writable,
+            tr("Write %1 to machine number(s) %2")
+                .arg(meta(m_writable.first())->label, BusGroups::listText(m_writable)))) {
+        m_message->setText(tr("Nothing was written."));
+        return;
+    }
     m_writing = true;
     for (int slave : m_writable)
         setCell(slave, Result, tr("waiting…"));

@@ -1,6 +1,8 @@
 #include "workspace/ParameterPage.h"
 
+#include "groups/GroupWriteCheck.h"
 #include "session/DeviceParameters.h"
+#include "session/DeviceSession.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
@@ -100,6 +102,15 @@ void ParameterPage::writePage()
     const QString blocker = writeBlocker();
     if (!blocker.isEmpty()) {
         setStatus(blocker, true); // nothing is sent
+        return;
+    }
+    // A group parent's write is executed by its children too: named and asked first.
+    if (!GroupWriteCheck::confirm(this, m_parameters->session(),
+                                  tr("Write %n value(s) of the page %1 to machine number %2",
+                                     nullptr, int(pending.size()))
+                                      .arg(m_title)
+                                      .arg(m_parameters->session()->slave()))) {
+        setStatus(tr("Nothing was written."));
         return;
     }
     m_busy = true;

@@ -1,0 +1,46 @@
+// The drives of a connection remembered per port, gateway or simulated bus.
+#include "bus/BusMemory.h"
+#include "DriveSimFixture.h"
+
+#include <QSettings>
+
+using namespace opentop;
+using namespace opentop::test;
+
+namespace {
+using BusMemoryTest = DriveSimFixture;
+} // namespace
+
+TEST_F(BusMemoryTest, DrivesAndTheirVariantsAreKeptPerConnection)
+{
+    QCoreApplication::setOrganizationName(QStringLiteral("OpenTOP-test"));
+    QSettings().clear();
+    ConnectionSettings serial;
+    serial.port = QStringLiteral("/dev/ttyUSB0");
+    ConnectionSettings tcp;
+    tcp.kind = ConnectionSettings::Kind::Tcp;
+    tcp.host = QStringLiteral("10.0.0.5");
+    EXPECT_EQ(BusMemory::key(serial), QStringLiteral("serial:/dev/ttyUSB0"));
+    EXPECT_EQ(BusMemory::key(tcp), QStringLiteral("tcp:10.0.0.5:502"));
+    EXPECT_TRUE(BusMemory::load(BusMemory::key(serial)).isEmpty());
+
+    startBus(QStringLiteral("dbu200@1,dbu400@150,dcpid@7"));
+    auto drives = identifiedDrives({1, 150, 7});
+    drives->setVariant(1, QStringLiteral("dbu400")); // set by hand
+    DeviceInfo absent;
+    absent.slave = 9;
+    absent.state = DeviceInfo::State::Absent;
+    drives->update(absent);
+    BusMemory::save(BusMemory::key(serial), *drives);
+
+    const QVector<BusMemory::Drive> kept = BusMemory::load(BusMemory::key(serial));
+    ASSERT_EQ(kept.size(), 3); // the absent one is not remembered
+    EXPECT_EQ(kept[0].slave, 1);
+    EXPECT_EQ(kept[0].type, QStringLiteral("dbu400"));
+    EXPECT_EQ(kept[0].model, QStringLiteral("DBU400-D4"));
+    EXPECT_EQ(BusMemory::types(kept).value(7), QStringLiteral("dcpid"));
+    EXPECT_TRUE(BusMemory::listText(kept).startsWith(QStringLiteral("1 (DBU400-D4), 150 (")));
+    EXPECT_TRUE(BusMemory::load(BusMemory::key(tcp)).isEmpty()); // another connection
+    BusMemory::forget(BusMemory::key(serial));
+    EXPECT_TRUE(BusMemory::load(BusMemory::key(serial)).isEmpty());
+}

@@ -1,0 +1,84 @@
+#include "bus/BusRecallBar.h"
+
+#include "bus/BusDrives.h"
+#include "bus/BusMemory.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QToolButton>
+
+namespace opentop {
+
+BusRecallBar::BusRecallBar(BusDrives* drives, const ConnectionSettings& settings, bool offer,
+                           QWidget* parent)
+    : QFrame(parent)
+    , m_drives(drives)
+    , m_key(BusMemory::key(settings))
+    , m_text(new QLabel(this))
+    , m_restore(new QPushButton(this))
+    , m_scan(new QPushButton(tr("&Scan the bus"), this))
+{
+    setObjectName(QStringLiteral("busRecallBar"));
+    setFrameShape(QFrame::StyledPanel);
+    setStyleSheet(QStringLiteral("#busRecallBar { background: #e8f0fe; }"));
+    m_text->setWordWrap(true);
+    auto* close = new QToolButton(this);
+    close->setText(QStringLiteral("×"));
+    close->setToolTip(tr("Hide this bar"));
+    close->setAccessibleName(tr("Hide"));
+    auto* row = new QHBoxLayout(this);
+    row->setContentsMargins(8, 4, 4, 4);
+    row->addWidget(m_text, 1);
+    row->addWidget(m_restore);
+    row->addWidget(m_scan);
+    row->addWidget(close);
+    connect(close, &QToolButton::clicked, this, &QWidget::hide);
+    connect(m_scan, &QPushButton::clicked, this, [this] {
+        hide();
+        emit scanRequested();
+    });
+
+    const QVector<BusMemory::Drive> remembered =
+        offer ? BusMemory::load(m_key) : QVector<BusMemory::Drive>();
+    const QString place = BusMemory::placeText(settings);
+    if (!remembered.isEmpty()) {
+        m_text->setText(tr("Last time on %1: %2.").arg(place, BusMemory::listText(remembered)));
+        m_restore->setText(remembered.size() == 1
+                               ? tr("&Restore the drive last seen")
+                               : tr("&Restore the %1 drives last seen").arg(remembered.size()));
+        m_restore->setToolTip(tr("Identify the drives at these machine numbers again, with the "
+                                 "variants set last time"));
+        const QHash<int, QString> types = BusMemory::types(remembered);
+        connect(m_restore, &QPushButton::clicked, this, [this, types] {
+            hide();
+            emit restoreRequested(types);
+        });
+    } else {
+        m_restore->hide();
+        m_text->setText(
+            tr("No drive is known on %1 yet. Scan the bus to find the drives.").arg(place));
+    }
+    setVisible(offer);
+    // From now on, what is on this bus is what will be offered next time.
+    connect(drives, &BusDrives::driveAdded, this, &BusRecallBar::save);
+    connect(drives, &BusDrives::driveChanged, this, &BusRecallBar::save);
+    connect(drives, &BusDrives::driveRemoved, this, &BusRecallBar::save);
+}
+
+QString BusRecallBar::text() const
+{
+    return m_text->text();
+}
+
+void BusRecallBar::save()
+{
+    // Until something answers, the remembered list stays as it was (a bus not yet scanned).
+    bool any = false;
+    for (int slave : m_drives->slaves())
+        any = any || m_drives->info(slave).state == DeviceInfo::State::Present;
+    if (any)
+        BusMemory::save(m_key, *m_drives);
+}
+
+} // namespace opentop
