@@ -24,6 +24,15 @@ public:
     // The drive to write next: one whose write reaches no other drive if there is one, else
     // the first that differs; nullopt when the bus holds the plan.
     std::optional<int> nextWrite(const BusGroups& current) const;
+    struct Step
+    {
+        int slave;
+        std::optional<int> group;
+        QVector<int> reaches; // the children that execute this write too
+    };
+    // The writes nextWrite() will choose if every drive executes them as expected (children
+    // included), for telling the user beforehand; at most 2 × drives + 2 steps.
+    QVector<Step> steps(const BusGroups& current) const;
     // The plan as it will look: problems it would have (chains, missing parents).
     BusGroups result(const BusGroups& current) const;
 

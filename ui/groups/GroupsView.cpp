@@ -250,14 +250,16 @@ void GroupsView::writePlan()
     const BusGroups& groups = m_tracker->groups();
     const GroupPlan p = plan();
     const QVector<int> differ = p.differences(groups);
+    // Each write in the order it will be sent, with the drives it also reaches.
     QStringList lines;
-    for (int slave : differ) {
+    for (const GroupPlan::Step& st : p.steps(groups)) {
         QString line = tr("Machine number %1: group %2 → %3.")
-                           .arg(slave)
-                           .arg(groupText(groups.groupOf(slave)), groupText(p.wanted(slave)));
-        const QString reach = groups.alsoReachesText(slave);
-        if (!reach.isEmpty())
-            line += QLatin1Char(' ') + reach;
+                           .arg(st.slave)
+                           .arg(groupText(groups.groupOf(st.slave)), groupText(st.group));
+        if (!st.reaches.isEmpty())
+            line += QLatin1Char(' ') +
+                    tr("This also reaches %1 (its children), which are written again after it.")
+                        .arg(BusGroups::andListText(st.reaches));
         lines << line;
     }
     if (differ.isEmpty()) {
@@ -281,8 +283,10 @@ void GroupsView::writePlan()
     box.exec();
     if (box.clickedButton() != yes)
         return;
-    for (int slave : m_rows)
+    for (int slave : m_rows) {
         m_table->item(rowOf(slave), Result)->setText(QString());
+        m_edited.insert(slave); // the plan stays as confirmed while children change
+    }
     setBusy(true);
     step(int(2 * m_rows.size() + 2));
 }

@@ -39,7 +39,7 @@ TEST_F(BusMemoryTest, DrivesAndTheirVariantsAreKeptPerConnection)
     EXPECT_EQ(kept[0].type, QStringLiteral("dbu400"));
     EXPECT_EQ(kept[0].model, QStringLiteral("DBU400-D4"));
     EXPECT_EQ(BusMemory::types(kept).value(7), QStringLiteral("dcpid"));
-    EXPECT_TRUE(BusMemory::listText(kept).startsWith(QStringLiteral("1 (DBU400-D4), 150 (")));
+    EXPECT_TRUE(BusMemory::listText(kept).startsWith(QStringLiteral("1 (DBU400-D4), 7 (")));
     EXPECT_TRUE(BusMemory::load(BusMemory::key(tcp)).isEmpty()); // another connection
     BusMemory::forget(BusMemory::key(serial));
     EXPECT_TRUE(BusMemory::load(BusMemory::key(serial)).isEmpty());

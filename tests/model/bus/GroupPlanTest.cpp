@@ -50,6 +50,36 @@ TEST(GroupPlan, WhenEveryChangeReachesOthersTheParentGoesFirstAndTheChildIsWritt
     EXPECT_EQ(plan.nextWrite(current), 2);
 }
 
+TEST(GroupPlan, AChildIsMovedAfterItsNewParentIsSettledSoNoWriteReachesAnother)
+{
+    // 2 and 150 follow 1; the plan: 150 leaves the group, 2 follows 150.
+    const BusGroups current = busWith({{1, std::nullopt}, {2, 1}, {150, 1}});
+    GroupPlan plan;
+    plan.want(1, std::nullopt);
+    plan.want(2, 150);
+    plan.want(150, std::nullopt);
+    const QVector<GroupPlan::Step> steps = plan.steps(current);
+    ASSERT_EQ(steps.size(), 2);
+    EXPECT_EQ(steps[0].slave, 150);
+    EXPECT_EQ(steps[1].slave, 2);
+    EXPECT_TRUE(steps[0].reaches.isEmpty());
+    EXPECT_TRUE(steps[1].reaches.isEmpty());
+}
+
+TEST(GroupPlan, StepsSayWhatAWriteToAParentReaches)
+{
+    const BusGroups current = busWith({{1, 1}, {2, 1}});
+    GroupPlan plan;
+    plan.want(1, std::nullopt);
+    plan.want(2, 1);
+    const QVector<GroupPlan::Step> steps = plan.steps(current);
+    ASSERT_EQ(steps.size(), 2);
+    EXPECT_EQ(steps[0].slave, 1);
+    EXPECT_EQ(steps[0].reaches, QVector<int>{2});
+    EXPECT_EQ(steps[1].slave, 2);
+    EXPECT_EQ(steps[1].group, 1);
+}
+
 TEST(GroupPlan, APlansProblemsAreKnownBeforeWriting)
 {
     const BusGroups current = busWith({{1, std::nullopt}, {2, std::nullopt}, {3, std::nullopt}});

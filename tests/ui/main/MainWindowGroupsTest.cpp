@@ -65,9 +65,14 @@ protected:
         ASSERT_EQ(window->groups()->groups().childrenOf(1), (QVector<int>{2, 150}));
     }
 
+    // The field on the shown drive's Running data page (pages of a drive shown before may
+    // still wait for their deletion).
     ParameterField* field(const QString& name)
     {
-        for (ParameterField* f : window->workspace()->findChildren<ParameterField*>())
+        ParameterPage* page = window->workspace()->page(QStringLiteral("Running data"));
+        if (!page)
+            return nullptr;
+        for (ParameterField* f : page->findChildren<ParameterField*>())
             if (f->parameterName() == name)
                 return f;
         return nullptr;
