@@ -14,6 +14,7 @@
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace opentop {
 
@@ -188,9 +189,17 @@ void GroupsView::rebuild()
             box->setValue(groups.groupOf(slave).value_or(0));
         }
     }
+    // Every row readable with its plan box; up to six rows without scrolling.
+    m_table->resizeRowsToContents();
+    int height = m_table->horizontalHeader()->sizeHint().height() + 2 * m_table->frameWidth();
+    for (int row = 0; row < std::min<int>(6, int(m_rows.size())); ++row)
+        height += m_table->rowHeight(row);
+    m_table->setMinimumHeight(
+        std::max(height, 3 * m_table->horizontalHeader()->sizeHint().height()));
     m_problems->setText(problems.isEmpty()
                             ? tr("No problem found in the groups as read from the drives.")
-                            : tr("Problems: %1").arg(problems.join(QStringLiteral(" "))));
+                            : tr("Problems:") + QStringLiteral("\n• ") +
+                                  problems.join(QStringLiteral(".\n• ")) + QLatin1Char('.'));
     m_problems->setStyleSheet(problems.isEmpty() ? QString() : QStringLiteral("color: #b01c1c;"));
     // What the plan changes, and what would be wrong with it.
     const GroupPlan p = plan();
