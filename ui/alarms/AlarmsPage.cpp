@@ -1,5 +1,6 @@
 #include "alarms/AlarmsPage.h"
 
+#include "groups/GroupWriteCheck.h"
 #include "session/DeviceSession.h"
 
 #include <QGroupBox>
@@ -305,7 +306,9 @@ void AlarmsPage::confirm(const QString& title, const QString& text, const QStrin
 {
     auto* box = new QMessageBox(QMessageBox::Question, title, text,
                                 QMessageBox::Yes | QMessageBox::Cancel, this);
-    box->setInformativeText(details);
+    // A group parent's children execute the command too.
+    const QString reach = GroupWriteCheck::reachText(m_session);
+    box->setInformativeText(reach.isEmpty() ? details : details + QStringLiteral("\n\n") + reach);
     box->button(QMessageBox::Yes)->setText(action);
     box->setDefaultButton(QMessageBox::Cancel);
     box->setAttribute(Qt::WA_DeleteOnClose);

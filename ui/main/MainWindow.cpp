@@ -271,6 +271,14 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
         if (m_workspace->drive() && m_workspace->drive() == m_drives->parameters(slave))
             m_workspace->setTitle(driveTitle(slave));
     });
+    // A group setup that is wrong is said where the engineer looks, not only in its view.
+    connect(m_groups, &BusGroupTracker::groupsChanged, this, [this] {
+        const QVector<BusGroups::Problem> problems = m_groups->groups().problems();
+        if (!problems.isEmpty())
+            statusBar()->showMessage(tr("Communication groups: %1 (Bus › Communication groups)")
+                                         .arg(BusGroups::describe(problems.first())),
+                                     15000);
+    });
     const bool simulated = settings.kind == ConnectionSettings::Kind::Simulated;
     m_simBanner->setVisible(simulated);
     connect(m_banner, &AlarmBanner::showAlarms, this, [this](int slave) {
