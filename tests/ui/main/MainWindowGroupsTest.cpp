@@ -2,6 +2,7 @@
 // reaches before anything is sent and reads their values back afterwards; the group view shows
 // who follows whom, flags what is wrong, and writes a plan proved by reading every drive back.
 #include "MainWindowFixture.h"
+#include "alarms/AlarmsPage.h"
 #include "bus/BusGroupTracker.h"
 #include "groups/GroupsView.h"
 #include "workspace/MultiDriveWriteDialog.h"
@@ -243,4 +244,31 @@ TEST_F(MainWindowGroupsTest, AGroupPlanIsWrittenAndProvedByReadingEveryDriveBack
     EXPECT_EQ(simRegister(2, 0x00F5), 150);
     EXPECT_EQ(simRegister(150, 0x00F5), 0xFFFF);
     EXPECT_EQ(window->groups()->groups().childrenOf(150), QVector<int>{2});
+}
+
+TEST_F(MainWindowGroupsTest, AnAlarmResetToAParentNamesItsChildrenInItsQuestion)
+{
+    makeGroupOfOne();
+    select({1});
+    ASSERT_TRUE(waitFor([&] { return window->workspace()->drive() != nullptr; }));
+    AlarmsPage* alarms = nullptr;
+    for (int i = 0; i < window->workspace()->tabs()->count(); ++i)
+        alarms =
+            alarms ? alarms : qobject_cast<AlarmsPage*>(window->workspace()->tabs()->widget(i));
+    ASSERT_NE(alarms, nullptr);
+    ASSERT_TRUE(waitFor([&] { return !alarms->isBusy(); }));
+    const int framesBefore = int(window->trafficLog()->entries().size());
+    alarms->resetAlarm();
+    QMessageBox* box = nullptr;
+    ASSERT_TRUE(waitFor([&] {
+        box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        return box != nullptr;
+    }));
+    EXPECT_TRUE(box->informativeText().contains(QStringLiteral("machine numbers 2 and 150")))
+        << qPrintable(box->informativeText());
+    box->button(QMessageBox::Cancel)->click();
+    QTest::qWait(100);
+    const auto entries = window->trafficLog()->entries();
+    for (int i = framesBefore; i < entries.size(); ++i)
+        EXPECT_NE(entries.at(i).function, 6) << qPrintable(entries.at(i).summary); // no write
 }
