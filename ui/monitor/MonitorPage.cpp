@@ -115,7 +115,9 @@ MonitorPage::MonitorPage(MonitorHub* hub, DeviceParameters* parameters, QWidget*
     // Written speed display settings change what the display shows: read them again, once.
     m_displayChanged.setSingleShot(true);
     m_displayChanged.setInterval(300);
-    connect(&m_displayChanged, &QTimer::timeout, this, [this] { m_hub->refreshDisplay(m_slave); });
+    // The hub as context: a page waiting for its deletion must not reach a hub already gone.
+    connect(&m_displayChanged, &QTimer::timeout, hub,
+            [hub, slave = m_slave] { hub->refreshDisplay(slave); });
     const QStringList displayNames = SpeedDisplay::Names::withPrefix().all();
     connect(parameters, &DeviceParameters::entryChanged, this,
             [this, displayNames](const QString& n) {
