@@ -255,7 +255,10 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
     static_cast<QVBoxLayout*>(m_central->layout())->insertWidget(0, m_banner);
     // The drives last seen here, offered back (not when the caller names the drives).
     m_recall = new BusRecallBar(m_drives, settings, knownTypes.isEmpty(), m_central);
-    static_cast<QVBoxLayout*>(m_central->layout())->insertWidget(1, m_recall);
+    auto* column = static_cast<QVBoxLayout*>(m_central->layout());
+    column->insertWidget(column->indexOf(m_splitter), m_recall);
+    column->removeWidget(m_simBanner); // the simulated marker stays on top
+    column->insertWidget(0, m_simBanner);
     connect(m_recall, &BusRecallBar::restoreRequested, this,
             [this](const QHash<int, QString>& types) {
                 m_knownTypes = types;

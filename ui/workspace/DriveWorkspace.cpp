@@ -80,6 +80,8 @@ void DriveWorkspace::setDrive(DeviceParameters* parameters, const QString& title
         disconnect(m_parameters, nullptr, this, nullptr);
     m_parameters = parameters;
     m_title->setText(parameters ? title : tr("Select a drive in the bus list to set it up."));
+    if (!parameters)
+        m_status->clear(); // nothing of another drive's last operation
     if (parameters) {
         QStringList editorsDone;
         for (const ProfileGroup& group : parameters->profile().groups) {
