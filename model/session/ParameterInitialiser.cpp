@@ -134,6 +134,10 @@ ParameterInitialiser::plan(const std::function<std::optional<double>(const QStri
         change(priority, tr("The drive follows its input terminals again: an input that is on "
                             "may start the motor, with the factory input functions."));
     p.consequences << tr("The machine number %1 is not a setting and does not change.").arg(slave);
+    if (runningMeta && running == false)
+        p.consequences << tr("The motor must stand still: drive %1 reports it stopped now, and "
+                             "this is read again just before the command is sent.")
+                              .arg(slave);
     return p;
 }
 

@@ -47,6 +47,7 @@ TEST_F(ParameterInitialiserTest, SpellsOutTheConsequencesThenResetsEverySetting)
     EXPECT_TRUE(all.contains(QStringLiteral("stop answering"))) << qPrintable(all);
     EXPECT_TRUE(all.contains(QStringLiteral("Control priority goes from"))) << qPrintable(all);
     EXPECT_TRUE(all.contains(QStringLiteral("Communication group stays"))) << qPrintable(all);
+    EXPECT_TRUE(all.contains(QStringLiteral("The motor must stand still"))) << qPrintable(all);
     EXPECT_FALSE(all.contains(QStringLiteral("comm.rate"))) << qPrintable(all);
     EXPECT_TRUE(plan.command.startsWith(QStringLiteral("Parameter initialisation = ")))
         << qPrintable(plan.command);
