@@ -114,11 +114,25 @@ void BusGroupTracker::onWritten(int parent, const QString& name)
     };
     for (int child : children) {
         DeviceParameters* parameters = m_drives->parameters(child);
-        const DeviceParameters::Entry* entry = parameters ? parameters->entry(name) : nullptr;
-        if (!entry || !entry->meta->isReadable())
+        if (!parameters)
+            continue;
+        // A setting: that setting. A command (not readable, e.g. an initialisation or a start):
+        // every value of the child known so far, since any of them may have changed.
+        QStringList names;
+        const DeviceParameters::Entry* entry = parameters->entry(name);
+        if (entry && entry->meta->isReadable()) {
+            names << name;
+        } else {
+            for (const ParameterMeta& m : parameters->profile().parameters) {
+                const DeviceParameters::Entry* e = parameters->entry(m.name);
+                if (e && e->device.valid && m.isReadable())
+                    names << m.name;
+            }
+        }
+        if (names.isEmpty())
             continue;
         ++*pending;
-        parameters->refresh({name}, [finish](int) { finish(); });
+        parameters->refresh(names, [finish](int) { finish(); });
     }
     finish();
 }

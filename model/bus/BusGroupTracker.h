@@ -36,7 +36,8 @@ public:
 
 signals:
     void groupsChanged();
-    // After a write to `parent`, its children's copies of `names` have been read again.
+    // After a write of `names` to `parent`, its children's values have been read again: the
+    // same setting, or after a command every value of theirs known so far.
     void childrenReread(int parent, const QVector<int>& children, const QStringList& names);
 
 private:

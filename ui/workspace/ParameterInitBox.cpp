@@ -1,5 +1,6 @@
 #include "workspace/ParameterInitBox.h"
 
+#include "groups/GroupWriteCheck.h"
 #include "session/DeviceParameters.h"
 #include "session/DeviceSession.h"
 #include "session/ParameterInitialiser.h"
@@ -87,7 +88,12 @@ void ParameterInitBox::ask(const QStringList& consequences, const QString& comma
     if (edits > 0)
         details += QStringLiteral("\n• ") +
                    tr("Your %n unwritten edit(s) of this drive are discarded.", nullptr, edits);
-    details += QStringLiteral("\n\n") + tr("Sent: %1 to machine %2 only.").arg(command).arg(slave);
+    // A group parent's children execute the initialisation too.
+    const QString reach = GroupWriteCheck::reachText(session);
+    details += QStringLiteral("\n\n") +
+               (reach.isEmpty() ? tr("Sent: %1 to machine %2 only.").arg(command).arg(slave)
+                                : tr("Sent: %1 to machine %2.").arg(command).arg(slave) +
+                                      QLatin1Char(' ') + reach);
     m_confirmed = false;
     QMessageBox* box =
         ConfirmBox::ask(this, tr("Initialise drive %1").arg(slave),

@@ -4,6 +4,8 @@
 #include "DriveSimFixture.h"
 #include "session/DeviceParameters.h"
 
+#include <algorithm>
+
 using namespace opentop;
 using namespace opentop::test;
 
@@ -45,6 +47,28 @@ TEST_F(BusGroupTrackerTest, GroupsAreReadAndAParentsWriteIsReadAgainOnItsChildre
     EXPECT_EQ(reread, (QVector<int>{2, 150}));
     EXPECT_EQ(child->entry(QStringLiteral("spno2.speed"))->device.number, 1777);
     EXPECT_EQ(drives->parameters(2)->entry(QStringLiteral("spno2.speed"))->device.number, 1777);
+
+    // A command (write-only) to the parent: what is known of the children is read again.
+    reread.clear();
+    const auto before = log.entries();
+    const int readsBefore =
+        int(std::count_if(before.begin(), before.end(), [](const TrafficEntry& e) {
+            return e.direction == TrafficEntry::Direction::Tx && e.slave == 150 && e.function == 3;
+        }));
+    DeviceSession::WriteOptions command;
+    command.explicitCommand = true; // as the alarm page sends it after asking
+    bool sent = false;
+    drives->session(1)->write(QStringLiteral("cmd.alarm_reset"), QStringLiteral("0"), command,
+                              [&](const DeviceSession::Outcome& o) {
+                                  EXPECT_TRUE(o.ok) << qPrintable(o.error);
+                                  sent = true;
+                              });
+    ASSERT_TRUE(waitUntil([&] { return sent && !reread.isEmpty(); }));
+    const auto after = log.entries();
+    const int readsAfter = int(std::count_if(after.begin(), after.end(), [](const TrafficEntry& e) {
+        return e.direction == TrafficEntry::Direction::Tx && e.slave == 150 && e.function == 3;
+    }));
+    EXPECT_GT(readsAfter, readsBefore);
 
     // A group written to a child changes the groups at once (its read-back).
     DeviceParameters* two = drives->parameters(2);
