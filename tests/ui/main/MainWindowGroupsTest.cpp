@@ -6,6 +6,7 @@
 #include "bus/BusGroupTracker.h"
 #include "groups/GroupsView.h"
 #include "workspace/MultiDriveWriteDialog.h"
+#include "workspace/ParameterInitBox.h"
 
 using namespace opentop;
 using namespace opentop::test;
@@ -271,4 +272,42 @@ TEST_F(MainWindowGroupsTest, AnAlarmResetToAParentNamesItsChildrenInItsQuestion)
     const auto entries = window->trafficLog()->entries();
     for (int i = framesBefore; i < entries.size(); ++i)
         EXPECT_NE(entries.at(i).function, 6) << qPrintable(entries.at(i).summary); // no write
+}
+
+TEST_F(MainWindowGroupsTest, AnInitialisationOfAParentNamesItsChildrenAndReReadsThem)
+{
+    makeGroupOfOne();
+    bus->control(150, {QStringLiteral("set"), QStringLiteral("0xCA03"), QStringLiteral("2200")});
+    DeviceParameters* child = window->drives()->parameters(150);
+    bool read = false;
+    child->refresh({kSpeed}, [&](int) { read = true; });
+    ASSERT_TRUE(waitFor([&] { return read; }));
+    ASSERT_EQ(deviceNumber(150, kSpeed), 2200);
+    select({1});
+    ASSERT_TRUE(waitFor([&] { return window->workspace()->drive() != nullptr; }));
+    ParameterInitBox* init = nullptr;
+    for (int i = 0; i < window->workspace()->tabs()->count() && !init; ++i) {
+        auto* page = qobject_cast<ParameterPage*>(window->workspace()->tabs()->widget(i));
+        if (page && page->parameterNames().contains(QStringLiteral("comm.rate"))) {
+            window->workspace()->tabs()->setCurrentWidget(page);
+            init = page->findChild<ParameterInitBox*>();
+        }
+    }
+    ASSERT_NE(init, nullptr);
+    bool finished = false;
+    QObject::connect(init, &ParameterInitBox::finished, init, [&] { finished = true; });
+    init->start();
+    QMessageBox* box = nullptr;
+    ASSERT_TRUE(waitFor([&] {
+        box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        return box != nullptr;
+    }));
+    const QString text = box->informativeText();
+    EXPECT_TRUE(text.contains(QStringLiteral("machine numbers 2 and 150"))) << qPrintable(text);
+    EXPECT_FALSE(text.contains(QStringLiteral("only"))) << qPrintable(text);
+    box->button(QMessageBox::Yes)->click();
+    ASSERT_TRUE(waitFor([&] { return finished; }, 20000));
+    // The child executed it too; its value on screen is the one read from it afterwards.
+    EXPECT_EQ(simRegister(150, kSpeedAddress), 1000);
+    EXPECT_TRUE(waitFor([&] { return deviceNumber(150, kSpeed) == 1000; }));
 }
