@@ -327,6 +327,7 @@ void MainWindow::showDrive(const QVector<int>& slaves)
     m_workspace->tabs()->insertTab(0, monitor, tr("Monitor"));
     m_workspace->tabs()->setCurrentIndex(0);
     auto* run = new TestRunPanel(m_drives, info.slave, m_workspace->tabs());
+    run->setMonitorHub(m_hub); // live state; the drive is polled (and trended) while shown
     run->setPollingActive(m_poller->isActive());
     m_workspace->tabs()->addTab(run, tr("Test run"));
     auto* alarms = new AlarmsPage(m_drives->session(info.slave), m_workspace->tabs());

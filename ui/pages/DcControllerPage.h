@@ -36,6 +36,8 @@ public:
     // Store commands owed for settings written since ("store.config", "store.pid", ...).
     QStringList unstored() const { return m_unstored; }
     bool bannerShown() const;
+    // The note shown while the controller's communication loss stop is off; empty otherwise.
+    QString commLossNote() const;
     // Asks, then writes `command` = 1 (store.config, store.pid or store.preset).
     void store(const QString& command);
     // Asks, then writes store.config = 0 and reads the configuration again.
@@ -57,6 +59,7 @@ private:
                   const QVector<Row>& rows, const QString& note);
     void trackWrite(const QString& name);
     void updateBanner();
+    void updateCommLossNote();
     void updatePresetRange();
     void sendStore(const QString& command, const QString& value, const QString& doneText);
     QString storedWhat(const QString& command) const;
@@ -71,6 +74,7 @@ private:
     QHash<QString, QPushButton*> m_storeButtons;
     QPushButton* m_reload;
     QLabel* m_presetRange = nullptr;
+    QLabel* m_commLossNote = nullptr;
     Confirm m_confirm;
     bool m_storing = false;
 };

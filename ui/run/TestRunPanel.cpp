@@ -4,11 +4,17 @@
 #include "profile/ProfileRegistry.h"
 #include "profile/RoleEvaluator.h"
 #include "profile/ValueCodec.h"
+#include "run/ExitActions.h"
 #include "run/MotionPriorityBox.h"
+#include "run/RunLiveState.h"
+#include "run/SpnoSelector.h"
+#include "run/StartPreview.h"
 #include "session/DeviceSession.h"
 #include "widgets/ConfirmBox.h"
 
 #include <QComboBox>
+#include <QDateTime>
+#include <QLocale>
 #include <QGridLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -21,6 +27,7 @@ namespace opentop {
 namespace {
 
 const QString kPriority = QStringLiteral("motionPriority");
+const QString kIoPriority = QStringLiteral("ioPriority");
 const QString kSpeedCommand = QStringLiteral("speedCommand");
 const QString kCommLoss = QStringLiteral("config.comm_loss_time");
 constexpr int kSettleMs = 200; // drives update their status within a few cycles of a command
@@ -50,6 +57,7 @@ TestRunPanel::TestRunPanel(BusDrives* drives, int slave, QWidget* parent)
         return;
     }
     const Profile& profile = m_session->profile();
+    m_preview = new StartPreview(drives, this);
     m_isDc =
         RoleEvaluator::parameter(profile, kSpeedCommand) && !profile.role(QStringLiteral("start"));
 
@@ -116,10 +124,7 @@ void TestRunPanel::buildDbu()
     const ParameterMeta* select = RoleEvaluator::parameter(profile, QStringLiteral("select"));
     if (!select)
         return;
-    m_spno = new QComboBox(m_commands);
-    m_spno->setObjectName(QStringLiteral("spno"));
-    for (const EnumOption& o : select->specFor(m_session->context()).options)
-        m_spno->addItem(o.label, int(o.value + 1)); // running data N is code N-1
+    m_spno = new SpnoSelector(m_session, m_commands);
     grid->addWidget(m_spno, 3, 0);
     m_whileIdle << m_spno;
     grid->addWidget(addButton(tr("Se&lect running data"), QStringLiteral("select"),
@@ -131,6 +136,15 @@ void TestRunPanel::buildDbu()
                               }),
                     3, 1);
     m_whileIdle << grid->itemAtPosition(3, 1)->widget();
+    // Back to the machine's own controls, as a TOP-1 offers.
+    if (const ProfileRole* io = profile.role(kIoPriority); io && io->value) {
+        m_ioButton = addButton(tr("Return to &I/O priority"), QStringLiteral("ioPriority"),
+                               [this] { returnToIoPriority(); });
+        m_ioButton->setToolTip(tr("Give run, stop, direction and speed selection back to the "
+                                  "drive's input terminals"));
+        grid->addWidget(m_ioButton, 4, 0, 1, 2);
+        m_whileIdle << m_ioButton;
+    }
 }
 
 void TestRunPanel::buildDc()
@@ -189,6 +203,8 @@ void TestRunPanel::refresh()
         names << speed->controllingParameters();
     if (const ParameterMeta* loss = profile.parameter(kCommLoss); loss && loss->isReadable())
         names << loss->name;
+    if (m_spno)
+        m_spno->refreshLabels();
     if (names.isEmpty()) {
         m_enabled = true;
         updateEnabled();
@@ -229,20 +245,85 @@ void TestRunPanel::refresh()
 
 void TestRunPanel::run(const RunControl::Command& command, bool starts)
 {
-    if (!starts || s_confirmed.contains(m_slave)) {
+    if (!starts) {
         send(command);
         return;
     }
+    askToStart(command);
+}
+
+void TestRunPanel::askToStart(const RunControl::Command& command)
+{
+    // What will run, and which other drives the start reaches, read from the drives now.
+    m_busy = true;
+    updateEnabled();
+    setMessage(tr("Reading what the start will run…"), false);
     const int slave = m_slave;
+    QPointer<TestRunPanel> self(this);
+    m_preview->read(slave, m_commandedCcw, [self, command, slave](const StartPreview::Result& r) {
+        if (!self)
+            return;
+        self->m_busy = false;
+        self->updateEnabled();
+        self->setMessage(QString(), false);
+        // Asked once per drive, and every time the start also reaches other drives.
+        if (s_confirmed.contains(slave) && r.alsoReaches.isEmpty()) {
+            self->send(command);
+            return;
+        }
+        QString text = tr("This starts the motor of machine number %1.").arg(slave);
+        if (self->m_isDc)
+            text = tr("This sets the speed command of machine number %1 to %2: its motor runs.")
+                       .arg(slave)
+                       .arg(command.speed);
+        else
+            text += QLatin1Char('\n') + r.text();
+        text += QStringLiteral("\n\n") +
+                tr("Make sure that nobody is near the machine and that it may move. STOP ALL "
+                   "stops every drive at any time.");
+        if (r.alsoReaches.isEmpty())
+            text += QStringLiteral("\n\n") +
+                    tr("You are asked once per drive while the program runs.");
+        self->m_lastQuestion = text;
+        ConfirmBox::ask(self, tr("Start the motor"), text, tr("Start the motor"),
+                        [self, command, slave] {
+                            if (!self)
+                                return;
+                            s_confirmed.insert(slave);
+                            self->send(command);
+                        });
+    });
+}
+
+void TestRunPanel::returnToIoPriority()
+{
+    const int slave = m_slave;
+    QPointer<TestRunPanel> self(this);
     ConfirmBox::ask(
-        this, tr("Start the motor"),
-        tr("This starts the motor of machine number %1. Make sure that nobody is near the "
-           "machine and that it may move. STOP ALL stops every drive at any time.\n\nYou are "
-           "asked once per drive while the program runs.")
+        this, tr("Return to I/O priority"),
+        tr("Machine number %1 will take run, stop, direction and speed selection from its input "
+           "terminals again, and refuse motion commands over the bus. If an input says run, the "
+           "motor runs.")
             .arg(slave),
-        tr("Start the motor"), [this, command, slave] {
-            s_confirmed.insert(slave);
-            send(command);
+        tr("Return to I/O priority"), [self, slave] {
+            if (!self)
+                return;
+            self->m_busy = true;
+            self->updateEnabled();
+            self->setMessage(tr("Returning to I/O priority…"), false);
+            auto* actions = new ExitActions(self->m_drives, self);
+            actions->returnToIoPriority({slave}, [self, actions, slave](const QStringList& failed) {
+                actions->deleteLater();
+                if (!self)
+                    return;
+                self->m_busy = false;
+                self->setMessage(failed.isEmpty()
+                                     ? tr("Machine number %1 follows its input terminals again.")
+                                           .arg(slave)
+                                     : failed.join(QLatin1Char('\n')),
+                                 !failed.isEmpty());
+                self->refresh();
+            });
         });
 }
 
@@ -252,10 +333,15 @@ void TestRunPanel::send(const RunControl::Command& command)
     updateEnabled();
     setMessage(tr("Sending %1…").arg(RunControl::actionName(command.action)), false);
     QPointer<TestRunPanel> self(this);
-    m_control.execute(m_session, command, [self](const RunControl::Outcome& o) {
+    m_control.execute(m_session, command, [self, command](const RunControl::Outcome& o) {
         if (!self)
             return;
         self->showOutcome(o);
+        if (o.sent && (command.action == RunControl::Action::Cw ||
+                       command.action == RunControl::Action::Ccw))
+            self->m_commandedCcw = command.action == RunControl::Action::Ccw;
+        if (o.sent && command.action == RunControl::Action::Select)
+            self->m_commandedCcw.reset(); // the selected SPno's own direction counts again
         if (o.failure == RunControl::Failure::Priority)
             self->refresh(); // the drive was switched to I/O priority meanwhile
         if (!o.sent) {
@@ -294,7 +380,9 @@ void TestRunPanel::showOutcome(const RunControl::Outcome& o)
 
 void TestRunPanel::showState(const RunControl::State& state)
 {
-    QStringList lines;
+    // A snapshot, and says so: what the drive does now is in the live box.
+    QStringList lines{tr("Read back after the command at %1:")
+                          .arg(QLocale().toString(QTime::currentTime(), QStringLiteral("HH:mm:ss")))};
     if (state.running)
         lines << (*state.running ? tr("The motor is running.") : tr("The motor is stopped."));
     for (const auto& item : state.items)
@@ -324,6 +412,14 @@ QString TestRunPanel::speedError() const
 QString TestRunPanel::pollingWarning() const
 {
     return m_warning && !m_warning->isHidden() ? m_warning->text() : QString();
+}
+
+void TestRunPanel::setMonitorHub(MonitorHub* hub)
+{
+    if (!m_session || m_live || !hub)
+        return;
+    m_live = new RunLiveState(hub, m_slave, this);
+    static_cast<QVBoxLayout*>(layout())->insertWidget(1, m_live);
 }
 
 void TestRunPanel::setPollingActive(bool active)
