@@ -52,6 +52,23 @@ QString clickAndConfirm(TestRunPanel* panel, const QString& name)
     return text;
 }
 
+// The drive's page of type T among the current tabs (pages of a drive shown before may still
+// await deletion).
+template<typename T>
+T* pageOf(MainWindow& window, int slave)
+{
+    if (window.workspace()->drive() != window.drives()->parameters(slave))
+        return nullptr;
+    QTabWidget* tabs = window.workspace()->tabs();
+    for (int i = 0; i < tabs->count(); ++i) {
+        if (auto* page = qobject_cast<T*>(tabs->widget(i)))
+            return page;
+        if (auto* page = tabs->widget(i)->findChild<T*>())
+            return page;
+    }
+    return nullptr;
+}
+
 // Makes the tab holding `page` current (pages read their values when shown).
 void showPage(MainWindow& window, QWidget* page)
 {
@@ -249,7 +266,7 @@ TEST_F(MainWindowRunTest, TheDcControllerPageNotesACommunicationLossStopThatIsOf
     bus->control(7, {QStringLiteral("set"), QStringLiteral("0x008E"), QStringLiteral("0")});
     select({7});
     DcControllerPage* page = nullptr;
-    ASSERT_TRUE(waitFor([&] { return (page = window->findChild<DcControllerPage*>()); }));
+    ASSERT_TRUE(waitFor([&] { return (page = pageOf<DcControllerPage>(*window, 7)); }));
     showPage(*window, page);
     ASSERT_TRUE(waitFor([&] { return !page->commLossNote().isEmpty(); }));
     EXPECT_TRUE(page->commLossNote().contains(QStringLiteral("keeps it running")));
@@ -264,7 +281,7 @@ TEST_F(MainWindowRunTest, TheRunningDataPageWarnsOfAShortDecelerationFromHighSpe
     bus->control(1, {QStringLiteral("set"), QStringLiteral("0x4505"), QStringLiteral("5")});
     select({1});
     RunningDataPage* page = nullptr;
-    ASSERT_TRUE(waitFor([&] { return (page = window->findChild<RunningDataPage*>()); }));
+    ASSERT_TRUE(waitFor([&] { return (page = pageOf<RunningDataPage>(*window, 1)); }));
     showPage(*window, page);
     ASSERT_TRUE(waitFor([&] {
         return page->decelerationWarning().contains(QStringLiteral("SPno3 slows down from 2500"));
