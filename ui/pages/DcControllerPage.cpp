@@ -1,6 +1,7 @@
 #include "pages/DcControllerPage.h"
 
 #include "profile/ValueCodec.h"
+#include "run/RunLiveState.h"
 #include "session/DeviceSession.h"
 #include "workspace/ParameterField.h"
 #include "workspace/PendingValues.h"
@@ -150,6 +151,14 @@ DcControllerPage::DcControllerPage(DeviceParameters* parameters, QWidget* parent
     updatePresetRange();
     updateBanner();
     updateCommLossNote();
+}
+
+void DcControllerPage::setMonitorHub(MonitorHub* hub)
+{
+    if (m_live || !hub)
+        return;
+    m_live = new RunLiveState(hub, parameters()->session()->slave(), contentArea());
+    static_cast<QVBoxLayout*>(contentArea()->layout())->insertWidget(0, m_live);
 }
 
 QString DcControllerPage::commLossNote() const

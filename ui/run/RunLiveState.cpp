@@ -27,7 +27,7 @@ RunLiveState::RunLiveState(MonitorHub* hub, int slave, QWidget* parent)
 {
     setObjectName(QStringLiteral("runLiveState"));
     auto* grid = new QGridLayout(this);
-    grid->setColumnStretch(1, 1);
+    grid->setColumnStretch(3, 1); // the age right beside its value
     const DeviceSession* session = hub->drives()->session(slave);
     if (session) {
         const Profile& profile = session->profile();

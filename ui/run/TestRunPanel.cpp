@@ -433,6 +433,8 @@ void TestRunPanel::updateEnabled()
     if (!m_commands)
         return;
     m_commands->setEnabled(m_enabled);
+    if (m_ioButton)
+        m_ioButton->setVisible(m_enabled); // only a drive in communication priority goes back
     for (QWidget* w : std::as_const(m_whileIdle))
         w->setEnabled(!m_busy);
     updateSpeed();

@@ -291,3 +291,27 @@ TEST_F(MainWindowRunTest, TheRunningDataPageWarnsOfAShortDecelerationFromHighSpe
     EXPECT_TRUE(waitFor([&] { return !page->decelerationWarning().contains(QStringLiteral("SPno3")); }))
         << qPrintable(page->decelerationWarning());
 }
+
+TEST_F(MainWindowRunTest, TheDcControllerPageFollowsTheControllerAndShowsStoppedAfterStopAll)
+{
+    select({7});
+    TestRunPanel* panel = showTestRun(*window, 7);
+    ASSERT_TRUE(panel);
+    ASSERT_TRUE(waitFor([&] { return panel->commandsEnabled(); }));
+    panel->findChild<QLineEdit*>(QStringLiteral("speed"))->setText(QStringLiteral("30"));
+    clickAndConfirm(panel, QStringLiteral("setSpeed"));
+    DcControllerPage* page = pageOf<DcControllerPage>(*window, 7);
+    ASSERT_TRUE(page);
+    ASSERT_TRUE(page->liveState());
+    showPage(*window, page);
+    // The settings page watches the controller itself (the Test run page is hidden now).
+    RunLiveState* live = page->liveState();
+    ASSERT_TRUE(waitFor([&] { return live->stateText().contains(QStringLiteral("30.0 %")); }))
+        << qPrintable(live->stateText());
+    EXPECT_TRUE(window->monitorHub()->isWatched(7));
+    window->stopAllButton()->stopAll();
+    ASSERT_TRUE(waitFor([&] { return live->stateText() == QStringLiteral("Stopped"); }, 15000))
+        << qPrintable(live->stateText());
+    if (QMessageBox* result = window->stopAllButton()->resultWindow())
+        result->close();
+}
