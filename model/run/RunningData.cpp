@@ -84,9 +84,8 @@ QStringList RunningData::warnings(const Profile& profile, const ValueContext& va
         const QString decel = parameter(profile, spno, QStringLiteral("decel"));
         if (decel.isEmpty())
             continue;
-        const QString w =
-            decelerationWarning(spno, numberOf(profile, speed, values.rawOf(speed)),
-                                numberOf(profile, decel, values.rawOf(decel)));
+        const QString w = decelerationWarning(spno, numberOf(profile, speed, values.rawOf(speed)),
+                                              numberOf(profile, decel, values.rawOf(decel)));
         if (!w.isEmpty())
             list << w;
     }

@@ -21,11 +21,11 @@ public:
     struct Result
     {
         int slave = 0;
-        int spno = 0;       // 0: not known
-        QString speed;      // "1000 r/min"
-        QString direction;  // "CW"
+        int spno = 0;      // 0: not known
+        QString speed;     // "1000 r/min"
+        QString direction; // "CW"
         bool directionFromCommand = false;
-        QString warning;    // the deceleration advice, or empty
+        QString warning; // the deceleration advice, or empty
         QVector<int> alsoReaches;
         QString reach;      // BusGroups::reachText
         QStringList unread; // labels of what could not be read

@@ -129,7 +129,8 @@ void RunLiveState::showSample(const MonitorSample& sample)
             else if (!*sample.alarmActive)
                 r.value->setText(tr("none"));
             else if (sample.activeAlarm)
-                r.value->setText(tr("%1 %2").arg(sample.activeAlarm->panel, sample.activeAlarm->name));
+                r.value->setText(
+                    tr("%1 %2").arg(sample.activeAlarm->panel, sample.activeAlarm->name));
             else
                 r.value->setText(tr("active"));
         } else {
@@ -143,8 +144,8 @@ void RunLiveState::showSample(const MonitorSample& sample)
 void RunLiveState::updateAges()
 {
     const QDateTime now = QDateTime::currentDateTimeUtc();
-    const bool linkUp = m_hub && m_hub->drives()->client() &&
-                        m_hub->drives()->client()->isOpen() && m_hub->lastError(m_slave).isEmpty();
+    const bool linkUp = m_hub && m_hub->drives()->client() && m_hub->drives()->client()->isOpen() &&
+                        m_hub->lastError(m_slave).isEmpty();
     const Freshness::State state =
         Freshness::of(m_last, now, m_hub ? m_hub->interval() : 200, linkUp);
     m_stale = state != Freshness::State::Live;

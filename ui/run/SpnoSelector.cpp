@@ -31,8 +31,8 @@ void SpnoSelector::refreshLabels()
     QStringList names;
     for (int i = 0; i < count(); ++i) {
         for (const char* field : {"speed", "direction"}) {
-            const QString n = RunningData::parameter(profile, itemData(i).toInt(),
-                                                     QLatin1String(field));
+            const QString n =
+                RunningData::parameter(profile, itemData(i).toInt(), QLatin1String(field));
             if (!n.isEmpty() && profile.parameter(n)->isReadable())
                 names << n;
         }
@@ -57,9 +57,9 @@ void SpnoSelector::refreshLabels()
                                                     self->m_session->context());
                 }
                 const QString base = self->itemData(i, Qt::UserRole + 1).toString();
-                self->setItemText(i, parts.isEmpty()
-                                         ? base
-                                         : tr("%1 — %2").arg(base, parts.join(QStringLiteral(", "))));
+                self->setItemText(
+                    i, parts.isEmpty() ? base
+                                       : tr("%1 — %2").arg(base, parts.join(QStringLiteral(", "))));
             }
             emit self->labelsRefreshed();
         },

@@ -14,10 +14,10 @@
 
 #include <QComboBox>
 #include <QDateTime>
-#include <QLocale>
 #include <QGridLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QPointer>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -282,8 +282,8 @@ void TestRunPanel::askToStart(const RunControl::Command& command)
                 tr("Make sure that nobody is near the machine and that it may move. STOP ALL "
                    "stops every drive at any time.");
         if (r.alsoReaches.isEmpty())
-            text += QStringLiteral("\n\n") +
-                    tr("You are asked once per drive while the program runs.");
+            text +=
+                QStringLiteral("\n\n") + tr("You are asked once per drive while the program runs.");
         self->m_lastQuestion = text;
         ConfirmBox::ask(self, tr("Start the motor"), text, tr("Start the motor"),
                         [self, command, slave] {
@@ -317,11 +317,11 @@ void TestRunPanel::returnToIoPriority()
                 if (!self)
                     return;
                 self->m_busy = false;
-                self->setMessage(failed.isEmpty()
-                                     ? tr("Machine number %1 follows its input terminals again.")
-                                           .arg(slave)
-                                     : failed.join(QLatin1Char('\n')),
-                                 !failed.isEmpty());
+                self->setMessage(
+                    failed.isEmpty()
+                        ? tr("Machine number %1 follows its input terminals again.").arg(slave)
+                        : failed.join(QLatin1Char('\n')),
+                    !failed.isEmpty());
                 self->refresh();
             });
         });
@@ -337,8 +337,8 @@ void TestRunPanel::send(const RunControl::Command& command)
         if (!self)
             return;
         self->showOutcome(o);
-        if (o.sent && (command.action == RunControl::Action::Cw ||
-                       command.action == RunControl::Action::Ccw))
+        if (o.sent &&
+            (command.action == RunControl::Action::Cw || command.action == RunControl::Action::Ccw))
             self->m_commandedCcw = command.action == RunControl::Action::Ccw;
         if (o.sent && command.action == RunControl::Action::Select)
             self->m_commandedCcw.reset(); // the selected SPno's own direction counts again
@@ -381,8 +381,9 @@ void TestRunPanel::showOutcome(const RunControl::Outcome& o)
 void TestRunPanel::showState(const RunControl::State& state)
 {
     // A snapshot, and says so: what the drive does now is in the live box.
-    QStringList lines{tr("Read back after the command at %1:")
-                          .arg(QLocale().toString(QTime::currentTime(), QStringLiteral("HH:mm:ss")))};
+    QStringList lines{
+        tr("Read back after the command at %1:")
+            .arg(QLocale().toString(QTime::currentTime(), QStringLiteral("HH:mm:ss")))};
     if (state.running)
         lines << (*state.running ? tr("The motor is running.") : tr("The motor is stopped."));
     for (const auto& item : state.items)

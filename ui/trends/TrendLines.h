@@ -3,8 +3,8 @@
 #include "monitor/MonitorHub.h"
 #include "monitor/TrendHistory.h"
 
-#include <QPointer>
 #include <QList>
+#include <QPointer>
 #include <QString>
 #include <QVector>
 #include <functional>

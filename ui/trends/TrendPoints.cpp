@@ -73,10 +73,10 @@ QVector<QList<QPointF>> TrendPoints::segments(const TrendHistory::Series& series
         // The buckets of a segment are as wide as those of the whole window.
         const qint64 from = std::max(fromMs, p[start].ms);
         const qint64 to = std::min(toMs, p[i - 1].ms);
-        const int share = toMs > fromMs && to > from
-                              ? std::max(1, int(double(buckets) * double(to - from) /
-                                                double(toMs - fromMs)))
-                              : 1;
+        const int share =
+            toMs > fromMs && to > from
+                ? std::max(1, int(double(buckets) * double(to - from) / double(toMs - fromMs)))
+                : 1;
         out << thinned(p, start, i, from, to, share);
         start = i;
     }

@@ -54,8 +54,7 @@ QString clickAndConfirm(TestRunPanel* panel, const QString& name)
 
 // The drive's page of type T among the current tabs (pages of a drive shown before may still
 // await deletion).
-template<typename T>
-T* pageOf(MainWindow& window, int slave)
+template <typename T> T* pageOf(MainWindow& window, int slave)
 {
     if (window.workspace()->drive() != window.drives()->parameters(slave))
         return nullptr;
@@ -98,7 +97,8 @@ TEST_F(MainWindowRunTest, ARunStartedFromTheTestRunPageIsInTheDrivesTrend)
     ASSERT_TRUE(waitFor([&] { return speedOf(1) > 0; }));
     ASSERT_TRUE(waitFor([&] {
         const TrendHistory* h = window->monitorHub()->history(1);
-        const TrendHistory::Series* s = h ? h->find(QStringLiteral("status.current_speed")) : nullptr;
+        const TrendHistory::Series* s =
+            h ? h->find(QStringLiteral("status.current_speed")) : nullptr;
         return s && !s->points.isEmpty() && s->points.last().value > 0;
     }));
     // Another tab: nothing watches the drive any more.
@@ -170,7 +170,8 @@ TEST_F(MainWindowRunTest, TheStartQuestionSaysWhichSpnoSpeedDirectionAndGroupDri
     // A start that reaches other drives is asked every time, not once per drive.
     panel->findChild<QPushButton*>(QStringLiteral("stop"))->click();
     ASSERT_TRUE(waitFor([&] { return speedOf(1) == 0; }, 15000));
-    ASSERT_TRUE(waitFor([&] { return panel->findChild<QPushButton*>(QStringLiteral("start"))->isEnabled(); }));
+    ASSERT_TRUE(waitFor(
+        [&] { return panel->findChild<QPushButton*>(QStringLiteral("start"))->isEnabled(); }));
     EXPECT_FALSE(clickAndConfirm(panel, QStringLiteral("start")).isEmpty());
 }
 
@@ -196,7 +197,8 @@ TEST_F(MainWindowRunTest, TheTestRunPageSpeedFollowsTheDriveAndGreysWhenTheLinkI
     ASSERT_TRUE(waitFor([&] { return speedOf(1) >= 2900; }, 8000));
     ASSERT_TRUE(waitFor([&] { return live->speedText().startsWith(QStringLiteral("3000")); }));
     EXPECT_TRUE(live->stateText().startsWith(QStringLiteral("Running")));
-    EXPECT_TRUE(live->ageText(QStringLiteral("status.current_speed")).endsWith(QStringLiteral("old")));
+    EXPECT_TRUE(
+        live->ageText(QStringLiteral("status.current_speed")).endsWith(QStringLiteral("old")));
     EXPECT_FALSE(live->isStale());
 
     // The link goes: grey, with the time of the last answer.
@@ -245,7 +247,8 @@ TEST_F(MainWindowRunTest, TheSpnoSelectorShowsEachSpnosSpeedAndDirection)
     ASSERT_TRUE(spno);
     ASSERT_TRUE(waitFor([&] { return spno->itemText(2).contains(QStringLiteral("r/min")); }));
     EXPECT_EQ(spno->itemText(2), QStringLiteral("SPno3 — 1700 r/min, CCW"));
-    EXPECT_TRUE(spno->itemText(1).endsWith(QStringLiteral(", CW"))) << qPrintable(spno->itemText(1));
+    EXPECT_TRUE(spno->itemText(1).endsWith(QStringLiteral(", CW")))
+        << qPrintable(spno->itemText(1));
 }
 
 TEST_F(MainWindowRunTest, TheTestRunPageGoesBackToIoPriority)
@@ -287,9 +290,11 @@ TEST_F(MainWindowRunTest, TheRunningDataPageWarnsOfAShortDecelerationFromHighSpe
         return page->decelerationWarning().contains(QStringLiteral("SPno3 slows down from 2500"));
     })) << qPrintable(page->decelerationWarning());
     // An edit to 2.5 s, not yet written, clears it: the warning is for the values as they will be.
-    window->drives()->parameters(1)->setPending(QStringLiteral("spno3.decel"), QStringLiteral("2.5"));
-    EXPECT_TRUE(waitFor([&] { return !page->decelerationWarning().contains(QStringLiteral("SPno3")); }))
-        << qPrintable(page->decelerationWarning());
+    window->drives()->parameters(1)->setPending(QStringLiteral("spno3.decel"),
+                                                QStringLiteral("2.5"));
+    EXPECT_TRUE(waitFor([&] {
+        return !page->decelerationWarning().contains(QStringLiteral("SPno3"));
+    })) << qPrintable(page->decelerationWarning());
 }
 
 TEST_F(MainWindowRunTest, TheDcControllerPageFollowsTheControllerAndShowsStoppedAfterStopAll)
