@@ -173,3 +173,24 @@ QString StartPreview::Result::text() const
 }
 
 } // namespace opentop
+
+namespace opentop {
+
+QString StartPreview::Result::question(const QString& speedCommand) const
+{
+    QString text =
+        speedCommand.isEmpty()
+            ? tr("This starts the motor of machine number %1.").arg(slave) + QLatin1Char('\n') +
+                  this->text()
+            : tr("This sets the speed command of machine number %1 to %2: its motor runs.")
+                  .arg(slave)
+                  .arg(speedCommand);
+    text += QStringLiteral("\n\n") +
+            tr("Make sure that nobody is near the machine and that it may move. STOP ALL stops "
+               "every drive at any time.");
+    if (alsoReaches.isEmpty())
+        text += QStringLiteral("\n\n") + tr("You are asked once per drive while the program runs.");
+    return text;
+}
+
+} // namespace opentop

@@ -31,6 +31,9 @@ public:
         QStringList unread; // labels of what could not be read
         // The lines of the start confirmation.
         QString text() const;
+        // The whole start question; `speedCommand`: a speed set point that starts the motor
+        // (a DC controller), empty for a start command.
+        QString question(const QString& speedCommand = QString()) const;
     };
     using Done = std::function<void(const Result&)>;
 

@@ -4,7 +4,6 @@
 #include "profile/ProfileRegistry.h"
 #include "profile/RoleEvaluator.h"
 #include "profile/ValueCodec.h"
-#include "run/ExitActions.h"
 #include "run/MotionPriorityBox.h"
 #include "run/RunLiveState.h"
 #include "run/SpnoSelector.h"
@@ -61,12 +60,16 @@ TestRunPanel::TestRunPanel(BusDrives* drives, int slave, QWidget* parent)
     m_isDc =
         RoleEvaluator::parameter(profile, kSpeedCommand) && !profile.role(QStringLiteral("start"));
 
-    m_priorityBox = new MotionPriorityBox(m_session, this);
+    m_priorityBox = new MotionPriorityBox(drives, m_session, this);
     m_priorityBox->hide();
-    connect(m_priorityBox, &MotionPriorityBox::switching, this,
-            [this] { setMessage(tr("Switching to communication priority…"), false); });
+    connect(m_priorityBox, &MotionPriorityBox::switching, this, [this](const QString& text) {
+        m_busy = true;
+        updateEnabled();
+        setMessage(text, false);
+    });
     connect(m_priorityBox, &MotionPriorityBox::switched, this,
             [this](bool ok, const QString& message) {
+                m_busy = false;
                 setMessage(message, !ok);
                 refresh();
             });
@@ -139,7 +142,7 @@ void TestRunPanel::buildDbu()
     // Back to the machine's own controls, as a TOP-1 offers.
     if (const ProfileRole* io = profile.role(kIoPriority); io && io->value) {
         m_ioButton = addButton(tr("Return to &I/O priority"), QStringLiteral("ioPriority"),
-                               [this] { returnToIoPriority(); });
+                               [this] { m_priorityBox->askToReturn(this); });
         m_ioButton->setToolTip(tr("Give run, stop, direction and speed selection back to the "
                                   "drive's input terminals"));
         grid->addWidget(m_ioButton, 4, 0, 1, 2);
@@ -271,19 +274,7 @@ void TestRunPanel::askToStart(const RunControl::Command& command)
             self->send(command);
             return;
         }
-        QString text = tr("This starts the motor of machine number %1.").arg(slave);
-        if (self->m_isDc)
-            text = tr("This sets the speed command of machine number %1 to %2: its motor runs.")
-                       .arg(slave)
-                       .arg(command.speed);
-        else
-            text += QLatin1Char('\n') + r.text();
-        text += QStringLiteral("\n\n") +
-                tr("Make sure that nobody is near the machine and that it may move. STOP ALL "
-                   "stops every drive at any time.");
-        if (r.alsoReaches.isEmpty())
-            text +=
-                QStringLiteral("\n\n") + tr("You are asked once per drive while the program runs.");
+        const QString text = r.question(self->m_isDc ? command.speed : QString());
         self->m_lastQuestion = text;
         ConfirmBox::ask(self, tr("Start the motor"), text, tr("Start the motor"),
                         [self, command, slave] {
@@ -293,38 +284,6 @@ void TestRunPanel::askToStart(const RunControl::Command& command)
                             self->send(command);
                         });
     });
-}
-
-void TestRunPanel::returnToIoPriority()
-{
-    const int slave = m_slave;
-    QPointer<TestRunPanel> self(this);
-    ConfirmBox::ask(
-        this, tr("Return to I/O priority"),
-        tr("Machine number %1 will take run, stop, direction and speed selection from its input "
-           "terminals again, and refuse motion commands over the bus. If an input says run, the "
-           "motor runs.")
-            .arg(slave),
-        tr("Return to I/O priority"), [self, slave] {
-            if (!self)
-                return;
-            self->m_busy = true;
-            self->updateEnabled();
-            self->setMessage(tr("Returning to I/O priority…"), false);
-            auto* actions = new ExitActions(self->m_drives, self);
-            actions->returnToIoPriority({slave}, [self, actions, slave](const QStringList& failed) {
-                actions->deleteLater();
-                if (!self)
-                    return;
-                self->m_busy = false;
-                self->setMessage(
-                    failed.isEmpty()
-                        ? tr("Machine number %1 follows its input terminals again.").arg(slave)
-                        : failed.join(QLatin1Char('\n')),
-                    !failed.isEmpty());
-                self->refresh();
-            });
-        });
 }
 
 void TestRunPanel::send(const RunControl::Command& command)

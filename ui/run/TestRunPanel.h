@@ -82,7 +82,6 @@ private:
     void updateWarning();
     void setMessage(const QString& text, bool error);
     void askToStart(const RunControl::Command& command);
-    void returnToIoPriority();
 
     BusDrives* m_drives;
     int m_slave;
