@@ -59,7 +59,7 @@ void MotionPriorityBox::setCurrent(const QString& current)
            "input terminals no longer start or stop the motor, and the machine's own controls "
            "stay without effect until you switch back to \"%2\".")
             .arg(m_session->slave())
-            .arg(current, priority->name, wantedLabel()));
+            .arg(current, priority->label, wantedLabel()));
 }
 
 QString MotionPriorityBox::explanation() const
@@ -77,7 +77,7 @@ void MotionPriorityBox::askToSwitch()
                        "from the bus (%2 = \"%3\"). Its input terminals then no longer start or "
                        "stop the motor.")
                         .arg(m_session->slave())
-                        .arg(priority->name, wantedLabel()),
+                        .arg(priority->label, wantedLabel()),
                     tr("Switch"), [this] { sendSwitch(); });
 }
 

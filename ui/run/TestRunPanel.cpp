@@ -226,7 +226,7 @@ void TestRunPanel::refresh()
                 self->m_currentPriority.clear();
                 self->setMessage(tr("Cannot read %1 to check that the drive takes motion "
                                     "commands: %2")
-                                     .arg(priority->name, r.error),
+                                     .arg(priority->label, r.error),
                                  true);
             } else {
                 self->m_currentPriority =
@@ -435,7 +435,8 @@ void TestRunPanel::updateWarning()
     m_warning->setText(
         show ? tr("Polling is paused: the controller brakes the motor %1 s after the last frame "
                   "it receives (%2). Resume polling to keep the motor running.")
-                   .arg(ValueCodec::formatNumber(m_commLossSeconds, 1), kCommLoss)
+                   .arg(ValueCodec::formatNumber(m_commLossSeconds, 1),
+                        m_session->profile().parameter(kCommLoss)->label)
              : QString());
     m_warning->setVisible(show);
 }
