@@ -133,6 +133,10 @@ void StartPreview::readGroups(const std::shared_ptr<Job>& job)
     }
     const int slave = job->groupQueue.takeFirst();
     DeviceSession* session = m_drives->session(slave);
+    if (!session) { // removed meanwhile
+        readGroups(job);
+        return;
+    }
     const QString name = BusGroups::groupParameter(session->profile());
     QPointer<StartPreview> self(this);
     session->readMany({name}, [self, job, slave, name](const DeviceSession::ReadManyOutcome& o) {
