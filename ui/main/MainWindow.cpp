@@ -14,6 +14,7 @@
 #include "files/FileActions.h"
 #include "monitor/MonitorHub.h"
 #include "monitor/MonitorPage.h"
+#include "pages/DcControllerPage.h"
 #include "profile/ProfileRegistry.h"
 #include "run/ExitCheck.h"
 #include "run/ExitGuard.h"
@@ -326,7 +327,11 @@ void MainWindow::showDrive(const QVector<int>& slaves)
     // First: what a drive is doing is what one wants to see on selecting it (as on a TOP-1).
     m_workspace->tabs()->insertTab(0, monitor, tr("Monitor"));
     m_workspace->tabs()->setCurrentIndex(0);
+    // The DC controller's settings page shows what the controller does now, too.
+    for (DcControllerPage* page : m_workspace->findChildren<DcControllerPage*>())
+        page->setMonitorHub(m_hub);
     auto* run = new TestRunPanel(m_drives, info.slave, m_workspace->tabs());
+    run->setMonitorHub(m_hub); // live state; the drive is polled (and trended) while shown
     run->setPollingActive(m_poller->isActive());
     m_workspace->tabs()->addTab(run, tr("Test run"));
     auto* alarms = new AlarmsPage(m_drives->session(info.slave), m_workspace->tabs());
