@@ -1,6 +1,10 @@
 #include "alarms/AlarmsPage.h"
 
+#include "bus/BusDrives.h"
+#include "bus/DriveStatusPoller.h"
+#include "monitor/MonitorHub.h"
 #include "session/DeviceSession.h"
+#include "widgets/StaleLook.h"
 
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -56,6 +60,7 @@ AlarmsPage::AlarmsPage(DeviceSession* session, QWidget* parent)
     , m_reread(new QPushButton(tr("&Re-read")))
     , m_reset(new QPushButton(tr("Reset &alarm…")))
     , m_clear(new QPushButton(tr("&Clear records…")))
+    , m_age(new QLabel)
 {
     m_title->setText(
         tr("Alarms and warnings of machine %1 (%2)").arg(session->slave()).arg(modelOf(session)));
@@ -72,6 +77,8 @@ AlarmsPage::AlarmsPage(DeviceSession* session, QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_title);
     layout->addWidget(m_status);
+    m_age->setVisible(false); // once the page follows the drive live
+    layout->addWidget(m_age);
     auto* tables = new QHBoxLayout;
     for (int which = 0; which < 2; ++which) {
         auto* box = new QVBoxLayout;
@@ -124,6 +131,99 @@ AlarmsPage::~AlarmsPage()
     // A command under way deletes the history when it ends (see guarded()).
     if (!m_busy)
         delete m_history.data();
+}
+
+void AlarmsPage::followLive(MonitorHub* hub, DriveStatusPoller* poller)
+{
+    m_hub = hub;
+    m_poller = poller;
+    const int slave = m_session->slave();
+    if (hub) {
+        connect(hub, &MonitorHub::sample, this, [this, slave](int s, const MonitorSample& sample) {
+            if (s == slave)
+                observed(0, sample.alarmActive, sample.activeAlarmCode, false);
+        });
+        // The alarm state shown is live while the drive answers the page's polling.
+        m_look =
+            new StaleLook([hub, slave](const QDateTime& now) { return hub->freshness(slave, now); },
+                          [hub, slave] { return hub->lastAnswer(slave); }, this);
+        m_look->addWidget(m_status);
+        m_look->setAgeLabel(m_age);
+        connect(hub, &MonitorHub::linkChanged, m_look, &StaleLook::update);
+        m_age->setVisible(true);
+        if (isVisible())
+            hub->watch(slave, this);
+    }
+    if (poller) {
+        connect(poller, &DriveStatusPoller::statusChanged, this, [this, slave](int s) {
+            if (s != slave)
+                return;
+            const DriveStatus st = m_poller->status(slave);
+            // A drive answering again after it did not (a power cycle, a cable put back).
+            const bool answering = st.consecutiveFailures == 0 && st.polled;
+            const bool again = answering && !m_wasAnswering;
+            m_wasAnswering = answering || !st.polled;
+            if (st.consecutiveFailures == 0 && st.polled)
+                observed(1, st.alarmActive,
+                         st.alarmActive.value_or(false) ? st.alarmCode : std::nullopt, again);
+        });
+    }
+}
+
+void AlarmsPage::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    if (m_hub)
+        m_hub->watch(m_session->slave(), this);
+}
+
+void AlarmsPage::hideEvent(QHideEvent* event)
+{
+    QWidget::hideEvent(event);
+    if (m_hub)
+        m_hub->unwatch(m_session->slave(), this);
+}
+
+std::optional<qint64> AlarmsPage::shownAlarmCode() const
+{
+    if (!m_report.alarmActive.value_or(false))
+        return std::nullopt;
+    const AlarmHistory::History* alarms = historyOf(m_report, 0);
+    if (!alarms || alarms->records.isEmpty() || alarms->records.first().empty)
+        return std::nullopt;
+    return alarms->records.first().code;
+}
+
+QString AlarmsPage::ageText() const
+{
+    return m_age->text();
+}
+
+bool AlarmsPage::contradicts(std::optional<bool> active, std::optional<qint64> code) const
+{
+    if (!active)
+        return false; // the source does not tell
+    if (!m_report.alarmActive || *m_report.alarmActive != *active)
+        return true;
+    // Another alarm than the one shown (a code not read yet tells nothing).
+    return *active && code && shownAlarmCode() != code;
+}
+
+void AlarmsPage::observed(int source, std::optional<bool> active, std::optional<qint64> code,
+                          bool answeredAgain)
+{
+    const Observation now(active, code);
+    const bool changed = !m_observed[source] || *m_observed[source] != now;
+    m_observed[source] = now;
+    m_lastSource = source;
+    if (!answeredAgain && (!changed || !contradicts(active, code)))
+        return;
+    if (m_busy) {
+        m_readAgain = true; // once the read under way is shown
+        return;
+    }
+    ++m_autoRefreshes;
+    refresh();
 }
 
 QString AlarmsPage::codeText(qint64 code)
@@ -203,6 +303,15 @@ void AlarmsPage::finish(const QString& status)
     setBusy(false);
     m_status->setText(status);
     emit operationFinished();
+    // The drive's state changed while the records were read: read once more if it differs.
+    if (m_readAgain) {
+        m_readAgain = false;
+        const std::optional<Observation>& seen = m_observed[m_lastSource];
+        if (seen && contradicts(seen->first, seen->second)) {
+            ++m_autoRefreshes;
+            refresh();
+        }
+    }
 }
 
 void AlarmsPage::showReport(const AlarmHistory::Report& report)
