@@ -144,9 +144,13 @@ void AlarmsPage::followLive(MonitorHub* hub, DriveStatusPoller* poller)
                 observed(0, sample.alarmActive, sample.activeAlarmCode, false);
         });
         // The alarm state shown is live while the drive answers the page's polling.
-        m_look =
-            new StaleLook([hub, slave](const QDateTime& now) { return hub->freshness(slave, now); },
-                          [hub, slave] { return hub->lastAnswer(slave); }, this);
+        // A deleted page lingers (deleteLater) and may outlive the hub (a reconnection).
+        const QPointer<MonitorHub> alive(hub);
+        m_look = new StaleLook(
+            [alive, slave](const QDateTime& now) {
+                return alive ? alive->freshness(slave, now) : Freshness::State::None;
+            },
+            [alive, slave] { return alive ? alive->lastAnswer(slave) : QDateTime(); }, this);
         m_look->addWidget(m_status);
         m_look->setAgeLabel(m_age);
         connect(hub, &MonitorHub::linkChanged, m_look, &StaleLook::update);
@@ -157,6 +161,8 @@ void AlarmsPage::followLive(MonitorHub* hub, DriveStatusPoller* poller)
     if (poller) {
         connect(poller, &DriveStatusPoller::statusChanged, this, [this, slave](int s) {
             if (s != slave)
+                return;
+            if (!m_poller)
                 return;
             const DriveStatus st = m_poller->status(slave);
             // A drive answering again after it did not (a power cycle, a cable put back).

@@ -107,8 +107,9 @@ private:
     QPushButton* m_reset;
     QPushButton* m_clear;
     QLabel* m_age;
-    MonitorHub* m_hub = nullptr;
-    DriveStatusPoller* m_poller = nullptr;
+    // Deleted pages linger (deleteLater) and may outlive the bus they watched.
+    QPointer<MonitorHub> m_hub;
+    QPointer<DriveStatusPoller> m_poller;
     StaleLook* m_look = nullptr;
     // The latest state observed live, and whether a read is to follow the one under way.
     using Observation = std::pair<std::optional<bool>, std::optional<qint64>>;

@@ -22,6 +22,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
+#include <QPointer>
 #include <QPushButton>
 #include <QSplitter>
 #include <QTime>
@@ -130,15 +131,24 @@ MonitorPage::MonitorPage(MonitorHub* hub, DeviceParameters* parameters, QWidget*
                     showPanel(*m_last);
             });
     // One rule for every live value (monitor/Freshness): its age shown, grey once not live.
-    m_look = new StaleLook([this](const QDateTime& now) { return m_hub->freshness(m_slave, now); },
-                           [this] { return m_hub->lastAnswer(m_slave); }, this);
+    // A page removed from the tabs is deleted later, possibly after the hub (a reconnection).
+    const QPointer<MonitorHub> alive(hub);
+    const int slave = m_slave;
+    m_look = new StaleLook(
+        [alive, slave](const QDateTime& now) {
+            return alive ? alive->freshness(slave, now) : Freshness::State::None;
+        },
+        [alive, slave] { return alive ? alive->lastAnswer(slave) : QDateTime(); }, this);
     for (QWidget* w : {static_cast<QWidget*>(m_current), static_cast<QWidget*>(m_currentDisplay),
                        static_cast<QWidget*>(m_target), static_cast<QWidget*>(m_load),
                        static_cast<QWidget*>(m_state)})
         m_look->addWidget(w);
     if (m_motorSpeed)
         m_look->addWidget(m_motorSpeed);
-    connect(m_look, &StaleLook::evaluated, this, &MonitorPage::showFreshness);
+    connect(m_look, &StaleLook::evaluated, this, [this, alive] {
+        if (alive)
+            showFreshness();
+    });
     connect(hub, &MonitorHub::linkChanged, m_look, &StaleLook::update);
     if (const auto latest = hub->latest(m_slave))
         showSample(*latest);
@@ -260,9 +270,9 @@ void MonitorPage::showSample(const MonitorSample& s)
                                        : tr("Alarm active (reading which one…)"));
     }
     m_lastError.clear();
-    showPanel(s);
     if (m_look)
-        m_look->update();
+        m_look->update(); // live again before the panel's light is set
+    showPanel(s);
     if (m_motorSpeed)
         m_motorSpeed->showSample(s);
 }
