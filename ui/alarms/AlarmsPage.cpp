@@ -152,7 +152,10 @@ void AlarmsPage::followLive(MonitorHub* hub, DriveStatusPoller* poller)
             },
             [alive, slave] { return alive ? alive->lastAnswer(slave) : QDateTime(); }, this);
         m_look->addWidget(m_status);
-        m_look->setAgeLabel(m_age);
+        m_look->addWidget(m_age);
+        connect(m_look, &StaleLook::evaluated, this,
+                [this] { m_age->setText(tr("Alarm state: %1").arg(m_look->ageText())); });
+        m_look->update();
         connect(hub, &MonitorHub::linkChanged, m_look, &StaleLook::update);
         m_age->setVisible(true);
         if (isVisible())

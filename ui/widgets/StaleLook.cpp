@@ -1,6 +1,5 @@
 #include "widgets/StaleLook.h"
 
-#include <QLabel>
 #include <QLocale>
 #include <QPalette>
 #include <QVariant>
@@ -77,12 +76,6 @@ void StaleLook::addWidget(QWidget* widget)
     apply(widget, m_state == Freshness::State::Stale);
 }
 
-void StaleLook::setAgeLabel(QLabel* label)
-{
-    m_ageLabel = label;
-    update();
-}
-
 QString StaleLook::ageText() const
 {
     return ageText(m_state, m_lastAnswer(), QDateTime::currentDateTimeUtc());
@@ -96,10 +89,6 @@ void StaleLook::update()
     m_state = state;
     for (const QPointer<QWidget>& w : std::as_const(m_widgets))
         apply(w, state == Freshness::State::Stale);
-    if (m_ageLabel) {
-        m_ageLabel->setText(ageText(state, m_lastAnswer(), now));
-        apply(m_ageLabel, state == Freshness::State::Stale);
-    }
     if (changed)
         emit stateChanged(state);
     emit evaluated();

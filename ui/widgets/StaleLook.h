@@ -10,7 +10,6 @@
 #include <QVector>
 #include <functional>
 
-class QLabel;
 class QWidget;
 
 namespace opentop {
@@ -19,8 +18,8 @@ namespace opentop {
 // greyed text and the time of the last answer. A widget's "stale" property tells which look it
 // has (for style sheets, accessibility checks and tests). A StaleLook owned by a view follows
 // one source (a drive's latest sample, a status), re-evaluates it a few times a second, greys
-// the widgets it was given while the source is not live and writes the age ("updated 0.4 s
-// ago", "last answer 10:31:05 (12 s old)") into its age label.
+// the widgets it was given while the source is not live and tells the age ("updated 0.4 s
+// ago", "last answer 10:31:05 (12 s old)") for the view to show.
 class StaleLook : public QObject
 {
     Q_OBJECT
@@ -44,8 +43,6 @@ public:
 
     // Widgets greyed while the source is not live.
     void addWidget(QWidget* widget);
-    // Where the age goes (greyed with the widgets).
-    void setAgeLabel(QLabel* label);
     Freshness::State state() const { return m_state; }
     QString ageText() const;
     // Evaluates the source now (also done on every tick).
@@ -61,7 +58,6 @@ private:
     StateSource m_source;
     TimeSource m_lastAnswer;
     QVector<QPointer<QWidget>> m_widgets;
-    QPointer<QLabel> m_ageLabel;
     Freshness::State m_state = Freshness::State::None;
     QTimer m_tick;
 };
