@@ -1,8 +1,6 @@
 #include "alarms/AlarmsPage.h"
 
-#include "bus/BusDrives.h"
-#include "bus/DriveStatusPoller.h"
-#include "monitor/MonitorHub.h"
+#include "alarms/AlarmFollower.h"
 #include "session/DeviceSession.h"
 #include "widgets/StaleLook.h"
 
@@ -135,62 +133,45 @@ AlarmsPage::~AlarmsPage()
 
 void AlarmsPage::followLive(MonitorHub* hub, DriveStatusPoller* poller)
 {
-    m_hub = hub;
-    m_poller = poller;
     const int slave = m_session->slave();
-    if (hub) {
-        connect(hub, &MonitorHub::sample, this, [this, slave](int s, const MonitorSample& sample) {
-            if (s == slave)
-                observed(0, sample.alarmActive, sample.activeAlarmCode, false);
-        });
-        // The alarm state shown is live while the drive answers the page's polling.
-        // A deleted page lingers (deleteLater) and may outlive the hub (a reconnection).
-        const QPointer<MonitorHub> alive(hub);
-        m_look = new StaleLook(
-            [alive, slave](const QDateTime& now) {
-                return alive ? alive->freshness(slave, now) : Freshness::State::None;
-            },
-            [alive, slave] { return alive ? alive->lastAnswer(slave) : QDateTime(); }, this);
-        m_look->addWidget(m_status);
-        m_look->addWidget(m_age);
-        connect(m_look, &StaleLook::evaluated, this,
-                [this] { m_age->setText(tr("Alarm state: %1").arg(m_look->ageText())); });
-        m_look->update();
-        connect(hub, &MonitorHub::linkChanged, m_look, &StaleLook::update);
-        m_age->setVisible(true);
-        if (isVisible())
-            hub->watch(slave, this);
-    }
-    if (poller) {
-        connect(poller, &DriveStatusPoller::statusChanged, this, [this, slave](int s) {
-            if (s != slave)
-                return;
-            if (!m_poller)
-                return;
-            const DriveStatus st = m_poller->status(slave);
-            // A drive answering again after it did not (a power cycle, a cable put back).
-            const bool answering = st.consecutiveFailures == 0 && st.polled;
-            const bool again = answering && !m_wasAnswering;
-            m_wasAnswering = answering || !st.polled;
-            if (st.consecutiveFailures == 0 && st.polled)
-                observed(1, st.alarmActive,
-                         st.alarmActive.value_or(false) ? st.alarmCode : std::nullopt, again);
-        });
-    }
+    m_follower = new AlarmFollower(
+        slave, hub, poller,
+        [this](std::optional<bool> active, std::optional<qint64> code) {
+            return contradicts(active, code);
+        },
+        this);
+    connect(m_follower, &AlarmFollower::readNeeded, this, &AlarmsPage::refresh);
+    if (isVisible())
+        m_follower->setWatching(true, this);
+    // The alarm state shown is live while the drive answers the page's polling.
+    m_look = m_follower->look();
+    if (!m_look)
+        return;
+    m_look->addWidget(m_status);
+    m_look->addWidget(m_age);
+    connect(m_look, &StaleLook::evaluated, this,
+            [this] { m_age->setText(tr("Alarm state: %1").arg(m_look->ageText())); });
+    m_look->update();
+    m_age->setVisible(true);
 }
 
 void AlarmsPage::showEvent(QShowEvent* event)
 {
     QWidget::showEvent(event);
-    if (m_hub)
-        m_hub->watch(m_session->slave(), this);
+    if (m_follower)
+        m_follower->setWatching(true, this);
 }
 
 void AlarmsPage::hideEvent(QHideEvent* event)
 {
     QWidget::hideEvent(event);
-    if (m_hub)
-        m_hub->unwatch(m_session->slave(), this);
+    if (m_follower)
+        m_follower->setWatching(false, this);
+}
+
+int AlarmsPage::autoRefreshes() const
+{
+    return m_follower ? m_follower->readsAsked() : 0;
 }
 
 std::optional<qint64> AlarmsPage::shownAlarmCode() const
@@ -216,23 +197,6 @@ bool AlarmsPage::contradicts(std::optional<bool> active, std::optional<qint64> c
         return true;
     // Another alarm than the one shown (a code not read yet tells nothing).
     return *active && code && shownAlarmCode() != code;
-}
-
-void AlarmsPage::observed(int source, std::optional<bool> active, std::optional<qint64> code,
-                          bool answeredAgain)
-{
-    const Observation now(active, code);
-    const bool changed = !m_observed[source] || *m_observed[source] != now;
-    m_observed[source] = now;
-    m_lastSource = source;
-    if (!answeredAgain && (!changed || !contradicts(active, code)))
-        return;
-    if (m_busy) {
-        m_readAgain = true; // once the read under way is shown
-        return;
-    }
-    ++m_autoRefreshes;
-    refresh();
 }
 
 QString AlarmsPage::codeText(qint64 code)
@@ -264,6 +228,8 @@ std::function<void(const T&)> AlarmsPage::guarded(void (AlarmsPage::*handler)(co
 void AlarmsPage::setBusy(bool busy, const QString& status)
 {
     m_busy = busy;
+    if (busy && m_follower)
+        m_follower->setReading(true);
     const bool usable = m_history && m_history->supported() && !busy;
     m_reread->setEnabled(usable);
     m_reset->setEnabled(usable && m_history->canReset());
@@ -312,15 +278,9 @@ void AlarmsPage::finish(const QString& status)
     setBusy(false);
     m_status->setText(status);
     emit operationFinished();
-    // The drive's state changed while the records were read: read once more if it differs.
-    if (m_readAgain) {
-        m_readAgain = false;
-        const std::optional<Observation>& seen = m_observed[m_lastSource];
-        if (seen && contradicts(seen->first, seen->second)) {
-            ++m_autoRefreshes;
-            refresh();
-        }
-    }
+    // The drive's state changed meanwhile: the follower may ask for another read.
+    if (m_follower)
+        m_follower->setReading(false);
 }
 
 void AlarmsPage::showReport(const AlarmHistory::Report& report)

@@ -6,13 +6,13 @@
 #include <QPointer>
 #include <QWidget>
 #include <optional>
-#include <utility>
 
 class QPushButton;
 class QTableWidget;
 
 namespace opentop {
 
+class AlarmFollower;
 class DeviceSession;
 class DriveStatusPoller;
 class MonitorHub;
@@ -45,7 +45,7 @@ public:
     std::optional<qint64> shownAlarmCode() const;
     // "Alarm state updated 0.4 s ago" / "last answer ..." below the status.
     QString ageText() const;
-    int autoRefreshes() const { return m_autoRefreshes; }
+    int autoRefreshes() const;
     // Ask for confirmation (a modal QMessageBox), then send the command.
     void resetAlarm();
     void clearRecords();
@@ -70,11 +70,7 @@ protected:
     void hideEvent(QHideEvent* event) override;
 
 private:
-    // The drive reports this alarm state: read again if it is not what the page shows.
-    // `source`: 0 the hub's samples, 1 the status poller (each is followed on its own, so that
-    // two sources a poll apart never make the page read back and forth).
-    void observed(int source, std::optional<bool> active, std::optional<qint64> code,
-                  bool answeredAgain);
+    // Whether a drive's alarm state differs from what the page shows.
     bool contradicts(std::optional<bool> active, std::optional<qint64> code) const;
     void setBusy(bool busy, const QString& status = QString());
     void showReport(const AlarmHistory::Report& report);
@@ -107,17 +103,8 @@ private:
     QPushButton* m_reset;
     QPushButton* m_clear;
     QLabel* m_age;
-    // Deleted pages linger (deleteLater) and may outlive the bus they watched.
-    QPointer<MonitorHub> m_hub;
-    QPointer<DriveStatusPoller> m_poller;
+    AlarmFollower* m_follower = nullptr;
     StaleLook* m_look = nullptr;
-    // The latest state observed live, and whether a read is to follow the one under way.
-    using Observation = std::pair<std::optional<bool>, std::optional<qint64>>;
-    std::optional<Observation> m_observed[2];
-    int m_lastSource = 0;
-    bool m_readAgain = false;
-    int m_autoRefreshes = 0;
-    bool m_wasAnswering = true;
 };
 
 } // namespace opentop
