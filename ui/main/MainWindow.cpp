@@ -26,6 +26,7 @@
 #include "traffic/TrafficDescriber.h"
 #include "traffic/TrafficLogView.h"
 #include "trends/TrendPanel.h"
+#include "widgets/StatusLight.h"
 #include "workspace/DriveWorkspace.h"
 #include "workspace/MultiDriveWriteDialog.h"
 
@@ -35,6 +36,7 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QHeaderView>
+#include <QItemSelectionModel>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -57,6 +59,7 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     , m_central(new QWidget(this))
     , m_splitter(new QSplitter(this))
     , m_connectionLabel(new QLabel(this))
+    , m_linkLight(new StatusLight(this))
 {
     setWindowTitle(tr("OpenTOP"));
     m_splitter->setObjectName(QStringLiteral("mainSplitter"));
@@ -82,6 +85,9 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
         addDockWidget(Qt::BottomDockWidgetArea, d);
         d->hide();
     }
+    m_linkLight->setObjectName(QStringLiteral("linkLight"));
+    m_linkLight->setLed(DriveStatus::Led::Grey, tr("Not connected"));
+    statusBar()->addPermanentWidget(m_linkLight);
     statusBar()->addPermanentWidget(m_connectionLabel);
     buildActions();
     // STOP ALL's keys work everywhere in the program, modal dialogs included; the button itself
@@ -189,6 +195,7 @@ void MainWindow::teardown()
     m_drives = nullptr;
     m_client.reset(); // bounded shutdown of the bus worker
     m_connected = false;
+    m_linkLight->setLed(DriveStatus::Led::Grey, tr("Not connected"));
     // A start confirmed for this bus says nothing about the next one (another machine may use
     // the same machine numbers).
     TestRunPanel::forgetConfirmations();
@@ -221,12 +228,11 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
     m_exitGuard = new ExitGuard(m_drives, m_poller, this);
     m_banner = new AlarmBanner(m_poller, m_central);
     static_cast<QVBoxLayout*>(m_central->layout())->insertWidget(0, m_banner);
-    connect(m_banner, &AlarmBanner::showAlarms, this, [this](int slave) {
-        m_panel->view()->selectRow(m_panel->model()->rowOf(slave));
-        for (int i = 0; i < m_workspace->tabs()->count(); ++i) {
-            if (qobject_cast<AlarmsPage*>(m_workspace->tabs()->widget(i)))
-                m_workspace->tabs()->setCurrentIndex(i);
-        }
+    connect(m_banner, &AlarmBanner::showAlarms, this, &MainWindow::showAlarmsOf);
+    // STOP ALL may end in alarms (or clear a run that hid one): the open page reads again.
+    connect(m_stopAll, &StopAllButton::finished, this, [this] {
+        if (AlarmsPage* page = alarmsPage())
+            page->refresh();
     });
     // The placeholder of the first connection; on a reconnection the old panel is gone and
     // the first widget is the workspace, which stays.
@@ -243,8 +249,14 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
     connect(m_client.get(), &ModbusClient::opened, this, &MainWindow::onOpened);
     connect(m_client.get(), &ModbusClient::connectionLost, this, [this](const QString& lost) {
         setConnectionText(tr("Connection lost: %1").arg(lost), true);
-        QMessageBox::warning(this, tr("Connection lost"),
-                             ConnectionDialog::explainOpenError(m_settings, lost));
+        // Every live view greys at once, before the message is read.
+        setLinkUp(false, tr("Connection lost: %1").arg(lost));
+        auto* box = new QMessageBox(QMessageBox::Warning, tr("Connection lost"),
+                                    ConnectionDialog::explainOpenError(m_settings, lost),
+                                    QMessageBox::Ok, this);
+        box->setObjectName(QStringLiteral("connectionLostBox"));
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
     });
     setWindowTitle(tr("OpenTOP — %1").arg(m_client->describe()));
     setConnectionText(tr("Connecting to %1…").arg(m_client->describe()), false);
@@ -264,9 +276,46 @@ void MainWindow::setConnectionText(const QString& text, bool problem)
                                              : QString());
 }
 
+void MainWindow::setLinkUp(bool up, const QString& why)
+{
+    m_connected = up;
+    if (m_drives)
+        m_drives->setLinkUp(up);
+    m_linkLight->setLed(up ? DriveStatus::Led::Green : DriveStatus::Led::Grey, why);
+}
+
+AlarmsPage* MainWindow::alarmsPage() const
+{
+    for (int i = 0; i < m_workspace->tabs()->count(); ++i) {
+        if (auto* page = qobject_cast<AlarmsPage*>(m_workspace->tabs()->widget(i)))
+            return page;
+    }
+    return nullptr;
+}
+
+void MainWindow::showAlarmsOf(int slave)
+{
+    if (!m_panel || !m_drives || !m_drives->contains(slave))
+        return;
+    const int row = m_panel->model()->rowOf(slave);
+    if (m_panel->selectedSlaves() != QVector<int>{slave}) {
+        // This drive alone (a row added to a selection of several would open the first's).
+        const QModelIndex index = m_panel->model()->index(row, 0);
+        m_panel->view()->selectionModel()->setCurrentIndex(
+            index, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    }
+    // The pages follow the selection at once; make sure they are this drive's.
+    showDrive({slave});
+    if (AlarmsPage* page = alarmsPage()) {
+        m_workspace->tabs()->setCurrentWidget(page);
+        page->refresh();
+    }
+}
+
 void MainWindow::onOpened(bool ok, const QString& error)
 {
-    m_connected = ok;
+    setLinkUp(ok, ok ? tr("Connected: %1").arg(m_client->describe())
+                     : tr("Not connected: %1").arg(error));
     if (!ok) {
         setConnectionText(tr("Not connected: %1").arg(error), true);
         QMessageBox::warning(this, tr("Cannot connect"),
@@ -336,6 +385,8 @@ void MainWindow::showDrive(const QVector<int>& slaves)
     m_workspace->tabs()->addTab(run, tr("Test run"));
     auto* alarms = new AlarmsPage(m_drives->session(info.slave), m_workspace->tabs());
     m_workspace->tabs()->addTab(alarms, tr("Alarms"));
+    // Live: raised, cleared and power-cycled alarms show without a click, as on the banner.
+    alarms->followLive(m_hub, m_poller);
     alarms->refresh();
 }
 
