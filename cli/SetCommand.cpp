@@ -5,6 +5,7 @@
 #include "ModbusClient.h"
 #include "TextTable.h"
 #include "profile/ValueCodec.h"
+#include "run/RunningData.h"
 #include "session/DependentValues.h"
 #include "session/DeviceSession.h"
 
@@ -98,6 +99,16 @@ int SetCommand::run(CliContext& context, const QStringList& args)
             for (const QString& d : DependentValues::of(profile, *a.meta))
                 if (!session->hasCached(d) && !controlling.contains(d))
                     controlling << d;
+            // The deceleration advice weighs an SPno's speed against its deceleration.
+            QString field;
+            if (const int spno = RunningData::spnoOf(a.name, &field); spno > 0) {
+                for (const char* other : {"speed", "decel"}) {
+                    const QString n = RunningData::parameter(profile, spno, QLatin1String(other));
+                    if (!n.isEmpty() && n != a.name && !session->hasCached(n) &&
+                        !controlling.contains(n) && profile.parameter(n)->isReadable())
+                        controlling << n;
+                }
+            }
         }
     }
     // What allowed values depend on must be known before anything can be validated.
@@ -145,6 +156,18 @@ int SetCommand::run(CliContext& context, const QStringList& args)
             if (!left.isEmpty())
                 problems << left;
             pending.insert(a.name, qint64(e.raw));
+        }
+        // Advice, not a refusal: the manual's deceleration rule for the values as written.
+        QStringList advised;
+        for (const Assignment& a : assignments) {
+            if (!problems.isEmpty() || !pending.contains(a.name))
+                continue;
+            const QString w =
+                RunningData::warningFor(profile, a.name, pending.value(a.name), overlay);
+            if (!w.isEmpty() && !advised.contains(w)) {
+                advised << w;
+                context.err() << tr("warning: %1").arg(w) << Qt::endl;
+            }
         }
     }
     if (!problems.isEmpty()) {

@@ -47,6 +47,12 @@ ModbusResult SimBackend::transact(const ModbusRequest& request, int timeoutMs)
         result.message = tr("the simulated bus is not open");
         return result;
     }
+    if (m_bus->isUnplugged()) {
+        m_open = false;
+        result.error = ModbusError::PortError;
+        result.message = tr("the simulated adapter was unplugged");
+        return result;
+    }
     const int timeout =
         timeoutMs > 0 ? timeoutMs : (request.timeoutMs > 0 ? request.timeoutMs : 200);
     QElapsedTimer timer;

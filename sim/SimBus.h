@@ -8,6 +8,7 @@
 #include <QCoreApplication>
 #include <QList>
 #include <QMutex>
+#include <atomic>
 #include <map>
 #include <memory>
 
@@ -54,6 +55,10 @@ public:
     SimControlResult control(int slave, const QStringList& args);
 
     void setFaults(const FaultInjector& faults);
+    // The adapter pulled out: the backend's next request fails with a port error and the
+    // backend closes, as a USB adapter unplugged in use does.
+    void setUnplugged(bool unplugged) { m_unplugged = unplugged; }
+    bool isUnplugged() const { return m_unplugged; }
     // The line's settings; devices whose settings in force differ do not hear the frames.
     // The devices present are configured to match, as an installer would have done.
     void setLine(int baud, char parity);
@@ -76,6 +81,7 @@ private:
     int m_lineBaud = 0;
     char m_lineParity = 0;
     mutable QMutex m_mutex;
+    std::atomic<bool> m_unplugged{false};
 };
 
 } // namespace opentop

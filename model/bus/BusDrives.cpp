@@ -100,4 +100,12 @@ void BusDrives::setVariant(int slave, const QString& variant)
     emit driveChanged(slave);
 }
 
+void BusDrives::setLinkUp(bool up)
+{
+    if (up == m_linkUp)
+        return;
+    m_linkUp = up;
+    emit linkChanged(up);
+}
+
 } // namespace opentop

@@ -38,10 +38,16 @@ public:
     // bus's list); changes the allowed values used for its validation.
     void setVariant(int slave, const QString& variant);
 
+    // Whether the connection is open: false once it is lost (or could not be opened). Nothing
+    // read before counts as live while the link is down (monitor/Freshness).
+    bool linkUp() const { return m_linkUp; }
+    void setLinkUp(bool up);
+
 signals:
     void driveAdded(int slave);
     void driveChanged(int slave);
     void driveRemoved(int slave);
+    void linkChanged(bool up);
 
 private:
     struct Drive
@@ -54,6 +60,7 @@ private:
     ModbusClient* m_client;
     const ProfileRegistry& m_registry;
     QHash<int, Drive> m_drives;
+    bool m_linkUp = true;
 };
 
 } // namespace opentop

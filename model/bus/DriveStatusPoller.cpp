@@ -93,6 +93,11 @@ DriveStatusPoller::DriveStatusPoller(BusDrives* drives, QObject* parent)
         m_queue.removeAll(slave);
         skipIfGone(slave);
     });
+    // Every light follows the link at once, not at the next poll.
+    connect(drives, &BusDrives::linkChanged, this, [this] {
+        for (int slave : m_status.keys())
+            emit statusChanged(slave);
+    });
     // A drive identified again as another family (or as absent) starts afresh.
     connect(drives, &BusDrives::driveChanged, this, [this](int slave) {
         if (!m_drives->session(slave) && m_status.remove(slave))
@@ -225,6 +230,7 @@ void DriveStatusPoller::pollDrive(int slave)
                 return;
             }
             s.answered = true;
+            s.lastAnswer = QDateTime::currentDateTimeUtc();
             s.consecutiveFailures = 0;
             s.error.clear();
             const auto lookup = [&raw](const QString& n) {
@@ -295,6 +301,22 @@ void DriveStatusPoller::scheduleNext()
     }
     const qint64 elapsed = QDateTime::currentMSecsSinceEpoch() - m_cycleStartMs;
     m_timer.start(int(std::clamp<qint64>(m_intervalMs - elapsed, 0, m_intervalMs)));
+}
+
+Freshness::State DriveStatusPoller::freshness(int slave, const QDateTime& now) const
+{
+    const DriveStatus s = m_status.value(slave);
+    return Freshness::of(s.lastAnswer, now, m_intervalMs,
+                         m_drives->linkUp() && s.consecutiveFailures < DriveStatus::kNoAnswerAfter);
+}
+
+DriveStatus::Led DriveStatusPoller::shownLed(int slave, const QDateTime& now) const
+{
+    const DriveStatus s = m_status.value(slave);
+    // A communication error is news in itself (blue), as long as the link is up.
+    if (s.led == DriveStatus::Led::Blue && m_drives->linkUp())
+        return s.led;
+    return freshness(slave, now) == Freshness::State::Live ? s.led : DriveStatus::Led::Grey;
 }
 
 DriveStatus::Led DriveStatusPoller::ledFor(const DriveStatus& s)

@@ -1,7 +1,9 @@
 #pragma once
 
+#include "monitor/Freshness.h"
 #include "profile/CodeTable.h"
 
+#include <QDateTime>
 #include <QHash>
 #include <QObject>
 #include <QTimer>
@@ -41,6 +43,7 @@ struct DriveStatus
     QString priorityText;            // the "motionPriority" setting, e.g. "Communication priority"
     std::optional<bool> motionPriority; // whether it holds the value motion by bus needs
     Led led = Led::Grey;
+    QDateTime lastAnswer; // when the drive last answered a poll
 
     // Failures in a row after which a drive counts as not answering (grey, not blue).
     static constexpr int kNoAnswerAfter = 3;
@@ -77,6 +80,12 @@ public:
 
     // The status of `slave`; a default (grey, not polled) one for drives not polled yet.
     DriveStatus status(int slave) const { return m_status.value(slave); }
+    // Whether what the status says of `slave` is live (monitor/Freshness): answered within a
+    // few poll intervals while the link is up.
+    Freshness::State freshness(int slave, const QDateTime& now) const;
+    // The light to show now: the status's colour while live, grey otherwise (never green for
+    // a drive that is not answering or a link that is down).
+    DriveStatus::Led shownLed(int slave, const QDateTime& now) const;
     // Parameters polled for `slave` (empty for drives without a session).
     QStringList parametersFor(int slave) const;
     int cyclesCompleted() const { return m_cycles; }

@@ -8,8 +8,21 @@ namespace opentop {
 
 double MonitorHub::Statistics::rate() const
 {
-    return samples > 1 && lastMs > firstMs ? (samples - 1) * 1000.0 / double(lastMs - firstMs)
-                                           : 0.0;
+    const qint64 n = recentMs.size();
+    return n > 1 && recentMs.last() > recentMs.first()
+               ? (n - 1) * 1000.0 / double(recentMs.last() - recentMs.first())
+               : 0.0;
+}
+
+void MonitorHub::Statistics::add(qint64 ms)
+{
+    if (samples++ == 0 || recentMs.isEmpty())
+        firstMs = ms;
+    lastMs = ms;
+    errorsInRow = 0;
+    recentMs << ms;
+    if (recentMs.size() > kRateWindow)
+        recentMs.removeFirst();
 }
 
 MonitorHub::MonitorHub(BusDrives* drives, QObject* parent)
@@ -19,6 +32,7 @@ MonitorHub::MonitorHub(BusDrives* drives, QObject* parent)
     connect(drives, &BusDrives::driveRemoved, this, &MonitorHub::forget);
     connect(drives, &BusDrives::driveAdded, this, &MonitorHub::identified);
     connect(drives, &BusDrives::driveChanged, this, &MonitorHub::identified);
+    connect(drives, &BusDrives::linkChanged, this, &MonitorHub::linkChanged);
 }
 
 // A drive identified again may have a new session: the old monitor would poll a dead one.
@@ -116,10 +130,7 @@ void MonitorHub::startOrStop(int slave)
         connect(d->monitor.get(), &DeviceMonitor::sample, this,
                 [this, slave](const QDateTime&, const MonitorSample& s) {
                     Drive* drive = driveFor(slave);
-                    const qint64 ms = s.timestamp.toMSecsSinceEpoch();
-                    if (drive->stats.samples++ == 0)
-                        drive->stats.firstMs = ms;
-                    drive->stats.lastMs = ms;
+                    drive->stats.add(s.timestamp.toMSecsSinceEpoch());
                     drive->latest = s;
                     drive->lastError.clear();
                     drive->history.append(s);
@@ -128,12 +139,14 @@ void MonitorHub::startOrStop(int slave)
         connect(d->monitor.get(), &DeviceMonitor::error, this, [this, slave](const QString& text) {
             Drive* drive = driveFor(slave);
             ++drive->stats.errors;
+            ++drive->stats.errorsInRow;
             drive->lastError = text;
             emit error(slave, text);
         });
     }
     if (d->monitor->isActive())
         return;
+    d->stats.recentMs.clear(); // the rate is that of this polling run
     if (d->prepared) {
         d->monitor->start();
         return;
@@ -210,6 +223,23 @@ void MonitorHub::refreshDisplay(int slave)
         if (!problem.isEmpty())
             qCWarning(lcModel) << "speed display:" << problem;
     });
+}
+
+QDateTime MonitorHub::lastAnswer(int slave) const
+{
+    const auto it = m_list.find(slave);
+    return it == m_list.end() || !it->second->latest ? QDateTime() : it->second->latest->timestamp;
+}
+
+Freshness::State MonitorHub::freshness(int slave, const QDateTime& now) const
+{
+    const auto it = m_list.find(slave);
+    if (it == m_list.end() || !it->second->latest)
+        return Freshness::State::None;
+    // A drive that failed its last polls does not answer, however recent its last value.
+    const bool answers = it->second->stats.errorsInRow < 2;
+    return Freshness::of(it->second->latest->timestamp, now, m_intervalMs,
+                         m_drives->linkUp() && answers && !m_paused);
 }
 
 DeviceMonitor* MonitorHub::monitor(int slave) const

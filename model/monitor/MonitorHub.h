@@ -1,6 +1,7 @@
 #pragma once
 
 #include "monitor/DeviceMonitor.h"
+#include "monitor/Freshness.h"
 #include "monitor/TrendHistory.h"
 
 #include <QHash>
@@ -28,10 +29,16 @@ public:
     {
         qint64 samples = 0;
         qint64 errors = 0;
-        qint64 firstMs = 0; // time of the first sample since watching started
+        int errorsInRow = 0; // polls in a row that failed since the last sample
+        qint64 firstMs = 0;  // time of the first sample since polling (re)started
         qint64 lastMs = 0;
-        // Samples per second over the watched time.
+        // Times of the latest samples (at most kRateWindow, all of the current polling run).
+        QVector<qint64> recentMs;
+        static constexpr int kRateWindow = 16;
+        // Samples per second now: over the latest samples of the current polling run, so
+        // that a pause (hidden page, paused polling) does not dilute it.
         double rate() const;
+        void add(qint64 ms);
     };
 
     explicit MonitorHub(BusDrives* drives, QObject* parent = nullptr);
@@ -55,6 +62,11 @@ public:
     const TrendHistory* history(int slave) const;
     Statistics statistics(int slave) const;
     QString lastError(int slave) const;
+    // Whether the latest value of `slave` may be shown as live (monitor/Freshness): read
+    // within a few intervals, the link up and the drive answering its last polls.
+    Freshness::State freshness(int slave, const QDateTime& now) const;
+    // When `slave` last answered a poll (invalid: never).
+    QDateTime lastAnswer(int slave) const;
     // Re-reads the speed display settings of `slave` (after they were written).
     void refreshDisplay(int slave);
     DeviceMonitor* monitor(int slave) const;
@@ -65,6 +77,8 @@ signals:
     void watchedChanged();
     void intervalChanged(int ms);
     void pausedChanged(bool paused);
+    // The link went down or up: every drive's values changed freshness at once.
+    void linkChanged(bool up);
 
 private:
     struct Drive

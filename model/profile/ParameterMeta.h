@@ -50,6 +50,10 @@ struct BitField
     QString label;
     QStringList values; // label per field value, optional
     QString function;   // a terminal's state: the setting that assigns its function ("io.x0")
+    // The field means something only while setting `appliesParam` holds `appliesRaw` (the
+    // Hold bit while "Holding force at stop" is set); empty: always.
+    QString appliesParam;
+    double appliesRaw = 0;
 };
 
 // What may change with the drive variant or with another parameter's value.

@@ -297,7 +297,8 @@ bool ParameterReader::readBits(const QJsonArray& a, ParameterMeta* meta)
         if (!m_json.onlyKeys(b,
                              {QStringLiteral("bit"), QStringLiteral("width"),
                               QStringLiteral("name"), QStringLiteral("label"),
-                              QStringLiteral("values"), QStringLiteral("function")},
+                              QStringLiteral("values"), QStringLiteral("function"),
+                              QStringLiteral("appliesWhen")},
                              where))
             return false;
         BitField field;
@@ -306,6 +307,13 @@ bool ParameterReader::readBits(const QJsonArray& a, ParameterMeta* meta)
         field.name = m_json.string(b, QStringLiteral("name")).value_or(QString());
         field.label = m_json.string(b, QStringLiteral("label")).value_or(QString());
         field.function = m_json.string(b, QStringLiteral("function"), false).value_or(QString());
+        if (b.contains(QStringLiteral("appliesWhen"))) {
+            const QJsonObject when = b.value(QStringLiteral("appliesWhen")).toObject();
+            field.appliesParam = when.value(QStringLiteral("param")).toString();
+            field.appliesRaw = when.value(QStringLiteral("equals")).toDouble();
+            if (field.appliesParam.isEmpty() || !when.value(QStringLiteral("equals")).isDouble())
+                return m_json.fail(tr("%1.appliesWhen needs \"param\" and \"equals\"").arg(where));
+        }
         if (m_json.failed())
             return false;
         if (field.bit < 0 || field.width < 1 || field.bit + field.width > width)

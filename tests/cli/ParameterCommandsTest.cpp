@@ -160,3 +160,26 @@ TEST(PortsCommand, ListsAndExplainsTypedPaths)
     EXPECT_EQ(runCli({QStringLiteral("ports"), QStringLiteral("--json")}).code, ExitOk);
     EXPECT_EQ(runCli({QStringLiteral("ports"), QStringLiteral("extra")}).code, ExitUsage);
 }
+
+TEST(SetCommand, WarnsOfAShortDecelerationFromHighSpeedButWrites)
+{
+    // SPno2 at 2500 r/min with a 0.5 s deceleration: advised against, still a valid setting.
+    CliRun r =
+        runCli({QStringLiteral("set"), QStringLiteral("1"), QStringLiteral("spno2.speed=2500"),
+                QStringLiteral("spno2.decel=0.5"), kSim});
+    ASSERT_EQ(r.code, ExitOk) << qPrintable(r.err);
+    EXPECT_TRUE(
+        r.err.contains(QStringLiteral("warning: SPno2 slows down from 2500 r/min in 0.5 s")))
+        << qPrintable(r.err);
+    EXPECT_EQ(r.out.count(QStringLiteral("written, verified")), 2) << qPrintable(r.out);
+    // The speed alone, with the drive's own deceleration read for the check.
+    r = runCli(
+        {QStringLiteral("set"), QStringLiteral("1"), QStringLiteral("spno3.speed=2000"), kSim});
+    ASSERT_EQ(r.code, ExitOk) << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("warning: SPno3"))) << qPrintable(r.err);
+    // A slow speed, or 2 s and more: no warning.
+    r = runCli({QStringLiteral("set"), QStringLiteral("1"), QStringLiteral("spno2.speed=2500"),
+                QStringLiteral("spno2.decel=3"), kSim});
+    ASSERT_EQ(r.code, ExitOk) << qPrintable(r.err);
+    EXPECT_FALSE(r.err.contains(QStringLiteral("warning: SPno2"))) << qPrintable(r.err);
+}

@@ -1,7 +1,9 @@
 #include "alarms/AlarmsPage.h"
 
+#include "alarms/AlarmFollower.h"
 #include "groups/GroupWriteCheck.h"
 #include "session/DeviceSession.h"
+#include "widgets/StaleLook.h"
 
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -57,6 +59,7 @@ AlarmsPage::AlarmsPage(DeviceSession* session, QWidget* parent)
     , m_reread(new QPushButton(tr("&Re-read")))
     , m_reset(new QPushButton(tr("Reset &alarm…")))
     , m_clear(new QPushButton(tr("&Clear records…")))
+    , m_age(new QLabel)
 {
     m_title->setText(
         tr("Alarms and warnings of machine %1 (%2)").arg(session->slave()).arg(modelOf(session)));
@@ -73,6 +76,8 @@ AlarmsPage::AlarmsPage(DeviceSession* session, QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_title);
     layout->addWidget(m_status);
+    m_age->setVisible(false); // once the page follows the drive live
+    layout->addWidget(m_age);
     auto* tables = new QHBoxLayout;
     for (int which = 0; which < 2; ++which) {
         auto* box = new QVBoxLayout;
@@ -127,6 +132,74 @@ AlarmsPage::~AlarmsPage()
         delete m_history.data();
 }
 
+void AlarmsPage::followLive(MonitorHub* hub, DriveStatusPoller* poller)
+{
+    const int slave = m_session->slave();
+    m_follower = new AlarmFollower(
+        slave, hub, poller,
+        [this](std::optional<bool> active, std::optional<qint64> code) {
+            return contradicts(active, code);
+        },
+        this);
+    connect(m_follower, &AlarmFollower::readNeeded, this, &AlarmsPage::refresh);
+    if (isVisible())
+        m_follower->setWatching(true, this);
+    // The alarm state shown is live while the drive answers the page's polling.
+    m_look = m_follower->look();
+    if (!m_look)
+        return;
+    m_look->addWidget(m_status);
+    m_look->addWidget(m_age);
+    connect(m_look, &StaleLook::evaluated, this,
+            [this] { m_age->setText(tr("Alarm state: %1").arg(m_look->ageText())); });
+    m_look->update();
+    m_age->setVisible(true);
+}
+
+void AlarmsPage::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    if (m_follower)
+        m_follower->setWatching(true, this);
+}
+
+void AlarmsPage::hideEvent(QHideEvent* event)
+{
+    QWidget::hideEvent(event);
+    if (m_follower)
+        m_follower->setWatching(false, this);
+}
+
+int AlarmsPage::autoRefreshes() const
+{
+    return m_follower ? m_follower->readsAsked() : 0;
+}
+
+std::optional<qint64> AlarmsPage::shownAlarmCode() const
+{
+    if (!m_report.alarmActive.value_or(false))
+        return std::nullopt;
+    const AlarmHistory::History* alarms = historyOf(m_report, 0);
+    if (!alarms || alarms->records.isEmpty() || alarms->records.first().empty)
+        return std::nullopt;
+    return alarms->records.first().code;
+}
+
+QString AlarmsPage::ageText() const
+{
+    return m_age->text();
+}
+
+bool AlarmsPage::contradicts(std::optional<bool> active, std::optional<qint64> code) const
+{
+    if (!active)
+        return false; // the source does not tell
+    if (!m_report.alarmActive || *m_report.alarmActive != *active)
+        return true;
+    // Another alarm than the one shown (a code not read yet tells nothing).
+    return *active && code && shownAlarmCode() != code;
+}
+
 QString AlarmsPage::codeText(qint64 code)
 {
     return QString::number(code, 16).toUpper().rightJustified(2, QLatin1Char('0')) +
@@ -156,6 +229,8 @@ std::function<void(const T&)> AlarmsPage::guarded(void (AlarmsPage::*handler)(co
 void AlarmsPage::setBusy(bool busy, const QString& status)
 {
     m_busy = busy;
+    if (busy && m_follower)
+        m_follower->setReading(true);
     const bool usable = m_history && m_history->supported() && !busy;
     m_reread->setEnabled(usable);
     m_reset->setEnabled(usable && m_history->canReset());
@@ -204,6 +279,9 @@ void AlarmsPage::finish(const QString& status)
     setBusy(false);
     m_status->setText(status);
     emit operationFinished();
+    // The drive's state changed meanwhile: the follower may ask for another read.
+    if (m_follower)
+        m_follower->setReading(false);
 }
 
 void AlarmsPage::showReport(const AlarmHistory::Report& report)

@@ -5,13 +5,18 @@
 #include <QLabel>
 #include <QPointer>
 #include <QWidget>
+#include <optional>
 
 class QPushButton;
 class QTableWidget;
 
 namespace opentop {
 
+class AlarmFollower;
 class DeviceSession;
+class DriveStatusPoller;
+class MonitorHub;
+class StaleLook;
 
 // A drive's alarm and warning histories (newest first) with the cause and remedy of the
 // selected record, the communication error register decoded, and the commands Re-read, Reset
@@ -28,8 +33,19 @@ public:
     bool isBusy() const { return m_busy; }
     const AlarmHistory::Report& report() const { return m_report; }
 
+    // Follows the drive live: watches it through `hub` while the page is shown and reads the
+    // records again when the drive's alarm state changes (raised, cleared, another code, a
+    // power cycle seen) as the hub's samples or the poller's status (the banner's source)
+    // report it, so that the page never contradicts the banner.
+    void followLive(MonitorHub* hub, DriveStatusPoller* poller);
     // Reads the records and the error register again.
     void refresh();
+    // The alarm state the page shows: whether an alarm is active and the newest record's code.
+    std::optional<bool> shownAlarmActive() const { return m_report.alarmActive; }
+    std::optional<qint64> shownAlarmCode() const;
+    // "Alarm state updated 0.4 s ago" / "last answer ..." below the status.
+    QString ageText() const;
+    int autoRefreshes() const;
     // Ask for confirmation (a modal QMessageBox), then send the command.
     void resetAlarm();
     void clearRecords();
@@ -49,7 +65,13 @@ public:
 signals:
     void operationFinished();
 
+protected:
+    void showEvent(QShowEvent* event) override;
+    void hideEvent(QHideEvent* event) override;
+
 private:
+    // Whether a drive's alarm state differs from what the page shows.
+    bool contradicts(std::optional<bool> active, std::optional<qint64> code) const;
     void setBusy(bool busy, const QString& status = QString());
     void showReport(const AlarmHistory::Report& report);
     void fillTable(int which, const AlarmHistory::History* history);
@@ -80,6 +102,9 @@ private:
     QPushButton* m_reread;
     QPushButton* m_reset;
     QPushButton* m_clear;
+    QLabel* m_age;
+    AlarmFollower* m_follower = nullptr;
+    StaleLook* m_look = nullptr;
 };
 
 } // namespace opentop

@@ -1,6 +1,7 @@
 #include "bus/BusListModel.h"
 
 #include "profile/ProfileRegistry.h"
+#include "widgets/StaleLook.h"
 #include "widgets/StatusLight.h"
 
 #include <QBrush>
@@ -20,6 +21,25 @@ const QColor kGood(0x1b, 0x7f, 0x2a);
 BusListModel::BusListModel(QObject* parent)
     : QAbstractTableModel(parent)
 {
+    // A drive that stops answering greys out by the clock, not only when a poll ends.
+    m_age.setInterval(500);
+    connect(&m_age, &QTimer::timeout, this, [this] {
+        if (!m_devices.isEmpty())
+            emit dataChanged(index(0, Light), index(rowCount() - 1, State));
+    });
+    m_age.start();
+}
+
+DriveStatus::Led BusListModel::shownLed(int slave) const
+{
+    return m_poller ? m_poller->shownLed(slave, QDateTime::currentDateTimeUtc())
+                    : DriveStatus::Led::Grey;
+}
+
+bool BusListModel::isStale(int slave) const
+{
+    return !m_poller ||
+           m_poller->freshness(slave, QDateTime::currentDateTimeUtc()) != Freshness::State::Live;
 }
 
 void BusListModel::setPoller(DriveStatusPoller* poller)
@@ -130,8 +150,18 @@ QString BusListModel::toolTip(const DeviceInfo& d, int column) const
         return tip + QStringLiteral("\n") + duplicateHint(d.slave);
     }
     switch (column) {
-    case Light:
-        return tr("Status light %1: %2").arg(DriveStatus::ledName(s.led), s.ledText());
+    case Light: {
+        const QDateTime now = QDateTime::currentDateTimeUtc();
+        const Freshness::State state =
+            m_poller ? m_poller->freshness(d.slave, now) : Freshness::State::None;
+        const DriveStatus::Led led = shownLed(d.slave);
+        if (state == Freshness::State::Live || led != DriveStatus::Led::Grey)
+            return tr("Status light %1: %2 (%3)")
+                .arg(DriveStatus::ledName(led), s.ledText(),
+                     StaleLook::ageText(state, s.lastAnswer, now));
+        return tr("Status light grey: not live — %1")
+            .arg(StaleLook::ageText(state, s.lastAnswer, now));
+    }
     case Model:
         if (d.variantUnknown())
             return tr("The drive does not report its variant. Choose it from the context menu "
@@ -184,14 +214,16 @@ QVariant BusListModel::data(const QModelIndex& index, int role) const
         return display(d, index.column());
     case Qt::DecorationRole:
         if (index.column() == Light)
-            return ledIcon(status(d.slave).led);
+            return ledIcon(shownLed(d.slave));
         return {};
     case Qt::ForegroundRole:
         if (garbled)
             return QBrush(kProblem);
         if (index.column() == State) {
+            if (d.state == DeviceInfo::State::Present && status(d.slave).consecutiveFailures > 0)
+                return QBrush(kProblem);
             if (d.state == DeviceInfo::State::Present)
-                return QBrush(status(d.slave).consecutiveFailures > 0 ? kProblem : kGood);
+                return QBrush(isStale(d.slave) ? StaleLook::grey() : kGood);
             if (d.state == DeviceInfo::State::Absent)
                 return QBrush(kProblem);
         }
@@ -207,7 +239,9 @@ QVariant BusListModel::data(const QModelIndex& index, int role) const
     case SlaveRole:
         return d.slave;
     case LedRole:
-        return int(status(d.slave).led);
+        return int(shownLed(d.slave));
+    case StaleRole:
+        return isStale(d.slave);
     case ProblemRole:
         return garbled;
     default:

@@ -6,6 +6,7 @@
 #include <QAbstractTableModel>
 #include <QHash>
 #include <QIcon>
+#include <QTimer>
 #include <QVector>
 
 namespace opentop {
@@ -35,6 +36,7 @@ public:
         SlaveRole = Qt::UserRole + 1, // int, every column
         LedRole,                      // int(DriveStatus::Led), every column
         ProblemRole,                  // bool: garbled replies, likely duplicate machine number
+        StaleRole,                    // bool: the status shown is not live (monitor/Freshness)
     };
 
     explicit BusListModel(QObject* parent = nullptr);
@@ -56,6 +58,9 @@ public:
     int rowOf(int slave) const;
     int slaveAt(int row) const;
     DriveStatus status(int slave) const;
+    // The light shown for `slave` now: grey unless its status is live.
+    DriveStatus::Led shownLed(int slave) const;
+    bool isStale(int slave) const;
     // The hint shown for a garbled address: what to check.
     static QString duplicateHint(int slave);
 
@@ -68,6 +73,7 @@ private:
     QVector<DeviceInfo> m_devices;
     DriveStatusPoller* m_poller = nullptr;
     mutable QHash<int, QIcon> m_icons;
+    QTimer m_age; // lights and ages follow the clock between polls
 };
 
 } // namespace opentop

@@ -4,6 +4,7 @@
 #include "monitor/MonitorHub.h"
 #include "profile/RoleEvaluator.h"
 #include "session/DeviceSession.h"
+#include "widgets/StaleLook.h"
 
 #include <QBrush>
 #include <QColor>
@@ -36,7 +37,20 @@ BusOverviewModel::BusOverviewModel(BusDrives* drives, MonitorHub* hub, QObject* 
         if (!m_refresh.isActive())
             m_refresh.start();
     });
+    // A drive that stops answering, or a lost link, greys its row within a tick.
+    m_age.setInterval(250);
+    connect(&m_age, &QTimer::timeout, &m_refresh, [this] {
+        if (!m_refresh.isActive())
+            m_refresh.start(0);
+    });
+    m_age.start();
+    connect(hub, &MonitorHub::linkChanged, this, [this] { m_refresh.start(0); });
     rebuild();
+}
+
+bool BusOverviewModel::isStale(int slave) const
+{
+    return m_hub->freshness(slave, QDateTime::currentDateTimeUtc()) != Freshness::State::Live;
 }
 
 void BusOverviewModel::rebuild()
@@ -104,10 +118,14 @@ QString BusOverviewModel::cell(int slave, int column) const
         return tr("%1 %2").arg(slave).arg(info.shortModel());
     const std::optional<MonitorSample> s = m_hub->latest(slave);
     if (column == Communication) {
+        const QDateTime now = QDateTime::currentDateTimeUtc();
+        const QString age =
+            StaleLook::ageText(m_hub->freshness(slave, now), m_hub->lastAnswer(slave), now);
+        if (!m_drives->linkUp())
+            return tr("connection lost; %1").arg(age);
         if (m_errors.contains(slave))
-            return tr("no answer: %1").arg(m_errors.value(slave));
-        return s ? s->timestamp.time().toString(QStringLiteral("HH:mm:ss.zzz"))
-                 : tr("not read yet");
+            return tr("no answer: %1; %2").arg(m_errors.value(slave), age);
+        return age;
     }
     if (!s)
         return QString();
@@ -156,7 +174,16 @@ QVariant BusOverviewModel::data(const QModelIndex& index, int role) const
     if (role == Qt::TextAlignmentRole && index.column() >= Speed && index.column() <= Load)
         return int(Qt::AlignRight | Qt::AlignVCenter);
     const std::optional<MonitorSample> s = m_hub->latest(slave);
+    const bool stale = isStale(slave);
+    if (role == StaleRole)
+        return stale;
+    // Not live: every value grey, an alarm no longer red (it may have cleared meanwhile).
+    if (role == Qt::ForegroundRole && stale && index.column() != Drive)
+        return QBrush(StaleLook::grey());
     if (role == Qt::BackgroundRole) {
+        if (stale)
+            return index.column() == Communication ? QVariant(QBrush(QColor(0xff, 0xe0, 0x82)))
+                                                   : QVariant();
         if (index.column() == Alarm && s && s->alarmActive.value_or(false))
             return QBrush(QColor(0xe5, 0x1c, 0x23));
         if (index.column() == Communication && m_errors.contains(slave))

@@ -40,7 +40,11 @@ public:
     QVariant headerData(int section, Qt::Orientation orientation,
                         int role = Qt::DisplayRole) const override;
 
+    // Bool, every cell: the drive's values are not live (monitor/Freshness).
+    static constexpr int StaleRole = Qt::UserRole + 1;
+
     QVector<int> slaves() const { return m_slaves; }
+    bool isStale(int slave) const;
     int rowOf(int slave) const { return m_slaves.indexOf(slave); }
     QString text(int slave, Column column) const;
 
@@ -53,6 +57,7 @@ private:
     QVector<int> m_slaves;
     QHash<int, QString> m_errors; // the last poll failed: why
     QTimer m_refresh;
+    QTimer m_age; // the ages follow the clock, also when no sample comes
 };
 
 } // namespace opentop

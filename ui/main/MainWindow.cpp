@@ -17,6 +17,7 @@
 #include "groups/GroupsView.h"
 #include "monitor/MonitorHub.h"
 #include "monitor/MonitorPage.h"
+#include "pages/DcControllerPage.h"
 #include "profile/ProfileRegistry.h"
 #include "run/ExitCheck.h"
 #include "run/ExitGuard.h"
@@ -28,6 +29,7 @@
 #include "traffic/TrafficDescriber.h"
 #include "traffic/TrafficLogView.h"
 #include "trends/TrendPanel.h"
+#include "widgets/StatusLight.h"
 #include "workspace/DriveWorkspace.h"
 #include "workspace/MultiDriveWriteDialog.h"
 
@@ -37,6 +39,7 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QHeaderView>
+#include <QItemSelectionModel>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -59,6 +62,7 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     , m_central(new QWidget(this))
     , m_splitter(new QSplitter(this))
     , m_connectionLabel(new QLabel(this))
+    , m_linkLight(new StatusLight(this))
     , m_simBanner(new QLabel(this))
 {
     setWindowTitle(tr("OpenTOP"));
@@ -97,6 +101,9 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
         addDockWidget(Qt::BottomDockWidgetArea, d);
         d->hide();
     }
+    m_linkLight->setObjectName(QStringLiteral("linkLight"));
+    m_linkLight->setLed(DriveStatus::Led::Grey, tr("Not connected"));
+    statusBar()->addPermanentWidget(m_linkLight);
     statusBar()->addPermanentWidget(m_connectionLabel);
     buildActions();
     // STOP ALL's keys work everywhere in the program, modal dialogs included; the button itself
@@ -216,6 +223,7 @@ void MainWindow::teardown()
     m_client.reset();   // bounded shutdown of the bus worker
     m_simBanner->hide();
     m_connected = false;
+    m_linkLight->setLed(DriveStatus::Led::Grey, tr("Not connected"));
     // A start confirmed for this bus says nothing about the next one (another machine may use
     // the same machine numbers).
     TestRunPanel::forgetConfirmations();
@@ -284,12 +292,11 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
     });
     const bool simulated = settings.kind == ConnectionSettings::Kind::Simulated;
     m_simBanner->setVisible(simulated);
-    connect(m_banner, &AlarmBanner::showAlarms, this, [this](int slave) {
-        m_panel->view()->selectRow(m_panel->model()->rowOf(slave));
-        for (int i = 0; i < m_workspace->tabs()->count(); ++i) {
-            if (qobject_cast<AlarmsPage*>(m_workspace->tabs()->widget(i)))
-                m_workspace->tabs()->setCurrentIndex(i);
-        }
+    connect(m_banner, &AlarmBanner::showAlarms, this, &MainWindow::showAlarmsOf);
+    // STOP ALL may end in alarms (or clear a run that hid one): the open page reads again.
+    connect(m_stopAll, &StopAllButton::finished, this, [this] {
+        if (AlarmsPage* page = alarmsPage())
+            page->refresh();
     });
     // The placeholder of the first connection; on a reconnection the old panel is gone and
     // the first widget is the workspace, which stays.
@@ -306,8 +313,14 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
     connect(m_client.get(), &ModbusClient::opened, this, &MainWindow::onOpened);
     connect(m_client.get(), &ModbusClient::connectionLost, this, [this](const QString& lost) {
         setConnectionText(tr("Connection lost: %1").arg(lost), true);
-        QMessageBox::warning(this, tr("Connection lost"),
-                             ConnectionDialog::explainOpenError(m_settings, lost));
+        // Every live view greys at once, before the message is read.
+        setLinkUp(false, tr("Connection lost: %1").arg(lost));
+        auto* box = new QMessageBox(QMessageBox::Warning, tr("Connection lost"),
+                                    ConnectionDialog::explainOpenError(m_settings, lost),
+                                    QMessageBox::Ok, this);
+        box->setObjectName(QStringLiteral("connectionLostBox"));
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
     });
     setWindowTitle(simulated
                        ? tr("OpenTOP — SIMULATED BUS (no hardware) — %1").arg(m_client->describe())
@@ -329,9 +342,46 @@ void MainWindow::setConnectionText(const QString& text, bool problem)
                                              : QString());
 }
 
+void MainWindow::setLinkUp(bool up, const QString& why)
+{
+    m_connected = up;
+    if (m_drives)
+        m_drives->setLinkUp(up);
+    m_linkLight->setLed(up ? DriveStatus::Led::Green : DriveStatus::Led::Grey, why);
+}
+
+AlarmsPage* MainWindow::alarmsPage() const
+{
+    for (int i = 0; i < m_workspace->tabs()->count(); ++i) {
+        if (auto* page = qobject_cast<AlarmsPage*>(m_workspace->tabs()->widget(i)))
+            return page;
+    }
+    return nullptr;
+}
+
+void MainWindow::showAlarmsOf(int slave)
+{
+    if (!m_panel || !m_drives || !m_drives->contains(slave))
+        return;
+    const int row = m_panel->model()->rowOf(slave);
+    if (m_panel->selectedSlaves() != QVector<int>{slave}) {
+        // This drive alone (a row added to a selection of several would open the first's).
+        const QModelIndex index = m_panel->model()->index(row, 0);
+        m_panel->view()->selectionModel()->setCurrentIndex(
+            index, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    }
+    // The pages follow the selection at once; make sure they are this drive's.
+    showDrive({slave});
+    if (AlarmsPage* page = alarmsPage()) {
+        m_workspace->tabs()->setCurrentWidget(page);
+        page->refresh();
+    }
+}
+
 void MainWindow::onOpened(bool ok, const QString& error)
 {
-    m_connected = ok;
+    setLinkUp(ok, ok ? tr("Connected: %1").arg(m_client->describe())
+                     : tr("Not connected: %1").arg(error));
     if (!ok) {
         setConnectionText(tr("Not connected: %1").arg(error), true);
         QMessageBox::warning(this, tr("Cannot connect"),
@@ -391,11 +441,17 @@ void MainWindow::showDrive(const QVector<int>& slaves)
     // First: what a drive is doing is what one wants to see on selecting it (as on a TOP-1).
     m_workspace->tabs()->insertTab(0, monitor, tr("Monitor"));
     m_workspace->tabs()->setCurrentIndex(0);
+    // The DC controller's settings page shows what the controller does now, too.
+    for (DcControllerPage* page : m_workspace->findChildren<DcControllerPage*>())
+        page->setMonitorHub(m_hub);
     auto* run = new TestRunPanel(m_drives, info.slave, m_workspace->tabs());
+    run->setMonitorHub(m_hub); // live state; the drive is polled (and trended) while shown
     run->setPollingActive(m_poller->isActive());
     m_workspace->tabs()->addTab(run, tr("Test run"));
     auto* alarms = new AlarmsPage(m_drives->session(info.slave), m_workspace->tabs());
     m_workspace->tabs()->addTab(alarms, tr("Alarms"));
+    // Live: raised, cleared and power-cycled alarms show without a click, as on the banner.
+    alarms->followLive(m_hub, m_poller);
     alarms->refresh();
 }
 

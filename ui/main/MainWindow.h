@@ -31,6 +31,8 @@ class BusOverview;
 class MonitorHub;
 class TrendPanel;
 class TrafficLog;
+class StatusLight;
+class AlarmsPage;
 
 // The main window: the bus on the left (scan, drives, status lights), the selected drive's
 // pages on the right. It owns the connection; all bus work happens on the client's worker
@@ -61,6 +63,12 @@ public:
     ExitGuard* exitGuard() const { return m_exitGuard; }
     DriveStatusPoller* statusPoller() const { return m_poller; }
     QLabel* connectionLabel() const { return m_connectionLabel; }
+    // The link's light in the status bar: green only while connected and the link is up.
+    StatusLight* linkLight() const { return m_linkLight; }
+    // The selected drive's Alarms page (null when none is open).
+    AlarmsPage* alarmsPage() const;
+    // Selects `slave` and brings its Alarms page to the front (the alarm banner's Show).
+    void showAlarmsOf(int slave);
     MonitorHub* monitorHub() const { return m_hub; }
     BusOverview* busOverview() const { return m_overview; }
     TrendPanel* trendPanel() const { return m_trends; }
@@ -86,6 +94,8 @@ private:
     void onOpened(bool ok, const QString& error);
     // The connection state in the status bar: one shortened line, red when something is wrong.
     void setConnectionText(const QString& text, bool problem);
+    // The link is up or down: every live view follows (monitor/Freshness).
+    void setLinkUp(bool up, const QString& why);
     void identifyKnown();
     void showDrive(const QVector<int>& slaves);
     void writeToSelected();
@@ -115,6 +125,7 @@ private:
     QSplitter* m_splitter;
     QByteArray m_splitterState;
     QLabel* m_connectionLabel;
+    StatusLight* m_linkLight;
     QVector<int> m_selected;
     QAction* m_multiWrite = nullptr;
     MonitorHub* m_hub = nullptr;

@@ -4,6 +4,7 @@
 #include "monitor/TerminalLamps.h"
 #include "profile/RoleEvaluator.h"
 #include "session/DeviceParameters.h"
+#include "widgets/StaleLook.h"
 
 #include <QFormLayout>
 #include <QLabel>
@@ -48,6 +49,17 @@ void MonitorDetails::build(const MonitorSample& sample, const QStringList& shown
                 m_form->addRow(v.meta->label + QLatin1Char(':'), row);
                 for (const QString& f : row->functionParameters())
                     row->setFunctionText(f, m_parameters->deviceText(f));
+                row->setStale(m_stale);
+                // What a lamp means may depend on a setting: read it if nobody has yet.
+                QStringList unread;
+                for (const QString& c : row->conditionParameters()) {
+                    showCondition(row, c);
+                    const DeviceParameters::Entry* e = m_parameters->entry(c);
+                    if (e && !e->device.valid)
+                        unread << c;
+                }
+                if (!unread.isEmpty())
+                    m_parameters->refresh(unread);
             }
             continue;
         }
@@ -78,7 +90,27 @@ void MonitorDetails::parameterChanged(const QString& name)
     for (TerminalLamps* lamps : std::as_const(m_lamps)) {
         if (lamps->functionParameters().contains(name))
             lamps->setFunctionText(name, m_parameters->deviceText(name));
+        if (lamps->conditionParameters().contains(name))
+            showCondition(lamps, name);
     }
+}
+
+void MonitorDetails::showCondition(TerminalLamps* lamps, const QString& parameter)
+{
+    const DeviceParameters::Entry* e = m_parameters->entry(parameter);
+    const ParameterMeta* meta = m_parameters->profile().parameter(parameter);
+    const bool known = e && e->device.valid;
+    lamps->setCondition(
+        parameter, known ? std::optional<double>(e->device.raw) : std::nullopt,
+        tr("%1: %2").arg(meta ? meta->label : parameter, m_parameters->deviceText(parameter)));
+}
+
+void MonitorDetails::setStale(bool stale)
+{
+    m_stale = stale;
+    StaleLook::apply(this, stale);
+    for (TerminalLamps* lamps : std::as_const(m_lamps))
+        lamps->setStale(stale);
 }
 
 } // namespace opentop

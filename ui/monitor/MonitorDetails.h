@@ -25,19 +25,24 @@ public:
     // Rows for the values of `sample`, except the parameters in `shownElsewhere`.
     void build(const MonitorSample& sample, const QStringList& shownElsewhere);
     void showSample(const MonitorSample& sample);
-    // A terminal's function was read or written: what its lamp means.
+    // A terminal's function was read or written: what its lamp means; a setting a lamp's
+    // meaning depends on: whether it applies.
     void parameterChanged(const QString& name);
+    // Every value and lamp greyed as no longer live (monitor/Freshness).
+    void setStale(bool stale);
 
     QLabel* value(const QString& parameter) const { return m_values.value(parameter); }
     TerminalLamps* lamps(const QString& parameter) const { return m_lamps.value(parameter); }
 
 private:
     QLabel* addTextRow(const QString& key, const QString& label);
+    void showCondition(TerminalLamps* lamps, const QString& parameter);
 
     DeviceParameters* m_parameters;
     QFormLayout* m_form;
     QHash<QString, QLabel*> m_values; // by parameter, or "parameter.field" for a bit field
     QHash<QString, TerminalLamps*> m_lamps;
+    bool m_stale = false;
 };
 
 } // namespace opentop

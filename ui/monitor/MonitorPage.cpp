@@ -1,5 +1,6 @@
 #include "monitor/MonitorPage.h"
 
+#include "bus/BusDrives.h"
 #include "bus/DriveStatusPoller.h"
 #include "monitor/MonitorDetails.h"
 #include "monitor/MonitorHub.h"
@@ -12,6 +13,7 @@
 #include "session/DeviceSession.h"
 #include "trends/TrendChart.h"
 #include "trends/TrendDefaults.h"
+#include "widgets/StaleLook.h"
 #include "widgets/StatusLight.h"
 
 #include <QComboBox>
@@ -19,6 +21,8 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
+#include <QPointer>
 #include <QPushButton>
 #include <QSplitter>
 #include <QTime>
@@ -84,8 +88,8 @@ MonitorPage::MonitorPage(MonitorHub* hub, DeviceParameters* parameters, QWidget*
             [this] { m_hub->setInterval(m_rate->currentData().toInt()); });
     const auto showPaused = [this](bool paused) {
         m_pause->setText(paused ? tr("Resume polling") : tr("Pause polling"));
-        if (paused)
-            m_status->setText(tr("Polling paused: the values shown are the last ones read."));
+        if (m_look)
+            m_look->update();
     };
     showPaused(hub->isPaused());
     connect(hub, &MonitorHub::pausedChanged, this, showPaused);
@@ -128,8 +132,29 @@ MonitorPage::MonitorPage(MonitorHub* hub, DeviceParameters* parameters, QWidget*
                 if (m_last)
                     showPanel(*m_last);
             });
+    // One rule for every live value (monitor/Freshness): its age shown, grey once not live.
+    // A page removed from the tabs is deleted later, possibly after the hub (a reconnection).
+    const QPointer<MonitorHub> alive(hub);
+    const int slave = m_slave;
+    m_look = new StaleLook(
+        [alive, slave](const QDateTime& now) {
+            return alive ? alive->freshness(slave, now) : Freshness::State::None;
+        },
+        [alive, slave] { return alive ? alive->lastAnswer(slave) : QDateTime(); }, this);
+    for (QWidget* w : {static_cast<QWidget*>(m_current), static_cast<QWidget*>(m_currentDisplay),
+                       static_cast<QWidget*>(m_target), static_cast<QWidget*>(m_load),
+                       static_cast<QWidget*>(m_state)})
+        m_look->addWidget(w);
+    if (m_motorSpeed)
+        m_look->addWidget(m_motorSpeed);
+    connect(m_look, &StaleLook::evaluated, this, [this, alive] {
+        if (alive)
+            showFreshness();
+    });
+    connect(hub, &MonitorHub::linkChanged, m_look, &StaleLook::update);
     if (const auto latest = hub->latest(m_slave))
         showSample(*latest);
+    m_look->update();
 }
 
 // Polls while shown: a drive whose monitor tab is in the background costs no traffic.
@@ -246,10 +271,9 @@ void MonitorPage::showSample(const MonitorSample& s)
                                                   s.activeAlarm->remedy)
                                        : tr("Alarm active (reading which one…)"));
     }
-    const MonitorHub::Statistics stats = m_hub->statistics(m_slave);
-    m_status->setText(tr("Last sample %1 · %2 samples/s")
-                          .arg(s.timestamp.time().toString(QStringLiteral("HH:mm:ss.zzz")))
-                          .arg(stats.rate(), 0, 'f', 1));
+    m_lastError.clear();
+    if (m_look)
+        m_look->update(); // live again before the panel's light is set
     showPanel(s);
     if (m_motorSpeed)
         m_motorSpeed->showSample(s);
@@ -284,13 +308,57 @@ void MonitorPage::showPanel(const MonitorSample& s)
     status.alarmCode = s.activeAlarmCode;
     status.alarm = s.activeAlarm;
     status.led = DriveStatusPoller::ledFor(status);
-    m_panel->light()->setStatus(status);
+    if (!m_look || m_look->state() == Freshness::State::Live)
+        m_panel->light()->setStatus(status);
 }
 
 void MonitorPage::showError(const QString& text)
 {
-    m_status->setText(
-        tr("Cannot read the drive: %1 (the values shown are the last ones read)").arg(text));
+    m_lastError = text;
+    m_look->update();
+}
+
+void MonitorPage::showFreshness()
+{
+    const Freshness::State state = m_look->state();
+    const bool stale = state == Freshness::State::Stale;
+    QString text;
+    if (m_hub->isPaused())
+        text = tr("Polling paused: the values shown are the last ones read (%1).")
+                   .arg(m_look->ageText());
+    else if (!m_hub->drives()->linkUp())
+        text = tr("Connection lost — not live: %1.").arg(m_look->ageText());
+    else if (stale)
+        text = m_lastError.isEmpty() ? tr("Not live: %1.").arg(m_look->ageText())
+                                     : tr("The drive does not answer (%1) — not live: %2.")
+                                           .arg(m_lastError, m_look->ageText());
+    else if (state == Freshness::State::Live)
+        text = tr("Values %1 · %2 samples/s")
+                   .arg(m_look->ageText())
+                   .arg(QLocale().toString(m_hub->statistics(m_slave).rate(), 'f', 1));
+    else
+        text = m_lastError.isEmpty() ? tr("Not read yet.")
+                                     : tr("Cannot read the drive: %1").arg(m_lastError);
+    if (m_status->text() != text)
+        m_status->setText(text);
+    const QString statusStyle = stale ? QStringLiteral("QLabel { color: #b01c1c; }") : QString();
+    if (m_status->styleSheet() != statusStyle) // style sheets are costly to apply
+        m_status->setStyleSheet(statusStyle);
+    m_details->setStale(stale);
+    if (m_panel)
+        m_panel->setStale(stale, tr("No live state: %1").arg(m_look->ageText()));
+    const QString alarmStyle =
+        QStringLiteral("QLabel { background: %1; color: white; "
+                       "padding: 4px; border-radius: 4px; }")
+            .arg(stale ? StaleLook::grey().name() : QStringLiteral("#e51c23"));
+    if (m_alarm->styleSheet() != alarmStyle)
+        m_alarm->setStyleSheet(alarmStyle);
+    m_alarm->setProperty(StaleLook::kProperty, stale);
+}
+
+QString MonitorPage::pollText() const
+{
+    return m_status->text();
 }
 
 QString MonitorPage::valueText(const QString& parameter) const

@@ -18,6 +18,7 @@ class MonitorHub;
 class MotorSpeedBox;
 class PanelMirrorView;
 class TerminalLamps;
+class StaleLook;
 class TrendChart;
 
 // A drive, live: current and target speed in r/min and in the drive's display unit, load,
@@ -44,6 +45,10 @@ public:
     TerminalLamps* lamps(const QString& parameter) const;
     TrendChart* chart() const { return m_chart; }
     int samplesShown() const { return m_samples; }
+    // The line above the values: their age and the sample rate, or why they are not live.
+    QString pollText() const;
+    // Whether the values shown are live (monitor/Freshness), as the page shows them.
+    StaleLook* staleLook() const { return m_look; }
     // DC controller: commutations per motor revolution for the r/min read-out (0: not set).
     void setCommutationsPerRevolution(double count);
 
@@ -55,6 +60,8 @@ private:
     void showSample(const MonitorSample& sample);
     void showPanel(const MonitorSample& sample);
     void showError(const QString& text);
+    // The age of the values, greyed when they are not live.
+    void showFreshness();
     QWidget* buildReadouts();
     QWidget* buildSide();
 
@@ -74,6 +81,8 @@ private:
     PanelMirrorView* m_panel = nullptr;
     MotorSpeedBox* m_motorSpeed = nullptr; // DC controller only
     TrendChart* m_chart;
+    StaleLook* m_look = nullptr;
+    QString m_lastError;
     std::optional<MonitorSample> m_last;
     int m_samples = 0;
     QTimer m_displayChanged; // the speed display settings were read or written again

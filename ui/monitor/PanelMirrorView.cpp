@@ -1,5 +1,6 @@
 #include "monitor/PanelMirrorView.h"
 
+#include "widgets/StaleLook.h"
 #include "widgets/StatusLight.h"
 
 #include <QFontDatabase>
@@ -70,6 +71,18 @@ void PanelMirrorView::setShown(const PanelMirror::Shown& shown, const QString& c
     paintPanel();
 }
 
+void PanelMirrorView::setStale(bool stale, const QString& why)
+{
+    if (stale)
+        m_light->setLed(DriveStatus::Led::Grey, why.isEmpty() ? tr("not live") : why);
+    if (stale == m_stale)
+        return;
+    m_stale = stale;
+    StaleLook::apply(this, stale);
+    m_lit.reset();
+    paintPanel();
+}
+
 QString PanelMirrorView::meaningText() const
 {
     return m_meaning->text();
@@ -78,14 +91,17 @@ QString PanelMirrorView::meaningText() const
 void PanelMirrorView::paintPanel()
 {
     // Segment displays: red digits on black; an alarm flashes.
-    const bool lit = !m_shown.alarm || m_blinkOn;
+    // Stale: the last digits read, grey and steady (a mirror that flashes looks alive).
+    const bool lit = m_stale || !m_shown.alarm || m_blinkOn;
     m_panel->setText(m_shown.text);
     if (m_lit == lit)
         return; // style sheets are costly to apply
     m_lit = lit;
+    const QString color = m_stale ? QStringLiteral("#777777")
+                                  : (lit ? QStringLiteral("#ff3b30") : QStringLiteral("#3a0d0b"));
     m_panel->setStyleSheet(
         QStringLiteral("QLabel#panelDigits { background: #111; color: %1; border-radius: 6px; }")
-            .arg(lit ? QStringLiteral("#ff3b30") : QStringLiteral("#3a0d0b")));
+            .arg(color));
 }
 
 } // namespace opentop

@@ -23,6 +23,9 @@ public:
 
     void setShown(const PanelMirror::Shown& shown, const QString& contentName);
     StatusLight* light() const { return m_light; }
+    // No longer live (monitor/Freshness): the digits grey and steady, the LED grey.
+    void setStale(bool stale, const QString& why = QString());
+    bool isStale() const { return m_stale; }
     QString panelText() const { return m_shown.text; }
     QString meaningText() const;
 
@@ -37,6 +40,7 @@ private:
     QTimer m_blink;
     bool m_blinkOn = true;
     std::optional<bool> m_lit; // the style applied
+    bool m_stale = false;
 };
 
 } // namespace opentop

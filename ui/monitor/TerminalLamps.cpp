@@ -1,6 +1,7 @@
 #include "monitor/TerminalLamps.h"
 
 #include "profile/ParameterMeta.h"
+#include "widgets/StaleLook.h"
 
 #include <QGridLayout>
 #include <QLabel>
@@ -16,6 +17,11 @@ const QString kOff = QStringLiteral(
     "QLabel { background: transparent; border: 2px solid #9e9e9e; border-radius: 9px; }");
 const QString kUnknown = QStringLiteral(
     "QLabel { background: transparent; border: 2px dashed #9e9e9e; border-radius: 9px; }");
+// The last state read, no longer live: an ON lamp is filled grey, never green.
+const QString kOnStale = QStringLiteral(
+    "QLabel { background: #9e9e9e; border: 2px solid #6e6e6e; border-radius: 9px; }");
+const QString kNotApplicable = QStringLiteral(
+    "QLabel { background: transparent; border: 2px dotted #c8c8c8; border-radius: 9px; }");
 
 } // namespace
 
@@ -36,12 +42,14 @@ TerminalLamps::TerminalLamps(const ParameterMeta& meta, QWidget* parent)
         if (f.width != 1 || !isLampField(f.values))
             continue;
         const int column = m_lamps.size();
-        Lamp lamp{f.bit,
-                  f.label.isEmpty() ? f.name : f.label,
-                  new QLabel(this),
-                  new QLabel(this),
-                  f.function,
-                  nullptr};
+        Lamp lamp;
+        lamp.bit = f.bit;
+        lamp.name = f.label.isEmpty() ? f.name : f.label;
+        lamp.lamp = new QLabel(this);
+        lamp.state = new QLabel(this);
+        lamp.function = f.function;
+        lamp.appliesParam = f.appliesParam;
+        lamp.appliesRaw = f.appliesRaw;
         lamp.lamp->setFixedSize(18, 18);
         lamp.lamp->setObjectName(QStringLiteral("lamp_%1").arg(f.name));
         auto* name = new QLabel(lamp.name, this);
@@ -68,18 +76,68 @@ void TerminalLamps::setRaw(std::optional<double> raw)
     if (m_shown && raw == *m_shown)
         return;
     m_shown = raw;
+    paint();
+}
+
+void TerminalLamps::setStale(bool stale)
+{
+    if (stale == m_stale)
+        return;
+    m_stale = stale;
+    StaleLook::apply(this, stale);
+    paint();
+}
+
+QStringList TerminalLamps::conditionParameters() const
+{
+    QStringList names;
+    for (const Lamp& l : m_lamps) {
+        if (!l.appliesParam.isEmpty() && !names.contains(l.appliesParam))
+            names << l.appliesParam;
+    }
+    return names;
+}
+
+void TerminalLamps::setCondition(const QString& parameter, std::optional<double> raw,
+                                 const QString& text)
+{
+    bool changed = false;
     for (Lamp& l : m_lamps) {
-        if (!raw) {
+        if (l.appliesParam != parameter)
+            continue;
+        // Not read yet: the drive's own bit is shown.
+        const bool applies = !raw || *raw == l.appliesRaw;
+        changed = changed || applies != l.applies || text != l.conditionText;
+        l.applies = applies;
+        l.conditionText = text;
+    }
+    if (changed)
+        paint();
+}
+
+void TerminalLamps::paint()
+{
+    const bool known = m_shown && m_shown->has_value();
+    const quint64 bits = known ? quint64(m_shown->value()) : 0;
+    for (Lamp& l : m_lamps) {
+        if (!l.applies) {
+            l.lamp->setStyleSheet(kNotApplicable);
+            l.state->setText(tr("n/a"));
+            l.lamp->setToolTip(tr("%1: not applicable (%2)").arg(l.name, l.conditionText));
+        } else if (!known) {
             l.lamp->setStyleSheet(kUnknown);
             l.state->setText(tr("?"));
             l.lamp->setToolTip(tr("%1: not read").arg(l.name));
-            continue;
+        } else {
+            const bool on = (bits >> l.bit) & 1U;
+            l.lamp->setStyleSheet(on ? (m_stale ? kOnStale : kOn) : kOff);
+            l.state->setText(on ? tr("ON") : tr("OFF"));
+            l.lamp->setToolTip(on ? tr("%1 is ON").arg(l.name) : tr("%1 is OFF").arg(l.name));
+            if (m_stale)
+                l.lamp->setToolTip(tr("%1 (last state read, not live)").arg(l.lamp->toolTip()));
         }
-        const bool on = (quint64(*raw) >> l.bit) & 1U;
-        l.lamp->setStyleSheet(on ? kOn : kOff);
-        l.state->setText(on ? tr("ON") : tr("OFF"));
-        l.lamp->setToolTip(on ? tr("%1 is ON").arg(l.name) : tr("%1 is OFF").arg(l.name));
         l.lamp->setAccessibleName(l.lamp->toolTip());
+        l.lamp->setProperty("stale", m_stale);
     }
 }
 

@@ -21,6 +21,14 @@ public:
     // Fields of `meta` shown as lamps: single bits whose values are OFF/ON (or unnamed).
     static bool isLampField(const QStringList& values);
     void setRaw(std::optional<double> raw); // nothing: not read (all lamps unknown)
+    // Stale (monitor/Freshness): the last state read, greyed; no lamp is lit green.
+    void setStale(bool stale);
+    bool isStale() const { return m_stale; }
+    // Settings a lamp's meaning depends on (a field's "appliesWhen"), and their values as the
+    // drive holds them: a lamp whose condition does not hold shows "n/a" (e.g. Hold while "No
+    // holding force" is set).
+    QStringList conditionParameters() const;
+    void setCondition(const QString& parameter, std::optional<double> raw, const QString& text);
     // "X0 ON, X1 OFF, ..." as shown.
     QString stateText() const;
     // Settings that assign the terminals' functions (a field's "function"), in lamp order.
@@ -39,8 +47,14 @@ private:
         QLabel* state = nullptr;
         QString function;
         QLabel* functionLabel = nullptr;
+        QString appliesParam;
+        double appliesRaw = 0;
+        bool applies = true;
+        QString conditionText; // the setting as the drive holds it, when it does not apply
     };
+    void paint();
     QVector<Lamp> m_lamps;
+    bool m_stale = false;
     std::optional<std::optional<double>> m_shown; // what the lamps show (nothing: not set yet)
 };
 

@@ -1,6 +1,7 @@
 #include "pages/DcControllerPage.h"
 
 #include "profile/ValueCodec.h"
+#include "run/RunLiveState.h"
 #include "session/DeviceSession.h"
 #include "workspace/ParameterField.h"
 #include "workspace/PendingValues.h"
@@ -27,6 +28,7 @@ const QString kPid = QStringLiteral("store.pid");
 const QString kPreset = QStringLiteral("store.preset");
 const QString kPresetMode = QStringLiteral("preset.speed_mode");
 const QString kForward = QStringLiteral("preset.forward_speed");
+const QString kCommLoss = QStringLiteral("config.comm_loss_time");
 
 QString withoutMnemonic(QString text)
 {
@@ -91,8 +93,14 @@ DcControllerPage::DcControllerPage(DeviceParameters* parameters, QWidget* parent
              storeNote(kConfig));
     addGroup(grid, 2, 0, tr("Protective stops (0 = off)"),
              {{QStringLiteral("config.stall_time"), tr("S&tall stop time:")},
-              {QStringLiteral("config.comm_loss_time"), tr("Communication loss stop time:")}},
+              {kCommLoss, tr("Communication loss stop time:")}},
              storeNote(kConfig));
+    // Off, a lost connection leaves the motor running at its last speed command.
+    m_commLossNote = new QLabel;
+    m_commLossNote->setObjectName(QStringLiteral("commLossNote"));
+    m_commLossNote->setWordWrap(true);
+    m_commLossNote->setStyleSheet(QStringLiteral("color: #a05000;"));
+    m_commLossNote->hide();
     addGroup(grid, 3, 0, tr("Serial port (reconnect after a change)"),
              {{QStringLiteral("config.baud"), tr("Baud rate:")},
               {QStringLiteral("config.parity"), tr("Parity and stop bits:")},
@@ -131,6 +139,7 @@ DcControllerPage::DcControllerPage(DeviceParameters* parameters, QWidget* parent
     auto* layout = new QVBoxLayout(contentArea());
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_banner);
+    layout->addWidget(m_commLossNote);
     layout->addWidget(scroll, 1);
 
     // Writes from anywhere (this page, a parameter table) leave settings unstored.
@@ -141,6 +150,33 @@ DcControllerPage::DcControllerPage(DeviceParameters* parameters, QWidget* parent
     connect(parameters, &DeviceParameters::entryChanged, this, &DcControllerPage::trackWrite);
     updatePresetRange();
     updateBanner();
+    updateCommLossNote();
+}
+
+void DcControllerPage::setMonitorHub(MonitorHub* hub)
+{
+    if (m_live || !hub)
+        return;
+    m_live = new RunLiveState(hub, parameters()->session()->slave(), contentArea());
+    static_cast<QVBoxLayout*>(contentArea()->layout())->insertWidget(0, m_live);
+}
+
+QString DcControllerPage::commLossNote() const
+{
+    return m_commLossNote->isHidden() ? QString() : m_commLossNote->text();
+}
+
+void DcControllerPage::updateCommLossNote()
+{
+    const DeviceParameters::Entry* e = parameters()->entry(kCommLoss);
+    const bool off = e && e->device.valid && e->device.raw == 0;
+    m_commLossNote->setText(
+        off ? tr("The communication loss stop is off (%1 = 0 s): if the connection is lost while "
+                 "the motor runs, the controller keeps it running at the last speed command. Set "
+                 "a time so that it brakes when the bus goes quiet.")
+                  .arg(e->meta->label)
+            : QString());
+    m_commLossNote->setVisible(off);
 }
 
 QStringList DcControllerPage::parameterNames() const
@@ -189,6 +225,8 @@ void DcControllerPage::parameterChanged(const QString& name)
 {
     if (ParameterField* f = m_fields.value(name))
         f->sync();
+    if (name == kCommLoss)
+        updateCommLossNote();
     if (name != kPresetMode)
         return;
     // The speeds' unit and range follow the preset speed mode as it will be written.

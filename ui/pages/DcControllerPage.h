@@ -13,7 +13,9 @@ class QPushButton;
 
 namespace opentop {
 
+class MonitorHub;
 class ParameterField;
+class RunLiveState;
 
 // The DC controller's settings (manual 1.3.4–1.3.8): speed mode, currents, limits, stop times,
 // speed loop PID, preset speed and AI1/AI2 as digital ports. Written settings act at once but
@@ -36,6 +38,12 @@ public:
     // Store commands owed for settings written since ("store.config", "store.pid", ...).
     QStringList unstored() const { return m_unstored; }
     bool bannerShown() const;
+    // The note shown while the controller's communication loss stop is off; empty otherwise.
+    QString commLossNote() const;
+    // Shows what the controller does now (output duty, speed, running or stopped) from `hub`,
+    // watching the drive while the page is visible.
+    void setMonitorHub(MonitorHub* hub);
+    RunLiveState* liveState() const { return m_live; }
     // Asks, then writes `command` = 1 (store.config, store.pid or store.preset).
     void store(const QString& command);
     // Asks, then writes store.config = 0 and reads the configuration again.
@@ -57,6 +65,7 @@ private:
                   const QVector<Row>& rows, const QString& note);
     void trackWrite(const QString& name);
     void updateBanner();
+    void updateCommLossNote();
     void updatePresetRange();
     void sendStore(const QString& command, const QString& value, const QString& doneText);
     QString storedWhat(const QString& command) const;
@@ -71,6 +80,8 @@ private:
     QHash<QString, QPushButton*> m_storeButtons;
     QPushButton* m_reload;
     QLabel* m_presetRange = nullptr;
+    QLabel* m_commLossNote = nullptr;
+    RunLiveState* m_live = nullptr;
     Confirm m_confirm;
     bool m_storing = false;
 };

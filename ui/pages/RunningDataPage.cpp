@@ -2,9 +2,11 @@
 
 #include "groups/GroupWriteCheck.h"
 #include "profile/ValueCodec.h"
+#include "run/RunningData.h"
 #include "session/DeviceParameters.h"
 #include "session/DeviceSession.h"
 #include "workspace/ParameterField.h"
+#include "workspace/PendingValues.h"
 
 #include <QGridLayout>
 #include <QLabel>
@@ -116,6 +118,13 @@ RunningDataPage::RunningDataPage(DeviceParameters* parameters, QWidget* parent)
     grid->setColumnStretch(3, 1);
     grid->setColumnStretch(4, 1);
     layout->addLayout(grid);
+    // The manual's advice on deceleration from high speed, for the values as they will be.
+    m_decelWarning = new QLabel(contentArea());
+    m_decelWarning->setObjectName(QStringLiteral("decelerationWarning"));
+    m_decelWarning->setWordWrap(true);
+    m_decelWarning->setStyleSheet(QStringLiteral("color: #a05000;"));
+    m_decelWarning->hide();
+    layout->addWidget(m_decelWarning);
 
     if (m_fields.contains(nameOf(1, "speed"))) {
         auto* note = new QLabel(tr("SPno1 runs at the speed of the external speed-setting VR "
@@ -127,6 +136,7 @@ RunningDataPage::RunningDataPage(DeviceParameters* parameters, QWidget* parent)
     }
     layout->addStretch(1);
     updateRange();
+    updateDecelerationWarning();
 }
 
 QString RunningDataPage::nameOf(int spno, const char* column)
@@ -160,6 +170,20 @@ void RunningDataPage::parameterChanged(const QString& name)
     if (ParameterField* f = m_fields.value(name))
         f->sync();
     updateRange(); // the variant may have become known since
+    updateDecelerationWarning();
+}
+
+QString RunningDataPage::decelerationWarning() const
+{
+    return m_decelWarning->isHidden() ? QString() : m_decelWarning->text();
+}
+
+void RunningDataPage::updateDecelerationWarning()
+{
+    const QStringList warnings =
+        RunningData::warnings(parameters()->profile(), PendingValues::context(parameters()));
+    m_decelWarning->setText(warnings.join(QLatin1Char('\n')));
+    m_decelWarning->setVisible(!warnings.isEmpty());
 }
 
 void RunningDataPage::showEvent(QShowEvent* event)

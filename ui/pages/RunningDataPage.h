@@ -28,6 +28,8 @@ public:
     ParameterField* field(const QString& name) const { return m_fields.value(name); }
     QPushButton* initializeButton(int spno) const;
     QString rangeText() const;
+    // The manual's deceleration advice for the values as they will be written; empty if none.
+    QString decelerationWarning() const;
 
     // Asks for confirmation (naming what is reset to which defaults), sends spnoN.init as an
     // explicit command and reads the row again. Emits operationFinished when done.
@@ -38,6 +40,8 @@ protected:
     void showEvent(QShowEvent* event) override;
 
 private:
+    void updateDecelerationWarning();
+
     static QString nameOf(int spno, const char* column);
     QStringList rowSettings(int spno) const;
     QString resetSummary(int spno) const;
@@ -49,6 +53,7 @@ private:
     QHash<QString, ParameterField*> m_fields;
     QVector<QPushButton*> m_init; // index spno - 1; null when the profile has no init command
     QLabel* m_range;
+    QLabel* m_decelWarning = nullptr;
     bool m_initializing = false;
 };
 

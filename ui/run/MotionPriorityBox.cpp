@@ -1,6 +1,7 @@
 #include "run/MotionPriorityBox.h"
 
 #include "profile/RoleEvaluator.h"
+#include "run/ExitActions.h"
 #include "session/DeviceSession.h"
 #include "widgets/ConfirmBox.h"
 
@@ -17,8 +18,9 @@ const QString kPriority = QStringLiteral("motionPriority");
 
 } // namespace
 
-MotionPriorityBox::MotionPriorityBox(DeviceSession* session, QWidget* parent)
+MotionPriorityBox::MotionPriorityBox(BusDrives* drives, DeviceSession* session, QWidget* parent)
     : QFrame(parent)
+    , m_drives(drives)
     , m_session(session)
 {
     setFrameShape(QFrame::StyledPanel);
@@ -75,7 +77,7 @@ void MotionPriorityBox::askToSwitch()
                        "from the bus (%2 = \"%3\"). Its input terminals then no longer start or "
                        "stop the motor.")
                         .arg(m_session->slave())
-                        .arg(priority->name, wantedLabel()),
+                        .arg(priority->label, wantedLabel()),
                     tr("Switch"), [this] { sendSwitch(); });
 }
 
@@ -85,7 +87,7 @@ void MotionPriorityBox::sendSwitch()
     const qint64 wanted = m_session->profile().role(kPriority)->value.value_or(0);
     DeviceSession::WriteOptions explicitly;
     explicitly.explicitCommand = true;
-    emit switching();
+    emit switching(tr("Switching to communication priority…"));
     QPointer<MotionPriorityBox> self(this);
     m_session->write(
         priority->name, RoleEvaluator::writeText(*priority, wanted, m_session->context()),
@@ -96,6 +98,34 @@ void MotionPriorityBox::sendSwitch()
                 o.ok, o.ok ? tr("Machine number %1 takes motion commands over the bus now.")
                                  .arg(self->m_session->slave())
                            : tr("Cannot switch the control priority: %1").arg(o.error));
+        });
+}
+
+void MotionPriorityBox::askToReturn(QWidget* parent)
+{
+    const int slave = m_session->slave();
+    QPointer<MotionPriorityBox> self(this);
+    ConfirmBox::ask(
+        parent, tr("Return to I/O priority"),
+        tr("Machine number %1 will take run, stop, direction and speed selection from its input "
+           "terminals again, and refuse motion commands over the bus. If an input says run, the "
+           "motor runs.")
+            .arg(slave),
+        tr("Return to I/O priority"), [self, slave] {
+            if (!self)
+                return;
+            emit self->switching(tr("Returning to I/O priority…"));
+            auto* actions = new ExitActions(self->m_drives, self);
+            actions->returnToIoPriority({slave}, [self, actions, slave](const QStringList& failed) {
+                actions->deleteLater();
+                if (!self)
+                    return;
+                emit self->switched(
+                    failed.isEmpty(),
+                    failed.isEmpty()
+                        ? tr("Machine number %1 follows its input terminals again.").arg(slave)
+                        : failed.join(QLatin1Char('\n')));
+            });
         });
 }
 

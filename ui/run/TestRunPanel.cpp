@@ -5,13 +5,18 @@
 #include "profile/RoleEvaluator.h"
 #include "profile/ValueCodec.h"
 #include "run/MotionPriorityBox.h"
+#include "run/RunLiveState.h"
+#include "run/SpnoSelector.h"
+#include "run/StartPreview.h"
 #include "session/DeviceSession.h"
 #include "widgets/ConfirmBox.h"
 
 #include <QComboBox>
+#include <QDateTime>
 #include <QGridLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QPointer>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -21,6 +26,7 @@ namespace opentop {
 namespace {
 
 const QString kPriority = QStringLiteral("motionPriority");
+const QString kIoPriority = QStringLiteral("ioPriority");
 const QString kSpeedCommand = QStringLiteral("speedCommand");
 const QString kCommLoss = QStringLiteral("config.comm_loss_time");
 constexpr int kSettleMs = 200; // drives update their status within a few cycles of a command
@@ -50,15 +56,20 @@ TestRunPanel::TestRunPanel(BusDrives* drives, int slave, QWidget* parent)
         return;
     }
     const Profile& profile = m_session->profile();
+    m_preview = new StartPreview(drives, this);
     m_isDc =
         RoleEvaluator::parameter(profile, kSpeedCommand) && !profile.role(QStringLiteral("start"));
 
-    m_priorityBox = new MotionPriorityBox(m_session, this);
+    m_priorityBox = new MotionPriorityBox(drives, m_session, this);
     m_priorityBox->hide();
-    connect(m_priorityBox, &MotionPriorityBox::switching, this,
-            [this] { setMessage(tr("Switching to communication priority…"), false); });
+    connect(m_priorityBox, &MotionPriorityBox::switching, this, [this](const QString& text) {
+        m_busy = true;
+        updateEnabled();
+        setMessage(text, false);
+    });
     connect(m_priorityBox, &MotionPriorityBox::switched, this,
             [this](bool ok, const QString& message) {
+                m_busy = false;
                 setMessage(message, !ok);
                 refresh();
             });
@@ -116,10 +127,7 @@ void TestRunPanel::buildDbu()
     const ParameterMeta* select = RoleEvaluator::parameter(profile, QStringLiteral("select"));
     if (!select)
         return;
-    m_spno = new QComboBox(m_commands);
-    m_spno->setObjectName(QStringLiteral("spno"));
-    for (const EnumOption& o : select->specFor(m_session->context()).options)
-        m_spno->addItem(o.label, int(o.value + 1)); // running data N is code N-1
+    m_spno = new SpnoSelector(m_session, m_commands);
     grid->addWidget(m_spno, 3, 0);
     m_whileIdle << m_spno;
     grid->addWidget(addButton(tr("Se&lect running data"), QStringLiteral("select"),
@@ -131,6 +139,15 @@ void TestRunPanel::buildDbu()
                               }),
                     3, 1);
     m_whileIdle << grid->itemAtPosition(3, 1)->widget();
+    // Back to the machine's own controls, as a TOP-1 offers.
+    if (const ProfileRole* io = profile.role(kIoPriority); io && io->value) {
+        m_ioButton = addButton(tr("Return to &I/O priority"), QStringLiteral("ioPriority"),
+                               [this] { m_priorityBox->askToReturn(this); });
+        m_ioButton->setToolTip(tr("Give run, stop, direction and speed selection back to the "
+                                  "drive's input terminals"));
+        grid->addWidget(m_ioButton, 4, 0, 1, 2);
+        m_whileIdle << m_ioButton;
+    }
 }
 
 void TestRunPanel::buildDc()
@@ -189,6 +206,8 @@ void TestRunPanel::refresh()
         names << speed->controllingParameters();
     if (const ParameterMeta* loss = profile.parameter(kCommLoss); loss && loss->isReadable())
         names << loss->name;
+    if (m_spno)
+        m_spno->refreshLabels();
     if (names.isEmpty()) {
         m_enabled = true;
         updateEnabled();
@@ -229,21 +248,42 @@ void TestRunPanel::refresh()
 
 void TestRunPanel::run(const RunControl::Command& command, bool starts)
 {
-    if (!starts || s_confirmed.contains(m_slave)) {
+    if (!starts) {
         send(command);
         return;
     }
+    askToStart(command);
+}
+
+void TestRunPanel::askToStart(const RunControl::Command& command)
+{
+    // What will run, and which other drives the start reaches, read from the drives now.
+    m_busy = true;
+    updateEnabled();
+    setMessage(tr("Reading what the start will run…"), false);
     const int slave = m_slave;
-    ConfirmBox::ask(
-        this, tr("Start the motor"),
-        tr("This starts the motor of machine number %1. Make sure that nobody is near the "
-           "machine and that it may move. STOP ALL stops every drive at any time.\n\nYou are "
-           "asked once per drive while the program runs.")
-            .arg(slave),
-        tr("Start the motor"), [this, command, slave] {
-            s_confirmed.insert(slave);
-            send(command);
-        });
+    QPointer<TestRunPanel> self(this);
+    m_preview->read(slave, m_commandedCcw, [self, command, slave](const StartPreview::Result& r) {
+        if (!self)
+            return;
+        self->m_busy = false;
+        self->updateEnabled();
+        self->setMessage(QString(), false);
+        // Asked once per drive, and every time the start also reaches other drives.
+        if (s_confirmed.contains(slave) && r.alsoReaches.isEmpty()) {
+            self->send(command);
+            return;
+        }
+        const QString text = r.question(self->m_isDc ? command.speed : QString());
+        self->m_lastQuestion = text;
+        ConfirmBox::ask(self, tr("Start the motor"), text, tr("Start the motor"),
+                        [self, command, slave] {
+                            if (!self)
+                                return;
+                            s_confirmed.insert(slave);
+                            self->send(command);
+                        });
+    });
 }
 
 void TestRunPanel::send(const RunControl::Command& command)
@@ -252,10 +292,15 @@ void TestRunPanel::send(const RunControl::Command& command)
     updateEnabled();
     setMessage(tr("Sending %1…").arg(RunControl::actionName(command.action)), false);
     QPointer<TestRunPanel> self(this);
-    m_control.execute(m_session, command, [self](const RunControl::Outcome& o) {
+    m_control.execute(m_session, command, [self, command](const RunControl::Outcome& o) {
         if (!self)
             return;
         self->showOutcome(o);
+        if (o.sent &&
+            (command.action == RunControl::Action::Cw || command.action == RunControl::Action::Ccw))
+            self->m_commandedCcw = command.action == RunControl::Action::Ccw;
+        if (o.sent && command.action == RunControl::Action::Select)
+            self->m_commandedCcw.reset(); // the selected SPno's own direction counts again
         if (o.failure == RunControl::Failure::Priority)
             self->refresh(); // the drive was switched to I/O priority meanwhile
         if (!o.sent) {
@@ -294,7 +339,10 @@ void TestRunPanel::showOutcome(const RunControl::Outcome& o)
 
 void TestRunPanel::showState(const RunControl::State& state)
 {
-    QStringList lines;
+    // A snapshot, and says so: what the drive does now is in the live box.
+    QStringList lines{
+        tr("Read back after the command at %1:")
+            .arg(QLocale().toString(QTime::currentTime(), QStringLiteral("HH:mm:ss")))};
     if (state.running)
         lines << (*state.running ? tr("The motor is running.") : tr("The motor is stopped."));
     for (const auto& item : state.items)
@@ -326,6 +374,14 @@ QString TestRunPanel::pollingWarning() const
     return m_warning && !m_warning->isHidden() ? m_warning->text() : QString();
 }
 
+void TestRunPanel::setMonitorHub(MonitorHub* hub)
+{
+    if (!m_session || m_live || !hub)
+        return;
+    m_live = new RunLiveState(hub, m_slave, this);
+    static_cast<QVBoxLayout*>(layout())->insertWidget(1, m_live);
+}
+
 void TestRunPanel::setPollingActive(bool active)
 {
     m_pollingActive = active;
@@ -337,6 +393,8 @@ void TestRunPanel::updateEnabled()
     if (!m_commands)
         return;
     m_commands->setEnabled(m_enabled);
+    if (m_ioButton)
+        m_ioButton->setVisible(m_enabled); // only a drive in communication priority goes back
     for (QWidget* w : std::as_const(m_whileIdle))
         w->setEnabled(!m_busy);
     updateSpeed();
@@ -377,7 +435,8 @@ void TestRunPanel::updateWarning()
     m_warning->setText(
         show ? tr("Polling is paused: the controller brakes the motor %1 s after the last frame "
                   "it receives (%2). Resume polling to keep the motor running.")
-                   .arg(ValueCodec::formatNumber(m_commLossSeconds, 1), kCommLoss)
+                   .arg(ValueCodec::formatNumber(m_commLossSeconds, 1),
+                        m_session->profile().parameter(kCommLoss)->label)
              : QString());
     m_warning->setVisible(show);
 }

@@ -5,6 +5,7 @@
 #include <QSet>
 #include <QWidget>
 #include <functional>
+#include <optional>
 
 class QComboBox;
 class QLabel;
@@ -15,14 +16,22 @@ namespace opentop {
 
 class BusDrives;
 class DeviceSession;
+class MonitorHub;
 class MotionPriorityBox;
+class RunLiveState;
+class SpnoSelector;
+class StartPreview;
 
 // Test run of one drive by its roles (RunControl): start, stop, direction, running data
 // selection, hold and free for a DBU; a speed set point in the current speed mode's unit,
 // brake (speed 0) and natural stop (coast) for the DC controller. The commands are enabled only
 // while the drive takes motion commands over the bus ("motionPriority"); otherwise the panel
-// explains how to switch and offers to do it after a confirmation. Starting a motor asks once
-// per drive and program run. After each command the drive's state is read back and shown.
+// explains how to switch and offers to do it after a confirmation, and once switched offers the
+// way back to I/O priority. Starting a motor asks once per drive and program run, and every
+// time the start also reaches other drives (communication group); the question says which
+// running data, speed and direction will run (StartPreview). With a MonitorHub the page shows
+// what the drive does now (RunLiveState, watched while visible); after each command the state
+// read back is shown with its time.
 class TestRunPanel : public QWidget
 {
     Q_OBJECT
@@ -39,6 +48,12 @@ public:
     QString pollingWarning() const; // the communication-loss warning shown, or empty
     // Polling paused: a DC controller with a communication loss stop time brakes the motor.
     void setPollingActive(bool active);
+    // Shows the drive's live state from `hub` (and watches the drive while visible).
+    void setMonitorHub(MonitorHub* hub);
+    RunLiveState* liveState() const { return m_live; }
+    SpnoSelector* spnoSelector() const { return m_spno; }
+    // The text of the last start question (for the log and tests).
+    QString lastStartQuestion() const { return m_lastQuestion; }
 
     // Drives whose start the user has confirmed in this program run.
     static bool startConfirmed(int slave) { return s_confirmed.contains(slave); }
@@ -66,6 +81,7 @@ private:
     void updateSpeed();
     void updateWarning();
     void setMessage(const QString& text, bool error);
+    void askToStart(const RunControl::Command& command);
 
     BusDrives* m_drives;
     int m_slave;
@@ -81,7 +97,12 @@ private:
     MotionPriorityBox* m_priorityBox = nullptr;
     QWidget* m_commands = nullptr;
     QList<QWidget*> m_whileIdle; // disabled while a command is under way (stops never are)
-    QComboBox* m_spno = nullptr;
+    SpnoSelector* m_spno = nullptr;
+    RunLiveState* m_live = nullptr;
+    StartPreview* m_preview = nullptr;
+    QPushButton* m_ioButton = nullptr;
+    std::optional<bool> m_commandedCcw; // a CW/CCW command sent since the last selection
+    QString m_lastQuestion;
     QLineEdit* m_speed = nullptr;
     QLabel* m_speedUnit = nullptr;
     QLabel* m_speedError = nullptr;

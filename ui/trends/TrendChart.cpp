@@ -36,7 +36,7 @@ TrendChart::TrendChart(MonitorHub* hub, QWidget* parent)
     , m_axes(m_chart)
     , m_lines(hub, m_chart, m_timeAxis, &m_axes)
 {
-    // Line samples in the legend: the dash pattern tells a drive's quantities apart.
+    // Line samples in the legend: colour and dash pattern as drawn.
     m_chart->legend()->setMarkerShape(QLegend::MarkerShapeFromSeries);
     m_chart->setMargins(QMargins(4, 4, 4, 4));
     m_timeAxis->setFormat(QStringLiteral("hh:mm:ss"));
@@ -63,7 +63,8 @@ TrendChart::TrendChart(MonitorHub* hub, QWidget* parent)
     connect(hub->drives(), &BusDrives::driveChanged, this, [this](int slave) {
         for (const TrendLines::Line& line : m_lines.lines()) {
             if (line.source.slave == slave)
-                line.series->setName(seriesName(line.source));
+                for (QLineSeries* series : line.allSeries())
+                    series->setName(seriesName(line.source));
         }
     });
     m_timer.setInterval(kRedrawMs);

@@ -1,6 +1,7 @@
 #include "trends/TrendLines.h"
 
 #include "bus/BusDrives.h"
+#include "monitor/Freshness.h"
 #include "session/DeviceSession.h"
 #include "trends/TrendAxes.h"
 #include "trends/TrendPoints.h"
@@ -8,6 +9,7 @@
 #include <QChart>
 #include <QDateTimeAxis>
 #include <QLegend>
+#include <QLegendMarker>
 #include <QLineSeries>
 #include <QValueAxis>
 #include <limits>
@@ -16,8 +18,9 @@ namespace opentop {
 
 namespace {
 
-// One colour per drive, one dash pattern per quantity of a drive.
-QPen penFor(int driveIndex, int quantityIndex)
+// One colour per line, so that a drive's current speed, target and load differ at a glance;
+// the dash pattern tells the drives apart as well.
+QPen penFor(int lineIndex, int driveIndex)
 {
     static const QColor colours[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28),
                                      QColor(0x2c, 0xa0, 0x2c), QColor(0xff, 0x7f, 0x0e),
@@ -25,8 +28,8 @@ QPen penFor(int driveIndex, int quantityIndex)
                                      QColor(0xe3, 0x77, 0xc2), QColor(0x17, 0xbe, 0xcf)};
     static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine,
                                           Qt::DashDotLine};
-    QPen pen(colours[driveIndex % 8], 2);
-    pen.setStyle(styles[quantityIndex % 4]);
+    QPen pen(colours[lineIndex % 8], 2);
+    pen.setStyle(styles[driveIndex % 4]);
     return pen;
 }
 
@@ -102,18 +105,14 @@ void TrendLines::rebuild(const NameOf& nameOf)
     // Names elided in a row under the chart could be misread: a column beside it when many.
     m_chart->legend()->setAlignment(m_lines.size() > 3 ? Qt::AlignRight : Qt::AlignBottom);
     QVector<int> slaves;
+    int index = 0;
     for (Line& line : m_lines) {
         if (!slaves.contains(line.source.slave))
             slaves << line.source.slave;
-        int quantity = 0;
-        for (const Line& other : m_lines) {
-            if (&other == &line)
-                break;
-            quantity += other.source.slave == line.source.slave ? 1 : 0;
-        }
+        line.extra.clear(); // removeAllSeries() deleted them
         line.series = new QLineSeries(m_chart);
         line.series->setName(nameOf(line.source));
-        line.series->setPen(penFor(int(slaves.indexOf(line.source.slave)), quantity));
+        line.series->setPen(penFor(index++, int(slaves.indexOf(line.source.slave))));
         m_chart->addSeries(line.series);
         line.series->attachAxis(m_timeAxis);
         line.series->attachAxis(m_axes->axis(m_axes->sideOf(line.unit)));
@@ -139,7 +138,37 @@ void TrendLines::drawLine(Line& line, qint64 fromMs, qint64 toMs, int buckets)
     line.drawnTo = toMs;
     line.drawnCount = count;
     line.drawnLast = last;
-    line.series->replace(s ? TrendPoints::visible(*s, fromMs, toMs, buckets) : QList<QPointF>());
+    // A gap in the history (polling stopped, no answer) is longer than a value stays live.
+    const qint64 gapMs = Freshness::staleAfterMs(m_hub ? m_hub->interval() : 200);
+    QVector<QList<QPointF>> parts =
+        s ? TrendPoints::segments(*s, fromMs, toMs, buckets, gapMs) : QVector<QList<QPointF>>();
+    if (parts.isEmpty())
+        parts << QList<QPointF>();
+    line.series->replace(parts.first());
+    // Every further segment in a series of its own with the same pen and no legend entry.
+    while (line.extra.size() < parts.size() - 1) {
+        auto* segment = new QLineSeries(m_chart);
+        segment->setName(line.series->name());
+        segment->setPen(line.series->pen());
+        m_chart->addSeries(segment);
+        for (QAbstractAxis* axis : line.series->attachedAxes())
+            segment->attachAxis(axis);
+        for (QLegendMarker* marker : m_chart->legend()->markers(segment))
+            marker->setVisible(false);
+        line.extra << segment;
+    }
+    for (int i = 0; i < line.extra.size(); ++i)
+        line.extra[i]->replace(i + 1 < parts.size() ? parts[i + 1] : QList<QPointF>());
+}
+
+QList<QLineSeries*> TrendLines::Line::allSeries() const
+{
+    QList<QLineSeries*> list;
+    if (series)
+        list << series;
+    for (QLineSeries* s : extra)
+        list << s;
+    return list;
 }
 
 void TrendLines::fitValueAxes(qint64 fromMs, qint64 toMs)
@@ -150,10 +179,12 @@ void TrendLines::fitValueAxes(qint64 fromMs, qint64 toMs)
         for (const Line& line : m_lines) {
             if (m_axes->sideOf(line.unit) != side)
                 continue;
-            for (const QPointF& p : line.series->points()) {
-                if (p.x() >= double(fromMs) && p.x() <= double(toMs)) {
-                    lo = std::min(lo, p.y());
-                    hi = std::max(hi, p.y());
+            for (const QLineSeries* series : line.allSeries()) {
+                for (const QPointF& p : series->points()) {
+                    if (p.x() >= double(fromMs) && p.x() <= double(toMs)) {
+                        lo = std::min(lo, p.y());
+                        hi = std::max(hi, p.y());
+                    }
                 }
             }
         }

@@ -3,6 +3,7 @@
 #include "monitor/MonitorHub.h"
 #include "monitor/TrendHistory.h"
 
+#include <QList>
 #include <QPointer>
 #include <QString>
 #include <QVector>
@@ -30,7 +31,8 @@ inline bool operator==(const TrendSource& a, const TrendSource& b)
 
 // The lines of a trend chart: each source's label and unit (from the hub's history, or from
 // the profile before the first sample), its series on the chart with a pen per drive and
-// quantity and the value axis of its unit, and the visible points drawn into it. Remembers
+// quantity and the value axis of its unit, and the visible points drawn into it, split into
+// segments where the history has a gap (a gap is never drawn as a line). Remembers
 // what each line drew last, so that an unchanged frozen view is not drawn again.
 class TrendLines
 {
@@ -40,7 +42,9 @@ public:
         TrendSource source;
         QString label;
         QString unit;
-        QLineSeries* series = nullptr;
+        QLineSeries* series = nullptr; // the first segment, named in the legend
+        QVector<QLineSeries*> extra;   // the segments after a gap in the history
+        QList<QLineSeries*> allSeries() const;
         qint64 drawnFrom = -1;
         qint64 drawnTo = -1;
         qint64 drawnLast = -1;

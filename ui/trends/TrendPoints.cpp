@@ -5,16 +5,14 @@
 
 namespace opentop {
 
-QList<QPointF> TrendPoints::visible(const TrendHistory::Series& series, qint64 fromMs, qint64 toMs,
-                                    int buckets)
+namespace {
+
+// The points [first, end) of `p`; with more than about four per bucket (pixel column), each
+// bucket's minimum and maximum only, in time order.
+QList<QPointF> thinned(const QVector<TrendHistory::Point>& p, int first, int end, qint64 fromMs,
+                       qint64 toMs, int buckets)
 {
-    const QVector<TrendHistory::Point>& p = series.points;
     QList<QPointF> points;
-    if (p.isEmpty())
-        return points;
-    // One point either side of the window, so that the line reaches its edges.
-    const int first = std::max(0, TrendHistory::lowerBound(series, fromMs) - 1);
-    const int end = std::min(int(p.size()), TrendHistory::lowerBound(series, toMs + 1) + 1);
     const int n = end - first;
     buckets = std::max(1, buckets);
     if (n <= 4 * buckets || toMs <= fromMs) {
@@ -43,6 +41,46 @@ QList<QPointF> TrendPoints::visible(const TrendHistory::Series& series, qint64 f
         i = std::max(j, i + 1);
     }
     return points;
+}
+
+} // namespace
+
+QList<QPointF> TrendPoints::visible(const TrendHistory::Series& series, qint64 fromMs, qint64 toMs,
+                                    int buckets)
+{
+    const QVector<TrendHistory::Point>& p = series.points;
+    if (p.isEmpty())
+        return {};
+    // One point either side of the window, so that the line reaches its edges.
+    const int first = std::max(0, TrendHistory::lowerBound(series, fromMs) - 1);
+    const int end = std::min(int(p.size()), TrendHistory::lowerBound(series, toMs + 1) + 1);
+    return thinned(p, first, end, fromMs, toMs, buckets);
+}
+
+QVector<QList<QPointF>> TrendPoints::segments(const TrendHistory::Series& series, qint64 fromMs,
+                                              qint64 toMs, int buckets, qint64 gapMs)
+{
+    const QVector<TrendHistory::Point>& p = series.points;
+    QVector<QList<QPointF>> out;
+    if (p.isEmpty())
+        return out;
+    const int first = std::max(0, TrendHistory::lowerBound(series, fromMs) - 1);
+    const int end = std::min(int(p.size()), TrendHistory::lowerBound(series, toMs + 1) + 1);
+    int start = first;
+    for (int i = first + 1; i <= end; ++i) {
+        if (i < end && p[i].ms - p[i - 1].ms <= gapMs)
+            continue;
+        // The buckets of a segment are as wide as those of the whole window.
+        const qint64 from = std::max(fromMs, p[start].ms);
+        const qint64 to = std::min(toMs, p[i - 1].ms);
+        const int share =
+            toMs > fromMs && to > from
+                ? std::max(1, int(double(buckets) * double(to - from) / double(toMs - fromMs)))
+                : 1;
+        out << thinned(p, start, i, from, to, share);
+        start = i;
+    }
+    return out;
 }
 
 void TrendPoints::pad(double* lo, double* hi)

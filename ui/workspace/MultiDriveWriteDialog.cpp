@@ -4,6 +4,7 @@
 #include "bus/BusGroupTracker.h"
 #include "groups/GroupWriteCheck.h"
 #include "profile/ValueCodec.h"
+#include "run/RunningData.h"
 #include "session/DeviceSession.h"
 
 #include <QComboBox>
@@ -161,7 +162,18 @@ void MultiDriveWriteDialog::readValues()
         ++m_reading;
         DeviceSession* session = m_drives->session(slave);
         // What the allowed values depend on is read too, for checking the input.
-        const QStringList names = QStringList{name} + m->controllingParameters();
+        QStringList names = QStringList{name} + m->controllingParameters();
+        // And an SPno's speed and deceleration, for the model's deceleration advice.
+        QString field;
+        if (const int spno = RunningData::spnoOf(name, &field); spno > 0) {
+            for (const char* other : {"speed", "decel"}) {
+                const QString n =
+                    RunningData::parameter(session->profile(), spno, QLatin1String(other));
+                if (!n.isEmpty() && !names.contains(n) &&
+                    session->profile().parameter(n)->isReadable())
+                    names << n;
+            }
+        }
         QPointer<MultiDriveWriteDialog> self(this);
         session->readMany(
             names,
@@ -221,6 +233,18 @@ void MultiDriveWriteDialog::check()
     }
     if (m_writable.isEmpty())
         m_problem = tr("None of the selected drives is identified.");
+    // Advice, not a refusal (the model's rule, as for a page or the command line).
+    QStringList advice;
+    for (int slave : m_writable) {
+        if (!m_problem.isEmpty() || text.isEmpty())
+            break;
+        const ValueContext context = m_drives->session(slave)->context();
+        const ValueCodec::Encoded e = ValueCodec::encodeText(*meta(slave), text, context);
+        const QString w = RunningData::warningFor(m_drives->session(slave)->profile(),
+                                                  meta(slave)->name, qint64(e.raw), context);
+        if (!w.isEmpty())
+            advice << tr("Drive %1: %2").arg(slave).arg(w);
+    }
     m_unit->setText(units.size() == 1 ? *units.cbegin() : QString());
     m_value->setToolTip(tr("Allowed on %1").arg(allowed.join(QStringLiteral("; "))));
     const bool refused = !m_problem.isEmpty() && !text.isEmpty();
@@ -228,12 +252,20 @@ void MultiDriveWriteDialog::check()
         refused ? QStringLiteral("border: 2px solid #c62828; background: #fdecea;") : QString());
     m_value->setAccessibleDescription(m_problem);
     if (!m_writing) {
-        m_message->setText(!m_problem.isEmpty()
-                               ? m_problem
+        m_message->setText(!m_problem.isEmpty() ? m_problem
+                           : !advice.isEmpty()
+                               ? tr("Warning: %1").arg(advice.join(QLatin1Char('\n')))
                                : tr("Allowed on %1.").arg(allowed.join(QStringLiteral("; "))));
-        m_message->setStyleSheet(refused ? QStringLiteral("color: #b01c1c;") : QString());
+        m_message->setStyleSheet(refused             ? QStringLiteral("color: #b01c1c;")
+                                 : !advice.isEmpty() ? QStringLiteral("color: #a05000;")
+                                                     : QString());
     }
     updateButtons();
+}
+
+QString MultiDriveWriteDialog::messageText() const
+{
+    return m_message->text();
 }
 
 void MultiDriveWriteDialog::updateButtons()

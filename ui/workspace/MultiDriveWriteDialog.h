@@ -40,6 +40,8 @@ public:
     void setValueText(const QString& text); // as if typed
     // Why the input is refused (naming the drive and the allowed values); empty when accepted.
     QString problem() const { return m_problem; }
+    // What the dialog says below the value: the problem, a warning, or the allowed values.
+    QString messageText() const;
     bool busy() const { return m_reading > 0 || m_writing; }
     QString cellText(int slave, Column column) const;
     void writeToAll();

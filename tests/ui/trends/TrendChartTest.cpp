@@ -107,6 +107,10 @@ TEST_F(TrendChartTest, TwoDrivesGetSeriesNamedAfterTheDriveAndAnAxisPerUnit)
     EXPECT_TRUE(valueAxisTitle(*chart, 2).contains(QStringLiteral("[%]")))
         << qPrintable(valueAxisTitle(*chart, 2));
     EXPECT_NE(line(*chart, 0)->pen().color(), line(*chart, 1)->pen().color());
+    // One drive's quantities differ by colour, not only by dash; the drives by dash too.
+    EXPECT_NE(line(*chart, 1)->pen().color(), line(*chart, 2)->pen().color());
+    EXPECT_EQ(line(*chart, 1)->pen().style(), line(*chart, 2)->pen().style());
+    EXPECT_NE(line(*chart, 0)->pen().style(), line(*chart, 1)->pen().style());
 
     DeviceInfo info = drives->info(2);
     info.model = QStringLiteral("DBU400");

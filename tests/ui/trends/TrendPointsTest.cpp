@@ -59,3 +59,24 @@ TEST(TrendPointsTest, RangesGetAirAndRoundTicks)
     EXPECT_EQ(hi, 1.0);
     EXPECT_GE(TrendPoints::niceTicks(&lo, &hi, 6), 5);
 }
+
+TEST(TrendPointsTest, AGapSplitsTheLineIntoSegmentsThatNeverJoinAcrossIt)
+{
+    // 5 Hz for 2 s, nothing for 7 s (polling stopped), 5 Hz for 2 s.
+    TrendHistory::Series s;
+    for (int i = 0; i < 10; ++i)
+        s.points << TrendHistory::Point{1000 + i * 200, 0.0};
+    for (int i = 0; i < 10; ++i)
+        s.points << TrendHistory::Point{10000 + i * 200, 1350.0};
+    const QVector<QList<QPointF>> parts = TrendPoints::segments(s, 0, 20000, 800, 1500);
+    ASSERT_EQ(parts.size(), 2);
+    EXPECT_EQ(parts[0].size(), 10);
+    EXPECT_EQ(parts[0].last().x(), 2800.0);
+    EXPECT_EQ(parts[1].first().x(), 10000.0);
+    EXPECT_EQ(parts[1].first().y(), 1350.0);
+    // Without a gap longer than allowed it is one line, as visible() draws it.
+    const QVector<QList<QPointF>> one = TrendPoints::segments(s, 0, 20000, 800, 10000);
+    ASSERT_EQ(one.size(), 1);
+    EXPECT_EQ(one.first(), TrendPoints::visible(s, 0, 20000, 800));
+    EXPECT_TRUE(TrendPoints::segments(TrendHistory::Series(), 0, 10, 10, 100).isEmpty());
+}

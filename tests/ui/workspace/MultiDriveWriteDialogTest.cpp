@@ -99,3 +99,23 @@ TEST_F(MultiDriveWriteDialogTest, RefusesAValueOneDriveDoesNotAllowAndSendsNothi
     dialog.setValueText(QStringLiteral("300"));
     EXPECT_TRUE(dialog.problem().isEmpty()) << qPrintable(dialog.problem());
 }
+
+TEST_F(MultiDriveWriteDialogTest, WarnsOfAShortDecelerationFromHighSpeedButAllowsIt)
+{
+    start(QStringLiteral("dbu200@1,dbu200@2"),
+          {{1, QStringLiteral("dbu200")}, {2, QStringLiteral("dbu200")}});
+    // Drive 2's SPno2 decelerates in 0.5 s, drive 1's in 3 s.
+    control(1, {QStringLiteral("set"), QString::number(address(QStringLiteral("spno2.decel"))),
+                QStringLiteral("30")});
+    control(2, {QStringLiteral("set"), QString::number(address(QStringLiteral("spno2.decel"))),
+                QStringLiteral("5")});
+    MultiDriveWriteDialog dialog(busDrives.get(), {1, 2}, QStringLiteral("spno2.speed"));
+    ASSERT_TRUE(waitUntil([&] { return !dialog.busy(); }));
+    dialog.setValueText(QStringLiteral("2500"));
+    EXPECT_TRUE(dialog.problem().isEmpty()) << qPrintable(dialog.problem());
+    EXPECT_TRUE(dialog.messageText().contains(QStringLiteral("Drive 2: SPno2 slows down")))
+        << qPrintable(dialog.messageText());
+    EXPECT_FALSE(dialog.messageText().contains(QStringLiteral("Drive 1:")));
+    dialog.setValueText(QStringLiteral("1000"));
+    EXPECT_FALSE(dialog.messageText().contains(QStringLiteral("Warning")));
+}

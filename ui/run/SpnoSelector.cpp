@@ -1,0 +1,69 @@
+#include "run/SpnoSelector.h"
+
+#include "profile/RoleEvaluator.h"
+#include "profile/ValueCodec.h"
+#include "run/RunningData.h"
+#include "session/DeviceSession.h"
+
+#include <QPointer>
+
+namespace opentop {
+
+SpnoSelector::SpnoSelector(DeviceSession* session, QWidget* parent)
+    : QComboBox(parent)
+    , m_session(session)
+{
+    setObjectName(QStringLiteral("spno"));
+    setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    const ParameterMeta* select =
+        RoleEvaluator::parameter(session->profile(), QStringLiteral("select"));
+    if (!select)
+        return;
+    for (const EnumOption& o : select->specFor(session->context()).options) {
+        addItem(o.label, int(o.value + 1)); // running data N is code N-1
+        setItemData(count() - 1, o.label, Qt::UserRole + 1);
+    }
+}
+
+void SpnoSelector::refreshLabels()
+{
+    const Profile& profile = m_session->profile();
+    QStringList names;
+    for (int i = 0; i < count(); ++i) {
+        for (const char* field : {"speed", "direction"}) {
+            const QString n =
+                RunningData::parameter(profile, itemData(i).toInt(), QLatin1String(field));
+            if (!n.isEmpty() && profile.parameter(n)->isReadable())
+                names << n;
+        }
+    }
+    if (names.isEmpty())
+        return;
+    QPointer<SpnoSelector> self(this);
+    m_session->readMany(
+        names,
+        [self](const DeviceSession::ReadManyOutcome& o) {
+            if (!self)
+                return;
+            const Profile& prof = self->m_session->profile();
+            for (int i = 0; i < self->count(); ++i) {
+                const int spno = self->itemData(i).toInt();
+                QStringList parts;
+                for (const char* field : {"speed", "direction"}) {
+                    const QString n = RunningData::parameter(prof, spno, QLatin1String(field));
+                    const DeviceSession::Outcome r = o.results.value(n);
+                    if (!n.isEmpty() && r.value.valid)
+                        parts << ValueCodec::format(*prof.parameter(n), r.value,
+                                                    self->m_session->context());
+                }
+                const QString base = self->itemData(i, Qt::UserRole + 1).toString();
+                self->setItemText(
+                    i, parts.isEmpty() ? base
+                                       : tr("%1 — %2").arg(base, parts.join(QStringLiteral(", "))));
+            }
+            emit self->labelsRefreshed();
+        },
+        ModbusRequest::Priority::Poll);
+}
+
+} // namespace opentop
