@@ -20,6 +20,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSplitter>
 #include <QTime>
 #include <QVBoxLayout>
@@ -92,12 +93,20 @@ MonitorPage::MonitorPage(MonitorHub* hub, DeviceParameters* parameters, QWidget*
     connect(m_pause, &QPushButton::clicked, this, [this] { m_hub->setPaused(!m_hub->isPaused()); });
 
     auto* splitter = new QSplitter(Qt::Vertical, this);
-    auto* top = new QWidget(splitter);
+    // The values scroll when the chart below is given the height (a laptop's screen): they are
+    // never squeezed on top of each other.
+    auto* values = new QScrollArea(splitter);
+    values->setObjectName(QStringLiteral("monitorValues"));
+    values->setWidgetResizable(true);
+    values->setFrameShape(QFrame::NoFrame);
+    auto* top = new QWidget(values);
     auto* row = new QHBoxLayout(top);
     row->setContentsMargins(0, 0, 0, 0);
     row->addWidget(buildReadouts(), 3);
     row->addWidget(buildSide(), 2);
-    splitter->addWidget(top);
+    values->setWidget(top);
+    splitter->addWidget(values);
+    splitter->setChildrenCollapsible(false);
     splitter->addWidget(m_chart);
     splitter->setStretchFactor(1, 1);
     layout->addWidget(splitter, 1);
