@@ -109,6 +109,8 @@ MonitorPage::MonitorPage(MonitorHub* hub, DeviceParameters* parameters, QWidget*
     splitter->setChildrenCollapsible(false);
     splitter->addWidget(m_chart);
     splitter->setStretchFactor(1, 1);
+    // The values first (the lamps in sight on a laptop's screen), the chart the rest.
+    splitter->setSizes({5, 4});
     layout->addWidget(splitter, 1);
 
     m_chart->setSources(TrendDefaults::forDrive(parameters->profile(), m_slave));

@@ -257,10 +257,10 @@ void TrafficLogView::refresh()
     if (summarise) {
         const int row = int(slaves.size());
         const QString ranges = TrafficStatistics::rangesText(silent);
-        auto* item =
-            cell(tr("%n address(es) did not answer: %1", nullptr, int(silent.size())).arg(ranges));
+        // More than two: the plural is always right.
+        auto* item = cell(tr("%1 addresses did not answer: %2").arg(silent.size()).arg(ranges));
         item->setTextAlignment(Qt::AlignLeft | Qt::AlignVCenter);
-        item->setToolTip(tr("No reply from machine number(s) %1").arg(ranges));
+        item->setToolTip(tr("No reply from machine numbers %1").arg(ranges));
         m_stats->setItem(row, 0, item);
         for (int column = 1; column < m_stats->columnCount(); ++column)
             m_stats->setItem(row, column, cell(QString()));

@@ -2,7 +2,6 @@
 
 #include <QStyleOptionTab>
 #include <QStylePainter>
-#include <algorithm>
 
 namespace opentop {
 
@@ -16,12 +15,12 @@ SideTabBar::SideTabBar(QWidget* parent)
 
 QSize SideTabBar::tabSizeHint(int index) const
 {
-    // The style sizes a side tab for text running down it: turned, it holds the text across.
-    QSize size = QTabBar::tabSizeHint(index);
-    size.transpose();
-    // As high as a line of a list: ten pages in the height of a laptop's window.
-    size.setHeight(std::min(size.height(), fontMetrics().height() + 12));
-    return size;
+    // A line of a list: the title across with a margin each side, and as high as a line (ten
+    // pages in the height of a laptop's window).
+    QFont bold = font(); // the current page's title is bold
+    bold.setBold(true);
+    const QFontMetrics metrics(bold);
+    return QSize(metrics.horizontalAdvance(tabText(index)) + 2 * kMargin, metrics.height() + 12);
 }
 
 QSize SideTabBar::minimumTabSizeHint(int index) const
@@ -36,10 +35,13 @@ void SideTabBar::paintEvent(QPaintEvent* /*event*/)
     for (int i = 0; i < count(); ++i) {
         initStyleOption(&option, i);
         painter.drawControl(QStyle::CE_TabBarTabShape, option);
-        // The label drawn as on a top tab (text across), in the same rectangle.
-        option.shape = QTabBar::RoundedNorth;
-        option.rect = tabRect(i).adjusted(6, 0, -6, 0);
-        painter.drawControl(QStyle::CE_TabBarTabLabel, option);
+        // The title across, from the left, as in a list.
+        const QRect text = tabRect(i).adjusted(kMargin, 0, -kMargin / 2, 0);
+        QFont font = painter.font();
+        font.setBold(i == currentIndex());
+        painter.setFont(font);
+        style()->drawItemText(&painter, text, Qt::AlignLeft | Qt::AlignVCenter, option.palette,
+                              isTabEnabled(i), tabText(i), QPalette::WindowText);
     }
 }
 

@@ -13,6 +13,7 @@ public:
     explicit SideTabBar(QWidget* parent = nullptr);
 
 protected:
+    static constexpr int kMargin = 12;
     QSize tabSizeHint(int index) const override;
     QSize minimumTabSizeHint(int index) const override;
     void paintEvent(QPaintEvent* event) override;

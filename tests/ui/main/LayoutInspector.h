@@ -271,7 +271,9 @@ private:
             const QString text = plain(bar->tabText(i));
             const QRect r = bar->tabRect(i);
             const int room = vertical ? std::max(r.width(), r.height()) : r.width();
-            const int needed = bar->fontMetrics().horizontalAdvance(text) + 8;
+            // The style's padding either side, as a tab's own size hint has it.
+            const int needed = bar->fontMetrics().horizontalAdvance(text) +
+                               bar->style()->pixelMetric(QStyle::PM_TabBarTabHSpace, nullptr, bar);
             if (!bar->rect().contains(r))
                 add(bar, QStringLiteral("tab \"%1\" is outside the tab bar").arg(text));
             else if (needed > room)
