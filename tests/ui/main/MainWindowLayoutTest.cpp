@@ -182,6 +182,13 @@ TEST_F(MainWindowLayoutTest, EveryPageDockAndDialogFitsALaptopScreen)
     inspectPages(1, QStringLiteral("DBU200 1"));
     inspectPages(150, QStringLiteral("DBU400 150"));
     inspectPages(7, QStringLiteral("DC controller 7"));
+    // A 1280×800 laptop's window, its panel and title bar taken.
+    window->setGeometry(QRect(screen.topLeft(), QSize(1280, 720)));
+    settle();
+    inspectPages(1, QStringLiteral("1280×720, DBU200 1"));
+    inspectPages(7, QStringLiteral("1280×720, DC controller 7"));
+    window->setGeometry(QRect(screen.topLeft(), QSize(1366, 768)));
+    settle();
 
     // Each dock beside a drive's monitor, on its own, then all together.
     select({1});
