@@ -67,7 +67,7 @@ TerminalLamps::TerminalLamps(const ParameterMeta& meta, QWidget* parent)
         m_cells << cell;
         m_lamps << lamp;
     }
-    setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Preferred);
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
     setRaw(std::nullopt);
     arrange(int(m_cells.size()));
 }
@@ -90,8 +90,11 @@ void TerminalLamps::arrange(int columns)
         m_grid->removeWidget(cell);
     for (int i = 0; i < m_cells.size(); ++i)
         m_grid->addWidget(m_cells[i], i / columns, i % columns, Qt::AlignTop);
-    for (int c = 0; c <= int(m_cells.size()); ++c)
+    const int cell = cellWidth(); // every terminal as wide: they line up as on the drive
+    for (int c = 0; c <= int(m_cells.size()); ++c) {
         m_grid->setColumnStretch(c, c == columns ? 1 : 0);
+        m_grid->setColumnMinimumWidth(c, c < columns ? cell : 0);
+    }
     updateGeometry();
 }
 
@@ -104,7 +107,12 @@ QSize TerminalLamps::minimumSizeHint() const
 
 QSize TerminalLamps::sizeHint() const
 {
-    return m_grid->sizeHint();
+    // Every terminal side by side, as on the drive, where the width allows it.
+    const int count = int(m_cells.size());
+    if (count == 0)
+        return QSize(0, 0);
+    return QSize(count * cellWidth() + (count - 1) * kSpacing,
+                 m_cells.first()->sizeHint().height());
 }
 
 void TerminalLamps::resizeEvent(QResizeEvent* event)

@@ -254,8 +254,10 @@ void TrafficLogView::refresh()
         slaves.removeIf([&silent](int s) { return silent.contains(s); });
     m_stats->clearSpans();
     m_stats->setRowCount(int(slaves.size()) + (summarise ? 1 : 0));
+    // The summary first: the statistics pane is small, and this is what a scan leaves.
+    const int first = summarise ? 1 : 0;
     if (summarise) {
-        const int row = int(slaves.size());
+        const int row = 0;
         const QString ranges = TrafficStatistics::rangesText(silent);
         // More than two: the plural is always right.
         auto* item = cell(tr("%1 addresses did not answer: %2").arg(silent.size()).arg(ranges));
@@ -266,8 +268,9 @@ void TrafficLogView::refresh()
             m_stats->setItem(row, column, cell(QString()));
         m_stats->setSpan(row, 0, 1, m_stats->columnCount());
     }
-    for (int row = 0; row < slaves.size(); ++row) {
-        const DriveTrafficStats s = m_statistics.drive(slaves[row]);
+    for (int i = 0; i < slaves.size(); ++i) {
+        const int row = first + int(i);
+        const DriveTrafficStats s = m_statistics.drive(slaves[i]);
         const QStringList texts = {s.slave == 0 ? tr("Broadcast") : QString::number(s.slave),
                                    QString::number(s.requests),
                                    QString::number(s.replies),

@@ -130,7 +130,7 @@ TEST_F(MainWindowHelpTest, TheTrafficLogShowsTheMeaningAndSummarisesAScansSilent
     EXPECT_TRUE(rows.contains(QStringLiteral("1")));
     EXPECT_TRUE(rows.contains(QStringLiteral("7")));
     EXPECT_FALSE(rows.contains(QStringLiteral("5")));
-    const QString summary = rows.last();
+    const QString summary = rows.first();
     EXPECT_TRUE(summary.contains(QStringLiteral("27 addresses did not answer")))
         << qPrintable(summary);
     EXPECT_TRUE(summary.contains(QStringLiteral("3–6, 8–30"))) << qPrintable(summary);
