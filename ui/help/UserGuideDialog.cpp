@@ -4,6 +4,7 @@
 
 #include <QDialogButtonBox>
 #include <QDir>
+#include <QFile>
 #include <QTextBrowser>
 #include <QUrl>
 #include <QVBoxLayout>
@@ -63,8 +64,11 @@ UserGuideDialog::UserGuideDialog(QWidget* parent)
             .arg(stopKeys.toHtmlEscaped());
     const QString docs = installedDocumentation();
     if (!docs.isEmpty()) {
-        html += tr("<p>The installed documentation: <a href=\"%1\">%2</a></p>")
-                    .arg(QUrl::fromLocalFile(docs).toString(), docs.toHtmlEscaped());
+        // The package installs the README (the whole description of the program) there.
+        const QString readme = QDir(docs).filePath(QStringLiteral("README.md"));
+        const QString target = QFile::exists(readme) ? readme : docs;
+        html += tr("<p>The full description of the program: <a href=\"%1\">%2</a></p>")
+                    .arg(QUrl::fromLocalFile(target).toString(), target.toHtmlEscaped());
     }
     m_browser->setObjectName(QStringLiteral("userGuideText"));
     m_browser->setOpenExternalLinks(true);

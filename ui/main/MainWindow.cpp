@@ -339,6 +339,7 @@ void MainWindow::adopt(std::unique_ptr<ModbusClient> client, const ConnectionSet
     }
     connect(m_panel, &BusPanel::selectionChanged, this, &MainWindow::showDrive);
     connect(m_client.get(), &ModbusClient::connectionLost, this, [this](const QString& lost) {
+        m_connected = false; // nothing to keep when another connection is tried
         setConnectionText(tr("Connection lost: %1").arg(lost), true);
         QMessageBox::warning(this, tr("Connection lost"),
                              ConnectionDialog::explainOpenError(m_settings, lost));
