@@ -49,8 +49,9 @@ QStringList AlarmHistory::resetPlan() const
     const ParameterMeta* meta = RoleEvaluator::parameter(profile, kAlarmReset);
     if (!role || !meta || !role->value)
         return {};
+    const ValueContext context = m_session->context();
     return {RoleEvaluator::describeWrite(
-        *meta, RoleEvaluator::valueText(*meta, *role->value, m_session->context()))};
+        *meta, RoleEvaluator::valueText(*meta, *role->value, context), context)};
 }
 
 QStringList AlarmHistory::clearPlan() const
@@ -67,7 +68,8 @@ QStringList AlarmHistory::clearPlan() const
         plan << tr("%1: erases the %2")
                     .arg(RoleEvaluator::describeWrite(
                              *meta,
-                             RoleEvaluator::valueText(*meta, *role->value, m_session->context())),
+                             RoleEvaluator::valueText(*meta, *role->value, m_session->context()),
+                             m_session->context()),
                          codes ? codes->label.toLower() : QLatin1String(table));
     }
     return plan;

@@ -98,7 +98,7 @@ AlarmRecords::Report AlarmRecords::decode(const QHash<QString, double>& raw,
             if (const CodeEntry* e = codes ? codes->find(*report.commErrorCode) : nullptr)
                 report.commError = *e;
         } else {
-            report.errors << tr("%1: %2").arg(meta->name, errors.value(meta->name));
+            report.errors << tr("%1: %2").arg(meta->label, errors.value(meta->name));
         }
     }
     report.alarmActive = RoleEvaluator::flag(profile, kAlarmActive, [&raw](const QString& n) {

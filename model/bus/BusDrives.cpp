@@ -36,6 +36,7 @@ void BusDrives::update(const DeviceInfo& info)
     const Profile* profile = m_registry.family(info.family);
     if (!d.session && info.state == DeviceInfo::State::Present && profile) {
         d.session = new DeviceSession(m_client, *profile, info.slave, info.variant, this);
+        d.session->setLabelsInMessages(true); // the program's windows name parameters by label
         d.parameters = new DeviceParameters(d.session, this);
     } else if (d.session && !info.variant.isEmpty()) {
         d.session->setVariant(info.variant);

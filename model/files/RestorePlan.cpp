@@ -148,7 +148,8 @@ RestorePlan RestorePlan::check(const Profile& profile, const QString& liveVarian
             if (!encoded.ok)
                 plan.problems << encoded.error;
             else if (encoded.registers != item.fileRegisters)
-                plan.problems << tr("%1: the value cannot be written exactly").arg(name);
+                plan.problems
+                    << tr("%1: the value cannot be written exactly").arg(context.nameFor(name));
         }
         if (!meta.storeWith.isEmpty() && !stores.contains(meta.storeWith))
             stores << meta.storeWith;

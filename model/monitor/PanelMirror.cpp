@@ -3,6 +3,7 @@
 #include "monitor/DeviceMonitor.h"
 #include "profile/Profile.h"
 #include "profile/RoleEvaluator.h"
+#include "profile/SpeedDisplay.h"
 
 namespace opentop {
 
@@ -30,21 +31,7 @@ QString PanelMirror::contentName(Content content)
 
 QString PanelMirror::fit(const QString& text, bool* overflow)
 {
-    const auto digits = [](const QString& t) {
-        int n = 0;
-        for (QChar c : t)
-            n += c == QLatin1Char('.') ? 0 : 1;
-        return n;
-    };
-    QString t = text;
-    while (digits(t) > kDigits && t.contains(QLatin1Char('.'))) {
-        t.chop(1);
-        if (t.endsWith(QLatin1Char('.')))
-            t.chop(1);
-    }
-    if (overflow)
-        *overflow = digits(t) > kDigits;
-    return t;
+    return SpeedDisplay::panelText(text, overflow);
 }
 
 PanelMirror::Shown PanelMirror::show(const Profile& profile, const MonitorSample& sample,

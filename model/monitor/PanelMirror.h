@@ -1,5 +1,7 @@
 #pragma once
 
+#include "profile/SpeedDisplay.h"
+
 #include <QCoreApplication>
 #include <QString>
 #include <optional>
@@ -44,13 +46,12 @@ public:
         QString meaning;       // for people: "Current speed 1500 r/min", "Load rate 15 %"
     };
 
-    static constexpr int kDigits = 5;
+    static constexpr int kDigits = SpeedDisplay::kPanelDigits;
 
     static bool supported(const Profile& profile);
     static Shown show(const Profile& profile, const MonitorSample& sample,
                       std::optional<Content> content, const Countdown& countdown);
-    // `text` fitted to the panel's digits: decimals dropped as needed (the point takes no
-    // digit, the minus does). Sets *overflow when even the integer part does not fit.
+    // `text` fitted to the panel's digits (SpeedDisplay::panelText, the one rule for it).
     static QString fit(const QString& text, bool* overflow = nullptr);
     static QString contentName(Content content);
 };

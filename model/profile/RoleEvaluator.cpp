@@ -96,10 +96,11 @@ QString RoleEvaluator::valueText(const ParameterMeta& meta, qint64 raw, const Va
     return spec.unit.isEmpty() ? number : number + QLatin1Char(' ') + spec.unit;
 }
 
-QString RoleEvaluator::describeWrite(const ParameterMeta& meta, const QString& valueText)
+QString RoleEvaluator::describeWrite(const ParameterMeta& meta, const QString& valueText,
+                                     const ValueContext& context)
 {
     return tr("%1 = %2 (%3, function %4)")
-        .arg(meta.name, valueText, meta.addressText())
+        .arg(context.nameFor(meta.name), valueText, meta.addressText())
         .arg(meta.writeFunction, 2, 10, QLatin1Char('0'));
 }
 

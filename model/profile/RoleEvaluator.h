@@ -38,8 +38,10 @@ public:
     static QString writeText(const ParameterMeta& meta, qint64 raw, const ValueContext& context);
     // "START (1)", "0 %" — a role's value for people.
     static QString valueText(const ParameterMeta& meta, qint64 raw, const ValueContext& context);
-    // "run.start = START (1) (0x2003, function 06)": a write as the user is told about it.
-    static QString describeWrite(const ParameterMeta& meta, const QString& valueText);
+    // "run.start = START (1) (0x2003, function 06)": a write as the user is told about it, the
+    // parameter named as `context` names it (its label in the program's windows).
+    static QString describeWrite(const ParameterMeta& meta, const QString& valueText,
+                                 const ValueContext& context = {});
 };
 
 } // namespace opentop

@@ -10,6 +10,8 @@ namespace opentop {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr double kMmPerMeter = 1000;
+constexpr double kMmPerYard = 914.4;
 
 // Upper ends of the speed sections ro-0..ro-2 (r/min); ro-3 covers everything above.
 constexpr double kSectionTop[] = {500, 1000, 2000};
@@ -55,13 +57,13 @@ bool SpeedDisplay::supported(const Profile& profile, const Names& names)
 std::optional<SpeedDisplay>
 SpeedDisplay::fromValues(const Names& names,
                          const std::function<std::optional<double>(const QString&)>& value,
-                         QString* error)
+                         QString* error, const std::function<QString(const QString&)>& nameFor)
 {
     QStringList missing;
     auto get = [&](const QString& name, double fallback) {
         const std::optional<double> v = value(name);
         if (!v)
-            missing << name;
+            missing << (nameFor ? nameFor(name) : name);
         return v.value_or(fallback);
     };
     Settings s;
@@ -155,16 +157,19 @@ SpeedDisplay::Shown SpeedDisplay::show(double motorRpm) const
         shown.value = shaft;
         break;
     case Mode::LinearYard:
-        shown.value = shaft * kPi * m_settings.diameterYard;
+        shown.value = shaft * kPi * m_settings.diameterYard / kMmPerYard;
         break;
     case Mode::LinearMeter:
-        shown.value = shaft * kPi * m_settings.diameterMeter;
+        shown.value = shaft * kPi * m_settings.diameterMeter / kMmPerMeter;
         break;
     case Mode::Time: {
-        // Distance per minute of the roller, then the time for the whole distance.
-        const double perMinute = std::abs(shaft) * kPi * m_settings.timeDiameter;
+        // Distance per minute of the roller (in the distance unit), then the time for the
+        // whole distance.
+        const double perMinute = std::abs(shaft) * kPi * m_settings.timeDiameter /
+                                 (m_settings.distanceInYards ? kMmPerYard : kMmPerMeter);
         if (!(perMinute > 0) || !(m_settings.distance > 0)) {
             shown.text = m_settings.timeInSeconds ? QStringLiteral("--") : QStringLiteral("--:--");
+            shown.panel = shown.text;
             return shown;
         }
         const double minutes = m_settings.distance / perMinute;
@@ -172,12 +177,14 @@ SpeedDisplay::Shown SpeedDisplay::show(double motorRpm) const
         if (m_settings.timeInSeconds) {
             shown.value = minutes * 60;
             shown.text = ValueCodec::formatNumber(shown.value, decimals);
+            shown.panel = panelText(shown.text, &shown.overflow);
             return shown;
         }
         shown.value = minutes;
         const qint64 seconds = std::llround(minutes * 60);
         shown.text =
             QStringLiteral("%1:%2").arg(seconds / 60).arg(seconds % 60, 2, 10, QLatin1Char('0'));
+        shown.panel = shown.text;
         return shown;
     }
     }
@@ -185,7 +192,27 @@ SpeedDisplay::Shown SpeedDisplay::show(double motorRpm) const
     if (shown.value == 0)
         shown.value = 0; // no "-0"
     shown.text = ValueCodec::formatNumber(shown.value, decimals);
+    shown.panel = panelText(shown.text, &shown.overflow);
     return shown;
+}
+
+QString SpeedDisplay::panelText(const QString& text, bool* overflow)
+{
+    const auto digits = [](const QString& t) {
+        int n = 0;
+        for (QChar c : t)
+            n += c == QLatin1Char('.') ? 0 : 1;
+        return n;
+    };
+    QString t = text;
+    while (digits(t) > kPanelDigits && t.contains(QLatin1Char('.'))) {
+        t.chop(1);
+        if (t.endsWith(QLatin1Char('.')))
+            t.chop(1);
+    }
+    if (overflow)
+        *overflow = digits(t) > kPanelDigits;
+    return t;
 }
 
 } // namespace opentop

@@ -49,16 +49,17 @@ public:
         QStringList all() const;
     };
 
-    // Engineering values of the settings.
+    // Engineering values of the settings. Roller diameters are in millimetres whatever the
+    // display unit (docs/errata.md DBU-23).
     struct Settings
     {
         Mode mode = Mode::Rpm;
         double reduction = 1;
         double increase = 1;
         int decimals = 3;
-        double diameterYard = 0;
-        double diameterMeter = 0;
-        double timeDiameter = 0;
+        double diameterYard = 0;  // mm, for the yd/min display
+        double diameterMeter = 0; // mm, for the m/min display
+        double timeDiameter = 0;  // mm, for the time display
         bool distanceInYards = false;
         double distance = 0;
         bool timeInSeconds = false;
@@ -67,11 +68,20 @@ public:
 
     struct Shown
     {
-        bool valid = false; // false: no finite value (time at standstill, diameter 0)
-        double value = 0;   // in `unit`; minutes for "min:s"
-        QString text;       // as the drive shows it: "1500.000", "31.416", "2:05", "--:--"
-        QString unit;       // "r/min", "yd/min", "m/min", "min:s", "s"
+        bool valid = false;    // false: no finite value (time at standstill, diameter 0)
+        double value = 0;      // in `unit`; minutes for "min:s"
+        QString text;          // as the drive shows it: "1500.000", "31.416", "2:05", "--:--"
+        QString unit;          // "r/min", "yd/min", "m/min", "min:s", "s"
+        QString panel;         // `text` as the drive's 5-digit panel shows it: "1500.0"
+        bool overflow = false; // more digits than the panel has, even without decimals
     };
+
+    // The digits of the drive's own speed display.
+    static constexpr int kPanelDigits = 5;
+    // `text` fitted to the panel's digits: decimals dropped as needed (the point takes no
+    // digit, the minus does). Sets *overflow when even the integer part does not fit. The one
+    // rule for what the panel shows, used by the monitor's panel mirror and every preview.
+    static QString panelText(const QString& text, bool* overflow = nullptr);
 
     SpeedDisplay() = default;
     explicit SpeedDisplay(const Settings& settings)
@@ -83,10 +93,11 @@ public:
     static bool supported(const Profile& profile, const Names& names = Names::withPrefix());
     // Builds the display from decoded values (engineering numbers; enumeration codes as
     // numbers). Returns nothing and sets *error when a value is missing or out of range.
-    static std::optional<SpeedDisplay>
-    fromValues(const Names& names,
-               const std::function<std::optional<double>(const QString&)>& value,
-               QString* error = nullptr);
+    // `nameFor` names a parameter in the error (its label in the program's windows); the
+    // internal name when not given.
+    static std::optional<SpeedDisplay> fromValues(
+        const Names& names, const std::function<std::optional<double>(const QString&)>& value,
+        QString* error = nullptr, const std::function<QString(const QString&)>& nameFor = {});
 
     const Settings& settings() const { return m_settings; }
     // The motor speed after the ro-n correction of its speed section (sign kept, never crosses

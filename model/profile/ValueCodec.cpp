@@ -127,7 +127,7 @@ QString ValueCodec::allowedText(const ParameterMeta& meta, const ValueContext& c
     QString unresolved;
     const ValueSpec& spec = meta.specFor(context, &unresolved);
     if (!unresolved.isEmpty())
-        return tr("depends on %1, which is not known yet").arg(unresolved);
+        return tr("depends on %1, which is not known yet").arg(context.nameFor(unresolved));
     if (meta.type == DataType::String)
         return tr("text of up to %1 characters").arg(meta.registerCount * 2);
     QStringList ranges;
@@ -175,12 +175,12 @@ QString ValueCodec::checkRaw(const ParameterMeta& meta, double raw, const ValueC
     const ValueSpec& spec = meta.specFor(context, &unresolved);
     if (!unresolved.isEmpty())
         return tr("%1: the allowed values depend on %2, which has not been read")
-            .arg(meta.name, unresolved);
+            .arg(context.nameFor(meta.name), context.nameFor(unresolved));
     const auto [lo, hi] = typeBounds(meta.type);
     if (!std::isfinite(raw) || raw < lo || raw > hi ||
         (isInteger(meta.type) && raw != std::floor(raw)))
         return tr("%1: value out of the register's range; allowed: %2")
-            .arg(meta.name, allowedText(meta, context));
+            .arg(context.nameFor(meta.name), allowedText(meta, context));
     if (spec.ranges.isEmpty() && spec.options.isEmpty())
         return QString();
     if (findOption(spec, raw))
@@ -192,7 +192,8 @@ QString ValueCodec::checkRaw(const ParameterMeta& meta, double raw, const ValueC
     }
     const QString shown = formatNumber(raw * spec.scale, spec.decimals);
     return tr("%1: %2 is not allowed; allowed: %3")
-        .arg(meta.name, shown + (spec.unit.isEmpty() ? QString() : QLatin1Char(' ') + spec.unit),
+        .arg(context.nameFor(meta.name),
+             shown + (spec.unit.isEmpty() ? QString() : QLatin1Char(' ') + spec.unit),
              allowedText(meta, context));
 }
 
@@ -203,7 +204,7 @@ ParamValue ValueCodec::decode(const ParameterMeta& meta, const QVector<quint16>&
     v.registers = registers;
     if (registers.size() != meta.registerCount) {
         v.error = tr("%1: expected %2 registers, got %3")
-                      .arg(meta.name)
+                      .arg(context.nameFor(meta.name))
                       .arg(meta.registerCount)
                       .arg(registers.size());
         return v;
@@ -239,7 +240,7 @@ ValueCodec::Encoded ValueCodec::encodeNumber(const ParameterMeta& meta, double v
 {
     Encoded e;
     if (meta.type == DataType::String) {
-        e.error = tr("%1 is text, not a number").arg(meta.name);
+        e.error = tr("%1 is text, not a number").arg(context.nameFor(meta.name));
         return e;
     }
     QString unresolved;
@@ -252,10 +253,10 @@ ValueCodec::Encoded ValueCodec::encodeNumber(const ParameterMeta& meta, double v
     if (isInteger(meta.type)) {
         const double rounded = std::round(raw);
         if (std::fabs(raw - rounded) > 1e-6 * std::max(1.0, std::fabs(raw))) {
-            e.error =
-                tr("%1: %2 is finer than the step of %3 %4; allowed: %5")
-                    .arg(meta.name, QString::number(value), formatNumber(spec.scale, spec.decimals),
-                         spec.unit, allowedText(meta, context));
+            e.error = tr("%1: %2 is finer than the step of %3 %4; allowed: %5")
+                          .arg(context.nameFor(meta.name), QString::number(value),
+                               formatNumber(spec.scale, spec.decimals), spec.unit,
+                               allowedText(meta, context));
             return e;
         }
         raw = rounded;
@@ -283,13 +284,14 @@ ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QStr
     if (meta.type == DataType::String) {
         const int capacity = meta.registerCount * 2;
         if (text.size() > capacity) {
-            e.error = tr("%1: at most %2 characters").arg(meta.name).arg(capacity);
+            e.error = tr("%1: at most %2 characters").arg(context.nameFor(meta.name)).arg(capacity);
             return e;
         }
         QByteArray bytes = text.toLatin1();
         for (QChar c : text) {
             if (c.unicode() < 0x20 || c.unicode() > 0x7E) {
-                e.error = tr("%1: only printable ASCII characters are allowed").arg(meta.name);
+                e.error = tr("%1: only printable ASCII characters are allowed")
+                              .arg(context.nameFor(meta.name));
                 return e;
             }
         }
@@ -300,7 +302,8 @@ ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QStr
         return e;
     }
     if (text.isEmpty()) {
-        e.error = tr("%1: no value given; allowed: %2").arg(meta.name, allowedText(meta, context));
+        e.error = tr("%1: no value given; allowed: %2")
+                      .arg(context.nameFor(meta.name), allowedText(meta, context));
         return e;
     }
     QString unresolved;
@@ -333,7 +336,7 @@ ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QStr
         for (const EnumOption& o : c.spec.options) {
             if (!c.param.isEmpty() && normalizedLabel(o.label) == wanted) {
                 e.error = tr("%1: \"%2\" is only available when %3 is %4; allowed now: %5")
-                              .arg(meta.name, text, c.param)
+                              .arg(context.nameFor(meta.name), text, context.nameFor(c.param))
                               .arg(c.equals)
                               .arg(allowedText(meta, context));
                 return e;
@@ -346,7 +349,7 @@ ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QStr
         const qulonglong raw = text.mid(2).toULongLong(&ok, 16);
         if (!ok || !isInteger(meta.type)) {
             e.error = tr("%1: \"%2\" is not a valid value; allowed: %3")
-                          .arg(meta.name, text, allowedText(meta, context));
+                          .arg(context.nameFor(meta.name), text, allowedText(meta, context));
             return e;
         }
         return encodeRaw(meta, double(raw), context);
@@ -363,7 +366,7 @@ ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QStr
     const double value = number.trimmed().toDouble(&ok);
     if (!ok) {
         e.error = tr("%1: \"%2\" is not a valid value; allowed: %3")
-                      .arg(meta.name, text, allowedText(meta, context));
+                      .arg(context.nameFor(meta.name), text, allowedText(meta, context));
         return e;
     }
     // Enumeration codes are raw values; everything else is in engineering units.

@@ -132,7 +132,7 @@ RunControl::Plan RunControl::plan(const DeviceSession& session, const Command& c
     const ValueContext context = session.context();
     if (command.action == Action::Speed) {
         p.text = command.speed;
-        p.description = RoleEvaluator::describeWrite(*p.meta, command.speed);
+        p.description = RoleEvaluator::describeWrite(*p.meta, command.speed, context);
         return p;
     }
     qint64 raw = r->value.value_or(0);
@@ -144,18 +144,19 @@ RunControl::Plan RunControl::plan(const DeviceSession& session, const Command& c
                                        [raw](const EnumOption& o) { return o.value == raw; });
         if (!known) {
             p.failure = Failure::InvalidValue;
-            p.error = options.isEmpty() ? tr("%1 has no selection codes").arg(p.meta->name)
-                                        : tr("select %1: choose %2–%3 (%4 … %5)")
-                                              .arg(command.select)
-                                              .arg(options.first().value + 1)
-                                              .arg(options.last().value + 1)
-                                              .arg(options.first().label, options.last().label);
+            p.error = options.isEmpty()
+                          ? tr("%1 has no selection codes").arg(context.nameFor(p.meta->name))
+                          : tr("select %1: choose %2–%3 (%4 … %5)")
+                                .arg(command.select)
+                                .arg(options.first().value + 1)
+                                .arg(options.last().value + 1)
+                                .arg(options.first().label, options.last().label);
             return p;
         }
     }
     p.text = RoleEvaluator::writeText(*p.meta, raw, context);
-    p.description =
-        RoleEvaluator::describeWrite(*p.meta, RoleEvaluator::valueText(*p.meta, raw, context));
+    p.description = RoleEvaluator::describeWrite(
+        *p.meta, RoleEvaluator::valueText(*p.meta, raw, context), context);
     return p;
 }
 

@@ -85,7 +85,7 @@ void StopConfirmer::round()
                 m_priorityNote =
                     tr("%1 is %2: the drive does not take motion commands over the bus (it follows "
                        "its input terminals)")
-                        .arg(priority->name,
+                        .arg(priority->label,
                              ValueCodec::format(*priority, o.results.value(priority->name).value,
                                                 m_session->context()));
         }

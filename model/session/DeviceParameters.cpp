@@ -32,8 +32,10 @@ DeviceParameters::DeviceParameters(DeviceSession* session, QObject* parent)
                 if (it == m_entries.end())
                     return;
                 it->device = value;
-                if (it->state == State::Unread)
+                if (it->state == State::Unread || it->state == State::Clean) {
                     it->state = State::Clean;
+                    it->message.clear(); // an earlier read failure is over
+                }
                 emit entryChanged(name);
             });
 }
@@ -78,10 +80,10 @@ QString DeviceParameters::setPending(const QString& name, const QString& text)
     if (it == m_entries.end())
         return tr("%1 has no parameter \"%2\"").arg(profile().family, name);
     if (!it->meta->isWritable())
-        return tr("%1 is read-only").arg(name);
+        return tr("%1 is read-only").arg(it->meta->label);
     if (!it->meta->safety.isEmpty())
         return tr("%1 is a command, not a setting; commands are sent one by one on request")
-            .arg(name);
+            .arg(it->meta->label);
     // Validate against what the drive will hold once the other pending edits are written.
     ValueContext context = m_session->context();
     const auto base = context.parameterRaw;
@@ -92,8 +94,15 @@ QString DeviceParameters::setPending(const QString& name, const QString& text)
         return base(other);
     };
     const ValueCodec::Encoded encoded = ValueCodec::encodeText(*it->meta, text, context);
-    if (!encoded.ok)
+    if (!encoded.ok) {
+        // Kept as typed, so the field shows it, Revert undoes it and no write goes around it.
+        it->pendingText = text.trimmed();
+        it->pendingRegisters.clear();
+        it->state = State::Invalid;
+        it->message = encoded.error;
+        emit entryChanged(name);
         return encoded.error;
+    }
     if (it->device.valid && encoded.registers == it->device.registers) {
         revert(name); // typing the device's own value back is no edit
         return QString();
@@ -103,12 +112,16 @@ QString DeviceParameters::setPending(const QString& name, const QString& text)
     it->state = State::Pending;
     it->message.clear();
     emit entryChanged(name);
-    // Edits whose allowed values depend on this one are checked again.
+    // Edits whose allowed values depend on this one are checked again: they may become invalid,
+    // or valid again.
     for (auto other = m_entries.begin(); other != m_entries.end(); ++other) {
-        if (other->state == State::Pending && other->meta->controllingParameters().contains(name)) {
+        if ((other->state == State::Pending || other->state == State::Invalid) &&
+            other->meta->controllingParameters().contains(name)) {
             const ValueCodec::Encoded again =
                 ValueCodec::encodeText(*other->meta, other->pendingText, context);
             other->message = again.ok ? QString() : again.error;
+            other->pendingRegisters = again.ok ? again.registers : QVector<quint16>();
+            other->state = again.ok ? State::Pending : State::Invalid;
             emit entryChanged(other.key());
         }
     }
@@ -139,7 +152,7 @@ QStringList DeviceParameters::pendingNames(const QString& group) const
     for (const ParameterMeta& m : profile().parameters) {
         const auto it = m_entries.constFind(m.name);
         if (it != m_entries.cend() &&
-            (it->state == State::Pending ||
+            (it->state == State::Pending || it->state == State::Invalid ||
              (it->state == State::Failed && !it->pendingText.isEmpty())) &&
             (group.isEmpty() || m.group == group))
             names << m.name;
@@ -150,11 +163,53 @@ QStringList DeviceParameters::pendingNames(const QString& group) const
 bool DeviceParameters::hasPending() const
 {
     for (const Entry& e : m_entries) {
-        if (e.state == State::Pending || e.state == State::Writing ||
+        if (e.state == State::Pending || e.state == State::Writing || e.state == State::Invalid ||
             (e.state == State::Failed && !e.pendingText.isEmpty()))
             return true;
     }
     return false;
+}
+
+QStringList DeviceParameters::invalidNames(const QStringList& names) const
+{
+    QStringList invalid;
+    for (const ParameterMeta& m : profile().parameters) {
+        const auto it = m_entries.constFind(m.name);
+        if (it != m_entries.cend() && it->state == State::Invalid &&
+            (names.isEmpty() || names.contains(m.name)))
+            invalid << m.name;
+    }
+    return invalid;
+}
+
+QString DeviceParameters::problemText(const QString& name) const
+{
+    const Entry* e = entry(name);
+    return e ? withoutName(name, e->message) : QString();
+}
+
+QString DeviceParameters::withoutName(const QString& name, const QString& message) const
+{
+    const Entry* e = entry(name);
+    if (!e)
+        return message;
+    // Messages start with the parameter's name as the session names it ("SPno2 speed: …").
+    QString text = message;
+    for (const QString& prefix : {m_session->nameFor(name), name, e->meta->label}) {
+        if (text.startsWith(prefix + QStringLiteral(": "))) {
+            text = text.mid(prefix.size() + 2);
+            break;
+        }
+    }
+    return text;
+}
+
+QStringList DeviceParameters::invalidSummary(const QStringList& names) const
+{
+    QStringList lines;
+    for (const QString& n : invalidNames(names))
+        lines << tr("%1: %2").arg(entry(n)->meta->label, problemText(n));
+    return lines;
 }
 
 QStringList DeviceParameters::orderForWrite(QStringList names) const
@@ -191,6 +246,12 @@ void DeviceParameters::write(const QStringList& names, std::function<void(int fa
     for (const QString& n : names.isEmpty() ? pending : names) {
         if (pending.contains(n))
             wanted << n;
+    }
+    const QStringList invalid = invalidNames(wanted);
+    if (!invalid.isEmpty()) { // all or nothing: a page is not written with a field left out
+        if (state->done)
+            state->done(int(invalid.size()));
+        return;
     }
     state->queue = orderForWrite(wanted);
     for (const QString& n : state->queue) {

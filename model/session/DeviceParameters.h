@@ -27,6 +27,8 @@ public:
         Pending, // edited, not written
         Writing, // on its way
         Failed,  // the last write failed or read back differently (message says why)
+        Invalid, // edited, but the text is refused (message says what is allowed); it is kept
+                 // so that it can be corrected or reverted, and nothing is written while it is
     };
 
     struct Entry
@@ -50,15 +52,26 @@ public:
 
     // User path. Validates `text` against the profile with the values other parameters will
     // have once pending edits are written; returns the refusal (naming the allowed values),
-    // empty when accepted. Nothing is sent.
+    // empty when accepted. A refused text is kept as an Invalid edit. Nothing is sent.
     QString setPending(const QString& name, const QString& text);
     void revert(const QString& name);
     void revertAll();
+    // Edits not yet written: pending, failed with an edit kept, or invalid.
     QStringList pendingNames(const QString& group = QString()) const;
-    // Edits not yet confirmed on the drive: pending, being written, or failed.
+    // Edits not yet confirmed on the drive: pending, being written, failed or invalid.
     bool hasPending() const;
+    // The edits among `names` (all when empty) that are refused, in profile order.
+    QStringList invalidNames(const QStringList& names = {}) const;
+    // What is wrong with the invalid edits among `names`, one line each, named by label:
+    // "SPno2 speed: 5000 r/min is not allowed; allowed: 0 or 250–3000 r/min".
+    QStringList invalidSummary(const QStringList& names = {}) const;
+    // A refusal without the parameter's own name in front, for showing at its field.
+    QString problemText(const QString& name) const;
+    // `message` about `name` without the name in front.
+    QString withoutName(const QString& name, const QString& message) const;
     // Writes the pending edits among `names` (all when empty) in dependency order: what
-    // others' allowed values depend on goes first. `done` gets the number that failed.
+    // others' allowed values depend on goes first. `done` gets the number that failed. When
+    // any of them is invalid nothing at all is written and `done` gets the number invalid.
     void write(const QStringList& names, std::function<void(int failed)> done = {});
 
     // The device value formatted with its unit; empty before it was read.

@@ -54,7 +54,15 @@ ValueContext DeviceSession::context() const
             return std::nullopt;
         return qint64(ValueCodec::registersToRaw(*meta, it.value()));
     };
+    if (m_labelsInMessages)
+        c.displayName = [this](const QString& name) { return nameFor(name); };
     return c;
+}
+
+QString DeviceSession::nameFor(const QString& parameter) const
+{
+    const ParameterMeta* meta = m_labelsInMessages ? m_profile.parameter(parameter) : nullptr;
+    return meta && !meta->label.isEmpty() ? meta->label : parameter;
 }
 
 ParamValue DeviceSession::cachedValue(const QString& name) const
@@ -191,7 +199,8 @@ void DeviceSession::ensureControllingValues(const ParameterMeta& meta,
         // Read what the allowed values depend on first, then try again.
         read(controlling, [this, &meta, then](const Outcome& o) {
             if (!o.ok) {
-                then(tr("cannot check the value: reading %1 failed: %2").arg(o.parameter, o.error));
+                then(tr("cannot check the value: reading %1 failed: %2")
+                         .arg(nameFor(o.parameter), o.error));
                 return;
             }
             ensureControllingValues(meta, then);
@@ -207,14 +216,14 @@ void DeviceSession::write(const QString& name, const QString& text, const WriteO
     Outcome outcome;
     const ParameterMeta* meta = lookup(name, &outcome);
     if (meta && !meta->isWritable())
-        outcome.error = tr("%1 is read-only").arg(name);
+        outcome.error = tr("%1 is read-only").arg(nameFor(name));
     if (!outcome.error.isEmpty()) {
         done(outcome);
         return;
     }
     if (!meta->safety.isEmpty() && !options.explicitCommand) {
         outcome.error = tr("%1 is a %2 command; it is only sent when explicitly requested")
-                            .arg(name, meta->safety);
+                            .arg(nameFor(name), meta->safety);
         done(outcome);
         return;
     }
@@ -264,7 +273,7 @@ void DeviceSession::ensureCached(QStringList names, std::function<void(QString)>
     const QString name = names.takeFirst();
     read(name, [this, names, then](const Outcome& o) {
         if (!o.ok && !m_cache.contains(o.parameter)) {
-            then(tr("reading %1 failed: %2").arg(o.parameter, o.error));
+            then(tr("reading %1 failed: %2").arg(nameFor(o.parameter), o.error));
             return;
         }
         ensureCached(names, then);

@@ -66,6 +66,11 @@ public:
     int slave() const { return m_slave; }
     QString variant() const { return m_variant; }
     void setVariant(const QString& variant) { m_variant = variant; }
+    // Whether messages name parameters by the profile's label (the program's windows) or by the
+    // internal name the command line types (the default).
+    void setLabelsInMessages(bool labels) { m_labelsInMessages = labels; }
+    // A parameter as messages name it (see setLabelsInMessages).
+    QString nameFor(const QString& parameter) const;
     ModbusClient* client() const { return m_client; }
 
     // The variant and the cached raw values other parameters' allowed sets depend on.
@@ -106,6 +111,7 @@ private:
     const Profile& m_profile;
     int m_slave;
     QString m_variant;
+    bool m_labelsInMessages = false;
     QHash<QString, QVector<quint16>> m_cache;
 };
 

@@ -213,7 +213,10 @@ void AlarmsPage::showReport(const AlarmHistory::Report& report)
         fillTable(which, historyOf(report, which));
     m_detail->setText(tr("Select a record to see its cause and remedy."));
 
-    const QString parameter = report.commErrorParameter;
+    // Named by its label: users never see internal parameter names.
+    const QString parameter = report.commErrorParameter.isEmpty()
+                                  ? QString()
+                                  : m_session->nameFor(report.commErrorParameter);
     if (parameter.isEmpty())
         m_commError->setText(tr("This drive has no communication error register."));
     else if (!report.commErrorCode)

@@ -22,8 +22,6 @@ namespace opentop {
 
 namespace {
 
-constexpr int kDisplayDigits = 5; // the DBU panel's speed display
-
 QGroupBox* group(const QString& title, QFormLayout** form)
 {
     auto* box = new QGroupBox(title);
@@ -37,7 +35,6 @@ QGroupBox* group(const QString& title, QFormLayout** form)
 SpeedUnitsPage::SpeedUnitsPage(DeviceParameters* parameters, QWidget* parent)
     : ParameterPage(parameters, tr("Speed display"), parent)
     , m_names(SpeedDisplay::Names::withPrefix())
-    , m_timeDiameterUnit(new QLabel)
     , m_distanceUnit(new QLabel)
     , m_speed(new QSpinBox)
     , m_direction(new QComboBox)
@@ -58,15 +55,15 @@ SpeedUnitsPage::SpeedUnitsPage(DeviceParameters* parameters, QWidget* parent)
     addRow(form, m_names.increase, tr("&Increasing ratio:"));
     grid->addWidget(unitBox, 0, 0);
 
-    // The manual does not say in which unit diameters are entered; OpenTOP takes the unit of
-    // the display (docs/speed-display.md), so it is shown beside each of them.
+    // The manual does not say in which unit diameters are entered; OpenTOP takes millimetres
+    // (docs/errata.md DBU-23), shown at each field from the profile.
     QGroupBox* linearBox = group(tr("Linear speed"), &form);
-    addRow(form, m_names.diameterYard, tr("Roller diameter for &yd/min:"), new QLabel(tr("yd")));
-    addRow(form, m_names.diameterMeter, tr("Roller diameter for &m/min:"), new QLabel(tr("m")));
+    addRow(form, m_names.diameterYard, tr("Roller diameter for &yd/min:"));
+    addRow(form, m_names.diameterMeter, tr("Roller diameter for &m/min:"));
     grid->addWidget(linearBox, 1, 0);
 
     QGroupBox* timeBox = group(tr("Time for a distance"), &form);
-    addRow(form, m_names.timeDiameter, tr("Roller &diameter:"), m_timeDiameterUnit);
+    addRow(form, m_names.timeDiameter, tr("Roller &diameter:"));
     addRow(form, m_names.distance, tr("Dis&tance:"), m_distanceUnit);
     addRow(form, m_names.distanceUnit, tr("Distance u&nit:"));
     addRow(form, m_names.timeUnit, tr("Time &format (min = m:ss):"));
@@ -212,9 +209,8 @@ void SpeedUnitsPage::updateEnabled()
         if (QLabel* unit = m_labels.value(it.key() + QStringLiteral("#unit")))
             unit->setEnabled(on);
     }
-    // Time diameter and distance are in the distance unit (docs/speed-display.md).
+    // The distance is in the distance unit (docs/speed-display.md).
     const bool yards = valueAsWritten(m_names.distanceUnit).value_or(0) == 1;
-    m_timeDiameterUnit->setText(yards ? tr("yd") : tr("m"));
     m_distanceUnit->setText(yards ? tr("yd") : tr("m"));
 }
 
@@ -241,7 +237,11 @@ void SpeedUnitsPage::updatePreview()
     const double rpm = m_direction->currentIndex() == 1 ? -m_speed->value() : m_speed->value();
     QString error;
     const std::optional<SpeedDisplay> display = SpeedDisplay::fromValues(
-        m_names, [this](const QString& n) { return valueAsWritten(n); }, &error);
+        m_names, [this](const QString& n) { return valueAsWritten(n); }, &error,
+        [this](const QString& n) {
+            const DeviceParameters::Entry* e = parameters()->entry(n);
+            return e ? e->meta->label : n;
+        });
     if (!display) {
         m_display->setText(QStringLiteral("-----"));
         m_displayUnit->clear();
@@ -250,9 +250,9 @@ void SpeedUnitsPage::updatePreview()
         return;
     }
     const SpeedDisplay::Shown shown = display->show(rpm);
-    m_display->setText(shown.text);
+    m_display->setText(shown.panel); // what the 5-digit panel shows, as the monitor's mirror
     m_displayUnit->setText(shown.unit);
-    m_display->setAccessibleName(tr("Drive shows %1 %2").arg(shown.text, shown.unit));
+    m_display->setAccessibleName(tr("Drive shows %1 %2").arg(shown.panel, shown.unit));
     QStringList notes;
     const int section = SpeedDisplay::section(rpm);
     if (section >= 0)
@@ -260,13 +260,14 @@ void SpeedUnitsPage::updatePreview()
                      .arg(section)
                      .arg(display->settings().corrections[section])
                      .arg(ValueCodec::formatNumber(display->shaftRpm(rpm), 2));
-    int digits = 0;
-    for (const QChar c : shown.text)
-        digits += c.isDigit() ? 1 : 0;
-    if (digits > kDisplayDigits)
-        notes << tr("%1 digits do not fit the drive's %2-digit display; fewer decimals may.")
-                     .arg(digits)
-                     .arg(kDisplayDigits);
+    if (shown.overflow)
+        notes << tr("%1 has more digits than the drive's %2-digit display can show.")
+                     .arg(shown.text)
+                     .arg(SpeedDisplay::kPanelDigits);
+    else if (shown.panel != shown.text)
+        notes << tr("Computed %1 %2; the %3-digit display drops the decimals that do not fit.")
+                     .arg(shown.text, shown.unit)
+                     .arg(SpeedDisplay::kPanelDigits);
     const QStringList pending = parameters()->pendingNames();
     const bool edited = std::any_of(m_parameterNames.cbegin(), m_parameterNames.cend(),
                                     [&pending](const QString& n) { return pending.contains(n); });

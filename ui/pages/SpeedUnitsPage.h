@@ -30,7 +30,8 @@ public:
 
     // Preview input: motor speed in r/min (default 1500) and direction.
     void setPreviewSpeed(int rpm, bool reverse = false);
-    // What the preview shows: "150.000" and "r/min"; "-----" and no unit when not computable.
+    // What the preview shows, as the drive's 5-digit panel does (SpeedDisplay::panelText):
+    // "1500.0" and "r/min"; "-----" and no unit when not computable.
     QString previewText() const;
     QString previewUnit() const;
 
@@ -49,7 +50,6 @@ private:
     QHash<QString, ParameterField*> m_fields;
     QHash<QString, QLabel*> m_labels;
     QHash<QString, QVector<quint16>> m_typed; // accepted text typed but not yet confirmed
-    QLabel* m_timeDiameterUnit;
     QLabel* m_distanceUnit;
     QSpinBox* m_speed;
     QComboBox* m_direction;

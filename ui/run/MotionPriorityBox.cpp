@@ -57,7 +57,7 @@ void MotionPriorityBox::setCurrent(const QString& current)
            "input terminals no longer start or stop the motor, and the machine's own controls "
            "stay without effect until you switch back to \"%2\".")
             .arg(m_session->slave())
-            .arg(current, priority->name, wantedLabel()));
+            .arg(current, priority->label, wantedLabel()));
 }
 
 QString MotionPriorityBox::explanation() const

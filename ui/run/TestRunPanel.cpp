@@ -207,7 +207,7 @@ void TestRunPanel::refresh()
                 self->m_currentPriority.clear();
                 self->setMessage(tr("Cannot read %1 to check that the drive takes motion "
                                     "commands: %2")
-                                     .arg(priority->name, r.error),
+                                     .arg(priority->label, r.error),
                                  true);
             } else {
                 self->m_currentPriority =

@@ -146,6 +146,17 @@ void DriveWorkspace::writeAll()
 {
     if (!m_parameters || !m_parameters->hasPending())
         return;
+    const QStringList invalid = m_parameters->invalidNames();
+    if (!invalid.isEmpty()) { // the model writes nothing then; say which and show the first
+        m_status->setText(tr("Nothing was written: %1")
+                              .arg(m_parameters->invalidSummary(invalid).join(QLatin1Char(' '))));
+        for (int i = 0; i < m_tabs->count(); ++i) {
+            auto* page = qobject_cast<ParameterPage*>(m_tabs->widget(i));
+            if (page && page->parameterNames().contains(invalid.first()))
+                m_tabs->setCurrentIndex(i);
+        }
+        return;
+    }
     for (int i = 0; i < m_tabs->count(); ++i) {
         auto* page = qobject_cast<ParameterPage*>(m_tabs->widget(i));
         const QString blocker = page ? page->writeBlocker() : QString();

@@ -1,7 +1,9 @@
 #include "workspace/GroupPage.h"
 
+#include "profile/RoleEvaluator.h"
 #include "session/DeviceParameters.h"
 #include "workspace/ParameterField.h"
+#include "workspace/ParameterInitBox.h"
 
 #include <QFormLayout>
 #include <QLabel>
@@ -43,6 +45,11 @@ GroupPage::GroupPage(DeviceParameters* parameters, const ProfileGroup& group, QW
         m_names << meta->name;
         m_fields.insert(meta->name, field);
     }
+    // The page of the group that holds the drive's parameter initialisation offers it.
+    const ParameterMeta* init =
+        RoleEvaluator::parameter(parameters->profile(), QStringLiteral("parameterInit"));
+    if (init && init->group == group.id && ParameterInitBox::supported(parameters))
+        form->addRow(new ParameterInitBox(parameters, inner));
     scroll->setWidget(inner);
     outer->addWidget(scroll, 1);
 }

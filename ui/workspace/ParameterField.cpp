@@ -8,6 +8,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QVBoxLayout>
 
 namespace opentop {
 
@@ -41,9 +42,19 @@ ParameterField::ParameterField(DeviceParameters* parameters, const QString& name
     , m_parameters(parameters)
     , m_name(name)
     , m_unit(new QLabel(this))
+    , m_message(new QLabel(this))
 {
-    auto* layout = new QHBoxLayout(this);
-    layout->setContentsMargins(0, 0, 0, 0);
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    outer->setSpacing(2);
+    auto* layout = new QHBoxLayout;
+    outer->addLayout(layout);
+    m_message->setObjectName(name + QStringLiteral("#message"));
+    m_message->setWordWrap(true);
+    m_message->setStyleSheet(QStringLiteral("color: #b01c1c;"));
+    m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_message->hide();
+    outer->addWidget(m_message);
     const DeviceParameters::Entry* e = parameters->entry(name);
     const ParameterMeta& meta = *e->meta;
     const ValueSpec& spec = meta.specFor(parameters->session()->context());
@@ -101,7 +112,8 @@ void ParameterField::check(const QString& text)
 {
     const DeviceParameters::Entry* e = m_parameters->entry(m_name);
     const ValueCodec::Encoded encoded = ValueCodec::encodeText(*e->meta, text, context());
-    m_problem = text.trimmed().isEmpty() ? QString() : encoded.error;
+    m_problem =
+        text.trimmed().isEmpty() ? QString() : m_parameters->withoutName(m_name, encoded.error);
     applyStyle();
 }
 
@@ -109,8 +121,17 @@ void ParameterField::commit(const QString& text)
 {
     if (m_syncing || text.trimmed().isEmpty())
         return;
-    m_problem = m_parameters->setPending(m_name, text);
-    applyStyle(); // the field keeps the refused text so the user can correct it
+    m_problem.clear(); // the model has the edit now, accepted or refused (kept as invalid)
+    m_parameters->setPending(m_name, text);
+    applyStyle(); // the field keeps a refused text so the user can correct or revert it
+}
+
+QString ParameterField::problem() const
+{
+    if (!m_problem.isEmpty())
+        return m_problem;
+    const DeviceParameters::Entry* e = m_parameters->entry(m_name);
+    return e->message.isEmpty() ? QString() : m_parameters->problemText(m_name);
 }
 
 void ParameterField::sync()
@@ -123,6 +144,7 @@ void ParameterField::sync()
     m_unit->setText(spec.unit);
     m_unit->setVisible(!spec.unit.isEmpty());
     const bool pending = e->state == DeviceParameters::State::Pending ||
+                         e->state == DeviceParameters::State::Invalid ||
                          (e->state == DeviceParameters::State::Failed && !e->pendingText.isEmpty());
     if (m_combo) {
         // The options follow the context (the I/O functions of the current control mode).
@@ -142,6 +164,7 @@ void ParameterField::sync()
         }
         m_combo->setCurrentIndex(index);
     } else if (!m_edit->hasFocus() || !m_edit->isModified()) {
+        m_problem.clear(); // the text comes from the model again, and so does its problem
         if (pending) {
             m_edit->setText(e->pendingText);
         } else if (e->device.valid) {
@@ -155,8 +178,8 @@ void ParameterField::sync()
         m_edit->setPlaceholderText(e->device.valid ? QString() : tr("not read"));
     }
     m_syncing = false;
-    QString tip = QStringLiteral("<b>%1</b> (%2, %3)")
-                      .arg(meta.label.toHtmlEscaped(), meta.name, meta.addressText());
+    QString tip =
+        QStringLiteral("<b>%1</b> (%2)").arg(meta.label.toHtmlEscaped(), meta.addressText());
     if (!meta.help.isEmpty())
         tip += QStringLiteral("<br>") + meta.help.toHtmlEscaped();
     if (meta.isWritable())
@@ -168,7 +191,7 @@ void ParameterField::sync()
                    .arg(ValueCodec::format(meta, e->device, context).toHtmlEscaped());
     if (!e->message.isEmpty())
         tip += QStringLiteral("<br><span style='color:#b01c1c'>%1</span>")
-                   .arg(e->message.toHtmlEscaped());
+                   .arg(m_parameters->problemText(m_name).toHtmlEscaped());
     editor()->setToolTip(tip);
     applyStyle();
 }
@@ -177,16 +200,26 @@ void ParameterField::applyStyle()
 {
     const DeviceParameters::Entry* e = m_parameters->entry(m_name);
     QString style;
-    if (!m_problem.isEmpty() || e->state == DeviceParameters::State::Failed ||
-        !e->message.isEmpty())
+    const QString problem = this->problem();
+    if (!problem.isEmpty() || e->state == DeviceParameters::State::Failed ||
+        e->state == DeviceParameters::State::Invalid)
         style = QStringLiteral("border: 2px solid #c62828; background: #fdecea;");
     else if (e->state == DeviceParameters::State::Pending)
         style =
             QStringLiteral("border: 2px solid #ef8f00; background: #fff4de; font-weight: bold;");
     else if (e->state == DeviceParameters::State::Writing)
         style = QStringLiteral("border: 2px solid #1565c0;");
-    editor()->setStyleSheet(style);
-    editor()->setAccessibleDescription(m_problem.isEmpty() ? e->message : m_problem);
+    if (editor()->styleSheet() != style)
+        editor()->setStyleSheet(style);
+    editor()->setAccessibleDescription(problem);
+    // In words at the field, not only in a tooltip.
+    const QString message = problem.isEmpty() ? QString()
+                            : e->state == DeviceParameters::State::Invalid || !m_problem.isEmpty()
+                                ? tr("Not accepted: %1").arg(problem)
+                                : problem;
+    if (m_message->text() != message)
+        m_message->setText(message);
+    m_message->setVisible(!message.isEmpty());
     if (!m_problem.isEmpty())
         editor()->setToolTip(m_problem);
 }

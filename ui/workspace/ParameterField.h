@@ -15,9 +15,10 @@ class DeviceParameters;
 
 // One parameter as an input field: a drop-down for enumerations, a line edit for numbers and
 // text, with the unit beside it, help and allowed values in the tooltip. Input is checked as it
-// is typed (a refused value is marked red and says what is allowed) and becomes a pending edit
-// when accepted; pending, failed and read-only states are visible. Device values update the
-// field only while the user is not editing it.
+// is typed; a refused value is marked red and a message under the field says, in words, what
+// is allowed. A confirmed text becomes an edit of the model (pending, or invalid and kept so it
+// can be corrected or reverted); pending, failed and read-only states are visible. Device
+// values update the field only while the user is not editing it.
 class ParameterField : public QWidget
 {
     Q_OBJECT
@@ -28,8 +29,10 @@ public:
     QWidget* editor() const;
     // Shows the current device value / pending edit / state. Called on entryChanged.
     void sync();
-    // What the last typed text was refused for; empty when accepted.
-    QString problem() const { return m_problem; }
+    // What the text in the field is refused for (or why its write failed); empty when fine.
+    // It is also the text of the message under the field.
+    QString problem() const;
+    QLabel* messageLabel() const { return m_message; }
     // Programmatic input, as if typed and confirmed (tests, multi-field editors).
     void enter(const QString& text);
     // Where allowed values and drop-down options come from; by default the session's context
@@ -48,7 +51,8 @@ private:
     QComboBox* m_combo = nullptr;
     QLineEdit* m_edit = nullptr;
     QLabel* m_unit;
-    QString m_problem;
+    QLabel* m_message;
+    QString m_problem; // refusal of text being typed, before it is confirmed
     bool m_syncing = false;
     std::function<ValueContext()> m_contextProvider;
 };

@@ -1,6 +1,7 @@
 #include "workspace/ParameterPage.h"
 
 #include "session/DeviceParameters.h"
+#include "workspace/ParameterField.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
@@ -62,6 +63,11 @@ void ParameterPage::setStatus(const QString& text, bool error)
     m_status->setStyleSheet(error ? QStringLiteral("color: #b01c1c;") : QString());
 }
 
+QString ParameterPage::statusText() const
+{
+    return m_status->text();
+}
+
 void ParameterPage::updateButtons()
 {
     QStringList pending;
@@ -105,6 +111,22 @@ void ParameterPage::writePage()
     }
     if (pending.isEmpty())
         return;
+    // All or nothing: with a field not accepted, no field of the page is written.
+    const QStringList invalid = m_parameters->invalidNames(pending);
+    if (!invalid.isEmpty()) {
+        setStatus(
+            tr("Nothing was written: %n field(s) not accepted. %1", nullptr, int(invalid.size()))
+                .arg(m_parameters->invalidSummary(invalid).join(QLatin1Char(' '))),
+            true);
+        for (ParameterField* f : findChildren<ParameterField*>()) {
+            if (f->parameterName() == invalid.first() && f->isEnabled()) {
+                f->setFocus();
+                break;
+            }
+        }
+        emit operationFinished();
+        return;
+    }
     const QString blocker = writeBlocker();
     if (!blocker.isEmpty()) {
         setStatus(blocker, true); // nothing is sent

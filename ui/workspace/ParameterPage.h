@@ -25,10 +25,13 @@ public:
     // Every parameter this page shows (read on refresh, written by Write page).
     virtual QStringList parameterNames() const = 0;
 
-    void refresh();   // reads the page's parameters; pending edits stay
-    void writePage(); // writes the page's pending edits, verified
+    void refresh(); // reads the page's parameters; pending edits stay
+    // Writes the page's pending edits, verified; with any of them not accepted, writes nothing
+    // and says which and why in the status line (each field says it too).
+    void writePage();
     void revertPage();
     bool busy() const { return m_busy; }
+    QString statusText() const;
     // Why the page's edits must not be written as they are (e.g. terminals whose function is
     // not valid in the control mode being written); empty when they may.
     virtual QString writeBlocker() const { return QString(); }

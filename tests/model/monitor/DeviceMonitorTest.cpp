@@ -72,9 +72,10 @@ TEST_F(DeviceMonitorTest, SamplesCarryDecodedValuesAndRoles)
 TEST_F(DeviceMonitorTest, DisplayFollowsTheDrivesUnitSettingsAndDirection)
 {
     startBus(QStringLiteral("dbu200@1"));
-    // Linear speed in m/min, 1.0 m diameter, reduction 5.00: 500 r/min -> 100 r/min -> 314.159.
+    // Linear speed in m/min, 1000.0 mm diameter, reduction 5.00: 500 r/min -> 100 r/min ->
+    // 314.159.
     control(1, {QStringLiteral("set"), QStringLiteral("0x0409"), QStringLiteral("2")});
-    control(1, {QStringLiteral("set"), QStringLiteral("0x040F"), QStringLiteral("10")});
+    control(1, {QStringLiteral("set"), QStringLiteral("0x040F"), QStringLiteral("10000")});
     control(1, {QStringLiteral("set"), QStringLiteral("0x0404"), QStringLiteral("500")});
     // Running CCW in I/O priority: X1 = CCW/STOP, SPno1 at the Ext-VR's 500 r/min.
     control(1, {QStringLiteral("input"), QStringLiteral("2")});

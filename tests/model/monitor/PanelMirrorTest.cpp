@@ -67,8 +67,12 @@ TEST(PanelMirrorTest, RunningShowsWhatThePanelSettingChooses)
 TEST(PanelMirrorTest, DisplayUnitTextIsFittedToFiveDigits)
 {
     MonitorSample s = sample(true);
-    s.currentShown =
-        SpeedDisplay::Shown{true, 1500, QStringLiteral("1500.000"), QStringLiteral("r/min")};
+    // As SpeedDisplay computes it: the panel text comes from the same rule.
+    SpeedDisplay::Settings settings;
+    settings.decimals = 3;
+    s.currentShown = SpeedDisplay(settings).show(1500);
+    EXPECT_EQ(s.currentShown->text, QStringLiteral("1500.000"));
+    EXPECT_EQ(s.currentShown->panel, QStringLiteral("1500.0"));
     PanelMirror::Shown shown = PanelMirror::show(dbu(), s, PanelMirror::Content::Speed, {});
     EXPECT_EQ(shown.text, QStringLiteral("1500.0"));
     EXPECT_FALSE(shown.overflow);

@@ -73,17 +73,17 @@ TEST(SpeedDisplay, CorrectionsApplyBySpeedSection)
 
 TEST(SpeedDisplay, LinearSpeedIsShaftSpeedTimesCircumference)
 {
-    // 1500 / 5 = 300 r/min; 300 × π × 0.1 m = 94.2478 m/min.
+    // 1500 / 5 = 300 r/min; 300 × π × 100 mm = 94.2478 m/min.
     SpeedDisplay::Settings m = settings(SpeedDisplay::Mode::LinearMeter, 5, 1, 2);
-    m.diameterMeter = 0.1;
+    m.diameterMeter = 100;
     const SpeedDisplay::Shown meters = SpeedDisplay(m).show(1500);
     EXPECT_NEAR(meters.value, 94.2477796, 1e-6);
     EXPECT_EQ(meters.text, QStringLiteral("94.25"));
     EXPECT_EQ(meters.unit, QStringLiteral("m/min"));
 
-    // 250 × 2 = 500 r/min; 500 × π × 0.5 yd = 785.398 yd/min.
+    // 250 × 2 = 500 r/min; 500 × π × 457.2 mm (0.5 yd) = 785.398 yd/min.
     SpeedDisplay::Settings yd = settings(SpeedDisplay::Mode::LinearYard, 1, 2, 0);
-    yd.diameterYard = 0.5;
+    yd.diameterYard = 457.2;
     const SpeedDisplay::Shown yards = SpeedDisplay(yd).show(250);
     EXPECT_EQ(yards.text, QStringLiteral("785"));
     EXPECT_EQ(yards.unit, QStringLiteral("yd/min"));
@@ -94,9 +94,9 @@ TEST(SpeedDisplay, LinearSpeedIsShaftSpeedTimesCircumference)
 
 TEST(SpeedDisplay, TimeIsDistanceOverLinearSpeed)
 {
-    // 1000 / 10 = 100 r/min; 100 × π × 0.2 m = 62.832 m/min; 100 m take 1.5915 min = 95.49 s.
+    // 1000 / 10 = 100 r/min; 100 × π × 200 mm = 62.832 m/min; 100 m take 1.5915 min = 95.49 s.
     SpeedDisplay::Settings s = settings(SpeedDisplay::Mode::Time, 10, 1, 1);
-    s.timeDiameter = 0.2;
+    s.timeDiameter = 200;
     s.distance = 100;
     const SpeedDisplay::Shown minSec = SpeedDisplay(s).show(1000);
     EXPECT_TRUE(minSec.valid);
@@ -125,7 +125,7 @@ TEST(SpeedDisplay, BuiltFromTheParametersItIsGiven)
                                   {names.reduction, 5},
                                   {names.increase, 1},
                                   {names.decimals, 2},
-                                  {names.diameterMeter, 0.1}};
+                                  {names.diameterMeter, 100}};
     for (const QString& c : names.corrections)
         values.insert(c, 0);
     auto lookup = [&values](const QString& n) {
@@ -140,7 +140,7 @@ TEST(SpeedDisplay, BuiltFromTheParametersItIsGiven)
     values.remove(names.diameterMeter);
     EXPECT_FALSE(SpeedDisplay::fromValues(names, lookup, &error));
     EXPECT_TRUE(error.contains(names.diameterMeter)) << qPrintable(error);
-    values.insert(names.diameterMeter, 0.1);
+    values.insert(names.diameterMeter, 100);
     values.insert(names.mode, 7);
     EXPECT_FALSE(SpeedDisplay::fromValues(names, lookup, &error));
     values.insert(names.mode, 0);
@@ -155,4 +155,50 @@ TEST(SpeedDisplay, BuiltFromTheParametersItIsGiven)
     const ProfileRegistry& registry = ProfileRegistry::builtIn();
     EXPECT_TRUE(SpeedDisplay::supported(*registry.family(QStringLiteral("dbu"))));
     EXPECT_FALSE(SpeedDisplay::supported(*registry.family(QStringLiteral("dcpid"))));
+}
+
+TEST(SpeedDisplay, RollerDiametersAreInMillimetres)
+{
+    // A 50 mm roller behind no gear at 1500 r/min: 1500 × π × 0.05 m = 235.619 m/min.
+    SpeedDisplay::Settings m = settings(SpeedDisplay::Mode::LinearMeter, 1, 1, 3);
+    m.diameterMeter = 50;
+    EXPECT_NEAR(SpeedDisplay(m).show(1500).value, 235.6194, 1e-4);
+    // 100 mm: 471.239 m/min, a plausible belt speed (not 471,238.898 as if it were metres).
+    m.diameterMeter = 100;
+    EXPECT_NEAR(SpeedDisplay(m).show(1500).value, 471.2389, 1e-4);
+    // The same roller in yd/min: 471.239 m/min ÷ 0.9144 m/yd = 515.353 yd/min.
+    SpeedDisplay::Settings yd = settings(SpeedDisplay::Mode::LinearYard, 1, 1, 3);
+    yd.diameterYard = 100;
+    EXPECT_NEAR(SpeedDisplay(yd).show(1500).value, 515.3532, 1e-4);
+    // Time over 100 yd with a 100 mm roller at 150 r/min: 150 × π × 0.1 / 0.9144 = 51.535
+    // yd/min, so 1.9404 min = 1:56.
+    SpeedDisplay::Settings t = settings(SpeedDisplay::Mode::Time, 10, 1, 1);
+    t.timeDiameter = 100;
+    t.distance = 100;
+    t.distanceInYards = true;
+    EXPECT_EQ(SpeedDisplay(t).show(1500).text, QStringLiteral("1:56"));
+}
+
+TEST(SpeedDisplay, ThePanelShowsFiveDigits)
+{
+    // 1350 r/min with 3 decimals: computed 1350.000, the panel shows 1350.0 (the point takes
+    // no digit), as the monitor's panel mirror does.
+    SpeedDisplay::Settings s = settings(SpeedDisplay::Mode::Rpm, 1, 1, 3);
+    const SpeedDisplay::Shown shown = SpeedDisplay(s).show(1350);
+    EXPECT_EQ(shown.text, QStringLiteral("1350.000"));
+    EXPECT_EQ(shown.panel, QStringLiteral("1350.0"));
+    EXPECT_FALSE(shown.overflow);
+    // The minus takes a digit.
+    EXPECT_EQ(SpeedDisplay(s).show(-1350).panel, QStringLiteral("-1350"));
+    // What does not fit even without decimals is shown whole and marked.
+    s.increase = 24;
+    s.decimals = 0;
+    const SpeedDisplay::Shown big = SpeedDisplay(s).show(3000);
+    EXPECT_EQ(big.panel, QStringLiteral("72000"));
+    EXPECT_FALSE(big.overflow);
+    EXPECT_TRUE(SpeedDisplay(s).show(-3000).overflow); // -72000: six characters
+    bool overflow = false;
+    EXPECT_EQ(SpeedDisplay::panelText(QStringLiteral("471.239"), &overflow),
+              QStringLiteral("471.23"));
+    EXPECT_FALSE(overflow);
 }

@@ -68,6 +68,10 @@ TEST_F(DeviceParametersTest, InvalidEditsAreRefusedAndCommandsAreNoEdits)
     DeviceParameters params(session(150));
     const QString error = params.setPending(QStringLiteral("spno2.speed"), QStringLiteral("280"));
     EXPECT_TRUE(error.contains(QStringLiteral("0 or 300–3000 r/min"))) << qPrintable(error);
+    // A refused text is kept as an invalid edit (to correct or revert), never written.
+    EXPECT_EQ(params.entry(QStringLiteral("spno2.speed"))->state, DeviceParameters::State::Invalid);
+    EXPECT_EQ(params.invalidNames(), QStringList{QStringLiteral("spno2.speed")});
+    params.revert(QStringLiteral("spno2.speed"));
     EXPECT_FALSE(params.hasPending());
     EXPECT_FALSE(params.setPending(QStringLiteral("run.start"), QStringLiteral("START")).isEmpty());
     EXPECT_FALSE(params.setPending(QStringLiteral("status.load"), QStringLiteral("5")).isEmpty());
@@ -105,6 +109,46 @@ TEST_F(DeviceParametersTest, ModeChangeRevalidatesTerminalEditsAndIsWrittenFirst
     ASSERT_TRUE(
         params.setPending(QStringLiteral("core.control_mode"), QStringLiteral("Mode2")).isEmpty());
     EXPECT_FALSE(params.entry(QStringLiteral("io.x1"))->message.isEmpty());
+    EXPECT_EQ(params.entry(QStringLiteral("io.x1"))->state, DeviceParameters::State::Invalid);
+}
+
+TEST_F(DeviceParametersTest, AWriteWithAnInvalidEditSendsNothingAndSaysWhichByLabel)
+{
+    session(1)->setLabelsInMessages(true); // as the program's windows do
+    DeviceParameters params(session(1));
+    ASSERT_EQ(wait([&](auto done) { params.refresh({}, done); }), 0);
+    const int accelBefore = simGet(1, 0x1303);
+    ASSERT_TRUE(params.setPending(QStringLiteral("spno2.accel"), QStringLiteral("7.5")).isEmpty());
+    const QString error = params.setPending(QStringLiteral("spno2.speed"), QStringLiteral("5000"));
+    EXPECT_TRUE(error.startsWith(QStringLiteral("SPno2 speed: "))) << qPrintable(error);
+    EXPECT_EQ(params.problemText(QStringLiteral("spno2.speed")),
+              QStringLiteral("5000 r/min is not allowed; allowed: 0 or 250–3000 r/min"));
+    const QStringList summary = params.invalidSummary();
+    ASSERT_EQ(summary.size(), 1);
+    EXPECT_TRUE(summary.first().startsWith(QStringLiteral("SPno2 speed: 5000 r/min")))
+        << qPrintable(summary.first());
+    // All or nothing: the valid edit is not written either.
+    EXPECT_EQ(wait([&](auto done) { params.write({}, done); }), 1);
+    EXPECT_EQ(simGet(1, 0x1303), accelBefore);
+    EXPECT_EQ(params.entry(QStringLiteral("spno2.accel"))->state, DeviceParameters::State::Pending);
+    // Corrected, both are written.
+    ASSERT_TRUE(params.setPending(QStringLiteral("spno2.speed"), QStringLiteral("2000")).isEmpty());
+    EXPECT_TRUE(params.invalidNames().isEmpty());
+    EXPECT_EQ(wait([&](auto done) { params.write({}, done); }), 0);
+    EXPECT_EQ(simGet(1, 0x1303), 75);
+    EXPECT_EQ(simGet(1, 0xCA03), 2000);
+}
+
+TEST_F(DeviceParametersTest, AValueReadAfterAFailedReadIsNoLongerMarked)
+{
+    DeviceParameters params(session(1));
+    bus->setFaults(FaultInjector(*FaultInjector::parse(QStringLiteral("drop=1"), nullptr)));
+    EXPECT_GE(wait([&](auto done) { params.refresh({QStringLiteral("spno2.speed")}, done); }), 1);
+    EXPECT_FALSE(params.entry(QStringLiteral("spno2.speed"))->message.isEmpty());
+    bus->setFaults(FaultInjector());
+    EXPECT_EQ(wait([&](auto done) { params.refresh({QStringLiteral("spno2.speed")}, done); }), 0);
+    EXPECT_TRUE(params.entry(QStringLiteral("spno2.speed"))->message.isEmpty());
+    EXPECT_EQ(params.entry(QStringLiteral("spno2.speed"))->state, DeviceParameters::State::Clean);
 }
 
 TEST_F(DeviceParametersTest, AFailedWriteIsShownAtTheField)

@@ -101,24 +101,25 @@ TEST_F(SpeedUnitsPageTest, PreviewFollowsPendingEditsBeforeTheyAreWritten)
     const QHash<QString, double> edits = {{QStringLiteral("unit.mode"), 0},
                                           {QStringLiteral("unit.decimals"), 3},
                                           {QStringLiteral("unit.reduction"), 10}};
-    EXPECT_EQ(page->previewText(), expected(edits, 1500).text);
-    EXPECT_EQ(page->previewText(), QStringLiteral("150.000"));
+    EXPECT_EQ(page->previewText(), expected(edits, 1500).panel);
+    // 150.000 computed; the 5-digit panel shows 150.00.
+    EXPECT_EQ(page->previewText(), QStringLiteral("150.00"));
     EXPECT_EQ(page->previewUnit(), QStringLiteral("r/min"));
     page->setPreviewSpeed(1500, true);
-    EXPECT_EQ(page->previewText(), expected(edits, -1500).text);
+    EXPECT_EQ(page->previewText(), expected(edits, -1500).panel);
     EXPECT_TRUE(page->previewText().startsWith(QLatin1Char('-')));
     EXPECT_EQ(writesSent(), writesBefore); // a preview never writes
 
     // Linear speed in m/min with a diameter: the page and SpeedDisplay agree.
     enter(QStringLiteral("unit.mode"), QStringLiteral("2"));
-    enter(QStringLiteral("unit.diameter_meter"), QStringLiteral("0.5"));
+    enter(QStringLiteral("unit.diameter_meter"), QStringLiteral("500")); // mm
     enter(QStringLiteral("unit.decimals"), QStringLiteral("2"));
     page->setPreviewSpeed(1200);
     const QHash<QString, double> linear = {{QStringLiteral("unit.mode"), 2},
                                            {QStringLiteral("unit.decimals"), 2},
                                            {QStringLiteral("unit.reduction"), 10},
-                                           {QStringLiteral("unit.diameter_meter"), 0.5}};
-    EXPECT_EQ(page->previewText(), expected(linear, 1200).text);
+                                           {QStringLiteral("unit.diameter_meter"), 500}};
+    EXPECT_EQ(page->previewText(), expected(linear, 1200).panel);
     EXPECT_EQ(page->previewUnit(), QStringLiteral("m/min"));
 
     // Typing, before Enter or Tab confirms the value, already moves the preview.
@@ -128,7 +129,7 @@ TEST_F(SpeedUnitsPageTest, PreviewFollowsPendingEditsBeforeTheyAreWritten)
     emit edit->textEdited(edit->text());
     QHash<QString, double> typed = linear;
     typed.insert(QStringLiteral("unit.reduction"), 20);
-    EXPECT_EQ(page->previewText(), expected(typed, 1200).text);
+    EXPECT_EQ(page->previewText(), expected(typed, 1200).panel);
 }
 
 TEST_F(SpeedUnitsPageTest, WrittenSettingsReachTheDriveAndThePreviewStays)
