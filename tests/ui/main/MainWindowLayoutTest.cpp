@@ -16,6 +16,7 @@
 #include <QHeaderView>
 #include <QMenuBar>
 #include <QScreen>
+#include <QTemporaryDir>
 
 using namespace opentop;
 using namespace opentop::test;
@@ -226,12 +227,28 @@ TEST_F(MainWindowLayoutTest, EveryPageDockAndDialogFitsALaptopScreen)
     }
     ASSERT_NE(compareDialog, nullptr);
     inspectDialog(compareDialog, QStringLiteral("compare dialog"));
-    // Backup and restore open after a file is chosen: made as their actions make them.
-    inspectDialog(new BackupDialog(window->drives(), ConnectionSettings(), window.get()),
-                  QStringLiteral("backup dialog"));
-    inspectDialog(new RestoreDialog(window->drives(), window.get()),
-                  QStringLiteral("restore dialog"));
-    inspectDialog(new BackupViewer(window.get()), QStringLiteral("backup viewer"));
+    // Backup and restore open after a file is chosen: made as their actions make them, and
+    // inspected with their work done (a backup of two drives, its restore preview, the file).
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("bus.json"));
+    auto* backup = new BackupDialog(window->drives(), ConnectionSettings(), window.get());
+    bool saved = false;
+    QObject::connect(backup, &BackupDialog::backupFinished, [&](bool ok) { saved = ok; });
+    backup->show();
+    backup->startBackup({1, 7}, file);
+    ASSERT_TRUE(waitFor([&] { return saved; }, 30000));
+    inspectDialog(backup, QStringLiteral("backup dialog, two drives saved"));
+    auto* restore = new RestoreDialog(window->drives(), window.get());
+    restore->show();
+    ASSERT_TRUE(restore->setPath(file));
+    bool previewed = false;
+    QObject::connect(restore, &RestoreDialog::previewFinished, [&] { previewed = true; });
+    restore->preview();
+    ASSERT_TRUE(waitFor([&] { return previewed; }, 30000));
+    inspectDialog(restore, QStringLiteral("restore dialog, preview"));
+    auto* viewer = new BackupViewer(window.get());
+    ASSERT_TRUE(viewer->open(file));
+    inspectDialog(viewer, QStringLiteral("backup viewer"));
     // The Help menu.
     for (const QString& name : {QStringLiteral("User guide"), QStringLiteral("Keyboard shortcuts"),
                                 QStringLiteral("About OpenTOP")}) {
