@@ -43,6 +43,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScreen>
+#include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
@@ -477,7 +478,12 @@ void MainWindow::showDrive(const QVector<int>& slaves)
     auto* run = new TestRunPanel(m_drives, info.slave, m_workspace->tabs());
     run->setMonitorHub(m_hub); // live state; the drive is polled (and trended) while shown
     run->setPollingActive(m_poller->isActive());
-    m_workspace->tabs()->addTab(run, tr("Test run"));
+    // Scrolls rather than raising the window's minimum height above a laptop's screen.
+    auto* runScroll = new QScrollArea(m_workspace->tabs());
+    runScroll->setFrameShape(QFrame::NoFrame);
+    runScroll->setWidgetResizable(true);
+    runScroll->setWidget(run);
+    m_workspace->tabs()->addTab(runScroll, tr("Test run"));
     auto* alarms = new AlarmsPage(m_drives->session(info.slave), m_workspace->tabs());
     m_workspace->tabs()->addTab(alarms, tr("Alarms"));
     // Live: raised, cleared and power-cycled alarms show without a click, as on the banner.
