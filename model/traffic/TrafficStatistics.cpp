@@ -2,6 +2,8 @@
 
 #include "ModbusResult.h"
 
+#include <QStringList>
+
 #include <algorithm>
 
 namespace opentop {
@@ -46,6 +48,30 @@ void TrafficStatistics::clear()
 QVector<int> TrafficStatistics::slaves() const
 {
     return QVector<int>(m_drives.keyBegin(), m_drives.keyEnd());
+}
+
+QVector<int> TrafficStatistics::unanswered() const
+{
+    QVector<int> silent;
+    for (const DriveTrafficStats& s : m_drives) {
+        if (s.slave != 0 && s.requests > 0 && s.replies == 0)
+            silent << s.slave;
+    }
+    return silent;
+}
+
+QString TrafficStatistics::rangesText(const QVector<int>& slaves)
+{
+    QStringList parts;
+    for (int i = 0; i < slaves.size();) {
+        int j = i;
+        while (j + 1 < slaves.size() && slaves[j + 1] == slaves[j] + 1)
+            ++j;
+        parts << (j == i ? QString::number(slaves[i])
+                         : QStringLiteral("%1–%2").arg(slaves[i]).arg(slaves[j]));
+        i = j + 1;
+    }
+    return parts.join(QStringLiteral(", "));
 }
 
 DriveTrafficStats TrafficStatistics::drive(int slave) const

@@ -34,6 +34,11 @@ public:
     void clear();
 
     QVector<int> slaves() const; // ascending
+    // Addresses asked that never answered (a scan's empty addresses, a drive gone), ascending;
+    // the broadcast address is never among them.
+    QVector<int> unanswered() const;
+    // `slaves` as ranges: "2–6, 8, 10–247".
+    static QString rangesText(const QVector<int>& slaves);
     DriveTrafficStats drive(int slave) const;
     DriveTrafficStats total() const;
 

@@ -1,10 +1,12 @@
-// GoogleTest entry point for widget tests: offscreen, set before the QApplication exists.
+// GoogleTest entry point for widget tests: offscreen, set before the QApplication exists, on a
+// laptop's 1366×768 screen (the smallest the program is made for).
 #include <QApplication>
 #include <gtest/gtest.h>
 
 int main(int argc, char** argv)
 {
-    qputenv("QT_QPA_PLATFORM", "offscreen");
+    qputenv("QT_QPA_PLATFORM", QByteArrayLiteral("offscreen:configfile=" OPENTOP_SOURCE_DIR
+                                                 "/tests/support/offscreen-laptop.json"));
     QApplication app(argc, argv);
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();

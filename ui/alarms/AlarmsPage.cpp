@@ -90,6 +90,7 @@ AlarmsPage::AlarmsPage(DeviceSession* session, QWidget* parent)
         table->setEditTriggers(QAbstractItemView::NoEditTriggers);
         table->verticalHeader()->hide();
         table->horizontalHeader()->setSectionResizeMode(ColName, QHeaderView::Stretch);
+        table->resizeColumnsToContents(); // empty: as wide as the headers, the name takes the rest
         m_tables[which] = table;
         connect(table, &QTableWidget::itemSelectionChanged, this,
                 [this, which] { showDetail(which); });
@@ -344,6 +345,7 @@ void AlarmsPage::fillTable(int which, const AlarmHistory::History* history)
             item->setData(Qt::UserRole, r.index);
             if (c == ColIndex)
                 item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            item->setToolTip(cells[c]); // shortened in a narrow column
             table->setItem(row, c, item);
         }
     }

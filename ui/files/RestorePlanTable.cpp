@@ -15,6 +15,7 @@ RestorePlanTable::RestorePlanTable(QWidget* parent)
     setEditTriggers(QAbstractItemView::NoEditTriggers);
     setSelectionBehavior(QAbstractItemView::SelectRows);
     horizontalHeader()->setStretchLastSection(true);
+    resizeColumnsToContents(); // before a plan is shown: the headers readable
 }
 
 QColor RestorePlanTable::changeColor()

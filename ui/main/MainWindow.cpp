@@ -15,6 +15,7 @@
 #include "connection/ConnectionDialog.h"
 #include "files/FileActions.h"
 #include "groups/GroupsView.h"
+#include "help/HelpActions.h"
 #include "monitor/MonitorHub.h"
 #include "monitor/MonitorPage.h"
 #include "pages/DcControllerPage.h"
@@ -38,11 +39,14 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QGuiApplication>
 #include <QHeaderView>
 #include <QItemSelectionModel>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScreen>
+#include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
@@ -51,6 +55,7 @@
 #include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace opentop {
 
@@ -101,6 +106,11 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
         addDockWidget(Qt::BottomDockWidgetArea, d);
         d->hide();
     }
+    // The bottom docks share one place as tabs: side by side they would not fit a laptop's
+    // width, and each still has the full width for its columns.
+    tabifyDockWidget(trafficDock, dock(QStringLiteral("overviewDock")));
+    tabifyDockWidget(trafficDock, dock(QStringLiteral("trendDock")));
+    tabifyDockWidget(trafficDock, dock(QStringLiteral("groupsDock")));
     m_linkLight->setObjectName(QStringLiteral("linkLight"));
     m_linkLight->setLed(DriveStatus::Led::Grey, tr("Not connected"));
     statusBar()->addPermanentWidget(m_linkLight);
@@ -110,8 +120,8 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     // is made per connection.
     new StopAllKeys([this] { return m_stopAll; }, this);
     QSettings settings;
-    if (!restoreGeometry(settings.value(QStringLiteral("mainWindow/geometry")).toByteArray()))
-        resize(1280, 800);
+    fitToScreen(
+        restoreGeometry(settings.value(QStringLiteral("mainWindow/geometry")).toByteArray()));
     restoreState(settings.value(QStringLiteral("mainWindow/state")).toByteArray());
     m_splitterState = settings.value(QStringLiteral("mainWindow/splitter")).toByteArray();
 }
@@ -119,6 +129,26 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
 MainWindow::~MainWindow()
 {
     teardown();
+}
+
+void MainWindow::fitToScreen(bool remembered)
+{
+    // Laptop first: never larger than the screen's available area (a 1366×768 screen has about
+    // 730 px for a window once its panel and the title bar are taken), and a remembered geometry
+    // from a larger screen is brought back onto this one.
+    const QRect available =
+        (screen() ? screen() : QGuiApplication::primaryScreen())->availableGeometry();
+    const QSize frame(8, 32); // the window manager's frame and title bar, before it tells
+    const QSize room = available.size() - frame;
+    QSize size = remembered ? this->size() : QSize(1280, 800);
+    size = size.boundedTo(room);
+    resize(size);
+    QPoint at = remembered ? pos() : available.topLeft();
+    at.setX(std::max(available.left(),
+                     std::min(at.x(), available.right() + 1 - size.width() - frame.width())));
+    at.setY(std::max(available.top(),
+                     std::min(at.y(), available.bottom() + 1 - size.height() - frame.height())));
+    move(at);
 }
 
 void MainWindow::buildActions()
@@ -179,6 +209,7 @@ void MainWindow::buildActions()
         a->setShortcut(key);
         view->addAction(a);
     }
+    new HelpActions(this, menuBar()->addMenu(tr("&Help")));
 }
 
 void MainWindow::teardown()
@@ -232,17 +263,83 @@ void MainWindow::teardown()
 void MainWindow::connectTo(const ConnectionSettings& settings,
                            const QHash<int, QString>& knownTypes)
 {
+    // A start confirmed for this bus says nothing about the next one.
+    TestRunPanel::forgetConfirmations();
+    dropCandidate();
+    QString error;
+    std::unique_ptr<ModbusClient> client = m_factory(settings, m_log.get(), &error);
+    if (!client) {
+        refuseConnection(settings, error);
+        return;
+    }
+    // A working connection stays until the new one is open: a mistyped port or a gateway that
+    // does not answer must not cost the bus one was working on. Reopening the same serial port
+    // (other settings) cannot wait: the port is ours until it is closed.
+    const bool samePort = m_connected && settings.kind == ConnectionSettings::Kind::Serial &&
+                          m_settings.kind == ConnectionSettings::Kind::Serial &&
+                          settings.port == m_settings.port;
+    if (m_connected && !samePort) {
+        m_candidate = std::move(client);
+        m_candidateSettings = settings;
+        m_candidateTypes = knownTypes;
+        setConnectionText(tr("Connecting to %1… (still connected to %2)")
+                              .arg(m_candidate->describe(), m_client->describe()),
+                          false);
+        connect(m_candidate.get(), &ModbusClient::opened, this,
+                [this](bool ok, const QString& why) {
+                    if (!ok) {
+                        const ConnectionSettings failed = m_candidateSettings;
+                        dropCandidate();
+                        refuseConnection(failed, why);
+                        return;
+                    }
+                    std::unique_ptr<ModbusClient> opened = std::move(m_candidate);
+                    disconnect(opened.get(), &ModbusClient::opened, this, nullptr);
+                    adopt(std::move(opened), m_candidateSettings, m_candidateTypes);
+                    onOpened(true, QString());
+                });
+        m_candidate->open();
+        return;
+    }
+    adopt(std::move(client), settings, knownTypes);
+    connect(m_client.get(), &ModbusClient::opened, this, &MainWindow::onOpened);
+    m_client->open();
+}
+
+void MainWindow::dropCandidate()
+{
+    if (!m_candidate)
+        return;
+    disconnect(m_candidate.get(), nullptr, this, nullptr);
+    // Possibly inside its own signal: deleted once that has returned.
+    m_candidate.release()->deleteLater();
+}
+
+void MainWindow::refuseConnection(const ConnectionSettings& settings, const QString& error)
+{
+    const QString why = ConnectionDialog::explainOpenError(settings, error);
+    if (m_connected && m_client) {
+        // The bus one was working on stays as it was.
+        setConnectionText(
+            tr("Connected: %1 (the new connection failed: %2)").arg(m_client->describe(), error),
+            true);
+        QMessageBox::warning(
+            this, tr("Cannot connect"),
+            tr("%1\n\nStill connected to %2; nothing was changed.").arg(why, m_client->describe()));
+        return;
+    }
+    setConnectionText(tr("Not connected: %1").arg(error), true);
+    QMessageBox::warning(this, tr("Cannot connect"), why);
+    emit connectionChanged(false);
+}
+
+void MainWindow::adopt(std::unique_ptr<ModbusClient> client, const ConnectionSettings& settings,
+                       const QHash<int, QString>& knownTypes)
+{
     teardown();
     m_settings = settings;
     m_knownTypes = knownTypes;
-    QString error;
-    m_client = m_factory(settings, m_log.get(), &error);
-    if (!m_client) {
-        setConnectionText(tr("Not connected: %1").arg(error), true);
-        QMessageBox::warning(this, tr("Cannot connect"), error);
-        emit connectionChanged(false);
-        return;
-    }
+    m_client = std::move(client);
     m_drives = new BusDrives(m_client.get(), ProfileRegistry::builtIn(), this);
     m_poller = new DriveStatusPoller(m_drives, this);
     m_groups = new BusGroupTracker(m_drives);
@@ -304,14 +401,18 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
         delete m_splitter->widget(0);
     m_splitter->insertWidget(0, m_panel);
     m_splitter->setStretchFactor(0, 0);
-    // The remembered division, or one where the bus list's columns fit.
+    // The remembered division, or one where the bus list shows its first columns up to the
+    // control priority (the rest scroll) and the drive's pages keep the most of a laptop's width.
     if (!m_splitter->restoreState(m_splitterState)) {
-        const int list = std::max(560, m_panel->view()->horizontalHeader()->length() + 24);
+        const QHeaderView* header = m_panel->view()->horizontalHeader();
+        const int priorityEnd = header->sectionPosition(BusListModel::Priority) +
+                                header->sectionSize(BusListModel::Priority);
+        const int list = std::clamp(priorityEnd + 40, 360, std::max(360, width() * 2 / 5));
         m_splitter->setSizes({list, std::max(600, width() - list)});
     }
     connect(m_panel, &BusPanel::selectionChanged, this, &MainWindow::showDrive);
-    connect(m_client.get(), &ModbusClient::opened, this, &MainWindow::onOpened);
     connect(m_client.get(), &ModbusClient::connectionLost, this, [this](const QString& lost) {
+        m_connected = false; // nothing to keep when another connection is tried
         setConnectionText(tr("Connection lost: %1").arg(lost), true);
         // Every live view greys at once, before the message is read.
         setLinkUp(false, tr("Connection lost: %1").arg(lost));
@@ -326,7 +427,6 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
                        ? tr("OpenTOP — SIMULATED BUS (no hardware) — %1").arg(m_client->describe())
                        : tr("OpenTOP — %1").arg(m_client->describe()));
     setConnectionText(tr("Connecting to %1…").arg(m_client->describe()), false);
-    m_client->open();
 }
 
 void MainWindow::setConnectionText(const QString& text, bool problem)
@@ -383,10 +483,7 @@ void MainWindow::onOpened(bool ok, const QString& error)
     setLinkUp(ok, ok ? tr("Connected: %1").arg(m_client->describe())
                      : tr("Not connected: %1").arg(error));
     if (!ok) {
-        setConnectionText(tr("Not connected: %1").arg(error), true);
-        QMessageBox::warning(this, tr("Cannot connect"),
-                             ConnectionDialog::explainOpenError(m_settings, error));
-        emit connectionChanged(false);
+        refuseConnection(m_settings, error);
         return;
     }
     setConnectionText(m_settings.kind == ConnectionSettings::Kind::Simulated
@@ -447,7 +544,12 @@ void MainWindow::showDrive(const QVector<int>& slaves)
     auto* run = new TestRunPanel(m_drives, info.slave, m_workspace->tabs());
     run->setMonitorHub(m_hub); // live state; the drive is polled (and trended) while shown
     run->setPollingActive(m_poller->isActive());
-    m_workspace->tabs()->addTab(run, tr("Test run"));
+    // Scrolls rather than raising the window's minimum height above a laptop's screen.
+    auto* runScroll = new QScrollArea(m_workspace->tabs());
+    runScroll->setFrameShape(QFrame::NoFrame);
+    runScroll->setWidgetResizable(true);
+    runScroll->setWidget(run);
+    m_workspace->tabs()->addTab(runScroll, tr("Test run"));
     auto* alarms = new AlarmsPage(m_drives->session(info.slave), m_workspace->tabs());
     m_workspace->tabs()->addTab(alarms, tr("Alarms"));
     // Live: raised, cleared and power-cycled alarms show without a click, as on the banner.

@@ -89,8 +89,17 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    // The default or remembered geometry, brought within the screen's available area.
+    void fitToScreen(bool remembered);
     void buildActions();
     void teardown();
+    // Makes `client` the window's connection (the old one closed) and builds its views; the
+    // client is opened by the caller, or already open.
+    void adopt(std::unique_ptr<ModbusClient> client, const ConnectionSettings& settings,
+               const QHash<int, QString>& knownTypes);
+    void dropCandidate();
+    // A connection that could not be made: says why, and whether the old one is kept.
+    void refuseConnection(const ConnectionSettings& settings, const QString& error);
     void onOpened(bool ok, const QString& error);
     // The connection state in the status bar: one shortened line, red when something is wrong.
     void setConnectionText(const QString& text, bool problem);
@@ -110,6 +119,10 @@ private:
     ConnectionSettings m_settings;
     QHash<int, QString> m_knownTypes;
     std::unique_ptr<ModbusClient> m_client;
+    // A connection being opened while the working one stays (connectTo()).
+    std::unique_ptr<ModbusClient> m_candidate;
+    ConnectionSettings m_candidateSettings;
+    QHash<int, QString> m_candidateTypes;
     bool m_connected = false;
     BusDrives* m_drives = nullptr;
     DriveStatusPoller* m_poller = nullptr;

@@ -46,7 +46,12 @@ void MonitorDetails::build(const MonitorSample& sample, const QStringList& shown
             if (lamps) {
                 auto* row = new TerminalLamps(*v.meta, this);
                 m_lamps.insert(v.meta->name, row);
-                m_form->addRow(v.meta->label + QLatin1Char(':'), row);
+                // Lamps under their caption, across the whole width: side by side as on the
+                // drive where it allows, wrapped onto more rows where not.
+                auto* caption = new QLabel(v.meta->label + QLatin1Char(':'), this);
+                caption->setBuddy(row);
+                m_form->addRow(caption);
+                m_form->addRow(row);
                 for (const QString& f : row->functionParameters())
                     row->setFunctionText(f, m_parameters->deviceText(f));
                 row->setStale(m_stale);

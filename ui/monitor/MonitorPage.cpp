@@ -24,9 +24,11 @@
 #include <QLocale>
 #include <QPointer>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSplitter>
 #include <QTime>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace opentop {
 
@@ -96,14 +98,23 @@ MonitorPage::MonitorPage(MonitorHub* hub, DeviceParameters* parameters, QWidget*
     connect(m_pause, &QPushButton::clicked, this, [this] { m_hub->setPaused(!m_hub->isPaused()); });
 
     auto* splitter = new QSplitter(Qt::Vertical, this);
-    auto* top = new QWidget(splitter);
+    // The values scroll when the chart below is given the height (a laptop's screen): they are
+    // never squeezed on top of each other.
+    auto* values = new QScrollArea(splitter);
+    values->setObjectName(QStringLiteral("monitorValues"));
+    values->setWidgetResizable(true);
+    values->setFrameShape(QFrame::NoFrame);
+    auto* top = new QWidget(values);
     auto* row = new QHBoxLayout(top);
     row->setContentsMargins(0, 0, 0, 0);
     row->addWidget(buildReadouts(), 3);
     row->addWidget(buildSide(), 2);
-    splitter->addWidget(top);
+    values->setWidget(top);
+    splitter->addWidget(values);
+    splitter->setChildrenCollapsible(false);
     splitter->addWidget(m_chart);
     splitter->setStretchFactor(1, 1);
+    m_splitter = splitter; // divided when first shown, at its height
     layout->addWidget(splitter, 1);
 
     m_chart->setSources(TrendDefaults::forDrive(parameters->profile(), m_slave));
@@ -162,6 +173,22 @@ void MonitorPage::showEvent(QShowEvent* event)
 {
     QWidget::showEvent(event);
     m_hub->watch(m_slave, this);
+    divide();
+}
+
+void MonitorPage::divide()
+{
+    // Once the values are all there (built at the first sample) and the page has its height:
+    // the values first, whole if they fit in three fifths (the lamps in sight on a laptop's
+    // screen), the chart the rest.
+    if (m_divided || !m_details->isBuilt() || !isVisible() || m_splitter->height() < 200)
+        return;
+    m_divided = true;
+    const int height = m_splitter->height();
+    const auto* values = static_cast<QScrollArea*>(m_splitter->widget(0));
+    const int wanted = values->widget()->sizeHint().height() + 4;
+    const int top = std::min(wanted, height * 3 / 5);
+    m_splitter->setSizes({top, height - top});
 }
 
 void MonitorPage::hideEvent(QHideEvent* event)
@@ -244,6 +271,7 @@ void MonitorPage::showSample(const MonitorSample& s)
                 large << m->name;
         }
         m_details->build(s, large);
+        QTimer::singleShot(0, this, &MonitorPage::divide); // once the new rows are laid out
     }
     m_last = s;
     ++m_samples;

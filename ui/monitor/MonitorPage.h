@@ -8,6 +8,7 @@
 
 class QComboBox;
 class QLabel;
+class QSplitter;
 class QPushButton;
 
 namespace opentop {
@@ -54,6 +55,8 @@ public:
 
 protected:
     void showEvent(QShowEvent* event) override;
+    // Divides the height between the values and the chart, once.
+    void divide();
     void hideEvent(QHideEvent* event) override;
 
 private:
@@ -83,6 +86,8 @@ private:
     TrendChart* m_chart;
     StaleLook* m_look = nullptr;
     QString m_lastError;
+    QSplitter* m_splitter = nullptr; // the values above, the chart below
+    bool m_divided = false;          // the splitter divided at its first showing
     std::optional<MonitorSample> m_last;
     int m_samples = 0;
     QTimer m_displayChanged; // the speed display settings were read or written again

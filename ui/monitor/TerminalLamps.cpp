@@ -5,6 +5,9 @@
 
 #include <QGridLayout>
 #include <QLabel>
+#include <QResizeEvent>
+#include <QVBoxLayout>
+#include <algorithm>
 #include <optional>
 
 namespace opentop {
@@ -33,41 +36,97 @@ bool TerminalLamps::isLampField(const QStringList& values)
 
 TerminalLamps::TerminalLamps(const ParameterMeta& meta, QWidget* parent)
     : QWidget(parent)
+    , m_grid(new QGridLayout(this))
 {
-    auto* grid = new QGridLayout(this);
-    grid->setContentsMargins(0, 0, 0, 0);
-    grid->setHorizontalSpacing(14);
-    grid->setVerticalSpacing(2);
+    m_grid->setContentsMargins(0, 0, 0, 0);
+    m_grid->setHorizontalSpacing(kSpacing);
+    m_grid->setVerticalSpacing(6);
     for (const BitField& f : meta.bits) {
         if (f.width != 1 || !isLampField(f.values))
             continue;
-        const int column = m_lamps.size();
+        // One cell per terminal: its name, the lamp, ON/OFF and what it is assigned to. The
+        // cells wrap onto more rows when the width does not hold them side by side.
+        auto* cell = new QWidget(this);
+        auto* column = new QVBoxLayout(cell);
+        column->setContentsMargins(0, 0, 0, 0);
+        column->setSpacing(2);
         Lamp lamp;
         lamp.bit = f.bit;
         lamp.name = f.label.isEmpty() ? f.name : f.label;
-        lamp.lamp = new QLabel(this);
-        lamp.state = new QLabel(this);
+        lamp.lamp = new QLabel(cell);
+        lamp.state = new QLabel(cell);
         lamp.function = f.function;
         lamp.appliesParam = f.appliesParam;
         lamp.appliesRaw = f.appliesRaw;
         lamp.lamp->setFixedSize(18, 18);
         lamp.lamp->setObjectName(QStringLiteral("lamp_%1").arg(f.name));
-        auto* name = new QLabel(lamp.name, this);
+        auto* name = new QLabel(lamp.name, cell);
         QFont bold = name->font();
         bold.setBold(true);
         name->setFont(bold);
-        grid->addWidget(name, 0, column, Qt::AlignHCenter);
-        grid->addWidget(lamp.lamp, 1, column, Qt::AlignHCenter);
-        grid->addWidget(lamp.state, 2, column, Qt::AlignHCenter);
+        column->addWidget(name, 0, Qt::AlignHCenter);
+        column->addWidget(lamp.lamp, 0, Qt::AlignHCenter);
+        column->addWidget(lamp.state, 0, Qt::AlignHCenter);
         if (!f.function.isEmpty()) {
-            lamp.functionLabel = new QLabel(this);
+            lamp.functionLabel = new QLabel(cell);
             lamp.functionLabel->setEnabled(false); // secondary: what the terminal is for
-            grid->addWidget(lamp.functionLabel, 3, column, Qt::AlignHCenter);
+            column->addWidget(lamp.functionLabel, 0, Qt::AlignHCenter);
         }
+        m_cells << cell;
         m_lamps << lamp;
     }
-    grid->setColumnStretch(m_lamps.size(), 1);
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
     setRaw(std::nullopt);
+    arrange(int(m_cells.size()));
+}
+
+int TerminalLamps::cellWidth() const
+{
+    int width = 0;
+    for (QWidget* cell : m_cells)
+        width = std::max(width, cell->sizeHint().width());
+    return width;
+}
+
+void TerminalLamps::arrange(int columns)
+{
+    columns = std::max(1, std::min(columns, int(m_cells.size())));
+    if (columns == m_columns)
+        return;
+    m_columns = columns;
+    for (QWidget* cell : m_cells)
+        m_grid->removeWidget(cell);
+    for (int i = 0; i < m_cells.size(); ++i)
+        m_grid->addWidget(m_cells[i], i / columns, i % columns, Qt::AlignTop);
+    const int cell = cellWidth(); // every terminal as wide: they line up as on the drive
+    for (int c = 0; c <= int(m_cells.size()); ++c) {
+        m_grid->setColumnStretch(c, c == columns ? 1 : 0);
+        m_grid->setColumnMinimumWidth(c, c < columns ? cell : 0);
+    }
+    updateGeometry();
+}
+
+QSize TerminalLamps::minimumSizeHint() const
+{
+    // One terminal across at least; as high as the rows the terminals take at this width (a
+    // resize that wraps them asks the parent for the height again).
+    return QSize(cellWidth(), m_grid->minimumSize().height());
+}
+
+QSize TerminalLamps::sizeHint() const
+{
+    // Every terminal side by side, as on the drive, where the width allows it.
+    const int count = int(m_cells.size());
+    if (count == 0)
+        return QSize(0, 0);
+    return QSize(count * cellWidth() + (count - 1) * kSpacing,
+                 m_cells.first()->sizeHint().height());
+}
+
+void TerminalLamps::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    arrange((width() + kSpacing) / (cellWidth() + kSpacing));
 }
 
 void TerminalLamps::setRaw(std::optional<double> raw)
@@ -157,6 +216,9 @@ void TerminalLamps::setFunctionText(const QString& parameter, const QString& tex
         if (l.function == parameter && l.functionLabel)
             l.functionLabel->setText(text);
     }
+    // A longer text widens every cell: fewer may fit side by side.
+    m_columns = 0;
+    arrange(width() > 0 ? (width() + kSpacing) / (cellWidth() + kSpacing) : int(m_cells.size()));
 }
 
 QString TerminalLamps::functionText(const QString& parameter) const

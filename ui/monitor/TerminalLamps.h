@@ -3,6 +3,7 @@
 #include <QWidget>
 #include <optional>
 
+class QGridLayout;
 class QLabel;
 
 namespace opentop {
@@ -11,7 +12,7 @@ struct ParameterMeta;
 
 // The ON/OFF fields of a bits parameter as lamps, e.g. the input terminals X0–X3 or outputs
 // Y0–Y1: a filled green lamp with "ON" or a hollow grey one with "OFF" under its name, so that
-// the state is never told by colour alone.
+// the state is never told by colour alone. The terminals wrap onto more rows on a narrow window.
 class TerminalLamps : public QWidget
 {
     Q_OBJECT
@@ -38,7 +39,19 @@ public:
     void setFunctionText(const QString& parameter, const QString& text);
     QString functionText(const QString& parameter) const;
 
+    QSize minimumSizeHint() const override;
+    QSize sizeHint() const override;
+    // Terminals side by side before they wrap onto another row.
+    int columns() const { return m_columns; }
+
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+
 private:
+    static constexpr int kSpacing = 14;
+    int cellWidth() const;
+    void arrange(int columns);
+
     struct Lamp
     {
         int bit = 0;
@@ -55,6 +68,9 @@ private:
     void paint();
     QVector<Lamp> m_lamps;
     bool m_stale = false;
+    QVector<QWidget*> m_cells;
+    QGridLayout* m_grid;
+    int m_columns = 0;
     std::optional<std::optional<double>> m_shown; // what the lamps show (nothing: not set yet)
 };
 

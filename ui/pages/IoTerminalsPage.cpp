@@ -209,7 +209,7 @@ void IoTerminalsPage::addTerminal(QGridLayout* grid, int row, const QString& pin
     label->setBuddy(f->editor());
     m_fields.insert(name, f);
     grid->addWidget(f, row, 2);
-    auto* description = new QLabel(box); // one line: the connector boxes widen instead
+    auto* description = wrapped(QString(), box); // wraps: the page fits a laptop's screen
     m_descriptions.insert(name, description);
     grid->addWidget(description, row + 1, 2);
     updateDescription(name);

@@ -20,8 +20,8 @@ public:
         Slave,
         Function,
         Bytes,
-        Meaning,
         Error,
+        Meaning, // last: it takes the width that is left
         ColumnCount
     };
     enum Role

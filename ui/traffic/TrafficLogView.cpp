@@ -88,8 +88,24 @@ TrafficLogView::TrafficLogView(TrafficLog* log, QWidget* parent)
     m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
     m_table->horizontalHeader()->setStretchLastSection(true);
-    m_table->setColumnWidth(TrafficLogModel::Bytes, 260);
-    m_table->setColumnWidth(TrafficLogModel::Meaning, 320);
+    // Short columns as wide as their header or contents; the meaning takes what is left (the
+    // whole line of a row is its tooltip).
+    const QFontMetrics metrics = m_table->fontMetrics();
+    const std::pair<int, QString> samples[] = {
+        {TrafficLogModel::Time, QStringLiteral("00:00:00.000")},
+        {TrafficLogModel::Direction, QStringLiteral("Tx")},
+        {TrafficLogModel::Slave, QStringLiteral("247")},
+        {TrafficLogModel::Function, QStringLiteral("83")}};
+    for (const auto& [column, sample] : samples) {
+        m_table->setColumnWidth(column,
+                                std::max(m_table->horizontalHeader()->sectionSizeHint(column),
+                                         metrics.horizontalAdvance(sample) + 16));
+    }
+    m_table->setColumnWidth(TrafficLogModel::Bytes,
+                            metrics.horizontalAdvance(QLatin1Char('0')) * 27);
+    m_table->setColumnWidth(TrafficLogModel::Error,
+                            metrics.horizontalAdvance(QLatin1Char('x')) * 18);
+    m_table->setTextElideMode(Qt::ElideRight);
 
     const QStringList statsHeaders = {tr("Drive"),         tr("Requests"),   tr("Replies"),
                                       tr("Timeouts"),      tr("CRC errors"), tr("Exceptions"),
@@ -229,10 +245,32 @@ void TrafficLogView::refresh()
     flush();
     if (!m_paused)
         m_table->scrollToBottom();
-    const QVector<int> slaves = m_statistics.slaves();
-    m_stats->setRowCount(int(slaves.size()));
-    for (int row = 0; row < slaves.size(); ++row) {
-        const DriveTrafficStats s = m_statistics.drive(slaves[row]);
+    // The addresses that never answered (a scan asks 247) in one line, not a row each; one or
+    // two (a drive gone quiet) keep rows of their own.
+    const QVector<int> silent = m_statistics.unanswered();
+    const bool summarise = silent.size() > 2;
+    QVector<int> slaves = m_statistics.slaves();
+    if (summarise)
+        slaves.removeIf([&silent](int s) { return silent.contains(s); });
+    m_stats->clearSpans();
+    m_stats->setRowCount(int(slaves.size()) + (summarise ? 1 : 0));
+    // The summary first: the statistics pane is small, and this is what a scan leaves.
+    const int first = summarise ? 1 : 0;
+    if (summarise) {
+        const int row = 0;
+        const QString ranges = TrafficStatistics::rangesText(silent);
+        // More than two: the plural is always right.
+        auto* item = cell(tr("%1 addresses did not answer: %2").arg(silent.size()).arg(ranges));
+        item->setTextAlignment(Qt::AlignLeft | Qt::AlignVCenter);
+        item->setToolTip(tr("No reply from machine numbers %1").arg(ranges));
+        m_stats->setItem(row, 0, item);
+        for (int column = 1; column < m_stats->columnCount(); ++column)
+            m_stats->setItem(row, column, cell(QString()));
+        m_stats->setSpan(row, 0, 1, m_stats->columnCount());
+    }
+    for (int i = 0; i < slaves.size(); ++i) {
+        const int row = first + int(i);
+        const DriveTrafficStats s = m_statistics.drive(slaves[i]);
         const QStringList texts = {s.slave == 0 ? tr("Broadcast") : QString::number(s.slave),
                                    QString::number(s.requests),
                                    QString::number(s.replies),

@@ -4,6 +4,7 @@
 #include "session/DeviceParameters.h"
 #include "session/DeviceSession.h"
 #include "workspace/GroupPage.h"
+#include "workspace/SideTabWidget.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
@@ -27,7 +28,7 @@ void DriveWorkspace::registerEditor(const QString& id, EditorFactory factory)
 DriveWorkspace::DriveWorkspace(QWidget* parent)
     : QWidget(parent)
     , m_title(new QLabel(this))
-    , m_tabs(new QTabWidget(this))
+    , m_tabs(new SideTabWidget(this))
     , m_status(new QLabel(this))
     , m_writeAll(new QPushButton(tr("Write &all pending"), this))
     , m_revertAll(new QPushButton(tr("Revert all"), this))
@@ -38,6 +39,7 @@ DriveWorkspace::DriveWorkspace(QWidget* parent)
     titleFont.setBold(true);
     titleFont.setPointSizeF(titleFont.pointSizeF() * 1.2);
     m_title->setFont(titleFont);
+    m_title->setWordWrap(true); // a long model name wraps rather than widening the window
     layout->addWidget(m_title);
     layout->addWidget(m_tabs, 1);
     auto* row = new QHBoxLayout;

@@ -8,6 +8,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -24,7 +25,14 @@ ParameterPage::ParameterPage(DeviceParameters* parameters, const QString& title,
     , m_reread(new QPushButton(tr("Re-&read"), this))
 {
     auto* layout = new QVBoxLayout(this);
-    layout->addWidget(m_content, 1);
+    // A page larger than the window scrolls, rather than making the window larger than a
+    // laptop's screen or squeezing its fields on top of each other.
+    auto* scroll = new QScrollArea(this);
+    scroll->setObjectName(QStringLiteral("pageScroll"));
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(m_content);
+    layout->addWidget(scroll, 1);
     auto* buttons = new QHBoxLayout;
     m_status->setWordWrap(true);
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);

@@ -89,3 +89,20 @@ TEST_F(TrafficStatisticsSimTest, CountsFaultsOnTheSimulatedBus)
     EXPECT_EQ(five.timeouts, 1);
     EXPECT_EQ(five.replies, 0);
 }
+
+TEST(TrafficStatisticsTest, AddressesThatNeverAnsweredAreListedAsRanges)
+{
+    using D = TrafficEntry::Direction;
+    TrafficStatistics stats;
+    for (int slave : {1, 2, 3, 5, 7, 8, 9}) {
+        stats.add(frame(D::Tx, slave, 3));
+        if (slave == 1 || slave == 7)
+            stats.add(frame(D::Rx, slave, 3, QString(), 4));
+        else
+            stats.add(frame(D::Event, slave, 3, modbusErrorName(ModbusError::Timeout)));
+    }
+    stats.add(frame(D::Tx, 0, 6)); // a broadcast gets no answer, and expects none
+    EXPECT_EQ(stats.unanswered(), (QVector<int>{2, 3, 5, 8, 9}));
+    EXPECT_EQ(TrafficStatistics::rangesText(stats.unanswered()), QStringLiteral("2–3, 5, 8–9"));
+    EXPECT_EQ(TrafficStatistics::rangesText({}), QString());
+}

@@ -3,6 +3,8 @@
 #include "MainWindowFixture.h"
 #include "bus/BusRecallBar.h"
 
+#include <QFile>
+
 using namespace opentop;
 using namespace opentop::test;
 
@@ -11,6 +13,26 @@ namespace {
 class MainWindowBusMemoryTest : public MainWindowFixture
 {
 protected:
+    // Settings of their own: other test processes running at the same time remember the same
+    // simulated bus in the shared test settings.
+    void SetUp() override
+    {
+        m_appName = QCoreApplication::applicationName();
+        QCoreApplication::setApplicationName(
+            QStringLiteral("busmemory-%1").arg(QCoreApplication::applicationPid()));
+        MainWindowFixture::SetUp();
+    }
+    void TearDown() override
+    {
+        window.reset();
+        QSettings settings;
+        settings.clear();
+        settings.sync();
+        QFile::remove(settings.fileName());
+        QCoreApplication::setApplicationName(m_appName);
+    }
+    QString m_appName;
+
     ConnectionSettings simulated() const
     {
         ConnectionSettings settings;
@@ -111,7 +133,7 @@ TEST_F(MainWindowBusMemoryTest, ASimulatedBusIsMarkedInTheWindowAndARealOneIsNot
     EXPECT_TRUE(waitFor([&] {
         return window->connectionLabel()->toolTip().contains(QStringLiteral("simulated"));
     }));
-    // A gateway (nothing listens there): no simulated marker.
+    // A gateway where nothing listens: the simulated bus stays, and so does its marker.
     ConnectionSettings tcp;
     tcp.kind = ConnectionSettings::Kind::Tcp;
     tcp.host = QStringLiteral("127.0.0.1");
@@ -124,6 +146,15 @@ TEST_F(MainWindowBusMemoryTest, ASimulatedBusIsMarkedInTheWindowAndARealOneIsNot
     });
     dismiss.start(20);
     window->connectTo(tcp);
-    EXPECT_FALSE(banner->isVisible());
-    EXPECT_FALSE(window->windowTitle().contains(QStringLiteral("SIMULATED")));
+    QTest::qWait(300);
+    EXPECT_TRUE(window->isConnected());
+    EXPECT_TRUE(banner->isVisible());
+    EXPECT_TRUE(window->windowTitle().contains(QStringLiteral("SIMULATED")));
+    // Before any connection (and on hardware) there is no marker.
+    MainWindow fresh([](const ConnectionSettings&, TrafficLog*, QString*) {
+        return std::unique_ptr<ModbusClient>();
+    });
+    fresh.show();
+    EXPECT_FALSE(fresh.simulatedBanner()->isVisible());
+    EXPECT_FALSE(fresh.windowTitle().contains(QStringLiteral("SIMULATED")));
 }

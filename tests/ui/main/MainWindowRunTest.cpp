@@ -23,16 +23,22 @@ namespace {
 // The drive's Test run page, made current (so that it is visible and watches its drive).
 TestRunPanel* showTestRun(MainWindow& window, int slave)
 {
+    QTabWidget* tabs = window.workspace()->tabs();
     TestRunPanel* panel = nullptr;
+    int tab = -1;
     waitFor([&] {
         for (TestRunPanel* p : window.findChildren<TestRunPanel*>()) {
-            if (p->slave() == slave && window.workspace()->tabs()->indexOf(p) >= 0)
-                panel = p;
+            for (int i = 0; i < tabs->count(); ++i) {
+                if (p->slave() == slave && tabs->widget(i)->isAncestorOf(p)) {
+                    panel = p;
+                    tab = i;
+                }
+            }
         }
         return panel != nullptr;
     });
     if (panel)
-        window.workspace()->tabs()->setCurrentWidget(panel);
+        tabs->setCurrentIndex(tab);
     return panel;
 }
 
@@ -101,8 +107,13 @@ TEST_F(MainWindowRunTest, ARunStartedFromTheTestRunPageIsInTheDrivesTrend)
             h ? h->find(QStringLiteral("status.current_speed")) : nullptr;
         return s && !s->points.isEmpty() && s->points.last().value > 0;
     }));
-    // Another tab: nothing watches the drive any more.
-    window->workspace()->tabs()->setCurrentIndex(window->workspace()->tabs()->count() - 1);
+    // A settings page (no live values): nothing watches the drive any more.
+    QTabWidget* tabs = window->workspace()->tabs();
+    for (int i = 0; i < tabs->count(); ++i) {
+        if (tabs->tabText(i).remove(QLatin1Char('&')).contains(QStringLiteral("Core parameters")))
+            tabs->setCurrentIndex(i);
+    }
+    ASSERT_TRUE(tabs->tabText(tabs->currentIndex()).contains(QStringLiteral("Core")));
     EXPECT_TRUE(waitFor([&] { return !window->monitorHub()->isWatched(1); }));
 }
 

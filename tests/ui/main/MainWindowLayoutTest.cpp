@@ -1,0 +1,269 @@
+// Laptop first (issue 10 item 13): the whole program on a 1366×768 screen. Every page of a DBU
+// and of the DC controller, every dock and every dialog the menus open is shown in turn and
+// inspected (LayoutInspector): nothing larger than the screen, nothing overlapping, no text cut.
+#include "LayoutInspector.h"
+#include "MainWindowFixture.h"
+#include "files/BackupDialog.h"
+#include "files/BackupViewer.h"
+#include "files/RestoreDialog.h"
+#include "help/AboutDialog.h"
+#include "help/ShortcutsDialog.h"
+#include "help/UserGuideDialog.h"
+
+#include <QAction>
+#include <QDialog>
+#include <QElapsedTimer>
+#include <QHeaderView>
+#include <QMenuBar>
+#include <QScreen>
+#include <QTemporaryDir>
+
+using namespace opentop;
+using namespace opentop::test;
+
+namespace {
+
+void settle(int ms = 120)
+{
+    QElapsedTimer timer;
+    timer.start();
+    while (timer.elapsed() < ms)
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+}
+
+std::string rect(const QRect& r)
+{
+    return QStringLiteral("%1,%2 %3×%4")
+        .arg(r.x())
+        .arg(r.y())
+        .arg(r.width())
+        .arg(r.height())
+        .toStdString();
+}
+
+QString plainText(QString text)
+{
+    text.remove(QLatin1Char('&'));
+    text.remove(QChar(0x2026));
+    return text;
+}
+
+} // namespace
+
+class MainWindowLayoutTest : public MainWindowFixture
+{
+protected:
+    void SetUp() override
+    {
+        MainWindowFixture::SetUp();
+        if (HasFatalFailure())
+            return;
+        screen = window->screen()->availableGeometry();
+        window->setGeometry(QRect(screen.topLeft(), QSize(1366, 768)));
+        settle();
+    }
+
+    // Records the problems of `top` under `where`.
+    void inspect(QWidget* top, const QString& where)
+    {
+        // Layouts settle over a few passes (a row that wraps asks its parent for more height):
+        // judged once they have, as the user sees them a moment later.
+        for (int pass = 0; pass < 5; ++pass) {
+            QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+            QCoreApplication::processEvents();
+        }
+        for (const QString& p : LayoutInspector::problems(top, screen))
+            problems << QStringLiteral("[%1] %2").arg(where, p);
+    }
+
+    QAction* action(const QString& text)
+    {
+        for (QAction* a : window->findChildren<QAction*>()) {
+            if (plainText(a->text()).trimmed() == text)
+                return a;
+        }
+        ADD_FAILURE() << "no action " << qPrintable(text);
+        return nullptr;
+    }
+
+    // Triggers `a`, which opens a modal dialog, inspects the dialog and closes it.
+    void inspectModal(QAction* a, const QString& where)
+    {
+        ASSERT_NE(a, nullptr);
+        bool seen = false;
+        QTimer poll;
+        poll.setInterval(30);
+        QObject::connect(&poll, &QTimer::timeout, [&] {
+            auto* dialog = qobject_cast<QDialog*>(QApplication::activeModalWidget());
+            if (!dialog || !dialog->isVisible())
+                return;
+            poll.stop();
+            settle();
+            inspect(dialog, where);
+            seen = true;
+            dialog->reject();
+        });
+        poll.start();
+        a->trigger();
+        poll.stop();
+        EXPECT_TRUE(seen) << qPrintable(where) << ": no dialog";
+    }
+
+    void inspectDialog(QDialog* dialog, const QString& where)
+    {
+        dialog->show();
+        settle();
+        inspect(dialog, where);
+        dialog->close();
+    }
+
+    // Every tab of the selected drive's workspace, each in front in turn.
+    void inspectPages(int slave, const QString& name)
+    {
+        select({slave});
+        DeviceParameters* params = window->drives()->parameters(slave);
+        ASSERT_NE(params, nullptr);
+        ASSERT_TRUE(waitFor([&] { return window->workspace()->drive() == params; }));
+        QTabWidget* tabs = window->workspace()->tabs();
+        settle(300); // the values read and shown
+        for (int i = 0; i < tabs->count(); ++i) {
+            tabs->setCurrentIndex(i);
+            settle();
+            inspect(window.get(), QStringLiteral("%1, page %2").arg(name, tabs->tabText(i)));
+        }
+        tabs->setCurrentIndex(0);
+    }
+
+    QString report() const
+    {
+        return QStringLiteral("%1 layout problem(s) at 1366×768:\n").arg(problems.size()) +
+               problems.join(QLatin1Char('\n'));
+    }
+
+    QRect screen;
+    QStringList problems;
+};
+
+TEST_F(MainWindowLayoutTest, TheDefaultWindowFitsTheScreen)
+{
+    // The offscreen screen is a laptop's (tests/support/offscreen-laptop.json).
+    ASSERT_EQ(screen.size(), QSize(1366, 768));
+    MainWindow fresh([](const ConnectionSettings&, TrafficLog*, QString*) {
+        return std::unique_ptr<ModbusClient>();
+    });
+    EXPECT_LE(fresh.frameGeometry().width(), screen.width());
+    EXPECT_LE(fresh.frameGeometry().height(), screen.height());
+    EXPECT_TRUE(screen.contains(fresh.frameGeometry())) << rect(fresh.frameGeometry());
+    // A geometry remembered on a larger screen is brought onto this one.
+    QMainWindow big;
+    big.setGeometry(100, 80, 1900, 1060);
+    QSettings().setValue(QStringLiteral("mainWindow/geometry"), big.saveGeometry());
+    MainWindow remembered([](const ConnectionSettings&, TrafficLog*, QString*) {
+        return std::unique_ptr<ModbusClient>();
+    });
+    EXPECT_TRUE(screen.contains(remembered.frameGeometry())) << rect(remembered.frameGeometry());
+}
+
+TEST_F(MainWindowLayoutTest, EveryPageDockAndDialogFitsALaptopScreen)
+{
+    ASSERT_EQ(screen.size(), QSize(1366, 768));
+    inspect(window.get(), QStringLiteral("after connecting"));
+    // The bus list shows which drive, its state and its control priority without scrolling.
+    QHeaderView* busHeader = window->busPanel()->view()->horizontalHeader();
+    for (int c : {int(BusListModel::MachineNumber), int(BusListModel::Model),
+                  int(BusListModel::State), int(BusListModel::Priority)}) {
+        EXPECT_FALSE(busHeader->isSectionHidden(c));
+        EXPECT_GE(busHeader->sectionViewportPosition(c), 0);
+        EXPECT_LE(busHeader->sectionViewportPosition(c) + busHeader->sectionSize(c),
+                  busHeader->viewport()->width())
+            << "bus list column "
+            << qPrintable(window->busPanel()->model()->headerData(c, Qt::Horizontal).toString());
+    }
+
+    inspectPages(1, QStringLiteral("DBU200 1"));
+    inspectPages(150, QStringLiteral("DBU400 150"));
+    inspectPages(7, QStringLiteral("DC controller 7"));
+    // A 1280×800 laptop's window, its panel and title bar taken.
+    window->setGeometry(QRect(screen.topLeft(), QSize(1280, 720)));
+    settle();
+    inspectPages(1, QStringLiteral("1280×720, DBU200 1"));
+    inspectPages(7, QStringLiteral("1280×720, DC controller 7"));
+    window->setGeometry(QRect(screen.topLeft(), QSize(1366, 768)));
+    settle();
+
+    // Each dock beside a drive's monitor, on its own, then all together.
+    select({1});
+    ASSERT_TRUE(
+        waitFor([&] { return window->workspace()->drive() == window->drives()->parameters(1); }));
+    window->workspace()->tabs()->setCurrentIndex(0);
+    const QList<QDockWidget*> docks = window->findChildren<QDockWidget*>();
+    ASSERT_GE(docks.size(), 3);
+    for (QDockWidget* dock : docks) {
+        dock->show();
+        settle(300);
+        inspect(window.get(), QStringLiteral("dock %1 open").arg(dock->windowTitle()));
+        dock->hide();
+    }
+    window->monitorAll();
+    window->findChild<QDockWidget*>(QStringLiteral("trafficDock"))->show();
+    settle(300);
+    inspect(window.get(), QStringLiteral("all docks open"));
+    for (QDockWidget* dock : docks)
+        dock->hide();
+    settle();
+
+    // The dialogs of the menus, as the menus open them.
+    inspectModal(action(QStringLiteral("Connect")), QStringLiteral("connection dialog"));
+    select({1, 2});
+    settle();
+    inspectModal(action(QStringLiteral("Write a setting to the selected drives")),
+                 QStringLiteral("multi-drive write dialog"));
+    action(QStringLiteral("Compare"))->trigger();
+    settle();
+    QDialog* compareDialog = nullptr;
+    for (QDialog* d : window->findChildren<QDialog*>(QString(), Qt::FindDirectChildrenOnly)) {
+        if (d->inherits("opentop::CompareDialog") && d->isVisible())
+            compareDialog = d;
+    }
+    ASSERT_NE(compareDialog, nullptr);
+    inspectDialog(compareDialog, QStringLiteral("compare dialog"));
+    // Backup and restore open after a file is chosen: made as their actions make them, and
+    // inspected with their work done (a backup of two drives, its restore preview, the file).
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("bus.json"));
+    auto* backup = new BackupDialog(window->drives(), ConnectionSettings(), window.get());
+    bool saved = false;
+    QObject::connect(backup, &BackupDialog::backupFinished, [&](bool ok) { saved = ok; });
+    backup->show();
+    backup->startBackup({1, 7}, file);
+    ASSERT_TRUE(waitFor([&] { return saved; }, 30000));
+    inspectDialog(backup, QStringLiteral("backup dialog, two drives saved"));
+    auto* restore = new RestoreDialog(window->drives(), window.get());
+    restore->show();
+    ASSERT_TRUE(restore->setPath(file));
+    bool previewed = false;
+    QObject::connect(restore, &RestoreDialog::previewFinished, [&] { previewed = true; });
+    restore->preview();
+    ASSERT_TRUE(waitFor([&] { return previewed; }, 30000));
+    inspectDialog(restore, QStringLiteral("restore dialog, preview"));
+    auto* viewer = new BackupViewer(window.get());
+    ASSERT_TRUE(viewer->open(file));
+    inspectDialog(viewer, QStringLiteral("backup viewer"));
+    // The Help menu.
+    for (const QString& name : {QStringLiteral("User guide"), QStringLiteral("Keyboard shortcuts"),
+                                QStringLiteral("About OpenTOP")}) {
+        QAction* a = action(name);
+        ASSERT_NE(a, nullptr);
+        a->trigger();
+        settle();
+        QDialog* shown = nullptr;
+        for (QDialog* d : window->findChildren<QDialog*>(QString(), Qt::FindDirectChildrenOnly)) {
+            if (d->isVisible())
+                shown = d;
+        }
+        ASSERT_NE(shown, nullptr) << qPrintable(name);
+        inspectDialog(shown, name);
+    }
+
+    EXPECT_TRUE(problems.isEmpty()) << qPrintable(report());
+}
