@@ -189,13 +189,11 @@ void GroupsView::rebuild()
             box->setValue(groups.groupOf(slave).value_or(0));
         }
     }
-    // Every row readable with its plan box; up to six rows without scrolling.
+    // Every row readable with its plan box; the table scrolls (a laptop's height is short).
     m_table->resizeRowsToContents();
-    int height = m_table->horizontalHeader()->sizeHint().height() + 2 * m_table->frameWidth();
-    for (int row = 0; row < std::min<int>(6, int(m_rows.size())); ++row)
-        height += m_table->rowHeight(row);
-    m_table->setMinimumHeight(
-        std::max(height, 3 * m_table->horizontalHeader()->sizeHint().height()));
+    m_table->setMinimumHeight(m_table->horizontalHeader()->sizeHint().height() +
+                              2 * m_table->frameWidth() +
+                              (m_rows.isEmpty() ? 0 : m_table->rowHeight(0)));
     m_problems->setText(problems.isEmpty()
                             ? tr("No problem found in the groups as read from the drives.")
                             : tr("Problems:") + QStringLiteral("\n• ") +

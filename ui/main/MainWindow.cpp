@@ -77,16 +77,14 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     m_splitter->setStretchFactor(1, 1);
     auto* column = new QVBoxLayout(m_central);
     column->setContentsMargins(0, 0, 0, 0);
-    // A simulated bus is unmistakable: a permanent banner (and the window title) say so.
+    // A simulated bus is unmistakable: a permanent coloured marker in the status bar (and the
+    // window title) say so; it costs no height on a laptop screen.
     m_simBanner->setObjectName(QStringLiteral("simulatedBanner"));
-    m_simBanner->setText(tr("SIMULATED BUS — no hardware: these drives exist only in this "
-                            "program, nothing moves"));
-    m_simBanner->setWordWrap(true);
-    m_simBanner->setAlignment(Qt::AlignCenter);
+    m_simBanner->setText(tr("SIMULATED BUS — no hardware"));
+    m_simBanner->setToolTip(tr("These drives exist only in this program; nothing moves."));
     m_simBanner->setStyleSheet(QStringLiteral("background: #f9a825; color: black; "
-                                              "font-weight: bold; padding: 4px;"));
+                                              "font-weight: bold; padding: 0 8px;"));
     m_simBanner->hide();
-    column->addWidget(m_simBanner);
     column->addWidget(m_splitter, 1); // the alarm banner goes above it once connected
     setCentralWidget(m_central);
     // Every frame, decoded with parameter names, in a dock that can be shown or hidden.
@@ -113,6 +111,7 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     tabifyDockWidget(trafficDock, dock(QStringLiteral("groupsDock")));
     m_linkLight->setObjectName(QStringLiteral("linkLight"));
     m_linkLight->setLed(DriveStatus::Led::Grey, tr("Not connected"));
+    statusBar()->addPermanentWidget(m_simBanner);
     statusBar()->addPermanentWidget(m_linkLight);
     statusBar()->addPermanentWidget(m_connectionLabel);
     buildActions();
@@ -362,8 +361,6 @@ void MainWindow::adopt(std::unique_ptr<ModbusClient> client, const ConnectionSet
     m_recall = new BusRecallBar(m_drives, settings, knownTypes.isEmpty(), m_central);
     auto* column = static_cast<QVBoxLayout*>(m_central->layout());
     column->insertWidget(column->indexOf(m_splitter), m_recall);
-    column->removeWidget(m_simBanner); // the simulated marker stays on top
-    column->insertWidget(0, m_simBanner);
     connect(m_recall, &BusRecallBar::restoreRequested, this,
             [this](const QHash<int, QString>& types) {
                 m_knownTypes = types;

@@ -43,10 +43,16 @@ protected:
     }
 
     // Reconnects as the connection dialog does: no drives named.
-    void reconnect()
+    void reconnect() { connectAndWait(simulated()); }
+    // The window keeps a working bus until the new one is open: wait for the new one.
+    void connectAndWait(const ConnectionSettings& settings)
     {
-        window->connectTo(simulated());
-        ASSERT_TRUE(waitFor([&] { return window->isConnected(); }));
+        bool opened = false;
+        QObject::connect(
+            window.get(), &MainWindow::connectionChanged, window.get(),
+            [&](bool up) { opened = up; }, Qt::SingleShotConnection);
+        window->connectTo(settings);
+        ASSERT_TRUE(waitFor([&] { return opened; }));
     }
 };
 
@@ -97,8 +103,7 @@ TEST_F(MainWindowBusMemoryTest, WithNothingRememberedAScanIsOffered)
 {
     ConnectionSettings other = simulated();
     other.simSpec = QStringLiteral("dcpid@9");
-    window->connectTo(other);
-    ASSERT_TRUE(waitFor([&] { return window->isConnected(); }));
+    connectAndWait(other);
     BusRecallBar* bar = window->recallBar();
     ASSERT_TRUE(bar->isVisible());
     EXPECT_TRUE(bar->text().contains(QStringLiteral("Scan the bus")));
@@ -108,8 +113,7 @@ TEST_F(MainWindowBusMemoryTest, WithNothingRememberedAScanIsOffered)
 
 TEST_F(MainWindowBusMemoryTest, ThePageHeaderNamesTheModelOnceTheVariantIsSet)
 {
-    window->connectTo(simulated()); // nothing named: the variant is not known
-    ASSERT_TRUE(waitFor([&] { return window->isConnected(); }));
+    connectAndWait(simulated()); // nothing named: the variant is not known
     window->busPanel()->addDrive(150);
     ASSERT_TRUE(
         waitFor([&] { return window->drives()->info(150).state == DeviceInfo::State::Present; }));
