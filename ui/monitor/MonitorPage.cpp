@@ -1,9 +1,9 @@
 #include "monitor/MonitorPage.h"
 
-#include "bus/BusDrives.h"
 #include "bus/DriveStatusPoller.h"
 #include "monitor/MonitorDetails.h"
 #include "monitor/MonitorHub.h"
+#include "monitor/MonitorPollBar.h"
 #include "monitor/MotorSpeedBox.h"
 #include "monitor/PanelMirrorView.h"
 #include "monitor/TerminalLamps.h"
@@ -16,14 +16,11 @@
 #include "widgets/StaleLook.h"
 #include "widgets/StatusLight.h"
 
-#include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QLocale>
 #include <QPointer>
-#include <QPushButton>
 #include <QScrollArea>
 #include <QSplitter>
 #include <QTime>
@@ -56,9 +53,7 @@ MonitorPage::MonitorPage(MonitorHub* hub, DeviceParameters* parameters, QWidget*
     , m_hub(hub)
     , m_parameters(parameters)
     , m_slave(parameters->session()->slave())
-    , m_rate(new QComboBox(this))
-    , m_pause(new QPushButton(this))
-    , m_status(new QLabel(this))
+    , m_bar(new MonitorPollBar(hub, m_slave, this))
     , m_current(bigLabel(this, 2.2))
     , m_currentDisplay(bigLabel(this, 1.3))
     , m_target(bigLabel(this, 1.3))
@@ -68,34 +63,12 @@ MonitorPage::MonitorPage(MonitorHub* hub, DeviceParameters* parameters, QWidget*
     , m_chart(new TrendChart(hub, this))
 {
     auto* layout = new QVBoxLayout(this);
-    auto* bar = new QHBoxLayout;
-    bar->addWidget(new QLabel(tr("Poll every"), this));
-    for (int hz : {1, 2, 5, 10, 20})
-        m_rate->addItem(tr("%1 ms (%2 Hz)").arg(1000 / hz).arg(hz), 1000 / hz);
-    m_rate->setToolTip(tr("How often every monitored drive is read. Commands you give always "
-                          "go first; the drives share what is left of the bus in turn."));
-    bar->addWidget(m_rate);
-    bar->addWidget(m_pause);
-    bar->addWidget(m_status, 1);
-    layout->addLayout(bar);
-    const auto showRate = [this](int ms) {
-        const int i = m_rate->findData(ms);
-        if (i < 0)
-            m_rate->addItem(tr("%1 ms").arg(ms), ms);
-        m_rate->setCurrentIndex(m_rate->findData(ms));
-    };
-    showRate(hub->interval());
-    connect(hub, &MonitorHub::intervalChanged, this, showRate);
-    connect(m_rate, &QComboBox::activated, this,
-            [this] { m_hub->setInterval(m_rate->currentData().toInt()); });
-    const auto showPaused = [this](bool paused) {
-        m_pause->setText(paused ? tr("Resume polling") : tr("Pause polling"));
+    layout->addWidget(m_bar);
+    // Paused values are no longer live.
+    connect(hub, &MonitorHub::pausedChanged, this, [this] {
         if (m_look)
             m_look->update();
-    };
-    showPaused(hub->isPaused());
-    connect(hub, &MonitorHub::pausedChanged, this, showPaused);
-    connect(m_pause, &QPushButton::clicked, this, [this] { m_hub->setPaused(!m_hub->isPaused()); });
+    });
 
     auto* splitter = new QSplitter(Qt::Vertical, this);
     // The values scroll when the chart below is given the height (a laptop's screen): they are
@@ -348,30 +321,8 @@ void MonitorPage::showError(const QString& text)
 
 void MonitorPage::showFreshness()
 {
-    const Freshness::State state = m_look->state();
-    const bool stale = state == Freshness::State::Stale;
-    QString text;
-    if (m_hub->isPaused())
-        text = tr("Polling paused: the values shown are the last ones read (%1).")
-                   .arg(m_look->ageText());
-    else if (!m_hub->drives()->linkUp())
-        text = tr("Connection lost — not live: %1.").arg(m_look->ageText());
-    else if (stale)
-        text = m_lastError.isEmpty() ? tr("Not live: %1.").arg(m_look->ageText())
-                                     : tr("The drive does not answer (%1) — not live: %2.")
-                                           .arg(m_lastError, m_look->ageText());
-    else if (state == Freshness::State::Live)
-        text = tr("Values %1 · %2 samples/s")
-                   .arg(m_look->ageText())
-                   .arg(QLocale().toString(m_hub->statistics(m_slave).rate(), 'f', 1));
-    else
-        text = m_lastError.isEmpty() ? tr("Not read yet.")
-                                     : tr("Cannot read the drive: %1").arg(m_lastError);
-    if (m_status->text() != text)
-        m_status->setText(text);
-    const QString statusStyle = stale ? QStringLiteral("QLabel { color: #b01c1c; }") : QString();
-    if (m_status->styleSheet() != statusStyle) // style sheets are costly to apply
-        m_status->setStyleSheet(statusStyle);
+    m_bar->showFreshness(*m_look, m_lastError);
+    const bool stale = m_look->state() == Freshness::State::Stale;
     m_details->setStale(stale);
     if (m_panel)
         m_panel->setStale(stale, tr("No live state: %1").arg(m_look->ageText()));
@@ -386,7 +337,7 @@ void MonitorPage::showFreshness()
 
 QString MonitorPage::pollText() const
 {
-    return m_status->text();
+    return m_bar->text();
 }
 
 QString MonitorPage::valueText(const QString& parameter) const

@@ -6,16 +6,15 @@
 #include <QWidget>
 #include <optional>
 
-class QComboBox;
 class QLabel;
 class QSplitter;
-class QPushButton;
 
 namespace opentop {
 
 class DeviceParameters;
 class MonitorDetails;
 class MonitorHub;
+class MonitorPollBar;
 class MotorSpeedBox;
 class PanelMirrorView;
 class TerminalLamps;
@@ -71,9 +70,7 @@ private:
     MonitorHub* m_hub;
     DeviceParameters* m_parameters;
     int m_slave;
-    QComboBox* m_rate;
-    QPushButton* m_pause;
-    QLabel* m_status;
+    MonitorPollBar* m_bar; // poll rate, pause, the values' age
     QLabel* m_current;
     QLabel* m_currentDisplay;
     QLabel* m_target;

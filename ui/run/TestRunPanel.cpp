@@ -4,6 +4,7 @@
 #include "profile/ProfileRegistry.h"
 #include "profile/RoleEvaluator.h"
 #include "profile/ValueCodec.h"
+#include "run/DcRunCommands.h"
 #include "run/MotionPriorityBox.h"
 #include "run/RunLiveState.h"
 #include "run/SpnoSelector.h"
@@ -11,11 +12,9 @@
 #include "session/DeviceSession.h"
 #include "widgets/ConfirmBox.h"
 
-#include <QComboBox>
 #include <QDateTime>
 #include <QGridLayout>
 #include <QLabel>
-#include <QLineEdit>
 #include <QLocale>
 #include <QPointer>
 #include <QPushButton>
@@ -152,45 +151,10 @@ void TestRunPanel::buildDbu()
 
 void TestRunPanel::buildDc()
 {
-    auto* grid = new QGridLayout(m_commands);
-    m_speed = new QLineEdit(m_commands);
-    m_speed->setObjectName(QStringLiteral("speed"));
-    m_speed->setPlaceholderText(tr("set point, e.g. 50 or -20"));
-    m_speedUnit = new QLabel(m_commands);
-    m_speedError = new QLabel(m_commands);
-    m_speedError->setObjectName(QStringLiteral("speedError"));
-    m_speedError->setWordWrap(true);
-    m_speedError->setStyleSheet(QStringLiteral("color: #c00000;"));
-    connect(m_speed, &QLineEdit::textChanged, this, &TestRunPanel::updateSpeed);
-    m_setSpeed = addButton(tr("Set s&peed"), QStringLiteral("setSpeed"), [this] {
-        const ParameterMeta* meta = RoleEvaluator::parameter(m_session->profile(), kSpeedCommand);
-        const ValueCodec::Encoded e =
-            ValueCodec::encodeText(*meta, m_speed->text().trimmed(), m_session->context());
-        RunControl::Command c;
-        c.action = RunControl::Action::Speed;
-        c.speed = m_speed->text().trimmed();
-        run(c, e.ok && e.raw != 0);
-    });
-    connect(m_speed, &QLineEdit::returnPressed, m_setSpeed, &QPushButton::click);
-    m_whileIdle << m_speed;
-    grid->addWidget(new QLabel(tr("Speed command:"), m_commands), 0, 0);
-    grid->addWidget(m_speed, 0, 1);
-    grid->addWidget(m_speedUnit, 0, 2);
-    grid->addWidget(m_setSpeed, 0, 3);
-    grid->addWidget(m_speedError, 1, 0, 1, 4);
-    auto simple = [this](RunControl::Action action) {
-        RunControl::Command c;
-        c.action = action;
-        return [this, c] { run(c, false); };
-    };
-    grid->addWidget(addButton(tr("&Brake (speed 0)"), QStringLiteral("brake"),
-                              simple(RunControl::Action::Stop)),
-                    2, 0, 1, 2);
-    if (RoleEvaluator::parameter(m_session->profile(), QStringLiteral("coast")))
-        grid->addWidget(addButton(tr("&Natural stop"), QStringLiteral("coast"),
-                                  simple(RunControl::Action::Coast)),
-                        2, 2, 1, 2);
-    updateSpeed();
+    auto* column = new QVBoxLayout(m_commands);
+    m_dc = new DcRunCommands(m_session, m_commands);
+    connect(m_dc, &DcRunCommands::commandRequested, this, &TestRunPanel::run);
+    column->addWidget(m_dc);
 }
 
 void TestRunPanel::refresh()
@@ -367,7 +331,7 @@ QString TestRunPanel::messageText() const
 }
 QString TestRunPanel::speedError() const
 {
-    return m_speedError ? m_speedError->text() : QString();
+    return m_dc ? m_dc->speedError() : QString();
 }
 QString TestRunPanel::pollingWarning() const
 {
@@ -397,34 +361,13 @@ void TestRunPanel::updateEnabled()
         m_ioButton->setVisible(m_enabled); // only a drive in communication priority goes back
     for (QWidget* w : std::as_const(m_whileIdle))
         w->setEnabled(!m_busy);
-    updateSpeed();
+    if (m_dc)
+        m_dc->setBusy(m_busy);
     const bool explain = !m_enabled && !m_currentPriority.isEmpty() &&
                          RoleEvaluator::parameter(m_session->profile(), kPriority);
     if (explain)
         m_priorityBox->setCurrent(m_currentPriority);
     m_priorityBox->setVisible(explain);
-}
-
-void TestRunPanel::updateSpeed()
-{
-    if (!m_speed)
-        return;
-    const ParameterMeta* meta = RoleEvaluator::parameter(m_session->profile(), kSpeedCommand);
-    const ValueContext context = m_session->context();
-    QString unresolved;
-    const ValueSpec& spec = meta->specFor(context, &unresolved);
-    m_speedUnit->setText(unresolved.isEmpty()
-                             ? tr("%1 (%2)").arg(spec.unit, ValueCodec::allowedText(*meta, context))
-                             : tr("(reading %1…)").arg(unresolved));
-    const QString text = m_speed->text().trimmed();
-    QString error;
-    if (!text.isEmpty() && unresolved.isEmpty()) {
-        const ValueCodec::Encoded e = ValueCodec::encodeText(*meta, text, context);
-        if (!e.ok)
-            error = e.error;
-    }
-    m_speedError->setText(error);
-    m_setSpeed->setEnabled(!m_busy && !text.isEmpty() && unresolved.isEmpty() && error.isEmpty());
 }
 
 void TestRunPanel::updateWarning()

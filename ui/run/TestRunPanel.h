@@ -7,14 +7,13 @@
 #include <functional>
 #include <optional>
 
-class QComboBox;
 class QLabel;
-class QLineEdit;
 class QPushButton;
 
 namespace opentop {
 
 class BusDrives;
+class DcRunCommands;
 class DeviceSession;
 class MonitorHub;
 class MotionPriorityBox;
@@ -78,7 +77,6 @@ private:
     void showOutcome(const RunControl::Outcome& outcome);
     void showState(const RunControl::State& state);
     void updateEnabled();
-    void updateSpeed();
     void updateWarning();
     void setMessage(const QString& text, bool error);
     void askToStart(const RunControl::Command& command);
@@ -103,10 +101,7 @@ private:
     QPushButton* m_ioButton = nullptr;
     std::optional<bool> m_commandedCcw; // a CW/CCW command sent since the last selection
     QString m_lastQuestion;
-    QLineEdit* m_speed = nullptr;
-    QLabel* m_speedUnit = nullptr;
-    QLabel* m_speedError = nullptr;
-    QPushButton* m_setSpeed = nullptr;
+    DcRunCommands* m_dc = nullptr; // the DC controller's commands
     QLabel* m_warning = nullptr;
     QLabel* m_message = nullptr;
     QLabel* m_state = nullptr;
