@@ -166,6 +166,10 @@ void MainWindow::buildActions()
     });
     scan->setShortcut(QKeySequence(Qt::Key_F5));
     toolbar->addAction(scan);
+    m_disconnect = file->addAction(tr("&Disconnect"), this, &MainWindow::disconnectBus);
+    m_disconnect->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_K));
+    m_disconnect->setEnabled(false);
+    connect(this, &MainWindow::connectionChanged, m_disconnect, &QAction::setEnabled);
     file->addAction(tr("Communication &groups…"), this, [this] {
         dock(QStringLiteral("groupsDock"))->show();
         dock(QStringLiteral("groupsDock"))->raise();
@@ -629,6 +633,22 @@ void MainWindow::chooseConnection()
         return;
     }
     m_exitGuard->check(tr("connect elsewhere"), [this, settings] { connectTo(settings); });
+}
+
+void MainWindow::disconnectBus()
+{
+    if (!m_drives)
+        return;
+    // As on quitting: running drives and drives left in communication priority are named first.
+    const auto close = [this] {
+        teardown();
+        setConnectionText(tr("Not connected (disconnected)"), false);
+        emit connectionChanged(false);
+    };
+    if (m_exitGuard)
+        m_exitGuard->check(tr("disconnect"), close);
+    else
+        close();
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)

@@ -53,6 +53,9 @@ public:
     // these machine numbers (a simulated bus's list); they are identified at once, and their
     // variants used where a drive does not report its own.
     void connectTo(const ConnectionSettings& settings, const QHash<int, QString>& knownTypes = {});
+    // Bus > Disconnect: closes the connection after the exit check (running drives and drives
+    // left in communication priority are named first, and stopped by default).
+    void disconnectBus();
     bool isConnected() const { return m_connected; }
     ModbusClient* client() const { return m_client.get(); }
     BusDrives* drives() const { return m_drives; }
@@ -141,6 +144,7 @@ private:
     StatusLight* m_linkLight;
     QVector<int> m_selected;
     QAction* m_multiWrite = nullptr;
+    QAction* m_disconnect = nullptr;
     MonitorHub* m_hub = nullptr;
     BusOverview* m_overview = nullptr;
     TrendPanel* m_trends = nullptr;

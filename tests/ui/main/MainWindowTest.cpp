@@ -160,6 +160,29 @@ TEST_F(MainWindowTest, QuittingWithARunningDriveNamesItAndStopsItByDefault)
     EXPECT_EQ(speedOf(1), 0); // stopped before the window closed
 }
 
+TEST_F(MainWindowTest, DisconnectingWithARunningDriveNamesItAndStopsItFirst)
+{
+    // Bus > Disconnect, as a user finds it in the menu.
+    QAction* disconnect = nullptr;
+    for (QAction* a : window->findChildren<QAction*>()) {
+        if (a->text().remove(QLatin1Char('&')) == QStringLiteral("Disconnect"))
+            disconnect = a;
+    }
+    ASSERT_NE(disconnect, nullptr);
+    EXPECT_TRUE(disconnect->isEnabled());
+    startDrive(1);
+    ASSERT_TRUE(waitFor([&] { return speedOf(1) > 0 && leftBehind(1); }));
+    auto question = answerExitQuestion(Qt::Key_Return);
+    disconnect->trigger();
+    ASSERT_TRUE(waitFor([&] { return !window->isConnected(); }, 20000)) << qPrintable(*question);
+    EXPECT_TRUE(question->contains(QStringLiteral("Machine number 1 (DBU200-D): Running CW")))
+        << qPrintable(*question);
+    EXPECT_EQ(speedOf(1), 0); // stopped before the connection closed
+    EXPECT_FALSE(disconnect->isEnabled());
+    EXPECT_TRUE(window->isVisible());
+    EXPECT_TRUE(window->connectionLabel()->text().contains(QStringLiteral("Not connected")));
+}
+
 TEST_F(MainWindowTest, CancellingTheExitQuestionKeepsTheWindowAndTheDriveRunning)
 {
     startDrive(1);
