@@ -1,4 +1,5 @@
 #include "run/MotionPriorityBox.h"
+#include "groups/GroupWriteCheck.h"
 
 #include "profile/RoleEvaluator.h"
 #include "run/ExitActions.h"
@@ -67,6 +68,13 @@ QString MotionPriorityBox::explanation() const
     return m_text->text();
 }
 
+QString MotionPriorityBox::alsoReaches() const
+{
+    // A group parent's priority write is executed by its children too (manual 11-3).
+    const QString reach = GroupWriteCheck::reachText(m_session);
+    return reach.isEmpty() ? QString() : QStringLiteral("\n\n") + reach;
+}
+
 void MotionPriorityBox::askToSwitch()
 {
     const ParameterMeta* priority = RoleEvaluator::parameter(m_session->profile(), kPriority);
@@ -76,8 +84,9 @@ void MotionPriorityBox::askToSwitch()
                     tr("Machine number %1 will take run, stop, direction and speed selection "
                        "from the bus (%2 = \"%3\"). Its input terminals then no longer start or "
                        "stop the motor.")
-                        .arg(m_session->slave())
-                        .arg(priority->label, wantedLabel()),
+                            .arg(m_session->slave())
+                            .arg(priority->label, wantedLabel()) +
+                        alsoReaches(),
                     tr("Switch"), [this] { sendSwitch(); });
 }
 
@@ -110,7 +119,8 @@ void MotionPriorityBox::askToReturn(QWidget* parent)
         tr("Machine number %1 will take run, stop, direction and speed selection from its input "
            "terminals again, and refuse motion commands over the bus. If an input says run, the "
            "motor runs.")
-            .arg(slave),
+                .arg(slave) +
+            alsoReaches(),
         tr("Return to I/O priority"), [self, slave] {
             if (!self)
                 return;

@@ -30,6 +30,8 @@ signals:
     void switched(bool ok, const QString& message);
 
 private:
+    // The drives a priority write to this one also reaches (group children), as a paragraph.
+    QString alsoReaches() const;
     void askToSwitch();
     void sendSwitch();
     QString wantedLabel() const;

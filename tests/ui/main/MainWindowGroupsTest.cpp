@@ -311,3 +311,35 @@ TEST_F(MainWindowGroupsTest, AnInitialisationOfAParentNamesItsChildrenAndReReads
     EXPECT_EQ(simRegister(150, kSpeedAddress), 1000);
     EXPECT_TRUE(waitFor([&] { return deviceNumber(150, kSpeed) == 1000; }));
 }
+
+TEST_F(MainWindowGroupsTest, SwitchingAParentToCommunicationPriorityNamesItsChildren)
+{
+    makeGroupOfOne();
+    select({1});
+    ASSERT_TRUE(
+        waitFor([&] { return window->workspace()->drive() == window->drives()->parameters(1); }));
+    QTabWidget* tabs = window->workspace()->tabs();
+    QPushButton* button = nullptr;
+    ASSERT_TRUE(waitFor([&] {
+        for (int i = 0; i < tabs->count(); ++i) {
+            if (auto* b =
+                    tabs->widget(i)->findChild<QPushButton*>(QStringLiteral("switchPriority"))) {
+                tabs->setCurrentIndex(i);
+                button = b;
+            }
+        }
+        return button && button->isVisible() && button->isEnabled();
+    }));
+    const int before = simRegister(1, 0x100D);
+    button->click();
+    QMessageBox* box = nullptr;
+    ASSERT_TRUE(waitFor([&] {
+        box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        return box != nullptr;
+    }));
+    const QString text = box->text() + QLatin1Char('\n') + box->informativeText();
+    box->button(QMessageBox::Cancel)->click();
+    EXPECT_TRUE(text.contains(QStringLiteral("2 and 150"))) << qPrintable(text);
+    QTest::qWait(300);
+    EXPECT_EQ(simRegister(1, 0x100D), before); // cancelled: nothing sent
+}
