@@ -1,5 +1,7 @@
 #include "run/RunningData.h"
 
+#include <cmath>
+
 #include "profile/Profile.h"
 #include "profile/ValueCodec.h"
 
@@ -90,6 +92,41 @@ QStringList RunningData::warnings(const Profile& profile, const ValueContext& va
             list << w;
     }
     return list;
+}
+
+QString RunningData::summary(const Profile& profile, const ValueContext& values)
+{
+    QStringList spnos;
+    double lowSpeed = 0, highSpeed = 0, shortest = 0, longest = 0;
+    for (int spno = 1; spno <= count(profile); ++spno) {
+        const QString speed = parameter(profile, spno, QStringLiteral("speed"));
+        const QString decel = parameter(profile, spno, QStringLiteral("decel"));
+        if (decel.isEmpty())
+            continue;
+        const std::optional<double> rpm = numberOf(profile, speed, values.rawOf(speed));
+        const std::optional<double> s = numberOf(profile, decel, values.rawOf(decel));
+        if (decelerationWarning(spno, rpm, s).isEmpty())
+            continue;
+        const double v = std::abs(*rpm);
+        lowSpeed = spnos.isEmpty() ? v : std::min(lowSpeed, v);
+        highSpeed = spnos.isEmpty() ? v : std::max(highSpeed, v);
+        shortest = spnos.isEmpty() ? *s : std::min(shortest, *s);
+        longest = spnos.isEmpty() ? *s : std::max(longest, *s);
+        spnos << QStringLiteral("SPno%1").arg(spno);
+    }
+    if (spnos.isEmpty())
+        return {};
+    const auto range = [](double a, double b, int decimals) {
+        return a == b ? ValueCodec::formatNumber(a, decimals)
+                      : ValueCodec::formatNumber(a, decimals) + QChar(0x2013) +
+                            ValueCodec::formatNumber(b, decimals);
+    };
+    return tr("Short deceleration from high speed on %1 (%2 r/min in %3 s): the manual asks for "
+              "a deceleration time of more than %4 s when slowing down from high speed (about %5 "
+              "r/min and above).")
+        .arg(spnos.join(QStringLiteral(", ")), range(lowSpeed, highSpeed, 0),
+             range(shortest, longest, 1), ValueCodec::formatNumber(kMinDecelerationS, 0),
+             ValueCodec::formatNumber(kHighSpeedRpm, 0));
 }
 
 } // namespace opentop

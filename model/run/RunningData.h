@@ -42,6 +42,9 @@ public:
                               const ValueContext& values);
     // Every SPno's warning for the values in `values`, one line each.
     static QStringList warnings(const Profile& profile, const ValueContext& values);
+    // The same in one sentence for a page: the factory defaults already give five SPnos a 0.5 s
+    // deceleration from 1700 r/min and more, and five paragraphs would be read by nobody.
+    static QString summary(const Profile& profile, const ValueContext& values);
 };
 
 } // namespace opentop

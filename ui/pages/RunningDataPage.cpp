@@ -180,10 +180,10 @@ QString RunningDataPage::decelerationWarning() const
 
 void RunningDataPage::updateDecelerationWarning()
 {
-    const QStringList warnings =
-        RunningData::warnings(parameters()->profile(), PendingValues::context(parameters()));
-    m_decelWarning->setText(warnings.join(QLatin1Char('\n')));
-    m_decelWarning->setVisible(!warnings.isEmpty());
+    const QString warning =
+        RunningData::summary(parameters()->profile(), PendingValues::context(parameters()));
+    m_decelWarning->setText(warning);
+    m_decelWarning->setVisible(!warning.isEmpty());
 }
 
 void RunningDataPage::showEvent(QShowEvent* event)

@@ -62,3 +62,26 @@ TEST(RunningDataTest, WarnsOfADecelerationBelowTwoSecondsFromHighSpeedOnly)
     ASSERT_EQ(all.size(), 1);
     EXPECT_TRUE(all.first().contains(QStringLiteral("3000 r/min")));
 }
+
+TEST(RunningData, TheSummaryNamesEverySpnoWithAShortDecelerationFromHighSpeedInOneSentence)
+{
+    const QString one = RunningData::summary(
+        dbu(), values({{QStringLiteral("spno2.speed"), 3000}, {QStringLiteral("spno2.decel"), 5}}));
+    EXPECT_TRUE(one.contains(QStringLiteral("on SPno2 ("))) << qPrintable(one);
+    EXPECT_TRUE(one.contains(QStringLiteral("3000 r/min in 0.5 s"))) << qPrintable(one);
+    const QString several =
+        RunningData::summary(dbu(), values({{QStringLiteral("spno2.speed"), 3000},
+                                            {QStringLiteral("spno2.decel"), 5},
+                                            {QStringLiteral("spno4.speed"), 1700},
+                                            {QStringLiteral("spno4.decel"), 10},
+                                            {QStringLiteral("spno5.speed"), 800},
+                                            {QStringLiteral("spno5.decel"), 5}}));
+    EXPECT_TRUE(several.contains(QStringLiteral("on SPno2, SPno4 ("))) << qPrintable(several);
+    EXPECT_TRUE(several.contains(QString::fromUtf8("1700–3000 r/min in 0.5–1.0 s")))
+        << qPrintable(several);
+    EXPECT_FALSE(several.contains(QStringLiteral("SPno5")));
+    EXPECT_EQ(several.count(QStringLiteral("manual")), 1);
+    EXPECT_TRUE(RunningData::summary(dbu(), values({{QStringLiteral("spno2.speed"), 3000},
+                                                    {QStringLiteral("spno2.decel"), 20}}))
+                    .isEmpty());
+}

@@ -298,7 +298,9 @@ TEST_F(MainWindowRunTest, TheRunningDataPageWarnsOfAShortDecelerationFromHighSpe
     ASSERT_TRUE(waitFor([&] { return (page = pageOf<RunningDataPage>(*window, 1)); }));
     showPage(*window, page);
     ASSERT_TRUE(waitFor([&] {
-        return page->decelerationWarning().contains(QStringLiteral("SPno3 slows down from 2500"));
+        const QString w = page->decelerationWarning();
+        return w.contains(QStringLiteral("on SPno3, SPno4")) &&
+               w.contains(QString::fromUtf8("1700–3000 r/min in 0.5 s"));
     })) << qPrintable(page->decelerationWarning());
     // An edit to 2.5 s, not yet written, clears it: the warning is for the values as they will be.
     window->drives()->parameters(1)->setPending(QStringLiteral("spno3.decel"),
