@@ -13,6 +13,8 @@ TrendAxes::TrendAxes(QChart* chart)
 {
     for (QValueAxis* axis : m_axes) {
         axis->setLabelFormat(QStringLiteral("%g"));
+        // A value shown as "..." on a short chart could be misread as no value at all.
+        axis->setTruncateLabels(false);
         chart->addAxis(axis, axis == m_axes[0] ? Qt::AlignLeft : Qt::AlignRight);
     }
     m_axes[1]->setVisible(false);

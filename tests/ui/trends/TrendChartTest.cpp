@@ -11,6 +11,7 @@
 #include <QLineSeries>
 #include <QMouseEvent>
 #include <QTemporaryDir>
+#include <QTest>
 #include <QValueAxis>
 #include <QWheelEvent>
 
@@ -85,6 +86,11 @@ TEST_F(TrendChartTest, SpeedOfAStartedDriveRampsUpInTheChart)
     EXPECT_TRUE(valueAxisTitle(*chart, 0).contains(QStringLiteral("r/min")))
         << qPrintable(valueAxisTitle(*chart, 0));
     EXPECT_TRUE(valueAxisTitle(*chart, 0).contains(QStringLiteral("Current speed")));
+    // A short chart (a laptop's monitor page) still shows every value label whole, never "...".
+    chart->resize(630, 170);
+    QTest::qWait(200);
+    for (QAbstractAxis* axis : chart->chart()->axes(Qt::Vertical))
+        EXPECT_FALSE(axis->labelsTruncated()) << qPrintable(axis->titleText());
     chart->hide();
     EXPECT_FALSE(hub->isWatched(1)); // watched only while shown
 }
