@@ -247,9 +247,15 @@ void CompareDialog::fill()
     QStringList notes;
     for (const QString& note : result.notes)
         notes << tr("Note: %1").arg(note);
-    if (!result.noDefault.isEmpty())
+    if (!result.noDefault.isEmpty()) {
+        QStringList labels;
+        for (const QString& name : result.noDefault) {
+            const ParameterMeta* meta = profile->parameter(name);
+            labels << (meta && !meta->label.isEmpty() ? meta->label : name);
+        }
         notes << tr("No factory default documented (never counted as a difference): %1")
-                     .arg(result.noDefault.join(QStringLiteral(", ")));
+                     .arg(labels.join(QStringLiteral(", ")));
+    }
     m_notes->setText(notes.join(QLatin1Char('\n')));
     applyFilter();
 }

@@ -76,9 +76,14 @@ TEST_F(CompareDialogTest, DriveAgainstFactoryDefaultsMatchesTheComparer)
     const Comparer::Result expected =
         Comparer::compareWithDefaults(*ProfileRegistry::builtIn().family(kDbu), *loaded->device(1));
     EXPECT_EQ(dialog.differences().size(), expected.differences.size());
-    if (!expected.noDefault.isEmpty()) {
-        EXPECT_TRUE(dialog.notesText().contains(expected.noDefault.first()));
-    }
+    ASSERT_FALSE(expected.noDefault.isEmpty());
+    // Named by the label a user knows, not the internal name.
+    const ParameterMeta* first =
+        ProfileRegistry::builtIn().family(kDbu)->parameter(expected.noDefault.first());
+    ASSERT_NE(first, nullptr);
+    EXPECT_TRUE(dialog.notesText().contains(first->label)) << qPrintable(dialog.notesText());
+    EXPECT_FALSE(dialog.notesText().contains(expected.noDefault.first()))
+        << qPrintable(dialog.notesText());
 }
 
 TEST_F(CompareDialogTest, FilesOfDifferentFamiliesAreRefusedWithTheReason)
