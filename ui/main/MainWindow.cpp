@@ -3,22 +3,15 @@
 #include "ModbusClient.h"
 #include "TrafficLog.h"
 #include "alarms/AlarmBanner.h"
-#include "alarms/AlarmExport.h"
 #include "alarms/AlarmsPage.h"
 #include "bus/BusDrives.h"
 #include "bus/BusGroupTracker.h"
-#include "bus/BusListModel.h"
-#include "bus/BusOverview.h"
 #include "bus/BusPanel.h"
 #include "bus/BusRecallBar.h"
 #include "bus/DriveStatusPoller.h"
 #include "connection/ConnectionDialog.h"
-#include "files/FileActions.h"
-#include "groups/GroupsView.h"
-#include "help/HelpActions.h"
+#include "main/MainMenus.h"
 #include "monitor/MonitorHub.h"
-#include "monitor/MonitorPage.h"
-#include "pages/DcControllerPage.h"
 #include "profile/ProfileRegistry.h"
 #include "run/ExitCheck.h"
 #include "run/ExitGuard.h"
@@ -28,34 +21,16 @@
 #include "session/DeviceIdentifier.h"
 #include "session/DeviceParameters.h"
 #include "traffic/TrafficDescriber.h"
-#include "traffic/TrafficLogView.h"
-#include "trends/TrendPanel.h"
-#include "widgets/StatusLight.h"
 #include "workspace/DriveWorkspace.h"
-#include "workspace/MultiDriveWriteDialog.h"
 
 #include <QAction>
-#include <QApplication>
 #include <QCloseEvent>
-#include <QDockWidget>
-#include <QFileDialog>
-#include <QGuiApplication>
-#include <QHeaderView>
-#include <QItemSelectionModel>
-#include <QLabel>
-#include <QMenuBar>
 #include <QMessageBox>
-#include <QScreen>
-#include <QScrollArea>
-#include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
-#include <QTabWidget>
-#include <QTableView>
 #include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
-#include <algorithm>
 
 namespace opentop {
 
@@ -66,9 +41,8 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     , m_workspace(new DriveWorkspace(this))
     , m_central(new QWidget(this))
     , m_splitter(new QSplitter(this))
-    , m_connectionLabel(new QLabel(this))
-    , m_linkLight(new StatusLight(this))
-    , m_simBanner(new QLabel(this))
+    , m_status(new ConnectionStatus(this))
+    , m_geometry(this, m_splitter)
 {
     setWindowTitle(tr("OpenTOP"));
     m_splitter->setObjectName(QStringLiteral("mainSplitter"));
@@ -77,52 +51,19 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     m_splitter->setStretchFactor(1, 1);
     auto* column = new QVBoxLayout(m_central);
     column->setContentsMargins(0, 0, 0, 0);
-    // A simulated bus is unmistakable: a permanent coloured marker in the status bar (and the
-    // window title) say so; it costs no height on a laptop screen.
-    m_simBanner->setObjectName(QStringLiteral("simulatedBanner"));
-    m_simBanner->setText(tr("SIMULATED BUS — no hardware"));
-    m_simBanner->setToolTip(tr("These drives exist only in this program; nothing moves."));
-    m_simBanner->setStyleSheet(QStringLiteral("background: #f9a825; color: black; "
-                                              "font-weight: bold; padding: 0 8px;"));
-    m_simBanner->hide();
     column->addWidget(m_splitter, 1); // the alarm banner goes above it once connected
     setCentralWidget(m_central);
-    // Every frame, decoded with parameter names, in a dock that can be shown or hidden.
-    auto* trafficDock = new QDockWidget(tr("Traffic log"), this);
-    trafficDock->setObjectName(QStringLiteral("trafficDock"));
-    trafficDock->setWidget(new TrafficLogView(m_log.get(), trafficDock));
-    addDockWidget(Qt::BottomDockWidgetArea, trafficDock);
-    trafficDock->hide();
-    // Live views of the whole bus; their contents are made per connection.
-    for (const auto& [name, title] :
-         {std::pair(QStringLiteral("overviewDock"), tr("Bus overview")),
-          std::pair(QStringLiteral("trendDock"), tr("Trends")),
-          std::pair(QStringLiteral("groupsDock"), tr("Communication groups"))}) {
-        auto* d = new QDockWidget(title, this);
-        d->setObjectName(name);
-        d->setWidget(new QLabel(tr("Not connected"), d));
-        addDockWidget(Qt::BottomDockWidgetArea, d);
-        d->hide();
-    }
-    // The bottom docks share one place as tabs: side by side they would not fit a laptop's
-    // width, and each still has the full width for its columns.
-    tabifyDockWidget(trafficDock, dock(QStringLiteral("overviewDock")));
-    tabifyDockWidget(trafficDock, dock(QStringLiteral("trendDock")));
-    tabifyDockWidget(trafficDock, dock(QStringLiteral("groupsDock")));
-    m_linkLight->setObjectName(QStringLiteral("linkLight"));
-    m_linkLight->setLed(DriveStatus::Led::Grey, tr("Not connected"));
-    statusBar()->addPermanentWidget(m_simBanner);
-    statusBar()->addPermanentWidget(m_linkLight);
-    statusBar()->addPermanentWidget(m_connectionLabel);
-    buildActions();
+    m_docks = new BusDocks(this, m_log.get());
+    m_status->showIn(statusBar());
+    m_pages = new DrivePages(this); // before the menus: they ask it for the selection
+    m_menus = new MainMenus(
+        this, m_docks, [this] { return m_pages->selected(); }, [this] { return m_settings; });
+    connect(m_pages, &DrivePages::sameFamilySelected, m_menus->multiWriteAction(),
+            &QAction::setEnabled);
     // STOP ALL's keys work everywhere in the program, modal dialogs included; the button itself
     // is made per connection.
     new StopAllKeys([this] { return m_stopAll; }, this);
-    QSettings settings;
-    fitToScreen(
-        restoreGeometry(settings.value(QStringLiteral("mainWindow/geometry")).toByteArray()));
-    restoreState(settings.value(QStringLiteral("mainWindow/state")).toByteArray());
-    m_splitterState = settings.value(QStringLiteral("mainWindow/splitter")).toByteArray();
+    m_geometry.restore();
 }
 
 MainWindow::~MainWindow()
@@ -130,112 +71,17 @@ MainWindow::~MainWindow()
     teardown();
 }
 
-void MainWindow::fitToScreen(bool remembered)
-{
-    // Laptop first: never larger than the screen's available area (a 1366×768 screen has about
-    // 730 px for a window once its panel and the title bar are taken), and a remembered geometry
-    // from a larger screen is brought back onto this one.
-    const QRect available =
-        (screen() ? screen() : QGuiApplication::primaryScreen())->availableGeometry();
-    const QSize frame(8, 32); // the window manager's frame and title bar, before it tells
-    const QSize room = available.size() - frame;
-    QSize size = remembered ? this->size() : QSize(1280, 800);
-    size = size.boundedTo(room);
-    resize(size);
-    QPoint at = remembered ? pos() : available.topLeft();
-    at.setX(std::max(available.left(),
-                     std::min(at.x(), available.right() + 1 - size.width() - frame.width())));
-    at.setY(std::max(available.top(),
-                     std::min(at.y(), available.bottom() + 1 - size.height() - frame.height())));
-    move(at);
-}
-
-void MainWindow::buildActions()
-{
-    QMenu* file = menuBar()->addMenu(tr("&Bus"));
-    QToolBar* toolbar = addToolBar(tr("Main"));
-    toolbar->setObjectName(QStringLiteral("mainToolbar"));
-    m_toolbar = toolbar;
-    QAction* connectAction = file->addAction(tr("&Connect…"), this, &MainWindow::chooseConnection);
-    connectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
-    connectAction->setToolTip(tr("Choose the serial port, gateway or simulated bus (Ctrl+K)"));
-    toolbar->addAction(connectAction);
-    QAction* scan = file->addAction(tr("&Scan bus"), this, [this] {
-        if (m_panel && !m_panel->isScanning())
-            m_panel->startScan(1, 247);
-    });
-    scan->setShortcut(QKeySequence(Qt::Key_F5));
-    toolbar->addAction(scan);
-    m_disconnect = file->addAction(tr("&Disconnect"), this, &MainWindow::disconnectBus);
-    m_disconnect->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_K));
-    m_disconnect->setEnabled(false);
-    connect(this, &MainWindow::connectionChanged, m_disconnect, &QAction::setEnabled);
-    file->addAction(tr("Communication &groups…"), this, [this] {
-        dock(QStringLiteral("groupsDock"))->show();
-        dock(QStringLiteral("groupsDock"))->raise();
-    });
-    file->addAction(tr("&Export alarm histories…"), this, &MainWindow::exportAlarms);
-    file->addSeparator();
-    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
-
-    // Backup, restore, compare and the file viewer (they take the bus as it is when used).
-    new FileActions(
-        this, menuBar()->addMenu(tr("&Files")), [this] { return m_drives; },
-        [this] { return m_selected; }, [this] { return m_settings; }, this);
-
-    QMenu* drive = menuBar()->addMenu(tr("&Drive"));
-    QAction* writeAll =
-        drive->addAction(tr("&Write all pending"), m_workspace, &DriveWorkspace::writeAll);
-    writeAll->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_W));
-    QAction* reread =
-        drive->addAction(tr("&Re-read all"), m_workspace, &DriveWorkspace::refreshAll);
-    reread->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
-    m_multiWrite = drive->addAction(tr("Write a setting to the selected drives…"), this,
-                                    &MainWindow::writeToSelected);
-    m_multiWrite->setEnabled(false);
-    toolbar->addAction(writeAll);
-    toolbar->addAction(m_multiWrite);
-    toolbar->addSeparator();
-    QMenu* view = menuBar()->addMenu(tr("&View"));
-    // The docks' own actions keep the menu's check marks in step with a dock closed by its
-    // title bar button.
-    const std::tuple<QString, QString, QKeySequence> docks[] = {
-        {QStringLiteral("trafficDock"), tr("&Traffic log"), QKeySequence(Qt::CTRL | Qt::Key_T)},
-        {QStringLiteral("overviewDock"), tr("Bus &overview"),
-         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O)},
-        {QStringLiteral("trendDock"), tr("T&rends"), QKeySequence(Qt::CTRL | Qt::Key_G)},
-        {QStringLiteral("groupsDock"), tr("Communication &groups"),
-         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_G)}};
-    for (const auto& [name, text, key] : docks) {
-        QAction* a = dock(name)->toggleViewAction();
-        a->setText(text);
-        a->setShortcut(key);
-        view->addAction(a);
-    }
-    new HelpActions(this, menuBar()->addMenu(tr("&Help")));
-}
-
 void MainWindow::teardown()
 {
     // The pages watch drives through the hub and use their sessions: gone before them.
-    while (m_workspace->tabs()->count() > 0)
-        delete m_workspace->tabs()->widget(0);
-    m_workspace->setDrive(nullptr, QString());
+    m_pages->clear();
     delete m_recall; // before the drives: it remembers what is left of them
     m_recall = nullptr;
-    for (const QString& name : {QStringLiteral("overviewDock"), QStringLiteral("trendDock"),
-                                QStringLiteral("groupsDock")}) {
-        QWidget* old = dock(name)->widget();
-        dock(name)->setWidget(new QLabel(tr("Not connected"), dock(name)));
-        delete old;
-    }
-    m_overview = nullptr;
-    m_trends = nullptr;
-    m_groupsView = nullptr;
+    m_docks->clear();
     delete m_hub; // before the drives: its monitors use their sessions
     m_hub = nullptr;
     if (m_stopAllAction) {
-        m_toolbar->removeAction(m_stopAllAction);
+        m_menus->toolbar()->removeAction(m_stopAllAction);
         m_stopAllAction = nullptr;
     }
     delete m_stopAll;
@@ -255,9 +101,8 @@ void MainWindow::teardown()
     m_drives = nullptr;
     m_groups = nullptr; // the drives' child
     m_client.reset();   // bounded shutdown of the bus worker
-    m_simBanner->hide();
     m_connected = false;
-    m_linkLight->setLed(DriveStatus::Led::Grey, tr("Not connected"));
+    m_status->reset();
     // A start confirmed for this bus says nothing about the next one (another machine may use
     // the same machine numbers).
     TestRunPanel::forgetConfirmations();
@@ -348,15 +193,15 @@ void MainWindow::adopt(std::unique_ptr<ModbusClient> client, const ConnectionSet
     m_groups = new BusGroupTracker(m_drives);
     m_panel = new BusPanel(m_drives, m_poller, m_splitter);
     m_hub = new MonitorHub(m_drives, this);
-    buildMonitorDocks();
+    m_docks->fill(m_drives, m_hub, m_groups, m_panel);
     // The traffic log names parameters and who else a write reaches (group children).
     TrafficDescriber describer(m_drives, ProfileRegistry::builtIn());
     m_log->setDescriber(describer.describer());
     connect(m_groups, &BusGroupTracker::groupsChanged, m_groups,
             [describer, groups = m_groups]() mutable { describer.setGroups(groups->groups()); });
     // STOP ALL is always on the toolbar and on the keyboard (StopAllButton::shortcuts()).
-    m_stopAll = new StopAllButton(m_drives, m_toolbar);
-    m_stopAllAction = m_toolbar->addWidget(m_stopAll);
+    m_stopAll = new StopAllButton(m_drives, m_menus->toolbar());
+    m_stopAllAction = m_menus->toolbar()->addWidget(m_stopAll);
     // No way out of this bus (quit, another connection) leaves a motor running unannounced.
     m_exitGuard = new ExitGuard(m_drives, m_poller, this);
     m_banner = new AlarmBanner(m_poller, m_central);
@@ -376,10 +221,7 @@ void MainWindow::adopt(std::unique_ptr<ModbusClient> client, const ConnectionSet
             m_panel->startScan(1, 247);
     });
     // The header names the model once the variant is known (identified or set by hand).
-    connect(m_drives, &BusDrives::driveChanged, this, [this](int slave) {
-        if (m_workspace->drive() && m_workspace->drive() == m_drives->parameters(slave))
-            m_workspace->setTitle(driveTitle(slave));
-    });
+    connect(m_drives, &BusDrives::driveChanged, m_pages, &DrivePages::retitle);
     // A group setup that is wrong is said where the engineer looks, not only in its view.
     connect(m_groups, &BusGroupTracker::groupsChanged, this, [this] {
         const QVector<BusGroups::Problem> problems = m_groups->groups().problems();
@@ -389,11 +231,11 @@ void MainWindow::adopt(std::unique_ptr<ModbusClient> client, const ConnectionSet
                                      15000);
     });
     const bool simulated = settings.kind == ConnectionSettings::Kind::Simulated;
-    m_simBanner->setVisible(simulated);
+    m_status->setSimulated(simulated);
     connect(m_banner, &AlarmBanner::showAlarms, this, &MainWindow::showAlarmsOf);
     // STOP ALL may end in alarms (or clear a run that hid one): the open page reads again.
     connect(m_stopAll, &StopAllButton::finished, this, [this] {
-        if (AlarmsPage* page = alarmsPage())
+        if (AlarmsPage* page = m_pages->alarmsPage())
             page->refresh();
     });
     // The placeholder of the first connection; on a reconnection the old panel is gone and
@@ -402,16 +244,8 @@ void MainWindow::adopt(std::unique_ptr<ModbusClient> client, const ConnectionSet
         delete m_splitter->widget(0);
     m_splitter->insertWidget(0, m_panel);
     m_splitter->setStretchFactor(0, 0);
-    // The remembered division, or one where the bus list shows its first columns up to the
-    // control priority (the rest scroll) and the drive's pages keep the most of a laptop's width.
-    if (!m_splitter->restoreState(m_splitterState)) {
-        const QHeaderView* header = m_panel->view()->horizontalHeader();
-        const int priorityEnd = header->sectionPosition(BusListModel::Priority) +
-                                header->sectionSize(BusListModel::Priority);
-        const int list = std::clamp(priorityEnd + 40, 360, std::max(360, width() * 2 / 5));
-        m_splitter->setSizes({list, std::max(600, width() - list)});
-    }
-    connect(m_panel, &BusPanel::selectionChanged, this, &MainWindow::showDrive);
+    m_geometry.divide(m_panel);
+    connect(m_panel, &BusPanel::selectionChanged, m_pages, &DrivePages::showDrive);
     connect(m_client.get(), &ModbusClient::connectionLost, this, [this](const QString& lost) {
         m_connected = false; // nothing to keep when another connection is tried
         setConnectionText(tr("Connection lost: %1").arg(lost), true);
@@ -432,15 +266,7 @@ void MainWindow::adopt(std::unique_ptr<ModbusClient> client, const ConnectionSet
 
 void MainWindow::setConnectionText(const QString& text, bool problem)
 {
-    // A port error can be several long lines: the status bar shows the first, shortened, so
-    // that it never widens the window; the whole text is in the tooltip.
-    const QString first = text.section(QLatin1Char('\n'), 0, 0);
-    m_connectionLabel->setText(
-        m_connectionLabel->fontMetrics().elidedText(first, Qt::ElideRight, 520));
-    m_connectionLabel->setToolTip(text);
-    m_connectionLabel->setStyleSheet(problem ? QStringLiteral("color: white; background: #b01c1c; "
-                                                              "font-weight: bold; padding: 0 6px;")
-                                             : QString());
+    m_status->setText(text, problem);
 }
 
 void MainWindow::setLinkUp(bool up, const QString& why)
@@ -448,35 +274,7 @@ void MainWindow::setLinkUp(bool up, const QString& why)
     m_connected = up;
     if (m_drives)
         m_drives->setLinkUp(up);
-    m_linkLight->setLed(up ? DriveStatus::Led::Green : DriveStatus::Led::Grey, why);
-}
-
-AlarmsPage* MainWindow::alarmsPage() const
-{
-    for (int i = 0; i < m_workspace->tabs()->count(); ++i) {
-        if (auto* page = qobject_cast<AlarmsPage*>(m_workspace->tabs()->widget(i)))
-            return page;
-    }
-    return nullptr;
-}
-
-void MainWindow::showAlarmsOf(int slave)
-{
-    if (!m_panel || !m_drives || !m_drives->contains(slave))
-        return;
-    const int row = m_panel->model()->rowOf(slave);
-    if (m_panel->selectedSlaves() != QVector<int>{slave}) {
-        // This drive alone (a row added to a selection of several would open the first's).
-        const QModelIndex index = m_panel->model()->index(row, 0);
-        m_panel->view()->selectionModel()->setCurrentIndex(
-            index, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
-    }
-    // The pages follow the selection at once; make sure they are this drive's.
-    showDrive({slave});
-    if (AlarmsPage* page = alarmsPage()) {
-        m_workspace->tabs()->setCurrentWidget(page);
-        page->refresh();
-    }
+    m_status->setLinkUp(up, why);
 }
 
 void MainWindow::onOpened(bool ok, const QString& error)
@@ -517,122 +315,11 @@ void MainWindow::identifyKnown()
     }
 }
 
-void MainWindow::showDrive(const QVector<int>& slaves)
-{
-    m_selected = slaves;
-    // Several drives of one family: one setting can be written to all of them.
-    bool sameFamily = slaves.size() > 1;
-    for (int s : slaves)
-        sameFamily = sameFamily && m_drives->parameters(s) &&
-                     m_drives->info(s).family == m_drives->info(slaves.first()).family;
-    m_multiWrite->setEnabled(sameFamily);
-    if (slaves.isEmpty() || !m_drives->parameters(slaves.first())) {
-        m_workspace->setDrive(nullptr, QString());
-        return;
-    }
-    const DeviceInfo info = m_drives->info(slaves.first());
-    if (m_workspace->drive() == m_drives->parameters(info.slave))
-        return;
-    m_workspace->setDrive(m_drives->parameters(info.slave), driveTitle(info.slave));
-    // The monitoring side of the drive: live values, test run and alarm histories.
-    auto* monitor = new MonitorPage(m_hub, m_drives->parameters(info.slave), m_workspace->tabs());
-    // First: what a drive is doing is what one wants to see on selecting it (as on a TOP-1).
-    m_workspace->tabs()->insertTab(0, monitor, tr("Monitor"));
-    m_workspace->tabs()->setCurrentIndex(0);
-    // The DC controller's settings page shows what the controller does now, too.
-    for (DcControllerPage* page : m_workspace->findChildren<DcControllerPage*>())
-        page->setMonitorHub(m_hub);
-    auto* run = new TestRunPanel(m_drives, info.slave, m_workspace->tabs());
-    run->setMonitorHub(m_hub); // live state; the drive is polled (and trended) while shown
-    run->setPollingActive(m_poller->isActive());
-    // Scrolls rather than raising the window's minimum height above a laptop's screen.
-    auto* runScroll = new QScrollArea(m_workspace->tabs());
-    runScroll->setFrameShape(QFrame::NoFrame);
-    runScroll->setWidgetResizable(true);
-    runScroll->setWidget(run);
-    m_workspace->tabs()->addTab(runScroll, tr("Test run"));
-    auto* alarms = new AlarmsPage(m_drives->session(info.slave), m_workspace->tabs());
-    m_workspace->tabs()->addTab(alarms, tr("Alarms"));
-    // Live: raised, cleared and power-cycled alarms show without a click, as on the banner.
-    alarms->followLive(m_hub, m_poller);
-    alarms->refresh();
-}
-
-QString MainWindow::driveTitle(int slave) const
-{
-    const DeviceInfo info = m_drives->info(slave);
-    return tr("Machine number %1 (%2, %3) — %4, firmware V%5")
-        .arg(info.slave)
-        .arg(DeviceInfo::hexText(info.slave), DeviceInfo::switchText(info.slave), info.model,
-             info.firmware);
-}
-
-void MainWindow::buildMonitorDocks()
-{
-    m_overview = new BusOverview(m_drives, m_hub, dock(QStringLiteral("overviewDock")));
-    connect(m_overview, &BusOverview::driveActivated, this,
-            [this](int slave) { m_panel->view()->selectRow(m_panel->model()->rowOf(slave)); });
-    m_trends = new TrendPanel(m_hub, dock(QStringLiteral("trendDock")));
-    m_groupsView = new GroupsView(m_groups, dock(QStringLiteral("groupsDock")));
-    for (const auto& [name, widget] :
-         {std::pair(QStringLiteral("overviewDock"), (QWidget*)m_overview),
-          std::pair(QStringLiteral("trendDock"), (QWidget*)m_trends),
-          std::pair(QStringLiteral("groupsDock"), (QWidget*)m_groupsView)}) {
-        QWidget* old = dock(name)->widget();
-        dock(name)->setWidget(widget);
-        delete old;
-    }
-}
-
-QDockWidget* MainWindow::dock(const QString& name) const
-{
-    return findChild<QDockWidget*>(name);
-}
-
 void MainWindow::monitorAll()
 {
     if (!m_drives)
         return;
-    dock(QStringLiteral("overviewDock"))->show();
-    dock(QStringLiteral("trendDock"))->show();
-    m_trends->showDrives(m_drives->slaves());
-}
-
-void MainWindow::writeToSelected()
-{
-    if (m_selected.size() < 2)
-        return;
-    MultiDriveWriteDialog dialog(m_drives, m_selected, QString(), this);
-    dialog.exec();
-}
-
-void MainWindow::exportAlarms()
-{
-    if (!m_drives || m_drives->slaves().isEmpty())
-        return;
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Export alarm histories"), QStringLiteral("alarms.csv"), tr("CSV files (*.csv)"));
-    if (path.isEmpty())
-        return;
-    auto* exporter = new AlarmExport(m_drives, this);
-    connect(exporter, &AlarmExport::finished, this, [this, exporter](bool, const QString& message) {
-        statusBar()->showMessage(message, 10000);
-        exporter->deleteLater();
-    });
-    exporter->exportTo(path);
-}
-
-void MainWindow::chooseConnection()
-{
-    ConnectionDialog dialog(this);
-    if (dialog.exec() != QDialog::Accepted)
-        return;
-    const ConnectionSettings settings = dialog.settings();
-    if (!m_exitGuard) {
-        connectTo(settings);
-        return;
-    }
-    m_exitGuard->check(tr("connect elsewhere"), [this, settings] { connectTo(settings); });
+    m_docks->monitorAll(m_drives->slaves());
 }
 
 void MainWindow::disconnectBus()
@@ -682,11 +369,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         });
         return;
     }
-    QSettings settings;
-    settings.setValue(QStringLiteral("mainWindow/geometry"), saveGeometry());
-    settings.setValue(QStringLiteral("mainWindow/state"), saveState());
-    m_splitterState = m_splitter->saveState();
-    settings.setValue(QStringLiteral("mainWindow/splitter"), m_splitterState);
+    m_geometry.save();
     event->accept();
 }
 

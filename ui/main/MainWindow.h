@@ -1,6 +1,10 @@
 #pragma once
 
 #include "ConnectionSettings.h"
+#include "main/BusDocks.h"
+#include "main/ConnectionStatus.h"
+#include "main/DrivePages.h"
+#include "main/WindowGeometry.h"
 
 #include <QHash>
 #include <QMainWindow>
@@ -9,10 +13,8 @@
 #include <memory>
 
 class QAction;
-class QDockWidget;
 class QLabel;
 class QSplitter;
-class QToolBar;
 
 namespace opentop {
 
@@ -33,10 +35,12 @@ class TrendPanel;
 class TrafficLog;
 class StatusLight;
 class AlarmsPage;
+class MainMenus;
 
 // The main window: the bus on the left (scan, drives, status lights), the selected drive's
 // pages on the right. It owns the connection; all bus work happens on the client's worker
 // thread and comes back asynchronously, so the window never waits on the wire.
+// Its parts live beside it: MainMenus, DrivePages, BusDocks, ConnectionStatus, WindowGeometry.
 class MainWindow : public QMainWindow
 {
     Q_OBJECT
@@ -65,23 +69,23 @@ public:
     StopAllButton* stopAllButton() const { return m_stopAll; }
     ExitGuard* exitGuard() const { return m_exitGuard; }
     DriveStatusPoller* statusPoller() const { return m_poller; }
-    QLabel* connectionLabel() const { return m_connectionLabel; }
+    QLabel* connectionLabel() const { return m_status->label(); }
     // The link's light in the status bar: green only while connected and the link is up.
-    StatusLight* linkLight() const { return m_linkLight; }
+    StatusLight* linkLight() const { return m_status->light(); }
     // The selected drive's Alarms page (null when none is open).
-    AlarmsPage* alarmsPage() const;
+    AlarmsPage* alarmsPage() const { return m_pages->alarmsPage(); }
     // Selects `slave` and brings its Alarms page to the front (the alarm banner's Show).
-    void showAlarmsOf(int slave);
+    void showAlarmsOf(int slave) { m_pages->showAlarmsOf(slave); }
     MonitorHub* monitorHub() const { return m_hub; }
-    BusOverview* busOverview() const { return m_overview; }
-    TrendPanel* trendPanel() const { return m_trends; }
+    BusOverview* busOverview() const { return m_docks->overview(); }
+    TrendPanel* trendPanel() const { return m_docks->trends(); }
     // Every drive's communication group, kept up to date (writes to a parent re-read children).
     BusGroupTracker* groups() const { return m_groups; }
-    GroupsView* groupsView() const { return m_groupsView; }
+    GroupsView* groupsView() const { return m_docks->groupsView(); }
     // The offer of the drives last seen on this connection (or to scan), per connection.
     BusRecallBar* recallBar() const { return m_recall; }
     // The permanent marker of a simulated bus (hidden on hardware).
-    QLabel* simulatedBanner() const { return m_simBanner; }
+    QLabel* simulatedBanner() const { return m_status->simulatedBanner(); }
     // Shows the bus overview and the trends of every drive (they poll while shown).
     void monitorAll();
 
@@ -92,9 +96,6 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
-    // The default or remembered geometry, brought within the screen's available area.
-    void fitToScreen(bool remembered);
-    void buildActions();
     void teardown();
     // Makes `client` the window's connection (the old one closed) and builds its views; the
     // client is opened by the caller, or already open.
@@ -109,13 +110,6 @@ private:
     // The link is up or down: every live view follows (monitor/Freshness).
     void setLinkUp(bool up, const QString& why);
     void identifyKnown();
-    void showDrive(const QVector<int>& slaves);
-    void writeToSelected();
-    void chooseConnection();
-    void exportAlarms();
-    void buildMonitorDocks();
-    QDockWidget* dock(const QString& name) const;
-    QString driveTitle(int slave) const;
 
     ClientFactory m_factory;
     std::unique_ptr<TrafficLog> m_log;
@@ -137,21 +131,15 @@ private:
     ExitGuard* m_exitGuard = nullptr;
     bool m_leavingChecked = false; // the user has answered the exit question: close now
     QAction* m_stopAllAction = nullptr;
-    QToolBar* m_toolbar = nullptr;
     QSplitter* m_splitter;
-    QByteArray m_splitterState;
-    QLabel* m_connectionLabel;
-    StatusLight* m_linkLight;
-    QVector<int> m_selected;
-    QAction* m_multiWrite = nullptr;
-    QAction* m_disconnect = nullptr;
+    ConnectionStatus* m_status; // the status bar's connection widgets
+    WindowGeometry m_geometry;
+    BusDocks* m_docks = nullptr;
+    MainMenus* m_menus = nullptr;
+    DrivePages* m_pages = nullptr;
     MonitorHub* m_hub = nullptr;
-    BusOverview* m_overview = nullptr;
-    TrendPanel* m_trends = nullptr;
     BusGroupTracker* m_groups = nullptr;
-    GroupsView* m_groupsView = nullptr;
     BusRecallBar* m_recall = nullptr;
-    QLabel* m_simBanner;
 };
 
 } // namespace opentop

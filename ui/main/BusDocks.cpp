@@ -1,0 +1,88 @@
+#include "main/BusDocks.h"
+
+#include "TrafficLog.h"
+#include "bus/BusDrives.h"
+#include "bus/BusListModel.h"
+#include "bus/BusOverview.h"
+#include "bus/BusPanel.h"
+#include "groups/GroupsView.h"
+#include "traffic/TrafficLogView.h"
+#include "trends/TrendPanel.h"
+
+#include <QDockWidget>
+#include <QLabel>
+#include <QMainWindow>
+#include <QTableView>
+
+namespace opentop {
+
+BusDocks::BusDocks(QMainWindow* window, TrafficLog* log)
+    : QObject(window)
+    , m_window(window)
+{
+    // Every frame, decoded with parameter names, in a dock that can be shown or hidden.
+    auto* trafficDock = new QDockWidget(tr("Traffic log"), window);
+    trafficDock->setObjectName(QStringLiteral("trafficDock"));
+    trafficDock->setWidget(new TrafficLogView(log, trafficDock));
+    window->addDockWidget(Qt::BottomDockWidgetArea, trafficDock);
+    trafficDock->hide();
+    // Live views of the whole bus; their contents are made per connection.
+    for (const auto& [name, title] :
+         {std::pair(QStringLiteral("overviewDock"), tr("Bus overview")),
+          std::pair(QStringLiteral("trendDock"), tr("Trends")),
+          std::pair(QStringLiteral("groupsDock"), tr("Communication groups"))}) {
+        auto* d = new QDockWidget(title, window);
+        d->setObjectName(name);
+        d->setWidget(new QLabel(tr("Not connected"), d));
+        window->addDockWidget(Qt::BottomDockWidgetArea, d);
+        d->hide();
+    }
+    // The bottom docks share one place as tabs: side by side they would not fit a laptop's
+    // width, and each still has the full width for its columns.
+    window->tabifyDockWidget(trafficDock, dock(QStringLiteral("overviewDock")));
+    window->tabifyDockWidget(trafficDock, dock(QStringLiteral("trendDock")));
+    window->tabifyDockWidget(trafficDock, dock(QStringLiteral("groupsDock")));
+}
+
+QDockWidget* BusDocks::dock(const QString& name) const
+{
+    return m_window->findChild<QDockWidget*>(name);
+}
+
+void BusDocks::fill(BusDrives* drives, MonitorHub* hub, BusGroupTracker* groups, BusPanel* panel)
+{
+    m_overview = new BusOverview(drives, hub, dock(QStringLiteral("overviewDock")));
+    connect(m_overview, &BusOverview::driveActivated, m_window,
+            [panel](int slave) { panel->view()->selectRow(panel->model()->rowOf(slave)); });
+    m_trends = new TrendPanel(hub, dock(QStringLiteral("trendDock")));
+    m_groupsView = new GroupsView(groups, dock(QStringLiteral("groupsDock")));
+    replace(QStringLiteral("overviewDock"), m_overview);
+    replace(QStringLiteral("trendDock"), m_trends);
+    replace(QStringLiteral("groupsDock"), m_groupsView);
+}
+
+void BusDocks::clear()
+{
+    for (const QString& name : {QStringLiteral("overviewDock"), QStringLiteral("trendDock"),
+                                QStringLiteral("groupsDock")})
+        replace(name, new QLabel(tr("Not connected"), dock(name)));
+    m_overview = nullptr;
+    m_trends = nullptr;
+    m_groupsView = nullptr;
+}
+
+void BusDocks::replace(const QString& name, QWidget* widget)
+{
+    QWidget* old = dock(name)->widget();
+    dock(name)->setWidget(widget);
+    delete old;
+}
+
+void BusDocks::monitorAll(const QVector<int>& slaves)
+{
+    dock(QStringLiteral("overviewDock"))->show();
+    dock(QStringLiteral("trendDock"))->show();
+    m_trends->showDrives(slaves);
+}
+
+} // namespace opentop

@@ -1,0 +1,127 @@
+#include "main/DrivePages.h"
+
+#include "alarms/AlarmsPage.h"
+#include "bus/BusDrives.h"
+#include "bus/BusListModel.h"
+#include "bus/BusPanel.h"
+#include "bus/DriveStatusPoller.h"
+#include "main/MainWindow.h"
+#include "monitor/MonitorPage.h"
+#include "pages/DcControllerPage.h"
+#include "run/TestRunPanel.h"
+#include "session/DeviceParameters.h"
+#include "workspace/DriveWorkspace.h"
+
+#include <QItemSelectionModel>
+#include <QScrollArea>
+#include <QTabWidget>
+#include <QTableView>
+
+namespace opentop {
+
+DrivePages::DrivePages(MainWindow* window)
+    : QObject(window)
+    , m_window(window)
+{
+}
+
+void DrivePages::clear()
+{
+    DriveWorkspace* workspace = m_window->workspace();
+    while (workspace->tabs()->count() > 0)
+        delete workspace->tabs()->widget(0);
+    workspace->setDrive(nullptr, QString());
+}
+
+AlarmsPage* DrivePages::alarmsPage() const
+{
+    QTabWidget* tabs = m_window->workspace()->tabs();
+    for (int i = 0; i < tabs->count(); ++i) {
+        if (auto* page = qobject_cast<AlarmsPage*>(tabs->widget(i)))
+            return page;
+    }
+    return nullptr;
+}
+
+void DrivePages::showAlarmsOf(int slave)
+{
+    BusPanel* panel = m_window->busPanel();
+    BusDrives* drives = m_window->drives();
+    if (!panel || !drives || !drives->contains(slave))
+        return;
+    const int row = panel->model()->rowOf(slave);
+    if (panel->selectedSlaves() != QVector<int>{slave}) {
+        // This drive alone (a row added to a selection of several would open the first's).
+        const QModelIndex index = panel->model()->index(row, 0);
+        panel->view()->selectionModel()->setCurrentIndex(
+            index, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    }
+    // The pages follow the selection at once; make sure they are this drive's.
+    showDrive({slave});
+    if (AlarmsPage* page = alarmsPage()) {
+        m_window->workspace()->tabs()->setCurrentWidget(page);
+        page->refresh();
+    }
+}
+
+void DrivePages::retitle(int slave)
+{
+    DriveWorkspace* workspace = m_window->workspace();
+    if (workspace->drive() && workspace->drive() == m_window->drives()->parameters(slave))
+        workspace->setTitle(driveTitle(slave));
+}
+
+void DrivePages::showDrive(const QVector<int>& slaves)
+{
+    m_selected = slaves;
+    BusDrives* drives = m_window->drives();
+    DriveWorkspace* workspace = m_window->workspace();
+    MonitorHub* hub = m_window->monitorHub();
+    // Several drives of one family: one setting can be written to all of them.
+    bool sameFamily = slaves.size() > 1;
+    for (int s : slaves)
+        sameFamily = sameFamily && drives->parameters(s) &&
+                     drives->info(s).family == drives->info(slaves.first()).family;
+    emit sameFamilySelected(sameFamily);
+    if (slaves.isEmpty() || !drives->parameters(slaves.first())) {
+        workspace->setDrive(nullptr, QString());
+        return;
+    }
+    const DeviceInfo info = drives->info(slaves.first());
+    if (workspace->drive() == drives->parameters(info.slave))
+        return;
+    workspace->setDrive(drives->parameters(info.slave), driveTitle(info.slave));
+    // The monitoring side of the drive: live values, test run and alarm histories.
+    auto* monitor = new MonitorPage(hub, drives->parameters(info.slave), workspace->tabs());
+    // First: what a drive is doing is what one wants to see on selecting it (as on a TOP-1).
+    workspace->tabs()->insertTab(0, monitor, tr("Monitor"));
+    workspace->tabs()->setCurrentIndex(0);
+    // The DC controller's settings page shows what the controller does now, too.
+    for (DcControllerPage* page : workspace->findChildren<DcControllerPage*>())
+        page->setMonitorHub(hub);
+    auto* run = new TestRunPanel(drives, info.slave, workspace->tabs());
+    run->setMonitorHub(hub); // live state; the drive is polled (and trended) while shown
+    run->setPollingActive(m_window->statusPoller()->isActive());
+    // Scrolls rather than raising the window's minimum height above a laptop's screen.
+    auto* runScroll = new QScrollArea(workspace->tabs());
+    runScroll->setFrameShape(QFrame::NoFrame);
+    runScroll->setWidgetResizable(true);
+    runScroll->setWidget(run);
+    workspace->tabs()->addTab(runScroll, tr("Test run"));
+    auto* alarms = new AlarmsPage(drives->session(info.slave), workspace->tabs());
+    workspace->tabs()->addTab(alarms, tr("Alarms"));
+    // Live: raised, cleared and power-cycled alarms show without a click, as on the banner.
+    alarms->followLive(hub, m_window->statusPoller());
+    alarms->refresh();
+}
+
+QString DrivePages::driveTitle(int slave) const
+{
+    const DeviceInfo info = m_window->drives()->info(slave);
+    return tr("Machine number %1 (%2, %3) — %4, firmware V%5")
+        .arg(info.slave)
+        .arg(DeviceInfo::hexText(info.slave), DeviceInfo::switchText(info.slave), info.model,
+             info.firmware);
+}
+
+} // namespace opentop

@@ -1,0 +1,137 @@
+#include "main/MainMenus.h"
+
+#include "alarms/AlarmExport.h"
+#include "bus/BusDrives.h"
+#include "bus/BusPanel.h"
+#include "connection/ConnectionDialog.h"
+#include "files/FileActions.h"
+#include "help/HelpActions.h"
+#include "main/BusDocks.h"
+#include "main/MainWindow.h"
+#include "run/ExitGuard.h"
+#include "workspace/DriveWorkspace.h"
+#include "workspace/MultiDriveWriteDialog.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QMenuBar>
+#include <QStatusBar>
+#include <QToolBar>
+
+namespace opentop {
+
+MainMenus::MainMenus(MainWindow* window, BusDocks* docks, std::function<QVector<int>()> selected,
+                     std::function<ConnectionSettings()> settings)
+    : QObject(window)
+    , m_window(window)
+    , m_docks(docks)
+    , m_selected(std::move(selected))
+{
+    QMenuBar* bar = window->menuBar();
+    QMenu* file = bar->addMenu(tr("&Bus"));
+    QToolBar* toolbar = window->addToolBar(tr("Main"));
+    toolbar->setObjectName(QStringLiteral("mainToolbar"));
+    m_toolbar = toolbar;
+    QAction* connectAction = file->addAction(tr("&Connect…"), this, &MainMenus::chooseConnection);
+    connectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
+    connectAction->setToolTip(tr("Choose the serial port, gateway or simulated bus (Ctrl+K)"));
+    toolbar->addAction(connectAction);
+    QAction* scan = file->addAction(tr("&Scan bus"), window, [window] {
+        if (BusPanel* panel = window->busPanel(); panel && !panel->isScanning())
+            panel->startScan(1, 247);
+    });
+    scan->setShortcut(QKeySequence(Qt::Key_F5));
+    toolbar->addAction(scan);
+    m_disconnect = file->addAction(tr("&Disconnect"), window, &MainWindow::disconnectBus);
+    m_disconnect->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_K));
+    m_disconnect->setEnabled(false);
+    connect(window, &MainWindow::connectionChanged, m_disconnect, &QAction::setEnabled);
+    file->addAction(tr("Communication &groups…"), window, [docks] {
+        docks->dock(QStringLiteral("groupsDock"))->show();
+        docks->dock(QStringLiteral("groupsDock"))->raise();
+    });
+    file->addAction(tr("&Export alarm histories…"), this, &MainMenus::exportAlarms);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, window, &QWidget::close);
+
+    // Backup, restore, compare and the file viewer (they take the bus as it is when used).
+    new FileActions(
+        window, bar->addMenu(tr("&Files")), [window] { return window->drives(); }, m_selected,
+        std::move(settings), window);
+
+    QMenu* drive = bar->addMenu(tr("&Drive"));
+    DriveWorkspace* workspace = window->workspace();
+    QAction* writeAll =
+        drive->addAction(tr("&Write all pending"), workspace, &DriveWorkspace::writeAll);
+    writeAll->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_W));
+    QAction* reread = drive->addAction(tr("&Re-read all"), workspace, &DriveWorkspace::refreshAll);
+    reread->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    m_multiWrite = drive->addAction(tr("Write a setting to the selected drives…"), this,
+                                    &MainMenus::writeToSelected);
+    m_multiWrite->setEnabled(false);
+    toolbar->addAction(writeAll);
+    toolbar->addAction(m_multiWrite);
+    toolbar->addSeparator();
+    QMenu* view = bar->addMenu(tr("&View"));
+    // The docks' own actions keep the menu's check marks in step with a dock closed by its
+    // title bar button.
+    const std::tuple<QString, QString, QKeySequence> docksActions[] = {
+        {QStringLiteral("trafficDock"), tr("&Traffic log"), QKeySequence(Qt::CTRL | Qt::Key_T)},
+        {QStringLiteral("overviewDock"), tr("Bus &overview"),
+         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O)},
+        {QStringLiteral("trendDock"), tr("T&rends"), QKeySequence(Qt::CTRL | Qt::Key_G)},
+        {QStringLiteral("groupsDock"), tr("Communication &groups"),
+         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_G)}};
+    for (const auto& [name, text, key] : docksActions) {
+        QAction* a = docks->dock(name)->toggleViewAction();
+        a->setText(text);
+        a->setShortcut(key);
+        view->addAction(a);
+    }
+    new HelpActions(window, bar->addMenu(tr("&Help")));
+}
+
+void MainMenus::chooseConnection()
+{
+    ConnectionDialog dialog(m_window);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const ConnectionSettings settings = dialog.settings();
+    if (!m_window->exitGuard()) {
+        m_window->connectTo(settings);
+        return;
+    }
+    m_window->exitGuard()->check(tr("connect elsewhere"),
+                                 [window = m_window, settings] { window->connectTo(settings); });
+}
+
+void MainMenus::exportAlarms()
+{
+    BusDrives* drives = m_window->drives();
+    if (!drives || drives->slaves().isEmpty())
+        return;
+    const QString path =
+        QFileDialog::getSaveFileName(m_window, tr("Export alarm histories"),
+                                     QStringLiteral("alarms.csv"), tr("CSV files (*.csv)"));
+    if (path.isEmpty())
+        return;
+    auto* exporter = new AlarmExport(drives, m_window);
+    connect(exporter, &AlarmExport::finished, m_window,
+            [window = m_window, exporter](bool, const QString& message) {
+                window->statusBar()->showMessage(message, 10000);
+                exporter->deleteLater();
+            });
+    exporter->exportTo(path);
+}
+
+void MainMenus::writeToSelected()
+{
+    const QVector<int> selected = m_selected();
+    if (selected.size() < 2)
+        return;
+    MultiDriveWriteDialog dialog(m_window->drives(), selected, QString(), m_window);
+    dialog.exec();
+}
+
+} // namespace opentop
