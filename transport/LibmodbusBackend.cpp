@@ -129,6 +129,7 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
     const QByteArray sent = txAdu(request);
     logFrame(true, sent, request, request.describe(), QString());
     m_timer.start();
+    m_sentAtMs = double(m_clock.nsecsElapsed()) / 1e6;
     if (modbus_send_raw_request(m_ctx, reinterpret_cast<const uint8_t*>(raw.constData()),
                                 int(raw.size())) == -1) {
         portFailure(errno, QCoreApplication::translate("opentop::Transport", "send failed"),
@@ -162,7 +163,7 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
         result.message = QCoreApplication::translate("opentop::Transport", "no reply within %1 ms")
                              .arg(timeoutMs);
         logEvent(request, result.message, result.errorText());
-        deferRecovery(request);
+        deferRecovery(request, timeoutMs);
         return result;
     }
 
@@ -185,7 +186,7 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
         logReply(adu, quint8(rtu.at(0)), rtu.size() > 1 ? quint8(rtu.at(1)) : -1, request, result);
     }
     if (result.error != ModbusError::Ok && result.error != ModbusError::Exception)
-        recover(request);
+        recover(request, timeoutMs);
     return result;
 }
 
@@ -326,19 +327,32 @@ void LibmodbusBackend::discardStaleInput(const ModbusRequest& request)
         QCoreApplication::translate("opentop::Transport", "stale bytes discarded before sending"));
 }
 
-void LibmodbusBackend::recover(const ModbusRequest& request)
+int LibmodbusBackend::lateReplyWindowMs(const ModbusRequest& request, int timeoutMs) const
 {
-    // Wait until the line has been quiet for about one frame time, swallowing whatever
-    // arrives (a late or second reply), then flush: the next request must not read it.
-    const int quietMs = recoveryQuietMs(request);
-    drain(request, quietMs, quietMs);
+    return std::max(timeoutMs, recoveryQuietMs(request));
 }
 
-void LibmodbusBackend::deferRecovery(const ModbusRequest& request)
+double LibmodbusBackend::replyDeadlineMs(const ModbusRequest& request, int timeoutMs) const
 {
+    return m_sentAtMs + timeoutMs + lateReplyWindowMs(request, timeoutMs);
+}
+
+void LibmodbusBackend::recover(const ModbusRequest& request, int timeoutMs)
+{
+    // What came may not have been the answer to this request (a late reply to an earlier one,
+    // another device, noise), so the real answer may still be on its way: swallow whatever
+    // arrives until the request's late-reply window is over, or until the line has been quiet
+    // for a frame time after a frame, then flush. Neither the retry nor the next request may
+    // read it.
     const int quietMs = recoveryQuietMs(request);
     const double nowMs = double(m_clock.nsecsElapsed()) / 1e6;
-    m_lateWatch.append({request.slave, nowMs + quietMs, quietMs});
+    drain(request, std::max(double(quietMs), replyDeadlineMs(request, timeoutMs) - nowMs), quietMs);
+}
+
+void LibmodbusBackend::deferRecovery(const ModbusRequest& request, int timeoutMs)
+{
+    m_lateWatch.append(
+        {request.slave, replyDeadlineMs(request, timeoutMs), recoveryQuietMs(request)});
 }
 
 void LibmodbusBackend::awaitLateReplies(const ModbusRequest& request)
@@ -369,7 +383,8 @@ void LibmodbusBackend::awaitLateReplies(const ModbusRequest& request)
 
 void LibmodbusBackend::drain(const ModbusRequest& request, double firstWindowMs, int quietMs)
 {
-    const double limitMs = 4.0 * quietMs + 100; // a babbling line must not hold the bus
+    // A babbling line must not hold the bus for ever.
+    const double limitMs = std::max(0.0, firstWindowMs) + 4.0 * quietMs + 100;
     QElapsedTimer timer;
     timer.start();
     QByteArray late;

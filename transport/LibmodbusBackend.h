@@ -13,12 +13,15 @@ namespace opentop {
 // What RTU and TCP share on top of libmodbus: every request goes out through
 // modbus_send_raw_request (so the traffic log shows the exact bytes), standard replies come
 // back through modbus_receive_confirmation, raw replies are read from the socket. Errors are
-// classified from errno; after an error the line is drained for about one frame time and
-// flushed so that a late reply cannot be taken for the answer to the next request. After a
-// timeout with nothing received that drain is deferred: it happens before the next request to
-// the same slave (or a broadcast, or when bytes are arriving), while a request to another
-// slave goes out at once, because a late reply carries its sender's id and is then rejected
-// as a wrong-slave reply. This keeps scans of empty addresses at one wait each.
+// classified from errno. RTU has no transaction ids, so after an error the master resynchronises
+// before anything else goes out: it reads and discards until the line has fallen silent, that is
+// until the late-reply window of the failed request has passed (a reply can still start up to
+// one more timeout after the timeout, see lateReplyWindowMs()) and nothing has arrived for a
+// frame time, then flushes. Only then can a late reply not be taken for the answer to the retry
+// or the next request. After a timeout with nothing received that wait is deferred: it happens
+// before the next request to the same slave (or a broadcast, or when bytes are arriving), while
+// a request to another slave goes out at once, because a late reply carries its sender's id and
+// is then rejected as a wrong-slave reply. This keeps scans of empty addresses at one wait each.
 class LibmodbusBackend : public ModbusBackend
 {
 public:
@@ -52,6 +55,10 @@ protected:
     // Time the line needs for `bytes` bytes (0 for TCP) and quiet time after an error.
     virtual double wireTimeMs(int bytes) const = 0;
     virtual int recoveryQuietMs(const ModbusRequest& request) const = 0;
+    // How long after its timeout a reply to a request may still start: as long as the timeout
+    // itself (a device twice as slow as the wait), and at least the quiet time. A reply later
+    // than that is beyond what a master without transaction ids can tell apart.
+    virtual int lateReplyWindowMs(const ModbusRequest& request, int timeoutMs) const;
 
     // 1 readable, 0 timed out, -1 interrupted; waits in short slices.
     int waitReadable(double timeoutMs) const;
@@ -69,12 +76,16 @@ private:
     void receiveStandard(const ModbusRequest& request, int timeoutMs, QByteArray* adu,
                          ModbusResult* result);
     void discardStaleInput(const ModbusRequest& request);
-    void recover(const ModbusRequest& request);
+    // After a reply that was garbled, foreign, malformed or incomplete: waits until the failed
+    // request's late-reply window has passed and the line is quiet (see the class comment).
+    void recover(const ModbusRequest& request, int timeoutMs);
+    // On m_clock: until when a reply to the request sent last may still start.
+    double replyDeadlineMs(const ModbusRequest& request, int timeoutMs) const;
     // Reads and discards until the line has been quiet for `quietMs` (the first window may be
     // shorter), then flushes.
     void drain(const ModbusRequest& request, double firstWindowMs, int quietMs);
     // After a silent timeout: remembers until when a late reply from that slave could start.
-    void deferRecovery(const ModbusRequest& request);
+    void deferRecovery(const ModbusRequest& request, int timeoutMs);
     // Before sending: completes a deferred drain where the id check cannot protect us.
     void awaitLateReplies(const ModbusRequest& request);
     void setResponseTimeout(double ms);
@@ -84,6 +95,7 @@ private:
     bool m_open = false;
     int m_turnaroundMs = -1;
     QElapsedTimer m_timer; // since the current request was sent
+    double m_sentAtMs = 0; // on m_clock: when the current request was sent
     struct LateWatch
     {
         quint8 slave = 0;

@@ -328,8 +328,13 @@ ModbusResult ModbusClientWorker::execute(State& s, const Item& item)
                 s.postToClient([message](ModbusClient* c) { emit c->connectionLost(message); });
             }
         }
+        // No valid answer to this request: the backend has resynchronised (the line has
+        // fallen silent, what came was discarded), so asking again is safe. A reply from
+        // another machine number or one that does not match the request (byte count, echo) is
+        // as garbled as a bad CRC. An exception is a valid answer and is not repeated.
         const bool retryable =
-            result.error == ModbusError::Timeout || result.error == ModbusError::CrcError;
+            result.error == ModbusError::Timeout || result.error == ModbusError::CrcError ||
+            result.error == ModbusError::WrongSlave || result.error == ModbusError::MalformedReply;
         if (!retryable || attempt > retries || s.interrupt)
             break;
         qCDebug(lcTransport) << "retrying" << request.describe() << "after" << result.errorText();

@@ -169,7 +169,7 @@ TEST(ModbusClientTest, CancelAllDeliversCancelled)
     EXPECT_EQ(f.mock->requestCount(), 1);
 }
 
-TEST(ModbusClientTest, RetriesOnlyTimeoutsAndCrcErrors)
+TEST(ModbusClientTest, RetriesTimeoutsAndGarbledRepliesButNotExceptions)
 {
     ConnectionSettings settings;
     settings.retries = 2;
@@ -209,9 +209,35 @@ TEST(ModbusClientTest, RetriesOnlyTimeoutsAndCrcErrors)
     {
         MockClient f([](const QByteArray&) { return RtuFrame::encodeReadReply(9, 3, {1}); },
                      settings);
-        EXPECT_EQ(f.client->execute(ModbusRequest::readHolding(1, 0, 1)).error,
-                  ModbusError::WrongSlave);
-        EXPECT_EQ(f.mock->requestCount(), 1);
+        // A foreign reply is garbled for this request: asked again (issue 11).
+        const ModbusResult r = f.client->execute(ModbusRequest::readHolding(1, 0, 1));
+        EXPECT_EQ(r.error, ModbusError::WrongSlave);
+        EXPECT_EQ(r.attempts, 3);
+        EXPECT_EQ(f.mock->requestCount(), 3);
+    }
+    {
+        // A reply that does not match the request (byte count for another quantity, a write
+        // echo with another value) is retried, and the retry's good answer is taken.
+        auto calls = std::make_shared<std::atomic<int>>(0);
+        MockClient f(
+            [calls](const QByteArray& adu) {
+                ModbusRequest request;
+                RtuFrame::decodeRequest(adu, &request);
+                if (++*calls % 2 == 1)
+                    return request.isRead()
+                               ? RtuFrame::encodeReadReply(1, 3, {1, 2})
+                               : RtuFrame::encodeWriteSingleReply(1, request.address, 999);
+                return echoDevice(adu);
+            },
+            settings);
+        ModbusResult r = f.client->execute(ModbusRequest::readHolding(1, 7, 1));
+        EXPECT_EQ(r.error, ModbusError::Ok);
+        EXPECT_EQ(r.attempts, 2);
+        EXPECT_EQ(r.registers, QVector<quint16>({7}));
+        r = f.client->execute(ModbusRequest::writeSingle(1, 0x10, 5));
+        EXPECT_EQ(r.error, ModbusError::Ok);
+        EXPECT_EQ(r.attempts, 2);
+        EXPECT_EQ(r.registers, QVector<quint16>({5}));
     }
     {
         auto calls = std::make_shared<std::atomic<int>>(0);

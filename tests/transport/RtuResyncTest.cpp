@@ -1,0 +1,126 @@
+// The RTU backend's resynchronisation (issue 11): RTU frames carry no transaction id, so a
+// reply that comes after the timeout looks exactly like the answer to the next request of the
+// same shape. After a timeout, a foreign or a garbled reply the backend lets the line fall
+// silent for the failed request's late-reply window (one more timeout) before anything goes
+// out again. At 19200 baud a frame time is about 20 ms, far shorter than the late replies here.
+#include "RtuBackend.h"
+#include "RtuFrame.h"
+#include "TrafficLog.h"
+#include "TransportTestSupport.h"
+
+#include <gtest/gtest.h>
+
+using namespace opentop;
+using namespace opentop::test;
+
+namespace {
+
+std::unique_ptr<RtuBackend> openBackend(const PtyDevice& device, TrafficLog* log)
+{
+    ConnectionSettings s;
+    s.port = device.path();
+    s.baud = 19200;
+    s.parity = 'N';
+    auto backend = std::make_unique<RtuBackend>(s);
+    backend->setTrafficLog(log);
+    QString error;
+    EXPECT_TRUE(backend->open(&error)) << error.toStdString();
+    return backend;
+}
+
+Answer answer(const QByteArray& bytes, int delayMs = 0)
+{
+    Answer a;
+    a.bytes = bytes;
+    a.delayMs = delayMs;
+    return a;
+}
+
+QByteArray readReply(quint8 slave, quint16 value)
+{
+    return RtuFrame::encodeReadReply(slave, 0x03, {value});
+}
+
+bool discarded(const TrafficLog& log, const QByteArray& bytes)
+{
+    for (const TrafficEntry& e : log.entries())
+        if (e.error.contains(QStringLiteral("discarded")) && e.bytes.contains(bytes))
+            return true;
+    return false;
+}
+
+} // namespace
+
+TEST(RtuResyncTest, LateReplyLongAfterTheTimeoutDoesNotAnswerTheNextRead)
+{
+    // The drive answers the read of 0x1001 70 ms after the 100 ms timeout: several frame
+    // times late. The next read, of 0x1013 with the same length, must get its own data.
+    PtyDevice device;
+    device.start([](const QByteArray& request) {
+        ModbusRequest r;
+        RtuFrame::decodeRequest(request, &r);
+        return r.address == 0x1001 ? answer(readReply(1, 1111), 170) : answer(readReply(1, 2222));
+    });
+    TrafficLog log;
+    auto backend = openBackend(device, &log);
+    ModbusResult r = backend->transact(ModbusRequest::readHolding(1, 0x1001, 1), 100);
+    EXPECT_EQ(r.error, ModbusError::Timeout);
+    r = backend->transact(ModbusRequest::readHolding(1, 0x1013, 1), 100);
+    ASSERT_EQ(r.error, ModbusError::Ok) << r.errorText().toStdString();
+    EXPECT_EQ(r.registers, QVector<quint16>({2222}));
+    EXPECT_TRUE(discarded(log, readReply(1, 1111)));
+}
+
+TEST(RtuResyncTest, OwnReplyAfterAForeignOneIsDiscardedBeforeTheNextRequest)
+{
+    // A foreign frame (id 2) comes first; the addressed drive's own reply follows 80 ms later.
+    // It answers a request that already failed and must not answer the next one.
+    PtyDevice device;
+    device.start([](const QByteArray& request) {
+        ModbusRequest r;
+        RtuFrame::decodeRequest(request, &r);
+        if (r.address != 1)
+            return answer(readReply(1, r.address));
+        Answer a = answer(readReply(2, 42));
+        a.second = readReply(1, 999);
+        a.secondDelayMs = 80;
+        return a;
+    });
+    TrafficLog log;
+    auto backend = openBackend(device, &log);
+    ModbusResult r = backend->transact(ModbusRequest::readHolding(1, 1, 1), 100);
+    EXPECT_EQ(r.error, ModbusError::WrongSlave);
+    r = backend->transact(ModbusRequest::readHolding(1, 5, 1), 100);
+    ASSERT_EQ(r.error, ModbusError::Ok) << r.errorText().toStdString();
+    EXPECT_EQ(r.registers, QVector<quint16>({5}));
+    EXPECT_TRUE(discarded(log, readReply(1, 999)));
+}
+
+TEST(RtuResyncTest, GarbledReplyIsFollowedByTheLateAnswerWhichIsDiscarded)
+{
+    // A reply with a bad CRC, then (60 ms later) a well-formed one: the request failed, the
+    // second frame must not become the answer to the next write.
+    PtyDevice device;
+    device.start([](const QByteArray& request) {
+        ModbusRequest r;
+        RtuFrame::decodeRequest(request, &r);
+        if (r.isRead()) {
+            QByteArray bad = readReply(1, 7);
+            bad[bad.size() - 1] = char(bad.at(bad.size() - 1) ^ 0x21);
+            Answer a = answer(bad);
+            a.second = RtuFrame::encodeWriteSingleReply(1, 0x20, 5);
+            a.secondDelayMs = 60;
+            return a;
+        }
+        return answer(RtuFrame::encodeWriteSingleReply(1, r.address, r.values.value(0)), 20);
+    });
+    TrafficLog log;
+    auto backend = openBackend(device, &log);
+    ModbusResult r = backend->transact(ModbusRequest::readHolding(1, 7, 1), 100);
+    EXPECT_EQ(r.error, ModbusError::CrcError);
+    // A write of the value the stray echo carries: only the drive's own echo may confirm it.
+    r = backend->transact(ModbusRequest::writeSingle(1, 0x20, 5), 100);
+    ASSERT_EQ(r.error, ModbusError::Ok) << r.errorText().toStdString();
+    EXPECT_TRUE(discarded(log, RtuFrame::encodeWriteSingleReply(1, 0x20, 5)));
+    EXPECT_EQ(device.requests().size(), 2u);
+}
