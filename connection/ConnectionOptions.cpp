@@ -29,8 +29,11 @@ void ConnectionOptions::addTo(QCommandLineParser& parser)
         {QStringLiteral("baud"), tr("Baud rate, 1200–115200."), tr("BAUD")},
         {QStringLiteral("parity"), tr("Parity: N, E or O."), tr("N|E|O")},
         {QStringLiteral("stop-bits"), tr("Stop bits: 1 or 2."), tr("N")},
-        {QStringLiteral("timeout"), tr("Response timeout per attempt in ms, 10–10000."), tr("MS")},
-        {QStringLiteral("retries"), tr("Extra attempts after a timeout or CRC error, 0–10."),
+        {QStringLiteral("timeout"),
+         tr("Response timeout per attempt in ms, 10–10000 (default 200)."), tr("MS")},
+        {QStringLiteral("retries"),
+         tr("Extra attempts after no reply or a garbled one, 0–10 (default 3; 2 more while "
+            "the line is noisy)."),
          tr("N")},
     });
 }

@@ -27,8 +27,10 @@ struct ConnectionSettings
     // In-process simulated bus: a device list such as "dbu200@1,dbu400@150,dcpid@7".
     QString simSpec;
 
-    int timeoutMs = 200;   // response timeout per attempt
-    int retries = 1;       // extra attempts after the first
+    int timeoutMs = 200; // response timeout per attempt
+    // Extra attempts after the first (more on a noisy line, see RetryPolicy). 3: with 5 % of
+    // the replies lost and a few late, a restore of a whole drive finishes in one run.
+    int retries = 3;
     int byteTimeoutMs = 0; // 0: derived from the baud rate
 
     // Empty when the settings are usable; otherwise what is wrong and what is allowed.

@@ -1,6 +1,7 @@
 #include "ModbusClientWorker.h"
 
 #include "ModbusBackend.h"
+#include "RetryPolicy.h"
 #include "TransportLog.h"
 
 #include <QCoreApplication>
@@ -41,6 +42,7 @@ struct ModbusClientWorker::State
     std::atomic<bool> open{false};
     std::atomic<quint64> nextId{1};
     bool lostReported = false; // worker thread only
+    RetryPolicy retryPolicy;   // worker thread only
 
     std::unique_ptr<ModbusBackend> backend;
     ConnectionSettings settings;
@@ -315,7 +317,7 @@ ModbusResult ModbusClientWorker::execute(State& s, const Item& item)
     const int timeoutMs = request.timeoutMs >= 0 ? request.timeoutMs : s.settings.timeoutMs;
     // A broadcast is never repeated: every device would execute it again.
     const int retries =
-        request.isBroadcast() ? 0 : (request.retries >= 0 ? request.retries : s.settings.retries);
+        request.isBroadcast() ? 0 : s.retryPolicy.retriesFor(request.retries, s.settings.retries);
     ModbusResult result;
     for (int attempt = 1;; ++attempt) {
         result = s.backend->transact(request, timeoutMs);
@@ -339,6 +341,8 @@ ModbusResult ModbusClientWorker::execute(State& s, const Item& item)
             break;
         qCDebug(lcTransport) << "retrying" << request.describe() << "after" << result.errorText();
     }
+    if (!request.isBroadcast())
+        s.retryPolicy.record(result);
     return result;
 }
 
