@@ -401,6 +401,7 @@ TEST_F(RestorerTest, APortVanishingDuringAWriteLeavesItNotConfirmedAndTheNextRun
 
     // The re-run reads the drive first: what it holds decides, then the rest is written.
     bus->setUnplugged(false);
+    ASSERT_TRUE(client->openBlocking().isEmpty()); // plugged in again
     const int from = logSize();
     const RestorePlan second = restore(1, file);
     EXPECT_EQ(second.outcome, RestorePlan::Outcome::Done) << qPrintable(second.reason);
@@ -418,5 +419,6 @@ TEST_F(RestorerTest, AFailedReadIsMarkedAsNotRead)
     EXPECT_EQ(plan.outcome, RestorePlan::Outcome::Communication);
     EXPECT_FALSE(plan.deviceRead); // nothing compared: no "0 of N settings differ"
     bus->setUnplugged(false);
+    ASSERT_TRUE(client->openBlocking().isEmpty());
     EXPECT_TRUE(restore(1, file).deviceRead);
 }
