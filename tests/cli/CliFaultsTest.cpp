@@ -8,9 +8,14 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
+#include <atomic>
+#include <chrono>
+#include <fcntl.h>
 #include <future>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <thread>
+#include <unistd.h>
 
 using namespace opentop;
 
@@ -19,6 +24,33 @@ namespace {
 QStringList words(const char* line)
 {
     return QString::fromLatin1(line).split(QLatin1Char(' '), Qt::SkipEmptyParts);
+}
+
+// Reads what a writer puts into a FIFO, from a thread: the read end is open before the writer
+// comes (so the writer never waits), and the thread ends at the writer's EOF or once `writerDone`
+// is set without anything having come (a writer that replaced the FIFO never opens it).
+inline std::future<QByteArray> drainFifo(const QString& path, std::atomic<bool>* writerDone)
+{
+    const int fd = ::open(QFile::encodeName(path).constData(), O_RDONLY | O_NONBLOCK);
+    return std::async(std::launch::async, [fd, writerDone] {
+        QByteArray data;
+        bool got = false;
+        for (int spins = 0; fd >= 0 && spins < 6000; ++spins) {
+            char buffer[4096];
+            const ssize_t n = ::read(fd, buffer, sizeof buffer);
+            if (n > 0) {
+                data.append(buffer, int(n));
+                got = true;
+                continue;
+            }
+            if (n == 0 && (got || writerDone->load()))
+                break;
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+        if (fd >= 0)
+            ::close(fd);
+        return data;
+    });
 }
 
 } // namespace
@@ -118,16 +150,11 @@ TEST(CliFaults, BackupToAFifoWritesThroughItAndToADirectoryIsRefusedFirst)
     QTemporaryDir dir;
     const QString fifo = dir.filePath(QStringLiteral("pipe"));
     ASSERT_EQ(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
-    auto read = std::async(std::launch::async, [fifo] {
-        QFile f(fifo);
-        return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-    });
+    std::atomic<bool> writerDone{false};
+    auto read = drainFifo(fifo, &writerDone);
     CliRun r = runCli({QStringLiteral("--sim=dbu200@1"), QStringLiteral("--variant=1=dbu200"),
                        QStringLiteral("backup"), QStringLiteral("1"), QStringLiteral("-o"), fifo});
-    if (r.code != ExitOk) { // unblock the reader
-        QFile unblock(fifo);
-        unblock.open(QIODevice::WriteOnly);
-    }
+    writerDone = true;
     const QByteArray data = read.get();
     EXPECT_EQ(r.code, ExitOk) << qPrintable(r.err);
     struct stat st

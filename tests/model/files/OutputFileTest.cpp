@@ -9,9 +9,14 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QTemporaryDir>
+#include <atomic>
+#include <chrono>
+#include <fcntl.h>
 #include <future>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <thread>
+#include <unistd.h>
 
 using namespace opentop;
 
@@ -33,14 +38,30 @@ bool isCharDevice(const QString& path)
     return ::stat(QFile::encodeName(path).constData(), &st) == 0 && S_ISCHR(st.st_mode);
 }
 
-// Reads everything written into a FIFO (opening it waits for the writer).
-std::future<QByteArray> drain(const QString& path)
+// Reads what a writer puts into a FIFO, from a thread: the read end is open before the writer
+// comes (so the writer never waits), and the thread ends at the writer's EOF or once `writerDone`
+// is set without anything having come (a writer that replaced the FIFO never opens it).
+inline std::future<QByteArray> drainFifo(const QString& path, std::atomic<bool>* writerDone)
 {
-    return std::async(std::launch::async, [path] {
-        QFile fifo(path);
-        if (!fifo.open(QIODevice::ReadOnly))
-            return QByteArray("<cannot open>");
-        return fifo.readAll();
+    const int fd = ::open(QFile::encodeName(path).constData(), O_RDONLY | O_NONBLOCK);
+    return std::async(std::launch::async, [fd, writerDone] {
+        QByteArray data;
+        bool got = false;
+        for (int spins = 0; fd >= 0 && spins < 6000; ++spins) {
+            char buffer[4096];
+            const ssize_t n = ::read(fd, buffer, sizeof buffer);
+            if (n > 0) {
+                data.append(buffer, int(n));
+                got = true;
+                continue;
+            }
+            if (n == 0 && (got || writerDone->load()))
+                break;
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+        if (fd >= 0)
+            ::close(fd);
+        return data;
     });
 }
 
@@ -51,9 +72,11 @@ TEST(OutputFile, AFifoIsWrittenThroughAndStaysAFifo)
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("pipe"));
     ASSERT_EQ(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
-    auto read = drain(path);
+    std::atomic<bool> done{false};
+    auto read = drainFifo(path, &done);
     QString error;
     EXPECT_TRUE(OutputFile::write(path, QByteArray("hello\n"), &error)) << qPrintable(error);
+    done = true;
     EXPECT_EQ(read.get(), QByteArray("hello\n"));
     EXPECT_TRUE(isFifo(path));
 }
@@ -63,16 +86,14 @@ TEST(OutputFile, ABackupSavedToAFifoLeavesTheFifoInPlace)
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("pipe"));
     ASSERT_EQ(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
-    auto read = drain(path);
+    std::atomic<bool> done{false};
+    auto read = drainFifo(path, &done);
     BackupFile file;
     file.tool = BackupFile::toolName();
     file.created = QDateTime::currentDateTimeUtc();
     QString error;
     const bool saved = file.save(path, ProfileRegistry::builtIn(), &error);
-    if (!saved) { // unblock the reader before failing
-        QFile unblock(path);
-        unblock.open(QIODevice::WriteOnly);
-    }
+    done = true;
     const QByteArray data = read.get();
     EXPECT_TRUE(saved) << qPrintable(error);
     EXPECT_TRUE(isFifo(path)) << "the FIFO was replaced by a regular file";
