@@ -6,6 +6,7 @@
 #include "bus/BusScanner.h"
 #include "files/BackupFile.h"
 #include "files/BackupReader.h"
+#include "files/OutputFile.h"
 #include "profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
@@ -89,6 +90,10 @@ int BackupCommand::run(CliContext& context, const QStringList& args)
         context.err() << tr("error: give the file to write: backup ID... -o FILE") << Qt::endl;
         return ExitUsage;
     }
+    if (const QString problem = OutputFile::problem(path); !problem.isEmpty()) {
+        context.err() << tr("error: %1; nothing read").arg(problem) << Qt::endl;
+        return ExitUsage;
+    }
     std::optional<QVector<int>> ids = selectIds(context, args);
     if (!ids)
         return ExitUsage;
@@ -151,12 +156,21 @@ int BackupCommand::run(CliContext& context, const QStringList& args)
                               {QStringLiteral("variant"), result.device.variant},
                               {QStringLiteral("model"), result.device.model},
                               {QStringLiteral("parameters"), result.parameters},
+                              {QStringLiteral("read"), int(result.device.parameters.size())},
                               {QStringLiteral("requests"), result.requests},
                               {QStringLiteral("elapsedMs"), result.elapsedMs},
                               {QStringLiteral("ok"), result.ok}};
-        if (!context.json())
+        if (!context.json() && result.failures.isEmpty())
             context.out() << tr("%1: %2 settings read in %3 requests, %4 ms")
                                  .arg(title)
+                                 .arg(result.parameters)
+                                 .arg(result.requests)
+                                 .arg(result.elapsedMs)
+                          << Qt::endl;
+        else if (!context.json())
+            context.out() << tr("%1: reading failed, %2 of %3 settings read (%4 requests, %5 ms)")
+                                 .arg(title)
+                                 .arg(result.device.parameters.size())
                                  .arg(result.parameters)
                                  .arg(result.requests)
                                  .arg(result.elapsedMs)

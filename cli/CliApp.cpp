@@ -75,7 +75,7 @@ QString CliApp::helpText(const QString& program) const
                "group is checked before a write or command\n\n"
                "Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file\n"
                "(nothing written), 4 verification mismatch or a drive that did not stop,\n"
-               "130 interrupted (what was done is reported).\n\n"
+               "130 interrupted by Ctrl-C, SIGTERM or SIGHUP (what was done is reported).\n\n"
                "\"%1 help COMMAND\" shows a command's options.\n")
                 .arg(program);
     return text;
@@ -154,10 +154,21 @@ int CliApp::run(const QStringList& arguments, QTextStream& out, QTextStream& err
             return ExitUsage;
         }
     }
+    // Wrong option values are refused before anything is opened or sent (exit 2).
+    QString wrong = ConnectionOptions::valueError(parser);
+    if (wrong.isEmpty() && parser.isSet(QStringLiteral("variant")))
+        wrong = CliContext::variantError(parser.value(QStringLiteral("variant")));
+    if (!wrong.isEmpty()) {
+        err << tr("%1: %2").arg(program, wrong) << '\n'
+            << tr("Try \"%1 --help\".").arg(program) << Qt::endl;
+        return ExitUsage;
+    }
     CliContext context(parser, out, err);
-    const int code = command->run(context, positional.mid(1));
+    int code = command->run(context, positional.mid(1));
     out.flush();
     err.flush();
+    if (context.usageError())
+        code = ExitUsage;
     if (context.interrupted() && code == ExitOk)
         return ExitInterrupted;
     return code;

@@ -53,6 +53,9 @@ void CliContext::installInterruptHandler()
 {
     std::signal(SIGINT, onInterrupt);
     std::signal(SIGTERM, onInterrupt);
+    // A dropped ssh session: stop between transactions and report like Ctrl-C, never die in
+    // the middle of a restore with nothing said.
+    std::signal(SIGHUP, onInterrupt);
 }
 
 bool CliContext::interrupted() const
@@ -67,7 +70,10 @@ bool CliContext::connectBus()
     QString error;
     const auto settings = ConnectionOptions::fromParser(m_parser, QString(), &error);
     if (!settings) {
-        m_err << tr("error: %1").arg(error) << Qt::endl;
+        // A wrong or missing connection option is a wrong command line (exit 2), said once.
+        if (!m_usageError)
+            m_err << tr("error: %1").arg(error) << Qt::endl;
+        m_usageError = true;
         return false;
     }
     m_settings = *settings;
@@ -175,6 +181,12 @@ DeviceSession* CliContext::session(int slave, QString* error)
     if (DeviceSession* s = m_sessions.value(slave))
         return s;
     const DeviceInfo info = identify(slave);
+    if (!m_client) {
+        // connectBus() has said why; "machine number N: not checked" would only mislead.
+        if (error)
+            *error = tr("machine number %1: no connection").arg(slave);
+        return nullptr;
+    }
     if (info.state != DeviceInfo::State::Present) {
         if (error)
             *error = tr("machine number %1: %2%3")
@@ -213,6 +225,31 @@ bool CliContext::wait(const std::function<void(std::function<void()> finish)>& s
     if (!done && m_client)
         m_client->cancelAll();
     return done;
+}
+
+QString CliContext::variantError(const QString& text)
+{
+    const ProfileRegistry& registry = ProfileRegistry::builtIn();
+    QStringList known;
+    for (const Profile& p : registry.profiles()) {
+        for (const ProfileVariant& v : p.variants)
+            known << v.id;
+    }
+    for (const QString& item : text.split(QLatin1Char(','))) {
+        const int eq = item.indexOf(QLatin1Char('='));
+        const QString variant = (eq < 0 ? item : item.mid(eq + 1)).trimmed().toLower();
+        if (eq >= 0) {
+            bool ok = false;
+            const int id = item.left(eq).trimmed().toInt(&ok);
+            if (!ok || id < 1 || id > 247)
+                return tr("--variant %1: \"%2\" is not a machine number 1–247")
+                    .arg(item.trimmed(), item.left(eq).trimmed());
+        }
+        if (!known.contains(variant))
+            return tr("--variant %1: \"%2\" is not a drive variant; use one of %3")
+                .arg(item.trimmed(), variant, known.join(QStringLiteral(", ")));
+    }
+    return QString();
 }
 
 std::optional<QVector<int>> CliContext::parseIds(const QString& text, QString* error)

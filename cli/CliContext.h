@@ -69,6 +69,11 @@ public:
     // Parses "1,2,5-7" (machine numbers 1–247).
     static std::optional<QVector<int>> parseIds(const QString& text, QString* error);
 
+    // The first wrong item of a --variant value (VARIANT or ID=VARIANT,...), empty when right.
+    static QString variantError(const QString& text);
+    // True when the connection options were wrong or missing (the exit code is then 2).
+    bool usageError() const { return m_usageError; }
+
     static void installInterruptHandler();
 
 private:
@@ -84,6 +89,7 @@ private:
     QHash<int, QString> m_simTypes;
     QHash<int, DeviceSession*> m_sessions;
     QHash<int, DeviceInfo> m_identified;
+    bool m_usageError = false;
 };
 
 } // namespace opentop

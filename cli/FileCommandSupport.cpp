@@ -22,8 +22,16 @@ QString tr(const char* text)
 std::optional<BackupFile> FileCommandSupport::load(CliContext& context, const QString& path,
                                                    int* exitCode)
 {
-    if (!QFileInfo(path).isFile()) {
-        context.err() << tr("error: %1: no such file").arg(path) << Qt::endl;
+    const QFileInfo info(path);
+    QString problem;
+    if (!info.exists())
+        problem = tr("no such file");
+    else if (info.isDir())
+        problem = tr("is a directory; name a backup file");
+    else if (!info.isFile())
+        problem = tr("is not a regular file (a device, FIFO or socket); name a backup file");
+    if (!problem.isEmpty()) {
+        context.err() << tr("error: %1: %2").arg(path, problem) << Qt::endl;
         *exitCode = ExitUsage;
         return std::nullopt;
     }
@@ -79,6 +87,7 @@ QJsonObject FileCommandSupport::planJson(const RestorePlan& plan)
         {QStringLiteral("drive"), plan.title},
         {QStringLiteral("outcome"), RestorePlan::outcomeKey(plan.outcome)},
         {QStringLiteral("reason"), plan.reason},
+        {QStringLiteral("deviceRead"), plan.deviceRead},
         {QStringLiteral("problems"), QJsonArray::fromStringList(plan.problems)},
         {QStringLiteral("notes"), QJsonArray::fromStringList(plan.notes)},
         {QStringLiteral("toWrite"), plan.count(RestorePlan::Item::Action::Write)},
@@ -87,6 +96,7 @@ QJsonObject FileCommandSupport::planJson(const RestorePlan& plan)
         {QStringLiteral("stored"), stored},
         {QStringLiteral("failed"), plan.count(Status::Failed)},
         {QStringLiteral("notAttempted"), plan.count(Status::NotAttempted)},
+        {QStringLiteral("notConfirmed"), plan.count(Status::NotConfirmed)},
         {QStringLiteral("items"), items},
     };
 }

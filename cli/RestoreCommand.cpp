@@ -75,6 +75,18 @@ void RestoreCommand::printPlan(CliContext& context, const RestorePlan& plan, boo
     QTextStream& out = context.out();
     const int differ = plan.count(Item::Action::Write);
     const int settings = int(plan.items.size()) - plan.count(Item::Action::Store);
+    if (!plan.deviceRead) {
+        // Nothing was compared: "0 of 69 settings differ" would claim the opposite.
+        out << tr("%1: the drive's settings were not read; nothing compared, nothing written")
+                   .arg(plan.title)
+            << '\n';
+        if (!plan.reason.isEmpty())
+            out << plan.reason << '\n';
+        for (const QString& note : plan.notes)
+            out << tr("note: %1").arg(note) << '\n';
+        out.flush();
+        return;
+    }
     out << trn("%1: %n of %2 settings differ", differ).arg(plan.title).arg(settings) << '\n';
     TextTable table({tr("parameter"), tr("file value"), tr("device value"),
                      report ? tr("result") : tr("action")});
@@ -96,6 +108,8 @@ void RestoreCommand::printPlan(CliContext& context, const RestorePlan& plan, boo
                    .arg(plan.count(Item::Status::Unchanged))
                    .arg(plan.count(Item::Status::Failed))
                    .arg(plan.count(Item::Status::NotAttempted));
+        if (plan.count(Item::Status::NotConfirmed) > 0)
+            out << tr(", %1 not confirmed").arg(plan.count(Item::Status::NotConfirmed));
         if (plan.count(Item::Action::Store) > 0)
             out << tr("; %1 of %2 store commands written")
                        .arg(stored)

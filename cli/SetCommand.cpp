@@ -71,7 +71,18 @@ int SetCommand::run(CliContext& context, const QStringList& args)
             context.err() << tr("error: \"%1\" is not NAME=VALUE").arg(arg) << Qt::endl;
             return ExitUsage;
         }
-        assignments.append({arg.left(eq).trimmed(), arg.mid(eq + 1).trimmed(), nullptr, {}});
+        const QString name = arg.left(eq).trimmed();
+        for (const Assignment& a : assignments) {
+            if (a.name == name) {
+                // Which one would the drive keep? Neither is written.
+                context.err() << tr("error: %1 is given twice (%2=%3 and %4); give each setting "
+                                    "once; nothing written")
+                                     .arg(name, name, a.text, arg)
+                              << Qt::endl;
+                return ExitUsage;
+            }
+        }
+        assignments.append({name, arg.mid(eq + 1).trimmed(), nullptr, {}});
     }
     DeviceSession* session = context.session(slave, &error);
     if (!session) {
@@ -222,6 +233,8 @@ int SetCommand::run(CliContext& context, const QStringList& args)
                          ValueCodec::format(*a.meta, a.outcome.value, valueContext));
             if (!a.outcome.error.isEmpty())
                 r.insert(QStringLiteral("error"), a.outcome.error);
+            if (a.outcome.unconfirmed)
+                r.insert(QStringLiteral("notConfirmed"), true);
             results.append(r);
         }
         QJsonObject json{{QStringLiteral("slave"), slave}, {QStringLiteral("results"), results}};
@@ -237,7 +250,11 @@ int SetCommand::run(CliContext& context, const QStringList& args)
             const QString result =
                 a.outcome.ok ? (a.outcome.verified ? tr("written, verified")
                                                    : tr("written (command, not readable)"))
-                             : a.outcome.error;
+                : a.outcome.unconfirmed
+                    ? tr("not confirmed (%1): the drive may or may not hold it; \"get\" reads "
+                         "it back")
+                          .arg(a.outcome.error)
+                    : a.outcome.error;
             table.addRow({a.name, value, result});
         }
         table.print(context.out());

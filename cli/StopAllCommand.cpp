@@ -140,13 +140,17 @@ int StopAllCommand::run(CliContext& context, const QStringList& args)
             o.insert(QStringLiteral("detail"), r.detail);
         drives.append(o);
     }
-    const bool confirmed = !known.isEmpty();
+    // Checked: the drives were asked afterwards. Confirmed: every one answered that it stopped.
+    const bool checked = !known.isEmpty();
+    const bool confirmed = checked && report.broadcastOk() && report.allStopped() &&
+                           report.drives.size() == known.size();
     if (context.json()) {
         out << QJsonDocument(QJsonObject{{QStringLiteral("broadcasts"), broadcasts},
+                                         {QStringLiteral("checked"), checked},
                                          {QStringLiteral("confirmed"), confirmed},
                                          {QStringLiteral("drives"), drives}})
                    .toJson(QJsonDocument::Indented);
-    } else if (confirmed) {
+    } else if (checked) {
         table.print(out);
     } else {
         out << tr("Only the broadcast was sent: drives do not answer a broadcast, so nothing "

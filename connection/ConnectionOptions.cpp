@@ -45,6 +45,15 @@ QStringList ConnectionOptions::names()
             QStringLiteral("stop-bits"), QStringLiteral("timeout"), QStringLiteral("retries")};
 }
 
+QString ConnectionOptions::valueError(const QCommandLineParser& parser)
+{
+    // With a stand-in bus, the only failures left are the values of the options given.
+    QString error;
+    if (fromParser(parser, QStringLiteral("dbu200@1"), &error))
+        return QString();
+    return error;
+}
+
 std::optional<ConnectionSettings> ConnectionOptions::fromParser(const QCommandLineParser& parser,
                                                                 const QString& fallbackSim,
                                                                 QString* error)
@@ -70,7 +79,7 @@ std::optional<ConnectionSettings> ConnectionOptions::fromParser(const QCommandLi
     const Profile* profile = ProfileRegistry::builtIn().family(family);
     if (!profile)
         return fail(
-            tr("unknown family \"%1\"; known: %2")
+            tr("--family %1: unknown family; use one of %2")
                 .arg(family, ProfileRegistry::builtIn().families().join(QStringLiteral(", "))));
     s.baud = profile->serial.baud;
     s.parity = profile->serial.parity;
@@ -107,18 +116,25 @@ std::optional<ConnectionSettings> ConnectionOptions::fromParser(const QCommandLi
         *target = parser.value(key).toInt(&ok);
         return ok;
     };
-    if (!intOption("baud", &s.baud))
-        return fail(tr("--baud must be a number, 1200–115200"));
-    if (!intOption("stop-bits", &s.stopBits))
-        return fail(tr("--stop-bits must be 1 or 2"));
-    if (!intOption("timeout", &s.timeoutMs))
-        return fail(tr("--timeout must be a number of milliseconds, 10–10000"));
-    if (!intOption("retries", &s.retries))
-        return fail(tr("--retries must be a number, 0–10"));
+    // Every value given is checked whatever the connection's kind: a wrong option is a wrong
+    // command line, never a communication failure.
+    if (!intOption("baud", &s.baud) || s.baud < 1200 || s.baud > 115200)
+        return fail(tr("--baud %1: use a baud rate 1200–115200 (e.g. 9600, 19200, 38400)")
+                        .arg(parser.value(QStringLiteral("baud"))));
+    if (!intOption("stop-bits", &s.stopBits) || (s.stopBits != 1 && s.stopBits != 2))
+        return fail(
+            tr("--stop-bits %1: use 1 or 2").arg(parser.value(QStringLiteral("stop-bits"))));
+    if (!intOption("timeout", &s.timeoutMs) || s.timeoutMs < 10 || s.timeoutMs > 10000)
+        return fail(tr("--timeout %1: use a response timeout of 10–10000 ms")
+                        .arg(parser.value(QStringLiteral("timeout"))));
+    if (!intOption("retries", &s.retries) || s.retries < 0 || s.retries > 10)
+        return fail(tr("--retries %1: use 0–10 extra attempts")
+                        .arg(parser.value(QStringLiteral("retries"))));
     if (parser.isSet(QStringLiteral("parity"))) {
-        const QString p = parser.value(QStringLiteral("parity")).toUpper();
+        const QString p = parser.value(QStringLiteral("parity")).trimmed().toUpper();
         if (p != QLatin1String("N") && p != QLatin1String("E") && p != QLatin1String("O"))
-            return fail(tr("--parity must be N, E or O"));
+            return fail(tr("--parity %1: use N (none), E (even) or O (odd)")
+                            .arg(parser.value(QStringLiteral("parity"))));
         s.parity = p.at(0).toLatin1();
     }
     const QString invalid = s.validate();

@@ -17,6 +17,9 @@ public:
     static QStringList names(); // the option names addTo() adds
     // `fallbackSim`: the simulated bus to use when no connection is named (the GUI's default);
     // empty means a connection must be named.
+    // The first wrong value among the connection options given (a range, a family, a SPEC),
+    // empty when they are all right; whether a bus is named at all is not checked here.
+    static QString valueError(const QCommandLineParser& parser);
     static std::optional<ConnectionSettings> fromParser(const QCommandLineParser& parser,
                                                         const QString& fallbackSim, QString* error);
 };

@@ -1,4 +1,5 @@
 #include "files/BackupFile.h"
+#include "files/OutputFile.h"
 
 #include "files/BackupFileParser.h"
 #include "profile/ProfileRegistry.h"
@@ -8,7 +9,6 @@
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
-#include <QSaveFile>
 #include <cmath>
 #include <functional>
 
@@ -272,13 +272,7 @@ std::optional<BackupFile> BackupFile::fromJson(const QByteArray& data,
 
 bool BackupFile::save(const QString& path, const ProfileRegistry& registry, QString* error) const
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(toJson(registry)) < 0 || !file.commit()) {
-        if (error)
-            *error = tr("cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+    return OutputFile::write(path, toJson(registry), error);
 }
 
 std::optional<BackupFile> BackupFile::load(const QString& path, const ProfileRegistry& registry,
@@ -290,7 +284,17 @@ std::optional<BackupFile> BackupFile::load(const QString& path, const ProfileReg
             *error = tr("cannot read %1: %2").arg(path, file.errorString());
         return std::nullopt;
     }
-    return fromJson(file.readAll(), registry, error);
+    // Never more than the cap is read, whatever the file claims to hold (a device has no size).
+    const QByteArray data = file.read(kMaxFileBytes + 1);
+    if (data.size() > kMaxFileBytes) {
+        if (error)
+            *error = tr("%1 is larger than %2 MB, the most a backup file may hold (a backup of "
+                        "247 drives is far smaller); not a backup file")
+                         .arg(path)
+                         .arg(kMaxFileBytes / (1024 * 1024));
+        return std::nullopt;
+    }
+    return fromJson(data, registry, error);
 }
 
 } // namespace opentop

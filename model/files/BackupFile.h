@@ -22,6 +22,8 @@ class BackupFile
     Q_DECLARE_TR_FUNCTIONS(opentop::BackupFile)
 public:
     static constexpr int kFormatVersion = 1;
+    // load() refuses larger files without reading them (a 247-drive backup is far smaller).
+    static constexpr qint64 kMaxFileBytes = 16 * 1024 * 1024;
     static QString formatName() { return QStringLiteral("opentop-backup"); }
 
     // Where the settings were read (informational: a restore uses the connection it is given).

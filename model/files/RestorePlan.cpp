@@ -182,6 +182,7 @@ RestorePlan RestorePlan::check(const Profile& profile, const QString& liveVarian
 void RestorePlan::build(const Profile& profile, const QString& liveVariant,
                         const QHash<QString, QVector<quint16>>& live)
 {
+    deviceRead = true;
     BackupDevice drive;
     drive.family = profile.family;
     drive.variant = liveVariant;
@@ -256,14 +257,18 @@ QString RestorePlan::statusText(const Item& item)
         return tr("failed: %1").arg(item.error);
     case Item::Status::NotAttempted:
         return tr("not attempted");
+    case Item::Status::NotConfirmed:
+        return tr("not confirmed (%1): the drive may or may not hold it; run the restore again "
+                  "to read it back")
+            .arg(item.error);
     }
     return QString();
 }
 
 QString RestorePlan::statusKey(Item::Status status)
 {
-    static const char* const keys[] = {"pending", "unchanged", "verified", "failed",
-                                       "not-attempted"};
+    static const char* const keys[] = {"pending", "unchanged",     "verified",
+                                       "failed",  "not-attempted", "not-confirmed"};
     return QString::fromLatin1(keys[int(status)]);
 }
 

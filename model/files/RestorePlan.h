@@ -36,6 +36,7 @@ public:
             Verified, // written and read back (store commands: written)
             Failed,
             NotAttempted, // after an interruption or a communication failure
+            NotConfirmed, // sent, but no reply: the drive may or may not hold it
         };
         QString parameter;
         Action action = Action::Keep;
@@ -62,8 +63,9 @@ public:
     int slave = 0;
     QString title; // "drive 1 (DBU200-D)"
     Outcome outcome = Outcome::Planned;
-    QString reason;       // for a refusal or failure, for people
-    QStringList problems; // every value that may not be written (a refusal)
+    QString reason;          // for a refusal or failure, for people
+    bool deviceRead = false; // build() ran: the drive's values are known and compared
+    QStringList problems;    // every value that may not be written (a refusal)
     QStringList notes;
     QVector<Item> items; // in write order
 

@@ -121,15 +121,20 @@ void Restorer::writeNext()
             if (o.ok) {
                 done.status = Item::Status::Verified;
             } else {
-                done.status = Item::Status::Failed;
+                done.status = o.unconfirmed ? Item::Status::NotConfirmed : Item::Status::Failed;
                 done.error = o.error;
                 // Read back, but different: the line works, go on with the rest.
                 done.mismatch = o.sent && o.value.valid;
             }
             emit self->progress(self->m_finished, total, done.parameter);
             if (!o.ok && !done.mismatch) {
-                self->stopRemaining(RestorePlan::Outcome::Communication,
-                                    QStringLiteral("%1: %2").arg(done.parameter, done.error));
+                self->stopRemaining(
+                    RestorePlan::Outcome::Communication,
+                    o.unconfirmed
+                        ? tr("%1 not confirmed (%2): the drive may or may not hold it; run the "
+                             "restore again, it reads the drive back first")
+                              .arg(done.parameter, done.error)
+                        : QStringLiteral("%1: %2").arg(done.parameter, done.error));
                 return;
             }
             self->writeNext();

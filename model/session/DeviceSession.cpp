@@ -292,6 +292,10 @@ void DeviceSession::send(const ParameterMeta* meta, const QVector<quint16>& regi
     m_client->submit(request, this,
                      [this, meta, written, options, outcome, done](const ModbusResult& r) mutable {
                          if (!r.ok()) {
+                             outcome.unconfirmed = r.error != ModbusError::Exception &&
+                                                   r.error != ModbusError::NotConnected &&
+                                                   r.error != ModbusError::InvalidRequest &&
+                                                   r.error != ModbusError::Cancelled;
                              explainFailure(r, outcome, done);
                              return;
                          }

@@ -36,6 +36,9 @@ public:
         bool sent = false;     // whether anything reached the wire (false: refused before)
         bool verified = false; // a write was read back and matched
         bool mismatch = false; // a write was read back and differed
+        // A write whose frame may have reached the drive but whose reply never came (the port
+        // vanished, a timeout, a garbled reply): the drive may or may not hold the value.
+        bool unconfirmed = false;
     };
     using Done = std::function<void(const Outcome&)>;
 

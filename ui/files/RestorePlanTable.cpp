@@ -44,7 +44,8 @@ void RestorePlanTable::showPlans(const QVector<RestorePlan>& plans, bool written
                                     written ? RestorePlan::statusText(item) : QString()};
             // Black text on the light colours so that a dark theme stays readable.
             QColor background;
-            if (item.mismatch || item.status == Item::Status::Failed)
+            if (item.mismatch || item.status == Item::Status::Failed ||
+                item.status == Item::Status::NotConfirmed)
                 background = failureColor();
             else if (item.action == Item::Action::Write)
                 background = changeColor();

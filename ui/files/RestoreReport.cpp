@@ -17,6 +17,8 @@ QString RestoreReport::summary(const RestorePlan& plan)
                        .arg(plan.count(Item::Status::Unchanged))
                        .arg(plan.count(Item::Status::Failed))
                        .arg(plan.count(Item::Status::NotAttempted));
+    if (plan.count(Item::Status::NotConfirmed) > 0)
+        text += tr(", %1 not confirmed").arg(plan.count(Item::Status::NotConfirmed));
     if (plan.count(Item::Action::Store) > 0)
         text += tr("; %1 of %2 store commands written")
                     .arg(stored)

@@ -313,13 +313,14 @@ TEST_F(RestorerTest, InjectedFaultsAreReportedAndTheRestCompletesLater)
     const RestorePlan failed = restore(restorer, file);
     EXPECT_EQ(failed.outcome, RestorePlan::Outcome::Communication);
     EXPECT_EQ(failed.count(Item::Status::Verified), 1);
-    EXPECT_EQ(failed.count(Item::Status::Failed), 1);
+    EXPECT_EQ(failed.count(Item::Status::Failed), 0);
     EXPECT_EQ(failed.count(Item::Status::NotAttempted), 1);
+    // The drive executed the write and only its reply was lost: not "failed", not confirmed.
     const Item& lost = item(failed, "spno3.speed");
-    EXPECT_EQ(lost.status, Item::Status::Failed);
+    EXPECT_EQ(lost.status, Item::Status::NotConfirmed);
     EXPECT_FALSE(lost.error.isEmpty());
     EXPECT_FALSE(lost.mismatch);
-    EXPECT_TRUE(failed.reason.startsWith(QStringLiteral("spno3.speed: ")))
+    EXPECT_TRUE(failed.reason.startsWith(QStringLiteral("spno3.speed not confirmed")))
         << qPrintable(failed.reason);
 
     bus->setFaults(FaultInjector());
@@ -375,4 +376,49 @@ TEST_F(RestorerTest, AValueTheDriveDoesNotKeepIsAMismatchAndTheRestContinues)
     EXPECT_TRUE(speed2.error.contains(QStringLiteral("1200 r/min"))) << qPrintable(speed2.error);
     EXPECT_EQ(item(plan, "spno3.speed").status, Item::Status::Verified);
     EXPECT_EQ(held(1, 0xCA05), 1350);
+}
+
+TEST_F(RestorerTest, APortVanishingDuringAWriteLeavesItNotConfirmedAndTheNextRunReadsItBack)
+{
+    const BackupDevice file = factory(1);
+    set(1, 0xCA03, 1500);
+    set(1, 0xCA05, 1600);
+    Restorer restorer(session(1));
+    QObject::connect(&restorer, &Restorer::progress, &restorer,
+                     [this](int done, int, const QString&) {
+                         if (done == 1)
+                             bus->setUnplugged(true);
+                     });
+    const RestorePlan failed = restore(restorer, file);
+    EXPECT_EQ(failed.outcome, RestorePlan::Outcome::Communication);
+    const Item& inFlight = item(failed, "spno3.speed");
+    EXPECT_EQ(inFlight.status, Item::Status::NotConfirmed);
+    const QString text = RestorePlan::statusText(inFlight);
+    EXPECT_TRUE(text.startsWith(QStringLiteral("not confirmed"))) << qPrintable(text);
+    EXPECT_TRUE(text.contains(QStringLiteral("may or may not hold it"))) << qPrintable(text);
+    EXPECT_FALSE(text.contains(QStringLiteral("failed"))) << qPrintable(text);
+    EXPECT_EQ(RestorePlan::statusKey(inFlight.status), QStringLiteral("not-confirmed"));
+
+    // The re-run reads the drive first: what it holds decides, then the rest is written.
+    bus->setUnplugged(false);
+    ASSERT_TRUE(client->openBlocking().isEmpty()); // plugged in again
+    const int from = logSize();
+    const RestorePlan second = restore(1, file);
+    EXPECT_EQ(second.outcome, RestorePlan::Outcome::Done) << qPrintable(second.reason);
+    EXPECT_TRUE(second.deviceRead);
+    EXPECT_EQ(held(1, 0xCA05), 1350);
+    EXPECT_FALSE(writesSince(from).isEmpty());
+}
+
+TEST_F(RestorerTest, AFailedReadIsMarkedAsNotRead)
+{
+    BackupDevice file = factory(1);
+    file.parameters = {*file.parameter(QStringLiteral("spno2.speed"))};
+    bus->setUnplugged(true);
+    const RestorePlan plan = restore(1, file);
+    EXPECT_EQ(plan.outcome, RestorePlan::Outcome::Communication);
+    EXPECT_FALSE(plan.deviceRead); // nothing compared: no "0 of N settings differ"
+    bus->setUnplugged(false);
+    ASSERT_TRUE(client->openBlocking().isEmpty());
+    EXPECT_TRUE(restore(1, file).deviceRead);
 }

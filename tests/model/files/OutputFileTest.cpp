@@ -1,0 +1,153 @@
+// Writing a file the safe way for what its path names: a regular file is replaced atomically,
+// a device or FIFO is written through (never replaced by a regular file) with every write
+// error reported, a directory is refused; and a backup file too large to be one is refused
+// without being read.
+#include "files/OutputFile.h"
+#include "files/BackupFile.h"
+#include "profile/ProfileRegistry.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QTemporaryDir>
+#include <atomic>
+#include <chrono>
+#include <fcntl.h>
+#include <future>
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <thread>
+#include <unistd.h>
+
+using namespace opentop;
+
+namespace {
+
+bool isFifo(const QString& path)
+{
+    struct stat st
+    {
+    };
+    return ::stat(QFile::encodeName(path).constData(), &st) == 0 && S_ISFIFO(st.st_mode);
+}
+
+bool isCharDevice(const QString& path)
+{
+    struct stat st
+    {
+    };
+    return ::stat(QFile::encodeName(path).constData(), &st) == 0 && S_ISCHR(st.st_mode);
+}
+
+// Reads what a writer puts into a FIFO, from a thread: the read end is open before the writer
+// comes (so the writer never waits), and the thread ends at the writer's EOF or once `writerDone`
+// is set without anything having come (a writer that replaced the FIFO never opens it).
+inline std::future<QByteArray> drainFifo(const QString& path, std::atomic<bool>* writerDone)
+{
+    const int fd = ::open(QFile::encodeName(path).constData(), O_RDONLY | O_NONBLOCK);
+    return std::async(std::launch::async, [fd, writerDone] {
+        QByteArray data;
+        bool got = false;
+        for (int spins = 0; fd >= 0 && spins < 6000; ++spins) {
+            char buffer[4096];
+            const ssize_t n = ::read(fd, buffer, sizeof buffer);
+            if (n > 0) {
+                data.append(buffer, int(n));
+                got = true;
+                continue;
+            }
+            if (n == 0 && (got || writerDone->load()))
+                break;
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+        if (fd >= 0)
+            ::close(fd);
+        return data;
+    });
+}
+
+} // namespace
+
+TEST(OutputFile, AFifoIsWrittenThroughAndStaysAFifo)
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("pipe"));
+    ASSERT_EQ(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
+    std::atomic<bool> done{false};
+    auto read = drainFifo(path, &done);
+    QString error;
+    EXPECT_TRUE(OutputFile::write(path, QByteArray("hello\n"), &error)) << qPrintable(error);
+    done = true;
+    EXPECT_EQ(read.get(), QByteArray("hello\n"));
+    EXPECT_TRUE(isFifo(path));
+}
+
+TEST(OutputFile, ABackupSavedToAFifoLeavesTheFifoInPlace)
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("pipe"));
+    ASSERT_EQ(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
+    std::atomic<bool> done{false};
+    auto read = drainFifo(path, &done);
+    BackupFile file;
+    file.tool = BackupFile::toolName();
+    file.created = QDateTime::currentDateTimeUtc();
+    QString error;
+    const bool saved = file.save(path, ProfileRegistry::builtIn(), &error);
+    done = true;
+    const QByteArray data = read.get();
+    EXPECT_TRUE(saved) << qPrintable(error);
+    EXPECT_TRUE(isFifo(path)) << "the FIFO was replaced by a regular file";
+    EXPECT_TRUE(data.contains("opentop-backup")) << data.constData();
+}
+
+TEST(OutputFile, AFullDeviceReportsTheWriteErrorAndIsNotReplaced)
+{
+    const QString full = QStringLiteral("/dev/full");
+    if (!isCharDevice(full))
+        GTEST_SKIP() << "no /dev/full here";
+    QString error;
+    EXPECT_FALSE(OutputFile::write(full, QByteArray(4096, 'x'), &error));
+    EXPECT_TRUE(error.startsWith(QStringLiteral("cannot write /dev/full: "))) << qPrintable(error);
+    EXPECT_TRUE(error.contains(QStringLiteral("No space left on device"))) << qPrintable(error);
+    EXPECT_TRUE(isCharDevice(full));
+}
+
+TEST(OutputFile, ADirectoryIsRefusedAndARegularFileReplaced)
+{
+    QTemporaryDir dir;
+    QString error;
+    EXPECT_FALSE(OutputFile::write(dir.path(), QByteArray("x"), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("directory"))) << qPrintable(error);
+    EXPECT_TRUE(OutputFile::problem(dir.path()).contains(QStringLiteral("directory")));
+    EXPECT_TRUE(OutputFile::problem(dir.filePath(QStringLiteral("no/such/x.json")))
+                    .contains(QStringLiteral("does not exist")));
+
+    const QString path = dir.filePath(QStringLiteral("a.json"));
+    EXPECT_TRUE(OutputFile::problem(path).isEmpty());
+    ASSERT_TRUE(OutputFile::write(path, QByteArray("first"), &error)) << qPrintable(error);
+    ASSERT_TRUE(OutputFile::write(path, QByteArray("second"), &error)) << qPrintable(error);
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+    EXPECT_EQ(f.readAll(), QByteArray("second"));
+    // A link to a regular file: the file it names is replaced, the link kept.
+    const QString link = dir.filePath(QStringLiteral("link.json"));
+    ASSERT_TRUE(QFile::link(path, link));
+    ASSERT_TRUE(OutputFile::write(link, QByteArray("third"), &error)) << qPrintable(error);
+    EXPECT_TRUE(QFileInfo(link).isSymLink());
+    QFile g(path);
+    ASSERT_TRUE(g.open(QIODevice::ReadOnly));
+    EXPECT_EQ(g.readAll(), QByteArray("third"));
+}
+
+TEST(BackupFileSize, AFileLargerThanTheCapIsRefusedNamingTheCap)
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("huge.json"));
+    QFile huge(path);
+    ASSERT_TRUE(huge.open(QIODevice::WriteOnly));
+    ASSERT_TRUE(huge.resize(100LL * 1024 * 1024)); // sparse: no disk used
+    huge.close();
+    QString error;
+    EXPECT_FALSE(BackupFile::load(path, ProfileRegistry::builtIn(), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("larger than 16 MB"))) << qPrintable(error);
+}
