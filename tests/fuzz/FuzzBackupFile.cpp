@@ -11,7 +11,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
     const QByteArray bytes(reinterpret_cast<const char*>(data), static_cast<qsizetype>(size));
     QString error;
-    const auto file = opentop::BackupFile::fromJson(bytes, opentop::ProfileRegistry::builtIn(), &error);
+    const auto file =
+        opentop::BackupFile::fromJson(bytes, opentop::ProfileRegistry::builtIn(), &error);
     if (file) {
         // an accepted file must write back out and read again as the same settings
         const QByteArray again = file->toJson(opentop::ProfileRegistry::builtIn());
