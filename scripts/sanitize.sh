@@ -42,7 +42,7 @@ export QT_QPA_PLATFORM=offscreen
 cd "$build"
 status=0
 if [ "$kind" = address ]; then
-    export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1"
+    export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1"
     export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
     export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0"
     echo "== running the whole test suite under ASan+UBSan"
