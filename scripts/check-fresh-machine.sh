@@ -7,7 +7,10 @@
 #                                            must be written and not blank
 #   scripts/check-fresh-machine.sh package   build the .deb, lintian + appstream + desktop checks,
 #                                            then install it in a second fresh root, run it, remove it
-#   scripts/check-fresh-machine.sh test gui package   all three; one build serves all of them
+#   scripts/check-fresh-machine.sh sanitize  the whole test suite built with ASan+UBSan
+#                                            (scripts/sanitize.sh address) and the transport and
+#                                            model tests with TSan (scripts/sanitize.sh thread)
+#   scripts/check-fresh-machine.sh test gui package sanitize   all of them in one root
 #
 # Needs root and mmdebstrap (installed from Debian's packages when missing). The roots come from
 # the machine's own apt sources; the checked tree is a clean clone of HEAD (uncommitted changes
@@ -27,9 +30,9 @@ forms=("$@")
 ((${#forms[@]})) || forms=(test)
 for f in "${forms[@]}"; do
     case "$f" in
-    test | gui | package) ;;
+    test | gui | package | sanitize) ;;
     *)
-        echo "usage: $0 test|gui|package [...]" >&2
+        echo "usage: $0 test|gui|package|sanitize [...]" >&2
         exit 2
         ;;
     esac
@@ -285,6 +288,15 @@ if want package; then
         done
         [ \$left = 0 ] && echo '   removed: nothing of the package is left'
         exit \$left" 2>&1 | tee -a "$out/package.log"
+    end
+fi
+
+if want sanitize; then
+    # the packages come from the README's command (setup.sh build is a no-op after "test")
+    begin "sanitizers: bash scripts/sanitize.sh address, then thread"
+    in_root "$root_a" 'cd /src/main && bash scripts/setup.sh build >/dev/null &&
+        bash scripts/sanitize.sh address && bash scripts/sanitize.sh thread' 2>&1 |
+        tee "$out/sanitize.log"
     end
 fi
 

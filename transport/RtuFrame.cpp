@@ -272,7 +272,8 @@ bool RtuFrame::decodeRequest(const QByteArray& adu, ModbusRequest* request)
     r.slave = byteAt(adu, 0);
     r.function = byteAt(adu, 1);
     const int expected = expectedRequestLength(adu);
-    if (expected > 0 && adu.size() < expected)
+    // 0: too short to tell its own length (a 0x10 frame cut before its byte count)
+    if (expected == 0 || (expected > 0 && adu.size() < expected))
         return false;
     switch (r.function) {
     case ModbusRequest::ReadHolding:

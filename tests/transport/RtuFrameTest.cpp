@@ -201,6 +201,29 @@ TEST(RtuFrameTest, ServerSideRoundTrips)
     EXPECT_EQ(RtuFrame::encodeException(1, 0x06, 0x02), hex("01 86 02 C3 A1"));
 }
 
+// Found by FuzzRtuReply (tests/fuzz) under AddressSanitizer: a 0x10 request cut before its byte
+// count (4 to 6 bytes) was decoded past its end. Every cut of every request is refused; the
+// ASan build (scripts/sanitize.sh address) fails this on any read past the bytes given.
+TEST(RtuFrameTest, TruncatedRequestsAreRefusedWithoutReadingPastTheEnd)
+{
+    const QVector<ModbusRequest> requests = {ModbusRequest::readHolding(1, 0x1000, 17),
+                                             ModbusRequest::writeSingle(1, 0x100D, 2),
+                                             ModbusRequest::writeMultiple(1, 0x1001, {1, 2, 3}),
+                                             ModbusRequest::readDeviceIdentification(1, 1, 0)};
+    for (const ModbusRequest& request : requests) {
+        const QByteArray adu = RtuFrame::encodeRequest(request);
+        for (qsizetype n = 0; n < adu.size(); ++n) {
+            ModbusRequest r;
+            const QByteArray cut = adu.left(n); // a heap copy of exactly n bytes
+            EXPECT_FALSE(RtuFrame::decodeRequest(cut, &r))
+                << request.describe().toStdString() << " cut to " << n << " bytes";
+        }
+    }
+    ModbusRequest r;
+    EXPECT_FALSE(RtuFrame::decodeRequest(hex("7D 10 07 00"), &r));
+    EXPECT_FALSE(RtuFrame::decodeRequest(hex("01 10 10 01 00"), &r));
+}
+
 TEST(RtuFrameTest, HexText)
 {
     EXPECT_EQ(RtuFrame::toHex(hex("01 03 CA 03")), QStringLiteral("01 03 CA 03"));

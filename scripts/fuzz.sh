@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses (tests/fuzz) with Debian's clang in build-fuzz/ and runs each
+# for a while from its seed corpus and dictionary. Any crash, leak, timeout or sanitizer report
+# fails the run; libFuzzer leaves the input as crash-*/leak-*/timeout-* in build-fuzz/findings/.
+#   scripts/fuzz.sh [SECONDS] [HARNESS...]   default 60 s each, every harness
+# Environment: OPENTOP_FUZZ_RUNS=N runs N inputs per harness instead of a time limit (the long
+# run before resolving issue 11: OPENTOP_FUZZ_RUNS=10000000).
+set -euo pipefail
+{ # read to the closing brace before anything runs
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${OPENTOP_FUZZ_BUILD_DIR:-$root/build-fuzz}"
+seconds="${1:-60}"
+shift || true
+all=(FuzzBackupFile FuzzProfileLoader FuzzRtuReply FuzzCliValues)
+harnesses=("$@")
+((${#harnesses[@]})) || harnesses=("${all[@]}")
+jobs="$(nproc 2>/dev/null || echo 2)"
+
+if ! command -v clang++ >/dev/null; then
+    if [ "$(id -u)" -ne 0 ]; then
+        echo "error: clang is missing; install it as root: apt-get install clang" >&2
+        exit 1
+    fi
+    apt-get update -q >/dev/null
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends clang >/dev/null
+fi
+if [ ! -f "$build/CMakeCache.txt" ]; then
+    CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+        -DOPENTOP_FUZZ=ON -DOPENTOP_BUILD_TESTS=OFF
+fi
+cmake --build "$build" -j "$jobs" --target "${harnesses[@]}"
+
+declare -A corpus=([FuzzBackupFile]=backup [FuzzProfileLoader]=profile [FuzzRtuReply]=rtu
+    [FuzzCliValues]=cli)
+declare -A seeds=([FuzzProfileLoader]="$root/model/profiles")
+export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
+export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0"
+export QT_QPA_PLATFORM=offscreen
+findings="$build/findings"
+mkdir -p "$findings"
+limit=(-max_total_time="$seconds")
+[ -n "${OPENTOP_FUZZ_RUNS:-}" ] && limit=(-runs="$OPENTOP_FUZZ_RUNS")
+status=0
+for h in "${harnesses[@]}"; do
+    name="${corpus[$h]}"
+    work="$build/corpus/$name" # grows as the fuzzer finds new paths; the seeds stay in git
+    mkdir -p "$work"
+    dirs=("$work")
+    [ -d "$root/tests/fuzz/corpus/$name" ] && dirs+=("$root/tests/fuzz/corpus/$name")
+    [ -n "${seeds[$h]:-}" ] && dirs+=("${seeds[$h]}")
+    echo "== $h: ${limit[*]}"
+    if "$build/tests/fuzz/$h" "${limit[@]}" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
+        -dict="$root/tests/fuzz/dict/$name.dict" -artifact_prefix="$findings/$h-" \
+        -print_final_stats=1 "${dirs[@]}" >"$findings/$h.log" 2>&1; then
+        grep -E '^stat::number_of_executed_units|^Done' "$findings/$h.log" || true
+    else
+        status=1
+        tail -n 40 "$findings/$h.log"
+        echo "FAIL: $h; the input is in $findings/$h-*" >&2
+    fi
+done
+exit "$status"
+}

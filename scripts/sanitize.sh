@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# Builds OpenTOP with a sanitizer in its own build directory and runs tests under it; any report
+# stops the test (halt_on_error) and fails the run.
+#   scripts/sanitize.sh address   AddressSanitizer + LeakSanitizer + UndefinedBehaviorSanitizer,
+#                                 whole test suite, in build-asan/
+#   scripts/sanitize.sh thread    ThreadSanitizer: the transport, model (monitor, worker thread,
+#                                 queued calls, cancellation, shutdown) tests, in build-tsan/
+# Environment: OPENTOP_SANITIZE_BUILD_DIR overrides the build directory; OPENTOP_CTEST_ARGS adds
+# ctest arguments (e.g. "-R ModbusClient"). Suppressions for reports inside third-party code
+# (Qt, fontconfig, ...) are in tests/sanitizers/, each with its reason.
+set -euo pipefail
+{ # read to the closing brace before anything runs
+
+kind="${1:-}"
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+case "$kind" in
+address) build="${OPENTOP_SANITIZE_BUILD_DIR:-$root/build-asan}" ;;
+thread) build="${OPENTOP_SANITIZE_BUILD_DIR:-$root/build-tsan}" ;;
+*)
+    echo "usage: $0 address|thread" >&2
+    exit 2
+    ;;
+esac
+jobs="$(nproc 2>/dev/null || echo 2)"
+supp="$root/tests/sanitizers"
+
+start=$SECONDS
+if [ ! -f "$build/CMakeCache.txt" ]; then
+    cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOPENTOP_WERROR=ON \
+        -DOPENTOP_SANITIZE="$kind"
+fi
+echo "== building with -fsanitize=$kind in $build"
+if [ "$kind" = address ]; then
+    cmake --build "$build" -j "$jobs"
+else
+    cmake --build "$build" -j "$jobs" --target test_transport test_model
+fi
+built=$SECONDS
+echo "== sanitizer build: $((built - start)) s"
+
+export QT_QPA_PLATFORM=offscreen
+cd "$build"
+status=0
+if [ "$kind" = address ]; then
+    export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1"
+    export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
+    export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0"
+    echo "== running the whole test suite under ASan+UBSan"
+    # shellcheck disable=SC2086
+    ctest --output-on-failure --timeout 600 -j "$jobs" ${OPENTOP_CTEST_ARGS:-} || status=$?
+else
+    export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$supp/tsan.supp"
+    echo "== running the transport and model tests under TSan"
+    # shellcheck disable=SC2086
+    ctest --output-on-failure --timeout 600 -j "$jobs" -L '^test_(transport|model)$' ${OPENTOP_CTEST_ARGS:-} || status=$?
+fi
+echo "== sanitizer tests: $((SECONDS - built)) s (whole run $((SECONDS - start)) s)"
+exit "$status"
+}

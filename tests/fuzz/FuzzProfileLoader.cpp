@@ -1,0 +1,17 @@
+// libFuzzer harness: the profile loader (ProfileLoader::loadJson) on arbitrary bytes.
+#include "profile/ProfileLoader.h"
+#include <QByteArray>
+#include <QString>
+#include <cstddef>
+#include <cstdint>
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
+{
+    const QByteArray bytes(reinterpret_cast<const char*>(data), static_cast<qsizetype>(size));
+    QString error;
+    const auto profile =
+        opentop::ProfileLoader::loadJson(bytes, QStringLiteral("fuzz.json"), &error);
+    if (!profile && error.isEmpty())
+        __builtin_trap(); // a refusal must say why
+    return 0;
+}
