@@ -10,7 +10,9 @@
 #   scripts/check-fresh-machine.sh sanitize  the whole test suite built with ASan+UBSan
 #                                            (scripts/sanitize.sh address) and the transport and
 #                                            model tests with TSan (scripts/sanitize.sh thread)
-#   scripts/check-fresh-machine.sh test gui package sanitize   all of them in one root
+#   scripts/check-fresh-machine.sh fuzz      every libFuzzer harness for OPENTOP_FUZZ_SECONDS (60)
+#                                            from its seed corpus (scripts/fuzz.sh)
+#   scripts/check-fresh-machine.sh test gui package sanitize fuzz   all of them in one root
 #
 # Needs root and mmdebstrap (installed from Debian's packages when missing). The roots come from
 # the machine's own apt sources; the checked tree is a clean clone of HEAD (uncommitted changes
@@ -30,9 +32,9 @@ forms=("$@")
 ((${#forms[@]})) || forms=(test)
 for f in "${forms[@]}"; do
     case "$f" in
-    test | gui | package | sanitize) ;;
+    test | gui | package | sanitize | fuzz) ;;
     *)
-        echo "usage: $0 test|gui|package|sanitize [...]" >&2
+        echo "usage: $0 test|gui|package|sanitize|fuzz [...]" >&2
         exit 2
         ;;
     esac
@@ -293,10 +295,20 @@ fi
 
 if want sanitize; then
     # the packages come from the README's command (setup.sh build is a no-op after "test")
-    begin "sanitizers: bash scripts/sanitize.sh address, then thread"
+    begin "sanitizers: bash scripts/sanitize.sh address (the whole suite under ASan+UBSan)"
     in_root "$root_a" 'cd /src/main && bash scripts/setup.sh build >/dev/null &&
-        bash scripts/sanitize.sh address && bash scripts/sanitize.sh thread' 2>&1 |
-        tee "$out/sanitize.log"
+        bash scripts/sanitize.sh address' 2>&1 | tee "$out/sanitize-address.log"
+    end
+    begin "sanitizers: bash scripts/sanitize.sh thread (transport, monitor and model under TSan)"
+    in_root "$root_a" 'cd /src/main && bash scripts/sanitize.sh thread' 2>&1 |
+        tee "$out/sanitize-thread.log"
+    end
+fi
+
+if want fuzz; then
+    begin "fuzzing: bash scripts/fuzz.sh ${OPENTOP_FUZZ_SECONDS:-60} (every harness, libFuzzer)"
+    in_root "$root_a" "cd /src/main && bash scripts/setup.sh build >/dev/null &&
+        bash scripts/fuzz.sh ${OPENTOP_FUZZ_SECONDS:-60}" 2>&1 | tee "$out/fuzz.log"
     end
 fi
 

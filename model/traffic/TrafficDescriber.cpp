@@ -18,6 +18,11 @@ namespace opentop {
 namespace {
 
 constexpr int kMaxNames = 4; // names listed for a block read before "…"
+// Modbus limits a read to 125 registers and a 0x10 write to 123; a frame asking more (a garbled
+// one, or a hand-made raw request) reads or writes no parameter, and naming its registers one by
+// one would cost up to 65535 profile look-ups per frame (found by tests/fuzz/FuzzTrafficLog).
+constexpr int kMaxReadCount = 125;
+constexpr int kMaxWriteCount = 123;
 
 // The registers of a read reply (RTU or TCP ADU); empty when the bytes do not carry them.
 QVector<quint16> replyRegisters(const TrafficEntry& entry, const ModbusRequest& request)
@@ -56,6 +61,8 @@ QString parameterText(const Profile& profile, const ModbusRequest& request,
                       const QVector<quint16>& registers)
 {
     const int count = request.function == ModbusRequest::WriteSingle ? 1 : request.count;
+    if (count > (request.isRead() ? kMaxReadCount : kMaxWriteCount))
+        return QString();
     QStringList names;
     const ParameterMeta* last = nullptr;
     bool more = false;

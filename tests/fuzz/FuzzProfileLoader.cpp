@@ -4,6 +4,8 @@
 #include <QString>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
@@ -13,5 +15,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
         opentop::ProfileLoader::loadJson(bytes, QStringLiteral("fuzz.json"), &error);
     if (!profile && error.isEmpty())
         __builtin_trap(); // a refusal must say why
+    // OPENTOP_FUZZ_EXPLAIN=1 ./FuzzProfileLoader FILE: why a seed is refused (to keep seeds valid)
+    static const bool explain = std::getenv("OPENTOP_FUZZ_EXPLAIN") != nullptr;
+    if (explain)
+        std::fprintf(stderr, "%s\n", profile ? "accepted" : qPrintable(error));
     return 0;
 }

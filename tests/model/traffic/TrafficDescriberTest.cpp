@@ -43,6 +43,19 @@ TEST(TrafficDescriberTest, NamesTheParameterOfARead)
     EXPECT_EQ(dbuAt(1).describe(tx, &r), r.describe() + QStringLiteral(" (spno2.speed)"));
 }
 
+TEST(TrafficDescriberTest, AFrameAskingMoreThanModbusAllowsNamesNoParameter)
+{
+    // 126 registers from 0xCA03 would cover spno2.speed, but no drive answers such a read
+    const ModbusRequest tooMany = ModbusRequest::readHolding(1, 0xCA03, 126);
+    const TrafficEntry tx = entryFor(TrafficEntry::Direction::Tx, tooMany,
+                                     RtuFrame::encodeRequest(tooMany), tooMany.describe());
+    EXPECT_EQ(dbuAt(1).describe(tx, &tooMany), QString());
+    const ModbusRequest most = ModbusRequest::readHolding(1, 0xCA03, 125);
+    const TrafficEntry ok =
+        entryFor(TrafficEntry::Direction::Tx, most, RtuFrame::encodeRequest(most), most.describe());
+    EXPECT_TRUE(dbuAt(1).describe(ok, &most).contains(QStringLiteral("spno2.speed")));
+}
+
 TEST(TrafficDescriberTest, DecodesTheReplyValueWithItsUnit)
 {
     const ModbusRequest r = ModbusRequest::readHolding(1, 0xCA03, 1);
