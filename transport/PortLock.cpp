@@ -109,9 +109,26 @@ PortLock::Outcome PortLock::acquire(QString* error)
     return Outcome::Acquired;
 }
 
+bool PortLock::wantsExclusive(int fd)
+{
+    // Unix98 pty slaves (/dev/pts/N) have majors 136-143. The program serving one (opentop-sim,
+    // socat) keeps the slave open, so exclusive mode would outlive a killed OpenTOP there and
+    // lock every later one out (the flag only ends with the device's last close).
+    struct stat st = {};
+    if (::fstat(fd, &st) != 0 || !S_ISCHR(st.st_mode))
+        return false;
+    return major(st.st_rdev) < 136 || major(st.st_rdev) > 143;
+}
+
 void PortLock::makeExclusive(int fd)
 {
-    if (fd >= 0 && ::ioctl(fd, TIOCEXCL) != 0)
+    if (fd < 0)
+        return;
+    if (!wantsExclusive(fd)) {
+        qCDebug(lcTransport).noquote() << "no exclusive mode on the pseudo-terminal" << m_device;
+        return;
+    }
+    if (::ioctl(fd, TIOCEXCL) != 0)
         qCDebug(lcTransport).noquote()
             << "no exclusive mode on" << m_device << QStringLiteral("(%1)").arg(errnoString(errno));
 }

@@ -16,7 +16,8 @@ namespace opentop {
 //  2. looks for a UUCP lock file (PortLockFile) naming a running program (minicom, a Qt
 //     program, ...): refused; stale files are removed; then writes its own;
 //  3. after the port is open, exclusive mode (TIOCEXCL): other opens fail with EBUSY (not for
-//     root, whom the kernel lets through).
+//     root, whom the kernel lets through). Not on pseudo-terminals: their server keeps the slave
+//     open, so the flag would outlive a killed OpenTOP (it ends with the device's last close).
 // A refusal names the holder where the system tells it: the lock file's PID and program, else
 // the flock's owner from /proc/locks, else a process with the device open (/proc/PID/fd).
 // A lock directory that cannot be written is no reason to refuse: the flock alone is used
@@ -41,6 +42,8 @@ public:
     Outcome acquire(QString* error);
     // Exclusive mode on the descriptor the port is used through (after acquire()).
     void makeExclusive(int fd);
+    // Whether makeExclusive() sets exclusive mode on `fd`: a character device but not a pty.
+    static bool wantsExclusive(int fd);
     void release();
     bool isHeld() const { return m_fd >= 0; }
     QString device() const { return m_device; }
