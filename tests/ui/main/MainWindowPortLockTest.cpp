@@ -122,3 +122,41 @@ TEST_F(MainWindowPortLockTest, APortWithALiveProgramsLockFileIsRefusedNamingIt)
     minicom.kill();
     minicom.waitForFinished(2000);
 }
+
+TEST_F(MainWindowPortLockTest, ReconnectingToTheSamePortIsNotRefusedByItsOwnLock)
+{
+    // The window holds the port; connecting again with other line settings closes it first,
+    // so its own lock never refuses it.
+    Pty pty;
+    QTemporaryDir locks;
+    qputenv("OPENTOP_LOCK_DIR", locks.path().toLocal8Bit());
+    QString box;
+    QTimer dismiss;
+    QObject::connect(&dismiss, &QTimer::timeout, [&] {
+        if (auto* b = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+            box = b->text();
+            b->accept();
+        }
+    });
+    dismiss.start(20);
+    ConnectionSettings serial;
+    serial.port = pty.path;
+    serial.timeoutMs = 100;
+    window->connectTo(serial);
+    const auto connectedTo = [&](const QString& line) {
+        return waitFor([&] {
+            return window->isConnected() &&
+                   window->connectionLabel()->toolTip() ==
+                       QStringLiteral("Connected: %1 %2").arg(pty.path, line);
+        });
+    };
+    EXPECT_TRUE(connectedTo(QStringLiteral("19200 8N1")))
+        << qPrintable(window->connectionLabel()->toolTip() + box);
+    EXPECT_EQ(QDir(locks.path()).entryList(QDir::Files).size(), 1);
+    serial.baud = 9600;
+    window->connectTo(serial);
+    EXPECT_TRUE(connectedTo(QStringLiteral("9600 8N1")))
+        << qPrintable(window->connectionLabel()->toolTip() + box);
+    EXPECT_TRUE(box.isEmpty()) << qPrintable(box);
+    qunsetenv("OPENTOP_LOCK_DIR");
+}
