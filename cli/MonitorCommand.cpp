@@ -158,6 +158,7 @@ int MonitorCommand::run(CliContext& context, const QStringList& args)
     }
 
     int errors = 0;
+    bool csvFailed = false;
     std::function<void()> finishAll;
     auto countPoll = [&](Watched& w) {
         ++w.polls;
@@ -195,6 +196,19 @@ int MonitorCommand::run(CliContext& context, const QStringList& args)
                     }
                     csvOut << row.join(QLatin1Char(',')) << '\n';
                     csvOut.flush();
+                    if (!csvFailed && (csvOut.status() != QTextStream::Ok ||
+                                       csv.error() != QFileDevice::NoError)) {
+                        // A full disk or device: say so and stop, never keep "recording".
+                        csvFailed = true;
+                        err << tr("error: cannot write %1: %2; monitoring stopped")
+                                   .arg(csv.fileName(), csv.errorString())
+                            << Qt::endl;
+                        for (Watched& x : watched)
+                            x.monitor->stop();
+                        if (finishAll)
+                            finishAll();
+                        return;
+                    }
                 }
                 countPoll(*wp);
             });
@@ -225,6 +239,8 @@ int MonitorCommand::run(CliContext& context, const QStringList& args)
         w.monitor->stop();
     out.flush();
     Q_UNUSED(completed) // Ctrl-C is the normal end without --count (exit 130 by CliApp)
+    if (csvFailed)
+        return ExitUsage; // as a backup file that cannot be written
     return errors > 0 ? ExitCommunication : ExitOk;
 }
 

@@ -53,7 +53,7 @@ QString LibmodbusBackend::openErrorText(int err) const
 
 bool LibmodbusBackend::open(QString* error)
 {
-    close();
+    LibmodbusBackend::close(); // not a subclass's: RtuBackend holds its port lock by now
     errno = 0;
     m_ctx = createContext();
     if (!m_ctx) {

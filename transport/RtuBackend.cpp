@@ -8,7 +8,6 @@
 #include <cerrno>
 #include <cmath>
 #include <modbus.h>
-#include <sys/file.h>
 
 namespace opentop {
 
@@ -31,6 +30,7 @@ int typicalReplyBytes(const ModbusRequest& request)
 
 RtuBackend::RtuBackend(const ConnectionSettings& settings)
     : LibmodbusBackend(settings)
+    , m_lock(settings.port)
 {
 }
 
@@ -41,17 +41,21 @@ RtuBackend::~RtuBackend()
 
 bool RtuBackend::open(QString* error)
 {
-    if (!LibmodbusBackend::open(error))
-        return false;
-    if (::flock(descriptor(), LOCK_EX | LOCK_NB) == 0 || errno != EWOULDBLOCK)
-        return true; // a file system without locks must not stop us
     close();
-    if (error)
-        *error = QCoreApplication::translate("opentop::Transport",
-                                             "Cannot open %1: the port is in use by another "
-                                             "OpenTOP connection.")
-                     .arg(settings().port);
-    return false;
+    if (m_lock.acquire(error) == PortLock::Outcome::InUse)
+        return false;
+    if (!LibmodbusBackend::open(error)) {
+        m_lock.release();
+        return false;
+    }
+    m_lock.makeExclusive(descriptor());
+    return true;
+}
+
+void RtuBackend::close()
+{
+    LibmodbusBackend::close();
+    m_lock.release();
 }
 
 QString RtuBackend::describe() const

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "LibmodbusBackend.h"
+#include "PortLock.h"
 
 namespace opentop {
 
@@ -12,9 +13,11 @@ public:
     explicit RtuBackend(const ConnectionSettings& settings);
     ~RtuBackend() override;
 
-    // Also takes an advisory lock (flock) on the device, so that a second OpenTOP on the same
-    // port fails cleanly instead of stealing bytes; the lock goes with the descriptor.
+    // Locks the port first (PortLock: flock, UUCP lock file, then exclusive mode), so that a
+    // second OpenTOP or another program on the same port is refused, naming the holder, before
+    // anything touches the line; the lock goes with the port (and with the process).
     bool open(QString* error) override;
+    void close() override;
     QString describe() const override;
     // max(3.5 character times + 5 ms, 10 ms): the T-net manual's broadcast gap (T2 > C3.5 + 5 ms).
     int defaultTurnaroundMs() const override;
@@ -29,6 +32,9 @@ protected:
                       ModbusResult* result) override;
     double wireTimeMs(int bytes) const override;
     int recoveryQuietMs(const ModbusRequest& request) const override;
+
+private:
+    PortLock m_lock;
 };
 
 } // namespace opentop

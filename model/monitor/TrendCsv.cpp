@@ -1,7 +1,8 @@
 #include "monitor/TrendCsv.h"
 
+#include "files/OutputFile.h"
+
 #include <QDateTime>
-#include <QSaveFile>
 #include <limits>
 
 namespace opentop {
@@ -62,14 +63,9 @@ QByteArray TrendCsv::toCsv(const QVector<Column>& columns, qint64 fromMs, qint64
 bool TrendCsv::write(const QString& path, const QVector<Column>& columns, qint64 fromMs,
                      qint64 toMs, QString* error)
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(toCsv(columns, fromMs, toMs)) < 0 ||
-        !file.commit()) {
-        if (error)
-            *error = tr("Cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+    // Replaced atomically when a regular file; a device or FIFO written through, every write
+    // error reported; a directory refused.
+    return OutputFile::write(path, toCsv(columns, fromMs, toMs), error);
 }
 
 } // namespace opentop

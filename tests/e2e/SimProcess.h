@@ -24,11 +24,13 @@ public:
         }
     }
 
-    // Starts the simulator and waits until it prints "ready".
-    bool start(const QStringList& arguments, QString* error = nullptr)
+    // Starts the simulator and waits until it prints "ready". `quiet` false: every frame is
+    // traced on its stderr ("rx 01 03 ... tx ...").
+    bool start(const QStringList& arguments, QString* error = nullptr, bool quiet = true)
     {
         m_process.setProgram(program());
-        m_process.setArguments(arguments + QStringList{QStringLiteral("--quiet")});
+        m_process.setArguments(arguments +
+                               (quiet ? QStringList{QStringLiteral("--quiet")} : QStringList()));
         m_process.start();
         if (!m_process.waitForStarted(5000)) {
             if (error)

@@ -370,7 +370,8 @@ TEST(RtuBackendTest, ClientDestructionClosesThePortWithinBound)
     auto client = std::make_unique<ModbusClient>(
         std::make_unique<RtuBackend>(ptySettings(device.path())), ptySettings(device.path()));
     ASSERT_EQ(client->openBlocking(), QString());
-    EXPECT_EQ(openDescriptorsOn(device.path()), before + 1);
+    // The Modbus context's descriptor and the port lock's (PortLock).
+    EXPECT_EQ(openDescriptorsOn(device.path()), before + 2);
     ModbusRequest slow = ModbusRequest::readHolding(1, 0, 1);
     slow.timeoutMs = 10000;
     client->submit(slow);

@@ -2,10 +2,10 @@
 
 #include "alarms/AlarmsPage.h"
 #include "bus/BusDrives.h"
+#include "files/OutputFile.h"
 #include "session/DeviceSession.h"
 
 #include <QPointer>
-#include <QSaveFile>
 
 namespace opentop {
 
@@ -118,10 +118,9 @@ void AlarmExport::writeFile()
     for (const DriveReport& d : m_reports)
         for (const AlarmHistory::History& h : d.report.histories)
             records += h.used();
-    QSaveFile file(m_path);
-    const QByteArray bytes = csv(m_reports).toUtf8();
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
-        emit finished(false, tr("Could not write %1: %2").arg(m_path, file.errorString()));
+    QString error;
+    if (!OutputFile::write(m_path, csv(m_reports).toUtf8(), &error)) {
+        emit finished(false, error); // "cannot write PATH: why"
         return;
     }
     QString message = tr("%n record(s) of %1 drive(s) written to %2.", nullptr, records)

@@ -23,9 +23,10 @@ QString ConnectionDialog::explainOpenError(const ConnectionSettings& settings, c
     QStringList checks;
     const bool serial = settings.kind == ConnectionSettings::Kind::Serial;
     if (mentions(error, {"in use", "busy", "locked", "EBUSY"})) {
-        checks << tr("The port is in use by another program: a terminal program, ModemManager, "
-                     "or another OpenTOP window (\"in use by another OpenTOP connection\"). "
-                     "Close it, or disconnect the other window, and connect again.");
+        checks << tr("The port is in use by another program (named above where the system "
+                     "tells it): a terminal program, ModemManager, another OpenTOP window or an "
+                     "opentop-cli command. Close it, or disconnect the other window, and connect "
+                     "again. Nothing was sent on the port.");
     }
     // The serial backend's own text may already give the usermod command: don't say it twice.
     if (error.contains(QStringLiteral("usermod"))) {

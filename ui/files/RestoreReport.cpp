@@ -1,7 +1,8 @@
 #include "files/RestoreReport.h"
 
+#include "files/OutputFile.h"
+
 #include <QDateTime>
-#include <QSaveFile>
 
 namespace opentop {
 
@@ -88,17 +89,8 @@ bool RestoreReport::save(const QString& path, const QString& file,
                          const QVector<RestorePlan>& plans, bool written, QString* error)
 {
     const bool asCsv = path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive);
-    QSaveFile out(path);
-    if (!out.open(QIODevice::WriteOnly)) {
-        *error = out.errorString();
-        return false;
-    }
-    out.write((asCsv ? csv(plans) : text(file, plans, written)).toUtf8());
-    if (!out.commit()) {
-        *error = out.errorString();
-        return false;
-    }
-    return true;
+    return OutputFile::write(path, (asCsv ? csv(plans) : text(file, plans, written)).toUtf8(),
+                             error);
 }
 
 } // namespace opentop

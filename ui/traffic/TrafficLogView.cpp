@@ -1,6 +1,7 @@
 #include "traffic/TrafficLogView.h"
 
 #include "TrafficLog.h"
+#include "files/OutputFile.h"
 #include "traffic/TrafficLogFilter.h"
 #include "traffic/TrafficLogModel.h"
 
@@ -12,7 +13,6 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QSplitter>
 #include <QTableView>
 #include <QTableWidget>
@@ -170,22 +170,12 @@ void TrafficLogView::clear()
 bool TrafficLogView::saveTo(const QString& path, QString* error)
 {
     flush();
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Text)) {
-        if (error)
-            *error = file.errorString();
-        return false;
-    }
+    QByteArray text;
     for (int row = 0; row < m_filter->rowCount(); ++row) {
         const int source = m_filter->mapToSource(m_filter->index(row, 0)).row();
-        file.write(m_model->entry(source).toLine().toUtf8() + '\n');
+        text += m_model->entry(source).toLine().toUtf8() + '\n';
     }
-    if (!file.commit()) {
-        if (error)
-            *error = file.errorString();
-        return false;
-    }
-    return true;
+    return OutputFile::write(path, text, error);
 }
 
 void TrafficLogView::addEntry(const TrafficEntry& entry)

@@ -1,5 +1,6 @@
 // The alarms page, the alarm banner and the CSV export against the in-process simulated DBU.
 #include "alarms/AlarmsPage.h"
+#include "FifoReader.h"
 #include "UiSimFixture.h"
 #include "alarms/AlarmBanner.h"
 #include "alarms/AlarmExport.h"
@@ -293,4 +294,36 @@ TEST_F(AlarmBusTest, ExportWritesTheFileOfAllDrives)
     const QString text = QString::fromUtf8(file.readAll());
     EXPECT_EQ(text, AlarmExport::csv(exporter.reports()));
     EXPECT_TRUE(text.contains(QStringLiteral("2,DBU400-D,alarm,1,01h,AL001,Overvoltage")));
+}
+
+TEST_F(AlarmBusTest, ExportToAFifoWritesThroughItAndToAMissingFolderFails)
+{
+    control(1, {QStringLiteral("alarm"), QStringLiteral("7")});
+    QTemporaryDir dir;
+    AlarmExport exporter(drives.get());
+    bool ok = false;
+    QString message;
+    QObject::connect(&exporter, &AlarmExport::finished, [&](bool o, const QString& m) {
+        ok = o;
+        message = m;
+    });
+    bool stillFifo = false;
+    const QByteArray got = test::saveThroughFifo(
+        dir.path(),
+        [&](const QString& path) {
+            ASSERT_TRUE(runUntil(&exporter, &AlarmExport::finished,
+                                 [&] { ASSERT_TRUE(exporter.exportTo(path)); }));
+        },
+        &stillFifo);
+    EXPECT_TRUE(ok) << qPrintable(message);
+    EXPECT_TRUE(stillFifo) << "the FIFO was replaced by a regular file";
+    EXPECT_EQ(QString::fromUtf8(got), AlarmExport::csv(exporter.reports()));
+
+    const QString missing = dir.filePath(QStringLiteral("no-such-folder/alarms.csv"));
+    ASSERT_TRUE(runUntil(&exporter, &AlarmExport::finished,
+                         [&] { ASSERT_TRUE(exporter.exportTo(missing)); }));
+    EXPECT_FALSE(ok);
+    EXPECT_TRUE(message.startsWith(QStringLiteral("cannot write ") + missing))
+        << qPrintable(message);
+    EXPECT_FALSE(QFile::exists(missing));
 }

@@ -1,5 +1,6 @@
 #include "traffic/TrafficLogView.h"
 
+#include "FifoReader.h"
 #include "UiSimFixture.h"
 #include "bus/BusDrives.h"
 #include "traffic/TrafficDescriber.h"
@@ -152,4 +153,25 @@ TEST_F(TrafficLogViewTest, KeepsAtMostTheLogCapacity)
     ASSERT_TRUE(waitUntil([&] { return smallView.model()->rowCount() == 3; }));
     EXPECT_EQ(smallView.model()->rowCount(), 3);
     EXPECT_EQ(smallView.model()->entry(0).slave, 3);
+}
+
+TEST_F(TrafficLogViewTest, SaveToAFifoWritesThroughAndAFailedSaveIsAnError)
+{
+    ASSERT_TRUE(read(1).ok());
+    ASSERT_TRUE(rowsReach(2));
+    QTemporaryDir dir;
+    bool ok = false;
+    QString error;
+    bool stillFifo = false;
+    const QByteArray got = test::saveThroughFifo(
+        dir.path(), [&](const QString& path) { ok = view->saveTo(path, &error); }, &stillFifo);
+    EXPECT_TRUE(ok) << qPrintable(error);
+    EXPECT_TRUE(stillFifo) << "the FIFO was replaced by a regular file";
+    EXPECT_EQ(QString::fromUtf8(got).count(QLatin1Char('\n')), 2) << got.constData();
+
+    const QString missing = dir.filePath(QStringLiteral("no-such-folder/traffic.txt"));
+    EXPECT_FALSE(view->saveTo(missing, &error));
+    EXPECT_TRUE(error.startsWith(QStringLiteral("cannot write ") + missing)) << qPrintable(error);
+    EXPECT_FALSE(view->saveTo(dir.path(), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("it is a directory"))) << qPrintable(error);
 }
