@@ -265,9 +265,9 @@ TEST(ModbusClientTest, RetriesBusyExceptionsWhereNothingWasExecuted)
         auto calls = std::make_shared<std::atomic<int>>(0);
         MockClient f(
             [calls, code](const QByteArray& adu) {
-                return ++*calls == 1 ? RtuFrame::encodeException(quint8(adu[0]), quint8(adu[1]),
-                                                                 code)
-                                     : echoDevice(adu);
+                return ++*calls == 1
+                           ? RtuFrame::encodeException(quint8(adu[0]), quint8(adu[1]), code)
+                           : echoDevice(adu);
             },
             settings);
         const ModbusResult r = f.client->execute(ModbusRequest::readHolding(1, 7, 1));
@@ -290,10 +290,11 @@ TEST(ModbusClientTest, RetriesBusyExceptionsWhereNothingWasExecuted)
     {
         // A write refused with 04 may be a refusal (a value out of range, a command that
         // cannot run now): not repeated here.
-        MockClient f([](const QByteArray& adu) {
-            return RtuFrame::encodeException(quint8(adu[0]), 6, 0x04);
-        },
-                     settings);
+        MockClient f(
+            [](const QByteArray& adu) {
+                return RtuFrame::encodeException(quint8(adu[0]), 6, 0x04);
+            },
+            settings);
         const ModbusResult r = f.client->execute(ModbusRequest::writeSingle(1, 0x10, 5));
         EXPECT_EQ(r.error, ModbusError::Exception);
         EXPECT_EQ(r.attempts, 1);
