@@ -56,7 +56,7 @@ void VanishScenario::checkVanished(MatrixSteps& steps, const QString& what, cons
 
 void VanishScenario::vanishingBackup(MatrixSteps& steps)
 {
-    const int pullAfter = std::max(1, m_options.drives * 13 / 2);
+    const int pullAfter = std::max(1, m_options.drives * 13 / 3);
     bool pulled = false;
     const CliRun run = steps.cli().runWatching(
         {QStringLiteral("backup"), steps.slaveList(), QStringLiteral("-o"), steps.file()},
@@ -75,7 +75,8 @@ void VanishScenario::vanishingBackup(MatrixSteps& steps)
 
 void VanishScenario::vanishingRestore(MatrixSteps& steps, int changed)
 {
-    const int pullAfter = std::max(1, changed / 2);
+    // Early: a restore that gives up on its own (a busy drive) must not end first.
+    const int pullAfter = std::max(1, changed / 5);
     bool pulled = false;
     const CliRun run = steps.cli().runWatching(
         {QStringLiteral("--json"), QStringLiteral("restore"), steps.file(),
