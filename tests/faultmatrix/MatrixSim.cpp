@@ -3,6 +3,8 @@
 #include "BackupValues.h"
 
 #include <QRegularExpression>
+#include <csignal>
+#include <sys/prctl.h>
 
 namespace opentop::faultmatrix {
 
@@ -33,6 +35,8 @@ bool MatrixSim::start(const QString& devices, const QString& faults, int seed, c
         arguments << QStringLiteral("--faults") << faults;
     m_process.setProgram(m_binDir + QStringLiteral("/opentop-sim"));
     m_process.setArguments(arguments);
+    // The simulator ends with the matrix, even when the matrix is killed.
+    m_process.setChildProcessModifier([] { ::prctl(PR_SET_PDEATHSIG, SIGTERM); });
     m_process.start();
     if (!m_process.waitForStarted(5000)) {
         *error = m_process.errorString();
