@@ -3,6 +3,7 @@
 #include "CliContext.h"
 #include "ExitCode.h"
 #include "FileCommandSupport.h"
+#include "ModbusClient.h"
 #include "bus/BusScanner.h"
 #include "files/BackupFile.h"
 #include "files/BackupReader.h"
@@ -83,6 +84,25 @@ QVector<int> BackupCommand::allDrives(CliContext& context, bool* interrupted)
     return ids;
 }
 
+int BackupCommand::portLost(CliContext& context, const QString& path, const QString& drive,
+                            const QStringList& failures)
+{
+    // The port went away (an adapter pulled out): one line says so and why, instead of one
+    // per setting and drive that could no longer be asked.
+    QString reason = failures.value(0);
+    for (const QString& f : failures) {
+        if (f.contains(QLatin1String("port error"))) {
+            reason = f;
+            break;
+        }
+    }
+    context.err() << tr("error: the port %1 was lost while reading %2 (%3)")
+                         .arg(context.settings().port, drive, reason)
+                  << Qt::endl;
+    context.err() << tr("nothing written to %1").arg(path) << Qt::endl;
+    return ExitCommunication;
+}
+
 int BackupCommand::run(CliContext& context, const QStringList& args)
 {
     const QString path = context.parser().value(QStringLiteral("o"));
@@ -125,6 +145,8 @@ int BackupCommand::run(CliContext& context, const QStringList& args)
         QString error;
         DeviceSession* session = context.session(id, &error);
         if (!session) {
+            if (!context.client()->isOpen())
+                return portLost(context, path, tr("machine number %1").arg(id), {error});
             failures << error;
             communication = true;
             continue;
@@ -144,6 +166,8 @@ int BackupCommand::run(CliContext& context, const QStringList& args)
             return ExitInterrupted;
         }
         const QString title = result.device.title();
+        if (!result.failures.isEmpty() && !context.client()->isOpen())
+            return portLost(context, path, title, result.failures);
         for (const QString& f : result.failures)
             failures << tr("%1: cannot read %2").arg(title, f);
         for (const QString& d : result.disallowed)

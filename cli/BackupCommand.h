@@ -23,6 +23,9 @@ private:
     static std::optional<QVector<int>> selectIds(CliContext& context, const QStringList& args);
     // Every drive on the bus: the connection's known drives, or a scan.
     static QVector<int> allDrives(CliContext& context, bool* interrupted);
+    // The port went away mid-backup: one error naming it and why, nothing written.
+    static int portLost(CliContext& context, const QString& path, const QString& drive,
+                        const QStringList& failures);
 };
 
 } // namespace opentop

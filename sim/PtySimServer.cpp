@@ -95,6 +95,26 @@ void PtySimServer::close()
     if (m_slave >= 0)
         ::close(m_slave);
     m_master = m_slave = -1;
+    ++m_generation;
+}
+
+void PtySimServer::unplug()
+{
+    m_unpluggedLink = m_linkPath;
+    m_silence.stop();
+    m_buffer.clear();
+    close();
+    qCInfo(lcSim) << "unplugged";
+}
+
+bool PtySimServer::replug(QString* error)
+{
+    if (m_master >= 0) {
+        if (error)
+            *error = tr("the port is plugged in: %1").arg(m_slavePath);
+        return false;
+    }
+    return open(m_unpluggedLink, error);
 }
 
 int PtySimServer::requestLength(const QByteArray& buffer)
@@ -174,7 +194,12 @@ void PtySimServer::dispatch(const QByteArray& frame)
         return;
     }
     const QByteArray reply = outcome.reply;
-    QTimer::singleShot(int(delay + 0.5), Qt::PreciseTimer, this, [this, reply] { send(reply); });
+    // A reply delayed past an unplug never reaches the next pty.
+    const int generation = m_generation;
+    QTimer::singleShot(int(delay + 0.5), Qt::PreciseTimer, this, [this, reply, generation] {
+        if (generation == m_generation)
+            send(reply);
+    });
 }
 
 void PtySimServer::send(const QByteArray& reply)

@@ -28,6 +28,12 @@ public:
     // replaced, any other file is refused).
     bool open(const QString& linkPath, QString* error);
     void close();
+    // The adapter pulled out: the pty is closed under its client (reads and writes fail) and
+    // the symlink removed, as /dev/ttyUSB0 vanishes. The devices keep their state.
+    void unplug();
+    // Plugged in again: a new pty behind the same symlink.
+    bool replug(QString* error);
+    bool isOpen() const { return m_master >= 0; }
     QString slavePath() const { return m_slavePath; }
     QString linkPath() const { return m_linkPath; }
 
@@ -49,6 +55,8 @@ private:
     int m_slave = -1;
     QString m_slavePath;
     QString m_linkPath;
+    int m_generation = 0;    // counts closes
+    QString m_unpluggedLink; // the symlink to restore on replug
     QSocketNotifier* m_notifier = nullptr;
     QByteArray m_buffer;
     QTimer m_silence;

@@ -140,6 +140,22 @@ int SimApp::start(const QStringList& arguments)
     }
 
     m_console = std::make_unique<SimConsole>(m_bus);
+    if (m_pty) {
+        PtySimServer* pty = m_pty;
+        m_console->setPortHooks(
+            [pty] {
+                if (!pty->isOpen())
+                    return SimControlResult{false, tr("the port is unplugged already")};
+                pty->unplug();
+                return SimControlResult{true, tr("unplugged")};
+            },
+            [pty] {
+                QString why;
+                if (!pty->replug(&why))
+                    return SimControlResult{false, why};
+                return SimControlResult{true, QStringLiteral("pty: ") + pty->slavePath()};
+            });
+    }
     m_stdin = new QSocketNotifier(STDIN_FILENO, QSocketNotifier::Read, this);
     connect(m_stdin, &QSocketNotifier::activated, this, &SimApp::onStdin);
     connect(qApp, &QCoreApplication::aboutToQuit, this, &SimApp::shutdown);

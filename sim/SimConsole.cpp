@@ -20,6 +20,12 @@ SimConsole::SimConsole(std::shared_ptr<SimBus> bus)
 {
 }
 
+void SimConsole::setPortHooks(PortHook unplug, PortHook replug)
+{
+    m_unplug = std::move(unplug);
+    m_replug = std::move(replug);
+}
+
 QString SimConsole::helpText()
 {
     return tr("commands:\n"
@@ -34,6 +40,8 @@ QString SimConsole::helpText()
               "  power-cycle ID            turn the device off and on\n"
               "  get ID ADDR [fc]          show a register (fc 3, 4 or 6 for write-only)\n"
               "  set ID ADDR VALUE [fc]    change a register without any check\n"
+              "  unplug                    close the pty under its client (adapter pulled out)\n"
+              "  replug                    a new pty behind the same symlink\n"
               "  quit                      stop the simulator");
 }
 
@@ -49,6 +57,12 @@ SimControlResult SimConsole::execute(const QString& line)
     if (cmd == QLatin1String("quit") || cmd == QLatin1String("exit")) {
         m_quit = true;
         return {true, tr("bye")};
+    }
+    if (cmd == QLatin1String("unplug") || cmd == QLatin1String("replug")) {
+        const PortHook& hook = cmd == QLatin1String("unplug") ? m_unplug : m_replug;
+        if (!hook)
+            return {false, tr("%1 needs the pty server (--pty)").arg(cmd)};
+        return hook();
     }
     if (cmd == QLatin1String("list")) {
         QStringList lines;

@@ -91,6 +91,7 @@ void LibmodbusBackend::close()
     m_ctx = nullptr;
     m_open = false;
     m_lateWatch.clear();
+    m_suspects.clear();
     qCDebug(lcTransport) << "closed" << describe();
 }
 
@@ -185,9 +186,54 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
         const QByteArray rtu = toRtuAdu(adu);
         logReply(adu, quint8(rtu.at(0)), rtu.size() > 1 ? quint8(rtu.at(1)) : -1, request, result);
     }
+    if ((result.error == ModbusError::Ok || result.error == ModbusError::Exception) &&
+        isSuspect(request.slave) && anotherReplyFollows(request, int(sent.size() + adu.size()))) {
+        result.error = ModbusError::MalformedReply;
+        result.registers.clear();
+        result.message = QCoreApplication::translate(
+            "opentop::Transport",
+            "another reply followed: this one may have answered an earlier request");
+        logEvent(request, result.message, result.errorText());
+    }
     if (result.error != ModbusError::Ok && result.error != ModbusError::Exception)
         recover(request, timeoutMs);
     return result;
+}
+
+void LibmodbusBackend::suspect(quint8 slave, int timeoutMs)
+{
+    // Long after the late-reply window: a master without transaction ids cannot wait that
+    // long before every retry, but it can check the replies that follow.
+    const double untilMs =
+        double(m_clock.nsecsElapsed()) / 1e6 + std::max(3000.0, 10.0 * timeoutMs);
+    for (LateWatch& w : m_suspects) {
+        if (w.slave == slave) {
+            w.untilMs = std::max(w.untilMs, untilMs);
+            return;
+        }
+    }
+    m_suspects.append({slave, untilMs, 0});
+}
+
+bool LibmodbusBackend::isSuspect(quint8 slave)
+{
+    if (wireTimeMs(1) <= 0)
+        return false; // Modbus TCP: transaction ids tell replies apart
+    const double nowMs = double(m_clock.nsecsElapsed()) / 1e6;
+    m_suspects.erase(std::remove_if(m_suspects.begin(), m_suspects.end(),
+                                    [nowMs](const LateWatch& w) { return w.untilMs <= nowMs; }),
+                     m_suspects.end());
+    return std::any_of(m_suspects.begin(), m_suspects.end(),
+                       [slave](const LateWatch& w) { return w.slave == slave; });
+}
+
+bool LibmodbusBackend::anotherReplyFollows(const ModbusRequest& request, int frameBytes)
+{
+    // The request's own reply, if the one taken was not it, ends at the latest a turnaround
+    // and the frames' wire time after sending; a quiet time more covers the gap.
+    const int quietMs = recoveryQuietMs(request);
+    const double ownEndMs = wireTimeMs(frameBytes) + turnaroundMs() + quietMs;
+    return waitReadable(std::max(double(quietMs), ownEndMs - elapsedMs())) == 1;
 }
 
 void LibmodbusBackend::receiveStandard(const ModbusRequest& request, int timeoutMs, QByteArray* adu,
@@ -344,6 +390,7 @@ void LibmodbusBackend::recover(const ModbusRequest& request, int timeoutMs)
     // arrives until the request's late-reply window is over, or until the line has been quiet
     // for a frame time after a frame, then flush. Neither the retry nor the next request may
     // read it.
+    suspect(request.slave, timeoutMs);
     const int quietMs = recoveryQuietMs(request);
     const double nowMs = double(m_clock.nsecsElapsed()) / 1e6;
     drain(request, std::max(double(quietMs), replyDeadlineMs(request, timeoutMs) - nowMs), quietMs);
@@ -351,6 +398,7 @@ void LibmodbusBackend::recover(const ModbusRequest& request, int timeoutMs)
 
 void LibmodbusBackend::deferRecovery(const ModbusRequest& request, int timeoutMs)
 {
+    suspect(request.slave, timeoutMs);
     m_lateWatch.append(
         {request.slave, replyDeadlineMs(request, timeoutMs), recoveryQuietMs(request)});
 }

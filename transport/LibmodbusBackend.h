@@ -88,6 +88,14 @@ private:
     void deferRecovery(const ModbusRequest& request, int timeoutMs);
     // Before sending: completes a deferred drain where the id check cannot protect us.
     void awaitLateReplies(const ModbusRequest& request);
+    // A slave whose request failed may still answer it, later than any window: for a while
+    // every reply from it is checked for another reply right behind it (issue 11's fault
+    // matrix: a reply 1 s late answered a read of the same length).
+    void suspect(quint8 slave, int timeoutMs);
+    bool isSuspect(quint8 slave);
+    // After a complete reply: true when more bytes come before the request's own reply could
+    // have ended, so that the reply taken may have been a late answer to an earlier request.
+    bool anotherReplyFollows(const ModbusRequest& request, int frameBytes);
     void setResponseTimeout(double ms);
 
     ConnectionSettings m_settings;
@@ -103,6 +111,7 @@ private:
         int quietMs = 0;
     };
     QVector<LateWatch> m_lateWatch; // slaves that timed out silently, quiet time not yet over
+    QVector<LateWatch> m_suspects;  // slaves whose replies are checked for a second reply
     QElapsedTimer m_clock;          // monotonic time for m_lateWatch
 };
 

@@ -333,10 +333,16 @@ ModbusResult ModbusClientWorker::execute(State& s, const Item& item)
         // No valid answer to this request: the backend has resynchronised (the line has
         // fallen silent, what came was discarded), so asking again is safe. A reply from
         // another machine number or one that does not match the request (byte count, echo) is
-        // as garbled as a bad CRC. An exception is a valid answer and is not repeated.
+        // as garbled as a bad CRC. An exception is a valid answer and is not repeated, except
+        // "busy": 06 (nothing executed) for any request, and 04 for a read, which a DBU gives
+        // while busy with internal processing and which has no effect to repeat.
+        const bool busy = result.error == ModbusError::Exception &&
+                          (result.exceptionCode == 0x06 ||
+                           (result.exceptionCode == 0x04 && request.isRead()));
         const bool retryable =
             result.error == ModbusError::Timeout || result.error == ModbusError::CrcError ||
-            result.error == ModbusError::WrongSlave || result.error == ModbusError::MalformedReply;
+            result.error == ModbusError::WrongSlave ||
+            result.error == ModbusError::MalformedReply || busy;
         if (!retryable || attempt > retries || s.interrupt)
             break;
         qCDebug(lcTransport) << "retrying" << request.describe() << "after" << result.errorText();

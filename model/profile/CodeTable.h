@@ -17,6 +17,7 @@ struct CodeEntry
     QString remedy;
     QString led;           // DBU MONITOR LED colour while active: red, purple, blue
     int exceptionCode = 0; // communication errors: the Modbus exception code that goes with it
+    bool retry = false;    // communication errors: nothing was executed, send it again (busy)
 
     // How a code is cleared, for people: "Alarm-Reset", "power cycle", "by itself".
     static QString clearedByText(const QString& reset);

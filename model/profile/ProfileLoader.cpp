@@ -147,12 +147,13 @@ bool readCodeTables(const QJsonObject& root, JsonReader& json, Profile* p)
         for (int i = 0; i < entries.size(); ++i) {
             const QJsonObject e = entries[i].toObject();
             const QString where = QStringLiteral("codeTables.%1.entries[%2]").arg(table.id).arg(i);
-            if (!json.onlyKeys(
-                    e,
-                    {QStringLiteral("code"), QStringLiteral("panel"), QStringLiteral("name"),
-                     QStringLiteral("reset"), QStringLiteral("resetText"), QStringLiteral("cause"),
-                     QStringLiteral("remedy"), QStringLiteral("led"), QStringLiteral("exception")},
-                    where))
+            if (!json.onlyKeys(e,
+                               {QStringLiteral("code"), QStringLiteral("panel"),
+                                QStringLiteral("name"), QStringLiteral("reset"),
+                                QStringLiteral("resetText"), QStringLiteral("cause"),
+                                QStringLiteral("remedy"), QStringLiteral("led"),
+                                QStringLiteral("exception"), QStringLiteral("retry")},
+                               where))
                 return false;
             CodeEntry entry;
             const auto code =
@@ -168,6 +169,7 @@ bool readCodeTables(const QJsonObject& root, JsonReader& json, Profile* p)
             entry.remedy = e.value(QStringLiteral("remedy")).toString();
             entry.led = e.value(QStringLiteral("led")).toString();
             entry.exceptionCode = e.value(QStringLiteral("exception")).toInt();
+            entry.retry = e.value(QStringLiteral("retry")).toBool();
             if (entry.name.isEmpty())
                 return json.fail(tr("%1 has no name").arg(where));
             if (!entry.reset.isEmpty() && !resets.contains(entry.reset))

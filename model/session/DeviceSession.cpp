@@ -281,7 +281,7 @@ void DeviceSession::ensureCached(QStringList names, std::function<void(QString)>
 }
 
 void DeviceSession::send(const ParameterMeta* meta, const QVector<quint16>& registers,
-                         const WriteOptions& options, Outcome outcome, Done done)
+                         const WriteOptions& options, Outcome outcome, Done done, int busyRetries)
 {
     const ModbusRequest request =
         meta->writeFunction == 16
@@ -289,25 +289,32 @@ void DeviceSession::send(const ParameterMeta* meta, const QVector<quint16>& regi
             : ModbusRequest::writeSingle(quint8(m_slave), meta->address, registers.first());
     outcome.sent = true;
     const QVector<quint16> written = registers;
-    m_client->submit(request, this,
-                     [this, meta, written, options, outcome, done](const ModbusResult& r) mutable {
-                         if (!r.ok()) {
-                             outcome.unconfirmed = r.error != ModbusError::Exception &&
-                                                   r.error != ModbusError::NotConnected &&
-                                                   r.error != ModbusError::InvalidRequest &&
-                                                   r.error != ModbusError::Cancelled;
-                             explainFailure(r, outcome, done);
-                             return;
-                         }
-                         emit this->written(meta->name);
-                         if (!options.verify || !meta->isReadable()) {
-                             outcome.ok = true;
-                             outcome.value = ValueCodec::decode(*meta, written, context());
-                             done(outcome);
-                             return;
-                         }
-                         verifyWrite(*meta, written, outcome, done);
-                     });
+    m_client->submit(
+        request, this,
+        [this, meta, written, options, outcome, done, busyRetries](const ModbusResult& r) mutable {
+            if (!r.ok()) {
+                outcome.unconfirmed =
+                    r.error != ModbusError::Exception && r.error != ModbusError::NotConnected &&
+                    r.error != ModbusError::InvalidRequest && r.error != ModbusError::Cancelled;
+                // A busy drive executed nothing: a setting is sent again (never
+                // a command, which the user sends again when the drive can run it).
+                std::function<void()> again;
+                if (busyRetries > 0 && meta->kind != QLatin1String("command"))
+                    again = [this, meta, written, options, outcome, done, busyRetries] {
+                        send(meta, written, options, outcome, done, busyRetries - 1);
+                    };
+                explainFailure(r, outcome, done, again);
+                return;
+            }
+            emit this->written(meta->name);
+            if (!options.verify || !meta->isReadable()) {
+                outcome.ok = true;
+                outcome.value = ValueCodec::decode(*meta, written, context());
+                done(outcome);
+                return;
+            }
+            verifyWrite(*meta, written, outcome, done);
+        });
 }
 
 void DeviceSession::verifyWrite(const ParameterMeta& meta, const QVector<quint16>& written,
@@ -339,7 +346,8 @@ void DeviceSession::verifyWrite(const ParameterMeta& meta, const QVector<quint16
         });
 }
 
-void DeviceSession::explainFailure(const ModbusResult& result, Outcome outcome, Done done)
+void DeviceSession::explainFailure(const ModbusResult& result, Outcome outcome, Done done,
+                                   std::function<void()> onBusy)
 {
     outcome.error = result.errorText();
     const ParameterMeta* errorRegister = commErrorParameter(m_profile);
@@ -349,11 +357,15 @@ void DeviceSession::explainFailure(const ModbusResult& result, Outcome outcome, 
     }
     // The DBU leaves the reason for an exception in its communication error register.
     m_client->submit(readRequest(m_slave, *errorRegister), this,
-                     [this, errorRegister, outcome, done](const ModbusResult& r) mutable {
+                     [this, errorRegister, outcome, done, onBusy](const ModbusResult& r) mutable {
                          if (r.ok() && !r.registers.isEmpty()) {
                              const CodeTable* table = m_profile.codeTable(errorRegister->codeTable);
                              const qint64 code = r.registers.first();
                              const CodeEntry* entry = table ? table->find(code) : nullptr;
+                             if (entry && entry->retry && onBusy) {
+                                 onBusy();
+                                 return;
+                             }
                              const QString hex =
                                  QString::number(code, 16).toUpper() + QLatin1Char('h');
                              outcome.deviceError = entry ? hex + QLatin1Char(' ') + entry->name

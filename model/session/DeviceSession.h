@@ -107,9 +107,14 @@ private:
     void ensureControllingValues(const ParameterMeta& meta, std::function<void(QString)> then);
     // Reads those of `names` not cached yet; `then` gets the first failure, or nothing.
     void ensureCached(QStringList names, std::function<void(QString)> then);
+    // `busyRetries`: how often a setting is sent again when the drive refused it only because
+    // it was busy (its communication error register says so: nothing was executed).
     void send(const ParameterMeta* meta, const QVector<quint16>& registers,
-              const WriteOptions& options, Outcome outcome, Done done);
-    void explainFailure(const ModbusResult& result, Outcome outcome, Done done);
+              const WriteOptions& options, Outcome outcome, Done done, int busyRetries = 3);
+    // Reads the drive's reason for an exception; `onBusy`, when set, runs instead of `done`
+    // when the reason is one to send the request again for.
+    void explainFailure(const ModbusResult& result, Outcome outcome, Done done,
+                        std::function<void()> onBusy = {});
     void verifyWrite(const ParameterMeta& meta, const QVector<quint16>& written, Outcome outcome,
                      Done done);
 

@@ -253,6 +253,55 @@ TEST(ModbusClientTest, RetriesTimeoutsAndGarbledRepliesButNotExceptions)
     }
 }
 
+TEST(ModbusClientTest, RetriesBusyExceptionsWhereNothingWasExecuted)
+{
+    // Found by the fault matrix (issue 11): a drive busy with internal processing answers
+    // exception 06 (Modbus: busy), a DBU answers 04 (its manual: "internal processing, BUSY
+    // is ON"). Nothing was executed: a read is asked again, a write only after 06; a busy
+    // 1 % of the time must not end a 32-drive backup.
+    ConnectionSettings settings;
+    settings.retries = 2;
+    for (const quint8 code : {quint8(0x04), quint8(0x06)}) {
+        auto calls = std::make_shared<std::atomic<int>>(0);
+        MockClient f(
+            [calls, code](const QByteArray& adu) {
+                return ++*calls == 1
+                           ? RtuFrame::encodeException(quint8(adu[0]), quint8(adu[1]), code)
+                           : echoDevice(adu);
+            },
+            settings);
+        const ModbusResult r = f.client->execute(ModbusRequest::readHolding(1, 7, 1));
+        EXPECT_EQ(r.error, ModbusError::Ok) << int(code);
+        EXPECT_EQ(r.attempts, 2) << int(code);
+        EXPECT_EQ(r.registers, QVector<quint16>({7})) << int(code);
+    }
+    {
+        auto calls = std::make_shared<std::atomic<int>>(0);
+        MockClient f(
+            [calls](const QByteArray& adu) {
+                return ++*calls == 1 ? RtuFrame::encodeException(quint8(adu[0]), 6, 0x06)
+                                     : echoDevice(adu);
+            },
+            settings);
+        const ModbusResult r = f.client->execute(ModbusRequest::writeSingle(1, 0x10, 5));
+        EXPECT_EQ(r.error, ModbusError::Ok);
+        EXPECT_EQ(r.attempts, 2);
+    }
+    {
+        // A write refused with 04 may be a refusal (a value out of range, a command that
+        // cannot run now): not repeated here.
+        MockClient f(
+            [](const QByteArray& adu) {
+                return RtuFrame::encodeException(quint8(adu[0]), 6, 0x04);
+            },
+            settings);
+        const ModbusResult r = f.client->execute(ModbusRequest::writeSingle(1, 0x10, 5));
+        EXPECT_EQ(r.error, ModbusError::Exception);
+        EXPECT_EQ(r.attempts, 1);
+        EXPECT_EQ(f.mock->requestCount(), 1);
+    }
+}
+
 TEST(ModbusClientTest, BroadcastNeitherWaitsNorRetries)
 {
     ConnectionSettings settings;

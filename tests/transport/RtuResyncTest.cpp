@@ -8,7 +8,10 @@
 #include "TrafficLog.h"
 #include "TransportTestSupport.h"
 
+#include <QThread>
+#include <atomic>
 #include <gtest/gtest.h>
+#include <memory>
 
 using namespace opentop;
 using namespace opentop::test;
@@ -123,4 +126,56 @@ TEST(RtuResyncTest, GarbledReplyIsFollowedByTheLateAnswerWhichIsDiscarded)
     ASSERT_EQ(r.error, ModbusError::Ok) << r.errorText().toStdString();
     EXPECT_TRUE(discarded(log, RtuFrame::encodeWriteSingleReply(1, 0x20, 5)));
     EXPECT_EQ(device.requests().size(), 2u);
+}
+
+TEST(RtuResyncTest, ReplyFollowedByAnotherAfterAnEarlierTimeoutIsNotTaken)
+{
+    // Found by the fault matrix (issue 11): the drive answers the read of 0x1001 a second
+    // late, long after its late-reply window, just as the read of 0x1013 (same length) goes
+    // out; the drive's own answer to that read follows. The first reply must not be taken.
+    auto calls = std::make_shared<std::atomic<int>>(0);
+    PtyDevice device;
+    device.start([calls](const QByteArray& request) {
+        ModbusRequest r;
+        RtuFrame::decodeRequest(request, &r);
+        if (r.address == 0x1001)
+            return Answer(); // silent now, answers "late" with the next request
+        Answer a = answer(++*calls == 1 ? readReply(1, 1111) : readReply(1, 2222));
+        if (*calls == 1) {
+            a.second = readReply(1, 2222);
+            a.secondDelayMs = 5;
+        }
+        return a;
+    });
+    TrafficLog log;
+    auto backend = openBackend(device, &log);
+    ModbusResult r = backend->transact(ModbusRequest::readHolding(1, 0x1001, 1), 100);
+    EXPECT_EQ(r.error, ModbusError::Timeout);
+    QThread::msleep(400); // past the late-reply window
+    r = backend->transact(ModbusRequest::readHolding(1, 0x1013, 1), 100);
+    EXPECT_NE(r.registers, QVector<quint16>({1111}));
+    EXPECT_EQ(r.error, ModbusError::MalformedReply) << r.errorText().toStdString();
+    r = backend->transact(ModbusRequest::readHolding(1, 0x1013, 1), 100);
+    ASSERT_EQ(r.error, ModbusError::Ok) << r.errorText().toStdString();
+    EXPECT_EQ(r.registers, QVector<quint16>({2222}));
+}
+
+TEST(RtuResyncTest, RepliesOfASlaveThatNeverFailedAreTakenAtOnce)
+{
+    PtyDevice device;
+    device.start([](const QByteArray& request) {
+        Answer a = answer(readReply(1, 2222));
+        ModbusRequest r;
+        RtuFrame::decodeRequest(request, &r);
+        if (r.slave == 1) {
+            a.second = readReply(1, 3333); // a trailing frame: not looked for without a failure
+            a.secondDelayMs = 5;
+        }
+        return a;
+    });
+    TrafficLog log;
+    auto backend = openBackend(device, &log);
+    const ModbusResult r = backend->transact(ModbusRequest::readHolding(1, 0x1013, 1), 100);
+    ASSERT_EQ(r.error, ModbusError::Ok) << r.errorText().toStdString();
+    EXPECT_EQ(r.registers, QVector<quint16>({2222}));
 }
