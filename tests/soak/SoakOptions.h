@@ -1,0 +1,33 @@
+#pragma once
+
+#include <QString>
+#include <QStringList>
+#include <optional>
+
+namespace opentop::soak {
+
+// The soak's command line.
+struct SoakOptions
+{
+    // 247 drives, machine numbers 1..247: the three families the project simulates.
+    static QString defaultDevices();
+
+    double minutes = 60;         // how long every drive is monitored (after all answer)
+    double intervalSeconds = 60; // between figure lines
+    QString devices = defaultDevices();
+    int baud = 115200;
+    // The monitor's interval per drive (MonitorHub). 247 drives at 115200 bit/s: a poll takes
+    // about 20 ms of the line (two requests), so 10 s per drive uses half of it; a figure line
+    // interval that is a multiple of it counts whole polling rounds.
+    int pollMs = 10000;
+    bool gui = true;   // also the opentop program with the bus overview open
+    bool model = true; // the model's monitor hub in this process
+    QString binDir;    // where opentop and opentop-sim are
+
+    static QString usage();
+    // nullopt with *error when an argument is wrong; *help when --help was asked.
+    static std::optional<SoakOptions> parse(const QStringList& arguments, QString* error,
+                                            bool* help);
+};
+
+} // namespace opentop::soak
