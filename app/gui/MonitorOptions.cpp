@@ -21,23 +21,28 @@ const QString kQuitAfter = QStringLiteral("quit-after");
 const QString kStatsEvery = QStringLiteral("stats-every");
 
 // One line of running totals (tests/soak reads it): the samples and errors since monitoring
-// began, and how many watched drives' values are not live now (monitor/Freshness).
+// began, how many watched drives' values are not live now (monitor/Freshness), and the points
+// their trend histories hold.
 void printRunningTotals(const MonitorHub& hub)
 {
     const QDateTime now = QDateTime::currentDateTime();
     qint64 samples = 0;
     qint64 errors = 0;
     int notLive = 0;
+    qint64 points = 0;
     const QVector<int> slaves = hub.watched();
     for (int slave : slaves) {
+        if (const TrendHistory* history = hub.history(slave))
+            points += history->pointCount();
         const MonitorHub::Statistics st = hub.statistics(slave);
         samples += st.samples;
         errors += st.errors;
         if (hub.freshness(slave, now) != Freshness::State::Live)
             ++notLive;
     }
-    std::printf("monitor: %d drives, %lld samples, %lld errors, %d stale\n", int(slaves.size()),
-                static_cast<long long>(samples), static_cast<long long>(errors), notLive);
+    std::printf("monitor: %d drives, %lld samples, %lld errors, %d stale, %lld trend points\n",
+                int(slaves.size()), static_cast<long long>(samples), static_cast<long long>(errors),
+                notLive, static_cast<long long>(points));
     std::fflush(stdout);
 }
 

@@ -47,6 +47,14 @@ void TrendHistory::clear()
     m_series.clear();
 }
 
+qint64 TrendHistory::pointCount() const
+{
+    qint64 n = 0;
+    for (const Series& s : m_series)
+        n += s.points.size();
+    return n;
+}
+
 const TrendHistory::Series* TrendHistory::find(const QString& key) const
 {
     for (const Series& s : m_series) {

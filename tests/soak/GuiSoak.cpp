@@ -70,7 +70,8 @@ void GuiSoak::stop()
 bool GuiSoak::parseTotals(const QString& line, Totals* totals)
 {
     static const QRegularExpression re(
-        QStringLiteral("^monitor: (\\d+) drives, (\\d+) samples, (\\d+) errors, (\\d+) stale$"));
+        QStringLiteral("^monitor: (\\d+) drives, (\\d+) samples, (\\d+) errors, (\\d+) stale, "
+                       "(\\d+) trend points$"));
     const QRegularExpressionMatch m = re.match(line.trimmed());
     if (!m.hasMatch())
         return false;
@@ -78,6 +79,7 @@ bool GuiSoak::parseTotals(const QString& line, Totals* totals)
     totals->samples = m.captured(2).toLongLong();
     totals->errors = m.captured(3).toLongLong();
     totals->stale = m.captured(4).toInt();
+    totals->trendPoints = m.captured(5).toLongLong();
     return true;
 }
 

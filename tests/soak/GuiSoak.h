@@ -25,7 +25,8 @@ public:
     // What the program wrote on stderr (warnings), kept in a file.
     QString stderrPath() const;
 
-    // Reads a "monitor: N drives, S samples, E errors, T stale" line; false for other lines.
+    // Reads a "monitor: N drives, S samples, E errors, T stale, P trend points" line; false for
+    // other lines.
     static bool parseTotals(const QString& line, Totals* totals);
 
 private:

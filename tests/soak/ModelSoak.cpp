@@ -99,6 +99,8 @@ SoakPart::Totals ModelSoak::totals() const
     for (int slave : watched) {
         if (m_hub->freshness(slave, now) != Freshness::State::Live)
             ++t.stale;
+        if (const TrendHistory* history = m_hub->history(slave))
+            t.trendPoints += history->pointCount();
     }
     return t;
 }

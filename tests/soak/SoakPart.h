@@ -14,11 +14,12 @@ public:
     // Running totals since monitoring began.
     struct Totals
     {
-        int drives = 0;     // watched
-        qint64 samples = 0; // sample signals of the monitor hub
-        qint64 errors = 0;  // failed polls (lost samples)
-        int stale = 0;      // watched drives whose values are not live now (monitor/Freshness)
-        qint64 atMs = 0;    // when counted (steady clock, QDeadlineTimer::current)
+        int drives = 0;         // watched
+        qint64 samples = 0;     // sample signals of the monitor hub
+        qint64 errors = 0;      // failed polls (lost samples)
+        int stale = 0;          // watched drives whose values are not live now (monitor/Freshness)
+        qint64 trendPoints = 0; // held by the watched drives' trend histories
+        qint64 atMs = 0;        // when counted (steady clock, QDeadlineTimer::current)
     };
 
     using QObject::QObject;

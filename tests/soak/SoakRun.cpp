@@ -5,6 +5,7 @@
 #include "ProcessProbe.h"
 #include "SoakSim.h"
 #include "bus/BusSpec.h"
+#include "monitor/TrendHistory.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -145,7 +146,7 @@ void SoakRun::waitUntilReady()
           << Qt::endl;
     QString header = QStringLiteral("elapsed");
     for (const Measured& m : m_measured)
-        header += QStringLiteral(" | %1: RSS MiB    fds threads samples/s lost stale")
+        header += QStringLiteral(" | %1: RSS MiB trends MiB    fds threads samples/s lost stale")
                       .arg(m.part->name(), -5);
     m_out << header << Qt::endl;
     for (Measured& m : m_measured)
@@ -165,6 +166,7 @@ SoakPoint SoakRun::measure(Measured& m, double elapsedS)
     p.fds = f.fds;
     p.threads = f.threads;
     p.stale = t.stale;
+    p.trendKb = t.trendPoints * qint64(sizeof(TrendHistory::Point)) / 1024;
     if (elapsedS > 0) {
         const double seconds = double(t.atMs - m.previous.atMs) / 1000.0;
         p.samplesPerS = seconds > 0 ? double(t.samples - m.previous.samples) / seconds : 0;
@@ -182,14 +184,15 @@ void SoakRun::figureLine()
     for (Measured& m : m_measured) {
         const SoakPoint p = measure(m, elapsed);
         m.points << p;
-        line += QStringLiteral(" | %1: %2 %3 %4 %5 %6 %7")
+        line += QStringLiteral(" | %1: %2 %8 %3 %4 %5 %6 %7")
                     .arg(m.part->name(), -5)
                     .arg(double(p.rssKb) / 1024.0, 7, 'f', 1)
                     .arg(p.fds, 6)
                     .arg(p.threads, 7)
                     .arg(p.samplesPerS, 9, 'f', 1)
                     .arg(p.lost, 4)
-                    .arg(p.stale, 5);
+                    .arg(p.stale, 5)
+                    .arg(double(p.trendKb) / 1024.0, 10, 'f', 1);
     }
     m_out << line << Qt::endl;
     // The last line falls on the end of the run (timers drift by a few ms a line).
