@@ -28,11 +28,12 @@ double SoakGoals::warmupS(double totalS)
 }
 
 SoakGoals::Summary SoakGoals::check(const QString& name, const QVector<SoakPoint>& points,
-                                    double totalS)
+                                    double totalS, double warmup)
 {
     Summary s;
     s.name = name;
-    const double warmup = warmupS(totalS);
+    if (warmup < 0)
+        warmup = warmupS(totalS);
     // The baseline: the first point at or after the warm-up; figures after it are judged.
     int base = -1;
     for (int i = 0; i < points.size(); ++i) {

@@ -59,8 +59,10 @@ public:
 
     // The warm-up for a run of `totalS` seconds.
     static double warmupS(double totalS);
-    // Checks `points` (in time order, the first at 0 s) of the process called `name`.
-    static Summary check(const QString& name, const QVector<SoakPoint>& points, double totalS);
+    // Checks `points` (in time order, the first at 0 s) of the process called `name`, after a
+    // warm-up of `warmup` seconds (negative: warmupS(totalS)).
+    static Summary check(const QString& name, const QVector<SoakPoint>& points, double totalS,
+                         double warmup = -1);
     // The summary as text lines (figures, then "goal missed: ..." lines).
     static QStringList describe(const Summary& summary);
 };

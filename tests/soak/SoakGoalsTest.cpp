@@ -50,6 +50,17 @@ TEST(SoakGoalsTest, WarmupIsFiveMinutesOrAFifthOfAShortRun)
     EXPECT_DOUBLE_EQ(SoakGoals::warmupS(120), 24);
 }
 
+TEST(SoakGoalsTest, AGivenWarmupMovesTheBaseline)
+{
+    QVector<SoakPoint> points = steadyRun();
+    for (int i = 0; i < points.size(); ++i)
+        points[i].rssKb = i <= 6 ? 100000 + i * 2000 : 112000; // flat from 60 s on
+    EXPECT_EQ(SoakGoals::check(QStringLiteral("gui"), points, 120).missed.size(), 1);
+    const SoakGoals::Summary s = SoakGoals::check(QStringLiteral("gui"), points, 120, 60);
+    EXPECT_TRUE(s.missed.isEmpty()) << s.missed.join(QLatin1Char('\n')).toStdString();
+    EXPECT_EQ(s.rssBaseKb, 112000);
+}
+
 TEST(SoakGoalsTest, GrowingMemoryMissesTheRssGoal)
 {
     QVector<SoakPoint> points = steadyRun();

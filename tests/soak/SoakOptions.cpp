@@ -23,6 +23,8 @@ QString SoakOptions::usage()
                "file descriptor or thread growth, or an unsteady sample rate.\n\n"
                "  --minutes N            monitoring time (60)\n"
                "  --interval-seconds S   between figure lines (60)\n"
+               "  --warmup-seconds S     before the figures judged (5 min, or 20 % of a shorter "
+               "run)\n"
                "  --devices SPEC         the simulated bus (%1)\n"
                "  --baud N               line speed, simulated with --wire-timing (115200)\n"
                "  --poll-ms MS           poll interval per drive (10000)\n"
@@ -70,6 +72,9 @@ std::optional<SoakOptions> SoakOptions::parse(const QStringList& arguments, QStr
         } else if (arg == QLatin1String("--interval-seconds")) {
             if (!number(&o.intervalSeconds, 1, 3600))
                 return failed(QStringLiteral("--interval-seconds needs 1..3600 seconds"));
+        } else if (arg == QLatin1String("--warmup-seconds")) {
+            if (!number(&o.warmupSeconds, 0, 600000))
+                return failed(QStringLiteral("--warmup-seconds needs a number of seconds"));
         } else if (arg == QLatin1String("--devices")) {
             if (!value(&o.devices) || o.devices.isEmpty())
                 return failed(QStringLiteral("--devices needs a list such as dbu200@1-247"));
@@ -96,6 +101,8 @@ std::optional<SoakOptions> SoakOptions::parse(const QStringList& arguments, QStr
         return failed(QStringLiteral("--no-gui and --no-model leave nothing to measure"));
     if (o.intervalSeconds > o.minutes * 60)
         return failed(QStringLiteral("--interval-seconds is longer than the run"));
+    if (o.warmupSeconds >= o.minutes * 60)
+        return failed(QStringLiteral("--warmup-seconds leaves nothing of the run to judge"));
     return o;
 }
 

@@ -14,6 +14,7 @@ struct SoakOptions
 
     double minutes = 60;         // how long every drive is monitored (after all answer)
     double intervalSeconds = 60; // between figure lines
+    double warmupSeconds = -1;   // before the baseline; negative: SoakGoals::warmupS()
     QString devices = defaultDevices();
     int baud = 115200;
     // The monitor's interval per drive (MonitorHub). 247 drives at 115200 bit/s: a poll takes

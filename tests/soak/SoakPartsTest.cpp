@@ -50,6 +50,9 @@ TEST(SoakPartsTest, OptionsRefuseWhatCannotRun)
                                      QStringLiteral("--interval-seconds"), QStringLiteral("90")},
                                     &error, &help));
     EXPECT_FALSE(SoakOptions::parse({QStringLiteral("--bogus")}, &error, &help));
+    EXPECT_FALSE(SoakOptions::parse({QStringLiteral("--minutes"), QStringLiteral("1"),
+                                     QStringLiteral("--warmup-seconds"), QStringLiteral("60")},
+                                    &error, &help));
     const auto o = SoakOptions::parse({QStringLiteral("--minutes"), QStringLiteral("2"),
                                        QStringLiteral("--interval-seconds"), QStringLiteral("10"),
                                        QStringLiteral("--no-gui")},

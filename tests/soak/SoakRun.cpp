@@ -207,11 +207,13 @@ void SoakRun::conclude()
     m_done = true;
     m_lineTimer.stop();
     const double total = m_options.minutes * 60;
+    const double warmup =
+        m_options.warmupSeconds >= 0 ? m_options.warmupSeconds : SoakGoals::warmupS(total);
     m_out << "summary after " << clockText(m_measured.front().points.last().elapsedS)
-          << " (warm-up " << SoakGoals::warmupS(total) << " s):" << Qt::endl;
+          << " (warm-up " << warmup << " s):" << Qt::endl;
     QStringList missed;
     for (const Measured& m : m_measured) {
-        const SoakGoals::Summary s = SoakGoals::check(m.part->name(), m.points, total);
+        const SoakGoals::Summary s = SoakGoals::check(m.part->name(), m.points, total, warmup);
         for (const QString& l : SoakGoals::describe(s))
             m_out << "  " << l << Qt::endl;
         missed << s.missed;
