@@ -84,6 +84,20 @@ TEST(TrendHistoryTest, CountsThePointsOfAllSeries)
     EXPECT_LE(h.pointCount(), 200);
 }
 
+TEST(TrendHistoryTest, ASmallerCapacityDropsTheOldestAtOnce)
+{
+    TrendHistory h(1000);
+    for (int i = 0; i < 500; ++i)
+        h.append(sample(i * 100, i, 0));
+    h.setCapacity(100);
+    EXPECT_EQ(h.capacity(), 100);
+    const TrendHistory::Series* speed = h.find(QStringLiteral("status.current_speed"));
+    ASSERT_NE(speed, nullptr);
+    ASSERT_EQ(speed->points.size(), 100);
+    EXPECT_EQ(speed->points.first().value, 400);
+    EXPECT_EQ(speed->points.last().value, 499);
+}
+
 TEST(TrendHistoryTest, ValueAtIsTheNewestPointAtOrBeforeATime)
 {
     TrendHistory h;
