@@ -17,8 +17,10 @@ struct SoakOptions
     double warmupSeconds = -1;   // before the baseline; negative: SoakGoals::warmupS()
     QString devices = defaultDevices();
     int baud = 115200;
-    // The monitor's interval per drive (MonitorHub). 247 drives at 115200 bit/s: a poll takes
-    // about 20 ms of the line (two requests), so 10 s per drive uses half of it; a figure line
+    // The monitor's interval per drive (MonitorHub). A DBU sample is 4 transactions, a DC
+    // controller's 1 (docs/monitor.md): a round of the 247 drives is about 870 transactions,
+    // about 5 s of a 115200 bit/s line (measured: at most about 50 samples/s). 10 s per drive
+    // uses half of the line, so the rate shows the program, not a saturated line; a figure line
     // interval that is a multiple of it counts whole polling rounds.
     int pollMs = 10000;
     bool gui = true;   // also the opentop program with the bus overview open
