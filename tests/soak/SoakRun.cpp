@@ -180,7 +180,7 @@ void SoakRun::figureLine()
 {
     const double elapsed = m_lines == 0 ? 0.0 : double(SoakPart::nowMs() - m_readyMs) / 1000.0;
     ++m_lines;
-    QString line = clockText(elapsed) + QStringLiteral("   ");
+    QString line = clockText(elapsed).rightJustified(7);
     for (Measured& m : m_measured) {
         const SoakPoint p = measure(m, elapsed);
         m.points << p;
