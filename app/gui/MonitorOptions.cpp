@@ -7,6 +7,7 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QDateTime>
 #include <QTimer>
 #include <cstdio>
 
@@ -17,6 +18,33 @@ namespace {
 const QString kMonitorAll = QStringLiteral("monitor-all");
 const QString kPollMs = QStringLiteral("poll-ms");
 const QString kQuitAfter = QStringLiteral("quit-after");
+const QString kStatsEvery = QStringLiteral("stats-every");
+
+// One line of running totals (tests/soak reads it): the samples and errors since monitoring
+// began, how many watched drives' values are not live now (monitor/Freshness), and the points
+// their trend histories hold.
+void printRunningTotals(const MonitorHub& hub)
+{
+    const QDateTime now = QDateTime::currentDateTime();
+    qint64 samples = 0;
+    qint64 errors = 0;
+    int notLive = 0;
+    qint64 points = 0;
+    const QVector<int> slaves = hub.watched();
+    for (int slave : slaves) {
+        if (const TrendHistory* history = hub.history(slave))
+            points += history->pointCount();
+        const MonitorHub::Statistics st = hub.statistics(slave);
+        samples += st.samples;
+        errors += st.errors;
+        if (hub.freshness(slave, now) != Freshness::State::Live)
+            ++notLive;
+    }
+    std::printf("monitor: %d drives, %lld samples, %lld errors, %d stale, %lld trend points\n",
+                int(slaves.size()), static_cast<long long>(samples), static_cast<long long>(errors),
+                notLive, static_cast<long long>(points));
+    std::fflush(stdout);
+}
 
 void printStatistics(const MonitorHub& hub)
 {
@@ -50,6 +78,10 @@ void MonitorOptions::addTo(QCommandLineParser& parser)
          {kQuitAfter,
           QApplication::translate("main", "Quit after this many seconds and print the monitoring "
                                           "statistics (for measurements)."),
+          QStringLiteral("seconds")},
+         {kStatsEvery,
+          QApplication::translate("main", "Print the monitoring totals every this many seconds "
+                                          "(for measurements)."),
           QStringLiteral("seconds")}});
 }
 
@@ -64,6 +96,11 @@ bool MonitorOptions::apply(const QCommandLineParser& parser, MainWindow* window,
     const double seconds = parser.isSet(kQuitAfter) ? parser.value(kQuitAfter).toDouble(&ok) : 0;
     if (!ok || seconds < 0) {
         *error = QApplication::translate("main", "--quit-after needs a number of seconds");
+        return false;
+    }
+    const double every = parser.isSet(kStatsEvery) ? parser.value(kStatsEvery).toDouble(&ok) : 0;
+    if (!ok || every < 0) {
+        *error = QApplication::translate("main", "--stats-every needs a number of seconds");
         return false;
     }
     const bool all = parser.isSet(kMonitorAll);
@@ -87,6 +124,14 @@ bool MonitorOptions::apply(const QCommandLineParser& parser, MainWindow* window,
                              window->busPanel()->startScan(1, 247);
                          });
                      });
+    if (every > 0) {
+        auto* timer = new QTimer(window);
+        QObject::connect(timer, &QTimer::timeout, window, [window] {
+            if (window->monitorHub())
+                printRunningTotals(*window->monitorHub());
+        });
+        timer->start(int(every * 1000));
+    }
     if (seconds > 0) {
         QTimer::singleShot(int(seconds * 1000), window, [window] {
             if (window->monitorHub())

@@ -4,6 +4,8 @@
 #include "bus/BusDrives.h"
 #include "session/DeviceSession.h"
 
+#include <algorithm>
+
 namespace opentop {
 
 double MonitorHub::Statistics::rate() const
@@ -51,12 +53,30 @@ void MonitorHub::identified(int slave)
 
 MonitorHub::~MonitorHub() = default;
 
+int MonitorHub::historyCapacity(int drives)
+{
+    const qint64 budget = qint64(kFullHistoryPoints) * kFullHistoryDrives;
+    return int(
+        std::clamp<qint64>(budget / std::max(1, drives), kMinHistoryPoints, kFullHistoryPoints));
+}
+
 MonitorHub::Drive* MonitorHub::driveFor(int slave)
 {
     auto& d = m_list[slave];
-    if (!d)
+    if (!d) {
         d = std::make_unique<Drive>();
+        shareHistory();
+    }
     return d.get();
+}
+
+void MonitorHub::shareHistory()
+{
+    const int capacity = historyCapacity(int(m_list.size()));
+    for (auto& [slave, d] : m_list) {
+        if (d && d->history.capacity() != capacity)
+            d->history.setCapacity(capacity);
+    }
 }
 
 void MonitorHub::watch(int slave, QObject* watcher)
@@ -251,6 +271,7 @@ DeviceMonitor* MonitorHub::monitor(int slave) const
 void MonitorHub::forget(int slave)
 {
     m_list.erase(slave);
+    shareHistory();
     emit watchedChanged();
 }
 

@@ -20,7 +20,10 @@ class BusDrives;
 // monitor page, the trend charts, the bus overview): one DeviceMonitor per drive, polling
 // while at least one view watches it, all at one selectable interval and at Poll priority, so
 // that user commands always go first and the drives share the bus in turn. Keeps each drive's
-// latest sample and a bounded history for trends, also after the last view has closed.
+// latest sample and a bounded history for trends, also after the last view has closed: an
+// hour at 10 Hz per series for up to kFullHistoryDrives drives, and for more drives a share of
+// the same budget each (247 drives: 2331 points per series, over 6 hours at one sample every
+// 10 s), so that the histories' memory does not grow with the number of drives.
 class MonitorHub : public QObject
 {
     Q_OBJECT
@@ -40,6 +43,12 @@ public:
         double rate() const;
         void add(qint64 ms);
     };
+
+    static constexpr int kFullHistoryPoints = 36000; // per series: one hour at 10 Hz
+    static constexpr int kFullHistoryDrives = 16;
+    static constexpr int kMinHistoryPoints = 600;
+    // Points per series each drive's history keeps while the hub knows `drives` drives.
+    static int historyCapacity(int drives);
 
     explicit MonitorHub(BusDrives* drives, QObject* parent = nullptr);
     ~MonitorHub() override;
@@ -97,6 +106,7 @@ private:
     void forget(int slave);
     void identified(int slave);
     void release(QObject* watcher);
+    void shareHistory();
 
     BusDrives* m_drives;
     std::unordered_map<int, std::unique_ptr<Drive>> m_list;

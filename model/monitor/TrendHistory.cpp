@@ -47,6 +47,25 @@ void TrendHistory::clear()
     m_series.clear();
 }
 
+void TrendHistory::setCapacity(int capacity)
+{
+    m_capacity = std::max(10, capacity);
+    for (Series& s : m_series) {
+        if (s.points.size() > m_capacity) {
+            s.points.remove(0, s.points.size() - m_capacity);
+            s.points.squeeze();
+        }
+    }
+}
+
+qint64 TrendHistory::pointCount() const
+{
+    qint64 n = 0;
+    for (const Series& s : m_series)
+        n += s.points.size();
+    return n;
+}
+
 const TrendHistory::Series* TrendHistory::find(const QString& key) const
 {
     for (const Series& s : m_series) {

@@ -36,6 +36,10 @@ public:
     const QVector<Series>& series() const { return m_series; }
     const Series* find(const QString& key) const;
     int capacity() const { return m_capacity; }
+    // A new capacity; series longer than it lose their oldest points now.
+    void setCapacity(int capacity);
+    // Points held in all series (what the history costs: sizeof(Point) each).
+    qint64 pointCount() const;
     // The index of the first point at or after `ms` (points.size() when there is none).
     static int lowerBound(const Series& series, qint64 ms);
     // The value at `ms`: the newest point at or before it; false when there is none.

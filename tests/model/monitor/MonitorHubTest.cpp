@@ -144,3 +144,32 @@ TEST_F(MonitorHubTest, CommandsOvertakePollingAndTheDrivesShareTheRestEvenly)
     EXPECT_GT(lowest, 0.0);
     EXPECT_GT(lowest / highest, 0.8) << lowest << " .. " << highest;
 }
+
+TEST(MonitorHubHistoryTest, ManyDrivesShareOneHistoryBudget)
+{
+    EXPECT_EQ(MonitorHub::historyCapacity(1), 36000);
+    EXPECT_EQ(MonitorHub::historyCapacity(16), 36000);
+    EXPECT_EQ(MonitorHub::historyCapacity(32), 18000);
+    EXPECT_EQ(MonitorHub::historyCapacity(247), 2331);
+    EXPECT_EQ(MonitorHub::historyCapacity(100000), 600);
+}
+
+TEST_F(MonitorHubTest, EachDrivesHistoryIsBoundedByTheNumberOfDrives)
+{
+    QVector<int> slaves;
+    for (int s = 1; s <= 32; ++s)
+        slaves << s;
+    start(QStringLiteral("dbu200@1-32"), slaves);
+    QObject view;
+    hub->watch(1, &view);
+    ASSERT_NE(hub->history(1), nullptr);
+    EXPECT_EQ(hub->history(1)->capacity(), 36000);
+    for (int s : slaves)
+        hub->watch(s, &view);
+    EXPECT_EQ(hub->history(1)->capacity(), 18000);
+    EXPECT_EQ(hub->history(32)->capacity(), 18000);
+    // Drives that leave the bus give their share back.
+    for (int s = 2; s <= 32; ++s)
+        drives->remove(s);
+    EXPECT_EQ(hub->history(1)->capacity(), 36000);
+}

@@ -69,6 +69,35 @@ TEST(TrendHistoryTest, DropsTheOldestBeyondItsCapacity)
     EXPECT_LT(speed->points.first().ms, speed->points.last().ms);
 }
 
+TEST(TrendHistoryTest, CountsThePointsOfAllSeries)
+{
+    TrendHistory h(100);
+    EXPECT_EQ(h.pointCount(), 0);
+    for (int i = 0; i < 30; ++i)
+        h.append(sample(i * 100, i, 5));
+    // Speed and load are trends; the driver state and the priority are not.
+    ASSERT_EQ(h.series().size(), 2);
+    EXPECT_EQ(h.pointCount(), 60);
+    for (int i = 30; i < 1000; ++i)
+        h.append(sample(i * 100, i, 5));
+    EXPECT_EQ(h.pointCount(), h.series()[0].points.size() + h.series()[1].points.size());
+    EXPECT_LE(h.pointCount(), 200);
+}
+
+TEST(TrendHistoryTest, ASmallerCapacityDropsTheOldestAtOnce)
+{
+    TrendHistory h(1000);
+    for (int i = 0; i < 500; ++i)
+        h.append(sample(i * 100, i, 0));
+    h.setCapacity(100);
+    EXPECT_EQ(h.capacity(), 100);
+    const TrendHistory::Series* speed = h.find(QStringLiteral("status.current_speed"));
+    ASSERT_NE(speed, nullptr);
+    ASSERT_EQ(speed->points.size(), 100);
+    EXPECT_EQ(speed->points.first().value, 400);
+    EXPECT_EQ(speed->points.last().value, 499);
+}
+
 TEST(TrendHistoryTest, ValueAtIsTheNewestPointAtOrBeforeATime)
 {
     TrendHistory h;
