@@ -1,5 +1,6 @@
 #include "LibmodbusBackend.h"
 
+#include "ModbusCrc.h"
 #include "RtuFrame.h"
 #include "TransportLog.h"
 
@@ -124,8 +125,10 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
     if (timeoutMs <= 0)
         timeoutMs = m_settings.timeoutMs;
 
+    m_discardedReplyFrom = -1;
     awaitLateReplies(request);
     discardStaleInput(request);
+    result.lateReplyFrom = m_discardedReplyFrom;
     const QByteArray raw = char(request.slave) + request.pdu();
     const QByteArray sent = txAdu(request);
     logFrame(true, sent, request, request.describe(), QString());
@@ -367,6 +370,7 @@ void LibmodbusBackend::discardStaleInput(const ModbusRequest& request)
     }
     if (stale.isEmpty())
         return;
+    noteDiscarded(toRtuAdu(stale));
     modbus_flush(m_ctx);
     logFrame(
         false, stale, request, QString(),
@@ -449,9 +453,22 @@ void LibmodbusBackend::drain(const ModbusRequest& request, double firstWindowMs,
         return;
     modbus_flush(m_ctx);
     if (!late.isEmpty())
+        noteDiscarded(toRtuAdu(late));
+    if (!late.isEmpty())
         logFrame(false, late, request, QString(),
                  QCoreApplication::translate("opentop::Transport",
                                              "late bytes discarded after an error"));
+}
+
+void LibmodbusBackend::noteDiscarded(const QByteArray& rtu)
+{
+    // The shortest reply is an exception: id, function, code, CRC.
+    for (int length = 5; length <= rtu.size() && length <= 256; ++length) {
+        if (ModbusCrc::check(rtu.left(length))) {
+            m_discardedReplyFrom = quint8(rtu.at(0));
+            return;
+        }
+    }
 }
 
 } // namespace opentop

@@ -97,6 +97,9 @@ private:
     // have ended, so that the reply taken may have been a late answer to an earlier request.
     bool anotherReplyFollows(const ModbusRequest& request, int frameBytes);
     void setResponseTimeout(double ms);
+    // Discarded bytes that begin with a whole frame with a good CRC: notes its sender for the
+    // result of the request about to be sent (ModbusResult::lateReplyFrom).
+    void noteDiscarded(const QByteArray& rtu);
 
     ConnectionSettings m_settings;
     _modbus* m_ctx = nullptr;
@@ -113,6 +116,7 @@ private:
     QVector<LateWatch> m_lateWatch; // slaves that timed out silently, quiet time not yet over
     QVector<LateWatch> m_suspects;  // slaves whose replies are checked for a second reply
     QElapsedTimer m_clock;          // monotonic time for m_lateWatch
+    int m_discardedReplyFrom = -1;  // see noteDiscarded()
 };
 
 } // namespace opentop

@@ -34,6 +34,9 @@ struct ModbusResult
     QString message;            // human detail, e.g. the OS error for PortError
     int attempts = 0;
     double elapsedMs = 0; // of the last attempt
+    // A whole reply from this machine number came after its request had timed out and was
+    // discarded before this request was sent (-1: none). A scan asks that drive again.
+    int lateReplyFrom = -1;
 
     bool ok() const { return error == ModbusError::Ok; }
     // One line for users: "timeout after 3 attempts", "exception 02 Illegal data address".

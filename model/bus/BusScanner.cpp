@@ -166,9 +166,12 @@ void BusScanner::noteLateAnswer(const ModbusResult& result)
 {
     // A reply from an address already passed as silent: that drive answers slower than the
     // wait. Its reply spoiled this request; ask it again with a longer wait rather than lose it.
-    if (result.error != ModbusError::WrongSlave || result.reply.isEmpty())
+    // Or one the transport discarded before sending this request (it came after its wait).
+    int sender = result.lateReplyFrom;
+    if (result.error == ModbusError::WrongSlave && !result.reply.isEmpty())
+        sender = quint8(result.reply.at(0));
+    if (sender < 0)
         return;
-    const int sender = quint8(result.reply.at(0));
     const bool known = std::any_of(m_devices.begin(), m_devices.end(),
                                    [sender](const DeviceInfo& d) { return d.slave == sender; });
     if (sender < m_from || sender >= m_cursor || sender == m_slave || known ||

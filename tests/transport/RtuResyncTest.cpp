@@ -179,3 +179,30 @@ TEST(RtuResyncTest, RepliesOfASlaveThatNeverFailedAreTakenAtOnce)
     ASSERT_EQ(r.error, ModbusError::Ok) << r.errorText().toStdString();
     EXPECT_EQ(r.registers, QVector<quint16>({2222}));
 }
+
+TEST(RtuResyncTest, AWholeLateReplyDiscardedBeforeTheNextRequestNamesItsSender)
+{
+    // A scan asks 3 with a short wait; its reply comes 40 ms late and is already waiting when
+    // the master asks 4 (a busy master). The bytes are discarded, but the result says who sent
+    // them, so a scanner can ask 3 again instead of passing it as silent (the soak's misses).
+    PtyDevice device;
+    device.start([](const QByteArray& request) {
+        ModbusRequest r;
+        RtuFrame::decodeRequest(request, &r);
+        return r.slave == 3 ? answer(readReply(3, 1111), 60) : answer(readReply(r.slave, 2222));
+    });
+    TrafficLog log;
+    auto backend = openBackend(device, &log);
+    ModbusResult r = backend->transact(ModbusRequest::readHolding(3, 0x1001, 1), 20);
+    EXPECT_EQ(r.error, ModbusError::Timeout);
+    EXPECT_EQ(r.lateReplyFrom, -1);
+    QThread::msleep(150);
+    r = backend->transact(ModbusRequest::readHolding(4, 0x1001, 1), 100);
+    ASSERT_EQ(r.error, ModbusError::Ok) << r.errorText().toStdString();
+    EXPECT_EQ(r.registers, QVector<quint16>({2222}));
+    EXPECT_EQ(r.lateReplyFrom, 3);
+    EXPECT_TRUE(discarded(log, readReply(3, 1111)));
+    // The next request after that names nobody.
+    r = backend->transact(ModbusRequest::readHolding(5, 0x1001, 1), 100);
+    EXPECT_EQ(r.lateReplyFrom, -1);
+}
