@@ -177,6 +177,13 @@ void MainWindow::refuseConnection(const ConnectionSettings& settings, const QStr
         return;
     }
     setConnectionText(tr("Not connected: %1").arg(error), true);
+    // A bus that never opened offers nothing: no scan, no drives last seen, no pages. Later,
+    // as this may run inside the failed client's own signal.
+    if (m_client)
+        QTimer::singleShot(0, this, [this] {
+            if (!m_connected && !m_candidate)
+                teardown();
+        });
     QMessageBox::warning(this, tr("Cannot connect"), why);
     emit connectionChanged(false);
 }

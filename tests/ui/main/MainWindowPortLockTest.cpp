@@ -160,3 +160,32 @@ TEST_F(MainWindowPortLockTest, ReconnectingToTheSamePortIsNotRefusedByItsOwnLock
     EXPECT_TRUE(box.isEmpty()) << qPrintable(box);
     qunsetenv("OPENTOP_LOCK_DIR");
 }
+
+TEST_F(MainWindowPortLockTest, ARefusedPortWithNoBusBeforeOffersNoScanAndNoDrives)
+{
+    // Started with --port on a port another program holds: nothing is connected, so nothing
+    // may offer to scan or to restore the drives last seen on it.
+    Pty pty;
+    QTemporaryDir locks;
+    qputenv("OPENTOP_LOCK_DIR", locks.path().toLocal8Bit());
+    QProcess other;
+    other.start(QStringLiteral("sleep"), {QStringLiteral("30")});
+    ASSERT_TRUE(other.waitForStarted(5000));
+    QFile file(locks.path() + QLatin1Char('/') + PortLockFile::fileName(pty.path));
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(QByteArray::number(other.processId()).rightJustified(10, ' ') + '\n');
+    file.close();
+    window->disconnectBus();
+    ASSERT_TRUE(waitFor([&] { return !window->isConnected() && !window->busPanel(); }));
+    const QString text = refusal(window.get(), pty.path);
+    qunsetenv("OPENTOP_LOCK_DIR");
+    EXPECT_TRUE(text.contains(QStringLiteral("in use by sleep"))) << qPrintable(text);
+    EXPECT_TRUE(waitFor([&] { return !window->busPanel() && !window->recallBar(); }))
+        << "a bus that never opened shows no Scan button and no recall bar";
+    EXPECT_FALSE(window->isConnected());
+    EXPECT_TRUE(window->connectionLabel()->toolTip().startsWith(QStringLiteral("Not connected")))
+        << qPrintable(window->connectionLabel()->toolTip());
+    EXPECT_TRUE(pty.sent().isEmpty());
+    other.kill();
+    other.waitForFinished(2000);
+}
