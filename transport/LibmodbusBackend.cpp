@@ -79,6 +79,11 @@ bool LibmodbusBackend::open(QString* error)
     }
     modbus_flush(m_ctx);
     m_open = true;
+    // The program that used the line before us may have left a request unanswered (a CLI run
+    // that gave up, then exited): its late reply can reach our first request of the same
+    // shape. Until that window has passed, every reply is checked for another right behind it.
+    m_suspectAllUntilMs =
+        double(m_clock.nsecsElapsed()) / 1e6 + std::max(1000.0, 5.0 * m_settings.timeoutMs);
     qCDebug(lcTransport) << "opened" << describe();
     return true;
 }
@@ -223,6 +228,8 @@ bool LibmodbusBackend::isSuspect(quint8 slave)
     if (wireTimeMs(1) <= 0)
         return false; // Modbus TCP: transaction ids tell replies apart
     const double nowMs = double(m_clock.nsecsElapsed()) / 1e6;
+    if (nowMs < m_suspectAllUntilMs)
+        return true;
     m_suspects.erase(std::remove_if(m_suspects.begin(), m_suspects.end(),
                                     [nowMs](const LateWatch& w) { return w.untilMs <= nowMs; }),
                      m_suspects.end());

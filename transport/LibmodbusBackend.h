@@ -117,6 +117,7 @@ private:
     QVector<LateWatch> m_suspects;  // slaves whose replies are checked for a second reply
     QElapsedTimer m_clock;          // monotonic time for m_lateWatch
     int m_discardedReplyFrom = -1;  // see noteDiscarded()
+    double m_suspectAllUntilMs = 0; // on m_clock: every slave is a suspect until then (open())
 };
 
 } // namespace opentop

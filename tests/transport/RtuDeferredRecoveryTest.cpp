@@ -47,6 +47,7 @@ TEST(RtuDeferredRecoveryTest, SilentTimeoutDoesNotDelayARequestToAnotherSlave)
     });
     TrafficLog log;
     auto backend = openBackend(device, &log);
+    QThread::msleep(1100); // past the check of every reply that follows opening the port
     EXPECT_EQ(backend->transact(ModbusRequest::readHolding(1, 0, 1), 50).error,
               ModbusError::Timeout);
     QElapsedTimer timer;

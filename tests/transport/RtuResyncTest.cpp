@@ -175,9 +175,29 @@ TEST(RtuResyncTest, RepliesOfASlaveThatNeverFailedAreTakenAtOnce)
     });
     TrafficLog log;
     auto backend = openBackend(device, &log);
+    QThread::msleep(1100); // past the check that follows opening the port
     const ModbusResult r = backend->transact(ModbusRequest::readHolding(1, 0x1013, 1), 100);
     ASSERT_EQ(r.error, ModbusError::Ok) << r.errorText().toStdString();
     EXPECT_EQ(r.registers, QVector<quint16>({2222}));
+}
+
+TEST(RtuResyncTest, AReplyLeftByThePreviousProgramIsNotTakenAsTheAnswerToTheFirstRequest)
+{
+    // The program that used the port before gave up on a read and exited; its reply (1111)
+    // arrives just as we ask the same drive the same question. Our own reply follows: the
+    // first one must not be taken, the request fails and is retried.
+    PtyDevice device;
+    device.start([](const QByteArray&) {
+        Answer a = answer(readReply(1, 1111));
+        a.second = readReply(1, 2222);
+        a.secondDelayMs = 5;
+        return a;
+    });
+    TrafficLog log;
+    auto backend = openBackend(device, &log);
+    const ModbusResult r = backend->transact(ModbusRequest::readHolding(1, 0x1013, 1), 100);
+    EXPECT_EQ(r.error, ModbusError::MalformedReply) << r.errorText().toStdString();
+    EXPECT_TRUE(r.registers.isEmpty());
 }
 
 TEST(RtuResyncTest, AWholeLateReplyDiscardedBeforeTheNextRequestNamesItsSender)
