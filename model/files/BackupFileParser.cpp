@@ -105,7 +105,7 @@ bool BackupFileParser::checkHeader(const QJsonObject& root)
     if (v > BackupFile::kFormatVersion)
         return fail(tr("written by a newer OpenTOP (format version %1); this version reads "
                        "format version %2")
-                        .arg(qint64(v))
+                        .arg(v, 0, 'g', 15)
                         .arg(BackupFile::kFormatVersion));
     const QString checksum = root.value(QStringLiteral("checksum")).toString();
     if (!checksum.startsWith(QLatin1String("sha256:")))

@@ -59,6 +59,11 @@ std::optional<qint64> JsonReader::integerValue(const QJsonValue& v, const QStrin
             fail(tr("%1 must be a whole number").arg(where));
             return std::nullopt;
         }
+        // Converting a double beyond qint64 is undefined behaviour (found by FuzzProfileLoader).
+        if (!(std::fabs(d) < 9.0e15)) {
+            fail(tr("%1 is out of range").arg(where));
+            return std::nullopt;
+        }
         return static_cast<qint64>(d);
     }
     if (v.isString()) {

@@ -81,6 +81,16 @@ ParameterField::ParameterField(DeviceParameters* parameters, const QString& name
     sync();
 }
 
+ParameterField::~ParameterField()
+{
+    // ~QWidget takes the focus from the line edit, which then reports editingFinished to a
+    // field that is half destroyed (UBSan, issue 11): nothing is committed on the way out.
+    if (m_edit)
+        m_edit->disconnect(this);
+    if (m_combo)
+        m_combo->disconnect(this);
+}
+
 QWidget* ParameterField::editor() const
 {
     return m_combo ? static_cast<QWidget*>(m_combo) : m_edit;

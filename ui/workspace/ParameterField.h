@@ -24,6 +24,7 @@ class ParameterField : public QWidget
     Q_OBJECT
 public:
     ParameterField(DeviceParameters* parameters, const QString& name, QWidget* parent = nullptr);
+    ~ParameterField() override;
 
     QString parameterName() const { return m_name; }
     QWidget* editor() const;

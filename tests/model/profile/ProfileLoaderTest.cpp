@@ -255,3 +255,16 @@ TEST(ProfileLoader, RolesBindMeaningToParameters)
         EXPECT_TRUE(error.contains(QString::fromUtf8(b.expected))) << qPrintable(error);
     }
 }
+
+TEST(ProfileLoader, AHugeNumberIsRefusedAsOutOfRange)
+{
+    // FuzzProfileLoader: a baud rate of 10^300 was converted to a 64-bit integer, which is
+    // undefined behaviour (UBSan stops the sanitizer build's test here without the check).
+    QJsonObject root = testProfileJson();
+    QJsonObject serial = root.value(QStringLiteral("serial")).toObject();
+    serial[QStringLiteral("baud")] = 1e300;
+    root[QStringLiteral("serial")] = serial;
+    QString error;
+    EXPECT_FALSE(ProfileLoader::loadJson(toJson(root), QStringLiteral("tdev.json"), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("out of range"))) << qPrintable(error);
+}
