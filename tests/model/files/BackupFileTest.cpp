@@ -163,8 +163,9 @@ TEST_F(BackupFileTest, RefusesWhatIsNotABackup)
                     .contains(QStringLiteral("written by a newer OpenTOP (format version 2)")));
     // FuzzBackupFile: a version beyond 64-bit integers was converted to one (undefined).
     document.insert(QStringLiteral("formatVersion"), 1.2e38);
-    EXPECT_TRUE(refusal(resigned(document))
-                    .contains(QStringLiteral("written by a newer OpenTOP (format version 1.2e+38)")));
+    EXPECT_TRUE(
+        refusal(resigned(document))
+            .contains(QStringLiteral("written by a newer OpenTOP (format version 1.2e+38)")));
     document = root();
     document.remove(QStringLiteral("checksum"));
     EXPECT_TRUE(refusal(QJsonDocument(document).toJson()).contains(QStringLiteral("no checksum")));
