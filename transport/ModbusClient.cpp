@@ -50,7 +50,41 @@ bool ModbusClient::isOpen() const
 ModbusClient::RequestId ModbusClient::submit(const ModbusRequest& request, QObject* context,
                                              Callback callback)
 {
-    return m_worker->submit(request, context, std::move(callback));
+    // Held across the worker's submit, so a result can never be delivered before it is known
+    // who should hear of it.
+    std::lock_guard<std::mutex> lock(m_pendingMutex);
+    const RequestId id = m_worker->submit(request);
+    if (callback)
+        m_pending.emplace(id, Pending{context, context != nullptr, std::move(callback)});
+    return id;
+}
+
+void ModbusClient::deliver(quint64 id, const ModbusResult& result)
+{
+    Pending pending;
+    {
+        std::lock_guard<std::mutex> lock(m_pendingMutex);
+        auto it = m_pending.find(id);
+        if (it != m_pending.end()) {
+            pending = std::move(it->second);
+            m_pending.erase(it);
+        }
+    }
+    if (pending.callback) {
+        QObject* target = pending.hasContext ? pending.context.data() : this;
+        if (target && target->thread() == thread()) {
+            // The callback may delete this client (a disconnect on a failure).
+            QPointer<ModbusClient> self(this);
+            pending.callback(result);
+            if (!self)
+                return;
+        } else if (target) {
+            auto callback = std::move(pending.callback);
+            QMetaObject::invokeMethod(
+                target, [callback, result] { callback(result); }, Qt::QueuedConnection);
+        }
+    }
+    emit finished(id, result);
 }
 
 ModbusResult ModbusClient::execute(const ModbusRequest& request)
@@ -58,7 +92,7 @@ ModbusResult ModbusClient::execute(const ModbusRequest& request)
     // The worker fulfils the promise itself, so this needs no event loop on this thread.
     auto done = std::make_shared<std::promise<ModbusResult>>();
     std::future<ModbusResult> result = done->get_future();
-    m_worker->submit(request, nullptr, {}, done);
+    m_worker->submit(request, done);
     return result.get();
 }
 

@@ -5,8 +5,11 @@
 #include "ModbusResult.h"
 
 #include <QObject>
+#include <QPointer>
 #include <functional>
 #include <memory>
+#include <mutex>
+#include <unordered_map>
 
 namespace opentop {
 
@@ -61,7 +64,23 @@ signals:
     void connectionLost(const QString& error);
 
 private:
+    friend class ModbusClientWorker;
+
+    // Who hears of a result. Kept on this side: a QPointer must not be copied or destroyed on
+    // the worker thread while its object is being deleted on another.
+    struct Pending
+    {
+        QPointer<QObject> context;
+        bool hasContext = false;
+        Callback callback;
+    };
+
+    // Runs on this client's thread, posted by the worker.
+    void deliver(quint64 id, const ModbusResult& result);
+
     ConnectionSettings m_settings;
+    std::mutex m_pendingMutex; // submit() may be called from a thread other than this client's
+    std::unordered_map<quint64, Pending> m_pending;
     std::unique_ptr<ModbusClientWorker> m_worker;
 };
 

@@ -17,10 +17,7 @@ struct ModbusClientWorker::Item
 {
     quint64 id = 0;
     ModbusRequest request;
-    QPointer<QObject> context; // guarded: a deleted context gets no callback
-    bool hasContext = false;
-    ModbusClient::Callback callback;
-    Promise promise;
+    Promise promise; // a blocking caller on another thread
 };
 
 struct ModbusClientWorker::State
@@ -146,15 +143,11 @@ QString ModbusClientWorker::describe() const
     return m_state->description;
 }
 
-quint64 ModbusClientWorker::submit(const ModbusRequest& request, QObject* context,
-                                   ModbusClient::Callback callback, Promise promise)
+quint64 ModbusClientWorker::submit(const ModbusRequest& request, Promise promise)
 {
     Item item;
     item.id = m_state->nextId++;
     item.request = request;
-    item.context = context;
-    item.hasContext = context != nullptr;
-    item.callback = std::move(callback);
     item.promise = std::move(promise);
 
     const QString invalid = request.validate();
@@ -360,17 +353,9 @@ void ModbusClientWorker::deliver(State& s, const Item& item, const ModbusResult&
     if (!s.client)
         return;
     ModbusClient* client = s.client;
-    if (item.callback) {
-        QObject* target = item.hasContext ? item.context.data() : client;
-        if (target) {
-            auto callback = item.callback;
-            QMetaObject::invokeMethod(
-                target, [callback, result] { callback(result); }, Qt::QueuedConnection);
-        }
-    }
     const quint64 id = item.id;
     QMetaObject::invokeMethod(
-        client, [client, id, result] { emit client->finished(id, result); }, Qt::QueuedConnection);
+        client, [client, id, result] { client->deliver(id, result); }, Qt::QueuedConnection);
 }
 
 } // namespace opentop

@@ -5,7 +5,6 @@
 #include "ModbusRequest.h"
 #include "ModbusResult.h"
 
-#include <QPointer>
 #include <future>
 #include <memory>
 #include <thread>
@@ -17,7 +16,7 @@ class ModbusBackend;
 // The thread behind ModbusClient. It owns the backend: open, every transact and close run on
 // it, so a libmodbus context never changes threads. Requests wait in one queue per priority
 // (User > Normal > Poll), FIFO within each. Results go back as queued calls to each request's
-// context object and as ModbusClient::finished.
+// client, which passes them on to who asked (ModbusClient::deliver).
 class ModbusClientWorker
 {
 public:
@@ -35,8 +34,9 @@ public:
     bool isOpen() const;
     QString describe() const;
 
-    quint64 submit(const ModbusRequest& request, QObject* context, ModbusClient::Callback callback,
-                   Promise promise = {});
+    // Returns the request's id. Its result goes to `promise` (on this thread) and to
+    // ModbusClient::deliver (on the client's).
+    quint64 submit(const ModbusRequest& request, Promise promise = {});
     bool cancel(quint64 id);
     void cancelAll();
     int pendingCount() const;

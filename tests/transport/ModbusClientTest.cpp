@@ -4,6 +4,7 @@
 #include "TrafficLog.h"
 #include "TransportTestSupport.h"
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QThread>
 #include <condition_variable>
@@ -368,4 +369,43 @@ TEST(ModbusClientTest, ExecuteFromAnotherThread)
     caller.join();
     EXPECT_EQ(r.error, ModbusError::Ok);
     EXPECT_EQ(r.registers, QVector<quint16>({77}));
+}
+
+TEST(ModbusClientTest, AContextDeletedBeforeItsResultHearsNothing)
+{
+    MockClient f(echoDevice);
+    auto context = std::make_unique<QObject>();
+    bool calledDeleted = false;
+    bool calledKept = false;
+    quint64 lastFinished = 0;
+    QObject::connect(f.client.get(), &ModbusClient::finished,
+                     [&lastFinished](quint64 id, const ModbusResult&) { lastFinished = id; });
+    f.client->submit(ModbusRequest::readHolding(1, 1, 1), context.get(),
+                     [&](const ModbusResult&) { calledDeleted = true; });
+    const auto kept = f.client->submit(ModbusRequest::readHolding(1, 2, 1), nullptr,
+                                       [&](const ModbusResult&) { calledKept = true; });
+    context.reset();
+    ASSERT_TRUE(waitUntil([&] { return calledKept && lastFinished == kept; }));
+    EXPECT_FALSE(calledDeleted);
+}
+
+// A failure handler that disconnects deletes the client from inside its own callback.
+TEST(ModbusClientTest, ACallbackMayDeleteTheClient)
+{
+    MockClient f(echoDevice);
+    bool finishedAfter = false;
+    bool called = false;
+    QObject::connect(f.client.get(), &ModbusClient::finished,
+                     [&finishedAfter](quint64, const ModbusResult&) { finishedAfter = true; });
+    f.client->submit(ModbusRequest::readHolding(1, 1, 1), nullptr, [&](const ModbusResult&) {
+        called = true;
+        f.client.reset();
+    });
+    f.client->submit(ModbusRequest::readHolding(1, 2, 1), nullptr, [&](const ModbusResult&) {
+        ADD_FAILURE() << "a deleted client delivered a result";
+    });
+    ASSERT_TRUE(waitUntil([&] { return called; }));
+    QCoreApplication::processEvents();
+    EXPECT_FALSE(f.client);
+    EXPECT_FALSE(finishedAfter);
 }
