@@ -263,11 +263,11 @@ void ModbusClientWorker::run(std::shared_ptr<State> state)
         }
         s.inFlight = item.id;
         lock.unlock();
-        const ModbusResult result = execute(s, item);
+        ModbusResult result = execute(s, item);
         lock.lock();
         s.inFlight = 0;
         lock.unlock();
-        deliver(s, item, result);
+        deliver(s, item, std::move(result));
     }
 
     // Stopping: what is still queued is never sent. Only blocked execute() callers hear of it.
@@ -345,7 +345,7 @@ ModbusResult ModbusClientWorker::execute(State& s, const Item& item)
     return result;
 }
 
-void ModbusClientWorker::deliver(State& s, const Item& item, const ModbusResult& result)
+void ModbusClientWorker::deliver(State& s, const Item& item, ModbusResult result)
 {
     if (item.promise)
         item.promise->set_value(result);
@@ -354,8 +354,10 @@ void ModbusClientWorker::deliver(State& s, const Item& item, const ModbusResult&
         return;
     ModbusClient* client = s.client;
     const quint64 id = item.id;
+    // Moved: this thread keeps no share of the result's data once it is posted.
     QMetaObject::invokeMethod(
-        client, [client, id, result] { client->deliver(id, result); }, Qt::QueuedConnection);
+        client, [client, id, result = std::move(result)] { client->deliver(id, result); },
+        Qt::QueuedConnection);
 }
 
 } // namespace opentop

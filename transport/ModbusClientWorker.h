@@ -48,7 +48,7 @@ private:
     struct Item;
     static void run(std::shared_ptr<State> state);
     static ModbusResult execute(State& state, const Item& item);
-    static void deliver(State& state, const Item& item, const ModbusResult& result);
+    static void deliver(State& state, const Item& item, ModbusResult result);
 
     std::shared_ptr<State> m_state;
     std::thread m_thread;

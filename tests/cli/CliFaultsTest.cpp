@@ -2,6 +2,7 @@
 // outputs that are no regular files, the same setting twice, or a bus that does not answer.
 #include "CliTestSupport.h"
 #include "ExitCode.h"
+#include "FifoReader.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -24,33 +25,6 @@ namespace {
 QStringList words(const char* line)
 {
     return QString::fromLatin1(line).split(QLatin1Char(' '), Qt::SkipEmptyParts);
-}
-
-// Reads what a writer puts into a FIFO, from a thread: the read end is open before the writer
-// comes (so the writer never waits), and the thread ends at the writer's EOF or once `writerDone`
-// is set without anything having come (a writer that replaced the FIFO never opens it).
-inline std::future<QByteArray> drainFifo(const QString& path, std::atomic<bool>* writerDone)
-{
-    const int fd = ::open(QFile::encodeName(path).constData(), O_RDONLY | O_NONBLOCK);
-    return std::async(std::launch::async, [fd, writerDone] {
-        QByteArray data;
-        bool got = false;
-        for (int spins = 0; fd >= 0 && spins < 6000; ++spins) {
-            char buffer[4096];
-            const ssize_t n = ::read(fd, buffer, sizeof buffer);
-            if (n > 0) {
-                data.append(buffer, int(n));
-                got = true;
-                continue;
-            }
-            if (n == 0 && (got || writerDone->load()))
-                break;
-            std::this_thread::sleep_for(std::chrono::milliseconds(5));
-        }
-        if (fd >= 0)
-            ::close(fd);
-        return data;
-    });
 }
 
 } // namespace
@@ -151,7 +125,7 @@ TEST(CliFaults, BackupToAFifoWritesThroughItAndToADirectoryIsRefusedFirst)
     const QString fifo = dir.filePath(QStringLiteral("pipe"));
     ASSERT_EQ(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
     std::atomic<bool> writerDone{false};
-    auto read = drainFifo(fifo, &writerDone);
+    auto read = opentop::test::readFifo(fifo, &writerDone);
     CliRun r = runCli({QStringLiteral("--sim=dbu200@1"), QStringLiteral("--variant=1=dbu200"),
                        QStringLiteral("backup"), QStringLiteral("1"), QStringLiteral("-o"), fifo});
     writerDone = true;

@@ -73,6 +73,11 @@ MainMenus::MainMenus(MainWindow* window, BusDocks* docks, std::function<QVector<
     toolbar->addAction(writeAll);
     toolbar->addAction(m_multiWrite);
     toolbar->addSeparator();
+    // Scanning, writing and reading need a bus; without one they would only fail.
+    for (QAction* needsBus : {scan, writeAll, reread}) {
+        needsBus->setEnabled(window->isConnected());
+        connect(window, &MainWindow::connectionChanged, needsBus, &QAction::setEnabled);
+    }
     QMenu* view = bar->addMenu(tr("&View"));
     // The docks' own actions keep the menu's check marks in step with a dock closed by its
     // title bar button.

@@ -3,6 +3,7 @@
 // error reported, a directory is refused; and a backup file too large to be one is refused
 // without being read.
 #include "files/OutputFile.h"
+#include "FifoReader.h"
 #include "files/BackupFile.h"
 #include "profile/ProfileRegistry.h"
 
@@ -38,33 +39,6 @@ bool isCharDevice(const QString& path)
     return ::stat(QFile::encodeName(path).constData(), &st) == 0 && S_ISCHR(st.st_mode);
 }
 
-// Reads what a writer puts into a FIFO, from a thread: the read end is open before the writer
-// comes (so the writer never waits), and the thread ends at the writer's EOF or once `writerDone`
-// is set without anything having come (a writer that replaced the FIFO never opens it).
-inline std::future<QByteArray> drainFifo(const QString& path, std::atomic<bool>* writerDone)
-{
-    const int fd = ::open(QFile::encodeName(path).constData(), O_RDONLY | O_NONBLOCK);
-    return std::async(std::launch::async, [fd, writerDone] {
-        QByteArray data;
-        bool got = false;
-        for (int spins = 0; fd >= 0 && spins < 6000; ++spins) {
-            char buffer[4096];
-            const ssize_t n = ::read(fd, buffer, sizeof buffer);
-            if (n > 0) {
-                data.append(buffer, int(n));
-                got = true;
-                continue;
-            }
-            if (n == 0 && (got || writerDone->load()))
-                break;
-            std::this_thread::sleep_for(std::chrono::milliseconds(5));
-        }
-        if (fd >= 0)
-            ::close(fd);
-        return data;
-    });
-}
-
 } // namespace
 
 TEST(OutputFile, AFifoIsWrittenThroughAndStaysAFifo)
@@ -73,7 +47,7 @@ TEST(OutputFile, AFifoIsWrittenThroughAndStaysAFifo)
     const QString path = dir.filePath(QStringLiteral("pipe"));
     ASSERT_EQ(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
     std::atomic<bool> done{false};
-    auto read = drainFifo(path, &done);
+    auto read = opentop::test::readFifo(path, &done);
     QString error;
     EXPECT_TRUE(OutputFile::write(path, QByteArray("hello\n"), &error)) << qPrintable(error);
     done = true;
@@ -87,7 +61,7 @@ TEST(OutputFile, ABackupSavedToAFifoLeavesTheFifoInPlace)
     const QString path = dir.filePath(QStringLiteral("pipe"));
     ASSERT_EQ(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
     std::atomic<bool> done{false};
-    auto read = drainFifo(path, &done);
+    auto read = opentop::test::readFifo(path, &done);
     BackupFile file;
     file.tool = BackupFile::toolName();
     file.created = QDateTime::currentDateTimeUtc();

@@ -65,6 +65,19 @@ QString refusal(MainWindow* window, const QString& port)
     return text;
 }
 
+// Whether the menu and toolbar action with this text can be used.
+bool actionEnabled(MainWindow* window, const QString& text)
+{
+    for (QAction* action : window->findChildren<QAction*>())
+        if (action->text() == text)
+            return action->isEnabled();
+    ADD_FAILURE() << "no action " << qPrintable(text);
+    return false;
+}
+
+const QStringList kNeedABus = {QStringLiteral("&Scan bus"), QStringLiteral("&Write all pending"),
+                               QStringLiteral("&Re-read all")};
+
 } // namespace
 
 TEST_F(MainWindowPortLockTest, APortAnotherProgramLocksIsRefusedNamingIt)
@@ -175,6 +188,8 @@ TEST_F(MainWindowPortLockTest, ARefusedPortWithNoBusBeforeOffersNoScanAndNoDrive
     ASSERT_TRUE(file.open(QIODevice::WriteOnly));
     file.write(QByteArray::number(other.processId()).rightJustified(10, ' ') + '\n');
     file.close();
+    for (const QString& text : kNeedABus)
+        EXPECT_TRUE(actionEnabled(window.get(), text)) << qPrintable(text) << " while connected";
     window->disconnectBus();
     ASSERT_TRUE(waitFor([&] { return !window->isConnected() && !window->busPanel(); }));
     const QString text = refusal(window.get(), pty.path);
@@ -186,6 +201,8 @@ TEST_F(MainWindowPortLockTest, ARefusedPortWithNoBusBeforeOffersNoScanAndNoDrive
     EXPECT_TRUE(window->connectionLabel()->toolTip().startsWith(QStringLiteral("Not connected")))
         << qPrintable(window->connectionLabel()->toolTip());
     EXPECT_TRUE(pty.sent().isEmpty());
+    for (const QString& name : kNeedABus)
+        EXPECT_FALSE(actionEnabled(window.get(), name)) << qPrintable(name) << " without a bus";
     other.kill();
     other.waitForFinished(2000);
 }
