@@ -103,7 +103,8 @@ QVector<RecipeStep> dbuSteps(const Profile& profile, const RecipePosition& posit
     s.type = RecipeStep::Type::WaitSpeed;
     s.target = target;
     s.tolerance = tolerance;
-    s.unit = profile.parameter(roleParameter(profile, "currentSpeed"))->spec.unit;
+    if (const ParameterMeta* speed = profile.parameter(roleParameter(profile, "currentSpeed")))
+        s.unit = speed->spec.unit;
     s.timeout = rounded(accel + 5, 1);
     steps << s;
     s = RecipeStep();
@@ -127,6 +128,8 @@ QVector<RecipeStep> dcSteps(const Profile& profile, const RecipePosition& positi
 {
     const ParameterMeta* command = profile.parameter(roleParameter(profile, "speedCommand"));
     const ParameterMeta* speed = profile.parameter(roleParameter(profile, "currentSpeed"));
+    if (!command)
+        return {};
     const ValueSpec& spec = command->specFor(RecipeChecker::contextOf(profile, position, {}));
     double largest = 0;
     for (const ValueRange& r : spec.ranges)

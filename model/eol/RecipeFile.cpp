@@ -8,9 +8,81 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 
+#include <algorithm>
+
 namespace opentop {
 
 namespace {
+
+// A scalar exactly as QJsonDocument writes it, so that the pretty text and the canonical
+// compact text (the checksum's input) hold the same numbers.
+QByteArray scalar(const QJsonValue& value)
+{
+    const QByteArray wrapped = QJsonDocument(QJsonArray{value}).toJson(QJsonDocument::Compact);
+    return wrapped.mid(1, wrapped.size() - 2);
+}
+
+// Keys in the order people read them; anything else follows alphabetically.
+QStringList orderedKeys(const QJsonObject& object)
+{
+    static const char* const order[] = {
+        "format",    "formatVersion", "product",  "revision",     "description", "machineNumber",
+        "name",      "family",        "variants", "firmware",     "type",        "parameter",
+        "statistic", "spno",          "speed",    "direction",    "target",      "tolerance",
+        "value",     "min",           "max",      "lower",        "upper",       "equals",
+        "unit",      "timeout",       "duration", "deceleration", "margin",      "source",
+        "settings",  "unitValues",    "steps",    "limits",       "positions",   "checksum"};
+    QStringList keys;
+    for (const char* k : order) {
+        if (object.contains(QLatin1String(k)))
+            keys << QString::fromLatin1(k);
+    }
+    for (const QString& k : object.keys()) {
+        if (!keys.contains(k))
+            keys << k;
+    }
+    return keys;
+}
+
+bool isFlat(const QJsonValue& value)
+{
+    if (value.isArray()) {
+        const QJsonArray a = value.toArray();
+        return std::all_of(a.begin(), a.end(),
+                           [](const QJsonValue& v) { return !v.isArray() && !v.isObject(); });
+    }
+    if (value.isObject()) {
+        const QJsonObject o = value.toObject();
+        return std::all_of(o.begin(), o.end(), [](const QJsonValue& v) { return isFlat(v); });
+    }
+    return true;
+}
+
+// Indented text with one setting, per-unit value, limit or simple step per line.
+QByteArray pretty(const QJsonValue& value, int indent)
+{
+    const QByteArray inner(indent + 2, ' ');
+    const bool flat = isFlat(value);
+    if (value.isArray()) {
+        QByteArrayList items;
+        for (const QJsonValue& v : value.toArray())
+            items << (flat ? QByteArray() : inner) + pretty(v, indent + 2);
+        if (flat || items.isEmpty())
+            return '[' + items.join(", ") + ']';
+        return "[\n" + items.join(",\n") + '\n' + QByteArray(indent, ' ') + ']';
+    }
+    if (value.isObject()) {
+        const QJsonObject o = value.toObject();
+        QByteArrayList fields;
+        for (const QString& k : orderedKeys(o))
+            fields << (flat ? QByteArray() : inner) + scalar(k) + ": " +
+                          pretty(o.value(k), indent + 2);
+        if (flat)
+            return '{' + fields.join(", ") + '}';
+        return "{\n" + fields.join(",\n") + '\n' + QByteArray(indent, ' ') + '}';
+    }
+    return scalar(value);
+}
 
 void insertOptional(QJsonObject& o, const char* key, const std::optional<double>& v)
 {
@@ -148,7 +220,7 @@ QByteArray RecipeFile::toJson(const Recipe& recipe)
 {
     QJsonObject root = toObject(recipe);
     root.insert(QStringLiteral("checksum"), BackupFile::checksumOf(root));
-    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+    return pretty(root, 0) + '\n';
 }
 
 std::optional<Recipe> RecipeFile::fromJson(const QByteArray& data, QString* error,

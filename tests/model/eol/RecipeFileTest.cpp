@@ -12,6 +12,8 @@
 #include <QJsonObject>
 #include <QTemporaryDir>
 
+#include <algorithm>
+
 using namespace opentop;
 using namespace opentop::test;
 
@@ -83,8 +85,11 @@ TEST(RecipeFile, RoundTripKeepsEverything)
         // and the file on disk is exactly what was read: its checksum is the recipe's
         QFile file(exampleRecipePath(name));
         ASSERT_TRUE(file.open(QIODevice::ReadOnly));
-        const QJsonObject onDisk = QJsonDocument::fromJson(file.readAll()).object();
+        const QByteArray text = file.readAll();
+        const QJsonObject onDisk = QJsonDocument::fromJson(text).object();
         EXPECT_EQ(onDisk.value(QStringLiteral("checksum")).toString(), checksum) << name;
+        // the examples are laid out as OpenTOP writes them
+        EXPECT_EQ(RecipeFile::toJson(recipe), text) << name;
     }
     // a few fields by value, so that a reader that drops them fails here
     const Recipe dc = exampleRecipe("recipe-dcpid.json");
@@ -105,6 +110,27 @@ TEST(RecipeFile, RoundTripKeepsEverything)
     EXPECT_FALSE(current.lower);
     EXPECT_EQ(current.upper, std::optional<double>(3));
     EXPECT_EQ(current.unit, QStringLiteral("A"));
+}
+
+TEST(RecipeFile, IsWrittenForPeopleToRead)
+{
+    const QByteArray text = RecipeFile::toJson(exampleRecipe("recipe-dbu200.json"));
+    const QList<QByteArray> lines = text.split('\n');
+    auto has = [&](const char* line) {
+        return std::any_of(lines.begin(), lines.end(),
+                           [&](const QByteArray& l) { return l.trimmed() == line; });
+    };
+    // the product first, one setting, limit and simple step per line, the checksum last
+    EXPECT_EQ(lines.value(1).trimmed(), QByteArray(R"("format": "opentop-recipe",)"));
+    EXPECT_TRUE(has(R"("product": "Conveyor C-200",)")) << text.constData();
+    EXPECT_TRUE(has(R"({"name": "spno2.speed", "value": 1500, "unit": "r/min"},)"))
+        << text.constData();
+    EXPECT_TRUE(has(R"({"type": "start", "direction": "cw"},)")) << text.constData();
+    EXPECT_TRUE(
+        has(R"({"parameter": "status.load", "statistic": "max", "upper": 80, "unit": "%"})"))
+        << text.constData();
+    EXPECT_TRUE(lines.value(lines.size() - 3).trimmed().startsWith("\"checksum\": \"sha256:"))
+        << text.constData();
 }
 
 TEST(RecipeFile, ChecksumIsTheBackupFilesOverTheCanonicalCompactJson)
