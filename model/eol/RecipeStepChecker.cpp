@@ -51,7 +51,7 @@ void RecipeStepChecker::check(QVector<RecipeProblem>* problems)
         m_stepPath = QStringLiteral("%1.steps[%2]").arg(m_path).arg(i);
         m_stepWhere =
             tr("%1, step %2 (%3)").arg(m_where).arg(i + 1).arg(Recipe::stepTitle(step.type));
-        checkStep(i, step);
+        checkStep(step);
         switch (step.type) {
         case RecipeStep::Type::Priority:
             priority = true;
@@ -109,9 +109,8 @@ void RecipeStepChecker::checkSpeedUnit(const QString& unit, const QString& field
     }
 }
 
-void RecipeStepChecker::checkStep(int index, const RecipeStep& step)
+void RecipeStepChecker::checkStep(const RecipeStep& step)
 {
-    Q_UNUSED(index)
     switch (step.type) {
     case RecipeStep::Type::Priority:
         needsRole("motionPriority");

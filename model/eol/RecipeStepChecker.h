@@ -21,7 +21,7 @@ public:
     void check(QVector<RecipeProblem>* problems);
 
 private:
-    void checkStep(int index, const RecipeStep& step);
+    void checkStep(const RecipeStep& step);
     bool needsRole(const char* role);
     void checkSeconds(double seconds, double max, const QString& field, const QString& what);
     void checkSpeedUnit(const QString& unit, const QString& field);
