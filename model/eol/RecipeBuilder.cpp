@@ -175,6 +175,7 @@ QVector<RecipeStep> dcSteps(const Profile& profile, const RecipePosition& positi
     steps << s;
     s = RecipeStep();
     s.type = RecipeStep::Type::Stop;
+    s.deceleration = 0; // a speed command of 0 brakes the motor
     s.margin = kStopMarginSeconds;
     steps << s;
     return steps;

@@ -206,6 +206,11 @@ void RecipeStepChecker::checkStep(const RecipeStep& step)
             return;
         checkSeconds(step.margin, RecipeChecker::kMaxMarginSeconds, QStringLiteral("margin"),
                      tr("the margin"));
+        if (!step.deceleration && !m_profile.role(QStringLiteral("decelerations")))
+            report(QStringLiteral(".deceleration"),
+                   tr("a %1 has no deceleration time setting to wait for; give the deceleration "
+                      "(0 s when it brakes at once)")
+                       .arg(m_profile.name));
         if (step.deceleration &&
             (*step.deceleration < 0 || *step.deceleration > RecipeChecker::kMaxStepSeconds))
             report(QStringLiteral(".deceleration"),

@@ -227,52 +227,75 @@ TEST_F(RecipeCheckerTest, StatisticMustBeKnown)
     EXPECT_EQ(only(dbu).path, QStringLiteral("positions[0].steps[4].limits[0].statistic"));
 }
 
-TEST_F(RecipeCheckerTest, TimesMustBeSane)
+TEST_F(RecipeCheckerTest, HoldTimeOfZero)
 {
     step(dbu, RecipeStep::Type::Hold).duration = 0;
-    RecipeProblem p = only(dbu);
+    const RecipeProblem p = only(dbu);
     EXPECT_EQ(p.path, QStringLiteral("positions[0].steps[4].duration"));
     EXPECT_TRUE(p.message.contains(QStringLiteral("the hold time 0 s is not sane")));
-    step(dbu, RecipeStep::Type::Hold).duration = 5;
+}
+
+TEST_F(RecipeCheckerTest, WaitLongerThanTheSaneMaximum)
+{
     step(dbu, RecipeStep::Type::WaitSpeed).timeout = 3600;
-    p = only(dbu);
+    const RecipeProblem p = only(dbu);
     EXPECT_EQ(p.path, QStringLiteral("positions[0].steps[3].timeout"));
     EXPECT_TRUE(p.message.contains(QStringLiteral("3600 s is not sane; give more than 0 s and at "
                                                   "most 600 s")))
         << qPrintable(p.message);
-    step(dbu, RecipeStep::Type::WaitSpeed).timeout = 5;
+}
+
+TEST_F(RecipeCheckerTest, NegativeStopMargin)
+{
     step(dbu, RecipeStep::Type::Stop).margin = -1;
     EXPECT_EQ(only(dbu).path, QStringLiteral("positions[0].steps[5].margin"));
 }
 
-TEST_F(RecipeCheckerTest, MachineNumbersUniqueAndInRange)
+TEST_F(RecipeCheckerTest, MachineNumberTwice)
 {
     Recipe eight = exampleRecipe("recipe-eight-dbu.json");
     eight.positions[5].machineNumber = 2;
-    RecipeProblem p = only(eight);
+    const RecipeProblem p = only(eight);
     EXPECT_EQ(p.path, QStringLiteral("positions[5].machineNumber"));
     EXPECT_EQ(p.message, QStringLiteral("position 6 (machine number 2): machine number 2 is "
                                         "already position 2; every drive of a unit needs its "
                                         "own machine number"));
-    eight.positions[5].machineNumber = 0;
-    p = only(eight);
+}
+
+TEST_F(RecipeCheckerTest, MachineNumberOutOfRange)
+{
+    dbu.positions[0].machineNumber = 0;
+    const RecipeProblem p = only(dbu);
+    EXPECT_EQ(p.path, QStringLiteral("positions[0].machineNumber"));
     EXPECT_TRUE(p.message.contains(QStringLiteral("takes machine numbers 1–247")))
         << qPrintable(p.message);
 }
 
-TEST_F(RecipeCheckerTest, UnknownFamilyVariantAndMalformedFirmware)
+TEST_F(RecipeCheckerTest, UnknownFamily)
 {
-    Recipe r = dbu;
-    r.positions[0].family = QStringLiteral("vfd");
-    EXPECT_EQ(only(r).path, QStringLiteral("positions[0].family"));
-    r = dbu;
-    r.positions[0].variants = {QStringLiteral("dbu800")};
-    RecipeProblem p = only(r);
+    dbu.positions[0].family = QStringLiteral("vfd");
+    const RecipeProblem p = only(dbu);
+    EXPECT_EQ(p.path, QStringLiteral("positions[0].family"));
+    EXPECT_TRUE(p.message.contains(QStringLiteral("unknown family \"vfd\"; known: dbu, dcpid")))
+        << qPrintable(p.message);
+}
+
+TEST_F(RecipeCheckerTest, UnknownVariant)
+{
+    dbu.positions[0].variants = {QStringLiteral("dbu800")};
+    const RecipeProblem p = only(dbu);
     EXPECT_EQ(p.path, QStringLiteral("positions[0].variants[0]"));
-    EXPECT_TRUE(p.message.contains(QStringLiteral("known: dbu200, dbu400")));
-    r = dbu;
-    r.positions[0].firmware = {QStringLiteral("v1")};
-    EXPECT_EQ(only(r).path, QStringLiteral("positions[0].firmware[0]"));
+    EXPECT_TRUE(p.message.contains(QStringLiteral("no variant \"dbu800\"; known: dbu200, dbu400")))
+        << qPrintable(p.message);
+}
+
+TEST_F(RecipeCheckerTest, MalformedFirmwareVersion)
+{
+    dbu.positions[0].firmware = {QStringLiteral("1.5"), QStringLiteral("v1")};
+    const RecipeProblem p = only(dbu);
+    EXPECT_EQ(p.path, QStringLiteral("positions[0].firmware[1]"));
+    EXPECT_TRUE(p.message.contains(QStringLiteral("\"v1\" is not a version")))
+        << qPrintable(p.message);
 }
 
 TEST_F(RecipeCheckerTest, StepsTheFamilyCannotDo)
@@ -297,23 +320,43 @@ TEST_F(RecipeCheckerTest, RunningDataNumberMustExist)
     EXPECT_TRUE(p.message.contains(QStringLiteral("running data 9"))) << qPrintable(p.message);
 }
 
-TEST_F(RecipeCheckerTest, StartNeedsPriorityAndTheMotorMustBeStoppedAtTheEnd)
+TEST_F(RecipeCheckerTest, StartWithoutCommunicationPriority)
 {
-    Recipe r = dbu;
-    r.positions[0].steps.removeFirst(); // the priority step
-    RecipeProblem p = only(r);
+    dbu.positions[0].steps.removeFirst(); // the priority step
+    const RecipeProblem p = only(dbu);
     EXPECT_EQ(p.path, QStringLiteral("positions[0].steps[1].type"));
-    EXPECT_TRUE(p.message.contains(QStringLiteral("only with communication priority")));
-    r = dbu;
-    r.positions[0].steps.remove(5); // the stop step
-    p = only(r);
+    EXPECT_TRUE(p.message.startsWith(QStringLiteral("position 1 (machine number 1), step 2 "
+                                                    "(start): the drive takes motion commands "
+                                                    "only with communication priority")))
+        << qPrintable(p.message);
+}
+
+TEST_F(RecipeCheckerTest, StepsLeaveTheMotorRunning)
+{
+    dbu.positions[0].steps.remove(5); // the stop step
+    const RecipeProblem p = only(dbu);
     EXPECT_EQ(p.path, QStringLiteral("positions[0].steps"));
     EXPECT_TRUE(p.message.contains(QStringLiteral("leave the motor running")));
-    r = dbu;
-    r.positions[0].steps.remove(2); // the start step: waiting and holding with the motor stopped
-    const QVector<RecipeProblem> problems = problemsOf(r);
+}
+
+TEST_F(RecipeCheckerTest, WaitAndHoldWhileTheMotorIsStopped)
+{
+    dbu.positions[0].steps.remove(2); // the start step
+    const QVector<RecipeProblem> problems = problemsOf(dbu);
     ASSERT_EQ(problems.size(), 2) << qPrintable(textOf(problems));
+    EXPECT_EQ(problems.at(0).path, QStringLiteral("positions[0].steps[2].type"));
     EXPECT_TRUE(problems.at(0).message.contains(QStringLiteral("the motor is not running here")));
+    EXPECT_EQ(problems.at(1).path, QStringLiteral("positions[0].steps[3].type"));
+}
+
+TEST_F(RecipeCheckerTest, StopWithoutADecelerationWhereTheDriveHasNone)
+{
+    step(dc, RecipeStep::Type::Stop).deceleration.reset();
+    const RecipeProblem p = only(dc);
+    EXPECT_EQ(p.path, QStringLiteral("positions[0].steps[3].deceleration"));
+    EXPECT_TRUE(p.message.contains(QStringLiteral("no deceleration time setting")));
+    // a DBU waits for its own deceleration time
+    EXPECT_FALSE(step(dbu, RecipeStep::Type::Stop).deceleration);
 }
 
 TEST_F(RecipeCheckerTest, DcSpeedCommandNeedsTheSpeedModeAndItsUnit)
