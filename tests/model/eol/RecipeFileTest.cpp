@@ -218,6 +218,15 @@ TEST(RecipeFile, WrongTypesAndUnknownKeysAreRefusedNamingTheEntry)
     EXPECT_TRUE(refusal(resigned(bad)).contains(QStringLiteral("settings[0]: \"name\" must be")));
     bad.insert(QStringLiteral("positions"), QJsonArray());
     EXPECT_TRUE(refusal(resigned(bad)).contains(QStringLiteral("names no drive")));
+    QJsonArray many;
+    for (int i = 0; i < 1001; ++i)
+        many << QJsonObject();
+    bad.insert(QStringLiteral("positions"), many);
+    EXPECT_TRUE(refusal(resigned(bad)).contains(QStringLiteral("at most 1000 are allowed")));
+    bad = document;
+    bad.insert(QStringLiteral("tool"), QStringLiteral("x"));
+    EXPECT_TRUE(
+        refusal(resigned(bad)).contains(QStringLiteral("the recipe: unknown key \"tool\"")));
 }
 
 TEST(RecipeFile, SavesAtomicallyAndRefusesOversizedFiles)
