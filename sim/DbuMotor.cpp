@@ -21,10 +21,9 @@ DbuMotor::Events DbuMotor::step(const Input& input, int dtMs)
     const double speed = std::abs(m_ramp.value());
     // Load rate: friction, a speed-proportional part and the torque needed to accelerate.
     const bool moving = speed > 0 || input.commanded;
-    m_load = moving ? std::clamp(10 + 30 * speed / kFullScaleRpm +
-                                     40 * std::abs(m_ramp.rate()) / 6000 + input.loadOffset,
-                                 0.0, 200.0)
-                    : 0;
+    const double rate = std::max(
+        10 + 30 * speed / kFullScaleRpm + 40 * std::abs(m_ramp.rate()) / 6000, input.loadFloor);
+    m_load = moving ? std::clamp(rate * input.loadScale + input.loadOffset, 0.0, 200.0) : 0;
     m_overloadMs = m_load > kOverloadPercent ? m_overloadMs + dtMs : 0;
     if (m_overloadMs > 0 && m_overloadMs >= input.overloadMs)
         events.alarm = kAlarmOverload;

@@ -19,7 +19,9 @@ public:
         bool commanded = false;   // a run command with a non-zero target
         double overloadMs = 3000; // alarm.overload_time
         double loadWarning = 100; // alarm.load_warning, %
-        int loadOffset = 0;       // console `load`
+        double loadOffset = 0;    // console `load` and a load defect
+        double loadScale = 1;     // a load defect's factor
+        double loadFloor = 0;     // the load while a defect holds the motor below its target
     };
     struct Events
     {
