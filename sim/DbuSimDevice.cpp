@@ -20,8 +20,6 @@ constexpr int kErrRange = 0xE8;
 constexpr double kFullScaleRpm = 3000; // acceleration times are for 0 <-> 3000 r/min
 constexpr double kVrRampSeconds = 1.0; // SS/SD potentiometers, used by SPno1
 constexpr int kAlarmExternal = 0x0F;
-constexpr double kStallLoad = 150; // a stalled motor: overload alarm after alarm.overload_time
-constexpr double kHeldLoad = 115;  // held below its target: at the torque limit, no overload
 
 const int kRates[] = {9600, 14400, 19200, 28800, 38400, 57600, 115200};
 
@@ -184,26 +182,16 @@ void DbuSimDevice::step(qint64, int dtMs)
     m_target = m_command.ccw ? -magnitude : magnitude;
     if (m_alarm)
         return;
-    const SimDefects& defect = defects();
-    m_runningMs = magnitude > 0 ? m_runningMs + dtMs : 0;
-    if (defect.alarmCode && magnitude > 0 && m_runningMs >= defect.alarmAfterMs) {
-        raiseAlarm(*defect.alarmCode); // a defect: the alarm while running
-        return;
-    }
-    // A defect may hold the motor below its target: it then works at its torque limit.
-    const double reachable = defect.reachable(magnitude);
-    const bool held = reachable < magnitude && std::abs(m_motor.speed()) >= reachable;
     DbuMotor::Input in;
-    in.target = m_command.ccw ? -reachable : reachable;
-    in.loadFloor = held ? (defect.stall ? kStallLoad : kHeldLoad) : 0;
-    in.loadScale = defect.loadScale;
+    in.target = m_target;
+    in.defects = &defects();
     in.accelPerSecond = rampRate(m_command.spno, true);
     in.decelPerSecond = rampRate(m_command.spno, false);
     in.commanded = magnitude > 0;
     if (const ParameterMeta* p = param(QStringLiteral("alarm.overload_time")))
         in.overloadMs = rawOf(p->name) * p->specFor(context()).scale * 1000;
     in.loadWarning = rawOf(QStringLiteral("alarm.load_warning"));
-    in.loadOffset = m_loadOffset + defect.loadOffset;
+    in.loadOffset = m_loadOffset;
     const DbuMotor::Events events = m_motor.step(in, dtMs);
     for (int code : events.warnings)
         m_warnings.push(code);
@@ -223,7 +211,6 @@ void DbuSimDevice::raiseAlarm(int code)
         return;
     m_alarm = code;
     m_started = false;
-    m_runningMs = 0;
     m_motor.stop();
     m_alarms.push(code);
     qCInfo(lcSim) << "slave" << slave() << "alarm" << Qt::hex << code;
@@ -337,7 +324,6 @@ void DbuSimDevice::afterWrite(const ParameterMeta& meta, double raw, qint64 nowM
 void DbuSimDevice::onPowerCycle(qint64)
 {
     m_motor.reset();
-    m_runningMs = 0;
     m_target = 0;
     m_command = {};
     m_started = false;

@@ -76,7 +76,6 @@ private:
     int m_previousInputs = 0;
     int m_consoleWarning = 0;
     int m_activeRate = 2;
-    qint64 m_runningMs = 0; // since the start, for an alarm defect
 };
 
 } // namespace opentop

@@ -111,6 +111,12 @@ QString SimDefectSpec::parseItem(const QString& item, SimDefectSpec* spec)
     const int eq = item.indexOf(QLatin1Char('='));
     const QString key = (eq < 0 ? item : item.left(eq)).trimmed().toLower();
     const QString value = eq < 0 ? QString() : item.mid(eq + 1).trimmed();
+    static const QStringList keys = {QStringLiteral("firmware"), QStringLiteral("max_speed"),
+                                     QStringLiteral("stall"),    QStringLiteral("load"),
+                                     QStringLiteral("alarm"),    QStringLiteral("nostick"),
+                                     QStringLiteral("nostore"),  QStringLiteral("clear")};
+    if (!keys.contains(key))
+        return tr("unknown defect \"%1\"; allowed: %2").arg(item, forms());
     const bool needsValue = key != QLatin1String("stall") && key != QLatin1String("clear");
     if (needsValue && (eq < 0 || value.isEmpty()))
         return tr("\"%1\" needs a value: %2=...").arg(item, key);
@@ -180,8 +186,6 @@ QString SimDefectSpec::parseItem(const QString& item, SimDefectSpec* spec)
         QStringList& list = key == QLatin1String("nostick") ? spec->noStick : spec->noStore;
         if (!list.contains(value))
             list << value;
-    } else {
-        return tr("unknown defect \"%1\"; allowed: %2").arg(item, forms());
     }
     return QString();
 }

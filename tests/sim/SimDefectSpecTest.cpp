@@ -2,6 +2,7 @@
 // allowed; their check against a profile (SimDefects::resolve); --defect and the bus spec.
 #include "SimTestSupport.h"
 
+#include "SimConsole.h"
 #include "SimDefectSpec.h"
 #include "SimDefects.h"
 #include "SimOptions.h"
@@ -92,6 +93,7 @@ TEST(SimDefectSpec, EveryErrorNamesTheAllowedForm)
     EXPECT_NE(why("").find("firmware=MAJOR.MINOR"), std::string::npos);
     EXPECT_NE(why("color=red").find("unknown defect"), std::string::npos);
     EXPECT_NE(why("color=red").find("max_speed=N"), std::string::npos);
+    EXPECT_NE(why("stal").find("unknown defect"), std::string::npos);
     EXPECT_NE(why("stall,,load=+1").find("empty item"), std::string::npos);
     EXPECT_NE(why("firmware").find("needs a value"), std::string::npos);
     EXPECT_NE(why("firmware=").find("needs a value"), std::string::npos);
@@ -235,4 +237,36 @@ TEST(SimDefectOptions, BusSpecCarriesDefectsInBraces)
         << error.toStdString();
     EXPECT_FALSE(SimBus::fromSpec(QStringLiteral("dcpid@7{alarm=0x07@1s}"), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("alarm=stall@TIME"))) << error.toStdString();
+}
+
+TEST(SimDefectOptions, ConsoleChangesAndListsDefects)
+{
+    SimFixture sim{"dbu200@1,dcpid@7"};
+    SimConsole console(sim.bus);
+    EXPECT_EQ(console.execute(QStringLiteral("defects")).text,
+              QStringLiteral("no drive has defects"));
+    SimControlResult r = console.execute(QStringLiteral("defect 1 max_speed=800 load=+40"));
+    ASSERT_TRUE(r.ok) << r.text.toStdString();
+    EXPECT_EQ(r.text, QStringLiteral("slave 1 defects: max_speed=800,load=+40"));
+    ASSERT_TRUE(console.execute(QStringLiteral("defect 7 stall")).ok);
+    EXPECT_EQ(console.execute(QStringLiteral("defects")).text,
+              QStringLiteral("1 dbu200: max_speed=800,load=+40\n7 dcpid: stall"));
+    EXPECT_TRUE(console.execute(QStringLiteral("list"))
+                    .text.contains(QStringLiteral("defects: max_speed=800,load=+40")));
+    ASSERT_TRUE(console.execute(QStringLiteral("defect 1 clear")).ok);
+    EXPECT_EQ(console.execute(QStringLiteral("defects")).text, QStringLiteral("7 dcpid: stall"));
+    EXPECT_TRUE(SimConsole::helpText().contains(QStringLiteral("defect ID clear")));
+
+    r = console.execute(QStringLiteral("defect 1"));
+    EXPECT_FALSE(r.ok);
+    EXPECT_TRUE(r.text.contains(QStringLiteral("firmware=MAJOR.MINOR"))) << r.text.toStdString();
+    EXPECT_FALSE(console.execute(QStringLiteral("defect x stall")).ok);
+    r = console.execute(QStringLiteral("defect 9 stall"));
+    EXPECT_FALSE(r.ok);
+    EXPECT_TRUE(r.text.contains(QStringLiteral("no device with machine number 9")));
+    r = console.execute(QStringLiteral("defect 7 nostick=spno2.speed"));
+    EXPECT_FALSE(r.ok);
+    EXPECT_TRUE(r.text.contains(QStringLiteral("no writable parameter of a dcpid")))
+        << r.text.toStdString();
+    EXPECT_EQ(console.execute(QStringLiteral("defects")).text, QStringLiteral("7 dcpid: stall"));
 }
