@@ -6,6 +6,7 @@
 #include "SimDefectSpec.h"
 #include "SimDefects.h"
 #include "SimOptions.h"
+#include "bus/BusSpec.h"
 #include "profile/ProfileRegistry.h"
 
 using namespace opentop;
@@ -226,6 +227,14 @@ TEST(SimDefectOptions, BusSpecCarriesDefectsInBraces)
     EXPECT_DOUBLE_EQ(bus->device(21)->defects().loadOffset, 40);
     EXPECT_FALSE(bus->device(20)->defects().stall);
     EXPECT_EQ(bus->spec(), QStringLiteral("dbu200@1,dcpid@7,dbu400@20,dbu400@21"));
+
+    // The model's BusSpec keeps the text in braces for every drive of a range.
+    const auto entries = BusSpec::parse(QStringLiteral("dbu200@1-2{ stall },dcpid@7"), &error);
+    ASSERT_TRUE(entries) << error.toStdString();
+    EXPECT_EQ(entries->at(1).defects, QStringLiteral("stall"));
+    EXPECT_TRUE(entries->at(2).defects.isEmpty());
+    EXPECT_EQ(BusSpec::toString(*entries),
+              QStringLiteral("dbu200@1{stall},dbu200@2{stall},dcpid@7"));
 
     EXPECT_FALSE(SimBus::fromSpec(QStringLiteral("dbu200@1{stall"), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("braces"))) << error.toStdString();
