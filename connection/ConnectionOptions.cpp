@@ -1,5 +1,7 @@
 #include "ConnectionOptions.h"
 
+#include "SimBus.h"
+
 #include "bus/BusSpec.h"
 #include "profile/ProfileRegistry.h"
 
@@ -105,7 +107,8 @@ std::optional<ConnectionSettings> ConnectionOptions::fromParser(const QCommandLi
         s.simSpec =
             parser.isSet(QStringLiteral("sim")) ? parser.value(QStringLiteral("sim")) : fallbackSim;
         QString specError;
-        if (!BusSpec::parse(s.simSpec, &specError))
+        // The whole simulated bus is made once: drives' defects are checked against profiles.
+        if (!SimBus::fromSpec(s.simSpec, &specError))
             return fail(tr("--sim: %1").arg(specError));
     }
     auto intOption = [&](const char* name, int* target) -> bool {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "SimDefects.h"
 #include "SpeedRamp.h"
 
 #include <QVector>
@@ -7,7 +8,8 @@
 namespace opentop {
 
 // The motion physics of a DBU drive, apart from its registers: the speed ramp, a plausible load
-// rate, and the conditions that raise alarms (overload, over speed) and warnings.
+// rate, and the conditions that raise alarms (overload, over speed) and warnings; and the
+// defects of a simulated drive: held below its target, a load too high, an alarm while running.
 class DbuMotor
 {
 public:
@@ -16,10 +18,11 @@ public:
         double target = 0;         // signed r/min (CCW negative)
         double accelPerSecond = 0; // r/min per second
         double decelPerSecond = 0;
-        bool commanded = false;   // a run command with a non-zero target
-        double overloadMs = 3000; // alarm.overload_time
-        double loadWarning = 100; // alarm.load_warning, %
-        int loadOffset = 0;       // console `load`
+        bool commanded = false;              // a run command with a non-zero target
+        double overloadMs = 3000;            // alarm.overload_time
+        double loadWarning = 100;            // alarm.load_warning, %
+        int loadOffset = 0;                  // console `load`
+        const SimDefects* defects = nullptr; // a defective drive's motor
     };
     struct Events
     {
@@ -45,6 +48,7 @@ private:
     SpeedRamp m_ramp;
     double m_load = 0;
     double m_overloadMs = 0;
+    double m_runningMs = 0; // since the start, for an alarm defect
     double m_revolutions = 0;
     bool m_loadWarning = false;
     bool m_speedWarning = false;

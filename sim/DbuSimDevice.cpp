@@ -184,6 +184,7 @@ void DbuSimDevice::step(qint64, int dtMs)
         return;
     DbuMotor::Input in;
     in.target = m_target;
+    in.defects = &defects();
     in.accelPerSecond = rampRate(m_command.spno, true);
     in.decelPerSecond = rampRate(m_command.spno, false);
     in.commanded = magnitude > 0;

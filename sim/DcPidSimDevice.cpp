@@ -12,9 +12,11 @@ namespace opentop {
 
 namespace {
 
-constexpr double kRunPerSecond = 2.0;   // full output in 0.5 s
-constexpr double kBrakePerSecond = 5.0; // braking stops from full output in 0.2 s
-constexpr double kCoastPerSecond = 0.5; // natural stop takes 2 s from full output
+constexpr double kRunPerSecond = 2.0;      // full output in 0.5 s
+constexpr double kBrakePerSecond = 5.0;    // braking stops from full output in 0.2 s
+constexpr double kCoastPerSecond = 0.5;    // natural stop takes 2 s from full output
+constexpr double kFullCommutation = 1000;  // commutations per second at full output
+constexpr double kHeldCurrentFactor = 1.5; // a motor held below its speed by a defect
 
 struct StoreBlock
 {
@@ -134,6 +136,7 @@ void DcPidSimDevice::afterWrite(const ParameterMeta& meta, double raw, qint64 no
     const QString& n = meta.name;
     if (n == QLatin1String("speed.command")) {
         m_command = int(raw);
+        m_stallStopped = false;
         m_drive = m_command == 0 ? Drive::Braking : Drive::Running;
     } else if (n == QLatin1String("speed.lock")) {
         m_command = 0;
@@ -183,6 +186,7 @@ void DcPidSimDevice::step(qint64 nowMs, int dtMs)
         m_drive = Drive::Braking;
         m_command = 0;
     }
+    stallProtection(dtMs);
     double target = m_drive == Drive::Running ? commandFraction() : 0;
     if (rawOf(QStringLiteral("config.limit_enable")) == 1) {
         const bool sq1 = m_inputs & 1;
@@ -200,8 +204,35 @@ void DcPidSimDevice::step(qint64 nowMs, int dtMs)
         m_drive = Drive::Idle;
 }
 
+double DcPidSimDevice::turning() const
+{
+    const double commutation = m_ramp.value() * kFullCommutation;
+    const double reachable = defects().reachable(std::abs(commutation));
+    return commutation < 0 ? -reachable : reachable;
+}
+
+void DcPidSimDevice::stallProtection(int dtMs)
+{
+    const bool running = m_drive == Drive::Running && m_command != 0;
+    const SimDefects& defect = defects();
+    m_runningMs = running ? m_runningMs + dtMs : 0;
+    // The controller's stall stop (config.stall_time): output but no rotation for that time.
+    const bool stalled = running && m_ramp.value() != 0 && turning() == 0;
+    m_stalledMs = stalled ? m_stalledMs + dtMs : 0;
+    const double stallMs = rawOf(QStringLiteral("config.stall_time")) * 100;
+    const bool defectDue = running && defect.alarmCode && m_runningMs >= defect.alarmAfterMs;
+    if ((stallMs > 0 && m_stalledMs >= stallMs) || defectDue) {
+        qCInfo(lcSim) << "slave" << slave() << "stall stop: braking";
+        m_drive = Drive::Braking;
+        m_command = 0;
+        m_stallStopped = true;
+        m_runningMs = m_stalledMs = 0;
+    }
+}
+
 void DcPidSimDevice::refreshStatus(qint64)
 {
+    const SimDefects& defect = defects();
     const double level = std::abs(m_ramp.value());
     const int mode = int(rawOf(QStringLiteral("config.speed_mode")));
     const double rated = rawOf(QStringLiteral("config.rated_current"));
@@ -211,7 +242,9 @@ void DcPidSimDevice::refreshStatus(qint64)
         current = level * 2000;
     else if (level > 0)
         current = rated * (0.15 + 0.55 * level) + 0.1 * rated * std::abs(m_ramp.rate());
-    current *= 1 + m_loadOffset / 100.0;
+    if (level > 0 && defect.limits(level * kFullCommutation))
+        current = defect.stall ? maxCurrent : current * kHeldCurrentFactor;
+    current *= defect.loadScale * (1 + (m_loadOffset + defect.loadOffset) / 100.0);
     if (maxCurrent > 0)
         current = std::min(current, maxCurrent);
     if (m_drive == Drive::Braking && level > 0)
@@ -224,7 +257,7 @@ void DcPidSimDevice::refreshStatus(qint64)
     };
     put("status.pwm", std::round(m_ramp.value() * 1000));
     put("status.current", std::round(current));
-    put("status.commutation", std::round(m_ramp.value() * 1000));
+    put("status.commutation", std::round(turning()));
     put("status.sq1_level", m_inputs & 1);
     put("status.sq2_level", (m_inputs >> 1) & 1);
     put("status.de_level", (m_inputs >> 2) & 1);
@@ -237,6 +270,8 @@ void DcPidSimDevice::onPowerCycle(qint64 nowMs)
     m_ramp.set(0);
     m_drive = Drive::Idle;
     m_command = 0;
+    m_runningMs = m_stalledMs = 0;
+    m_stallStopped = false;
     m_lastFrameMs = nowMs;
     for (const char* n : kGpio) {
         if (const ParameterMeta* p = param(name(n)))
@@ -303,8 +338,9 @@ QByteArray DcPidSimDevice::identification(quint8 readCode, quint8 objectId, SimE
 QString DcPidSimDevice::stateText() const
 {
     static const char* const drives[] = {"idle", "running", "braking", "coasting", "locked"};
-    return tr("%1 %2, output %3 %, command %4, line %5 %6")
+    return tr("%1 %2%3, output %4 %, command %5, line %6 %7")
         .arg(type(), QLatin1String(drives[int(m_drive)]),
+             m_stallStopped ? tr(" (stall stop)") : QString(),
              QString::number(std::lround(m_ramp.value() * 100)), QString::number(m_command),
              QString::number(m_lineBaud), QString(QLatin1Char(m_lineParity)));
 }

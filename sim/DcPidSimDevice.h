@@ -52,6 +52,10 @@ private:
     double commandFraction() const;
     QByteArray identification(quint8 readCode, quint8 objectId, SimError* error) const;
     void takeLineSettings();
+    // Signed commutations per second: the output's, unless a defect holds the motor.
+    double turning() const;
+    // The stall stop (config.stall_time) and an alarm defect: brakes the motor.
+    void stallProtection(int dtMs);
 
     SpeedRamp m_ramp;
     Drive m_drive = Drive::Idle;
@@ -61,6 +65,9 @@ private:
     int m_loadOffset = 0;
     int m_lineBaud = 0;
     char m_lineParity = 0;
+    qint64 m_runningMs = 0; // since the speed command, for an alarm defect
+    qint64 m_stalledMs = 0;
+    bool m_stallStopped = false; // stopped by the stall stop until the next speed command
 };
 
 } // namespace opentop

@@ -112,6 +112,20 @@ int SimApp::start(const QStringList& arguments)
                          .arg(QLatin1Char(m_options.parity)));
     }
     m_bus->setFaults(FaultInjector(m_options.faults, m_options.seed));
+    for (const auto& [slave, spec] : m_options.defects) {
+        SimDevice* d = m_bus->device(slave);
+        if (!d) {
+            printErr(tr("opentop-sim: --defect %1:%2: no drive with machine number %1 on the "
+                        "bus %3")
+                         .arg(slave)
+                         .arg(spec.toString(), m_bus->spec()));
+            return 2;
+        }
+        if (!d->addDefects(spec, &error)) {
+            printErr(tr("opentop-sim: --defect %1 (%2@%1): %3").arg(slave).arg(d->type(), error));
+            return 2;
+        }
+    }
 
     if (::socketpair(AF_UNIX, SOCK_STREAM, 0, m_signalFds) == 0) {
         for (int fd : m_signalFds)

@@ -57,6 +57,15 @@ std::shared_ptr<SimBus> SimBus::fromSpec(const QString& spec, QString* error,
     auto bus = std::make_shared<SimBus>(std::move(clock));
     for (const BusSpecEntry& e : *entries) {
         std::unique_ptr<SimDevice> device = createDevice(e.type, e.slave, error);
+        if (device && !e.defects.isEmpty()) {
+            QString why;
+            const std::optional<SimDefectSpec> defects = SimDefectSpec::parse(e.defects, &why);
+            if (!defects || !device->addDefects(*defects, &why)) {
+                if (error)
+                    *error = tr("%1@%2{%3}: %4").arg(e.type).arg(e.slave).arg(e.defects, why);
+                return nullptr;
+            }
+        }
         if (!device || !bus->addDevice(std::move(device), error))
             return nullptr;
     }
@@ -97,7 +106,7 @@ QString SimBus::spec() const
 {
     QVector<BusSpecEntry> entries;
     for (const auto& [slave, device] : m_devices)
-        entries << BusSpecEntry{device->type(), slave};
+        entries << BusSpecEntry{device->type(), slave, QString()};
     return BusSpec::toString(entries);
 }
 

@@ -10,8 +10,8 @@ namespace opentop {
 
 namespace {
 
-const char* const kDeviceCommands[] = {"alarm",       "warning",     "load", "vr", "input",
-                                       "ignore-stop", "power-cycle", "get",  "set"};
+const char* const kDeviceCommands[] = {"alarm",       "warning",     "load", "vr",  "input",
+                                       "ignore-stop", "power-cycle", "get",  "set", "defect"};
 
 } // namespace
 
@@ -40,6 +40,10 @@ QString SimConsole::helpText()
               "  power-cycle ID            turn the device off and on\n"
               "  get ID ADDR [fc]          show a register (fc 3, 4 or 6 for write-only)\n"
               "  set ID ADDR VALUE [fc]    change a register without any check\n"
+              "  defect ID DEFECT[,...]    add defects to a drive (see --help), e.g.\n"
+              "                            defect 3 max_speed=800 or defect 4 alarm=0x07@2s\n"
+              "  defect ID clear           the drive has no defects again\n"
+              "  defects                   the drives' defects\n"
               "  unplug                    close the pty under its client (adapter pulled out)\n"
               "  replug                    a new pty behind the same symlink\n"
               "  quit                      stop the simulator");
@@ -71,8 +75,21 @@ SimControlResult SimConsole::execute(const QString& line)
         for (SimDevice* d : m_bus->devices()) {
             d->advance(now);
             lines << QStringLiteral("%1 %2").arg(d->slave()).arg(d->stateText());
+            if (d->defects().any())
+                lines.last() += tr(", defects: %1").arg(d->defects().spec.toString());
         }
         return {true, lines.join(QLatin1Char('\n'))};
+    }
+    if (cmd == QLatin1String("defects")) {
+        QStringList lines;
+        QMutexLocker lock(&m_bus->mutex());
+        for (const SimDevice* d : m_bus->devices()) {
+            if (d->defects().any())
+                lines << QStringLiteral("%1 %2: %3")
+                             .arg(d->slave())
+                             .arg(d->type(), d->defects().spec.toString());
+        }
+        return {true, lines.isEmpty() ? tr("no drive has defects") : lines.join(QLatin1Char('\n'))};
     }
     bool known = false;
     for (const char* c : kDeviceCommands)

@@ -12,7 +12,7 @@ namespace opentop {
 class SimBus;
 
 // The simulator's text console: one command per line (help, list, quit and the per-device
-// backdoors alarm, warning, load, vr, input, ignore-stop, power-cycle, get, set).
+// backdoors alarm, warning, load, vr, input, ignore-stop, power-cycle, get, set, defect).
 class SimConsole
 {
     Q_DECLARE_TR_FUNCTIONS(opentop::SimConsole)

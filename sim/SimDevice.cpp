@@ -139,6 +139,10 @@ void SimDevice::powerCycle(qint64 nowMs)
             applyDefault(p);
         }
     }
+    for (auto it = m_powerOnValues.cbegin(); it != m_powerOnValues.cend(); ++it) {
+        if (const ParameterMeta* p = param(it.key()))
+            m_regs.setRegisters(*p, it.value()); // the setting never reached the EEPROM
+    }
     m_lastError = SimError::None;
     onPowerCycle(nowMs);
     refreshStatus(nowMs);
@@ -239,6 +243,8 @@ SimControlResult SimDevice::control(const QStringList& args, qint64 nowMs)
     SimControlResult result;
     if (cmd == QLatin1String("get") || cmd == QLatin1String("set")) {
         result = SimBackdoor(this).getSet(args);
+    } else if (cmd == QLatin1String("defect")) {
+        result = defectCommand(args);
     } else if (cmd == QLatin1String("power-cycle")) {
         powerCycle(nowMs);
         result.text = tr("slave %1 power cycled").arg(m_slave);
@@ -247,6 +253,52 @@ SimControlResult SimDevice::control(const QStringList& args, qint64 nowMs)
     }
     refreshStatus(nowMs);
     return result;
+}
+
+bool SimDevice::addDefects(const SimDefectSpec& spec, QString* error)
+{
+    const std::optional<SimDefects> next =
+        SimDefects::resolve(m_defects.spec.merged(spec), m_profile, error);
+    if (!next)
+        return false;
+    if (const ParameterMeta* version = param(m_profile.identify.versionParameter)) {
+        if (next->firmware) {
+            if (!m_trueFirmware)
+                m_trueFirmware = quint16(m_regs.raw(*version));
+            m_regs.setRaw(*version, *next->firmware);
+        } else if (m_trueFirmware) {
+            m_regs.setRaw(*version, *m_trueFirmware);
+            m_trueFirmware.reset();
+        }
+    }
+    for (const QString& name : m_powerOnValues.keys()) {
+        if (!next->noStore.contains(name))
+            m_powerOnValues.remove(name);
+    }
+    for (const QString& name : next->noStore) {
+        const ParameterMeta* p = param(name);
+        if (p && !m_powerOnValues.contains(name))
+            m_powerOnValues.insert(name, p->storeWith.isEmpty() ? m_regs.registers(*p)
+                                                                : m_regs.storedRegisters(*p));
+    }
+    m_defects = *next;
+    qCInfo(lcSim) << "slave" << m_slave << "defects" << m_defects.spec.toString();
+    return true;
+}
+
+SimControlResult SimDevice::defectCommand(const QStringList& args)
+{
+    if (args.size() < 2)
+        return fail(tr("usage: defect ID DEFECT[,DEFECT...] or defect ID clear; DEFECT: %1")
+                        .arg(SimDefectSpec::forms()));
+    QString error;
+    const std::optional<SimDefectSpec> spec =
+        SimDefectSpec::parse(args.mid(1).join(QLatin1Char(',')), &error);
+    if (!spec || !addDefects(*spec, &error))
+        return fail(error);
+    return {true, tr("slave %1 defects: %2")
+                      .arg(m_slave)
+                      .arg(m_defects.any() ? m_defects.spec.toString() : tr("none"))};
 }
 
 SimControlResult SimDevice::controlCommand(const QStringList& args, qint64)

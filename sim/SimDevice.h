@@ -1,5 +1,6 @@
 #pragma once
 
+#include "SimDefects.h"
 #include "SimRegisters.h"
 #include "profile/Profile.h"
 #include "profile/ValueContext.h"
@@ -84,6 +85,11 @@ public:
     SimError lastError() const { return m_lastError; }
     const SimRegisters& memory() const { return m_regs; }
 
+    // Simulated defects (SimDefectSpec): `spec` on top of the present ones; on error nothing
+    // changes and *error names what is allowed.
+    bool addDefects(const SimDefectSpec& spec, QString* error);
+    const SimDefects& defects() const { return m_defects; }
+
     // "1500", "-3", "0x05DC", "05DCh".
     static std::optional<qint64> parseNumber(const QString& text);
     static SimControlResult fail(const QString& text) { return {false, text}; }
@@ -128,6 +134,11 @@ protected:
 private:
     friend class SimRequestHandler; // the request handling calls the hooks above
     ValueContext contextOf(const SimRegisters& regs) const;
+    SimControlResult defectCommand(const QStringList& args);
+
+    SimDefects m_defects;
+    std::optional<quint16> m_trueFirmware;            // the version before a firmware defect
+    QHash<QString, QVector<quint16>> m_powerOnValues; // nostore: what a power cycle brings back
 
     Profile m_profile;
     QString m_variant;

@@ -23,6 +23,17 @@ QString SimOptions::usage()
         "  --turnaround MS    device turnaround with --wire-timing (2)\n"
         "  --faults LIST      e.g. drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000\n"
         "  --seed N           seed of the fault injection (1)\n"
+        "  --defect ID:LIST   defects of drive ID (repeatable), LIST of:\n"
+        "                       firmware=MAJOR.MINOR  identification reports this version\n"
+        "                       max_speed=N           the motor saturates at N (DBU r/min,\n"
+        "                                             DC commutations/s), load high\n"
+        "                       stall                 the motor does not turn, load high\n"
+        "                       load=+N|-N|xF         load rate (DC: current %) off or scaled\n"
+        "                       alarm=CODE@TIME       alarm after TIME running, e.g.\n"
+        "                                             0x07@1500ms, overload@2s (DC: stall@1s)\n"
+        "                       nostick=PARAM         writes acknowledged, old value stays\n"
+        "                       nostore=PARAM         value lost at the next power cycle\n"
+        "                     e.g. --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40\n"
         "  --quiet            no frame trace on stderr\n"
         "  --help             this text\n"
         "  --version          the program's version\n\n"
@@ -123,13 +134,25 @@ std::optional<SimOptions> SimOptions::parse(const QStringList& arguments, QStrin
             if (!ok)
                 return failed(tr("--seed must be a whole number 0..4294967295, got '%1'").arg(v));
             o.seed = seed;
+        } else if (arg == QLatin1String("--defect")) {
+            if (!value(&v))
+                return failed(tr("--defect needs ID:DEFECT[,DEFECT...], e.g. 3:firmware=1.4; "
+                                 "DEFECT: %1")
+                                  .arg(SimDefectSpec::forms()));
+            int slave = 0;
+            QString why;
+            const std::optional<SimDefectSpec> spec = SimDefectSpec::parseOption(v, &slave, &why);
+            if (!spec)
+                return failed(tr("--defect: %1").arg(why));
+            o.defects.append({slave, *spec});
         } else if (arg == QLatin1String("--quiet") || arg == QLatin1String("-q")) {
             o.quiet = true;
         } else {
-            return failed(tr("unknown argument '%1'; options: --devices, --pty, --tcp, --baud, "
-                             "--parity, --wire-timing, --turnaround, --faults, --seed, --quiet, "
-                             "--help, --version")
-                              .arg(arguments.at(i)));
+            return failed(
+                tr("unknown argument '%1'; options: --devices, --pty, --tcp, --baud, "
+                   "--parity, --wire-timing, --turnaround, --faults, --seed, --defect, --quiet, "
+                   "--help, --version")
+                    .arg(arguments.at(i)));
         }
     }
     if (!o.help && !o.version && o.devices.isEmpty())

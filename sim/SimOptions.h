@@ -1,10 +1,13 @@
 #pragma once
 
 #include "FaultInjector.h"
+#include "SimDefectSpec.h"
 
 #include <QCoreApplication>
+#include <QPair>
 #include <QString>
 #include <QStringList>
+#include <QVector>
 #include <optional>
 
 namespace opentop {
@@ -26,6 +29,7 @@ public:
     double turnaroundMs = 2.0;
     FaultInjector::Rates faults;
     quint32 seed = 1;
+    QVector<QPair<int, SimDefectSpec>> defects; // --defect ID:DEFECT[,...], in order
     bool quiet = false;
     bool help = false;
     bool version = false;

@@ -124,6 +124,11 @@ void SimRegisters::restoreParameter(const ParameterMeta& meta)
         setRegisters(meta, *it);
 }
 
+QVector<quint16> SimRegisters::storedRegisters(const ParameterMeta& meta) const
+{
+    return m_stored.value(meta.name, registers(meta));
+}
+
 void SimRegisters::storeGroup(const QString& storeCommand)
 {
     for (const QString& name : m_storeGroups.value(storeCommand)) {

@@ -60,6 +60,7 @@ public:
     }
     void storeParameter(const ParameterMeta& meta);   // current value becomes the power-on value
     void restoreParameter(const ParameterMeta& meta); // back to the power-on value
+    QVector<quint16> storedRegisters(const ParameterMeta& meta) const; // the power-on value
     void storeGroup(const QString& storeCommand);
     void reloadGroup(const QString& storeCommand);
 

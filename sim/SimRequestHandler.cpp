@@ -152,8 +152,16 @@ SimError SimRequestHandler::doWrite(const ModbusRequest& request, qint64 nowMs)
         if (e != SimError::None)
             return e;
     }
+    // A setting that does not stick (defect): acknowledged, but the old value stays.
+    QVector<const ParameterMeta*> stuck;
+    for (const ParameterMeta* p : touched) {
+        if (m_device.m_defects.noStick.contains(p->name))
+            next.setRegisters(*p, m_device.m_regs.registers(*p));
+        else
+            stuck << p;
+    }
     m_device.m_regs = next;
-    for (const ParameterMeta* p : touched)
+    for (const ParameterMeta* p : stuck)
         m_device.afterWrite(*p, m_device.m_regs.raw(*p), nowMs);
     m_device.afterBlockWrite(request.function, request.address, count, nowMs);
     return SimError::None;

@@ -13,6 +13,32 @@ QString tr(const char* text)
 {
     return QCoreApplication::translate("opentop::BusSpec", text);
 }
+// Splits at the commas outside braces; nothing when the braces do not pair.
+std::optional<QStringList> splitItems(const QString& text)
+{
+    QStringList items;
+    QString item;
+    int depth = 0;
+    for (const QChar c : text) {
+        if (c == QLatin1Char('{') && ++depth > 1)
+            return std::nullopt;
+        if (c == QLatin1Char('}') && --depth < 0)
+            return std::nullopt;
+        if (c == QLatin1Char(',') && depth == 0) {
+            if (!item.trimmed().isEmpty())
+                items << item;
+            item.clear();
+        } else {
+            item += c;
+        }
+    }
+    if (depth != 0)
+        return std::nullopt;
+    if (!item.trimmed().isEmpty())
+        items << item;
+    return items;
+}
+
 } // namespace
 
 std::optional<QVector<BusSpecEntry>> BusSpec::parse(const QString& text, QString* error)
@@ -26,13 +52,27 @@ std::optional<QVector<BusSpecEntry>> BusSpec::parse(const QString& text, QString
     const QString types = registry.deviceTypes().join(QStringLiteral(", "));
     QVector<BusSpecEntry> entries;
     QSet<int> used;
-    const QStringList items = text.split(QLatin1Char(','), Qt::SkipEmptyParts);
+    const std::optional<QStringList> split = splitItems(text);
+    if (!split)
+        return fail(tr("\"%1\": the braces do not pair; a drive's defects are written in braces "
+                       "after its number, e.g. dbu200@3{firmware=1.4,stall}")
+                        .arg(text));
+    const QStringList& items = *split;
     if (items.isEmpty())
         return fail(tr("empty device list; write TYPE@ID[,TYPE@ID...], e.g. dbu200@1,dcpid@7 "
                        "(types: %1)")
                         .arg(types));
     for (const QString& rawItem : items) {
-        const QString item = rawItem.trimmed();
+        QString item = rawItem.trimmed();
+        QString defects;
+        if (const int brace = item.indexOf(QLatin1Char('{')); brace >= 0) {
+            if (!item.endsWith(QLatin1Char('}')))
+                return fail(tr("\"%1\": the defects in braces end the item, e.g. "
+                               "dbu200@3{stall}")
+                                .arg(item));
+            defects = item.mid(brace + 1, item.size() - brace - 2).trimmed();
+            item = item.left(brace).trimmed();
+        }
         const int at = item.indexOf(QLatin1Char('@'));
         if (at <= 0)
             return fail(tr("\"%1\": write TYPE@ID or TYPE@FIRST-LAST, e.g. dbu200@1").arg(item));
@@ -60,7 +100,7 @@ std::optional<QVector<BusSpecEntry>> BusSpec::parse(const QString& text, QString
             if (used.contains(id))
                 return fail(tr("machine number %1 is given twice").arg(id));
             used.insert(id);
-            entries.append({type, id});
+            entries.append({type, id, defects});
         }
     }
     return entries;
@@ -70,7 +110,8 @@ QString BusSpec::toString(const QVector<BusSpecEntry>& entries)
 {
     QStringList items;
     for (const BusSpecEntry& e : entries)
-        items << QStringLiteral("%1@%2").arg(e.type).arg(e.slave);
+        items << QStringLiteral("%1@%2").arg(e.type).arg(e.slave) +
+                     (e.defects.isEmpty() ? QString() : QStringLiteral("{%1}").arg(e.defects));
     return items.join(QLatin1Char(','));
 }
 
