@@ -67,7 +67,6 @@ bool ResultStore::beginUnit(UnitRecord& record, QString* error)
         record.id = QUuid::createUuid().toString(QUuid::WithoutBraces);
     if (!record.started.isValid())
         record.started = nowUtc();
-    record.ended = QDateTime();
     if (!database_.begin(error))
         return false;
     QSqlQuery q(database_.db());

@@ -3,8 +3,19 @@
 // A unit record with everything a record can hold, and text that tests quoting and escaping
 // (commas, quotes, line breaks, <&>, non-ASCII), for the results database and certificate tests.
 #include "eol/UnitRecord.h"
+#include "eol/UnitRecordJson.h"
 
 #include <QTimeZone>
+
+namespace opentop {
+
+// GoogleTest shows a record that differs as its JSON.
+inline void PrintTo(const UnitRecord& record, std::ostream* os)
+{
+    *os << UnitRecordJson::toBytes(record).toStdString();
+}
+
+} // namespace opentop
 
 namespace opentop::test {
 
