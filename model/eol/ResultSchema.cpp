@@ -121,8 +121,10 @@ bool ResultSchema::migrate(QSqlDatabase& db, ResultUrl::Engine engine, int targe
     if (!sqlite &&
         !exec(db, QStringLiteral("SELECT pg_advisory_xact_lock(%1)").arg(kMigrationLock), error))
         return rollback();
-    if (!exec(db,
-              QStringLiteral("CREATE TABLE IF NOT EXISTS schema_version ("
+    // Under the lock: no other station creates it meanwhile.
+    if (!db.tables().contains(QStringLiteral("schema_version")) &&
+        !exec(db,
+              QStringLiteral("CREATE TABLE schema_version ("
                              " version INTEGER NOT NULL PRIMARY KEY,"
                              " applied_utc VARCHAR(32) NOT NULL,"
                              " description VARCHAR(400) NOT NULL)"),

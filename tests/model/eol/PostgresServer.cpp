@@ -8,6 +8,7 @@
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
+#include <QUrl>
 #include <QVersionNumber>
 #include <cstdlib>
 #include <grp.h>
@@ -76,11 +77,11 @@ bool PostgresServer::start(QString* error)
         return true;
     QElapsedTimer timer;
     timer.start();
-    bin_ = newestServerBin();
-    if (bin_.isEmpty()) {
-        *error =
-            QStringLiteral("no PostgreSQL server programs in /usr/lib/postgresql/*/bin "
-                           "(Debian: apt-get install postgresql; scripts/setup.sh installs it)");
+    bin_ = qEnvironmentVariable("OPENTOP_TEST_PG_BIN", newestServerBin());
+    if (bin_.isEmpty() || !QFile::exists(bin_ + QStringLiteral("/initdb"))) {
+        *error = QStringLiteral("no PostgreSQL server programs (initdb) in %1 (Debian: apt-get "
+                                "install postgresql; scripts/setup.sh installs it)")
+                     .arg(bin_.isEmpty() ? QStringLiteral("/usr/lib/postgresql/*/bin") : bin_);
         return false;
     }
     dir_ = std::make_unique<QTemporaryDir>(QDir::tempPath() + QStringLiteral("/opentop-pg-XXXXXX"));
@@ -188,19 +189,22 @@ QString PostgresServer::createDatabase(const QString& name, QString* error)
                          .arg(admin->displayText(), db.lastError().text());
         } else {
             QSqlQuery q(db);
-            q.exec(QStringLiteral("DROP DATABASE IF EXISTS %1").arg(name));
+            if (!externalUrl_.isEmpty()) // a rerun on a kept server starts from nothing
+                q.exec(QStringLiteral("DROP DATABASE IF EXISTS %1").arg(name));
             if (!q.exec(QStringLiteral("CREATE DATABASE %1").arg(name))) {
                 *error = q.lastError().text();
             } else {
-                ResultUrl target = *admin;
-                target.database = name;
-                url = QStringLiteral("postgresql://%1@/%2?host=%3&port=%4")
-                          .arg(target.user, name, target.host)
-                          .arg(target.port);
-                if (!externalUrl_.isEmpty()) // keep the given server's password and options
-                    url = QString(adminUrl())
-                              .replace(QStringLiteral("/") + admin->database,
-                                       QStringLiteral("/") + name);
+                // Every part explicit (the environment may name another database).
+                auto enc = [](const QString& part) {
+                    return QString::fromLatin1(QUrl::toPercentEncoding(part));
+                };
+                url = QStringLiteral("postgresql://%1:%2@/%3?host=%4")
+                          .arg(enc(admin->user), enc(admin->password), name, enc(admin->host));
+                if (admin->port > 0)
+                    url += QStringLiteral("&port=%1").arg(admin->port);
+                for (const QString& option :
+                     admin->options.split(QLatin1Char(';'), Qt::SkipEmptyParts))
+                    url += QLatin1Char('&') + option;
             }
             db.close();
         }

@@ -12,6 +12,8 @@ namespace opentop::test {
 // As root the server runs as the user "postgres" (runuser), as anyone else as that user.
 //
 // OPENTOP_TEST_PG_URL=postgresql://...  use that server instead (a user that may CREATE DATABASE)
+// OPENTOP_TEST_PG_BIN=DIR                the server programs' folder (default: the newest
+//                                       /usr/lib/postgresql/*/bin)
 // OPENTOP_TEST_PG_SKIP=1                skip the PostgreSQL tests; without it a server that
 //                                       cannot be started is a failure, with the reason.
 class PostgresServer
