@@ -32,8 +32,8 @@ packages=(
     qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
     libmodbus-dev libgtest-dev libgmock-dev
     # the end-of-line results database: QtSql's SQLite and PostgreSQL drivers; the PostgreSQL
-    # server the tests start a throw-away cluster of (never its own "main" cluster), and
-    # poppler's pdftotext, which reads the certificate PDF back in the tests
+    # server programs the tests start a throw-away cluster with (they never use the package's
+    # "main" cluster), and poppler's pdftotext, which reads the certificate PDF back in the tests
     libqt6sql6-sqlite libqt6sql6-psql postgresql poppler-utils
     # independent Modbus peers the tests cross-check against
     mbpoll socat python3-pymodbus
@@ -52,13 +52,6 @@ if ((${#missing[@]})); then
     if [ "$(id -u)" -ne 0 ]; then
         echo "error: packages are missing and this is not root; run as root or install: ${missing[*]}" >&2
         exit 1
-    fi
-    if [[ " ${missing[*]} " == *" postgresql "* ]] && [ ! -e /etc/postgresql-common ]; then
-        # PostgreSQL is new here and only the tests' throw-away clusters use it: no "main"
-        # cluster started as a service (in a fresh root it would outlive the check).
-        mkdir -p /etc/postgresql-common/createcluster.d
-        echo "create_main_cluster = false # OpenTOP scripts/setup.sh: tests use throw-away clusters" \
-            >/etc/postgresql-common/createcluster.d/opentop-no-main-cluster.conf
     fi
     apt-get update -q
     DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
