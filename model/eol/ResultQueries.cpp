@@ -167,6 +167,46 @@ std::optional<UnitRecord> ResultQueries::load(const QString& unitId, QString* er
     return r;
 }
 
+std::optional<QSet<QPair<QString, QString>>> ResultQueries::testedBefore(const ResultFilter& f,
+                                                                         QString* error) const
+{
+    QSet<QPair<QString, QString>> earlier;
+    if (!f.from.isValid())
+        return earlier;
+    // The units in the range (as find() selects them) that have an earlier record.
+    QString sql = QStringLiteral(
+        "SELECT DISTINCT r.recipe_name, r.serial FROM units r WHERE r.started_utc >= ?"
+        " AND EXISTS (SELECT 1 FROM units e WHERE e.serial = r.serial"
+        " AND e.recipe_name = r.recipe_name AND e.started_utc < ?)");
+    QVariantList values{UnitRecordJson::timeText(f.from), UnitRecordJson::timeText(f.from)};
+    auto add = [&](const char* condition, const QVariant& value) {
+        sql += QLatin1String(condition);
+        values.append(value);
+    };
+    if (f.to.isValid())
+        add(" AND r.started_utc < ?", UnitRecordJson::timeText(f.to));
+    if (!f.serial.isEmpty())
+        add(" AND r.serial = ?", f.serial);
+    if (!f.recipe.isEmpty())
+        add(" AND r.recipe_name = ?", f.recipe);
+    if (f.status)
+        add(" AND r.status = ?", unitStatusName(*f.status));
+    if (!f.station.isEmpty())
+        add(" AND r.station = ?", f.station);
+    QSqlQuery q(database_.db());
+    q.setForwardOnly(true);
+    q.prepare(sql);
+    for (const QVariant& v : values)
+        q.addBindValue(v);
+    if (!q.exec()) {
+        fail(q, error);
+        return std::nullopt;
+    }
+    while (q.next())
+        earlier.insert({q.value(0).toString(), q.value(1).toString()});
+    return earlier;
+}
+
 std::optional<QVector<UnitRecord>> ResultQueries::history(const QString& serial,
                                                           QString* error) const
 {

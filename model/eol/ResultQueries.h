@@ -3,6 +3,8 @@
 #include "eol/UnitRecord.h"
 
 #include <QCoreApplication>
+#include <QPair>
+#include <QSet>
 #include <optional>
 
 namespace opentop {
@@ -34,6 +36,12 @@ public:
     std::optional<UnitRecord> load(const QString& unitId, QString* error) const;
     // Every record of a serial number, whole, oldest first (a certificate, a trace).
     std::optional<QVector<UnitRecord>> history(const QString& serial, QString* error) const;
+
+    // (recipe name, serial) of the units `filter` finds that were already tested for that recipe
+    // before filter.from: a report over a time range gives them to YieldReport so that a
+    // retest is never taken for a first pass. Empty when the filter has no start.
+    std::optional<QSet<QPair<QString, QString>>> testedBefore(const ResultFilter& filter,
+                                                              QString* error) const;
 
 private:
     ResultDatabase& database_;

@@ -8,13 +8,14 @@ namespace opentop {
 
 namespace {
 
-QVector<YieldRow> grouped(QVector<UnitRecord> units, const ShiftPlan* plan)
+QVector<YieldRow> grouped(QVector<UnitRecord> units, const ShiftPlan* plan,
+                          const YieldReport::Earlier& earlier)
 {
     std::stable_sort(units.begin(), units.end(), [](const UnitRecord& a, const UnitRecord& b) {
         return a.started < b.started;
     });
     std::map<std::pair<QString, QString>, YieldRow> rows;
-    QSet<QPair<QString, QString>> seen; // (recipe, serial) whose first record was counted
+    QSet<QPair<QString, QString>> seen = earlier; // (recipe, serial) whose first record is past
     for (const UnitRecord& u : units) {
         const QString shift = plan ? plan->shiftName(u.started) : QString();
         YieldRow& row = rows[{u.recipeName, shift}];
@@ -60,14 +61,15 @@ QString YieldReport::reasonOf(const UnitRecord& unit)
     return QString();
 }
 
-QVector<YieldRow> YieldReport::perRecipe(const QVector<UnitRecord>& units)
+QVector<YieldRow> YieldReport::perRecipe(const QVector<UnitRecord>& units, const Earlier& earlier)
 {
-    return grouped(units, nullptr);
+    return grouped(units, nullptr, earlier);
 }
 
-QVector<YieldRow> YieldReport::perShift(const QVector<UnitRecord>& units, const ShiftPlan& plan)
+QVector<YieldRow> YieldReport::perShift(const QVector<UnitRecord>& units, const ShiftPlan& plan,
+                                        const Earlier& earlier)
 {
-    return grouped(units, &plan);
+    return grouped(units, &plan, earlier);
 }
 
 } // namespace opentop

@@ -5,6 +5,8 @@
 
 #include <QCoreApplication>
 #include <QMap>
+#include <QPair>
+#include <QSet>
 
 namespace opentop {
 
@@ -27,11 +29,17 @@ class YieldReport
 {
     Q_DECLARE_TR_FUNCTIONS(opentop::YieldReport)
 public:
+    // (recipe name, serial) tested before the units given (ResultQueries::testedBefore): their
+    // records here are retests, none of them a first record.
+    using Earlier = QSet<QPair<QString, QString>>;
+
     // Rows per recipe (by name), in name order.
-    static QVector<YieldRow> perRecipe(const QVector<UnitRecord>& units);
+    static QVector<YieldRow> perRecipe(const QVector<UnitRecord>& units,
+                                       const Earlier& earlier = {});
     // Rows per recipe and shift, in recipe then shift order; a serial's first record counts in
     // the shift it was tested in.
-    static QVector<YieldRow> perShift(const QVector<UnitRecord>& units, const ShiftPlan& plan);
+    static QVector<YieldRow> perShift(const QVector<UnitRecord>& units, const ShiftPlan& plan,
+                                      const Earlier& earlier = {});
     // The reason a report shows for a record that did not pass.
     static QString reasonOf(const UnitRecord& unit);
 };

@@ -2,6 +2,7 @@
 #include "EolSampleUnit.h"
 #include "eol/ResultDatabase.h"
 #include "eol/ResultStore.h"
+#include "eol/YieldReport.h"
 
 #include <QTemporaryDir>
 #include <gtest/gtest.h>
@@ -120,4 +121,23 @@ TEST_F(ResultQueriesTest, HistoryOfASerialIsWholeAndLoadOfAnUnknownIdSaysSo)
     EXPECT_EQ(history->at(1).drives.size(), 2);
     EXPECT_FALSE(ResultQueries(*db).load(QStringLiteral("nope"), &error));
     EXPECT_TRUE(error.contains(QLatin1String("nope")));
+}
+
+TEST_F(ResultQueriesTest, TestedBeforeNamesTheRangesRetestsOnly)
+{
+    ResultFilter f;
+    f.from = t0.addSecs(15 * 60); // S2 was first tested at 10 min, retested at 20
+    QString error;
+    const auto earlier = ResultQueries(*db).testedBefore(f, &error);
+    ASSERT_TRUE(earlier) << error.toStdString();
+    EXPECT_EQ(*earlier, (YieldReport::Earlier{{QStringLiteral("pump"), QStringLiteral("S2")}}));
+    const auto units = ResultQueries(*db).find(f, &error);
+    const auto rows = YieldReport::perRecipe(*units, *earlier);
+    ASSERT_EQ(rows.size(), 2);
+    EXPECT_EQ(rows[1].recipe, QStringLiteral("pump"));
+    EXPECT_EQ(rows[1].serials, 1); // S4 (running): S2's retest is not a first record
+    EXPECT_EQ(rows[1].firstPass, 0);
+    f.recipe = QStringLiteral("fan");
+    EXPECT_TRUE(ResultQueries(*db).testedBefore(f, &error)->isEmpty());
+    EXPECT_TRUE(ResultQueries(*db).testedBefore({}, &error)->isEmpty());
 }

@@ -117,3 +117,19 @@ TEST(YieldReportTest, PerShiftCountsASerialInTheShiftOfItsFirstRecord)
     EXPECT_TRUE(csv.contains("pump,2026-11-24 06:00,2,1,0.5,2,0,load high,1\r\n")) << csv.data();
     EXPECT_TRUE(csv.contains("pump,2026-11-24 14:00,0,0,0,1,0,,0\r\n")) << csv.data();
 }
+
+TEST(YieldReportTest, ARetestOfAUnitFirstTestedBeforeTheRangeIsNoFirstPass)
+{
+    const QVector<UnitRecord> today{
+        unit("S1", "pump", at(7), UnitStatus::Pass),
+        unit("S2", "pump", at(8), UnitStatus::Pass), // failed yesterday: a retest
+    };
+    const YieldReport::Earlier earlier{{QStringLiteral("pump"), QStringLiteral("S2")}};
+    const auto rows = YieldReport::perRecipe(today, earlier);
+    ASSERT_EQ(rows.size(), 1);
+    EXPECT_EQ(rows[0].serials, 1);
+    EXPECT_EQ(rows[0].firstPass, 1);
+    EXPECT_EQ(rows[0].records, 2);
+    const auto naive = YieldReport::perRecipe(today);
+    EXPECT_EQ(naive[0].serials, 2); // without it, S2's retest would look like a first pass
+}
