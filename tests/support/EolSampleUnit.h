@@ -9,6 +9,11 @@
 
 namespace opentop {
 
+inline void PrintTo(UnitStatus status, std::ostream* os)
+{
+    *os << unitStatusName(status).toStdString();
+}
+
 // GoogleTest shows a record that differs as its JSON.
 inline void PrintTo(const UnitRecord& record, std::ostream* os)
 {

@@ -1,6 +1,7 @@
 // A station killed with SIGKILL inside finishUnit's transaction (every child row written, the
 // status not yet): the database stays valid, the unit stays 'running', the station's restart
 // marks it 'interrupted', and no query ever counts it as a pass.
+#include "EolSampleUnit.h"
 #include "eol/ResultDatabase.h"
 #include "eol/ResultQueries.h"
 #include "eol/ResultStore.h"
