@@ -31,6 +31,10 @@ packages=(
     qt6-base-dev libqt6opengl6-dev qt6-serialport-dev qt6-charts-dev
     qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
     libmodbus-dev libgtest-dev libgmock-dev
+    # the end-of-line results database: QtSql's SQLite and PostgreSQL drivers; the PostgreSQL
+    # server programs the tests start a throw-away cluster with (they never use the package's
+    # "main" cluster), and poppler's pdftotext, which reads the certificate PDF back in the tests
+    libqt6sql6-sqlite libqt6sql6-psql postgresql poppler-utils
     # independent Modbus peers the tests cross-check against
     mbpoll socat python3-pymodbus
     # the GUI without a display: a virtual X server, its auth, a screenshot tool and fonts

@@ -1,0 +1,50 @@
+#pragma once
+
+#include "eol/UnitRecord.h"
+
+#include <QCoreApplication>
+#include <QPair>
+#include <QSet>
+#include <optional>
+
+namespace opentop {
+
+class ResultDatabase;
+
+// What to look for in the results database; empty parts match everything.
+struct ResultFilter
+{
+    QString serial;
+    QDateTime from;                   // started at or after (UTC)
+    QDateTime to;                     // started before
+    QString recipe;                   // recipe name
+    std::optional<UnitStatus> status; // Pass matches 'pass' only: running/interrupted never do
+    QString station;
+    int limit = 0; // the newest `limit` units; 0: all
+};
+
+// Reads unit records back (docs/eol-results.md).
+class ResultQueries
+{
+    Q_DECLARE_TR_FUNCTIONS(opentop::ResultQueries)
+public:
+    explicit ResultQueries(ResultDatabase& database);
+
+    // The units' own rows (no drives, values or traffic), oldest first. nullopt on an error.
+    std::optional<QVector<UnitRecord>> find(const ResultFilter& filter, QString* error) const;
+    // One whole record; nullopt with *error when there is none or on an error.
+    std::optional<UnitRecord> load(const QString& unitId, QString* error) const;
+    // Every record of a serial number, whole, oldest first (a certificate, a trace).
+    std::optional<QVector<UnitRecord>> history(const QString& serial, QString* error) const;
+
+    // (recipe name, serial) of the units `filter` finds that were already tested for that recipe
+    // before filter.from: a report over a time range gives them to YieldReport so that a
+    // retest is never taken for a first pass. Empty when the filter has no start.
+    std::optional<QSet<QPair<QString, QString>>> testedBefore(const ResultFilter& filter,
+                                                              QString* error) const;
+
+private:
+    ResultDatabase& database_;
+};
+
+} // namespace opentop

@@ -1,0 +1,172 @@
+#include "eol/ResultSchema.h"
+
+#include "ModelLog.h"
+#include "eol/UnitRecordJson.h"
+
+#include <QSqlError>
+#include <QSqlQuery>
+
+namespace opentop {
+
+namespace {
+
+// Any constant: the advisory lock the stations of one PostgreSQL database migrate under.
+constexpr qint64 kMigrationLock = 0x4f54454f4c; // "OTEOL"
+
+bool exec(QSqlDatabase& db, const QString& sql, QString* error)
+{
+    QSqlQuery query(db);
+    if (query.exec(sql))
+        return true;
+    if (error)
+        *error = query.lastError().text() + QStringLiteral(" [") + sql.simplified().left(120) +
+                 QLatin1Char(']');
+    return false;
+}
+
+} // namespace
+
+const QVector<ResultSchema::Migration>& ResultSchema::migrations()
+{
+    static const QVector<Migration> list{
+        {1,
+         QStringLiteral("units, drives, written values, measurements"),
+         {QStringLiteral("CREATE TABLE units ("
+                         " unit_id VARCHAR(40) NOT NULL PRIMARY KEY,"
+                         " serial VARCHAR(200) NOT NULL,"
+                         " station VARCHAR(200) NOT NULL,"
+                         " operator_name VARCHAR(200) NOT NULL,"
+                         " started_utc VARCHAR(32) NOT NULL,"
+                         " ended_utc VARCHAR(32),"
+                         " recipe_name VARCHAR(200) NOT NULL,"
+                         " recipe_revision VARCHAR(100) NOT NULL,"
+                         " recipe_checksum VARCHAR(200) NOT NULL,"
+                         " status VARCHAR(20) NOT NULL CHECK (status IN"
+                         "  ('running', 'interrupted', 'pass', 'fail', 'aborted')),"
+                         " failure_reason TEXT NOT NULL)"),
+          QStringLiteral("CREATE TABLE unit_drives ("
+                         " unit_id VARCHAR(40) NOT NULL REFERENCES units (unit_id),"
+                         " drive_index INTEGER NOT NULL,"
+                         " machine_number INTEGER NOT NULL,"
+                         " model VARCHAR(100) NOT NULL,"
+                         " variant VARCHAR(100) NOT NULL,"
+                         " firmware VARCHAR(100) NOT NULL,"
+                         " PRIMARY KEY (unit_id, drive_index))"),
+          QStringLiteral("CREATE TABLE written_values ("
+                         " unit_id VARCHAR(40) NOT NULL REFERENCES units (unit_id),"
+                         " seq INTEGER NOT NULL,"
+                         " machine_number INTEGER NOT NULL,"
+                         " parameter VARCHAR(200) NOT NULL,"
+                         " label VARCHAR(400) NOT NULL,"
+                         " value_text TEXT NOT NULL,"
+                         " was_written INTEGER NOT NULL,"
+                         " verified INTEGER NOT NULL,"
+                         " read_back TEXT NOT NULL,"
+                         " PRIMARY KEY (unit_id, seq))"),
+          QStringLiteral("CREATE TABLE measurements ("
+                         " unit_id VARCHAR(40) NOT NULL REFERENCES units (unit_id),"
+                         " seq INTEGER NOT NULL,"
+                         " machine_number INTEGER NOT NULL,"
+                         " step VARCHAR(400) NOT NULL,"
+                         " quantity VARCHAR(200) NOT NULL,"
+                         " measured DOUBLE PRECISION NOT NULL,"
+                         " unit VARCHAR(40) NOT NULL,"
+                         " lower_limit DOUBLE PRECISION,"
+                         " upper_limit DOUBLE PRECISION,"
+                         " passed INTEGER NOT NULL,"
+                         " PRIMARY KEY (unit_id, seq))"),
+          QStringLiteral("CREATE INDEX units_by_serial ON units (serial, started_utc)"),
+          QStringLiteral("CREATE INDEX units_by_time ON units (started_utc)")}},
+        {2,
+         QStringLiteral("traffic around a failure; indexes by recipe and by station"),
+         {QStringLiteral("CREATE TABLE unit_traffic ("
+                         " unit_id VARCHAR(40) NOT NULL REFERENCES units (unit_id),"
+                         " seq INTEGER NOT NULL,"
+                         " line TEXT NOT NULL,"
+                         " PRIMARY KEY (unit_id, seq))"),
+          QStringLiteral("CREATE INDEX units_by_recipe ON units (recipe_name, started_utc)"),
+          QStringLiteral("CREATE INDEX units_by_station ON units (station, status)")}},
+    };
+    return list;
+}
+
+int ResultSchema::currentVersion()
+{
+    return migrations().constLast().version;
+}
+
+int ResultSchema::version(QSqlDatabase& db, QString* error)
+{
+    if (!db.tables().contains(QStringLiteral("schema_version")))
+        return 0;
+    QSqlQuery query(db);
+    if (!query.exec(QStringLiteral("SELECT MAX(version) FROM schema_version")) || !query.next()) {
+        if (error)
+            *error = query.lastError().text();
+        return -1;
+    }
+    return query.value(0).toInt();
+}
+
+bool ResultSchema::migrate(QSqlDatabase& db, ResultUrl::Engine engine, int target,
+                           int* appliedVersion, QString* error)
+{
+    const bool sqlite = engine == ResultUrl::Engine::Sqlite;
+    if (!exec(db, sqlite ? QStringLiteral("BEGIN IMMEDIATE") : QStringLiteral("BEGIN"), error))
+        return false;
+    auto rollback = [&] {
+        QSqlQuery(db).exec(QStringLiteral("ROLLBACK"));
+        return false;
+    };
+    if (!sqlite &&
+        !exec(db, QStringLiteral("SELECT pg_advisory_xact_lock(%1)").arg(kMigrationLock), error))
+        return rollback();
+    // Under the lock: no other station creates it meanwhile.
+    if (!db.tables().contains(QStringLiteral("schema_version")) &&
+        !exec(db,
+              QStringLiteral("CREATE TABLE schema_version ("
+                             " version INTEGER NOT NULL PRIMARY KEY,"
+                             " applied_utc VARCHAR(32) NOT NULL,"
+                             " description VARCHAR(400) NOT NULL)"),
+              error))
+        return rollback();
+    const int found = version(db, error);
+    if (found < 0)
+        return rollback();
+    if (found > currentVersion()) {
+        if (error)
+            *error = tr("the results database has schema version %1, newer than this program "
+                        "knows (%2): update OpenTOP on this station; nothing was written")
+                         .arg(found)
+                         .arg(currentVersion());
+        return rollback();
+    }
+    int now = found;
+    for (const Migration& m : migrations()) {
+        if (m.version <= found || m.version > target)
+            continue;
+        for (const QString& sql : m.statements)
+            if (!exec(db, sql, error))
+                return rollback();
+        QSqlQuery insert(db);
+        insert.prepare(QStringLiteral(
+            "INSERT INTO schema_version (version, applied_utc, description) VALUES (?, ?, ?)"));
+        insert.addBindValue(m.version);
+        insert.addBindValue(UnitRecordJson::timeText(QDateTime::currentDateTimeUtc()));
+        insert.addBindValue(m.description);
+        if (!insert.exec()) {
+            if (error)
+                *error = insert.lastError().text();
+            return rollback();
+        }
+        qCInfo(lcModel) << "results database: schema version" << m.version << m.description;
+        now = m.version;
+    }
+    if (!exec(db, QStringLiteral("COMMIT"), error))
+        return rollback();
+    if (appliedVersion)
+        *appliedVersion = now;
+    return true;
+}
+
+} // namespace opentop

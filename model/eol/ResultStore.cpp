@@ -1,0 +1,214 @@
+#include "eol/ResultStore.h"
+
+#include "eol/ResultDatabase.h"
+#include "eol/UnitRecordJson.h"
+
+#include <QSqlError>
+#include <QSqlQuery>
+#include <QUuid>
+
+namespace opentop {
+
+namespace {
+
+QVariant numberOrNull(const std::optional<double>& value)
+{
+    return value ? QVariant(*value) : QVariant(QMetaType::fromType<double>());
+}
+
+// Binds the values; a null QString is bound as '' (the text columns are NOT NULL, and QtSql binds
+// a null QString as NULL).
+void bind(QSqlQuery& query, std::initializer_list<QVariant> values)
+{
+    for (const QVariant& v : values) {
+        if (v.typeId() == QMetaType::QString && v.toString().isNull())
+            query.addBindValue(QString(QLatin1String("")));
+        else
+            query.addBindValue(v);
+    }
+}
+
+bool run(QSqlQuery& query, QString* error)
+{
+    if (query.exec())
+        return true;
+    if (error)
+        *error = query.lastError().text();
+    return false;
+}
+
+QDateTime nowUtc()
+{
+    // Milliseconds are what the database keeps: the record in memory is what it reads back.
+    return UnitRecordJson::timeFromText(UnitRecordJson::timeText(QDateTime::currentDateTimeUtc()));
+}
+
+} // namespace
+
+ResultStore::ResultStore(ResultDatabase& database)
+    : database_(database)
+{
+}
+
+QString ResultStore::interruptedReason()
+{
+    return tr("interrupted: the station stopped before the unit was finished (killed, power "
+              "lost or crashed); the unit was not proven");
+}
+
+bool ResultStore::beginUnit(UnitRecord& record, QString* error)
+{
+    if (record.serial.isEmpty()) {
+        if (error)
+            *error = tr("a unit needs a serial number");
+        return false;
+    }
+    if (record.id.isEmpty())
+        record.id = QUuid::createUuid().toString(QUuid::WithoutBraces);
+    if (!record.started.isValid())
+        record.started = nowUtc();
+    if (!database_.begin(error))
+        return false;
+    QSqlQuery q(database_.db());
+    q.prepare(QStringLiteral(
+        "INSERT INTO units (unit_id, serial, station, operator_name, started_utc, ended_utc,"
+        " recipe_name, recipe_revision, recipe_checksum, status, failure_reason)"
+        " VALUES (?, ?, ?, ?, ?, NULL, ?, ?, ?, 'running', '')"));
+    bind(q, {record.id, record.serial, record.station, record.operatorName,
+             UnitRecordJson::timeText(record.started), record.recipeName, record.recipeRevision,
+             record.recipeChecksum});
+    if (!run(q, error) || !database_.commit(error)) {
+        database_.rollback();
+        return false;
+    }
+    return true;
+}
+
+bool ResultStore::writeChildren(const UnitRecord& r, QString* error)
+{
+    QSqlQuery q(database_.db());
+    // A finish that is repeated after a failed commit starts from no children again.
+    for (const char* table : {"unit_drives", "written_values", "measurements", "unit_traffic"}) {
+        q.prepare(QStringLiteral("DELETE FROM %1 WHERE unit_id = ?").arg(QLatin1String(table)));
+        q.addBindValue(r.id);
+        if (!run(q, error))
+            return false;
+    }
+    q.prepare(QStringLiteral("INSERT INTO unit_drives (unit_id, drive_index, machine_number, "
+                             "model, variant, firmware) VALUES (?, ?, ?, ?, ?, ?)"));
+    for (int i = 0; i < r.drives.size(); ++i) {
+        const UnitDrive& d = r.drives[i];
+        bind(q, {QVariant(r.id), QVariant(i), QVariant(d.machineNumber), QVariant(d.model),
+                 QVariant(d.variant), QVariant(d.firmware)});
+        if (!run(q, error))
+            return false;
+    }
+    q.prepare(QStringLiteral(
+        "INSERT INTO written_values (unit_id, seq, machine_number, parameter, label, value_text,"
+        " was_written, verified, read_back) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)"));
+    for (int i = 0; i < r.writtenValues.size(); ++i) {
+        const WrittenValue& w = r.writtenValues[i];
+        bind(q, {QVariant(r.id), QVariant(i), QVariant(w.machineNumber), QVariant(w.parameter),
+                 QVariant(w.label), QVariant(w.value), QVariant(w.written ? 1 : 0),
+                 QVariant(w.verified ? 1 : 0), QVariant(w.readBack)});
+        if (!run(q, error))
+            return false;
+    }
+    q.prepare(QStringLiteral(
+        "INSERT INTO measurements (unit_id, seq, machine_number, step, quantity, measured, unit,"
+        " lower_limit, upper_limit, passed) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"));
+    for (int i = 0; i < r.measurements.size(); ++i) {
+        const Measurement& m = r.measurements[i];
+        bind(q, {QVariant(r.id), QVariant(i), QVariant(m.machineNumber), QVariant(m.step),
+                 QVariant(m.quantity), QVariant(m.value), QVariant(m.unit), numberOrNull(m.lower),
+                 numberOrNull(m.upper), QVariant(m.pass ? 1 : 0)});
+        if (!run(q, error))
+            return false;
+    }
+    q.prepare(QStringLiteral("INSERT INTO unit_traffic (unit_id, seq, line) VALUES (?, ?, ?)"));
+    for (int i = 0; i < r.traffic.size(); ++i) {
+        bind(q, {QVariant(r.id), QVariant(i), QVariant(r.traffic[i])});
+        if (!run(q, error))
+            return false;
+    }
+    return true;
+}
+
+bool ResultStore::finishUnit(UnitRecord& record, QString* error)
+{
+    if (record.status == UnitStatus::Running || record.status == UnitStatus::Interrupted) {
+        if (error)
+            *error = tr("a unit is finished with pass, fail or aborted, not %1")
+                         .arg(unitStatusName(record.status));
+        return false;
+    }
+    if (!record.ended.isValid())
+        record.ended = nowUtc();
+    if (!database_.begin(error))
+        return false;
+    auto fail = [&] {
+        database_.rollback();
+        return false;
+    };
+    // Only a running unit is finished: a recorded verdict or an interruption is never replaced.
+    QSqlQuery check(database_.db());
+    check.prepare(QStringLiteral("SELECT status FROM units WHERE unit_id = ?"));
+    bind(check, {record.id});
+    if (!run(check, error))
+        return fail();
+    const QString found = check.next() ? check.value(0).toString() : QString();
+    check.finish();
+    if (found != QLatin1String("running")) {
+        if (error)
+            *error = found.isEmpty()
+                         ? tr("unit %1 (serial %2) was never begun in the results database")
+                               .arg(record.id, record.serial)
+                         : tr("unit %1 (serial %2) is already recorded as %3; its record is kept")
+                               .arg(record.id, record.serial, found);
+        return fail();
+    }
+    if (!writeChildren(record, error))
+        return fail();
+    if (hook_)
+        hook_();
+    QSqlQuery q(database_.db());
+    q.prepare(QStringLiteral(
+        "UPDATE units SET ended_utc = ?, status = ?, failure_reason = ?, operator_name = ?"
+        " WHERE unit_id = ? AND status = 'running'"));
+    bind(q, {UnitRecordJson::timeText(record.ended), unitStatusName(record.status),
+             record.failureReason, record.operatorName, record.id});
+    if (!run(q, error))
+        return fail();
+    if (q.numRowsAffected() != 1) {
+        if (error)
+            *error = tr("unit %1 (serial %2) is not running in the results database: it was "
+                        "never begun, or was already finished or marked interrupted")
+                         .arg(record.id, record.serial);
+        return fail();
+    }
+    if (!database_.commit(error))
+        return fail();
+    return true;
+}
+
+int ResultStore::markInterrupted(const QString& station, const QDateTime& before, QString* error)
+{
+    if (!database_.begin(error))
+        return -1;
+    QSqlQuery q(database_.db());
+    q.prepare(QStringLiteral("UPDATE units SET status = 'interrupted', failure_reason = ?"
+                             " WHERE station = ? AND status = 'running' AND started_utc < ?"));
+    bind(q, {interruptedReason(), station, UnitRecordJson::timeText(before)});
+    if (!run(q, error)) {
+        database_.rollback();
+        return -1;
+    }
+    const int count = q.numRowsAffected();
+    if (!database_.commit(error)) {
+        database_.rollback();
+        return -1;
+    }
+    return count;
+}
+
+} // namespace opentop

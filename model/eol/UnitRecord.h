@@ -1,0 +1,86 @@
+#pragma once
+
+#include <QDateTime>
+#include <QString>
+#include <QStringList>
+#include <QVector>
+#include <optional>
+
+namespace opentop {
+
+// One unit's end-of-line record as the results database keeps it (docs/eol-results.md): who,
+// where, when, with which recipe, what each drive was, every value written and its proof, every
+// measured value with its limits, and the verdict. The recipe is named by its name, revision and
+// checksum only, so that a record stays readable when the recipe file is long gone.
+enum class UnitStatus
+{
+    Running,     // begun, not finished: the station is testing it, or was killed while it did
+    Interrupted, // found still running after its station restarted: never a pass
+    Pass,
+    Fail,
+    Aborted // the run was cancelled or stopped by an error before a verdict
+};
+
+QString unitStatusName(UnitStatus status); // "running", "interrupted", "pass", "fail", "aborted"
+std::optional<UnitStatus> unitStatusFromName(const QString& name);
+
+// A drive of the unit, at its fixture position (the machine number set on its switches).
+struct UnitDrive
+{
+    int machineNumber = 0;
+    QString model;   // family/model, e.g. "DBU"
+    QString variant; // e.g. "DBU200"
+    QString firmware;
+    bool operator==(const UnitDrive& o) const;
+};
+
+// A setting the recipe gives: what was written, and whether reading it back proved it.
+struct WrittenValue
+{
+    int machineNumber = 0;
+    QString parameter; // internal name, for tracing; user text shows the label
+    QString label;
+    QString value;        // engineering value as text, with its unit: "1500 r/min"
+    bool written = false; // false: the drive already held it, nothing was sent
+    bool verified = false;
+    QString readBack; // what the drive answered, with its unit
+    bool operator==(const WrittenValue& o) const;
+};
+
+struct Measurement
+{
+    int machineNumber = 0;
+    QString step;     // the recipe step that measured it, in words
+    QString quantity; // "speed mean", "load max"
+    double value = 0;
+    QString unit;
+    std::optional<double> lower; // no limit when empty
+    std::optional<double> upper;
+    bool pass = false;
+    bool operator==(const Measurement& o) const;
+};
+
+struct UnitRecord
+{
+    QString id; // unique over all stations (a UUID), given by beginUnit() when empty
+    QString serial;
+    QString station;
+    QString operatorName;
+    QDateTime started; // UTC, milliseconds
+    QDateTime ended;   // UTC; invalid while running
+    QString recipeName;
+    QString recipeRevision;
+    QString recipeChecksum;
+    UnitStatus status = UnitStatus::Running;
+    QString failureReason; // the first failure, in words; empty for a pass
+    QVector<UnitDrive> drives;
+    QVector<WrittenValue> writtenValues;
+    QVector<Measurement> measurements;
+    QStringList traffic; // decoded bus traffic around the failure, one line each
+
+    bool isPass() const { return status == UnitStatus::Pass; }
+    bool operator==(const UnitRecord& o) const;
+    bool operator!=(const UnitRecord& o) const { return !(*this == o); }
+};
+
+} // namespace opentop

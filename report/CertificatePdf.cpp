@@ -1,0 +1,68 @@
+#include "CertificatePdf.h"
+
+#include "eol/CertificateHtml.h"
+#include "files/OutputFile.h"
+
+#include <QBuffer>
+#include <QFont>
+#include <QPageLayout>
+#include <QPageSize>
+#include <QPainter>
+#include <QPdfWriter>
+#include <QTextDocument>
+
+namespace opentop {
+
+QByteArray CertificatePdf::pdf(const UnitRecord& record)
+{
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    {
+        QPdfWriter writer(&buffer);
+        writer.setTitle(tr("End-of-line certificate %1").arg(record.serial));
+        writer.setCreator(QStringLiteral("OpenTOP " OPENTOP_VERSION));
+        writer.setResolution(300);
+        writer.setPageLayout(QPageLayout(QPageSize(QPageSize::A4), QPageLayout::Portrait,
+                                         QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter));
+        QTextDocument document;
+        document.setHtml(CertificateHtml::html(record));
+        // Lay the text out in points on a page of the writer's size less a footer line, then
+        // scale to the writer's dots.
+        const QRectF page = writer.pageLayout().paintRect(QPageLayout::Point);
+        constexpr double footer = 14;
+        const QSizeF body(page.width(), page.height() - footer);
+        document.setPageSize(body);
+        QPainter painter(&writer);
+        const double scale = writer.resolution() / 72.0;
+        painter.scale(scale, scale);
+        const int pages = document.pageCount();
+        for (int i = 0; i < pages; ++i) {
+            if (i > 0)
+                writer.newPage();
+            painter.save();
+            painter.translate(0, -body.height() * i);
+            document.drawContents(&painter, QRectF(QPointF(0, body.height() * i), body));
+            painter.restore();
+            // Every page names its unit and verdict: a page that comes loose is still traceable.
+            QFont font(QStringLiteral("DejaVu Sans"));
+            font.setPixelSize(7); // the painter's unit is a point
+            painter.setFont(font);
+            painter.drawText(QRectF(0, body.height(), page.width(), footer),
+                             Qt::AlignRight | Qt::AlignBottom,
+                             tr("%1 · %2 · page %3 of %4")
+                                 .arg(record.serial, CertificateHtml::verdictText(record.status))
+                                 .arg(i + 1)
+                                 .arg(pages));
+        }
+        painter.end();
+    }
+    return bytes;
+}
+
+bool CertificatePdf::save(const UnitRecord& record, const QString& path, QString* error)
+{
+    return OutputFile::write(path, pdf(record), error);
+}
+
+} // namespace opentop
