@@ -7,8 +7,11 @@ namespace opentop {
 QStringList DependentValues::of(const Profile& profile, const ParameterMeta& meta)
 {
     QStringList names;
+    // Only values a drive holds: a write-only command (the DC controller's speed command, whose
+    // range follows the speed mode) has nothing a mode change could leave invalid, and could
+    // not be read to check.
     for (const ParameterMeta& p : profile.parameters) {
-        if (p.isWritable() && p.controllingParameters().contains(meta.name))
+        if (p.isWritable() && p.isReadable() && p.controllingParameters().contains(meta.name))
             names << p.name;
     }
     return names;

@@ -89,3 +89,22 @@ TEST_F(DependentValuesTest, APageWriteOfTheModeAloneFailsAtTheFieldAndWritesNoth
     EXPECT_TRUE(parameters.entry(QStringLiteral("core.control_mode"))
                     ->message.contains(QStringLiteral("Input X0 function")));
 }
+
+// The DC controller's speed command follows its speed mode but is a write-only command: it holds
+// no value a mode change could leave invalid, so changing the mode is not refused for want of
+// reading it.
+TEST_F(DependentValuesTest, AWriteOnlyCommandDoesNotBlockItsControllingSetting)
+{
+    const Profile& dc = *ProfileRegistry::builtIn().family(QStringLiteral("dcpid"));
+    const ParameterMeta* mode = dc.parameter(QStringLiteral("config.speed_mode"));
+    ASSERT_TRUE(mode);
+    ASSERT_TRUE(dc.parameter(QStringLiteral("speed.command"))
+                    ->controllingParameters()
+                    .contains(mode->name));
+    EXPECT_FALSE(DependentValues::of(dc, *mode).contains(QStringLiteral("speed.command")));
+    startBus(QStringLiteral("dcpid@1"));
+    const DeviceSession::Outcome o =
+        write(QStringLiteral("config.speed_mode"), QStringLiteral("Speed loop (commutation)"));
+    EXPECT_TRUE(o.ok) << qPrintable(o.error);
+    EXPECT_TRUE(o.verified);
+}

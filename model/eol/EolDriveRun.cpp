@@ -1,0 +1,269 @@
+#include "eol/EolDriveRun.h"
+
+#include "eol/EolTarget.h"
+#include "eol/Recipe.h"
+#include "files/RestorePlan.h"
+#include "files/Restorer.h"
+#include "profile/ProfileRegistry.h"
+#include "profile/ValueCodec.h"
+#include "session/DeviceIdentifier.h"
+#include "session/DeviceInfo.h"
+#include "session/DeviceSession.h"
+
+#include <QTimer>
+
+namespace opentop {
+
+EolDriveRun::EolDriveRun(ModbusClient* client, const ProfileRegistry& registry, RunControl* run,
+                         const RecipePosition& position, int index,
+                         QHash<QString, double> unitValues, const EolStepRunner::Timing& timing,
+                         QObject* parent)
+    : QObject(parent)
+    , m_client(client)
+    , m_registry(registry)
+    , m_run(run)
+    , m_position(position)
+    , m_index(index)
+    , m_unitValues(std::move(unitValues))
+    , m_timing(timing)
+{
+    qRegisterMetaType<opentop::EolDriveRun::Phase>("opentop::EolDriveRun::Phase");
+    m_drive.machineNumber = position.machineNumber;
+}
+
+EolDriveRun::~EolDriveRun() = default;
+
+QString EolDriveRun::title() const
+{
+    return Recipe::positionText(m_index, m_position.machineNumber);
+}
+
+void EolDriveRun::setPhase(Phase phase, const QString& text)
+{
+    m_phase = phase;
+    emit phaseChanged(m_position.machineNumber, phase, text);
+}
+
+void EolDriveRun::start(std::function<void()> done)
+{
+    m_done = std::move(done);
+    setPhase(Phase::Identify, tr("identifying"));
+    auto* identifier = new DeviceIdentifier(m_client, m_registry, this);
+    identifier->identify(m_position.machineNumber, [this, identifier](const DeviceInfo& info) {
+        identifier->deleteLater();
+        if (!m_ended)
+            identified(info);
+    });
+}
+
+void EolDriveRun::identified(const DeviceInfo& info)
+{
+    if (info.state != DeviceInfo::State::Present) {
+        fail(info.state == DeviceInfo::State::Absent
+                 ? tr("no drive answers at machine number %1").arg(m_position.machineNumber)
+                 : tr("the drive at machine number %1 is not identified: %2")
+                       .arg(m_position.machineNumber)
+                       .arg(info.detail.isEmpty() ? DeviceInfo::stateText(info.state)
+                                                  : info.detail));
+        return;
+    }
+    m_drive.model = info.model;
+    m_drive.variant = info.variant;
+    m_drive.firmware = info.firmware;
+    if (info.family != m_position.family) {
+        fail(tr("a %1 drive, the recipe needs a %2 drive").arg(info.model, m_position.family));
+        return;
+    }
+    QString variant = info.variant;
+    if (variant.isEmpty() && m_position.variants.size() == 1) {
+        // The drive does not tell its variant; the recipe names exactly one.
+        variant = m_position.variants.first();
+    }
+    if (!m_position.variants.isEmpty() && !m_position.variants.contains(variant)) {
+        fail(variant.isEmpty()
+                 ? tr("the drive does not report its variant and the recipe allows %1")
+                       .arg(m_position.variants.join(QStringLiteral(", ")))
+                 : tr("variant %1, the recipe allows %2")
+                       .arg(variant, m_position.variants.join(QStringLiteral(", "))));
+        return;
+    }
+    m_drive.variant = variant;
+    if (!m_position.firmware.isEmpty() && !m_position.firmware.contains(info.firmware)) {
+        fail(tr("firmware %1, the recipe allows %2")
+                 .arg(info.firmware.isEmpty() ? tr("unknown") : info.firmware,
+                      m_position.firmware.join(QStringLiteral(", "))));
+        return;
+    }
+    const Profile* profile = m_registry.family(m_position.family);
+    if (!profile) {
+        fail(tr("no profile for the family %1").arg(m_position.family));
+        return;
+    }
+    QString error;
+    const std::optional<BackupDevice> target =
+        EolTarget::build(*profile, m_position, variant, m_unitValues, &error);
+    if (!target) {
+        fail(error);
+        return;
+    }
+    m_target = *target;
+    m_target.model = info.model;
+    m_target.firmware = info.firmware;
+    m_session = new DeviceSession(m_client, *profile, m_position.machineNumber, variant, this);
+    m_session->setLabelsInMessages(true);
+    write();
+}
+
+void EolDriveRun::write()
+{
+    setPhase(Phase::Write, tr("writing the settings"));
+    m_restorer = new Restorer(m_session, this);
+    m_restorer->start(m_target, {}, [this](const RestorePlan& plan) {
+        m_restorer->deleteLater();
+        m_restorer = nullptr;
+        if (!m_ended)
+            written(plan);
+    });
+}
+
+void EolDriveRun::written(const RestorePlan& plan)
+{
+    const Profile& profile = m_session->profile();
+    for (const RestorePlan::Item& item : plan.items) {
+        if (item.action == RestorePlan::Item::Action::Store)
+            continue;
+        const ParameterMeta* meta = profile.parameter(item.parameter);
+        WrittenValue w;
+        w.machineNumber = m_position.machineNumber;
+        w.parameter = item.parameter;
+        w.label = meta ? meta->label : item.parameter;
+        w.value = item.fileText;
+        w.written = item.action == RestorePlan::Item::Action::Write &&
+                    item.status != RestorePlan::Item::Status::NotAttempted;
+        w.verified = false; // proven by the read below
+        m_written.append(w);
+    }
+    if (plan.outcome != RestorePlan::Outcome::Done) {
+        QString reason = plan.reason;
+        if (reason.isEmpty())
+            reason = RestorePlan::outcomeText(plan.outcome);
+        for (const RestorePlan::Item& item : plan.items) {
+            if (item.status == RestorePlan::Item::Status::Failed ||
+                item.status == RestorePlan::Item::Status::NotConfirmed) {
+                const ParameterMeta* meta = profile.parameter(item.parameter);
+                reason = tr("%1: %2").arg(meta ? meta->label : item.parameter, item.error);
+                break;
+            }
+        }
+        if (!plan.problems.isEmpty())
+            reason += QStringLiteral(" (") + plan.problems.join(QStringLiteral("; ")) +
+                      QStringLiteral(")");
+        fail(tr("writing the settings: %1").arg(reason));
+        return;
+    }
+    verify();
+}
+
+void EolDriveRun::verify()
+{
+    setPhase(Phase::Verify, tr("reading every setting back"));
+    m_session->readMany(
+        m_target.parameterNames(), [this](const DeviceSession::ReadManyOutcome& many) {
+            if (m_ended)
+                return;
+            const Profile& profile = m_session->profile();
+            const ValueContext context = m_session->context();
+            QString firstFailure;
+            for (WrittenValue& w : m_written) {
+                const DeviceSession::Outcome r = many.results.value(w.parameter);
+                const BackupParameter* want = m_target.parameter(w.parameter);
+                const ParameterMeta* meta = profile.parameter(w.parameter);
+                if (!r.ok || !want || !meta) {
+                    w.readBack = QString();
+                    if (firstFailure.isEmpty())
+                        firstFailure = tr("%1 cannot be read back: %2").arg(w.label, r.error);
+                    continue;
+                }
+                w.readBack = ValueCodec::format(*meta, r.value, context);
+                w.verified = r.value.registers == want->registers;
+                if (!w.verified && firstFailure.isEmpty())
+                    firstFailure = tr("%1 does not keep its value: set to %2, reads %3")
+                                       .arg(w.label, w.value, w.readBack);
+            }
+            if (!firstFailure.isEmpty()) {
+                fail(tr("verifying the settings: %1").arg(firstFailure));
+                return;
+            }
+            test();
+        });
+}
+
+void EolDriveRun::test()
+{
+    setPhase(Phase::Test, tr("testing"));
+    m_steps = new EolStepRunner(m_session, m_run, m_position.steps, m_timing, this);
+    connect(m_steps, &EolStepRunner::stepStarted, this, [this](int index, const QString& title) {
+        setPhase(Phase::Test,
+                 tr("step %1 of %2: %3").arg(index + 1).arg(m_position.steps.size()).arg(title));
+    });
+    connect(m_steps, &EolStepRunner::measured, this, [this](const Measurement& m) {
+        m_measurements.append(m);
+        emit measured(m);
+    });
+    connect(m_steps, &EolStepRunner::speedSampled, this, [this](double speed, const QString& unit) {
+        emit speedSampled(m_position.machineNumber, speed, unit);
+    });
+    m_steps->start([this](const EolStepRunner::Result& r) {
+        m_stopConfirmed = r.stopConfirmed;
+        m_stopDetail = r.stopDetail;
+        if (!r.ok) {
+            fail(r.failure);
+            return;
+        }
+        m_ok = true;
+        finish();
+    });
+}
+
+void EolDriveRun::abort(const QString& reason)
+{
+    if (m_ended)
+        return;
+    if (m_steps && m_steps->isRunning()) {
+        m_steps->abort(reason); // stops the motor; its result ends this run
+        return;
+    }
+    if (m_restorer) {
+        // A write and its read-back belong together: the restorer stops after it.
+        m_restorer->cancel();
+        if (m_failure.isEmpty())
+            m_failure = reason;
+        return;
+    }
+    fail(reason);
+}
+
+void EolDriveRun::fail(const QString& reason)
+{
+    if (m_ended)
+        return;
+    if (m_failure.isEmpty())
+        m_failure = reason;
+    m_ok = false;
+    finish();
+}
+
+void EolDriveRun::finish()
+{
+    if (m_ended)
+        return;
+    m_ended = true;
+    setPhase(Phase::Done, m_ok ? tr("passed") : m_failure);
+    if (m_done) {
+        auto done = std::move(m_done);
+        m_done = nullptr;
+        done();
+    }
+}
+
+} // namespace opentop

@@ -1,0 +1,102 @@
+#pragma once
+
+#include "eol/EolStepRunner.h"
+#include "eol/RecipeTypes.h"
+#include "eol/UnitRecord.h"
+#include "files/BackupDevice.h"
+
+#include <QHash>
+#include <QObject>
+#include <functional>
+#include <memory>
+
+namespace opentop {
+
+class DeviceSession;
+struct DeviceInfo;
+class ModbusClient;
+class ProfileRegistry;
+class Restorer;
+class RunControl;
+struct RestorePlan;
+
+// One drive of a unit through the end-of-line run: identify it, check that it is an allowed
+// model, variant and firmware, write only the recipe's settings that differ (Restorer: in
+// dependency order, each read back, the DC controller's stored), read every setting of the
+// recipe back once more, then run its steps (EolStepRunner). The first failure ends it; a
+// drive whose motor may be turning is stopped first.
+class EolDriveRun : public QObject
+{
+    Q_OBJECT
+public:
+    enum class Phase
+    {
+        Identify,
+        Write,
+        Verify,
+        Test,
+        Done
+    };
+
+    EolDriveRun(ModbusClient* client, const ProfileRegistry& registry, RunControl* run,
+                const RecipePosition& position, int index, QHash<QString, double> unitValues,
+                const EolStepRunner::Timing& timing, QObject* parent = nullptr);
+    ~EolDriveRun() override;
+
+    // `done` runs once, never before start() returns.
+    void start(std::function<void()> done);
+    // Ends the run with `reason` (the motor stopped first when it may be turning).
+    void abort(const QString& reason);
+
+    int machineNumber() const { return m_position.machineNumber; }
+    QString title() const; // "position 1 (machine number 1)"
+    Phase phase() const { return m_phase; }
+    bool ok() const { return m_ok; }
+    QString failure() const { return m_failure; }
+    bool stopConfirmed() const { return m_stopConfirmed; }
+    QString stopDetail() const { return m_stopDetail; }
+    const UnitDrive& drive() const { return m_drive; }
+    const QVector<WrittenValue>& writtenValues() const { return m_written; }
+    const QVector<Measurement>& measurements() const { return m_measurements; }
+
+signals:
+    void phaseChanged(int machineNumber, opentop::EolDriveRun::Phase phase, const QString& text);
+    void measured(const opentop::Measurement& measurement);
+    void speedSampled(int machineNumber, double speed, const QString& unit);
+
+private:
+    void identified(const DeviceInfo& info);
+    void write();
+    void written(const RestorePlan& plan);
+    void verify();
+    void test();
+    void setPhase(Phase phase, const QString& text);
+    void fail(const QString& reason);
+    void finish();
+
+    ModbusClient* m_client;
+    const ProfileRegistry& m_registry;
+    RunControl* m_run;
+    RecipePosition m_position;
+    int m_index;
+    QHash<QString, double> m_unitValues;
+    EolStepRunner::Timing m_timing;
+    std::function<void()> m_done;
+    Phase m_phase = Phase::Identify;
+    bool m_ok = false;
+    bool m_ended = false;
+    QString m_failure;
+    bool m_stopConfirmed = true;
+    QString m_stopDetail;
+    UnitDrive m_drive;
+    BackupDevice m_target;
+    QVector<WrittenValue> m_written;
+    QVector<Measurement> m_measurements;
+    DeviceSession* m_session = nullptr;
+    Restorer* m_restorer = nullptr;
+    EolStepRunner* m_steps = nullptr;
+};
+
+} // namespace opentop
+
+Q_DECLARE_METATYPE(opentop::EolDriveRun::Phase)

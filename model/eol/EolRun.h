@@ -1,0 +1,93 @@
+#pragma once
+
+#include "eol/EolDriveRun.h"
+#include "eol/Recipe.h"
+#include "eol/UnitRecord.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QHash>
+#include <QObject>
+#include <functional>
+#include <memory>
+
+namespace opentop {
+
+class ModbusClient;
+class ProfileRegistry;
+class ResultStore;
+class RunControl;
+class TrafficLog;
+
+// One unit through the end-of-line station: every drive of the recipe at once (EolDriveRun),
+// so one drive ramps while the next is written and the bus is shared between them; the first
+// failure ends the others (their motors stopped) and is the unit's reason. With a ResultStore,
+// the unit's record is committed as running before anything is sent and completed in one
+// transaction at the end, so a station killed mid-unit never leaves a partial pass.
+class EolRun : public QObject
+{
+    Q_OBJECT
+public:
+    struct Options
+    {
+        QString serial;
+        QString station;
+        QString operatorName;
+        QString recipeChecksum; // as the recipe file carries it
+        // This unit's per-unit values: machine number → parameter → engineering value.
+        QHash<int, QHash<QString, double>> unitValues;
+        EolStepRunner::Timing timing;
+        ResultStore* store = nullptr;  // none: nothing recorded
+        TrafficLog* traffic = nullptr; // decoded traffic around a failure goes into the record
+        int trafficLines = 60;
+    };
+    using Done = std::function<void(const UnitRecord&)>;
+
+    EolRun(ModbusClient* client, const ProfileRegistry& registry, const Recipe& recipe,
+           const Options& options, QObject* parent = nullptr);
+    ~EolRun() override;
+
+    // `done` runs once with the unit's record, never before start() returns. A record that
+    // could not be stored says so in storeError().
+    void start(Done done);
+    // Cancels the unit: every motor that may be turning is stopped first.
+    void cancel(const QString& reason = QString());
+    // The port is gone: the same as cancel, naming it.
+    void connectionLost(const QString& error);
+    bool isRunning() const { return bool(m_done); }
+    const UnitRecord& record() const { return m_record; }
+    QString storeError() const { return m_storeError; }
+    // Drives whose motor may still be turning after the run (not confirmed stopped).
+    QStringList unconfirmedStops() const { return m_unconfirmed; }
+    qint64 elapsedMs() const { return m_elapsed.elapsed(); }
+
+signals:
+    void phaseChanged(int machineNumber, opentop::EolDriveRun::Phase phase, const QString& text);
+    void measured(const opentop::Measurement& measurement);
+    void speedSampled(int machineNumber, double speed, const QString& unit);
+    void finished(const opentop::UnitRecord& record);
+
+private:
+    // Why the recipe or this unit's values may not be run; empty when they may.
+    QString problemOf() const;
+    void driveDone(EolDriveRun* drive);
+    void finish();
+    QStringList trafficLines() const;
+
+    ModbusClient* m_client;
+    const ProfileRegistry& m_registry;
+    Recipe m_recipe;
+    Options m_options;
+    RunControl* m_run;
+    QVector<EolDriveRun*> m_drives;
+    int m_remaining = 0;
+    QString m_firstFailure;
+    bool m_cancelled = false;
+    QStringList m_unconfirmed;
+    UnitRecord m_record;
+    QString m_storeError;
+    QElapsedTimer m_elapsed;
+    Done m_done;
+};
+
+} // namespace opentop
