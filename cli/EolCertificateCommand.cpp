@@ -36,9 +36,7 @@ QList<QCommandLineOption> EolCertificateCommand::options() const
         {QStringLiteral("db"), tr("The results database (see results)."), tr("URL")},
         {QStringLiteral("id"), tr("certificate: the record with this id instead of the newest."),
          tr("ID")},
-        {{QStringLiteral("o"), QStringLiteral("output")},
-         tr("The file to write (recipe create; results --csv; certificate)."),
-         tr("FILE")},
+        EolSupport::outputOption(),
     };
 }
 

@@ -42,9 +42,7 @@ QList<QCommandLineOption> EolRecipeCreateCommand::options() const
          tr("LIST")},
         {QStringLiteral("product"), tr("recipe create: the product's name."), tr("NAME")},
         {QStringLiteral("revision"), tr("recipe create: the recipe's revision."), tr("REV")},
-        {{QStringLiteral("o"), QStringLiteral("output")},
-         tr("The file to write (recipe create; results --csv; certificate)."),
-         tr("FILE")},
+        EolSupport::outputOption(),
         {QStringLiteral("force"), tr("recipe create: replace an existing recipe file.")},
     };
 }

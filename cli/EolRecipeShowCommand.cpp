@@ -132,7 +132,6 @@ void EolRecipeShowCommand::printPosition(CliContext& context, const Recipe& reci
             settings.addRow({QStringLiteral("  ") + EolSupport::label(profile, s.name), value,
                              unitOf(profile, position, s)});
         }
-        settings.setRightAligned(1);
         settings.print(out);
     }
     if (!position.unitValues.isEmpty()) {

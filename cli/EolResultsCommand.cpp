@@ -82,6 +82,7 @@ QList<QCommandLineOption> EolResultsCommand::options() const
          tr("V")},
         {QStringLiteral("station"), tr("results: only this station."), tr("NAME")},
         {QStringLiteral("limit"), tr("results: only the newest N units."), tr("N")},
+        EolSupport::outputOption(),
         {QStringLiteral("csv"), tr("results: CSV (RFC 4180) on standard output or to -o FILE.")},
         {QStringLiteral("yield"),
          tr("results: first-pass yield and failure reasons per recipe and per shift.")},
@@ -108,7 +109,8 @@ QDateTime EolResultsCommand::parseTime(const QString& text, const QDateTime& now
         return now.toLocalTime().date().startOfDay().toUTC();
     if (t == QLatin1String("yesterday"))
         return now.toLocalTime().date().addDays(-1).startOfDay().toUTC();
-    const QDate date = QDate::fromString(t, Qt::ISODate);
+    // QDate reads the date of a date and time too: a date alone is ten characters.
+    const QDate date = t.size() == 10 ? QDate::fromString(t, Qt::ISODate) : QDate();
     if (date.isValid())
         return date.startOfDay().toUTC();
     QString iso = t;

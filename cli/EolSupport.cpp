@@ -127,6 +127,13 @@ QString EolSupport::countsText(const Recipe& recipe)
     return parts.join(QStringLiteral(", "));
 }
 
+QCommandLineOption EolSupport::outputOption()
+{
+    return {{QStringLiteral("o"), QStringLiteral("output")},
+            tr("The file to write (recipe create; results --csv; certificate)."),
+            tr("FILE")};
+}
+
 QString EolSupport::defaultDatabase()
 {
     return QDir(QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation))

@@ -3,6 +3,7 @@
 #include "eol/Recipe.h"
 #include "eol/RecipeChecker.h"
 
+#include <QCommandLineOption>
 #include <QCoreApplication>
 #include <QJsonArray>
 #include <memory>
@@ -48,6 +49,8 @@ public:
     // why it cannot be opened (the URL without its password) and sets *exitCode (2 for a
     // wrong URL or a SQLite file that does not exist, 1 for one that cannot be opened).
     static std::unique_ptr<ResultDatabase> openDatabase(CliContext& context, int* exitCode);
+    // -o FILE, which several subcommands take.
+    static QCommandLineOption outputOption();
     // $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
     static QString defaultDatabase();
 
