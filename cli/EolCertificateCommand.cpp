@@ -92,9 +92,9 @@ int EolCertificateCommand::run(CliContext& context, const QStringList& args)
     if (byId) {
         record = queries.load(id, &error);
         if (!record) {
-            context.err() << tr("error: no record %1 in %2 (%3)")
-                                 .arg(id, db->url().displayText(), error)
-                          << Qt::endl;
+            context.err()
+                << tr("error: no record %1 in %2 (%3)").arg(id, db->url().displayText(), error)
+                << Qt::endl;
             return ExitInvalid;
         }
         if (!serial.isEmpty() && record->serial != serial) {

@@ -102,8 +102,7 @@ int EolRecipeCheckCommand::run(CliContext& context, const QStringList& args)
         context.out() << tr("valid: %1 revision %2: %3")
                              .arg(recipe.product, recipe.revision, EolSupport::countsText(recipe));
         if (!unitsPath.isEmpty())
-            context.out() << tr("; %n unit(s) of %1 checked", nullptr, unitsChecked)
-                                 .arg(unitsPath);
+            context.out() << tr("; %n unit(s) of %1 checked", nullptr, unitsChecked).arg(unitsPath);
         context.out() << Qt::endl;
     }
     return ExitOk;

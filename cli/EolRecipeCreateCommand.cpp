@@ -78,9 +78,9 @@ EolRecipeCreateCommand::readDrives(CliContext& context, const QVector<int>& ids,
         for (const QString& f : result.failures)
             context.err() << tr("error: %1: cannot read %2").arg(title, f) << Qt::endl;
         for (const QString& d : result.disallowed)
-            context.err() << tr("error: %1 holds a value its profile does not allow: %2")
-                                 .arg(title, d)
-                          << Qt::endl;
+            context.err()
+                << tr("error: %1 holds a value its profile does not allow: %2").arg(title, d)
+                << Qt::endl;
         if (!result.ok) {
             context.err() << tr("nothing written") << Qt::endl;
             *exitCode = result.failures.isEmpty() ? ExitInvalid : ExitCommunication;
@@ -118,8 +118,7 @@ int EolRecipeCreateCommand::run(CliContext& context, const QStringList& args)
         return usage(tr("give the recipe file to write with -o RECIPE"));
     if (QFileInfo::exists(path) && !QFileInfo(path).isDir() &&
         !parser.isSet(QStringLiteral("force"))) {
-        context.err() << tr("error: %1 exists; give --force to replace it").arg(path)
-                      << Qt::endl;
+        context.err() << tr("error: %1 exists; give --force to replace it").arg(path) << Qt::endl;
         return ExitUsage;
     }
     if (const QString problem = OutputFile::problem(path); !problem.isEmpty()) {
@@ -132,8 +131,8 @@ int EolRecipeCreateCommand::run(CliContext& context, const QStringList& args)
     std::optional<Recipe> recipe;
     int code = ExitOk;
     if (fromBackup) {
-        const std::optional<BackupFile> file = FileCommandSupport::load(
-            context, parser.value(QStringLiteral("from-backup")), &code);
+        const std::optional<BackupFile> file =
+            FileCommandSupport::load(context, parser.value(QStringLiteral("from-backup")), &code);
         if (!file)
             return code;
         recipe = builder.fromBackup(*file, product, revision, &error);
@@ -153,7 +152,8 @@ int EolRecipeCreateCommand::run(CliContext& context, const QStringList& args)
         return ExitInvalid;
     }
 
-    const QVector<RecipeProblem> problems = RecipeChecker(ProfileRegistry::builtIn()).check(*recipe);
+    const QVector<RecipeProblem> problems =
+        RecipeChecker(ProfileRegistry::builtIn()).check(*recipe);
     if (!RecipeFile::save(*recipe, path, &error)) {
         context.err() << tr("error: %1").arg(error) << Qt::endl;
         return ExitUsage;

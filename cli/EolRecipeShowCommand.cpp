@@ -45,8 +45,8 @@ QString unitOfValue(const Profile* profile, const RecipePosition& position,
     if (!v.unit.isEmpty() || !profile)
         return v.unit;
     const ParameterMeta* meta = profile->parameter(v.name);
-    return meta ? meta->specFor(RecipeChecker::contextOf(*profile, position,
-                                                         position.variants.value(0)))
+    return meta ? meta->specFor(
+                          RecipeChecker::contextOf(*profile, position, position.variants.value(0)))
                       .unit
                 : QString();
 }
@@ -64,10 +64,10 @@ QString EolRecipeShowCommand::limitText(const Profile* profile, const RecipeLimi
     m.lower = limit.lower;
     m.upper = limit.upper;
     m.unit = limit.unit;
-    const QString what = limit.statistic == QLatin1String("value")
-                             ? tr("'%1'").arg(EolSupport::label(profile, limit.parameter))
-                             : tr("'%1' %2").arg(EolSupport::label(profile, limit.parameter),
-                                                 limit.statistic);
+    const QString what =
+        limit.statistic == QLatin1String("value")
+            ? tr("'%1'").arg(EolSupport::label(profile, limit.parameter))
+            : tr("'%1' %2").arg(EolSupport::label(profile, limit.parameter), limit.statistic);
     return tr("%1: %2").arg(what, CertificateHtml::limitsText(m));
 }
 
@@ -82,15 +82,15 @@ QString EolRecipeShowCommand::stepText(const Profile* profile, const RecipeStep&
     case Type::Select:
         return tr("%1 SPno%2").arg(title).arg(step.spno);
     case Type::Speed:
-        return tr("%1 to %2").arg(title, EolSupport::withUnit(EolSupport::number(step.speed),
-                                                              step.unit));
+        return tr("%1 to %2")
+            .arg(title, EolSupport::withUnit(EolSupport::number(step.speed), step.unit));
     case Type::Start:
         return tr("%1 %2").arg(title, step.direction.toUpper());
     case Type::WaitSpeed: {
         const QString tolerance = EolSupport::withUnit(
             QStringLiteral("± ") + EolSupport::number(step.tolerance), step.unit);
-        const QString target = step.target ? EolSupport::number(*step.target)
-                                           : tr("the drive's target speed");
+        const QString target =
+            step.target ? EolSupport::number(*step.target) : tr("the drive's target speed");
         return tr("%1 %2 %3 within %4 s")
             .arg(title, target, tolerance, EolSupport::number(step.timeout));
     }
@@ -127,8 +127,8 @@ void EolRecipeShowCommand::printPosition(CliContext& context, const Recipe& reci
     } else {
         TextTable settings({tr("  setting"), tr("value"), tr("unit")});
         for (const RecipeSetting& s : position.settings) {
-            const QString value = s.value.isDouble() ? EolSupport::number(s.value.toDouble())
-                                                     : s.value.toString();
+            const QString value =
+                s.value.isDouble() ? EolSupport::number(s.value.toDouble()) : s.value.toString();
             settings.addRow({QStringLiteral("  ") + EolSupport::label(profile, s.name), value,
                              unitOf(profile, position, s)});
         }

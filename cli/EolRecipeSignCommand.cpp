@@ -63,18 +63,18 @@ int EolRecipeSignCommand::run(CliContext& context, const QStringList& args)
     }
     const QString checksum = RecipeFile::checksumOf(loaded->recipe);
     if (context.json())
-        FileCommandSupport::printJson(context,
-                                      {{QStringLiteral("command"), QStringLiteral("eol recipe sign")},
-                                       {QStringLiteral("file"), path},
-                                       {QStringLiteral("signed"), true},
-                                       {QStringLiteral("changed"), !loaded->signedOk},
-                                       {QStringLiteral("checksum"), checksum}});
+        FileCommandSupport::printJson(
+            context, {{QStringLiteral("command"), QStringLiteral("eol recipe sign")},
+                      {QStringLiteral("file"), path},
+                      {QStringLiteral("signed"), true},
+                      {QStringLiteral("changed"), !loaded->signedOk},
+                      {QStringLiteral("checksum"), checksum}});
     else if (loaded->signedOk)
         context.out() << tr("%1 is signed already (%2); nothing changed").arg(path, checksum)
                       << Qt::endl;
     else
-        context.out() << tr("signed %1: %2 revision %3, %4").arg(path, loaded->recipe.product,
-                                                                 loaded->recipe.revision, checksum)
+        context.out() << tr("signed %1: %2 revision %3, %4")
+                             .arg(path, loaded->recipe.product, loaded->recipe.revision, checksum)
                       << Qt::endl;
     return ExitOk;
 }

@@ -149,9 +149,9 @@ std::optional<ResultFilter> EolResultsCommand::filter(CliContext& context)
         (option == QLatin1String("since") ? f.from : f.to) = time;
     }
     if (f.from.isValid() && f.to.isValid() && f.from >= f.to)
-        return usage(tr("--since %1 is not before --until %2")
-                         .arg(parser.value(QStringLiteral("since")),
-                              parser.value(QStringLiteral("until"))));
+        return usage(
+            tr("--since %1 is not before --until %2")
+                .arg(parser.value(QStringLiteral("since")), parser.value(QStringLiteral("until"))));
     if (parser.isSet(QStringLiteral("verdict"))) {
         const QString text = parser.value(QStringLiteral("verdict")).trimmed().toLower();
         f.status = unitStatusFromName(text);
@@ -259,9 +259,9 @@ int EolResultsCommand::run(CliContext& context, const QStringList& args)
 {
     const QCommandLineParser& parser = context.parser();
     if (!args.isEmpty()) {
-        context.err() << tr("error: unexpected argument \"%1\"; usage: eol %2")
-                             .arg(args.first(), synopsis())
-                      << Qt::endl;
+        context.err()
+            << tr("error: unexpected argument \"%1\"; usage: eol %2").arg(args.first(), synopsis())
+            << Qt::endl;
         return ExitUsage;
     }
     const bool csv = parser.isSet(QStringLiteral("csv"));
@@ -284,9 +284,9 @@ int EolResultsCommand::run(CliContext& context, const QStringList& args)
         const std::optional<ShiftPlan> given = ShiftPlan::parse(
             parser.value(QStringLiteral("shifts")), QTimeZone::systemTimeZone(), &error);
         if (!given) {
-            context.err() << tr("error: --shifts %1: %2")
-                                 .arg(parser.value(QStringLiteral("shifts")), error)
-                          << Qt::endl;
+            context.err()
+                << tr("error: --shifts %1: %2").arg(parser.value(QStringLiteral("shifts")), error)
+                << Qt::endl;
             return ExitUsage;
         }
         plan = *given;

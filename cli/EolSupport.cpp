@@ -53,9 +53,9 @@ EolSupport::loadRecipe(CliContext& context, const QString& path, bool allowUnsig
         resigned.remove(QStringLiteral("checksum"));
         resigned.insert(QStringLiteral("checksum"), BackupFile::checksumOf(resigned));
         QString resignedError;
-        std::optional<Recipe> recipe = RecipeFile::fromJson(
-            QJsonDocument(resigned).toJson(QJsonDocument::Compact), &resignedError,
-            &loaded.checksum);
+        std::optional<Recipe> recipe =
+            RecipeFile::fromJson(QJsonDocument(resigned).toJson(QJsonDocument::Compact),
+                                 &resignedError, &loaded.checksum);
         if (recipe) {
             if (allowUnsigned) {
                 loaded.recipe = *recipe;
@@ -156,8 +156,7 @@ std::unique_ptr<ResultDatabase> EolSupport::openDatabase(CliContext& context, in
     QString error;
     const std::optional<ResultUrl> url = ResultUrl::parse(text, &error);
     if (!url) {
-        context.err() << tr("error: %1: %2").arg(from.isEmpty() ? text : from, error)
-                      << Qt::endl;
+        context.err() << tr("error: %1: %2").arg(from.isEmpty() ? text : from, error) << Qt::endl;
         *exitCode = ExitUsage;
         return nullptr;
     }

@@ -61,11 +61,16 @@ TEST_F(EolRecipeCommand, CreateFromBackupPassesCheckAndKeepsAnExistingFile)
                        QStringLiteral("dbu200@1,dcpid@7")});
     ASSERT_EQ(r.code, ExitOk) << qPrintable(r.err);
     const QString recipe = path("c200.json");
-    const QStringList create{QStringLiteral("eol"),       QStringLiteral("recipe"),
-                             QStringLiteral("create"),    QStringLiteral("--from-backup"),
-                             backup,                      QStringLiteral("--product"),
-                             QStringLiteral("Conveyor C-200"), QStringLiteral("--revision"),
-                             QStringLiteral("A"),         QStringLiteral("-o"),
+    const QStringList create{QStringLiteral("eol"),
+                             QStringLiteral("recipe"),
+                             QStringLiteral("create"),
+                             QStringLiteral("--from-backup"),
+                             backup,
+                             QStringLiteral("--product"),
+                             QStringLiteral("Conveyor C-200"),
+                             QStringLiteral("--revision"),
+                             QStringLiteral("A"),
+                             QStringLiteral("-o"),
                              recipe};
     r = runCli(create);
     ASSERT_EQ(r.code, ExitOk) << qPrintable(r.err);
@@ -100,12 +105,12 @@ TEST_F(EolRecipeCommand, CreateFromBackupPassesCheckAndKeepsAnExistingFile)
 TEST_F(EolRecipeCommand, CreateFromDrivesOnASimulatedBusPassesCheck)
 {
     const QString recipe = path("two.json");
-    CliRun r = runCli({QStringLiteral("eol"), QStringLiteral("recipe"), QStringLiteral("create"),
-                       QStringLiteral("--sim"), QStringLiteral("dbu200@1,dbu400@2"),
-                       QStringLiteral("--drives"), QStringLiteral("1,2"),
-                       QStringLiteral("--product"), QStringLiteral("Twin"),
-                       QStringLiteral("--revision"), QStringLiteral("3"), QStringLiteral("-o"),
-                       recipe, QStringLiteral("--json")});
+    CliRun r =
+        runCli({QStringLiteral("eol"), QStringLiteral("recipe"), QStringLiteral("create"),
+                QStringLiteral("--sim"), QStringLiteral("dbu200@1,dbu400@2"),
+                QStringLiteral("--drives"), QStringLiteral("1,2"), QStringLiteral("--product"),
+                QStringLiteral("Twin"), QStringLiteral("--revision"), QStringLiteral("3"),
+                QStringLiteral("-o"), recipe, QStringLiteral("--json")});
     ASSERT_EQ(r.code, ExitOk) << qPrintable(r.err);
     const QJsonObject json = QJsonDocument::fromJson(r.out.toUtf8()).object();
     EXPECT_TRUE(json.value(QStringLiteral("valid")).toBool()) << qPrintable(r.out);
@@ -262,7 +267,8 @@ TEST_F(EolRecipeCommand, ShowListsLabelsWithUnitsAndStepsInWords)
     CliRun r = runCli({QStringLiteral("eol"), QStringLiteral("recipe"), QStringLiteral("show"),
                        example("recipe-dbu200.json")});
     ASSERT_EQ(r.code, ExitOk) << qPrintable(r.err);
-    EXPECT_TRUE(r.out.startsWith(QStringLiteral("Conveyor C-200, revision A"))) << qPrintable(r.out);
+    EXPECT_TRUE(r.out.startsWith(QStringLiteral("Conveyor C-200, revision A")))
+        << qPrintable(r.out);
     EXPECT_TRUE(r.out.contains(QStringLiteral("DBU200-D  1.5"))) << qPrintable(r.out);
     const QStringList lines = r.out.split(QLatin1Char('\n'));
     auto line = [&](const QString& start) {
@@ -292,8 +298,8 @@ TEST_F(EolRecipeCommand, ShowListsLabelsWithUnitsAndStepsInWords)
     const QJsonObject json = QJsonDocument::fromJson(r.out.toUtf8()).object();
     EXPECT_EQ(json.value(QStringLiteral("recipe")).toObject().value(QStringLiteral("product")),
               QStringLiteral("Lift L-1"));
-    EXPECT_TRUE(json.value(QStringLiteral("checksum")).toString().startsWith(
-        QStringLiteral("sha256:")));
+    EXPECT_TRUE(
+        json.value(QStringLiteral("checksum")).toString().startsWith(QStringLiteral("sha256:")));
     EXPECT_FALSE(json.value(QStringLiteral("labels"))
                      .toObject()
                      .value(QStringLiteral("config.stall_time"))
@@ -347,9 +353,9 @@ TEST_F(EolRecipeCommand, WrongArgumentsAreUsageErrorsNamingTheProblem)
 
     const CliRun help = runCli({QStringLiteral("help"), QStringLiteral("eol")});
     EXPECT_EQ(help.code, ExitOk);
-    for (const char* sub : {"eol recipe create", "eol recipe check RECIPE [--units CSV]",
-                            "eol recipe sign RECIPE", "eol recipe show RECIPE", "eol results",
-                            "eol certificate SERIAL"})
+    for (const char* sub :
+         {"eol recipe create", "eol recipe check RECIPE [--units CSV]", "eol recipe sign RECIPE",
+          "eol recipe show RECIPE", "eol results", "eol certificate SERIAL"})
         EXPECT_TRUE(help.out.contains(QString::fromLatin1(sub))) << sub << qPrintable(help.out);
     EXPECT_EQ(runCli({QStringLiteral("eol"), QStringLiteral("--help")}).out, help.out);
     EXPECT_TRUE(runCli({QStringLiteral("--help")}).out.contains(QStringLiteral("eol recipe|")));

@@ -55,8 +55,7 @@ protected:
         add("S3", UnitStatus::Interrupted, 4, "pump A", "station-1");
         add("S2", UnitStatus::Pass, 6, "pump A", "station-1");
         add("S4", UnitStatus::Aborted, 8, "pump B", "station-2");
-        ASSERT_EQ(store.markInterrupted(QStringLiteral("station-1"), base.addSecs(3600), &error),
-                  1)
+        ASSERT_EQ(store.markInterrupted(QStringLiteral("station-1"), base.addSecs(3600), &error), 1)
             << qPrintable(error);
         stored[2].status = UnitStatus::Interrupted;
     }
@@ -98,9 +97,9 @@ TEST_F(EolResultsCommand, FiltersBySerialVerdictRecipeStationAndTime)
 {
     CliRun r = results({});
     ASSERT_EQ(r.code, ExitOk) << qPrintable(r.err);
-    EXPECT_EQ(serials(r), (QStringList{QStringLiteral("S1"), QStringLiteral("S2"),
-                                       QStringLiteral("S3"), QStringLiteral("S2"),
-                                       QStringLiteral("S4")}))
+    EXPECT_EQ(serials(r),
+              (QStringList{QStringLiteral("S1"), QStringLiteral("S2"), QStringLiteral("S3"),
+                           QStringLiteral("S2"), QStringLiteral("S4")}))
         << qPrintable(r.out);
     EXPECT_TRUE(r.out.contains(QStringLiteral("INTERRUPTED"))) << qPrintable(r.out);
     EXPECT_TRUE(r.out.contains(QStringLiteral("drive 2: speed min 1203 r/min below 1450 r/min")))
@@ -139,12 +138,13 @@ TEST_F(EolResultsCommand, FiltersBySerialVerdictRecipeStationAndTime)
 
 TEST_F(EolResultsCommand, CsvToStandardOutputAndToAFile)
 {
-    CliRun r = results({QStringLiteral("--csv"), QStringLiteral("--recipe"),
-                        QStringLiteral("pump A")});
+    CliRun r =
+        results({QStringLiteral("--csv"), QStringLiteral("--recipe"), QStringLiteral("pump A")});
     ASSERT_EQ(r.code, ExitOk) << qPrintable(r.err);
     const QStringList lines = r.out.split(QStringLiteral("\r\n"), Qt::SkipEmptyParts);
     ASSERT_EQ(lines.size(), 5) << qPrintable(r.out);
-    EXPECT_TRUE(lines.at(0).startsWith(QStringLiteral("unit_id,serial,"))) << qPrintable(lines.at(0));
+    EXPECT_TRUE(lines.at(0).startsWith(QStringLiteral("unit_id,serial,")))
+        << qPrintable(lines.at(0));
     EXPECT_TRUE(lines.at(2).contains(stored.at(1).id));
     EXPECT_TRUE(lines.at(2).contains(QStringLiteral(",fail,"))) << qPrintable(lines.at(2));
 
@@ -164,8 +164,8 @@ TEST_F(EolResultsCommand, CsvToStandardOutputAndToAFile)
 
 TEST_F(EolResultsCommand, YieldPerRecipeAndShiftWithFailureReasons)
 {
-    CliRun r = results({QStringLiteral("--yield"), QStringLiteral("--shifts"),
-                        QStringLiteral("06:00,18:00")});
+    CliRun r = results(
+        {QStringLiteral("--yield"), QStringLiteral("--shifts"), QStringLiteral("06:00,18:00")});
     ASSERT_EQ(r.code, ExitOk) << qPrintable(r.err);
     // pump A: S1, S2, S3 first tested; only S1 passed the first time; 4 records, 1 unfinished.
     bool found = false;
@@ -184,7 +184,8 @@ TEST_F(EolResultsCommand, YieldPerRecipeAndShiftWithFailureReasons)
 
     r = results({QStringLiteral("--yield"), QStringLiteral("--csv")});
     ASSERT_EQ(r.code, ExitOk) << qPrintable(r.err);
-    EXPECT_TRUE(r.out.startsWith(QStringLiteral("recipe,shift,serials,first_pass,"))) << qPrintable(r.out);
+    EXPECT_TRUE(r.out.startsWith(QStringLiteral("recipe,shift,serials,first_pass,")))
+        << qPrintable(r.out);
     EXPECT_TRUE(r.out.contains(QStringLiteral("pump B,,1,0,0,1,0,cancelled by the operator,1")))
         << qPrintable(r.out);
 
@@ -223,8 +224,8 @@ TEST_F(EolResultsCommand, WrongArgumentsAndDatabasesAreClearErrors)
             << qPrintable(c.args.join(QLatin1Char(' ')) + QStringLiteral(": ") + r.err);
     }
     const QString missing = dir.filePath(QStringLiteral("none.db"));
-    CliRun r = runCli({QStringLiteral("eol"), QStringLiteral("results"), QStringLiteral("--db"),
-                       missing});
+    CliRun r =
+        runCli({QStringLiteral("eol"), QStringLiteral("results"), QStringLiteral("--db"), missing});
     EXPECT_EQ(r.code, ExitUsage);
     EXPECT_TRUE(r.err.contains(QStringLiteral("no results database at %1").arg(missing)))
         << qPrintable(r.err);
@@ -306,11 +307,11 @@ TEST_F(EolResultsCommand, CertificateJsonIsTheStoredRecord)
 
 TEST_F(EolResultsCommand, CertificateOfAnUnknownSerialOrRecordIsAnError)
 {
-    CliRun r = runCli({QStringLiteral("eol"), QStringLiteral("certificate"),
-                       QStringLiteral("S99"), QStringLiteral("--db"), db,
-                       QStringLiteral("--json")});
+    CliRun r = runCli({QStringLiteral("eol"), QStringLiteral("certificate"), QStringLiteral("S99"),
+                       QStringLiteral("--db"), db, QStringLiteral("--json")});
     EXPECT_EQ(r.code, ExitInvalid);
-    EXPECT_TRUE(r.err.contains(QStringLiteral("no record of serial number S99"))) << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("no record of serial number S99")))
+        << qPrintable(r.err);
     EXPECT_TRUE(r.out.isEmpty());
     r = runCli({QStringLiteral("eol"), QStringLiteral("certificate"), QStringLiteral("--id"),
                 QStringLiteral("no-such-id"), QStringLiteral("--db"), db,
@@ -375,8 +376,8 @@ TEST_F(EolResultsCommand, CertificatePdfFromTheProgram)
 TEST_F(EolResultsCommand, CertificatePdfInAProgramWithoutGuiIsRefusedCleanly)
 {
     const CliRun r = runCli({QStringLiteral("eol"), QStringLiteral("certificate"),
-                             QStringLiteral("S1"), QStringLiteral("--db"), db,
-                             QStringLiteral("-o"), dir.filePath(QStringLiteral("x.pdf"))});
+                             QStringLiteral("S1"), QStringLiteral("--db"), db, QStringLiteral("-o"),
+                             dir.filePath(QStringLiteral("x.pdf"))});
     EXPECT_EQ(r.code, ExitUsage);
     EXPECT_TRUE(r.err.contains(QStringLiteral("--json"))) << qPrintable(r.err);
     EXPECT_FALSE(QFile::exists(dir.filePath(QStringLiteral("x.pdf"))));
