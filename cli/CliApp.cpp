@@ -81,36 +81,72 @@ QString CliApp::helpText(const QString& program) const
     return text;
 }
 
+bool CliApp::needsGui(const QStringList& arguments)
+{
+    // A certificate's PDF lays out text, which needs Qt Gui's font database (offscreen).
+    const int eol = int(arguments.indexOf(QStringLiteral("eol")));
+    return eol > 0 && arguments.indexOf(QStringLiteral("certificate"), eol) > eol;
+}
+
 int CliApp::run(const QStringList& arguments, QTextStream& out, QTextStream& err)
 {
     const QString program = QFileInfo(arguments.value(0, QStringLiteral("opentop-cli"))).fileName();
     QCommandLineParser parser;
-    parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     QSet<QString> global;
-    auto add = [&](const QCommandLineOption& o, QSet<QString>* names) {
-        parser.addOption(o);
-        for (const QString& n : o.names())
-            names->insert(n);
-    };
-    for (const QCommandLineOption& o : globalOptions())
-        add(o, &global);
-    ConnectionOptions::addTo(parser);
-    for (const QString& n : ConnectionOptions::names())
-        global.insert(n);
     QHash<QString, QSet<QString>> commandOptions;
-    QSet<QString> added = global;
-    for (const auto& c : m_commands) {
-        for (const QCommandLineOption& o : c->options()) {
+    // Each command's options are its own: a command's --csv may be a flag where another's takes
+    // a file. The line is read with the options of the command it names; when it names none
+    // (or holds another command's option), with every command's, to say what is wrong.
+    auto setUp = [&](QCommandLineParser& p, const CliCommand* only) {
+        p.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+        QSet<QString> added;
+        auto add = [&](const QCommandLineOption& o) {
+            p.addOption(o);
             for (const QString& n : o.names())
-                commandOptions[c->name()].insert(n);
-            if (!added.contains(o.names().first()))
-                add(o, &added);
+                added.insert(n);
+        };
+        for (const QCommandLineOption& o : globalOptions())
+            add(o);
+        ConnectionOptions::addTo(p);
+        for (const QString& n : ConnectionOptions::names())
+            added.insert(n);
+        global = added;
+        for (const auto& c : m_commands) {
+            if (only && c.get() != only)
+                continue;
+            for (const QCommandLineOption& o : c->options()) {
+                for (const QString& n : o.names())
+                    commandOptions[c->name()].insert(n);
+                if (!added.contains(o.names().first()))
+                    add(o);
+            }
         }
+    };
+    bool parsed = false;
+    for (const auto& c : m_commands) {
+        if (!arguments.contains(c->name()))
+            continue;
+        QCommandLineParser own;
+        setUp(own, c.get());
+        if (!own.parse(arguments))
+            continue;
+        QStringList positional = own.positionalArguments();
+        if (positional.value(0) == QLatin1String("help"))
+            positional.removeFirst();
+        if (positional.value(0) != c->name())
+            continue;
+        setUp(parser, c.get());
+        parser.parse(arguments);
+        parsed = true;
+        break;
     }
-    if (!parser.parse(arguments)) {
-        err << program << ": " << parser.errorText() << '\n'
-            << tr("Try \"%1 --help\".").arg(program) << Qt::endl;
-        return ExitUsage;
+    if (!parsed) {
+        setUp(parser, nullptr);
+        if (!parser.parse(arguments)) {
+            err << program << ": " << parser.errorText() << '\n'
+                << tr("Try \"%1 --help\".").arg(program) << Qt::endl;
+            return ExitUsage;
+        }
     }
     if (parser.isSet(QStringLiteral("version"))) {
         out << "opentop-cli " << OPENTOP_VERSION << Qt::endl;
@@ -138,6 +174,8 @@ int CliApp::run(const QStringList& arguments, QTextStream& out, QTextStream& err
     if (help) {
         out << tr("Usage: %1 [options] %2\n%3\n")
                    .arg(program, command->synopsis(), command->summary());
+        if (!command->details().isEmpty())
+            out << command->details() << '\n';
         for (const QCommandLineOption& o : command->options())
             out << QStringLiteral("  --%1%2  %3\n")
                        .arg(o.names().last(),

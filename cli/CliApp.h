@@ -19,6 +19,9 @@ public:
     ~CliApp();
 
     int run(const QStringList& arguments, QTextStream& out, QTextStream& err);
+    // True when the command line needs a QGuiApplication (offscreen) rather than a
+    // QCoreApplication: drawing a certificate's PDF (eol certificate).
+    static bool needsGui(const QStringList& arguments);
     const std::vector<std::unique_ptr<CliCommand>>& commands() const { return m_commands; }
 
 private:

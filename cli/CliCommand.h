@@ -19,6 +19,8 @@ public:
     virtual QString synopsis() const = 0; // "get ID NAME... | --group G | --all"
     virtual QString summary() const = 0;  // one line for the command list
     virtual QList<QCommandLineOption> options() const { return {}; }
+    // More lines for the command's own help (a command with subcommands lists them here).
+    virtual QString details() const { return {}; }
     // `args`: positional arguments after the command name. Returns an ExitCode.
     virtual int run(CliContext& context, const QStringList& args) = 0;
 };

@@ -9,6 +9,7 @@ CliCommandList makeCliCommands()
     addScanCommands(list);
     addFileCommands(list);
     addDriveCommands(list);
+    addEolCommands(list);
     return list;
 }
 

@@ -15,5 +15,6 @@ void addParameterCommands(CliCommandList& list); // ports, params, get, set
 void addScanCommands(CliCommandList& list);      // scan
 void addFileCommands(CliCommandList& list);      // backup, restore, compare
 void addDriveCommands(CliCommandList& list);     // monitor, alarms, run, stop-all
+void addEolCommands(CliCommandList& list);       // eol (recipes, results, certificates)
 
 } // namespace opentop

@@ -3,13 +3,26 @@
 #include "CliContext.h"
 
 #include <QCoreApplication>
+#include <QGuiApplication>
 #include <QLoggingCategory>
 #include <QTextStream>
 #include <cstdio>
+#include <memory>
 
 int main(int argc, char* argv[])
 {
-    QCoreApplication app(argc, argv);
+    QStringList arguments;
+    for (int i = 0; i < argc; ++i)
+        arguments << QString::fromLocal8Bit(argv[i]);
+    // Only a certificate's PDF needs Qt Gui (its text layout); it draws offscreen, never on a
+    // display, so it works over ssh and on a station without one.
+    std::unique_ptr<QCoreApplication> app;
+    if (opentop::CliApp::needsGui(arguments)) {
+        qputenv("QT_QPA_PLATFORM", QByteArrayLiteral("offscreen"));
+        app = std::make_unique<QGuiApplication>(argc, argv);
+    } else {
+        app = std::make_unique<QCoreApplication>(argc, argv);
+    }
     // Every failure reaches the user as the command's own message; the modules' log lines are
     // for developers (QT_LOGGING_RULES="opentop.*=true" shows them again).
     QLoggingCategory::setFilterRules(QStringLiteral("opentop.*.warning=false"));

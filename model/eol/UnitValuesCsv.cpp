@@ -6,6 +6,7 @@
 #include <QFile>
 #include <QLocale>
 #include <QSet>
+#include <algorithm>
 #include <cmath>
 
 namespace opentop {
@@ -148,6 +149,15 @@ std::optional<UnitValuesCsv> UnitValuesCsv::load(const QString& path, QString* e
     if (!csv && error)
         *error = tr("%1: %2").arg(path, *error);
     return csv;
+}
+
+QStringList UnitValuesCsv::serials() const
+{
+    QStringList list = m_rows.keys();
+    std::sort(list.begin(), list.end(), [this](const QString& a, const QString& b) {
+        return m_lines.value(a) < m_lines.value(b);
+    });
+    return list;
 }
 
 int UnitValuesCsv::columnOf(const Recipe& recipe, int machineNumber, const QString& parameter) const

@@ -37,6 +37,7 @@ public:
 
     QStringList columns() const { return m_columns; }
     int rows() const { return int(m_rows.size()); }
+    QStringList serials() const; // in file order
     bool contains(const QString& serial) const { return m_rows.contains(serial.trimmed()); }
 
     // Every per-unit value of `recipe` whose source is the CSV, for the unit `serial`, each

@@ -1,0 +1,147 @@
+#include "EolCertificateCommand.h"
+
+#include "CertificatePdf.h"
+#include "CliContext.h"
+#include "EolSupport.h"
+#include "ExitCode.h"
+#include "eol/CertificateHtml.h"
+#include "eol/ResultDatabase.h"
+#include "eol/ResultQueries.h"
+#include "eol/UnitRecordJson.h"
+#include "files/OutputFile.h"
+
+#include <QCoreApplication>
+#include <QGuiApplication>
+#include <QRegularExpression>
+
+namespace opentop {
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("opentop::EolCertificateCommand", text);
+}
+
+} // namespace
+
+QString EolCertificateCommand::summary() const
+{
+    return tr("A unit's certificate: its newest record as a PDF, or as JSON with --json");
+}
+
+QList<QCommandLineOption> EolCertificateCommand::options() const
+{
+    return {
+        {QStringLiteral("db"), tr("The results database (see results)."), tr("URL")},
+        {QStringLiteral("id"), tr("certificate: the record with this id instead of the newest."),
+         tr("ID")},
+        EolSupport::outputOption(),
+    };
+}
+
+QString EolCertificateCommand::defaultFile(const QString& serial)
+{
+    QString name = serial;
+    name.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9._-]")), QStringLiteral("_"));
+    if (name.startsWith(QLatin1Char('.')))
+        name.prepend(QLatin1Char('_'));
+    return name + QStringLiteral(".pdf");
+}
+
+int EolCertificateCommand::run(CliContext& context, const QStringList& args)
+{
+    const QCommandLineParser& parser = context.parser();
+    const QString id = parser.value(QStringLiteral("id")).trimmed();
+    const bool byId = parser.isSet(QStringLiteral("id"));
+    if (args.size() > 1 || (args.isEmpty() && !byId) || (byId && id.isEmpty())) {
+        context.err() << tr("error: name one serial number, or a record with --id ID; usage: "
+                            "eol %1")
+                             .arg(synopsis())
+                      << Qt::endl;
+        return ExitUsage;
+    }
+    const QString serial = args.value(0).trimmed();
+    if (!args.isEmpty() && serial.isEmpty()) {
+        context.err() << tr("error: the serial number is empty") << Qt::endl;
+        return ExitUsage;
+    }
+    const QString path = parser.value(QStringLiteral("o"));
+    if (!path.isEmpty()) {
+        if (const QString problem = OutputFile::problem(path); !problem.isEmpty()) {
+            context.err() << tr("error: %1").arg(problem) << Qt::endl;
+            return ExitUsage;
+        }
+    }
+    const bool pdf = !context.json();
+    if (pdf && !qobject_cast<QGuiApplication*>(QCoreApplication::instance())) {
+        // opentop-cli makes a QGuiApplication for this command (CliApp::needsGui).
+        context.err() << tr("error: this program cannot draw a PDF (no Qt GUI application); "
+                            "use --json")
+                      << Qt::endl;
+        return ExitUsage;
+    }
+
+    int code = ExitOk;
+    const std::unique_ptr<ResultDatabase> db = EolSupport::openDatabase(context, &code);
+    if (!db)
+        return code;
+    ResultQueries queries(*db);
+    QString error;
+    std::optional<UnitRecord> record;
+    if (byId) {
+        record = queries.load(id, &error);
+        if (!record) {
+            context.err()
+                << tr("error: no record %1 in %2 (%3)").arg(id, db->url().displayText(), error)
+                << Qt::endl;
+            return ExitInvalid;
+        }
+        if (!serial.isEmpty() && record->serial != serial) {
+            context.err() << tr("error: record %1 is of serial number %2, not %3")
+                                 .arg(id, record->serial, serial)
+                          << Qt::endl;
+            return ExitUsage;
+        }
+    } else {
+        const std::optional<QVector<UnitRecord>> history = queries.history(serial, &error);
+        if (!history) {
+            context.err() << tr("error: %1: %2").arg(db->url().displayText(), error) << Qt::endl;
+            return ExitCommunication;
+        }
+        if (history->isEmpty()) {
+            context.err() << tr("error: no record of serial number %1 in %2")
+                                 .arg(serial, db->url().displayText())
+                          << Qt::endl;
+            return ExitInvalid;
+        }
+        record = history->last(); // oldest first
+    }
+
+    if (!pdf) {
+        const QByteArray json = UnitRecordJson::toBytes(*record);
+        if (path.isEmpty()) {
+            context.out() << QString::fromUtf8(json);
+            context.out().flush();
+            return ExitOk;
+        }
+        if (!OutputFile::write(path, json, &error)) {
+            context.err() << tr("error: %1").arg(error) << Qt::endl;
+            return ExitUsage;
+        }
+        context.err() << tr("wrote %1").arg(path) << Qt::endl;
+        return ExitOk;
+    }
+    const QString file = path.isEmpty() ? defaultFile(record->serial) : path;
+    if (!CertificatePdf::save(*record, file, &error)) {
+        context.err() << tr("error: %1").arg(error) << Qt::endl;
+        return ExitUsage;
+    }
+    context.out() << tr("wrote %1: serial number %2, %3, recorded %4")
+                         .arg(file, record->serial, CertificateHtml::verdictText(record->status),
+                              UnitRecordJson::timeText(record->started))
+                  << Qt::endl;
+    return ExitOk;
+}
+
+} // namespace opentop

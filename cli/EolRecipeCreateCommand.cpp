@@ -1,0 +1,191 @@
+#include "EolRecipeCreateCommand.h"
+
+#include "CliContext.h"
+#include "EolSupport.h"
+#include "ExitCode.h"
+#include "FileCommandSupport.h"
+#include "ModbusClient.h"
+#include "eol/RecipeBuilder.h"
+#include "eol/RecipeFile.h"
+#include "files/BackupReader.h"
+#include "files/OutputFile.h"
+#include "profile/ProfileRegistry.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QJsonObject>
+
+namespace opentop {
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("opentop::EolRecipeCreateCommand", text);
+}
+
+} // namespace
+
+QString EolRecipeCreateCommand::summary() const
+{
+    return tr("Make a recipe from a golden unit: a backup file or drives on the bus");
+}
+
+QList<QCommandLineOption> EolRecipeCreateCommand::options() const
+{
+    return {
+        {QStringLiteral("from-backup"), tr("recipe create: the golden unit's backup file."),
+         tr("FILE")},
+        {QStringLiteral("drives"),
+         tr("recipe create: the golden unit's drives on the bus, e.g. 1,2 (with the connection "
+            "options)."),
+         tr("LIST")},
+        {QStringLiteral("product"), tr("recipe create: the product's name."), tr("NAME")},
+        {QStringLiteral("revision"), tr("recipe create: the recipe's revision."), tr("REV")},
+        EolSupport::outputOption(),
+        {QStringLiteral("force"), tr("recipe create: replace an existing recipe file.")},
+    };
+}
+
+std::optional<QVector<BackupDevice>>
+EolRecipeCreateCommand::readDrives(CliContext& context, const QVector<int>& ids, int* exitCode)
+{
+    QVector<BackupDevice> devices;
+    for (int id : ids) {
+        QString error;
+        DeviceSession* session = context.session(id, &error);
+        if (!session) {
+            context.err() << tr("error: %1; nothing written").arg(error) << Qt::endl;
+            *exitCode = ExitCommunication;
+            return std::nullopt;
+        }
+        BackupReader reader(session);
+        BackupReader::Result result;
+        const bool completed = context.wait([&reader, &result](std::function<void()> finish) {
+            reader.read([&result, finish](const BackupReader::Result& r) {
+                result = r;
+                finish();
+            });
+        });
+        if (!completed) {
+            context.err()
+                << tr("interrupted while reading machine number %1: nothing written").arg(id)
+                << Qt::endl;
+            *exitCode = ExitInterrupted;
+            return std::nullopt;
+        }
+        const QString title = result.device.title();
+        for (const QString& f : result.failures)
+            context.err() << tr("error: %1: cannot read %2").arg(title, f) << Qt::endl;
+        for (const QString& d : result.disallowed)
+            context.err()
+                << tr("error: %1 holds a value its profile does not allow: %2").arg(title, d)
+                << Qt::endl;
+        if (!result.ok) {
+            context.err() << tr("nothing written") << Qt::endl;
+            *exitCode = result.failures.isEmpty() ? ExitInvalid : ExitCommunication;
+            return std::nullopt;
+        }
+        if (!context.json())
+            context.out() << tr("%1: %2 settings read").arg(title).arg(result.parameters)
+                          << Qt::endl;
+        devices << result.device;
+    }
+    return devices;
+}
+
+int EolRecipeCreateCommand::run(CliContext& context, const QStringList& args)
+{
+    const QCommandLineParser& parser = context.parser();
+    auto usage = [&](const QString& problem) {
+        context.err() << tr("error: %1; usage: eol %2").arg(problem, synopsis()) << Qt::endl;
+        return ExitUsage;
+    };
+    if (!args.isEmpty())
+        return usage(tr("unexpected argument \"%1\"").arg(args.first()));
+    const bool fromBackup = parser.isSet(QStringLiteral("from-backup"));
+    const bool fromDrives = parser.isSet(QStringLiteral("drives"));
+    if (fromBackup == fromDrives)
+        return usage(tr("give either --from-backup FILE or --drives LIST"));
+    const QString product = parser.value(QStringLiteral("product")).trimmed();
+    const QString revision = parser.value(QStringLiteral("revision")).trimmed();
+    if (product.isEmpty())
+        return usage(tr("give the product's name with --product NAME"));
+    if (revision.isEmpty())
+        return usage(tr("give the recipe's revision with --revision REV"));
+    const QString path = parser.value(QStringLiteral("o"));
+    if (path.isEmpty())
+        return usage(tr("give the recipe file to write with -o RECIPE"));
+    if (QFileInfo::exists(path) && !QFileInfo(path).isDir() &&
+        !parser.isSet(QStringLiteral("force"))) {
+        context.err() << tr("error: %1 exists; give --force to replace it").arg(path) << Qt::endl;
+        return ExitUsage;
+    }
+    if (const QString problem = OutputFile::problem(path); !problem.isEmpty()) {
+        context.err() << tr("error: %1; nothing read").arg(problem) << Qt::endl;
+        return ExitUsage;
+    }
+
+    const RecipeBuilder builder(ProfileRegistry::builtIn());
+    QString error;
+    std::optional<Recipe> recipe;
+    int code = ExitOk;
+    if (fromBackup) {
+        const std::optional<BackupFile> file =
+            FileCommandSupport::load(context, parser.value(QStringLiteral("from-backup")), &code);
+        if (!file)
+            return code;
+        recipe = builder.fromBackup(*file, product, revision, &error);
+    } else {
+        const auto ids = CliContext::parseIds(parser.value(QStringLiteral("drives")), &error);
+        if (!ids)
+            return usage(tr("--drives %1: %2").arg(parser.value(QStringLiteral("drives")), error));
+        if (!context.connectBus())
+            return ExitCommunication;
+        const std::optional<QVector<BackupDevice>> devices = readDrives(context, *ids, &code);
+        if (!devices)
+            return code;
+        recipe = builder.fromDevices(*devices, product, revision, &error);
+    }
+    if (!recipe) {
+        context.err() << tr("error: %1; nothing written").arg(error) << Qt::endl;
+        return ExitInvalid;
+    }
+
+    const QVector<RecipeProblem> problems =
+        RecipeChecker(ProfileRegistry::builtIn()).check(*recipe);
+    if (!RecipeFile::save(*recipe, path, &error)) {
+        context.err() << tr("error: %1").arg(error) << Qt::endl;
+        return ExitUsage;
+    }
+    if (context.json()) {
+        FileCommandSupport::printJson(
+            context, {{QStringLiteral("command"), QStringLiteral("eol recipe create")},
+                      {QStringLiteral("file"), path},
+                      {QStringLiteral("written"), true},
+                      {QStringLiteral("product"), recipe->product},
+                      {QStringLiteral("revision"), recipe->revision},
+                      {QStringLiteral("checksum"), RecipeFile::checksumOf(*recipe)},
+                      {QStringLiteral("positions"), int(recipe->positions.size())},
+                      {QStringLiteral("settings"), EolSupport::settingCount(*recipe)},
+                      {QStringLiteral("steps"), EolSupport::stepCount(*recipe)},
+                      {QStringLiteral("valid"), problems.isEmpty()},
+                      {QStringLiteral("problems"), EolSupport::problemsJson(problems)}});
+    } else {
+        context.out() << tr("wrote %1: %2 revision %3, %4")
+                             .arg(path, recipe->product, recipe->revision,
+                                  EolSupport::countsText(*recipe))
+                      << Qt::endl;
+        EolSupport::printProblems(context, problems);
+    }
+    if (!problems.isEmpty()) {
+        context.err() << tr("error: the recipe does not pass \"eol recipe check\": fix it, then "
+                            "sign it with \"opentop-cli eol recipe sign %1\"")
+                             .arg(path)
+                      << Qt::endl;
+        return ExitInvalid;
+    }
+    return ExitOk;
+}
+
+} // namespace opentop

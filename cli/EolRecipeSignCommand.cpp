@@ -1,0 +1,82 @@
+#include "EolRecipeSignCommand.h"
+
+#include "CliContext.h"
+#include "EolSupport.h"
+#include "ExitCode.h"
+#include "FileCommandSupport.h"
+#include "eol/RecipeFile.h"
+#include "profile/ProfileRegistry.h"
+
+#include <QCoreApplication>
+#include <QJsonObject>
+
+namespace opentop {
+
+namespace {
+
+QString tr(const char* text, const char* comment = nullptr, int n = -1)
+{
+    return QCoreApplication::translate("opentop::EolRecipeSignCommand", text, comment, n);
+}
+
+} // namespace
+
+QString EolRecipeSignCommand::summary() const
+{
+    return tr("Accept a recipe edited by hand: a new checksum, only when it passes check");
+}
+
+int EolRecipeSignCommand::run(CliContext& context, const QStringList& args)
+{
+    if (args.size() != 1) {
+        context.err() << tr("error: name one recipe file; usage: eol %1").arg(synopsis())
+                      << Qt::endl;
+        return ExitUsage;
+    }
+    const QString path = args.first();
+    int code = ExitOk;
+    const std::optional<EolSupport::LoadedRecipe> loaded =
+        EolSupport::loadRecipe(context, path, true, &code);
+    if (!loaded)
+        return code;
+    const QVector<RecipeProblem> problems =
+        RecipeChecker(ProfileRegistry::builtIn()).check(loaded->recipe);
+    if (!problems.isEmpty()) {
+        if (context.json())
+            FileCommandSupport::printJson(
+                context, {{QStringLiteral("command"), QStringLiteral("eol recipe sign")},
+                          {QStringLiteral("file"), path},
+                          {QStringLiteral("signed"), false},
+                          {QStringLiteral("problems"), EolSupport::problemsJson(problems)}});
+        else
+            EolSupport::printProblems(context, problems);
+        context.err() << tr("error: %1 does not pass check (%n problem(s)); not signed", nullptr,
+                            int(problems.size()))
+                             .arg(path)
+                      << Qt::endl;
+        return ExitInvalid;
+    }
+    QString error;
+    if (!loaded->signedOk && !RecipeFile::save(loaded->recipe, path, &error)) {
+        context.err() << tr("error: %1; not signed").arg(error) << Qt::endl;
+        return ExitUsage;
+    }
+    const QString checksum = RecipeFile::checksumOf(loaded->recipe);
+    if (context.json())
+        FileCommandSupport::printJson(
+            context, {{QStringLiteral("command"), QStringLiteral("eol recipe sign")},
+                      {QStringLiteral("file"), path},
+                      {QStringLiteral("signed"), true},
+                      {QStringLiteral("changed"), !loaded->signedOk},
+                      {QStringLiteral("checksum"), checksum}});
+    else if (loaded->signedOk)
+        context.out() << tr("%1 is signed already (%2); nothing changed").arg(path, checksum)
+                      << Qt::endl;
+    else
+        context.out() << tr("signed %1: %2 revision %3, %4")
+                             .arg(path, loaded->recipe.product, loaded->recipe.revision, checksum)
+                      << Qt::endl;
+    return ExitOk;
+}
+
+} // namespace opentop
