@@ -6,12 +6,14 @@
 #include "EolRecipeShowCommand.h"
 #include "EolRecipeSignCommand.h"
 #include "EolResultsCommand.h"
+#include "EolRunCommand.h"
 
 namespace opentop {
 
 void addEolCommands(CliCommandList& list)
 {
     auto eol = std::make_unique<EolCommand>();
+    eol->add(std::make_unique<EolRunCommand>());
     eol->add(std::make_unique<EolRecipeCreateCommand>());
     eol->add(std::make_unique<EolRecipeCheckCommand>());
     eol->add(std::make_unique<EolRecipeSignCommand>());

@@ -10,6 +10,7 @@ enum ExitCode : int
     ExitUsage = 2,         // wrong command line
     ExitInvalid = 3,       // a value or file refused by validation; nothing was written
     ExitMismatch = 4,      // a write read back differently, or a drive did not stop
+    ExitFail = 5,          // eol run: the unit failed its end-of-line test (it is recorded)
     ExitInterrupted = 130, // Ctrl-C; what was done is reported
 };
 

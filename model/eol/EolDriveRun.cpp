@@ -5,6 +5,7 @@
 #include "files/RestorePlan.h"
 #include "files/Restorer.h"
 #include "profile/ProfileRegistry.h"
+#include "profile/RoleEvaluator.h"
 #include "profile/ValueCodec.h"
 #include "session/DeviceIdentifier.h"
 #include "session/DeviceInfo.h"
@@ -111,7 +112,38 @@ void EolDriveRun::identified(const DeviceInfo& info)
     m_target.firmware = info.firmware;
     m_session = new DeviceSession(m_client, *profile, m_position.machineNumber, variant, this);
     m_session->setLabelsInMessages(true);
-    write();
+    checkStopped();
+}
+
+void EolDriveRun::checkStopped()
+{
+    // A motor still turning (left by a station that was killed mid-test, or started at the
+    // drive) is not this run's to stop: nothing is written or started, and the operator is told.
+    const ParameterMeta* running =
+        RoleEvaluator::parameter(m_session->profile(), QStringLiteral("running"));
+    if (!running) {
+        write();
+        return;
+    }
+    m_session->read(running->name, [this](const DeviceSession::Outcome& r) {
+        if (m_ended)
+            return;
+        if (!r.ok) {
+            fail(tr("cannot read whether the motor runs: %1").arg(r.error));
+            return;
+        }
+        const std::optional<bool> turning = RoleEvaluator::flag(
+            m_session->profile(), QStringLiteral("running"),
+            [&r](const QString&) { return std::optional<double>(r.value.raw); });
+        if (turning.value_or(false)) {
+            m_stopConfirmed = false;
+            m_stopDetail = tr("its motor was running before the test");
+            fail(tr("the motor is already running before the test (left by an interrupted run?); "
+                    "nothing was written: stop it first (STOP ALL, or at the drive)"));
+            return;
+        }
+        write();
+    });
 }
 
 void EolDriveRun::write()

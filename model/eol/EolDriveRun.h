@@ -66,6 +66,7 @@ signals:
 
 private:
     void identified(const DeviceInfo& info);
+    void checkStopped();
     void write();
     void written(const RestorePlan& plan);
     void verify();

@@ -168,8 +168,8 @@ void EolRun::finish()
     if (m_options.store && !m_record.id.isEmpty() &&
         !m_options.store->finishUnit(m_record, &m_storeError))
         qCWarning(lcModel) << "unit record not completed" << m_storeError;
-    qCInfo(lcModel) << "unit" << m_record.serial << unitStatusName(m_record.status) << "in"
-                    << m_elapsed.elapsed() << "ms" << m_record.failureReason;
+    qCDebug(lcModel) << "unit" << m_record.serial << unitStatusName(m_record.status) << "in"
+                     << m_elapsed.elapsed() << "ms" << m_record.failureReason;
     Done done = std::move(m_done);
     m_done = nullptr;
     emit finished(m_record);

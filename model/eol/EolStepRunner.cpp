@@ -436,7 +436,8 @@ void EolStepRunner::runNoAlarm()
         }
         const QHash<QString, ParamValue> values{{r.parameter, r.value}};
         const bool now = alarmIn(values);
-        record(tr("alarm"), now || m_alarmSeen ? 1 : 0, QString(), 0.0, 0.0, !now && !m_alarmSeen);
+        record(tr("alarms raised"), now || m_alarmSeen ? 1 : 0, QString(), std::nullopt, 0.0,
+               !now && !m_alarmSeen);
         if (now || m_alarmSeen) {
             fail(tr("%1: the drive has an alarm").arg(stepText()));
             return;
@@ -505,7 +506,9 @@ void EolStepRunner::runRead(const RecipeStep& step)
         const QString unit = unitOf(limit.parameter);
         if (!step.equals.isEmpty()) {
             const bool pass = r.value.text == step.equals;
-            record(label, r.value.raw, QString(), std::nullopt, std::nullopt, pass);
+            // The code as the value, the label it reads as in the quantity's name.
+            record(tr("%1 (%2)").arg(label, r.value.text), r.value.raw, QString(), std::nullopt,
+                   std::nullopt, pass);
             if (!pass) {
                 fail(tr("%1: %2 reads \"%3\", expected \"%4\"")
                          .arg(stepText(), label, r.value.text, step.equals));

@@ -255,3 +255,25 @@ TEST_F(EolRunTest, TheStoredRecordIsTheOneTheRunReturns)
     ASSERT_TRUE(stored) << qPrintable(error);
     EXPECT_EQ(*stored, r);
 }
+
+TEST_F(EolRunTest, AMotorAlreadyRunningIsNeitherWrittenNorTouched)
+{
+    startBus(QStringLiteral("dbu200@1"));
+    communicationPriority(1);
+    DeviceSession::WriteOptions explicitly;
+    explicitly.explicitCommand = true;
+    const DeviceSession::Outcome started = await<DeviceSession::Outcome>([&](auto done) {
+        session(1)->write(QStringLiteral("run.start"), QStringLiteral("1"), explicitly, done);
+    });
+    ASSERT_TRUE(started.ok) << qPrintable(started.error);
+    ASSERT_TRUE(waitUntil([&] { return running(1); }));
+    const int writesBefore = framesSent(6) + framesSent(16);
+    const UnitRecord r = run(quickDbuRecipe({1}));
+    EXPECT_EQ(r.status, UnitStatus::Fail);
+    EXPECT_TRUE(r.failureReason.contains(QStringLiteral("already running")))
+        << qPrintable(r.failureReason);
+    EXPECT_TRUE(r.writtenValues.isEmpty());
+    EXPECT_EQ(framesSent(6) + framesSent(16), writesBefore) << "nothing written, nothing stopped";
+    EXPECT_EQ(unconfirmed.size(), 1) << "named as a motor not confirmed stopped";
+    EXPECT_TRUE(running(1));
+}

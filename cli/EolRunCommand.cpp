@@ -1,0 +1,330 @@
+#include "EolRunCommand.h"
+
+#include "CliContext.h"
+#include "EolSupport.h"
+#include "ExitCode.h"
+#include "ModbusClient.h"
+#include "eol/EolRun.h"
+#include "eol/RecipeChecker.h"
+#include "eol/RecipeFile.h"
+#include "eol/ResultDatabase.h"
+#include "eol/ResultStore.h"
+#include "eol/UnitValuesCsv.h"
+#include "profile/ProfileRegistry.h"
+
+#include <QDateTime>
+#include <QDir>
+#include <QFileInfo>
+#include <QHostInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTimer>
+#include <pwd.h>
+#include <unistd.h>
+
+namespace opentop {
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("opentop::EolRunCommand", text);
+}
+
+const QString kSerial = QStringLiteral("serial");
+const QString kOperator = QStringLiteral("operator");
+const QString kStation = QStringLiteral("station");
+const QString kDb = QStringLiteral("db");
+const QString kUnits = QStringLiteral("units");
+const QString kValue = QStringLiteral("value");
+
+QString phaseKey(EolDriveRun::Phase phase)
+{
+    switch (phase) {
+    case EolDriveRun::Phase::Identify:
+        return QStringLiteral("identify");
+    case EolDriveRun::Phase::Write:
+        return QStringLiteral("write");
+    case EolDriveRun::Phase::Verify:
+        return QStringLiteral("verify");
+    case EolDriveRun::Phase::Test:
+        return QStringLiteral("test");
+    case EolDriveRun::Phase::Done:
+        break;
+    }
+    return QStringLiteral("done");
+}
+
+QString limitsText(const Measurement& m)
+{
+    const auto n = [](double v) { return QString::number(v, 'g', 6); };
+    if (m.lower && m.upper)
+        return QStringLiteral("%1–%2").arg(n(*m.lower), n(*m.upper));
+    if (m.upper)
+        return QStringLiteral("≤ %1").arg(n(*m.upper));
+    if (m.lower)
+        return QStringLiteral("≥ %1").arg(n(*m.lower));
+    return QString();
+}
+
+void jsonLine(CliContext& context, QJsonObject object)
+{
+    context.out() << QJsonDocument(object).toJson(QJsonDocument::Compact) << '\n';
+    context.out().flush();
+}
+
+} // namespace
+
+QString EolRunCommand::synopsis() const
+{
+    return QStringLiteral("eol run RECIPE --serial S [--operator O] [--station NAME] [--db URL] "
+                          "[--units CSV] [--value ID:NAME=VALUE]...");
+}
+
+QString EolRunCommand::summary() const
+{
+    return tr("Set up and test one unit at the end of the line; record the result");
+}
+
+QList<QCommandLineOption> EolRunCommand::options() const
+{
+    return {
+        {kSerial, tr("The unit's serial number (as its barcode reads)."), tr("S")},
+        {kOperator, tr("Who tests it (default: the login name)."), tr("NAME")},
+        {kStation, tr("This station's name (default: the host name)."), tr("NAME")},
+        {kDb, tr("Results database: an SQLite file or postgresql://user@host/db."), tr("URL")},
+        {kUnits, tr("CSV file with the per-unit values, by serial number."), tr("CSV")},
+        {kValue, tr("A per-unit value typed by the operator, e.g. 1:spno3.speed=1500."),
+         tr("ID:NAME=VALUE")},
+    };
+}
+
+std::optional<QHash<int, QHash<QString, double>>> EolRunCommand::unitValues(CliContext& context,
+                                                                            const Recipe& recipe,
+                                                                            const QString& serial,
+                                                                            QString* error)
+{
+    QHash<int, QHash<QString, double>> values;
+    const QCommandLineParser& parser = context.parser();
+    if (parser.isSet(kUnits)) {
+        const std::optional<UnitValuesCsv> csv = UnitValuesCsv::load(parser.value(kUnits), error);
+        if (!csv)
+            return std::nullopt;
+        const auto found = csv->valuesFor(recipe, ProfileRegistry::builtIn(), serial, error);
+        if (!found)
+            return std::nullopt;
+        for (const UnitValuesCsv::Value& v : *found)
+            values[v.machineNumber][v.parameter] = v.value;
+    }
+    const RecipeChecker checker(ProfileRegistry::builtIn());
+    for (const QString& item : parser.values(kValue)) {
+        // ID:NAME=VALUE
+        const int colon = item.indexOf(QLatin1Char(':'));
+        const int equals = item.indexOf(QLatin1Char('='), colon + 1);
+        bool idOk = false;
+        bool valueOk = false;
+        const int id = item.left(colon).toInt(&idOk);
+        const QString name = item.mid(colon + 1, equals - colon - 1).trimmed();
+        const double value = item.mid(equals + 1).toDouble(&valueOk);
+        if (colon < 1 || equals < 0 || !idOk || name.isEmpty() || !valueOk) {
+            *error =
+                tr("--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500").arg(item);
+            return std::nullopt;
+        }
+        const QString why = checker.checkUnitValue(recipe, id, name, value);
+        if (!why.isEmpty()) {
+            *error = tr("--value %1: %2").arg(item, why);
+            return std::nullopt;
+        }
+        values[id][name] = value;
+    }
+    return values;
+}
+
+int EolRunCommand::run(CliContext& context, const QStringList& args)
+{
+    QTextStream& err = context.err();
+    const QCommandLineParser& parser = context.parser();
+    if (args.size() != 1 || !parser.isSet(kSerial) || parser.value(kSerial).trimmed().isEmpty()) {
+        err << tr("usage: opentop-cli %1").arg(synopsis()) << Qt::endl;
+        return ExitUsage;
+    }
+    const QString serial = parser.value(kSerial).trimmed();
+    QString error;
+    int code = ExitOk;
+    const std::optional<EolSupport::LoadedRecipe> loaded =
+        EolSupport::loadRecipe(context, args.first(), false, &code);
+    if (!loaded)
+        return code;
+    const Recipe* recipe = &loaded->recipe;
+    const QString checksum = loaded->checksum;
+    const QVector<RecipeProblem> problems =
+        RecipeChecker(ProfileRegistry::builtIn()).check(*recipe);
+    if (!problems.isEmpty()) {
+        err << tr("%1: the recipe is not valid; nothing was sent:").arg(args.first()) << '\n';
+        EolSupport::printProblems(context, problems);
+        err.flush();
+        return ExitInvalid;
+    }
+    const auto values = unitValues(context, *recipe, serial, &error);
+    if (!values) {
+        err << error << Qt::endl;
+        return ExitInvalid;
+    }
+
+    // As `eol results` reads it; the default file and its folder are made when missing.
+    QString url = parser.value(kDb);
+    if (url.isEmpty())
+        url = qEnvironmentVariable("OPENTOP_EOL_DB");
+    if (url.isEmpty()) {
+        url = EolSupport::defaultDatabase();
+        QDir().mkpath(QFileInfo(url).absolutePath());
+    }
+    const std::unique_ptr<ResultDatabase> db = ResultDatabase::open(url, &error);
+    if (!db) {
+        err << tr("results database: %1; nothing was sent").arg(error) << Qt::endl;
+        return ExitCommunication;
+    }
+    ResultStore store(*db);
+    const QString station =
+        parser.isSet(kStation) ? parser.value(kStation) : QHostInfo::localHostName();
+    // What this station left running when it was killed is never a pass.
+    const int leftovers = store.markInterrupted(station, QDateTime::currentDateTimeUtc(), &error);
+    if (leftovers > 0 && !context.json())
+        err << tr("note: %1 unit(s) this station left unfinished are now recorded as interrupted")
+                   .arg(leftovers)
+            << Qt::endl;
+
+    if (!context.connectBus())
+        return context.usageError() ? ExitUsage : ExitCommunication;
+
+    EolRun::Options options;
+    options.serial = serial;
+    options.station = station;
+    options.operatorName = parser.value(kOperator);
+    if (options.operatorName.isEmpty()) {
+        const passwd* user = ::getpwuid(::geteuid());
+        options.operatorName = user ? QString::fromLocal8Bit(user->pw_name) : QString();
+    }
+    options.recipeChecksum = checksum;
+    options.unitValues = *values;
+    options.store = &store;
+    options.traffic = context.trafficLog();
+    EolRun eol(context.client(), ProfileRegistry::builtIn(), *recipe, options);
+
+    const bool json = context.json();
+    QTextStream& out = context.out();
+    const auto seconds = [&eol] { return QString::number(eol.elapsedMs() / 1000.0, 'f', 1); };
+    QObject::connect(&eol, &EolRun::phaseChanged, &eol,
+                     [&](int machineNumber, EolDriveRun::Phase phase, const QString& text) {
+                         if (json) {
+                             jsonLine(context,
+                                      {{QStringLiteral("event"), QStringLiteral("phase")},
+                                       {QStringLiteral("machineNumber"), machineNumber},
+                                       {QStringLiteral("phase"), phaseKey(phase)},
+                                       {QStringLiteral("text"), text},
+                                       {QStringLiteral("seconds"), eol.elapsedMs() / 1000.0}});
+                             return;
+                         }
+                         out << QStringLiteral("[%1 s] %2: %3\n")
+                                    .arg(seconds(), tr("drive %1").arg(machineNumber), text);
+                         out.flush();
+                     });
+    QObject::connect(&eol, &EolRun::measured, &eol, [&](const Measurement& m) {
+        if (json) {
+            QJsonObject o{{QStringLiteral("event"), QStringLiteral("measurement")},
+                          {QStringLiteral("machineNumber"), m.machineNumber},
+                          {QStringLiteral("step"), m.step},
+                          {QStringLiteral("quantity"), m.quantity},
+                          {QStringLiteral("value"), m.value},
+                          {QStringLiteral("unit"), m.unit},
+                          {QStringLiteral("pass"), m.pass}};
+            if (m.lower)
+                o.insert(QStringLiteral("lower"), *m.lower);
+            if (m.upper)
+                o.insert(QStringLiteral("upper"), *m.upper);
+            jsonLine(context, o);
+            return;
+        }
+        const QString limits = limitsText(m);
+        out << QStringLiteral("[%1 s] %2: %3 = %4 %5\n")
+                   .arg(seconds(), tr("drive %1").arg(m.machineNumber), m.quantity,
+                        QStringLiteral("%1 %2")
+                            .arg(QString::number(m.value, 'g', 6), m.unit)
+                            .trimmed(),
+                        (limits.isEmpty() ? QString() : QStringLiteral("(%1) ").arg(limits)) +
+                            (m.pass ? tr("ok") : tr("FAIL")));
+        out.flush();
+    });
+    QObject::connect(context.client(), &ModbusClient::connectionLost, &eol,
+                     [&eol](const QString& why) { eol.connectionLost(why); });
+    bool lost = false;
+    QObject::connect(context.client(), &ModbusClient::connectionLost, &eol,
+                     [&lost](const QString&) { lost = true; });
+
+    UnitRecord record;
+    bool finished = false;
+    QEventLoop loop;
+    QTimer interrupt;
+    bool interrupted = false;
+    // Ctrl-C (or SIGTERM from a line controller) cancels: motors stopped, recorded as aborted.
+    QObject::connect(&interrupt, &QTimer::timeout, &loop, [&] {
+        if (context.interrupted() && !interrupted) {
+            interrupted = true;
+            eol.cancel(tr("interrupted at the station"));
+        }
+    });
+    interrupt.start(50);
+    eol.start([&](const UnitRecord& r) {
+        record = r;
+        finished = true;
+        loop.quit();
+    });
+    if (!finished)
+        loop.exec();
+
+    const QString verdict = unitStatusName(record.status).toUpper();
+    if (json) {
+        QJsonObject o{{QStringLiteral("event"), QStringLiteral("result")},
+                      {QStringLiteral("serial"), record.serial},
+                      {QStringLiteral("status"), unitStatusName(record.status)},
+                      {QStringLiteral("id"), record.id},
+                      {QStringLiteral("seconds"), eol.elapsedMs() / 1000.0},
+                      {QStringLiteral("recorded"), eol.storeError().isEmpty()}};
+        if (!record.failureReason.isEmpty())
+            o.insert(QStringLiteral("reason"), record.failureReason);
+        if (!eol.unconfirmedStops().isEmpty())
+            o.insert(QStringLiteral("notConfirmedStopped"),
+                     QJsonValue::fromVariant(eol.unconfirmedStops()));
+        jsonLine(context, o);
+    } else {
+        out << QStringLiteral("%1  %2  %3 %4  %5 s\n")
+                   .arg(record.serial, verdict, recipe->product,
+                        tr("rev. %1").arg(recipe->revision), seconds());
+        if (!record.failureReason.isEmpty())
+            out << record.failureReason << '\n';
+        out.flush();
+    }
+    if (!eol.storeError().isEmpty())
+        err << tr("the result was NOT recorded: %1").arg(eol.storeError()) << Qt::endl;
+    for (const QString& drive : eol.unconfirmedStops())
+        err << tr("WARNING: motor not confirmed stopped: %1").arg(drive) << Qt::endl;
+
+    if (!eol.unconfirmedStops().isEmpty())
+        return ExitMismatch;
+    if (!eol.storeError().isEmpty())
+        return ExitCommunication;
+    switch (record.status) {
+    case UnitStatus::Pass:
+        return ExitOk;
+    case UnitStatus::Fail:
+        return ExitFail;
+    default:
+        break;
+    }
+    if (lost)
+        return ExitCommunication;
+    return interrupted ? ExitInterrupted : ExitCommunication;
+}
+
+} // namespace opentop
