@@ -190,7 +190,7 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
         parser.isSet(kStation) ? parser.value(kStation) : QHostInfo::localHostName();
     // What this station left running when it was killed is never a pass.
     const int leftovers = store.markInterrupted(station, QDateTime::currentDateTimeUtc(), &error);
-    if (leftovers > 0 && !context.json())
+    if (leftovers > 0)
         err << tr("note: %1 unit(s) this station left unfinished are now recorded as interrupted")
                    .arg(leftovers)
             << Qt::endl;

@@ -1,0 +1,238 @@
+// `opentop-cli eol run` end to end: the real program on a pseudo-terminal against opentop-sim,
+// with a results database file. PASS and FAIL with their exit codes and JSON lines; Ctrl-C (a
+// line controller's SIGTERM), a vanished port and kill -9 while the motor runs: the motor
+// stopped (or, where it cannot be, said so), the record never a pass, the database valid.
+#include "CliProcess.h"
+#include "SimProcess.h"
+#include "eol/RecipeFile.h"
+#include "eol/ResultDatabase.h"
+#include "eol/ResultQueries.h"
+
+#include <QElapsedTimer>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QThread>
+#include <csignal>
+
+using namespace opentop;
+using namespace opentop::test;
+
+namespace {
+
+constexpr int kCurrentSpeed = 0x0109; // DBU status.current_speed (fc 04)
+
+// The example DBU200 recipe at machine number `id`, holding for `holdS` seconds.
+QString writeRecipe(const QTemporaryDir& dir, int id, double holdS)
+{
+    QString error;
+    std::optional<Recipe> recipe = RecipeFile::load(
+        QStringLiteral(OPENTOP_SOURCE_DIR "/docs/examples/recipe-dbu200.json"), &error);
+    EXPECT_TRUE(recipe) << error.toStdString();
+    recipe->positions[0].machineNumber = id;
+    for (RecipeStep& step : recipe->positions[0].steps)
+        if (step.type == RecipeStep::Type::Hold)
+            step.duration = holdS;
+    const QString path = dir.filePath(QStringLiteral("recipe-%1.json").arg(id));
+    EXPECT_TRUE(RecipeFile::save(*recipe, path, &error)) << error.toStdString();
+    return path;
+}
+
+QStringList runArgs(const QString& port, const QString& recipe, const QString& serial,
+                    const QString& db, int id)
+{
+    return {QStringLiteral("--port"),
+            port,
+            QStringLiteral("eol"),
+            QStringLiteral("run"),
+            recipe,
+            QStringLiteral("--serial"),
+            serial,
+            QStringLiteral("--db"),
+            db,
+            QStringLiteral("--station"),
+            QStringLiteral("e2e"),
+            QStringLiteral("--value"),
+            QStringLiteral("%1:spno3.speed=1500").arg(id),
+            QStringLiteral("--json")};
+}
+
+// The last JSON line of `out` whose event is `event`.
+QJsonObject lastEvent(const QString& out, const QString& event)
+{
+    QJsonObject found;
+    for (const QString& line : out.split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
+        const QJsonObject o = QJsonDocument::fromJson(line.toUtf8()).object();
+        if (o.value(QStringLiteral("event")).toString() == event)
+            found = o;
+    }
+    return found;
+}
+
+// Starts `eol run` and returns once it is in its hold step (the motor at speed).
+bool startAndWaitForHold(QProcess& process, const QStringList& args, QByteArray* seen)
+{
+    process.start(cliProgram(), args);
+    if (!process.waitForStarted(5000))
+        return false;
+    QElapsedTimer timer;
+    timer.start();
+    while (timer.elapsed() < 30000) {
+        process.waitForReadyRead(200);
+        seen->append(process.readAllStandardOutput());
+        if (seen->contains("hold and measure"))
+            return true;
+        if (process.state() == QProcess::NotRunning)
+            return false;
+    }
+    return false;
+}
+
+std::optional<UnitRecord> recordOf(const QString& db, const QString& serial)
+{
+    QString error;
+    const std::unique_ptr<ResultDatabase> database = ResultDatabase::open(db, &error);
+    EXPECT_TRUE(database) << error.toStdString();
+    if (!database)
+        return std::nullopt;
+    EXPECT_EQ(database->integrityCheck(), QStringLiteral("ok"));
+    const auto history = ResultQueries(*database).history(serial, &error);
+    EXPECT_TRUE(history && !history->isEmpty()) << error.toStdString();
+    if (!history || history->isEmpty())
+        return std::nullopt;
+    return history->last();
+}
+
+class EolRunE2e : public ::testing::Test
+{
+protected:
+    void SetUp() override
+    {
+        QString error;
+        ASSERT_TRUE(sim.start({QStringLiteral("--devices"), QStringLiteral("dbu200@1-2"),
+                               QStringLiteral("--defect"), QStringLiteral("2:load=+60")},
+                              &error))
+            << error.toStdString();
+        db = dir.filePath(QStringLiteral("results.db"));
+    }
+
+    bool turning(int id) { return sim.get(id, kCurrentSpeed, 4) != 0; }
+
+    SimProcess sim;
+    QTemporaryDir dir;
+    QString db;
+};
+
+} // namespace
+
+TEST_F(EolRunE2e, APassExitsZeroAndAFailFiveBothRecorded)
+{
+    QProcess pass;
+    pass.start(cliProgram(),
+               runArgs(sim.pty, writeRecipe(dir, 1, 1), QStringLiteral("SN-P"), db, 1));
+    CliResult r = finishCli(pass, 60000);
+    ASSERT_EQ(r.code, 0) << (r.out + r.err).toStdString();
+    QJsonObject result = lastEvent(r.out, QStringLiteral("result"));
+    EXPECT_EQ(result.value(QStringLiteral("status")).toString(), QStringLiteral("pass"));
+    EXPECT_TRUE(result.value(QStringLiteral("recorded")).toBool());
+    EXPECT_FALSE(lastEvent(r.out, QStringLiteral("measurement")).isEmpty());
+
+    QProcess fail;
+    fail.start(cliProgram(),
+               runArgs(sim.pty, writeRecipe(dir, 2, 1), QStringLiteral("SN-F"), db, 2));
+    r = finishCli(fail, 60000);
+    EXPECT_EQ(r.code, 5) << (r.out + r.err).toStdString();
+    result = lastEvent(r.out, QStringLiteral("result"));
+    EXPECT_EQ(result.value(QStringLiteral("status")).toString(), QStringLiteral("fail"));
+    EXPECT_TRUE(
+        result.value(QStringLiteral("reason")).toString().contains(QStringLiteral("Load rate")))
+        << r.out.toStdString();
+    EXPECT_FALSE(turning(2));
+
+    const auto passed = recordOf(db, QStringLiteral("SN-P"));
+    ASSERT_TRUE(passed);
+    EXPECT_EQ(passed->status, UnitStatus::Pass);
+    EXPECT_EQ(passed->station, QStringLiteral("e2e"));
+    const auto failed = recordOf(db, QStringLiteral("SN-F"));
+    ASSERT_TRUE(failed);
+    EXPECT_EQ(failed->status, UnitStatus::Fail);
+    EXPECT_FALSE(failed->traffic.isEmpty());
+}
+
+TEST_F(EolRunE2e, InterruptedWhileTheMotorRunsStopsItAndRecordsAborted)
+{
+    QProcess process;
+    QByteArray seen;
+    ASSERT_TRUE(startAndWaitForHold(
+        process, runArgs(sim.pty, writeRecipe(dir, 1, 60), QStringLiteral("SN-I"), db, 1), &seen))
+        << seen.toStdString();
+    ASSERT_TRUE(turning(1));
+    ::kill(pid_t(process.processId()), SIGTERM);
+    const CliResult r = finishCli(process, 20000);
+    EXPECT_EQ(r.code, 130) << (r.out + r.err).toStdString();
+    EXPECT_FALSE(turning(1));
+    const auto record = recordOf(db, QStringLiteral("SN-I"));
+    ASSERT_TRUE(record);
+    EXPECT_EQ(record->status, UnitStatus::Aborted);
+    EXPECT_TRUE(record->failureReason.contains(QStringLiteral("interrupted")))
+        << record->failureReason.toStdString();
+}
+
+TEST_F(EolRunE2e, APortThatVanishesLeavesAMotorItCannotStopNamedAndRecorded)
+{
+    QProcess process;
+    QByteArray seen;
+    ASSERT_TRUE(startAndWaitForHold(
+        process, runArgs(sim.pty, writeRecipe(dir, 1, 60), QStringLiteral("SN-V"), db, 1), &seen))
+        << seen.toStdString();
+    sim.command(QStringLiteral("unplug"));
+    const CliResult r = finishCli(process, 60000);
+    // The stop could not be sent: exit 4 and a warning naming the drive, never silence.
+    EXPECT_EQ(r.code, 4) << (r.out + r.err).toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("motor not confirmed stopped: position 1")))
+        << r.err.toStdString();
+    const auto record = recordOf(db, QStringLiteral("SN-V"));
+    ASSERT_TRUE(record);
+    EXPECT_EQ(record->status, UnitStatus::Aborted);
+    EXPECT_TRUE(record->failureReason.contains(QStringLiteral("NOT CONFIRMED STOPPED")))
+        << record->failureReason.toStdString();
+    sim.command(QStringLiteral("replug"));
+}
+
+TEST_F(EolRunE2e, AStationKilledMidUnitLeavesNoPassAndTheNextRunSaysSo)
+{
+    QProcess process;
+    QByteArray seen;
+    ASSERT_TRUE(startAndWaitForHold(
+        process, runArgs(sim.pty, writeRecipe(dir, 1, 60), QStringLiteral("SN-K"), db, 1), &seen))
+        << seen.toStdString();
+    process.kill(); // SIGKILL: nothing of the program runs any more
+    process.waitForFinished(5000);
+    auto record = recordOf(db, QStringLiteral("SN-K"));
+    ASSERT_TRUE(record);
+    EXPECT_EQ(record->status, UnitStatus::Running);
+    EXPECT_TRUE(turning(1)) << "nobody was left to stop it";
+
+    // The next run of this station: the leftover becomes interrupted, and a motor still turning
+    // is neither written nor started.
+    QProcess next;
+    next.start(cliProgram(),
+               runArgs(sim.pty, writeRecipe(dir, 1, 1), QStringLiteral("SN-K"), db, 1));
+    const CliResult r = finishCli(next, 60000);
+    EXPECT_EQ(r.code, 4) << (r.out + r.err).toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("now recorded as interrupted")))
+        << r.err.toStdString();
+    EXPECT_TRUE(lastEvent(r.out, QStringLiteral("result"))
+                    .value(QStringLiteral("reason"))
+                    .toString()
+                    .contains(QStringLiteral("already running")))
+        << r.out.toStdString();
+    QString error;
+    const auto db2 = ResultDatabase::open(db, &error);
+    ASSERT_TRUE(db2) << error.toStdString();
+    const auto history = ResultQueries(*db2).history(QStringLiteral("SN-K"), &error);
+    ASSERT_TRUE(history && history->size() == 2) << error.toStdString();
+    EXPECT_EQ(history->first().status, UnitStatus::Interrupted);
+    EXPECT_EQ(history->last().status, UnitStatus::Fail);
+    EXPECT_TRUE(turning(1));
+}
