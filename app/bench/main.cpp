@@ -8,6 +8,8 @@
 #include "RtuBackend.h"
 #include "bus/BusScanner.h"
 #include "bus/BusSpec.h"
+#include "eol/EolRun.h"
+#include "eol/RecipeBuilder.h"
 #include "files/BackupReader.h"
 #include "profile/ProfileRegistry.h"
 #include "session/DeviceSession.h"
@@ -205,18 +207,6 @@ bool backups(BenchBus& bus, QVector<Figure>* figures, QString* error)
     return true;
 }
 
-// The benchmarks, in the order they run; a new figure is one more entry (name, description,
-// run function).
-QVector<Benchmark> benchmarks()
-{
-    return {
-        {QStringLiteral("scan"), tr("full scan of machine numbers 1–247"), fullScan},
-        {QStringLiteral("scan-absent"), tr("time per machine number nobody answers"),
-         absentAddresses},
-        {QStringLiteral("backup"), tr("single-drive backup of each family's first drive"), backups},
-    };
-}
-
 // opentop-sim on a pty, stopped when this goes.
 class SimulatorProcess
 {
@@ -259,6 +249,98 @@ public:
 private:
     QProcess m_process;
 };
+
+// One unit of a DBU200 product through the end-of-line run (EolRun: identify, write what
+// differs, read back, test), for one drive and for eight on one bus, each on its own simulator
+// with wire timing at the chosen line speed. The drives run concurrently, so eight should take
+// far less than eight times one; the goal is at most twice.
+bool eolUnit(const ConnectionSettings& base, int drives, double* ms, QString* error)
+{
+    const Profile* dbu = ProfileRegistry::builtIn().family(QStringLiteral("dbu"));
+    Recipe recipe;
+    recipe.product = QStringLiteral("bench");
+    recipe.revision = QStringLiteral("A");
+    for (int id = 1; id <= drives; ++id) {
+        RecipePosition p;
+        p.machineNumber = id;
+        p.family = QStringLiteral("dbu");
+        p.variants << QStringLiteral("dbu200");
+        p.settings << RecipeSetting{QStringLiteral("spno2.speed"), 1500, QString()}
+                   << RecipeSetting{QStringLiteral("spno2.accel"), 1.0, QString()}
+                   << RecipeSetting{QStringLiteral("spno2.decel"), 2.0, QString()}
+                   << RecipeSetting{QStringLiteral("spno2.direction"), QStringLiteral("CW"),
+                                    QString()}
+                   << RecipeSetting{QStringLiteral("spno3.speed"), 1200, QString()}
+                   << RecipeSetting{QStringLiteral("alarm.load_warning"), 90, QString()};
+        p.steps = RecipeBuilder::defaultSteps(*dbu, p);
+        recipe.positions << p;
+    }
+    SimulatorProcess sim;
+    ConnectionSettings settings = base;
+    if (!sim.start({QStringLiteral("--devices"), QStringLiteral("dbu200@1-%1").arg(drives),
+                    QStringLiteral("--wire-timing"), QStringLiteral("--baud"),
+                    QString::number(settings.baud), QStringLiteral("--quiet")},
+                   &settings.port, error))
+        return false;
+    ModbusClient client(std::make_unique<RtuBackend>(settings), settings);
+    *error = client.openBlocking();
+    if (!error->isEmpty())
+        return false;
+    EolRun::Options options;
+    options.serial = QStringLiteral("BENCH-%1").arg(drives);
+    EolRun run(&client, ProfileRegistry::builtIn(), recipe, options);
+    UnitRecord record;
+    bool finished = false;
+    QEventLoop loop;
+    run.start([&](const UnitRecord& r) {
+        record = r;
+        finished = true;
+        loop.quit();
+    });
+    QTimer::singleShot(180000, &loop, &QEventLoop::quit);
+    if (!finished)
+        loop.exec();
+    if (!finished || !record.isPass()) {
+        *error = finished ? tr("the unit of %1 drive(s) did not pass: %2")
+                                .arg(drives)
+                                .arg(record.failureReason)
+                          : tr("the unit of %1 drive(s) did not finish within 180 s").arg(drives);
+        return false;
+    }
+    *ms = double(run.elapsedMs());
+    return true;
+}
+
+bool eolUnits(BenchBus& bus, QVector<Figure>* figures, QString* error)
+{
+    double one = 0;
+    double eight = 0;
+    if (!eolUnit(bus.settings, 1, &one, error) || !eolUnit(bus.settings, 8, &eight, error))
+        return false;
+    *figures << Figure{QStringLiteral("eol.unit.1_drive"), one / 1000.0, QStringLiteral("s"), 2}
+             << Figure{QStringLiteral("eol.unit.8_drives"), eight / 1000.0, QStringLiteral("s"), 2}
+             << Figure{QStringLiteral("eol.unit.ratio_8_to_1"), eight / one, QString(), 2};
+    if (eight > 2 * one) {
+        *error = tr("eight drives took %1 times as long as one; the goal is at most 2")
+                     .arg(eight / one, 0, 'f', 2);
+        return false;
+    }
+    return true;
+}
+
+// The benchmarks, in the order they run; a new figure is one more entry (name, description,
+// run function).
+QVector<Benchmark> benchmarks()
+{
+    return {
+        {QStringLiteral("scan"), tr("full scan of machine numbers 1–247"), fullScan},
+        {QStringLiteral("scan-absent"), tr("time per machine number nobody answers"),
+         absentAddresses},
+        {QStringLiteral("backup"), tr("single-drive backup of each family's first drive"), backups},
+        {QStringLiteral("eol"),
+         tr("end-of-line unit: one DBU200, then eight on one bus (own simulators)"), eolUnits},
+    };
+}
 
 } // namespace
 
