@@ -3,8 +3,10 @@
 #include "ModelLog.h"
 #include "eol/ResultSchema.h"
 
+#include <QElapsedTimer>
 #include <QSqlError>
 #include <QSqlQuery>
+#include <QThread>
 #include <atomic>
 
 namespace opentop {
@@ -78,11 +80,25 @@ bool ResultDatabase::configure(QString* error)
 {
     if (url_.engine != ResultUrl::Engine::Sqlite)
         return exec(QStringLiteral("SET TIME ZONE 'UTC'"), error);
+    // WAL is kept in the file, so only the first opener switches it. Switching needs the file to
+    // itself and SQLite answers "locked" at once, without its busy handler, while another station
+    // opens the same new file: wait for the other as a write would.
     QSqlQuery mode(db_);
-    if (!mode.exec(QStringLiteral("PRAGMA journal_mode=WAL")) || !mode.next()) {
-        if (error)
-            *error = mode.lastError().text();
-        return false;
+    QElapsedTimer waited;
+    waited.start();
+    for (;;) {
+        if (mode.exec(QStringLiteral("PRAGMA journal_mode")) && mode.next() &&
+            mode.value(0).toString().compare(QLatin1String("wal"), Qt::CaseInsensitive) == 0)
+            break;
+        if (mode.exec(QStringLiteral("PRAGMA journal_mode=WAL")) && mode.next())
+            break;
+        if (mode.lastError().nativeErrorCode() != QLatin1String("5") ||
+            waited.elapsed() > kBusyTimeoutMs) {
+            if (error)
+                *error = mode.lastError().text();
+            return false;
+        }
+        QThread::msleep(20);
     }
     if (mode.value(0).toString().compare(QLatin1String("wal"), Qt::CaseInsensitive) != 0)
         qCWarning(lcModel) << "results database" << url_.path << "cannot use WAL here; journal mode"
