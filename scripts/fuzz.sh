@@ -27,7 +27,7 @@ if ! command -v clang++ >/dev/null; then
 fi
 if [ ! -f "$build/CMakeCache.txt" ]; then
     CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-        -DOPENTOP_FUZZ=ON -DOPENTOP_BUILD_TESTS=OFF
+        -DOPENTOP_FUZZ=ON -DOPENTOP_BUILD_TESTS=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
 fi
 cmake --build "$build" -j "$jobs" --target "${harnesses[@]}"
 
