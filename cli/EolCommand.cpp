@@ -27,7 +27,7 @@ void EolCommand::add(std::unique_ptr<EolSubcommand> subcommand)
 
 QString EolCommand::synopsis() const
 {
-    return QStringLiteral("eol recipe|results|certificate ...");
+    return QStringLiteral("eol run|recipe|results|certificate ...");
 }
 
 QString EolCommand::summary() const

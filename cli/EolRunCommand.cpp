@@ -77,7 +77,7 @@ void jsonLine(CliContext& context, QJsonObject object)
 
 QString EolRunCommand::synopsis() const
 {
-    return QStringLiteral("eol run RECIPE --serial S [--operator O] [--station NAME] [--db URL] "
+    return QStringLiteral("run RECIPE --serial S [--operator O] [--station NAME] [--db URL] "
                           "[--units CSV] [--value ID:NAME=VALUE]...");
 }
 
@@ -146,7 +146,7 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
     QTextStream& err = context.err();
     const QCommandLineParser& parser = context.parser();
     if (args.size() != 1 || !parser.isSet(kSerial) || parser.value(kSerial).trimmed().isEmpty()) {
-        err << tr("usage: opentop-cli %1").arg(synopsis()) << Qt::endl;
+        err << tr("usage: opentop-cli eol %1").arg(synopsis()) << Qt::endl;
         return ExitUsage;
     }
     const QString serial = parser.value(kSerial).trimmed();

@@ -320,7 +320,9 @@ TEST_F(EolRecipeCommand, WrongArgumentsAreUsageErrorsNamingTheProblem)
         {{QStringLiteral("eol")}, "name a subcommand"},
         {{QStringLiteral("eol"), QStringLiteral("recipe")}, "unknown subcommand"},
         {{QStringLiteral("eol"), QStringLiteral("run"), QStringLiteral("r.json")},
-         "unknown subcommand \"eol run"},
+         "--serial S"},
+        {{QStringLiteral("eol"), QStringLiteral("rerun"), QStringLiteral("r.json")},
+         "unknown subcommand \"eol rerun"},
         {{QStringLiteral("eol"), QStringLiteral("recipe"), QStringLiteral("check")},
          "name one recipe file"},
         {{QStringLiteral("eol"), QStringLiteral("recipe"), QStringLiteral("create"),
@@ -358,5 +360,5 @@ TEST_F(EolRecipeCommand, WrongArgumentsAreUsageErrorsNamingTheProblem)
           "eol recipe show RECIPE", "eol results", "eol certificate SERIAL"})
         EXPECT_TRUE(help.out.contains(QString::fromLatin1(sub))) << sub << qPrintable(help.out);
     EXPECT_EQ(runCli({QStringLiteral("eol"), QStringLiteral("--help")}).out, help.out);
-    EXPECT_TRUE(runCli({QStringLiteral("--help")}).out.contains(QStringLiteral("eol recipe|")));
+    EXPECT_TRUE(runCli({QStringLiteral("--help")}).out.contains(QStringLiteral("eol run|recipe|")));
 }
