@@ -136,8 +136,7 @@ QCommandLineOption EolSupport::outputOption()
 
 QString EolSupport::defaultDatabase()
 {
-    return QDir(QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation))
-        .filePath(QStringLiteral("opentop/results.db"));
+    return ResultUrl::defaultLocation();
 }
 
 std::unique_ptr<ResultDatabase> EolSupport::openDatabase(CliContext& context, int* exitCode)

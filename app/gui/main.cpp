@@ -4,6 +4,7 @@
 #include "ConnectionOptions.h"
 #include "ModbusClient.h"
 #include "MonitorOptions.h"
+#include "ProductionOptions.h"
 #include "TrafficLog.h"
 #include "bus/BusSpec.h"
 #include "connection/ConnectionDialog.h"
@@ -47,6 +48,7 @@ int main(int argc, char* argv[])
     parser.addVersionOption();
     opentop::ConnectionOptions::addTo(parser);
     opentop::MonitorOptions::addTo(parser);
+    opentop::ProductionOptions::addTo(parser);
     parser.process(app);
     opentop::registerBuiltInEditors();
 
@@ -80,7 +82,8 @@ int main(int argc, char* argv[])
         });
     // Before the window shows and connects: a bad value ends the program with nothing opened.
     QString optionError;
-    if (!opentop::MonitorOptions::apply(parser, &window, &optionError)) {
+    if (!opentop::MonitorOptions::apply(parser, &window, &optionError) ||
+        !opentop::ProductionOptions::apply(parser, &window, &optionError)) {
         std::fprintf(stderr, "opentop: %s\n", qPrintable(optionError));
         return 2;
     }

@@ -7,6 +7,7 @@
 
 #include <QDateTime>
 #include <algorithm>
+#include <memory>
 
 namespace opentop {
 
@@ -163,6 +164,36 @@ void DriveStatusPoller::pollNow()
     }
     m_timer.stop();
     startCycle();
+}
+
+void DriveStatusPoller::afterFreshCycle(QObject* context, std::function<void()> then, int limitMs)
+{
+    if (!m_active) {
+        then();
+        return;
+    }
+    // The cycle under way (if any) began before this call: the fresh one is the next after it.
+    auto waitFor = std::make_shared<int>(m_busy ? 2 : 1);
+    auto done = std::make_shared<bool>(false);
+    auto finish = [done, then = std::move(then)] {
+        if (*done)
+            return;
+        *done = true;
+        then();
+    };
+    auto connection = std::make_shared<QMetaObject::Connection>();
+    *connection =
+        connect(this, &DriveStatusPoller::cycleFinished, context, [connection, waitFor, finish] {
+            if (--*waitFor > 0)
+                return;
+            QObject::disconnect(*connection);
+            finish();
+        });
+    QTimer::singleShot(limitMs, context, [connection, finish] {
+        QObject::disconnect(*connection);
+        finish();
+    });
+    pollNow();
 }
 
 void DriveStatusPoller::startCycle()

@@ -8,6 +8,7 @@
 #include <QObject>
 #include <QTimer>
 #include <QVector>
+#include <functional>
 #include <optional>
 
 namespace opentop {
@@ -77,6 +78,10 @@ public:
     bool isActive() const { return m_active; }
     // Polls at once (a new cycle starts when the one under way completes).
     void pollNow();
+    // Calls `then` once a cycle that started after this call has completed, so that what the
+    // status says is newer than something just done (a motor just stopped); at once when not
+    // polling, and after `limitMs` at the latest.
+    void afterFreshCycle(QObject* context, std::function<void()> then, int limitMs = 3000);
 
     // The status of `slave`; a default (grey, not polled) one for drives not polled yet.
     DriveStatus status(int slave) const { return m_status.value(slave); }

@@ -1,6 +1,7 @@
 #include "eol/ResultUrl.h"
 
 #include <QDir>
+#include <QStandardPaths>
 #include <QStringList>
 #include <QUrl>
 
@@ -152,6 +153,12 @@ QString ResultUrl::displayText() const
 QString ResultUrl::driverName() const
 {
     return engine == Engine::Sqlite ? QStringLiteral("QSQLITE") : QStringLiteral("QPSQL");
+}
+
+QString ResultUrl::defaultLocation()
+{
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation))
+        .filePath(QStringLiteral("opentop/results.db"));
 }
 
 } // namespace opentop

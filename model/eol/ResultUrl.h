@@ -29,6 +29,9 @@ public:
     QString database;
     QString options; // libpq keywords QPSQL passes on: "sslmode=require;connect_timeout=5"
 
+    // Where a station keeps its results when it is not told: results.db in the user's data
+    // folder ($XDG_DATA_HOME/opentop, ~/.local/share/opentop).
+    static QString defaultLocation();
     static std::optional<ResultUrl>
     parse(const QString& text, QString* error,
           const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment());

@@ -56,8 +56,9 @@ MainMenus::MainMenus(MainWindow* window, BusDocks* docks, std::function<QVector<
     file->addAction(tr("&Quit"), QKeySequence::Quit, window, &QWidget::close);
 
     // Backup, restore, compare and the file viewer (they take the bus as it is when used).
+    QMenu* files = bar->addMenu(tr("&Files"));
     new FileActions(
-        window, bar->addMenu(tr("&Files")), [window] { return window->drives(); }, m_selected,
+        window, files, [window] { return window->drives(); }, m_selected,
         std::move(settings), window);
 
     QMenu* drive = bar->addMenu(tr("&Drive"));
@@ -79,6 +80,8 @@ MainMenus::MainMenus(MainWindow* window, BusDocks* docks, std::function<QVector<
         connect(window, &MainWindow::connectionChanged, needsBus, &QAction::setEnabled);
     }
     QMenu* view = bar->addMenu(tr("&View"));
+    m_view = view;
+    m_editing = {files, drive};
     // The docks' own actions keep the menu's check marks in step with a dock closed by its
     // title bar button.
     const std::tuple<QString, QString, QKeySequence> docksActions[] = {

@@ -7,6 +7,7 @@
 #include <functional>
 
 class QAction;
+class QMenu;
 class QToolBar;
 
 namespace opentop {
@@ -26,6 +27,9 @@ public:
               std::function<ConnectionSettings()> settings);
 
     QToolBar* toolbar() const { return m_toolbar; }
+    // The View menu (the window adds its own modes to it) and the menus that write to drives.
+    QMenu* viewMenu() const { return m_view; }
+    QVector<QMenu*> editingMenus() const { return m_editing; }
     // Drive > Write a setting to the selected drives (enabled while several drives of one
     // family are selected: DrivePages::sameFamilySelected).
     QAction* multiWriteAction() const { return m_multiWrite; }
@@ -39,6 +43,8 @@ private:
     BusDocks* m_docks;
     std::function<QVector<int>()> m_selected;
     QToolBar* m_toolbar = nullptr;
+    QMenu* m_view = nullptr;
+    QVector<QMenu*> m_editing;
     QAction* m_multiWrite = nullptr;
     QAction* m_disconnect = nullptr;
 };

@@ -10,6 +10,7 @@
 #include "bus/BusRecallBar.h"
 #include "bus/DriveStatusPoller.h"
 #include "connection/ConnectionDialog.h"
+#include "eol/ProductionMode.h"
 #include "main/MainMenus.h"
 #include "monitor/MonitorHub.h"
 #include "profile/ProfileRegistry.h"
@@ -25,6 +26,7 @@
 
 #include <QAction>
 #include <QCloseEvent>
+#include <QMenu>
 #include <QMessageBox>
 #include <QSplitter>
 #include <QStatusBar>
@@ -60,6 +62,12 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
         this, m_docks, [this] { return m_pages->selected(); }, [this] { return m_settings; });
     connect(m_pages, &DrivePages::sameFamilySelected, m_menus->multiWriteAction(),
             &QAction::setEnabled);
+    m_production = new ProductionMode(
+        this, m_splitter, column, m_menus->editingMenus(), [this] { return m_client.get(); },
+        m_log.get());
+    m_menus->viewMenu()->addSeparator();
+    m_menus->viewMenu()->addAction(m_production->toggleAction());
+    m_menus->viewMenu()->addAction(m_production->fullScreenAction());
     // STOP ALL's keys work everywhere in the program, modal dialogs included; the button itself
     // is made per connection.
     new StopAllKeys([this] { return m_stopAll; }, this);
@@ -111,6 +119,12 @@ void MainWindow::teardown()
 void MainWindow::connectTo(const ConnectionSettings& settings,
                            const QHash<int, QString>& knownTypes)
 {
+    // A unit being tested on this bus is ended first (its motors stopped), if the user agrees.
+    if (m_production &&
+        m_production->guard(tr("connect elsewhere"), freshStatusThen([this, settings, knownTypes] {
+                                connectTo(settings, knownTypes);
+                            })))
+        return;
     // A start confirmed for this bus says nothing about the next one.
     TestRunPanel::forgetConfirmations();
     dropCandidate();
@@ -329,8 +343,23 @@ void MainWindow::monitorAll()
     m_docks->monitorAll(m_drives->slaves());
 }
 
+std::function<void()> MainWindow::freshStatusThen(std::function<void()> then)
+{
+    // After a unit is cancelled, the drives' status must be read again before the exit check
+    // looks at it: the run has just stopped its motors.
+    return [this, then = std::move(then)] {
+        if (m_poller)
+            m_poller->afterFreshCycle(this, then);
+        else
+            then();
+    };
+}
+
 void MainWindow::disconnectBus()
 {
+    if (m_production &&
+        m_production->guard(tr("disconnect"), freshStatusThen([this] { disconnectBus(); })))
+        return;
     if (!m_drives)
         return;
     // As on quitting: running drives and drives left in communication priority are named first.
@@ -347,6 +376,10 @@ void MainWindow::disconnectBus()
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
+    if (m_production && m_production->guard(tr("quit"), freshStatusThen([this] { close(); }))) {
+        event->ignore();
+        return;
+    }
     int pending = 0;
     if (m_drives) {
         for (int s : m_drives->slaves())

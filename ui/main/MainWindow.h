@@ -36,6 +36,7 @@ class TrafficLog;
 class StatusLight;
 class AlarmsPage;
 class MainMenus;
+class ProductionMode;
 
 // The main window: the bus on the left (scan, drives, status lights), the selected drive's
 // pages on the right. It owns the connection; all bus work happens on the client's worker
@@ -86,6 +87,8 @@ public:
     BusRecallBar* recallBar() const { return m_recall; }
     // The permanent marker of a simulated bus (hidden on hardware).
     QLabel* simulatedBanner() const { return m_status->simulatedBanner(); }
+    // The end-of-line operator screen and the switch to it (View > Production mode).
+    ProductionMode* production() const { return m_production; }
     // Shows the bus overview and the trends of every drive (they poll while shown).
     void monitorAll();
 
@@ -96,6 +99,7 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    std::function<void()> freshStatusThen(std::function<void()> then);
     void teardown();
     // Makes `client` the window's connection (the old one closed) and builds its views; the
     // client is opened by the caller, or already open.
@@ -136,6 +140,7 @@ private:
     WindowGeometry m_geometry;
     BusDocks* m_docks = nullptr;
     MainMenus* m_menus = nullptr;
+    ProductionMode* m_production = nullptr;
     DrivePages* m_pages = nullptr;
     MonitorHub* m_hub = nullptr;
     BusGroupTracker* m_groups = nullptr;

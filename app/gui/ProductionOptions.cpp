@@ -1,0 +1,66 @@
+#include "ProductionOptions.h"
+
+#include "eol/EolStation.h"
+#include "eol/ProductionMode.h"
+#include "eol/ProductionView.h"
+#include "main/MainWindow.h"
+
+#include <QAction>
+#include <QCommandLineParser>
+#include <QCoreApplication>
+
+namespace opentop {
+
+namespace {
+
+const QString kProduction = QStringLiteral("production");
+const QString kUnits = QStringLiteral("units");
+const QString kResultsDb = QStringLiteral("results-db");
+const QString kFullScreen = QStringLiteral("full-screen");
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("opentop::ProductionOptions", text);
+}
+
+} // namespace
+
+void ProductionOptions::addTo(QCommandLineParser& parser)
+{
+    parser.addOptions({
+        {kProduction, tr("Start in production mode (end-of-line station) with this recipe."),
+         tr("RECIPE")},
+        {kUnits, tr("Per-unit values (CSV by serial number) for production mode."), tr("CSV")},
+        {kResultsDb,
+         tr("Results database for production mode: an SQLite file or postgresql://user@host/db."),
+         tr("URL")},
+        {kFullScreen, tr("Start full screen.")},
+    });
+}
+
+bool ProductionOptions::apply(const QCommandLineParser& parser, MainWindow* window, QString* error)
+{
+    if ((parser.isSet(kUnits) || parser.isSet(kResultsDb)) && !parser.isSet(kProduction)) {
+        *error = tr("--units and --results-db go with --production RECIPE");
+        return false;
+    }
+    if (parser.isSet(kFullScreen))
+        window->production()->fullScreenAction()->setChecked(true);
+    if (!parser.isSet(kProduction))
+        return true;
+    EolStation* station = window->production()->station();
+    QStringList problems;
+    if (!station->loadRecipe(parser.value(kProduction), &problems)) {
+        *error = tr("%1 cannot be run:\n  %2")
+                     .arg(parser.value(kProduction), problems.join(QStringLiteral("\n  ")));
+        return false;
+    }
+    if (parser.isSet(kUnits) && !station->loadUnitValues(parser.value(kUnits), error))
+        return false;
+    if (!station->openDatabase(parser.value(kResultsDb), error))
+        return false;
+    window->production()->setActive(true);
+    return true;
+}
+
+} // namespace opentop

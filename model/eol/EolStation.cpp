@@ -1,0 +1,197 @@
+#include "eol/EolStation.h"
+
+#include "ModbusClient.h"
+#include "eol/RecipeChecker.h"
+#include "eol/RecipeFile.h"
+#include "eol/ResultDatabase.h"
+#include "eol/ResultStore.h"
+#include "eol/ResultUrl.h"
+#include "eol/UnitValuesCsv.h"
+#include "profile/ProfileRegistry.h"
+
+#include <QDateTime>
+#include <QDir>
+#include <QFileInfo>
+#include <QSysInfo>
+
+namespace opentop {
+
+namespace {
+constexpr int kLastUnits = 50;
+}
+
+EolStation::EolStation(QObject* parent)
+    : QObject(parent)
+    , m_station(QSysInfo::machineHostName())
+{
+}
+
+EolStation::~EolStation()
+{
+    // A unit still running is cancelled by whoever closes the station first (the screen asks);
+    // here only its run object goes.
+    delete m_run;
+}
+
+bool EolStation::loadRecipe(const QString& path, QStringList* problems)
+{
+    QString error;
+    QString checksum;
+    const std::optional<Recipe> recipe = RecipeFile::load(path, &error, &checksum);
+    if (!recipe) {
+        *problems = {error};
+        return false;
+    }
+    const QVector<RecipeProblem> found = RecipeChecker(ProfileRegistry::builtIn()).check(*recipe);
+    if (!found.isEmpty()) {
+        problems->clear();
+        for (const RecipeProblem& p : found)
+            *problems << p.message;
+        return false;
+    }
+    m_recipe = *recipe;
+    m_checksum = checksum;
+    m_recipePath = path;
+    m_hasRecipe = true;
+    m_csv.reset();
+    return true;
+}
+
+bool EolStation::loadUnitValues(const QString& path, QString* error)
+{
+    std::optional<UnitValuesCsv> csv = UnitValuesCsv::load(path, error);
+    if (!csv)
+        return false;
+    m_csv = std::make_unique<UnitValuesCsv>(std::move(*csv));
+    return true;
+}
+
+QVector<QPair<int, RecipeUnitValue>> EolStation::operatorValues() const
+{
+    QVector<QPair<int, RecipeUnitValue>> values;
+    for (const RecipePosition& p : m_recipe.positions)
+        for (const RecipeUnitValue& u : p.unitValues)
+            if (u.source == RecipeUnitValue::Source::Operator)
+                values.append({p.machineNumber, u});
+    return values;
+}
+
+bool EolStation::openDatabase(const QString& url, QString* error)
+{
+    QString where = url;
+    if (where.isEmpty())
+        where = qEnvironmentVariable("OPENTOP_EOL_DB");
+    if (where.isEmpty()) {
+        where = ResultUrl::defaultLocation();
+        QDir().mkpath(QFileInfo(where).absolutePath());
+    }
+    std::unique_ptr<ResultDatabase> db = ResultDatabase::open(where, error);
+    if (!db)
+        return false;
+    m_store.reset();
+    m_db = std::move(db);
+    m_store = std::make_unique<ResultStore>(*m_db);
+    m_store->markInterrupted(m_station, QDateTime::currentDateTimeUtc(), error);
+    return true;
+}
+
+QString EolStation::databaseText() const
+{
+    return m_db ? m_db->url().displayText() : tr("no results database");
+}
+
+bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString& serial,
+                       const QHash<int, QHash<QString, double>>& typed, QString* error)
+{
+    if (isRunning()) {
+        *error = tr("a unit is being tested");
+        return false;
+    }
+    if (!m_hasRecipe) {
+        *error = tr("open a recipe first");
+        return false;
+    }
+    if (!m_store) {
+        *error = tr("the results database is not open; nothing is tested unless it is recorded");
+        return false;
+    }
+    if (!client) {
+        *error = tr("not connected to a bus");
+        return false;
+    }
+    if (serial.trimmed().isEmpty()) {
+        *error = tr("no serial number");
+        return false;
+    }
+    EolRun::Options options;
+    options.serial = serial.trimmed();
+    options.station = m_station;
+    options.operatorName = m_operator;
+    options.recipeChecksum = m_checksum;
+    options.unitValues = typed;
+    options.timing = m_timing;
+    options.store = m_store.get();
+    options.traffic = traffic;
+    bool needsCsv = false;
+    for (const RecipePosition& p : m_recipe.positions)
+        for (const RecipeUnitValue& u : p.unitValues)
+            needsCsv = needsCsv || u.source == RecipeUnitValue::Source::Csv;
+    if (needsCsv) {
+        if (!m_csv) {
+            *error = tr("this recipe takes per-unit values from a CSV file: open it first");
+            return false;
+        }
+        const auto values = m_csv->valuesFor(m_recipe, ProfileRegistry::builtIn(),
+                                             options.serial, error);
+        if (!values)
+            return false;
+        for (const UnitValuesCsv::Value& v : *values)
+            options.unitValues[v.machineNumber][v.parameter] = v.value;
+    }
+    delete m_run;
+    m_run = new EolRun(client, ProfileRegistry::builtIn(), m_recipe, options, this);
+    connect(m_run, &EolRun::phaseChanged, this, &EolStation::phaseChanged);
+    connect(m_run, &EolRun::measured, this, &EolStation::measured);
+    connect(m_run, &EolRun::speedSampled, this, &EolStation::speedSampled);
+    // A vanished port ends the unit at once (whatever can still be stopped is).
+    connect(client, &ModbusClient::connectionLost, m_run,
+            [run = m_run.data()](const QString& why) { run->connectionLost(why); });
+    m_unconfirmed.clear();
+    m_storeError.clear();
+    emit unitStarted(options.serial);
+    m_run->start([this](const UnitRecord& record) { finished(record); });
+    return true;
+}
+
+void EolStation::cancel(const QString& reason)
+{
+    if (m_run)
+        m_run->cancel(reason);
+}
+
+void EolStation::connectionLost(const QString& error)
+{
+    if (m_run)
+        m_run->connectionLost(error);
+}
+
+void EolStation::finished(const UnitRecord& record)
+{
+    m_unconfirmed = m_run ? m_run->unconfirmedStops() : QStringList();
+    m_storeError = m_run ? m_run->storeError() : QString();
+    if (record.status == UnitStatus::Pass || record.status == UnitStatus::Fail) {
+        ++m_counters.tested;
+        record.isPass() ? ++m_counters.passed : ++m_counters.failed;
+        if (!m_firstResult.contains(record.serial)) {
+            m_firstResult.insert(record.serial, record.isPass());
+            ++m_counters.firstTested;
+            m_counters.firstPassed += record.isPass() ? 1 : 0;
+        }
+    }
+    m_last.prepend(record);
+    if (m_last.size() > kLastUnits)
+        m_last.removeLast();
+    emit unitFinished(record);
+}
+
+} // namespace opentop

@@ -1,0 +1,104 @@
+#pragma once
+
+#include "eol/EolRun.h"
+#include "eol/Recipe.h"
+#include "eol/UnitRecord.h"
+
+#include <QCoreApplication>
+#include <QObject>
+#include <QPointer>
+#include <functional>
+#include <memory>
+
+namespace opentop {
+
+class ModbusClient;
+class ResultDatabase;
+class ResultStore;
+class TrafficLog;
+class UnitValuesCsv;
+
+// An end-of-line station as the operator screen drives it: one recipe, one results database,
+// units one after another (EolRun), this shift's counters and last units. The screen only
+// shows what this says; the command line's `eol run` is the same engine without it.
+class EolStation : public QObject
+{
+    Q_OBJECT
+public:
+    struct Counters
+    {
+        int tested = 0;    // units with a verdict (pass or fail) since the station started
+        int passed = 0;
+        int failed = 0;
+        int firstTested = 0; // distinct serials
+        int firstPassed = 0; // ... whose first test passed
+        double firstPassYield() const { return firstTested ? 100.0 * firstPassed / firstTested : 0; }
+    };
+
+    explicit EolStation(QObject* parent = nullptr);
+    ~EolStation() override;
+
+    // Loads and checks a recipe; false with the reasons (every checker problem) when it may not
+    // be run. The recipe stays as it was on failure.
+    bool loadRecipe(const QString& path, QStringList* problems);
+    bool hasRecipe() const { return m_hasRecipe; }
+    const Recipe& recipe() const { return m_recipe; }
+    QString recipePath() const { return m_recipePath; }
+    bool loadUnitValues(const QString& path, QString* error);
+    bool hasUnitValues() const { return bool(m_csv); }
+    // Per-unit values the operator types (the recipe's "operator" ones) for the next unit.
+    QVector<QPair<int, RecipeUnitValue>> operatorValues() const;
+
+    // Opens the results database (`url` empty: OPENTOP_EOL_DB, else the default file, made when
+    // missing); the station's leftovers from a crash become interrupted.
+    bool openDatabase(const QString& url, QString* error);
+    QString databaseText() const;
+    bool hasDatabase() const { return bool(m_db); }
+    void setStation(const QString& station) { m_station = station; }
+    QString station() const { return m_station; }
+    void setOperatorName(const QString& name) { m_operator = name; }
+    void setTiming(const EolStepRunner::Timing& timing) { m_timing = timing; }
+
+    // Starts a unit: false with *error (and nothing sent) when no recipe, no database, a per-unit
+    // value missing or not allowed, or a unit already running. `typed`: the operator's values.
+    bool start(ModbusClient* client, TrafficLog* traffic, const QString& serial,
+               const QHash<int, QHash<QString, double>>& typed, QString* error);
+    void cancel(const QString& reason = QString());
+    void connectionLost(const QString& error);
+    bool isRunning() const { return m_run && m_run->isRunning(); }
+    EolRun* run() const { return m_run; }
+    qint64 elapsedMs() const { return m_run ? m_run->elapsedMs() : 0; }
+    const Counters& counters() const { return m_counters; }
+    const QVector<UnitRecord>& lastUnits() const { return m_last; } // newest first
+    QStringList unconfirmedStops() const { return m_unconfirmed; }
+    QString storeError() const { return m_storeError; }
+
+signals:
+    void unitStarted(const QString& serial);
+    void phaseChanged(int machineNumber, opentop::EolDriveRun::Phase phase, const QString& text);
+    void measured(const opentop::Measurement& measurement);
+    void speedSampled(int machineNumber, double speed, const QString& unit);
+    void unitFinished(const opentop::UnitRecord& record);
+
+private:
+    void finished(const UnitRecord& record);
+
+    Recipe m_recipe;
+    bool m_hasRecipe = false;
+    QString m_recipePath;
+    QString m_checksum;
+    std::unique_ptr<UnitValuesCsv> m_csv;
+    std::unique_ptr<ResultDatabase> m_db;
+    std::unique_ptr<ResultStore> m_store;
+    QString m_station;
+    QString m_operator;
+    EolStepRunner::Timing m_timing;
+    QPointer<EolRun> m_run;
+    Counters m_counters;
+    QHash<QString, bool> m_firstResult; // serial → its first verdict was a pass
+    QVector<UnitRecord> m_last;
+    QStringList m_unconfirmed;
+    QString m_storeError;
+};
+
+} // namespace opentop

@@ -1,0 +1,151 @@
+// Production mode in the real window (issue 12, section 5): a serial number typed as a barcode
+// scanner types it (ending with Enter) runs the unit to PASS or FAIL, shown large with the reason
+// and counted; nothing that edits a parameter is offered meanwhile; quitting while a unit runs
+// asks, cancels it, stops its motor and records it as aborted.
+#include "MainWindowFixture.h"
+#include "eol/EolSpeedChart.h"
+#include "eol/EolStation.h"
+#include "eol/ProductionMode.h"
+#include "eol/ProductionView.h"
+#include "eol/RecipeFile.h"
+#include "eol/ResultDatabase.h"
+#include "eol/ResultQueries.h"
+#include "workspace/DriveWorkspace.h"
+
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QTemporaryDir>
+
+using MainWindowProductionTest = opentop::test::MainWindowFixture;
+using namespace opentop;
+using namespace opentop::test;
+
+namespace {
+
+// The example DBU200 recipe for drive 1 without per-unit values, with a short or a long hold.
+QString recipeFile(const QTemporaryDir& dir, double holdS, const QString& defect = QString())
+{
+    QString error;
+    std::optional<Recipe> recipe = RecipeFile::load(
+        QStringLiteral(OPENTOP_SOURCE_DIR "/docs/examples/recipe-dbu200.json"), &error);
+    EXPECT_TRUE(recipe) << qPrintable(error);
+    RecipePosition& p = recipe->positions[0];
+    p.unitValues.clear();
+    for (RecipeStep& s : p.steps)
+        if (s.type == RecipeStep::Type::Hold)
+            s.duration = holdS;
+    const QString path = dir.filePath(QStringLiteral("recipe%1.json").arg(defect));
+    EXPECT_TRUE(RecipeFile::save(*recipe, path, &error)) << qPrintable(error);
+    return path;
+}
+
+// Answers the next modal question with `button` once it shows; its text goes to *text.
+void answerNextQuestion(QMessageBox::StandardButton button, QString* text)
+{
+    auto* timer = new QTimer;
+    QObject::connect(timer, &QTimer::timeout, [timer, button, text] {
+        if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+            *text = box->text();
+            box->button(button)->click();
+            timer->deleteLater();
+        }
+    });
+    timer->start(20);
+}
+
+bool actionVisible(MainWindow* window, const QString& text)
+{
+    for (QAction* a : window->findChildren<QAction*>())
+        if (a->text() == text)
+            return a->isVisible();
+    ADD_FAILURE() << "no action " << qPrintable(text);
+    return false;
+}
+
+} // namespace
+
+TEST_F(MainWindowProductionTest, AScannedSerialRunsTheUnitToPassAndNothingEditsMeanwhile)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath(QStringLiteral("results.db"));
+    qputenv("OPENTOP_EOL_DB", db.toLocal8Bit());
+    ProductionMode* production = window->production();
+    production->toggleAction()->trigger();
+    qunsetenv("OPENTOP_EOL_DB");
+    ASSERT_TRUE(production->isActive());
+    EXPECT_FALSE(window->workspace()->isVisible()) << "no parameter pages in production mode";
+    EXPECT_FALSE(actionVisible(window.get(), QStringLiteral("&Write all pending")));
+    EXPECT_TRUE(window->stopAllButton()->isVisible()) << "STOP ALL stays";
+
+    ProductionView* view = production->view();
+    ASSERT_TRUE(view->openRecipe(recipeFile(dir, 1)));
+    ASSERT_TRUE(view->serialField()->isEnabled());
+    QTest::keyClicks(view->serialField(), QStringLiteral("SN-W1"));
+    QTest::keyClick(view->serialField(), Qt::Key_Return);
+    EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("TESTING"));
+    EXPECT_FALSE(view->serialField()->isEnabled()) << "no second unit while one runs";
+    ASSERT_TRUE(waitFor([&] { return view->verdictLabel()->text() != QLatin1String("TESTING"); },
+                        30000));
+    EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("PASS"))
+        << qPrintable(view->reasonLabel()->text());
+    EXPECT_GT(view->chart()->pointCount(), 5) << "the live speed was drawn";
+    EXPECT_TRUE(view->countersLabel()->text().startsWith(QStringLiteral("Tested 1 · passed 1")))
+        << qPrintable(view->countersLabel()->text());
+    ASSERT_EQ(view->unitsTable()->rowCount(), 1);
+    EXPECT_EQ(view->unitsTable()->item(0, 1)->text(), QStringLiteral("SN-W1"));
+    EXPECT_TRUE(view->serialField()->hasFocus() || !window->isActiveWindow())
+        << "ready for the next barcode";
+    EXPECT_EQ(speedOf(1), 0);
+
+    QString error;
+    const auto database = ResultDatabase::open(db, &error);
+    ASSERT_TRUE(database) << qPrintable(error);
+    const auto history = ResultQueries(*database).history(QStringLiteral("SN-W1"), &error);
+    ASSERT_TRUE(history && history->size() == 1) << qPrintable(error);
+    EXPECT_EQ(history->first().status, UnitStatus::Pass);
+
+    // Back to engineering mode: the pages and the editing actions return.
+    production->toggleAction()->trigger();
+    EXPECT_TRUE(window->workspace()->isVisible());
+    EXPECT_TRUE(actionVisible(window.get(), QStringLiteral("&Write all pending")));
+}
+
+TEST_F(MainWindowProductionTest, QuittingWhileAUnitRunsCancelsItStopsTheMotorAndRecordsIt)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath(QStringLiteral("results.db"));
+    qputenv("OPENTOP_EOL_DB", db.toLocal8Bit());
+    window->production()->toggleAction()->trigger();
+    qunsetenv("OPENTOP_EOL_DB");
+    ProductionView* view = window->production()->view();
+    ASSERT_TRUE(view->openRecipe(recipeFile(dir, 60)));
+    QTest::keyClicks(view->serialField(), QStringLiteral("SN-Q1"));
+    QTest::keyClick(view->serialField(), Qt::Key_Return);
+    ASSERT_TRUE(waitFor(
+        [&] { return view->drivesTable()->item(0, 1)->text().contains(QLatin1String("hold")); },
+        20000));
+    ASSERT_GT(speedOf(1), 0);
+
+    // First "No": the unit goes on.
+    QString question;
+    answerNextQuestion(QMessageBox::No, &question);
+    EXPECT_FALSE(window->close());
+    EXPECT_TRUE(question.contains(QStringLiteral("SN-Q1"))) << qPrintable(question);
+    EXPECT_TRUE(window->production()->station()->isRunning());
+    EXPECT_GT(speedOf(1), 0);
+
+    // Then "Yes": cancelled, the motor stopped, recorded as aborted, and the window closes.
+    answerNextQuestion(QMessageBox::Yes, &question);
+    window->close();
+    ASSERT_TRUE(waitFor([&] { return !window->isVisible(); }, 20000));
+    EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("ABORTED"));
+    EXPECT_EQ(speedOf(1), 0);
+    QString error;
+    const auto database = ResultDatabase::open(db, &error);
+    ASSERT_TRUE(database) << qPrintable(error);
+    const auto history = ResultQueries(*database).history(QStringLiteral("SN-Q1"), &error);
+    ASSERT_TRUE(history && history->size() == 1) << qPrintable(error);
+    EXPECT_EQ(history->first().status, UnitStatus::Aborted);
+}

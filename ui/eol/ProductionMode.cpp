@@ -1,0 +1,113 @@
+#include "eol/ProductionMode.h"
+
+#include "eol/EolStation.h"
+#include "eol/ProductionView.h"
+
+#include <QAction>
+#include <QBoxLayout>
+#include <QDockWidget>
+#include <QMainWindow>
+#include <QMenu>
+#include <QMessageBox>
+
+namespace opentop {
+
+ProductionMode::ProductionMode(QMainWindow* window, QWidget* engineering, QBoxLayout* column,
+                               QVector<QMenu*> editingMenus, std::function<ModbusClient*()> client,
+                               TrafficLog* traffic)
+    : QObject(window)
+    , m_window(window)
+    , m_engineering(engineering)
+    , m_editingMenus(std::move(editingMenus))
+    , m_station(new EolStation(this))
+{
+    m_view = new ProductionView(m_station, std::move(client), traffic, window);
+    m_view->hide();
+    column->addWidget(m_view, 1);
+    m_toggle = new QAction(tr("&Production mode (end of line)"), this);
+    m_toggle->setCheckable(true);
+    m_toggle->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
+    m_toggle->setToolTip(tr("The operator screen of an end-of-line station; no parameter "
+                            "editing until you switch back (Ctrl+Shift+P)"));
+    connect(m_toggle, &QAction::toggled, this, &ProductionMode::setActive);
+    m_fullScreen = new QAction(tr("&Full screen"), this);
+    m_fullScreen->setCheckable(true);
+    m_fullScreen->setShortcut(QKeySequence(Qt::Key_F11));
+    connect(m_fullScreen, &QAction::toggled, this, [this](bool on) {
+        on ? m_window->showFullScreen() : m_window->showNormal();
+    });
+}
+
+bool ProductionMode::isActive() const
+{
+    return m_view->isVisible() || m_toggle->isChecked();
+}
+
+void ProductionMode::setActive(bool active)
+{
+    if (!active && m_station->isRunning()) {
+        // Leaving while a unit is tested would leave it unwatched: finish or cancel it first.
+        QMessageBox::information(m_window, tr("Production mode"),
+                                 tr("A unit is being tested. Cancel it (Esc) or let it finish "
+                                    "before switching back to engineering mode."));
+        const QSignalBlocker block(m_toggle);
+        m_toggle->setChecked(true);
+        return;
+    }
+    if (m_toggle->isChecked() != active) {
+        const QSignalBlocker block(m_toggle);
+        m_toggle->setChecked(active);
+    }
+    m_engineering->setVisible(!active);
+    m_view->setVisible(active);
+    // Their actions are on the toolbar too ("Write all pending"): hidden there as well.
+    for (QMenu* menu : m_editingMenus) {
+        menu->setEnabled(!active);
+        for (QAction* action : menu->actions())
+            action->setVisible(!active);
+    }
+    if (active) {
+        m_hiddenDocks.clear();
+        for (QDockWidget* dock : m_window->findChildren<QDockWidget*>()) {
+            if (dock->isVisible()) {
+                m_hiddenDocks << dock;
+                dock->hide();
+            }
+        }
+        QString error;
+        if (!m_station->hasDatabase() && !m_station->openDatabase(QString(), &error))
+            QMessageBox::warning(m_window, tr("Results database"),
+                                 tr("%1\n\nNo unit can be tested until results can be recorded.")
+                                     .arg(error));
+        m_view->refresh();
+        m_view->focusSerial();
+    } else {
+        for (QDockWidget* dock : m_hiddenDocks)
+            dock->show();
+        m_hiddenDocks.clear();
+    }
+}
+
+bool ProductionMode::guard(const QString& what, std::function<void()> then)
+{
+    if (!m_station->isRunning())
+        return false;
+    const auto answer = QMessageBox::question(
+        m_window, tr("A unit is being tested"),
+        tr("Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is "
+           "recorded as aborted.")
+            .arg(m_station->run()->record().serial, what),
+        QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
+    if (answer != QMessageBox::Yes)
+        return true;
+    auto connection = std::make_shared<QMetaObject::Connection>();
+    *connection = connect(m_station, &EolStation::unitFinished, this,
+                          [connection, then = std::move(then)](const UnitRecord&) {
+                              QObject::disconnect(*connection);
+                              then();
+                          });
+    m_station->cancel(tr("cancelled to %1").arg(what));
+    return true;
+}
+
+} // namespace opentop

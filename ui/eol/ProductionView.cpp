@@ -1,0 +1,328 @@
+#include "eol/ProductionView.h"
+
+#include "eol/EolSpeedChart.h"
+#include "eol/EolStation.h"
+#include "profile/ProfileRegistry.h"
+
+#include <QDateTime>
+#include <QFileDialog>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QInputDialog>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QShortcut>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <pwd.h>
+#include <unistd.h>
+
+namespace opentop {
+
+namespace {
+
+QFont scaled(QFont font, double factor, bool bold = false)
+{
+    font.setPointSizeF(font.pointSizeF() * factor);
+    font.setBold(bold);
+    return font;
+}
+
+QTableWidget* table(const QStringList& headers, QWidget* parent)
+{
+    auto* t = new QTableWidget(0, int(headers.size()), parent);
+    t->setHorizontalHeaderLabels(headers);
+    t->horizontalHeader()->setStretchLastSection(true);
+    t->verticalHeader()->hide();
+    t->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    t->setSelectionMode(QAbstractItemView::NoSelection);
+    t->setFocusPolicy(Qt::NoFocus); // the serial field keeps the scanner's keys
+    return t;
+}
+
+QString loginName()
+{
+    const passwd* user = ::getpwuid(::geteuid());
+    return user ? QString::fromLocal8Bit(user->pw_name) : QString();
+}
+
+} // namespace
+
+ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*()> client,
+                               TrafficLog* traffic, QWidget* parent)
+    : QWidget(parent)
+    , m_station(station)
+    , m_client(std::move(client))
+    , m_traffic(traffic)
+{
+    setObjectName(QStringLiteral("productionView"));
+    // The station: recipe, per-unit values, results database, operator.
+    m_recipe = new QLabel(this);
+    auto* openRecipe = new QPushButton(tr("Open recipe…"), this);
+    auto* openValues = new QPushButton(tr("Per-unit values…"), this);
+    m_database = new QLabel(this);
+    m_operator = new QLineEdit(loginName(), this);
+    m_operator->setPlaceholderText(tr("operator"));
+    m_operator->setMaximumWidth(180);
+    auto* top = new QHBoxLayout;
+    top->addWidget(new QLabel(tr("Recipe:"), this));
+    top->addWidget(m_recipe, 1);
+    top->addWidget(openRecipe);
+    top->addWidget(openValues);
+    top->addSpacing(12);
+    top->addWidget(new QLabel(tr("Operator:"), this));
+    top->addWidget(m_operator);
+
+    m_serial = new QLineEdit(this);
+    m_serial->setObjectName(QStringLiteral("serialField"));
+    m_serial->setFont(scaled(font(), 2.2));
+    m_serial->setPlaceholderText(tr("Scan or type the serial number, then Enter"));
+    m_cancel = new QPushButton(tr("Cancel unit (Esc)"), this);
+    m_cancel->setFont(scaled(font(), 1.4, true));
+    m_cancel->setEnabled(false);
+    auto* serialRow = new QHBoxLayout;
+    serialRow->addWidget(m_serial, 1);
+    serialRow->addWidget(m_cancel);
+
+    m_verdict = new QLabel(this);
+    m_verdict->setObjectName(QStringLiteral("verdictLabel"));
+    m_verdict->setAlignment(Qt::AlignCenter);
+    m_verdict->setFont(scaled(font(), 5.0, true));
+    m_verdict->setMinimumHeight(m_verdict->fontMetrics().height() + 16);
+    m_reason = new QLabel(this);
+    m_reason->setWordWrap(true);
+    m_reason->setAlignment(Qt::AlignCenter);
+    m_reason->setFont(scaled(font(), 1.5));
+    m_reason->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+    m_drives = table({tr("Drive"), tr("Now")}, this);
+    m_chart = new EolSpeedChart(this);
+    auto* middle = new QSplitter(Qt::Horizontal, this);
+    middle->addWidget(m_drives);
+    middle->addWidget(m_chart);
+    middle->setStretchFactor(1, 2);
+
+    m_units = table({tr("Time"), tr("Serial"), tr("Verdict"), tr("Reason")}, this);
+    m_counters = new QLabel(this);
+    m_counters->setFont(scaled(font(), 1.3, true));
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(top);
+    layout->addWidget(m_database);
+    layout->addLayout(serialRow);
+    layout->addWidget(m_verdict);
+    layout->addWidget(m_reason);
+    layout->addWidget(middle, 3);
+    layout->addWidget(m_counters);
+    layout->addWidget(m_units, 2);
+
+    connect(openRecipe, &QPushButton::clicked, this, &ProductionView::chooseRecipe);
+    connect(openValues, &QPushButton::clicked, this, &ProductionView::chooseUnitValues);
+    connect(m_serial, &QLineEdit::returnPressed, this, &ProductionView::startUnit);
+    connect(m_cancel, &QPushButton::clicked, this, [this] { m_station->cancel(); });
+    auto* escape = new QShortcut(QKeySequence(Qt::Key_Escape), this);
+    escape->setContext(Qt::WidgetWithChildrenShortcut);
+    connect(escape, &QShortcut::activated, this, [this] {
+        if (m_station->isRunning())
+            m_station->cancel();
+    });
+    connect(m_operator, &QLineEdit::textChanged, m_station, &EolStation::setOperatorName);
+    m_station->setOperatorName(m_operator->text());
+    connect(m_station, &EolStation::unitStarted, this, &ProductionView::unitStarted);
+    connect(m_station, &EolStation::phaseChanged, this,
+            [this](int n, EolDriveRun::Phase phase, const QString& text) {
+                phaseChanged(n, int(phase), text);
+            });
+    connect(m_station, &EolStation::speedSampled, this,
+            [this](int n, double speed, const QString& unit) {
+                m_chart->add(n, m_clock.elapsed() / 1000.0, speed, unit);
+            });
+    connect(m_station, &EolStation::unitFinished, this, &ProductionView::unitFinished);
+    showVerdict(tr("READY"), QStringLiteral("#5f6b76"), QString());
+    refreshRecipe();
+    refreshCounters();
+}
+
+void ProductionView::refresh()
+{
+    refreshRecipe();
+    refreshCounters();
+}
+
+void ProductionView::focusSerial()
+{
+    m_serial->setFocus();
+    m_serial->selectAll();
+}
+
+bool ProductionView::openRecipe(const QString& path)
+{
+    QStringList problems;
+    if (!m_station->loadRecipe(path, &problems)) {
+        QMessageBox::warning(this, tr("Recipe not usable"),
+                             tr("%1 cannot be run; nothing will be sent:\n\n%2")
+                                 .arg(QDir::toNativeSeparators(path), problems.join(QLatin1Char('\n'))));
+        return false;
+    }
+    refreshRecipe();
+    focusSerial();
+    return true;
+}
+
+void ProductionView::chooseRecipe()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open recipe"), QString(),
+                                                      tr("Recipes (*.json)"));
+    if (!path.isEmpty())
+        openRecipe(path);
+}
+
+void ProductionView::chooseUnitValues()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Per-unit values"), QString(),
+                                                      tr("CSV files (*.csv)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!m_station->loadUnitValues(path, &error))
+        QMessageBox::warning(this, tr("Per-unit values"), error);
+    refreshRecipe();
+}
+
+void ProductionView::refreshRecipe()
+{
+    m_recipe->setText(m_station->hasRecipe()
+                          ? tr("<b>%1</b> rev. %2 — %n drive(s)", nullptr,
+                               int(m_station->recipe().positions.size()))
+                                .arg(m_station->recipe().product.toHtmlEscaped(),
+                                     m_station->recipe().revision.toHtmlEscaped())
+                          : tr("<i>none: open the product's recipe</i>"));
+    m_database->setText(tr("Station %1 · results: %2 · per-unit values: %3")
+                            .arg(m_station->station(), m_station->databaseText(),
+                                 m_station->hasUnitValues() ? tr("loaded") : tr("none")));
+    m_serial->setEnabled(m_station->hasRecipe() && !m_station->isRunning());
+}
+
+void ProductionView::refreshCounters()
+{
+    const EolStation::Counters& c = m_station->counters();
+    m_counters->setText(tr("Tested %1 · passed %2 · failed %3 · first-pass yield %4 %")
+                            .arg(c.tested)
+                            .arg(c.passed)
+                            .arg(c.failed)
+                            .arg(c.firstTested ? QString::number(c.firstPassYield(), 'f', 1)
+                                               : QStringLiteral("–")));
+}
+
+void ProductionView::showVerdict(const QString& text, const QString& colour, const QString& reason)
+{
+    m_verdict->setText(text);
+    m_verdict->setStyleSheet(
+        QStringLiteral("QLabel { background: %1; color: white; border-radius: 6px; }").arg(colour));
+    m_reason->setText(reason);
+}
+
+void ProductionView::startUnit()
+{
+    const QString serial = m_serial->text().trimmed();
+    if (serial.isEmpty() || m_station->isRunning())
+        return;
+    // Values the recipe leaves to the operator, each within its range.
+    QHash<int, QHash<QString, double>> typed;
+    const Profile* profile = nullptr;
+    for (const auto& [machineNumber, value] : m_station->operatorValues()) {
+        for (const RecipePosition& p : m_station->recipe().positions)
+            if (p.machineNumber == machineNumber)
+                profile = ProfileRegistry::builtIn().family(p.family);
+        const ParameterMeta* meta = profile ? profile->parameter(value.name) : nullptr;
+        bool ok = false;
+        const double v = QInputDialog::getDouble(
+            this, tr("Per-unit value"),
+            tr("Drive %1: %2 (%3–%4 %5)")
+                .arg(machineNumber)
+                .arg(meta ? meta->label : value.name)
+                .arg(value.min)
+                .arg(value.max)
+                .arg(value.unit),
+            value.min, value.min, value.max, 3, &ok);
+        if (!ok)
+            return;
+        typed[machineNumber][value.name] = v;
+    }
+    QString error;
+    if (!m_station->start(m_client(), m_traffic, serial, typed, &error)) {
+        showVerdict(tr("NOT STARTED"), QStringLiteral("#8a6d00"), error);
+        focusSerial();
+    }
+}
+
+void ProductionView::unitStarted(const QString& serial)
+{
+    m_clock.start();
+    m_chart->clear();
+    m_drives->setRowCount(0);
+    for (const RecipePosition& p : m_station->recipe().positions) {
+        const int row = m_drives->rowCount();
+        m_drives->insertRow(row);
+        m_drives->setItem(row, 0,
+                          new QTableWidgetItem(p.name.isEmpty()
+                                                   ? tr("drive %1").arg(p.machineNumber)
+                                                   : tr("drive %1 (%2)").arg(p.machineNumber).arg(p.name)));
+        m_drives->setItem(row, 1, new QTableWidgetItem(tr("waiting")));
+        m_drives->item(row, 0)->setData(Qt::UserRole, p.machineNumber);
+    }
+    showVerdict(tr("TESTING"), QStringLiteral("#1f5fa8"), tr("Unit %1").arg(serial));
+    m_cancel->setEnabled(true);
+    m_serial->setEnabled(false);
+}
+
+void ProductionView::phaseChanged(int machineNumber, int, const QString& text)
+{
+    for (int row = 0; row < m_drives->rowCount(); ++row)
+        if (m_drives->item(row, 0)->data(Qt::UserRole).toInt() == machineNumber)
+            m_drives->item(row, 1)->setText(text);
+}
+
+void ProductionView::unitFinished(const UnitRecord& record)
+{
+    m_cancel->setEnabled(false);
+    QString reason = record.failureReason;
+    if (!m_station->storeError().isEmpty())
+        reason += QLatin1Char('\n') +
+                  tr("NOT RECORDED: %1").arg(m_station->storeError());
+    switch (record.status) {
+    case UnitStatus::Pass:
+        showVerdict(tr("PASS"), QStringLiteral("#1e7b34"),
+                    m_station->storeError().isEmpty() ? tr("Unit %1").arg(record.serial) : reason);
+        break;
+    case UnitStatus::Fail:
+        showVerdict(tr("FAIL"), QStringLiteral("#b3261e"), reason);
+        break;
+    default:
+        showVerdict(tr("ABORTED"), QStringLiteral("#b35c00"), reason);
+        break;
+    }
+    if (!m_station->unconfirmedStops().isEmpty())
+        QMessageBox::critical(this, tr("Motor not confirmed stopped"),
+                              tr("These motors may still be turning; stop them before touching "
+                                 "the unit:\n\n%1")
+                                  .arg(m_station->unconfirmedStops().join(QLatin1Char('\n'))));
+    m_units->insertRow(0);
+    const QString verdict = unitStatusName(record.status).toUpper();
+    const QStringList cells{record.ended.toLocalTime().toString(QStringLiteral("HH:mm:ss")),
+                            record.serial, verdict, record.failureReason};
+    for (int c = 0; c < cells.size(); ++c)
+        m_units->setItem(0, c, new QTableWidgetItem(cells[c]));
+    if (m_units->rowCount() > 50)
+        m_units->removeRow(m_units->rowCount() - 1);
+    refreshCounters();
+    refreshRecipe();
+    m_serial->clear();
+    focusSerial();
+}
+
+} // namespace opentop

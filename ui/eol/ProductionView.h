@@ -1,0 +1,75 @@
+#pragma once
+
+#include "eol/UnitRecord.h"
+
+#include <QElapsedTimer>
+#include <QWidget>
+#include <functional>
+
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QTableWidget;
+
+namespace opentop {
+
+class EolSpeedChart;
+class EolStation;
+class ModbusClient;
+class TrafficLog;
+
+// The operator screen of an end-of-line station: a large serial-number field that takes a
+// barcode scanner (typing ending with Enter starts the unit), each drive's progress, the live
+// speed, a PASS/FAIL panel readable from two metres with the failure in plain words, and the
+// last units with this shift's counters. Nothing here edits a parameter.
+class ProductionView : public QWidget
+{
+    Q_OBJECT
+public:
+    ProductionView(EolStation* station, std::function<ModbusClient*()> client, TrafficLog* traffic,
+                   QWidget* parent = nullptr);
+
+    QLineEdit* serialField() const { return m_serial; }
+    QLabel* verdictLabel() const { return m_verdict; }
+    QLabel* reasonLabel() const { return m_reason; }
+    QLabel* countersLabel() const { return m_counters; }
+    QPushButton* cancelButton() const { return m_cancel; }
+    QTableWidget* drivesTable() const { return m_drives; }
+    QTableWidget* unitsTable() const { return m_units; }
+    EolSpeedChart* chart() const { return m_chart; }
+    // Opens a recipe (as the Open recipe button does, without the file dialog).
+    bool openRecipe(const QString& path);
+    // Shows the station's recipe, database and counters as they are now.
+    void refresh();
+    // Gives the serial field the keyboard, so a scanner's keys land there.
+    void focusSerial();
+
+private:
+    void chooseRecipe();
+    void chooseUnitValues();
+    void startUnit();
+    void showVerdict(const QString& text, const QString& colour, const QString& reason);
+    void unitStarted(const QString& serial);
+    void phaseChanged(int machineNumber, int phase, const QString& text);
+    void unitFinished(const UnitRecord& record);
+    void refreshRecipe();
+    void refreshCounters();
+
+    EolStation* m_station;
+    std::function<ModbusClient*()> m_client;
+    TrafficLog* m_traffic;
+    QLabel* m_recipe;
+    QLabel* m_database;
+    QLineEdit* m_operator;
+    QLineEdit* m_serial;
+    QPushButton* m_cancel;
+    QTableWidget* m_drives;
+    EolSpeedChart* m_chart;
+    QLabel* m_verdict;
+    QLabel* m_reason;
+    QTableWidget* m_units;
+    QLabel* m_counters;
+    QElapsedTimer m_clock;
+};
+
+} // namespace opentop
