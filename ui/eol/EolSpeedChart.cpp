@@ -19,6 +19,7 @@ EolSpeedChart::EolSpeedChart(QWidget* parent)
     m_chart->legend()->setAlignment(Qt::AlignRight);
     m_time->setTitleText(tr("time (s)"));
     m_time->setLabelFormat(QStringLiteral("%.0f"));
+    m_time->setTickCount(6); // 0, 2, 4, ... of whole tens of seconds: labels stay whole numbers
     m_speed->setLabelFormat(QStringLiteral("%.0f"));
     m_chart->addAxis(m_time, Qt::AlignBottom);
     m_chart->addAxis(m_speed, Qt::AlignLeft);
@@ -38,7 +39,9 @@ void EolSpeedChart::clear()
     m_maxSpeed = 0;
     m_time->setRange(0, 10);
     m_speed->setRange(0, 100);
-    m_speed->setTitleText(tr("speed"));
+    // Numbers without a unit are not shown: the unit is known from the first sample on.
+    m_speed->setLabelsVisible(!m_unit.isEmpty());
+    m_speed->setTitleText(m_unit.isEmpty() ? tr("speed") : tr("speed (%1)").arg(m_unit));
 }
 
 void EolSpeedChart::add(int machineNumber, double seconds, double speed, const QString& unit)
@@ -50,7 +53,9 @@ void EolSpeedChart::add(int machineNumber, double seconds, double speed, const Q
         m_chart->addSeries(series);
         series->attachAxis(m_time);
         series->attachAxis(m_speed);
+        m_unit = unit;
         m_speed->setTitleText(tr("speed (%1)").arg(unit));
+        m_speed->setLabelsVisible(true);
     }
     series->append(seconds, speed);
     m_maxSpeed = std::max(m_maxSpeed, std::abs(speed));

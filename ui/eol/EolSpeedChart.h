@@ -28,6 +28,7 @@ private:
     QValueAxis* m_time;
     QValueAxis* m_speed;
     QHash<int, QLineSeries*> m_series;
+    QString m_unit; // the speed unit of the last unit tested
     double m_maxSpeed = 0;
 };
 
