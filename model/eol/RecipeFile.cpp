@@ -229,6 +229,14 @@ std::optional<Recipe> RecipeFile::fromJson(const QByteArray& data, QString* erro
     return RecipeParser().parse(data, error, checksum);
 }
 
+std::optional<Recipe> RecipeFile::fromEdited(QJsonObject document, QString* error)
+{
+    // What an editor holds is the person's own text: read it exactly as a file, signed as is.
+    document.remove(QStringLiteral("checksum"));
+    document.insert(QStringLiteral("checksum"), BackupFile::checksumOf(document));
+    return fromJson(QJsonDocument(document).toJson(QJsonDocument::Compact), error);
+}
+
 bool RecipeFile::save(const Recipe& recipe, const QString& path, QString* error)
 {
     return OutputFile::write(path, toJson(recipe), error);

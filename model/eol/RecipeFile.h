@@ -30,6 +30,9 @@ public:
     // *checksum (optional) gets the file's checksum when it is accepted.
     static std::optional<Recipe> fromJson(const QByteArray& data, QString* error,
                                           QString* checksum = nullptr);
+    // A document edited in the program (the recipe editor), read exactly as a file would be but
+    // without a checksum to match: every structural problem is refused with its path.
+    static std::optional<Recipe> fromEdited(QJsonObject document, QString* error);
     // Atomic: the file is replaced only once the whole text has been written (OutputFile).
     static bool save(const Recipe& recipe, const QString& path, QString* error);
     static std::optional<Recipe> load(const QString& path, QString* error,

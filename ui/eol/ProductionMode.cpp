@@ -33,9 +33,8 @@ ProductionMode::ProductionMode(QMainWindow* window, QWidget* engineering, QBoxLa
     m_fullScreen = new QAction(tr("&Full screen"), this);
     m_fullScreen->setCheckable(true);
     m_fullScreen->setShortcut(QKeySequence(Qt::Key_F11));
-    connect(m_fullScreen, &QAction::toggled, this, [this](bool on) {
-        on ? m_window->showFullScreen() : m_window->showNormal();
-    });
+    connect(m_fullScreen, &QAction::toggled, this,
+            [this](bool on) { on ? m_window->showFullScreen() : m_window->showNormal(); });
 }
 
 bool ProductionMode::isActive() const
@@ -76,9 +75,9 @@ void ProductionMode::setActive(bool active)
         }
         QString error;
         if (!m_station->hasDatabase() && !m_station->openDatabase(QString(), &error))
-            QMessageBox::warning(m_window, tr("Results database"),
-                                 tr("%1\n\nNo unit can be tested until results can be recorded.")
-                                     .arg(error));
+            QMessageBox::warning(
+                m_window, tr("Results database"),
+                tr("%1\n\nNo unit can be tested until results can be recorded.").arg(error));
         m_view->refresh();
         m_view->focusSerial();
     } else {

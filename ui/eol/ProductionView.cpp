@@ -163,9 +163,10 @@ bool ProductionView::openRecipe(const QString& path)
 {
     QStringList problems;
     if (!m_station->loadRecipe(path, &problems)) {
-        QMessageBox::warning(this, tr("Recipe not usable"),
-                             tr("%1 cannot be run; nothing will be sent:\n\n%2")
-                                 .arg(QDir::toNativeSeparators(path), problems.join(QLatin1Char('\n'))));
+        QMessageBox::warning(
+            this, tr("Recipe not usable"),
+            tr("%1 cannot be run; nothing will be sent:\n\n%2")
+                .arg(QDir::toNativeSeparators(path), problems.join(QLatin1Char('\n'))));
         return false;
     }
     refreshRecipe();
@@ -175,8 +176,8 @@ bool ProductionView::openRecipe(const QString& path)
 
 void ProductionView::chooseRecipe()
 {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open recipe"), QString(),
-                                                      tr("Recipes (*.json)"));
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open recipe"), QString(), tr("Recipes (*.json)"));
     if (!path.isEmpty())
         openRecipe(path);
 }
@@ -240,15 +241,14 @@ void ProductionView::startUnit()
                 profile = ProfileRegistry::builtIn().family(p.family);
         const ParameterMeta* meta = profile ? profile->parameter(value.name) : nullptr;
         bool ok = false;
-        const double v = QInputDialog::getDouble(
-            this, tr("Per-unit value"),
-            tr("Drive %1: %2 (%3–%4 %5)")
-                .arg(machineNumber)
-                .arg(meta ? meta->label : value.name)
-                .arg(value.min)
-                .arg(value.max)
-                .arg(value.unit),
-            value.min, value.min, value.max, 3, &ok);
+        const double v = QInputDialog::getDouble(this, tr("Per-unit value"),
+                                                 tr("Drive %1: %2 (%3–%4 %5)")
+                                                     .arg(machineNumber)
+                                                     .arg(meta ? meta->label : value.name)
+                                                     .arg(value.min)
+                                                     .arg(value.max)
+                                                     .arg(value.unit),
+                                                 value.min, value.min, value.max, 3, &ok);
         if (!ok)
             return;
         typed[machineNumber][value.name] = v;
@@ -268,10 +268,11 @@ void ProductionView::unitStarted(const QString& serial)
     for (const RecipePosition& p : m_station->recipe().positions) {
         const int row = m_drives->rowCount();
         m_drives->insertRow(row);
-        m_drives->setItem(row, 0,
-                          new QTableWidgetItem(p.name.isEmpty()
-                                                   ? tr("drive %1").arg(p.machineNumber)
-                                                   : tr("drive %1 (%2)").arg(p.machineNumber).arg(p.name)));
+        m_drives->setItem(
+            row, 0,
+            new QTableWidgetItem(p.name.isEmpty()
+                                     ? tr("drive %1").arg(p.machineNumber)
+                                     : tr("drive %1 (%2)").arg(p.machineNumber).arg(p.name)));
         m_drives->setItem(row, 1, new QTableWidgetItem(tr("waiting")));
         m_drives->item(row, 0)->setData(Qt::UserRole, p.machineNumber);
     }
@@ -292,8 +293,7 @@ void ProductionView::unitFinished(const UnitRecord& record)
     m_cancel->setEnabled(false);
     QString reason = record.failureReason;
     if (!m_station->storeError().isEmpty())
-        reason += QLatin1Char('\n') +
-                  tr("NOT RECORDED: %1").arg(m_station->storeError());
+        reason += QLatin1Char('\n') + tr("NOT RECORDED: %1").arg(m_station->storeError());
     switch (record.status) {
     case UnitStatus::Pass:
         showVerdict(tr("PASS"), QStringLiteral("#1e7b34"),

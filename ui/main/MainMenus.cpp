@@ -58,8 +58,8 @@ MainMenus::MainMenus(MainWindow* window, BusDocks* docks, std::function<QVector<
     // Backup, restore, compare and the file viewer (they take the bus as it is when used).
     QMenu* files = bar->addMenu(tr("&Files"));
     new FileActions(
-        window, files, [window] { return window->drives(); }, m_selected,
-        std::move(settings), window);
+        window, files, [window] { return window->drives(); }, m_selected, std::move(settings),
+        window);
 
     QMenu* drive = bar->addMenu(tr("&Drive"));
     DriveWorkspace* workspace = window->workspace();
@@ -97,6 +97,8 @@ MainMenus::MainMenus(MainWindow* window, BusDocks* docks, std::function<QVector<
         a->setShortcut(key);
         view->addAction(a);
     }
+    m_eol = bar->addMenu(tr("&End of line"));
+    m_editing << m_eol;
     new HelpActions(window, bar->addMenu(tr("&Help")));
 }
 

@@ -30,6 +30,8 @@ public:
     // The View menu (the window adds its own modes to it) and the menus that write to drives.
     QMenu* viewMenu() const { return m_view; }
     QVector<QMenu*> editingMenus() const { return m_editing; }
+    // End of line: the recipe editor and the results browser (ui/eol/EolMenu fills it).
+    QMenu* eolMenu() const { return m_eol; }
     // Drive > Write a setting to the selected drives (enabled while several drives of one
     // family are selected: DrivePages::sameFamilySelected).
     QAction* multiWriteAction() const { return m_multiWrite; }
@@ -44,6 +46,7 @@ private:
     std::function<QVector<int>()> m_selected;
     QToolBar* m_toolbar = nullptr;
     QMenu* m_view = nullptr;
+    QMenu* m_eol = nullptr;
     QVector<QMenu*> m_editing;
     QAction* m_multiWrite = nullptr;
     QAction* m_disconnect = nullptr;

@@ -10,6 +10,7 @@
 #include "bus/BusRecallBar.h"
 #include "bus/DriveStatusPoller.h"
 #include "connection/ConnectionDialog.h"
+#include "eol/EolMenu.h"
 #include "eol/ProductionMode.h"
 #include "main/MainMenus.h"
 #include "monitor/MonitorHub.h"
@@ -62,6 +63,7 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
         this, m_docks, [this] { return m_pages->selected(); }, [this] { return m_settings; });
     connect(m_pages, &DrivePages::sameFamilySelected, m_menus->multiWriteAction(),
             &QAction::setEnabled);
+    new EolMenu(m_menus->eolMenu(), this, [this] { return m_drives; });
     m_production = new ProductionMode(
         this, m_splitter, column, m_menus->editingMenus(), [this] { return m_client.get(); },
         m_log.get());

@@ -3,6 +3,8 @@
 // inspected (LayoutInspector): nothing larger than the screen, nothing overlapping, no text cut.
 #include "LayoutInspector.h"
 #include "MainWindowFixture.h"
+#include "eol/RecipeEditor.h"
+#include "eol/ResultsBrowser.h"
 #include "files/BackupDialog.h"
 #include "files/BackupViewer.h"
 #include "files/RestoreDialog.h"
@@ -249,6 +251,17 @@ TEST_F(MainWindowLayoutTest, EveryPageDockAndDialogFitsALaptopScreen)
     auto* viewer = new BackupViewer(window.get());
     ASSERT_TRUE(viewer->open(file));
     inspectDialog(viewer, QStringLiteral("backup viewer"));
+    // End of line: the recipe editor with a recipe of the drives on the bus, the results browser.
+    auto* editor = new RecipeEditor([this] { return window->drives(); }, window.get());
+    editor->show();
+    bool made = false;
+    editor->newFromDrives({1, 7}, QStringLiteral("Layout"), QStringLiteral("A"),
+                          [&](bool, const QString&) { made = true; });
+    ASSERT_TRUE(waitFor([&] { return made; }, 30000));
+    EXPECT_TRUE(editor->check().isEmpty());
+    inspectDialog(editor, QStringLiteral("recipe editor, two drives"));
+    inspectDialog(new ResultsBrowser(dir.filePath(QStringLiteral("none.db")), window.get()),
+                  QStringLiteral("results browser"));
     // The Help menu.
     for (const QString& name : {QStringLiteral("User guide"), QStringLiteral("Keyboard shortcuts"),
                                 QStringLiteral("About OpenTOP")}) {

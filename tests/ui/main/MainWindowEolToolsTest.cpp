@@ -1,0 +1,237 @@
+// The engineers' end-of-line tools in the real window (issue 12, section 5): End of line ▸
+// Results… browses a real SQLite results database (filters, first-pass yield, a unit's whole
+// record, CSV, certificate PDF) and never creates a database by looking; End of line ▸ Recipe
+// editor… opens, makes (from the drive on the bus), edits and checks recipes with the
+// profiles' rules, and saves only a recipe that passes.
+#include "EolSampleUnit.h"
+#include "MainWindowFixture.h"
+#include "eol/EolMenu.h"
+#include "eol/RecipeEditor.h"
+#include "eol/RecipeFile.h"
+#include "eol/RecipePositionForm.h"
+#include "eol/ResultDatabase.h"
+#include "eol/ResultStore.h"
+#include "eol/ResultsBrowser.h"
+
+#include <QComboBox>
+#include <QFile>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPlainTextEdit>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTextBrowser>
+
+using MainWindowEolToolsTest = opentop::test::MainWindowFixture;
+using namespace opentop;
+using namespace opentop::test;
+
+namespace {
+
+QAction* actionNamed(MainWindow* window, const QString& text)
+{
+    for (QAction* a : window->findChildren<QAction*>())
+        if (a->text() == text)
+            return a;
+    return nullptr;
+}
+
+void record(ResultDatabase& db, const QString& serial, UnitStatus status)
+{
+    UnitRecord unit = eolSampleUnit(serial, status);
+    unit.id.clear();
+    unit.started = QDateTime();
+    unit.ended = QDateTime();
+    unit.status = UnitStatus::Running;
+    QString error;
+    ResultStore store(db);
+    ASSERT_TRUE(store.beginUnit(unit, &error)) << qPrintable(error);
+    unit.status = status;
+    if (status == UnitStatus::Pass)
+        unit.failureReason.clear();
+    ASSERT_TRUE(store.finishUnit(unit, &error)) << qPrintable(error);
+}
+
+int settingRow(QTableWidget* table, const QString& name)
+{
+    for (int row = 0; row < table->rowCount(); ++row)
+        if (table->item(row, 1)->text() == name)
+            return row;
+    return -1;
+}
+
+} // namespace
+
+TEST_F(MainWindowEolToolsTest, ResultsShowsFiltersAndExportsWhatTheDatabaseHolds)
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("results.db"));
+    {
+        QString error;
+        auto db = ResultDatabase::open(path, &error);
+        ASSERT_TRUE(db) << qPrintable(error);
+        record(*db, QStringLiteral("SN-A"), UnitStatus::Pass);
+        record(*db, QStringLiteral("SN-B"), UnitStatus::Fail);
+        record(*db, QStringLiteral("SN-B"), UnitStatus::Pass); // a retest: no first pass
+    }
+    qputenv("OPENTOP_EOL_DB", path.toLocal8Bit());
+    QAction* results = actionNamed(window.get(), QStringLiteral("Re&sults…"));
+    ASSERT_TRUE(results);
+    results->trigger();
+    qunsetenv("OPENTOP_EOL_DB");
+    auto* browser = window->findChild<ResultsBrowser*>();
+    ASSERT_TRUE(browser);
+    ASSERT_TRUE(browser->isVisible());
+    EXPECT_EQ(browser->table()->rowCount(), 3);
+    EXPECT_TRUE(browser->summary().contains(QStringLiteral("first-pass yield 50.0 %")))
+        << qPrintable(browser->summary());
+
+    browser->verdictFilter()->setCurrentIndex(
+        browser->verdictFilter()->findData(QStringLiteral("fail")));
+    ASSERT_TRUE(browser->search());
+    ASSERT_EQ(browser->table()->rowCount(), 1);
+    EXPECT_EQ(browser->table()->item(0, 1)->text(), QStringLiteral("SN-B"));
+    browser->table()->selectRow(0);
+    const QString details = browser->details()->toPlainText();
+    EXPECT_TRUE(details.contains(QStringLiteral("SN-B"))) << qPrintable(details);
+    EXPECT_TRUE(details.contains(QStringLiteral("FAIL"))) << qPrintable(details);
+
+    QString error;
+    const QString pdf = dir.filePath(QStringLiteral("SN-B.pdf"));
+    ASSERT_TRUE(browser->saveCertificate(pdf, &error)) << qPrintable(error);
+    QFile certificate(pdf);
+    ASSERT_TRUE(certificate.open(QIODevice::ReadOnly));
+    EXPECT_TRUE(certificate.read(5).startsWith("%PDF"));
+
+    browser->verdictFilter()->setCurrentIndex(0);
+    browser->serialFilter()->setText(QStringLiteral("SN-A"));
+    ASSERT_TRUE(browser->search());
+    ASSERT_EQ(browser->table()->rowCount(), 1);
+    const QString csv = dir.filePath(QStringLiteral("units.csv"));
+    ASSERT_TRUE(browser->exportCsv(csv, &error)) << qPrintable(error);
+    QFile file(csv);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QByteArray text = file.readAll();
+    EXPECT_TRUE(text.contains("SN-A"));
+    EXPECT_FALSE(text.contains("SN-B"));
+
+    // Looking at a database that is not there says so and leaves no file behind.
+    const QString missing = dir.filePath(QStringLiteral("typo.db"));
+    EXPECT_FALSE(browser->openDatabase(missing));
+    EXPECT_FALSE(QFile::exists(missing));
+    EXPECT_EQ(browser->table()->rowCount(), 0);
+    browser->close();
+}
+
+TEST_F(MainWindowEolToolsTest, RecipeEditorChecksEveryEditAndSavesOnlyARecipeThatPasses)
+{
+    QAction* open = actionNamed(window.get(), QStringLiteral("&Recipe editor…"));
+    ASSERT_TRUE(open);
+    open->trigger();
+    auto* editor = window->findChild<RecipeEditor*>();
+    ASSERT_TRUE(editor);
+    // Empty, it cannot be saved and says how to begin.
+    EXPECT_FALSE(editor->check().isEmpty());
+    QString error;
+    ASSERT_TRUE(editor->openFile(
+        QStringLiteral(OPENTOP_SOURCE_DIR "/docs/examples/recipe-dbu200.json"), &error))
+        << qPrintable(error);
+    EXPECT_TRUE(editor->check().isEmpty());
+
+    // A speed the DBU200 cannot run: named with the allowed values, and nothing saved.
+    QTableWidget* settings = editor->positionForm()->settingsTable();
+    const int row = settingRow(settings, QStringLiteral("spno2.speed"));
+    ASSERT_GE(row, 0);
+    settings->item(row, 2)->setText(QStringLiteral("99999"));
+    const QVector<RecipeProblem> problems = editor->check();
+    ASSERT_EQ(problems.size(), 1);
+    EXPECT_TRUE(problems.first().message.contains(QStringLiteral("SPno2")))
+        << qPrintable(problems.first().message);
+    EXPECT_TRUE(problems.first().message.contains(QStringLiteral("r/min")))
+        << qPrintable(problems.first().message);
+    EXPECT_EQ(editor->problemsList()->count(), 1);
+    // Activating the problem selects the setting it names.
+    settings->clearSelection();
+    emit editor->problemsList()->itemActivated(editor->problemsList()->item(0));
+    EXPECT_EQ(settings->currentRow(), row)
+        << qPrintable(editor->problemsList()->item(0)->data(Qt::UserRole).toString());
+    QTemporaryDir dir;
+    const QString saved = dir.filePath(QStringLiteral("c200-b.json"));
+    EXPECT_FALSE(editor->saveTo(saved, &error));
+    EXPECT_FALSE(QFile::exists(saved));
+
+    // Steps that are not JSON are a problem too, named as such.
+    const QString steps = editor->positionForm()->stepsText()->toPlainText();
+    editor->positionForm()->stepsText()->setPlainText(steps + QStringLiteral(" ]"));
+    EXPECT_TRUE(editor->check().first().message.contains(QStringLiteral("test steps")));
+    editor->positionForm()->stepsText()->setPlainText(steps);
+
+    // Fixed: saved, signed, and it loads as a recipe with the new value.
+    settings->item(row, 2)->setText(QStringLiteral("1400"));
+    ASSERT_TRUE(editor->saveTo(saved, &error)) << qPrintable(error);
+    const std::optional<Recipe> recipe = RecipeFile::load(saved, &error);
+    ASSERT_TRUE(recipe) << qPrintable(error);
+    bool found = false;
+    for (const RecipeSetting& s : recipe->positions.first().settings)
+        if (s.name == QLatin1String("spno2.speed")) {
+            found = true;
+            EXPECT_EQ(s.value.toDouble(), 1400);
+        }
+    EXPECT_TRUE(found);
+    editor->close();
+}
+
+TEST_F(MainWindowEolToolsTest, ARecipeFromTheGoldenDriveOnTheBusPassesCheckAndSaves)
+{
+    window->findChild<EolMenu*>()->recipeEditorAction()->trigger();
+    auto* editor = window->findChild<RecipeEditor*>();
+    ASSERT_TRUE(editor);
+    bool finished = false;
+    bool ok = false;
+    QString error;
+    editor->newFromDrives({1, 150}, QStringLiteral("Twin belt"), QStringLiteral("A"),
+                          [&](bool done, const QString& why) {
+                              finished = true;
+                              ok = done;
+                              error = why;
+                          });
+    ASSERT_TRUE(waitFor([&] { return finished; }, 20000));
+    ASSERT_TRUE(ok) << qPrintable(error);
+    EXPECT_EQ(editor->positionChooser()->count(), 2);
+    EXPECT_TRUE(editor->check().isEmpty());
+    // A setting made per-unit leaves the settings, and gets its unit and the widest range the
+    // drive allows (not across the DBU's gap between 0 and 250 r/min).
+    QTableWidget* settings = editor->positionForm()->settingsTable();
+    ASSERT_GE(settingRow(settings, QStringLiteral("spno3.speed")), 0);
+    ASSERT_TRUE(editor->positionForm()->addUnitValue(QStringLiteral("spno3.speed")));
+    EXPECT_EQ(settingRow(settings, QStringLiteral("spno3.speed")), -1);
+    EXPECT_FALSE(editor->positionForm()->addSetting(QStringLiteral("spno3.speed")));
+    EXPECT_FALSE(editor->positionForm()->addUnitValue(QStringLiteral("no.such")));
+    QTemporaryDir dir;
+    const QString saved = dir.filePath(QStringLiteral("twin.json"));
+    for (const RecipeProblem& p : editor->check())
+        ADD_FAILURE() << qPrintable(p.path + QStringLiteral(": ") + p.message);
+    ASSERT_TRUE(editor->saveTo(saved, &error)) << qPrintable(error);
+    const std::optional<Recipe> recipe = RecipeFile::load(saved, &error);
+    ASSERT_TRUE(recipe) << qPrintable(error);
+    ASSERT_EQ(recipe->positions.size(), 2);
+    EXPECT_EQ(recipe->positions.at(1).machineNumber, 150);
+    ASSERT_EQ(recipe->positions.first().unitValues.size(), 1);
+    const RecipeUnitValue& perUnit = recipe->positions.first().unitValues.first();
+    EXPECT_EQ(perUnit.unit, QStringLiteral("r/min"));
+    EXPECT_EQ(perUnit.min, 250);
+    EXPECT_EQ(perUnit.max, 3000);
+
+    // Reading a drive that is not on the bus makes nothing.
+    finished = false;
+    editor->newFromDrives({33}, QStringLiteral("X"), QStringLiteral("1"),
+                          [&](bool done, const QString& why) {
+                              finished = true;
+                              ok = done;
+                              error = why;
+                          });
+    ASSERT_TRUE(finished);
+    EXPECT_FALSE(ok);
+    EXPECT_TRUE(error.contains(QStringLiteral("33"))) << qPrintable(error);
+    editor->close();
+}

@@ -1,0 +1,45 @@
+#include "eol/EolMenu.h"
+
+#include "eol/RecipeEditor.h"
+#include "eol/ResultsBrowser.h"
+
+#include <QAction>
+#include <QMenu>
+#include <QPointer>
+
+namespace opentop {
+
+namespace {
+
+template <typename Window> void showOnce(QPointer<Window>& window, std::function<Window*()> make)
+{
+    if (!window) {
+        window = make();
+        window->setAttribute(Qt::WA_DeleteOnClose);
+    }
+    window->show();
+    window->raise();
+    window->activateWindow();
+}
+
+} // namespace
+
+EolMenu::EolMenu(QMenu* menu, QWidget* window, std::function<BusDrives*()> drives)
+    : QObject(window)
+    , m_window(window)
+    , m_drives(std::move(drives))
+{
+    auto editor = std::make_shared<QPointer<RecipeEditor>>();
+    auto results = std::make_shared<QPointer<ResultsBrowser>>();
+    m_editor = menu->addAction(tr("&Recipe editor…"), this, [this, editor] {
+        showOnce<RecipeEditor>(*editor, [this] { return new RecipeEditor(m_drives, m_window); });
+    });
+    m_editor->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
+    m_results = menu->addAction(tr("Re&sults…"), this, [this, results] {
+        showOnce<ResultsBrowser>(*results,
+                                 [this] { return new ResultsBrowser(QString(), m_window); });
+    });
+    m_results->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+}
+
+} // namespace opentop

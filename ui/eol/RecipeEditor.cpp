@@ -1,0 +1,479 @@
+#include "eol/RecipeEditor.h"
+
+#include "bus/BusDrives.h"
+#include "eol/Recipe.h"
+#include "eol/RecipeBuilder.h"
+#include "eol/RecipeFile.h"
+#include "eol/RecipePositionForm.h"
+#include "files/BackupFile.h"
+#include "files/BackupReader.h"
+#include "profile/ProfileRegistry.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QInputDialog>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPointer>
+#include <QProgressDialog>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QSplitter>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <memory>
+
+namespace opentop {
+
+namespace {
+
+const QString kPositions = QStringLiteral("positions");
+
+} // namespace
+
+RecipeEditor::RecipeEditor(std::function<BusDrives*()> drives, QWidget* parent)
+    : QDialog(parent)
+    , m_drives(std::move(drives))
+{
+    setWindowTitle(tr("Recipe editor"));
+    setObjectName(QStringLiteral("recipeEditor"));
+    m_product = new QLineEdit(this);
+    m_revision = new QLineEdit(this);
+    m_revision->setMaximumWidth(120);
+    m_description = new QLineEdit(this);
+    m_positions = new QComboBox(this);
+    m_form = new RecipePositionForm(this);
+    m_problems = new QListWidget(this);
+    m_problems->setWordWrap(true);
+    m_verdict = new QLabel(this);
+    m_message = new QLabel(this);
+    m_message->setWordWrap(true);
+    m_checkTimer = new QTimer(this);
+    m_checkTimer->setSingleShot(true);
+    m_checkTimer->setInterval(300);
+
+    auto* header = new QFormLayout;
+    auto* productRow = new QHBoxLayout;
+    productRow->addWidget(m_product, 1);
+    productRow->addWidget(new QLabel(tr("Revision:"), this));
+    productRow->addWidget(m_revision);
+    header->addRow(tr("Product:"), productRow);
+    header->addRow(tr("Description:"), m_description);
+    header->addRow(tr("Position:"), m_positions);
+
+    auto* problemsBox = new QWidget(this);
+    auto* problemsLayout = new QVBoxLayout(problemsBox);
+    problemsLayout->setContentsMargins(0, 0, 0, 0);
+    problemsLayout->addWidget(m_verdict);
+    problemsLayout->addWidget(m_problems, 1);
+    auto* split = new QSplitter(Qt::Vertical, this);
+    split->addWidget(m_form);
+    split->addWidget(problemsBox);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 1);
+
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(makeToolbar());
+    layout->addWidget(m_message);
+    layout->addLayout(header);
+    layout->addWidget(split, 1);
+    layout->addWidget(buttons);
+
+    connect(m_positions, &QComboBox::activated, this, &RecipeEditor::showPosition);
+    connect(m_form, &RecipePositionForm::changed, this, &RecipeEditor::scheduleCheck);
+    for (QLineEdit* e : {m_product, m_revision, m_description})
+        connect(e, &QLineEdit::textEdited, this, &RecipeEditor::scheduleCheck);
+    connect(m_checkTimer, &QTimer::timeout, this, [this] { check(); });
+    connect(m_problems, &QListWidget::itemActivated, this,
+            [this](QListWidgetItem* item) { showProblem(item->data(Qt::UserRole).toString()); });
+    resize(1000, 720);
+    setDocument({});
+}
+
+QWidget* RecipeEditor::makeToolbar()
+{
+    auto* bar = new QWidget(this);
+    auto* fromDrives = new QPushButton(tr("New from drives on the bus…"), bar);
+    auto* fromBackup = new QPushButton(tr("New from backup file…"), bar);
+    auto* open = new QPushButton(tr("Open…"), bar);
+    m_save = new QPushButton(tr("Save"), bar);
+    auto* saveAs = new QPushButton(tr("Save as…"), bar);
+    auto* layout = new QHBoxLayout(bar);
+    layout->setContentsMargins(0, 0, 0, 0);
+    for (QPushButton* b : {fromDrives, fromBackup, open, m_save, saveAs})
+        layout->addWidget(b);
+    layout->addStretch(1);
+    connect(fromDrives, &QPushButton::clicked, this, &RecipeEditor::chooseDrives);
+    connect(fromBackup, &QPushButton::clicked, this, &RecipeEditor::chooseBackup);
+    connect(open, &QPushButton::clicked, this, &RecipeEditor::chooseOpen);
+    connect(m_save, &QPushButton::clicked, this, [this] { chooseSave(false); });
+    connect(saveAs, &QPushButton::clicked, this, [this] { chooseSave(true); });
+    return bar;
+}
+
+void RecipeEditor::setDocument(const QJsonObject& document)
+{
+    m_loading = true;
+    m_document = document;
+    m_document.remove(QStringLiteral("checksum"));
+    if (!m_document.contains(QStringLiteral("format"))) {
+        m_document.insert(QStringLiteral("format"), RecipeFile::formatName());
+        m_document.insert(QStringLiteral("formatVersion"), RecipeFile::kFormatVersion);
+    }
+    m_product->setText(m_document.value(QStringLiteral("product")).toString());
+    m_revision->setText(m_document.value(QStringLiteral("revision")).toString());
+    m_description->setText(m_document.value(QStringLiteral("description")).toString());
+    m_current = -1;
+    fillPositionChooser();
+    showPosition(0);
+    m_loading = false;
+    check();
+}
+
+void RecipeEditor::fillPositionChooser()
+{
+    m_positions->clear();
+    const QJsonArray positions = m_document.value(kPositions).toArray();
+    for (int i = 0; i < positions.size(); ++i) {
+        const QJsonObject p = positions.at(i).toObject();
+        const QString name = p.value(QStringLiteral("name")).toString();
+        m_positions->addItem(
+            tr("%1: %2%3")
+                .arg(Recipe::positionText(i, p.value(QStringLiteral("machineNumber")).toInt()),
+                     p.value(QStringLiteral("family")).toString(),
+                     name.isEmpty() ? QString() : tr(" — %1").arg(name)));
+    }
+    m_positions->setEnabled(!positions.isEmpty());
+    m_form->setEnabled(!positions.isEmpty());
+}
+
+void RecipeEditor::commitPosition()
+{
+    QJsonArray positions = m_document.value(kPositions).toArray();
+    if (m_current >= 0 && m_current < positions.size()) {
+        positions.replace(m_current, m_form->position());
+        m_document.insert(kPositions, positions);
+    }
+}
+
+void RecipeEditor::showPosition(int index)
+{
+    commitPosition();
+    const QJsonArray positions = m_document.value(kPositions).toArray();
+    if (index < 0 || index >= positions.size()) {
+        m_current = -1;
+        m_form->setPosition({});
+        return;
+    }
+    m_current = index;
+    m_form->setPosition(positions.at(index).toObject());
+    m_positions->setCurrentIndex(index);
+}
+
+QJsonObject RecipeEditor::document()
+{
+    commitPosition();
+    m_document.insert(QStringLiteral("product"), m_product->text().trimmed());
+    m_document.insert(QStringLiteral("revision"), m_revision->text().trimmed());
+    if (m_description->text().trimmed().isEmpty())
+        m_document.remove(QStringLiteral("description"));
+    else
+        m_document.insert(QStringLiteral("description"), m_description->text().trimmed());
+    return m_document;
+}
+
+void RecipeEditor::showProblem(const QString& path)
+{
+    // "positions[1].settings[3].value": the position, then the row of its table.
+    static const QRegularExpression at(
+        QStringLiteral(R"(^positions\[(\d+)\](?:\.(settings|unitValues)\[(\d+)\])?)"));
+    const QRegularExpressionMatch m = at.match(path);
+    if (!m.hasMatch())
+        return;
+    showPosition(m.captured(1).toInt());
+    if (m.captured(2) == QLatin1String("settings"))
+        m_form->showRow(m_form->settingsTable(), m.captured(3).toInt());
+    else if (m.captured(2) == QLatin1String("unitValues"))
+        m_form->showRow(m_form->unitValuesTable(), m.captured(3).toInt());
+}
+
+void RecipeEditor::scheduleCheck()
+{
+    if (!m_loading)
+        m_checkTimer->start();
+}
+
+QVector<RecipeProblem> RecipeEditor::check()
+{
+    m_checkTimer->stop();
+    const QJsonObject edited = document();
+    m_problems->clear();
+    if (edited.value(kPositions).toArray().isEmpty() &&
+        edited.value(QStringLiteral("product")).toString().isEmpty()) {
+        m_verdict->setText(tr("Make a recipe from a golden unit's drives on the bus or its backup "
+                              "file, or open one."));
+        m_verdict->setStyleSheet(QString());
+        m_save->setEnabled(false);
+        return {RecipeProblem{QString(), tr("the recipe is empty")}};
+    }
+    QVector<RecipeProblem> problems;
+    if (!m_form->stepsError().isEmpty())
+        problems << RecipeProblem{QStringLiteral("positions[%1].steps").arg(m_current),
+                                  m_form->stepsError()};
+    QString error;
+    const std::optional<Recipe> recipe = RecipeFile::fromEdited(edited, &error);
+    if (!recipe)
+        problems << RecipeProblem{QString(), error};
+    else
+        problems << RecipeChecker(ProfileRegistry::builtIn()).check(*recipe);
+    for (const RecipeProblem& p : problems) {
+        auto* item = new QListWidgetItem(
+            p.path.isEmpty() ? p.message : tr("%1 — %2").arg(p.message, p.path), m_problems);
+        item->setData(Qt::UserRole, p.path);
+    }
+    if (problems.isEmpty()) {
+        m_verdict->setText(tr("The recipe passes check: it can be saved and run."));
+        m_verdict->setStyleSheet(QStringLiteral("color: #1b5e20; font-weight: bold"));
+    } else {
+        m_verdict->setText(tr("%n problem(s): the recipe cannot be saved until they are fixed.",
+                              nullptr, int(problems.size())));
+        m_verdict->setStyleSheet(QStringLiteral("color: #b71c1c; font-weight: bold"));
+    }
+    m_save->setEnabled(problems.isEmpty());
+    return problems;
+}
+
+bool RecipeEditor::saveTo(const QString& path, QString* error)
+{
+    const QVector<RecipeProblem> problems = check();
+    if (!problems.isEmpty()) {
+        *error = tr("the recipe does not pass check (%n problem(s)); nothing was saved", nullptr,
+                    int(problems.size()));
+        return false;
+    }
+    const std::optional<Recipe> recipe = RecipeFile::fromEdited(document(), error);
+    if (!recipe || !RecipeFile::save(*recipe, path, error))
+        return false;
+    m_path = path;
+    m_save->setEnabled(true);
+    return true;
+}
+
+bool RecipeEditor::openFile(const QString& path, QString* error)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        *error = tr("cannot read %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    const QByteArray bytes = file.read(RecipeFile::kMaxFileBytes + 1);
+    QJsonParseError parse;
+    const QJsonDocument json = QJsonDocument::fromJson(bytes, &parse);
+    if (bytes.size() > RecipeFile::kMaxFileBytes || parse.error != QJsonParseError::NoError ||
+        !json.isObject() ||
+        json.object().value(QStringLiteral("format")).toString() != RecipeFile::formatName()) {
+        // The file reader's own words say what is wrong with it.
+        RecipeFile::load(path, error);
+        if (error->isEmpty())
+            *error = tr("%1 is not an OpenTOP recipe file").arg(path);
+        return false;
+    }
+    QString loadError;
+    const bool signedFile = bool(RecipeFile::load(path, &loadError));
+    m_path = path;
+    setDocument(json.object());
+    say(signedFile ? tr("Opened %1").arg(path)
+                   : tr("Opened %1, which does not load as it is (%2). Saving checks it and signs "
+                        "it again.")
+                         .arg(path, loadError),
+        !signedFile);
+    return true;
+}
+
+bool RecipeEditor::newFromBackup(const QString& backupPath, const QString& product,
+                                 const QString& revision, QString* error)
+{
+    const std::optional<BackupFile> backup =
+        BackupFile::load(backupPath, ProfileRegistry::builtIn(), error);
+    if (!backup)
+        return false;
+    const std::optional<Recipe> recipe =
+        RecipeBuilder(ProfileRegistry::builtIn()).fromBackup(*backup, product, revision, error);
+    if (!recipe)
+        return false;
+    m_path.clear();
+    setDocument(RecipeFile::toObject(*recipe));
+    say(tr("New recipe from %1: check the settings and the test steps' limits, then save it.")
+            .arg(backupPath),
+        false);
+    return true;
+}
+
+void RecipeEditor::newFromDrives(const QVector<int>& ids, const QString& product,
+                                 const QString& revision, std::function<void(bool, QString)> done)
+{
+    BusDrives* drives = m_drives ? m_drives() : nullptr;
+    for (int id : ids) {
+        if (!drives || !drives->session(id)) {
+            done(false, tr("machine number %1 is not a known drive on the bus; scan the bus first")
+                            .arg(id));
+            return;
+        }
+    }
+    auto* progress = new QProgressDialog(tr("Reading the golden unit's settings…"), tr("Cancel"), 0,
+                                         int(ids.size()), this);
+    progress->setWindowModality(Qt::WindowModal);
+    progress->setMinimumDuration(0);
+    auto devices = std::make_shared<QVector<BackupDevice>>();
+    auto next = std::make_shared<std::function<void(int)>>();
+    QPointer<RecipeEditor> self(this);
+    *next = [=](int i) {
+        if (!self)
+            return;
+        if (progress->wasCanceled()) {
+            progress->deleteLater();
+            done(false, tr("cancelled: no recipe was made"));
+            return;
+        }
+        if (i == ids.size()) {
+            progress->deleteLater();
+            QString error;
+            const std::optional<Recipe> recipe =
+                RecipeBuilder(ProfileRegistry::builtIn())
+                    .fromDevices(*devices, product, revision, &error);
+            if (!recipe) {
+                done(false, error);
+                return;
+            }
+            m_path.clear();
+            setDocument(RecipeFile::toObject(*recipe));
+            done(true, QString());
+            return;
+        }
+        progress->setValue(i);
+        DeviceSession* session = drives->session(ids.at(i));
+        auto* reader = new BackupReader(session, this);
+        reader->read([=](const BackupReader::Result& r) {
+            reader->deleteLater();
+            if (!r.ok) {
+                progress->deleteLater();
+                done(false,
+                     tr("%1: %2").arg(r.device.title(),
+                                      (r.failures + r.disallowed).join(QStringLiteral("; "))));
+                return;
+            }
+            *devices << r.device;
+            (*next)(i + 1);
+        });
+    };
+    (*next)(0);
+}
+
+void RecipeEditor::chooseOpen()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open recipe"), QString(),
+                                                      tr("Recipes (*.json);;All files (*)"));
+    QString error;
+    if (!path.isEmpty() && !openFile(path, &error))
+        say(error, true);
+}
+
+bool RecipeEditor::askProductAndRevision(QString* product, QString* revision)
+{
+    bool ok = false;
+    *product = QInputDialog::getText(this, tr("New recipe"), tr("Product name:"), QLineEdit::Normal,
+                                     m_product->text(), &ok)
+                   .trimmed();
+    if (!ok || product->isEmpty())
+        return false;
+    *revision = QInputDialog::getText(this, tr("New recipe"), tr("Revision:"), QLineEdit::Normal,
+                                      QStringLiteral("A"), &ok)
+                    .trimmed();
+    return ok && !revision->isEmpty();
+}
+
+void RecipeEditor::chooseBackup()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Golden unit's backup file"),
+                                                      QString(), tr("Backups (*.json)"));
+    QString product, revision, error;
+    if (path.isEmpty() || !askProductAndRevision(&product, &revision))
+        return;
+    if (!newFromBackup(path, product, revision, &error))
+        say(error, true);
+}
+
+void RecipeEditor::chooseDrives()
+{
+    BusDrives* drives = m_drives ? m_drives() : nullptr;
+    if (!drives || drives->slaves().isEmpty()) {
+        say(tr("No drives on the bus: connect and scan first."), true);
+        return;
+    }
+    QStringList numbers;
+    for (int s : drives->slaves())
+        numbers << QString::number(s);
+    bool ok = false;
+    const QString text =
+        QInputDialog::getText(this, tr("New recipe from drives"),
+                              tr("Machine numbers of the golden unit's drives (found: %1):")
+                                  .arg(numbers.join(QStringLiteral(", "))),
+                              QLineEdit::Normal, numbers.join(QLatin1Char(',')), &ok);
+    if (!ok)
+        return;
+    QVector<int> ids;
+    for (const QString& part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        bool isNumber = false;
+        const int id = part.trimmed().toInt(&isNumber);
+        if (!isNumber || id < 1 || id > 247) {
+            say(tr("\"%1\" is not a machine number (1–247)").arg(part.trimmed()), true);
+            return;
+        }
+        ids << id;
+    }
+    QString product, revision;
+    if (ids.isEmpty() || !askProductAndRevision(&product, &revision))
+        return;
+    newFromDrives(ids, product, revision, [this](bool done, const QString& error) {
+        say(done ? tr("New recipe from the drives on the bus: check the settings and the test "
+                      "steps' limits, then save it.")
+                 : error,
+            !done);
+    });
+}
+
+void RecipeEditor::chooseSave(bool askPath)
+{
+    QString path = m_path;
+    if (askPath || path.isEmpty())
+        path = QFileDialog::getSaveFileName(this, tr("Save recipe"),
+                                            path.isEmpty() ? QStringLiteral("recipe.json") : path,
+                                            tr("Recipes (*.json)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (saveTo(path, &error))
+        say(tr("Saved and signed: %1").arg(path), false);
+    else
+        say(error, true);
+}
+
+void RecipeEditor::say(const QString& text, bool error)
+{
+    m_message->setText(text);
+    m_message->setStyleSheet(error ? QStringLiteral("color: #b71c1c; font-weight: bold")
+                                   : QString());
+}
+
+} // namespace opentop

@@ -1,0 +1,366 @@
+#include "eol/ResultsBrowser.h"
+
+#include "CertificatePdf.h"
+#include "eol/CertificateHtml.h"
+#include "eol/ResultCsv.h"
+#include "eol/ResultDatabase.h"
+#include "eol/ResultQueries.h"
+#include "eol/ResultUrl.h"
+#include "eol/YieldReport.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QTextBrowser>
+#include <QVBoxLayout>
+
+namespace opentop {
+
+namespace {
+
+enum Column
+{
+    Started,
+    Serial,
+    RecipeColumn,
+    Station,
+    Operator,
+    Verdict,
+    Duration,
+    Reason,
+    ColumnCount
+};
+
+QColor verdictColour(UnitStatus status)
+{
+    switch (status) {
+    case UnitStatus::Pass:
+        return QColor(0xc8, 0xe6, 0xc9);
+    case UnitStatus::Fail:
+        return QColor(0xff, 0xcd, 0xd2);
+    default:
+        return QColor(0xff, 0xe0, 0xb2);
+    }
+}
+
+} // namespace
+
+ResultsBrowser::ResultsBrowser(const QString& url, QWidget* parent)
+    : QDialog(parent)
+{
+    setWindowTitle(tr("End-of-line results"));
+    setObjectName(QStringLiteral("resultsBrowser"));
+    m_table = new QTableWidget(0, ColumnCount, this);
+    m_table->setHorizontalHeaderLabels({tr("Started"), tr("Serial"), tr("Recipe"), tr("Station"),
+                                        tr("Operator"), tr("Verdict"), tr("Time (s)"),
+                                        tr("First failure")});
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->verticalHeader()->hide();
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_details = new QTextBrowser(this);
+    m_summary = new QLabel(this);
+    m_message = new QLabel(this);
+    m_message->setWordWrap(true);
+
+    auto* split = new QSplitter(Qt::Vertical, this);
+    split->addWidget(m_table);
+    split->addWidget(m_details);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 2);
+
+    m_csv = new QPushButton(tr("Export CSV…"), this);
+    m_certificate = new QPushButton(tr("Certificate PDF…"), this);
+    m_certificate->setEnabled(false);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    buttons->addButton(m_csv, QDialogButtonBox::ActionRole);
+    buttons->addButton(m_certificate, QDialogButtonBox::ActionRole);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(makeFilters());
+    layout->addWidget(m_message);
+    layout->addWidget(m_summary);
+    layout->addWidget(split, 1);
+    layout->addWidget(buttons);
+
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    connect(m_csv, &QPushButton::clicked, this, &ResultsBrowser::chooseCsv);
+    connect(m_certificate, &QPushButton::clicked, this, &ResultsBrowser::chooseCertificate);
+    connect(m_table, &QTableWidget::itemSelectionChanged, this, &ResultsBrowser::showSelected);
+    resize(1100, 700);
+
+    QString text = url;
+    if (text.trimmed().isEmpty())
+        text = qEnvironmentVariable("OPENTOP_EOL_DB");
+    if (text.trimmed().isEmpty())
+        text = ResultUrl::defaultLocation();
+    m_url->setText(text);
+    if (openDatabase(text))
+        search();
+}
+
+ResultsBrowser::~ResultsBrowser() = default;
+
+QWidget* ResultsBrowser::makeFilters()
+{
+    auto* box = new QWidget(this);
+    m_url = new QLineEdit(box);
+    m_url->setPlaceholderText(tr("SQLite file or postgresql://user@host/database"));
+    auto* open = new QPushButton(tr("Open"), box);
+    auto* browse = new QPushButton(tr("File…"), box);
+    auto* urlRow = new QHBoxLayout;
+    urlRow->addWidget(m_url, 1);
+    urlRow->addWidget(open);
+    urlRow->addWidget(browse);
+
+    m_serial = new QLineEdit(box);
+    m_serial->setPlaceholderText(tr("any"));
+    m_recipe = new QLineEdit(box);
+    m_recipe->setPlaceholderText(tr("any"));
+    m_station = new QLineEdit(box);
+    m_station->setPlaceholderText(tr("any"));
+    m_period = new QComboBox(box);
+    m_period->addItem(tr("Today"), 0);
+    m_period->addItem(tr("Last 24 hours"), 1);
+    m_period->addItem(tr("Last 7 days"), 7);
+    m_period->addItem(tr("Last 30 days"), 30);
+    m_period->addItem(tr("All"), -1);
+    m_period->setCurrentIndex(2);
+    m_verdict = new QComboBox(box);
+    m_verdict->addItem(tr("Any"), QString());
+    for (UnitStatus s : {UnitStatus::Pass, UnitStatus::Fail, UnitStatus::Aborted,
+                         UnitStatus::Interrupted, UnitStatus::Running})
+        m_verdict->addItem(CertificateHtml::verdictText(s), unitStatusName(s));
+    auto* find = new QPushButton(tr("Search"), box);
+    find->setDefault(true);
+
+    auto* filters = new QHBoxLayout;
+    for (auto [label, widget] : {std::pair<QString, QWidget*>{tr("Serial:"), m_serial},
+                                 {tr("Recipe:"), m_recipe},
+                                 {tr("Station:"), m_station},
+                                 {tr("Period:"), m_period},
+                                 {tr("Verdict:"), m_verdict}}) {
+        filters->addWidget(new QLabel(label, box));
+        filters->addWidget(widget, qobject_cast<QLineEdit*>(widget) ? 1 : 0);
+    }
+    filters->addWidget(find);
+
+    auto* layout = new QFormLayout(box);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addRow(tr("Database:"), urlRow);
+    layout->addRow(filters);
+
+    connect(open, &QPushButton::clicked, this, [this] {
+        if (openDatabase(m_url->text()))
+            search();
+    });
+    connect(m_url, &QLineEdit::returnPressed, open, &QPushButton::click);
+    connect(browse, &QPushButton::clicked, this, &ResultsBrowser::chooseDatabase);
+    connect(find, &QPushButton::clicked, this, &ResultsBrowser::search);
+    for (QLineEdit* e : {m_serial, m_recipe, m_station})
+        connect(e, &QLineEdit::returnPressed, this, &ResultsBrowser::search);
+    connect(m_period, &QComboBox::activated, this, &ResultsBrowser::search);
+    connect(m_verdict, &QComboBox::activated, this, &ResultsBrowser::search);
+    return box;
+}
+
+bool ResultsBrowser::openDatabase(const QString& text)
+{
+    m_db.reset();
+    m_units.clear();
+    m_table->setRowCount(0);
+    m_details->clear();
+    m_summary->clear();
+    QString error;
+    const std::optional<ResultUrl> url = ResultUrl::parse(text.trimmed(), &error);
+    if (!url) {
+        say(error, true);
+        return false;
+    }
+    // Looking must not leave an empty database behind a mistyped name.
+    if (url->engine == ResultUrl::Engine::Sqlite && !QFileInfo(url->path).isFile()) {
+        say(tr("There is no results database at %1 yet: a station makes it when it records its "
+               "first unit.")
+                .arg(url->path),
+            true);
+        return false;
+    }
+    m_db = ResultDatabase::open(*url, &error);
+    if (!m_db) {
+        say(error, true);
+        return false;
+    }
+    say(tr("Results database %1").arg(url->displayText()), false);
+    return true;
+}
+
+bool ResultsBrowser::search()
+{
+    m_units.clear();
+    m_table->setRowCount(0);
+    m_details->clear();
+    m_certificate->setEnabled(false);
+    if (!m_db) {
+        m_summary->clear();
+        return false;
+    }
+    ResultFilter filter;
+    filter.serial = m_serial->text().trimmed();
+    filter.recipe = m_recipe->text().trimmed();
+    filter.station = m_station->text().trimmed();
+    filter.status = unitStatusFromName(m_verdict->currentData().toString());
+    const int days = m_period->currentData().toInt();
+    const QDateTime now = QDateTime::currentDateTime();
+    if (days == 0)
+        filter.from = now.date().startOfDay().toUTC();
+    else if (days > 0)
+        filter.from = now.addDays(-days).toUTC();
+    QString error;
+    ResultQueries queries(*m_db);
+    const auto found = queries.find(filter, &error);
+    if (!found) {
+        say(error, true);
+        return false;
+    }
+    m_units = *found;
+    const auto earlier = queries.testedBefore(filter, &error);
+    if (!earlier) {
+        say(error, true);
+        return false;
+    }
+    m_earlier = *earlier;
+    m_table->setRowCount(int(m_units.size()));
+    for (int row = 0; row < m_units.size(); ++row) {
+        const UnitRecord& u = m_units.at(row);
+        const qint64 ms = u.ended.isValid() ? u.started.msecsTo(u.ended) : -1;
+        const QStringList cells = {
+            u.started.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")),
+            u.serial,
+            tr("%1 rev. %2").arg(u.recipeName, u.recipeRevision),
+            u.station,
+            u.operatorName,
+            CertificateHtml::verdictText(u.status),
+            ms < 0 ? tr("–") : QString::number(ms / 1000.0, 'f', 1),
+            u.failureReason};
+        for (int c = 0; c < ColumnCount; ++c)
+            m_table->setItem(row, c, new QTableWidgetItem(cells.at(c)));
+        m_table->item(row, Verdict)->setBackground(verdictColour(u.status));
+    }
+    m_table->resizeColumnsToContents();
+    m_summary->setText(summary());
+    return true;
+}
+
+QString ResultsBrowser::summary() const
+{
+    int serials = 0;
+    int firstPass = 0;
+    int passed = 0;
+    for (const UnitRecord& u : m_units)
+        passed += u.isPass() ? 1 : 0;
+    // A serial tested before the period is a retest here, never a first pass.
+    for (const YieldRow& row : YieldReport::perRecipe(m_units, m_earlier)) {
+        serials += row.serials;
+        firstPass += row.firstPass;
+    }
+    return tr("%n unit(s), %1 passed · first-pass yield %2 (%3 of %4 serials)", nullptr,
+              int(m_units.size()))
+        .arg(passed)
+        .arg(serials ? tr("%1 %").arg(100.0 * firstPass / serials, 0, 'f', 1) : tr("–"))
+        .arg(firstPass)
+        .arg(serials);
+}
+
+std::optional<UnitRecord> ResultsBrowser::selectedRecord(QString* error)
+{
+    const int row = m_table->currentRow();
+    if (!m_db || row < 0 || row >= m_units.size()) {
+        *error = tr("no unit is selected");
+        return std::nullopt;
+    }
+    return ResultQueries(*m_db).load(m_units.at(row).id, error);
+}
+
+void ResultsBrowser::showSelected()
+{
+    QString error;
+    const std::optional<UnitRecord> record = selectedRecord(&error);
+    m_certificate->setEnabled(bool(record));
+    if (!record) {
+        m_details->setPlainText(error);
+        return;
+    }
+    m_details->setHtml(CertificateHtml::html(*record));
+}
+
+bool ResultsBrowser::exportCsv(const QString& path, QString* error) const
+{
+    return ResultCsv::save(path, ResultCsv::units(m_units), error);
+}
+
+bool ResultsBrowser::saveCertificate(const QString& path, QString* error)
+{
+    const std::optional<UnitRecord> record = selectedRecord(error);
+    return record && CertificatePdf::save(*record, path, error);
+}
+
+void ResultsBrowser::chooseDatabase()
+{
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open results database"), QFileInfo(m_url->text()).absolutePath(),
+        tr("SQLite databases (*.db *.sqlite);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    m_url->setText(path);
+    if (openDatabase(path))
+        search();
+}
+
+void ResultsBrowser::chooseCsv()
+{
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export units as CSV"), QStringLiteral("results.csv"), tr("CSV files (*.csv)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (exportCsv(path, &error))
+        say(tr("%n unit(s) written to %1", nullptr, int(m_units.size())).arg(path), false);
+    else
+        say(error, true);
+}
+
+void ResultsBrowser::chooseCertificate()
+{
+    const int row = m_table->currentRow();
+    if (row < 0 || row >= m_units.size())
+        return;
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save certificate"), m_units.at(row).serial + QStringLiteral(".pdf"),
+        tr("PDF files (*.pdf)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (saveCertificate(path, &error))
+        say(tr("Certificate written to %1").arg(path), false);
+    else
+        say(error, true);
+}
+
+void ResultsBrowser::say(const QString& text, bool error)
+{
+    m_message->setText(text);
+    m_message->setStyleSheet(error ? QStringLiteral("color: #b71c1c; font-weight: bold")
+                                   : QString());
+}
+
+} // namespace opentop
