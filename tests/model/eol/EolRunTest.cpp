@@ -161,10 +161,22 @@ TEST_F(EolRunTest, ADcControllerPasses)
     RecipeStep* hold = stepOf(recipe.positions[0], RecipeStep::Type::Hold);
     ASSERT_TRUE(hold);
     hold->duration = 1;
+    // Values the simulator does not start with, so that they must be written and stored.
+    for (RecipeSetting& setting : recipe.positions[0].settings) {
+        if (setting.name == QLatin1String("config.stall_time"))
+            setting.value = 4.2;
+        if (setting.name == QLatin1String("config.rated_current"))
+            setting.value = 3.3;
+    }
+    ASSERT_NE(readText(7, QStringLiteral("config.stall_time")), QStringLiteral("4.2"));
     const UnitRecord r = run(recipe);
     EXPECT_EQ(r.status, UnitStatus::Pass) << qPrintable(r.failureReason);
     EXPECT_FALSE(r.measurements.isEmpty());
     EXPECT_FALSE(running(7));
+    // The controller's settings are stored: they survive switching its power off and on.
+    bus->device(7)->powerCycle(bus->nowMs());
+    EXPECT_EQ(readText(7, QStringLiteral("config.stall_time")), QStringLiteral("4.2"));
+    EXPECT_EQ(readText(7, QStringLiteral("config.rated_current")), QStringLiteral("3.3"));
 }
 
 struct DefectCase
