@@ -321,8 +321,13 @@ void EolStepRunner::runWaitSpeed(const RecipeStep& step)
     const double timeoutS = step.timeout;
     auto round = std::make_shared<std::function<void()>>();
     const quint64 token = m_token;
+    // The function holds itself only weakly (a strong self-capture is a cycle that never frees);
+    // the poll and the timer it waits in hold it while a round is under way.
     *round = [this, token, step, names, speed, target, since, last, unit, quantity, timeoutS,
-              round] {
+              weak = std::weak_ptr<std::function<void()>>(round)] {
+        const auto again = weak.lock();
+        if (!again)
+            return;
         poll(names, [=](const QHash<QString, ParamValue>& values) {
             const double elapsedS = since->elapsed() / 1000.0;
             std::optional<double> goal = step.target;
@@ -348,9 +353,9 @@ void EolStepRunner::runWaitSpeed(const RecipeStep& step)
             }
             const int waitMs =
                 std::max(0, m_timing.pollMs - int(since->elapsed() % m_timing.pollMs));
-            QTimer::singleShot(waitMs, this, [this, token, round] {
+            QTimer::singleShot(waitMs, this, [this, token, again] {
                 if (current(token))
-                    (*round)();
+                    (*again)();
             });
         });
     };
@@ -372,7 +377,11 @@ void EolStepRunner::runHold(const RecipeStep& step)
     const qint64 durationMs = qint64(step.duration * 1000);
     auto round = std::make_shared<std::function<void()>>();
     const quint64 token = m_token;
-    *round = [this, token, step, names, speed, stats, since, durationMs, round] {
+    *round = [this, token, step, names, speed, stats, since, durationMs,
+              weak = std::weak_ptr<std::function<void()>>(round)] {
+        const auto again = weak.lock(); // held by the poll and the timer (see runWaitSpeed)
+        if (!again)
+            return;
         poll(names, [=](const QHash<QString, ParamValue>& values) {
             for (auto it = values.cbegin(); it != values.cend(); ++it)
                 (*stats)[it.key()].add(it.value().number);
@@ -381,9 +390,9 @@ void EolStepRunner::runHold(const RecipeStep& step)
             if (since->elapsed() < durationMs) {
                 const int waitMs =
                     std::max(0, m_timing.pollMs - int(since->elapsed() % m_timing.pollMs));
-                QTimer::singleShot(waitMs, this, [this, token, round] {
+                QTimer::singleShot(waitMs, this, [this, token, again] {
                     if (current(token))
-                        (*round)();
+                        (*again)();
                 });
                 return;
             }

@@ -338,8 +338,11 @@ void RecipeEditor::newFromDrives(const QVector<int>& ids, const QString& product
     auto devices = std::make_shared<QVector<BackupDevice>>();
     auto next = std::make_shared<std::function<void(int)>>();
     QPointer<RecipeEditor> self(this);
-    *next = [=](int i) {
-        if (!self)
+    // Holds itself weakly (a strong self-capture would never be freed); each read's callback
+    // holds it until the next drive is asked.
+    *next = [=, weak = std::weak_ptr<std::function<void(int)>>(next)](int i) {
+        const auto again = weak.lock();
+        if (!self || !again)
             return;
         if (progress->wasCanceled()) {
             progress->deleteLater();
@@ -364,7 +367,7 @@ void RecipeEditor::newFromDrives(const QVector<int>& ids, const QString& product
         progress->setValue(i);
         DeviceSession* session = drives->session(ids.at(i));
         auto* reader = new BackupReader(session, this);
-        reader->read([=](const BackupReader::Result& r) {
+        reader->read([=](const BackupReader::Result& r) { // `again` keeps the chain alive
             reader->deleteLater();
             if (!r.ok) {
                 progress->deleteLater();
@@ -374,7 +377,7 @@ void RecipeEditor::newFromDrives(const QVector<int>& ids, const QString& product
                 return;
             }
             *devices << r.device;
-            (*next)(i + 1);
+            (*again)(i + 1);
         });
     };
     (*next)(0);
