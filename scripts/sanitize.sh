@@ -28,7 +28,10 @@ start=$SECONDS
 # -O1 -g1 as the sanitizers' manuals advise: stacks keep their lines, and the build takes half
 # the time of -O2 -g (CI's budget on 2 cores).
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOPENTOP_WERROR=ON \
-    -DOPENTOP_SANITIZE="$kind" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" >/dev/null
+    -DOPENTOP_SANITIZE="$kind" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
+    -DCMAKE_CXX_FLAGS="-Wno-error=maybe-uninitialized" >/dev/null
+# (GCC 12's maybe-uninitialized at -O1 reports std::optional values that are always set; the
+# normal -O2 build keeps the warning an error.)
 echo "== building with -fsanitize=$kind in $build"
 if [ "$kind" = address ]; then
     cmake --build "$build" -j "$jobs"

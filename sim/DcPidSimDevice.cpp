@@ -350,17 +350,19 @@ SimControlResult DcPidSimDevice::controlCommand(const QStringList& args, qint64 
     const QString& cmd = args.first();
     const bool input = cmd == QLatin1String("input");
     if (input || cmd == QLatin1String("load")) {
-        const std::optional<qint64> v = args.size() == 2 ? parseNumber(args.at(1)) : std::nullopt;
         const qint64 min = input ? 0 : -100;
         const qint64 max = input ? 7 : 200;
-        if (!v || *v < min || *v > max)
+        // Below the range when missing or not a number, so one test refuses all three.
+        const qint64 v =
+            (args.size() == 2 ? parseNumber(args.at(1)) : std::nullopt).value_or(min - 1);
+        if (v < min || v > max)
             return fail(tr("usage: %1 ID VALUE with VALUE %2..%3 %4")
                             .arg(cmd)
                             .arg(min)
                             .arg(max)
                             .arg(input ? tr("(bit0 SQ1, bit1 SQ2, bit2 DE)") : tr("(% current)")));
-        (input ? m_inputs : m_loadOffset) = int(*v);
-        return {true, tr("%1 = %2").arg(cmd).arg(*v)};
+        (input ? m_inputs : m_loadOffset) = int(v);
+        return {true, tr("%1 = %2").arg(cmd).arg(v)};
     }
     return SimDevice::controlCommand(args, nowMs);
 }
