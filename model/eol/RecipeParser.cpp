@@ -100,7 +100,7 @@ bool RecipeParser::checkHeader(const QJsonObject& root, QString* checksum)
     if (v > RecipeFile::kFormatVersion)
         return fail(tr("written by a newer OpenTOP (recipe format version %1); this version "
                        "reads recipe format version %2")
-                        .arg(qint64(v))
+                        .arg(v, 0, 'g', 15) // any size: no conversion to an integer type
                         .arg(RecipeFile::kFormatVersion));
     const QString given = root.value(QStringLiteral("checksum")).toString();
     if (!given.startsWith(QLatin1String("sha256:")))

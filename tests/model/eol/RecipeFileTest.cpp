@@ -169,6 +169,11 @@ TEST(RecipeFile, RefusesWhatIsNotARecipe)
     QJsonObject document = documentOf(exampleRecipe("recipe-dbu200.json"));
     document.insert(QStringLiteral("formatVersion"), 2);
     EXPECT_TRUE(refusal(resigned(document)).contains(QStringLiteral("newer")));
+    // Found by FuzzRecipeFile: a version beyond 64 bits was converted to an integer (undefined
+    // behaviour, stopped by UBSan in the sanitizer run).
+    document.insert(QStringLiteral("formatVersion"), 1.11111e115);
+    const QString huge = refusal(resigned(document));
+    EXPECT_TRUE(huge.contains(QStringLiteral("1.11111e+115"))) << qPrintable(huge);
     document.insert(QStringLiteral("formatVersion"), QStringLiteral("1"));
     EXPECT_TRUE(refusal(resigned(document)).contains(QStringLiteral("formatVersion")));
 }
