@@ -25,6 +25,20 @@ if ! command -v clang++ >/dev/null; then
     apt-get update -q >/dev/null
     DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends clang >/dev/null
 fi
+# libFuzzer and the sanitizer runtimes are not in the clang package: Debian 12 ships them in
+# libclang-rt-<major>-dev, which plain "apt-get install clang" does not bring.
+runtime="$(clang++ -print-resource-dir)/lib/linux/libclang_rt.fuzzer-x86_64.a"
+if [ ! -f "$runtime" ]; then
+    major="$(clang++ -dumpversion | cut -d. -f1)"
+    if [ "$(id -u)" -ne 0 ]; then
+        echo "error: libFuzzer is missing ($runtime); install it as root:" \
+            "apt-get install libclang-rt-$major-dev" >&2
+        exit 1
+    fi
+    apt-get update -q >/dev/null
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends \
+        "libclang-rt-$major-dev" >/dev/null
+fi
 if [ ! -f "$build/CMakeCache.txt" ]; then
     CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
         -DOPENTOP_FUZZ=ON -DOPENTOP_BUILD_TESTS=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
