@@ -329,13 +329,13 @@ ModbusResult ModbusClientWorker::execute(State& s, const Item& item)
         // as garbled as a bad CRC. An exception is a valid answer and is not repeated, except
         // "busy": 06 (nothing executed) for any request, and 04 for a read, which a DBU gives
         // while busy with internal processing and which has no effect to repeat.
-        const bool busy = result.error == ModbusError::Exception &&
-                          (result.exceptionCode == 0x06 ||
-                           (result.exceptionCode == 0x04 && request.isRead()));
-        const bool retryable =
-            result.error == ModbusError::Timeout || result.error == ModbusError::CrcError ||
-            result.error == ModbusError::WrongSlave ||
-            result.error == ModbusError::MalformedReply || busy;
+        const bool busy =
+            result.error == ModbusError::Exception &&
+            (result.exceptionCode == 0x06 || (result.exceptionCode == 0x04 && request.isRead()));
+        const bool retryable = result.error == ModbusError::Timeout ||
+                               result.error == ModbusError::CrcError ||
+                               result.error == ModbusError::WrongSlave ||
+                               result.error == ModbusError::MalformedReply || busy;
         if (!retryable || attempt > retries || s.interrupt)
             break;
         qCDebug(lcTransport) << "retrying" << request.describe() << "after" << result.errorText();

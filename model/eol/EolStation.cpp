@@ -141,8 +141,8 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
             *error = tr("this recipe takes per-unit values from a CSV file: open it first");
             return false;
         }
-        const auto values = m_csv->valuesFor(m_recipe, ProfileRegistry::builtIn(),
-                                             options.serial, error);
+        const auto values =
+            m_csv->valuesFor(m_recipe, ProfileRegistry::builtIn(), options.serial, error);
         if (!values)
             return false;
         for (const UnitValuesCsv::Value& v : *values)

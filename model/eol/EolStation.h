@@ -27,12 +27,15 @@ class EolStation : public QObject
 public:
     struct Counters
     {
-        int tested = 0;    // units with a verdict (pass or fail) since the station started
+        int tested = 0; // units with a verdict (pass or fail) since the station started
         int passed = 0;
         int failed = 0;
         int firstTested = 0; // distinct serials
         int firstPassed = 0; // ... whose first test passed
-        double firstPassYield() const { return firstTested ? 100.0 * firstPassed / firstTested : 0; }
+        double firstPassYield() const
+        {
+            return firstTested ? 100.0 * firstPassed / firstTested : 0;
+        }
     };
 
     explicit EolStation(QObject* parent = nullptr);

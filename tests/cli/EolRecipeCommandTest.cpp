@@ -319,8 +319,7 @@ TEST_F(EolRecipeCommand, WrongArgumentsAreUsageErrorsNamingTheProblem)
     const QVector<Case> cases{
         {{QStringLiteral("eol")}, "name a subcommand"},
         {{QStringLiteral("eol"), QStringLiteral("recipe")}, "unknown subcommand"},
-        {{QStringLiteral("eol"), QStringLiteral("run"), QStringLiteral("r.json")},
-         "--serial S"},
+        {{QStringLiteral("eol"), QStringLiteral("run"), QStringLiteral("r.json")}, "--serial S"},
         {{QStringLiteral("eol"), QStringLiteral("rerun"), QStringLiteral("r.json")},
          "unknown subcommand \"eol rerun"},
         {{QStringLiteral("eol"), QStringLiteral("recipe"), QStringLiteral("check")},

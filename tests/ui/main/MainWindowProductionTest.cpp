@@ -86,8 +86,8 @@ TEST_F(MainWindowProductionTest, AScannedSerialRunsTheUnitToPassAndNothingEditsM
     QTest::keyClick(view->serialField(), Qt::Key_Return);
     EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("TESTING"));
     EXPECT_FALSE(view->serialField()->isEnabled()) << "no second unit while one runs";
-    ASSERT_TRUE(waitFor([&] { return view->verdictLabel()->text() != QLatin1String("TESTING"); },
-                        30000));
+    ASSERT_TRUE(
+        waitFor([&] { return view->verdictLabel()->text() != QLatin1String("TESTING"); }, 30000));
     EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("PASS"))
         << qPrintable(view->reasonLabel()->text());
     EXPECT_GT(view->chart()->pointCount(), 5) << "the live speed was drawn";
