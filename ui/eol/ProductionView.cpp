@@ -17,6 +17,7 @@
 #include <QShortcut>
 #include <QSplitter>
 #include <QTableWidget>
+#include <QTimer>
 #include <QVBoxLayout>
 #include <pwd.h>
 #include <unistd.h>
@@ -151,6 +152,12 @@ void ProductionView::refresh()
 {
     refreshRecipe();
     refreshCounters();
+}
+
+void ProductionView::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    QTimer::singleShot(0, this, &ProductionView::focusSerial);
 }
 
 void ProductionView::focusSerial()

@@ -44,6 +44,11 @@ public:
     // Gives the serial field the keyboard, so a scanner's keys land there.
     void focusSerial();
 
+protected:
+    // The serial field takes the keys whenever the screen shows, also when the program starts
+    // in production mode (a focus asked for before the window was shown does not hold).
+    void showEvent(QShowEvent* event) override;
+
 private:
     void chooseRecipe();
     void chooseUnitValues();
