@@ -6,6 +6,8 @@
 #include <QSqlError>
 #include <QSqlQuery>
 #include <QUuid>
+#include <algorithm>
+#include <atomic>
 
 namespace opentop {
 
@@ -43,6 +45,21 @@ QDateTime nowUtc()
     return UnitRecordJson::timeFromText(UnitRecordJson::timeText(QDateTime::currentDateTimeUtc()));
 }
 
+// A unit's start decides which record of a serial came first (first-pass yield), and the ids
+// are random: two units begun in one millisecond would be ordered by chance. Starts this
+// process records are therefore strictly increasing, at most a few milliseconds late.
+QDateTime uniqueStartUtc()
+{
+    static std::atomic<qint64> last{0};
+    const qint64 now = nowUtc().toMSecsSinceEpoch();
+    qint64 previous = last.load();
+    qint64 next = 0;
+    do {
+        next = std::max(now, previous + 1);
+    } while (!last.compare_exchange_weak(previous, next));
+    return QDateTime::fromMSecsSinceEpoch(next, Qt::UTC);
+}
+
 } // namespace
 
 ResultStore::ResultStore(ResultDatabase& database)
@@ -66,7 +83,7 @@ bool ResultStore::beginUnit(UnitRecord& record, QString* error)
     if (record.id.isEmpty())
         record.id = QUuid::createUuid().toString(QUuid::WithoutBraces);
     if (!record.started.isValid())
-        record.started = nowUtc();
+        record.started = uniqueStartUtc();
     if (!database_.begin(error))
         return false;
     QSqlQuery q(database_.db());

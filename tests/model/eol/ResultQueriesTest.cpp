@@ -141,3 +141,36 @@ TEST_F(ResultQueriesTest, TestedBeforeNamesTheRangesRetestsOnly)
     EXPECT_TRUE(ResultQueries(*db).testedBefore(f, &error)->isEmpty());
     EXPECT_TRUE(ResultQueries(*db).testedBefore({}, &error)->isEmpty());
 }
+
+// A failed unit retested at once (a fast station, or a script) must stay the first record of
+// its serial: the start times of one station never tie, so the order is never left to the
+// random unit ids (seen in CI: a retest in the same millisecond counted as a first pass).
+TEST(ResultOrderTest, UnitsBegunInOneMillisecondKeepTheOrderTheyWereBegunIn)
+{
+    QTemporaryDir dir;
+    QString error;
+    auto db = ResultDatabase::open(dir.filePath(QStringLiteral("o.db")), &error);
+    ASSERT_TRUE(db) << error.toStdString();
+    ResultStore store(*db);
+    const int serials = 40;
+    for (int i = 0; i < serials; ++i) {
+        for (UnitStatus status : {UnitStatus::Fail, UnitStatus::Pass}) {
+            UnitRecord r = test::eolSampleUnit(QStringLiteral("R%1").arg(i), status);
+            r.id.clear();
+            r.started = QDateTime();
+            r.ended = QDateTime();
+            ASSERT_TRUE(store.beginUnit(r, &error)) << error.toStdString();
+            ASSERT_TRUE(store.finishUnit(r, &error)) << error.toStdString();
+        }
+    }
+    const auto units = ResultQueries(*db).find({}, &error);
+    ASSERT_TRUE(units) << error.toStdString();
+    ASSERT_EQ(units->size(), 2 * serials);
+    for (int i = 1; i < units->size(); ++i)
+        EXPECT_LT(units->at(i - 1).started, units->at(i).started)
+            << i << ' ' << qPrintable(units->at(i).started.toString(Qt::ISODateWithMs));
+    const auto rows = YieldReport::perRecipe(*units);
+    ASSERT_EQ(rows.size(), 1);
+    EXPECT_EQ(rows[0].serials, serials);
+    EXPECT_EQ(rows[0].firstPass, 0); // every serial failed first
+}
