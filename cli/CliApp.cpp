@@ -37,6 +37,12 @@ QList<QCommandLineOption> globalOptions()
         {{QStringLiteral("h"), QStringLiteral("help")},
          tr("Show this help, or a command's help after the command.")},
         {QStringLiteral("version"), tr("Show the version.")},
+        // Read by main() before this parser exists (Language::requestedIn); listed so that the
+        // parser accepts it and the help shows it.
+        {QStringLiteral("lang"),
+         tr("Language of the human output: en, zh_TW, zh_CN, ko, ja (default: the system's). "
+            "--json output is the same in every language."),
+         tr("CODE")},
     };
 }
 
@@ -70,7 +76,7 @@ QString CliApp::helpText(const QString& program) const
                "  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N\n"
                "  Defaults follow the family: dbu 19200 8N1, dcpid 9600 8E1; --timeout 200,\n"
                "  --retries 3 (2 more while the line is noisy: a request needed a retry lately).\n"
-               "Output: --json  --trace  --variant VARIANT\n"
+               "Output: --json  --trace  --variant VARIANT  --lang CODE\n"
                "Groups: --bus-drives LIST (or OPENTOP_BUS_DRIVES): the drives whose communication\n"
                "group is checked before a write or command\n\n"
                "Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file\n"

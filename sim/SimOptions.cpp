@@ -35,6 +35,7 @@ QString SimOptions::usage()
         "                       nostore=PARAM         value lost at the next power cycle\n"
         "                     e.g. --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40\n"
         "  --quiet            no frame trace on stderr\n"
+        "  --lang CODE        language of messages: en, zh_TW, zh_CN, ko, ja\n"
         "  --help             this text\n"
         "  --version          the program's version\n\n"
         "Prints \"pty: PATH\" (and \"tcp: HOST:PORT\"), then \"ready\". Reads console commands\n"
@@ -74,6 +75,10 @@ std::optional<SimOptions> SimOptions::parse(const QStringList& arguments, QStrin
             o.help = true;
         } else if (arg == QLatin1String("--version")) {
             o.version = true;
+        } else if (arg == QLatin1String("--lang")) {
+            // Installed by main() before anything is printed (Language::requestedIn).
+            if (!value(&v) || v.isEmpty())
+                return failed(tr("--lang needs a language code such as ko"));
         } else if (arg == QLatin1String("--devices")) {
             if (!value(&o.devices) || o.devices.isEmpty())
                 return failed(tr("--devices needs a device list such as dbu200@1,dcpid@7"));

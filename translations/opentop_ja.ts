@@ -4,28 +4,28 @@
 <context>
     <name>Freshness</name>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="29"/>
-        <location filename="../main/model/monitor/Freshness.cpp" line="31"/>
+        <location filename="../model/monitor/Freshness.cpp" line="29"/>
+        <location filename="../model/monitor/Freshness.cpp" line="31"/>
         <source>%1 s old</source>
         <translation>%1 s前</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="33"/>
+        <location filename="../model/monitor/Freshness.cpp" line="33"/>
         <source>%1 min old</source>
         <translation>%1 min前</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="34"/>
+        <location filename="../model/monitor/Freshness.cpp" line="34"/>
         <source>%1 h old</source>
         <translation>%1 h前</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="40"/>
+        <location filename="../model/monitor/Freshness.cpp" line="40"/>
         <source>never read</source>
         <translation>未読出し</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="41"/>
+        <location filename="../model/monitor/Freshness.cpp" line="41"/>
         <source>last answer %1 (%2)</source>
         <translation>最終応答 %1 (%2)</translation>
     </message>
@@ -33,12 +33,12 @@
 <context>
     <name>SimulatorProcess</name>
     <message>
-        <location filename="../main/app/bench/main.cpp" line="230"/>
+        <location filename="../app/bench/main.cpp" line="230"/>
         <source>cannot start %1: %2</source>
         <translation>%1 を起動できません: %2</translation>
     </message>
     <message>
-        <location filename="../main/app/bench/main.cpp" line="236"/>
+        <location filename="../app/bench/main.cpp" line="236"/>
         <source>opentop-sim did not get ready: %1</source>
         <translation>opentop-sim の準備が完了しませんでした: %1</translation>
     </message>
@@ -46,42 +46,47 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../main/app/gui/main.cpp" line="46"/>
+        <location filename="../app/gui/main.cpp" line="54"/>
         <source>Commissioning tool for RS-485 Modbus-RTU motor drives.</source>
         <translation>RS-485 Modbus-RTU モータドライバ用立上げツール。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="75"/>
+        <location filename="../app/gui/main.cpp" line="58"/>
+        <source>Language of the program: %1 (default: the language menu&apos;s choice, else the system&apos;s).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MonitorOptions.cpp" line="75"/>
         <source>Open the bus overview and the trends of every drive.</source>
         <translation>バス一覧と全ドライバのトレンドを開きます。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="76"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="76"/>
         <source>Monitoring poll interval in milliseconds.</source>
         <translation>モニタのポーリング周期（ミリ秒）。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="79"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="79"/>
         <source>Quit after this many seconds and print the monitoring statistics (for measurements).</source>
         <translation>指定した秒数の後に終了し、モニタ統計を出力します（測定用）。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="83"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="83"/>
         <source>Print the monitoring totals every this many seconds (for measurements).</source>
         <translation>指定した秒数ごとにモニタの合計を出力します（測定用）。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="93"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="93"/>
         <source>--poll-ms needs a number of milliseconds</source>
         <translation>--poll-ms にはミリ秒数を指定してください</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="98"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="98"/>
         <source>--quit-after needs a number of seconds</source>
         <translation>--quit-after には秒数を指定してください</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="103"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="103"/>
         <source>--stats-every needs a number of seconds</source>
         <translation>--stats-every には秒数を指定してください</translation>
     </message>
@@ -89,107 +94,107 @@
 <context>
     <name>opentop</name>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="69"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="69"/>
         <source>not read</source>
         <translation>未読出し</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="89"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="89"/>
         <source>No alarm is active.</source>
         <translation>アラームは発生していません。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="91"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="91"/>
         <source>Alarm active: %1 %2.</source>
         <translation>アラーム発生中: %1 %2。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="94"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="94"/>
         <source>An alarm is active.</source>
         <translation>アラームが発生しています。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="97"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="97"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>このドライバはアラームを電源再投入でのみ解除する設定です (%1)。Alarm-Reset では解除できません。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="104"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="104"/>
         <source>%1: could not be read: %2</source>
         <translation>%1: 読み出せません: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="108"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="108"/>
         <source>%1: no records.</source>
         <translation>%1: 履歴なし。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="111"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="111"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1: %3 件中 %2 件（新しい順）</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>#</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>Code</source>
         <translation>コード</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>Panel</source>
         <translation>パネル表示</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>Cleared by</source>
         <translation>解除方法</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="123"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="123"/>
         <source>unknown code</source>
         <translation>不明なコード</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="130"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="130"/>
         <source>Cause: %1</source>
         <translation>原因: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="132"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="132"/>
         <source>Remedy: %1</source>
         <translation>対策: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="134"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="134"/>
         <source>To clear: %1</source>
         <translation>解除方法: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="140"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="140"/>
         <source>Communication error register (%1): could not be read.</source>
         <translation>通信エラーレジスタ (%1): 読み出せません。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="144"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="144"/>
         <source>Communication error register (%1): none (0).</source>
         <translation>通信エラーレジスタ (%1): なし (0)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="147"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="147"/>
         <source>Communication error register (%1): %2, not a known code.</source>
         <translation>通信エラーレジスタ (%1): %2（既知のコードではありません）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="151"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="151"/>
         <source>Communication error register (%1): %2 %3
   Cause: %4
   Remedy: %5</source>
@@ -198,192 +203,202 @@
   対策: %5</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="26"/>
+        <location filename="../cli/CliApp.cpp" line="26"/>
         <source>Machine-readable JSON on standard output.</source>
         <translation>機械可読な JSON を標準出力に出力します。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="27"/>
+        <location filename="../cli/CliApp.cpp" line="27"/>
         <source>Print every frame sent and received on standard error.</source>
         <translation>送受信したすべてのフレームを標準エラー出力に表示します。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="29"/>
+        <location filename="../cli/CliApp.cpp" line="29"/>
         <source>Drive variant where the drive does not report it: VARIANT, or ID=VARIANT,... (e.g. dbu400, 150=dbu400).</source>
         <translation>機種を通知しないドライバの機種: VARIANT、または ID=VARIANT,...（例: dbu400、150=dbu400）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="31"/>
+        <location filename="../cli/CliApp.cpp" line="31"/>
         <source>VARIANT</source>
         <translation>VARIANT</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="33"/>
+        <location filename="../cli/CliApp.cpp" line="33"/>
         <source>The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES): before a write or command, their communication group is read to name every drive it also reaches.</source>
         <translation>バス上のドライバ（例: 1,3,5-7、既定: OPENTOP_BUS_DRIVES）。書込みやコマンドの前にこれらの通信グループを読み出し、同時に届くすべてのドライバを表示します。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="36"/>
+        <location filename="../cli/CliApp.cpp" line="36"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="38"/>
+        <location filename="../cli/CliApp.cpp" line="38"/>
         <source>Show this help, or a command&apos;s help after the command.</source>
         <translation>このヘルプを表示します。コマンドの後に付けるとそのコマンドのヘルプを表示します。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="39"/>
+        <location filename="../cli/CliApp.cpp" line="39"/>
         <source>Show the version.</source>
         <translation>バージョンを表示します。</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="28"/>
+        <location filename="../cli/CliApp.cpp" line="43"/>
+        <source>Language of the human output: en, zh_TW, zh_CN, ko, ja (default: the system&apos;s). --json output is the same in every language.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/CliApp.cpp" line="45"/>
+        <source>CODE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/StopAllCommand.cpp" line="28"/>
         <source>stopped</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="30"/>
+        <location filename="../cli/StopAllCommand.cpp" line="30"/>
         <source>STILL RUNNING</source>
         <translation>まだ運転中</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="32"/>
+        <location filename="../cli/StopAllCommand.cpp" line="32"/>
         <source>no answer</source>
         <translation>応答なし</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="47"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="47"/>
         <source>top level</source>
         <translation>最上位</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="50"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="50"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot; は 1 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="59"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="59"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot; は小文字の ID でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="69"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="69"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity は N、E、O のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="73"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="73"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial: baud は 1200–115200、stopBits は 1 または 2 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="89"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="89"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits: maxReadRegisters は 1–125、maxWriteRegisters は 1–123 です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="91"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="91"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits: slaves は 1–247 の範囲でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="106"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="106"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1] には id、model、label が必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="108"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="108"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]: id &quot;%2&quot; が重複しています</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="119"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="119"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1] には一意の id と label が必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="130"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="130"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1] には function 3 または 4 と first ≤ last が必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="174"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="174"/>
         <source>%1 has no name</source>
         <translation>%1 に名前がありません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="176"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="176"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1: reset は %2 のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="179"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="179"/>
         <source>%1: code %2 repeated</source>
         <translation>%1: コード %2 が重複しています</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="201"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="201"/>
         <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
         <translation>%1: storeWith &quot;%2&quot; はコマンドパラメータではありません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="204"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="204"/>
         <source>%1: the default is not among its allowed values</source>
         <translation>%1: 初期値が許容値に含まれていません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="208"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="208"/>
         <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
         <translation>%1: ビットフィールド &quot;%2&quot;: function &quot;%3&quot; は読出し可能なパラメータではありません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="215"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="215"/>
         <source>%1: condition on unknown parameter &quot;%2&quot;</source>
         <translation>%1: 不明なパラメータ &quot;%2&quot; に対する条件です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="217"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="217"/>
         <source>%1: the default is not allowed when %2</source>
         <translation>%1: %2 のときは初期値が許容されません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="227"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="227"/>
         <source>%1 runs past address 0xFFFF</source>
         <translation>%1 がアドレス 0xFFFF を超えています</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="230"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="230"/>
         <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
         <translation>%1 が 0x%3 で &quot;%2&quot; と重なっています（%4 レジスタ）</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="254"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="254"/>
         <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
         <translation>identify: &quot;%1&quot; は identify の読出し範囲内のパラメータでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="257"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="257"/>
         <source>identify.nameMatch is not a valid regular expression</source>
         <translation>identify.nameMatch が正しい正規表現ではありません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="269"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="269"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1: 不明なパラメータ &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="297"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="297"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1 はパラメータ名、名前のリスト、またはオブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="306"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="306"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1: &quot;%2&quot; にビットフィールド &quot;%3&quot; はありません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="312"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="312"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1: %2 は &quot;%3&quot; で書き込める値ではありません</translation>
     </message>
@@ -391,17 +406,17 @@
 <context>
     <name>opentop::AboutDialog</name>
     <message>
-        <location filename="../main/ui/help/AboutDialog.cpp" line="20"/>
+        <location filename="../ui/help/AboutDialog.cpp" line="20"/>
         <source>About OpenTOP</source>
         <translation>OpenTOP について</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/AboutDialog.cpp" line="22"/>
+        <location filename="../ui/help/AboutDialog.cpp" line="22"/>
         <source>&lt;h2&gt;OpenTOP %1&lt;/h2&gt;&lt;p&gt;Commissioning tool for RS-485 Modbus-RTU motor drives: TROY DBU brushless drives and a DC motor PID controller.&lt;/p&gt;&lt;p&gt;Copyright © the OpenTOP developers.&lt;br&gt;Licence: GNU General Public License, version 3 or any later version (GPL-3.0-or-later). This program comes with ABSOLUTELY NO WARRANTY; it is free software, and you are welcome to redistribute it under the terms of that licence.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Built with&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (run time; built with %3): GNU Lesser General Public License, version 3 (LGPL-3.0-only); Qt Charts: GNU General Public License, version 3 (GPL-3.0-only)&lt;/li&gt;&lt;li&gt;libmodbus %4: GNU Lesser General Public License, version 2.1 or later (LGPL-2.1-or-later)&lt;/li&gt;&lt;li&gt;GoogleTest (tests only): BSD 3-Clause licence&lt;/li&gt;&lt;/ul&gt;</source>
         <translation>&lt;h2&gt;OpenTOP %1&lt;/h2&gt;&lt;p&gt;RS-485 Modbus-RTU モータドライバ用立上げツール: TROY DBU ブラシレスドライバおよび DC モータ PID コントローラに対応。&lt;/p&gt;&lt;p&gt;Copyright © the OpenTOP developers.&lt;br&gt;ライセンス: GNU General Public License バージョン 3 またはそれ以降のバージョン (GPL-3.0-or-later)。本プログラムは一切無保証です (ABSOLUTELY NO WARRANTY)。本プログラムはフリーソフトウェアであり、このライセンスの条件のもとで再配布できます。&lt;/p&gt;&lt;p&gt;&lt;b&gt;使用ソフトウェア&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2（実行時。ビルド時は %3）: GNU Lesser General Public License バージョン 3 (LGPL-3.0-only)、Qt Charts: GNU General Public License バージョン 3 (GPL-3.0-only)&lt;/li&gt;&lt;li&gt;libmodbus %4: GNU Lesser General Public License バージョン 2.1 以降 (LGPL-2.1-or-later)&lt;/li&gt;&lt;li&gt;GoogleTest（テストのみ）: BSD 3-Clause ライセンス&lt;/li&gt;&lt;/ul&gt;</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/AboutDialog.cpp" line="45"/>
+        <location filename="../ui/help/AboutDialog.cpp" line="45"/>
         <source>About &amp;Qt</source>
         <translation>Qt について(&amp;Q)</translation>
     </message>
@@ -409,47 +424,47 @@
 <context>
     <name>opentop::AlarmBanner</name>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="16"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="16"/>
         <source>Show</source>
         <translation>表示</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="17"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="17"/>
         <source>Dismiss</source>
         <translation>閉じる</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="24"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="24"/>
         <source>Open the drive&apos;s alarm history</source>
         <translation>ドライバのアラーム履歴を開きます</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="25"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="25"/>
         <source>Hide this alarm until it is cleared; a new alarm shows again</source>
         <translation>解除されるまでこのアラームを非表示にします。新しいアラームは再び表示されます</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="85"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="85"/>
         <source>Machine %1: %2 %3 — %4</source>
         <translation>局番 %1: %2 %3 — %4</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="89"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="89"/>
         <source>Machine %1: %2 %3</source>
         <translation>局番 %1: %2 %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="91"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="91"/>
         <source>Machine %1: alarm %2h (not in the alarm table)</source>
         <translation>局番 %1: アラーム %2h（アラーム表にありません）</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="95"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="95"/>
         <source>Machine %1: an alarm is active</source>
         <translation>局番 %1: アラーム発生中</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="98"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="98"/>
         <source>(%n more drive(s) with an alarm)</source>
         <translation>
             <numerusform>（他に %n 台のドライバでアラーム発生中）</numerusform>
@@ -459,84 +474,84 @@
 <context>
     <name>opentop::AlarmExport</name>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Machine</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Kind</source>
         <translation>種別</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Record</source>
         <translation>履歴</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Code</source>
         <translation>コード</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Panel code</source>
         <translation>パネル表示コード</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Cleared by</source>
         <translation>解除方法</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Cause</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Remedy</source>
         <translation>対策</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="49"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="49"/>
         <source>alarm</source>
         <translation>アラーム</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="50"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>warning</source>
         <translation>警告</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="58"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="58"/>
         <source>unknown code</source>
         <translation>不明なコード</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="103"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="103"/>
         <source>machine %1: %2</source>
         <translation>局番 %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="126"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="126"/>
         <source>%n record(s) of %1 drive(s) written to %2.</source>
         <translation>
             <numerusform>%1 台のドライバの履歴 %n 件を %2 に書き込みました。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="131"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="131"/>
         <source>Not everything could be read: %1</source>
         <translation>一部を読み出せませんでした: %1</translation>
     </message>
@@ -544,57 +559,57 @@
 <context>
     <name>opentop::AlarmHistory</name>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="68"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="68"/>
         <source>%1: erases the %2</source>
         <translation>%1: %2を消去します</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="107"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="107"/>
         <source>%1 drives have no alarm reset command</source>
         <translation>%1 ドライバにはアラームリセットコマンドがありません</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="182"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="182"/>
         <source>The alarm</source>
         <translation>アラーム</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="184"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="184"/>
         <source>%1 is cleared.</source>
         <translation>%1 は解除されました。</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="185"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="185"/>
         <source>No alarm was active; nothing to clear.</source>
         <translation>発生中のアラームはありません。解除するものはありません。</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="188"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="188"/>
         <source>%1 is still active: only a power cycle clears it. %2</source>
         <translation>%1 はまだ発生中です: 電源再投入でのみ解除できます。%2</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="193"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="193"/>
         <source>%1 is still active: the drive is set to clear alarms by a power restart only (%2). Remove the cause, turn the power off, wait 5 s and turn it on again; or change that setting to allow the reset command.</source>
         <translation>%1 はまだ発生中です: このドライバはアラームを電源再投入でのみ解除する設定です (%2)。原因を取り除き、電源を切って 5 s 待ってから再投入してください。または、リセットコマンドで解除できるように設定を変更してください。</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="199"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="199"/>
         <source>%1 is still active: its cause is still present%2. Remove the cause and turn off the start signal, then reset again.</source>
         <translation>%1 はまだ発生中です: 原因が残っています%2。原因を取り除き、運転信号をオフにしてから再度リセットしてください。</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="205"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="205"/>
         <source>The reset was accepted; whether an alarm is still active could not be read.</source>
         <translation>リセットは受け付けられましたが、アラームがまだ発生中かどうかを読み出せませんでした。</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="207"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="207"/>
         <source>The reset failed: %1</source>
         <translation>リセットに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="210"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="210"/>
         <source>(The drive refused the reset: %1)</source>
         <translation>（ドライバがリセットを拒否しました: %1）</translation>
     </message>
@@ -602,8 +617,8 @@
 <context>
     <name>opentop::AlarmRecords</name>
     <message>
-        <location filename="../main/model/alarms/AlarmRecords.cpp" line="90"/>
-        <location filename="../main/model/alarms/AlarmRecords.cpp" line="101"/>
+        <location filename="../model/alarms/AlarmRecords.cpp" line="90"/>
+        <location filename="../model/alarms/AlarmRecords.cpp" line="101"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -611,92 +626,92 @@
 <context>
     <name>opentop::AlarmsCommand</name>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="163"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="163"/>
         <source>Show alarm and warning histories with causes and remedies; reset, erase</source>
         <translation>アラーム・警告履歴を原因・対策とともに表示、リセット、消去</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="170"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="170"/>
         <source>Send the alarm reset command, then tell whether the alarm is cleared or needs a power cycle (needs --yes; exit 4 when it stays active).</source>
         <translation>アラームリセットコマンドを送信し、アラームが解除されたか電源再投入が必要かを表示します（--yes が必要。解除されない場合は終了コード 4）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="172"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="172"/>
         <source>Erase the alarm and warning records (needs --yes).</source>
         <translation>アラーム履歴と警告履歴を消去します（--yes が必要）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="173"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="173"/>
         <source>Confirm --reset and --clear-records.</source>
         <translation>--reset と --clear-records を確定します。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="184"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="184"/>
         <source>error: usage: %1 (one machine number)</source>
         <translation>エラー: 使い方: %1（局番を 1 つ指定）</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="192"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="192"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="198"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="198"/>
         <source>error: machine number %1 (%2) keeps no alarm or warning records</source>
         <translation>エラー: 局番 %1 (%2) はアラーム・警告履歴を保持していません</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="205"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="205"/>
         <source>error: %1 drives have no %2 command</source>
         <translation>エラー: %1 ドライバには %2 コマンドがありません</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="207"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="207"/>
         <source>alarm reset</source>
         <translation>アラームリセット</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="207"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="207"/>
         <source>record erase</source>
         <translation>履歴消去</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="218"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="218"/>
         <source>These change machine number %1; add --yes to send them:</source>
         <translation>以下の操作は局番 %1 のドライバを変更します。送信するには --yes を付けてください:</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="222"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="222"/>
         <source>— clears the active alarm if its cause is gone and it is not one that only a power cycle clears</source>
         <translation>— 原因が取り除かれ、かつ電源再投入でのみ解除されるアラームでなければ、発生中のアラームを解除します</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="246"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="246"/>
         <source>Machine number %1 (%2)</source>
         <translation>局番 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="272"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="272"/>
         <source>Alarm reset: %1</source>
         <translation>アラームリセット: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="295"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="295"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>消去: %1（%2 件）。%3</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="298"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="298"/>
         <source>read back empty.</source>
         <translation>読み戻し結果は空です。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="299"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="299"/>
         <source>NOT empty when read back.</source>
         <translation>読み戻し結果が空ではありません。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="302"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="302"/>
         <source>Erasing failed: %1</source>
         <translation>消去に失敗しました: %1</translation>
     </message>
@@ -704,143 +719,143 @@
 <context>
     <name>opentop::AlarmsPage</name>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="59"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="59"/>
         <source>&amp;Re-read</source>
         <translation>再読出し(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="60"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="60"/>
         <source>Reset &amp;alarm…</source>
         <translation>アラームリセット(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="61"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="61"/>
         <source>&amp;Clear records…</source>
         <translation>履歴消去(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="65"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="65"/>
         <source>Alarms and warnings of machine %1 (%2)</source>
         <translation>局番 %1 (%2) のアラームと警告</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>#</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>Code</source>
         <translation>コード</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>Panel</source>
         <translation>パネル表示</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>Cleared by</source>
         <translation>解除方法</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="102"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="102"/>
         <source>Cause and remedy</source>
         <translation>原因と対策</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="103"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="103"/>
         <source>Communication error register</source>
         <translation>通信エラーレジスタ</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="115"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="115"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>アラームリセットコマンドを送信し、アラームが解除されたか、電源再投入でのみ解除できるかを表示します</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="117"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="117"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>ドライバが保持しているアラーム履歴・警告履歴を消去します</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="122"/>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="293"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="122"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
         <source>Select a record to see its cause and remedy.</source>
         <translation>履歴を選択すると原因と対策を表示します。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="123"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="123"/>
         <source>Not read yet.</source>
         <translation>未読出しです。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="125"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>このドライバはアラーム・警告履歴を保持しません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="155"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="155"/>
         <source>Alarm state: %1</source>
         <translation>アラーム状態: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="247"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="247"/>
         <source>Reading the records…</source>
         <translation>履歴を読出し中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="263"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="263"/>
         <source>No alarm is active.</source>
         <translation>アラームは発生していません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="265"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="265"/>
         <source>Alarm active: %1 %2.</source>
         <translation>アラーム発生中: %1 %2。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="267"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="267"/>
         <source>An alarm is active.</source>
         <translation>アラームが発生しています。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="270"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="270"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>このドライバはアラームを電源再投入でのみ解除する設定です (%1)。Alarm-Reset では解除できません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="274"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="274"/>
         <source>Could not be read: %1</source>
         <translation>読み出せません: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="300"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="300"/>
         <source>This drive has no communication error register.</source>
         <translation>このドライバには通信エラーレジスタがありません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="302"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="302"/>
         <source>%1: could not be read.</source>
         <translation>%1: 読み出せません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="304"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="304"/>
         <source>%1: no error (0).</source>
         <translation>%1: エラーなし (0)。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="307"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="307"/>
         <source>%1: %2, not a known code.</source>
         <translation>%1: %2（既知のコードではありません）。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="309"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="309"/>
         <source>%1: %2 %3
 Cause: %4
 Remedy: %5</source>
@@ -849,153 +864,153 @@ Remedy: %5</source>
 対策: %5</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="321"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="321"/>
         <source>No alarm records</source>
         <translation>アラーム履歴なし</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="321"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="321"/>
         <source>No warning records</source>
         <translation>警告履歴なし</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="327"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="327"/>
         <source>%1: could not be read: %2</source>
         <translation>%1: 読み出せません: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="330"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="330"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1: %3 件中 %2 件（新しい順）</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="341"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="341"/>
         <source>unknown code</source>
         <translation>不明なコード</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="370"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="370"/>
         <source>Record %1: code %2 is not in the %3 table.</source>
         <translation>履歴 %1: コード %2 は %3 表にありません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="375"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="375"/>
         <source>%1 %2 (record %3)</source>
         <translation>%1 %2（履歴 %3）</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="377"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="377"/>
         <source>Cause: %1</source>
         <translation>原因: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="379"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="379"/>
         <source>Remedy: %1</source>
         <translation>対策: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="381"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="381"/>
         <source>To clear: %1</source>
         <translation>解除方法: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="410"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="410"/>
         <source>Writes: %1</source>
         <translation>書込み: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="411"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="411"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>原因が取り除かれていれば、発生中のアラームを解除します。電源再投入でのみ解除できるアラームもあります。結果に表示されます。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="414"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="414"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>このドライバはアラームを電源再投入でのみ解除する設定です (%1)。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="416"/>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="418"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="416"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="418"/>
         <source>Reset alarm</source>
         <translation>アラームリセット</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="417"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="417"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>局番 %1 にアラームリセットコマンドを送信しますか？</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="425"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="425"/>
         <source>Sending the alarm reset…</source>
         <translation>アラームリセットを送信中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="431"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="431"/>
         <source>Alarm reset: %1</source>
         <translation>アラームリセット: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="434"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="434"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>ドライバの電源を切り、5 s 待ってから再投入してください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="445"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="445"/>
         <source>%1 (%2 records)</source>
         <translation>%1（%2 件）</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="447"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="447"/>
         <source>the alarm and warning records</source>
         <translation>アラーム履歴と警告履歴</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="448"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="448"/>
         <source>Clear records</source>
         <translation>履歴消去</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="449"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="449"/>
         <source>Erase %1 of machine %2?</source>
         <translation>局番 %2 の%1を消去しますか？</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="449"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="449"/>
         <source> and </source>
         <translation> と </translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="450"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="450"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>履歴は復元できません。書込み: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="452"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="452"/>
         <source>Erase</source>
         <translation>消去</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="459"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="459"/>
         <source>Erasing the records…</source>
         <translation>履歴を消去中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="467"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="467"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>消去: %1（%2 件）。%3</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="470"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="470"/>
         <source>read back empty.</source>
         <translation>読み戻し結果は空です。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="471"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="471"/>
         <source>NOT empty when read back.</source>
         <translation>読み戻し結果が空ではありません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="473"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="473"/>
         <source>Erasing failed: %1</source>
         <translation>消去に失敗しました: %1</translation>
     </message>
@@ -1003,100 +1018,100 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupCommand</name>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="34"/>
+        <location filename="../cli/BackupCommand.cpp" line="34"/>
         <source>Save every setting of drives to a backup file (written only when all were read)</source>
         <translation>ドライバの全設定をバックアップファイルに保存します（すべて読み出せた場合のみ書き込みます）</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="40"/>
+        <location filename="../cli/BackupCommand.cpp" line="40"/>
         <source>The backup file to write (replaced atomically).</source>
         <translation>書き込むバックアップファイル（アトミックに置き換えます）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="41"/>
+        <location filename="../cli/BackupCommand.cpp" line="41"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="43"/>
+        <location filename="../cli/BackupCommand.cpp" line="43"/>
         <source>Every drive the connection knows (a simulated bus), or every drive a scan finds.</source>
         <translation>接続先が把握しているすべてのドライバ（シミュレーションバス）、またはスキャンで見つかったすべてのドライバ。</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="51"/>
+        <location filename="../cli/BackupCommand.cpp" line="51"/>
         <source>error: name the machine numbers, or give --all: backup ID... -o FILE</source>
         <translation>エラー: 局番を指定するか、--all を指定してください: backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="60"/>
-        <location filename="../main/cli/BackupCommand.cpp" line="220"/>
-        <location filename="../main/cli/BackupCommand.cpp" line="226"/>
+        <location filename="../cli/BackupCommand.cpp" line="60"/>
+        <location filename="../cli/BackupCommand.cpp" line="220"/>
+        <location filename="../cli/BackupCommand.cpp" line="226"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="69"/>
+        <location filename="../cli/BackupCommand.cpp" line="69"/>
         <source>scanning the bus for drives…</source>
         <translation>バスのドライバをスキャン中…</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="99"/>
+        <location filename="../cli/BackupCommand.cpp" line="99"/>
         <source>error: the port %1 was lost while reading %2 (%3)</source>
         <translation>エラー: %2 の読出し中にポート %1 が失われました (%3)</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="102"/>
-        <location filename="../main/cli/BackupCommand.cpp" line="222"/>
+        <location filename="../cli/BackupCommand.cpp" line="102"/>
+        <location filename="../cli/BackupCommand.cpp" line="222"/>
         <source>nothing written to %1</source>
         <translation>%1 には何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="110"/>
+        <location filename="../cli/BackupCommand.cpp" line="110"/>
         <source>error: give the file to write: backup ID... -o FILE</source>
         <translation>エラー: 書き込むファイルを指定してください: backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="114"/>
+        <location filename="../cli/BackupCommand.cpp" line="114"/>
         <source>error: %1; nothing read</source>
         <translation>エラー: %1。何も読み出していません</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="126"/>
+        <location filename="../cli/BackupCommand.cpp" line="126"/>
         <source>interrupted: nothing written</source>
         <translation>中断: 何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="130"/>
+        <location filename="../cli/BackupCommand.cpp" line="130"/>
         <source>error: no drive answers on %1; nothing written</source>
         <translation>エラー: %1 で応答するドライバがありません。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="149"/>
+        <location filename="../cli/BackupCommand.cpp" line="149"/>
         <source>machine number %1</source>
         <translation>局番 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="164"/>
+        <location filename="../cli/BackupCommand.cpp" line="164"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>局番 %1 の読出し中に中断: 何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="172"/>
+        <location filename="../cli/BackupCommand.cpp" line="172"/>
         <source>%1: cannot read %2</source>
         <translation>%1: %2 を読み出せません</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="174"/>
+        <location filename="../cli/BackupCommand.cpp" line="174"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1 にプロファイルで許可されていない値があるため、このバックアップは復元できません: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="188"/>
+        <location filename="../cli/BackupCommand.cpp" line="188"/>
         <source>%1: %2 settings read in %3 requests, %4 ms</source>
         <translation>%1: %2 個の設定を %3 回の要求で読出し、%4 ms</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="195"/>
+        <location filename="../cli/BackupCommand.cpp" line="195"/>
         <source>%1: reading failed, %2 of %3 settings read (%4 requests, %5 ms)</source>
         <translation>%1: 読出し失敗、%3 個中 %2 個の設定を読出し（%4 回の要求、%5 ms）</translation>
     </message>
@@ -1104,7 +1119,7 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupDevice</name>
     <message>
-        <location filename="../main/model/files/BackupDevice.cpp" line="75"/>
+        <location filename="../model/files/BackupDevice.cpp" line="75"/>
         <source>drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
@@ -1112,150 +1127,150 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupDialog</name>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="27"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="27"/>
         <source>&amp;Cancel</source>
         <translation>キャンセル(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="28"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="28"/>
         <source>&amp;Save the drives read</source>
         <translation>読み出したドライバを保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="29"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="29"/>
         <source>C&amp;lose</source>
         <translation>閉じる(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="31"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="31"/>
         <source>Back up drives</source>
         <translation>ドライバのバックアップ</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Progress</source>
         <translation>進捗</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="40"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="40"/>
         <source>Save only the drives that were read; the others are left out</source>
         <translation>読み出せたドライバのみ保存します。その他は除外されます</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="42"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="42"/>
         <source>Stop after the drive being read</source>
         <translation>読出し中のドライバが終わったら停止します</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="87"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="87"/>
         <source>Waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="91"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="91"/>
         <source>%v of %m drives</source>
         <translation>%v / %m 台</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupDialog.cpp" line="92"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="92"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>%n 台のドライバの設定を読出し中…</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="102"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="102"/>
         <source>Stopping after the drive being read…</source>
         <translation>読出し中のドライバが終わったら停止します…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="119"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="119"/>
         <source>Not read (cancelled)</source>
         <translation>未読出し（キャンセル）</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="129"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="129"/>
         <source>drive %1: not identified, nothing read</source>
         <translation>ドライバ %1: 識別できません。何も読み出していません</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="130"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="130"/>
         <source>Not identified</source>
         <translation>識別不可</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="138"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="138"/>
         <source>Reading…</source>
         <translation>読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupDialog.cpp" line="150"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="150"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>%n 個の設定を %1 ms で読出し</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="155"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="155"/>
         <source>%1: cannot read %2</source>
         <translation>%1: %2 を読み出せません</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="157"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="157"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1 にプロファイルで許可されていない値があるため、このバックアップは復元できません: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
         <source>Value not allowed</source>
         <translation>許可されていない値</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
         <source>Read failed</source>
         <translation>読出し失敗</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="180"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="180"/>
         <source>Not read: drive(s) %1. Nothing has been saved yet.</source>
         <translation>未読出し: ドライバ %1。まだ何も保存していません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupDialog.cpp" line="186"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="186"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>読み出した %n 台のドライバを保存しますか？</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupDialog.cpp" line="210"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="210"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>%n 台のドライバを %1 に保存しました。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="216"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="216"/>
         <source>Left out (not read): drive(s) %1.</source>
         <translation>除外（未読出し）: ドライバ %1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="220"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="220"/>
         <source>Could not save %1: %2</source>
         <translation>%1 を保存できませんでした: %2</translation>
     </message>
@@ -1263,12 +1278,12 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFile</name>
     <message>
-        <location filename="../main/model/files/BackupFile.cpp" line="284"/>
+        <location filename="../model/files/BackupFile.cpp" line="284"/>
         <source>cannot read %1: %2</source>
         <translation>%1 を読み込めません: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFile.cpp" line="291"/>
+        <location filename="../model/files/BackupFile.cpp" line="291"/>
         <source>%1 is larger than %2 MB, the most a backup file may hold (a backup of 247 drives is far smaller); not a backup file</source>
         <translation>%1 は %2 MB を超えています。これはバックアップファイルの上限です（247 台分のバックアップでもはるかに小さくなります）。バックアップファイルではありません</translation>
     </message>
@@ -1276,122 +1291,122 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFileParser</name>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="48"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="48"/>
         <source>not a JSON file: %1 at byte %2</source>
         <translation>JSON ファイルではありません: %2 バイト目で %1</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="52"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="52"/>
         <source>not an OpenTOP backup file: the JSON is not an object</source>
         <translation>OpenTOP のバックアップファイルではありません: JSON がオブジェクトではありません</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="62"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="62"/>
         <source>&quot;created&quot; is not an ISO 8601 date and time</source>
         <translation>&quot;created&quot; が ISO 8601 形式の日時ではありません</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="74"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="74"/>
         <source>the file holds no drives (&quot;devices&quot; must be a non-empty list)</source>
         <translation>ドライバが含まれていません（&quot;devices&quot; は空でないリストでなければなりません）</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="81"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="81"/>
         <source>%1: not a drive</source>
         <translation>%1: ドライバではありません</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="83"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="83"/>
         <source>machine number %1 appears twice</source>
         <translation>局番 %1 が 2 回出現しています</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="97"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="97"/>
         <source>not an OpenTOP backup file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>OpenTOP のバックアップファイルではありません（&quot;format&quot; が &quot;%2&quot; ではなく &quot;%1&quot; です）</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="99"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="99"/>
         <source>not an OpenTOP backup file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>OpenTOP のバックアップファイルではありません（&quot;format&quot;: &quot;%1&quot; がありません）</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="104"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="104"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot; は 1 以上の整数でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="106"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="106"/>
         <source>written by a newer OpenTOP (format version %1); this version reads format version %2</source>
         <translation>新しい OpenTOP で書き込まれています（フォーマットバージョン %1）。このバージョンが読み込めるのはフォーマットバージョン %2 です</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="112"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="112"/>
         <source>the file has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>チェックサムがありません（&quot;checksum&quot;: &quot;sha256:…&quot;）。OpenTOP で書き込まれていないか、書込み後に変更されています</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="117"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="117"/>
         <source>the file was changed after it was written (checksum mismatch)</source>
         <translation>書込み後にファイルが変更されています（チェックサム不一致）</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="127"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="127"/>
         <source>%1: &quot;slave&quot; must be a machine number 1–247</source>
         <translation>%1: &quot;slave&quot; は局番 1–247 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="128"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="128"/>
         <source>%1 (machine number %2)</source>
         <translation>%1（局番 %2）</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="132"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="132"/>
         <source>%1: unknown family &quot;%2&quot;; known: %3</source>
         <translation>%1: 不明なファミリ &quot;%2&quot;。既知: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="137"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="137"/>
         <source>%1: &quot;variant&quot; must be text or null</source>
         <translation>%1: &quot;variant&quot; はテキストまたは null でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="142"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="142"/>
         <source>%1: unknown variant &quot;%2&quot; of family %3; known: %4</source>
         <translation>%1: ファミリ %3 の不明な機種 &quot;%2&quot;。既知: %4</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="144"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="144"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="151"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="151"/>
         <source>%1: &quot;parameters&quot; must be a list</source>
         <translation>%1: &quot;parameters&quot; はリストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="171"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="171"/>
         <source>%1: no &quot;name&quot;</source>
         <translation>%1: &quot;name&quot; がありません</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="174"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="174"/>
         <source>%1 %2: &quot;registers&quot; must be a list</source>
         <translation>%1 %2: &quot;registers&quot; はリストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="178"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="178"/>
         <source>%1 %2: registers must be numbers 0–65535</source>
         <translation>%1 %2: registers は 0–65535 の数値でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="184"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="184"/>
         <source>%1 %2: address &quot;%3&quot;, but the %4 profile has it at %5</source>
         <translation>%1 %2: アドレスが &quot;%3&quot; ですが、%4 プロファイルでは %5 です</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="209"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="209"/>
         <source>%1: %2: &quot;value&quot; %3 does not match its registers (%4)</source>
         <translation>%1: %2: &quot;value&quot; %3 がレジスタ値 (%4) と一致しません</translation>
     </message>
@@ -1399,27 +1414,27 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupValidator</name>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="16"/>
+        <location filename="../model/files/BackupValidator.cpp" line="16"/>
         <source>unknown parameter &quot;%1&quot;: the %2 profile has no such setting</source>
         <translation>不明なパラメータ &quot;%1&quot;: %2 プロファイルにこの設定はありません</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="21"/>
+        <location filename="../model/files/BackupValidator.cpp" line="21"/>
         <source>&quot;%1&quot; is not a setting that backups hold</source>
         <translation>&quot;%1&quot; はバックアップに含まれる設定ではありません</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="25"/>
+        <location filename="../model/files/BackupValidator.cpp" line="25"/>
         <source>&quot;%1&quot; appears twice</source>
         <translation>&quot;%1&quot; が 2 回出現しています</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="28"/>
+        <location filename="../model/files/BackupValidator.cpp" line="28"/>
         <source>%1: %2 registers, but the parameter has %3</source>
         <translation>%1: レジスタ数が %2 ですが、パラメータは %3 です</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="53"/>
+        <location filename="../model/files/BackupValidator.cpp" line="53"/>
         <source>%1: its allowed values depend on %2, which the file does not hold</source>
         <translation>%1: 許容値は %2 に依存しますが、ファイルに含まれていません</translation>
     </message>
@@ -1427,87 +1442,87 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupViewer</name>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="22"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="22"/>
         <source>Backup file</source>
         <translation>バックアップファイル</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
         <source>Label</source>
         <translation>ラベル</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
         <source>Registers</source>
         <translation>レジスタ</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="34"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="34"/>
         <source>&amp;Open…</source>
         <translation>開く(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="35"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Open another backup file</source>
         <translation>別のバックアップファイルを開きます</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="36"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="36"/>
         <source>C&amp;lose</source>
         <translation>閉じる(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="56"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="56"/>
         <source>%1: no such file</source>
         <translation>%1: ファイルがありません</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="62"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="62"/>
         <source>the file could not be read</source>
         <translation>ファイルを読み込めませんでした</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="63"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="63"/>
         <source>Backup file %1</source>
         <translation>バックアップファイル %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="71"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="71"/>
         <source>Open backup file</source>
         <translation>バックアップファイルを開く</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="72"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="72"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP バックアップ (*.json);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="94"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="94"/>
         <source>File: %1</source>
         <translation>ファイル: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="95"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="95"/>
         <source>Refused: %1</source>
         <translation>拒否: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="110"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="110"/>
         <source>, %1 bit/s, parity %2, %3 stop bit(s)</source>
         <translation>、%1 bit/s、パリティ %2、ストップビット %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="112"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="112"/>
         <source>File: %1
 Written by %2 on %3 (UTC)
 Read from: %4
@@ -1518,17 +1533,17 @@ Drives: %5</source>
 ドライバ: %5</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="121"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="121"/>
         <source>%1 %2, firmware %3</source>
         <translation>%1 %2、ファームウェア %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="123"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="123"/>
         <source>(variant unknown)</source>
         <translation>（機種不明）</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupViewer.cpp" line="125"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="125"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n 個の設定</numerusform>
@@ -1538,28 +1553,28 @@ Drives: %5</source>
 <context>
     <name>opentop::BusDocks</name>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="24"/>
+        <location filename="../ui/main/BusDocks.cpp" line="24"/>
         <source>Traffic log</source>
         <translation>通信ログ</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="31"/>
+        <location filename="../ui/main/BusDocks.cpp" line="31"/>
         <source>Bus overview</source>
         <translation>バス一覧</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="32"/>
+        <location filename="../ui/main/BusDocks.cpp" line="32"/>
         <source>Trends</source>
         <translation>トレンド</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="33"/>
+        <location filename="../ui/main/BusDocks.cpp" line="33"/>
         <source>Communication groups</source>
         <translation>通信グループ</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="36"/>
-        <location filename="../main/ui/main/BusDocks.cpp" line="68"/>
+        <location filename="../ui/main/BusDocks.cpp" line="36"/>
+        <location filename="../ui/main/BusDocks.cpp" line="68"/>
         <source>Not connected</source>
         <translation>未接続</translation>
     </message>
@@ -1567,42 +1582,42 @@ Drives: %5</source>
 <context>
     <name>opentop::BusGroups</name>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="108"/>
+        <location filename="../model/bus/BusGroups.cpp" line="108"/>
         <source>machine number %1 is the parent of communication group %1: what is sent to it is also executed by %2 (children do not reply)</source>
         <translation>局番 %1 は通信グループ %1 の親局です: 親局に送信した内容は %2 でも実行されます（子局は応答しません）</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="118"/>
+        <location filename="../model/bus/BusGroups.cpp" line="118"/>
         <source>%1 and %2</source>
         <translation>%1 と %2</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="127"/>
+        <location filename="../model/bus/BusGroups.cpp" line="127"/>
         <source>This also reaches machine number %1 (the child of communication group %2; it executes it without replying).</source>
         <translation>この操作は局番 %1（通信グループ %2 の子局。応答せずに実行します）にも届きます。</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="131"/>
+        <location filename="../model/bus/BusGroups.cpp" line="131"/>
         <source>This also reaches machine numbers %1 (the children of communication group %2; they execute it without replying).</source>
         <translation>この操作は局番 %1（通信グループ %2 の子局。応答せずに実行します）にも届きます。</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="141"/>
+        <location filename="../model/bus/BusGroups.cpp" line="141"/>
         <source>child of %1</source>
         <translation>%1 の子局</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="144"/>
+        <location filename="../model/bus/BusGroups.cpp" line="144"/>
         <source>parent of %1</source>
         <translation>%1 の親局</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="152"/>
+        <location filename="../model/bus/BusGroups.cpp" line="152"/>
         <source>machine number %1 is a child of %2 and itself a parent: a child must not be a group parent</source>
         <translation>局番 %1 は %2 の子局であり、自身も親局です: 子局をグループ親局にすることはできません</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="157"/>
+        <location filename="../model/bus/BusGroups.cpp" line="157"/>
         <source>machine number %1 is in communication group %2, but no drive %2 is known: frames to %2 reach %1 although nothing answers</source>
         <translation>局番 %1 は通信グループ %2 に属していますが、ドライバ %2 が見つかりません: %2 宛のフレームは、応答はありませんが %1 に届きます</translation>
     </message>
@@ -1610,95 +1625,95 @@ Drives: %5</source>
 <context>
     <name>opentop::BusListModel</name>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="71"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="71"/>
         <source>The machine number in hexadecimal, as the drive&apos;s rotary switches SW1 (high digit) and SW2 (low digit) are set</source>
         <translation>局番（16 進）。ドライバのロータリスイッチ SW1（上位桁）と SW2（下位桁）の設定値です</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="74"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="74"/>
         <source>The drive&apos;s MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, purple external interrupt, blue memory or communication error, grey no answer</source>
         <translation>ドライバの MONITOR LED: 赤 アラーム、緑 準備完了、橙 CW、水色 CCW、紫 外部停止、青 メモリまたは通信異常、灰 応答なし</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="81"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="81"/>
         <source>LED</source>
         <translation>LED</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="83"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="83"/>
         <source>Machine no.</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="85"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="85"/>
         <source>Hex / switches</source>
         <translation>16 進 / スイッチ</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="87"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="87"/>
         <source>Family</source>
         <translation>ファミリ</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="89"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
         <source>Firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
         <source>State</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
         <source>Control priority</source>
         <translation>制御優先</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="107"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="107"/>
         <source>Two drives may share machine number %1 (%2, %3): check the SW1/SW2 switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
         <translation>2 台のドライバが局番 %1 を共有している可能性があります (%2, %3): ライン上の全ドライバの SW1/SW2 スイッチを確認し、各ドライバに固有の局番を設定して電源を再投入してください。終端抵抗の不良や A/B 線の入れ違いでも応答が化けます。</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="126"/>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="130"/>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="132"/>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="138"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="126"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="130"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="138"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="129"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="129"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 機種不明</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="132"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="159"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="159"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>ステータスランプ %1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="162"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="162"/>
         <source>Status light grey: not live — %1</source>
         <translation>ステータスランプ 灰: 更新停止 — %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="167"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="167"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>ドライバが機種を通知しません。値が正しい範囲でチェックされるよう、コンテキストメニュー（機種）から選択してください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="176"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="176"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>ドライバは I/O 端子から運転指令を受け付けています。バス経由の試運転には通信優先が必要です。</translation>
     </message>
@@ -1706,7 +1721,7 @@ Drives: %5</source>
 <context>
     <name>opentop::BusMemory</name>
     <message>
-        <location filename="../main/model/bus/BusMemory.cpp" line="44"/>
+        <location filename="../model/bus/BusMemory.cpp" line="44"/>
         <source>the simulated bus</source>
         <translation>シミュレーションバス</translation>
     </message>
@@ -1714,7 +1729,7 @@ Drives: %5</source>
 <context>
     <name>opentop::BusOverview</name>
     <message>
-        <location filename="../main/ui/bus/BusOverview.cpp" line="37"/>
+        <location filename="../ui/bus/BusOverview.cpp" line="37"/>
         <source>Double-click a drive to open its pages.</source>
         <translation>ドライバをダブルクリックするとそのページを開きます。</translation>
     </message>
@@ -1722,67 +1737,67 @@ Drives: %5</source>
 <context>
     <name>opentop::BusOverviewModel</name>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="89"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="89"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="91"/>
         <source>State</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="93"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="95"/>
         <source>Display</source>
         <translation>表示値</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="97"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="97"/>
         <source>Target</source>
         <translation>目標</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="99"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="99"/>
         <source>Load</source>
         <translation>負荷</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="101"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="101"/>
         <source>Alarm</source>
         <translation>アラーム</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="103"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="103"/>
         <source>Last answer</source>
         <translation>最終応答</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="118"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="118"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="125"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="125"/>
         <source>connection lost; %1</source>
         <translation>接続断。%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="127"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="127"/>
         <source>no answer: %1; %2</source>
         <translation>応答なし: %1。%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="158"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="158"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="161"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="161"/>
         <source>active</source>
         <translation>発生中</translation>
     </message>
@@ -1790,142 +1805,142 @@ Drives: %5</source>
 <context>
     <name>opentop::BusPanel</name>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="32"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="32"/>
         <source>&amp;Scan</source>
         <translation>スキャン(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="35"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="35"/>
         <source>A&amp;dd drive…</source>
         <translation>ドライバ追加(&amp;D)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="37"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="37"/>
         <source>Ca&amp;ncel</source>
         <translation>キャンセル(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="46"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="46"/>
         <source>Ask every machine number of the range who answers</source>
         <translation>範囲内の各局番に応答を問い合わせます</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="48"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="48"/>
         <source>&amp;from</source>
         <translation>開始局番(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="50"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="50"/>
         <source>&amp;to</source>
         <translation>終了局番(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="55"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="55"/>
         <source>Machine numbers 1–247 (the DBU&apos;s SW1/SW2 switches in hex)</source>
         <translation>局番 1–247（DBU では SW1/SW2 スイッチの 16 進値）</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="72"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="72"/>
         <source>Identify one machine number and add it to the list</source>
         <translation>局番を 1 つ識別してリストに追加します</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="77"/>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="182"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="77"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="182"/>
         <source>%v of %m</source>
         <translation>%v / %m</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="78"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="78"/>
         <source>Scan progress</source>
         <translation>スキャン進捗</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="80"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="80"/>
         <source>Stop the scan after the request on the wire</source>
         <translation>送信中の要求が終わったらスキャンを停止します</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="113"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="113"/>
         <source>Drives on the bus</source>
         <translation>バス上のドライバ</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="173"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="173"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%v / %m（局番 %1）</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="183"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="183"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>%3 で局番 %1–%2 をスキャン中（各 %4 ms）…</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="202"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="202"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>送信中の要求が終わったらキャンセルします…</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="219"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="219"/>
         <source>Did not answer the last scan.</source>
         <translation>前回のスキャンで応答しませんでした。</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="225"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="225"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>局番 %1 でスキャンが停止しました: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/bus/BusPanel.cpp" line="230"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="230"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>局番 %1–%2 の後でスキャンをキャンセルしました（%4 中 %3）: %n 台のドライバが見つかりました。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/bus/BusPanel.cpp" line="238"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="238"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>局番 %1–%2 で %n 台のドライバが見つかりました（%3 s）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="254"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="254"/>
         <source>Add drive</source>
         <translation>ドライバ追加</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="254"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="254"/>
         <source>Machine number (1–247; the DBU shows it in hex on SW1/SW2):</source>
         <translation>局番（1–247。DBU では SW1/SW2 の 16 進値）:</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="264"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="264"/>
         <source>Asking machine number %1…</source>
         <translation>局番 %1 に問い合わせ中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="269"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="269"/>
         <source>Machine number %1: %2 added.</source>
         <translation>局番 %1: %2 を追加しました。</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="271"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="271"/>
         <source>Machine number %1: %2 %3</source>
         <translation>局番 %1: %2 %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="329"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="329"/>
         <source>&amp;Variant</source>
         <translation>機種(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="345"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="345"/>
         <source>&amp;Identify again</source>
         <translation>再識別(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="351"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="351"/>
         <source>&amp;Remove from list</source>
         <translation>リストから削除(&amp;R)</translation>
     </message>
@@ -1933,42 +1948,42 @@ Drives: %5</source>
 <context>
     <name>opentop::BusRecallBar</name>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="20"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="20"/>
         <source>&amp;Scan the bus</source>
         <translation>バスをスキャン(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="28"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="28"/>
         <source>Hide this bar</source>
         <translation>このバーを非表示にします</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="29"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="29"/>
         <source>Hide</source>
         <translation>非表示</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="46"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
         <source>Last time on %1: %2.</source>
         <translation>前回 %1 では: %2。</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="48"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="48"/>
         <source>&amp;Restore the drive last seen</source>
         <translation>前回のドライバを呼び出し(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="49"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="49"/>
         <source>&amp;Restore the %1 drives last seen</source>
         <translation>前回の %1 台のドライバを呼び出し(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="50"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="50"/>
         <source>Identify the drives at these machine numbers again, with the variants set last time</source>
         <translation>前回設定した機種で、これらの局番のドライバを再識別します</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="60"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="60"/>
         <source>No drive is known on %1 yet. Scan the bus to find the drives.</source>
         <translation>%1 ではまだドライバが登録されていません。バスをスキャンしてドライバを検出してください。</translation>
     </message>
@@ -1976,17 +1991,17 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../main/model/bus/BusScanner.cpp" line="156"/>
+        <location filename="../model/bus/BusScanner.cpp" line="156"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
         <translation>応答が 2 回化けました (%1): 2 台のドライバが局番 %2 を共有している可能性があります。SW1/SW2 スイッチを確認してください</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusScanner.cpp" line="161"/>
+        <location filename="../model/bus/BusScanner.cpp" line="161"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>応答はありますが、一致するデバイスプロファイルがありません (%1)</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusScanner.cpp" line="191"/>
+        <location filename="../model/bus/BusScanner.cpp" line="191"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>最初は応答が遅れました（%1 ms の待ち時間の後）。待ち時間を長くすると、このバスのスキャンが確実になります</translation>
     </message>
@@ -1994,42 +2009,42 @@ Drives: %5</source>
 <context>
     <name>opentop::BusSpec</name>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="57"/>
+        <location filename="../model/bus/BusSpec.cpp" line="57"/>
         <source>&quot;%1&quot;: the braces do not pair; a drive&apos;s defects are written in braces after its number, e.g. dbu200@3{firmware=1.4,stall}</source>
         <translation>&quot;%1&quot;: 括弧 {} の対応が取れていません。ドライバの不具合は番号の後の {} 内に記述します。例: dbu200@3{firmware=1.4,stall}</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="62"/>
+        <location filename="../model/bus/BusSpec.cpp" line="62"/>
         <source>empty device list; write TYPE@ID[,TYPE@ID...], e.g. dbu200@1,dcpid@7 (types: %1)</source>
         <translation>デバイスリストが空です。TYPE@ID[,TYPE@ID...] の形式で記述してください。例: dbu200@1,dcpid@7（タイプ: %1）</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="70"/>
+        <location filename="../model/bus/BusSpec.cpp" line="70"/>
         <source>&quot;%1&quot;: the defects in braces end the item, e.g. dbu200@3{stall}</source>
         <translation>&quot;%1&quot;: {} 内の不具合は項目の最後に記述します。例: dbu200@3{stall}</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="78"/>
+        <location filename="../model/bus/BusSpec.cpp" line="78"/>
         <source>&quot;%1&quot;: write TYPE@ID or TYPE@FIRST-LAST, e.g. dbu200@1</source>
         <translation>&quot;%1&quot;: TYPE@ID または TYPE@FIRST-LAST の形式で記述してください。例: dbu200@1</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="83"/>
+        <location filename="../model/bus/BusSpec.cpp" line="83"/>
         <source>&quot;%1&quot;: unknown device type &quot;%2&quot;; known types: %3</source>
         <translation>&quot;%1&quot;: 不明なデバイスタイプ &quot;%2&quot;。既知のタイプ: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="90"/>
+        <location filename="../model/bus/BusSpec.cpp" line="90"/>
         <source>&quot;%1&quot;: the machine number must be a number or a range such as 1-16</source>
         <translation>&quot;%1&quot;: 局番は数値または 1-16 のような範囲でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="94"/>
+        <location filename="../model/bus/BusSpec.cpp" line="94"/>
         <source>&quot;%1&quot;: machine number %2 is outside %3–%4 for %5</source>
         <translation>&quot;%1&quot;: 局番 %2 は %5 の範囲 %3–%4 外です</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="101"/>
+        <location filename="../model/bus/BusSpec.cpp" line="101"/>
         <source>machine number %1 is given twice</source>
         <translation>局番 %1 が 2 回指定されています</translation>
     </message>
@@ -2037,205 +2052,205 @@ Drives: %5</source>
 <context>
     <name>opentop::CertificateHtml</name>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="44"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="44"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="46"/>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="46"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="48"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="48"/>
         <source>ABORTED</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="50"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="50"/>
         <source>INTERRUPTED</source>
         <translation>中断</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="52"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="52"/>
         <source>NOT FINISHED</source>
         <translation>未完了</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="65"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="65"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="72"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="72"/>
         <source>End-of-line test certificate</source>
         <translation>出荷検査成績書</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="75"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="75"/>
         <source>Serial number</source>
         <translation>シリアル番号</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="76"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="76"/>
         <source>Recipe</source>
         <translation>レシピ</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="76"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="76"/>
         <source>%1, revision %2</source>
         <translation>%1、リビジョン %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="77"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="77"/>
         <source>Recipe checksum</source>
         <translation>レシピのチェックサム</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="78"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
         <source>Station</source>
         <translation>ステーション</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="79"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="79"/>
         <source>Operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="80"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="80"/>
         <source>Started</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="81"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
         <source>Ended</source>
         <translation>終了</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
         <source>Record</source>
         <translation>記録</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="91"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="91"/>
         <source>First failure:</source>
         <translation>最初の不合格:</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="94"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="94"/>
         <source>Drives</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
         <source>Machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
         <source>Variant</source>
         <translation>機種</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
         <source>Firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="99"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="99"/>
         <source>Settings</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
         <source>Written</source>
         <translation>書込み</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
         <source>Read back</source>
         <translation>読み戻し</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="101"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="101"/>
         <source>Verified</source>
         <translation>照合</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="105"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="105"/>
         <source>written</source>
         <translation>書込み済み</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="105"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="105"/>
         <source>already set</source>
         <translation>設定済み</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="106"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="106"/>
         <source>yes</source>
         <translation>はい</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="106"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="106"/>
         <source>NO</source>
         <translation>いいえ</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="108"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="108"/>
         <source>Measurements</source>
         <translation>測定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Step</source>
         <translation>ステップ</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Quantity</source>
         <translation>測定項目</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Limits</source>
         <translation>規格値</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
         <source>pass</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
         <source>Bus traffic around the failure</source>
         <translation>不合格前後のバス通信</translation>
     </message>
@@ -2243,12 +2258,12 @@ Drives: %5</source>
 <context>
     <name>opentop::CertificatePdf</name>
     <message>
-        <location filename="../main/report/CertificatePdf.cpp" line="23"/>
+        <location filename="../report/CertificatePdf.cpp" line="23"/>
         <source>End-of-line certificate %1</source>
         <translation>出荷検査成績書 %1</translation>
     </message>
     <message>
-        <location filename="../main/report/CertificatePdf.cpp" line="53"/>
+        <location filename="../report/CertificatePdf.cpp" line="53"/>
         <source>%1 · %2 · page %3 of %4</source>
         <translation>%1 · %2 · %3 / %4 ページ</translation>
     </message>
@@ -2256,7 +2271,7 @@ Drives: %5</source>
 <context>
     <name>opentop::CliApp</name>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="63"/>
+        <location filename="../cli/CliApp.cpp" line="69"/>
         <source>Usage: %1 [options] COMMAND [arguments]
 
 Commissioning tool for RS-485 Modbus-RTU motor drives.
@@ -2271,14 +2286,14 @@ RS-485 Modbus-RTU モータドライバ用立上げツール。
 </translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="68"/>
+        <location filename="../cli/CliApp.cpp" line="74"/>
         <source>
 Connection (every command that talks to drives):
   --port PATH | --tcp HOST:PORT | --sim SPEC
   --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
   Defaults follow the family: dbu 19200 8N1, dcpid 9600 8E1; --timeout 200,
   --retries 3 (2 more while the line is noisy: a request needed a retry lately).
-Output: --json  --trace  --variant VARIANT
+Output: --json  --trace  --variant VARIANT  --lang CODE
 Groups: --bus-drives LIST (or OPENTOP_BUS_DRIVES): the drives whose communication
 group is checked before a write or command
 
@@ -2288,36 +2303,21 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
 </source>
-        <translation>
-接続（ドライバと通信するすべてのコマンド）:
-  --port PATH | --tcp HOST:PORT | --sim SPEC
-  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
-  既定値はファミリによります: dbu 19200 8N1、dcpid 9600 8E1。--timeout 200、
-  --retries 3（回線にノイズが多い間は 2 回追加: 最近の要求で再送が必要だった場合）。
-出力: --json  --trace  --variant VARIANT
-グループ: --bus-drives LIST（または OPENTOP_BUS_DRIVES）: 書込みやコマンドの前に
-通信グループを確認するドライバ
-
-終了コード: 0 成功、1 通信失敗、2 使い方の誤り、3 不正な値またはファイル
-（何も書き込まない）、4 照合不一致または停止しなかったドライバあり、
-130 Ctrl-C、SIGTERM、SIGHUP による中断（実行済みの内容を報告）。
-
-&quot;%1 help COMMAND&quot; でコマンドのオプションを表示します。
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="147"/>
-        <location filename="../main/cli/CliApp.cpp" line="201"/>
+        <location filename="../cli/CliApp.cpp" line="153"/>
+        <location filename="../cli/CliApp.cpp" line="207"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>&quot;%1 --help&quot; を実行してください。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="167"/>
+        <location filename="../cli/CliApp.cpp" line="173"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1: 不明なコマンド &quot;%2&quot;。コマンド: </translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="175"/>
+        <location filename="../cli/CliApp.cpp" line="181"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2326,12 +2326,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="189"/>
+        <location filename="../cli/CliApp.cpp" line="195"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2: --%3 はこのコマンドのオプションではありません。&quot;%1 help %2&quot; を参照してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="200"/>
+        <location filename="../cli/CliApp.cpp" line="206"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2339,44 +2339,44 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="75"/>
-        <location filename="../main/cli/CliContext.cpp" line="89"/>
-        <location filename="../main/cli/CliContext.cpp" line="97"/>
+        <location filename="../cli/CliContext.cpp" line="75"/>
+        <location filename="../cli/CliContext.cpp" line="89"/>
+        <location filename="../cli/CliContext.cpp" line="97"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="124"/>
+        <location filename="../cli/CliContext.cpp" line="124"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;: %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="187"/>
+        <location filename="../cli/CliContext.cpp" line="187"/>
         <source>machine number %1: no connection</source>
         <translation>局番 %1: 接続なし</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="192"/>
+        <location filename="../cli/CliContext.cpp" line="192"/>
         <source>machine number %1: %2%3</source>
         <translation>局番 %1: %2%3</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="245"/>
+        <location filename="../cli/CliContext.cpp" line="245"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1: &quot;%2&quot; は局番 1–247 ではありません</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="249"/>
+        <location filename="../cli/CliContext.cpp" line="249"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1: &quot;%2&quot; はドライバの機種ではありません。%3 のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="267"/>
+        <location filename="../cli/CliContext.cpp" line="267"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; は局番 1–247 でも 3-8 のような範囲でもありません</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="277"/>
+        <location filename="../cli/CliContext.cpp" line="277"/>
         <source>no machine number given</source>
         <translation>局番が指定されていません</translation>
     </message>
@@ -2384,22 +2384,22 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CodeEntry</name>
     <message>
-        <location filename="../main/model/profile/CodeTable.cpp" line="10"/>
+        <location filename="../model/profile/CodeTable.cpp" line="10"/>
         <source>Alarm-Reset</source>
         <translation>Alarm-Reset</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/CodeTable.cpp" line="12"/>
+        <location filename="../model/profile/CodeTable.cpp" line="12"/>
         <source>power cycle</source>
         <translation>電源再投入</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/CodeTable.cpp" line="14"/>
+        <location filename="../model/profile/CodeTable.cpp" line="14"/>
         <source>by itself</source>
         <translation>自動解除</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/CodeTable.cpp" line="15"/>
+        <location filename="../model/profile/CodeTable.cpp" line="15"/>
         <source>—</source>
         <translation>—</translation>
     </message>
@@ -2407,100 +2407,100 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareCommand</name>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="34"/>
+        <location filename="../cli/CompareCommand.cpp" line="34"/>
         <source>Show the settings that differ; A, B: a machine number, FILE or FILE:ID (exit 0 whether or not they differ)</source>
         <translation>異なる設定を表示します。A、B: 局番、FILE または FILE:ID（差異の有無にかかわらず終了コード 0）</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="41"/>
+        <location filename="../cli/CompareCommand.cpp" line="41"/>
         <source>Compare A with the profile&apos;s factory defaults; settings the manual gives no default for are listed, never counted as differences.</source>
         <translation>A をプロファイルの工場出荷時設定と比較します。マニュアルに初期値の記載がない設定は一覧に表示しますが、差異としては数えません。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="54"/>
-        <location filename="../main/cli/CompareCommand.cpp" line="88"/>
-        <location filename="../main/cli/CompareCommand.cpp" line="146"/>
+        <location filename="../cli/CompareCommand.cpp" line="54"/>
+        <location filename="../cli/CompareCommand.cpp" line="88"/>
+        <location filename="../cli/CompareCommand.cpp" line="146"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="67"/>
+        <location filename="../cli/CompareCommand.cpp" line="67"/>
         <source>interrupted</source>
         <translation>中断</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="72"/>
+        <location filename="../cli/CompareCommand.cpp" line="72"/>
         <source>error: %1: cannot read %2</source>
         <translation>エラー: %1: %2 を読み出せません</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="76"/>
+        <location filename="../cli/CompareCommand.cpp" line="76"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="107"/>
+        <location filename="../cli/CompareCommand.cpp" line="107"/>
         <source>error: %1 holds several drives (%2): name one as %1:ID</source>
         <translation>エラー: %1 には複数のドライバ (%2) が含まれています。%1:ID の形式で 1 台を指定してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="110"/>
+        <location filename="../cli/CompareCommand.cpp" line="110"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>エラー: %1 に局番 %2 のドライバは含まれていません。含まれているのは %3 です</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="126"/>
+        <location filename="../cli/CompareCommand.cpp" line="126"/>
         <source>error: compare A B, or compare A --defaults (A, B: a machine number, FILE or FILE:ID)</source>
         <translation>エラー: compare A B、または compare A --defaults（A、B: 局番、FILE または FILE:ID）</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="144"/>
+        <location filename="../cli/CompareCommand.cpp" line="144"/>
         <source>factory defaults</source>
         <translation>工場出荷時設定</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="171"/>
+        <location filename="../cli/CompareCommand.cpp" line="171"/>
         <source>A: %1 (%2)</source>
         <translation>A: %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="172"/>
+        <location filename="../cli/CompareCommand.cpp" line="172"/>
         <source>B: %1</source>
         <translation>B: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
         <source>parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="177"/>
-        <location filename="../main/cli/CompareCommand.cpp" line="178"/>
+        <location filename="../cli/CompareCommand.cpp" line="177"/>
+        <location filename="../cli/CompareCommand.cpp" line="178"/>
         <source>(not held)</source>
         <translation>（含まれていません）</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="181"/>
+        <location filename="../cli/CompareCommand.cpp" line="181"/>
         <source> in %1 settings compared</source>
         <translation> （比較した設定 %1 個）</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="183"/>
+        <location filename="../cli/CompareCommand.cpp" line="183"/>
         <source>no differences (%1 settings compared)</source>
         <translation>差異なし（比較した設定 %1 個）</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="190"/>
+        <location filename="../cli/CompareCommand.cpp" line="190"/>
         <source>note: %1</source>
         <translation>注: %1</translation>
     </message>
@@ -2508,162 +2508,162 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareDialog</name>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="32"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="32"/>
         <source>&amp;Differences only</source>
         <translation>差異のみ(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="36"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="36"/>
         <source>Co&amp;mpare</source>
         <translation>比較(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="38"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="38"/>
         <source>Compare settings</source>
         <translation>設定の比較</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="39"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="39"/>
         <source>Side A</source>
         <translation>A 側</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="40"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="40"/>
         <source>Side B</source>
         <translation>B 側</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="48"/>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="48"/>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="54"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="54"/>
         <source>Filter by setting or parameter name</source>
         <translation>設定名またはパラメータ名で絞り込み</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="56"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="56"/>
         <source>Read the chosen sides and compare them (drives are read fresh)</source>
         <translation>選択した両側を読み出して比較します（ドライバは改めて読み出します）</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="66"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="66"/>
         <source>C&amp;lose</source>
         <translation>閉じる(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="98"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="98"/>
         <source>%1 refused: %2</source>
         <translation>%1 は使用できません: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="112"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="112"/>
         <source>Reading…</source>
         <translation>読出し中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="137"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="137"/>
         <source>side A</source>
         <translation>A 側</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="137"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="137"/>
         <source>side B</source>
         <translation>B 側</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="141"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="141"/>
         <source>Factory defaults</source>
         <translation>工場出荷時設定</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="148"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="148"/>
         <source>Choose a backup file and a drive in it for %1.</source>
         <translation>%1 のバックアップファイルと、その中のドライバを選択してください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="152"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="152"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="162"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="162"/>
         <source>Choose an identified drive on the bus for %1.</source>
         <translation>%1 にはバス上の識別済みドライバを選択してください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="170"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="170"/>
         <source>%1: cannot read %2</source>
         <translation>%1: %2 を読み出せません</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="195"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="195"/>
         <source>Unknown family %1</source>
         <translation>不明なファミリ %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="215"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="215"/>
         <source>B: %1</source>
         <translation>B: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="216"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
         <source>factory defaults (%1)</source>
         <translation>工場出荷時設定 (%1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="226"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="226"/>
         <source>(no documented default)</source>
         <translation>（初期値の記載なし）</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="227"/>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="229"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="229"/>
         <source>(not held)</source>
         <translation>（含まれていません）</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/CompareDialog.cpp" line="245"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="245"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n 件の差異</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="246"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="246"/>
         <source> in %1 settings compared</source>
         <translation> （比較した設定 %1 個）</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="249"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="249"/>
         <source>Note: %1</source>
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="256"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="256"/>
         <source>No factory default documented (never counted as a difference): %1</source>
         <translation>工場出荷時設定の記載なし（差異としては数えません）: %1</translation>
     </message>
@@ -2671,62 +2671,62 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareSide</name>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="22"/>
+        <location filename="../ui/files/CompareSide.cpp" line="22"/>
         <source>Browse…</source>
         <translation>参照…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="25"/>
+        <location filename="../ui/files/CompareSide.cpp" line="25"/>
         <source>Drive on the bus</source>
         <translation>バス上のドライバ</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="26"/>
+        <location filename="../ui/files/CompareSide.cpp" line="26"/>
         <source>Drive in a backup file</source>
         <translation>バックアップファイル内のドライバ</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="28"/>
+        <location filename="../ui/files/CompareSide.cpp" line="28"/>
         <source>Factory defaults</source>
         <translation>工場出荷時設定</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="32"/>
+        <location filename="../ui/files/CompareSide.cpp" line="32"/>
         <source>Drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="36"/>
+        <location filename="../ui/files/CompareSide.cpp" line="36"/>
         <source>Backup file</source>
         <translation>バックアップファイル</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="41"/>
+        <location filename="../ui/files/CompareSide.cpp" line="41"/>
         <source>Source:</source>
         <translation>取得元:</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="42"/>
+        <location filename="../ui/files/CompareSide.cpp" line="42"/>
         <source>Drive:</source>
         <translation>ドライバ:</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="43"/>
+        <location filename="../ui/files/CompareSide.cpp" line="43"/>
         <source>File:</source>
         <translation>ファイル:</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="44"/>
+        <location filename="../ui/files/CompareSide.cpp" line="44"/>
         <source>Drive in file:</source>
         <translation>ファイル内のドライバ:</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="123"/>
+        <location filename="../ui/files/CompareSide.cpp" line="123"/>
         <source>Open backup file</source>
         <translation>バックアップファイルを開く</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="124"/>
+        <location filename="../ui/files/CompareSide.cpp" line="124"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP バックアップ (*.json);;すべてのファイル (*)</translation>
     </message>
@@ -2734,17 +2734,17 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::Comparer</name>
     <message>
-        <location filename="../main/model/files/Comparer.cpp" line="15"/>
+        <location filename="../model/files/Comparer.cpp" line="15"/>
         <source>nothing to compare: %1 is a %2 drive, %3 a %4 drive</source>
         <translation>比較できません: %1 は %2 ドライバ、%3 は %4 ドライバです</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Comparer.cpp" line="20"/>
+        <location filename="../model/files/Comparer.cpp" line="20"/>
         <source>the variants differ: %1 and %2</source>
         <translation>機種が異なります: %1 と %2</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Comparer.cpp" line="55"/>
+        <location filename="../model/files/Comparer.cpp" line="55"/>
         <source>factory defaults</source>
         <translation>工場出荷時設定</translation>
     </message>
@@ -2752,188 +2752,188 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::ConnectionDialog</name>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="61"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="61"/>
         <source>Connect to a bus</source>
         <translation>バスに接続</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="66"/>
         <source>&amp;Serial port</source>
         <translation>シリアルポート(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="66"/>
         <source>Modbus &amp;TCP gateway</source>
         <translation>Modbus TCP ゲートウェイ(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="67"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
         <source>Si&amp;mulated bus</source>
         <translation>シミュレーションバス(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="83"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="83"/>
         <source>&amp;Advanced</source>
         <translation>詳細設定(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="106"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="106"/>
         <source>&amp;Connect</source>
         <translation>接続(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="127"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="127"/>
         <source>&amp;Refresh</source>
         <translation>更新(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="128"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="128"/>
         <source>List the serial ports again (after plugging in an adapter)</source>
         <translation>シリアルポートを再検索します（アダプタ接続後）</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="133"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="133"/>
         <source>&amp;Port:</source>
         <translation>ポート(&amp;P):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="142"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="142"/>
         <source>Custom</source>
         <translation>カスタム</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="144"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="144"/>
         <source>%1 (%2 %3%4%5)</source>
         <translation>%1 (%2 %3%4%5)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="151"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="151"/>
         <source>Fills in the factory line settings of a drive family</source>
         <translation>ドライバファミリの工場出荷時の通信設定を入力します</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="154"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="154"/>
         <source>&amp;Family defaults:</source>
         <translation>ファミリ既定値(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="158"/>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="286"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="158"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="286"/>
         <source>%1 bit/s</source>
         <translation>%1 bit/s</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="159"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="159"/>
         <source>&amp;Baud rate:</source>
         <translation>ボーレート(&amp;B):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="161"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="161"/>
         <source>None (N)</source>
         <translation>なし (N)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="162"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="162"/>
         <source>Even (E)</source>
         <translation>偶数 (E)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="163"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
         <source>Odd (O)</source>
         <translation>奇数 (O)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="164"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
         <source>P&amp;arity:</source>
         <translation>パリティ(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="166"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="166"/>
         <source>1 bit</source>
         <translation>1 ビット</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="167"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="167"/>
         <source>2 bits</source>
         <translation>2 ビット</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="168"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
         <source>S&amp;top bits:</source>
         <translation>ストップビット(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="182"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="182"/>
         <source>e.g. 192.168.1.10</source>
         <translation>例: 192.168.1.10</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="183"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="183"/>
         <source>&amp;Host:</source>
         <translation>ホスト(&amp;H):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="186"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="186"/>
         <source>Modbus TCP uses port 502</source>
         <translation>Modbus TCP はポート 502 を使用します</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="187"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="187"/>
         <source>TCP p&amp;ort:</source>
         <translation>TCP ポート(&amp;O):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="199"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="199"/>
         <source>Device types and machine numbers: TYPE@NUMBER, comma separated. Types: %1</source>
         <translation>デバイスタイプと局番: TYPE@NUMBER をカンマ区切りで指定。タイプ: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="202"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="202"/>
         <source>&amp;Devices:</source>
         <translation>デバイス(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="216"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="216"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="217"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="217"/>
         <source>How long to wait for each reply</source>
         <translation>各応答の待ち時間</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="218"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="218"/>
         <source>Response &amp;timeout:</source>
         <translation>応答タイムアウト(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="221"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="221"/>
         <source>Extra attempts after a request got no valid reply</source>
         <translation>有効な応答がなかった要求の再試行回数</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="222"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="222"/>
         <source>R&amp;etries:</source>
         <translation>リトライ(&amp;E):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="322"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="322"/>
         <source>The device list is not valid.</source>
         <translation>デバイスリストが正しくありません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="26"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="26"/>
         <source>The port is in use by another program (named above where the system tells it): a terminal program, ModemManager, another OpenTOP window or an opentop-cli command. Close it, or disconnect the other window, and connect again. Nothing was sent on the port.</source>
         <translation>ポートは他のプログラムが使用中です（システムが通知する場合は上に表示）: 端末プログラム、ModemManager、別の OpenTOP ウィンドウ、opentop-cli コマンドなど。そのプログラムを終了するか別のウィンドウで切断してから、再度接続してください。ポートには何も送信していません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="33"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="33"/>
         <source>Your user may not open serial ports: add it to the dialout group with the command above, then log out and in again.</source>
         <translation>このユーザはシリアルポートを開けません: 上記のコマンドで dialout グループに追加し、ログアウトして再ログインしてください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="36"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="36"/>
         <source>Your user may not open serial ports. Add it to the dialout group:
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -2942,37 +2942,37 @@ then log out and in again (the group applies to new sessions only).</source>
 その後、ログアウトして再ログインしてください（グループは新しいセッションにのみ適用されます）。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="41"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="41"/>
         <source>The port %1 does not exist: the USB adapter may be unplugged or have come back under another name, or the path is mistyped. Plug it in, press Refresh and pick it from the list; for a pseudo-terminal check that the program serving it (opentop-sim, socat) still runs.</source>
         <translation>ポート %1 が存在しません: USB アダプタが外れているか、別の名前で再接続されたか、パスの入力ミスです。アダプタを接続し、「更新」を押してリストから選択してください。疑似端末の場合は、それを提供するプログラム (opentop-sim、socat) が動作していることを確認してください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="48"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="48"/>
         <source>The connection opened but no drive answered. Check that the baud rate, parity and stop bits (%1) match the drives&apos; settings (DBU: 19200 8N1, DC controller: 9600 8E1) — a framing mismatch looks like silence — that the machine number is right, and that the A and B (D+ and D−) wires are not swapped.</source>
         <translation>接続は開きましたが、応答したドライバはありません。ボーレート、パリティ、ストップビット (%1) がドライバの設定（DBU: 19200 8N1、DC コントローラ: 9600 8E1）と一致しているか（フレーム形式が違うと無応答に見えます）、局番が正しいか、A と B（D+ と D−）の線が入れ違っていないかを確認してください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="56"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="56"/>
         <source>The gateway %1:%2 did not accept the connection: check the address and port (Modbus TCP uses 502), that the gateway is powered and on this network, and that no firewall blocks it.</source>
         <translation>ゲートウェイ %1:%2 が接続を受け付けませんでした: アドレスとポート（Modbus TCP は 502）、ゲートウェイの電源が入っていてこのネットワーク上にあるか、ファイアウォールでブロックされていないかを確認してください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="63"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="63"/>
         <source>Check that the adapter is plugged in, that %1 is the right port, and that no other program uses it.</source>
         <translation>アダプタが接続されているか、%1 が正しいポートか、他のプログラムが使用していないかを確認してください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="66"/>
         <source>Check the connection settings and try again.</source>
         <translation>接続設定を確認して、再度実行してください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="68"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="68"/>
         <source>Could not use %1: %2</source>
         <translation>%1 を使用できませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="69"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="69"/>
         <source>What to check:</source>
         <translation>確認事項:</translation>
     </message>
@@ -2980,138 +2980,138 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ConnectionOptions</name>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="22"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="22"/>
         <source>Serial device (e.g. /dev/ttyUSB0 or a pty path).</source>
         <translation>シリアルデバイス（例: /dev/ttyUSB0 または pty のパス）。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="23"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="23"/>
         <source>PATH</source>
         <translation>PATH</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="24"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="24"/>
         <source>Modbus TCP gateway, HOST:PORT (port defaults to 502).</source>
         <translation>Modbus TCP ゲートウェイ、HOST:PORT（ポートの既定値は 502）。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="25"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="25"/>
         <source>HOST:PORT</source>
         <translation>HOST:PORT</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="26"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="26"/>
         <source>In-process simulated bus, e.g. dbu200@1,dbu400@150,dcpid@7.</source>
         <translation>プロセス内のシミュレーションバス。例: dbu200@1,dbu400@150,dcpid@7。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="27"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="27"/>
         <source>SPEC</source>
         <translation>SPEC</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="29"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="29"/>
         <source>Device family whose serial defaults apply (dbu: 19200 8N1, dcpid: 9600 8E1).</source>
         <translation>シリアル既定値を適用するデバイスファミリ（dbu: 19200 8N1、dcpid: 9600 8E1）。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="30"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="30"/>
         <source>FAMILY</source>
         <translation>FAMILY</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="31"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="31"/>
         <source>Baud rate, 1200–115200.</source>
         <translation>ボーレート、1200–115200。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="31"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="31"/>
         <source>BAUD</source>
         <translation>BAUD</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="32"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="32"/>
         <source>Parity: N, E or O.</source>
         <translation>パリティ: N、E、O。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="32"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="32"/>
         <source>N|E|O</source>
         <translation>N|E|O</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="33"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="33"/>
         <source>Stop bits: 1 or 2.</source>
         <translation>ストップビット: 1 または 2。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="33"/>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="39"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="33"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="39"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="35"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="35"/>
         <source>Response timeout per attempt in ms, 10–10000 (default 200).</source>
         <translation>1 回あたりの応答タイムアウト (ms)、10–10000（既定値 200）。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="35"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="35"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="37"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="37"/>
         <source>Extra attempts after no reply or a garbled one, 0–10 (default 3; 2 more while the line is noisy).</source>
         <translation>無応答または応答化けの後の再試行回数、0–10（既定値 3。回線にノイズが多い間は 2 回追加）。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="73"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="73"/>
         <source>give only one of --port, --tcp and --sim</source>
         <translation>--port、--tcp、--sim のいずれか 1 つだけを指定してください</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="75"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="75"/>
         <source>no bus given: use --port PATH, --tcp HOST:PORT or --sim SPEC</source>
         <translation>バスが指定されていません: --port PATH、--tcp HOST:PORT、--sim SPEC のいずれかを使用してください</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="84"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="84"/>
         <source>--family %1: unknown family; use one of %2</source>
         <translation>--family %1: 不明なファミリです。%2 のいずれかを使用してください</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="103"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
         <source>--tcp: &quot;%1&quot; is not HOST:PORT</source>
         <translation>--tcp: &quot;%1&quot; は HOST:PORT ではありません</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="112"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="112"/>
         <source>--sim: %1</source>
         <translation>--sim: %1</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="125"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="125"/>
         <source>--baud %1: use a baud rate 1200–115200 (e.g. 9600, 19200, 38400)</source>
         <translation>--baud %1: ボーレートは 1200–115200 を指定してください（例: 9600、19200、38400）</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="129"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="129"/>
         <source>--stop-bits %1: use 1 or 2</source>
         <translation>--stop-bits %1: 1 または 2 を指定してください</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="131"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="131"/>
         <source>--timeout %1: use a response timeout of 10–10000 ms</source>
         <translation>--timeout %1: 応答タイムアウトは 10–10000 ms を指定してください</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="134"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="134"/>
         <source>--retries %1: use 0–10 extra attempts</source>
         <translation>--retries %1: 再試行回数は 0–10 を指定してください</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="139"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="139"/>
         <source>--parity %1: use N (none), E (even) or O (odd)</source>
         <translation>--parity %1: N（なし）、E（偶数）、O（奇数）を指定してください</translation>
     </message>
@@ -3119,18 +3119,18 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ConnectionStatus</name>
     <message>
-        <location filename="../main/ui/main/ConnectionStatus.cpp" line="20"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="20"/>
         <source>SIMULATED BUS — no hardware</source>
         <translation>シミュレーションバス — ハードウェアなし</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/ConnectionStatus.cpp" line="21"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="21"/>
         <source>These drives exist only in this program; nothing moves.</source>
         <translation>これらのドライバはこのプログラム内にのみ存在します。何も動きません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/ConnectionStatus.cpp" line="26"/>
-        <location filename="../main/ui/main/ConnectionStatus.cpp" line="61"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="26"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="61"/>
         <source>Not connected</source>
         <translation>未接続</translation>
     </message>
@@ -3138,92 +3138,92 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::DbuSimDevice</name>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="340"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="340"/>
         <source>alarm 0x%1</source>
         <translation>アラーム 0x%1</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="341"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="341"/>
         <source>running</source>
         <translation>運転中</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="342"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="342"/>
         <source>stopped</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="343"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="343"/>
         <source>%1 %2 r/min (target %3) SPno%4 load %5 % %6, %7 priority, %8%9</source>
         <translation>%1 %2 r/min（目標 %3）SPno%4 負荷 %5 % %6、%7優先、%8%9</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="347"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="347"/>
         <source>communication</source>
         <translation>通信</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="347"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="347"/>
         <source>I/O</source>
         <translation>I/O</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="348"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="348"/>
         <source>offline</source>
         <translation>オフライン</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="348"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="348"/>
         <source>online</source>
         <translation>オンライン</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="349"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="349"/>
         <source>, ignoring stop</source>
         <translation>、停止を無視</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="357"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="357"/>
         <source>usage: %1 ID CODE</source>
         <translation>使い方: %1 ID CODE</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="360"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="360"/>
         <source>warning cleared</source>
         <translation>警告を解除しました</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="365"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="365"/>
         <source>unknown %1 code %2; allowed: %3</source>
         <translation>不明な %1 コード %2。使用可能: %3</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="373"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="373"/>
         <source>%1 0x%2 raised</source>
         <translation>%1 0x%2 を発生させました</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="384"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="384"/>
         <source>usage: ignore-stop ID on|off</source>
         <translation>使い方: ignore-stop ID on|off</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="386"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="386"/>
         <source>stop commands are acknowledged and ignored</source>
         <translation>停止コマンドに応答しますが、無視します</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="387"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="387"/>
         <source>stop commands are obeyed</source>
         <translation>停止コマンドに従います</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="403"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="403"/>
         <source>usage: %1 ID VALUE with VALUE %2..%3</source>
         <translation>使い方: %1 ID VALUE（VALUE は %2..%3）</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="405"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="405"/>
         <source>%1 = %2</source>
         <translation>%1 = %2</translation>
     </message>
@@ -3231,232 +3231,232 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::DcControllerPage</name>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="41"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="41"/>
         <source>DC controller</source>
         <translation>DC コントローラ</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="44"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="44"/>
         <source>Re&amp;load stored configuration</source>
         <translation>保存済み設定を再読込み(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="66"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="66"/>
         <source>Store &amp;configuration</source>
         <translation>設定を保存(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="67"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="67"/>
         <source>Store P&amp;ID</source>
         <translation>PID を保存(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="68"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="68"/>
         <source>Store pre&amp;set</source>
         <translation>設定速度を保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="71"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="71"/>
         <source>Writes %1 = 1: %2</source>
         <translation>%1 = 1 を書込み: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="76"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="76"/>
         <source>Writes store.config = 0: the controller reloads the stored configuration; unstored configuration changes are discarded</source>
         <translation>store.config = 0 を書込み: コントローラは保存済みの設定を再読込みします。保存していない設定変更は破棄されます</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="83"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="83"/>
         <source>Speed mode and motor currents</source>
         <translation>速度モードとモータ電流</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="84"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="84"/>
         <source>Speed &amp;mode:</source>
         <translation>速度モード(&amp;M):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="85"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="85"/>
         <source>Rated current:</source>
         <translation>定格電流:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="86"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="86"/>
         <source>Maximum start/load current:</source>
         <translation>最大起動/負荷電流:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="87"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="87"/>
         <source>Brake current:</source>
         <translation>ブレーキ電流:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="89"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="89"/>
         <source>Limit switches</source>
         <translation>リミットスイッチ</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="90"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="90"/>
         <source>Limits:</source>
         <translation>リミット:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="91"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="91"/>
         <source>SQ1 active level (forward):</source>
         <translation>SQ1 アクティブレベル（正転）:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="92"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="92"/>
         <source>SQ2 active level (reverse):</source>
         <translation>SQ2 アクティブレベル（逆転）:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="94"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="94"/>
         <source>Protective stops (0 = off)</source>
         <translation>保護停止（0 = 無効）</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="95"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="95"/>
         <source>S&amp;tall stop time:</source>
         <translation>ストール停止時間(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="96"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="96"/>
         <source>Communication loss stop time:</source>
         <translation>通信断停止時間:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="104"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="104"/>
         <source>Serial port (reconnect after a change)</source>
         <translation>シリアルポート（変更後は再接続）</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="105"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="105"/>
         <source>Baud rate:</source>
         <translation>ボーレート:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="106"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="106"/>
         <source>Parity and stop bits:</source>
         <translation>パリティとストップビット:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="107"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="107"/>
         <source>Configuration over serial:</source>
         <translation>シリアル経由の設定:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="109"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="109"/>
         <source>Lost at power-off until stored (Store configuration); a stored baud rate or parity is used from the next power-up on, and the tool must then reconnect with it.</source>
         <translation>保存（設定を保存）するまでは電源オフで失われます。保存したボーレートやパリティは次回の電源投入から使用され、ツールはその設定で再接続する必要があります。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="112"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="112"/>
         <source>Speed loop PID</source>
         <translation>速度ループ PID</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="113"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="113"/>
         <source>&amp;P coefficient:</source>
         <translation>P 係数(&amp;P):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="114"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="114"/>
         <source>I coefficient:</source>
         <translation>I 係数:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="115"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="115"/>
         <source>&amp;D coefficient:</source>
         <translation>D 係数(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="116"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="116"/>
         <source>D period:</source>
         <translation>D 周期:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="118"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="118"/>
         <source>Preset speed (potentiometer/analog control)</source>
         <translation>設定速度（ボリューム/アナログ制御）</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="119"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="119"/>
         <source>Preset speed mo&amp;de:</source>
         <translation>設定速度モード(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="120"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="120"/>
         <source>Trigger:</source>
         <translation>トリガ:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="121"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="121"/>
         <source>&amp;Forward speed:</source>
         <translation>正転速度(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="122"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="122"/>
         <source>Reverse speed:</source>
         <translation>逆転速度:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="124"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="124"/>
         <source>AI1/AI2 as digital ports</source>
         <translation>AI1/AI2 をデジタルポートとして使用</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="125"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="125"/>
         <source>AI1 direction:</source>
         <translation>AI1 方向:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="126"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="126"/>
         <source>AI2 direction:</source>
         <translation>AI2 方向:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="127"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="127"/>
         <source>AI1 level:</source>
         <translation>AI1 レベル:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="128"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="128"/>
         <source>AI2 level:</source>
         <translation>AI2 レベル:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="130"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="130"/>
         <source>Takes effect now and is not kept over power-off: the controller has no store command for these, only a 5-register block write, which this page does not send.</source>
         <translation>即時に有効になりますが、電源オフ後は保持されません: コントローラにはこれらを保存するコマンドがなく、5 レジスタの一括書込みしかありませんが、このページはそれを送信しません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="174"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="174"/>
         <source>The communication loss stop is off (%1 = 0 s): if the connection is lost while the motor runs, the controller keeps it running at the last speed command. Set a time so that it brakes when the bus goes quiet.</source>
         <translation>通信断停止が無効です (%1 = 0 s): モータ運転中に接続が切れると、コントローラは最後の速度指令で運転を続けます。バスが無通信になったときにブレーキがかかるよう、時間を設定してください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="189"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="189"/>
         <source>Takes effect now, lost at power-off until stored (%1).</source>
         <translation>即時に有効。保存 (%1) するまでは電源オフで失われます。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="250"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="250"/>
         <source>Forward and reverse speed in this mode (%1): %2</source>
         <translation>このモード (%1) での正転速度と逆転速度: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="252"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="252"/>
         <source>The unit and range of the speeds follow the preset speed mode (not read yet).</source>
         <translation>速度の単位と範囲は設定速度モードによります（未読出し）。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="286"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="286"/>
         <source>&lt;b&gt;Written but not stored:&lt;/b&gt; %1. These values act now and are lost when the controller is switched off.</source>
         <translation>&lt;b&gt;書込み済み・未保存:&lt;/b&gt; %1。これらの値は現在有効ですが、コントローラの電源を切ると失われます。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="308"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="308"/>
         <source>%1: the controller writes the values now in effect to its memory and uses them from the next power-up on.
 
 Stored: %2.</source>
@@ -3465,17 +3465,17 @@ Stored: %2.</source>
 保存: %2。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="319"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="319"/>
         <source>Not written yet, so not stored: %1.</source>
         <translation>未書込みのため保存されていません: %1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="322"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="322"/>
         <source>%1: done, kept over power-off.</source>
         <translation>%1: 完了。電源オフ後も保持されます。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="330"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="330"/>
         <source>The controller replaces its configuration (%1) with the one stored in its memory.
 
 Configuration changes written but not stored are discarded.</source>
@@ -3484,17 +3484,17 @@ Configuration changes written but not stored are discarded.</source>
 書込み済みで未保存の設定変更は破棄されます。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="336"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="336"/>
         <source>Stored configuration reloaded.</source>
         <translation>保存済み設定を再読込みしました。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="344"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="344"/>
         <source>Writing %1 = %2…</source>
         <translation>%1 = %2 を書込み中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="354"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="354"/>
         <source>%1 = %2 failed: %3</source>
         <translation>%1 = %2 失敗: %3</translation>
     </message>
@@ -3502,32 +3502,32 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DcPidSimDevice</name>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="341"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="341"/>
         <source>%1 %2%3, output %4 %, command %5, line %6 %7</source>
         <translation>%1 %2%3、出力 %4 %、指令 %5、回線 %6 %7</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="343"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="343"/>
         <source> (stall stop)</source>
         <translation> (ストール停止)</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="357"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="359"/>
         <source>usage: %1 ID VALUE with VALUE %2..%3 %4</source>
         <translation>使い方: %1 ID VALUE（VALUE は %2..%3 %4）</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="361"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="363"/>
         <source>(bit0 SQ1, bit1 SQ2, bit2 DE)</source>
         <translation>(bit0 SQ1、bit1 SQ2、bit2 DE)</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="361"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="363"/>
         <source>(% current)</source>
         <translation>(電流 %)</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="363"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="365"/>
         <source>%1 = %2</source>
         <translation>%1 = %2</translation>
     </message>
@@ -3535,37 +3535,37 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DcRunCommands</name>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="26"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="26"/>
         <source>Set s&amp;peed</source>
         <translation>速度設定(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="31"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="31"/>
         <source>set point, e.g. 50 or -20</source>
         <translation>設定値。例: 50 または -20</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="39"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="39"/>
         <source>Speed command:</source>
         <translation>速度指令:</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="54"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="54"/>
         <source>&amp;Brake (speed 0)</source>
         <translation>ブレーキ（速度 0）(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="56"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="56"/>
         <source>&amp;Natural stop</source>
         <translation>自然停止(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="90"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="90"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="91"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="91"/>
         <source>(reading %1…)</source>
         <translation>（%1 を読出し中…）</translation>
     </message>
@@ -3573,17 +3573,17 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DependentValues</name>
     <message>
-        <location filename="../main/model/session/DependentValues.cpp" line="45"/>
+        <location filename="../model/session/DependentValues.cpp" line="45"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DependentValues.cpp" line="53"/>
+        <location filename="../model/session/DependentValues.cpp" line="53"/>
         <source>%1 = %2 would leave %3 without a valid value, because what they allow depends on it. Choose new values for them and write them together with it.</source>
         <translation>%1 = %2 とすると %3 が有効な値でなくなります（許容値がこの値に依存するため）。それらの新しい値を選択し、一緒に書き込んでください。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DependentValues.cpp" line="57"/>
+        <location filename="../model/session/DependentValues.cpp" line="57"/>
         <source>%1 cannot be checked: the values of %2 depend on it and could not be read</source>
         <translation>%1 はチェックできません: これに依存する %2 の値を読み出せませんでした</translation>
     </message>
@@ -3591,17 +3591,17 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceIdentifier</name>
     <message>
-        <location filename="../main/model/session/DeviceIdentifier.cpp" line="31"/>
+        <location filename="../model/session/DeviceIdentifier.cpp" line="31"/>
         <source>answers, but none of the device profiles matches</source>
         <translation>応答はありますが、一致するデバイスプロファイルがありません</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceIdentifier.cpp" line="96"/>
+        <location filename="../model/session/DeviceIdentifier.cpp" line="96"/>
         <source>device name &quot;%1&quot; is not a %2</source>
         <translation>デバイス名 &quot;%1&quot; は %2 ではありません</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceIdentifier.cpp" line="115"/>
+        <location filename="../model/session/DeviceIdentifier.cpp" line="115"/>
         <source>the variant cannot be read from the device; choose it</source>
         <translation>デバイスから機種を読み出せません。選択してください</translation>
     </message>
@@ -3609,27 +3609,27 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceInfo</name>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="28"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="28"/>
         <source>not checked</source>
         <translation>未確認</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="30"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="30"/>
         <source>online</source>
         <translation>オンライン</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="32"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="32"/>
         <source>no answer</source>
         <translation>応答なし</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="34"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="34"/>
         <source>garbled replies (duplicate machine number?)</source>
         <translation>応答化け（局番の重複？）</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="37"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="37"/>
         <source>unknown device</source>
         <translation>不明なデバイス</translation>
     </message>
@@ -3637,27 +3637,27 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceMonitor</name>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="60"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="60"/>
         <source>Stopped</source>
         <translation>停止中</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="62"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="62"/>
         <source>Running</source>
         <translation>運転中</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="63"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="63"/>
         <source>Running CCW</source>
         <translation>CCW 運転中</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="63"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="63"/>
         <source>Running CW</source>
         <translation>CW 運転中</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="206"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="206"/>
         <source>machine number %1: %2</source>
         <translation>局番 %1: %2</translation>
     </message>
@@ -3665,22 +3665,22 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceParameters</name>
     <message>
-        <location filename="../main/model/session/DeviceParameters.cpp" line="81"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="81"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 にはパラメータ &quot;%2&quot; がありません</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceParameters.cpp" line="83"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="83"/>
         <source>%1 is read-only</source>
         <translation>%1 は読出し専用です</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceParameters.cpp" line="85"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="85"/>
         <source>%1 is a command, not a setting; commands are sent one by one on request</source>
         <translation>%1 は設定ではなくコマンドです。コマンドは要求に応じて 1 つずつ送信します</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceParameters.cpp" line="211"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="211"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -3688,53 +3688,53 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceSession</name>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="90"/>
+        <location filename="../model/session/DeviceSession.cpp" line="90"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 にはパラメータ &quot;%2&quot; がありません</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="99"/>
-        <location filename="../main/model/session/DeviceSession.cpp" line="139"/>
+        <location filename="../model/session/DeviceSession.cpp" line="99"/>
+        <location filename="../model/session/DeviceSession.cpp" line="139"/>
         <source>%1 cannot be read (it is a write-only command)</source>
         <translation>%1 は読み出せません（書込み専用コマンド）</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="202"/>
+        <location filename="../model/session/DeviceSession.cpp" line="202"/>
         <source>cannot check the value: reading %1 failed: %2</source>
         <translation>値をチェックできません: %1 の読出しに失敗しました: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="219"/>
+        <location filename="../model/session/DeviceSession.cpp" line="219"/>
         <source>%1 is read-only</source>
         <translation>%1 は読出し専用です</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="225"/>
+        <location filename="../model/session/DeviceSession.cpp" line="225"/>
         <source>%1 is a %2 command; it is only sent when explicitly requested</source>
         <translation>%1 は %2 コマンドです。明示的に要求した場合にのみ送信します</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="254"/>
+        <location filename="../model/session/DeviceSession.cpp" line="254"/>
         <source>%1 cannot be checked: %2</source>
         <translation>%1 はチェックできません: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="276"/>
+        <location filename="../model/session/DeviceSession.cpp" line="276"/>
         <source>reading %1 failed: %2</source>
         <translation>%1 の読出しに失敗しました: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="327"/>
+        <location filename="../model/session/DeviceSession.cpp" line="327"/>
         <source>written, but reading it back failed: %1</source>
         <translation>書き込みましたが、読み戻しに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="336"/>
+        <location filename="../model/session/DeviceSession.cpp" line="336"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>照合失敗: %1 を書き込みましたが、デバイスの値は %2 です</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="372"/>
+        <location filename="../model/session/DeviceSession.cpp" line="372"/>
         <source>error code %1</source>
         <translation>エラーコード %1</translation>
     </message>
@@ -3742,22 +3742,22 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DrivePages</name>
     <message>
-        <location filename="../main/ui/main/DrivePages.cpp" line="97"/>
+        <location filename="../ui/main/DrivePages.cpp" line="97"/>
         <source>Monitor</source>
         <translation>モニタ</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/DrivePages.cpp" line="110"/>
+        <location filename="../ui/main/DrivePages.cpp" line="110"/>
         <source>Test run</source>
         <translation>試運転</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/DrivePages.cpp" line="112"/>
+        <location filename="../ui/main/DrivePages.cpp" line="112"/>
         <source>Alarms</source>
         <translation>アラーム</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/DrivePages.cpp" line="121"/>
+        <location filename="../ui/main/DrivePages.cpp" line="121"/>
         <source>Machine number %1 (%2, %3) — %4, firmware V%5</source>
         <translation>局番 %1 (%2, %3) — %4、ファームウェア V%5</translation>
     </message>
@@ -3765,111 +3765,111 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveStatusPoller</name>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="31"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="31"/>
         <source>not polled yet</source>
         <translation>未ポーリング</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="33"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="33"/>
         <source>online</source>
         <translation>オンライン</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="35"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="35"/>
         <source>no answer (%n poll(s) in a row)</source>
         <translation>
             <numerusform>応答なし（%n 回連続）</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="37"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="37"/>
         <source>communication error (%n in a row)</source>
         <translation>
             <numerusform>通信エラー（%n 回連続）</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="43"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="43"/>
         <source>Status not known yet</source>
         <translation>状態不明</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="45"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="45"/>
         <source>No answer: %1</source>
         <translation>応答なし: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="48"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="48"/>
         <source>Alarm %1 %2</source>
         <translation>アラーム %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="50"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="50"/>
         <source>Alarm %1h (not in the alarm table)</source>
         <translation>アラーム %1h（アラーム表にありません）</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="52"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="52"/>
         <source>Alarm active</source>
         <translation>アラーム発生中</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="55"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="55"/>
         <source>Communication error: %1</source>
         <translation>通信エラー: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="58"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="58"/>
         <source>Running</source>
         <translation>運転中</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="59"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="59"/>
         <source>Running CCW</source>
         <translation>CCW 運転中</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="60"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="60"/>
         <source>Running CW</source>
         <translation>CW 運転中</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="62"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="62"/>
         <source>Stopped, no alarm</source>
         <translation>停止中、アラームなし</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="69"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="69"/>
         <source>grey</source>
         <translation>灰</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="71"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="71"/>
         <source>green</source>
         <translation>緑</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="73"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="73"/>
         <source>orange</source>
         <translation>橙</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="75"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="75"/>
         <source>sky blue</source>
         <translation>水色</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="77"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="77"/>
         <source>red</source>
         <translation>赤</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="79"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="79"/>
         <source>purple</source>
         <translation>紫</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="81"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="81"/>
         <source>blue</source>
         <translation>青</translation>
     </message>
@@ -3877,86 +3877,86 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveWorkspace</name>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="33"/>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="131"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="33"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="131"/>
         <source>Write &amp;all pending</source>
         <translation>未書込みをすべて書込み(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="34"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="34"/>
         <source>Revert all</source>
         <translation>すべて元に戻す</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="35"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="35"/>
         <source>Re-read all</source>
         <translation>すべて再読出し</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="51"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="51"/>
         <source>Write every pending edit of this drive, on all pages, and verify</source>
         <translation>このドライバの全ページの未書込みの編集をすべて書き込み、照合します</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="84"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="84"/>
         <source>Select a drive in the bus list to set it up.</source>
         <translation>設定するドライバをバスリストで選択してください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="130"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="130"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>未書込みをすべて書込み(&amp;A) (%1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="152"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="152"/>
         <source>Reading the drive…</source>
         <translation>ドライバを読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="154"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="154"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 個の値を読み出せませんでした</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="166"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="166"/>
         <source>Nothing was written: %1</source>
         <translation>何も書き込んでいません: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="179"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="179"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1: %2 何も書き込んでいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="187"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="187"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>未書込みの %n 個の値を局番 %1 に書込み</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="189"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="189"/>
         <source>Nothing was written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="192"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="192"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>%n 個の値を書込み中…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="194"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="194"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>%n 個の書込みに失敗しました。マークされた項目を確認してください</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="195"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="195"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n 個の値を書込み・照合しました</numerusform>
@@ -3966,79 +3966,79 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolCertificateCommand</name>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="30"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="30"/>
         <source>A unit&apos;s certificate: its newest record as a PDF, or as JSON with --json</source>
         <translation>製品の検査成績書: 最新の記録を PDF で、または --json で JSON として出力</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="36"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="36"/>
         <source>The results database (see results).</source>
         <translation>結果データベース（results を参照）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="36"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="36"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="37"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="37"/>
         <source>certificate: the record with this id instead of the newest.</source>
         <translation>certificate: 最新ではなく、この ID の記録を使用します。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="38"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="38"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="58"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="58"/>
         <source>error: name one serial number, or a record with --id ID; usage: eol %1</source>
         <translation>エラー: シリアル番号を 1 つ、または --id ID で記録を指定してください。使い方: eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="66"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="66"/>
         <source>error: the serial number is empty</source>
         <translation>エラー: シリアル番号が空です</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="72"/>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="129"/>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="137"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="72"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="129"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="137"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="79"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="79"/>
         <source>error: this program cannot draw a PDF (no Qt GUI application); use --json</source>
         <translation>エラー: このプログラムは PDF を作成できません（Qt GUI アプリケーションなし）。--json を使用してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="96"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="96"/>
         <source>error: no record %1 in %2 (%3)</source>
         <translation>エラー: %2 に記録 %1 がありません (%3)</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="101"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="101"/>
         <source>error: record %1 is of serial number %2, not %3</source>
         <translation>エラー: 記録 %1 はシリアル番号 %2 のもので、%3 ではありません</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="109"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="109"/>
         <source>error: %1: %2</source>
         <translation>エラー: %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="113"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="113"/>
         <source>error: no record of serial number %1 in %2</source>
         <translation>エラー: %2 にシリアル番号 %1 の記録がありません</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="132"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="132"/>
         <source>wrote %1</source>
         <translation>%1 を書き込みました</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="140"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="140"/>
         <source>wrote %1: serial number %2, %3, recorded %4</source>
         <translation>%1 を書き込みました: シリアル番号 %2、%3、記録日時 %4</translation>
     </message>
@@ -4046,19 +4046,19 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolCommand</name>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="35"/>
+        <location filename="../cli/EolCommand.cpp" line="35"/>
         <source>End-of-line station: recipes, the results database, unit certificates</source>
         <translation>出荷検査ステーション: レシピ、結果データベース、製品の検査成績書</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="40"/>
+        <location filename="../cli/EolCommand.cpp" line="40"/>
         <source>Subcommands:
 </source>
         <translation>サブコマンド:
 </translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="43"/>
+        <location filename="../cli/EolCommand.cpp" line="43"/>
         <source>Results database: --db URL, else OPENTOP_EOL_DB, else the SQLite file
 $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 &quot;opentop-cli help eol&quot; lists every option; each subcommand takes only its own.</source>
@@ -4067,22 +4067,22 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 &quot;opentop-cli help eol&quot; で全オプションを表示します。各サブコマンドは自身のオプションのみ受け付けます。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="91"/>
+        <location filename="../cli/EolCommand.cpp" line="91"/>
         <source>error: name a subcommand: eol %1</source>
         <translation>エラー: サブコマンドを指定してください: eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="93"/>
+        <location filename="../cli/EolCommand.cpp" line="93"/>
         <source>error: unknown subcommand &quot;eol %1&quot;; subcommands: %2</source>
         <translation>エラー: 不明なサブコマンド &quot;eol %1&quot;。サブコマンド: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="96"/>
+        <location filename="../cli/EolCommand.cpp" line="96"/>
         <source>See &quot;opentop-cli help eol&quot;.</source>
         <translation>&quot;opentop-cli help eol&quot; を参照してください。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="112"/>
+        <location filename="../cli/EolCommand.cpp" line="112"/>
         <source>error: eol %1: --%2 is not an option of this subcommand; usage: eol %3</source>
         <translation>エラー: eol %1: --%2 はこのサブコマンドのオプションではありません。使い方: eol %3</translation>
     </message>
@@ -4090,112 +4090,112 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolDriveRun</name>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="51"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="51"/>
         <source>identifying</source>
         <translation>識別中</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="64"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="64"/>
         <source>no drive answers at machine number %1</source>
         <translation>局番 %1 で応答するドライバがありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="65"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="65"/>
         <source>the drive at machine number %1 is not identified: %2</source>
         <translation>局番 %1 のドライバを識別できません: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="75"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="75"/>
         <source>a %1 drive, the recipe needs a %2 drive</source>
         <translation>%1 ドライバですが、レシピには %2 ドライバが必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="85"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="85"/>
         <source>the drive does not report its variant and the recipe allows %1</source>
         <translation>ドライバが機種を通知しません。レシピで許可されているのは %1 です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="87"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="87"/>
         <source>variant %1, the recipe allows %2</source>
         <translation>機種 %1、レシピで許可されているのは %2 です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="93"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="93"/>
         <source>firmware %1, the recipe allows %2</source>
         <translation>ファームウェア %1、レシピで許可されているのは %2 です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="94"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
         <source>unknown</source>
         <translation>不明</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="100"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="100"/>
         <source>no profile for the family %1</source>
         <translation>ファミリ %1 のプロファイルがありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="132"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="132"/>
         <source>cannot read whether the motor runs: %1</source>
         <translation>モータが運転中かどうかを読み出せません: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="140"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="140"/>
         <source>its motor was running before the test</source>
         <translation>試験前からモータが運転していました</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="141"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="141"/>
         <source>the motor is already running before the test (left by an interrupted run?); nothing was written: stop it first (STOP ALL, or at the drive)</source>
         <translation>試験前にモータがすでに運転しています（中断された実行の残り？）。何も書き込んでいません: 先に停止してください（全停止、またはドライバ側で）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="151"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="151"/>
         <source>writing the settings</source>
         <translation>設定を書込み中</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="186"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="186"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="193"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="193"/>
         <source>writing the settings: %1</source>
         <translation>設定の書込み: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="201"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="201"/>
         <source>reading every setting back</source>
         <translation>全設定を読み戻し中</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="216"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="216"/>
         <source>%1 cannot be read back: %2</source>
         <translation>%1 を読み戻せません: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="222"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="222"/>
         <source>%1 does not keep its value: set to %2, reads %3</source>
         <translation>%1 が値を保持しません: %2 に設定、読出し値 %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="226"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="226"/>
         <source>verifying the settings: %1</source>
         <translation>設定の照合: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="235"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="235"/>
         <source>testing</source>
         <translation>試験中</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="239"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="239"/>
         <source>step %1 of %2: %3</source>
         <translation>ステップ %1/%2: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="293"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="293"/>
         <source>passed</source>
         <translation>合格</translation>
     </message>
@@ -4203,12 +4203,12 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolMenu</name>
     <message>
-        <location filename="../main/ui/eol/EolMenu.cpp" line="34"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="34"/>
         <source>&amp;Recipe editor…</source>
         <translation>レシピエディタ(&amp;R)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/EolMenu.cpp" line="38"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="38"/>
         <source>Re&amp;sults…</source>
         <translation>結果(&amp;S)…</translation>
     </message>
@@ -4216,54 +4216,54 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeCheckCommand</name>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="26"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="26"/>
         <source>Check a recipe against the drive profiles (and per-unit values of a CSV file)</source>
         <translation>レシピをドライバプロファイル（および CSV ファイルの個別値）と照合してチェックします</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="32"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="32"/>
         <source>recipe check: also check every unit&apos;s per-unit values in this CSV file.</source>
         <translation>recipe check: この CSV ファイル内の各製品の個別値もチェックします。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="33"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="33"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="39"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="39"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>エラー: レシピファイルを 1 つ指定してください。使い方: eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="59"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="59"/>
         <source>error: %1 refused: %2</source>
         <translation>エラー: %1 は使用できません: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="66"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="66"/>
         <source>%1, serial %2</source>
         <translation>%1、シリアル %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="92"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="92"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="94"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="94"/>
         <source>%1 is not valid: %n problem(s); nothing may be run with it</source>
         <translation>
             <numerusform>%1 は無効です: %n 件の問題。このレシピでは実行できません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="102"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="102"/>
         <source>valid: %1 revision %2: %3</source>
         <translation>有効: %1 リビジョン %2: %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="105"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="105"/>
         <source>; %n unit(s) of %1 checked</source>
         <translation>
             <numerusform>、%1 の製品 %n 台をチェックしました</numerusform>
@@ -4273,143 +4273,143 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeCreateCommand</name>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="31"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="31"/>
         <source>Make a recipe from a golden unit: a backup file or drives on the bus</source>
         <translation>マスター品からレシピを作成します: バックアップファイルまたはバス上のドライバ</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="37"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="37"/>
         <source>recipe create: the golden unit&apos;s backup file.</source>
         <translation>recipe create: マスター品のバックアップファイル。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="38"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="38"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="40"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="40"/>
         <source>recipe create: the golden unit&apos;s drives on the bus, e.g. 1,2 (with the connection options).</source>
         <translation>recipe create: バス上のマスター品のドライバ。例: 1,2（接続オプションと併用）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="42"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="42"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="43"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="43"/>
         <source>recipe create: the product&apos;s name.</source>
         <translation>recipe create: 製品名。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="43"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="43"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
         <source>recipe create: the recipe&apos;s revision.</source>
         <translation>recipe create: レシピのリビジョン。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
         <source>REV</source>
         <translation>REV</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="46"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
         <source>recipe create: replace an existing recipe file.</source>
         <translation>recipe create: 既存のレシピファイルを置き換えます。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="58"/>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="151"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="58"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="151"/>
         <source>error: %1; nothing written</source>
         <translation>エラー: %1。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="72"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="72"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>局番 %1 の読出し中に中断: 何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="79"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="79"/>
         <source>error: %1: cannot read %2</source>
         <translation>エラー: %1: %2 を読み出せません</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="82"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="82"/>
         <source>error: %1 holds a value its profile does not allow: %2</source>
         <translation>エラー: %1 にプロファイルで許可されていない値があります: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="85"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="85"/>
         <source>nothing written</source>
         <translation>何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="90"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="90"/>
         <source>%1: %2 settings read</source>
         <translation>%1: %2 個の設定を読出し</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="101"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="101"/>
         <source>error: %1; usage: eol %2</source>
         <translation>エラー: %1。使い方: eol %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="105"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="105"/>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>予期しない引数 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="109"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="109"/>
         <source>give either --from-backup FILE or --drives LIST</source>
         <translation>--from-backup FILE または --drives LIST のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="113"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="113"/>
         <source>give the product&apos;s name with --product NAME</source>
         <translation>--product NAME で製品名を指定してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
         <source>give the recipe&apos;s revision with --revision REV</source>
         <translation>--revision REV でレシピのリビジョンを指定してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="118"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="118"/>
         <source>give the recipe file to write with -o RECIPE</source>
         <translation>-o RECIPE で書き込むレシピファイルを指定してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="121"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="121"/>
         <source>error: %1 exists; give --force to replace it</source>
         <translation>エラー: %1 は既に存在します。置き換えるには --force を指定してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="125"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="125"/>
         <source>error: %1; nothing read</source>
         <translation>エラー: %1。何も読み出していません</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="142"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="142"/>
         <source>--drives %1: %2</source>
         <translation>--drives %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="158"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="175"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="175"/>
         <source>wrote %1: %2 revision %3, %4</source>
         <translation>%1 を書き込みました: %2 リビジョン %3、%4</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="182"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="182"/>
         <source>error: the recipe does not pass &quot;eol recipe check&quot;: fix it, then sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>エラー: レシピが &quot;eol recipe check&quot; に合格しません: 修正してから &quot;opentop-cli eol recipe sign %1&quot; で署名してください</translation>
     </message>
@@ -4417,177 +4417,177 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeShowCommand</name>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="58"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="58"/>
         <source>Show a recipe: positions, settings by label with units, steps and limits</source>
         <translation>レシピを表示します: 位置、単位付きのラベル別設定、ステップ、規格値</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="69"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="69"/>
         <source>&apos;%1&apos;</source>
         <translation>&apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="70"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="70"/>
         <source>&apos;%1&apos; %2</source>
         <translation>&apos;%1&apos; %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="71"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="71"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="83"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="83"/>
         <source>%1 SPno%2</source>
         <translation>%1 SPno%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="85"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="85"/>
         <source>%1 to %2</source>
         <translation>%1 ～ %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="88"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="88"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="93"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="93"/>
         <source>the drive&apos;s target speed</source>
         <translation>ドライバの目標速度</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="94"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="94"/>
         <source>%1 %2 %3 within %4 s</source>
         <translation>%1 %2 %3（%4 s 以内）</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="98"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="98"/>
         <source>%1 for %2 s</source>
         <translation>%1（%2 s 間）</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="101"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="101"/>
         <source>%1: stopped within %2 s + %3 s</source>
         <translation>%1: %2 s + %3 s 以内に停止</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="104"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="104"/>
         <source>%1: stopped within the deceleration time + %2 s</source>
         <translation>%1: 減速時間 + %2 s 以内に停止</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="109"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="109"/>
         <source>%1: &apos;%2&apos; is &quot;%3&quot;</source>
         <translation>%1: &apos;%2&apos; は &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="126"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="126"/>
         <source>  no settings</source>
         <translation>  設定なし</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
         <source>  setting</source>
         <translation>  設定</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
         <source>value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
         <source>unit</source>
         <translation>単位</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
         <source>  per-unit value</source>
         <translation>  個別値</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
         <source>range</source>
         <translation>範囲</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
         <source>from</source>
         <translation>入力元</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="141"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="141"/>
         <source>%1 … %2</source>
         <translation>%1 … %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="144"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="144"/>
         <source>CSV file by serial</source>
         <translation>シリアル番号別 CSV ファイル</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="145"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="145"/>
         <source>typed by the operator</source>
         <translation>作業者が入力</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="150"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="150"/>
         <source>  no test steps</source>
         <translation>  試験ステップなし</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="153"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="153"/>
         <source>  steps:</source>
         <translation>  ステップ:</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="167"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="167"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>エラー: レシピファイルを 1 つ指定してください。使い方: eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="205"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="205"/>
         <source>%1, revision %2</source>
         <translation>%1、リビジョン %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="208"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="208"/>
         <source>checksum %1</source>
         <translation>チェックサム %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
         <source>position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
         <source>machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
         <source>name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
         <source>family</source>
         <translation>ファミリ</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="210"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="210"/>
         <source>variants</source>
         <translation>機種</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="210"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="210"/>
         <source>firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="221"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="221"/>
         <source>any</source>
         <translation>任意</translation>
     </message>
@@ -4595,34 +4595,34 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeSignCommand</name>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="26"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="26"/>
         <source>Accept a recipe edited by hand: a new checksum, only when it passes check</source>
         <translation>手で編集したレシピを承認します: チェックに合格した場合のみ新しいチェックサムを付けます</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="32"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="32"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>エラー: レシピファイルを 1 つ指定してください。使い方: eol %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="53"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="53"/>
         <source>error: %1 does not pass check (%n problem(s)); not signed</source>
         <translation>
             <numerusform>エラー: %1 はチェックに合格しません（%n 件の問題）。署名していません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="61"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="61"/>
         <source>error: %1; not signed</source>
         <translation>エラー: %1。署名していません</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="73"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="73"/>
         <source>%1 is signed already (%2); nothing changed</source>
         <translation>%1 は署名済みです (%2)。何も変更していません</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="76"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="76"/>
         <source>signed %1: %2 revision %3, %4</source>
         <translation>%1 に署名しました: %2 リビジョン %3、%4</translation>
     </message>
@@ -4630,262 +4630,262 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolResultsCommand</name>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="65"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="65"/>
         <source>List units of the results database, their first-pass yield, or export them as CSV</source>
         <translation>結果データベースの製品と直行率を一覧表示、または CSV でエクスポートします</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="72"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="72"/>
         <source>The results database: a SQLite file, sqlite:PATH or postgresql://user@host/db (default: OPENTOP_EOL_DB, else ~/.local/share/opentop/results.db).</source>
         <translation>結果データベース: SQLite ファイル、sqlite:PATH、または postgresql://user@host/db（既定: OPENTOP_EOL_DB、なければ ~/.local/share/opentop/results.db）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="74"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="74"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="75"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="75"/>
         <source>results: only this serial number.</source>
         <translation>results: このシリアル番号のみ。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="75"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="75"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="77"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="77"/>
         <source>results: started at or after T (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</source>
         <translation>results: T 以降に開始したもの（2026-11-24、2026-11-24T06:00、8h、2d、today）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="78"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="79"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="78"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="79"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="79"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="79"/>
         <source>results: started before T.</source>
         <translation>results: T より前に開始したもの。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="80"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
         <source>results: only this recipe (product name).</source>
         <translation>results: このレシピ（製品名）のみ。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="80"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="83"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="81"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
         <source>results: pass, fail, interrupted, aborted or running.</source>
         <translation>results: pass、fail、interrupted、aborted、running のいずれか。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="82"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
         <source>V</source>
         <translation>V</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="83"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
         <source>results: only this station.</source>
         <translation>results: このステーションのみ。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="84"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
         <source>results: only the newest N units.</source>
         <translation>results: 最新の N 台のみ。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="84"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="86"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
         <source>results: CSV (RFC 4180) on standard output or to -o FILE.</source>
         <translation>results: CSV (RFC 4180) を標準出力または -o FILE に出力します。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="88"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="88"/>
         <source>results: first-pass yield and failure reasons per recipe and per shift.</source>
         <translation>results: レシピ別・シフト別の直行率と不合格理由。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="90"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="90"/>
         <source>results --yield: the shifts&apos; start times in local time (default 06:00,14:00,22:00).</source>
         <translation>results --yield: シフトの開始時刻（ローカル時刻、既定 06:00,14:00,22:00）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="91"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="123"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="123"/>
         <source>&quot;%1&quot; is not a time; give 2026-11-24, 2026-11-24T06:00 (local, or with Z or +01:00), 8h, 2d, today or yesterday</source>
         <translation>&quot;%1&quot; は時刻ではありません。2026-11-24、2026-11-24T06:00（ローカル時刻、または Z や +01:00 付き）、8h、2d、today、yesterday のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="133"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="251"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="133"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="251"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="148"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="148"/>
         <source>--%1: %2</source>
         <translation>--%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="153"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="153"/>
         <source>--since %1 is not before --until %2</source>
         <translation>--since %1 が --until %2 より前ではありません</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="159"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="159"/>
         <source>--verdict &quot;%1&quot;: give pass, fail, interrupted, aborted or running</source>
         <translation>--verdict &quot;%1&quot;: pass、fail、interrupted、aborted、running のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="166"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="166"/>
         <source>--limit &quot;%1&quot;: give a number of units from 1</source>
         <translation>--limit &quot;%1&quot;: 製品の台数を 1 以上で指定してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="176"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="202"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="176"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="202"/>
         <source>no unit matches</source>
         <translation>該当する製品はありません</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
         <source>started</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
         <source>serial</source>
         <translation>シリアル</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="206"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="206"/>
         <source>recipe</source>
         <translation>レシピ</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
         <source>station</source>
         <translation>ステーション</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
         <source>operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="180"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="180"/>
         <source>verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="180"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="180"/>
         <source>time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="180"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="180"/>
         <source>reason</source>
         <translation>理由</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="188"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="188"/>
         <source>%1 rev. %2</source>
         <translation>%1 rev. %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="208"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="208"/>
         <source>shift</source>
         <translation>シフト</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>serials</source>
         <translation>シリアル数</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>first pass</source>
         <translation>初回合格</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>first-pass yield</source>
         <translation>直行率</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>records</source>
         <translation>記録数</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="210"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="210"/>
         <source>not finished</source>
         <translation>未完了</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="225"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="225"/>
         <source>First-pass yield per recipe</source>
         <translation>レシピ別直行率</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="227"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="227"/>
         <source>Per shift</source>
         <translation>シフト別</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>Failure reasons</source>
         <translation>不合格理由</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="254"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="254"/>
         <source>wrote %1</source>
         <translation>%1 を書き込みました</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="263"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="263"/>
         <source>error: unexpected argument &quot;%1&quot;; usage: eol %2</source>
         <translation>エラー: 予期しない引数 &quot;%1&quot;。使い方: eol %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="269"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="269"/>
         <source>error: give --csv or --json, not both</source>
         <translation>エラー: --csv と --json は同時に指定できません</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="273"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="273"/>
         <source>error: -o names the CSV file: give --csv too</source>
         <translation>エラー: -o は CSV ファイルを指定します。--csv も指定してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="278"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="278"/>
         <source>error: --shifts is for --yield</source>
         <translation>エラー: --shifts は --yield 用です</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="288"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="288"/>
         <source>error: --shifts %1: %2</source>
         <translation>エラー: --shifts %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="308"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="308"/>
         <source>error: %1: %2</source>
         <translation>エラー: %1: %2</translation>
     </message>
@@ -4893,48 +4893,48 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRun</name>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="54"/>
+        <location filename="../model/eol/EolRun.cpp" line="54"/>
         <source>the results database cannot record the unit: %1</source>
         <translation>結果データベースに製品を記録できません: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="71"/>
+        <location filename="../model/eol/EolRun.cpp" line="71"/>
         <source>the recipe has no drives</source>
         <translation>レシピにドライバがありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="84"/>
+        <location filename="../model/eol/EolRun.cpp" line="84"/>
         <source>the recipe is not valid: %1</source>
         <translation>レシピが無効です: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="89"/>
+        <location filename="../model/eol/EolRun.cpp" line="89"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1: この製品の %2 の値がありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="107"/>
+        <location filename="../model/eol/EolRun.cpp" line="107"/>
         <source>cancelled by the operator</source>
         <translation>作業者によるキャンセル</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="116"/>
+        <location filename="../model/eol/EolRun.cpp" line="116"/>
         <source>the connection was lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="122"/>
-        <location filename="../main/model/eol/EolRun.cpp" line="129"/>
+        <location filename="../model/eol/EolRun.cpp" line="122"/>
+        <location filename="../model/eol/EolRun.cpp" line="129"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="126"/>
+        <location filename="../model/eol/EolRun.cpp" line="126"/>
         <source>%1 failed</source>
         <translation>%1 失敗</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="164"/>
+        <location filename="../model/eol/EolRun.cpp" line="164"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>停止未確認: %1</translation>
     </message>
@@ -4942,129 +4942,129 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="86"/>
+        <location filename="../cli/EolRunCommand.cpp" line="86"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>出荷検査で製品を 1 台設定・試験し、結果を記録します</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>製品のシリアル番号（バーコードの読取り値）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="93"/>
         <source>Who tests it (default: the login name).</source>
         <translation>試験者（既定: ログイン名）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="93"/>
-        <location filename="../main/cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>このステーションの名前（既定: ホスト名）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果データベース: SQLite ファイルまたは postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>個別値の CSV ファイル（シリアル番号別）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>作業者が入力する個別値。例: 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="131"/>
+        <location filename="../cli/EolRunCommand.cpp" line="131"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1: MACHINE:NAME=VALUE の形式で指定してください。例: 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="136"/>
+        <location filename="../cli/EolRunCommand.cpp" line="136"/>
         <source>--value %1: %2</source>
         <translation>--value %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="149"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>使い方: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="164"/>
+        <location filename="../cli/EolRunCommand.cpp" line="164"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1: レシピが無効です。何も送信していません:</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="185"/>
+        <location filename="../cli/EolRunCommand.cpp" line="185"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果データベース: %1。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="194"/>
+        <location filename="../cli/EolRunCommand.cpp" line="194"/>
         <source>note: %1 unit(s) this station left unfinished are now recorded as interrupted</source>
         <translation>注: このステーションで未完了だった製品 %1 台を中断として記録しました</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="230"/>
-        <location filename="../main/cli/EolRunCommand.cpp" line="251"/>
+        <location filename="../cli/EolRunCommand.cpp" line="230"/>
+        <location filename="../cli/EolRunCommand.cpp" line="251"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="256"/>
         <source>ok</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="256"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="274"/>
+        <location filename="../cli/EolRunCommand.cpp" line="274"/>
         <source>interrupted at the station</source>
         <translation>ステーションで中断</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="303"/>
+        <location filename="../cli/EolRunCommand.cpp" line="303"/>
         <source>rev. %1</source>
         <translation>rev. %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="309"/>
+        <location filename="../cli/EolRunCommand.cpp" line="309"/>
         <source>the result was NOT recorded: %1</source>
         <translation>結果は記録されていません: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="311"/>
+        <location filename="../cli/EolRunCommand.cpp" line="311"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告: モータの停止が確認できません: %1</translation>
     </message>
@@ -5072,23 +5072,23 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolSpeedChart</name>
     <message>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="20"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="20"/>
         <source>time (s)</source>
         <translation>時間 (s)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="44"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="44"/>
         <source>speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="44"/>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="57"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="44"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="57"/>
         <source>speed (%1)</source>
         <translation>速度 (%1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="52"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="52"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
@@ -5096,37 +5096,37 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="100"/>
+        <location filename="../model/eol/EolStation.cpp" line="100"/>
         <source>no results database</source>
         <translation>結果データベースがありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="107"/>
+        <location filename="../model/eol/EolStation.cpp" line="107"/>
         <source>a unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="111"/>
+        <location filename="../model/eol/EolStation.cpp" line="111"/>
         <source>open a recipe first</source>
         <translation>先にレシピを開いてください</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="115"/>
+        <location filename="../model/eol/EolStation.cpp" line="115"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果データベースが開いていません。記録できない状態では試験しません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="119"/>
+        <location filename="../model/eol/EolStation.cpp" line="119"/>
         <source>not connected to a bus</source>
         <translation>バスに接続されていません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="123"/>
+        <location filename="../model/eol/EolStation.cpp" line="123"/>
         <source>no serial number</source>
         <translation>シリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="141"/>
+        <location filename="../model/eol/EolStation.cpp" line="141"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>このレシピは個別値を CSV ファイルから取得します: 先に CSV ファイルを開いてください</translation>
     </message>
@@ -5134,170 +5134,170 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStepRunner</name>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="40"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="40"/>
         <source>allowed %1–%2 %3</source>
         <translation>許容 %1–%2 %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="42"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="42"/>
         <source>allowed at most %1 %2</source>
         <translation>許容 最大 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="44"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="44"/>
         <source>allowed at least %1 %2</source>
         <translation>許容 最小 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="92"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="92"/>
         <source>step %1 (%2)</source>
         <translation>ステップ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="125"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="125"/>
         <source>the drive&apos;s session ended</source>
         <translation>ドライバのセッションが終了しました</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="198"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="218"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="230"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="422"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="443"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="469"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="511"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="198"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="218"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="230"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="422"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="443"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="469"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="511"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="210"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="210"/>
         <source>%1: the drive has no communication priority</source>
         <translation>%1: ドライバが通信優先になっていません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="260"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="260"/>
         <source>%1: the drive stopped answering: %2</source>
         <translation>%1: ドライバが応答しなくなりました: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="268"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="268"/>
         <source>%1: the drive raised an alarm while running</source>
         <translation>%1: 運転中にドライバでアラームが発生しました</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="291"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="291"/>
         <source>%1: %2 %3</source>
         <translation>%1: %2 %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="310"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="310"/>
         <source>%1: the drive has no speed to wait for</source>
         <translation>%1: 待機する速度がドライバにありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="320"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="320"/>
         <source>time to reach speed</source>
         <translation>速度到達時間</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="342"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="347"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="466"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="342"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="347"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="466"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="348"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="348"/>
         <source>unknown</source>
         <translation>不明</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="349"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="349"/>
         <source>%1: did not reach %2 %3 ±%4 %3 within %5 s (last read %6 %3)</source>
         <translation>%1: %5 s 以内に %2 %3 ±%4 %3 に到達しませんでした（最終読出し値 %6 %3）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="350"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="350"/>
         <source>its target</source>
         <translation>目標値</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="407"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="407"/>
         <source>%1 could not be read</source>
         <translation>%1 を読み出せませんでした</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="417"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="417"/>
         <source>%1 %2 %3, %4</source>
         <translation>%1 %2 %3、%4</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="435"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="435"/>
         <source>%1: the drive reports no alarms</source>
         <translation>%1: ドライバはアラームなし</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="448"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="448"/>
         <source>alarms raised</source>
         <translation>発生したアラーム</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="451"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="451"/>
         <source>%1: the drive has an alarm</source>
         <translation>%1: ドライバでアラームが発生しています</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="466"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="466"/>
         <source>time to stop</source>
         <translation>停止時間</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="473"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="473"/>
         <source>%1: stopped after %2 s, allowed at most %3 s</source>
         <translation>%1: %2 s 後に停止、許容は最大 %3 s</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="502"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="502"/>
         <source>%1: nothing to read</source>
         <translation>%1: 読み出すものがありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="519"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="519"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="522"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="522"/>
         <source>%1: %2 reads &quot;%3&quot;, expected &quot;%4&quot;</source>
         <translation>%1: %2 の読出し値は &quot;%3&quot;、期待値は &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="532"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="532"/>
         <source>%1: %2 reads %3 %4, %5</source>
         <translation>%1: %2 の読出し値 %3 %4、%5</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="554"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="554"/>
         <source>the stop command failed: %1</source>
         <translation>停止コマンドが失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="569"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="569"/>
         <source>stopped after %1 s</source>
         <translation>%1 s 後に停止</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="570"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="570"/>
         <source>not confirmed stopped: %1</source>
         <translation>停止未確認: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="592"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="592"/>
         <source>communication priority could not be given back: %1</source>
         <translation>通信優先を戻せませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="632"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="632"/>
         <source>the steps ended with the motor running</source>
         <translation>ステップ終了時にモータが運転中でした</translation>
     </message>
@@ -5305,97 +5305,97 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolSupport</name>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="26"/>
+        <location filename="../cli/EolSupport.cpp" line="26"/>
         <source>no such file</source>
         <translation>ファイルがありません</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="28"/>
+        <location filename="../cli/EolSupport.cpp" line="28"/>
         <source>is a directory; name a recipe file</source>
         <translation>ディレクトリです。レシピファイルを指定してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="30"/>
+        <location filename="../cli/EolSupport.cpp" line="30"/>
         <source>is not a regular file (a device, FIFO or socket); name a recipe file</source>
         <translation>通常のファイルではありません（デバイス、FIFO、ソケット）。レシピファイルを指定してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="32"/>
+        <location filename="../cli/EolSupport.cpp" line="32"/>
         <source>is larger than %1 MB, the most a recipe file may hold</source>
         <translation>%1 MB を超えています（レシピファイルの上限）</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="36"/>
+        <location filename="../cli/EolSupport.cpp" line="36"/>
         <source>cannot be read: %1</source>
         <translation>読み込めません: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="38"/>
-        <location filename="../main/cli/EolSupport.cpp" line="158"/>
+        <location filename="../cli/EolSupport.cpp" line="38"/>
+        <location filename="../cli/EolSupport.cpp" line="158"/>
         <source>error: %1: %2</source>
         <translation>エラー: %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="65"/>
-        <location filename="../main/cli/EolSupport.cpp" line="173"/>
+        <location filename="../cli/EolSupport.cpp" line="65"/>
+        <location filename="../cli/EolSupport.cpp" line="173"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="72"/>
+        <location filename="../cli/EolSupport.cpp" line="72"/>
         <source>error: %1 refused: %2</source>
         <translation>エラー: %1 は使用できません: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="79"/>
+        <location filename="../cli/EolSupport.cpp" line="79"/>
         <source>%1 was changed after OpenTOP wrote it (its checksum does not match), so no station runs it. Check it with &quot;opentop-cli eol recipe check %1&quot; and, when it is right, sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>%1 は OpenTOP が書き込んだ後に変更されています（チェックサム不一致）。そのため、どのステーションでも実行できません。&quot;opentop-cli eol recipe check %1&quot; でチェックし、正しければ &quot;opentop-cli eol recipe sign %1&quot; で署名してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="97"/>
+        <location filename="../cli/EolSupport.cpp" line="97"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolSupport.cpp" line="122"/>
+        <location filename="../cli/EolSupport.cpp" line="122"/>
         <source>%n position(s)</source>
         <translation>
             <numerusform>位置 %n 箇所</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolSupport.cpp" line="123"/>
+        <location filename="../cli/EolSupport.cpp" line="123"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n 個の設定</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolSupport.cpp" line="125"/>
+        <location filename="../cli/EolSupport.cpp" line="125"/>
         <source>%n per-unit value(s)</source>
         <translation>
             <numerusform>個別値 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolSupport.cpp" line="126"/>
+        <location filename="../cli/EolSupport.cpp" line="126"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n ステップ</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="133"/>
+        <location filename="../cli/EolSupport.cpp" line="133"/>
         <source>The file to write (recipe create; results --csv; certificate).</source>
         <translation>書き込むファイル（recipe create、results --csv、certificate）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="134"/>
+        <location filename="../cli/EolSupport.cpp" line="134"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="164"/>
+        <location filename="../cli/EolSupport.cpp" line="164"/>
         <source>error: no results database at %1 (nothing recorded there yet); name one with --db URL</source>
         <translation>エラー: %1 に結果データベースがありません（まだ何も記録されていません）。--db URL で指定してください</translation>
     </message>
@@ -5403,23 +5403,23 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolTarget</name>
     <message>
-        <location filename="../main/model/eol/EolTarget.cpp" line="26"/>
+        <location filename="../model/eol/EolTarget.cpp" line="26"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolTarget.cpp" line="38"/>
-        <location filename="../main/model/eol/EolTarget.cpp" line="49"/>
+        <location filename="../model/eol/EolTarget.cpp" line="38"/>
+        <location filename="../model/eol/EolTarget.cpp" line="49"/>
         <source>not a parameter of %1</source>
         <translation>%1 のパラメータではありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolTarget.cpp" line="51"/>
+        <location filename="../model/eol/EolTarget.cpp" line="51"/>
         <source>this unit&apos;s value is missing</source>
         <translation>この製品の値がありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolTarget.cpp" line="54"/>
+        <location filename="../model/eol/EolTarget.cpp" line="54"/>
         <source>%1 is outside this product&apos;s range %2–%3 %4</source>
         <translation>%1 はこの製品の範囲 %2–%3 %4 外です</translation>
     </message>
@@ -5427,27 +5427,27 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::ExitActions</name>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="34"/>
+        <location filename="../model/run/ExitActions.cpp" line="34"/>
         <source>The stop broadcast to the %1 drives failed: %2</source>
         <translation>%1 ドライバへの停止ブロードキャストに失敗しました: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="38"/>
+        <location filename="../model/run/ExitActions.cpp" line="38"/>
         <source>Machine number %1: STILL RUNNING (%2) %3</source>
         <translation>局番 %1: まだ運転中 (%2) %3</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="43"/>
+        <location filename="../model/run/ExitActions.cpp" line="43"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped %2</source>
         <translation>局番 %1: 応答なし、停止未確認 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="68"/>
+        <location filename="../model/run/ExitActions.cpp" line="68"/>
         <source>Machine number %1: no way to give control back to its inputs is known</source>
         <translation>局番 %1: 入力端子に制御を戻す方法が不明です</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="80"/>
+        <location filename="../model/run/ExitActions.cpp" line="80"/>
         <source>Machine number %1: %2</source>
         <translation>局番 %1: %2</translation>
     </message>
@@ -5455,12 +5455,12 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::ExitCheck</name>
     <message>
-        <location filename="../main/model/run/ExitCheck.cpp" line="19"/>
+        <location filename="../model/run/ExitCheck.cpp" line="19"/>
         <source>in communication priority (its own inputs cannot start or stop it)</source>
         <translation>通信優先（自身の入力端子では起動・停止できません）</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitCheck.cpp" line="20"/>
+        <location filename="../model/run/ExitCheck.cpp" line="20"/>
         <source>Machine number %1 (%2): %3</source>
         <translation>局番 %1 (%2): %3</translation>
     </message>
@@ -5468,102 +5468,102 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::ExitGuard</name>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="44"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="44"/>
         <source>Drives left in communication priority</source>
         <translation>通信優先のままのドライバ</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="44"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="44"/>
         <source>Drives are running</source>
         <translation>運転中のドライバがあります</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="46"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="46"/>
         <source>Before you %1: these drives are left in communication priority.</source>
         <translation>%1の前に: これらのドライバは通信優先のままです。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="47"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="47"/>
         <source>Before you %1: these drives are running or left in communication priority.</source>
         <translation>%1の前に: これらのドライバは運転中、または通信優先のままです。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="51"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="51"/>
         <source>In communication priority a drive takes run and stop only from the bus: once OpenTOP lets go, only another bus master or switching its power off stops it.</source>
         <translation>通信優先では、ドライバはバスからのみ運転・停止を受け付けます: OpenTOP が制御を離すと、停止できるのは別のバスマスタか電源遮断だけです。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="55"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="55"/>
         <source>&quot;Stop&quot; broadcasts every family&apos;s stop command to the whole bus and checks that each drive above has stopped.</source>
         <translation>「停止」は全ファミリの停止コマンドをバス全体にブロードキャストし、上記の各ドライバが停止したことを確認します。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="59"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="59"/>
         <source>&quot;Give control back&quot; sets I/O priority, so the machine&apos;s own inputs run the drives again.</source>
         <translation>「制御を戻す」は I/O 優先に設定し、機械側の入力で再びドライバを運転できるようにします。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="63"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="63"/>
         <source>Stop the drives</source>
         <translation>ドライバを停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="67"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="67"/>
         <source>Give control back (I/O priority)</source>
         <translation>制御を戻す（I/O 優先）</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="69"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="69"/>
         <source>Leave them so</source>
         <translation>そのままにする</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="69"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="69"/>
         <source>Leave them running</source>
         <translation>運転したままにする</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="71"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="71"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="88"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="88"/>
         <source>Stopping the drives…</source>
         <translation>ドライバを停止中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="88"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="88"/>
         <source>Giving control back to the drives&apos; inputs…</source>
         <translation>ドライバの入力端子に制御を戻し中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="97"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="97"/>
         <source>stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="97"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="97"/>
         <source>give control back</source>
         <translation>制御の返却</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="113"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="113"/>
         <source>Not every drive is safe</source>
         <translation>安全でないドライバがあります</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="114"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="114"/>
         <source>Could not %1 every drive:</source>
         <translation>すべてのドライバで%1を完了できませんでした:</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="116"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="116"/>
         <source>Stay connected</source>
         <translation>接続したままにする</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="117"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="117"/>
         <source>Go on anyway</source>
         <translation>このまま続行</translation>
     </message>
@@ -5571,27 +5571,27 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::FaultInjector</name>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="30"/>
+        <location filename="../sim/FaultInjector.cpp" line="30"/>
         <source>fault &apos;%1&apos; must be NAME=VALUE; names: %2</source>
         <translation>フォールト &apos;%1&apos; は NAME=VALUE でなければなりません。名前: %2</translation>
     </message>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="38"/>
+        <location filename="../sim/FaultInjector.cpp" line="38"/>
         <source>late_ms must be a whole number of milliseconds 1..60000, got &apos;%1&apos;</source>
         <translation>late_ms は 1..60000 のミリ秒の整数でなければなりません（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="52"/>
+        <location filename="../sim/FaultInjector.cpp" line="52"/>
         <source>unknown fault &apos;%1&apos;; allowed: %2</source>
         <translation>不明なフォールト &apos;%1&apos;。使用可能: %2</translation>
     </message>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="57"/>
+        <location filename="../sim/FaultInjector.cpp" line="57"/>
         <source>fault rate %1 must be a number 0..1, got &apos;%2&apos;</source>
         <translation>フォールト率 %1 は 0..1 の数値でなければなりません（指定値 &apos;%2&apos;）</translation>
     </message>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="64"/>
+        <location filename="../sim/FaultInjector.cpp" line="64"/>
         <source>the fault rates add up to more than 1</source>
         <translation>フォールト率の合計が 1 を超えています</translation>
     </message>
@@ -5599,83 +5599,83 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::FileActions</name>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="22"/>
+        <location filename="../ui/files/FileActions.cpp" line="22"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP バックアップ (*.json);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="38"/>
-        <location filename="../main/ui/files/FileActions.cpp" line="94"/>
+        <location filename="../ui/files/FileActions.cpp" line="38"/>
+        <location filename="../ui/files/FileActions.cpp" line="94"/>
         <source>&amp;Back up selected drive…</source>
         <translation>選択したドライバをバックアップ(&amp;B)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="44"/>
+        <location filename="../ui/files/FileActions.cpp" line="44"/>
         <source>Back up &amp;whole bus…</source>
         <translation>バス全体をバックアップ(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="50"/>
+        <location filename="../ui/files/FileActions.cpp" line="50"/>
         <source>Save the settings of every identified drive to one file</source>
         <translation>識別済みの全ドライバの設定を 1 つのファイルに保存します</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="52"/>
+        <location filename="../ui/files/FileActions.cpp" line="52"/>
         <source>&amp;Open backup file…</source>
         <translation>バックアップファイルを開く(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="54"/>
+        <location filename="../ui/files/FileActions.cpp" line="54"/>
         <source>Show the drives and settings a backup file holds</source>
         <translation>バックアップファイルに含まれるドライバと設定を表示します</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="55"/>
+        <location filename="../ui/files/FileActions.cpp" line="55"/>
         <source>Co&amp;mpare…</source>
         <translation>比較(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="58"/>
+        <location filename="../ui/files/FileActions.cpp" line="58"/>
         <source>Compare drives and backup files side by side, or against factory defaults</source>
         <translation>ドライバやバックアップファイルを並べて比較、または工場出荷時設定と比較します</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="59"/>
+        <location filename="../ui/files/FileActions.cpp" line="59"/>
         <source>&amp;Restore from file…</source>
         <translation>ファイルから復元(&amp;R)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="60"/>
+        <location filename="../ui/files/FileActions.cpp" line="60"/>
         <source>Preview, then write a backup&apos;s settings back to drives</source>
         <translation>プレビューしてから、バックアップの設定をドライバに書き戻します</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="93"/>
+        <location filename="../ui/files/FileActions.cpp" line="93"/>
         <source>&amp;Back up selected drives…</source>
         <translation>選択したドライバをバックアップ(&amp;B)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="96"/>
+        <location filename="../ui/files/FileActions.cpp" line="96"/>
         <source>Select an identified drive in the bus list first</source>
         <translation>先にバスリストで識別済みのドライバを選択してください</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="97"/>
+        <location filename="../ui/files/FileActions.cpp" line="97"/>
         <source>Save the settings of the selected drive(s) to a file</source>
         <translation>選択したドライバの設定をファイルに保存します</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="108"/>
+        <location filename="../ui/files/FileActions.cpp" line="108"/>
         <source>Back up to file</source>
         <translation>ファイルにバックアップ</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="120"/>
+        <location filename="../ui/files/FileActions.cpp" line="120"/>
         <source>Open backup file</source>
         <translation>バックアップファイルを開く</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="141"/>
+        <location filename="../ui/files/FileActions.cpp" line="141"/>
         <source>Restore from backup file</source>
         <translation>バックアップファイルから復元</translation>
     </message>
@@ -5683,27 +5683,27 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::FileCommandSupport</name>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="28"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="28"/>
         <source>no such file</source>
         <translation>ファイルがありません</translation>
     </message>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="30"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="30"/>
         <source>is a directory; name a backup file</source>
         <translation>ディレクトリです。バックアップファイルを指定してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="32"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="32"/>
         <source>is not a regular file (a device, FIFO or socket); name a backup file</source>
         <translation>通常のファイルではありません（デバイス、FIFO、ソケット）。バックアップファイルを指定してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="34"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="34"/>
         <source>error: %1: %2</source>
         <translation>エラー: %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="41"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="41"/>
         <source>error: %1 refused: %2</source>
         <translation>エラー: %1 は使用できません: %2</translation>
     </message>
@@ -5711,135 +5711,135 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GetCommand</name>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="43"/>
+        <location filename="../cli/GetCommand.cpp" line="43"/>
         <source>Read parameters by name in engineering units (or registers with --raw)</source>
         <translation>パラメータを名前で指定し、工業単位で読み出します（--raw ではレジスタ）</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="49"/>
+        <location filename="../cli/GetCommand.cpp" line="49"/>
         <source>Read every parameter of a group (see params).</source>
         <translation>グループの全パラメータを読み出します（params を参照）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="49"/>
+        <location filename="../cli/GetCommand.cpp" line="49"/>
         <source>GROUP</source>
         <translation>GROUP</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="50"/>
+        <location filename="../cli/GetCommand.cpp" line="50"/>
         <source>Read every readable parameter.</source>
         <translation>読出し可能な全パラメータを読み出します。</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="52"/>
+        <location filename="../cli/GetCommand.cpp" line="52"/>
         <source>Read registers by address: ADDR or ADDR:COUNT (0x.. or decimal).</source>
         <translation>アドレスでレジスタを読み出します: ADDR または ADDR:COUNT（0x.. または 10 進）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="52"/>
+        <location filename="../cli/GetCommand.cpp" line="52"/>
         <source>ADDR</source>
         <translation>ADDR</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="54"/>
+        <location filename="../cli/GetCommand.cpp" line="54"/>
         <source>Function code for --raw: 3 (holding) or 4 (input) to read, 6 or 16 to write.</source>
         <translation>--raw のファンクションコード: 読出しは 3（保持レジスタ）または 4（入力レジスタ）、書込みは 6 または 16。</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="55"/>
+        <location filename="../cli/GetCommand.cpp" line="55"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="63"/>
+        <location filename="../cli/GetCommand.cpp" line="63"/>
         <source>error: give one machine number first: get ID NAME...</source>
         <translation>エラー: 最初に局番を 1 つ指定してください: get ID NAME...</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="71"/>
+        <location filename="../cli/GetCommand.cpp" line="71"/>
         <source>error: name parameters, or give exactly one of --group, --all, --raw</source>
         <translation>エラー: パラメータ名を指定するか、--group、--all、--raw のいずれか 1 つを指定してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="79"/>
-        <location filename="../main/cli/GetCommand.cpp" line="209"/>
+        <location filename="../cli/GetCommand.cpp" line="79"/>
+        <location filename="../cli/GetCommand.cpp" line="209"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="90"/>
+        <location filename="../cli/GetCommand.cpp" line="90"/>
         <source>error: %1 has no group &quot;%2&quot;; groups: %3</source>
         <translation>エラー: %1 にグループ &quot;%2&quot; はありません。グループ: %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="108"/>
+        <location filename="../cli/GetCommand.cpp" line="108"/>
         <source>error: %1 is a write-only command and cannot be read</source>
         <translation>エラー: %1 は書込み専用コマンドのため読み出せません</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="109"/>
+        <location filename="../cli/GetCommand.cpp" line="109"/>
         <source>error: %1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>エラー: %1 にパラメータ &quot;%2&quot; はありません。&quot;opentop-cli params --family %1&quot; を参照してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="123"/>
+        <location filename="../cli/GetCommand.cpp" line="123"/>
         <source>interrupted</source>
         <translation>中断</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="153"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="153"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="153"/>
         <source>Raw</source>
         <translation>生データ</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="153"/>
         <source>Label</source>
         <translation>ラベル</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="158"/>
+        <location filename="../cli/GetCommand.cpp" line="158"/>
         <source>(failed: %1)</source>
         <translation>（失敗: %1）</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="160"/>
+        <location filename="../cli/GetCommand.cpp" line="160"/>
         <source>  ! outside the profile&apos;s allowed values</source>
         <translation>  ! プロファイルの許容値外</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/GetCommand.cpp" line="167"/>
+        <location filename="../cli/GetCommand.cpp" line="167"/>
         <source>error: %n parameter(s) could not be read</source>
         <translation>
             <numerusform>エラー: %n 個のパラメータを読み出せませんでした</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="190"/>
+        <location filename="../cli/GetCommand.cpp" line="190"/>
         <source>error: --raw needs ADDR or ADDR:COUNT (address 0x0000–0xFFFF, count 1–125) and --fc 3 or 4</source>
         <translation>エラー: --raw には ADDR または ADDR:COUNT（アドレス 0x0000–0xFFFF、個数 1–125）と --fc 3 または 4 が必要です</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="221"/>
         <source>Address</source>
         <translation>アドレス</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="221"/>
         <source>Hex</source>
         <translation>16 進</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="221"/>
         <source>Decimal</source>
         <translation>10 進</translation>
     </message>
@@ -5847,63 +5847,63 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GroupCheck</name>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="56"/>
-        <location filename="../main/cli/GroupCheck.cpp" line="95"/>
+        <location filename="../cli/GroupCheck.cpp" line="56"/>
+        <location filename="../cli/GroupCheck.cpp" line="95"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="66"/>
+        <location filename="../cli/GroupCheck.cpp" line="66"/>
         <source>note: the other drives on the bus are not known, so drives in communication group %1 (which also execute what is sent to %1) were not looked for; name them with --bus-drives LIST or OPENTOP_BUS_DRIVES</source>
         <translation>注: バス上の他のドライバが不明なため、通信グループ %1 のドライバ（%1 宛の送信も実行するドライバ）は検索していません。--bus-drives LIST または OPENTOP_BUS_DRIVES で指定してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="87"/>
+        <location filename="../cli/GroupCheck.cpp" line="87"/>
         <source>warning: the communication group of %1 could not be read</source>
         <translation>警告: %1 の通信グループを読み出せませんでした</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="95"/>
+        <location filename="../cli/GroupCheck.cpp" line="95"/>
         <source>note: %1</source>
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="98"/>
+        <location filename="../cli/GroupCheck.cpp" line="98"/>
         <source>add --yes to send it to all of %1 and %2; nothing was sent</source>
         <translation>%1 と %2 のすべてに送信するには --yes を付けてください。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="128"/>
+        <location filename="../cli/GroupCheck.cpp" line="128"/>
         <source>not readable</source>
         <translation>読出し不可</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="139"/>
+        <location filename="../cli/GroupCheck.cpp" line="139"/>
         <source>Read back from the drives of the group:</source>
         <translation>グループのドライバから読み戻した値:</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="140"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="140"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="140"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="143"/>
+        <location filename="../cli/GroupCheck.cpp" line="143"/>
         <source>(not read: %1)</source>
         <translation>（未読出し: %1）</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="188"/>
+        <location filename="../cli/GroupCheck.cpp" line="188"/>
         <source>off</source>
         <translation>無効</translation>
     </message>
@@ -5911,22 +5911,22 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GroupWriteCheck</name>
     <message>
-        <location filename="../main/ui/groups/GroupWriteCheck.cpp" line="50"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="50"/>
         <source>Machine number %1: %2</source>
         <translation>局番 %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupWriteCheck.cpp" line="59"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="59"/>
         <source>Communication group</source>
         <translation>通信グループ</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupWriteCheck.cpp" line="63"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="63"/>
         <source>Their values are read back afterwards.</source>
         <translation>値は送信後に読み戻します。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupWriteCheck.cpp" line="64"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="64"/>
         <source>Send, also to %1</source>
         <translation>%1 にも送信</translation>
     </message>
@@ -5934,212 +5934,212 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GroupsView</name>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="34"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="34"/>
         <source>Read &amp;groups again</source>
         <translation>グループを再読出し(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="35"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="35"/>
         <source>&amp;Write plan…</source>
         <translation>計画を書込み(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="38"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="38"/>
         <source>A drive whose communication group is another drive&apos;s machine number is that drive&apos;s child: it executes every write and command sent to its parent, without replying. Plan the groups in the last column and write them; every drive&apos;s group is then read back.</source>
         <translation>通信グループが他のドライバの局番になっているドライバは、そのドライバの子局です: 親局に送信されたすべての書込みとコマンドを、応答せずに実行します。最後の列でグループを計画して書き込んでください。その後、全ドライバのグループを読み戻します。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="49"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="49"/>
         <source>Machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="49"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="49"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="49"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="49"/>
         <source>Group</source>
         <translation>グループ</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="50"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="50"/>
         <source>Follows / followed by</source>
         <translation>親局 / 子局</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="50"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="50"/>
         <source>Problem</source>
         <translation>問題</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="50"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="50"/>
         <source>Plan</source>
         <translation>計画</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="51"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="51"/>
         <source>Read back</source>
         <translation>読み戻し</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="57"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="57"/>
         <source>Read every drive&apos;s communication group from the drive</source>
         <translation>全ドライバの通信グループをドライバから読み出します</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="58"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="58"/>
         <source>Write the planned groups (asks first), then read every drive&apos;s group back</source>
         <translation>計画したグループを書き込み（事前に確認）、全ドライバのグループを読み戻します</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="79"/>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="145"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="79"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="145"/>
         <source>Disabled</source>
         <translation>無効</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="146"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="146"/>
         <source>Planned group of machine number %1</source>
         <translation>局番 %1 の計画グループ</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="147"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="147"/>
         <source>The group machine number %1 should have: its own number makes it a parent, another drive&apos;s number its child; Disabled: no group</source>
         <translation>局番 %1 に設定するグループ: 自身の局番なら親局、他のドライバの局番ならその子局になります。無効: グループなし</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="166"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="166"/>
         <source>child and parent</source>
         <translation>子局かつ親局</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="167"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="167"/>
         <source>no drive %1</source>
         <translation>ドライバ %1 なし</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="176"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="176"/>
         <source>not read</source>
         <translation>未読出し</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="198"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="198"/>
         <source>No problem found in the groups as read from the drives.</source>
         <translation>ドライバから読み出したグループに問題はありません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="199"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="199"/>
         <source>Problems:</source>
         <translation>問題:</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="206"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="206"/>
         <source>%1: %2 → %3</source>
         <translation>%1: %2 → %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="213"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="213"/>
         <source>The plan is what the drives hold.</source>
         <translation>計画はドライバの現在値と同じです。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="214"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="214"/>
         <source>Plan changes: %1.</source>
         <translation>計画の変更: %1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="216"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="216"/>
         <source>After it: %1</source>
         <translation>変更後: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="242"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="242"/>
         <source>Reading every drive&apos;s group…</source>
         <translation>全ドライバのグループを読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/groups/GroupsView.cpp" line="248"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="248"/>
         <source>%n drive(s) did not answer</source>
         <translation>
             <numerusform>%n 台のドライバが応答しませんでした</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="263"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="263"/>
         <source>Machine number %1: group %2 → %3.</source>
         <translation>局番 %1: グループ %2 → %3。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="268"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="268"/>
         <source>This also reaches %1 (its children), which are written again after it.</source>
         <translation>これは %1（子局）にも届くため、子局はその後に再度書き込みます。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="277"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="277"/>
         <source>Warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="279"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="279"/>
         <source>Write communication groups</source>
         <translation>通信グループの書込み</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/groups/GroupsView.cpp" line="280"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="280"/>
         <source>Write the planned communication group to %n drive(s)?</source>
         <translation>
             <numerusform>計画した通信グループを %n 台のドライバに書き込みますか？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="284"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="284"/>
         <source>Drives with children are written last; every drive&apos;s group is read back afterwards.</source>
         <translation>子局を持つドライバは最後に書き込みます。その後、全ドライバのグループを読み戻します。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="286"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="286"/>
         <source>&amp;Write groups</source>
         <translation>グループを書込み(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="317"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="317"/>
         <source>Writing group %1 to machine number %2…</source>
         <translation>グループ %1 を局番 %2 に書込み中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="326"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="326"/>
         <source>write failed: %1</source>
         <translation>書込み失敗: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="340"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="340"/>
         <source>Reading every drive&apos;s group back…</source>
         <translation>全ドライバのグループを読み戻し中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="353"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="353"/>
         <source>write failed</source>
         <translation>書込み失敗</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="354"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="354"/>
         <source>✓ %1</source>
         <translation>✓ %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="355"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="355"/>
         <source>✗ %1, planned %2</source>
         <translation>✗ %1、計画 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="365"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="365"/>
         <source>Proved: every drive read back holds its planned group.</source>
         <translation>確認完了: 読み戻した全ドライバが計画どおりのグループです。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/groups/GroupsView.cpp" line="366"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="366"/>
         <source>Not as planned: %1 (read back; %n drive(s) did not answer).</source>
         <translation>
             <numerusform>計画と不一致: %1（読み戻し。%n 台のドライバが応答なし）。</numerusform>
@@ -6149,22 +6149,22 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::HelpActions</name>
     <message>
-        <location filename="../main/ui/help/HelpActions.cpp" line="18"/>
+        <location filename="../ui/help/HelpActions.cpp" line="18"/>
         <source>&amp;User guide</source>
         <translation>ユーザガイド(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/HelpActions.cpp" line="21"/>
+        <location filename="../ui/help/HelpActions.cpp" line="21"/>
         <source>&amp;Keyboard shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/HelpActions.cpp" line="25"/>
+        <location filename="../ui/help/HelpActions.cpp" line="25"/>
         <source>&amp;About OpenTOP</source>
         <translation>OpenTOP について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/HelpActions.cpp" line="28"/>
+        <location filename="../ui/help/HelpActions.cpp" line="28"/>
         <source>About &amp;Qt</source>
         <translation>Qt について(&amp;Q)</translation>
     </message>
@@ -6172,187 +6172,187 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::IoTerminalsPage</name>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="31"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="31"/>
         <source>Not functioning: the drive ignores this input.</source>
         <translation>機能なし: ドライバはこの入力を無視します。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="33"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="33"/>
         <source>RUN/STOP: ON runs the motor, OFF stops it.</source>
         <translation>RUN/STOP: ON でモータ運転、OFF で停止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="35"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="35"/>
         <source>CW/CCW: the running direction, OFF clockwise, ON counter-clockwise.</source>
         <translation>CW/CCW: 回転方向。OFF で時計回り (CW)、ON で反時計回り (CCW)。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="38"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="38"/>
         <source>CW/STOP: ON runs the motor clockwise, OFF stops it.</source>
         <translation>CW/STOP: ON でモータを時計回りに運転、OFF で停止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="40"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="40"/>
         <source>CCW/STOP: ON runs the motor counter-clockwise, OFF stops it.</source>
         <translation>CCW/STOP: ON でモータを反時計回りに運転、OFF で停止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="43"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="43"/>
         <source>Alarm-Reset: clears an alarm (alarm erase method Alarm-Reset).</source>
         <translation>Alarm-Reset: アラームを解除します（アラーム解除方法が Alarm-Reset の場合）。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="51"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="51"/>
         <source>M%1: bit %1 of the running data selection (M2 M1 M0 = 000–111 select SPno1–SPno8).</source>
         <translation>M%1: 運転データ選択のビット %1（M2 M1 M0 = 000–111 で SPno1–SPno8 を選択）。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="56"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="56"/>
         <source>Ext-Error (EX-Er): an external interrupt that stops the motor; the only input still active in communication priority.</source>
         <translation>Ext-Error (EX-Er): モータを停止させる外部停止入力。通信優先でも有効な唯一の入力です。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="61"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="61"/>
         <source>H-Free: releases the motor&apos;s holding force while stopped.</source>
         <translation>H-Free: 停止中のモータの保持力を解除します。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="63"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="63"/>
         <source>Code %1 is not a known input function.</source>
         <translation>コード %1 は既知の入力機能ではありません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="71"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="71"/>
         <source>Not functioning: the output stays off.</source>
         <translation>機能なし: 出力はオフのままです。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="73"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="73"/>
         <source>Alarm-Out: switches when an alarm stops the motor.</source>
         <translation>Alarm-Out: アラームでモータが停止すると切り替わります。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="75"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="75"/>
         <source>Reach Speed-Out: switches when the motor reaches the target speed.</source>
         <translation>Reach Speed-Out: モータが目標速度に到達すると切り替わります。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="78"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="78"/>
         <source>VA-Out: switches before the target speed, at the target speed minus the VA speed.</source>
         <translation>VA-Out: 目標速度の手前、目標速度から VA 速度を引いた速度で切り替わります。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="81"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="81"/>
         <source>Speed-Out: speed pulses, 24 per motor revolution.</source>
         <translation>Speed-Out: 速度パルス、モータ 1 回転あたり 24 パルス。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="83"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="83"/>
         <source>Warning-Out: switches on a warning; the motor keeps running.</source>
         <translation>Warning-Out: 警告で切り替わります。モータは運転を続けます。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="86"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="86"/>
         <source>Move-Out: switches while the motor is turning.</source>
         <translation>Move-Out: モータ回転中に切り替わります。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="88"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="88"/>
         <source>Code %1 is not a known output function.</source>
         <translation>コード %1 は既知の出力機能ではありません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="102"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="102"/>
         <source>I/O terminals</source>
         <translation>I/O 端子</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="118"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="118"/>
         <source>Control</source>
         <translation>制御</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="123"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="123"/>
         <source>Control &amp;mode:</source>
         <translation>制御モード(&amp;M):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="124"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="124"/>
         <source>Mode1 uses RUN/STOP and CW/CCW inputs (like UBD, SBD, DBD); Mode2 uses CW/STOP and CCW/STOP inputs (like DB, BMD). The input function codes differ: switching the mode disables the other mode&apos;s input functions, so every input X0–X3 needs a function of the new mode.</source>
         <translation>Mode1 は RUN/STOP と CW/CCW 入力を使用します（UBD、SBD、DBD と同様）。Mode2 は CW/STOP と CCW/STOP 入力を使用します（DB、BMD と同様）。入力機能コードが異なるため、モードを切り替えると他方のモードの入力機能は無効になります。したがって、入力 X0–X3 のすべてに新しいモードの機能を割り当てる必要があります。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="136"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="136"/>
         <source>Control &amp;priority:</source>
         <translation>制御優先(&amp;P):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="137"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="137"/>
         <source>In I/O priority the input terminals run the motor. In communication priority the drive runs from bus commands and of the inputs only EX-Er (external error) acts.</source>
         <translation>I/O 優先では入力端子でモータを運転します。通信優先ではドライバはバスのコマンドで運転し、入力端子は EX-Er（外部エラー）のみ有効です。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="146"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="146"/>
         <source>Inputs — CN5</source>
         <translation>入力 — CN5</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="148"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="148"/>
         <source>COM0: input common (external supply)</source>
         <translation>COM0: 入力コモン（外部電源）</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="151"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="151"/>
         <source>COM1: input common (internal supply)</source>
         <translation>COM1: 入力コモン（内部電源）</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="156"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="156"/>
         <source>Outputs — CN6</source>
         <translation>出力 — CN6</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="174"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="174"/>
         <source>Give each flagged input the default function of the new mode (pending, not written)</source>
         <translation>マークされた各入力に新しいモードの初期機能を割り当てます（未書込み。書込みはしません）</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="203"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="203"/>
         <source>Connector pin %1</source>
         <translation>コネクタピン %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="208"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="208"/>
         <source>Terminal %1 function</source>
         <translation>端子 %1 の機能</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="235"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="235"/>
         <source>unknown</source>
         <translation>不明</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="261"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="261"/>
         <source>Not read yet.</source>
         <translation>未読出しです。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="268"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="268"/>
         <source>Not valid in %1: choose again</source>
         <translation>%1 では無効です: 選び直してください</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="296"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="296"/>
         <source>The mode changes from %1 to %2 when written; Write page writes the mode first, then the terminals.</source>
         <translation>書き込むとモードが %1 から %2 に変わります。「ページ書込み」はモードを先に書き込み、その後に端子を書き込みます。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="306"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="306"/>
         <source>Not valid in %1: %2. Choose their functions again before writing.</source>
         <translation>%1 では無効です: %2。書き込む前に機能を選び直してください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="309"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="309"/>
         <source>Use %1 defaults</source>
         <translation>%1 の初期値を使用</translation>
     </message>
@@ -6360,174 +6360,210 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::JsonReader</name>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="29"/>
-        <location filename="../main/model/profile/JsonReader.cpp" line="44"/>
-        <location filename="../main/model/profile/JsonReader.cpp" line="89"/>
-        <location filename="../main/model/profile/JsonReader.cpp" line="100"/>
-        <location filename="../main/model/profile/JsonReader.cpp" line="116"/>
+        <location filename="../model/profile/JsonReader.cpp" line="29"/>
+        <location filename="../model/profile/JsonReader.cpp" line="44"/>
+        <location filename="../model/profile/JsonReader.cpp" line="89"/>
+        <location filename="../model/profile/JsonReader.cpp" line="100"/>
+        <location filename="../model/profile/JsonReader.cpp" line="116"/>
         <source>&quot;%1&quot; is missing</source>
         <translation>&quot;%1&quot; がありません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="33"/>
+        <location filename="../model/profile/JsonReader.cpp" line="33"/>
         <source>&quot;%1&quot; must be a string</source>
         <translation>&quot;%1&quot; は文字列でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="48"/>
+        <location filename="../model/profile/JsonReader.cpp" line="48"/>
         <source>&quot;%1&quot; must be a number</source>
         <translation>&quot;%1&quot; は数値でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="59"/>
+        <location filename="../model/profile/JsonReader.cpp" line="59"/>
         <source>%1 must be a whole number</source>
         <translation>%1 は整数でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="64"/>
+        <location filename="../model/profile/JsonReader.cpp" line="64"/>
         <source>%1 is out of range</source>
         <translation>%1 が範囲外です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="80"/>
+        <location filename="../model/profile/JsonReader.cpp" line="80"/>
         <source>%1 must be an integer or a &quot;0x...&quot; string</source>
         <translation>%1 は整数または &quot;0x...&quot; 形式の文字列でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="104"/>
+        <location filename="../model/profile/JsonReader.cpp" line="104"/>
         <source>&quot;%1&quot; must be an array</source>
         <translation>&quot;%1&quot; は配列でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="120"/>
+        <location filename="../model/profile/JsonReader.cpp" line="120"/>
         <source>&quot;%1&quot; must be an object</source>
         <translation>&quot;%1&quot; はオブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="130"/>
+        <location filename="../model/profile/JsonReader.cpp" line="130"/>
         <source>%1: unknown key &quot;%2&quot;</source>
         <translation>%1: 不明なキー &quot;%2&quot;</translation>
     </message>
 </context>
 <context>
+    <name>opentop::Language</name>
+    <message>
+        <location filename="../model/i18n/Language.cpp" line="137"/>
+        <source>unknown language &apos;%1&apos;; available: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/Language.cpp" line="151"/>
+        <source>the %1 translation is missing from this build</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>opentop::LanguageMenu</name>
+    <message>
+        <location filename="../ui/i18n/LanguageMenu.cpp" line="10"/>
+        <source>&amp;Language</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/i18n/LanguageMenu.cpp" line="15"/>
+        <source>System language (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>opentop::MainMenus</name>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="32"/>
+        <location filename="../ui/main/MainMenus.cpp" line="35"/>
         <source>&amp;Bus</source>
         <translation>バス(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="33"/>
+        <location filename="../ui/main/MainMenus.cpp" line="36"/>
         <source>Main</source>
         <translation>メイン</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="36"/>
+        <location filename="../ui/main/MainMenus.cpp" line="39"/>
         <source>&amp;Connect…</source>
         <translation>接続(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="38"/>
+        <location filename="../ui/main/MainMenus.cpp" line="41"/>
         <source>Choose the serial port, gateway or simulated bus (Ctrl+K)</source>
         <translation>シリアルポート、ゲートウェイ、シミュレーションバスを選択します (Ctrl+K)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="40"/>
+        <location filename="../ui/main/MainMenus.cpp" line="43"/>
         <source>&amp;Scan bus</source>
         <translation>バスをスキャン(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="46"/>
+        <location filename="../ui/main/MainMenus.cpp" line="49"/>
         <source>&amp;Disconnect</source>
         <translation>切断(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="50"/>
+        <location filename="../ui/main/MainMenus.cpp" line="53"/>
         <source>Communication &amp;groups…</source>
         <translation>通信グループ(&amp;G)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="54"/>
+        <location filename="../ui/main/MainMenus.cpp" line="57"/>
         <source>&amp;Export alarm histories…</source>
         <translation>アラーム履歴をエクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="56"/>
+        <location filename="../ui/main/MainMenus.cpp" line="59"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="59"/>
+        <location filename="../ui/main/MainMenus.cpp" line="62"/>
         <source>&amp;Files</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="64"/>
+        <location filename="../ui/main/MainMenus.cpp" line="67"/>
         <source>&amp;Drive</source>
         <translation>ドライバ(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="67"/>
+        <location filename="../ui/main/MainMenus.cpp" line="70"/>
         <source>&amp;Write all pending</source>
         <translation>未書込みをすべて書込み(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="69"/>
+        <location filename="../ui/main/MainMenus.cpp" line="72"/>
         <source>&amp;Re-read all</source>
         <translation>すべて再読出し(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="71"/>
+        <location filename="../ui/main/MainMenus.cpp" line="74"/>
         <source>Write a setting to the selected drives…</source>
         <translation>選択したドライバに設定を書込み…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="82"/>
+        <location filename="../ui/main/MainMenus.cpp" line="85"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="88"/>
+        <location filename="../ui/main/MainMenus.cpp" line="91"/>
         <source>&amp;Traffic log</source>
         <translation>通信ログ(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="89"/>
+        <location filename="../ui/main/MainMenus.cpp" line="92"/>
         <source>Bus &amp;overview</source>
         <translation>バス一覧(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="91"/>
+        <location filename="../ui/main/MainMenus.cpp" line="94"/>
         <source>T&amp;rends</source>
         <translation>トレンド(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="92"/>
+        <location filename="../ui/main/MainMenus.cpp" line="95"/>
         <source>Communication &amp;groups</source>
         <translation>通信グループ(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="100"/>
+        <location filename="../ui/main/MainMenus.cpp" line="109"/>
+        <source>Language</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/main/MainMenus.cpp" line="110"/>
+        <source>OpenTOP will be in %1 the next time it starts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/main/MainMenus.cpp" line="116"/>
         <source>&amp;End of line</source>
         <translation>出荷検査(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="102"/>
+        <location filename="../ui/main/MainMenus.cpp" line="118"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="115"/>
+        <location filename="../ui/main/MainMenus.cpp" line="131"/>
         <source>connect elsewhere</source>
         <translation>別の接続先への接続</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="125"/>
+        <location filename="../ui/main/MainMenus.cpp" line="141"/>
         <source>Export alarm histories</source>
         <translation>アラーム履歴のエクスポート</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="126"/>
+        <location filename="../ui/main/MainMenus.cpp" line="142"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
@@ -6535,33 +6571,33 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="50"/>
+        <location filename="../ui/main/MainWindow.cpp" line="50"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="126"/>
+        <location filename="../ui/main/MainWindow.cpp" line="126"/>
         <source>connect elsewhere</source>
         <translation>別の接続先への接続</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="149"/>
+        <location filename="../ui/main/MainWindow.cpp" line="149"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>%1 に接続中…（%2 には接続したまま）</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="188"/>
+        <location filename="../ui/main/MainWindow.cpp" line="188"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>接続済み: %1（新しい接続は失敗しました: %2）</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="191"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="191"/>
+        <location filename="../ui/main/MainWindow.cpp" line="203"/>
         <source>Cannot connect</source>
         <translation>接続できません</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="192"/>
+        <location filename="../ui/main/MainWindow.cpp" line="192"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -6570,82 +6606,82 @@ Still connected to %2; nothing was changed.</source>
 %2 に接続したままです。何も変更していません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="195"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="306"/>
+        <location filename="../ui/main/MainWindow.cpp" line="195"/>
+        <location filename="../ui/main/MainWindow.cpp" line="306"/>
         <source>Not connected: %1</source>
         <translation>未接続: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="252"/>
+        <location filename="../ui/main/MainWindow.cpp" line="252"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>通信グループ: %1（バス › 通信グループ）</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="274"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="276"/>
+        <location filename="../ui/main/MainWindow.cpp" line="274"/>
+        <location filename="../ui/main/MainWindow.cpp" line="276"/>
         <source>Connection lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="277"/>
+        <location filename="../ui/main/MainWindow.cpp" line="277"/>
         <source>Connection lost</source>
         <translation>接続断</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="285"/>
+        <location filename="../ui/main/MainWindow.cpp" line="285"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — シミュレーションバス（ハードウェアなし）— %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="286"/>
+        <location filename="../ui/main/MainWindow.cpp" line="286"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="287"/>
+        <location filename="../ui/main/MainWindow.cpp" line="287"/>
         <source>Connecting to %1…</source>
         <translation>%1 に接続中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="305"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="313"/>
+        <location filename="../ui/main/MainWindow.cpp" line="305"/>
+        <location filename="../ui/main/MainWindow.cpp" line="313"/>
         <source>Connected: %1</source>
         <translation>接続済み: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="312"/>
+        <location filename="../ui/main/MainWindow.cpp" line="312"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>接続済み: %1（シミュレーション、ハードウェアなし）</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="333"/>
+        <location filename="../ui/main/MainWindow.cpp" line="333"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>ドライバが機種を通知しません。%1 は設定された機種です。</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="363"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="374"/>
+        <location filename="../ui/main/MainWindow.cpp" line="363"/>
+        <location filename="../ui/main/MainWindow.cpp" line="374"/>
         <source>disconnect</source>
         <translation>切断</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="370"/>
+        <location filename="../ui/main/MainWindow.cpp" line="370"/>
         <source>Not connected (disconnected)</source>
         <translation>未接続（切断済み）</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="381"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="406"/>
+        <location filename="../ui/main/MainWindow.cpp" line="381"/>
+        <location filename="../ui/main/MainWindow.cpp" line="406"/>
         <source>quit</source>
         <translation>終了</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="392"/>
+        <location filename="../ui/main/MainWindow.cpp" line="392"/>
         <source>Unwritten changes</source>
         <translation>未書込みの変更</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/main/MainWindow.cpp" line="393"/>
+        <location filename="../ui/main/MainWindow.cpp" line="393"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>%n 件の編集がドライバに書き込まれていません。破棄して終了しますか？</numerusform>
@@ -6655,77 +6691,77 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorCommand</name>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="37"/>
+        <location filename="../cli/MonitorCommand.cpp" line="37"/>
         <source>Watch speed, load, state, inputs and alarms live (Ctrl-C ends)</source>
         <translation>速度、負荷、状態、入力、アラームをライブで監視します（Ctrl-C で終了）</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="44"/>
+        <location filename="../cli/MonitorCommand.cpp" line="44"/>
         <source>Time between samples of a drive in ms, %1–%2 (default 500).</source>
         <translation>ドライバのサンプリング間隔 (ms)、%1–%2（既定 500）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="47"/>
+        <location filename="../cli/MonitorCommand.cpp" line="47"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="48"/>
+        <location filename="../cli/MonitorCommand.cpp" line="48"/>
         <source>Stop after N samples per drive (default: until Ctrl-C).</source>
         <translation>ドライバあたり N サンプル後に停止します（既定: Ctrl-C まで）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="49"/>
+        <location filename="../cli/MonitorCommand.cpp" line="49"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="50"/>
+        <location filename="../cli/MonitorCommand.cpp" line="50"/>
         <source>Also write every sample to FILE (CSV with a header).</source>
         <translation>全サンプルを FILE にも書き込みます（ヘッダ付き CSV）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="51"/>
+        <location filename="../cli/MonitorCommand.cpp" line="51"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="63"/>
+        <location filename="../cli/MonitorCommand.cpp" line="63"/>
         <source>error: usage: %1</source>
         <translation>エラー: 使い方: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="73"/>
+        <location filename="../cli/MonitorCommand.cpp" line="73"/>
         <source>error: --interval must be %1–%2 ms, got &quot;%3&quot;</source>
         <translation>エラー: --interval は %1–%2 ms でなければなりません（指定値 &quot;%3&quot;）</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="86"/>
+        <location filename="../cli/MonitorCommand.cpp" line="86"/>
         <source>error: --count must be a whole number of samples, 1 or more, got &quot;%1&quot;</source>
         <translation>エラー: --count はサンプル数（1 以上の整数）でなければなりません（指定値 &quot;%1&quot;）</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="96"/>
+        <location filename="../cli/MonitorCommand.cpp" line="96"/>
         <source>error: cannot write %1: %2</source>
         <translation>エラー: %1 に書き込めません: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="106"/>
+        <location filename="../cli/MonitorCommand.cpp" line="106"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="126"/>
+        <location filename="../cli/MonitorCommand.cpp" line="126"/>
         <source>warning: machine number %1: %2; speeds are shown in r/min only</source>
         <translation>警告: 局番 %1: %2。速度は r/min でのみ表示します</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="203"/>
+        <location filename="../cli/MonitorCommand.cpp" line="203"/>
         <source>error: cannot write %1: %2; monitoring stopped</source>
         <translation>エラー: %1 に書き込めません: %2。モニタを停止しました</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="227"/>
+        <location filename="../cli/MonitorCommand.cpp" line="227"/>
         <source>%1 error: %2</source>
         <translation>%1 エラー: %2</translation>
     </message>
@@ -6733,13 +6769,13 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorDetails</name>
     <message>
-        <location filename="../main/ui/monitor/MonitorDetails.cpp" line="81"/>
-        <location filename="../main/ui/monitor/MonitorDetails.cpp" line="88"/>
+        <location filename="../ui/monitor/MonitorDetails.cpp" line="81"/>
+        <location filename="../ui/monitor/MonitorDetails.cpp" line="88"/>
         <source>not read</source>
         <translation>未読出し</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorDetails.cpp" line="110"/>
+        <location filename="../ui/monitor/MonitorDetails.cpp" line="110"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -6747,42 +6783,42 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorOutput</name>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="114"/>
+        <location filename="../cli/MonitorOutput.cpp" line="114"/>
         <source>Target shown</source>
         <translation>目標（表示値）</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="114"/>
+        <location filename="../cli/MonitorOutput.cpp" line="114"/>
         <source>Speed shown</source>
         <translation>速度（表示値）</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="123"/>
+        <location filename="../cli/MonitorOutput.cpp" line="123"/>
         <source>Active alarm</source>
         <translation>発生中のアラーム</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="165"/>
+        <location filename="../cli/MonitorOutput.cpp" line="165"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="168"/>
+        <location filename="../cli/MonitorOutput.cpp" line="168"/>
         <source>code %1</source>
         <translation>コード %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="168"/>
+        <location filename="../cli/MonitorOutput.cpp" line="168"/>
         <source>active</source>
         <translation>発生中</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="175"/>
+        <location filename="../cli/MonitorOutput.cpp" line="175"/>
         <source>Time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="175"/>
+        <location filename="../cli/MonitorOutput.cpp" line="175"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -6790,37 +6826,37 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPage</name>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="175"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="175"/>
         <source>Live values</source>
         <translation>ライブ値</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="183"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="183"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="196"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="196"/>
         <source>State</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="261"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="261"/>
         <source>%1 %2 on the drive&apos;s display</source>
         <translation>%1 %2（ドライバの表示）</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="270"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="270"/>
         <source>Alarm %1 %2 — %3</source>
         <translation>アラーム %1 %2 — %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="273"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="273"/>
         <source>Alarm active (reading which one…)</source>
         <translation>アラーム発生中（内容を読出し中…）</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="328"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="328"/>
         <source>No live state: %1</source>
         <translation>ライブ状態なし: %1</translation>
     </message>
@@ -6828,67 +6864,67 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPollBar</name>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="25"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="25"/>
         <source>Poll every</source>
         <translation>ポーリング周期</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="27"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="27"/>
         <source>%1 ms (%2 Hz)</source>
         <translation>%1 ms (%2 Hz)</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="28"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="28"/>
         <source>How often every monitored drive is read. Commands you give always go first; the drives share what is left of the bus in turn.</source>
         <translation>モニタ中の各ドライバを読み出す頻度。操作したコマンドは常に優先され、各ドライバはバスの残りの帯域を順番に使用します。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="36"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="36"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="44"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="44"/>
         <source>Resume polling</source>
         <translation>ポーリングを再開</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="44"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="44"/>
         <source>Pause polling</source>
         <translation>ポーリングを一時停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="58"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="58"/>
         <source>Polling paused: the values shown are the last ones read (%1).</source>
         <translation>ポーリング一時停止中: 表示値は最後に読み出した値です (%1)。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="60"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="60"/>
         <source>Connection lost — not live: %1.</source>
         <translation>接続断 — 更新停止: %1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="62"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="62"/>
         <source>Not live: %1.</source>
         <translation>更新停止: %1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="63"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="63"/>
         <source>The drive does not answer (%1) — not live: %2.</source>
         <translation>ドライバが応答しません (%1) — 更新停止: %2。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="66"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="66"/>
         <source>Values %1 · %2 samples/s</source>
         <translation>値 %1 · %2 サンプル/s</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="70"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="70"/>
         <source>Not read yet.</source>
         <translation>未読出しです。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="71"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="71"/>
         <source>Cannot read the drive: %1</source>
         <translation>ドライバを読み出せません: %1</translation>
     </message>
@@ -6896,12 +6932,12 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MotionPriorityBox</name>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="32"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="32"/>
         <source>Switch to communication priority…</source>
         <translation>通信優先に切替え…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="57"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="57"/>
         <source>Machine number %1 is in &quot;%2&quot; (%3): it takes run, stop, direction and speed selection from its input terminals and refuses motion commands over the bus, so the test run is disabled.
 
 Switching to &quot;%4&quot; hands these commands to the bus: the input terminals no longer start or stop the motor, and the machine&apos;s own controls stay without effect until you switch back to &quot;%2&quot;.</source>
@@ -6910,53 +6946,53 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 「%4」に切り替えると、これらのコマンドはバスから受け付けるようになります: 入力端子ではモータを起動・停止できなくなり、「%2」に戻すまで機械側の操作は無効になります。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="83"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="83"/>
         <source>Switch to communication priority</source>
         <translation>通信優先に切替え</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="84"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="84"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from the bus (%2 = &quot;%3&quot;). Its input terminals then no longer start or stop the motor.</source>
         <translation>局番 %1 は運転、停止、回転方向、速度選択をバスから受け付けるようになります (%2 = &quot;%3&quot;)。入力端子ではモータを起動・停止できなくなります。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="90"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="90"/>
         <source>Switch</source>
         <translation>切替え</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="99"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="99"/>
         <source>Switching to communication priority…</source>
         <translation>通信優先に切替え中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="107"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="107"/>
         <source>Machine number %1 takes motion commands over the bus now.</source>
         <translation>局番 %1 はバス経由で運転コマンドを受け付けるようになりました。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="109"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="109"/>
         <source>Cannot switch the control priority: %1</source>
         <translation>制御優先を切り替えられません: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="118"/>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="124"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="118"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="124"/>
         <source>Return to I/O priority</source>
         <translation>I/O 優先に戻す</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="119"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="119"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from its input terminals again, and refuse motion commands over the bus. If an input says run, the motor runs.</source>
         <translation>局番 %1 は再び運転、停止、回転方向、速度選択を入力端子から受け付け、バス経由の運転コマンドを拒否します。入力が運転状態の場合、モータは運転します。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="127"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="127"/>
         <source>Returning to I/O priority…</source>
         <translation>I/O 優先に戻し中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="136"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="136"/>
         <source>Machine number %1 follows its input terminals again.</source>
         <translation>局番 %1 は再び入力端子に従います。</translation>
     </message>
@@ -6964,33 +7000,33 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MotorSpeedBox</name>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="23"/>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="45"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="23"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="45"/>
         <source>Motor speed</source>
         <translation>モータ速度</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="33"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="33"/>
         <source>not set</source>
         <translation>未設定</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="34"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="34"/>
         <source>Commutations per motor revolution (a motor property, see its data sheet). r/min = %1 ÷ this × 60.</source>
         <translation>モータ 1 回転あたりの転流回数（モータ固有値。データシートを参照）。r/min = %1 ÷ この値 × 60。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="38"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="38"/>
         <source>Commutations per revolution</source>
         <translation>1 回転あたりの転流回数</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="75"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="75"/>
         <source>set the commutations per revolution</source>
         <translation>1 回転あたりの転流回数を設定してください</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="79"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="79"/>
         <source>%1 r/min</source>
         <translation>%1 r/min</translation>
     </message>
@@ -6998,161 +7034,161 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="35"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="35"/>
         <source>&amp;Write to all</source>
         <translation>すべてに書込み(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
         <source>Write one setting to several drives</source>
         <translation>1 つの設定を複数のドライバに書込み</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
         <source>Machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
         <source>Current value</source>
         <translation>現在値</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="55"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="55"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="74"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="74"/>
         <source>Not written: another family (%1)</source>
         <translation>未書込み: 別ファミリ (%1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="75"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="75"/>
         <source>Not written: not identified (%1)</source>
         <translation>未書込み: 未識別 (%1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="80"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="80"/>
         <source>&amp;Setting:</source>
         <translation>設定(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="86"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="86"/>
         <source>New &amp;value:</source>
         <translation>新しい値(&amp;V):</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="158"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="158"/>
         <source>cannot be read</source>
         <translation>読出し不可</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="161"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="161"/>
         <source>reading…</source>
         <translation>読出し中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="189"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="189"/>
         <source>read failed: %1</source>
         <translation>読出し失敗: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="214"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="214"/>
         <source>Drive %1: %2 is not known yet, and the allowed values depend on it.</source>
         <translation>ドライバ %1: %2 がまだ不明で、許容値はそれに依存します。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="218"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="218"/>
         <source>drive %1: %2</source>
         <translation>ドライバ %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="222"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="222"/>
         <source>The unit differs between the drives (%1); write them one at a time.</source>
         <translation>ドライバ間で単位が異なります (%1)。1 台ずつ書き込んでください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="230"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="230"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>ドライバ %1 では許可されていません (%2): %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
         <source>None of the selected drives is identified.</source>
         <translation>選択したドライバはいずれも識別されていません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
         <source>Drive %1: %2</source>
         <translation>ドライバ %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="249"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="249"/>
         <source>Allowed on %1</source>
         <translation>%1 で許可</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="257"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="257"/>
         <source>Warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="258"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="258"/>
         <source>Allowed on %1.</source>
         <translation>%1 で許可。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="290"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="290"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>%1 を局番 %2 に書込み</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="292"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="292"/>
         <source>Nothing was written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="297"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="297"/>
         <source>waiting…</source>
         <translation>待機中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="299"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="299"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>%1 を %n 台のドライバに書込み中…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="311"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="311"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>%n 台中 %1 台のドライバで書込み・照合完了。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="320"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="320"/>
         <source>writing…</source>
         <translation>書込み中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="333"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="333"/>
         <source>Written and verified</source>
         <translation>書込み・照合済み</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>書込み済み、未照合（読み戻し不可）</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="335"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="335"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
@@ -7160,22 +7196,22 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::OutputFile</name>
     <message>
-        <location filename="../main/model/files/OutputFile.cpp" line="24"/>
+        <location filename="../model/files/OutputFile.cpp" line="24"/>
         <source>cannot write %1: it is a directory; name a file</source>
         <translation>%1 に書き込めません: ディレクトリです。ファイルを指定してください</translation>
     </message>
     <message>
-        <location filename="../main/model/files/OutputFile.cpp" line="26"/>
+        <location filename="../model/files/OutputFile.cpp" line="26"/>
         <source>cannot write %1: the folder %2 does not exist</source>
         <translation>%1 に書き込めません: フォルダ %2 が存在しません</translation>
     </message>
     <message>
-        <location filename="../main/model/files/OutputFile.cpp" line="35"/>
+        <location filename="../model/files/OutputFile.cpp" line="35"/>
         <source>cannot write %1: %2</source>
         <translation>%1 に書き込めません: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/files/OutputFile.cpp" line="40"/>
+        <location filename="../model/files/OutputFile.cpp" line="40"/>
         <source>it is a directory; name a file</source>
         <translation>ディレクトリです。ファイルを指定してください</translation>
     </message>
@@ -7183,87 +7219,87 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::PanelMirror</name>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="19"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="19"/>
         <source>speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="21"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="21"/>
         <source>machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="23"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="23"/>
         <source>running data No.</source>
         <translation>運転データ番号</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="25"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="25"/>
         <source>countdown</source>
         <translation>カウントダウン</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="27"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="27"/>
         <source>load rate</source>
         <translation>負荷率</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="46"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="46"/>
         <source>Alarm %1 %2</source>
         <translation>アラーム %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="47"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="47"/>
         <source>Alarm (code not read yet)</source>
         <translation>アラーム（コード未読出し）</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="58"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="58"/>
         <source>Current speed %1 %2</source>
         <translation>現在速度 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="62"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="62"/>
         <source>Current speed: no finite value in %1</source>
         <translation>現在速度: %1 に有限値がありません</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="69"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="69"/>
         <source>Current speed %1 r/min</source>
         <translation>現在速度 %1 r/min</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="69"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="69"/>
         <source>Speed not read</source>
         <translation>速度未読出し</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="75"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="75"/>
         <source>Machine number %1</source>
         <translation>局番 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="86"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="86"/>
         <source>Running data SPno%1</source>
         <translation>運転データ SPno%1</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="89"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="89"/>
         <source>Running data not read</source>
         <translation>運転データ未読出し</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="99"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="99"/>
         <source>Countdown set to %1 d %2 h %3 min %4 s (the drive does not report the time left)</source>
         <translation>カウントダウン設定 %1 d %2 h %3 min %4 s（ドライバは残り時間を通知しません）</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="113"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="113"/>
         <source>Load rate %1 %</source>
         <translation>負荷率 %1 %</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="116"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="116"/>
         <source>Load rate not read</source>
         <translation>負荷率未読出し</translation>
     </message>
@@ -7271,32 +7307,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::PanelMirrorView</name>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="21"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="21"/>
         <source>Drive panel</source>
         <translation>ドライバパネル</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="51"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="51"/>
         <source>Not read yet</source>
         <translation>未読出し</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="64"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="64"/>
         <source>%1 (more digits than the panel has)</source>
         <translation>%1（パネルの桁数を超えています）</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="68"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="68"/>
         <source>Panel set to show the %1 while running.</source>
         <translation>運転中はパネルに%1を表示する設定です。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="69"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="69"/>
         <source>Drive panel shows %1</source>
         <translation>ドライバパネル表示: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="77"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="77"/>
         <source>not live</source>
         <translation>更新停止</translation>
     </message>
@@ -7304,27 +7340,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="170"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="170"/>
         <source>%1 (not valid now)</source>
         <translation>%1（現在は無効）</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="188"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="188"/>
         <source>not read</source>
         <translation>未読出し</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="197"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="197"/>
         <source>Allowed: %1</source>
         <translation>許容: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="200"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="200"/>
         <source>On the drive: %1</source>
         <translation>ドライバの値: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="228"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="228"/>
         <source>Not accepted: %1</source>
         <translation>受け付けられません: %1</translation>
     </message>
@@ -7332,92 +7368,92 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitBox</name>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="23"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="23"/>
         <source>Parameter initialisation</source>
         <translation>パラメータ初期化</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="32"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="32"/>
         <source>Returns every setting of drive %1 to its factory default, including the communication settings: afterwards the drive may answer only at the default rate, and control priority goes back to its input terminals. The motor must be stopped. The consequences for this drive are listed before anything is sent.</source>
         <translation>ドライバ %1 の全設定を、通信設定も含めて工場出荷時設定に戻します: その後、ドライバは初期値の通信速度でしか応答しない場合があり、制御優先は入力端子側に戻ります。モータは停止している必要があります。送信前に、このドライバへの影響を一覧表示します。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="40"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="40"/>
         <source>&amp;Initialise all parameters of drive %1…</source>
         <translation>ドライバ %1 の全パラメータを初期化(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="42"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="42"/>
         <source>Asks first, naming the drive and what changes</source>
         <translation>ドライバと変更内容を示して事前に確認します</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="66"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="66"/>
         <source>Reading what the initialisation would change…</source>
         <translation>初期化による変更内容を読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="90"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="90"/>
         <source>Your %n unwritten edit(s) of this drive are discarded.</source>
         <translation>
             <numerusform>このドライバの未書込みの編集 %n 件は破棄されます。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="94"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="94"/>
         <source>Sent: %1 to machine %2 only.</source>
         <translation>送信済み: %1（局番 %2 のみ）。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="95"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="95"/>
         <source>Sent: %1 to machine %2.</source>
         <translation>送信済み: %1（局番 %2）。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="99"/>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="104"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="99"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="104"/>
         <source>Initialise drive %1</source>
         <translation>ドライバ %1 の初期化</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="100"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="100"/>
         <source>Reset every setting of drive %1 (%2) to its factory defaults?</source>
         <translation>ドライバ %1 (%2) の全設定を工場出荷時設定に戻しますか？</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="114"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="114"/>
         <source>Cancelled; nothing was sent.</source>
         <translation>キャンセルしました。何も送信していません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="122"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="122"/>
         <source>Initialising drive %1…</source>
         <translation>ドライバ %1 を初期化中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="131"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="131"/>
         <source>Drive %1 did not confirm the initialisation: %2</source>
         <translation>ドライバ %1 が初期化を確認しませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="132"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="132"/>
         <source>Nothing was sent: %1</source>
         <translation>何も送信していません: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="139"/>
         <source>Drive %1 initialised; reading its values again…</source>
         <translation>ドライバ %1 を初期化しました。値を再読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="145"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="145"/>
         <source>Drive %1 initialised; %n value(s) could not be read back (it may answer only at the default communication settings now).</source>
         <translation>
             <numerusform>ドライバ %1 を初期化しました。%n 個の値を読み戻せませんでした（現在は初期値の通信設定でのみ応答する可能性があります）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="149"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="149"/>
         <source>Drive %1 initialised to its factory defaults; values read again.</source>
         <translation>ドライバ %1 を工場出荷時設定に初期化しました。値を再読出ししました。</translation>
     </message>
@@ -7425,67 +7461,67 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitialiser</name>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="64"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="64"/>
         <source>%1 drives have no parameter initialisation.</source>
         <translation>%1 ドライバにはパラメータ初期化がありません。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="67"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="67"/>
         <source>%1 = %2 (register %3)</source>
         <translation>%1 = %2（レジスタ %3）</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="75"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="75"/>
         <source>Drive %1 is running. Stop the motor first: parameter initialisation is only sent to a drive at standstill.</source>
         <translation>ドライバ %1 は運転中です。先にモータを停止してください: パラメータ初期化は停止中のドライバにのみ送信します。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="79"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="79"/>
         <source>Whether drive %1 is running could not be read (%2), so nothing was sent.</source>
         <translation>ドライバ %1 が運転中かどうかを読み出せなかったため (%2)、何も送信していません。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="93"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="93"/>
         <source>Every setting of drive %1 returns to its factory default: %2. Values set for this machine are lost; save a backup first to keep them.</source>
         <translation>ドライバ %1 の全設定が工場出荷時設定に戻ります: %2。この機械用に設定した値は失われます。残すには先にバックアップを保存してください。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="110"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="110"/>
         <source>%1 could not be read; it returns to %2. %3</source>
         <translation>%1 を読み出せませんでした。%2 に戻ります。%3</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="113"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="113"/>
         <source>%1 goes from %2 back to %3. %4</source>
         <translation>%1 は %2 から %3 に戻ります。%4</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="118"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="118"/>
         <source>%1 stays %2 (already the default).</source>
         <translation>%1 は %2 のままです（すでに初期値）。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="124"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="124"/>
         <source>The drive may then stop answering this connection (from its next power-up): reconnect at the default setting to reach it.</source>
         <translation>その後、ドライバがこの接続で応答しなくなる可能性があります（次回の電源投入から）: 初期値の通信設定で再接続してください。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="128"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="128"/>
         <source>The drive no longer follows writes sent to its group&apos;s parent, and drives that followed it no longer do.</source>
         <translation>ドライバはグループ親局宛の書込みに従わなくなり、このドライバに従っていたドライバも従わなくなります。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="134"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="134"/>
         <source>The drive follows its input terminals again: an input that is on may start the motor, with the factory input functions.</source>
         <translation>ドライバは再び入力端子に従います: オンになっている入力があると、工場出荷時の入力機能でモータが起動する可能性があります。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="136"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="136"/>
         <source>The machine number %1 is not a setting and does not change.</source>
         <translation>局番 %1 は設定ではないため変更されません。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="138"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="138"/>
         <source>The motor must stand still: drive %1 reports it stopped now, and this is read again just before the command is sent.</source>
         <translation>モータは停止している必要があります: ドライバ %1 は現在停止中と通知しています。コマンド送信の直前に再度読み出します。</translation>
     </message>
@@ -7493,88 +7529,88 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterPage</name>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="23"/>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="83"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="23"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="83"/>
         <source>&amp;Write page</source>
         <translation>ページ書込み(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="24"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="24"/>
         <source>Re&amp;vert</source>
         <translation>元に戻す(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="25"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="25"/>
         <source>Re-&amp;read</source>
         <translation>再読出し(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="45"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="45"/>
         <source>Write this page&apos;s pending edits to the drive and verify them by reading back</source>
         <translation>このページの未書込みの編集をドライバに書き込み、読み戻して照合します</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="46"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="46"/>
         <source>Discard this page&apos;s pending edits</source>
         <translation>このページの未書込みの編集を破棄します</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="47"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="47"/>
         <source>Read this page&apos;s values from the drive again (edits stay)</source>
         <translation>このページの値をドライバから再読出しします（編集は保持）</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="84"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="84"/>
         <source>&amp;Write page (%1)</source>
         <translation>ページ書込み(&amp;W) (%1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="97"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="97"/>
         <source>Reading…</source>
         <translation>読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="101"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="101"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 個の値を読み出せませんでした</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="120"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="120"/>
         <source>Nothing was written: %n field(s) not accepted. %1</source>
         <translation>
             <numerusform>何も書き込んでいません: %n 項目が受け付けられません。%1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="139"/>
         <source>Write %n value(s) of the page %1 to machine number %2</source>
         <translation>
             <numerusform>ページ %1 の %n 個の値を局番 %2 に書込み</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="143"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
         <source>Nothing was written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="148"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="148"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>%n 個の値を書込み中…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="152"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="152"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>%n 個の書込みに失敗しました。マークされた項目を確認してください</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="153"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="153"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n 個の値を書込み・照合しました</numerusform>
@@ -7584,212 +7620,212 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterReader</name>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="52"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="52"/>
         <source>entry</source>
         <translation>エントリ</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="60"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="60"/>
         <source>name must be lower-case dotted words: [a-z0-9_] separated by dots</source>
         <translation>name はドット区切りの小文字の単語でなければなりません（[a-z0-9_] をドットで区切る）</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="68"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="68"/>
         <source>&quot;label&quot; is empty</source>
         <translation>&quot;label&quot; が空です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="70"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="70"/>
         <source>group &quot;%1&quot; is not declared in &quot;groups&quot;</source>
         <translation>グループ &quot;%1&quot; が &quot;groups&quot; で宣言されていません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="72"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="72"/>
         <source>kind must be one of %1</source>
         <translation>kind は %1 のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="78"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="78"/>
         <source>address must be 0x0000–0xFFFF</source>
         <translation>address は 0x0000–0xFFFF でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="85"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="85"/>
         <source>read must be 3 (holding) or 4 (input)</source>
         <translation>read は 3（保持）または 4（入力）でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="87"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="87"/>
         <source>write must be 6 or 16</source>
         <translation>write は 6 または 16 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="91"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="91"/>
         <source>input registers (read 4) cannot be written</source>
         <translation>入力レジスタ (read 4) には書き込めません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="93"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="93"/>
         <source>neither readable nor writable</source>
         <translation>読出しも書込みもできません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="101"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="101"/>
         <source>type must be u16, s16, u32, s32, f32, string or bits</source>
         <translation>type は u16、s16、u32、s32、f32、string、bits のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="110"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="110"/>
         <source>string parameters need &quot;count&quot; 1–125 registers</source>
         <translation>string パラメータには &quot;count&quot; 1–125 レジスタが必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="115"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="115"/>
         <source>bits parameters have &quot;count&quot; 1 or 2</source>
         <translation>bits パラメータの &quot;count&quot; は 1 または 2 です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="120"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="120"/>
         <source>%1 takes %2 register(s), not %3</source>
         <translation>%1 は %3 ではなく %2 レジスタを使用します</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="123"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="123"/>
         <source>a %1-register value cannot be written with function 06; use 16</source>
         <translation>%1 レジスタの値はファンクション 06 では書き込めません。16 を使用してください</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="128"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="128"/>
         <source>safety must be one of %1</source>
         <translation>safety は %1 のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="130"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="130"/>
         <source>commands need a &quot;safety&quot; class</source>
         <translation>コマンドには &quot;safety&quot; クラスが必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="133"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="133"/>
         <source>code table &quot;%1&quot; is not declared</source>
         <translation>コードテーブル &quot;%1&quot; が宣言されていません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="140"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="140"/>
         <source>a setting needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>設定には &quot;allowed&quot; または &quot;enum&quot; が必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="143"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="143"/>
         <source>a writable parameter needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>書込み可能なパラメータには &quot;allowed&quot; または &quot;enum&quot; が必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="148"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="148"/>
         <source>bits parameters need &quot;bits&quot;</source>
         <translation>bits パラメータには &quot;bits&quot; が必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="156"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="156"/>
         <source>&quot;backup&quot; must be true or false</source>
         <translation>&quot;backup&quot; は true または false でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="161"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="161"/>
         <source>only readable and writable parameters can be backed up</source>
         <translation>バックアップできるのは読出し・書込み可能なパラメータのみです</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="169"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="169"/>
         <source>scale must be positive</source>
         <translation>scale は正の値でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="179"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="179"/>
         <source>decimals must be 0–9</source>
         <translation>decimals は 0–9 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="205"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="205"/>
         <source>default %1 is not a whole number of steps of %2</source>
         <translation>default %1 が %2 のステップの整数倍ではありません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="214"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="214"/>
         <source>default must be a number (or &quot;0x...&quot; code)</source>
         <translation>default は数値（または &quot;0x...&quot; コード）でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="217"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="217"/>
         <source>default must be a number or a string</source>
         <translation>default は数値または文字列でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="228"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="228"/>
         <source>%1 must be an object {&quot;min&quot;:…, &quot;max&quot;:…}</source>
         <translation>%1 はオブジェクト {&quot;min&quot;:…, &quot;max&quot;:…} でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="235"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="235"/>
         <source>%1 needs numeric min and max</source>
         <translation>%1 には数値の min と max が必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="241"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="241"/>
         <source>%1: %2 is not a whole number of steps of %3</source>
         <translation>%1: %2 が %3 のステップの整数倍ではありません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="249"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="249"/>
         <source>%1: min is greater than max</source>
         <translation>%1: min が max より大きくなっています</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="263"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="263"/>
         <source>%1 must be an object {&quot;value&quot;:…, &quot;label&quot;:…}</source>
         <translation>%1 はオブジェクト {&quot;value&quot;:…, &quot;label&quot;:…} でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="278"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="278"/>
         <source>%1 has no label</source>
         <translation>%1 にラベルがありません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="280"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="280"/>
         <source>%1 repeats a code or label</source>
         <translation>%1 でコードまたはラベルが重複しています</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="291"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="291"/>
         <source>&quot;bits&quot; only belongs to type bits</source>
         <translation>&quot;bits&quot; は type bits にのみ使用できます</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="315"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="315"/>
         <source>%1.appliesWhen needs &quot;param&quot; and &quot;equals&quot;</source>
         <translation>%1.appliesWhen には &quot;param&quot; と &quot;equals&quot; が必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="320"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="320"/>
         <source>%1 lies outside the %2-bit register</source>
         <translation>%1 が %2 ビットレジスタの範囲外です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="322"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="322"/>
         <source>%1 needs a unique name</source>
         <translation>%1 には一意の名前が必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="336"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="336"/>
         <source>%1 must be an object</source>
         <translation>%1 はオブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="348"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="348"/>
         <source>%1 needs either &quot;variant&quot; or &quot;param&quot;</source>
         <translation>%1 には &quot;variant&quot; または &quot;param&quot; のいずれかが必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="351"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="351"/>
         <source>%1: variant &quot;%2&quot; is not declared</source>
         <translation>%1: 機種 &quot;%2&quot; が宣言されていません</translation>
     </message>
@@ -7797,67 +7833,67 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParamsCommand</name>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="82"/>
+        <location filename="../cli/ParamsCommand.cpp" line="82"/>
         <source>List every parameter of the device profiles</source>
         <translation>デバイスプロファイルの全パラメータを一覧表示します</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="162"/>
+        <location filename="../cli/ParamsCommand.cpp" line="162"/>
         <source>error: params takes no arguments; use --family F</source>
         <translation>エラー: params は引数を取りません。--family F を使用してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="170"/>
+        <location filename="../cli/ParamsCommand.cpp" line="170"/>
         <source>error: unknown family &quot;%1&quot;; known: %2</source>
         <translation>エラー: 不明なファミリ &quot;%1&quot;。既知: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Label</source>
         <translation>ラベル</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Address</source>
         <translation>アドレス</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Type</source>
         <translation>型</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Unit</source>
         <translation>単位</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="193"/>
+        <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Allowed</source>
         <translation>許容値</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="193"/>
+        <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Default</source>
         <translation>初期値</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="193"/>
+        <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Access</source>
         <translation>アクセス</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="193"/>
+        <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Group</source>
         <translation>グループ</translation>
     </message>
@@ -7865,42 +7901,42 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::PortsCommand</name>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="16"/>
+        <location filename="../cli/PortsCommand.cpp" line="16"/>
         <source>List serial ports and USB adapters</source>
         <translation>シリアルポートと USB アダプタを一覧表示します</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="23"/>
+        <location filename="../cli/PortsCommand.cpp" line="23"/>
         <source>error: ports takes no arguments</source>
         <translation>エラー: ports は引数を取りません</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="43"/>
+        <location filename="../cli/PortsCommand.cpp" line="43"/>
         <source>No serial ports found.</source>
         <translation>シリアルポートが見つかりません。</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="47"/>
+        <location filename="../cli/PortsCommand.cpp" line="47"/>
         <source>Port</source>
         <translation>ポート</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="48"/>
+        <location filename="../cli/PortsCommand.cpp" line="48"/>
         <source>Adapter</source>
         <translation>アダプタ</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="49"/>
+        <location filename="../cli/PortsCommand.cpp" line="49"/>
         <source>Manufacturer</source>
         <translation>メーカ</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="50"/>
+        <location filename="../cli/PortsCommand.cpp" line="50"/>
         <source>Serial no.</source>
         <translation>シリアル番号</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="51"/>
+        <location filename="../cli/PortsCommand.cpp" line="51"/>
         <source>VID:PID</source>
         <translation>VID:PID</translation>
     </message>
@@ -7908,37 +7944,37 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="27"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="27"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>生産モード（出荷検査）(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="30"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="30"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>出荷検査ステーションの作業者画面。元に戻すまでパラメータは編集できません (Ctrl+Shift+P)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="33"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="33"/>
         <source>&amp;Full screen</source>
         <translation>全画面表示(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="49"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="49"/>
         <source>Production mode</source>
         <translation>生産モード</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="50"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="50"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>製品を試験中です。エンジニアリングモードに戻る前に、キャンセル (Esc) するか試験の終了を待ってください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="79"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="79"/>
         <source>Results database</source>
         <translation>結果データベース</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="80"/>
         <source>%1
 
 No unit can be tested until results can be recorded.</source>
@@ -7947,17 +7983,17 @@ No unit can be tested until results can be recorded.</source>
 結果を記録できるようになるまで、製品を試験できません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="95"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="95"/>
         <source>A unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="96"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="96"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>製品 %1 を試験中です。キャンセルして「%2」を実行しますか？ 先にモータを停止し、製品は中止として記録します。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="108"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="108"/>
         <source>cancelled to %1</source>
         <translation>「%1」のためキャンセル</translation>
     </message>
@@ -7965,47 +8001,47 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProductionOptions</name>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="31"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="31"/>
         <source>Start in production mode (end-of-line station) with this recipe.</source>
         <translation>このレシピで生産モード（出荷検査ステーション）で起動します。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="32"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="32"/>
         <source>RECIPE</source>
         <translation>RECIPE</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="33"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
         <source>Per-unit values (CSV by serial number) for production mode.</source>
         <translation>生産モードの個別値（シリアル番号別 CSV）。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="33"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="35"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="35"/>
         <source>Results database for production mode: an SQLite file or postgresql://user@host/db.</source>
         <translation>生産モードの結果データベース: SQLite ファイルまたは postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="36"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="36"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="37"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="37"/>
         <source>Start full screen.</source>
         <translation>全画面で起動します。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="44"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="44"/>
         <source>--units and --results-db go with --production RECIPE</source>
         <translation>--units と --results-db は --production RECIPE と一緒に使用します</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="54"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="54"/>
         <source>%1 cannot be run:
   %2</source>
         <translation>%1 は実行できません:
@@ -8015,82 +8051,82 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="65"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="66"/>
         <source>Open recipe…</source>
         <translation>レシピを開く…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="66"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
         <source>Per-unit values…</source>
         <translation>個別値…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="69"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="70"/>
         <source>operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="72"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="73"/>
         <source>Recipe:</source>
         <translation>レシピ:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="77"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="78"/>
         <source>Operator:</source>
         <translation>作業者:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="83"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="84"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>シリアル番号をスキャンまたは入力し、Enter を押してください</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="84"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
         <source>Cancel unit (Esc)</source>
         <translation>試験をキャンセル (Esc)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="102"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="103"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="102"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="103"/>
         <source>Now</source>
         <translation>実行中</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="109"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
         <source>Time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="109"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
         <source>Serial</source>
         <translation>シリアル</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="109"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="109"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
         <source>Reason</source>
         <translation>理由</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="145"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="146"/>
         <source>READY</source>
         <translation>準備完了</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="167"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="174"/>
         <source>Recipe not usable</source>
         <translation>レシピを使用できません</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="168"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="175"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -8099,126 +8135,126 @@ No unit can be tested until results can be recorded.</source>
 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="180"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="187"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="180"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="187"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="187"/>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="193"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="194"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="200"/>
         <source>Per-unit values</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="188"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/ProductionView.cpp" line="200"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="207"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — ドライバ %n 台</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="204"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="211"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;なし: 製品のレシピを開いてください&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="205"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="212"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>ステーション %1 · 結果: %2 · 個別値: %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="207"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
         <source>loaded</source>
         <translation>読込み済み</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="207"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="214"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="221"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>試験 %1 · 合格 %2 · 不合格 %3 · 直行率 %4 %</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="244"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
         <source>Per-unit value</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="245"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>ドライバ %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="258"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
         <source>NOT STARTED</source>
         <translation>未開始</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="274"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="281"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="275"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="282"/>
         <source>drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="276"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="283"/>
         <source>waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="279"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
         <source>TESTING</source>
         <translation>試験中</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="279"/>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="300"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
         <source>Unit %1</source>
         <translation>製品 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="296"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="303"/>
         <source>NOT RECORDED: %1</source>
         <translation>未記録: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="299"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="306"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="303"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="306"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
         <source>ABORTED</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="317"/>
         <source>Motor not confirmed stopped</source>
         <translation>モータの停止が確認できません</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="311"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="318"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -8230,32 +8266,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="336"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="336"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>オフセット %1 で JSON が不正です: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="340"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="340"/>
         <source>the top level must be a JSON object</source>
         <translation>最上位は JSON オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="351"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="351"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot; が空です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="362"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="362"/>
         <source>must be an object</source>
         <translation>オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="364"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
         <source>name repeated</source>
         <translation>名前が重複しています</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="379"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="379"/>
         <source>%1: cannot open: %2</source>
         <translation>%1: 開けません: %2</translation>
     </message>
@@ -8263,12 +8299,12 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Progress</name>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="74"/>
+        <location filename="../cli/ScanCommand.cpp" line="74"/>
         <source>scanning %1/%2 (%3 %), machine number %4, %5 found</source>
         <translation>スキャン中 %1/%2 (%3 %)、局番 %4、%5 台検出</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="89"/>
+        <location filename="../cli/ScanCommand.cpp" line="89"/>
         <source>scan: %1 % (%2 of %3 machine numbers), %4 found</source>
         <translation>スキャン: %1 %（%3 局番中 %2）、%4 台検出</translation>
     </message>
@@ -8276,22 +8312,22 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::PtySimServer</name>
     <message>
-        <location filename="../main/sim/PtySimServer.cpp" line="49"/>
+        <location filename="../sim/PtySimServer.cpp" line="49"/>
         <source>cannot open a pseudo-terminal: %1</source>
         <translation>疑似端末を開けません: %1</translation>
     </message>
     <message>
-        <location filename="../main/sim/PtySimServer.cpp" line="66"/>
+        <location filename="../sim/PtySimServer.cpp" line="66"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1 は既に存在し、シンボリックリンクではありません。置き換えません</translation>
     </message>
     <message>
-        <location filename="../main/sim/PtySimServer.cpp" line="72"/>
+        <location filename="../sim/PtySimServer.cpp" line="72"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>シンボリックリンク %1 -&gt; %2 を作成できません</translation>
     </message>
     <message>
-        <location filename="../main/sim/PtySimServer.cpp" line="114"/>
+        <location filename="../sim/PtySimServer.cpp" line="114"/>
         <source>the port is plugged in: %1</source>
         <translation>ポートを接続しました: %1</translation>
     </message>
@@ -8299,52 +8335,52 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Recipe</name>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="62"/>
+        <location filename="../model/eol/Recipe.cpp" line="62"/>
         <source>take communication priority</source>
         <translation>通信優先にする</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="64"/>
+        <location filename="../model/eol/Recipe.cpp" line="64"/>
         <source>select running data</source>
         <translation>運転データを選択</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="66"/>
+        <location filename="../model/eol/Recipe.cpp" line="66"/>
         <source>set the speed command</source>
         <translation>速度指令を設定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="68"/>
+        <location filename="../model/eol/Recipe.cpp" line="68"/>
         <source>start</source>
         <translation>運転開始</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="70"/>
+        <location filename="../model/eol/Recipe.cpp" line="70"/>
         <source>wait for speed</source>
         <translation>速度到達を待機</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="72"/>
+        <location filename="../model/eol/Recipe.cpp" line="72"/>
         <source>hold and measure</source>
         <translation>保持して測定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="74"/>
+        <location filename="../model/eol/Recipe.cpp" line="74"/>
         <source>check for alarms and warnings</source>
         <translation>アラームと警告をチェック</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="76"/>
+        <location filename="../model/eol/Recipe.cpp" line="76"/>
         <source>stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="78"/>
+        <location filename="../model/eol/Recipe.cpp" line="78"/>
         <source>read and compare</source>
         <translation>読出しと比較</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="106"/>
+        <location filename="../model/eol/Recipe.cpp" line="106"/>
         <source>position %1 (machine number %2)</source>
         <translation>位置 %1（局番 %2）</translation>
     </message>
@@ -8352,17 +8388,17 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeBuilder</name>
     <message>
-        <location filename="../main/model/eol/RecipeBuilder.cpp" line="208"/>
+        <location filename="../model/eol/RecipeBuilder.cpp" line="208"/>
         <source>%1: unknown family &quot;%2&quot;</source>
         <translation>%1: 不明なファミリ &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeBuilder.cpp" line="228"/>
+        <location filename="../model/eol/RecipeBuilder.cpp" line="228"/>
         <source>%1: %2 holds a value the profile does not allow: %3</source>
         <translation>%1: %2 にプロファイルで許可されていない値があります: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeBuilder.cpp" line="261"/>
+        <location filename="../model/eol/RecipeBuilder.cpp" line="261"/>
         <source>no drive to make a recipe of</source>
         <translation>レシピを作成するドライバがありません</translation>
     </message>
@@ -8370,160 +8406,160 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeChecker</name>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="61"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="61"/>
         <source> (for %1)</source>
         <translation> (%1 用)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="93"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="93"/>
         <source>the recipe names no product</source>
         <translation>レシピに製品名がありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="95"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="95"/>
         <source>the recipe has no revision</source>
         <translation>レシピにリビジョンがありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="97"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="97"/>
         <source>the recipe names no drive</source>
         <translation>レシピにドライバが指定されていません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="104"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="104"/>
         <source>%1: machine number %2 is already position %3; every drive of a unit needs its own machine number</source>
         <translation>%1: 局番 %2 はすでに位置 %3 で使用されています。製品の各ドライバには固有の局番が必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="126"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="126"/>
         <source>%1: unknown family &quot;%2&quot;; known: %3</source>
         <translation>%1: 不明なファミリ &quot;%2&quot;。既知: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="132"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="132"/>
         <source>%1: a %2 takes machine numbers %3–%4</source>
         <translation>%1: %2 の局番は %3–%4 です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="145"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="145"/>
         <source>%1: the %2 has no variant &quot;%3&quot;; known: %4</source>
         <translation>%1: %2 に機種 &quot;%3&quot; はありません。既知: %4</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="147"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="147"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="149"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="149"/>
         <source>%1: variant &quot;%2&quot; is named twice</source>
         <translation>%1: 機種 &quot;%2&quot; が 2 回指定されています</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="162"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="162"/>
         <source>%1: firmware version &quot;%2&quot; is not a version as the drive reports it (major.minor, e.g. &quot;1.5&quot;)</source>
         <translation>%1: ファームウェアバージョン &quot;%2&quot; はドライバが通知する形式ではありません（major.minor、例: &quot;1.5&quot;）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="175"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="175"/>
         <source>the %1 has no setting &quot;%2&quot;</source>
         <translation>%1 に設定 &quot;%2&quot; はありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="177"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="177"/>
         <source>%1 is not a setting a recipe can write</source>
         <translation>%1 はレシピで書き込める設定ではありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="179"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="179"/>
         <source>%1 decides how the drive communicates; a recipe cannot change it, or the station would lose the drive in the middle of the run</source>
         <translation>%1 はドライバの通信方法を決める設定です。レシピでは変更できません（変更すると、実行中にステーションがドライバを見失います）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="199"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="199"/>
         <source>%1: setting %2</source>
         <translation>%1: 設定 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="204"/>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="269"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="204"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="269"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="210"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="210"/>
         <source>%1 is given twice</source>
         <translation>%1 が 2 回指定されています</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="218"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="218"/>
         <source>%1: what it allows depends on %2, which the recipe does not set; add %2 to the settings</source>
         <translation>%1: 許容値は %2 に依存しますが、レシピで設定されていません。%2 を設定に追加してください</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="227"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="227"/>
         <source>%1 decides what %2 allows; set %2 in the recipe too, or the drive may be left with a value that is no longer valid</source>
         <translation>%1 は %2 の許容値を決めます。%2 もレシピで設定してください。設定しないと、ドライバに無効な値が残る可能性があります</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="243"/>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="311"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="243"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="311"/>
         <source>%1: unit &quot;%2&quot;, but the drive&apos;s value is in &quot;%3&quot;</source>
         <translation>%1: 単位が &quot;%2&quot; ですが、ドライバの値の単位は &quot;%3&quot; です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="264"/>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="364"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="264"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="364"/>
         <source>%1: per-unit value %2</source>
         <translation>%1: 個別値 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="275"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="275"/>
         <source>%1 is given twice (as a setting or as a per-unit value)</source>
         <translation>%1 が 2 回指定されています（設定または個別値として）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="281"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="281"/>
         <source>%1: the range&apos;s lowest value %2 is above its highest value %3</source>
         <translation>%1: 範囲の最小値 %2 が最大値 %3 を超えています</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="302"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="302"/>
         <source>%1: what it allows depends on %2, which the recipe does not set</source>
         <translation>%1: 許容値は %2 に依存しますが、レシピで設定されていません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="309"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="309"/>
         <source>%1 is not a number; a per-unit value needs a numeric setting</source>
         <translation>%1 は数値ではありません。個別値には数値の設定が必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="314"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="314"/>
         <source>%1: range %2–%3%4</source>
         <translation>%1: 範囲 %2–%3%4</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="320"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="320"/>
         <source>%1 is outside what the drive allows: %2%3</source>
         <translation>%1 はドライバの許容範囲外です: %2%3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="332"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="332"/>
         <source>%1 includes values the drive does not allow; allowed: %2%3</source>
         <translation>%1 にドライバで許可されていない値が含まれています。許容値: %2%3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="357"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="357"/>
         <source>%1: per-unit value %2: %3%4 is outside the recipe&apos;s range %5–%6%4</source>
         <translation>%1: 個別値 %2: %3%4 はレシピの範囲 %5–%6%4 外です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="368"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="368"/>
         <source>%1: the recipe has no per-unit value %2</source>
         <translation>%1: レシピに個別値 %2 はありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="371"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="371"/>
         <source>the recipe has no drive at machine number %1</source>
         <translation>レシピに局番 %1 のドライバはありません</translation>
     </message>
@@ -8531,218 +8567,218 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeEditor</name>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="46"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="46"/>
         <source>Recipe editor</source>
         <translation>レシピエディタ</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="66"/>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="403"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="66"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="403"/>
         <source>Revision:</source>
         <translation>リビジョン:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="68"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="68"/>
         <source>Product:</source>
         <translation>製品:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="69"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="69"/>
         <source>Description:</source>
         <translation>説明:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="70"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
         <source>Position:</source>
         <translation>位置:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="107"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="107"/>
         <source>New from drives on the bus…</source>
         <translation>バス上のドライバから新規作成…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="108"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
         <source>New from backup file…</source>
         <translation>バックアップファイルから新規作成…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="109"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
         <source>Open…</source>
         <translation>開く…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>Save as…</source>
         <translation>名前を付けて保存…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="152"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="152"/>
         <source>%1: %2%3</source>
         <translation>%1: %2%3</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="155"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="155"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="224"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="224"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>マスター品のバス上のドライバまたはバックアップファイルからレシピを作成するか、既存のレシピを開いてください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="228"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="228"/>
         <source>the recipe is empty</source>
         <translation>レシピが空です</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="242"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="242"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="246"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="246"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>レシピはチェックに合格しました: 保存して実行できます。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="249"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 件の問題: 修正するまでレシピを保存できません。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="261"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="261"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>レシピがチェックに合格しません（%n 件の問題）。何も保存していません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="277"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="277"/>
         <source>cannot read %1: %2</source>
         <translation>%1 を読み込めません: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="289"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="289"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 は OpenTOP のレシピファイルではありません</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="296"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
         <source>Opened %1</source>
         <translation>%1 を開きました</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="297"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="297"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>%1 を開きましたが、そのままでは読み込めません (%2)。保存時にチェックし、再度署名します。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="317"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="317"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>%1 から新規レシピ: 設定と試験ステップの規格値を確認してから保存してください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="329"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="329"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>局番 %1 はバス上の既知のドライバではありません。先にバスをスキャンしてください</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="334"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>マスター品の設定を読出し中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="334"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="349"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="349"/>
         <source>cancelled: no recipe was made</source>
         <translation>キャンセル: レシピは作成していません</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="375"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="375"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="388"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="388"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="389"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="389"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>レシピ (*.json);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="398"/>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="403"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="398"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="403"/>
         <source>New recipe</source>
         <translation>新規レシピ</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="398"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="398"/>
         <source>Product name:</source>
         <translation>製品名:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="411"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="411"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>マスター品のバックアップファイル</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="412"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="412"/>
         <source>Backups (*.json)</source>
         <translation>バックアップ (*.json)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="424"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="424"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>バス上にドライバがありません: 先に接続してスキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="432"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="432"/>
         <source>New recipe from drives</source>
         <translation>ドライバから新規レシピ</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="433"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="433"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>マスター品のドライバの局番（検出: %1）:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="443"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="443"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot; は局番 (1–247) ではありません</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="452"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="452"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>バス上のドライバから新規レシピ: 設定と試験ステップの規格値を確認してから保存してください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="463"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="463"/>
         <source>Save recipe</source>
         <translation>レシピを保存</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="465"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="465"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="470"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="470"/>
         <source>Saved and signed: %1</source>
         <translation>保存・署名しました: %1</translation>
     </message>
@@ -8750,17 +8786,17 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../main/model/eol/RecipeFile.cpp" line="250"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="250"/>
         <source>cannot read %1: %2</source>
         <translation>%1 を読み込めません: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeFile.cpp" line="257"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="257"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1 は %2 MB を超えています（レシピファイルの上限）。レシピファイルではありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeFile.cpp" line="265"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="265"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -8768,153 +8804,153 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeParser</name>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="45"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="45"/>
         <source>not a JSON file: %1 at byte %2</source>
         <translation>JSON ファイルではありません: %2 バイト目で %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="49"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="49"/>
         <source>not an OpenTOP recipe file: the JSON is not an object</source>
         <translation>OpenTOP のレシピファイルではありません: JSON がオブジェクトではありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="70"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="70"/>
         <source>&quot;positions&quot;: the recipe names no drive</source>
         <translation>&quot;positions&quot;: レシピにドライバが指定されていません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="75"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="75"/>
         <source>%1: must be an object</source>
         <translation>%1: オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="92"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="92"/>
         <source>not an OpenTOP recipe file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>OpenTOP のレシピファイルではありません（&quot;format&quot; が &quot;%2&quot; ではなく &quot;%1&quot; です）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="94"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="94"/>
         <source>not an OpenTOP recipe file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>OpenTOP のレシピファイルではありません（&quot;format&quot;: &quot;%1&quot; がありません）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="99"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="99"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot; は 1 以上の整数でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="101"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="101"/>
         <source>written by a newer OpenTOP (recipe format version %1); this version reads recipe format version %2</source>
         <translation>新しい OpenTOP で書き込まれています（レシピフォーマットバージョン %1）。このバージョンが読み込めるのはレシピフォーマットバージョン %2 です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="107"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="107"/>
         <source>the recipe has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>レシピにチェックサムがありません（&quot;checksum&quot;: &quot;sha256:…&quot;）。OpenTOP で書き込まれていないか、書込み後に変更されています</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="113"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="113"/>
         <source>the recipe was changed after it was written (checksum mismatch); open and save it with OpenTOP to accept the change</source>
         <translation>書込み後にレシピが変更されています（チェックサム不一致）。変更を承認するには OpenTOP で開いて保存してください</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="130"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="130"/>
         <source>%1: &quot;machineNumber&quot; must be a machine number 1–247</source>
         <translation>%1: &quot;machineNumber&quot; は局番 1–247 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="132"/>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="208"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="132"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="208"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="176"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="176"/>
         <source>%1 (%2): &quot;value&quot; must be a number or a text</source>
         <translation>%1 (%2): &quot;value&quot; は数値またはテキストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="192"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="192"/>
         <source>%1 (%2): &quot;source&quot; must be &quot;csv&quot; or &quot;operator&quot;, not &quot;%3&quot;</source>
         <translation>%1 (%2): &quot;source&quot; は &quot;%3&quot; ではなく &quot;csv&quot; または &quot;operator&quot; でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="205"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="205"/>
         <source>%1: unknown step type &quot;%2&quot;; known: %3</source>
         <translation>%1: 不明なステップタイプ &quot;%2&quot;。既知: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="219"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="219"/>
         <source>%1: &quot;spno&quot; must be a running data number such as 2</source>
         <translation>%1: &quot;spno&quot; は運転データ番号（例: 2）でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="232"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="232"/>
         <source>%1: &quot;direction&quot; must be &quot;cw&quot; or &quot;ccw&quot;</source>
         <translation>%1: &quot;direction&quot; は &quot;cw&quot; または &quot;ccw&quot; でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="276"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="276"/>
         <source>%1: give either &quot;equals&quot; or limits, not both</source>
         <translation>%1: &quot;equals&quot; または規格値のいずれか一方を指定してください（両方は不可）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="282"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="282"/>
         <source>%1: unknown step</source>
         <translation>%1: 不明なステップ</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="298"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="298"/>
         <source>%1: &quot;unit&quot; must be a text (&quot;&quot; for a value without a unit)</source>
         <translation>%1: &quot;unit&quot; はテキストでなければなりません（単位のない値は &quot;&quot;）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="301"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="301"/>
         <source>%1: a limit needs &quot;lower&quot;, &quot;upper&quot; or both</source>
         <translation>%1: 規格値には &quot;lower&quot;、&quot;upper&quot;、またはその両方が必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="309"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="309"/>
         <source>%1: unknown key &quot;%2&quot;; allowed: %3</source>
         <translation>%1: 不明なキー &quot;%2&quot;。使用可能: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="323"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="323"/>
         <source>%1&quot;%2&quot; must be a non-empty text</source>
         <translation>%1&quot;%2&quot; は空でないテキストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="324"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="324"/>
         <source>%1&quot;%2&quot; must be a text</source>
         <translation>%1&quot;%2&quot; はテキストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="336"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="336"/>
         <source>%1: &quot;%2&quot; must be a list of texts</source>
         <translation>%1: &quot;%2&quot; はテキストのリストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="339"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="339"/>
         <source>%1: &quot;%2&quot; must be a list of non-empty texts</source>
         <translation>%1: &quot;%2&quot; は空でないテキストのリストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="349"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="349"/>
         <source>%1: &quot;%2&quot; must be a number</source>
         <translation>%1: &quot;%2&quot; は数値でなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="375"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="375"/>
         <source>%1&quot;%2&quot; must be a list</source>
         <translation>%1&quot;%2&quot; はリストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="378"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="378"/>
         <source>%1&quot;%2&quot; has %3 entries; at most %4 are allowed</source>
         <translation>%1&quot;%2&quot; のエントリが %3 個あります。最大 %4 個までです</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="384"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="384"/>
         <source>%1&quot;%2&quot;: every entry must be an object</source>
         <translation>%1&quot;%2&quot;: すべてのエントリはオブジェクトでなければなりません</translation>
     </message>
@@ -8922,151 +8958,151 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipePositionForm</name>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="125"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="125"/>
         <source>every variant of the family, e.g. dbu200, dbu400</source>
         <translation>ファミリの全機種（例: dbu200, dbu400）</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="127"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="127"/>
         <source>any firmware, e.g. 1.5, 1.6</source>
         <translation>任意のファームウェア（例: 1.5, 1.6）</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Unit</source>
         <translation>単位</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Min</source>
         <translation>最小</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Max</source>
         <translation>最大</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Source</source>
         <translation>入力元</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="139"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="139"/>
         <source>Add per-unit value…</source>
         <translation>個別値を追加…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="139"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="139"/>
         <source>Add setting…</source>
         <translation>設定を追加…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="140"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="140"/>
         <source>Remove</source>
         <translation>削除</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="153"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="153"/>
         <source>Settings</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="154"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="154"/>
         <source>Per-unit values</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="155"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="155"/>
         <source>Test steps (JSON)</source>
         <translation>試験ステップ (JSON)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="158"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
         <source>Machine number:</source>
         <translation>局番:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="159"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
         <source>Name:</source>
         <translation>名称:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="160"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="160"/>
         <source>Family:</source>
         <translation>ファミリ:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="161"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="161"/>
         <source>Allowed variants:</source>
         <translation>許可する機種:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="162"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="162"/>
         <source>Allowed firmware:</source>
         <translation>許可するファームウェア:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="188"/>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="352"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="188"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="352"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="232"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="232"/>
         <source>CSV file</source>
         <translation>CSV ファイル</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="233"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="233"/>
         <source>typed by the operator</source>
         <translation>作業者が入力</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="281"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="281"/>
         <source>test steps: %1 at character %2</source>
         <translation>試験ステップ: %2 文字目で %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="283"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="283"/>
         <source>test steps: must be a JSON array of steps: [ {...}, ... ]</source>
         <translation>試験ステップ: ステップの JSON 配列でなければなりません: [ {...}, ... ]</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="294"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="294"/>
         <source>(unknown: %1)</source>
         <translation>（不明: %1）</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="357"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="357"/>
         <source>Add a per-unit value</source>
         <translation>個別値を追加</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="357"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="357"/>
         <source>Add a setting</source>
         <translation>設定を追加</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="358"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="358"/>
         <source>Setting:</source>
         <translation>設定:</translation>
     </message>
@@ -9074,143 +9110,143 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeStepChecker</name>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="22"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="22"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="40"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="40"/>
         <source>a %1 cannot do this step</source>
         <translation>%1 ではこのステップを実行できません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="53"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="53"/>
         <source>%1, step %2 (%3)</source>
         <translation>%1、ステップ %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="63"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="63"/>
         <source>the drive takes motion commands only with communication priority; put a priority step before it</source>
         <translation>ドライバは通信優先でのみ運転コマンドを受け付けます。その前に優先切替えステップを入れてください</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="71"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="71"/>
         <source>the motor is not running here; put a start step before it</source>
         <translation>ここではモータが運転していません。その前に運転開始ステップを入れてください</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="82"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="82"/>
         <source>%1: the steps leave the motor running; end them with a stop step</source>
         <translation>%1: ステップ終了時にモータが運転したままです。停止ステップで終了してください</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="92"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="92"/>
         <source>%1 %2 s is not sane; give more than 0 s and at most %3 s</source>
         <translation>%1 %2 s は妥当ではありません。0 s より大きく %3 s 以下を指定してください</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="105"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="105"/>
         <source>unit &quot;%1&quot;, but %2 is measured in &quot;%3&quot;</source>
         <translation>単位が &quot;%1&quot; ですが、%2 の単位は &quot;%3&quot; です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="129"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="129"/>
         <source>the profile&apos;s selection parameter is missing</source>
         <translation>プロファイルの選択パラメータがありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="131"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="131"/>
         <source>running data %1: %2</source>
         <translation>運転データ %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="146"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="146"/>
         <source>what %1 means depends on %2, which the recipe does not set; add it to the settings</source>
         <translation>%1 の意味は %2 に依存しますが、レシピで設定されていません。設定に追加してください</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="154"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="154"/>
         <source>a speed of 0 stops the motor; use a stop step</source>
         <translation>速度 0 ではモータが停止します。停止ステップを使用してください</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="168"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="168"/>
         <source>unit &quot;%1&quot;, but with these settings %2 is in &quot;%3&quot;</source>
         <translation>単位が &quot;%1&quot; ですが、これらの設定では %2 の単位は &quot;%3&quot; です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="185"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="185"/>
         <source>a %1 does not report its target speed; give the target</source>
         <translation>%1 は目標速度を通知しません。目標を指定してください</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="187"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="187"/>
         <source>the target speed must be above 0</source>
         <translation>目標速度は 0 より大きくなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="190"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="190"/>
         <source>the tolerance %1 must be above 0 and below the target speed</source>
         <translation>許容差 %1 は 0 より大きく、目標速度より小さくなければなりません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="194"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="194"/>
         <source>the time to reach the speed</source>
         <translation>速度到達時間</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="198"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="198"/>
         <source>the hold time</source>
         <translation>保持時間</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="200"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="200"/>
         <source>the step measures nothing; give limits</source>
         <translation>このステップは何も測定しません。規格値を指定してください</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="208"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="208"/>
         <source>the margin</source>
         <translation>マージン</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="211"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="211"/>
         <source>a %1 has no deceleration time setting to wait for; give the deceleration (0 s when it brakes at once)</source>
         <translation>%1 には待機すべき減速時間の設定がありません。減速時間を指定してください（即時ブレーキの場合は 0 s）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="217"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="217"/>
         <source>the deceleration time %1 s is not sane; give 0–%2 s</source>
         <translation>減速時間 %1 s は妥当ではありません。0–%2 s を指定してください</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="232"/>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="274"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="232"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="274"/>
         <source>the %1 has no readable value &quot;%2&quot;</source>
         <translation>%1 に読出し可能な値 &quot;%2&quot; はありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="237"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="237"/>
         <source>%1 is not a number</source>
         <translation>%1 は数値ではありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="247"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="247"/>
         <source>%1: &quot;%2&quot; is not a statistic; use min, mean or max</source>
         <translation>%1: &quot;%2&quot; は統計値ではありません。min、mean、max のいずれかを使用してください</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="254"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="254"/>
         <source>%1: the limit&apos;s unit is &quot;%2&quot;, but the value is measured in &quot;%3&quot;</source>
         <translation>%1: 規格値の単位は &quot;%2&quot; ですが、値の単位は &quot;%3&quot; です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="261"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="261"/>
         <source>%1: the lower limit %2 %4 is above the upper limit %3 %4</source>
         <translation>%1: 下限 %2 %4 が上限 %3 %4 を超えています</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="283"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="283"/>
         <source>%1 is a number; compare it with lower and upper limits</source>
         <translation>%1 は数値です。下限・上限の規格値と比較してください</translation>
     </message>
@@ -9218,42 +9254,42 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreChoice</name>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
         <source>Drive in file / setting</source>
         <translation>ファイル内のドライバ / 設定</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
         <source>Value in file</source>
         <translation>ファイルの値</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
         <source>Restore to</source>
         <translation>復元先</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="54"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="54"/>
         <source>(do not restore)</source>
         <translation>（復元しない）</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="58"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="58"/>
         <source>Drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="117"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="117"/>
         <source>Two drives of the file would be restored to drive %1.</source>
         <translation>ファイルの 2 台のドライバがドライバ %1 に復元されます。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="122"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="122"/>
         <source>Drive %1 is not on the bus (or not identified).</source>
         <translation>ドライバ %1 がバス上にありません（または未識別）。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="134"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="134"/>
         <source>Nothing chosen: tick at least one setting of a drive with a target.</source>
         <translation>何も選択されていません: 復元先のあるドライバの設定を少なくとも 1 つチェックしてください。</translation>
     </message>
@@ -9261,123 +9297,123 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreCommand</name>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="36"/>
+        <location filename="../cli/RestoreCommand.cpp" line="36"/>
         <source>Show what a backup file would change on its drives; with --yes write it, verified</source>
         <translation>バックアップファイルによるドライバの変更内容を表示します。--yes で書き込み、照合します</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="41"/>
+        <location filename="../cli/RestoreCommand.cpp" line="41"/>
         <source>Restore only these drives of the file, e.g. 1,5-7.</source>
         <translation>ファイル内のこれらのドライバのみ復元します。例: 1,5-7。</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="42"/>
+        <location filename="../cli/RestoreCommand.cpp" line="42"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="43"/>
+        <location filename="../cli/RestoreCommand.cpp" line="43"/>
         <source>Read the drives and show the plan; write nothing.</source>
         <translation>ドライバを読み出して計画を表示します。何も書き込みません。</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="44"/>
+        <location filename="../cli/RestoreCommand.cpp" line="44"/>
         <source>Write the plan (without it restore only shows it).</source>
         <translation>計画を書き込みます（指定しない場合、restore は表示のみ）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="80"/>
+        <location filename="../cli/RestoreCommand.cpp" line="80"/>
         <source>%1: the drive&apos;s settings were not read; nothing compared, nothing written</source>
         <translation>%1: ドライバの設定を読み出せませんでした。比較も書込みもしていません</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="86"/>
-        <location filename="../main/cli/RestoreCommand.cpp" line="124"/>
+        <location filename="../cli/RestoreCommand.cpp" line="86"/>
+        <location filename="../cli/RestoreCommand.cpp" line="124"/>
         <source>note: %1</source>
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="91"/>
         <source>parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="91"/>
         <source>file value</source>
         <translation>ファイルの値</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="91"/>
         <source>device value</source>
         <translation>デバイスの値</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="92"/>
+        <location filename="../cli/RestoreCommand.cpp" line="92"/>
         <source>result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="92"/>
+        <location filename="../cli/RestoreCommand.cpp" line="92"/>
         <source>action</source>
         <translation>操作</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="106"/>
+        <location filename="../cli/RestoreCommand.cpp" line="106"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>%1 個を書込み・照合、%2 個は変更なし、%3 個は失敗、%4 個は未実行</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="112"/>
+        <location filename="../cli/RestoreCommand.cpp" line="112"/>
         <source>, %1 not confirmed</source>
         <translation>、%1 個は未確認</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="114"/>
+        <location filename="../cli/RestoreCommand.cpp" line="114"/>
         <source>; %1 of %2 store commands written</source>
         <translation>。保存コマンド %2 個中 %1 個を書込み</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="149"/>
+        <location filename="../cli/RestoreCommand.cpp" line="149"/>
         <source>error: name one backup file: restore FILE [--ids LIST] [--yes]</source>
         <translation>エラー: バックアップファイルを 1 つ指定してください: restore FILE [--ids LIST] [--yes]</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="163"/>
+        <location filename="../cli/RestoreCommand.cpp" line="163"/>
         <source>error: --ids: %1</source>
         <translation>エラー: --ids: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="168"/>
+        <location filename="../cli/RestoreCommand.cpp" line="168"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>エラー: %1 に局番 %2 のドライバは含まれていません。含まれているのは %3 です</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="191"/>
+        <location filename="../cli/RestoreCommand.cpp" line="191"/>
         <source>error: %1; nothing written</source>
         <translation>エラー: %1。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="199"/>
+        <location filename="../cli/RestoreCommand.cpp" line="199"/>
         <source>error: %1: %2</source>
         <translation>エラー: %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="228"/>
+        <location filename="../cli/RestoreCommand.cpp" line="228"/>
         <source>not attempted</source>
         <translation>未実行</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="231"/>
+        <location filename="../cli/RestoreCommand.cpp" line="231"/>
         <source>%1: not attempted</source>
         <translation>%1: 未実行</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="253"/>
+        <location filename="../cli/RestoreCommand.cpp" line="253"/>
         <source>dry run: nothing written</source>
         <translation>ドライラン: 何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="254"/>
+        <location filename="../cli/RestoreCommand.cpp" line="254"/>
         <source>nothing written; add --yes to write</source>
         <translation>何も書き込んでいません。書き込むには --yes を付けてください</translation>
     </message>
@@ -9385,200 +9421,200 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreDialog</name>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="35"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="35"/>
         <source>&amp;Preview</source>
         <translation>プレビュー(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="36"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="36"/>
         <source>&amp;Write to drives…</source>
         <translation>ドライバに書込み(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="37"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
         <source>&amp;Cancel</source>
         <translation>キャンセル(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="38"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
         <source>&amp;Save report…</source>
         <translation>レポートを保存(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="40"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="40"/>
         <source>Restore from a backup file</source>
         <translation>バックアップファイルから復元</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="42"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="42"/>
         <source>No file chosen</source>
         <translation>ファイル未選択</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="43"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="43"/>
         <source>&amp;Choose file…</source>
         <translation>ファイルを選択(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="45"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="45"/>
         <source>File:</source>
         <translation>ファイル:</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="56"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="56"/>
         <source>Read the drives and show what would change; writes nothing</source>
         <translation>ドライバを読み出して変更内容を表示します。何も書き込みません</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="57"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="57"/>
         <source>Write the previewed changes, each verified by reading it back</source>
         <translation>プレビューした変更を書き込み、それぞれ読み戻して照合します</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="58"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
         <source>Stop after the write in progress has been verified</source>
         <translation>実行中の書込みの照合後に停止します</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="59"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
         <source>Save the report as text, or as CSV when the name ends in .csv</source>
         <translation>レポートをテキストで保存します（名前が .csv で終わる場合は CSV）</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="60"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
         <source>C&amp;lose</source>
         <translation>閉じる(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="96"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="96"/>
         <source>%1: no such file</source>
         <translation>%1: ファイルがありません</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="101"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="101"/>
         <source>the file could not be read</source>
         <translation>ファイルを読み込めませんでした</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="102"/>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="186"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="102"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="186"/>
         <source>Refused, nothing will be written: %1</source>
         <translation>拒否。何も書き込みません: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="107"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="107"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>ファイル内のドライバ %n 台。復元する内容を選択し、「プレビュー」を押してください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="148"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="148"/>
         <source>Refused, nothing written:</source>
         <translation>拒否。何も書き込んでいません:</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="150"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="150"/>
         <source>Drive %1 from %2: %3</source>
         <translation>ドライバ %1（%2 から）: %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="185"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="185"/>
         <source>Choose a backup file first.</source>
         <translation>先にバックアップファイルを選択してください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="227"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="227"/>
         <source>not attempted</source>
         <translation>未実行</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
         <source>Reading drive %1…</source>
         <translation>ドライバ %1 を読出し中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
         <source>Writing drive %1…</source>
         <translation>ドライバ %1 に書込み中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="239"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="239"/>
         <source>drive %1: %2 (%v of %m)</source>
         <translation>ドライバ %1: %2 (%v / %m)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="267"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="267"/>
         <source>Stopping after the write in progress has been verified…</source>
         <translation>実行中の書込みの照合後に停止します…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="282"/>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="373"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="282"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="373"/>
         <source>Drive %1: %2</source>
         <translation>ドライバ %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="285"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="285"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>書き込む設定 %n 個</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="292"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="292"/>
         <source>  Note: %1</source>
         <translation>  注: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="295"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="295"/>
         <source>Nothing written yet. Write to drives to apply.</source>
         <translation>まだ何も書き込んでいません。適用するには「ドライバに書込み」を押してください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="296"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="296"/>
         <source>Nothing written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="354"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="354"/>
         <source>Restore from backup file</source>
         <translation>バックアップファイルから復元</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="355"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="355"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP バックアップ (*.json);;すべてのファイル (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="375"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>ドライバ %1 に %n 個の設定を書き込み、それぞれ読み戻して照合しますか？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
         <source>Write to drives</source>
         <translation>ドライバに書込み</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
         <source>&amp;Write</source>
         <translation>書込み(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="385"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="385"/>
         <source>Save restore report</source>
         <translation>復元レポートを保存</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="386"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>テキスト (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="391"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="391"/>
         <source>Could not save %1: %2</source>
         <translation>%1 を保存できませんでした: %2</translation>
     </message>
@@ -9586,109 +9622,109 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestorePlan</name>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="69"/>
+        <location filename="../model/files/RestorePlan.cpp" line="69"/>
         <source>the file holds a %1 drive (%2), but machine number %3 is a %4 drive; nothing written</source>
         <translation>ファイルには %1 ドライバ (%2) が含まれていますが、局番 %3 は %4 ドライバです。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="76"/>
+        <location filename="../model/files/RestorePlan.cpp" line="76"/>
         <source>the file is from a %1 (%2), but machine number %3 is a %4 (%5); their allowed values differ, nothing written</source>
         <translation>ファイルは %1 (%2) のものですが、局番 %3 は %4 (%5) です。許容値が異なるため、何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="83"/>
+        <location filename="../model/files/RestorePlan.cpp" line="83"/>
         <source>the drive does not tell its variant: every value must suit all variants (name it with --variant to use its own ranges)</source>
         <translation>ドライバが機種を通知しません: すべての値が全機種に適合する必要があります（--variant で機種を指定すると、その機種の範囲を使用します）</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="152"/>
+        <location filename="../model/files/RestorePlan.cpp" line="152"/>
         <source>%1: the value cannot be written exactly</source>
         <translation>%1: 値を正確に書き込めません</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="165"/>
+        <location filename="../model/files/RestorePlan.cpp" line="165"/>
         <source>store commands are always written: what the drive has stored cannot be read back, only what it uses now</source>
         <translation>保存コマンドは常に書き込みます: ドライバが保存した値は読み戻せず、読み出せるのは現在使用中の値のみです</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/model/files/RestorePlan.cpp" line="176"/>
+        <location filename="../model/files/RestorePlan.cpp" line="176"/>
         <source>%n value(s) of the file may not be written to this drive; nothing written</source>
         <translation>
             <numerusform>ファイルの %n 個の値はこのドライバに書き込めません。何も書き込んでいません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="238"/>
+        <location filename="../model/files/RestorePlan.cpp" line="238"/>
         <source>keep</source>
         <translation>維持</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="240"/>
+        <location filename="../model/files/RestorePlan.cpp" line="240"/>
         <source>write</source>
         <translation>書込み</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="242"/>
+        <location filename="../model/files/RestorePlan.cpp" line="242"/>
         <source>store</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="253"/>
+        <location filename="../model/files/RestorePlan.cpp" line="253"/>
         <source>unchanged</source>
         <translation>変更なし</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="255"/>
         <source>written</source>
         <translation>書込み済み</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="255"/>
         <source>written and verified</source>
         <translation>書込み・照合済み</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="257"/>
+        <location filename="../model/files/RestorePlan.cpp" line="257"/>
         <source>failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="259"/>
+        <location filename="../model/files/RestorePlan.cpp" line="259"/>
         <source>not attempted</source>
         <translation>未実行</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="261"/>
+        <location filename="../model/files/RestorePlan.cpp" line="261"/>
         <source>not confirmed (%1): the drive may or may not hold it; run the restore again to read it back</source>
         <translation>未確認 (%1): ドライバがその値を保持しているかどうか不明です。復元を再実行して読み戻してください</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="286"/>
+        <location filename="../model/files/RestorePlan.cpp" line="286"/>
         <source>planned</source>
         <translation>計画済み</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="288"/>
+        <location filename="../model/files/RestorePlan.cpp" line="288"/>
         <source>restored</source>
         <translation>復元済み</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="290"/>
+        <location filename="../model/files/RestorePlan.cpp" line="290"/>
         <source>refused</source>
         <translation>拒否</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="292"/>
+        <location filename="../model/files/RestorePlan.cpp" line="292"/>
         <source>communication failure</source>
         <translation>通信失敗</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="294"/>
+        <location filename="../model/files/RestorePlan.cpp" line="294"/>
         <source>verification mismatch</source>
         <translation>照合不一致</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="296"/>
+        <location filename="../model/files/RestorePlan.cpp" line="296"/>
         <source>interrupted</source>
         <translation>中断</translation>
     </message>
@@ -9696,32 +9732,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestorePlanTable</name>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
         <source>Action</source>
         <translation>操作</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
         <source>File value</source>
         <translation>ファイルの値</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="13"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="13"/>
         <source>Drive value before</source>
         <translation>変更前のドライバの値</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="13"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="13"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
@@ -9729,62 +9765,62 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreReport</name>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="16"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="16"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>%1 個を書込み・照合、%2 個は変更なし、%3 個は失敗、%4 個は未実行</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="22"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="22"/>
         <source>, %1 not confirmed</source>
         <translation>、%1 個は未確認</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="24"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="24"/>
         <source>; %1 of %2 store commands written</source>
         <translation>。保存コマンド %2 個中 %1 個を書込み</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="33"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="33"/>
         <source>OpenTOP restore report</source>
         <translation>OpenTOP 復元レポート</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="33"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="33"/>
         <source>File: %1</source>
         <translation>ファイル: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="34"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
         <source>Date: %1 (UTC)</source>
         <translation>日時: %1 (UTC)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="37"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="37"/>
         <source>Written to the drives</source>
         <translation>ドライバに書込み済み</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="37"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="37"/>
         <source>Preview only: nothing written</source>
         <translation>プレビューのみ: 何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="40"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="40"/>
         <source>Machine number %1 from %2: %3</source>
         <translation>局番 %1（%2 から）: %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="51"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="51"/>
         <source>  %1: %2</source>
         <translation>  %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="53"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="53"/>
         <source>  %1: file %2, drive %3: %4</source>
         <translation>  %1: ファイル %2、ドライバ %3: %4</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="59"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="59"/>
         <source>  Note: %1</source>
         <translation>  注: %1</translation>
     </message>
@@ -9792,37 +9828,37 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Restorer</name>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="48"/>
+        <location filename="../model/files/Restorer.cpp" line="48"/>
         <source>interrupted before anything was written</source>
         <translation>何も書き込む前に中断しました</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="63"/>
+        <location filename="../model/files/Restorer.cpp" line="63"/>
         <source>reading the drive failed, nothing written (%1)</source>
         <translation>ドライバの読出しに失敗しました。何も書き込んでいません (%1)</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="99"/>
+        <location filename="../model/files/Restorer.cpp" line="99"/>
         <source>interrupted after %1 of %2 writes; run the restore again to complete it</source>
         <translation>%2 回中 %1 回の書込み後に中断しました。完了するには復元を再実行してください</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="134"/>
+        <location filename="../model/files/Restorer.cpp" line="134"/>
         <source>%1 not confirmed (%2): the drive may or may not hold it; run the restore again, it reads the drive back first</source>
         <translation>%1 未確認 (%2): ドライバがその値を保持しているかどうか不明です。復元を再実行してください（先にドライバを読み戻します）</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="168"/>
+        <location filename="../model/files/Restorer.cpp" line="168"/>
         <source>after storing, the drive holds %1</source>
         <translation>保存後のドライバの値は %1 です</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="173"/>
+        <location filename="../model/files/Restorer.cpp" line="173"/>
         <source>the settings could not be read back after storing</source>
         <translation>保存後に設定を読み戻せませんでした</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="206"/>
+        <location filename="../model/files/Restorer.cpp" line="206"/>
         <source>communication settings changed (%1): they take effect when the drive is next powered on; connect with the new settings after that</source>
         <translation>通信設定が変更されました (%1): 次回のドライバの電源投入時に有効になります。その後は新しい設定で接続してください</translation>
     </message>
@@ -9830,12 +9866,12 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultDatabase</name>
     <message>
-        <location filename="../main/model/eol/ResultDatabase.cpp" line="45"/>
+        <location filename="../model/eol/ResultDatabase.cpp" line="45"/>
         <source>results database %1: %2</source>
         <translation>結果データベース %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultDatabase.cpp" line="49"/>
+        <location filename="../model/eol/ResultDatabase.cpp" line="49"/>
         <source>the Qt SQL driver %1 is not installed (Debian: %2)</source>
         <translation>Qt SQL ドライバ %1 がインストールされていません (Debian: %2)</translation>
     </message>
@@ -9843,7 +9879,7 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultQueries</name>
     <message>
-        <location filename="../main/model/eol/ResultQueries.cpp" line="118"/>
+        <location filename="../model/eol/ResultQueries.cpp" line="118"/>
         <source>no unit record %1</source>
         <translation>製品の記録 %1 がありません</translation>
     </message>
@@ -9851,7 +9887,7 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultSchema</name>
     <message>
-        <location filename="../main/model/eol/ResultSchema.cpp" line="138"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="138"/>
         <source>the results database has schema version %1, newer than this program knows (%2): update OpenTOP on this station; nothing was written</source>
         <translation>結果データベースのスキーマバージョン %1 は、このプログラムが対応するバージョン (%2) より新しいです: このステーションの OpenTOP を更新してください。何も書き込んでいません</translation>
     </message>
@@ -9859,32 +9895,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultStore</name>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="55"/>
+        <location filename="../model/eol/ResultStore.cpp" line="72"/>
         <source>interrupted: the station stopped before the unit was finished (killed, power lost or crashed); the unit was not proven</source>
         <translation>中断: 製品の試験が終わる前にステーションが停止しました（強制終了、停電、クラッシュ）。製品は検証されていません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="63"/>
+        <location filename="../model/eol/ResultStore.cpp" line="80"/>
         <source>a unit needs a serial number</source>
         <translation>製品にはシリアル番号が必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="141"/>
+        <location filename="../model/eol/ResultStore.cpp" line="158"/>
         <source>a unit is finished with pass, fail or aborted, not %1</source>
         <translation>製品の終了は pass、fail、aborted のいずれかです（%1 は不可）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="164"/>
+        <location filename="../model/eol/ResultStore.cpp" line="181"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>製品 %1（シリアル %2）は結果データベースで開始されていません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="166"/>
+        <location filename="../model/eol/ResultStore.cpp" line="183"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>製品 %1（シリアル %2）はすでに %3 として記録されています。その記録を保持します</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="184"/>
+        <location filename="../model/eol/ResultStore.cpp" line="201"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>製品 %1（シリアル %2）は結果データベースで実行中ではありません: 開始されていないか、すでに終了または中断としてマークされています</translation>
     </message>
@@ -9892,32 +9928,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultUrl</name>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="43"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="43"/>
         <source>no database given: name a file or a postgresql:// URL</source>
         <translation>データベースが指定されていません: ファイルまたは postgresql:// URL を指定してください</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="51"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="51"/>
         <source>unknown database URL &quot;%1&quot;: use a file path, sqlite:PATH or postgresql://user@host/database</source>
         <translation>不明なデータベース URL &quot;%1&quot;: ファイルパス、sqlite:PATH、postgresql://user@host/database のいずれかを使用してください</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="55"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="55"/>
         <source>sqlite: needs a file path</source>
         <translation>sqlite: にはファイルパスが必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="84"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="84"/>
         <source>the host in &quot;%1&quot; has no closing ]</source>
         <translation>&quot;%1&quot; のホストに閉じ括弧 ] がありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="112"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="112"/>
         <source>unknown connection option &quot;%1&quot; in the database URL; known: %2</source>
         <translation>データベース URL の不明な接続オプション &quot;%1&quot;。既知: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="129"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="129"/>
         <source>the port &quot;%1&quot; in the database URL is not a number from 1 to 65535</source>
         <translation>データベース URL のポート &quot;%1&quot; が 1–65535 の数値ではありません</translation>
     </message>
@@ -9925,224 +9961,224 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="60"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
         <source>End-of-line results</source>
         <translation>出荷検査結果</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Started</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Serial</source>
         <translation>シリアル</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Recipe</source>
         <translation>レシピ</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Station</source>
         <translation>ステーション</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Time (s)</source>
         <translation>時間 (s)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>First failure</source>
         <translation>最初の不合格</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="82"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="82"/>
         <source>Export CSV…</source>
         <translation>CSV エクスポート…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="83"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="83"/>
         <source>Certificate PDF…</source>
         <translation>検査成績書 PDF…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="118"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="118"/>
         <source>SQLite file or postgresql://user@host/database</source>
         <translation>SQLite ファイルまたは postgresql://user@host/database</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="119"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="119"/>
         <source>Open</source>
         <translation>開く</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="120"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="120"/>
         <source>File…</source>
         <translation>ファイル…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="127"/>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="129"/>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="131"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="127"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="129"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="131"/>
         <source>any</source>
         <translation>指定なし</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="133"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="133"/>
         <source>Today</source>
         <translation>今日</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="134"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
         <source>Last 24 hours</source>
         <translation>過去 24 時間</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="135"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="135"/>
         <source>Last 7 days</source>
         <translation>過去 7 日間</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="136"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
         <source>Last 30 days</source>
         <translation>過去 30 日間</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="137"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
         <source>All</source>
         <translation>すべて</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="140"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
         <source>Any</source>
         <translation>指定なし</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="144"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="144"/>
         <source>Search</source>
         <translation>検索</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="148"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="148"/>
         <source>Serial:</source>
         <translation>シリアル:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="149"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="149"/>
         <source>Recipe:</source>
         <translation>レシピ:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="150"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="150"/>
         <source>Station:</source>
         <translation>ステーション:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="151"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
         <source>Period:</source>
         <translation>期間:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="152"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
         <source>Verdict:</source>
         <translation>判定:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="160"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="160"/>
         <source>Database:</source>
         <translation>データベース:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="192"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="192"/>
         <source>There is no results database at %1 yet: a station makes it when it records its first unit.</source>
         <translation>%1 にはまだ結果データベースがありません: ステーションが最初の製品を記録するときに作成されます。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="203"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="203"/>
         <source>Results database %1</source>
         <translation>結果データベース %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="249"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="249"/>
         <source>%1 rev. %2</source>
         <translation>%1 rev. %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="253"/>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="279"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="253"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="279"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="276"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="276"/>
         <source>%n unit(s), %1 passed · first-pass yield %2 (%3 of %4 serials)</source>
         <translation>
             <numerusform>製品 %n 台、合格 %1 台 · 直行率 %2（%4 シリアル中 %3）</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="279"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="279"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="288"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="288"/>
         <source>no unit is selected</source>
         <translation>製品が選択されていません</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="320"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
         <source>Open results database</source>
         <translation>結果データベースを開く</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="321"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="321"/>
         <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
         <translation>SQLite データベース (*.db *.sqlite);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="332"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="332"/>
         <source>Export units as CSV</source>
         <translation>製品を CSV でエクスポート</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="332"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="332"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="337"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="337"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>製品 %n 台を %1 に書き込みました</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="348"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="348"/>
         <source>Save certificate</source>
         <translation>検査成績書を保存</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="349"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="349"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF ファイル (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="354"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="354"/>
         <source>Certificate written to %1</source>
         <translation>検査成績書を %1 に書き込みました</translation>
     </message>
@@ -10150,7 +10186,7 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RoleEvaluator</name>
     <message>
-        <location filename="../main/model/profile/RoleEvaluator.cpp" line="102"/>
+        <location filename="../model/profile/RoleEvaluator.cpp" line="102"/>
         <source>%1 = %2 (%3, function %4)</source>
         <translation>%1 = %2 (%3、ファンクション %4)</translation>
     </message>
@@ -10158,62 +10194,62 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RunCommand</name>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="48"/>
+        <location filename="../cli/RunCommand.cpp" line="48"/>
         <source>Test run: start, stop, direction, running data, hold/free, speed (needs --yes)</source>
         <translation>試運転: 運転開始、停止、回転方向、運転データ、保持/フリー、速度（--yes が必要）</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="53"/>
+        <location filename="../cli/RunCommand.cpp" line="53"/>
         <source>Send the command (it moves or stops a motor).</source>
         <translation>コマンドを送信します（モータが動作または停止します）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="63"/>
+        <location filename="../cli/RunCommand.cpp" line="63"/>
         <source>error: usage: %1 (one machine number; a negative speed after --)</source>
         <translation>エラー: 使い方: %1（局番を 1 つ指定。負の速度は -- の後に指定）</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="71"/>
-        <location filename="../main/cli/RunCommand.cpp" line="76"/>
-        <location filename="../main/cli/RunCommand.cpp" line="81"/>
-        <location filename="../main/cli/RunCommand.cpp" line="126"/>
+        <location filename="../cli/RunCommand.cpp" line="71"/>
+        <location filename="../cli/RunCommand.cpp" line="76"/>
+        <location filename="../cli/RunCommand.cpp" line="81"/>
+        <location filename="../cli/RunCommand.cpp" line="126"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="86"/>
+        <location filename="../cli/RunCommand.cpp" line="86"/>
         <source>Would send to machine number %1: %2
 This moves or stops a motor: add --yes to send it.</source>
         <translation>局番 %1 に送信する内容: %2
 モータが動作または停止します: 送信するには --yes を付けてください。</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="118"/>
+        <location filename="../cli/RunCommand.cpp" line="118"/>
         <source>Sent to machine number %1: %2</source>
         <translation>局番 %1 に送信しました: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="120"/>
+        <location filename="../cli/RunCommand.cpp" line="120"/>
         <source>Sent to machine number %1, executed also by %2 (communication group): %3</source>
         <translation>局番 %1 に送信しました（%2 も実行、通信グループ）: %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="156"/>
+        <location filename="../cli/RunCommand.cpp" line="156"/>
         <source>(not read: %1)</source>
         <translation>（未読出し: %1）</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="165"/>
+        <location filename="../cli/RunCommand.cpp" line="165"/>
         <source>State of machine number %1:</source>
         <translation>局番 %1 の状態:</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="176"/>
+        <location filename="../cli/RunCommand.cpp" line="176"/>
         <source>State of machine number %1 (communication group of %2): not read: %3</source>
         <translation>局番 %1（%2 の通信グループ）の状態: 未読出し: %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="184"/>
+        <location filename="../cli/RunCommand.cpp" line="184"/>
         <source>State of machine number %1 (communication group of %2):</source>
         <translation>局番 %1（%2 の通信グループ）の状態:</translation>
     </message>
@@ -10221,57 +10257,57 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunControl</name>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="59"/>
+        <location filename="../model/run/RunControl.cpp" line="59"/>
         <source>%1 needs one value, e.g. &quot;%1 %2&quot;</source>
         <translation>%1 には値が 1 つ必要です。例: &quot;%1 %2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="62"/>
+        <location filename="../model/run/RunControl.cpp" line="62"/>
         <source>%1 takes no value</source>
         <translation>%1 は値を取りません</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="70"/>
+        <location filename="../model/run/RunControl.cpp" line="70"/>
         <source>select needs a running data number, e.g. &quot;select 2&quot;; got &quot;%1&quot;</source>
         <translation>select には運転データ番号が必要です。例: &quot;select 2&quot;（指定値 &quot;%1&quot;）</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="80"/>
+        <location filename="../model/run/RunControl.cpp" line="80"/>
         <source>unknown run command &quot;%1&quot;; use start, stop, cw, ccw, select N, hold, free, coast or speed VALUE</source>
         <translation>不明な運転コマンド &quot;%1&quot;。start、stop、cw、ccw、select N、hold、free、coast、speed VALUE のいずれかを使用してください</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="127"/>
+        <location filename="../model/run/RunControl.cpp" line="127"/>
         <source>%1 drives have no &quot;%2&quot; command; they take: %3</source>
         <translation>%1 ドライバに &quot;%2&quot; コマンドはありません。使用可能: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="148"/>
+        <location filename="../model/run/RunControl.cpp" line="148"/>
         <source>%1 has no selection codes</source>
         <translation>%1 に選択コードがありません</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="149"/>
+        <location filename="../model/run/RunControl.cpp" line="149"/>
         <source>select %1: choose %2–%3 (%4 … %5)</source>
         <translation>select %1: %2–%3 を選択してください (%4 … %5)</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="186"/>
+        <location filename="../model/run/RunControl.cpp" line="186"/>
         <source>cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>ドライバが運転コマンドを受け付けるかを確認するための %1 を読み出せません: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="206"/>
+        <location filename="../model/run/RunControl.cpp" line="206"/>
         <source>machine number %1 is in &quot;%2&quot; (%3); nothing was sent</source>
         <translation>局番 %1 は &quot;%2&quot; (%3) です。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="210"/>
+        <location filename="../model/run/RunControl.cpp" line="210"/>
         <source>In &quot;%1&quot; the drive takes run, stop, direction and speed selection from its input terminals and refuses motion commands over the bus. To test-run it from here, switch it to &quot;%2&quot;: opentop-cli set %3 %4=%5 (and back to &quot;%1&quot;, =%6, when the machine&apos;s own controls should run it again).</source>
         <translation>&quot;%1&quot; では、ドライバは運転、停止、回転方向、速度選択を入力端子から受け付け、バス経由の運転コマンドを拒否します。ここから試運転するには &quot;%2&quot; に切り替えてください: opentop-cli set %3 %4=%5（機械側の操作で再び運転する場合は &quot;%1&quot; (=%6) に戻してください）。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="263"/>
+        <location filename="../model/run/RunControl.cpp" line="263"/>
         <source>An alarm is active: the drive refuses to run until it is cleared. See opentop-cli alarms %1, then alarms %1 --reset --yes.</source>
         <translation>アラームが発生しています: 解除するまでドライバは運転を拒否します。opentop-cli alarms %1 を確認し、alarms %1 --reset --yes を実行してください。</translation>
     </message>
@@ -10279,68 +10315,68 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunLiveState</name>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="24"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="24"/>
         <source>The drive now</source>
         <translation>現在のドライバ</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="47"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="47"/>
         <source>State</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="49"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="49"/>
         <source>Alarm</source>
         <translation>アラーム</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="86"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="86"/>
         <source>%1:</source>
         <translation>%1:</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="123"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="123"/>
         <source>%1 (%2 %3)</source>
         <translation>%1 (%2 %3)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="125"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="125"/>
         <source>not reported</source>
         <translation>通知なし</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="128"/>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="138"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="128"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="138"/>
         <source>not read</source>
         <translation>未読出し</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="130"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="130"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="133"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="133"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="135"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="135"/>
         <source>active</source>
         <translation>発生中</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="154"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="154"/>
         <source>waiting for the first answer…</source>
         <translation>最初の応答を待機中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="154"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="154"/>
         <source>not watched</source>
         <translation>監視対象外</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="166"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="166"/>
         <source>Not live: %1</source>
         <translation>更新停止: %1</translation>
     </message>
@@ -10348,12 +10384,12 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunningData</name>
     <message>
-        <location filename="../main/model/run/RunningData.cpp" line="56"/>
+        <location filename="../model/run/RunningData.cpp" line="56"/>
         <source>SPno%1 slows down from %2 r/min in %3 s: the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>SPno%1 は %2 r/min から %3 s で減速します: マニュアルでは、高速（約 %5 r/min 以上）から減速する場合、減速時間を %4 s より長くするよう指示されています。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunningData.cpp" line="124"/>
+        <location filename="../model/run/RunningData.cpp" line="124"/>
         <source>Short deceleration from high speed on %1 (%2 r/min in %3 s): the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>%1 で高速からの減速が短すぎます（%2 r/min を %3 s）: マニュアルでは、高速（約 %5 r/min 以上）から減速する場合、減速時間を %4 s より長くするよう指示されています。</translation>
     </message>
@@ -10361,153 +10397,153 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunningDataPage</name>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="39"/>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="39"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
         <source>Running data</source>
         <translation>運転データ</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
         <source>Speed (r/min)</source>
         <translation>速度 (r/min)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
         <source>Acceleration (s)</source>
         <translation>加速時間 (s)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="55"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
         <source>Deceleration (s)</source>
         <translation>減速時間 (s)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="55"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
         <source>Direction</source>
         <translation>回転方向</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="68"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="68"/>
         <source>SPno%1</source>
         <translation>SPno%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="71"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="71"/>
         <source>Selected by the inputs M0 = %1, M1 = %2, M2 = %3 or by the running data selection command</source>
         <translation>入力 M0 = %1、M1 = %2、M2 = %3 または運転データ選択コマンドで選択</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="89"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="89"/>
         <source>SS trimmer</source>
         <translation>SS トリマ</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="90"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="90"/>
         <source>SPno1 has no acceleration register: the SS trimmer on the drive sets it (0.5–30 s); it is not stored in the drive</source>
         <translation>SPno1 には加速時間のレジスタがありません: ドライバの SS トリマで設定します (0.5–30 s)。ドライバには保存されません</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="93"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="93"/>
         <source>SD trimmer</source>
         <translation>SD トリマ</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="94"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="94"/>
         <source>SPno1 has no deceleration register: the SD trimmer on the drive sets it (0.5 s or 2–30 s); it is not stored in the drive</source>
         <translation>SPno1 には減速時間のレジスタがありません: ドライバの SD トリマで設定します（0.5 s または 2–30 s）。ドライバには保存されません</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="98"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="98"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="99"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="99"/>
         <source>This drive has no register for this value</source>
         <translation>このドライバにはこの値のレジスタがありません</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="106"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="106"/>
         <source>Initialize</source>
         <translation>初期化</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="108"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="108"/>
         <source>Reset SPno%1 on the drive to its factory defaults</source>
         <translation>ドライバの SPno%1 を工場出荷時設定に戻します</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="109"/>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="274"/>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="280"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="109"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="274"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="280"/>
         <source>Initialize SPno%1</source>
         <translation>SPno%1 の初期化</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="130"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="130"/>
         <source>SPno1 runs at the speed of the external speed-setting VR (CN3) with the SS/SD trimmer times; it is not stored in the drive</source>
         <translation>SPno1 は外部速度設定器 VR (CN3) の速度と SS/SD トリマの時間で運転します。ドライバには保存されません</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="214"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="214"/>
         <source>Allowed speed on this %1: %2 (0 stops the motor)</source>
         <translation>この %1 の許容速度: %2（0 でモータ停止）</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="224"/>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="240"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="224"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="240"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="227"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="227"/>
         <source>Allowed speed: %1</source>
         <translation>許容速度: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="228"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="228"/>
         <source>The drive&apos;s variant is not known, so a speed must suit every variant (0 stops the motor): %1</source>
         <translation>ドライバの機種が不明なため、速度は全機種に適合する必要があります（0 でモータ停止）: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="240"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="240"/>
         <source>its factory default</source>
         <translation>工場出荷時設定</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="262"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="262"/>
         <source>The SPno1 speed and times come from the external VR and the SS/SD trimmers; they do not change.</source>
         <translation>SPno1 の速度と時間は外部 VR と SS/SD トリマで決まるため、変更されません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="269"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="269"/>
         <source>Your unwritten edits in this row are discarded.</source>
         <translation>この行の未書込みの編集は破棄されます。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="275"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="275"/>
         <source>Reset running data SPno%1 of drive %2 to these factory defaults?</source>
         <translation>ドライバ %2 の運転データ SPno%1 をこれらの工場出荷時設定に戻しますか？</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="286"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="286"/>
         <source>Initializing SPno%1…</source>
         <translation>SPno%1 を初期化中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="301"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="301"/>
         <source>SPno%1 was not initialized: %2</source>
         <translation>SPno%1 は初期化されませんでした: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="317"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="317"/>
         <source>SPno%1 initialized; %n value(s) could not be read back</source>
         <translation>
             <numerusform>SPno%1 を初期化しました。%n 個の値を読み戻せませんでした</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="319"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="319"/>
         <source>SPno%1 initialized to its factory defaults</source>
         <translation>SPno%1 を工場出荷時設定に初期化しました</translation>
     </message>
@@ -10515,83 +10551,83 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="110"/>
+        <location filename="../cli/ScanCommand.cpp" line="110"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>バス上のドライバを検出・識別します（局番 1–247）</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="116"/>
+        <location filename="../cli/ScanCommand.cpp" line="116"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>問い合わせる最初の局番、1–247（既定 1）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="116"/>
-        <location filename="../main/cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="116"/>
+        <location filename="../cli/ScanCommand.cpp" line="117"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="117"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>問い合わせる最後の局番、1–247（既定 247）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="119"/>
+        <location filename="../cli/ScanCommand.cpp" line="119"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>局番ごとの待ち時間 (ms)、10–5000（既定: ボーレートから算出。低速なアダプタやゲートウェイでは大きくしてください）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="121"/>
+        <location filename="../cli/ScanCommand.cpp" line="121"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="134"/>
+        <location filename="../cli/ScanCommand.cpp" line="134"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>エラー: --%1 は %2–%3 の数値でなければなりません（&quot;%4&quot; は不可）</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="146"/>
+        <location filename="../cli/ScanCommand.cpp" line="146"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>エラー: scan は引数を取りません。--from N --to N を使用してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="155"/>
+        <location filename="../cli/ScanCommand.cpp" line="155"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>エラー: --from %1 が --to %2 より後です</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="173"/>
+        <location filename="../cli/ScanCommand.cpp" line="173"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>%3 で局番 %1–%2 をスキャン中（各 %4 ms）…</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="209"/>
+        <location filename="../cli/ScanCommand.cpp" line="209"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>局番をスキャンする前に中断しました。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="211"/>
+        <location filename="../cli/ScanCommand.cpp" line="211"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>中断: 局番 %1–%2 をスキャンしました（%4 中 %3）。%5–%6 は未問い合わせです。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="225"/>
+        <location filename="../cli/ScanCommand.cpp" line="225"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>エラー: 局番 %1 でスキャンが停止しました: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="235"/>
+        <location filename="../cli/ScanCommand.cpp" line="235"/>
         <source>warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="237"/>
+        <location filename="../cli/ScanCommand.cpp" line="237"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>注: %1 台のドライバが %2 ms の待ち時間の後に応答したため、再度問い合わせました。スキャンでドライバが見つからない場合は、--wait を長くしてください。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="243"/>
+        <location filename="../cli/ScanCommand.cpp" line="243"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -10602,77 +10638,77 @@ This moves or stops a motor: add --yes to send it.</source>
   - 終端抵抗（バスの両端に 120 Ω）とドライバの電源</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="280"/>
+        <location filename="../cli/ScanCommand.cpp" line="280"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 機種不明</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="281"/>
+        <location filename="../cli/ScanCommand.cpp" line="281"/>
         <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
         <translation>ドライバが機種を通知しません。--variant %1=VARIANT で指定してください (%2)</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="297"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="297"/>
         <source>hex</source>
         <translation>16 進</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="297"/>
         <source>switches</source>
         <translation>スイッチ</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="297"/>
         <source>family</source>
         <translation>ファミリ</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="298"/>
         <source>model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="298"/>
         <source>firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="298"/>
         <source>state</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>comm. group</source>
         <translation>通信グループ</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="372"/>
+        <location filename="../cli/ScanCommand.cpp" line="372"/>
         <source>1 drive found in %1 s</source>
         <translation>1 台のドライバを検出（%1 s）</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="373"/>
+        <location filename="../cli/ScanCommand.cpp" line="373"/>
         <source>%1 drives found in %2 s</source>
         <translation>%1 台のドライバを検出（%2 s）</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="375"/>
+        <location filename="../cli/ScanCommand.cpp" line="375"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>。局番重複の可能性 1 件: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="377"/>
+        <location filename="../cli/ScanCommand.cpp" line="377"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>。局番重複の可能性 %1 件: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="388"/>
+        <location filename="../cli/ScanCommand.cpp" line="388"/>
         <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>警告: 局番 %1 (%2, %3) の応答が化けています: 2 台のドライバが同じ局番になっている可能性があります。このバス上のドライバの SW1/SW2 スイッチを確認し、各ドライバに固有の局番を設定して電源を入れ直し、再度スキャンしてください。</translation>
     </message>
@@ -10680,180 +10716,180 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="39"/>
+        <location filename="../cli/SetCommand.cpp" line="39"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>パラメータを名前で書き込み、検証・読み戻し・照合します</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="46"/>
+        <location filename="../cli/SetCommand.cpp" line="46"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store.</source>
         <translation>モータの運転、リセット、消去、初期化、保存を行うコマンドを確定します。</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="48"/>
+        <location filename="../cli/SetCommand.cpp" line="48"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>アドレスでレジスタに書き込みます: ADDR=VALUE（複数指定可。--fc 16 では VALUE,VALUE...）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="49"/>
+        <location filename="../cli/SetCommand.cpp" line="49"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="50"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 書込みのファンクションコード: 6（既定）または 16。</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="50"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="59"/>
+        <location filename="../cli/SetCommand.cpp" line="59"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>エラー: 使い方: set ID NAME=VALUE...（例: set 1 spno2.accel=2.5）、または set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="71"/>
+        <location filename="../cli/SetCommand.cpp" line="71"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>エラー: &quot;%1&quot; は NAME=VALUE ではありません</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="78"/>
+        <location filename="../cli/SetCommand.cpp" line="78"/>
         <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
         <translation>エラー: %1 が 2 回指定されています（%2=%3 と %4）。各設定は 1 回だけ指定してください。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="89"/>
-        <location filename="../main/cli/SetCommand.cpp" line="186"/>
+        <location filename="../cli/SetCommand.cpp" line="89"/>
+        <location filename="../cli/SetCommand.cpp" line="186"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="99"/>
+        <location filename="../cli/SetCommand.cpp" line="99"/>
         <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>%1 にパラメータ &quot;%2&quot; はありません。&quot;opentop-cli params --family %1&quot; を参照してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="102"/>
+        <location filename="../cli/SetCommand.cpp" line="102"/>
         <source>%1 is read-only</source>
         <translation>%1 は読出し専用です</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="104"/>
+        <location filename="../cli/SetCommand.cpp" line="104"/>
         <source>%1 is a %2 command; add --yes to send it</source>
         <translation>%1 は %2 コマンドです。送信するには --yes を付けてください</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="136"/>
+        <location filename="../cli/SetCommand.cpp" line="136"/>
         <source>error: cannot read %1 to check the values; nothing written</source>
         <translation>エラー: 値をチェックするための %1 を読み出せません。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="180"/>
+        <location filename="../cli/SetCommand.cpp" line="180"/>
         <source>warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="187"/>
+        <location filename="../cli/SetCommand.cpp" line="187"/>
         <source>nothing was written</source>
         <translation>何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="210"/>
+        <location filename="../cli/SetCommand.cpp" line="210"/>
         <source>not written (interrupted)</source>
         <translation>未書込み（中断）</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="245"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="245"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="245"/>
-        <location filename="../main/cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="352"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="251"/>
-        <location filename="../main/cli/SetCommand.cpp" line="387"/>
+        <location filename="../cli/SetCommand.cpp" line="251"/>
+        <location filename="../cli/SetCommand.cpp" line="387"/>
         <source>written, verified</source>
         <translation>書込み済み、照合済み</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="252"/>
+        <location filename="../cli/SetCommand.cpp" line="252"/>
         <source>written (command, not readable)</source>
         <translation>書込み済み（コマンド、読出し不可）</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="254"/>
+        <location filename="../cli/SetCommand.cpp" line="254"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>未確認 (%1): ドライバがその値を保持しているかどうか不明です。&quot;get&quot; で読み戻してください</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="272"/>
+        <location filename="../cli/SetCommand.cpp" line="272"/>
         <source>error: --fc for raw writes is 6 or 16</source>
         <translation>エラー: raw 書込みの --fc は 6 または 16 です</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="298"/>
+        <location filename="../cli/SetCommand.cpp" line="298"/>
         <source>error: &quot;%1&quot; is not ADDR=VALUE (0x.. or decimal, 0–65535; several values, comma separated, only with --fc 16)</source>
         <translation>エラー: &quot;%1&quot; は ADDR=VALUE ではありません（0x.. または 10 進、0–65535。カンマ区切りの複数値は --fc 16 の場合のみ）</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="315"/>
+        <location filename="../cli/SetCommand.cpp" line="315"/>
         <source>error: 0x%1 is not a register the profile knows; add --yes to write it anyway; nothing was written</source>
         <translation>エラー: 0x%1 はプロファイルにないレジスタです。それでも書き込むには --yes を付けてください。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="325"/>
+        <location filename="../cli/SetCommand.cpp" line="325"/>
         <source>error: %1; nothing was written</source>
         <translation>エラー: %1。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="326"/>
+        <location filename="../cli/SetCommand.cpp" line="326"/>
         <source>%1 is a %2 command; add --yes</source>
         <translation>%1 は %2 コマンドです。--yes を付けてください</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="333"/>
+        <location filename="../cli/SetCommand.cpp" line="333"/>
         <source>error: the write covers part of %1; add --yes to write it anyway; nothing was written</source>
         <translation>エラー: この書込みは %1 の一部にかかります。それでも書き込むには --yes を付けてください。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="352"/>
         <source>Address</source>
         <translation>アドレス</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="352"/>
         <source>Written</source>
         <translation>書込み</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="385"/>
+        <location filename="../cli/SetCommand.cpp" line="385"/>
         <source>written</source>
         <translation>書込み済み</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="389"/>
+        <location filename="../cli/SetCommand.cpp" line="389"/>
         <source>written, but reads back differently</source>
         <translation>書き込みましたが、読み戻した値が異なります</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="392"/>
+        <location filename="../cli/SetCommand.cpp" line="392"/>
         <source>written (not readable back: %1)</source>
         <translation>書込み済み（読み戻し不可: %1）</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="400"/>
+        <location filename="../cli/SetCommand.cpp" line="400"/>
         <source>Also written to %1 (communication group); not read back: no parameter of the profile</source>
         <translation>%1 にも書き込みました（通信グループ）。読み戻しなし: プロファイルのパラメータではありません</translation>
     </message>
@@ -10861,17 +10897,17 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ShiftPlan</name>
     <message>
-        <location filename="../main/model/eol/ShiftPlan.cpp" line="30"/>
+        <location filename="../model/eol/ShiftPlan.cpp" line="30"/>
         <source>&quot;%1&quot; is not a time of day such as 06:00</source>
         <translation>&quot;%1&quot; は 06:00 のような時刻ではありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ShiftPlan.cpp" line="35"/>
+        <location filename="../model/eol/ShiftPlan.cpp" line="35"/>
         <source>shift starts must be in order from the day&apos;s first: %1</source>
         <translation>シフト開始時刻は 1 日の最初から順に指定してください: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ShiftPlan.cpp" line="42"/>
+        <location filename="../model/eol/ShiftPlan.cpp" line="42"/>
         <source>no shift start given; e.g. 06:00,14:00,22:00</source>
         <translation>シフト開始時刻が指定されていません。例: 06:00,14:00,22:00</translation>
     </message>
@@ -10879,47 +10915,47 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ShortcutsDialog</name>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="60"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="60"/>
         <source>Main window</source>
         <translation>メインウィンドウ</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="62"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="62"/>
         <source>Everywhere, dialogs included</source>
         <translation>すべての場所（ダイアログを含む）</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="63"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="63"/>
         <source>STOP ALL (stop every drive on the bus)</source>
         <translation>全停止（バス上の全ドライバを停止）</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="72"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="72"/>
         <source>Keyboard shortcuts</source>
         <translation>キーボードショートカット</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
         <source>Where</source>
         <translation>場所</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
         <source>Command</source>
         <translation>コマンド</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
         <source>Keys</source>
         <translation>キー</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="86"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="86"/>
         <source> or </source>
         <translation> または </translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="95"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="95"/>
         <source>STOP ALL&apos;s keys work in every window of the program, also while a dialog is open.</source>
         <translation>全停止のキーは、ダイアログ表示中も含め、プログラムのすべてのウィンドウで有効です。</translation>
     </message>
@@ -10927,32 +10963,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimApp</name>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="108"/>
+        <location filename="../sim/SimApp.cpp" line="108"/>
         <source>opentop-sim: warning: %1@%2 cannot use %3 %4 and will not answer</source>
         <translation>opentop-sim: 警告: %1@%2 は %3 %4 を使用できないため応答しません</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="118"/>
+        <location filename="../sim/SimApp.cpp" line="118"/>
         <source>opentop-sim: --defect %1:%2: no drive with machine number %1 on the bus %3</source>
         <translation>opentop-sim: --defect %1:%2: バス %3 に局番 %1 のドライバはありません</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="125"/>
+        <location filename="../sim/SimApp.cpp" line="125"/>
         <source>opentop-sim: --defect %1 (%2@%1): %3</source>
         <translation>opentop-sim: --defect %1 (%2@%1): %3</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="162"/>
+        <location filename="../sim/SimApp.cpp" line="162"/>
         <source>the port is unplugged already</source>
         <translation>ポートはすでに切断されています</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="164"/>
+        <location filename="../sim/SimApp.cpp" line="164"/>
         <source>unplugged</source>
         <translation>切断しました</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="197"/>
+        <location filename="../sim/SimApp.cpp" line="197"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
@@ -10960,27 +10996,27 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimBackdoor</name>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="17"/>
+        <location filename="../sim/SimBackdoor.cpp" line="17"/>
         <source>usage: set ID ADDR VALUE [fc]</source>
         <translation>使い方: set ID ADDR VALUE [fc]</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="18"/>
+        <location filename="../sim/SimBackdoor.cpp" line="18"/>
         <source>usage: get ID ADDR [fc]</source>
         <translation>使い方: get ID ADDR [fc]</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="21"/>
+        <location filename="../sim/SimBackdoor.cpp" line="21"/>
         <source>address must be 0..0xFFFF, got &apos;%1&apos;</source>
         <translation>アドレスは 0..0xFFFF でなければなりません（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="27"/>
+        <location filename="../sim/SimBackdoor.cpp" line="27"/>
         <source>function must be 3, 4 or 6 (write-only), got &apos;%1&apos;</source>
         <translation>ファンクションは 3、4、6（書込み専用）のいずれかでなければなりません（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="40"/>
+        <location filename="../sim/SimBackdoor.cpp" line="40"/>
         <source>value must be -32768..65535, got &apos;%1&apos;</source>
         <translation>値は -32768..65535 でなければなりません（指定値 &apos;%1&apos;）</translation>
     </message>
@@ -10988,27 +11024,27 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimBackend</name>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="24"/>
+        <location filename="../sim/SimBackend.cpp" line="24"/>
         <source>no simulated bus</source>
         <translation>シミュレーションバスがありません</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="47"/>
+        <location filename="../sim/SimBackend.cpp" line="47"/>
         <source>the simulated bus is not open</source>
         <translation>シミュレーションバスが開いていません</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="53"/>
+        <location filename="../sim/SimBackend.cpp" line="53"/>
         <source>the simulated adapter was unplugged</source>
         <translation>シミュレーションのアダプタが取り外されました</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="80"/>
+        <location filename="../sim/SimBackend.cpp" line="80"/>
         <source>interrupted while waiting</source>
         <translation>待機中に中断しました</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="87"/>
+        <location filename="../sim/SimBackend.cpp" line="87"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 以内に応答がありません</translation>
     </message>
@@ -11016,27 +11052,27 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimBus</name>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="38"/>
+        <location filename="../sim/SimBus.cpp" line="38"/>
         <source>unknown device type &apos;%1&apos;; known: %2</source>
         <translation>不明なデバイスタイプ &apos;%1&apos;。既知: %2</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="65"/>
+        <location filename="../sim/SimBus.cpp" line="65"/>
         <source>%1@%2{%3}: %4</source>
         <translation>%1@%2{%3}: %4</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="81"/>
+        <location filename="../sim/SimBus.cpp" line="81"/>
         <source>machine number %1 is outside 1..247</source>
         <translation>局番 %1 が 1..247 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="82"/>
+        <location filename="../sim/SimBus.cpp" line="82"/>
         <source>machine number %1 is used twice</source>
         <translation>局番 %1 が 2 回使用されています</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="231"/>
+        <location filename="../sim/SimBus.cpp" line="231"/>
         <source>no device with machine number %1 (bus: %2)</source>
         <translation>局番 %1 のデバイスがありません（バス: %2）</translation>
     </message>
@@ -11044,7 +11080,7 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimConsole</name>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="31"/>
+        <location filename="../sim/SimConsole.cpp" line="31"/>
         <source>commands:
   help                      this text
   list                      the devices and their state
@@ -11085,37 +11121,37 @@ This moves or stops a motor: add --yes to send it.</source>
   quit                      シミュレータを停止</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="63"/>
+        <location filename="../sim/SimConsole.cpp" line="63"/>
         <source>bye</source>
         <translation>終了します</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="68"/>
+        <location filename="../sim/SimConsole.cpp" line="68"/>
         <source>%1 needs the pty server (--pty)</source>
         <translation>%1 には pty サーバ (--pty) が必要です</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="79"/>
+        <location filename="../sim/SimConsole.cpp" line="79"/>
         <source>, defects: %1</source>
         <translation>、不具合: %1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="92"/>
+        <location filename="../sim/SimConsole.cpp" line="92"/>
         <source>no drive has defects</source>
         <translation>不具合のあるドライバはありません</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="98"/>
+        <location filename="../sim/SimConsole.cpp" line="98"/>
         <source>unknown command &apos;%1&apos;; type help for the list</source>
         <translation>不明なコマンド &apos;%1&apos;。help と入力すると一覧を表示します</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="102"/>
+        <location filename="../sim/SimConsole.cpp" line="102"/>
         <source>usage: %1 ID ...; ID is a machine number on the bus (%2)</source>
         <translation>使い方: %1 ID ...。ID はバス上の局番です (%2)</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="108"/>
+        <location filename="../sim/SimConsole.cpp" line="108"/>
         <source>&apos;%1&apos; is not a machine number; the bus has %2</source>
         <translation>&apos;%1&apos; は局番ではありません。バス上の局番: %2</translation>
     </message>
@@ -11123,77 +11159,77 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimDefectSpec</name>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="45"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="45"/>
         <source>firmware=MAJOR.MINOR (e.g. firmware=1.4), max_speed=N (e.g. max_speed=800), stall, load=+N, load=-N or load=xF (e.g. load=+40, load=x1.5), alarm=CODE@TIME (e.g. alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (a parameter name or register address, e.g. nostick=spno2.speed, nostore=0x0081), clear</source>
         <translation>firmware=MAJOR.MINOR（例: firmware=1.4）、max_speed=N（例: max_speed=800）、stall、load=+N、load=-N または load=xF（例: load=+40、load=x1.5）、alarm=CODE@TIME（例: alarm=0x07@1500ms、alarm=overload@2s。DC: alarm=stall@1s）、nostick=PARAM、nostore=PARAM（パラメータ名またはレジスタアドレス。例: nostick=spno2.speed、nostore=0x0081）、clear</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="119"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="119"/>
         <source>unknown defect &quot;%1&quot;; allowed: %2</source>
         <translation>不明な不具合 &quot;%1&quot;。使用可能: %2</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="122"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="122"/>
         <source>&quot;%1&quot; needs a value: %2=...</source>
         <translation>&quot;%1&quot; には値が必要です: %2=...</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="124"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="124"/>
         <source>&quot;%1&quot; takes no value; write %2</source>
         <translation>&quot;%1&quot; は値を取りません。%2 と記述してください</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="137"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="137"/>
         <source>firmware=%1: write MAJOR.MINOR with each 0..255, e.g. firmware=1.4</source>
         <translation>firmware=%1: MAJOR.MINOR（各 0..255）の形式で記述してください。例: firmware=1.4</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="144"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="144"/>
         <source>max_speed=%1: write a whole number 0..%2, e.g. max_speed=800</source>
         <translation>max_speed=%1: 0..%2 の整数を記述してください。例: max_speed=800</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="154"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="154"/>
         <source>load=%1: a factor is x0.1..x10, e.g. load=x1.5</source>
         <translation>load=%1: 係数は x0.1..x10 です。例: load=x1.5</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="159"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="159"/>
         <source>load=%1: an offset is -200..+200, e.g. load=+40</source>
         <translation>load=%1: オフセットは -200..+200 です。例: load=+40</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="162"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="162"/>
         <source>load=%1: write load=+N, load=-N (an offset) or load=xF (a factor), e.g. load=+40 or load=x1.5</source>
         <translation>load=%1: load=+N、load=-N（オフセット）または load=xF（係数）の形式で記述してください。例: load=+40 または load=x1.5</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="171"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="171"/>
         <source>alarm=%1: write alarm=CODE@TIME, e.g. alarm=0x07@1500ms or alarm=overload@2s</source>
         <translation>alarm=%1: alarm=CODE@TIME の形式で記述してください。例: alarm=0x07@1500ms または alarm=overload@2s</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="176"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="176"/>
         <source>alarm=%1: the time after the start is 0..3600 s, written 1500ms, 1.5s or 1500 (ms)</source>
         <translation>alarm=%1: 運転開始後の時間は 0..3600 s です。1500ms、1.5s または 1500 (ms) の形式で記述してください</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="183"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="183"/>
         <source>%1=%2: name a parameter (e.g. spno2.speed) or a register address (e.g. 0x1102)</source>
         <translation>%1=%2: パラメータ名（例: spno2.speed）またはレジスタアドレス（例: 0x1102）を指定してください</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="199"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="199"/>
         <source>no defect given; allowed: %1</source>
         <translation>不具合が指定されていません。使用可能: %1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="205"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="205"/>
         <source>empty item in &quot;%1&quot;</source>
         <translation>&quot;%1&quot; に空の項目があります</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="223"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="223"/>
         <source>&quot;%1&quot;: write ID:DEFECT[,DEFECT...] with ID the machine number 1..247, e.g. 3:firmware=1.4 or 5:max_speed=800,load=+40</source>
         <translation>&quot;%1&quot;: ID:DEFECT[,DEFECT...] の形式で記述してください（ID は局番 1..247）。例: 3:firmware=1.4 または 5:max_speed=800,load=+40</translation>
     </message>
@@ -11201,22 +11237,22 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimDefects</name>
     <message>
-        <location filename="../main/sim/SimDefects.cpp" line="71"/>
+        <location filename="../sim/SimDefects.cpp" line="71"/>
         <source>a %1 reports no firmware version</source>
         <translation>%1 はファームウェアバージョンを通知しません</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefects.cpp" line="82"/>
+        <location filename="../sim/SimDefects.cpp" line="82"/>
         <source>alarm=%1: a %2 has no alarm codes; its protection is the stall stop: write alarm=stall@TIME</source>
         <translation>alarm=%1: %2 にはアラームコードがありません。保護機能はストール停止です: alarm=stall@TIME と記述してください</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefects.cpp" line="98"/>
+        <location filename="../sim/SimDefects.cpp" line="98"/>
         <source>alarm=%1: not an alarm of a %2; allowed: %3</source>
         <translation>alarm=%1: %2 のアラームではありません。使用可能: %3</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefects.cpp" line="109"/>
+        <location filename="../sim/SimDefects.cpp" line="109"/>
         <source>%1=%2: no writable parameter of a %3 has this name or address; e.g. %4</source>
         <translation>%1=%2: %3 にこの名前またはアドレスの書込み可能なパラメータはありません。例: %4</translation>
     </message>
@@ -11224,32 +11260,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimDevice</name>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="241"/>
+        <location filename="../sim/SimDevice.cpp" line="241"/>
         <source>missing command</source>
         <translation>コマンドがありません</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="250"/>
+        <location filename="../sim/SimDevice.cpp" line="250"/>
         <source>slave %1 power cycled</source>
         <translation>局番 %1 の電源を再投入しました</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="292"/>
+        <location filename="../sim/SimDevice.cpp" line="292"/>
         <source>usage: defect ID DEFECT[,DEFECT...] or defect ID clear; DEFECT: %1</source>
         <translation>使い方: defect ID DEFECT[,DEFECT...] または defect ID clear。DEFECT: %1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="299"/>
+        <location filename="../sim/SimDevice.cpp" line="299"/>
         <source>slave %1 defects: %2</source>
         <translation>局番 %1 の不具合: %2</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="301"/>
+        <location filename="../sim/SimDevice.cpp" line="301"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="306"/>
+        <location filename="../sim/SimDevice.cpp" line="306"/>
         <source>&apos;%1&apos; is not supported by a %2 device</source>
         <translation>&apos;%1&apos; は %2 デバイスではサポートされていません</translation>
     </message>
@@ -11257,7 +11293,7 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimOptions</name>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="14"/>
+        <location filename="../sim/SimOptions.cpp" line="14"/>
         <source>Usage: opentop-sim --devices SPEC [options]
 Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 
@@ -11282,105 +11318,82 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
                        nostore=PARAM         value lost at the next power cycle
                      e.g. --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
   --quiet            no frame trace on stderr
+  --lang CODE        language of messages: en, zh_TW, zh_CN, ko, ja
   --help             this text
   --version          the program&apos;s version
 
 Prints &quot;pty: PATH&quot; (and &quot;tcp: HOST:PORT&quot;), then &quot;ready&quot;. Reads console commands
 from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </source>
-        <translation>使い方: opentop-sim --devices SPEC [options]
-疑似端末上、または Modbus TCP ゲートウェイとして Modbus RTU ドライバをシミュレートします。
-
-  --devices SPEC     デバイスと局番。例: dbu200@1,dbu400@150,dcpid@7
-  --pty [PATH]       pty で提供（既定）。PATH: このシンボリックリンクも作成
-  --tcp HOST:PORT    Modbus TCP で提供（HOST の既定は 127.0.0.1、PORT 0: 任意）
-  --baud N           回線タイミングとデバイス設定の通信速度 (19200)
-  --parity N|E|O     回線のパリティ (N)
-  --wire-timing      --baud の実回線と同様に応答を遅延させる
-  --turnaround MS    --wire-timing 時のデバイスのターンアラウンド (2)
-  --faults LIST      例: drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
-  --seed N           フォールト注入のシード (1)
-  --defect ID:LIST   ドライバ ID の不具合（複数指定可）。LIST の要素:
-                       firmware=MAJOR.MINOR  識別時にこのバージョンを通知
-                       max_speed=N           モータは N で飽和 (DBU r/min、
-                                             DC 転流回数/s)、負荷大
-                       stall                 モータが回転しない、負荷大
-                       load=+N|-N|xF         負荷率 (DC: 電流 %) にオフセットまたは倍率
-                       alarm=CODE@TIME       運転して TIME 後にアラーム。例:
-                                             0x07@1500ms、overload@2s (DC: stall@1s)
-                       nostick=PARAM         書込みに応答するが、旧値のまま
-                       nostore=PARAM         次の電源再投入で値が消える
-                     例: --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
-  --quiet            stderr にフレームトレースを出力しない
-  --help             このテキスト
-  --version          プログラムのバージョン
-
-&quot;pty: PATH&quot;（および &quot;tcp: HOST:PORT&quot;）を出力した後、&quot;ready&quot; を出力します。コンソールコマンドを
-標準入力から読み取ります (help と入力)。SIGINT、SIGTERM、quit で停止します。
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="79"/>
+        <location filename="../sim/SimOptions.cpp" line="81"/>
+        <source>--lang needs a language code such as ko</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../sim/SimOptions.cpp" line="84"/>
         <source>--devices needs a device list such as dbu200@1,dcpid@7</source>
         <translation>--devices には dbu200@1,dcpid@7 のようなデバイスリストが必要です</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="88"/>
+        <location filename="../sim/SimOptions.cpp" line="93"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:5020</source>
         <translation>--tcp には HOST:PORT が必要です。例: 127.0.0.1:5020</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="94"/>
+        <location filename="../sim/SimOptions.cpp" line="99"/>
         <source>--tcp needs HOST:PORT with PORT 0..65535, got &apos;%1&apos;</source>
         <translation>--tcp には PORT が 0..65535 の HOST:PORT が必要です（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="106"/>
+        <location filename="../sim/SimOptions.cpp" line="111"/>
         <source>--baud must be one of %1, got &apos;%2&apos;</source>
         <translation>--baud は %1 のいずれかでなければなりません（指定値 &apos;%2&apos;）</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="113"/>
+        <location filename="../sim/SimOptions.cpp" line="118"/>
         <source>--parity must be N, E or O, got &apos;%1&apos;</source>
         <translation>--parity は N、E、O のいずれかでなければなりません（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="121"/>
+        <location filename="../sim/SimOptions.cpp" line="126"/>
         <source>--turnaround must be 0..1000 ms, got &apos;%1&apos;</source>
         <translation>--turnaround は 0..1000 ms でなければなりません（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="125"/>
+        <location filename="../sim/SimOptions.cpp" line="130"/>
         <source>--faults needs a list such as drop=0.02,crc=0.01</source>
         <translation>--faults には drop=0.02,crc=0.01 のようなリストが必要です</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="129"/>
+        <location filename="../sim/SimOptions.cpp" line="134"/>
         <source>--faults: %1</source>
         <translation>--faults: %1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="135"/>
+        <location filename="../sim/SimOptions.cpp" line="140"/>
         <source>--seed must be a whole number 0..4294967295, got &apos;%1&apos;</source>
         <translation>--seed は 0..4294967295 の整数でなければなりません（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="139"/>
+        <location filename="../sim/SimOptions.cpp" line="144"/>
         <source>--defect needs ID:DEFECT[,DEFECT...], e.g. 3:firmware=1.4; DEFECT: %1</source>
         <translation>--defect には ID:DEFECT[,DEFECT...] が必要です。例: 3:firmware=1.4。DEFECT: %1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="146"/>
+        <location filename="../sim/SimOptions.cpp" line="151"/>
         <source>--defect: %1</source>
         <translation>--defect: %1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="152"/>
+        <location filename="../sim/SimOptions.cpp" line="157"/>
         <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --quiet, --help, --version</source>
         <translation>不明な引数 &apos;%1&apos;。オプション: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --quiet, --help, --version</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="159"/>
+        <location filename="../sim/SimOptions.cpp" line="164"/>
         <source>--devices SPEC is required, e.g. --devices dbu200@1,dcpid@7</source>
         <translation>--devices SPEC は必須です。例: --devices dbu200@1,dcpid@7</translation>
     </message>
@@ -11388,22 +11401,22 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::SpeedDisplay</name>
     <message>
-        <location filename="../main/model/profile/SpeedDisplay.cpp" line="90"/>
+        <location filename="../model/profile/SpeedDisplay.cpp" line="90"/>
         <source>speed display settings not known: %1</source>
         <translation>速度表示の設定が不明です: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/SpeedDisplay.cpp" line="92"/>
+        <location filename="../model/profile/SpeedDisplay.cpp" line="92"/>
         <source>speed display unit code %1 is unknown (0–3)</source>
         <translation>速度表示の単位コード %1 は不明です (0–3)</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/SpeedDisplay.cpp" line="94"/>
+        <location filename="../model/profile/SpeedDisplay.cpp" line="94"/>
         <source>speed display ratios must be positive (reduction %1, increase %2)</source>
         <translation>速度表示の比率は正の値でなければなりません（減速比 %1、増速比 %2）</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/SpeedDisplay.cpp" line="98"/>
+        <location filename="../model/profile/SpeedDisplay.cpp" line="98"/>
         <source>speed display decimals %1 outside 0–3</source>
         <translation>速度表示の小数桁数 %1 が 0–3 の範囲外です</translation>
     </message>
@@ -11411,182 +11424,182 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::SpeedUnitsPage</name>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="36"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="36"/>
         <source>Speed display</source>
         <translation>速度表示</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="52"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="52"/>
         <source>Unit shown</source>
         <translation>表示単位</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="53"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="53"/>
         <source>&amp;Unit:</source>
         <translation>単位(&amp;U):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="54"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="54"/>
         <source>Reduction r&amp;atio:</source>
         <translation>減速比(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="55"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="55"/>
         <source>&amp;Increasing ratio:</source>
         <translation>増速比(&amp;I):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="60"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="60"/>
         <source>Linear speed</source>
         <translation>線速度</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="61"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="61"/>
         <source>Roller diameter for &amp;yd/min:</source>
         <translation>yd/min 用ローラ径(&amp;Y):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="62"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="62"/>
         <source>Roller diameter for &amp;m/min:</source>
         <translation>m/min 用ローラ径(&amp;M):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="65"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="65"/>
         <source>Time for a distance</source>
         <translation>距離あたりの時間</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="66"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="66"/>
         <source>Roller &amp;diameter:</source>
         <translation>ローラ径(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="67"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="67"/>
         <source>Dis&amp;tance:</source>
         <translation>距離(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="68"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="68"/>
         <source>Distance u&amp;nit:</source>
         <translation>距離単位(&amp;N):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="69"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="69"/>
         <source>Time &amp;format (min = m:ss):</source>
         <translation>時間形式 (min = m:ss)(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="72"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="72"/>
         <source>Display</source>
         <translation>表示</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="73"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="73"/>
         <source>D&amp;ecimals (0–3):</source>
         <translation>小数桁数 (0–3)(&amp;E):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="74"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="74"/>
         <source>U&amp;pdate time:</source>
         <translation>更新時間(&amp;P):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="78"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="78"/>
         <source>Display corrections (motor r/min)</source>
         <translation>表示補正（モータ r/min）</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="79"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="79"/>
         <source>ro-&amp;0, 250 (300)–500 r/min:</source>
         <translation>ro-&amp;0, 250 (300)–500 r/min:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="79"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="79"/>
         <source>ro-&amp;1, 501–1000 r/min:</source>
         <translation>ro-&amp;1, 501–1000 r/min:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="80"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="80"/>
         <source>ro-&amp;2, 1001–2000 r/min:</source>
         <translation>ro-&amp;2, 1001–2000 r/min:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="80"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="80"/>
         <source>ro-&amp;3, 2001–3000 r/min:</source>
         <translation>ro-&amp;3, 2001–3000 r/min:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="85"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="85"/>
         <source>Preview of the drive&apos;s display</source>
         <translation>ドライバ表示のプレビュー</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="88"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="88"/>
         <source> r/min</source>
         <translation> r/min</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="89"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="89"/>
         <source>Motor speed for the preview</source>
         <translation>プレビュー用のモータ速度</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="90"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="90"/>
         <source>Motor &amp;speed:</source>
         <translation>モータ速度(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="93"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="93"/>
         <source>Forward</source>
         <translation>正転</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="94"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="94"/>
         <source>Reverse (shown with “-”)</source>
         <translation>逆転（“-” 付きで表示）</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="95"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="95"/>
         <source>Dire&amp;ction:</source>
         <translation>回転方向(&amp;C):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="110"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="110"/>
         <source>Drive shows:</source>
         <translation>ドライバ表示:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="214"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="214"/>
         <source>yd</source>
         <translation>yd</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="214"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="214"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="255"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="255"/>
         <source>Drive shows %1 %2</source>
         <translation>ドライバ表示 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="259"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="259"/>
         <source>Section ro-%1: correction %2 r/min, shaft speed %3 r/min.</source>
         <translation>区間 ro-%1: 補正 %2 r/min、軸速度 %3 r/min。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="264"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="264"/>
         <source>%1 has more digits than the drive&apos;s %2-digit display can show.</source>
         <translation>%1 はドライバの %2 桁表示の桁数を超えています。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="268"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="268"/>
         <source>Computed %1 %2; the %3-digit display drops the decimals that do not fit.</source>
         <translation>計算値 %1 %2。%3 桁表示では入りきらない小数部は表示されません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="275"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="275"/>
         <source>Includes edits not yet written.</source>
         <translation>未書込みの編集を含みます。</translation>
     </message>
@@ -11594,7 +11607,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::SpnoSelector</name>
     <message>
-        <location filename="../main/ui/run/SpnoSelector.cpp" line="62"/>
+        <location filename="../ui/run/SpnoSelector.cpp" line="62"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
@@ -11602,12 +11615,12 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StaleLook</name>
     <message>
-        <location filename="../main/ui/widgets/StaleLook.cpp" line="52"/>
+        <location filename="../ui/widgets/StaleLook.cpp" line="52"/>
         <source>not read yet</source>
         <translation>未読出し</translation>
     </message>
     <message>
-        <location filename="../main/ui/widgets/StaleLook.cpp" line="55"/>
+        <location filename="../ui/widgets/StaleLook.cpp" line="55"/>
         <source>updated %1 s ago</source>
         <translation>%1 s 前に更新</translation>
     </message>
@@ -11615,77 +11628,77 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StartPreview</name>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="107"/>
+        <location filename="../model/run/StartPreview.cpp" line="107"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="107"/>
+        <location filename="../model/run/StartPreview.cpp" line="107"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="149"/>
+        <location filename="../model/run/StartPreview.cpp" line="149"/>
         <source>communication group of %1</source>
         <translation>%1 の通信グループ</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="158"/>
+        <location filename="../model/run/StartPreview.cpp" line="158"/>
         <source>It runs with running data SPno%1</source>
         <translation>運転データ: SPno%1</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="160"/>
+        <location filename="../model/run/StartPreview.cpp" line="160"/>
         <source> at %1</source>
         <translation> 速度 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="163"/>
+        <location filename="../model/run/StartPreview.cpp" line="163"/>
         <source>, direction %1 (the direction command sent since)</source>
         <translation>、回転方向 %1（その後に送信した回転方向指令）</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="164"/>
+        <location filename="../model/run/StartPreview.cpp" line="164"/>
         <source>, direction %1</source>
         <translation>、回転方向 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="167"/>
+        <location filename="../model/run/StartPreview.cpp" line="167"/>
         <source>Which running data it runs with could not be read.</source>
         <translation>どの運転データで運転するかを読み出せませんでした。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="170"/>
+        <location filename="../model/run/StartPreview.cpp" line="170"/>
         <source>Warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="172"/>
+        <location filename="../model/run/StartPreview.cpp" line="172"/>
         <source>The start also reaches machine number(s) %1: %2.</source>
         <translation>運転開始は局番 %1 にも届きます: %2。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="175"/>
+        <location filename="../model/run/StartPreview.cpp" line="175"/>
         <source>Not read: %1.</source>
         <translation>未読出し: %1。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="187"/>
+        <location filename="../model/run/StartPreview.cpp" line="187"/>
         <source>This starts the motor of machine number %1.</source>
         <translation>局番 %1 のモータを起動します。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="189"/>
+        <location filename="../model/run/StartPreview.cpp" line="189"/>
         <source>This sets the speed command of machine number %1 to %2: its motor runs.</source>
         <translation>局番 %1 の速度指令を %2 に設定します: モータが運転します。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="193"/>
+        <location filename="../model/run/StartPreview.cpp" line="193"/>
         <source>Make sure that nobody is near the machine and that it may move. STOP ALL stops every drive at any time.</source>
         <translation>機械の近くに人がいないこと、機械が動いてもよいことを確認してください。全停止でいつでも全ドライバを停止できます。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="196"/>
+        <location filename="../model/run/StartPreview.cpp" line="196"/>
         <source>You are asked once per drive while the program runs.</source>
         <translation>プログラム実行中、ドライバごとに 1 回確認します。</translation>
     </message>
@@ -11693,12 +11706,12 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StatusLight</name>
     <message>
-        <location filename="../main/ui/widgets/StatusLight.cpp" line="30"/>
+        <location filename="../ui/widgets/StatusLight.cpp" line="30"/>
         <source>Status not known yet</source>
         <translation>状態不明</translation>
     </message>
     <message>
-        <location filename="../main/ui/widgets/StatusLight.cpp" line="42"/>
+        <location filename="../ui/widgets/StatusLight.cpp" line="42"/>
         <source>Status light %1: %2</source>
         <translation>ステータスランプ %1: %2</translation>
     </message>
@@ -11706,63 +11719,63 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StopAllButton</name>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="15"/>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="75"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="15"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="75"/>
         <source>STOP ALL</source>
         <translation>全停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="19"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="19"/>
         <source>Stops every drive on the bus at once (%1), then checks that each has stopped.</source>
         <translation>バス上の全ドライバを一斉に停止し (%1)、各ドライバの停止を確認します。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="70"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="70"/>
         <source>STOPPING…</source>
         <translation>停止中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="86"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="86"/>
         <source>The stop broadcast to %1 drives FAILED: %2</source>
         <translation>%1 台のドライバへの停止ブロードキャストに失敗しました: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="89"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="89"/>
         <source>Stop sent to every drive. No drives are known on the bus, so none was checked; scan the bus to have them checked.</source>
         <translation>全ドライバに停止を送信しました。バス上に既知のドライバがないため、停止は確認していません。確認するにはバスをスキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="96"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="96"/>
         <source>Machine number %1: stopped after %2 s</source>
         <translation>局番 %1: %2 s 後に停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="99"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="99"/>
         <source>Machine number %1: STILL RUNNING (%2)</source>
         <translation>局番 %1: まだ運転中 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="102"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="102"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped</source>
         <translation>局番 %1: 応答なし、停止未確認</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="117"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="117"/>
         <source>STOP ALL: the stop broadcast FAILED</source>
         <translation>全停止: 停止ブロードキャストに失敗しました</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="118"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="118"/>
         <source>STOP ALL: stop sent, no drive checked</source>
         <translation>全停止: 停止を送信、ドライバは未確認</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="119"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="119"/>
         <source>STOP ALL: every drive stopped</source>
         <translation>全停止: 全ドライバ停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="120"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="120"/>
         <source>STOP ALL: not every drive is confirmed stopped</source>
         <translation>全停止: 停止が確認できないドライバがあります</translation>
     </message>
@@ -11770,87 +11783,87 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StopAllCommand</name>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="54"/>
+        <location filename="../cli/StopAllCommand.cpp" line="54"/>
         <source>Broadcast stop to every drive, then confirm each has stopped (needs --yes)</source>
         <translation>全ドライバに停止をブロードキャストし、各ドライバの停止を確認します（--yes が必要）</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="60"/>
+        <location filename="../cli/StopAllCommand.cpp" line="60"/>
         <source>Send the stop broadcast.</source>
         <translation>停止ブロードキャストを送信します。</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="62"/>
+        <location filename="../cli/StopAllCommand.cpp" line="62"/>
         <source>Machine numbers to confirm, e.g. 1,2,5-7 (default on a simulated bus: its drives).</source>
         <translation>停止を確認する局番。例: 1,2,5-7（シミュレーションバスでの既定: そのバスのドライバ）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="63"/>
+        <location filename="../cli/StopAllCommand.cpp" line="63"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="72"/>
+        <location filename="../cli/StopAllCommand.cpp" line="72"/>
         <source>error: usage: %1 (no other arguments)</source>
         <translation>エラー: 使い方: %1（他の引数なし）</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="80"/>
+        <location filename="../cli/StopAllCommand.cpp" line="80"/>
         <source>error: --ids: %1</source>
         <translation>エラー: --ids: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="87"/>
+        <location filename="../cli/StopAllCommand.cpp" line="87"/>
         <source>Would broadcast to every drive on the bus (machine number 0, no reply):</source>
         <translation>バス上の全ドライバにブロードキャストします（局番 0、応答なし）:</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="91"/>
+        <location filename="../cli/StopAllCommand.cpp" line="91"/>
         <source>Add --yes to send it.</source>
         <translation>送信するには --yes を付けてください。</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="119"/>
+        <location filename="../cli/StopAllCommand.cpp" line="119"/>
         <source>Broadcast %1: %2</source>
         <translation>ブロードキャスト %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="120"/>
+        <location filename="../cli/StopAllCommand.cpp" line="120"/>
         <source>Broadcast %1 FAILED: %2: %3</source>
         <translation>ブロードキャスト %1 失敗: %2: %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>Family</source>
         <translation>ファミリ</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>State</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>After</source>
         <translation>経過時間</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>Detail</source>
         <translation>詳細</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="156"/>
+        <location filename="../cli/StopAllCommand.cpp" line="156"/>
         <source>Only the broadcast was sent: drives do not answer a broadcast, so nothing confirms that they stopped. To confirm, pass the machine numbers on this bus, e.g. --ids 1,2,5-7 (opentop-cli scan finds them).</source>
         <translation>ブロードキャストのみ送信しました: ドライバはブロードキャストに応答しないため、停止を確認する手段がありません。確認するには、このバスの局番を指定してください。例: --ids 1,2,5-7（opentop-cli scan で検出できます）。</translation>
     </message>
@@ -11858,22 +11871,22 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StopConfirmer</name>
     <message>
-        <location filename="../main/model/run/StopConfirmer.cpp" line="56"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="56"/>
         <source>%1 drives report neither running state nor speed</source>
         <translation>%1 ドライバは運転状態も速度も通知しません</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StopConfirmer.cpp" line="86"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="86"/>
         <source>%1 is %2: the drive does not take motion commands over the bus (it follows its input terminals)</source>
         <translation>%1 は %2 です: ドライバはバス経由の運転コマンドを受け付けません（入力端子に従います）</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StopConfirmer.cpp" line="140"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="140"/>
         <source>still at %1 after %2 s</source>
         <translation>%2 s 後も %1 のままです</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StopConfirmer.cpp" line="142"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="142"/>
         <source>still running after %1 s</source>
         <translation>%1 s 後も運転中</translation>
     </message>
@@ -11881,7 +11894,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TcpSimServer</name>
     <message>
-        <location filename="../main/sim/TcpSimServer.cpp" line="47"/>
+        <location filename="../sim/TcpSimServer.cpp" line="47"/>
         <source>cannot listen on %1:%2: %3</source>
         <translation>%1:%2 で待ち受けできません: %3</translation>
     </message>
@@ -11889,47 +11902,47 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TerminalLamps</name>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="184"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="184"/>
         <source>n/a</source>
         <translation>N/A</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="185"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="185"/>
         <source>%1: not applicable (%2)</source>
         <translation>%1: 該当なし (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="188"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="188"/>
         <source>?</source>
         <translation>?</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="189"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="189"/>
         <source>%1: not read</source>
         <translation>%1: 未読出し</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="193"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="193"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="193"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="193"/>
         <source>OFF</source>
         <translation>OFF</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="194"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="194"/>
         <source>%1 is ON</source>
         <translation>%1 は ON</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="194"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="194"/>
         <source>%1 is OFF</source>
         <translation>%1 は OFF</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="196"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="196"/>
         <source>%1 (last state read, not live)</source>
         <translation>%1（最後に読み出した状態、更新停止）</translation>
     </message>
@@ -11937,112 +11950,112 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TestRunPanel</name>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="45"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="45"/>
         <source>&lt;b&gt;Test run of machine number %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;局番 %1 の試運転&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="50"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="50"/>
         <source>Machine number %1 has not been identified as a drive of a known family; a test run needs one.</source>
         <translation>局番 %1 は既知のファミリのドライバとして識別されていません。試運転には識別が必要です。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="111"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="111"/>
         <source>&amp;Start</source>
         <translation>運転開始(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="111"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="111"/>
         <source>S&amp;top</source>
         <translation>停止(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="112"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="112"/>
         <source>&amp;CW</source>
         <translation>&amp;CW</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="112"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="112"/>
         <source>CC&amp;W</source>
         <translation>CC&amp;W</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="113"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="113"/>
         <source>&amp;Hold</source>
         <translation>保持(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="113"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="113"/>
         <source>&amp;Free</source>
         <translation>フリー(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="132"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="132"/>
         <source>Se&amp;lect running data</source>
         <translation>運転データ選択(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="143"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="143"/>
         <source>Return to &amp;I/O priority</source>
         <translation>I/O 優先に戻す(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="145"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="145"/>
         <source>Give run, stop, direction and speed selection back to the drive&apos;s input terminals</source>
         <translation>運転、停止、回転方向、速度選択をドライバの入力端子に戻します</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="191"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="191"/>
         <source>Cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>ドライバが運転コマンドを受け付けるかを確認するための %1 を読み出せません: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="227"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="227"/>
         <source>Reading what the start will run…</source>
         <translation>運転開始時の動作を読出し中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="243"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="243"/>
         <source>Start the motor</source>
         <translation>モータの運転開始</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="257"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="257"/>
         <source>Sending %1…</source>
         <translation>%1 を送信中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="293"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="293"/>
         <source>Sent: %1</source>
         <translation>送信済み: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="308"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="308"/>
         <source>Read back after the command at %1:</source>
         <translation>%1 のコマンド後の読み戻し:</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="311"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="311"/>
         <source>The motor is running.</source>
         <translation>モータは運転中です。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="311"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="311"/>
         <source>The motor is stopped.</source>
         <translation>モータは停止しています。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="313"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="313"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="315"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="315"/>
         <source>(not read: %1)</source>
         <translation>（未読出し: %1）</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="379"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="379"/>
         <source>Polling is paused: the controller brakes the motor %1 s after the last frame it receives (%2). Resume polling to keep the motor running.</source>
         <translation>ポーリングが一時停止中です: コントローラは最後のフレームを受信してから %1 s 後にモータにブレーキをかけます (%2)。モータの運転を続けるにはポーリングを再開してください。</translation>
     </message>
@@ -12050,12 +12063,12 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TrafficDescriber</name>
     <message>
-        <location filename="../main/model/traffic/TrafficDescriber.cpp" line="150"/>
+        <location filename="../model/traffic/TrafficDescriber.cpp" line="150"/>
         <source>broadcast: every drive executes it</source>
         <translation>ブロードキャスト: 全ドライバが実行</translation>
     </message>
     <message>
-        <location filename="../main/model/traffic/TrafficDescriber.cpp" line="159"/>
+        <location filename="../model/traffic/TrafficDescriber.cpp" line="159"/>
         <source>to %1 (group parent: also %2)</source>
         <translation>%1 宛（グループ親局: %2 も実行）</translation>
     </message>
@@ -12063,57 +12076,57 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TrafficLogModel</name>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="93"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="93"/>
         <source>Tx</source>
         <translation>Tx</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="95"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="95"/>
         <source>Rx</source>
         <translation>Rx</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="97"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="97"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="108"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="108"/>
         <source>%1 (%2 ms)</source>
         <translation>%1 (%2 ms)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="123"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="123"/>
         <source>Time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="125"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="125"/>
         <source>Direction</source>
         <translation>方向</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="127"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="127"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="129"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="129"/>
         <source>Function</source>
         <translation>ファンクション</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="131"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="131"/>
         <source>Bytes</source>
         <translation>バイト</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="133"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="133"/>
         <source>Meaning</source>
         <translation>意味</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="135"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="135"/>
         <source>Error</source>
         <translation>エラー</translation>
     </message>
@@ -12121,155 +12134,155 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TrafficLogView</name>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="43"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="43"/>
         <source>&amp;Errors only</source>
         <translation>エラーのみ(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="44"/>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="157"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="44"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="157"/>
         <source>&amp;Pause</source>
         <translation>一時停止(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="52"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="52"/>
         <source>All drives</source>
         <translation>全ドライバ</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="54"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="54"/>
         <source>All</source>
         <translation>すべて</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="55"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="55"/>
         <source>Tx (requests)</source>
         <translation>Tx（要求）</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="56"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="56"/>
         <source>Rx (replies)</source>
         <translation>Rx（応答）</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="57"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="57"/>
         <source>Events (no reply)</source>
         <translation>イベント（応答なし）</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="61"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="61"/>
         <source>&amp;Clear</source>
         <translation>クリア(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="63"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="63"/>
         <source>&amp;Save…</source>
         <translation>保存(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="66"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="66"/>
         <source>&amp;Drive:</source>
         <translation>ドライバ(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="68"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="68"/>
         <source>Di&amp;rection:</source>
         <translation>方向(&amp;R):</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="82"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="82"/>
         <source>Frames</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
         <source>Requests</source>
         <translation>要求</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
         <source>Replies</source>
         <translation>応答</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Timeouts</source>
         <translation>タイムアウト</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>CRC errors</source>
         <translation>CRC エラー</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Exceptions</source>
         <translation>例外</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Wrong/garbled</source>
         <translation>不正/化け</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Mean ms</source>
         <translation>平均 ms</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Max ms</source>
         <translation>最大 ms</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="114"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="114"/>
         <source>Statistics per drive</source>
         <translation>ドライバ別統計</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="157"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="157"/>
         <source>&amp;Resume</source>
         <translation>再開(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="211"/>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="264"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="211"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="264"/>
         <source>Broadcast</source>
         <translation>ブロードキャスト</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="211"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="211"/>
         <source>Drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="253"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="253"/>
         <source>%1 addresses did not answer: %2</source>
         <translation>%1 個のアドレスが応答しませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="255"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="255"/>
         <source>No reply from machine numbers %1</source>
         <translation>局番 %1 から応答なし</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="281"/>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="286"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="281"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="286"/>
         <source>Save traffic log</source>
         <translation>通信ログを保存</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="281"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="281"/>
         <source>Text files (*.txt)</source>
         <translation>テキストファイル (*.txt)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="287"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="287"/>
         <source>Could not save %1: %2</source>
         <translation>%1 を保存できませんでした: %2</translation>
     </message>
@@ -12277,456 +12290,456 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::Transport</name>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="16"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="16"/>
         <source>No serial port given: enter a device such as /dev/ttyUSB0 or COM3.</source>
         <translation>シリアルポートが指定されていません: /dev/ttyUSB0 や COM3 などのデバイスを入力してください。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="20"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="20"/>
         <source>Baud rate %1 is not supported: use 1200–115200 (e.g. 9600, 19200, 38400, 57600, 115200).</source>
         <translation>ボーレート %1 はサポートされていません: 1200–115200 を使用してください（例: 9600、19200、38400、57600、115200）。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="26"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="26"/>
         <source>Parity &apos;%1&apos; is not supported: use N (none), E (even) or O (odd).</source>
         <translation>パリティ &apos;%1&apos; はサポートされていません: N（なし）、E（偶数）、O（奇数）を使用してください。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="31"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="31"/>
         <source>%1 data bits are not supported: use 7 or 8.</source>
         <translation>データビット %1 はサポートされていません: 7 または 8 を使用してください。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="35"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="35"/>
         <source>%1 stop bits are not supported: use 1 or 2.</source>
         <translation>ストップビット %1 はサポートされていません: 1 または 2 を使用してください。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="39"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="39"/>
         <source>Byte timeout %1 ms is not allowed: use 1–10000 ms, or 0 to derive it from the baud rate.</source>
         <translation>バイトタイムアウト %1 ms は使用できません: 1–10000 ms、またはボーレートから算出する場合は 0 を使用してください。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="47"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="47"/>
         <source>No host given: enter the gateway&apos;s address, e.g. 192.168.1.10.</source>
         <translation>ホストが指定されていません: ゲートウェイのアドレスを入力してください。例: 192.168.1.10。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="51"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="51"/>
         <source>TCP port %1 is not allowed: use 1–65535 (Modbus TCP uses 502).</source>
         <translation>TCP ポート %1 は使用できません: 1–65535 を使用してください（Modbus TCP は 502）。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="58"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="58"/>
         <source>No simulated devices given: use a list such as dbu200@1,dcpid@7.</source>
         <translation>シミュレーションデバイスが指定されていません: dbu200@1,dcpid@7 のようなリストを使用してください。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="64"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="64"/>
         <source>Timeout %1 ms is not allowed: use 10–10000 ms.</source>
         <translation>タイムアウト %1 ms は使用できません: 10–10000 ms を使用してください。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="68"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="68"/>
         <source>%1 retries are not allowed: use 0–10.</source>
         <translation>リトライ %1 回は使用できません: 0–10 を使用してください。</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="56"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="56"/>
         <source>Vendor name</source>
         <translation>ベンダ名</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="58"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="58"/>
         <source>Product code</source>
         <translation>製品コード</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="60"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="60"/>
         <source>Revision</source>
         <translation>リビジョン</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="62"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="62"/>
         <source>Vendor URL</source>
         <translation>ベンダ URL</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="64"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="64"/>
         <source>Product name</source>
         <translation>製品名</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="66"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="66"/>
         <source>Model name</source>
         <translation>モデル名</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="68"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="68"/>
         <source>User application name</source>
         <translation>ユーザアプリケーション名</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="70"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="70"/>
         <source>Object 0x%1</source>
         <translation>オブジェクト 0x%1</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="51"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="51"/>
         <source>Cannot open %1: %2</source>
         <translation>%1 を開けません: %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="127"/>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="309"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="127"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="309"/>
         <source>%1 is not open</source>
         <translation>%1 が開いていません</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="144"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="144"/>
         <source>send failed</source>
         <translation>送信失敗</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="168"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="168"/>
         <source>interrupted while waiting</source>
         <translation>待機中に中断しました</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="172"/>
-        <location filename="../main/transport/MockBackend.cpp" line="100"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="172"/>
+        <location filename="../transport/MockBackend.cpp" line="100"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 以内に応答がありません</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="201"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="201"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>別の応答が続きました: この応答は以前の要求に対するものの可能性があります</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="270"/>
-        <location filename="../main/transport/RtuFrame.cpp" line="140"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="270"/>
+        <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>局番 %1 からの応答（期待値 %2）</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="281"/>
-        <location filename="../main/transport/RtuBackend.cpp" line="145"/>
-        <location filename="../main/transport/TcpBackend.cpp" line="89"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="281"/>
+        <location filename="../transport/RtuBackend.cpp" line="145"/>
+        <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>応答が不完全です</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="286"/>
-        <location filename="../main/transport/RtuFrame.cpp" line="133"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="286"/>
+        <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 不一致</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="293"/>
-        <location filename="../main/transport/RtuBackend.cpp" line="152"/>
-        <location filename="../main/transport/TcpBackend.cpp" line="95"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="293"/>
+        <location filename="../transport/RtuBackend.cpp" line="152"/>
+        <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>受信失敗</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="363"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="363"/>
         <source> (connection closed)</source>
         <translation> (接続切断)</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="384"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="384"/>
         <source>stale bytes discarded before sending</source>
         <translation>送信前に残留バイトを破棄しました</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="466"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="466"/>
         <source>late bytes discarded after an error</source>
         <translation>エラー後に遅延バイトを破棄しました</translation>
     </message>
     <message>
-        <location filename="../main/transport/MockBackend.cpp" line="57"/>
+        <location filename="../transport/MockBackend.cpp" line="57"/>
         <source>mock is not open</source>
         <translation>mock が開いていません</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusBackend.cpp" line="39"/>
+        <location filename="../transport/ModbusBackend.cpp" line="39"/>
         <source>→ %1 bytes</source>
         <translation>→ %1 バイト</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusBackend.cpp" line="51"/>
+        <location filename="../transport/ModbusBackend.cpp" line="51"/>
         <source>echo %1 = %2</source>
         <translation>エコー %1 = %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusBackend.cpp" line="54"/>
+        <location filename="../transport/ModbusBackend.cpp" line="54"/>
         <source>echo %1 ×%2</source>
         <translation>エコー %1 ×%2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="192"/>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="211"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="192"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="211"/>
         <source>cancelled before sending</source>
         <translation>送信前にキャンセルしました</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="242"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="242"/>
         <source>cannot open %1</source>
         <translation>%1 を開けません</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="285"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="285"/>
         <source>client closed</source>
         <translation>クライアントが切断しました</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="142"/>
+        <location filename="../transport/ModbusRequest.cpp" line="142"/>
         <source>Slave address %1 is not allowed: use 1–247, or 0 to broadcast a write.</source>
         <translation>スレーブアドレス %1 は使用できません: 1–247、または書込みのブロードキャストには 0 を使用してください。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="147"/>
+        <location filename="../transport/ModbusRequest.cpp" line="147"/>
         <source>Function code 0x%1 is not allowed: use 0x01–0x7F.</source>
         <translation>ファンクションコード 0x%1 は使用できません: 0x01–0x7F を使用してください。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="151"/>
+        <location filename="../transport/ModbusRequest.cpp" line="151"/>
         <source>Timeout %1 ms is not allowed: use 10–10000 ms, or -1 for the default.</source>
         <translation>タイムアウト %1 ms は使用できません: 10–10000 ms、または既定値には -1 を使用してください。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="156"/>
+        <location filename="../transport/ModbusRequest.cpp" line="156"/>
         <source>%1 retries are not allowed: use 0–10, or -1 for the default.</source>
         <translation>リトライ %1 回は使用できません: 0–10、または既定値には -1 を使用してください。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="163"/>
+        <location filename="../transport/ModbusRequest.cpp" line="163"/>
         <source>Function code 0x%1 must be sent as a raw request.</source>
         <translation>ファンクションコード 0x%1 は raw 要求として送信する必要があります。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="167"/>
+        <location filename="../transport/ModbusRequest.cpp" line="167"/>
         <source>Raw request data of %1 bytes is too long: at most %2 bytes.</source>
         <translation>%1 バイトの raw 要求データは長すぎます: 最大 %2 バイトです。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="173"/>
+        <location filename="../transport/ModbusRequest.cpp" line="173"/>
         <source>Device identification cannot be broadcast.</source>
         <translation>デバイス識別はブロードキャストできません。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="183"/>
+        <location filename="../transport/ModbusRequest.cpp" line="183"/>
         <source>A read cannot be broadcast: use slave address 1–247.</source>
         <translation>読出しはブロードキャストできません: スレーブアドレス 1–247 を使用してください。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="186"/>
+        <location filename="../transport/ModbusRequest.cpp" line="186"/>
         <source>Cannot read %1 registers at once: use 1–125 registers.</source>
         <translation>%1 レジスタを一度に読み出せません: 1–125 レジスタを使用してください。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="193"/>
+        <location filename="../transport/ModbusRequest.cpp" line="193"/>
         <source>Write single register needs exactly 1 value, not %1.</source>
         <translation>単一レジスタ書込みには値が 1 つだけ必要です（%1 個ではなく）。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="199"/>
+        <location filename="../transport/ModbusRequest.cpp" line="199"/>
         <source>Cannot write %1 registers at once: use 1–123 registers.</source>
         <translation>%1 レジスタを一度に書き込めません: 1–123 レジスタを使用してください。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="204"/>
+        <location filename="../transport/ModbusRequest.cpp" line="204"/>
         <source>%1 values given for %2 registers.</source>
         <translation>%2 レジスタに対して %1 個の値が指定されています。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="213"/>
+        <location filename="../transport/ModbusRequest.cpp" line="213"/>
         <source>Registers %1 ×%2 run past the last address 0xFFFF.</source>
         <translation>レジスタ %1 ×%2 が最終アドレス 0xFFFF を超えています。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="224"/>
+        <location filename="../transport/ModbusRequest.cpp" line="224"/>
         <source>device identification code %1 object %2</source>
         <translation>デバイス識別 コード %1 オブジェクト %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="232"/>
+        <location filename="../transport/ModbusRequest.cpp" line="232"/>
         <source>raw %1 %2</source>
         <translation>raw %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="236"/>
+        <location filename="../transport/ModbusRequest.cpp" line="236"/>
         <source>read %1 %2 ×%3</source>
         <translation>読出し %1 %2 ×%3</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="240"/>
+        <location filename="../transport/ModbusRequest.cpp" line="240"/>
         <source>write %1 %2 = %3</source>
         <translation>書込み %1 %2 = %3</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="243"/>
+        <location filename="../transport/ModbusRequest.cpp" line="243"/>
         <source>write %1 %2 ×%3 = %4</source>
         <translation>書込み %1 %2 ×%3 = %4</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="249"/>
+        <location filename="../transport/ModbusRequest.cpp" line="249"/>
         <source>broadcast %1</source>
         <translation>ブロードキャスト %1</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="11"/>
+        <location filename="../transport/ModbusResult.cpp" line="11"/>
         <source>ok</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="13"/>
+        <location filename="../transport/ModbusResult.cpp" line="13"/>
         <source>timeout</source>
         <translation>タイムアウト</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="15"/>
+        <location filename="../transport/ModbusResult.cpp" line="15"/>
         <source>CRC error</source>
         <translation>CRC エラー</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="17"/>
+        <location filename="../transport/ModbusResult.cpp" line="17"/>
         <source>reply from wrong slave</source>
         <translation>異なるスレーブからの応答</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="19"/>
+        <location filename="../transport/ModbusResult.cpp" line="19"/>
         <source>exception</source>
         <translation>例外</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="21"/>
+        <location filename="../transport/ModbusResult.cpp" line="21"/>
         <source>malformed reply</source>
         <translation>不正な応答</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="23"/>
+        <location filename="../transport/ModbusResult.cpp" line="23"/>
         <source>port error</source>
         <translation>ポートエラー</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="25"/>
+        <location filename="../transport/ModbusResult.cpp" line="25"/>
         <source>not connected</source>
         <translation>未接続</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="27"/>
+        <location filename="../transport/ModbusResult.cpp" line="27"/>
         <source>invalid request</source>
         <translation>不正な要求</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="29"/>
+        <location filename="../transport/ModbusResult.cpp" line="29"/>
         <source>cancelled</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="38"/>
+        <location filename="../transport/ModbusResult.cpp" line="38"/>
         <source>Illegal function</source>
         <translation>不正なファンクション</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="40"/>
+        <location filename="../transport/ModbusResult.cpp" line="40"/>
         <source>Illegal data address</source>
         <translation>不正なデータアドレス</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="42"/>
+        <location filename="../transport/ModbusResult.cpp" line="42"/>
         <source>Illegal data value</source>
         <translation>不正なデータ値</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="44"/>
+        <location filename="../transport/ModbusResult.cpp" line="44"/>
         <source>Slave device failure</source>
         <translation>スレーブデバイス障害</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="46"/>
+        <location filename="../transport/ModbusResult.cpp" line="46"/>
         <source>Acknowledge (processing)</source>
         <translation>確認応答（処理中）</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="48"/>
+        <location filename="../transport/ModbusResult.cpp" line="48"/>
         <source>Slave device busy</source>
         <translation>スレーブデバイスビジー</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="50"/>
+        <location filename="../transport/ModbusResult.cpp" line="50"/>
         <source>Negative acknowledge</source>
         <translation>否定応答</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="52"/>
+        <location filename="../transport/ModbusResult.cpp" line="52"/>
         <source>Memory parity error</source>
         <translation>メモリパリティエラー</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="54"/>
+        <location filename="../transport/ModbusResult.cpp" line="54"/>
         <source>Gateway path unavailable</source>
         <translation>ゲートウェイパス使用不可</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="56"/>
+        <location filename="../transport/ModbusResult.cpp" line="56"/>
         <source>Gateway target device failed to respond</source>
         <translation>ゲートウェイ先デバイス応答なし</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="60"/>
+        <location filename="../transport/ModbusResult.cpp" line="60"/>
         <source>Prohibited action</source>
         <translation>禁止操作</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="62"/>
+        <location filename="../transport/ModbusResult.cpp" line="62"/>
         <source>Undefined error</source>
         <translation>未定義エラー</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="64"/>
+        <location filename="../transport/ModbusResult.cpp" line="64"/>
         <source>Unknown exception</source>
         <translation>不明な例外</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="74"/>
+        <location filename="../transport/ModbusResult.cpp" line="74"/>
         <source>exception %1 %2</source>
         <translation>例外 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="79"/>
+        <location filename="../transport/ModbusResult.cpp" line="79"/>
         <source>timeout after %1 attempts</source>
         <translation>%1 回試行後にタイムアウト</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="81"/>
+        <location filename="../transport/ModbusResult.cpp" line="81"/>
         <source>timeout (no reply)</source>
         <translation>タイムアウト（応答なし）</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="89"/>
+        <location filename="../transport/ModbusResult.cpp" line="89"/>
         <source> (%1 attempts)</source>
         <translation> (%1 回試行)</translation>
     </message>
     <message>
-        <location filename="../main/transport/PortLock.cpp" line="162"/>
+        <location filename="../transport/PortLock.cpp" line="162"/>
         <source>%1 is in use by another program; close it first.</source>
         <translation>%1 は他のプログラムが使用中です。先に終了してください。</translation>
     </message>
     <message>
-        <location filename="../main/transport/PortLock.cpp" line="167"/>
+        <location filename="../transport/PortLock.cpp" line="167"/>
         <source>another program</source>
         <translation>他のプログラム</translation>
     </message>
     <message>
-        <location filename="../main/transport/PortLock.cpp" line="169"/>
+        <location filename="../transport/PortLock.cpp" line="169"/>
         <source>%1 is in use by %2 (PID %3); close it first.</source>
         <translation>%1 は %2 (PID %3) が使用中です。先に終了してください。</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuBackend.cpp" line="82"/>
+        <location filename="../transport/RtuBackend.cpp" line="82"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -12735,92 +12748,92 @@ then log out and in again (the group applies to new sessions only).</source>
 ログアウトして再ログインしてください（グループは新しいセッションにのみ適用されます）。</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuBackend.cpp" line="88"/>
+        <location filename="../transport/RtuBackend.cpp" line="88"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> (デバイスがこのパリティに対応していない可能性があります。pty は N が必要です)</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuBackend.cpp" line="123"/>
+        <location filename="../transport/RtuBackend.cpp" line="123"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>応答が %1 バイトを示していますが、RTU フレームの最大長を超えています</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuBackend.cpp" line="144"/>
+        <location filename="../transport/RtuBackend.cpp" line="144"/>
         <source>no reply</source>
         <translation>応答なし</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="127"/>
+        <location filename="../transport/RtuFrame.cpp" line="127"/>
         <source>reply too short (%1 bytes)</source>
         <translation>応答が短すぎます (%1 バイト)</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="148"/>
+        <location filename="../transport/RtuFrame.cpp" line="148"/>
         <source>exception reply of %1 bytes</source>
         <translation>%1 バイトの例外応答</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="159"/>
+        <location filename="../transport/RtuFrame.cpp" line="159"/>
         <source>reply function %1, expected %2</source>
         <translation>応答ファンクション %1、期待値 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="166"/>
+        <location filename="../transport/RtuFrame.cpp" line="166"/>
         <source>reply ends inside its own data</source>
         <translation>応答がデータの途中で終わっています</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="171"/>
+        <location filename="../transport/RtuFrame.cpp" line="171"/>
         <source>reply of %1 bytes, expected %2</source>
         <translation>応答 %1 バイト、期待値 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="181"/>
+        <location filename="../transport/RtuFrame.cpp" line="181"/>
         <source>MEI type %1, expected %2</source>
         <translation>MEI タイプ %1、期待値 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="194"/>
+        <location filename="../transport/RtuFrame.cpp" line="194"/>
         <source>byte count %1, expected %2</source>
         <translation>バイト数 %1、期待値 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="207"/>
+        <location filename="../transport/RtuFrame.cpp" line="207"/>
         <source>echo %1 = %2 differs from the write</source>
         <translation>エコー %1 = %2 が書込み内容と異なります</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="218"/>
+        <location filename="../transport/RtuFrame.cpp" line="218"/>
         <source>echo %1 ×%2 differs from the write</source>
         <translation>エコー %1 ×%2 が書込み内容と異なります</translation>
     </message>
     <message>
-        <location filename="../main/transport/SerialPortList.cpp" line="64"/>
+        <location filename="../transport/SerialPortList.cpp" line="64"/>
         <source>Pseudo-terminals (e.g. /dev/pts/3 or a socat link) are not listed: type their path.</source>
         <translation>疑似端末（例: /dev/pts/3 や socat のリンク）は一覧に表示されません: パスを入力してください。</translation>
     </message>
     <message>
-        <location filename="../main/transport/TcpBackend.cpp" line="105"/>
+        <location filename="../transport/TcpBackend.cpp" line="105"/>
         <source>MBAP length %1</source>
         <translation>MBAP 長 %1</translation>
     </message>
     <message>
-        <location filename="../main/transport/TrafficEntry.cpp" line="13"/>
+        <location filename="../transport/TrafficEntry.cpp" line="13"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../main/transport/TrafficEntry.cpp" line="15"/>
+        <location filename="../transport/TrafficEntry.cpp" line="15"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../main/transport/TrafficEntry.cpp" line="17"/>
+        <location filename="../transport/TrafficEntry.cpp" line="17"/>
         <source>--</source>
         <translation>--</translation>
     </message>
     <message>
-        <location filename="../main/transport/TrafficEntry.cpp" line="37"/>
+        <location filename="../transport/TrafficEntry.cpp" line="37"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
@@ -12828,13 +12841,13 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendAxes</name>
     <message>
-        <location filename="../main/ui/trends/TrendAxes.cpp" line="40"/>
-        <location filename="../main/ui/trends/TrendAxes.cpp" line="46"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="40"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="46"/>
         <source>%1 [%2]</source>
         <translation>%1 [%2]</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendAxes.cpp" line="45"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="45"/>
         <source>[%1]</source>
         <translation>[%1]</translation>
     </message>
@@ -12842,22 +12855,22 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendChart</name>
     <message>
-        <location filename="../main/ui/trends/TrendChart.cpp" line="43"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="43"/>
         <source>Time (hh:mm:ss)</source>
         <translation>時刻 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendChart.cpp" line="85"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="85"/>
         <source>Drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendChart.cpp" line="277"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="277"/>
         <source>There is no trend data to export yet.</source>
         <translation>エクスポートするトレンドデータがまだありません。</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendChart.cpp" line="290"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="290"/>
         <source>Cannot write the picture %1.</source>
         <translation>画像 %1 を書き込めません。</translation>
     </message>
@@ -12865,12 +12878,12 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendCsv</name>
     <message>
-        <location filename="../main/model/monitor/TrendCsv.cpp" line="25"/>
+        <location filename="../model/monitor/TrendCsv.cpp" line="25"/>
         <source>time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/TrendCsv.cpp" line="25"/>
+        <location filename="../model/monitor/TrendCsv.cpp" line="25"/>
         <source>seconds</source>
         <translation>秒</translation>
     </message>
@@ -12878,123 +12891,123 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendPanel</name>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="50"/>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="78"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="50"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="78"/>
         <source>Pause</source>
         <translation>一時停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="51"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="51"/>
         <source>Live</source>
         <translation>ライブ</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="54"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="54"/>
         <source>How often each charted drive is polled. Commands you give always go first; the drives take turns on the bus.</source>
         <translation>グラフ表示中の各ドライバをポーリングする頻度。操作したコマンドは常に優先され、各ドライバは順番にバスを使用します。</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="65"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="65"/>
         <source>30 s</source>
         <translation>30 s</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="65"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="65"/>
         <source>1 min</source>
         <translation>1 min</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="65"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="65"/>
         <source>5 min</source>
         <translation>5 min</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="65"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="65"/>
         <source>15 min</source>
         <translation>15 min</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="74"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="74"/>
         <source>Freezes the chart; the values keep being recorded.</source>
         <translation>グラフを停止します。値の記録は続けます。</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="78"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="78"/>
         <source>Resume</source>
         <translation>再開</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="81"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="81"/>
         <source>Back to the latest values after zooming or pausing.</source>
         <translation>ズームや一時停止の後、最新の値に戻ります。</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="86"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="86"/>
         <source>Clear markers</source>
         <translation>マーカをクリア</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="89"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="89"/>
         <source>Export CSV…</source>
         <translation>CSV エクスポート…</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="92"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="92"/>
         <source>Export PNG…</source>
         <translation>PNG エクスポート…</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="97"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="97"/>
         <source>Drive / quantity</source>
         <translation>ドライバ / 測定項目</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="111"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="111"/>
         <source>Poll rate:</source>
         <translation>ポーリング頻度:</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="113"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="113"/>
         <source>Window:</source>
         <translation>表示範囲:</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="141"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="141"/>
         <source>%1 Hz (%2 ms)</source>
         <translation>%1 Hz (%2 ms)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="200"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="200"/>
         <source>%1 [%2]</source>
         <translation>%1 [%2]</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="253"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="253"/>
         <source>Export trend as CSV</source>
         <translation>トレンドを CSV でエクスポート</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="253"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="253"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="256"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="256"/>
         <source>Export CSV</source>
         <translation>CSV エクスポート</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="262"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="262"/>
         <source>Export trend as picture</source>
         <translation>トレンドを画像でエクスポート</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="263"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="263"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG 画像 (*.png)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="266"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="266"/>
         <source>Export PNG</source>
         <translation>PNG エクスポート</translation>
     </message>
@@ -13002,37 +13015,37 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendReadout</name>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="25"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="25"/>
         <source>Markers: click in the chart to set marker A, click again to set marker B.</source>
         <translation>マーカ: グラフをクリックするとマーカ A、もう一度クリックするとマーカ B を設定します。</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="28"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="28"/>
         <source>A %1   B %2   Δt = B − A = %3 s</source>
         <translation>A %1   B %2   Δt = B − A = %3 s</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="31"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="31"/>
         <source>A %1   (click in the chart to set marker B)</source>
         <translation>A %1   （グラフをクリックしてマーカ B を設定）</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="32"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="32"/>
         <source>B %1   (click in the chart to set marker A)</source>
         <translation>B %1   （グラフをクリックしてマーカ A を設定）</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="34"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="34"/>
         <source>no data</source>
         <translation>データなし</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="44"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="44"/>
         <source>%1:   A %2   B %3   Δ %4</source>
         <translation>%1:   A %2   B %3   Δ %4</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="46"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="46"/>
         <source>%1:   %2 %3</source>
         <translation>%1:   %2 %3</translation>
     </message>
@@ -13040,27 +13053,27 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitRecordJson</name>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="105"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="105"/>
         <source>not a unit record (format is not &quot;%1&quot;)</source>
         <translation>製品の記録ではありません（format が &quot;%1&quot; ではありません）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="108"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="108"/>
         <source>unit record version %1 is not known to this program (it reads up to %2)</source>
         <translation>製品記録のバージョン %1 はこのプログラムでは不明です（%2 まで読込み可能）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="115"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="115"/>
         <source>the unit record has no serial number</source>
         <translation>製品記録にシリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="127"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="127"/>
         <source>unknown unit status &quot;%1&quot;</source>
         <translation>不明な製品ステータス &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="171"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="171"/>
         <source>not JSON: %1</source>
         <translation>JSON ではありません: %1</translation>
     </message>
@@ -13068,102 +13081,102 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitValuesCsv</name>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="70"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="70"/>
         <source>the CSV file is larger than %1 MB</source>
         <translation>CSV ファイルが %1 MB を超えています</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="72"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="72"/>
         <source>not a CSV text file (it holds NUL bytes)</source>
         <translation>CSV テキストファイルではありません（NUL バイトを含みます）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="93"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="93"/>
         <source>line %1: a quoted field is not closed properly</source>
         <translation>%1 行目: 引用符で囲まれたフィールドが正しく閉じられていません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="97"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="97"/>
         <source>line %1: the header must start with &quot;serial&quot;, not &quot;%2&quot;</source>
         <translation>%1 行目: ヘッダは &quot;%2&quot; ではなく &quot;serial&quot; で始まる必要があります</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="101"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="101"/>
         <source>line %1: the header names no per-unit value</source>
         <translation>%1 行目: ヘッダに個別値の名前がありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="103"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="103"/>
         <source>line %1: more than %2 columns</source>
         <translation>%1 行目: 列が %2 個を超えています</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="107"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="107"/>
         <source>line %1: column %2 has no name</source>
         <translation>%1 行目: 列 %2 に名前がありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="109"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="109"/>
         <source>line %1: column &quot;%2&quot; appears twice</source>
         <translation>%1 行目: 列 &quot;%2&quot; が 2 回出現しています</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="118"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="118"/>
         <source>line %1: %2 fields, but the header has %3</source>
         <translation>%1 行目: フィールドが %2 個ですが、ヘッダは %3 個です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="124"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="124"/>
         <source>line %1: no serial number</source>
         <translation>%1 行目: シリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="126"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="126"/>
         <source>line %1: serial number &quot;%2&quot; is already on line %3</source>
         <translation>%1 行目: シリアル番号 &quot;%2&quot; はすでに %3 行目にあります</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="133"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="133"/>
         <source>the CSV file is empty; it needs a header &quot;serial,&lt;parameter&gt;,...&quot;</source>
         <translation>CSV ファイルが空です。ヘッダ &quot;serial,&lt;parameter&gt;,...&quot; が必要です</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="144"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="144"/>
         <source>cannot read %1: %2</source>
         <translation>%1 を読み込めません: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="150"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="150"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="191"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="191"/>
         <source>serial number &quot;%1&quot; is not in the CSV file</source>
         <translation>シリアル番号 &quot;%1&quot; は CSV ファイルにありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="204"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="204"/>
         <source>%1: column &quot;%2&quot; is ambiguous, several positions have this per-unit value; name the column &quot;%3:%2&quot;</source>
         <translation>%1: 列 &quot;%2&quot; があいまいです（複数の位置にこの個別値があります）。列名を &quot;%3:%2&quot; にしてください</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="208"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="208"/>
         <source>%1: the CSV file has no column &quot;%2&quot; (or &quot;%3:%2&quot;) for this per-unit value</source>
         <translation>%1: CSV ファイルにこの個別値の列 &quot;%2&quot;（または &quot;%3:%2&quot;）がありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="213"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="213"/>
         <source>line %1, column &quot;%2&quot;: no value for serial number &quot;%3&quot;</source>
         <translation>%1 行目、列 &quot;%2&quot;: シリアル番号 &quot;%3&quot; の値がありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="222"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="222"/>
         <source>line %1, column &quot;%2&quot;: &quot;%3&quot; is not a number</source>
         <translation>%1 行目、列 &quot;%2&quot;: &quot;%3&quot; は数値ではありません</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="227"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="227"/>
         <source>line %1: %2</source>
         <translation>%1 行目: %2</translation>
     </message>
@@ -13171,22 +13184,22 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UserGuideDialog</name>
     <message>
-        <location filename="../main/ui/help/UserGuideDialog.cpp" line="26"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="26"/>
         <source>OpenTOP user guide</source>
         <translation>OpenTOP ユーザガイド</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/UserGuideDialog.cpp" line="28"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="28"/>
         <source> or </source>
         <translation> または </translation>
     </message>
     <message>
-        <location filename="../main/ui/help/UserGuideDialog.cpp" line="31"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="31"/>
         <source>&lt;h2&gt;Commissioning a drive with OpenTOP&lt;/h2&gt;&lt;ol&gt;&lt;li&gt;&lt;b&gt;Connect.&lt;/b&gt; Bus ▸ Connect… chooses the serial port (or USB to RS-485 adapter), a Modbus TCP gateway or a simulated bus, with the bus&apos;s baud rate, parity and stop bits. The status bar says what the program is connected to; a simulated bus is marked as such.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Find the drives.&lt;/b&gt; Bus ▸ Scan bus (F5) asks every machine number 1–247; the drives that answer are identified and listed on the left with their state and control priority.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Select a drive.&lt;/b&gt; Its pages open on the right: Monitor (live values), the parameter pages of its profile, Test run and Alarms.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Edit settings.&lt;/b&gt; An edited field is marked as pending until it is written. Write page (or Drive ▸ Write all pending, Ctrl+W) writes and reads every value back to verify it; Revert drops the edits; Re-read (Ctrl+R) reads the drive again. A value the drive would refuse is never sent: the field says why.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Test-run the motor.&lt;/b&gt; The Test run page starts, stops and reverses the drive in communication priority and asks before the first start of each drive. Return the drive to I/O priority when done, so that the machine&apos;s own inputs control it again.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Stop.&lt;/b&gt; STOP ALL on the toolbar, or %1, stops every drive on the bus at once, from any window of the program.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Watch.&lt;/b&gt; View ▸ Trends (Ctrl+G) charts speeds and loads; View ▸ Bus overview shows every drive at a glance; View ▸ Traffic log (Ctrl+T) shows each frame on the bus with its meaning.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Keep the settings.&lt;/b&gt; Files ▸ Back up saves the settings of one drive or the whole bus to a file; Files ▸ Compare shows differences between drives, files and factory defaults; Files ▸ Restore writes a backup back after a preview.&lt;/li&gt;&lt;/ol&gt;&lt;p&gt;Every keyboard shortcut is listed in Help ▸ Keyboard shortcuts.&lt;/p&gt;&lt;h3&gt;More documentation&lt;/h3&gt;&lt;p&gt;The command line and the simulator: &lt;code&gt;man opentop&lt;/code&gt;, &lt;code&gt;man opentop-cli&lt;/code&gt;, &lt;code&gt;man opentop-sim&lt;/code&gt;.&lt;/p&gt;</source>
         <translation>&lt;h2&gt;OpenTOP によるドライバの立上げ&lt;/h2&gt;&lt;ol&gt;&lt;li&gt;&lt;b&gt;接続。&lt;/b&gt;バス ▸ 接続… で、シリアルポート（または USB–RS-485 変換アダプタ）、Modbus TCP ゲートウェイ、シミュレーションバスのいずれかを、バスのボーレート、パリティ、ストップビットとともに選択します。ステータスバーに接続先が表示されます。シミュレーションバスの場合はその旨が表示されます。&lt;/li&gt;&lt;li&gt;&lt;b&gt;ドライバの検出。&lt;/b&gt;バス ▸ バスをスキャン (F5) で局番 1–247 に問い合わせます。応答したドライバが識別され、状態と制御優先とともに左側に一覧表示されます。&lt;/li&gt;&lt;li&gt;&lt;b&gt;ドライバの選択。&lt;/b&gt;右側にそのドライバのページが開きます: モニタ（ライブ値）、プロファイルのパラメータページ、試運転、アラーム。&lt;/li&gt;&lt;li&gt;&lt;b&gt;設定の編集。&lt;/b&gt;編集した項目は、書き込むまで未書込みとしてマークされます。「ページ書込み」（またはドライバ ▸ 未書込みをすべて書込み、Ctrl+W）で書き込み、すべての値を読み戻して照合します。「元に戻す」で編集を破棄し、「再読出し」(Ctrl+R) でドライバを再度読み出します。ドライバが拒否する値は送信されず、項目に理由が表示されます。&lt;/li&gt;&lt;li&gt;&lt;b&gt;モータの試運転。&lt;/b&gt;試運転ページでは、通信優先でドライバの運転開始、停止、逆転を行います。各ドライバの最初の運転開始前に確認します。終了したらドライバを I/O 優先に戻し、機械側の入力で再び制御できるようにしてください。&lt;/li&gt;&lt;li&gt;&lt;b&gt;停止。&lt;/b&gt;ツールバーの全停止、または %1 で、プログラムのどのウィンドウからでもバス上の全ドライバを一斉に停止します。&lt;/li&gt;&lt;li&gt;&lt;b&gt;監視。&lt;/b&gt;表示 ▸ トレンド (Ctrl+G) で速度と負荷をグラフ表示します。表示 ▸ バス一覧で全ドライバの状態を一覧できます。表示 ▸ 通信ログ (Ctrl+T) でバス上の各フレームとその意味を表示します。&lt;/li&gt;&lt;li&gt;&lt;b&gt;設定の保管。&lt;/b&gt;ファイル ▸ バックアップで 1 台またはバス全体の設定をファイルに保存します。ファイル ▸ 比較でドライバ、ファイル、工場出荷時設定の差異を表示します。ファイル ▸ 復元で、プレビューの後にバックアップを書き戻します。&lt;/li&gt;&lt;/ol&gt;&lt;p&gt;すべてのキーボードショートカットは、ヘルプ ▸ キーボードショートカットに一覧表示されます。&lt;/p&gt;&lt;h3&gt;その他のドキュメント&lt;/h3&gt;&lt;p&gt;コマンドラインとシミュレータ: &lt;code&gt;man opentop&lt;/code&gt;、&lt;code&gt;man opentop-cli&lt;/code&gt;、&lt;code&gt;man opentop-sim&lt;/code&gt;。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/UserGuideDialog.cpp" line="70"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="70"/>
         <source>&lt;p&gt;The full description of the program: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;プログラムの詳細な説明: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</translation>
     </message>
@@ -13194,98 +13207,98 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ValueCodec</name>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="130"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="130"/>
         <source>depends on %1, which is not known yet</source>
         <translation>%1 に依存しますが、まだ不明です</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="132"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="132"/>
         <source>text of up to %1 characters</source>
         <translation>最大 %1 文字のテキスト</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="142"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="142"/>
         <source> or </source>
         <translation> または </translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="150"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="150"/>
         <source>, or </source>
         <translation>、または </translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="151"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="151"/>
         <source>any value</source>
         <translation>任意の値</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="167"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="167"/>
         <source> (the variant is not known, so the value must suit %1; name the variant to use its own range)</source>
         <translation> (機種が不明なため、値は %1 に適合する必要があります。機種を指定するとその機種の範囲を使用します)</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="177"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="177"/>
         <source>%1: the allowed values depend on %2, which has not been read</source>
         <translation>%1: 許容値が依存する %2 をまだ読み出していません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="182"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="182"/>
         <source>%1: value out of the register&apos;s range; allowed: %2</source>
         <translation>%1: 値がレジスタの範囲外です。許容値: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="194"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="194"/>
         <source>%1: %2 is not allowed; allowed: %3</source>
         <translation>%1: %2 は許可されていません。許容値: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="206"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="206"/>
         <source>%1: expected %2 registers, got %3</source>
         <translation>%1: %2 レジスタが必要ですが、%3 レジスタでした</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="243"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="243"/>
         <source>%1 is text, not a number</source>
         <translation>%1 はテキストで、数値ではありません</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="256"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="256"/>
         <source>%1: %2 is finer than the step of %3 %4; allowed: %5</source>
         <translation>%1: %2 は %3 %4 の刻みより細かい値です。許容値: %5</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="287"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="287"/>
         <source>%1: at most %2 characters</source>
         <translation>%1: 最大 %2 文字</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="293"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="293"/>
         <source>%1: only printable ASCII characters are allowed</source>
         <translation>%1: 印字可能な ASCII 文字のみ使用できます</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="305"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="305"/>
         <source>%1: no value given; allowed: %2</source>
         <translation>%1: 値が指定されていません。許容値: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="338"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="338"/>
         <source>%1: &quot;%2&quot; is only available when %3 is %4; allowed now: %5</source>
         <translation>%1: &quot;%2&quot; は %3 が %4 の場合のみ使用できます。現在の許容値: %5</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="351"/>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="368"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="351"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="368"/>
         <source>%1: &quot;%2&quot; is not a valid value; allowed: %3</source>
         <translation>%1: &quot;%2&quot; は有効な値ではありません。許容値: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="382"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="382"/>
         <source>(invalid)</source>
         <translation>（無効）</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="393"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="393"/>
         <source>unknown code %1</source>
         <translation>不明なコード %1</translation>
     </message>
@@ -13293,22 +13306,22 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::YieldReport</name>
     <message>
-        <location filename="../main/model/eol/YieldReport.cpp" line="51"/>
+        <location filename="../model/eol/YieldReport.cpp" line="51"/>
         <source>still running (or its station has not restarted since it stopped)</source>
         <translation>まだ実行中（または停止後にステーションが再起動していません）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/YieldReport.cpp" line="53"/>
+        <location filename="../model/eol/YieldReport.cpp" line="53"/>
         <source>interrupted</source>
         <translation>中断</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/YieldReport.cpp" line="55"/>
+        <location filename="../model/eol/YieldReport.cpp" line="55"/>
         <source>aborted</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/YieldReport.cpp" line="57"/>
+        <location filename="../model/eol/YieldReport.cpp" line="57"/>
         <source>failed, no reason recorded</source>
         <translation>不合格、理由の記録なし</translation>
     </message>

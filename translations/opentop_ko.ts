@@ -4,28 +4,28 @@
 <context>
     <name>Freshness</name>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="29"/>
-        <location filename="../main/model/monitor/Freshness.cpp" line="31"/>
+        <location filename="../model/monitor/Freshness.cpp" line="29"/>
+        <location filename="../model/monitor/Freshness.cpp" line="31"/>
         <source>%1 s old</source>
         <translation>%1초 전</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="33"/>
+        <location filename="../model/monitor/Freshness.cpp" line="33"/>
         <source>%1 min old</source>
         <translation>%1분 전</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="34"/>
+        <location filename="../model/monitor/Freshness.cpp" line="34"/>
         <source>%1 h old</source>
         <translation>%1시간 전</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="40"/>
+        <location filename="../model/monitor/Freshness.cpp" line="40"/>
         <source>never read</source>
         <translation>읽은 적 없음</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="41"/>
+        <location filename="../model/monitor/Freshness.cpp" line="41"/>
         <source>last answer %1 (%2)</source>
         <translation>마지막 응답 %1 (%2)</translation>
     </message>
@@ -33,12 +33,12 @@
 <context>
     <name>SimulatorProcess</name>
     <message>
-        <location filename="../main/app/bench/main.cpp" line="230"/>
+        <location filename="../app/bench/main.cpp" line="230"/>
         <source>cannot start %1: %2</source>
         <translation>%1을(를) 시작할 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/app/bench/main.cpp" line="236"/>
+        <location filename="../app/bench/main.cpp" line="236"/>
         <source>opentop-sim did not get ready: %1</source>
         <translation>opentop-sim이 준비되지 않았습니다: %1</translation>
     </message>
@@ -46,42 +46,47 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../main/app/gui/main.cpp" line="46"/>
+        <location filename="../app/gui/main.cpp" line="54"/>
         <source>Commissioning tool for RS-485 Modbus-RTU motor drives.</source>
         <translation>RS-485 Modbus-RTU 모터 드라이버용 커미셔닝 도구.</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="75"/>
+        <location filename="../app/gui/main.cpp" line="58"/>
+        <source>Language of the program: %1 (default: the language menu&apos;s choice, else the system&apos;s).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MonitorOptions.cpp" line="75"/>
         <source>Open the bus overview and the trends of every drive.</source>
         <translation>버스 개요와 모든 드라이버의 트렌드를 엽니다.</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="76"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="76"/>
         <source>Monitoring poll interval in milliseconds.</source>
         <translation>모니터링 폴링 주기(밀리초).</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="79"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="79"/>
         <source>Quit after this many seconds and print the monitoring statistics (for measurements).</source>
         <translation>지정한 초가 지나면 종료하고 모니터링 통계를 출력합니다(측정용).</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="83"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="83"/>
         <source>Print the monitoring totals every this many seconds (for measurements).</source>
         <translation>지정한 초마다 모니터링 합계를 출력합니다(측정용).</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="93"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="93"/>
         <source>--poll-ms needs a number of milliseconds</source>
         <translation>--poll-ms에는 밀리초 값이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="98"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="98"/>
         <source>--quit-after needs a number of seconds</source>
         <translation>--quit-after에는 초 값이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="103"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="103"/>
         <source>--stats-every needs a number of seconds</source>
         <translation>--stats-every에는 초 값이 필요합니다</translation>
     </message>
@@ -89,107 +94,107 @@
 <context>
     <name>opentop</name>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="69"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="69"/>
         <source>not read</source>
         <translation>읽지 않음</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="89"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="89"/>
         <source>No alarm is active.</source>
         <translation>발생 중인 알람이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="91"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="91"/>
         <source>Alarm active: %1 %2.</source>
         <translation>알람 발생 중: %1 %2.</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="94"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="94"/>
         <source>An alarm is active.</source>
         <translation>알람이 발생 중입니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="97"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="97"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>이 드라이버는 전원 재투입으로만 알람이 해제되도록 설정되어 있습니다(%1): Alarm-Reset으로는 어떤 알람도 해제되지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="104"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="104"/>
         <source>%1: could not be read: %2</source>
         <translation>%1: 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="108"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="108"/>
         <source>%1: no records.</source>
         <translation>%1: 기록 없음.</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="111"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="111"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1: 기록 %3개 중 %2개, 최신순</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>Code</source>
         <translation>코드</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>Panel</source>
         <translation>패널</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>Name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>Cleared by</source>
         <translation>해제 방법</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="123"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="123"/>
         <source>unknown code</source>
         <translation>알 수 없는 코드</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="130"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="130"/>
         <source>Cause: %1</source>
         <translation>원인: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="132"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="132"/>
         <source>Remedy: %1</source>
         <translation>조치: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="134"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="134"/>
         <source>To clear: %1</source>
         <translation>해제 방법: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="140"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="140"/>
         <source>Communication error register (%1): could not be read.</source>
         <translation>통신 오류 레지스터(%1): 읽을 수 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="144"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="144"/>
         <source>Communication error register (%1): none (0).</source>
         <translation>통신 오류 레지스터(%1): 없음(0).</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="147"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="147"/>
         <source>Communication error register (%1): %2, not a known code.</source>
         <translation>통신 오류 레지스터(%1): %2, 알 수 없는 코드.</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="151"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="151"/>
         <source>Communication error register (%1): %2 %3
   Cause: %4
   Remedy: %5</source>
@@ -198,192 +203,202 @@
   조치: %5</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="26"/>
+        <location filename="../cli/CliApp.cpp" line="26"/>
         <source>Machine-readable JSON on standard output.</source>
         <translation>기계 판독용 JSON을 표준 출력으로 출력합니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="27"/>
+        <location filename="../cli/CliApp.cpp" line="27"/>
         <source>Print every frame sent and received on standard error.</source>
         <translation>송수신하는 모든 프레임을 표준 오류로 출력합니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="29"/>
+        <location filename="../cli/CliApp.cpp" line="29"/>
         <source>Drive variant where the drive does not report it: VARIANT, or ID=VARIANT,... (e.g. dbu400, 150=dbu400).</source>
         <translation>드라이버가 기종을 알려주지 않을 때 사용할 기종: VARIANT 또는 ID=VARIANT,... (예: dbu400, 150=dbu400).</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="31"/>
+        <location filename="../cli/CliApp.cpp" line="31"/>
         <source>VARIANT</source>
         <translation>VARIANT</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="33"/>
+        <location filename="../cli/CliApp.cpp" line="33"/>
         <source>The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES): before a write or command, their communication group is read to name every drive it also reaches.</source>
         <translation>버스에 있는 드라이버, 예: 1,3,5-7 (기본값: OPENTOP_BUS_DRIVES). 쓰기나 명령 전에 이 드라이버들의 통신 그룹을 읽어, 함께 전달되는 드라이버를 모두 표시합니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="36"/>
+        <location filename="../cli/CliApp.cpp" line="36"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="38"/>
+        <location filename="../cli/CliApp.cpp" line="38"/>
         <source>Show this help, or a command&apos;s help after the command.</source>
         <translation>이 도움말을 표시합니다. 명령 뒤에 쓰면 그 명령의 도움말을 표시합니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="39"/>
+        <location filename="../cli/CliApp.cpp" line="39"/>
         <source>Show the version.</source>
         <translation>버전을 표시합니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="28"/>
+        <location filename="../cli/CliApp.cpp" line="43"/>
+        <source>Language of the human output: en, zh_TW, zh_CN, ko, ja (default: the system&apos;s). --json output is the same in every language.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/CliApp.cpp" line="45"/>
+        <source>CODE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/StopAllCommand.cpp" line="28"/>
         <source>stopped</source>
         <translation>정지됨</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="30"/>
+        <location filename="../cli/StopAllCommand.cpp" line="30"/>
         <source>STILL RUNNING</source>
         <translation>아직 운전 중</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="32"/>
+        <location filename="../cli/StopAllCommand.cpp" line="32"/>
         <source>no answer</source>
         <translation>응답 없음</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="47"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="47"/>
         <source>top level</source>
         <translation>최상위</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="50"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="50"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot;는 1이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="59"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="59"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot;는 소문자 ID여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="69"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="69"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity는 N, E, O 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="73"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="73"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial: baud는 1200–115200, stopBits는 1 또는 2여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="89"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="89"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits: maxReadRegisters는 1–125, maxWriteRegisters는 1–123</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="91"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="91"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits: slaves는 1–247 범위여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="106"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="106"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1]에는 id, model, label이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="108"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="108"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]: id &quot;%2&quot;가 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="119"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="119"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1]에는 고유한 id와 label이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="130"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="130"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1]에는 function 3 또는 4와 first ≤ last가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="174"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="174"/>
         <source>%1 has no name</source>
         <translation>%1에 이름이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="176"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="176"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1: reset은 %2 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="179"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="179"/>
         <source>%1: code %2 repeated</source>
         <translation>%1: 코드 %2가 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="201"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="201"/>
         <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
         <translation>%1: storeWith &quot;%2&quot;은(는) 명령 파라미터가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="204"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="204"/>
         <source>%1: the default is not among its allowed values</source>
         <translation>%1: 기본값이 허용 값에 포함되지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="208"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="208"/>
         <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
         <translation>%1: 비트 필드 &quot;%2&quot;: 기능 &quot;%3&quot;은(는) 읽을 수 있는 파라미터가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="215"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="215"/>
         <source>%1: condition on unknown parameter &quot;%2&quot;</source>
         <translation>%1: 알 수 없는 파라미터 &quot;%2&quot;에 대한 조건</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="217"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="217"/>
         <source>%1: the default is not allowed when %2</source>
         <translation>%1: %2일 때는 기본값이 허용되지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="227"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="227"/>
         <source>%1 runs past address 0xFFFF</source>
         <translation>%1이(가) 주소 0xFFFF를 넘어갑니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="230"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="230"/>
         <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
         <translation>%1이(가) 0x%3에서 &quot;%2&quot;와(과) 겹칩니다(레지스터 %4개)</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="254"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="254"/>
         <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
         <translation>identify: &quot;%1&quot;은(는) identify 읽기 범위 안의 파라미터여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="257"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="257"/>
         <source>identify.nameMatch is not a valid regular expression</source>
         <translation>identify.nameMatch가 올바른 정규식이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="269"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="269"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1: 알 수 없는 파라미터 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="297"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="297"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1은(는) 파라미터 이름, 이름 목록 또는 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="306"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="306"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1: &quot;%2&quot;에 비트 필드 &quot;%3&quot;이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="312"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="312"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1: %2은(는) &quot;%3&quot;에 쓸 수 있는 값이 아닙니다</translation>
     </message>
@@ -391,17 +406,17 @@
 <context>
     <name>opentop::AboutDialog</name>
     <message>
-        <location filename="../main/ui/help/AboutDialog.cpp" line="20"/>
+        <location filename="../ui/help/AboutDialog.cpp" line="20"/>
         <source>About OpenTOP</source>
         <translation>OpenTOP 정보</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/AboutDialog.cpp" line="22"/>
+        <location filename="../ui/help/AboutDialog.cpp" line="22"/>
         <source>&lt;h2&gt;OpenTOP %1&lt;/h2&gt;&lt;p&gt;Commissioning tool for RS-485 Modbus-RTU motor drives: TROY DBU brushless drives and a DC motor PID controller.&lt;/p&gt;&lt;p&gt;Copyright © the OpenTOP developers.&lt;br&gt;Licence: GNU General Public License, version 3 or any later version (GPL-3.0-or-later). This program comes with ABSOLUTELY NO WARRANTY; it is free software, and you are welcome to redistribute it under the terms of that licence.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Built with&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (run time; built with %3): GNU Lesser General Public License, version 3 (LGPL-3.0-only); Qt Charts: GNU General Public License, version 3 (GPL-3.0-only)&lt;/li&gt;&lt;li&gt;libmodbus %4: GNU Lesser General Public License, version 2.1 or later (LGPL-2.1-or-later)&lt;/li&gt;&lt;li&gt;GoogleTest (tests only): BSD 3-Clause licence&lt;/li&gt;&lt;/ul&gt;</source>
         <translation>&lt;h2&gt;OpenTOP %1&lt;/h2&gt;&lt;p&gt;RS-485 Modbus-RTU 모터 드라이버용 커미셔닝 도구: TROY DBU 브러시리스 드라이버와 DC 모터 PID 컨트롤러.&lt;/p&gt;&lt;p&gt;Copyright © the OpenTOP developers.&lt;br&gt;라이선스: GNU General Public License 버전 3 또는 이후 버전(GPL-3.0-or-later). 이 프로그램은 어떠한 보증도 제공하지 않습니다. 자유 소프트웨어이며, 이 라이선스의 조건에 따라 자유롭게 재배포할 수 있습니다.&lt;/p&gt;&lt;p&gt;&lt;b&gt;사용한 구성 요소&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (실행 시; 빌드 시 %3): GNU Lesser General Public License 버전 3(LGPL-3.0-only); Qt Charts: GNU General Public License 버전 3(GPL-3.0-only)&lt;/li&gt;&lt;li&gt;libmodbus %4: GNU Lesser General Public License 버전 2.1 또는 이후 버전(LGPL-2.1-or-later)&lt;/li&gt;&lt;li&gt;GoogleTest (테스트 전용): BSD 3-Clause 라이선스&lt;/li&gt;&lt;/ul&gt;</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/AboutDialog.cpp" line="45"/>
+        <location filename="../ui/help/AboutDialog.cpp" line="45"/>
         <source>About &amp;Qt</source>
         <translation>Qt 정보(&amp;Q)</translation>
     </message>
@@ -409,47 +424,47 @@
 <context>
     <name>opentop::AlarmBanner</name>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="16"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="16"/>
         <source>Show</source>
         <translation>보기</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="17"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="17"/>
         <source>Dismiss</source>
         <translation>닫기</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="24"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="24"/>
         <source>Open the drive&apos;s alarm history</source>
         <translation>드라이버의 알람 이력을 엽니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="25"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="25"/>
         <source>Hide this alarm until it is cleared; a new alarm shows again</source>
         <translation>해제될 때까지 이 알람을 숨깁니다. 새 알람은 다시 표시됩니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="85"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="85"/>
         <source>Machine %1: %2 %3 — %4</source>
         <translation>국번 %1: %2 %3 — %4</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="89"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="89"/>
         <source>Machine %1: %2 %3</source>
         <translation>국번 %1: %2 %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="91"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="91"/>
         <source>Machine %1: alarm %2h (not in the alarm table)</source>
         <translation>국번 %1: 알람 %2h (알람 표에 없음)</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="95"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="95"/>
         <source>Machine %1: an alarm is active</source>
         <translation>국번 %1: 알람 발생 중</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="98"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="98"/>
         <source>(%n more drive(s) with an alarm)</source>
         <translation>
             <numerusform>(알람이 발생한 드라이버 %n대 더 있음)</numerusform>
@@ -459,84 +474,84 @@
 <context>
     <name>opentop::AlarmExport</name>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Machine</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Kind</source>
         <translation>종류</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Record</source>
         <translation>기록</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Code</source>
         <translation>코드</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Panel code</source>
         <translation>패널 코드</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Cleared by</source>
         <translation>해제 방법</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Cause</source>
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Remedy</source>
         <translation>조치</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="49"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="49"/>
         <source>alarm</source>
         <translation>알람</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="50"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>warning</source>
         <translation>경고</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="58"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="58"/>
         <source>unknown code</source>
         <translation>알 수 없는 코드</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="103"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="103"/>
         <source>machine %1: %2</source>
         <translation>국번 %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="126"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="126"/>
         <source>%n record(s) of %1 drive(s) written to %2.</source>
         <translation>
             <numerusform>드라이버 %1대의 기록 %n건을 %2에 저장했습니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="131"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="131"/>
         <source>Not everything could be read: %1</source>
         <translation>일부를 읽지 못했습니다: %1</translation>
     </message>
@@ -544,57 +559,57 @@
 <context>
     <name>opentop::AlarmHistory</name>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="68"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="68"/>
         <source>%1: erases the %2</source>
         <translation>%1: %2 삭제</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="107"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="107"/>
         <source>%1 drives have no alarm reset command</source>
         <translation>%1 드라이버에는 알람 리셋 명령이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="182"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="182"/>
         <source>The alarm</source>
         <translation>알람</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="184"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="184"/>
         <source>%1 is cleared.</source>
         <translation>%1이(가) 해제되었습니다.</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="185"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="185"/>
         <source>No alarm was active; nothing to clear.</source>
         <translation>발생 중인 알람이 없어 해제할 것이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="188"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="188"/>
         <source>%1 is still active: only a power cycle clears it. %2</source>
         <translation>%1이(가) 아직 발생 중입니다: 전원 재투입으로만 해제됩니다. %2</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="193"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="193"/>
         <source>%1 is still active: the drive is set to clear alarms by a power restart only (%2). Remove the cause, turn the power off, wait 5 s and turn it on again; or change that setting to allow the reset command.</source>
         <translation>%1이(가) 아직 발생 중입니다: 이 드라이버는 전원 재투입으로만 알람이 해제되도록 설정되어 있습니다(%2). 원인을 제거하고 전원을 끈 뒤 5 s 기다렸다가 다시 켜십시오. 또는 리셋 명령을 허용하도록 그 설정을 변경하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="199"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="199"/>
         <source>%1 is still active: its cause is still present%2. Remove the cause and turn off the start signal, then reset again.</source>
         <translation>%1이(가) 아직 발생 중입니다: 원인이 아직 남아 있습니다%2. 원인을 제거하고 기동 신호를 끈 뒤 다시 리셋하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="205"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="205"/>
         <source>The reset was accepted; whether an alarm is still active could not be read.</source>
         <translation>리셋은 수락되었지만, 알람이 아직 발생 중인지 읽을 수 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="207"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="207"/>
         <source>The reset failed: %1</source>
         <translation>리셋 실패: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="210"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="210"/>
         <source>(The drive refused the reset: %1)</source>
         <translation>(드라이버가 리셋을 거부했습니다: %1)</translation>
     </message>
@@ -602,8 +617,8 @@
 <context>
     <name>opentop::AlarmRecords</name>
     <message>
-        <location filename="../main/model/alarms/AlarmRecords.cpp" line="90"/>
-        <location filename="../main/model/alarms/AlarmRecords.cpp" line="101"/>
+        <location filename="../model/alarms/AlarmRecords.cpp" line="90"/>
+        <location filename="../model/alarms/AlarmRecords.cpp" line="101"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -611,92 +626,92 @@
 <context>
     <name>opentop::AlarmsCommand</name>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="163"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="163"/>
         <source>Show alarm and warning histories with causes and remedies; reset, erase</source>
         <translation>알람·경고 이력을 원인과 조치와 함께 표시합니다. 리셋, 삭제</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="170"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="170"/>
         <source>Send the alarm reset command, then tell whether the alarm is cleared or needs a power cycle (needs --yes; exit 4 when it stays active).</source>
         <translation>알람 리셋 명령을 보낸 뒤, 알람이 해제되었는지 전원 재투입이 필요한지 알려줍니다(--yes 필요; 알람이 계속 발생 중이면 종료 코드 4).</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="172"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="172"/>
         <source>Erase the alarm and warning records (needs --yes).</source>
         <translation>알람·경고 기록을 삭제합니다(--yes 필요).</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="173"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="173"/>
         <source>Confirm --reset and --clear-records.</source>
         <translation>--reset과 --clear-records를 확인합니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="184"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="184"/>
         <source>error: usage: %1 (one machine number)</source>
         <translation>오류: 사용법: %1 (국번 하나)</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="192"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="192"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="198"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="198"/>
         <source>error: machine number %1 (%2) keeps no alarm or warning records</source>
         <translation>오류: 국번 %1(%2)은(는) 알람·경고 기록을 보관하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="205"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="205"/>
         <source>error: %1 drives have no %2 command</source>
         <translation>오류: %1 드라이버에는 %2 명령이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="207"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="207"/>
         <source>alarm reset</source>
         <translation>알람 리셋</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="207"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="207"/>
         <source>record erase</source>
         <translation>기록 삭제</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="218"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="218"/>
         <source>These change machine number %1; add --yes to send them:</source>
         <translation>다음은 국번 %1의 설정을 변경합니다. 보내려면 --yes를 추가하십시오:</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="222"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="222"/>
         <source>— clears the active alarm if its cause is gone and it is not one that only a power cycle clears</source>
         <translation>— 원인이 제거되었고 전원 재투입으로만 해제되는 알람이 아니면 발생 중인 알람을 해제합니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="246"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="246"/>
         <source>Machine number %1 (%2)</source>
         <translation>국번 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="272"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="272"/>
         <source>Alarm reset: %1</source>
         <translation>알람 리셋: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="295"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="295"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>삭제됨: %1 (기록 %2건); %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="298"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="298"/>
         <source>read back empty.</source>
         <translation>다시 읽기 결과 비어 있음.</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="299"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="299"/>
         <source>NOT empty when read back.</source>
         <translation>다시 읽기 결과 비어 있지 않음.</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="302"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="302"/>
         <source>Erasing failed: %1</source>
         <translation>삭제 실패: %1</translation>
     </message>
@@ -704,143 +719,143 @@
 <context>
     <name>opentop::AlarmsPage</name>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="59"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="59"/>
         <source>&amp;Re-read</source>
         <translation>다시 읽기(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="60"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="60"/>
         <source>Reset &amp;alarm…</source>
         <translation>알람 리셋(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="61"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="61"/>
         <source>&amp;Clear records…</source>
         <translation>기록 삭제(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="65"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="65"/>
         <source>Alarms and warnings of machine %1 (%2)</source>
         <translation>국번 %1의 알람과 경고 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>Code</source>
         <translation>코드</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>Panel</source>
         <translation>패널</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>Name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>Cleared by</source>
         <translation>해제 방법</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="102"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="102"/>
         <source>Cause and remedy</source>
         <translation>원인 및 조치</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="103"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="103"/>
         <source>Communication error register</source>
         <translation>통신 오류 레지스터</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="115"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="115"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>알람 리셋 명령을 보냅니다. 알람이 해제되었는지, 전원 재투입으로만 해제되는지 알려줍니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="117"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="117"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>드라이버에 보관된 알람·경고 기록을 삭제합니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="122"/>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="293"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="122"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
         <source>Select a record to see its cause and remedy.</source>
         <translation>원인과 조치를 보려면 기록을 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="123"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="123"/>
         <source>Not read yet.</source>
         <translation>아직 읽지 않음.</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="125"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>이 드라이버는 알람·경고 기록을 보관하지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="155"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="155"/>
         <source>Alarm state: %1</source>
         <translation>알람 상태: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="247"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="247"/>
         <source>Reading the records…</source>
         <translation>기록을 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="263"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="263"/>
         <source>No alarm is active.</source>
         <translation>발생 중인 알람이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="265"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="265"/>
         <source>Alarm active: %1 %2.</source>
         <translation>알람 발생 중: %1 %2.</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="267"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="267"/>
         <source>An alarm is active.</source>
         <translation>알람이 발생 중입니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="270"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="270"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>이 드라이버는 전원 재투입으로만 알람이 해제되도록 설정되어 있습니다(%1): Alarm-Reset으로는 어떤 알람도 해제되지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="274"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="274"/>
         <source>Could not be read: %1</source>
         <translation>읽을 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="300"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="300"/>
         <source>This drive has no communication error register.</source>
         <translation>이 드라이버에는 통신 오류 레지스터가 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="302"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="302"/>
         <source>%1: could not be read.</source>
         <translation>%1: 읽을 수 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="304"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="304"/>
         <source>%1: no error (0).</source>
         <translation>%1: 오류 없음(0).</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="307"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="307"/>
         <source>%1: %2, not a known code.</source>
         <translation>%1: %2, 알 수 없는 코드.</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="309"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="309"/>
         <source>%1: %2 %3
 Cause: %4
 Remedy: %5</source>
@@ -849,153 +864,153 @@ Remedy: %5</source>
 조치: %5</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="321"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="321"/>
         <source>No alarm records</source>
         <translation>알람 기록 없음</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="321"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="321"/>
         <source>No warning records</source>
         <translation>경고 기록 없음</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="327"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="327"/>
         <source>%1: could not be read: %2</source>
         <translation>%1: 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="330"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="330"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1: 기록 %3개 중 %2개, 최신순</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="341"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="341"/>
         <source>unknown code</source>
         <translation>알 수 없는 코드</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="370"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="370"/>
         <source>Record %1: code %2 is not in the %3 table.</source>
         <translation>기록 %1: 코드 %2이(가) %3 표에 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="375"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="375"/>
         <source>%1 %2 (record %3)</source>
         <translation>%1 %2 (기록 %3)</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="377"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="377"/>
         <source>Cause: %1</source>
         <translation>원인: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="379"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="379"/>
         <source>Remedy: %1</source>
         <translation>조치: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="381"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="381"/>
         <source>To clear: %1</source>
         <translation>해제 방법: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="410"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="410"/>
         <source>Writes: %1</source>
         <translation>쓰기: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="411"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="411"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>원인이 제거되었으면 발생 중인 알람을 해제합니다. 일부 알람은 전원 재투입으로만 해제되며, 결과에 표시됩니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="414"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="414"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>이 드라이버는 전원 재투입으로만 알람이 해제되도록 설정되어 있습니다(%1).</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="416"/>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="418"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="416"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="418"/>
         <source>Reset alarm</source>
         <translation>알람 리셋</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="417"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="417"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>국번 %1에 알람 리셋 명령을 보내시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="425"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="425"/>
         <source>Sending the alarm reset…</source>
         <translation>알람 리셋을 보내는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="431"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="431"/>
         <source>Alarm reset: %1</source>
         <translation>알람 리셋: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="434"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="434"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>드라이버 전원을 끄고 5 s 기다린 뒤 다시 켜십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="445"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="445"/>
         <source>%1 (%2 records)</source>
         <translation>%1 (기록 %2건)</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="447"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="447"/>
         <source>the alarm and warning records</source>
         <translation>알람·경고 기록</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="448"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="448"/>
         <source>Clear records</source>
         <translation>기록 삭제</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="449"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="449"/>
         <source>Erase %1 of machine %2?</source>
         <translation>국번 %2의 %1을(를) 삭제하시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="449"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="449"/>
         <source> and </source>
         <translation> 및 </translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="450"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="450"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>삭제한 기록은 복원할 수 없습니다. 쓰기: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="452"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="452"/>
         <source>Erase</source>
         <translation>삭제</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="459"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="459"/>
         <source>Erasing the records…</source>
         <translation>기록을 삭제하는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="467"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="467"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>삭제됨: %1 (기록 %2건); %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="470"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="470"/>
         <source>read back empty.</source>
         <translation>다시 읽기 결과 비어 있음.</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="471"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="471"/>
         <source>NOT empty when read back.</source>
         <translation>다시 읽기 결과 비어 있지 않음.</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="473"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="473"/>
         <source>Erasing failed: %1</source>
         <translation>삭제 실패: %1</translation>
     </message>
@@ -1003,100 +1018,100 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupCommand</name>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="34"/>
+        <location filename="../cli/BackupCommand.cpp" line="34"/>
         <source>Save every setting of drives to a backup file (written only when all were read)</source>
         <translation>드라이버의 모든 설정을 백업 파일로 저장합니다(모두 읽은 경우에만 저장)</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="40"/>
+        <location filename="../cli/BackupCommand.cpp" line="40"/>
         <source>The backup file to write (replaced atomically).</source>
         <translation>저장할 백업 파일(원자적으로 교체).</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="41"/>
+        <location filename="../cli/BackupCommand.cpp" line="41"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="43"/>
+        <location filename="../cli/BackupCommand.cpp" line="43"/>
         <source>Every drive the connection knows (a simulated bus), or every drive a scan finds.</source>
         <translation>연결이 알고 있는 모든 드라이버(시뮬레이션 버스) 또는 스캔으로 찾은 모든 드라이버.</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="51"/>
+        <location filename="../cli/BackupCommand.cpp" line="51"/>
         <source>error: name the machine numbers, or give --all: backup ID... -o FILE</source>
         <translation>오류: 국번을 지정하거나 --all을 주십시오: backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="60"/>
-        <location filename="../main/cli/BackupCommand.cpp" line="220"/>
-        <location filename="../main/cli/BackupCommand.cpp" line="226"/>
+        <location filename="../cli/BackupCommand.cpp" line="60"/>
+        <location filename="../cli/BackupCommand.cpp" line="220"/>
+        <location filename="../cli/BackupCommand.cpp" line="226"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="69"/>
+        <location filename="../cli/BackupCommand.cpp" line="69"/>
         <source>scanning the bus for drives…</source>
         <translation>버스에서 드라이버를 스캔하는 중…</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="99"/>
+        <location filename="../cli/BackupCommand.cpp" line="99"/>
         <source>error: the port %1 was lost while reading %2 (%3)</source>
         <translation>오류: %2을(를) 읽는 중 포트 %1이(가) 끊어졌습니다(%3)</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="102"/>
-        <location filename="../main/cli/BackupCommand.cpp" line="222"/>
+        <location filename="../cli/BackupCommand.cpp" line="102"/>
+        <location filename="../cli/BackupCommand.cpp" line="222"/>
         <source>nothing written to %1</source>
         <translation>%1에 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="110"/>
+        <location filename="../cli/BackupCommand.cpp" line="110"/>
         <source>error: give the file to write: backup ID... -o FILE</source>
         <translation>오류: 저장할 파일을 지정하십시오: backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="114"/>
+        <location filename="../cli/BackupCommand.cpp" line="114"/>
         <source>error: %1; nothing read</source>
         <translation>오류: %1; 아무것도 읽지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="126"/>
+        <location filename="../cli/BackupCommand.cpp" line="126"/>
         <source>interrupted: nothing written</source>
         <translation>중단됨: 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="130"/>
+        <location filename="../cli/BackupCommand.cpp" line="130"/>
         <source>error: no drive answers on %1; nothing written</source>
         <translation>오류: %1에서 응답하는 드라이버가 없습니다. 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="149"/>
+        <location filename="../cli/BackupCommand.cpp" line="149"/>
         <source>machine number %1</source>
         <translation>국번 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="164"/>
+        <location filename="../cli/BackupCommand.cpp" line="164"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>국번 %1을(를) 읽는 중 중단됨: 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="172"/>
+        <location filename="../cli/BackupCommand.cpp" line="172"/>
         <source>%1: cannot read %2</source>
         <translation>%1: %2을(를) 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="174"/>
+        <location filename="../cli/BackupCommand.cpp" line="174"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1에 프로파일이 허용하지 않는 값이 있어 이 백업은 복원할 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="188"/>
+        <location filename="../cli/BackupCommand.cpp" line="188"/>
         <source>%1: %2 settings read in %3 requests, %4 ms</source>
         <translation>%1: 설정 %2개를 요청 %3회로 읽음, %4 ms</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="195"/>
+        <location filename="../cli/BackupCommand.cpp" line="195"/>
         <source>%1: reading failed, %2 of %3 settings read (%4 requests, %5 ms)</source>
         <translation>%1: 읽기 실패, 설정 %3개 중 %2개 읽음(요청 %4회, %5 ms)</translation>
     </message>
@@ -1104,7 +1119,7 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupDevice</name>
     <message>
-        <location filename="../main/model/files/BackupDevice.cpp" line="75"/>
+        <location filename="../model/files/BackupDevice.cpp" line="75"/>
         <source>drive %1 (%2)</source>
         <translation>드라이버 %1 (%2)</translation>
     </message>
@@ -1112,150 +1127,150 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupDialog</name>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="27"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="27"/>
         <source>&amp;Cancel</source>
         <translation>취소(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="28"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="28"/>
         <source>&amp;Save the drives read</source>
         <translation>읽은 드라이버 저장(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="29"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="29"/>
         <source>C&amp;lose</source>
         <translation>닫기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="31"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="31"/>
         <source>Back up drives</source>
         <translation>드라이버 백업</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Progress</source>
         <translation>진행</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Result</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="40"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="40"/>
         <source>Save only the drives that were read; the others are left out</source>
         <translation>읽은 드라이버만 저장합니다. 나머지는 제외됩니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="42"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="42"/>
         <source>Stop after the drive being read</source>
         <translation>지금 읽고 있는 드라이버까지 읽고 멈춥니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="87"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="87"/>
         <source>Waiting</source>
         <translation>대기 중</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="91"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="91"/>
         <source>%v of %m drives</source>
         <translation>드라이버 %m대 중 %v대</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupDialog.cpp" line="92"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="92"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>드라이버 %n대의 설정을 읽는 중…</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="102"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="102"/>
         <source>Stopping after the drive being read…</source>
         <translation>지금 읽고 있는 드라이버까지 읽고 멈추는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="119"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="119"/>
         <source>Not read (cancelled)</source>
         <translation>읽지 않음(취소됨)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="129"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="129"/>
         <source>drive %1: not identified, nothing read</source>
         <translation>드라이버 %1: 식별되지 않아 아무것도 읽지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="130"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="130"/>
         <source>Not identified</source>
         <translation>식별 안 됨</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="138"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="138"/>
         <source>Reading…</source>
         <translation>읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupDialog.cpp" line="150"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="150"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>설정 %n개 읽음, %1 ms</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="155"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="155"/>
         <source>%1: cannot read %2</source>
         <translation>%1: %2을(를) 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="157"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="157"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1에 프로파일이 허용하지 않는 값이 있어 이 백업은 복원할 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
         <source>Value not allowed</source>
         <translation>허용되지 않는 값</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
         <source>Read failed</source>
         <translation>읽기 실패</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="180"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="180"/>
         <source>Not read: drive(s) %1. Nothing has been saved yet.</source>
         <translation>읽지 못한 드라이버: %1. 아직 아무것도 저장하지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupDialog.cpp" line="186"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="186"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>읽은 드라이버 %n대를 저장하시겠습니까?</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupDialog.cpp" line="210"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="210"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>드라이버 %n대를 %1에 저장했습니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="216"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="216"/>
         <source>Left out (not read): drive(s) %1.</source>
         <translation>제외됨(읽지 못함): 드라이버 %1.</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="220"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="220"/>
         <source>Could not save %1: %2</source>
         <translation>%1을(를) 저장할 수 없습니다: %2</translation>
     </message>
@@ -1263,12 +1278,12 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFile</name>
     <message>
-        <location filename="../main/model/files/BackupFile.cpp" line="284"/>
+        <location filename="../model/files/BackupFile.cpp" line="284"/>
         <source>cannot read %1: %2</source>
         <translation>%1을(를) 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFile.cpp" line="291"/>
+        <location filename="../model/files/BackupFile.cpp" line="291"/>
         <source>%1 is larger than %2 MB, the most a backup file may hold (a backup of 247 drives is far smaller); not a backup file</source>
         <translation>%1이(가) 백업 파일의 최대 크기 %2 MB보다 큽니다(드라이버 247대의 백업도 훨씬 작음). 백업 파일이 아닙니다</translation>
     </message>
@@ -1276,122 +1291,122 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFileParser</name>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="48"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="48"/>
         <source>not a JSON file: %1 at byte %2</source>
         <translation>JSON 파일이 아닙니다: 바이트 %2에서 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="52"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="52"/>
         <source>not an OpenTOP backup file: the JSON is not an object</source>
         <translation>OpenTOP 백업 파일이 아닙니다: JSON이 객체가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="62"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="62"/>
         <source>&quot;created&quot; is not an ISO 8601 date and time</source>
         <translation>&quot;created&quot;가 ISO 8601 날짜·시간이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="74"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="74"/>
         <source>the file holds no drives (&quot;devices&quot; must be a non-empty list)</source>
         <translation>파일에 드라이버가 없습니다(&quot;devices&quot;는 비어 있지 않은 목록이어야 합니다)</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="81"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="81"/>
         <source>%1: not a drive</source>
         <translation>%1: 드라이버가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="83"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="83"/>
         <source>machine number %1 appears twice</source>
         <translation>국번 %1이(가) 두 번 나옵니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="97"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="97"/>
         <source>not an OpenTOP backup file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>OpenTOP 백업 파일이 아닙니다(&quot;format&quot;이 &quot;%2&quot;이(가) 아니라 &quot;%1&quot;입니다)</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="99"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="99"/>
         <source>not an OpenTOP backup file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>OpenTOP 백업 파일이 아닙니다(&quot;format&quot;: &quot;%1&quot; 없음)</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="104"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="104"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot;은 1 이상의 정수여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="106"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="106"/>
         <source>written by a newer OpenTOP (format version %1); this version reads format version %2</source>
         <translation>더 새로운 OpenTOP에서 저장한 파일입니다(형식 버전 %1). 이 버전은 형식 버전 %2을(를) 읽습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="112"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="112"/>
         <source>the file has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>파일에 체크섬이 없습니다(&quot;checksum&quot;: &quot;sha256:…&quot;). OpenTOP에서 저장한 파일이 아니거나 저장 후 변경되었습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="117"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="117"/>
         <source>the file was changed after it was written (checksum mismatch)</source>
         <translation>파일이 저장된 후 변경되었습니다(체크섬 불일치)</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="127"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="127"/>
         <source>%1: &quot;slave&quot; must be a machine number 1–247</source>
         <translation>%1: &quot;slave&quot;는 국번 1–247이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="128"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="128"/>
         <source>%1 (machine number %2)</source>
         <translation>%1 (국번 %2)</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="132"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="132"/>
         <source>%1: unknown family &quot;%2&quot;; known: %3</source>
         <translation>%1: 알 수 없는 제품군 &quot;%2&quot;; 알려진 제품군: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="137"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="137"/>
         <source>%1: &quot;variant&quot; must be text or null</source>
         <translation>%1: &quot;variant&quot;는 텍스트 또는 null이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="142"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="142"/>
         <source>%1: unknown variant &quot;%2&quot; of family %3; known: %4</source>
         <translation>%1: 제품군 %3의 알 수 없는 기종 &quot;%2&quot;; 알려진 기종: %4</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="144"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="144"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="151"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="151"/>
         <source>%1: &quot;parameters&quot; must be a list</source>
         <translation>%1: &quot;parameters&quot;는 목록이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="171"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="171"/>
         <source>%1: no &quot;name&quot;</source>
         <translation>%1: &quot;name&quot; 없음</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="174"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="174"/>
         <source>%1 %2: &quot;registers&quot; must be a list</source>
         <translation>%1 %2: &quot;registers&quot;는 목록이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="178"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="178"/>
         <source>%1 %2: registers must be numbers 0–65535</source>
         <translation>%1 %2: 레지스터 값은 0–65535의 숫자여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="184"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="184"/>
         <source>%1 %2: address &quot;%3&quot;, but the %4 profile has it at %5</source>
         <translation>%1 %2: 주소가 &quot;%3&quot;이지만 %4 프로파일에서는 %5입니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="209"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="209"/>
         <source>%1: %2: &quot;value&quot; %3 does not match its registers (%4)</source>
         <translation>%1: %2: &quot;value&quot; %3이(가) 레지스터 값(%4)과 일치하지 않습니다</translation>
     </message>
@@ -1399,27 +1414,27 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupValidator</name>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="16"/>
+        <location filename="../model/files/BackupValidator.cpp" line="16"/>
         <source>unknown parameter &quot;%1&quot;: the %2 profile has no such setting</source>
         <translation>알 수 없는 파라미터 &quot;%1&quot;: %2 프로파일에 그런 설정이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="21"/>
+        <location filename="../model/files/BackupValidator.cpp" line="21"/>
         <source>&quot;%1&quot; is not a setting that backups hold</source>
         <translation>&quot;%1&quot;은(는) 백업에 포함되는 설정이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="25"/>
+        <location filename="../model/files/BackupValidator.cpp" line="25"/>
         <source>&quot;%1&quot; appears twice</source>
         <translation>&quot;%1&quot;이(가) 두 번 나옵니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="28"/>
+        <location filename="../model/files/BackupValidator.cpp" line="28"/>
         <source>%1: %2 registers, but the parameter has %3</source>
         <translation>%1: 레지스터 %2개이지만 파라미터는 %3개입니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="53"/>
+        <location filename="../model/files/BackupValidator.cpp" line="53"/>
         <source>%1: its allowed values depend on %2, which the file does not hold</source>
         <translation>%1: 허용 값이 %2에 따라 달라지지만 파일에 그 값이 없습니다</translation>
     </message>
@@ -1427,87 +1442,87 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupViewer</name>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="22"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="22"/>
         <source>Backup file</source>
         <translation>백업 파일</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
         <source>Label</source>
         <translation>표시 이름</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
         <source>Registers</source>
         <translation>레지스터</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="34"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="34"/>
         <source>&amp;Open…</source>
         <translation>열기(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="35"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Open another backup file</source>
         <translation>다른 백업 파일을 엽니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="36"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="36"/>
         <source>C&amp;lose</source>
         <translation>닫기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="56"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="56"/>
         <source>%1: no such file</source>
         <translation>%1: 파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="62"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="62"/>
         <source>the file could not be read</source>
         <translation>파일을 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="63"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="63"/>
         <source>Backup file %1</source>
         <translation>백업 파일 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="71"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="71"/>
         <source>Open backup file</source>
         <translation>백업 파일 열기</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="72"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="72"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 백업 (*.json);;모든 파일 (*)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="94"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="94"/>
         <source>File: %1</source>
         <translation>파일: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="95"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="95"/>
         <source>Refused: %1</source>
         <translation>거부됨: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="110"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="110"/>
         <source>, %1 bit/s, parity %2, %3 stop bit(s)</source>
         <translation>, %1 bit/s, 패리티 %2, 스톱 비트 %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="112"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="112"/>
         <source>File: %1
 Written by %2 on %3 (UTC)
 Read from: %4
@@ -1518,17 +1533,17 @@ Drives: %5</source>
 드라이버: %5</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="121"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="121"/>
         <source>%1 %2, firmware %3</source>
         <translation>%1 %2, 펌웨어 %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="123"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="123"/>
         <source>(variant unknown)</source>
         <translation>(기종 알 수 없음)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupViewer.cpp" line="125"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="125"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>설정 %n개</numerusform>
@@ -1538,28 +1553,28 @@ Drives: %5</source>
 <context>
     <name>opentop::BusDocks</name>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="24"/>
+        <location filename="../ui/main/BusDocks.cpp" line="24"/>
         <source>Traffic log</source>
         <translation>통신 로그</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="31"/>
+        <location filename="../ui/main/BusDocks.cpp" line="31"/>
         <source>Bus overview</source>
         <translation>버스 개요</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="32"/>
+        <location filename="../ui/main/BusDocks.cpp" line="32"/>
         <source>Trends</source>
         <translation>트렌드</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="33"/>
+        <location filename="../ui/main/BusDocks.cpp" line="33"/>
         <source>Communication groups</source>
         <translation>통신 그룹</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="36"/>
-        <location filename="../main/ui/main/BusDocks.cpp" line="68"/>
+        <location filename="../ui/main/BusDocks.cpp" line="36"/>
+        <location filename="../ui/main/BusDocks.cpp" line="68"/>
         <source>Not connected</source>
         <translation>연결 안 됨</translation>
     </message>
@@ -1567,42 +1582,42 @@ Drives: %5</source>
 <context>
     <name>opentop::BusGroups</name>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="108"/>
+        <location filename="../model/bus/BusGroups.cpp" line="108"/>
         <source>machine number %1 is the parent of communication group %1: what is sent to it is also executed by %2 (children do not reply)</source>
         <translation>국번 %1은(는) 통신 그룹 %1의 부모입니다: 이 국번으로 보내는 내용은 %2에서도 실행됩니다(자식은 응답하지 않음)</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="118"/>
+        <location filename="../model/bus/BusGroups.cpp" line="118"/>
         <source>%1 and %2</source>
         <translation>%1 및 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="127"/>
+        <location filename="../model/bus/BusGroups.cpp" line="127"/>
         <source>This also reaches machine number %1 (the child of communication group %2; it executes it without replying).</source>
         <translation>이 내용은 국번 %1에도 전달됩니다(통신 그룹 %2의 자식; 응답 없이 실행함).</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="131"/>
+        <location filename="../model/bus/BusGroups.cpp" line="131"/>
         <source>This also reaches machine numbers %1 (the children of communication group %2; they execute it without replying).</source>
         <translation>이 내용은 국번 %1에도 전달됩니다(통신 그룹 %2의 자식; 응답 없이 실행함).</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="141"/>
+        <location filename="../model/bus/BusGroups.cpp" line="141"/>
         <source>child of %1</source>
         <translation>%1의 자식</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="144"/>
+        <location filename="../model/bus/BusGroups.cpp" line="144"/>
         <source>parent of %1</source>
         <translation>%1의 부모</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="152"/>
+        <location filename="../model/bus/BusGroups.cpp" line="152"/>
         <source>machine number %1 is a child of %2 and itself a parent: a child must not be a group parent</source>
         <translation>국번 %1은(는) %2의 자식이면서 부모입니다: 자식은 그룹 부모가 될 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="157"/>
+        <location filename="../model/bus/BusGroups.cpp" line="157"/>
         <source>machine number %1 is in communication group %2, but no drive %2 is known: frames to %2 reach %1 although nothing answers</source>
         <translation>국번 %1은(는) 통신 그룹 %2에 속해 있지만 드라이버 %2이(가) 알려져 있지 않습니다: 아무도 응답하지 않아도 %2(으)로 보낸 프레임이 %1에 전달됩니다</translation>
     </message>
@@ -1610,95 +1625,95 @@ Drives: %5</source>
 <context>
     <name>opentop::BusListModel</name>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="71"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="71"/>
         <source>The machine number in hexadecimal, as the drive&apos;s rotary switches SW1 (high digit) and SW2 (low digit) are set</source>
         <translation>드라이버의 로터리 스위치 SW1(상위 자리)과 SW2(하위 자리)에 설정된 16진수 국번</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="74"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="74"/>
         <source>The drive&apos;s MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, purple external interrupt, blue memory or communication error, grey no answer</source>
         <translation>드라이버의 MONITOR LED: 빨강 알람, 초록 준비, 주황 CW, 하늘색 CCW, 보라 외부 인터럽트, 파랑 메모리 또는 통신 오류, 회색 응답 없음</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="81"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="81"/>
         <source>LED</source>
         <translation>LED</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="83"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="83"/>
         <source>Machine no.</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="85"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="85"/>
         <source>Hex / switches</source>
         <translation>16진수 / 스위치</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="87"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="87"/>
         <source>Family</source>
         <translation>제품군</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="89"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
         <source>Firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
         <source>State</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
         <source>Control priority</source>
         <translation>제어 우선순위</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="107"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="107"/>
         <source>Two drives may share machine number %1 (%2, %3): check the SW1/SW2 switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
         <translation>두 드라이버가 국번 %1을(를) 함께 쓰고 있을 수 있습니다(%2, %3): 라인의 모든 드라이버의 SW1/SW2 스위치를 확인하고, 드라이버마다 다른 국번을 준 뒤 전원을 재투입하십시오. 종단 저항 불량이나 A/B 선이 바뀐 경우에도 응답이 깨집니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="126"/>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="130"/>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="132"/>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="138"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="126"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="130"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="138"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="129"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="129"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 기종 알 수 없음</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="132"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="159"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="159"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>상태등 %1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="162"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="162"/>
         <source>Status light grey: not live — %1</source>
         <translation>상태등 회색: 실시간 아님 — %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="167"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="167"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>드라이버가 기종을 알려주지 않습니다. 올바른 한계값으로 값을 검사하도록 컨텍스트 메뉴(기종)에서 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="176"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="176"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>드라이버가 I/O 단자로 운전 명령을 받고 있습니다. 버스를 통한 시운전에는 통신 우선이 필요합니다.</translation>
     </message>
@@ -1706,7 +1721,7 @@ Drives: %5</source>
 <context>
     <name>opentop::BusMemory</name>
     <message>
-        <location filename="../main/model/bus/BusMemory.cpp" line="44"/>
+        <location filename="../model/bus/BusMemory.cpp" line="44"/>
         <source>the simulated bus</source>
         <translation>시뮬레이션 버스</translation>
     </message>
@@ -1714,7 +1729,7 @@ Drives: %5</source>
 <context>
     <name>opentop::BusOverview</name>
     <message>
-        <location filename="../main/ui/bus/BusOverview.cpp" line="37"/>
+        <location filename="../ui/bus/BusOverview.cpp" line="37"/>
         <source>Double-click a drive to open its pages.</source>
         <translation>드라이버를 더블클릭하면 해당 페이지가 열립니다.</translation>
     </message>
@@ -1722,67 +1737,67 @@ Drives: %5</source>
 <context>
     <name>opentop::BusOverviewModel</name>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="89"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="89"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="91"/>
         <source>State</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="93"/>
         <source>Speed</source>
         <translation>속도</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="95"/>
         <source>Display</source>
         <translation>표시</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="97"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="97"/>
         <source>Target</source>
         <translation>목표</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="99"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="99"/>
         <source>Load</source>
         <translation>부하</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="101"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="101"/>
         <source>Alarm</source>
         <translation>알람</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="103"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="103"/>
         <source>Last answer</source>
         <translation>마지막 응답</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="118"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="118"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="125"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="125"/>
         <source>connection lost; %1</source>
         <translation>연결 끊김; %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="127"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="127"/>
         <source>no answer: %1; %2</source>
         <translation>응답 없음: %1; %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="158"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="158"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="161"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="161"/>
         <source>active</source>
         <translation>발생 중</translation>
     </message>
@@ -1790,142 +1805,142 @@ Drives: %5</source>
 <context>
     <name>opentop::BusPanel</name>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="32"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="32"/>
         <source>&amp;Scan</source>
         <translation>스캔(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="35"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="35"/>
         <source>A&amp;dd drive…</source>
         <translation>드라이버 추가(&amp;D)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="37"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="37"/>
         <source>Ca&amp;ncel</source>
         <translation>취소(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="46"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="46"/>
         <source>Ask every machine number of the range who answers</source>
         <translation>범위 안의 모든 국번에 응답 여부를 묻습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="48"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="48"/>
         <source>&amp;from</source>
         <translation>시작(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="50"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="50"/>
         <source>&amp;to</source>
         <translation>끝(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="55"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="55"/>
         <source>Machine numbers 1–247 (the DBU&apos;s SW1/SW2 switches in hex)</source>
         <translation>국번 1–247 (DBU의 SW1/SW2 스위치는 16진수)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="72"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="72"/>
         <source>Identify one machine number and add it to the list</source>
         <translation>국번 하나를 식별하여 목록에 추가합니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="77"/>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="182"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="77"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="182"/>
         <source>%v of %m</source>
         <translation>%m 중 %v</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="78"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="78"/>
         <source>Scan progress</source>
         <translation>스캔 진행</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="80"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="80"/>
         <source>Stop the scan after the request on the wire</source>
         <translation>전송 중인 요청이 끝나면 스캔을 멈춥니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="113"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="113"/>
         <source>Drives on the bus</source>
         <translation>버스의 드라이버</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="173"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="173"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%m 중 %v (국번 %1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="183"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="183"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>%3에서 국번 %1–%2 스캔 중, 국번당 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="202"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="202"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>전송 중인 요청이 끝나면 취소합니다…</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="219"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="219"/>
         <source>Did not answer the last scan.</source>
         <translation>마지막 스캔에서 응답하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="225"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="225"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>국번 %1에서 스캔이 멈췄습니다: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/bus/BusPanel.cpp" line="230"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="230"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>국번 %1–%2 스캔 후 취소됨(%4 중 %3): 드라이버 %n대 발견.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/bus/BusPanel.cpp" line="238"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="238"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>국번 %1–%2에서 드라이버 %n대 발견(%3 s).</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="254"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="254"/>
         <source>Add drive</source>
         <translation>드라이버 추가</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="254"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="254"/>
         <source>Machine number (1–247; the DBU shows it in hex on SW1/SW2):</source>
         <translation>국번 (1–247; DBU에서는 SW1/SW2에 16진수로 표시):</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="264"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="264"/>
         <source>Asking machine number %1…</source>
         <translation>국번 %1에 묻는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="269"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="269"/>
         <source>Machine number %1: %2 added.</source>
         <translation>국번 %1: %2 추가됨.</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="271"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="271"/>
         <source>Machine number %1: %2 %3</source>
         <translation>국번 %1: %2 %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="329"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="329"/>
         <source>&amp;Variant</source>
         <translation>기종(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="345"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="345"/>
         <source>&amp;Identify again</source>
         <translation>다시 식별(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="351"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="351"/>
         <source>&amp;Remove from list</source>
         <translation>목록에서 제거(&amp;R)</translation>
     </message>
@@ -1933,42 +1948,42 @@ Drives: %5</source>
 <context>
     <name>opentop::BusRecallBar</name>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="20"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="20"/>
         <source>&amp;Scan the bus</source>
         <translation>버스 스캔(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="28"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="28"/>
         <source>Hide this bar</source>
         <translation>이 표시줄을 숨깁니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="29"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="29"/>
         <source>Hide</source>
         <translation>숨기기</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="46"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
         <source>Last time on %1: %2.</source>
         <translation>지난번 %1: %2.</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="48"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="48"/>
         <source>&amp;Restore the drive last seen</source>
         <translation>지난번 드라이버 복원(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="49"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="49"/>
         <source>&amp;Restore the %1 drives last seen</source>
         <translation>지난번 드라이버 %1대 복원(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="50"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="50"/>
         <source>Identify the drives at these machine numbers again, with the variants set last time</source>
         <translation>지난번에 설정한 기종으로 이 국번들의 드라이버를 다시 식별합니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="60"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="60"/>
         <source>No drive is known on %1 yet. Scan the bus to find the drives.</source>
         <translation>%1에서 아직 알려진 드라이버가 없습니다. 버스를 스캔하여 드라이버를 찾으십시오.</translation>
     </message>
@@ -1976,17 +1991,17 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../main/model/bus/BusScanner.cpp" line="156"/>
+        <location filename="../model/bus/BusScanner.cpp" line="156"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
         <translation>응답이 두 번 깨짐(%1): 두 드라이버가 국번 %2을(를) 함께 쓰고 있을 가능성이 큽니다. SW1/SW2 스위치를 확인하십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusScanner.cpp" line="161"/>
+        <location filename="../model/bus/BusScanner.cpp" line="161"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>응답은 있지만 일치하는 장치 프로파일이 없습니다(%1)</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusScanner.cpp" line="191"/>
+        <location filename="../model/bus/BusScanner.cpp" line="191"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>처음에 늦게 응답했습니다(%1 ms 대기 후). 대기 시간을 늘리면 이 버스의 스캔이 안정됩니다</translation>
     </message>
@@ -1994,42 +2009,42 @@ Drives: %5</source>
 <context>
     <name>opentop::BusSpec</name>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="57"/>
+        <location filename="../model/bus/BusSpec.cpp" line="57"/>
         <source>&quot;%1&quot;: the braces do not pair; a drive&apos;s defects are written in braces after its number, e.g. dbu200@3{firmware=1.4,stall}</source>
         <translation>&quot;%1&quot;: 중괄호 짝이 맞지 않습니다. 드라이버의 결함은 번호 뒤 중괄호 안에 씁니다. 예: dbu200@3{firmware=1.4,stall}</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="62"/>
+        <location filename="../model/bus/BusSpec.cpp" line="62"/>
         <source>empty device list; write TYPE@ID[,TYPE@ID...], e.g. dbu200@1,dcpid@7 (types: %1)</source>
         <translation>장치 목록이 비어 있습니다. TYPE@ID[,TYPE@ID...] 형식으로 쓰십시오. 예: dbu200@1,dcpid@7 (유형: %1)</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="70"/>
+        <location filename="../model/bus/BusSpec.cpp" line="70"/>
         <source>&quot;%1&quot;: the defects in braces end the item, e.g. dbu200@3{stall}</source>
         <translation>&quot;%1&quot;: 중괄호 안의 결함은 항목 끝에 씁니다. 예: dbu200@3{stall}</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="78"/>
+        <location filename="../model/bus/BusSpec.cpp" line="78"/>
         <source>&quot;%1&quot;: write TYPE@ID or TYPE@FIRST-LAST, e.g. dbu200@1</source>
         <translation>&quot;%1&quot;: TYPE@ID 또는 TYPE@FIRST-LAST 형식으로 쓰십시오. 예: dbu200@1</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="83"/>
+        <location filename="../model/bus/BusSpec.cpp" line="83"/>
         <source>&quot;%1&quot;: unknown device type &quot;%2&quot;; known types: %3</source>
         <translation>&quot;%1&quot;: 알 수 없는 장치 유형 &quot;%2&quot;; 알려진 유형: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="90"/>
+        <location filename="../model/bus/BusSpec.cpp" line="90"/>
         <source>&quot;%1&quot;: the machine number must be a number or a range such as 1-16</source>
         <translation>&quot;%1&quot;: 국번은 숫자 또는 1-16 같은 범위여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="94"/>
+        <location filename="../model/bus/BusSpec.cpp" line="94"/>
         <source>&quot;%1&quot;: machine number %2 is outside %3–%4 for %5</source>
         <translation>&quot;%1&quot;: 국번 %2이(가) %5의 범위 %3–%4을(를) 벗어납니다</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="101"/>
+        <location filename="../model/bus/BusSpec.cpp" line="101"/>
         <source>machine number %1 is given twice</source>
         <translation>국번 %1이(가) 두 번 지정되었습니다</translation>
     </message>
@@ -2037,205 +2052,205 @@ Drives: %5</source>
 <context>
     <name>opentop::CertificateHtml</name>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="44"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="44"/>
         <source>PASS</source>
         <translation>합격</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="46"/>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="46"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="48"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="48"/>
         <source>ABORTED</source>
         <translation>중지됨</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="50"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="50"/>
         <source>INTERRUPTED</source>
         <translation>중단됨</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="52"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="52"/>
         <source>NOT FINISHED</source>
         <translation>미완료</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="65"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="65"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="72"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="72"/>
         <source>End-of-line test certificate</source>
         <translation>출하 검사 성적서</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="75"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="75"/>
         <source>Serial number</source>
         <translation>시리얼 번호</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="76"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="76"/>
         <source>Recipe</source>
         <translation>레시피</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="76"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="76"/>
         <source>%1, revision %2</source>
         <translation>%1, 개정 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="77"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="77"/>
         <source>Recipe checksum</source>
         <translation>레시피 체크섬</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="78"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
         <source>Station</source>
         <translation>스테이션</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="79"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="79"/>
         <source>Operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="80"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="80"/>
         <source>Started</source>
         <translation>시작</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="81"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
         <source>Ended</source>
         <translation>종료</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
         <source>Record</source>
         <translation>기록</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="91"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="91"/>
         <source>First failure:</source>
         <translation>첫 불합격 항목:</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="94"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="94"/>
         <source>Drives</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
         <source>Machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
         <source>Variant</source>
         <translation>기종</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
         <source>Firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="99"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="99"/>
         <source>Settings</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
         <source>Setting</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
         <source>Written</source>
         <translation>쓰기</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
         <source>Read back</source>
         <translation>다시 읽은 값</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="101"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="101"/>
         <source>Verified</source>
         <translation>검증</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="105"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="105"/>
         <source>written</source>
         <translation>쓰기 완료</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="105"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="105"/>
         <source>already set</source>
         <translation>이미 설정됨</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="106"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="106"/>
         <source>yes</source>
         <translation>예</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="106"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="106"/>
         <source>NO</source>
         <translation>아니요</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="108"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="108"/>
         <source>Measurements</source>
         <translation>측정</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Step</source>
         <translation>단계</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Quantity</source>
         <translation>측정 항목</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Limits</source>
         <translation>한계값</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
         <source>pass</source>
         <translation>합격</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
         <source>Bus traffic around the failure</source>
         <translation>불합격 전후의 버스 통신</translation>
     </message>
@@ -2243,12 +2258,12 @@ Drives: %5</source>
 <context>
     <name>opentop::CertificatePdf</name>
     <message>
-        <location filename="../main/report/CertificatePdf.cpp" line="23"/>
+        <location filename="../report/CertificatePdf.cpp" line="23"/>
         <source>End-of-line certificate %1</source>
         <translation>출하 검사 성적서 %1</translation>
     </message>
     <message>
-        <location filename="../main/report/CertificatePdf.cpp" line="53"/>
+        <location filename="../report/CertificatePdf.cpp" line="53"/>
         <source>%1 · %2 · page %3 of %4</source>
         <translation>%1 · %2 · %4쪽 중 %3쪽</translation>
     </message>
@@ -2256,7 +2271,7 @@ Drives: %5</source>
 <context>
     <name>opentop::CliApp</name>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="63"/>
+        <location filename="../cli/CliApp.cpp" line="69"/>
         <source>Usage: %1 [options] COMMAND [arguments]
 
 Commissioning tool for RS-485 Modbus-RTU motor drives.
@@ -2271,14 +2286,14 @@ RS-485 Modbus-RTU 모터 드라이버용 커미셔닝 도구.
 </translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="68"/>
+        <location filename="../cli/CliApp.cpp" line="74"/>
         <source>
 Connection (every command that talks to drives):
   --port PATH | --tcp HOST:PORT | --sim SPEC
   --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
   Defaults follow the family: dbu 19200 8N1, dcpid 9600 8E1; --timeout 200,
   --retries 3 (2 more while the line is noisy: a request needed a retry lately).
-Output: --json  --trace  --variant VARIANT
+Output: --json  --trace  --variant VARIANT  --lang CODE
 Groups: --bus-drives LIST (or OPENTOP_BUS_DRIVES): the drives whose communication
 group is checked before a write or command
 
@@ -2288,36 +2303,21 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
 </source>
-        <translation>
-연결 (드라이버와 통신하는 모든 명령):
-  --port PATH | --tcp HOST:PORT | --sim SPEC
-  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
-  기본값은 제품군에 따름: dbu 19200 8N1, dcpid 9600 8E1; --timeout 200,
-  --retries 3 (라인에 노이즈가 있으면(최근 재시도가 필요했던 요청이 있으면) 2회 추가).
-출력: --json  --trace  --variant VARIANT
-그룹: --bus-drives LIST (또는 OPENTOP_BUS_DRIVES): 쓰기나 명령 전에 통신 그룹을
-확인할 드라이버
-
-종료 코드: 0 성공, 1 통신 실패, 2 사용법 오류, 3 잘못된 값 또는 파일
-(아무것도 쓰지 않음), 4 검증 불일치 또는 정지하지 않은 드라이버 있음,
-130 Ctrl-C, SIGTERM 또는 SIGHUP으로 중단됨(수행한 작업은 보고함).
-
-&quot;%1 help COMMAND&quot;로 명령의 옵션을 볼 수 있습니다.
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="147"/>
-        <location filename="../main/cli/CliApp.cpp" line="201"/>
+        <location filename="../cli/CliApp.cpp" line="153"/>
+        <location filename="../cli/CliApp.cpp" line="207"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>&quot;%1 --help&quot;를 실행해 보십시오.</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="167"/>
+        <location filename="../cli/CliApp.cpp" line="173"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1: 알 수 없는 명령 &quot;%2&quot;; 명령: </translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="175"/>
+        <location filename="../cli/CliApp.cpp" line="181"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2326,12 +2326,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="189"/>
+        <location filename="../cli/CliApp.cpp" line="195"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2: --%3은(는) 이 명령의 옵션이 아닙니다. &quot;%1 help %2&quot;를 참조하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="200"/>
+        <location filename="../cli/CliApp.cpp" line="206"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2339,44 +2339,44 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="75"/>
-        <location filename="../main/cli/CliContext.cpp" line="89"/>
-        <location filename="../main/cli/CliContext.cpp" line="97"/>
+        <location filename="../cli/CliContext.cpp" line="75"/>
+        <location filename="../cli/CliContext.cpp" line="89"/>
+        <location filename="../cli/CliContext.cpp" line="97"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="124"/>
+        <location filename="../cli/CliContext.cpp" line="124"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;: %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="187"/>
+        <location filename="../cli/CliContext.cpp" line="187"/>
         <source>machine number %1: no connection</source>
         <translation>국번 %1: 연결 없음</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="192"/>
+        <location filename="../cli/CliContext.cpp" line="192"/>
         <source>machine number %1: %2%3</source>
         <translation>국번 %1: %2%3</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="245"/>
+        <location filename="../cli/CliContext.cpp" line="245"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1: &quot;%2&quot;은(는) 국번 1–247이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="249"/>
+        <location filename="../cli/CliContext.cpp" line="249"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1: &quot;%2&quot;은(는) 드라이버 기종이 아닙니다. 다음 중 하나를 사용하십시오: %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="267"/>
+        <location filename="../cli/CliContext.cpp" line="267"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot;은(는) 국번 1–247 또는 3-8 같은 범위가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="277"/>
+        <location filename="../cli/CliContext.cpp" line="277"/>
         <source>no machine number given</source>
         <translation>국번이 지정되지 않았습니다</translation>
     </message>
@@ -2384,22 +2384,22 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CodeEntry</name>
     <message>
-        <location filename="../main/model/profile/CodeTable.cpp" line="10"/>
+        <location filename="../model/profile/CodeTable.cpp" line="10"/>
         <source>Alarm-Reset</source>
         <translation>Alarm-Reset</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/CodeTable.cpp" line="12"/>
+        <location filename="../model/profile/CodeTable.cpp" line="12"/>
         <source>power cycle</source>
         <translation>전원 재투입</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/CodeTable.cpp" line="14"/>
+        <location filename="../model/profile/CodeTable.cpp" line="14"/>
         <source>by itself</source>
         <translation>자동 해제</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/CodeTable.cpp" line="15"/>
+        <location filename="../model/profile/CodeTable.cpp" line="15"/>
         <source>—</source>
         <translation>—</translation>
     </message>
@@ -2407,100 +2407,100 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareCommand</name>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="34"/>
+        <location filename="../cli/CompareCommand.cpp" line="34"/>
         <source>Show the settings that differ; A, B: a machine number, FILE or FILE:ID (exit 0 whether or not they differ)</source>
         <translation>서로 다른 설정을 표시합니다. A, B: 국번, FILE 또는 FILE:ID (차이 유무와 관계없이 종료 코드 0)</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="41"/>
+        <location filename="../cli/CompareCommand.cpp" line="41"/>
         <source>Compare A with the profile&apos;s factory defaults; settings the manual gives no default for are listed, never counted as differences.</source>
         <translation>A를 프로파일의 공장 출하값과 비교합니다. 매뉴얼에 기본값이 없는 설정은 목록에 표시하지만 차이로 세지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="54"/>
-        <location filename="../main/cli/CompareCommand.cpp" line="88"/>
-        <location filename="../main/cli/CompareCommand.cpp" line="146"/>
+        <location filename="../cli/CompareCommand.cpp" line="54"/>
+        <location filename="../cli/CompareCommand.cpp" line="88"/>
+        <location filename="../cli/CompareCommand.cpp" line="146"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="67"/>
+        <location filename="../cli/CompareCommand.cpp" line="67"/>
         <source>interrupted</source>
         <translation>중단됨</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="72"/>
+        <location filename="../cli/CompareCommand.cpp" line="72"/>
         <source>error: %1: cannot read %2</source>
         <translation>오류: %1: %2을(를) 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="76"/>
+        <location filename="../cli/CompareCommand.cpp" line="76"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="107"/>
+        <location filename="../cli/CompareCommand.cpp" line="107"/>
         <source>error: %1 holds several drives (%2): name one as %1:ID</source>
         <translation>오류: %1에 드라이버가 여러 대 있습니다(%2): %1:ID 형식으로 하나를 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="110"/>
+        <location filename="../cli/CompareCommand.cpp" line="110"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>오류: %1에 국번 %2인 드라이버가 없습니다. 포함된 드라이버: %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="126"/>
+        <location filename="../cli/CompareCommand.cpp" line="126"/>
         <source>error: compare A B, or compare A --defaults (A, B: a machine number, FILE or FILE:ID)</source>
         <translation>오류: compare A B 또는 compare A --defaults (A, B: 국번, FILE 또는 FILE:ID)</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="144"/>
+        <location filename="../cli/CompareCommand.cpp" line="144"/>
         <source>factory defaults</source>
         <translation>공장 출하값</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="171"/>
+        <location filename="../cli/CompareCommand.cpp" line="171"/>
         <source>A: %1 (%2)</source>
         <translation>A: %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="172"/>
+        <location filename="../cli/CompareCommand.cpp" line="172"/>
         <source>B: %1</source>
         <translation>B: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
         <source>parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="177"/>
-        <location filename="../main/cli/CompareCommand.cpp" line="178"/>
+        <location filename="../cli/CompareCommand.cpp" line="177"/>
+        <location filename="../cli/CompareCommand.cpp" line="178"/>
         <source>(not held)</source>
         <translation>(포함 안 됨)</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="181"/>
+        <location filename="../cli/CompareCommand.cpp" line="181"/>
         <source> in %1 settings compared</source>
         <translation> (설정 %1개 비교)</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="183"/>
+        <location filename="../cli/CompareCommand.cpp" line="183"/>
         <source>no differences (%1 settings compared)</source>
         <translation>차이 없음(설정 %1개 비교)</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="190"/>
+        <location filename="../cli/CompareCommand.cpp" line="190"/>
         <source>note: %1</source>
         <translation>참고: %1</translation>
     </message>
@@ -2508,162 +2508,162 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareDialog</name>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="32"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="32"/>
         <source>&amp;Differences only</source>
         <translation>차이만 표시(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="36"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="36"/>
         <source>Co&amp;mpare</source>
         <translation>비교(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="38"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="38"/>
         <source>Compare settings</source>
         <translation>설정 비교</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="39"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="39"/>
         <source>Side A</source>
         <translation>A쪽</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="40"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="40"/>
         <source>Side B</source>
         <translation>B쪽</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="48"/>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
         <source>Setting</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="48"/>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="54"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="54"/>
         <source>Filter by setting or parameter name</source>
         <translation>설정 이름 또는 파라미터 이름으로 필터</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="56"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="56"/>
         <source>Read the chosen sides and compare them (drives are read fresh)</source>
         <translation>선택한 양쪽을 읽어 비교합니다(드라이버는 새로 읽음)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="66"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="66"/>
         <source>C&amp;lose</source>
         <translation>닫기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="98"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="98"/>
         <source>%1 refused: %2</source>
         <translation>%1 거부됨: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="112"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="112"/>
         <source>Reading…</source>
         <translation>읽는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="137"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="137"/>
         <source>side A</source>
         <translation>A쪽</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="137"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="137"/>
         <source>side B</source>
         <translation>B쪽</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="141"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="141"/>
         <source>Factory defaults</source>
         <translation>공장 출하값</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="148"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="148"/>
         <source>Choose a backup file and a drive in it for %1.</source>
         <translation>%1에 사용할 백업 파일과 그 안의 드라이버를 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="152"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="152"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="162"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="162"/>
         <source>Choose an identified drive on the bus for %1.</source>
         <translation>%1에 사용할 버스의 식별된 드라이버를 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="170"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="170"/>
         <source>%1: cannot read %2</source>
         <translation>%1: %2을(를) 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="195"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="195"/>
         <source>Unknown family %1</source>
         <translation>알 수 없는 제품군 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="215"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="215"/>
         <source>B: %1</source>
         <translation>B: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="216"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
         <source>factory defaults (%1)</source>
         <translation>공장 출하값 (%1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="226"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="226"/>
         <source>(no documented default)</source>
         <translation>(문서화된 기본값 없음)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="227"/>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="229"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="229"/>
         <source>(not held)</source>
         <translation>(포함 안 됨)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/CompareDialog.cpp" line="245"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="245"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>차이 %n건</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="246"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="246"/>
         <source> in %1 settings compared</source>
         <translation> (설정 %1개 비교)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="249"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="249"/>
         <source>Note: %1</source>
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="256"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="256"/>
         <source>No factory default documented (never counted as a difference): %1</source>
         <translation>문서화된 공장 출하값 없음(차이로 세지 않음): %1</translation>
     </message>
@@ -2671,62 +2671,62 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareSide</name>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="22"/>
+        <location filename="../ui/files/CompareSide.cpp" line="22"/>
         <source>Browse…</source>
         <translation>찾아보기…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="25"/>
+        <location filename="../ui/files/CompareSide.cpp" line="25"/>
         <source>Drive on the bus</source>
         <translation>버스의 드라이버</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="26"/>
+        <location filename="../ui/files/CompareSide.cpp" line="26"/>
         <source>Drive in a backup file</source>
         <translation>백업 파일의 드라이버</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="28"/>
+        <location filename="../ui/files/CompareSide.cpp" line="28"/>
         <source>Factory defaults</source>
         <translation>공장 출하값</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="32"/>
+        <location filename="../ui/files/CompareSide.cpp" line="32"/>
         <source>Drive %1 (%2)</source>
         <translation>드라이버 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="36"/>
+        <location filename="../ui/files/CompareSide.cpp" line="36"/>
         <source>Backup file</source>
         <translation>백업 파일</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="41"/>
+        <location filename="../ui/files/CompareSide.cpp" line="41"/>
         <source>Source:</source>
         <translation>원본:</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="42"/>
+        <location filename="../ui/files/CompareSide.cpp" line="42"/>
         <source>Drive:</source>
         <translation>드라이버:</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="43"/>
+        <location filename="../ui/files/CompareSide.cpp" line="43"/>
         <source>File:</source>
         <translation>파일:</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="44"/>
+        <location filename="../ui/files/CompareSide.cpp" line="44"/>
         <source>Drive in file:</source>
         <translation>파일 안의 드라이버:</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="123"/>
+        <location filename="../ui/files/CompareSide.cpp" line="123"/>
         <source>Open backup file</source>
         <translation>백업 파일 열기</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="124"/>
+        <location filename="../ui/files/CompareSide.cpp" line="124"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 백업 (*.json);;모든 파일 (*)</translation>
     </message>
@@ -2734,17 +2734,17 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::Comparer</name>
     <message>
-        <location filename="../main/model/files/Comparer.cpp" line="15"/>
+        <location filename="../model/files/Comparer.cpp" line="15"/>
         <source>nothing to compare: %1 is a %2 drive, %3 a %4 drive</source>
         <translation>비교할 수 없습니다: %1은(는) %2 드라이버, %3은(는) %4 드라이버입니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Comparer.cpp" line="20"/>
+        <location filename="../model/files/Comparer.cpp" line="20"/>
         <source>the variants differ: %1 and %2</source>
         <translation>기종이 다릅니다: %1, %2</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Comparer.cpp" line="55"/>
+        <location filename="../model/files/Comparer.cpp" line="55"/>
         <source>factory defaults</source>
         <translation>공장 출하값</translation>
     </message>
@@ -2752,188 +2752,188 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::ConnectionDialog</name>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="61"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="61"/>
         <source>Connect to a bus</source>
         <translation>버스에 연결</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="66"/>
         <source>&amp;Serial port</source>
         <translation>시리얼 포트(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="66"/>
         <source>Modbus &amp;TCP gateway</source>
         <translation>Modbus TCP 게이트웨이(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="67"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
         <source>Si&amp;mulated bus</source>
         <translation>시뮬레이션 버스(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="83"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="83"/>
         <source>&amp;Advanced</source>
         <translation>고급(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="106"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="106"/>
         <source>&amp;Connect</source>
         <translation>연결(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="127"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="127"/>
         <source>&amp;Refresh</source>
         <translation>새로 고침(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="128"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="128"/>
         <source>List the serial ports again (after plugging in an adapter)</source>
         <translation>시리얼 포트 목록을 다시 불러옵니다(어댑터를 꽂은 후)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="133"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="133"/>
         <source>&amp;Port:</source>
         <translation>포트(&amp;P):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="142"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="142"/>
         <source>Custom</source>
         <translation>사용자 지정</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="144"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="144"/>
         <source>%1 (%2 %3%4%5)</source>
         <translation>%1 (%2 %3%4%5)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="151"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="151"/>
         <source>Fills in the factory line settings of a drive family</source>
         <translation>드라이버 제품군의 공장 출하 통신 설정을 채웁니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="154"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="154"/>
         <source>&amp;Family defaults:</source>
         <translation>제품군 기본값(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="158"/>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="286"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="158"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="286"/>
         <source>%1 bit/s</source>
         <translation>%1 bit/s</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="159"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="159"/>
         <source>&amp;Baud rate:</source>
         <translation>통신 속도(&amp;B):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="161"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="161"/>
         <source>None (N)</source>
         <translation>없음 (N)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="162"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="162"/>
         <source>Even (E)</source>
         <translation>짝수 (E)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="163"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
         <source>Odd (O)</source>
         <translation>홀수 (O)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="164"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
         <source>P&amp;arity:</source>
         <translation>패리티(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="166"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="166"/>
         <source>1 bit</source>
         <translation>1 비트</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="167"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="167"/>
         <source>2 bits</source>
         <translation>2 비트</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="168"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
         <source>S&amp;top bits:</source>
         <translation>스톱 비트(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="182"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="182"/>
         <source>e.g. 192.168.1.10</source>
         <translation>예: 192.168.1.10</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="183"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="183"/>
         <source>&amp;Host:</source>
         <translation>호스트(&amp;H):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="186"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="186"/>
         <source>Modbus TCP uses port 502</source>
         <translation>Modbus TCP는 포트 502를 사용합니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="187"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="187"/>
         <source>TCP p&amp;ort:</source>
         <translation>TCP 포트(&amp;O):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="199"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="199"/>
         <source>Device types and machine numbers: TYPE@NUMBER, comma separated. Types: %1</source>
         <translation>장치 유형과 국번: TYPE@NUMBER, 쉼표로 구분. 유형: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="202"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="202"/>
         <source>&amp;Devices:</source>
         <translation>장치(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="216"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="216"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="217"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="217"/>
         <source>How long to wait for each reply</source>
         <translation>각 응답을 기다리는 시간</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="218"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="218"/>
         <source>Response &amp;timeout:</source>
         <translation>응답 타임아웃(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="221"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="221"/>
         <source>Extra attempts after a request got no valid reply</source>
         <translation>요청에 올바른 응답이 없을 때 추가로 시도하는 횟수</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="222"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="222"/>
         <source>R&amp;etries:</source>
         <translation>재시도(&amp;E):</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="322"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="322"/>
         <source>The device list is not valid.</source>
         <translation>장치 목록이 올바르지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="26"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="26"/>
         <source>The port is in use by another program (named above where the system tells it): a terminal program, ModemManager, another OpenTOP window or an opentop-cli command. Close it, or disconnect the other window, and connect again. Nothing was sent on the port.</source>
         <translation>다른 프로그램이 포트를 사용 중입니다(시스템이 알려준 경우 위에 이름이 표시됨): 터미널 프로그램, ModemManager, 다른 OpenTOP 창 또는 opentop-cli 명령. 그 프로그램을 닫거나 다른 창의 연결을 해제한 뒤 다시 연결하십시오. 포트로는 아무것도 보내지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="33"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="33"/>
         <source>Your user may not open serial ports: add it to the dialout group with the command above, then log out and in again.</source>
         <translation>현재 사용자에게 시리얼 포트를 열 권한이 없습니다: 위 명령으로 dialout 그룹에 추가한 뒤 로그아웃했다가 다시 로그인하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="36"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="36"/>
         <source>Your user may not open serial ports. Add it to the dialout group:
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -2942,37 +2942,37 @@ then log out and in again (the group applies to new sessions only).</source>
 그런 다음 로그아웃했다가 다시 로그인하십시오(그룹은 새 세션에만 적용됨).</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="41"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="41"/>
         <source>The port %1 does not exist: the USB adapter may be unplugged or have come back under another name, or the path is mistyped. Plug it in, press Refresh and pick it from the list; for a pseudo-terminal check that the program serving it (opentop-sim, socat) still runs.</source>
         <translation>포트 %1이(가) 없습니다: USB 어댑터가 빠졌거나 다른 이름으로 다시 인식되었거나 경로를 잘못 입력했습니다. 어댑터를 꽂고 새로 고침을 누른 뒤 목록에서 선택하십시오. 가상 터미널(pty)이면 이를 제공하는 프로그램(opentop-sim, socat)이 아직 실행 중인지 확인하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="48"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="48"/>
         <source>The connection opened but no drive answered. Check that the baud rate, parity and stop bits (%1) match the drives&apos; settings (DBU: 19200 8N1, DC controller: 9600 8E1) — a framing mismatch looks like silence — that the machine number is right, and that the A and B (D+ and D−) wires are not swapped.</source>
         <translation>연결은 열렸지만 응답한 드라이버가 없습니다. 통신 속도, 패리티, 스톱 비트(%1)가 드라이버 설정과 맞는지(DBU: 19200 8N1, DC 컨트롤러: 9600 8E1) — 프레임 형식이 맞지 않으면 무응답처럼 보입니다 — 국번이 맞는지, A와 B(D+와 D−) 선이 바뀌지 않았는지 확인하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="56"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="56"/>
         <source>The gateway %1:%2 did not accept the connection: check the address and port (Modbus TCP uses 502), that the gateway is powered and on this network, and that no firewall blocks it.</source>
         <translation>게이트웨이 %1:%2이(가) 연결을 받지 않았습니다: 주소와 포트(Modbus TCP는 502 사용), 게이트웨이 전원이 켜져 있고 이 네트워크에 있는지, 방화벽이 막고 있지 않은지 확인하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="63"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="63"/>
         <source>Check that the adapter is plugged in, that %1 is the right port, and that no other program uses it.</source>
         <translation>어댑터가 꽂혀 있는지, %1이(가) 올바른 포트인지, 다른 프로그램이 사용하고 있지 않은지 확인하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="66"/>
         <source>Check the connection settings and try again.</source>
         <translation>연결 설정을 확인하고 다시 시도하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="68"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="68"/>
         <source>Could not use %1: %2</source>
         <translation>%1을(를) 사용할 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="69"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="69"/>
         <source>What to check:</source>
         <translation>확인할 사항:</translation>
     </message>
@@ -2980,138 +2980,138 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ConnectionOptions</name>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="22"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="22"/>
         <source>Serial device (e.g. /dev/ttyUSB0 or a pty path).</source>
         <translation>시리얼 장치(예: /dev/ttyUSB0 또는 pty 경로).</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="23"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="23"/>
         <source>PATH</source>
         <translation>PATH</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="24"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="24"/>
         <source>Modbus TCP gateway, HOST:PORT (port defaults to 502).</source>
         <translation>Modbus TCP 게이트웨이, HOST:PORT (포트 기본값 502).</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="25"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="25"/>
         <source>HOST:PORT</source>
         <translation>HOST:PORT</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="26"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="26"/>
         <source>In-process simulated bus, e.g. dbu200@1,dbu400@150,dcpid@7.</source>
         <translation>프로세스 내부 시뮬레이션 버스, 예: dbu200@1,dbu400@150,dcpid@7.</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="27"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="27"/>
         <source>SPEC</source>
         <translation>SPEC</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="29"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="29"/>
         <source>Device family whose serial defaults apply (dbu: 19200 8N1, dcpid: 9600 8E1).</source>
         <translation>시리얼 기본값을 적용할 장치 제품군(dbu: 19200 8N1, dcpid: 9600 8E1).</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="30"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="30"/>
         <source>FAMILY</source>
         <translation>FAMILY</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="31"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="31"/>
         <source>Baud rate, 1200–115200.</source>
         <translation>통신 속도, 1200–115200.</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="31"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="31"/>
         <source>BAUD</source>
         <translation>BAUD</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="32"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="32"/>
         <source>Parity: N, E or O.</source>
         <translation>패리티: N, E 또는 O.</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="32"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="32"/>
         <source>N|E|O</source>
         <translation>N|E|O</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="33"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="33"/>
         <source>Stop bits: 1 or 2.</source>
         <translation>스톱 비트: 1 또는 2.</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="33"/>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="39"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="33"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="39"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="35"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="35"/>
         <source>Response timeout per attempt in ms, 10–10000 (default 200).</source>
         <translation>시도당 응답 타임아웃(ms), 10–10000 (기본값 200).</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="35"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="35"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="37"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="37"/>
         <source>Extra attempts after no reply or a garbled one, 0–10 (default 3; 2 more while the line is noisy).</source>
         <translation>응답이 없거나 깨졌을 때 추가 시도 횟수, 0–10 (기본값 3; 라인에 노이즈가 있으면 2회 추가).</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="73"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="73"/>
         <source>give only one of --port, --tcp and --sim</source>
         <translation>--port, --tcp, --sim 중 하나만 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="75"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="75"/>
         <source>no bus given: use --port PATH, --tcp HOST:PORT or --sim SPEC</source>
         <translation>버스가 지정되지 않았습니다: --port PATH, --tcp HOST:PORT 또는 --sim SPEC을 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="84"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="84"/>
         <source>--family %1: unknown family; use one of %2</source>
         <translation>--family %1: 알 수 없는 제품군입니다. 다음 중 하나를 사용하십시오: %2</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="103"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
         <source>--tcp: &quot;%1&quot; is not HOST:PORT</source>
         <translation>--tcp: &quot;%1&quot;은(는) HOST:PORT 형식이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="112"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="112"/>
         <source>--sim: %1</source>
         <translation>--sim: %1</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="125"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="125"/>
         <source>--baud %1: use a baud rate 1200–115200 (e.g. 9600, 19200, 38400)</source>
         <translation>--baud %1: 통신 속도는 1200–115200을 사용하십시오(예: 9600, 19200, 38400)</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="129"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="129"/>
         <source>--stop-bits %1: use 1 or 2</source>
         <translation>--stop-bits %1: 1 또는 2를 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="131"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="131"/>
         <source>--timeout %1: use a response timeout of 10–10000 ms</source>
         <translation>--timeout %1: 응답 타임아웃은 10–10000 ms를 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="134"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="134"/>
         <source>--retries %1: use 0–10 extra attempts</source>
         <translation>--retries %1: 추가 시도는 0–10회를 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="139"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="139"/>
         <source>--parity %1: use N (none), E (even) or O (odd)</source>
         <translation>--parity %1: N(없음), E(짝수) 또는 O(홀수)를 사용하십시오</translation>
     </message>
@@ -3119,18 +3119,18 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ConnectionStatus</name>
     <message>
-        <location filename="../main/ui/main/ConnectionStatus.cpp" line="20"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="20"/>
         <source>SIMULATED BUS — no hardware</source>
         <translation>시뮬레이션 버스 — 실제 하드웨어 없음</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/ConnectionStatus.cpp" line="21"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="21"/>
         <source>These drives exist only in this program; nothing moves.</source>
         <translation>이 드라이버들은 이 프로그램 안에만 있습니다. 실제로 움직이는 것은 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/ConnectionStatus.cpp" line="26"/>
-        <location filename="../main/ui/main/ConnectionStatus.cpp" line="61"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="26"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="61"/>
         <source>Not connected</source>
         <translation>연결 안 됨</translation>
     </message>
@@ -3138,92 +3138,92 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::DbuSimDevice</name>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="340"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="340"/>
         <source>alarm 0x%1</source>
         <translation>알람 0x%1</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="341"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="341"/>
         <source>running</source>
         <translation>운전 중</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="342"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="342"/>
         <source>stopped</source>
         <translation>정지됨</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="343"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="343"/>
         <source>%1 %2 r/min (target %3) SPno%4 load %5 % %6, %7 priority, %8%9</source>
         <translation>%1 %2 r/min (목표 %3) SPno%4 부하 %5 % %6, %7 우선, %8%9</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="347"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="347"/>
         <source>communication</source>
         <translation>통신</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="347"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="347"/>
         <source>I/O</source>
         <translation>I/O</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="348"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="348"/>
         <source>offline</source>
         <translation>오프라인</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="348"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="348"/>
         <source>online</source>
         <translation>온라인</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="349"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="349"/>
         <source>, ignoring stop</source>
         <translation>, 정지 무시</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="357"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="357"/>
         <source>usage: %1 ID CODE</source>
         <translation>사용법: %1 ID CODE</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="360"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="360"/>
         <source>warning cleared</source>
         <translation>경고 해제됨</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="365"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="365"/>
         <source>unknown %1 code %2; allowed: %3</source>
         <translation>알 수 없는 %1 코드 %2; 허용: %3</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="373"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="373"/>
         <source>%1 0x%2 raised</source>
         <translation>%1 0x%2 발생</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="384"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="384"/>
         <source>usage: ignore-stop ID on|off</source>
         <translation>사용법: ignore-stop ID on|off</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="386"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="386"/>
         <source>stop commands are acknowledged and ignored</source>
         <translation>정지 명령을 수신 확인만 하고 무시합니다</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="387"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="387"/>
         <source>stop commands are obeyed</source>
         <translation>정지 명령을 따릅니다</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="403"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="403"/>
         <source>usage: %1 ID VALUE with VALUE %2..%3</source>
         <translation>사용법: %1 ID VALUE (VALUE는 %2..%3)</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="405"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="405"/>
         <source>%1 = %2</source>
         <translation>%1 = %2</translation>
     </message>
@@ -3231,232 +3231,232 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::DcControllerPage</name>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="41"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="41"/>
         <source>DC controller</source>
         <translation>DC 컨트롤러</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="44"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="44"/>
         <source>Re&amp;load stored configuration</source>
         <translation>저장된 설정 다시 불러오기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="66"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="66"/>
         <source>Store &amp;configuration</source>
         <translation>설정 저장(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="67"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="67"/>
         <source>Store P&amp;ID</source>
         <translation>PID 저장(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="68"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="68"/>
         <source>Store pre&amp;set</source>
         <translation>프리셋 저장(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="71"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="71"/>
         <source>Writes %1 = 1: %2</source>
         <translation>%1 = 1 쓰기: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="76"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="76"/>
         <source>Writes store.config = 0: the controller reloads the stored configuration; unstored configuration changes are discarded</source>
         <translation>store.config = 0 쓰기: 컨트롤러가 저장된 설정을 다시 불러옵니다. 저장하지 않은 설정 변경은 버려집니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="83"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="83"/>
         <source>Speed mode and motor currents</source>
         <translation>속도 모드와 모터 전류</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="84"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="84"/>
         <source>Speed &amp;mode:</source>
         <translation>속도 모드(&amp;M):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="85"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="85"/>
         <source>Rated current:</source>
         <translation>정격 전류:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="86"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="86"/>
         <source>Maximum start/load current:</source>
         <translation>최대 기동/부하 전류:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="87"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="87"/>
         <source>Brake current:</source>
         <translation>브레이크 전류:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="89"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="89"/>
         <source>Limit switches</source>
         <translation>리밋 스위치</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="90"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="90"/>
         <source>Limits:</source>
         <translation>리밋:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="91"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="91"/>
         <source>SQ1 active level (forward):</source>
         <translation>SQ1 동작 레벨 (정회전):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="92"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="92"/>
         <source>SQ2 active level (reverse):</source>
         <translation>SQ2 동작 레벨 (역회전):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="94"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="94"/>
         <source>Protective stops (0 = off)</source>
         <translation>보호 정지 (0 = 사용 안 함)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="95"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="95"/>
         <source>S&amp;tall stop time:</source>
         <translation>구속 정지 시간(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="96"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="96"/>
         <source>Communication loss stop time:</source>
         <translation>통신 두절 정지 시간:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="104"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="104"/>
         <source>Serial port (reconnect after a change)</source>
         <translation>시리얼 포트 (변경 후 다시 연결)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="105"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="105"/>
         <source>Baud rate:</source>
         <translation>통신 속도:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="106"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="106"/>
         <source>Parity and stop bits:</source>
         <translation>패리티와 스톱 비트:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="107"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="107"/>
         <source>Configuration over serial:</source>
         <translation>시리얼로 설정 변경:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="109"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="109"/>
         <source>Lost at power-off until stored (Store configuration); a stored baud rate or parity is used from the next power-up on, and the tool must then reconnect with it.</source>
         <translation>저장하기 전까지는 전원을 끄면 사라집니다(설정 저장). 저장한 통신 속도나 패리티는 다음 전원 투입부터 적용되며, 그 후 이 도구도 그 설정으로 다시 연결해야 합니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="112"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="112"/>
         <source>Speed loop PID</source>
         <translation>속도 루프 PID</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="113"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="113"/>
         <source>&amp;P coefficient:</source>
         <translation>P 계수(&amp;P):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="114"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="114"/>
         <source>I coefficient:</source>
         <translation>I 계수:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="115"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="115"/>
         <source>&amp;D coefficient:</source>
         <translation>D 계수(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="116"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="116"/>
         <source>D period:</source>
         <translation>D 주기:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="118"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="118"/>
         <source>Preset speed (potentiometer/analog control)</source>
         <translation>프리셋 속도 (포텐셔미터/아날로그 제어)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="119"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="119"/>
         <source>Preset speed mo&amp;de:</source>
         <translation>프리셋 속도 모드(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="120"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="120"/>
         <source>Trigger:</source>
         <translation>트리거:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="121"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="121"/>
         <source>&amp;Forward speed:</source>
         <translation>정회전 속도(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="122"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="122"/>
         <source>Reverse speed:</source>
         <translation>역회전 속도:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="124"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="124"/>
         <source>AI1/AI2 as digital ports</source>
         <translation>AI1/AI2를 디지털 포트로 사용</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="125"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="125"/>
         <source>AI1 direction:</source>
         <translation>AI1 방향:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="126"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="126"/>
         <source>AI2 direction:</source>
         <translation>AI2 방향:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="127"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="127"/>
         <source>AI1 level:</source>
         <translation>AI1 레벨:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="128"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="128"/>
         <source>AI2 level:</source>
         <translation>AI2 레벨:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="130"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="130"/>
         <source>Takes effect now and is not kept over power-off: the controller has no store command for these, only a 5-register block write, which this page does not send.</source>
         <translation>즉시 적용되며 전원을 끄면 유지되지 않습니다: 컨트롤러에는 이 항목의 저장 명령이 없고 5개 레지스터 일괄 쓰기만 있는데, 이 페이지는 그것을 보내지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="174"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="174"/>
         <source>The communication loss stop is off (%1 = 0 s): if the connection is lost while the motor runs, the controller keeps it running at the last speed command. Set a time so that it brakes when the bus goes quiet.</source>
         <translation>통신 두절 정지가 꺼져 있습니다(%1 = 0 s): 모터 운전 중 연결이 끊기면 컨트롤러는 마지막 속도 명령으로 계속 운전합니다. 버스 통신이 끊기면 브레이크가 걸리도록 시간을 설정하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="189"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="189"/>
         <source>Takes effect now, lost at power-off until stored (%1).</source>
         <translation>즉시 적용되며, 저장하기 전까지는 전원을 끄면 사라집니다(%1).</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="250"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="250"/>
         <source>Forward and reverse speed in this mode (%1): %2</source>
         <translation>이 모드(%1)의 정회전·역회전 속도: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="252"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="252"/>
         <source>The unit and range of the speeds follow the preset speed mode (not read yet).</source>
         <translation>속도의 단위와 범위는 프리셋 속도 모드에 따릅니다(아직 읽지 않음).</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="286"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="286"/>
         <source>&lt;b&gt;Written but not stored:&lt;/b&gt; %1. These values act now and are lost when the controller is switched off.</source>
         <translation>&lt;b&gt;쓰기 완료, 저장 안 됨:&lt;/b&gt; %1. 이 값은 지금 적용되어 있지만 컨트롤러 전원을 끄면 사라집니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="308"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="308"/>
         <source>%1: the controller writes the values now in effect to its memory and uses them from the next power-up on.
 
 Stored: %2.</source>
@@ -3465,17 +3465,17 @@ Stored: %2.</source>
 저장 대상: %2.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="319"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="319"/>
         <source>Not written yet, so not stored: %1.</source>
         <translation>아직 쓰지 않아 저장되지 않음: %1.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="322"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="322"/>
         <source>%1: done, kept over power-off.</source>
         <translation>%1: 완료, 전원을 꺼도 유지됩니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="330"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="330"/>
         <source>The controller replaces its configuration (%1) with the one stored in its memory.
 
 Configuration changes written but not stored are discarded.</source>
@@ -3484,17 +3484,17 @@ Configuration changes written but not stored are discarded.</source>
 쓰기만 하고 저장하지 않은 설정 변경은 버려집니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="336"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="336"/>
         <source>Stored configuration reloaded.</source>
         <translation>저장된 설정을 다시 불러왔습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="344"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="344"/>
         <source>Writing %1 = %2…</source>
         <translation>%1 = %2 쓰는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="354"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="354"/>
         <source>%1 = %2 failed: %3</source>
         <translation>%1 = %2 실패: %3</translation>
     </message>
@@ -3502,32 +3502,32 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DcPidSimDevice</name>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="341"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="341"/>
         <source>%1 %2%3, output %4 %, command %5, line %6 %7</source>
         <translation>%1 %2%3, 출력 %4 %, 명령 %5, 라인 %6 %7</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="343"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="343"/>
         <source> (stall stop)</source>
         <translation> (구속 정지)</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="357"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="359"/>
         <source>usage: %1 ID VALUE with VALUE %2..%3 %4</source>
         <translation>사용법: %1 ID VALUE (VALUE는 %2..%3 %4)</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="361"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="363"/>
         <source>(bit0 SQ1, bit1 SQ2, bit2 DE)</source>
         <translation>(bit0 SQ1, bit1 SQ2, bit2 DE)</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="361"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="363"/>
         <source>(% current)</source>
         <translation>(전류 %)</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="363"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="365"/>
         <source>%1 = %2</source>
         <translation>%1 = %2</translation>
     </message>
@@ -3535,37 +3535,37 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DcRunCommands</name>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="26"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="26"/>
         <source>Set s&amp;peed</source>
         <translation>속도 설정(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="31"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="31"/>
         <source>set point, e.g. 50 or -20</source>
         <translation>설정값, 예: 50 또는 -20</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="39"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="39"/>
         <source>Speed command:</source>
         <translation>속도 명령:</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="54"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="54"/>
         <source>&amp;Brake (speed 0)</source>
         <translation>브레이크(&amp;B) (속도 0)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="56"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="56"/>
         <source>&amp;Natural stop</source>
         <translation>자연 정지(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="90"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="90"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="91"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="91"/>
         <source>(reading %1…)</source>
         <translation>(%1 읽는 중…)</translation>
     </message>
@@ -3573,17 +3573,17 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DependentValues</name>
     <message>
-        <location filename="../main/model/session/DependentValues.cpp" line="45"/>
+        <location filename="../model/session/DependentValues.cpp" line="45"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DependentValues.cpp" line="53"/>
+        <location filename="../model/session/DependentValues.cpp" line="53"/>
         <source>%1 = %2 would leave %3 without a valid value, because what they allow depends on it. Choose new values for them and write them together with it.</source>
         <translation>%1 = %2(으)로 하면 허용 범위가 이 값에 따라 달라지는 %3이(가) 올바르지 않은 값이 됩니다. 새 값을 정해 함께 쓰십시오.</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DependentValues.cpp" line="57"/>
+        <location filename="../model/session/DependentValues.cpp" line="57"/>
         <source>%1 cannot be checked: the values of %2 depend on it and could not be read</source>
         <translation>%1을(를) 검사할 수 없습니다: %2의 값이 이 값에 따라 달라지는데 읽을 수 없었습니다</translation>
     </message>
@@ -3591,17 +3591,17 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceIdentifier</name>
     <message>
-        <location filename="../main/model/session/DeviceIdentifier.cpp" line="31"/>
+        <location filename="../model/session/DeviceIdentifier.cpp" line="31"/>
         <source>answers, but none of the device profiles matches</source>
         <translation>응답은 있지만 일치하는 장치 프로파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceIdentifier.cpp" line="96"/>
+        <location filename="../model/session/DeviceIdentifier.cpp" line="96"/>
         <source>device name &quot;%1&quot; is not a %2</source>
         <translation>장치 이름 &quot;%1&quot;은(는) %2이(가) 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceIdentifier.cpp" line="115"/>
+        <location filename="../model/session/DeviceIdentifier.cpp" line="115"/>
         <source>the variant cannot be read from the device; choose it</source>
         <translation>장치에서 기종을 읽을 수 없습니다. 기종을 선택하십시오</translation>
     </message>
@@ -3609,27 +3609,27 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceInfo</name>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="28"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="28"/>
         <source>not checked</source>
         <translation>확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="30"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="30"/>
         <source>online</source>
         <translation>온라인</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="32"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="32"/>
         <source>no answer</source>
         <translation>응답 없음</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="34"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="34"/>
         <source>garbled replies (duplicate machine number?)</source>
         <translation>응답이 깨짐(국번 중복?)</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="37"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="37"/>
         <source>unknown device</source>
         <translation>알 수 없는 장치</translation>
     </message>
@@ -3637,27 +3637,27 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceMonitor</name>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="60"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="60"/>
         <source>Stopped</source>
         <translation>정지</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="62"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="62"/>
         <source>Running</source>
         <translation>운전 중</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="63"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="63"/>
         <source>Running CCW</source>
         <translation>CCW 운전 중</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="63"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="63"/>
         <source>Running CW</source>
         <translation>CW 운전 중</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="206"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="206"/>
         <source>machine number %1: %2</source>
         <translation>국번 %1: %2</translation>
     </message>
@@ -3665,22 +3665,22 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceParameters</name>
     <message>
-        <location filename="../main/model/session/DeviceParameters.cpp" line="81"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="81"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1에 파라미터 &quot;%2&quot;이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceParameters.cpp" line="83"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="83"/>
         <source>%1 is read-only</source>
         <translation>%1은(는) 읽기 전용입니다</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceParameters.cpp" line="85"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="85"/>
         <source>%1 is a command, not a setting; commands are sent one by one on request</source>
         <translation>%1은(는) 설정이 아니라 명령입니다. 명령은 요청할 때 하나씩 보냅니다</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceParameters.cpp" line="211"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="211"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -3688,53 +3688,53 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceSession</name>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="90"/>
+        <location filename="../model/session/DeviceSession.cpp" line="90"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1에 파라미터 &quot;%2&quot;이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="99"/>
-        <location filename="../main/model/session/DeviceSession.cpp" line="139"/>
+        <location filename="../model/session/DeviceSession.cpp" line="99"/>
+        <location filename="../model/session/DeviceSession.cpp" line="139"/>
         <source>%1 cannot be read (it is a write-only command)</source>
         <translation>%1은(는) 읽을 수 없습니다(쓰기 전용 명령)</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="202"/>
+        <location filename="../model/session/DeviceSession.cpp" line="202"/>
         <source>cannot check the value: reading %1 failed: %2</source>
         <translation>값을 검사할 수 없습니다: %1 읽기 실패: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="219"/>
+        <location filename="../model/session/DeviceSession.cpp" line="219"/>
         <source>%1 is read-only</source>
         <translation>%1은(는) 읽기 전용입니다</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="225"/>
+        <location filename="../model/session/DeviceSession.cpp" line="225"/>
         <source>%1 is a %2 command; it is only sent when explicitly requested</source>
         <translation>%1은(는) %2 명령입니다. 명시적으로 요청할 때만 보냅니다</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="254"/>
+        <location filename="../model/session/DeviceSession.cpp" line="254"/>
         <source>%1 cannot be checked: %2</source>
         <translation>%1을(를) 검사할 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="276"/>
+        <location filename="../model/session/DeviceSession.cpp" line="276"/>
         <source>reading %1 failed: %2</source>
         <translation>%1 읽기 실패: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="327"/>
+        <location filename="../model/session/DeviceSession.cpp" line="327"/>
         <source>written, but reading it back failed: %1</source>
         <translation>썼지만 다시 읽기에 실패했습니다: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="336"/>
+        <location filename="../model/session/DeviceSession.cpp" line="336"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>검증 실패: %1을(를) 썼지만 장치 값은 %2입니다</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="372"/>
+        <location filename="../model/session/DeviceSession.cpp" line="372"/>
         <source>error code %1</source>
         <translation>오류 코드 %1</translation>
     </message>
@@ -3742,22 +3742,22 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DrivePages</name>
     <message>
-        <location filename="../main/ui/main/DrivePages.cpp" line="97"/>
+        <location filename="../ui/main/DrivePages.cpp" line="97"/>
         <source>Monitor</source>
         <translation>모니터</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/DrivePages.cpp" line="110"/>
+        <location filename="../ui/main/DrivePages.cpp" line="110"/>
         <source>Test run</source>
         <translation>시운전</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/DrivePages.cpp" line="112"/>
+        <location filename="../ui/main/DrivePages.cpp" line="112"/>
         <source>Alarms</source>
         <translation>알람</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/DrivePages.cpp" line="121"/>
+        <location filename="../ui/main/DrivePages.cpp" line="121"/>
         <source>Machine number %1 (%2, %3) — %4, firmware V%5</source>
         <translation>국번 %1 (%2, %3) — %4, 펌웨어 V%5</translation>
     </message>
@@ -3765,111 +3765,111 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveStatusPoller</name>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="31"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="31"/>
         <source>not polled yet</source>
         <translation>아직 폴링 안 함</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="33"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="33"/>
         <source>online</source>
         <translation>온라인</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="35"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="35"/>
         <source>no answer (%n poll(s) in a row)</source>
         <translation>
             <numerusform>응답 없음(연속 %n회 폴링)</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="37"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="37"/>
         <source>communication error (%n in a row)</source>
         <translation>
             <numerusform>통신 오류(연속 %n회)</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="43"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="43"/>
         <source>Status not known yet</source>
         <translation>상태 아직 알 수 없음</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="45"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="45"/>
         <source>No answer: %1</source>
         <translation>응답 없음: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="48"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="48"/>
         <source>Alarm %1 %2</source>
         <translation>알람 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="50"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="50"/>
         <source>Alarm %1h (not in the alarm table)</source>
         <translation>알람 %1h (알람 표에 없음)</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="52"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="52"/>
         <source>Alarm active</source>
         <translation>알람 발생 중</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="55"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="55"/>
         <source>Communication error: %1</source>
         <translation>통신 오류: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="58"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="58"/>
         <source>Running</source>
         <translation>운전 중</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="59"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="59"/>
         <source>Running CCW</source>
         <translation>CCW 운전 중</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="60"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="60"/>
         <source>Running CW</source>
         <translation>CW 운전 중</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="62"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="62"/>
         <source>Stopped, no alarm</source>
         <translation>정지, 알람 없음</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="69"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="69"/>
         <source>grey</source>
         <translation>회색</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="71"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="71"/>
         <source>green</source>
         <translation>초록</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="73"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="73"/>
         <source>orange</source>
         <translation>주황</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="75"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="75"/>
         <source>sky blue</source>
         <translation>하늘색</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="77"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="77"/>
         <source>red</source>
         <translation>빨강</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="79"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="79"/>
         <source>purple</source>
         <translation>보라</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="81"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="81"/>
         <source>blue</source>
         <translation>파랑</translation>
     </message>
@@ -3877,86 +3877,86 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveWorkspace</name>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="33"/>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="131"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="33"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="131"/>
         <source>Write &amp;all pending</source>
         <translation>쓰기 대기 모두 쓰기(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="34"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="34"/>
         <source>Revert all</source>
         <translation>모두 되돌리기</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="35"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="35"/>
         <source>Re-read all</source>
         <translation>모두 다시 읽기</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="51"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="51"/>
         <source>Write every pending edit of this drive, on all pages, and verify</source>
         <translation>이 드라이버의 모든 페이지에서 쓰기 대기 중인 편집을 모두 쓰고 검증합니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="84"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="84"/>
         <source>Select a drive in the bus list to set it up.</source>
         <translation>설정할 드라이버를 버스 목록에서 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="130"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="130"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>쓰기 대기 모두 쓰기(&amp;A) (%1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="152"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="152"/>
         <source>Reading the drive…</source>
         <translation>드라이버를 읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="154"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="154"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>값 %n개를 읽을 수 없습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="166"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="166"/>
         <source>Nothing was written: %1</source>
         <translation>아무것도 쓰지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="179"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="179"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1: %2 아무것도 쓰지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="187"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="187"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>쓰기 대기 값 %n개를 국번 %1에 쓰기</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="189"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="189"/>
         <source>Nothing was written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="192"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="192"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>값 %n개 쓰는 중…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="194"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="194"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>쓰기 %n건 실패. 표시된 항목을 확인하십시오</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="195"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="195"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>값 %n개 쓰기 및 검증 완료</numerusform>
@@ -3966,79 +3966,79 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolCertificateCommand</name>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="30"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="30"/>
         <source>A unit&apos;s certificate: its newest record as a PDF, or as JSON with --json</source>
         <translation>제품의 성적서: 최신 기록을 PDF로, --json을 주면 JSON으로</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="36"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="36"/>
         <source>The results database (see results).</source>
         <translation>결과 데이터베이스(results 참조).</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="36"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="36"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="37"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="37"/>
         <source>certificate: the record with this id instead of the newest.</source>
         <translation>certificate: 최신 기록 대신 이 id의 기록.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="38"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="38"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="58"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="58"/>
         <source>error: name one serial number, or a record with --id ID; usage: eol %1</source>
         <translation>오류: 시리얼 번호 하나 또는 --id ID로 기록을 지정하십시오. 사용법: eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="66"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="66"/>
         <source>error: the serial number is empty</source>
         <translation>오류: 시리얼 번호가 비어 있습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="72"/>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="129"/>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="137"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="72"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="129"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="137"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="79"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="79"/>
         <source>error: this program cannot draw a PDF (no Qt GUI application); use --json</source>
         <translation>오류: 이 프로그램은 PDF를 그릴 수 없습니다(Qt GUI 애플리케이션 아님). --json을 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="96"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="96"/>
         <source>error: no record %1 in %2 (%3)</source>
         <translation>오류: %2에 기록 %1이(가) 없습니다(%3)</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="101"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="101"/>
         <source>error: record %1 is of serial number %2, not %3</source>
         <translation>오류: 기록 %1은(는) 시리얼 번호 %3이(가) 아니라 %2의 기록입니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="109"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="109"/>
         <source>error: %1: %2</source>
         <translation>오류: %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="113"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="113"/>
         <source>error: no record of serial number %1 in %2</source>
         <translation>오류: %2에 시리얼 번호 %1의 기록이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="132"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="132"/>
         <source>wrote %1</source>
         <translation>%1 저장함</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="140"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="140"/>
         <source>wrote %1: serial number %2, %3, recorded %4</source>
         <translation>%1 저장함: 시리얼 번호 %2, %3, 기록 시각 %4</translation>
     </message>
@@ -4046,19 +4046,19 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolCommand</name>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="35"/>
+        <location filename="../cli/EolCommand.cpp" line="35"/>
         <source>End-of-line station: recipes, the results database, unit certificates</source>
         <translation>출하 검사 스테이션: 레시피, 결과 데이터베이스, 제품 성적서</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="40"/>
+        <location filename="../cli/EolCommand.cpp" line="40"/>
         <source>Subcommands:
 </source>
         <translation>하위 명령:
 </translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="43"/>
+        <location filename="../cli/EolCommand.cpp" line="43"/>
         <source>Results database: --db URL, else OPENTOP_EOL_DB, else the SQLite file
 $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 &quot;opentop-cli help eol&quot; lists every option; each subcommand takes only its own.</source>
@@ -4067,22 +4067,22 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 &quot;opentop-cli help eol&quot;로 모든 옵션을 볼 수 있습니다. 각 하위 명령은 자신의 옵션만 받습니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="91"/>
+        <location filename="../cli/EolCommand.cpp" line="91"/>
         <source>error: name a subcommand: eol %1</source>
         <translation>오류: 하위 명령을 지정하십시오: eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="93"/>
+        <location filename="../cli/EolCommand.cpp" line="93"/>
         <source>error: unknown subcommand &quot;eol %1&quot;; subcommands: %2</source>
         <translation>오류: 알 수 없는 하위 명령 &quot;eol %1&quot;; 하위 명령: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="96"/>
+        <location filename="../cli/EolCommand.cpp" line="96"/>
         <source>See &quot;opentop-cli help eol&quot;.</source>
         <translation>&quot;opentop-cli help eol&quot;을 참조하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="112"/>
+        <location filename="../cli/EolCommand.cpp" line="112"/>
         <source>error: eol %1: --%2 is not an option of this subcommand; usage: eol %3</source>
         <translation>오류: eol %1: --%2은(는) 이 하위 명령의 옵션이 아닙니다. 사용법: eol %3</translation>
     </message>
@@ -4090,112 +4090,112 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolDriveRun</name>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="51"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="51"/>
         <source>identifying</source>
         <translation>식별 중</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="64"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="64"/>
         <source>no drive answers at machine number %1</source>
         <translation>국번 %1에서 응답하는 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="65"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="65"/>
         <source>the drive at machine number %1 is not identified: %2</source>
         <translation>국번 %1의 드라이버가 식별되지 않았습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="75"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="75"/>
         <source>a %1 drive, the recipe needs a %2 drive</source>
         <translation>%1 드라이버입니다. 레시피에는 %2 드라이버가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="85"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="85"/>
         <source>the drive does not report its variant and the recipe allows %1</source>
         <translation>드라이버가 기종을 알려주지 않습니다. 레시피가 허용하는 기종: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="87"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="87"/>
         <source>variant %1, the recipe allows %2</source>
         <translation>기종 %1, 레시피가 허용하는 기종: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="93"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="93"/>
         <source>firmware %1, the recipe allows %2</source>
         <translation>펌웨어 %1, 레시피가 허용하는 펌웨어: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="94"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
         <source>unknown</source>
         <translation>알 수 없음</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="100"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="100"/>
         <source>no profile for the family %1</source>
         <translation>제품군 %1의 프로파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="132"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="132"/>
         <source>cannot read whether the motor runs: %1</source>
         <translation>모터 운전 여부를 읽을 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="140"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="140"/>
         <source>its motor was running before the test</source>
         <translation>검사 전에 모터가 운전 중이었습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="141"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="141"/>
         <source>the motor is already running before the test (left by an interrupted run?); nothing was written: stop it first (STOP ALL, or at the drive)</source>
         <translation>검사 전에 모터가 이미 운전 중입니다(중단된 검사가 남긴 상태?). 아무것도 쓰지 않았습니다: 먼저 정지하십시오(전체 정지 또는 드라이버에서)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="151"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="151"/>
         <source>writing the settings</source>
         <translation>설정 쓰는 중</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="186"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="186"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="193"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="193"/>
         <source>writing the settings: %1</source>
         <translation>설정 쓰는 중: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="201"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="201"/>
         <source>reading every setting back</source>
         <translation>모든 설정을 다시 읽는 중</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="216"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="216"/>
         <source>%1 cannot be read back: %2</source>
         <translation>%1을(를) 다시 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="222"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="222"/>
         <source>%1 does not keep its value: set to %2, reads %3</source>
         <translation>%1이(가) 값을 유지하지 않습니다: %2(으)로 설정했지만 %3(으)로 읽힘</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="226"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="226"/>
         <source>verifying the settings: %1</source>
         <translation>설정 검증 중: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="235"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="235"/>
         <source>testing</source>
         <translation>검사 중</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="239"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="239"/>
         <source>step %1 of %2: %3</source>
         <translation>단계 %1/%2: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="293"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="293"/>
         <source>passed</source>
         <translation>합격</translation>
     </message>
@@ -4203,12 +4203,12 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolMenu</name>
     <message>
-        <location filename="../main/ui/eol/EolMenu.cpp" line="34"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="34"/>
         <source>&amp;Recipe editor…</source>
         <translation>레시피 편집기(&amp;R)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/EolMenu.cpp" line="38"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="38"/>
         <source>Re&amp;sults…</source>
         <translation>결과(&amp;S)…</translation>
     </message>
@@ -4216,54 +4216,54 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRecipeCheckCommand</name>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="26"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="26"/>
         <source>Check a recipe against the drive profiles (and per-unit values of a CSV file)</source>
         <translation>레시피를 드라이버 프로파일(및 CSV 파일의 제품별 값)과 대조하여 검사합니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="32"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="32"/>
         <source>recipe check: also check every unit&apos;s per-unit values in this CSV file.</source>
         <translation>recipe check: 이 CSV 파일에 있는 모든 제품의 제품별 값도 검사합니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="33"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="33"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="39"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="39"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>오류: 레시피 파일 하나를 지정하십시오. 사용법: eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="59"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="59"/>
         <source>error: %1 refused: %2</source>
         <translation>오류: %1 거부됨: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="66"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="66"/>
         <source>%1, serial %2</source>
         <translation>%1, 시리얼 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="92"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="92"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="94"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="94"/>
         <source>%1 is not valid: %n problem(s); nothing may be run with it</source>
         <translation>
             <numerusform>%1이(가) 올바르지 않습니다: 문제 %n건. 이 레시피로는 아무것도 실행할 수 없습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="102"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="102"/>
         <source>valid: %1 revision %2: %3</source>
         <translation>유효: %1 개정 %2: %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="105"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="105"/>
         <source>; %n unit(s) of %1 checked</source>
         <translation>
             <numerusform>; %1의 제품 %n대 검사함</numerusform>
@@ -4273,143 +4273,143 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRecipeCreateCommand</name>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="31"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="31"/>
         <source>Make a recipe from a golden unit: a backup file or drives on the bus</source>
         <translation>기준 제품(골든 유닛)으로 레시피를 만듭니다: 백업 파일 또는 버스의 드라이버</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="37"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="37"/>
         <source>recipe create: the golden unit&apos;s backup file.</source>
         <translation>recipe create: 기준 제품의 백업 파일.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="38"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="38"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="40"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="40"/>
         <source>recipe create: the golden unit&apos;s drives on the bus, e.g. 1,2 (with the connection options).</source>
         <translation>recipe create: 버스에 있는 기준 제품의 드라이버, 예: 1,2 (연결 옵션과 함께).</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="42"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="42"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="43"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="43"/>
         <source>recipe create: the product&apos;s name.</source>
         <translation>recipe create: 제품 이름.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="43"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="43"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
         <source>recipe create: the recipe&apos;s revision.</source>
         <translation>recipe create: 레시피 개정.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
         <source>REV</source>
         <translation>REV</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="46"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
         <source>recipe create: replace an existing recipe file.</source>
         <translation>recipe create: 기존 레시피 파일을 교체합니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="58"/>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="151"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="58"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="151"/>
         <source>error: %1; nothing written</source>
         <translation>오류: %1; 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="72"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="72"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>국번 %1을(를) 읽는 중 중단됨: 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="79"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="79"/>
         <source>error: %1: cannot read %2</source>
         <translation>오류: %1: %2을(를) 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="82"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="82"/>
         <source>error: %1 holds a value its profile does not allow: %2</source>
         <translation>오류: %1에 프로파일이 허용하지 않는 값이 있습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="85"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="85"/>
         <source>nothing written</source>
         <translation>아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="90"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="90"/>
         <source>%1: %2 settings read</source>
         <translation>%1: 설정 %2개 읽음</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="101"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="101"/>
         <source>error: %1; usage: eol %2</source>
         <translation>오류: %1; 사용법: eol %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="105"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="105"/>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>예상치 못한 인수 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="109"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="109"/>
         <source>give either --from-backup FILE or --drives LIST</source>
         <translation>--from-backup FILE 또는 --drives LIST 중 하나를 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="113"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="113"/>
         <source>give the product&apos;s name with --product NAME</source>
         <translation>--product NAME으로 제품 이름을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
         <source>give the recipe&apos;s revision with --revision REV</source>
         <translation>--revision REV로 레시피 개정을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="118"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="118"/>
         <source>give the recipe file to write with -o RECIPE</source>
         <translation>-o RECIPE로 저장할 레시피 파일을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="121"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="121"/>
         <source>error: %1 exists; give --force to replace it</source>
         <translation>오류: %1이(가) 이미 있습니다. 교체하려면 --force를 주십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="125"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="125"/>
         <source>error: %1; nothing read</source>
         <translation>오류: %1; 아무것도 읽지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="142"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="142"/>
         <source>--drives %1: %2</source>
         <translation>--drives %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="158"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="175"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="175"/>
         <source>wrote %1: %2 revision %3, %4</source>
         <translation>%1 저장함: %2 개정 %3, %4</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="182"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="182"/>
         <source>error: the recipe does not pass &quot;eol recipe check&quot;: fix it, then sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>오류: 레시피가 &quot;eol recipe check&quot;를 통과하지 못합니다. 수정한 뒤 &quot;opentop-cli eol recipe sign %1&quot;로 서명하십시오</translation>
     </message>
@@ -4417,177 +4417,177 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRecipeShowCommand</name>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="58"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="58"/>
         <source>Show a recipe: positions, settings by label with units, steps and limits</source>
         <translation>레시피를 표시합니다: 위치, 표시 이름과 단위를 붙인 설정, 단계와 한계값</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="69"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="69"/>
         <source>&apos;%1&apos;</source>
         <translation>&apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="70"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="70"/>
         <source>&apos;%1&apos; %2</source>
         <translation>&apos;%1&apos; %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="71"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="71"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="83"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="83"/>
         <source>%1 SPno%2</source>
         <translation>%1 SPno%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="85"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="85"/>
         <source>%1 to %2</source>
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="88"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="88"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="93"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="93"/>
         <source>the drive&apos;s target speed</source>
         <translation>드라이버의 목표 속도</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="94"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="94"/>
         <source>%1 %2 %3 within %4 s</source>
         <translation>%1 %2 %3 (%4 s 이내)</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="98"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="98"/>
         <source>%1 for %2 s</source>
         <translation>%1 %2 s 동안</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="101"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="101"/>
         <source>%1: stopped within %2 s + %3 s</source>
         <translation>%1: %2 s + %3 s 이내에 정지</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="104"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="104"/>
         <source>%1: stopped within the deceleration time + %2 s</source>
         <translation>%1: 감속 시간 + %2 s 이내에 정지</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="109"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="109"/>
         <source>%1: &apos;%2&apos; is &quot;%3&quot;</source>
         <translation>%1: &apos;%2&apos;이(가) &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="126"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="126"/>
         <source>  no settings</source>
         <translation>  설정 없음</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
         <source>  setting</source>
         <translation>  설정</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
         <source>value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
         <source>unit</source>
         <translation>단위</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
         <source>  per-unit value</source>
         <translation>  제품별 값</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
         <source>range</source>
         <translation>범위</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
         <source>from</source>
         <translation>출처</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="141"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="141"/>
         <source>%1 … %2</source>
         <translation>%1 … %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="144"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="144"/>
         <source>CSV file by serial</source>
         <translation>시리얼 번호별 CSV 파일</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="145"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="145"/>
         <source>typed by the operator</source>
         <translation>작업자 입력</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="150"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="150"/>
         <source>  no test steps</source>
         <translation>  검사 단계 없음</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="153"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="153"/>
         <source>  steps:</source>
         <translation>  단계:</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="167"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="167"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>오류: 레시피 파일 하나를 지정하십시오. 사용법: eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="205"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="205"/>
         <source>%1, revision %2</source>
         <translation>%1, 개정 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="208"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="208"/>
         <source>checksum %1</source>
         <translation>체크섬 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
         <source>position</source>
         <translation>위치</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
         <source>machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
         <source>name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
         <source>family</source>
         <translation>제품군</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="210"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="210"/>
         <source>variants</source>
         <translation>기종</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="210"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="210"/>
         <source>firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="221"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="221"/>
         <source>any</source>
         <translation>모두</translation>
     </message>
@@ -4595,34 +4595,34 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRecipeSignCommand</name>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="26"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="26"/>
         <source>Accept a recipe edited by hand: a new checksum, only when it passes check</source>
         <translation>손으로 편집한 레시피를 승인합니다: 검사를 통과할 때만 새 체크섬을 붙입니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="32"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="32"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>오류: 레시피 파일 하나를 지정하십시오. 사용법: eol %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="53"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="53"/>
         <source>error: %1 does not pass check (%n problem(s)); not signed</source>
         <translation>
             <numerusform>오류: %1이(가) 검사를 통과하지 못했습니다(문제 %n건). 서명하지 않았습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="61"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="61"/>
         <source>error: %1; not signed</source>
         <translation>오류: %1; 서명하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="73"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="73"/>
         <source>%1 is signed already (%2); nothing changed</source>
         <translation>%1은(는) 이미 서명되어 있습니다(%2). 변경 사항 없음</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="76"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="76"/>
         <source>signed %1: %2 revision %3, %4</source>
         <translation>%1 서명함: %2 개정 %3, %4</translation>
     </message>
@@ -4630,262 +4630,262 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolResultsCommand</name>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="65"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="65"/>
         <source>List units of the results database, their first-pass yield, or export them as CSV</source>
         <translation>결과 데이터베이스의 제품 목록, 직행률을 표시하거나 CSV로 내보냅니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="72"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="72"/>
         <source>The results database: a SQLite file, sqlite:PATH or postgresql://user@host/db (default: OPENTOP_EOL_DB, else ~/.local/share/opentop/results.db).</source>
         <translation>결과 데이터베이스: SQLite 파일, sqlite:PATH 또는 postgresql://user@host/db (기본값: OPENTOP_EOL_DB, 없으면 ~/.local/share/opentop/results.db).</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="74"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="74"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="75"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="75"/>
         <source>results: only this serial number.</source>
         <translation>results: 이 시리얼 번호만.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="75"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="75"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="77"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="77"/>
         <source>results: started at or after T (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</source>
         <translation>results: T 또는 그 이후에 시작한 것 (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="78"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="79"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="78"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="79"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="79"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="79"/>
         <source>results: started before T.</source>
         <translation>results: T 이전에 시작한 것.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="80"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
         <source>results: only this recipe (product name).</source>
         <translation>results: 이 레시피(제품 이름)만.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="80"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="83"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="81"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
         <source>results: pass, fail, interrupted, aborted or running.</source>
         <translation>results: pass, fail, interrupted, aborted 또는 running.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="82"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
         <source>V</source>
         <translation>V</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="83"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
         <source>results: only this station.</source>
         <translation>results: 이 스테이션만.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="84"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
         <source>results: only the newest N units.</source>
         <translation>results: 최신 제품 N대만.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="84"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="86"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
         <source>results: CSV (RFC 4180) on standard output or to -o FILE.</source>
         <translation>results: CSV(RFC 4180)를 표준 출력 또는 -o FILE로.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="88"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="88"/>
         <source>results: first-pass yield and failure reasons per recipe and per shift.</source>
         <translation>results: 레시피별·근무조별 직행률과 불합격 원인.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="90"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="90"/>
         <source>results --yield: the shifts&apos; start times in local time (default 06:00,14:00,22:00).</source>
         <translation>results --yield: 근무조 시작 시각(현지 시간, 기본값 06:00,14:00,22:00).</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="91"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="123"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="123"/>
         <source>&quot;%1&quot; is not a time; give 2026-11-24, 2026-11-24T06:00 (local, or with Z or +01:00), 8h, 2d, today or yesterday</source>
         <translation>&quot;%1&quot;은(는) 시각이 아닙니다. 2026-11-24, 2026-11-24T06:00 (현지 시간, 또는 Z나 +01:00 포함), 8h, 2d, today 또는 yesterday를 주십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="133"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="251"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="133"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="251"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="148"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="148"/>
         <source>--%1: %2</source>
         <translation>--%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="153"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="153"/>
         <source>--since %1 is not before --until %2</source>
         <translation>--since %1이(가) --until %2보다 이전이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="159"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="159"/>
         <source>--verdict &quot;%1&quot;: give pass, fail, interrupted, aborted or running</source>
         <translation>--verdict &quot;%1&quot;: pass, fail, interrupted, aborted 또는 running을 주십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="166"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="166"/>
         <source>--limit &quot;%1&quot;: give a number of units from 1</source>
         <translation>--limit &quot;%1&quot;: 1 이상의 제품 수를 주십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="176"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="202"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="176"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="202"/>
         <source>no unit matches</source>
         <translation>일치하는 제품 없음</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
         <source>started</source>
         <translation>시작</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
         <source>serial</source>
         <translation>시리얼</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="206"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="206"/>
         <source>recipe</source>
         <translation>레시피</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
         <source>station</source>
         <translation>스테이션</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
         <source>operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="180"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="180"/>
         <source>verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="180"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="180"/>
         <source>time</source>
         <translation>시간</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="180"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="180"/>
         <source>reason</source>
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="188"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="188"/>
         <source>%1 rev. %2</source>
         <translation>%1 개정 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="208"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="208"/>
         <source>shift</source>
         <translation>근무조</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>serials</source>
         <translation>시리얼 수</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>first pass</source>
         <translation>1회 합격</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>first-pass yield</source>
         <translation>직행률</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>records</source>
         <translation>기록 수</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="210"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="210"/>
         <source>not finished</source>
         <translation>미완료</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="225"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="225"/>
         <source>First-pass yield per recipe</source>
         <translation>레시피별 직행률</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="227"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="227"/>
         <source>Per shift</source>
         <translation>근무조별</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>Failure reasons</source>
         <translation>불합격 원인</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="254"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="254"/>
         <source>wrote %1</source>
         <translation>%1 저장함</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="263"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="263"/>
         <source>error: unexpected argument &quot;%1&quot;; usage: eol %2</source>
         <translation>오류: 예상치 못한 인수 &quot;%1&quot;; 사용법: eol %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="269"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="269"/>
         <source>error: give --csv or --json, not both</source>
         <translation>오류: --csv와 --json 중 하나만 주십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="273"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="273"/>
         <source>error: -o names the CSV file: give --csv too</source>
         <translation>오류: -o는 CSV 파일을 지정합니다: --csv도 주십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="278"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="278"/>
         <source>error: --shifts is for --yield</source>
         <translation>오류: --shifts는 --yield와 함께 씁니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="288"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="288"/>
         <source>error: --shifts %1: %2</source>
         <translation>오류: --shifts %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="308"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="308"/>
         <source>error: %1: %2</source>
         <translation>오류: %1: %2</translation>
     </message>
@@ -4893,48 +4893,48 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRun</name>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="54"/>
+        <location filename="../model/eol/EolRun.cpp" line="54"/>
         <source>the results database cannot record the unit: %1</source>
         <translation>결과 데이터베이스에 제품을 기록할 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="71"/>
+        <location filename="../model/eol/EolRun.cpp" line="71"/>
         <source>the recipe has no drives</source>
         <translation>레시피에 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="84"/>
+        <location filename="../model/eol/EolRun.cpp" line="84"/>
         <source>the recipe is not valid: %1</source>
         <translation>레시피가 올바르지 않습니다: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="89"/>
+        <location filename="../model/eol/EolRun.cpp" line="89"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1: 이 제품의 %2 값이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="107"/>
+        <location filename="../model/eol/EolRun.cpp" line="107"/>
         <source>cancelled by the operator</source>
         <translation>작업자가 취소함</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="116"/>
+        <location filename="../model/eol/EolRun.cpp" line="116"/>
         <source>the connection was lost: %1</source>
         <translation>연결이 끊겼습니다: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="122"/>
-        <location filename="../main/model/eol/EolRun.cpp" line="129"/>
+        <location filename="../model/eol/EolRun.cpp" line="122"/>
+        <location filename="../model/eol/EolRun.cpp" line="129"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="126"/>
+        <location filename="../model/eol/EolRun.cpp" line="126"/>
         <source>%1 failed</source>
         <translation>%1 실패</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="164"/>
+        <location filename="../model/eol/EolRun.cpp" line="164"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>정지 확인 안 됨: %1</translation>
     </message>
@@ -4942,129 +4942,129 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="86"/>
+        <location filename="../cli/EolRunCommand.cpp" line="86"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>라인 끝에서 제품 하나를 설정·검사하고 결과를 기록합니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>제품의 시리얼 번호(바코드에 읽히는 그대로).</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="93"/>
         <source>Who tests it (default: the login name).</source>
         <translation>검사하는 사람(기본값: 로그인 이름).</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="93"/>
-        <location filename="../main/cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>이 스테이션의 이름(기본값: 호스트 이름).</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>결과 데이터베이스: SQLite 파일 또는 postgresql://user@host/db.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>시리얼 번호별 제품별 값이 들어 있는 CSV 파일.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>작업자가 입력하는 제품별 값, 예: 1:spno3.speed=1500.</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="131"/>
+        <location filename="../cli/EolRunCommand.cpp" line="131"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1: MACHINE:NAME=VALUE 형식으로 쓰십시오. 예: 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="136"/>
+        <location filename="../cli/EolRunCommand.cpp" line="136"/>
         <source>--value %1: %2</source>
         <translation>--value %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="149"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>사용법: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="164"/>
+        <location filename="../cli/EolRunCommand.cpp" line="164"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1: 레시피가 올바르지 않습니다. 아무것도 보내지 않았습니다:</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="185"/>
+        <location filename="../cli/EolRunCommand.cpp" line="185"/>
         <source>results database: %1; nothing was sent</source>
         <translation>결과 데이터베이스: %1; 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="194"/>
+        <location filename="../cli/EolRunCommand.cpp" line="194"/>
         <source>note: %1 unit(s) this station left unfinished are now recorded as interrupted</source>
         <translation>참고: 이 스테이션에서 끝나지 않은 제품 %1대를 중단됨으로 기록했습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="230"/>
-        <location filename="../main/cli/EolRunCommand.cpp" line="251"/>
+        <location filename="../cli/EolRunCommand.cpp" line="230"/>
+        <location filename="../cli/EolRunCommand.cpp" line="251"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="256"/>
         <source>ok</source>
         <translation>정상</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="256"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="274"/>
+        <location filename="../cli/EolRunCommand.cpp" line="274"/>
         <source>interrupted at the station</source>
         <translation>스테이션에서 중단됨</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="303"/>
+        <location filename="../cli/EolRunCommand.cpp" line="303"/>
         <source>rev. %1</source>
         <translation>개정 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="309"/>
+        <location filename="../cli/EolRunCommand.cpp" line="309"/>
         <source>the result was NOT recorded: %1</source>
         <translation>결과가 기록되지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="311"/>
+        <location filename="../cli/EolRunCommand.cpp" line="311"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>경고: 모터 정지가 확인되지 않았습니다: %1</translation>
     </message>
@@ -5072,23 +5072,23 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolSpeedChart</name>
     <message>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="20"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="20"/>
         <source>time (s)</source>
         <translation>시간 (s)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="44"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="44"/>
         <source>speed</source>
         <translation>속도</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="44"/>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="57"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="44"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="57"/>
         <source>speed (%1)</source>
         <translation>속도 (%1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="52"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="52"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
@@ -5096,37 +5096,37 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="100"/>
+        <location filename="../model/eol/EolStation.cpp" line="100"/>
         <source>no results database</source>
         <translation>결과 데이터베이스 없음</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="107"/>
+        <location filename="../model/eol/EolStation.cpp" line="107"/>
         <source>a unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="111"/>
+        <location filename="../model/eol/EolStation.cpp" line="111"/>
         <source>open a recipe first</source>
         <translation>먼저 레시피를 여십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="115"/>
+        <location filename="../model/eol/EolStation.cpp" line="115"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다. 기록할 수 없으면 검사하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="119"/>
+        <location filename="../model/eol/EolStation.cpp" line="119"/>
         <source>not connected to a bus</source>
         <translation>버스에 연결되어 있지 않음</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="123"/>
+        <location filename="../model/eol/EolStation.cpp" line="123"/>
         <source>no serial number</source>
         <translation>시리얼 번호 없음</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="141"/>
+        <location filename="../model/eol/EolStation.cpp" line="141"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>이 레시피는 제품별 값을 CSV 파일에서 가져옵니다: 먼저 그 파일을 여십시오</translation>
     </message>
@@ -5134,170 +5134,170 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolStepRunner</name>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="40"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="40"/>
         <source>allowed %1–%2 %3</source>
         <translation>허용 %1–%2 %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="42"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="42"/>
         <source>allowed at most %1 %2</source>
         <translation>허용 최대 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="44"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="44"/>
         <source>allowed at least %1 %2</source>
         <translation>허용 최소 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="92"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="92"/>
         <source>step %1 (%2)</source>
         <translation>단계 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="125"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="125"/>
         <source>the drive&apos;s session ended</source>
         <translation>드라이버 세션이 끝났습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="198"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="218"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="230"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="422"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="443"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="469"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="511"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="198"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="218"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="230"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="422"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="443"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="469"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="511"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="210"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="210"/>
         <source>%1: the drive has no communication priority</source>
         <translation>%1: 드라이버가 통신 우선이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="260"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="260"/>
         <source>%1: the drive stopped answering: %2</source>
         <translation>%1: 드라이버가 응답하지 않습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="268"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="268"/>
         <source>%1: the drive raised an alarm while running</source>
         <translation>%1: 운전 중 드라이버에서 알람이 발생했습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="291"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="291"/>
         <source>%1: %2 %3</source>
         <translation>%1: %2 %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="310"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="310"/>
         <source>%1: the drive has no speed to wait for</source>
         <translation>%1: 드라이버에 기다릴 속도가 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="320"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="320"/>
         <source>time to reach speed</source>
         <translation>속도 도달 시간</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="342"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="347"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="466"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="342"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="347"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="466"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="348"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="348"/>
         <source>unknown</source>
         <translation>알 수 없음</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="349"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="349"/>
         <source>%1: did not reach %2 %3 ±%4 %3 within %5 s (last read %6 %3)</source>
         <translation>%1: %5 s 이내에 %2 %3 ±%4 %3에 도달하지 못했습니다(마지막 읽은 값 %6 %3)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="350"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="350"/>
         <source>its target</source>
         <translation>목표 속도</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="407"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="407"/>
         <source>%1 could not be read</source>
         <translation>%1을(를) 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="417"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="417"/>
         <source>%1 %2 %3, %4</source>
         <translation>%1 %2 %3, %4</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="435"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="435"/>
         <source>%1: the drive reports no alarms</source>
         <translation>%1: 드라이버가 알람을 알려주지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="448"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="448"/>
         <source>alarms raised</source>
         <translation>알람 발생</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="451"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="451"/>
         <source>%1: the drive has an alarm</source>
         <translation>%1: 드라이버에 알람이 있습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="466"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="466"/>
         <source>time to stop</source>
         <translation>정지 시간</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="473"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="473"/>
         <source>%1: stopped after %2 s, allowed at most %3 s</source>
         <translation>%1: %2 s 후 정지, 허용 최대 %3 s</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="502"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="502"/>
         <source>%1: nothing to read</source>
         <translation>%1: 읽을 항목이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="519"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="519"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="522"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="522"/>
         <source>%1: %2 reads &quot;%3&quot;, expected &quot;%4&quot;</source>
         <translation>%1: %2 읽은 값 &quot;%3&quot;, 기대값 &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="532"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="532"/>
         <source>%1: %2 reads %3 %4, %5</source>
         <translation>%1: %2 읽은 값 %3 %4, %5</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="554"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="554"/>
         <source>the stop command failed: %1</source>
         <translation>정지 명령 실패: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="569"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="569"/>
         <source>stopped after %1 s</source>
         <translation>%1 s 후 정지</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="570"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="570"/>
         <source>not confirmed stopped: %1</source>
         <translation>정지 확인 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="592"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="592"/>
         <source>communication priority could not be given back: %1</source>
         <translation>통신 우선을 되돌릴 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="632"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="632"/>
         <source>the steps ended with the motor running</source>
         <translation>모터가 운전 중인 상태로 단계가 끝났습니다</translation>
     </message>
@@ -5305,97 +5305,97 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolSupport</name>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="26"/>
+        <location filename="../cli/EolSupport.cpp" line="26"/>
         <source>no such file</source>
         <translation>파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="28"/>
+        <location filename="../cli/EolSupport.cpp" line="28"/>
         <source>is a directory; name a recipe file</source>
         <translation>디렉터리입니다. 레시피 파일을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="30"/>
+        <location filename="../cli/EolSupport.cpp" line="30"/>
         <source>is not a regular file (a device, FIFO or socket); name a recipe file</source>
         <translation>일반 파일이 아닙니다(장치, FIFO 또는 소켓). 레시피 파일을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="32"/>
+        <location filename="../cli/EolSupport.cpp" line="32"/>
         <source>is larger than %1 MB, the most a recipe file may hold</source>
         <translation>레시피 파일의 최대 크기 %1 MB보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="36"/>
+        <location filename="../cli/EolSupport.cpp" line="36"/>
         <source>cannot be read: %1</source>
         <translation>읽을 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="38"/>
-        <location filename="../main/cli/EolSupport.cpp" line="158"/>
+        <location filename="../cli/EolSupport.cpp" line="38"/>
+        <location filename="../cli/EolSupport.cpp" line="158"/>
         <source>error: %1: %2</source>
         <translation>오류: %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="65"/>
-        <location filename="../main/cli/EolSupport.cpp" line="173"/>
+        <location filename="../cli/EolSupport.cpp" line="65"/>
+        <location filename="../cli/EolSupport.cpp" line="173"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="72"/>
+        <location filename="../cli/EolSupport.cpp" line="72"/>
         <source>error: %1 refused: %2</source>
         <translation>오류: %1 거부됨: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="79"/>
+        <location filename="../cli/EolSupport.cpp" line="79"/>
         <source>%1 was changed after OpenTOP wrote it (its checksum does not match), so no station runs it. Check it with &quot;opentop-cli eol recipe check %1&quot; and, when it is right, sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>%1이(가) OpenTOP에서 저장한 후 변경되었으므로(체크섬 불일치) 어느 스테이션에서도 실행하지 않습니다. &quot;opentop-cli eol recipe check %1&quot;로 검사하고, 올바르면 &quot;opentop-cli eol recipe sign %1&quot;로 서명하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="97"/>
+        <location filename="../cli/EolSupport.cpp" line="97"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolSupport.cpp" line="122"/>
+        <location filename="../cli/EolSupport.cpp" line="122"/>
         <source>%n position(s)</source>
         <translation>
             <numerusform>위치 %n개</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolSupport.cpp" line="123"/>
+        <location filename="../cli/EolSupport.cpp" line="123"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>설정 %n개</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolSupport.cpp" line="125"/>
+        <location filename="../cli/EolSupport.cpp" line="125"/>
         <source>%n per-unit value(s)</source>
         <translation>
             <numerusform>제품별 값 %n개</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolSupport.cpp" line="126"/>
+        <location filename="../cli/EolSupport.cpp" line="126"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>단계 %n개</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="133"/>
+        <location filename="../cli/EolSupport.cpp" line="133"/>
         <source>The file to write (recipe create; results --csv; certificate).</source>
         <translation>저장할 파일(recipe create; results --csv; certificate).</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="134"/>
+        <location filename="../cli/EolSupport.cpp" line="134"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="164"/>
+        <location filename="../cli/EolSupport.cpp" line="164"/>
         <source>error: no results database at %1 (nothing recorded there yet); name one with --db URL</source>
         <translation>오류: %1에 결과 데이터베이스가 없습니다(아직 기록된 것 없음). --db URL로 지정하십시오</translation>
     </message>
@@ -5403,23 +5403,23 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolTarget</name>
     <message>
-        <location filename="../main/model/eol/EolTarget.cpp" line="26"/>
+        <location filename="../model/eol/EolTarget.cpp" line="26"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolTarget.cpp" line="38"/>
-        <location filename="../main/model/eol/EolTarget.cpp" line="49"/>
+        <location filename="../model/eol/EolTarget.cpp" line="38"/>
+        <location filename="../model/eol/EolTarget.cpp" line="49"/>
         <source>not a parameter of %1</source>
         <translation>%1의 파라미터가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolTarget.cpp" line="51"/>
+        <location filename="../model/eol/EolTarget.cpp" line="51"/>
         <source>this unit&apos;s value is missing</source>
         <translation>이 제품의 값이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolTarget.cpp" line="54"/>
+        <location filename="../model/eol/EolTarget.cpp" line="54"/>
         <source>%1 is outside this product&apos;s range %2–%3 %4</source>
         <translation>%1이(가) 이 제품의 범위 %2–%3 %4을(를) 벗어납니다</translation>
     </message>
@@ -5427,27 +5427,27 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::ExitActions</name>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="34"/>
+        <location filename="../model/run/ExitActions.cpp" line="34"/>
         <source>The stop broadcast to the %1 drives failed: %2</source>
         <translation>드라이버 %1대에 보낸 정지 브로드캐스트가 실패했습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="38"/>
+        <location filename="../model/run/ExitActions.cpp" line="38"/>
         <source>Machine number %1: STILL RUNNING (%2) %3</source>
         <translation>국번 %1: 아직 운전 중 (%2) %3</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="43"/>
+        <location filename="../model/run/ExitActions.cpp" line="43"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped %2</source>
         <translation>국번 %1: 응답 없음, 정지 확인 안 됨 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="68"/>
+        <location filename="../model/run/ExitActions.cpp" line="68"/>
         <source>Machine number %1: no way to give control back to its inputs is known</source>
         <translation>국번 %1: 입력 단자로 제어를 되돌리는 방법을 알 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="80"/>
+        <location filename="../model/run/ExitActions.cpp" line="80"/>
         <source>Machine number %1: %2</source>
         <translation>국번 %1: %2</translation>
     </message>
@@ -5455,12 +5455,12 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::ExitCheck</name>
     <message>
-        <location filename="../main/model/run/ExitCheck.cpp" line="19"/>
+        <location filename="../model/run/ExitCheck.cpp" line="19"/>
         <source>in communication priority (its own inputs cannot start or stop it)</source>
         <translation>통신 우선 상태(자체 입력 단자로 기동·정지할 수 없음)</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitCheck.cpp" line="20"/>
+        <location filename="../model/run/ExitCheck.cpp" line="20"/>
         <source>Machine number %1 (%2): %3</source>
         <translation>국번 %1 (%2): %3</translation>
     </message>
@@ -5468,102 +5468,102 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::ExitGuard</name>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="44"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="44"/>
         <source>Drives left in communication priority</source>
         <translation>통신 우선으로 남아 있는 드라이버</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="44"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="44"/>
         <source>Drives are running</source>
         <translation>운전 중인 드라이버가 있습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="46"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="46"/>
         <source>Before you %1: these drives are left in communication priority.</source>
         <translation>%1하기 전에: 다음 드라이버가 통신 우선으로 남아 있습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="47"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="47"/>
         <source>Before you %1: these drives are running or left in communication priority.</source>
         <translation>%1하기 전에: 다음 드라이버가 운전 중이거나 통신 우선으로 남아 있습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="51"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="51"/>
         <source>In communication priority a drive takes run and stop only from the bus: once OpenTOP lets go, only another bus master or switching its power off stops it.</source>
         <translation>통신 우선에서는 드라이버가 버스로만 운전·정지 명령을 받습니다: OpenTOP이 연결을 놓으면 다른 버스 마스터나 전원 차단으로만 정지할 수 있습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="55"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="55"/>
         <source>&quot;Stop&quot; broadcasts every family&apos;s stop command to the whole bus and checks that each drive above has stopped.</source>
         <translation>&quot;정지&quot;는 모든 제품군의 정지 명령을 버스 전체에 브로드캐스트하고 위의 각 드라이버가 정지했는지 확인합니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="59"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="59"/>
         <source>&quot;Give control back&quot; sets I/O priority, so the machine&apos;s own inputs run the drives again.</source>
         <translation>&quot;제어 반환&quot;은 I/O 우선으로 설정하여 설비 자체의 입력 단자로 드라이버를 다시 운전하게 합니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="63"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="63"/>
         <source>Stop the drives</source>
         <translation>드라이버 정지</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="67"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="67"/>
         <source>Give control back (I/O priority)</source>
         <translation>제어 반환 (I/O 우선)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="69"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="69"/>
         <source>Leave them so</source>
         <translation>그대로 두기</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="69"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="69"/>
         <source>Leave them running</source>
         <translation>운전 상태로 두기</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="71"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="71"/>
         <source>Cancel</source>
         <translation>취소</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="88"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="88"/>
         <source>Stopping the drives…</source>
         <translation>드라이버를 정지하는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="88"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="88"/>
         <source>Giving control back to the drives&apos; inputs…</source>
         <translation>드라이버 입력 단자로 제어를 되돌리는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="97"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="97"/>
         <source>stop</source>
         <translation>정지</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="97"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="97"/>
         <source>give control back</source>
         <translation>제어 반환</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="113"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="113"/>
         <source>Not every drive is safe</source>
         <translation>안전하지 않은 드라이버가 있습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="114"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="114"/>
         <source>Could not %1 every drive:</source>
         <translation>모든 드라이버의 %1에 성공하지 못했습니다:</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="116"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="116"/>
         <source>Stay connected</source>
         <translation>연결 유지</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="117"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="117"/>
         <source>Go on anyway</source>
         <translation>그래도 계속</translation>
     </message>
@@ -5571,27 +5571,27 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::FaultInjector</name>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="30"/>
+        <location filename="../sim/FaultInjector.cpp" line="30"/>
         <source>fault &apos;%1&apos; must be NAME=VALUE; names: %2</source>
         <translation>결함 &apos;%1&apos;은(는) NAME=VALUE 형식이어야 합니다. 이름: %2</translation>
     </message>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="38"/>
+        <location filename="../sim/FaultInjector.cpp" line="38"/>
         <source>late_ms must be a whole number of milliseconds 1..60000, got &apos;%1&apos;</source>
         <translation>late_ms는 1..60000 밀리초의 정수여야 합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="52"/>
+        <location filename="../sim/FaultInjector.cpp" line="52"/>
         <source>unknown fault &apos;%1&apos;; allowed: %2</source>
         <translation>알 수 없는 결함 &apos;%1&apos;; 허용: %2</translation>
     </message>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="57"/>
+        <location filename="../sim/FaultInjector.cpp" line="57"/>
         <source>fault rate %1 must be a number 0..1, got &apos;%2&apos;</source>
         <translation>결함 비율 %1은(는) 0..1의 숫자여야 합니다. 입력값: &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="64"/>
+        <location filename="../sim/FaultInjector.cpp" line="64"/>
         <source>the fault rates add up to more than 1</source>
         <translation>결함 비율의 합이 1을 넘습니다</translation>
     </message>
@@ -5599,83 +5599,83 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::FileActions</name>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="22"/>
+        <location filename="../ui/files/FileActions.cpp" line="22"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 백업 (*.json);;모든 파일 (*)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="38"/>
-        <location filename="../main/ui/files/FileActions.cpp" line="94"/>
+        <location filename="../ui/files/FileActions.cpp" line="38"/>
+        <location filename="../ui/files/FileActions.cpp" line="94"/>
         <source>&amp;Back up selected drive…</source>
         <translation>선택한 드라이버 백업(&amp;B)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="44"/>
+        <location filename="../ui/files/FileActions.cpp" line="44"/>
         <source>Back up &amp;whole bus…</source>
         <translation>버스 전체 백업(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="50"/>
+        <location filename="../ui/files/FileActions.cpp" line="50"/>
         <source>Save the settings of every identified drive to one file</source>
         <translation>식별된 모든 드라이버의 설정을 파일 하나에 저장합니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="52"/>
+        <location filename="../ui/files/FileActions.cpp" line="52"/>
         <source>&amp;Open backup file…</source>
         <translation>백업 파일 열기(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="54"/>
+        <location filename="../ui/files/FileActions.cpp" line="54"/>
         <source>Show the drives and settings a backup file holds</source>
         <translation>백업 파일에 들어 있는 드라이버와 설정을 표시합니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="55"/>
+        <location filename="../ui/files/FileActions.cpp" line="55"/>
         <source>Co&amp;mpare…</source>
         <translation>비교(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="58"/>
+        <location filename="../ui/files/FileActions.cpp" line="58"/>
         <source>Compare drives and backup files side by side, or against factory defaults</source>
         <translation>드라이버와 백업 파일을 나란히 비교하거나 공장 출하값과 비교합니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="59"/>
+        <location filename="../ui/files/FileActions.cpp" line="59"/>
         <source>&amp;Restore from file…</source>
         <translation>파일에서 복원(&amp;R)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="60"/>
+        <location filename="../ui/files/FileActions.cpp" line="60"/>
         <source>Preview, then write a backup&apos;s settings back to drives</source>
         <translation>백업의 설정을 미리 본 뒤 드라이버에 다시 씁니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="93"/>
+        <location filename="../ui/files/FileActions.cpp" line="93"/>
         <source>&amp;Back up selected drives…</source>
         <translation>선택한 드라이버 백업(&amp;B)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="96"/>
+        <location filename="../ui/files/FileActions.cpp" line="96"/>
         <source>Select an identified drive in the bus list first</source>
         <translation>먼저 버스 목록에서 식별된 드라이버를 선택하십시오</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="97"/>
+        <location filename="../ui/files/FileActions.cpp" line="97"/>
         <source>Save the settings of the selected drive(s) to a file</source>
         <translation>선택한 드라이버의 설정을 파일로 저장합니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="108"/>
+        <location filename="../ui/files/FileActions.cpp" line="108"/>
         <source>Back up to file</source>
         <translation>파일로 백업</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="120"/>
+        <location filename="../ui/files/FileActions.cpp" line="120"/>
         <source>Open backup file</source>
         <translation>백업 파일 열기</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="141"/>
+        <location filename="../ui/files/FileActions.cpp" line="141"/>
         <source>Restore from backup file</source>
         <translation>백업 파일에서 복원</translation>
     </message>
@@ -5683,27 +5683,27 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::FileCommandSupport</name>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="28"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="28"/>
         <source>no such file</source>
         <translation>파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="30"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="30"/>
         <source>is a directory; name a backup file</source>
         <translation>디렉터리입니다. 백업 파일을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="32"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="32"/>
         <source>is not a regular file (a device, FIFO or socket); name a backup file</source>
         <translation>일반 파일이 아닙니다(장치, FIFO 또는 소켓). 백업 파일을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="34"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="34"/>
         <source>error: %1: %2</source>
         <translation>오류: %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="41"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="41"/>
         <source>error: %1 refused: %2</source>
         <translation>오류: %1 거부됨: %2</translation>
     </message>
@@ -5711,135 +5711,135 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::GetCommand</name>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="43"/>
+        <location filename="../cli/GetCommand.cpp" line="43"/>
         <source>Read parameters by name in engineering units (or registers with --raw)</source>
         <translation>파라미터를 이름으로 읽어 공학 단위로 표시합니다(--raw를 주면 레지스터)</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="49"/>
+        <location filename="../cli/GetCommand.cpp" line="49"/>
         <source>Read every parameter of a group (see params).</source>
         <translation>그룹의 모든 파라미터를 읽습니다(params 참조).</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="49"/>
+        <location filename="../cli/GetCommand.cpp" line="49"/>
         <source>GROUP</source>
         <translation>GROUP</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="50"/>
+        <location filename="../cli/GetCommand.cpp" line="50"/>
         <source>Read every readable parameter.</source>
         <translation>읽을 수 있는 모든 파라미터를 읽습니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="52"/>
+        <location filename="../cli/GetCommand.cpp" line="52"/>
         <source>Read registers by address: ADDR or ADDR:COUNT (0x.. or decimal).</source>
         <translation>주소로 레지스터를 읽습니다: ADDR 또는 ADDR:COUNT (0x.. 또는 10진수).</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="52"/>
+        <location filename="../cli/GetCommand.cpp" line="52"/>
         <source>ADDR</source>
         <translation>ADDR</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="54"/>
+        <location filename="../cli/GetCommand.cpp" line="54"/>
         <source>Function code for --raw: 3 (holding) or 4 (input) to read, 6 or 16 to write.</source>
         <translation>--raw의 기능 코드: 읽기는 3(holding) 또는 4(input), 쓰기는 6 또는 16.</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="55"/>
+        <location filename="../cli/GetCommand.cpp" line="55"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="63"/>
+        <location filename="../cli/GetCommand.cpp" line="63"/>
         <source>error: give one machine number first: get ID NAME...</source>
         <translation>오류: 먼저 국번 하나를 지정하십시오: get ID NAME...</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="71"/>
+        <location filename="../cli/GetCommand.cpp" line="71"/>
         <source>error: name parameters, or give exactly one of --group, --all, --raw</source>
         <translation>오류: 파라미터 이름을 지정하거나 --group, --all, --raw 중 정확히 하나를 주십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="79"/>
-        <location filename="../main/cli/GetCommand.cpp" line="209"/>
+        <location filename="../cli/GetCommand.cpp" line="79"/>
+        <location filename="../cli/GetCommand.cpp" line="209"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="90"/>
+        <location filename="../cli/GetCommand.cpp" line="90"/>
         <source>error: %1 has no group &quot;%2&quot;; groups: %3</source>
         <translation>오류: %1에 그룹 &quot;%2&quot;이(가) 없습니다. 그룹: %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="108"/>
+        <location filename="../cli/GetCommand.cpp" line="108"/>
         <source>error: %1 is a write-only command and cannot be read</source>
         <translation>오류: %1은(는) 쓰기 전용 명령이라 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="109"/>
+        <location filename="../cli/GetCommand.cpp" line="109"/>
         <source>error: %1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>오류: %1에 파라미터 &quot;%2&quot;이(가) 없습니다. &quot;opentop-cli params --family %1&quot;을 참조하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="123"/>
+        <location filename="../cli/GetCommand.cpp" line="123"/>
         <source>interrupted</source>
         <translation>중단됨</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="153"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="153"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="153"/>
         <source>Raw</source>
         <translation>원시값</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="153"/>
         <source>Label</source>
         <translation>표시 이름</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="158"/>
+        <location filename="../cli/GetCommand.cpp" line="158"/>
         <source>(failed: %1)</source>
         <translation>(실패: %1)</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="160"/>
+        <location filename="../cli/GetCommand.cpp" line="160"/>
         <source>  ! outside the profile&apos;s allowed values</source>
         <translation>  ! 프로파일의 허용 값 밖</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/GetCommand.cpp" line="167"/>
+        <location filename="../cli/GetCommand.cpp" line="167"/>
         <source>error: %n parameter(s) could not be read</source>
         <translation>
             <numerusform>오류: 파라미터 %n개를 읽을 수 없습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="190"/>
+        <location filename="../cli/GetCommand.cpp" line="190"/>
         <source>error: --raw needs ADDR or ADDR:COUNT (address 0x0000–0xFFFF, count 1–125) and --fc 3 or 4</source>
         <translation>오류: --raw에는 ADDR 또는 ADDR:COUNT(주소 0x0000–0xFFFF, 개수 1–125)와 --fc 3 또는 4가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="221"/>
         <source>Address</source>
         <translation>주소</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="221"/>
         <source>Hex</source>
         <translation>16진수</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="221"/>
         <source>Decimal</source>
         <translation>10진수</translation>
     </message>
@@ -5847,63 +5847,63 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::GroupCheck</name>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="56"/>
-        <location filename="../main/cli/GroupCheck.cpp" line="95"/>
+        <location filename="../cli/GroupCheck.cpp" line="56"/>
+        <location filename="../cli/GroupCheck.cpp" line="95"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="66"/>
+        <location filename="../cli/GroupCheck.cpp" line="66"/>
         <source>note: the other drives on the bus are not known, so drives in communication group %1 (which also execute what is sent to %1) were not looked for; name them with --bus-drives LIST or OPENTOP_BUS_DRIVES</source>
         <translation>참고: 버스의 다른 드라이버를 알 수 없어 통신 그룹 %1의 드라이버(%1(으)로 보낸 내용도 실행함)를 찾지 않았습니다. --bus-drives LIST 또는 OPENTOP_BUS_DRIVES로 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="87"/>
+        <location filename="../cli/GroupCheck.cpp" line="87"/>
         <source>warning: the communication group of %1 could not be read</source>
         <translation>경고: %1의 통신 그룹을 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="95"/>
+        <location filename="../cli/GroupCheck.cpp" line="95"/>
         <source>note: %1</source>
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="98"/>
+        <location filename="../cli/GroupCheck.cpp" line="98"/>
         <source>add --yes to send it to all of %1 and %2; nothing was sent</source>
         <translation>%1과(와) %2 모두에 보내려면 --yes를 추가하십시오. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="128"/>
+        <location filename="../cli/GroupCheck.cpp" line="128"/>
         <source>not readable</source>
         <translation>읽을 수 없음</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="139"/>
+        <location filename="../cli/GroupCheck.cpp" line="139"/>
         <source>Read back from the drives of the group:</source>
         <translation>그룹 드라이버에서 다시 읽은 값:</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="140"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="140"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="140"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="143"/>
+        <location filename="../cli/GroupCheck.cpp" line="143"/>
         <source>(not read: %1)</source>
         <translation>(읽지 않음: %1)</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="188"/>
+        <location filename="../cli/GroupCheck.cpp" line="188"/>
         <source>off</source>
         <translation>사용 안 함</translation>
     </message>
@@ -5911,22 +5911,22 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::GroupWriteCheck</name>
     <message>
-        <location filename="../main/ui/groups/GroupWriteCheck.cpp" line="50"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="50"/>
         <source>Machine number %1: %2</source>
         <translation>국번 %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupWriteCheck.cpp" line="59"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="59"/>
         <source>Communication group</source>
         <translation>통신 그룹</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupWriteCheck.cpp" line="63"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="63"/>
         <source>Their values are read back afterwards.</source>
         <translation>이후 값을 다시 읽습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupWriteCheck.cpp" line="64"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="64"/>
         <source>Send, also to %1</source>
         <translation>보내기 (%1에도)</translation>
     </message>
@@ -5934,212 +5934,212 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::GroupsView</name>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="34"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="34"/>
         <source>Read &amp;groups again</source>
         <translation>그룹 다시 읽기(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="35"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="35"/>
         <source>&amp;Write plan…</source>
         <translation>계획 쓰기(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="38"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="38"/>
         <source>A drive whose communication group is another drive&apos;s machine number is that drive&apos;s child: it executes every write and command sent to its parent, without replying. Plan the groups in the last column and write them; every drive&apos;s group is then read back.</source>
         <translation>통신 그룹이 다른 드라이버의 국번으로 설정된 드라이버는 그 드라이버의 자식입니다: 부모에게 보낸 모든 쓰기와 명령을 응답 없이 실행합니다. 마지막 열에서 그룹을 계획하고 쓰십시오. 쓴 뒤에는 모든 드라이버의 그룹을 다시 읽습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="49"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="49"/>
         <source>Machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="49"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="49"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="49"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="49"/>
         <source>Group</source>
         <translation>그룹</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="50"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="50"/>
         <source>Follows / followed by</source>
         <translation>따르는 대상 / 따르는 드라이버</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="50"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="50"/>
         <source>Problem</source>
         <translation>문제</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="50"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="50"/>
         <source>Plan</source>
         <translation>계획</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="51"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="51"/>
         <source>Read back</source>
         <translation>다시 읽은 값</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="57"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="57"/>
         <source>Read every drive&apos;s communication group from the drive</source>
         <translation>모든 드라이버에서 통신 그룹을 읽습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="58"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="58"/>
         <source>Write the planned groups (asks first), then read every drive&apos;s group back</source>
         <translation>계획한 그룹을 쓰고(먼저 확인), 모든 드라이버의 그룹을 다시 읽습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="79"/>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="145"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="79"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="145"/>
         <source>Disabled</source>
         <translation>사용 안 함</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="146"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="146"/>
         <source>Planned group of machine number %1</source>
         <translation>국번 %1의 계획 그룹</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="147"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="147"/>
         <source>The group machine number %1 should have: its own number makes it a parent, another drive&apos;s number its child; Disabled: no group</source>
         <translation>국번 %1에 줄 그룹: 자기 국번이면 부모, 다른 드라이버의 국번이면 그 자식; 사용 안 함: 그룹 없음</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="166"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="166"/>
         <source>child and parent</source>
         <translation>자식이면서 부모</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="167"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="167"/>
         <source>no drive %1</source>
         <translation>드라이버 %1 없음</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="176"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="176"/>
         <source>not read</source>
         <translation>읽지 않음</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="198"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="198"/>
         <source>No problem found in the groups as read from the drives.</source>
         <translation>드라이버에서 읽은 그룹에 문제가 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="199"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="199"/>
         <source>Problems:</source>
         <translation>문제:</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="206"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="206"/>
         <source>%1: %2 → %3</source>
         <translation>%1: %2 → %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="213"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="213"/>
         <source>The plan is what the drives hold.</source>
         <translation>계획이 드라이버에 있는 값과 같습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="214"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="214"/>
         <source>Plan changes: %1.</source>
         <translation>계획 변경: %1.</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="216"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="216"/>
         <source>After it: %1</source>
         <translation>변경 후: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="242"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="242"/>
         <source>Reading every drive&apos;s group…</source>
         <translation>모든 드라이버의 그룹을 읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/groups/GroupsView.cpp" line="248"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="248"/>
         <source>%n drive(s) did not answer</source>
         <translation>
             <numerusform>드라이버 %n대가 응답하지 않았습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="263"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="263"/>
         <source>Machine number %1: group %2 → %3.</source>
         <translation>국번 %1: 그룹 %2 → %3.</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="268"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="268"/>
         <source>This also reaches %1 (its children), which are written again after it.</source>
         <translation>이 내용은 %1(자식)에도 전달되므로, 그 후에 자식을 다시 씁니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="277"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="277"/>
         <source>Warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="279"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="279"/>
         <source>Write communication groups</source>
         <translation>통신 그룹 쓰기</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/groups/GroupsView.cpp" line="280"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="280"/>
         <source>Write the planned communication group to %n drive(s)?</source>
         <translation>
             <numerusform>계획한 통신 그룹을 드라이버 %n대에 쓰시겠습니까?</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="284"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="284"/>
         <source>Drives with children are written last; every drive&apos;s group is read back afterwards.</source>
         <translation>자식이 있는 드라이버는 마지막에 씁니다. 쓴 뒤에는 모든 드라이버의 그룹을 다시 읽습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="286"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="286"/>
         <source>&amp;Write groups</source>
         <translation>그룹 쓰기(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="317"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="317"/>
         <source>Writing group %1 to machine number %2…</source>
         <translation>국번 %2에 그룹 %1 쓰는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="326"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="326"/>
         <source>write failed: %1</source>
         <translation>쓰기 실패: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="340"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="340"/>
         <source>Reading every drive&apos;s group back…</source>
         <translation>모든 드라이버의 그룹을 다시 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="353"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="353"/>
         <source>write failed</source>
         <translation>쓰기 실패</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="354"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="354"/>
         <source>✓ %1</source>
         <translation>✓ %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="355"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="355"/>
         <source>✗ %1, planned %2</source>
         <translation>✗ %1, 계획 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="365"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="365"/>
         <source>Proved: every drive read back holds its planned group.</source>
         <translation>확인됨: 다시 읽은 모든 드라이버가 계획한 그룹을 가지고 있습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/groups/GroupsView.cpp" line="366"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="366"/>
         <source>Not as planned: %1 (read back; %n drive(s) did not answer).</source>
         <translation>
             <numerusform>계획과 다름: %1 (다시 읽음; 드라이버 %n대 응답 없음).</numerusform>
@@ -6149,22 +6149,22 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::HelpActions</name>
     <message>
-        <location filename="../main/ui/help/HelpActions.cpp" line="18"/>
+        <location filename="../ui/help/HelpActions.cpp" line="18"/>
         <source>&amp;User guide</source>
         <translation>사용자 가이드(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/HelpActions.cpp" line="21"/>
+        <location filename="../ui/help/HelpActions.cpp" line="21"/>
         <source>&amp;Keyboard shortcuts</source>
         <translation>단축키(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/HelpActions.cpp" line="25"/>
+        <location filename="../ui/help/HelpActions.cpp" line="25"/>
         <source>&amp;About OpenTOP</source>
         <translation>OpenTOP 정보(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/HelpActions.cpp" line="28"/>
+        <location filename="../ui/help/HelpActions.cpp" line="28"/>
         <source>About &amp;Qt</source>
         <translation>Qt 정보(&amp;Q)</translation>
     </message>
@@ -6172,187 +6172,187 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::IoTerminalsPage</name>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="31"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="31"/>
         <source>Not functioning: the drive ignores this input.</source>
         <translation>기능 없음: 드라이버가 이 입력을 무시합니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="33"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="33"/>
         <source>RUN/STOP: ON runs the motor, OFF stops it.</source>
         <translation>RUN/STOP: ON이면 모터 운전, OFF면 정지.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="35"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="35"/>
         <source>CW/CCW: the running direction, OFF clockwise, ON counter-clockwise.</source>
         <translation>CW/CCW: 회전 방향, OFF면 CW(시계 방향), ON이면 CCW(반시계 방향).</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="38"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="38"/>
         <source>CW/STOP: ON runs the motor clockwise, OFF stops it.</source>
         <translation>CW/STOP: ON이면 모터 CW 운전, OFF면 정지.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="40"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="40"/>
         <source>CCW/STOP: ON runs the motor counter-clockwise, OFF stops it.</source>
         <translation>CCW/STOP: ON이면 모터 CCW 운전, OFF면 정지.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="43"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="43"/>
         <source>Alarm-Reset: clears an alarm (alarm erase method Alarm-Reset).</source>
         <translation>Alarm-Reset: 알람을 해제합니다(알람 해제 방법이 Alarm-Reset일 때).</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="51"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="51"/>
         <source>M%1: bit %1 of the running data selection (M2 M1 M0 = 000–111 select SPno1–SPno8).</source>
         <translation>M%1: 운전 데이터 선택의 비트 %1 (M2 M1 M0 = 000–111로 SPno1–SPno8 선택).</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="56"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="56"/>
         <source>Ext-Error (EX-Er): an external interrupt that stops the motor; the only input still active in communication priority.</source>
         <translation>Ext-Error (EX-Er): 모터를 정지시키는 외부 인터럽트. 통신 우선에서도 동작하는 유일한 입력.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="61"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="61"/>
         <source>H-Free: releases the motor&apos;s holding force while stopped.</source>
         <translation>H-Free: 정지 중 모터의 유지력(여자)을 해제합니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="63"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="63"/>
         <source>Code %1 is not a known input function.</source>
         <translation>코드 %1은(는) 알려진 입력 기능이 아닙니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="71"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="71"/>
         <source>Not functioning: the output stays off.</source>
         <translation>기능 없음: 출력은 계속 OFF입니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="73"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="73"/>
         <source>Alarm-Out: switches when an alarm stops the motor.</source>
         <translation>Alarm-Out: 알람으로 모터가 정지하면 전환됩니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="75"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="75"/>
         <source>Reach Speed-Out: switches when the motor reaches the target speed.</source>
         <translation>Reach Speed-Out: 모터가 목표 속도에 도달하면 전환됩니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="78"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="78"/>
         <source>VA-Out: switches before the target speed, at the target speed minus the VA speed.</source>
         <translation>VA-Out: 목표 속도에서 VA 속도를 뺀 속도, 즉 목표 속도 도달 전에 전환됩니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="81"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="81"/>
         <source>Speed-Out: speed pulses, 24 per motor revolution.</source>
         <translation>Speed-Out: 속도 펄스, 모터 1회전당 24펄스.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="83"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="83"/>
         <source>Warning-Out: switches on a warning; the motor keeps running.</source>
         <translation>Warning-Out: 경고 시 전환됩니다. 모터는 계속 운전합니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="86"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="86"/>
         <source>Move-Out: switches while the motor is turning.</source>
         <translation>Move-Out: 모터가 회전하는 동안 전환됩니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="88"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="88"/>
         <source>Code %1 is not a known output function.</source>
         <translation>코드 %1은(는) 알려진 출력 기능이 아닙니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="102"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="102"/>
         <source>I/O terminals</source>
         <translation>I/O 단자</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="118"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="118"/>
         <source>Control</source>
         <translation>제어</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="123"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="123"/>
         <source>Control &amp;mode:</source>
         <translation>제어 모드(&amp;M):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="124"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="124"/>
         <source>Mode1 uses RUN/STOP and CW/CCW inputs (like UBD, SBD, DBD); Mode2 uses CW/STOP and CCW/STOP inputs (like DB, BMD). The input function codes differ: switching the mode disables the other mode&apos;s input functions, so every input X0–X3 needs a function of the new mode.</source>
         <translation>Mode1은 RUN/STOP, CW/CCW 입력을 사용합니다(UBD, SBD, DBD와 같음). Mode2는 CW/STOP, CCW/STOP 입력을 사용합니다(DB, BMD와 같음). 입력 기능 코드가 다르므로 모드를 바꾸면 다른 모드의 입력 기능은 무효가 됩니다. 따라서 모든 입력 X0–X3에 새 모드의 기능을 지정해야 합니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="136"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="136"/>
         <source>Control &amp;priority:</source>
         <translation>제어 우선순위(&amp;P):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="137"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="137"/>
         <source>In I/O priority the input terminals run the motor. In communication priority the drive runs from bus commands and of the inputs only EX-Er (external error) acts.</source>
         <translation>I/O 우선에서는 입력 단자로 모터를 운전합니다. 통신 우선에서는 드라이버가 버스 명령으로 운전하며, 입력 중에서는 EX-Er(외부 오류)만 동작합니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="146"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="146"/>
         <source>Inputs — CN5</source>
         <translation>입력 — CN5</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="148"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="148"/>
         <source>COM0: input common (external supply)</source>
         <translation>COM0: 입력 공통(외부 전원)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="151"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="151"/>
         <source>COM1: input common (internal supply)</source>
         <translation>COM1: 입력 공통(내부 전원)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="156"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="156"/>
         <source>Outputs — CN6</source>
         <translation>출력 — CN6</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="174"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="174"/>
         <source>Give each flagged input the default function of the new mode (pending, not written)</source>
         <translation>표시된 각 입력에 새 모드의 기본 기능을 지정합니다(쓰기 대기, 아직 쓰지 않음)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="203"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="203"/>
         <source>Connector pin %1</source>
         <translation>커넥터 핀 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="208"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="208"/>
         <source>Terminal %1 function</source>
         <translation>단자 %1 기능</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="235"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="235"/>
         <source>unknown</source>
         <translation>알 수 없음</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="261"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="261"/>
         <source>Not read yet.</source>
         <translation>아직 읽지 않음.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="268"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="268"/>
         <source>Not valid in %1: choose again</source>
         <translation>%1에서 무효: 다시 선택하십시오</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="296"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="296"/>
         <source>The mode changes from %1 to %2 when written; Write page writes the mode first, then the terminals.</source>
         <translation>쓰면 모드가 %1에서 %2(으)로 바뀝니다. 페이지 쓰기는 모드를 먼저 쓰고 그다음 단자를 씁니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="306"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="306"/>
         <source>Not valid in %1: %2. Choose their functions again before writing.</source>
         <translation>%1에서 무효: %2. 쓰기 전에 기능을 다시 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="309"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="309"/>
         <source>Use %1 defaults</source>
         <translation>%1 기본값 사용</translation>
     </message>
@@ -6360,174 +6360,210 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::JsonReader</name>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="29"/>
-        <location filename="../main/model/profile/JsonReader.cpp" line="44"/>
-        <location filename="../main/model/profile/JsonReader.cpp" line="89"/>
-        <location filename="../main/model/profile/JsonReader.cpp" line="100"/>
-        <location filename="../main/model/profile/JsonReader.cpp" line="116"/>
+        <location filename="../model/profile/JsonReader.cpp" line="29"/>
+        <location filename="../model/profile/JsonReader.cpp" line="44"/>
+        <location filename="../model/profile/JsonReader.cpp" line="89"/>
+        <location filename="../model/profile/JsonReader.cpp" line="100"/>
+        <location filename="../model/profile/JsonReader.cpp" line="116"/>
         <source>&quot;%1&quot; is missing</source>
         <translation>&quot;%1&quot;이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="33"/>
+        <location filename="../model/profile/JsonReader.cpp" line="33"/>
         <source>&quot;%1&quot; must be a string</source>
         <translation>&quot;%1&quot;은(는) 문자열이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="48"/>
+        <location filename="../model/profile/JsonReader.cpp" line="48"/>
         <source>&quot;%1&quot; must be a number</source>
         <translation>&quot;%1&quot;은(는) 숫자여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="59"/>
+        <location filename="../model/profile/JsonReader.cpp" line="59"/>
         <source>%1 must be a whole number</source>
         <translation>%1은(는) 정수여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="64"/>
+        <location filename="../model/profile/JsonReader.cpp" line="64"/>
         <source>%1 is out of range</source>
         <translation>%1이(가) 범위를 벗어났습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="80"/>
+        <location filename="../model/profile/JsonReader.cpp" line="80"/>
         <source>%1 must be an integer or a &quot;0x...&quot; string</source>
         <translation>%1은(는) 정수 또는 &quot;0x...&quot; 문자열이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="104"/>
+        <location filename="../model/profile/JsonReader.cpp" line="104"/>
         <source>&quot;%1&quot; must be an array</source>
         <translation>&quot;%1&quot;은(는) 배열이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="120"/>
+        <location filename="../model/profile/JsonReader.cpp" line="120"/>
         <source>&quot;%1&quot; must be an object</source>
         <translation>&quot;%1&quot;은(는) 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="130"/>
+        <location filename="../model/profile/JsonReader.cpp" line="130"/>
         <source>%1: unknown key &quot;%2&quot;</source>
         <translation>%1: 알 수 없는 키 &quot;%2&quot;</translation>
     </message>
 </context>
 <context>
+    <name>opentop::Language</name>
+    <message>
+        <location filename="../model/i18n/Language.cpp" line="137"/>
+        <source>unknown language &apos;%1&apos;; available: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/Language.cpp" line="151"/>
+        <source>the %1 translation is missing from this build</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>opentop::LanguageMenu</name>
+    <message>
+        <location filename="../ui/i18n/LanguageMenu.cpp" line="10"/>
+        <source>&amp;Language</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/i18n/LanguageMenu.cpp" line="15"/>
+        <source>System language (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>opentop::MainMenus</name>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="32"/>
+        <location filename="../ui/main/MainMenus.cpp" line="35"/>
         <source>&amp;Bus</source>
         <translation>버스(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="33"/>
+        <location filename="../ui/main/MainMenus.cpp" line="36"/>
         <source>Main</source>
         <translation>메인</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="36"/>
+        <location filename="../ui/main/MainMenus.cpp" line="39"/>
         <source>&amp;Connect…</source>
         <translation>연결(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="38"/>
+        <location filename="../ui/main/MainMenus.cpp" line="41"/>
         <source>Choose the serial port, gateway or simulated bus (Ctrl+K)</source>
         <translation>시리얼 포트, 게이트웨이 또는 시뮬레이션 버스를 선택합니다(Ctrl+K)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="40"/>
+        <location filename="../ui/main/MainMenus.cpp" line="43"/>
         <source>&amp;Scan bus</source>
         <translation>버스 스캔(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="46"/>
+        <location filename="../ui/main/MainMenus.cpp" line="49"/>
         <source>&amp;Disconnect</source>
         <translation>연결 해제(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="50"/>
+        <location filename="../ui/main/MainMenus.cpp" line="53"/>
         <source>Communication &amp;groups…</source>
         <translation>통신 그룹(&amp;G)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="54"/>
+        <location filename="../ui/main/MainMenus.cpp" line="57"/>
         <source>&amp;Export alarm histories…</source>
         <translation>알람 이력 내보내기(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="56"/>
+        <location filename="../ui/main/MainMenus.cpp" line="59"/>
         <source>&amp;Quit</source>
         <translation>종료(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="59"/>
+        <location filename="../ui/main/MainMenus.cpp" line="62"/>
         <source>&amp;Files</source>
         <translation>파일(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="64"/>
+        <location filename="../ui/main/MainMenus.cpp" line="67"/>
         <source>&amp;Drive</source>
         <translation>드라이버(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="67"/>
+        <location filename="../ui/main/MainMenus.cpp" line="70"/>
         <source>&amp;Write all pending</source>
         <translation>쓰기 대기 모두 쓰기(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="69"/>
+        <location filename="../ui/main/MainMenus.cpp" line="72"/>
         <source>&amp;Re-read all</source>
         <translation>모두 다시 읽기(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="71"/>
+        <location filename="../ui/main/MainMenus.cpp" line="74"/>
         <source>Write a setting to the selected drives…</source>
         <translation>선택한 드라이버에 설정 하나 쓰기…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="82"/>
+        <location filename="../ui/main/MainMenus.cpp" line="85"/>
         <source>&amp;View</source>
         <translation>보기(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="88"/>
+        <location filename="../ui/main/MainMenus.cpp" line="91"/>
         <source>&amp;Traffic log</source>
         <translation>통신 로그(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="89"/>
+        <location filename="../ui/main/MainMenus.cpp" line="92"/>
         <source>Bus &amp;overview</source>
         <translation>버스 개요(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="91"/>
+        <location filename="../ui/main/MainMenus.cpp" line="94"/>
         <source>T&amp;rends</source>
         <translation>트렌드(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="92"/>
+        <location filename="../ui/main/MainMenus.cpp" line="95"/>
         <source>Communication &amp;groups</source>
         <translation>통신 그룹(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="100"/>
+        <location filename="../ui/main/MainMenus.cpp" line="109"/>
+        <source>Language</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/main/MainMenus.cpp" line="110"/>
+        <source>OpenTOP will be in %1 the next time it starts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/main/MainMenus.cpp" line="116"/>
         <source>&amp;End of line</source>
         <translation>출하 검사(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="102"/>
+        <location filename="../ui/main/MainMenus.cpp" line="118"/>
         <source>&amp;Help</source>
         <translation>도움말(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="115"/>
+        <location filename="../ui/main/MainMenus.cpp" line="131"/>
         <source>connect elsewhere</source>
         <translation>다른 곳에 연결</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="125"/>
+        <location filename="../ui/main/MainMenus.cpp" line="141"/>
         <source>Export alarm histories</source>
         <translation>알람 이력 내보내기</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="126"/>
+        <location filename="../ui/main/MainMenus.cpp" line="142"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
@@ -6535,33 +6571,33 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="50"/>
+        <location filename="../ui/main/MainWindow.cpp" line="50"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="126"/>
+        <location filename="../ui/main/MainWindow.cpp" line="126"/>
         <source>connect elsewhere</source>
         <translation>다른 곳에 연결</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="149"/>
+        <location filename="../ui/main/MainWindow.cpp" line="149"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>%1에 연결하는 중… (%2에 아직 연결되어 있음)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="188"/>
+        <location filename="../ui/main/MainWindow.cpp" line="188"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>연결됨: %1 (새 연결 실패: %2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="191"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="191"/>
+        <location filename="../ui/main/MainWindow.cpp" line="203"/>
         <source>Cannot connect</source>
         <translation>연결할 수 없음</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="192"/>
+        <location filename="../ui/main/MainWindow.cpp" line="192"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -6570,82 +6606,82 @@ Still connected to %2; nothing was changed.</source>
 %2에 아직 연결되어 있습니다. 아무것도 변경하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="195"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="306"/>
+        <location filename="../ui/main/MainWindow.cpp" line="195"/>
+        <location filename="../ui/main/MainWindow.cpp" line="306"/>
         <source>Not connected: %1</source>
         <translation>연결 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="252"/>
+        <location filename="../ui/main/MainWindow.cpp" line="252"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>통신 그룹: %1 (버스 › 통신 그룹)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="274"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="276"/>
+        <location filename="../ui/main/MainWindow.cpp" line="274"/>
+        <location filename="../ui/main/MainWindow.cpp" line="276"/>
         <source>Connection lost: %1</source>
         <translation>연결 끊김: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="277"/>
+        <location filename="../ui/main/MainWindow.cpp" line="277"/>
         <source>Connection lost</source>
         <translation>연결 끊김</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="285"/>
+        <location filename="../ui/main/MainWindow.cpp" line="285"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 시뮬레이션 버스 (실제 하드웨어 없음) — %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="286"/>
+        <location filename="../ui/main/MainWindow.cpp" line="286"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="287"/>
+        <location filename="../ui/main/MainWindow.cpp" line="287"/>
         <source>Connecting to %1…</source>
         <translation>%1에 연결하는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="305"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="313"/>
+        <location filename="../ui/main/MainWindow.cpp" line="305"/>
+        <location filename="../ui/main/MainWindow.cpp" line="313"/>
         <source>Connected: %1</source>
         <translation>연결됨: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="312"/>
+        <location filename="../ui/main/MainWindow.cpp" line="312"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>연결됨: %1 (시뮬레이션, 실제 하드웨어 없음)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="333"/>
+        <location filename="../ui/main/MainWindow.cpp" line="333"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>드라이버가 기종을 알려주지 않습니다. %1은(는) 설정된 기종입니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="363"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="374"/>
+        <location filename="../ui/main/MainWindow.cpp" line="363"/>
+        <location filename="../ui/main/MainWindow.cpp" line="374"/>
         <source>disconnect</source>
         <translation>연결 해제</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="370"/>
+        <location filename="../ui/main/MainWindow.cpp" line="370"/>
         <source>Not connected (disconnected)</source>
         <translation>연결 안 됨(연결 해제함)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="381"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="406"/>
+        <location filename="../ui/main/MainWindow.cpp" line="381"/>
+        <location filename="../ui/main/MainWindow.cpp" line="406"/>
         <source>quit</source>
         <translation>종료</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="392"/>
+        <location filename="../ui/main/MainWindow.cpp" line="392"/>
         <source>Unwritten changes</source>
         <translation>쓰지 않은 변경 사항</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/main/MainWindow.cpp" line="393"/>
+        <location filename="../ui/main/MainWindow.cpp" line="393"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>드라이버에 쓰지 않은 편집이 %n개 있습니다. 버리고 종료하시겠습니까?</numerusform>
@@ -6655,77 +6691,77 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorCommand</name>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="37"/>
+        <location filename="../cli/MonitorCommand.cpp" line="37"/>
         <source>Watch speed, load, state, inputs and alarms live (Ctrl-C ends)</source>
         <translation>속도, 부하, 상태, 입력, 알람을 실시간으로 봅니다(Ctrl-C로 종료)</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="44"/>
+        <location filename="../cli/MonitorCommand.cpp" line="44"/>
         <source>Time between samples of a drive in ms, %1–%2 (default 500).</source>
         <translation>드라이버당 샘플 간격(ms), %1–%2 (기본값 500).</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="47"/>
+        <location filename="../cli/MonitorCommand.cpp" line="47"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="48"/>
+        <location filename="../cli/MonitorCommand.cpp" line="48"/>
         <source>Stop after N samples per drive (default: until Ctrl-C).</source>
         <translation>드라이버당 N개 샘플 후 멈춥니다(기본값: Ctrl-C까지).</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="49"/>
+        <location filename="../cli/MonitorCommand.cpp" line="49"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="50"/>
+        <location filename="../cli/MonitorCommand.cpp" line="50"/>
         <source>Also write every sample to FILE (CSV with a header).</source>
         <translation>모든 샘플을 FILE에도 저장합니다(헤더가 있는 CSV).</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="51"/>
+        <location filename="../cli/MonitorCommand.cpp" line="51"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="63"/>
+        <location filename="../cli/MonitorCommand.cpp" line="63"/>
         <source>error: usage: %1</source>
         <translation>오류: 사용법: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="73"/>
+        <location filename="../cli/MonitorCommand.cpp" line="73"/>
         <source>error: --interval must be %1–%2 ms, got &quot;%3&quot;</source>
         <translation>오류: --interval은 %1–%2 ms여야 합니다. 입력값: &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="86"/>
+        <location filename="../cli/MonitorCommand.cpp" line="86"/>
         <source>error: --count must be a whole number of samples, 1 or more, got &quot;%1&quot;</source>
         <translation>오류: --count는 1 이상의 샘플 수(정수)여야 합니다. 입력값: &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="96"/>
+        <location filename="../cli/MonitorCommand.cpp" line="96"/>
         <source>error: cannot write %1: %2</source>
         <translation>오류: %1에 쓸 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="106"/>
+        <location filename="../cli/MonitorCommand.cpp" line="106"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="126"/>
+        <location filename="../cli/MonitorCommand.cpp" line="126"/>
         <source>warning: machine number %1: %2; speeds are shown in r/min only</source>
         <translation>경고: 국번 %1: %2; 속도는 r/min으로만 표시합니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="203"/>
+        <location filename="../cli/MonitorCommand.cpp" line="203"/>
         <source>error: cannot write %1: %2; monitoring stopped</source>
         <translation>오류: %1에 쓸 수 없습니다: %2; 모니터링을 멈췄습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="227"/>
+        <location filename="../cli/MonitorCommand.cpp" line="227"/>
         <source>%1 error: %2</source>
         <translation>%1 오류: %2</translation>
     </message>
@@ -6733,13 +6769,13 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorDetails</name>
     <message>
-        <location filename="../main/ui/monitor/MonitorDetails.cpp" line="81"/>
-        <location filename="../main/ui/monitor/MonitorDetails.cpp" line="88"/>
+        <location filename="../ui/monitor/MonitorDetails.cpp" line="81"/>
+        <location filename="../ui/monitor/MonitorDetails.cpp" line="88"/>
         <source>not read</source>
         <translation>읽지 않음</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorDetails.cpp" line="110"/>
+        <location filename="../ui/monitor/MonitorDetails.cpp" line="110"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -6747,42 +6783,42 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorOutput</name>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="114"/>
+        <location filename="../cli/MonitorOutput.cpp" line="114"/>
         <source>Target shown</source>
         <translation>표시 목표값</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="114"/>
+        <location filename="../cli/MonitorOutput.cpp" line="114"/>
         <source>Speed shown</source>
         <translation>표시 속도</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="123"/>
+        <location filename="../cli/MonitorOutput.cpp" line="123"/>
         <source>Active alarm</source>
         <translation>발생 중인 알람</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="165"/>
+        <location filename="../cli/MonitorOutput.cpp" line="165"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="168"/>
+        <location filename="../cli/MonitorOutput.cpp" line="168"/>
         <source>code %1</source>
         <translation>코드 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="168"/>
+        <location filename="../cli/MonitorOutput.cpp" line="168"/>
         <source>active</source>
         <translation>발생 중</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="175"/>
+        <location filename="../cli/MonitorOutput.cpp" line="175"/>
         <source>Time</source>
         <translation>시각</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="175"/>
+        <location filename="../cli/MonitorOutput.cpp" line="175"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -6790,37 +6826,37 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPage</name>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="175"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="175"/>
         <source>Live values</source>
         <translation>실시간 값</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="183"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="183"/>
         <source>Speed</source>
         <translation>속도</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="196"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="196"/>
         <source>State</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="261"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="261"/>
         <source>%1 %2 on the drive&apos;s display</source>
         <translation>드라이버 표시부에 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="270"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="270"/>
         <source>Alarm %1 %2 — %3</source>
         <translation>알람 %1 %2 — %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="273"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="273"/>
         <source>Alarm active (reading which one…)</source>
         <translation>알람 발생 중 (어떤 알람인지 읽는 중…)</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="328"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="328"/>
         <source>No live state: %1</source>
         <translation>실시간 상태 없음: %1</translation>
     </message>
@@ -6828,67 +6864,67 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPollBar</name>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="25"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="25"/>
         <source>Poll every</source>
         <translation>폴링 주기</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="27"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="27"/>
         <source>%1 ms (%2 Hz)</source>
         <translation>%1 ms (%2 Hz)</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="28"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="28"/>
         <source>How often every monitored drive is read. Commands you give always go first; the drives share what is left of the bus in turn.</source>
         <translation>모니터링하는 각 드라이버를 읽는 주기. 사용자가 내린 명령이 항상 먼저 처리되고, 남은 버스 시간을 드라이버들이 차례로 나눠 씁니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="36"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="36"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="44"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="44"/>
         <source>Resume polling</source>
         <translation>폴링 재개</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="44"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="44"/>
         <source>Pause polling</source>
         <translation>폴링 일시 정지</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="58"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="58"/>
         <source>Polling paused: the values shown are the last ones read (%1).</source>
         <translation>폴링 일시 정지됨: 표시된 값은 마지막으로 읽은 값입니다(%1).</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="60"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="60"/>
         <source>Connection lost — not live: %1.</source>
         <translation>연결 끊김 — 실시간 아님: %1.</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="62"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="62"/>
         <source>Not live: %1.</source>
         <translation>실시간 아님: %1.</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="63"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="63"/>
         <source>The drive does not answer (%1) — not live: %2.</source>
         <translation>드라이버가 응답하지 않습니다(%1) — 실시간 아님: %2.</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="66"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="66"/>
         <source>Values %1 · %2 samples/s</source>
         <translation>값 %1 · 초당 샘플 %2개</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="70"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="70"/>
         <source>Not read yet.</source>
         <translation>아직 읽지 않음.</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="71"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="71"/>
         <source>Cannot read the drive: %1</source>
         <translation>드라이버를 읽을 수 없습니다: %1</translation>
     </message>
@@ -6896,12 +6932,12 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MotionPriorityBox</name>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="32"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="32"/>
         <source>Switch to communication priority…</source>
         <translation>통신 우선으로 전환…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="57"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="57"/>
         <source>Machine number %1 is in &quot;%2&quot; (%3): it takes run, stop, direction and speed selection from its input terminals and refuses motion commands over the bus, so the test run is disabled.
 
 Switching to &quot;%4&quot; hands these commands to the bus: the input terminals no longer start or stop the motor, and the machine&apos;s own controls stay without effect until you switch back to &quot;%2&quot;.</source>
@@ -6910,53 +6946,53 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 &quot;%4&quot;(으)로 전환하면 이 명령들을 버스가 맡게 됩니다: 입력 단자로는 더 이상 모터를 기동·정지할 수 없고, &quot;%2&quot;(으)로 되돌릴 때까지 설비 자체의 조작은 효과가 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="83"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="83"/>
         <source>Switch to communication priority</source>
         <translation>통신 우선으로 전환</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="84"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="84"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from the bus (%2 = &quot;%3&quot;). Its input terminals then no longer start or stop the motor.</source>
         <translation>국번 %1이(가) 운전, 정지, 방향, 속도 선택을 버스로 받게 됩니다(%2 = &quot;%3&quot;). 그러면 입력 단자로는 더 이상 모터를 기동·정지할 수 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="90"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="90"/>
         <source>Switch</source>
         <translation>전환</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="99"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="99"/>
         <source>Switching to communication priority…</source>
         <translation>통신 우선으로 전환하는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="107"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="107"/>
         <source>Machine number %1 takes motion commands over the bus now.</source>
         <translation>국번 %1이(가) 이제 버스로 운전 명령을 받습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="109"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="109"/>
         <source>Cannot switch the control priority: %1</source>
         <translation>제어 우선순위를 전환할 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="118"/>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="124"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="118"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="124"/>
         <source>Return to I/O priority</source>
         <translation>I/O 우선으로 복귀</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="119"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="119"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from its input terminals again, and refuse motion commands over the bus. If an input says run, the motor runs.</source>
         <translation>국번 %1이(가) 다시 입력 단자로 운전, 정지, 방향, 속도 선택을 받고, 버스를 통한 운전 명령은 거부합니다. 입력이 운전 상태이면 모터가 운전합니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="127"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="127"/>
         <source>Returning to I/O priority…</source>
         <translation>I/O 우선으로 복귀하는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="136"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="136"/>
         <source>Machine number %1 follows its input terminals again.</source>
         <translation>국번 %1이(가) 다시 입력 단자를 따릅니다.</translation>
     </message>
@@ -6964,33 +7000,33 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MotorSpeedBox</name>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="23"/>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="45"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="23"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="45"/>
         <source>Motor speed</source>
         <translation>모터 속도</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="33"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="33"/>
         <source>not set</source>
         <translation>설정 안 됨</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="34"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="34"/>
         <source>Commutations per motor revolution (a motor property, see its data sheet). r/min = %1 ÷ this × 60.</source>
         <translation>모터 1회전당 정류 횟수(모터 특성, 데이터시트 참조). r/min = %1 ÷ 이 값 × 60.</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="38"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="38"/>
         <source>Commutations per revolution</source>
         <translation>1회전당 정류 횟수</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="75"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="75"/>
         <source>set the commutations per revolution</source>
         <translation>1회전당 정류 횟수를 설정하십시오</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="79"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="79"/>
         <source>%1 r/min</source>
         <translation>%1 r/min</translation>
     </message>
@@ -6998,161 +7034,161 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="35"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="35"/>
         <source>&amp;Write to all</source>
         <translation>모두에 쓰기(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
         <source>Write one setting to several drives</source>
         <translation>설정 하나를 여러 드라이버에 쓰기</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
         <source>Machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
         <source>Current value</source>
         <translation>현재 값</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="55"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="55"/>
         <source>Result</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="74"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="74"/>
         <source>Not written: another family (%1)</source>
         <translation>쓰지 않음: 다른 제품군(%1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="75"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="75"/>
         <source>Not written: not identified (%1)</source>
         <translation>쓰지 않음: 식별 안 됨(%1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="80"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="80"/>
         <source>&amp;Setting:</source>
         <translation>설정(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="86"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="86"/>
         <source>New &amp;value:</source>
         <translation>새 값(&amp;V):</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="158"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="158"/>
         <source>cannot be read</source>
         <translation>읽을 수 없음</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="161"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="161"/>
         <source>reading…</source>
         <translation>읽는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="189"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="189"/>
         <source>read failed: %1</source>
         <translation>읽기 실패: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="214"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="214"/>
         <source>Drive %1: %2 is not known yet, and the allowed values depend on it.</source>
         <translation>드라이버 %1: %2을(를) 아직 알 수 없는데, 허용 값이 이 값에 따라 달라집니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="218"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="218"/>
         <source>drive %1: %2</source>
         <translation>드라이버 %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="222"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="222"/>
         <source>The unit differs between the drives (%1); write them one at a time.</source>
         <translation>드라이버마다 단위가 다릅니다(%1). 하나씩 쓰십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="230"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="230"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>드라이버 %1에서 허용되지 않음(%2): %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
         <source>None of the selected drives is identified.</source>
         <translation>선택한 드라이버 중 식별된 것이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
         <source>Drive %1: %2</source>
         <translation>드라이버 %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="249"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="249"/>
         <source>Allowed on %1</source>
         <translation>%1에서 허용</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="257"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="257"/>
         <source>Warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="258"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="258"/>
         <source>Allowed on %1.</source>
         <translation>%1에서 허용.</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="290"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="290"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>%1을(를) 국번 %2에 쓰기</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="292"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="292"/>
         <source>Nothing was written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="297"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="297"/>
         <source>waiting…</source>
         <translation>대기 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="299"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="299"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>%1을(를) 드라이버 %n대에 쓰는 중…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="311"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="311"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>드라이버 %n대 중 %1대에 쓰기 및 검증 완료.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="320"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="320"/>
         <source>writing…</source>
         <translation>쓰는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="333"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="333"/>
         <source>Written and verified</source>
         <translation>쓰기 및 검증 완료</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>쓰기 완료, 검증 안 됨(다시 읽을 수 없음)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="335"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="335"/>
         <source>Failed: %1</source>
         <translation>실패: %1</translation>
     </message>
@@ -7160,22 +7196,22 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::OutputFile</name>
     <message>
-        <location filename="../main/model/files/OutputFile.cpp" line="24"/>
+        <location filename="../model/files/OutputFile.cpp" line="24"/>
         <source>cannot write %1: it is a directory; name a file</source>
         <translation>%1에 쓸 수 없습니다: 디렉터리입니다. 파일을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/files/OutputFile.cpp" line="26"/>
+        <location filename="../model/files/OutputFile.cpp" line="26"/>
         <source>cannot write %1: the folder %2 does not exist</source>
         <translation>%1에 쓸 수 없습니다: 폴더 %2이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/OutputFile.cpp" line="35"/>
+        <location filename="../model/files/OutputFile.cpp" line="35"/>
         <source>cannot write %1: %2</source>
         <translation>%1에 쓸 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/files/OutputFile.cpp" line="40"/>
+        <location filename="../model/files/OutputFile.cpp" line="40"/>
         <source>it is a directory; name a file</source>
         <translation>디렉터리입니다. 파일을 지정하십시오</translation>
     </message>
@@ -7183,87 +7219,87 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::PanelMirror</name>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="19"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="19"/>
         <source>speed</source>
         <translation>속도</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="21"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="21"/>
         <source>machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="23"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="23"/>
         <source>running data No.</source>
         <translation>운전 데이터 번호</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="25"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="25"/>
         <source>countdown</source>
         <translation>카운트다운</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="27"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="27"/>
         <source>load rate</source>
         <translation>부하율</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="46"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="46"/>
         <source>Alarm %1 %2</source>
         <translation>알람 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="47"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="47"/>
         <source>Alarm (code not read yet)</source>
         <translation>알람 (코드 아직 읽지 않음)</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="58"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="58"/>
         <source>Current speed %1 %2</source>
         <translation>현재 속도 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="62"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="62"/>
         <source>Current speed: no finite value in %1</source>
         <translation>현재 속도: %1에 유한한 값이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="69"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="69"/>
         <source>Current speed %1 r/min</source>
         <translation>현재 속도 %1 r/min</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="69"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="69"/>
         <source>Speed not read</source>
         <translation>속도 읽지 않음</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="75"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="75"/>
         <source>Machine number %1</source>
         <translation>국번 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="86"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="86"/>
         <source>Running data SPno%1</source>
         <translation>운전 데이터 SPno%1</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="89"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="89"/>
         <source>Running data not read</source>
         <translation>운전 데이터 읽지 않음</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="99"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="99"/>
         <source>Countdown set to %1 d %2 h %3 min %4 s (the drive does not report the time left)</source>
         <translation>카운트다운 설정 %1일 %2시간 %3분 %4초 (드라이버는 남은 시간을 알려주지 않음)</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="113"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="113"/>
         <source>Load rate %1 %</source>
         <translation>부하율 %1 %</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="116"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="116"/>
         <source>Load rate not read</source>
         <translation>부하율 읽지 않음</translation>
     </message>
@@ -7271,32 +7307,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::PanelMirrorView</name>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="21"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="21"/>
         <source>Drive panel</source>
         <translation>드라이버 패널</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="51"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="51"/>
         <source>Not read yet</source>
         <translation>아직 읽지 않음</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="64"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="64"/>
         <source>%1 (more digits than the panel has)</source>
         <translation>%1 (패널 자릿수 초과)</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="68"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="68"/>
         <source>Panel set to show the %1 while running.</source>
         <translation>운전 중 패널에 %1을(를) 표시하도록 설정되어 있습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="69"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="69"/>
         <source>Drive panel shows %1</source>
         <translation>드라이버 패널 표시: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="77"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="77"/>
         <source>not live</source>
         <translation>실시간 아님</translation>
     </message>
@@ -7304,27 +7340,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="170"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="170"/>
         <source>%1 (not valid now)</source>
         <translation>%1 (현재 무효)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="188"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="188"/>
         <source>not read</source>
         <translation>읽지 않음</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="197"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="197"/>
         <source>Allowed: %1</source>
         <translation>허용: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="200"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="200"/>
         <source>On the drive: %1</source>
         <translation>드라이버 값: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="228"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="228"/>
         <source>Not accepted: %1</source>
         <translation>받아들일 수 없음: %1</translation>
     </message>
@@ -7332,92 +7368,92 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitBox</name>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="23"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="23"/>
         <source>Parameter initialisation</source>
         <translation>파라미터 초기화</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="32"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="32"/>
         <source>Returns every setting of drive %1 to its factory default, including the communication settings: afterwards the drive may answer only at the default rate, and control priority goes back to its input terminals. The motor must be stopped. The consequences for this drive are listed before anything is sent.</source>
         <translation>드라이버 %1의 모든 설정을 통신 설정까지 포함하여 공장 출하값으로 되돌립니다: 그 후 드라이버는 기본 통신 속도로만 응답할 수 있고, 제어 우선순위는 입력 단자로 돌아갑니다. 모터는 정지해 있어야 합니다. 무엇이든 보내기 전에 이 드라이버에 미치는 영향을 먼저 표시합니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="40"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="40"/>
         <source>&amp;Initialise all parameters of drive %1…</source>
         <translation>드라이버 %1의 모든 파라미터 초기화(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="42"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="42"/>
         <source>Asks first, naming the drive and what changes</source>
         <translation>드라이버와 변경 내용을 표시하고 먼저 확인합니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="66"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="66"/>
         <source>Reading what the initialisation would change…</source>
         <translation>초기화로 변경될 내용을 읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="90"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="90"/>
         <source>Your %n unwritten edit(s) of this drive are discarded.</source>
         <translation>
             <numerusform>이 드라이버에서 쓰지 않은 편집 %n개는 버려집니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="94"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="94"/>
         <source>Sent: %1 to machine %2 only.</source>
         <translation>보냄: %1, 국번 %2에만.</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="95"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="95"/>
         <source>Sent: %1 to machine %2.</source>
         <translation>보냄: %1, 국번 %2.</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="99"/>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="104"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="99"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="104"/>
         <source>Initialise drive %1</source>
         <translation>드라이버 %1 초기화</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="100"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="100"/>
         <source>Reset every setting of drive %1 (%2) to its factory defaults?</source>
         <translation>드라이버 %1(%2)의 모든 설정을 공장 출하값으로 되돌리시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="114"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="114"/>
         <source>Cancelled; nothing was sent.</source>
         <translation>취소됨. 아무것도 보내지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="122"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="122"/>
         <source>Initialising drive %1…</source>
         <translation>드라이버 %1 초기화 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="131"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="131"/>
         <source>Drive %1 did not confirm the initialisation: %2</source>
         <translation>드라이버 %1이(가) 초기화를 확인하지 않았습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="132"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="132"/>
         <source>Nothing was sent: %1</source>
         <translation>아무것도 보내지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="139"/>
         <source>Drive %1 initialised; reading its values again…</source>
         <translation>드라이버 %1 초기화 완료. 값을 다시 읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="145"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="145"/>
         <source>Drive %1 initialised; %n value(s) could not be read back (it may answer only at the default communication settings now).</source>
         <translation>
             <numerusform>드라이버 %1 초기화 완료. 값 %n개를 다시 읽을 수 없습니다(이제 기본 통신 설정으로만 응답할 수 있음).</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="149"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="149"/>
         <source>Drive %1 initialised to its factory defaults; values read again.</source>
         <translation>드라이버 %1을(를) 공장 출하값으로 초기화하고 값을 다시 읽었습니다.</translation>
     </message>
@@ -7425,67 +7461,67 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitialiser</name>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="64"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="64"/>
         <source>%1 drives have no parameter initialisation.</source>
         <translation>%1 드라이버에는 파라미터 초기화가 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="67"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="67"/>
         <source>%1 = %2 (register %3)</source>
         <translation>%1 = %2 (레지스터 %3)</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="75"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="75"/>
         <source>Drive %1 is running. Stop the motor first: parameter initialisation is only sent to a drive at standstill.</source>
         <translation>드라이버 %1이(가) 운전 중입니다. 먼저 모터를 정지하십시오: 파라미터 초기화는 정지 상태의 드라이버에만 보냅니다.</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="79"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="79"/>
         <source>Whether drive %1 is running could not be read (%2), so nothing was sent.</source>
         <translation>드라이버 %1의 운전 여부를 읽을 수 없어(%2) 아무것도 보내지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="93"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="93"/>
         <source>Every setting of drive %1 returns to its factory default: %2. Values set for this machine are lost; save a backup first to keep them.</source>
         <translation>드라이버 %1의 모든 설정이 공장 출하값으로 돌아갑니다: %2. 이 설비에 맞춰 설정한 값은 사라지므로, 유지하려면 먼저 백업을 저장하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="110"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="110"/>
         <source>%1 could not be read; it returns to %2. %3</source>
         <translation>%1을(를) 읽을 수 없습니다. %2(으)로 돌아갑니다. %3</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="113"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="113"/>
         <source>%1 goes from %2 back to %3. %4</source>
         <translation>%1이(가) %2에서 %3(으)로 돌아갑니다. %4</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="118"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="118"/>
         <source>%1 stays %2 (already the default).</source>
         <translation>%1은(는) %2 그대로입니다(이미 기본값).</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="124"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="124"/>
         <source>The drive may then stop answering this connection (from its next power-up): reconnect at the default setting to reach it.</source>
         <translation>그 후(다음 전원 투입부터) 드라이버가 이 연결에 응답하지 않을 수 있습니다: 기본 설정으로 다시 연결하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="128"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="128"/>
         <source>The drive no longer follows writes sent to its group&apos;s parent, and drives that followed it no longer do.</source>
         <translation>드라이버가 더 이상 그룹 부모로 보낸 쓰기를 따르지 않으며, 이 드라이버를 따르던 드라이버도 더 이상 따르지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="134"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="134"/>
         <source>The drive follows its input terminals again: an input that is on may start the motor, with the factory input functions.</source>
         <translation>드라이버가 다시 입력 단자를 따릅니다: ON인 입력이 있으면 공장 출하 입력 기능으로 모터가 기동할 수 있습니다.</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="136"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="136"/>
         <source>The machine number %1 is not a setting and does not change.</source>
         <translation>국번 %1은(는) 설정이 아니므로 바뀌지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="138"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="138"/>
         <source>The motor must stand still: drive %1 reports it stopped now, and this is read again just before the command is sent.</source>
         <translation>모터가 정지해 있어야 합니다: 드라이버 %1은(는) 지금 정지 상태이며, 명령을 보내기 직전에 다시 확인합니다.</translation>
     </message>
@@ -7493,88 +7529,88 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterPage</name>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="23"/>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="83"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="23"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="83"/>
         <source>&amp;Write page</source>
         <translation>페이지 쓰기(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="24"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="24"/>
         <source>Re&amp;vert</source>
         <translation>되돌리기(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="25"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="25"/>
         <source>Re-&amp;read</source>
         <translation>다시 읽기(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="45"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="45"/>
         <source>Write this page&apos;s pending edits to the drive and verify them by reading back</source>
         <translation>이 페이지의 쓰기 대기 편집을 드라이버에 쓰고 다시 읽어 검증합니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="46"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="46"/>
         <source>Discard this page&apos;s pending edits</source>
         <translation>이 페이지의 쓰기 대기 편집을 버립니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="47"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="47"/>
         <source>Read this page&apos;s values from the drive again (edits stay)</source>
         <translation>이 페이지의 값을 드라이버에서 다시 읽습니다(편집 내용은 유지)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="84"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="84"/>
         <source>&amp;Write page (%1)</source>
         <translation>페이지 쓰기(&amp;W) (%1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="97"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="97"/>
         <source>Reading…</source>
         <translation>읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="101"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="101"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>값 %n개를 읽을 수 없습니다</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="120"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="120"/>
         <source>Nothing was written: %n field(s) not accepted. %1</source>
         <translation>
             <numerusform>아무것도 쓰지 않았습니다: 받아들일 수 없는 항목 %n개. %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="139"/>
         <source>Write %n value(s) of the page %1 to machine number %2</source>
         <translation>
             <numerusform>페이지 %1의 값 %n개를 국번 %2에 쓰기</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="143"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
         <source>Nothing was written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="148"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="148"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>값 %n개 쓰는 중…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="152"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="152"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>쓰기 %n건 실패. 표시된 항목을 확인하십시오</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="153"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="153"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>값 %n개 쓰기 및 검증 완료</numerusform>
@@ -7584,212 +7620,212 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterReader</name>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="52"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="52"/>
         <source>entry</source>
         <translation>항목</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="60"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="60"/>
         <source>name must be lower-case dotted words: [a-z0-9_] separated by dots</source>
         <translation>name은 점으로 구분한 소문자 단어여야 합니다: [a-z0-9_]를 점으로 구분</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="68"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="68"/>
         <source>&quot;label&quot; is empty</source>
         <translation>&quot;label&quot;이 비어 있습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="70"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="70"/>
         <source>group &quot;%1&quot; is not declared in &quot;groups&quot;</source>
         <translation>그룹 &quot;%1&quot;이(가) &quot;groups&quot;에 선언되어 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="72"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="72"/>
         <source>kind must be one of %1</source>
         <translation>kind는 %1 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="78"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="78"/>
         <source>address must be 0x0000–0xFFFF</source>
         <translation>address는 0x0000–0xFFFF여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="85"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="85"/>
         <source>read must be 3 (holding) or 4 (input)</source>
         <translation>read는 3(holding) 또는 4(input)여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="87"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="87"/>
         <source>write must be 6 or 16</source>
         <translation>write는 6 또는 16이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="91"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="91"/>
         <source>input registers (read 4) cannot be written</source>
         <translation>입력 레지스터(read 4)에는 쓸 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="93"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="93"/>
         <source>neither readable nor writable</source>
         <translation>읽을 수도 쓸 수도 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="101"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="101"/>
         <source>type must be u16, s16, u32, s32, f32, string or bits</source>
         <translation>type은 u16, s16, u32, s32, f32, string 또는 bits여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="110"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="110"/>
         <source>string parameters need &quot;count&quot; 1–125 registers</source>
         <translation>string 파라미터에는 &quot;count&quot; 1–125 레지스터가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="115"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="115"/>
         <source>bits parameters have &quot;count&quot; 1 or 2</source>
         <translation>bits 파라미터의 &quot;count&quot;는 1 또는 2입니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="120"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="120"/>
         <source>%1 takes %2 register(s), not %3</source>
         <translation>%1은(는) 레지스터 %3개가 아니라 %2개를 차지합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="123"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="123"/>
         <source>a %1-register value cannot be written with function 06; use 16</source>
         <translation>레지스터 %1개짜리 값은 기능 06으로 쓸 수 없습니다. 16을 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="128"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="128"/>
         <source>safety must be one of %1</source>
         <translation>safety는 %1 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="130"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="130"/>
         <source>commands need a &quot;safety&quot; class</source>
         <translation>명령에는 &quot;safety&quot; 등급이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="133"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="133"/>
         <source>code table &quot;%1&quot; is not declared</source>
         <translation>코드 표 &quot;%1&quot;이(가) 선언되어 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="140"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="140"/>
         <source>a setting needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>설정에는 &quot;allowed&quot; 또는 &quot;enum&quot;이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="143"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="143"/>
         <source>a writable parameter needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>쓸 수 있는 파라미터에는 &quot;allowed&quot; 또는 &quot;enum&quot;이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="148"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="148"/>
         <source>bits parameters need &quot;bits&quot;</source>
         <translation>bits 파라미터에는 &quot;bits&quot;가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="156"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="156"/>
         <source>&quot;backup&quot; must be true or false</source>
         <translation>&quot;backup&quot;은 true 또는 false여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="161"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="161"/>
         <source>only readable and writable parameters can be backed up</source>
         <translation>읽기·쓰기가 모두 가능한 파라미터만 백업할 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="169"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="169"/>
         <source>scale must be positive</source>
         <translation>scale은 양수여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="179"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="179"/>
         <source>decimals must be 0–9</source>
         <translation>decimals는 0–9여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="205"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="205"/>
         <source>default %1 is not a whole number of steps of %2</source>
         <translation>기본값 %1이(가) %2 단위의 정수배가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="214"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="214"/>
         <source>default must be a number (or &quot;0x...&quot; code)</source>
         <translation>기본값은 숫자(또는 &quot;0x...&quot; 코드)여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="217"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="217"/>
         <source>default must be a number or a string</source>
         <translation>기본값은 숫자 또는 문자열이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="228"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="228"/>
         <source>%1 must be an object {&quot;min&quot;:…, &quot;max&quot;:…}</source>
         <translation>%1은(는) 객체 {&quot;min&quot;:…, &quot;max&quot;:…}여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="235"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="235"/>
         <source>%1 needs numeric min and max</source>
         <translation>%1에는 숫자 min과 max가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="241"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="241"/>
         <source>%1: %2 is not a whole number of steps of %3</source>
         <translation>%1: %2이(가) %3 단위의 정수배가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="249"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="249"/>
         <source>%1: min is greater than max</source>
         <translation>%1: min이 max보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="263"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="263"/>
         <source>%1 must be an object {&quot;value&quot;:…, &quot;label&quot;:…}</source>
         <translation>%1은(는) 객체 {&quot;value&quot;:…, &quot;label&quot;:…}여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="278"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="278"/>
         <source>%1 has no label</source>
         <translation>%1에 label이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="280"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="280"/>
         <source>%1 repeats a code or label</source>
         <translation>%1에 코드 또는 label이 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="291"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="291"/>
         <source>&quot;bits&quot; only belongs to type bits</source>
         <translation>&quot;bits&quot;는 type bits에만 쓸 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="315"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="315"/>
         <source>%1.appliesWhen needs &quot;param&quot; and &quot;equals&quot;</source>
         <translation>%1.appliesWhen에는 &quot;param&quot;과 &quot;equals&quot;가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="320"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="320"/>
         <source>%1 lies outside the %2-bit register</source>
         <translation>%1이(가) %2비트 레지스터 범위를 벗어납니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="322"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="322"/>
         <source>%1 needs a unique name</source>
         <translation>%1에는 고유한 이름이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="336"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="336"/>
         <source>%1 must be an object</source>
         <translation>%1은(는) 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="348"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="348"/>
         <source>%1 needs either &quot;variant&quot; or &quot;param&quot;</source>
         <translation>%1에는 &quot;variant&quot; 또는 &quot;param&quot;이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="351"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="351"/>
         <source>%1: variant &quot;%2&quot; is not declared</source>
         <translation>%1: variant &quot;%2&quot;이(가) 선언되어 있지 않습니다</translation>
     </message>
@@ -7797,67 +7833,67 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParamsCommand</name>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="82"/>
+        <location filename="../cli/ParamsCommand.cpp" line="82"/>
         <source>List every parameter of the device profiles</source>
         <translation>장치 프로파일의 모든 파라미터를 나열합니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="162"/>
+        <location filename="../cli/ParamsCommand.cpp" line="162"/>
         <source>error: params takes no arguments; use --family F</source>
         <translation>오류: params는 인수를 받지 않습니다. --family F를 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="170"/>
+        <location filename="../cli/ParamsCommand.cpp" line="170"/>
         <source>error: unknown family &quot;%1&quot;; known: %2</source>
         <translation>오류: 알 수 없는 제품군 &quot;%1&quot;; 알려진 제품군: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Label</source>
         <translation>표시 이름</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Address</source>
         <translation>주소</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Type</source>
         <translation>형식</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Unit</source>
         <translation>단위</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="193"/>
+        <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Allowed</source>
         <translation>허용</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="193"/>
+        <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Default</source>
         <translation>기본값</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="193"/>
+        <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Access</source>
         <translation>접근</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="193"/>
+        <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Group</source>
         <translation>그룹</translation>
     </message>
@@ -7865,42 +7901,42 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::PortsCommand</name>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="16"/>
+        <location filename="../cli/PortsCommand.cpp" line="16"/>
         <source>List serial ports and USB adapters</source>
         <translation>시리얼 포트와 USB 어댑터를 나열합니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="23"/>
+        <location filename="../cli/PortsCommand.cpp" line="23"/>
         <source>error: ports takes no arguments</source>
         <translation>오류: ports는 인수를 받지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="43"/>
+        <location filename="../cli/PortsCommand.cpp" line="43"/>
         <source>No serial ports found.</source>
         <translation>시리얼 포트가 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="47"/>
+        <location filename="../cli/PortsCommand.cpp" line="47"/>
         <source>Port</source>
         <translation>포트</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="48"/>
+        <location filename="../cli/PortsCommand.cpp" line="48"/>
         <source>Adapter</source>
         <translation>어댑터</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="49"/>
+        <location filename="../cli/PortsCommand.cpp" line="49"/>
         <source>Manufacturer</source>
         <translation>제조사</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="50"/>
+        <location filename="../cli/PortsCommand.cpp" line="50"/>
         <source>Serial no.</source>
         <translation>시리얼 번호</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="51"/>
+        <location filename="../cli/PortsCommand.cpp" line="51"/>
         <source>VID:PID</source>
         <translation>VID:PID</translation>
     </message>
@@ -7908,37 +7944,37 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="27"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="27"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>생산 모드(&amp;P) (출하 검사)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="30"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="30"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>출하 검사 스테이션의 작업자 화면. 다시 전환할 때까지 파라미터 편집 불가(Ctrl+Shift+P)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="33"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="33"/>
         <source>&amp;Full screen</source>
         <translation>전체 화면(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="49"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="49"/>
         <source>Production mode</source>
         <translation>생산 모드</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="50"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="50"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>제품 검사 중입니다. 엔지니어링 모드로 돌아가기 전에 검사를 취소(Esc)하거나 끝날 때까지 기다리십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="79"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="79"/>
         <source>Results database</source>
         <translation>결과 데이터베이스</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="80"/>
         <source>%1
 
 No unit can be tested until results can be recorded.</source>
@@ -7947,17 +7983,17 @@ No unit can be tested until results can be recorded.</source>
 결과를 기록할 수 있을 때까지 제품을 검사할 수 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="95"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="95"/>
         <source>A unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="96"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="96"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>제품 %1을(를) 검사 중입니다. 검사를 취소하고 %2하시겠습니까? 먼저 모터를 정지하며, 제품은 중지됨으로 기록됩니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="108"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="108"/>
         <source>cancelled to %1</source>
         <translation>%1하기 위해 취소함</translation>
     </message>
@@ -7965,47 +8001,47 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProductionOptions</name>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="31"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="31"/>
         <source>Start in production mode (end-of-line station) with this recipe.</source>
         <translation>이 레시피로 생산 모드(출하 검사 스테이션)로 시작합니다.</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="32"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="32"/>
         <source>RECIPE</source>
         <translation>RECIPE</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="33"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
         <source>Per-unit values (CSV by serial number) for production mode.</source>
         <translation>생산 모드용 제품별 값(시리얼 번호별 CSV).</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="33"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="35"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="35"/>
         <source>Results database for production mode: an SQLite file or postgresql://user@host/db.</source>
         <translation>생산 모드용 결과 데이터베이스: SQLite 파일 또는 postgresql://user@host/db.</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="36"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="36"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="37"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="37"/>
         <source>Start full screen.</source>
         <translation>전체 화면으로 시작합니다.</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="44"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="44"/>
         <source>--units and --results-db go with --production RECIPE</source>
         <translation>--units와 --results-db는 --production RECIPE와 함께 씁니다</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="54"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="54"/>
         <source>%1 cannot be run:
   %2</source>
         <translation>%1을(를) 실행할 수 없습니다:
@@ -8015,82 +8051,82 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="65"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="66"/>
         <source>Open recipe…</source>
         <translation>레시피 열기…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="66"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
         <source>Per-unit values…</source>
         <translation>제품별 값…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="69"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="70"/>
         <source>operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="72"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="73"/>
         <source>Recipe:</source>
         <translation>레시피:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="77"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="78"/>
         <source>Operator:</source>
         <translation>작업자:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="83"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="84"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>시리얼 번호를 스캔하거나 입력한 뒤 Enter</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="84"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
         <source>Cancel unit (Esc)</source>
         <translation>제품 취소 (Esc)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="102"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="103"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="102"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="103"/>
         <source>Now</source>
         <translation>현재</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="109"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
         <source>Time</source>
         <translation>시각</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="109"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
         <source>Serial</source>
         <translation>시리얼</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="109"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
         <source>Verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="109"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
         <source>Reason</source>
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="145"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="146"/>
         <source>READY</source>
         <translation>준비 완료</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="167"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="174"/>
         <source>Recipe not usable</source>
         <translation>레시피 사용 불가</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="168"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="175"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -8099,126 +8135,126 @@ No unit can be tested until results can be recorded.</source>
 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="180"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="187"/>
         <source>Open recipe</source>
         <translation>레시피 열기</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="180"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="187"/>
         <source>Recipes (*.json)</source>
         <translation>레시피 (*.json)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="187"/>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="193"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="194"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="200"/>
         <source>Per-unit values</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="188"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/ProductionView.cpp" line="200"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="207"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 개정 %2 — 드라이버 %n대</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="204"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="211"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;없음: 제품의 레시피를 여십시오&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="205"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="212"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>스테이션 %1 · 결과: %2 · 제품별 값: %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="207"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
         <source>loaded</source>
         <translation>불러옴</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="207"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="214"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="221"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>검사 %1 · 합격 %2 · 불합격 %3 · 직행률 %4 %</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="244"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
         <source>Per-unit value</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="245"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>드라이버 %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="258"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
         <source>NOT STARTED</source>
         <translation>시작 안 됨</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="274"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="281"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="275"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="282"/>
         <source>drive %1 (%2)</source>
         <translation>드라이버 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="276"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="283"/>
         <source>waiting</source>
         <translation>대기 중</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="279"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
         <source>TESTING</source>
         <translation>검사 중</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="279"/>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="300"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
         <source>Unit %1</source>
         <translation>제품 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="296"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="303"/>
         <source>NOT RECORDED: %1</source>
         <translation>기록 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="299"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="306"/>
         <source>PASS</source>
         <translation>합격</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="303"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="306"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
         <source>ABORTED</source>
         <translation>중지됨</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="317"/>
         <source>Motor not confirmed stopped</source>
         <translation>모터 정지 확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="311"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="318"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -8230,32 +8266,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="336"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="336"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>오프셋 %1에서 올바른 JSON이 아닙니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="340"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="340"/>
         <source>the top level must be a JSON object</source>
         <translation>최상위는 JSON 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="351"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="351"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot;가 비어 있습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="362"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="362"/>
         <source>must be an object</source>
         <translation>객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="364"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
         <source>name repeated</source>
         <translation>이름이 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="379"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="379"/>
         <source>%1: cannot open: %2</source>
         <translation>%1: 열 수 없습니다: %2</translation>
     </message>
@@ -8263,12 +8299,12 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Progress</name>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="74"/>
+        <location filename="../cli/ScanCommand.cpp" line="74"/>
         <source>scanning %1/%2 (%3 %), machine number %4, %5 found</source>
         <translation>스캔 중 %1/%2 (%3 %), 국번 %4, %5대 발견</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="89"/>
+        <location filename="../cli/ScanCommand.cpp" line="89"/>
         <source>scan: %1 % (%2 of %3 machine numbers), %4 found</source>
         <translation>스캔: %1 % (국번 %3개 중 %2개), %4대 발견</translation>
     </message>
@@ -8276,22 +8312,22 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::PtySimServer</name>
     <message>
-        <location filename="../main/sim/PtySimServer.cpp" line="49"/>
+        <location filename="../sim/PtySimServer.cpp" line="49"/>
         <source>cannot open a pseudo-terminal: %1</source>
         <translation>가상 터미널을 열 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../main/sim/PtySimServer.cpp" line="66"/>
+        <location filename="../sim/PtySimServer.cpp" line="66"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1이(가) 이미 있고 심볼릭 링크가 아닙니다. 교체하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/sim/PtySimServer.cpp" line="72"/>
+        <location filename="../sim/PtySimServer.cpp" line="72"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>심볼릭 링크 %1 -&gt; %2을(를) 만들 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/sim/PtySimServer.cpp" line="114"/>
+        <location filename="../sim/PtySimServer.cpp" line="114"/>
         <source>the port is plugged in: %1</source>
         <translation>포트가 연결되었습니다: %1</translation>
     </message>
@@ -8299,52 +8335,52 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Recipe</name>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="62"/>
+        <location filename="../model/eol/Recipe.cpp" line="62"/>
         <source>take communication priority</source>
         <translation>통신 우선으로 전환</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="64"/>
+        <location filename="../model/eol/Recipe.cpp" line="64"/>
         <source>select running data</source>
         <translation>운전 데이터 선택</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="66"/>
+        <location filename="../model/eol/Recipe.cpp" line="66"/>
         <source>set the speed command</source>
         <translation>속도 명령 설정</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="68"/>
+        <location filename="../model/eol/Recipe.cpp" line="68"/>
         <source>start</source>
         <translation>기동</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="70"/>
+        <location filename="../model/eol/Recipe.cpp" line="70"/>
         <source>wait for speed</source>
         <translation>속도 대기</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="72"/>
+        <location filename="../model/eol/Recipe.cpp" line="72"/>
         <source>hold and measure</source>
         <translation>유지 및 측정</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="74"/>
+        <location filename="../model/eol/Recipe.cpp" line="74"/>
         <source>check for alarms and warnings</source>
         <translation>알람·경고 확인</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="76"/>
+        <location filename="../model/eol/Recipe.cpp" line="76"/>
         <source>stop</source>
         <translation>정지</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="78"/>
+        <location filename="../model/eol/Recipe.cpp" line="78"/>
         <source>read and compare</source>
         <translation>읽기 및 비교</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="106"/>
+        <location filename="../model/eol/Recipe.cpp" line="106"/>
         <source>position %1 (machine number %2)</source>
         <translation>위치 %1 (국번 %2)</translation>
     </message>
@@ -8352,17 +8388,17 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeBuilder</name>
     <message>
-        <location filename="../main/model/eol/RecipeBuilder.cpp" line="208"/>
+        <location filename="../model/eol/RecipeBuilder.cpp" line="208"/>
         <source>%1: unknown family &quot;%2&quot;</source>
         <translation>%1: 알 수 없는 제품군 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeBuilder.cpp" line="228"/>
+        <location filename="../model/eol/RecipeBuilder.cpp" line="228"/>
         <source>%1: %2 holds a value the profile does not allow: %3</source>
         <translation>%1: %2에 프로파일이 허용하지 않는 값이 있습니다: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeBuilder.cpp" line="261"/>
+        <location filename="../model/eol/RecipeBuilder.cpp" line="261"/>
         <source>no drive to make a recipe of</source>
         <translation>레시피를 만들 드라이버가 없습니다</translation>
     </message>
@@ -8370,160 +8406,160 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeChecker</name>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="61"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="61"/>
         <source> (for %1)</source>
         <translation> (%1용)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="93"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="93"/>
         <source>the recipe names no product</source>
         <translation>레시피에 제품 이름이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="95"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="95"/>
         <source>the recipe has no revision</source>
         <translation>레시피에 개정이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="97"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="97"/>
         <source>the recipe names no drive</source>
         <translation>레시피에 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="104"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="104"/>
         <source>%1: machine number %2 is already position %3; every drive of a unit needs its own machine number</source>
         <translation>%1: 국번 %2은(는) 이미 위치 %3입니다. 제품의 각 드라이버에는 서로 다른 국번이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="126"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="126"/>
         <source>%1: unknown family &quot;%2&quot;; known: %3</source>
         <translation>%1: 알 수 없는 제품군 &quot;%2&quot;; 알려진 제품군: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="132"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="132"/>
         <source>%1: a %2 takes machine numbers %3–%4</source>
         <translation>%1: %2의 국번은 %3–%4입니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="145"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="145"/>
         <source>%1: the %2 has no variant &quot;%3&quot;; known: %4</source>
         <translation>%1: %2에 기종 &quot;%3&quot;이(가) 없습니다. 알려진 기종: %4</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="147"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="147"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="149"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="149"/>
         <source>%1: variant &quot;%2&quot; is named twice</source>
         <translation>%1: 기종 &quot;%2&quot;이(가) 두 번 지정되었습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="162"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="162"/>
         <source>%1: firmware version &quot;%2&quot; is not a version as the drive reports it (major.minor, e.g. &quot;1.5&quot;)</source>
         <translation>%1: 펌웨어 버전 &quot;%2&quot;이(가) 드라이버가 알려주는 버전 형식이 아닙니다(major.minor, 예: &quot;1.5&quot;)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="175"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="175"/>
         <source>the %1 has no setting &quot;%2&quot;</source>
         <translation>%1에 설정 &quot;%2&quot;이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="177"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="177"/>
         <source>%1 is not a setting a recipe can write</source>
         <translation>%1은(는) 레시피로 쓸 수 있는 설정이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="179"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="179"/>
         <source>%1 decides how the drive communicates; a recipe cannot change it, or the station would lose the drive in the middle of the run</source>
         <translation>%1은(는) 드라이버의 통신 방식을 정합니다. 레시피로 바꿀 수 없습니다. 바꾸면 검사 도중 스테이션이 드라이버와 통신할 수 없게 됩니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="199"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="199"/>
         <source>%1: setting %2</source>
         <translation>%1: 설정 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="204"/>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="269"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="204"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="269"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="210"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="210"/>
         <source>%1 is given twice</source>
         <translation>%1이(가) 두 번 지정되었습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="218"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="218"/>
         <source>%1: what it allows depends on %2, which the recipe does not set; add %2 to the settings</source>
         <translation>%1: 허용 범위가 %2에 따라 달라지는데 레시피가 이를 설정하지 않습니다. 설정에 %2을(를) 추가하십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="227"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="227"/>
         <source>%1 decides what %2 allows; set %2 in the recipe too, or the drive may be left with a value that is no longer valid</source>
         <translation>%1은(는) %2의 허용 범위를 정합니다. 레시피에서 %2도 설정하십시오. 그렇지 않으면 드라이버에 더 이상 유효하지 않은 값이 남을 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="243"/>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="311"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="243"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="311"/>
         <source>%1: unit &quot;%2&quot;, but the drive&apos;s value is in &quot;%3&quot;</source>
         <translation>%1: 단위가 &quot;%2&quot;이지만 드라이버 값의 단위는 &quot;%3&quot;입니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="264"/>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="364"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="264"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="364"/>
         <source>%1: per-unit value %2</source>
         <translation>%1: 제품별 값 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="275"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="275"/>
         <source>%1 is given twice (as a setting or as a per-unit value)</source>
         <translation>%1이(가) 두 번 지정되었습니다(설정 또는 제품별 값으로)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="281"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="281"/>
         <source>%1: the range&apos;s lowest value %2 is above its highest value %3</source>
         <translation>%1: 범위의 최솟값 %2이(가) 최댓값 %3보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="302"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="302"/>
         <source>%1: what it allows depends on %2, which the recipe does not set</source>
         <translation>%1: 허용 범위가 레시피에서 설정하지 않는 %2에 따라 달라집니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="309"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="309"/>
         <source>%1 is not a number; a per-unit value needs a numeric setting</source>
         <translation>%1은(는) 숫자가 아닙니다. 제품별 값에는 숫자 설정이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="314"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="314"/>
         <source>%1: range %2–%3%4</source>
         <translation>%1: 범위 %2–%3%4</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="320"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="320"/>
         <source>%1 is outside what the drive allows: %2%3</source>
         <translation>%1이(가) 드라이버 허용 범위를 벗어납니다: %2%3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="332"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="332"/>
         <source>%1 includes values the drive does not allow; allowed: %2%3</source>
         <translation>%1에 드라이버가 허용하지 않는 값이 포함되어 있습니다. 허용: %2%3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="357"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="357"/>
         <source>%1: per-unit value %2: %3%4 is outside the recipe&apos;s range %5–%6%4</source>
         <translation>%1: 제품별 값 %2: %3%4이(가) 레시피 범위 %5–%6%4을(를) 벗어납니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="368"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="368"/>
         <source>%1: the recipe has no per-unit value %2</source>
         <translation>%1: 레시피에 제품별 값 %2이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="371"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="371"/>
         <source>the recipe has no drive at machine number %1</source>
         <translation>레시피에 국번 %1의 드라이버가 없습니다</translation>
     </message>
@@ -8531,218 +8567,218 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeEditor</name>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="46"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="46"/>
         <source>Recipe editor</source>
         <translation>레시피 편집기</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="66"/>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="403"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="66"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="403"/>
         <source>Revision:</source>
         <translation>개정:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="68"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="68"/>
         <source>Product:</source>
         <translation>제품:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="69"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="69"/>
         <source>Description:</source>
         <translation>설명:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="70"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
         <source>Position:</source>
         <translation>위치:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="107"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="107"/>
         <source>New from drives on the bus…</source>
         <translation>버스의 드라이버로 새로 만들기…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="108"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
         <source>New from backup file…</source>
         <translation>백업 파일로 새로 만들기…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="109"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
         <source>Open…</source>
         <translation>열기…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>Save</source>
         <translation>저장</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>Save as…</source>
         <translation>다른 이름으로 저장…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="152"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="152"/>
         <source>%1: %2%3</source>
         <translation>%1: %2%3</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="155"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="155"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="224"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="224"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>버스에 있는 기준 제품의 드라이버나 그 백업 파일로 레시피를 만들거나, 레시피를 여십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="228"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="228"/>
         <source>the recipe is empty</source>
         <translation>레시피가 비어 있습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="242"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="242"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="246"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="246"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>레시피가 검사를 통과했습니다: 저장하고 실행할 수 있습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="249"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>문제 %n건: 수정할 때까지 레시피를 저장할 수 없습니다.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="261"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="261"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>레시피가 검사를 통과하지 못했습니다(문제 %n건). 아무것도 저장하지 않았습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="277"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="277"/>
         <source>cannot read %1: %2</source>
         <translation>%1을(를) 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="289"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="289"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1은(는) OpenTOP 레시피 파일이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="296"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
         <source>Opened %1</source>
         <translation>%1 열림</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="297"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="297"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>%1을(를) 열었지만 그대로는 불러올 수 없습니다(%2). 저장하면 검사 후 다시 서명합니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="317"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="317"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>%1에서 새 레시피를 만들었습니다: 설정과 검사 단계의 한계값을 확인한 뒤 저장하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="329"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="329"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>국번 %1은(는) 버스에 알려진 드라이버가 아닙니다. 먼저 버스를 스캔하십시오</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="334"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>기준 제품의 설정을 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="334"/>
         <source>Cancel</source>
         <translation>취소</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="349"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="349"/>
         <source>cancelled: no recipe was made</source>
         <translation>취소됨: 레시피를 만들지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="375"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="375"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="388"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="388"/>
         <source>Open recipe</source>
         <translation>레시피 열기</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="389"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="389"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>레시피 (*.json);;모든 파일 (*)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="398"/>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="403"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="398"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="403"/>
         <source>New recipe</source>
         <translation>새 레시피</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="398"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="398"/>
         <source>Product name:</source>
         <translation>제품 이름:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="411"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="411"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>기준 제품의 백업 파일</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="412"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="412"/>
         <source>Backups (*.json)</source>
         <translation>백업 (*.json)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="424"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="424"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>버스에 드라이버가 없습니다: 먼저 연결하고 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="432"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="432"/>
         <source>New recipe from drives</source>
         <translation>드라이버로 새 레시피 만들기</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="433"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="433"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>기준 제품 드라이버의 국번 (발견: %1):</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="443"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="443"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot;은(는) 국번(1–247)이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="452"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="452"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>버스의 드라이버로 새 레시피를 만들었습니다: 설정과 검사 단계의 한계값을 확인한 뒤 저장하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="463"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="463"/>
         <source>Save recipe</source>
         <translation>레시피 저장</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="465"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="465"/>
         <source>Recipes (*.json)</source>
         <translation>레시피 (*.json)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="470"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="470"/>
         <source>Saved and signed: %1</source>
         <translation>저장 및 서명 완료: %1</translation>
     </message>
@@ -8750,17 +8786,17 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../main/model/eol/RecipeFile.cpp" line="250"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="250"/>
         <source>cannot read %1: %2</source>
         <translation>%1을(를) 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeFile.cpp" line="257"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="257"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1이(가) 레시피 파일의 최대 크기 %2 MB보다 큽니다. 레시피 파일이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeFile.cpp" line="265"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="265"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -8768,153 +8804,153 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeParser</name>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="45"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="45"/>
         <source>not a JSON file: %1 at byte %2</source>
         <translation>JSON 파일이 아닙니다: 바이트 %2에서 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="49"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="49"/>
         <source>not an OpenTOP recipe file: the JSON is not an object</source>
         <translation>OpenTOP 레시피 파일이 아닙니다: JSON이 객체가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="70"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="70"/>
         <source>&quot;positions&quot;: the recipe names no drive</source>
         <translation>&quot;positions&quot;: 레시피에 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="75"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="75"/>
         <source>%1: must be an object</source>
         <translation>%1: 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="92"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="92"/>
         <source>not an OpenTOP recipe file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>OpenTOP 레시피 파일이 아닙니다(&quot;format&quot;이 &quot;%2&quot;이(가) 아니라 &quot;%1&quot;입니다)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="94"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="94"/>
         <source>not an OpenTOP recipe file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>OpenTOP 레시피 파일이 아닙니다(&quot;format&quot;: &quot;%1&quot; 없음)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="99"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="99"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot;은 1 이상의 정수여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="101"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="101"/>
         <source>written by a newer OpenTOP (recipe format version %1); this version reads recipe format version %2</source>
         <translation>더 새로운 OpenTOP에서 저장한 파일입니다(레시피 형식 버전 %1). 이 버전은 레시피 형식 버전 %2을(를) 읽습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="107"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="107"/>
         <source>the recipe has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>레시피에 체크섬이 없습니다(&quot;checksum&quot;: &quot;sha256:…&quot;). OpenTOP에서 저장한 파일이 아니거나 저장 후 변경되었습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="113"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="113"/>
         <source>the recipe was changed after it was written (checksum mismatch); open and save it with OpenTOP to accept the change</source>
         <translation>레시피가 저장된 후 변경되었습니다(체크섬 불일치). 변경을 승인하려면 OpenTOP에서 열어 저장하십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="130"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="130"/>
         <source>%1: &quot;machineNumber&quot; must be a machine number 1–247</source>
         <translation>%1: &quot;machineNumber&quot;는 국번 1–247이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="132"/>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="208"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="132"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="208"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="176"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="176"/>
         <source>%1 (%2): &quot;value&quot; must be a number or a text</source>
         <translation>%1 (%2): &quot;value&quot;는 숫자 또는 텍스트여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="192"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="192"/>
         <source>%1 (%2): &quot;source&quot; must be &quot;csv&quot; or &quot;operator&quot;, not &quot;%3&quot;</source>
         <translation>%1 (%2): &quot;source&quot;는 &quot;%3&quot;이(가) 아니라 &quot;csv&quot; 또는 &quot;operator&quot;여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="205"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="205"/>
         <source>%1: unknown step type &quot;%2&quot;; known: %3</source>
         <translation>%1: 알 수 없는 단계 유형 &quot;%2&quot;; 알려진 유형: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="219"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="219"/>
         <source>%1: &quot;spno&quot; must be a running data number such as 2</source>
         <translation>%1: &quot;spno&quot;는 2와 같은 운전 데이터 번호여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="232"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="232"/>
         <source>%1: &quot;direction&quot; must be &quot;cw&quot; or &quot;ccw&quot;</source>
         <translation>%1: &quot;direction&quot;은 &quot;cw&quot; 또는 &quot;ccw&quot;여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="276"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="276"/>
         <source>%1: give either &quot;equals&quot; or limits, not both</source>
         <translation>%1: &quot;equals&quot;와 한계값 중 하나만 주십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="282"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="282"/>
         <source>%1: unknown step</source>
         <translation>%1: 알 수 없는 단계</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="298"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="298"/>
         <source>%1: &quot;unit&quot; must be a text (&quot;&quot; for a value without a unit)</source>
         <translation>%1: &quot;unit&quot;은 텍스트여야 합니다(단위가 없는 값은 &quot;&quot;)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="301"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="301"/>
         <source>%1: a limit needs &quot;lower&quot;, &quot;upper&quot; or both</source>
         <translation>%1: 한계값에는 &quot;lower&quot;, &quot;upper&quot; 또는 둘 다 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="309"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="309"/>
         <source>%1: unknown key &quot;%2&quot;; allowed: %3</source>
         <translation>%1: 알 수 없는 키 &quot;%2&quot;; 허용: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="323"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="323"/>
         <source>%1&quot;%2&quot; must be a non-empty text</source>
         <translation>%1&quot;%2&quot;은(는) 비어 있지 않은 텍스트여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="324"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="324"/>
         <source>%1&quot;%2&quot; must be a text</source>
         <translation>%1&quot;%2&quot;은(는) 텍스트여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="336"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="336"/>
         <source>%1: &quot;%2&quot; must be a list of texts</source>
         <translation>%1: &quot;%2&quot;은(는) 텍스트 목록이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="339"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="339"/>
         <source>%1: &quot;%2&quot; must be a list of non-empty texts</source>
         <translation>%1: &quot;%2&quot;은(는) 비어 있지 않은 텍스트의 목록이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="349"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="349"/>
         <source>%1: &quot;%2&quot; must be a number</source>
         <translation>%1: &quot;%2&quot;은(는) 숫자여야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="375"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="375"/>
         <source>%1&quot;%2&quot; must be a list</source>
         <translation>%1&quot;%2&quot;은(는) 목록이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="378"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="378"/>
         <source>%1&quot;%2&quot; has %3 entries; at most %4 are allowed</source>
         <translation>%1&quot;%2&quot;에 항목이 %3개 있습니다. 최대 %4개까지 허용됩니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="384"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="384"/>
         <source>%1&quot;%2&quot;: every entry must be an object</source>
         <translation>%1&quot;%2&quot;: 모든 항목은 객체여야 합니다</translation>
     </message>
@@ -8922,151 +8958,151 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipePositionForm</name>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="125"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="125"/>
         <source>every variant of the family, e.g. dbu200, dbu400</source>
         <translation>제품군의 모든 기종, 예: dbu200, dbu400</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="127"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="127"/>
         <source>any firmware, e.g. 1.5, 1.6</source>
         <translation>모든 펌웨어, 예: 1.5, 1.6</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Setting</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Unit</source>
         <translation>단위</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Min</source>
         <translation>최소</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Max</source>
         <translation>최대</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Source</source>
         <translation>출처</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="139"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="139"/>
         <source>Add per-unit value…</source>
         <translation>제품별 값 추가…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="139"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="139"/>
         <source>Add setting…</source>
         <translation>설정 추가…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="140"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="140"/>
         <source>Remove</source>
         <translation>제거</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="153"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="153"/>
         <source>Settings</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="154"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="154"/>
         <source>Per-unit values</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="155"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="155"/>
         <source>Test steps (JSON)</source>
         <translation>검사 단계 (JSON)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="158"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
         <source>Machine number:</source>
         <translation>국번:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="159"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
         <source>Name:</source>
         <translation>이름:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="160"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="160"/>
         <source>Family:</source>
         <translation>제품군:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="161"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="161"/>
         <source>Allowed variants:</source>
         <translation>허용 기종:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="162"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="162"/>
         <source>Allowed firmware:</source>
         <translation>허용 펌웨어:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="188"/>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="352"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="188"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="352"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="232"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="232"/>
         <source>CSV file</source>
         <translation>CSV 파일</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="233"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="233"/>
         <source>typed by the operator</source>
         <translation>작업자 입력</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="281"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="281"/>
         <source>test steps: %1 at character %2</source>
         <translation>검사 단계: 문자 %2에서 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="283"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="283"/>
         <source>test steps: must be a JSON array of steps: [ {...}, ... ]</source>
         <translation>검사 단계: 단계의 JSON 배열이어야 합니다: [ {...}, ... ]</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="294"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="294"/>
         <source>(unknown: %1)</source>
         <translation>(알 수 없음: %1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="357"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="357"/>
         <source>Add a per-unit value</source>
         <translation>제품별 값 추가</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="357"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="357"/>
         <source>Add a setting</source>
         <translation>설정 추가</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="358"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="358"/>
         <source>Setting:</source>
         <translation>설정:</translation>
     </message>
@@ -9074,143 +9110,143 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeStepChecker</name>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="22"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="22"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="40"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="40"/>
         <source>a %1 cannot do this step</source>
         <translation>%1에서는 이 단계를 할 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="53"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="53"/>
         <source>%1, step %2 (%3)</source>
         <translation>%1, 단계 %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="63"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="63"/>
         <source>the drive takes motion commands only with communication priority; put a priority step before it</source>
         <translation>드라이버는 통신 우선일 때만 운전 명령을 받습니다. 앞에 우선순위 단계를 넣으십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="71"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="71"/>
         <source>the motor is not running here; put a start step before it</source>
         <translation>여기서는 모터가 운전 중이 아닙니다. 앞에 기동 단계를 넣으십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="82"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="82"/>
         <source>%1: the steps leave the motor running; end them with a stop step</source>
         <translation>%1: 단계가 끝나도 모터가 운전 중입니다. 마지막에 정지 단계를 넣으십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="92"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="92"/>
         <source>%1 %2 s is not sane; give more than 0 s and at most %3 s</source>
         <translation>%1 %2 s은(는) 비정상적인 값입니다. 0 s보다 크고 %3 s 이하로 주십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="105"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="105"/>
         <source>unit &quot;%1&quot;, but %2 is measured in &quot;%3&quot;</source>
         <translation>단위가 &quot;%1&quot;이지만 %2은(는) &quot;%3&quot;(으)로 측정됩니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="129"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="129"/>
         <source>the profile&apos;s selection parameter is missing</source>
         <translation>프로파일의 선택 파라미터가 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="131"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="131"/>
         <source>running data %1: %2</source>
         <translation>운전 데이터 %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="146"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="146"/>
         <source>what %1 means depends on %2, which the recipe does not set; add it to the settings</source>
         <translation>%1의 의미가 %2에 따라 달라지는데 레시피가 이를 설정하지 않습니다. 설정에 추가하십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="154"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="154"/>
         <source>a speed of 0 stops the motor; use a stop step</source>
         <translation>속도 0은 모터를 정지시킵니다. 정지 단계를 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="168"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="168"/>
         <source>unit &quot;%1&quot;, but with these settings %2 is in &quot;%3&quot;</source>
         <translation>단위가 &quot;%1&quot;이지만 이 설정에서는 %2의 단위가 &quot;%3&quot;입니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="185"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="185"/>
         <source>a %1 does not report its target speed; give the target</source>
         <translation>%1은(는) 목표 속도를 알려주지 않습니다. 목표값을 주십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="187"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="187"/>
         <source>the target speed must be above 0</source>
         <translation>목표 속도는 0보다 커야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="190"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="190"/>
         <source>the tolerance %1 must be above 0 and below the target speed</source>
         <translation>허용 오차 %1은(는) 0보다 크고 목표 속도보다 작아야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="194"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="194"/>
         <source>the time to reach the speed</source>
         <translation>속도 도달 시간</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="198"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="198"/>
         <source>the hold time</source>
         <translation>유지 시간</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="200"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="200"/>
         <source>the step measures nothing; give limits</source>
         <translation>이 단계는 아무것도 측정하지 않습니다. 한계값을 주십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="208"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="208"/>
         <source>the margin</source>
         <translation>여유 시간</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="211"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="211"/>
         <source>a %1 has no deceleration time setting to wait for; give the deceleration (0 s when it brakes at once)</source>
         <translation>%1에는 기다릴 감속 시간 설정이 없습니다. 감속 시간을 주십시오(즉시 브레이크가 걸리면 0 s)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="217"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="217"/>
         <source>the deceleration time %1 s is not sane; give 0–%2 s</source>
         <translation>감속 시간 %1 s은(는) 비정상적인 값입니다. 0–%2 s로 주십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="232"/>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="274"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="232"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="274"/>
         <source>the %1 has no readable value &quot;%2&quot;</source>
         <translation>%1에 읽을 수 있는 값 &quot;%2&quot;이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="237"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="237"/>
         <source>%1 is not a number</source>
         <translation>%1은(는) 숫자가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="247"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="247"/>
         <source>%1: &quot;%2&quot; is not a statistic; use min, mean or max</source>
         <translation>%1: &quot;%2&quot;은(는) 통계값이 아닙니다. min, mean 또는 max를 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="254"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="254"/>
         <source>%1: the limit&apos;s unit is &quot;%2&quot;, but the value is measured in &quot;%3&quot;</source>
         <translation>%1: 한계값의 단위는 &quot;%2&quot;이지만 값은 &quot;%3&quot;(으)로 측정됩니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="261"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="261"/>
         <source>%1: the lower limit %2 %4 is above the upper limit %3 %4</source>
         <translation>%1: 하한값 %2 %4이(가) 상한값 %3 %4보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="283"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="283"/>
         <source>%1 is a number; compare it with lower and upper limits</source>
         <translation>%1은(는) 숫자입니다. 하한값·상한값과 비교하십시오</translation>
     </message>
@@ -9218,42 +9254,42 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreChoice</name>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
         <source>Drive in file / setting</source>
         <translation>파일의 드라이버 / 설정</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
         <source>Value in file</source>
         <translation>파일의 값</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
         <source>Restore to</source>
         <translation>복원 대상</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="54"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="54"/>
         <source>(do not restore)</source>
         <translation>(복원 안 함)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="58"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="58"/>
         <source>Drive %1 (%2)</source>
         <translation>드라이버 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="117"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="117"/>
         <source>Two drives of the file would be restored to drive %1.</source>
         <translation>파일의 드라이버 두 대가 드라이버 %1에 복원됩니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="122"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="122"/>
         <source>Drive %1 is not on the bus (or not identified).</source>
         <translation>드라이버 %1이(가) 버스에 없습니다(또는 식별되지 않음).</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="134"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="134"/>
         <source>Nothing chosen: tick at least one setting of a drive with a target.</source>
         <translation>선택한 항목 없음: 대상이 있는 드라이버의 설정을 하나 이상 체크하십시오.</translation>
     </message>
@@ -9261,123 +9297,123 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreCommand</name>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="36"/>
+        <location filename="../cli/RestoreCommand.cpp" line="36"/>
         <source>Show what a backup file would change on its drives; with --yes write it, verified</source>
         <translation>백업 파일이 드라이버에서 바꿀 내용을 표시합니다. --yes를 주면 쓰고 검증합니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="41"/>
+        <location filename="../cli/RestoreCommand.cpp" line="41"/>
         <source>Restore only these drives of the file, e.g. 1,5-7.</source>
         <translation>파일에서 이 드라이버만 복원합니다. 예: 1,5-7.</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="42"/>
+        <location filename="../cli/RestoreCommand.cpp" line="42"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="43"/>
+        <location filename="../cli/RestoreCommand.cpp" line="43"/>
         <source>Read the drives and show the plan; write nothing.</source>
         <translation>드라이버를 읽고 계획을 표시합니다. 아무것도 쓰지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="44"/>
+        <location filename="../cli/RestoreCommand.cpp" line="44"/>
         <source>Write the plan (without it restore only shows it).</source>
         <translation>계획을 씁니다(없으면 restore는 계획만 표시).</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="80"/>
+        <location filename="../cli/RestoreCommand.cpp" line="80"/>
         <source>%1: the drive&apos;s settings were not read; nothing compared, nothing written</source>
         <translation>%1: 드라이버 설정을 읽지 못했습니다. 비교하지 않았고 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="86"/>
-        <location filename="../main/cli/RestoreCommand.cpp" line="124"/>
+        <location filename="../cli/RestoreCommand.cpp" line="86"/>
+        <location filename="../cli/RestoreCommand.cpp" line="124"/>
         <source>note: %1</source>
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="91"/>
         <source>parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="91"/>
         <source>file value</source>
         <translation>파일 값</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="91"/>
         <source>device value</source>
         <translation>장치 값</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="92"/>
+        <location filename="../cli/RestoreCommand.cpp" line="92"/>
         <source>result</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="92"/>
+        <location filename="../cli/RestoreCommand.cpp" line="92"/>
         <source>action</source>
         <translation>동작</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="106"/>
+        <location filename="../cli/RestoreCommand.cpp" line="106"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>쓰기 및 검증 %1, 변경 없음 %2, 실패 %3, 시도 안 함 %4</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="112"/>
+        <location filename="../cli/RestoreCommand.cpp" line="112"/>
         <source>, %1 not confirmed</source>
         <translation>, 확인 안 됨 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="114"/>
+        <location filename="../cli/RestoreCommand.cpp" line="114"/>
         <source>; %1 of %2 store commands written</source>
         <translation>; 저장 명령 %2개 중 %1개 씀</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="149"/>
+        <location filename="../cli/RestoreCommand.cpp" line="149"/>
         <source>error: name one backup file: restore FILE [--ids LIST] [--yes]</source>
         <translation>오류: 백업 파일 하나를 지정하십시오: restore FILE [--ids LIST] [--yes]</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="163"/>
+        <location filename="../cli/RestoreCommand.cpp" line="163"/>
         <source>error: --ids: %1</source>
         <translation>오류: --ids: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="168"/>
+        <location filename="../cli/RestoreCommand.cpp" line="168"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>오류: %1에 국번 %2인 드라이버가 없습니다. 포함된 드라이버: %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="191"/>
+        <location filename="../cli/RestoreCommand.cpp" line="191"/>
         <source>error: %1; nothing written</source>
         <translation>오류: %1; 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="199"/>
+        <location filename="../cli/RestoreCommand.cpp" line="199"/>
         <source>error: %1: %2</source>
         <translation>오류: %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="228"/>
+        <location filename="../cli/RestoreCommand.cpp" line="228"/>
         <source>not attempted</source>
         <translation>시도 안 함</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="231"/>
+        <location filename="../cli/RestoreCommand.cpp" line="231"/>
         <source>%1: not attempted</source>
         <translation>%1: 시도 안 함</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="253"/>
+        <location filename="../cli/RestoreCommand.cpp" line="253"/>
         <source>dry run: nothing written</source>
         <translation>시험 실행(dry run): 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="254"/>
+        <location filename="../cli/RestoreCommand.cpp" line="254"/>
         <source>nothing written; add --yes to write</source>
         <translation>아무것도 쓰지 않았습니다. 쓰려면 --yes를 추가하십시오</translation>
     </message>
@@ -9385,200 +9421,200 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreDialog</name>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="35"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="35"/>
         <source>&amp;Preview</source>
         <translation>미리 보기(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="36"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="36"/>
         <source>&amp;Write to drives…</source>
         <translation>드라이버에 쓰기(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="37"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
         <source>&amp;Cancel</source>
         <translation>취소(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="38"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
         <source>&amp;Save report…</source>
         <translation>보고서 저장(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="40"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="40"/>
         <source>Restore from a backup file</source>
         <translation>백업 파일에서 복원</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="42"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="42"/>
         <source>No file chosen</source>
         <translation>선택한 파일 없음</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="43"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="43"/>
         <source>&amp;Choose file…</source>
         <translation>파일 선택(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="45"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="45"/>
         <source>File:</source>
         <translation>파일:</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="56"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="56"/>
         <source>Read the drives and show what would change; writes nothing</source>
         <translation>드라이버를 읽고 바뀔 내용을 표시합니다. 아무것도 쓰지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="57"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="57"/>
         <source>Write the previewed changes, each verified by reading it back</source>
         <translation>미리 본 변경 사항을 쓰고, 각각 다시 읽어 검증합니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="58"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
         <source>Stop after the write in progress has been verified</source>
         <translation>진행 중인 쓰기의 검증이 끝나면 멈춥니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="59"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
         <source>Save the report as text, or as CSV when the name ends in .csv</source>
         <translation>보고서를 텍스트로 저장합니다. 이름이 .csv로 끝나면 CSV로 저장합니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="60"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
         <source>C&amp;lose</source>
         <translation>닫기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="96"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="96"/>
         <source>%1: no such file</source>
         <translation>%1: 파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="101"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="101"/>
         <source>the file could not be read</source>
         <translation>파일을 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="102"/>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="186"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="102"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="186"/>
         <source>Refused, nothing will be written: %1</source>
         <translation>거부됨, 아무것도 쓰지 않습니다: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="107"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="107"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>파일에 드라이버 %n대가 있습니다. 복원할 항목을 선택한 뒤 미리 보기를 누르십시오.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="148"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="148"/>
         <source>Refused, nothing written:</source>
         <translation>거부됨, 아무것도 쓰지 않았습니다:</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="150"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="150"/>
         <source>Drive %1 from %2: %3</source>
         <translation>드라이버 %1 (%2에서): %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="185"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="185"/>
         <source>Choose a backup file first.</source>
         <translation>먼저 백업 파일을 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="227"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="227"/>
         <source>not attempted</source>
         <translation>시도 안 함</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
         <source>Reading drive %1…</source>
         <translation>드라이버 %1 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
         <source>Writing drive %1…</source>
         <translation>드라이버 %1 쓰는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="239"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="239"/>
         <source>drive %1: %2 (%v of %m)</source>
         <translation>드라이버 %1: %2 (%m 중 %v)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="267"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="267"/>
         <source>Stopping after the write in progress has been verified…</source>
         <translation>진행 중인 쓰기의 검증이 끝나면 멈추는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="282"/>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="373"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="282"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="373"/>
         <source>Drive %1: %2</source>
         <translation>드라이버 %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="285"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="285"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>쓸 설정 %n개</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="292"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="292"/>
         <source>  Note: %1</source>
         <translation>  참고: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="295"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="295"/>
         <source>Nothing written yet. Write to drives to apply.</source>
         <translation>아직 아무것도 쓰지 않았습니다. 적용하려면 드라이버에 쓰기를 누르십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="296"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="296"/>
         <source>Nothing written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="354"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="354"/>
         <source>Restore from backup file</source>
         <translation>백업 파일에서 복원</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="355"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="355"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 백업 (*.json);;모든 파일 (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="375"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>설정 %n개를 드라이버 %1에 쓰고 각각 다시 읽어 검증하시겠습니까?</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
         <source>Write to drives</source>
         <translation>드라이버에 쓰기</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
         <source>&amp;Write</source>
         <translation>쓰기(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="385"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="385"/>
         <source>Save restore report</source>
         <translation>복원 보고서 저장</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="386"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>텍스트 (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="391"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="391"/>
         <source>Could not save %1: %2</source>
         <translation>%1을(를) 저장할 수 없습니다: %2</translation>
     </message>
@@ -9586,109 +9622,109 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestorePlan</name>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="69"/>
+        <location filename="../model/files/RestorePlan.cpp" line="69"/>
         <source>the file holds a %1 drive (%2), but machine number %3 is a %4 drive; nothing written</source>
         <translation>파일에는 %1 드라이버(%2)가 있지만 국번 %3은(는) %4 드라이버입니다. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="76"/>
+        <location filename="../model/files/RestorePlan.cpp" line="76"/>
         <source>the file is from a %1 (%2), but machine number %3 is a %4 (%5); their allowed values differ, nothing written</source>
         <translation>파일은 %1(%2)의 것이지만 국번 %3은(는) %4(%5)입니다. 허용 값이 다르므로 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="83"/>
+        <location filename="../model/files/RestorePlan.cpp" line="83"/>
         <source>the drive does not tell its variant: every value must suit all variants (name it with --variant to use its own ranges)</source>
         <translation>드라이버가 기종을 알려주지 않습니다: 모든 값이 모든 기종에 맞아야 합니다(해당 기종의 범위를 쓰려면 --variant로 지정)</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="152"/>
+        <location filename="../model/files/RestorePlan.cpp" line="152"/>
         <source>%1: the value cannot be written exactly</source>
         <translation>%1: 값을 정확하게 쓸 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="165"/>
+        <location filename="../model/files/RestorePlan.cpp" line="165"/>
         <source>store commands are always written: what the drive has stored cannot be read back, only what it uses now</source>
         <translation>저장 명령은 항상 씁니다: 드라이버가 저장한 값은 다시 읽을 수 없고, 현재 사용 중인 값만 읽을 수 있습니다</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/model/files/RestorePlan.cpp" line="176"/>
+        <location filename="../model/files/RestorePlan.cpp" line="176"/>
         <source>%n value(s) of the file may not be written to this drive; nothing written</source>
         <translation>
             <numerusform>파일의 값 %n개는 이 드라이버에 쓸 수 없습니다. 아무것도 쓰지 않았습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="238"/>
+        <location filename="../model/files/RestorePlan.cpp" line="238"/>
         <source>keep</source>
         <translation>유지</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="240"/>
+        <location filename="../model/files/RestorePlan.cpp" line="240"/>
         <source>write</source>
         <translation>쓰기</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="242"/>
+        <location filename="../model/files/RestorePlan.cpp" line="242"/>
         <source>store</source>
         <translation>저장</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="253"/>
+        <location filename="../model/files/RestorePlan.cpp" line="253"/>
         <source>unchanged</source>
         <translation>변경 없음</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="255"/>
         <source>written</source>
         <translation>쓰기 완료</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="255"/>
         <source>written and verified</source>
         <translation>쓰기 및 검증 완료</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="257"/>
+        <location filename="../model/files/RestorePlan.cpp" line="257"/>
         <source>failed: %1</source>
         <translation>실패: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="259"/>
+        <location filename="../model/files/RestorePlan.cpp" line="259"/>
         <source>not attempted</source>
         <translation>시도 안 함</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="261"/>
+        <location filename="../model/files/RestorePlan.cpp" line="261"/>
         <source>not confirmed (%1): the drive may or may not hold it; run the restore again to read it back</source>
         <translation>확인 안 됨(%1): 드라이버에 값이 들어갔는지 알 수 없습니다. 복원을 다시 실행하여 다시 읽으십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="286"/>
+        <location filename="../model/files/RestorePlan.cpp" line="286"/>
         <source>planned</source>
         <translation>계획됨</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="288"/>
+        <location filename="../model/files/RestorePlan.cpp" line="288"/>
         <source>restored</source>
         <translation>복원됨</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="290"/>
+        <location filename="../model/files/RestorePlan.cpp" line="290"/>
         <source>refused</source>
         <translation>거부됨</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="292"/>
+        <location filename="../model/files/RestorePlan.cpp" line="292"/>
         <source>communication failure</source>
         <translation>통신 실패</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="294"/>
+        <location filename="../model/files/RestorePlan.cpp" line="294"/>
         <source>verification mismatch</source>
         <translation>검증 불일치</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="296"/>
+        <location filename="../model/files/RestorePlan.cpp" line="296"/>
         <source>interrupted</source>
         <translation>중단됨</translation>
     </message>
@@ -9696,32 +9732,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestorePlanTable</name>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
         <source>Action</source>
         <translation>동작</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
         <source>File value</source>
         <translation>파일 값</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="13"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="13"/>
         <source>Drive value before</source>
         <translation>이전 드라이버 값</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="13"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="13"/>
         <source>Result</source>
         <translation>결과</translation>
     </message>
@@ -9729,62 +9765,62 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreReport</name>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="16"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="16"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>쓰기 및 검증 %1, 변경 없음 %2, 실패 %3, 시도 안 함 %4</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="22"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="22"/>
         <source>, %1 not confirmed</source>
         <translation>, 확인 안 됨 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="24"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="24"/>
         <source>; %1 of %2 store commands written</source>
         <translation>; 저장 명령 %2개 중 %1개 씀</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="33"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="33"/>
         <source>OpenTOP restore report</source>
         <translation>OpenTOP 복원 보고서</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="33"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="33"/>
         <source>File: %1</source>
         <translation>파일: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="34"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
         <source>Date: %1 (UTC)</source>
         <translation>날짜: %1 (UTC)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="37"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="37"/>
         <source>Written to the drives</source>
         <translation>드라이버에 씀</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="37"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="37"/>
         <source>Preview only: nothing written</source>
         <translation>미리 보기만: 아무것도 쓰지 않음</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="40"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="40"/>
         <source>Machine number %1 from %2: %3</source>
         <translation>국번 %1 (%2에서): %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="51"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="51"/>
         <source>  %1: %2</source>
         <translation>  %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="53"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="53"/>
         <source>  %1: file %2, drive %3: %4</source>
         <translation>  %1: 파일 %2, 드라이버 %3: %4</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="59"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="59"/>
         <source>  Note: %1</source>
         <translation>  참고: %1</translation>
     </message>
@@ -9792,37 +9828,37 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Restorer</name>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="48"/>
+        <location filename="../model/files/Restorer.cpp" line="48"/>
         <source>interrupted before anything was written</source>
         <translation>아무것도 쓰기 전에 중단됨</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="63"/>
+        <location filename="../model/files/Restorer.cpp" line="63"/>
         <source>reading the drive failed, nothing written (%1)</source>
         <translation>드라이버 읽기 실패, 아무것도 쓰지 않음(%1)</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="99"/>
+        <location filename="../model/files/Restorer.cpp" line="99"/>
         <source>interrupted after %1 of %2 writes; run the restore again to complete it</source>
         <translation>쓰기 %2건 중 %1건 후 중단됨. 완료하려면 복원을 다시 실행하십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="134"/>
+        <location filename="../model/files/Restorer.cpp" line="134"/>
         <source>%1 not confirmed (%2): the drive may or may not hold it; run the restore again, it reads the drive back first</source>
         <translation>%1 확인 안 됨(%2): 드라이버에 값이 들어갔는지 알 수 없습니다. 복원을 다시 실행하십시오. 먼저 드라이버를 다시 읽습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="168"/>
+        <location filename="../model/files/Restorer.cpp" line="168"/>
         <source>after storing, the drive holds %1</source>
         <translation>저장 후 드라이버 값은 %1입니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="173"/>
+        <location filename="../model/files/Restorer.cpp" line="173"/>
         <source>the settings could not be read back after storing</source>
         <translation>저장 후 설정을 다시 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="206"/>
+        <location filename="../model/files/Restorer.cpp" line="206"/>
         <source>communication settings changed (%1): they take effect when the drive is next powered on; connect with the new settings after that</source>
         <translation>통신 설정이 변경되었습니다(%1): 다음에 드라이버 전원을 켤 때 적용됩니다. 그 후에는 새 설정으로 연결하십시오</translation>
     </message>
@@ -9830,12 +9866,12 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultDatabase</name>
     <message>
-        <location filename="../main/model/eol/ResultDatabase.cpp" line="45"/>
+        <location filename="../model/eol/ResultDatabase.cpp" line="45"/>
         <source>results database %1: %2</source>
         <translation>결과 데이터베이스 %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultDatabase.cpp" line="49"/>
+        <location filename="../model/eol/ResultDatabase.cpp" line="49"/>
         <source>the Qt SQL driver %1 is not installed (Debian: %2)</source>
         <translation>Qt SQL 드라이버 %1이(가) 설치되어 있지 않습니다(Debian: %2)</translation>
     </message>
@@ -9843,7 +9879,7 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultQueries</name>
     <message>
-        <location filename="../main/model/eol/ResultQueries.cpp" line="118"/>
+        <location filename="../model/eol/ResultQueries.cpp" line="118"/>
         <source>no unit record %1</source>
         <translation>제품 기록 %1 없음</translation>
     </message>
@@ -9851,7 +9887,7 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultSchema</name>
     <message>
-        <location filename="../main/model/eol/ResultSchema.cpp" line="138"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="138"/>
         <source>the results database has schema version %1, newer than this program knows (%2): update OpenTOP on this station; nothing was written</source>
         <translation>결과 데이터베이스의 스키마 버전 %1이(가) 이 프로그램이 아는 버전(%2)보다 새롭습니다: 이 스테이션의 OpenTOP을 업데이트하십시오. 아무것도 쓰지 않았습니다</translation>
     </message>
@@ -9859,32 +9895,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultStore</name>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="55"/>
+        <location filename="../model/eol/ResultStore.cpp" line="72"/>
         <source>interrupted: the station stopped before the unit was finished (killed, power lost or crashed); the unit was not proven</source>
         <translation>중단됨: 제품이 끝나기 전에 스테이션이 멈췄습니다(강제 종료, 정전 또는 비정상 종료). 제품은 검증되지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="63"/>
+        <location filename="../model/eol/ResultStore.cpp" line="80"/>
         <source>a unit needs a serial number</source>
         <translation>제품에는 시리얼 번호가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="141"/>
+        <location filename="../model/eol/ResultStore.cpp" line="158"/>
         <source>a unit is finished with pass, fail or aborted, not %1</source>
         <translation>제품은 pass, fail 또는 aborted로 끝나야 합니다. %1은(는) 안 됩니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="164"/>
+        <location filename="../model/eol/ResultStore.cpp" line="181"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>제품 %1(시리얼 %2)은(는) 결과 데이터베이스에서 시작된 적이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="166"/>
+        <location filename="../model/eol/ResultStore.cpp" line="183"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>제품 %1(시리얼 %2)은(는) 이미 %3(으)로 기록되어 있습니다. 기존 기록을 유지합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="184"/>
+        <location filename="../model/eol/ResultStore.cpp" line="201"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>제품 %1(시리얼 %2)은(는) 결과 데이터베이스에서 진행 중이 아닙니다: 시작된 적이 없거나, 이미 끝났거나, 중단됨으로 표시되었습니다</translation>
     </message>
@@ -9892,32 +9928,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultUrl</name>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="43"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="43"/>
         <source>no database given: name a file or a postgresql:// URL</source>
         <translation>데이터베이스가 지정되지 않았습니다: 파일 또는 postgresql:// URL을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="51"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="51"/>
         <source>unknown database URL &quot;%1&quot;: use a file path, sqlite:PATH or postgresql://user@host/database</source>
         <translation>알 수 없는 데이터베이스 URL &quot;%1&quot;: 파일 경로, sqlite:PATH 또는 postgresql://user@host/database를 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="55"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="55"/>
         <source>sqlite: needs a file path</source>
         <translation>sqlite:에는 파일 경로가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="84"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="84"/>
         <source>the host in &quot;%1&quot; has no closing ]</source>
         <translation>&quot;%1&quot;의 호스트에 닫는 ]가 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="112"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="112"/>
         <source>unknown connection option &quot;%1&quot; in the database URL; known: %2</source>
         <translation>데이터베이스 URL에 알 수 없는 연결 옵션 &quot;%1&quot;; 알려진 옵션: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="129"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="129"/>
         <source>the port &quot;%1&quot; in the database URL is not a number from 1 to 65535</source>
         <translation>데이터베이스 URL의 포트 &quot;%1&quot;이(가) 1–65535의 숫자가 아닙니다</translation>
     </message>
@@ -9925,224 +9961,224 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="60"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
         <source>End-of-line results</source>
         <translation>출하 검사 결과</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Started</source>
         <translation>시작</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Serial</source>
         <translation>시리얼</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Recipe</source>
         <translation>레시피</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Station</source>
         <translation>스테이션</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Time (s)</source>
         <translation>시간 (s)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>First failure</source>
         <translation>첫 불합격 항목</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="82"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="82"/>
         <source>Export CSV…</source>
         <translation>CSV 내보내기…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="83"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="83"/>
         <source>Certificate PDF…</source>
         <translation>성적서 PDF…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="118"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="118"/>
         <source>SQLite file or postgresql://user@host/database</source>
         <translation>SQLite 파일 또는 postgresql://user@host/database</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="119"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="119"/>
         <source>Open</source>
         <translation>열기</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="120"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="120"/>
         <source>File…</source>
         <translation>파일…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="127"/>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="129"/>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="131"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="127"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="129"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="131"/>
         <source>any</source>
         <translation>모두</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="133"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="133"/>
         <source>Today</source>
         <translation>오늘</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="134"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
         <source>Last 24 hours</source>
         <translation>최근 24시간</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="135"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="135"/>
         <source>Last 7 days</source>
         <translation>최근 7일</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="136"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
         <source>Last 30 days</source>
         <translation>최근 30일</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="137"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
         <source>All</source>
         <translation>전체</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="140"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
         <source>Any</source>
         <translation>모두</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="144"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="144"/>
         <source>Search</source>
         <translation>검색</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="148"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="148"/>
         <source>Serial:</source>
         <translation>시리얼:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="149"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="149"/>
         <source>Recipe:</source>
         <translation>레시피:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="150"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="150"/>
         <source>Station:</source>
         <translation>스테이션:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="151"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
         <source>Period:</source>
         <translation>기간:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="152"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
         <source>Verdict:</source>
         <translation>판정:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="160"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="160"/>
         <source>Database:</source>
         <translation>데이터베이스:</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="192"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="192"/>
         <source>There is no results database at %1 yet: a station makes it when it records its first unit.</source>
         <translation>%1에 아직 결과 데이터베이스가 없습니다: 스테이션이 첫 제품을 기록할 때 만들어집니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="203"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="203"/>
         <source>Results database %1</source>
         <translation>결과 데이터베이스 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="249"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="249"/>
         <source>%1 rev. %2</source>
         <translation>%1 개정 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="253"/>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="279"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="253"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="279"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="276"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="276"/>
         <source>%n unit(s), %1 passed · first-pass yield %2 (%3 of %4 serials)</source>
         <translation>
             <numerusform>제품 %n대, 합격 %1 · 직행률 %2 (시리얼 %4개 중 %3개)</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="279"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="279"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="288"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="288"/>
         <source>no unit is selected</source>
         <translation>선택한 제품이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="320"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
         <source>Open results database</source>
         <translation>결과 데이터베이스 열기</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="321"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="321"/>
         <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
         <translation>SQLite 데이터베이스 (*.db *.sqlite);;모든 파일 (*)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="332"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="332"/>
         <source>Export units as CSV</source>
         <translation>제품을 CSV로 내보내기</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="332"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="332"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="337"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="337"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>제품 %n대를 %1에 저장했습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="348"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="348"/>
         <source>Save certificate</source>
         <translation>성적서 저장</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="349"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="349"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF 파일 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="354"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="354"/>
         <source>Certificate written to %1</source>
         <translation>성적서를 %1에 저장했습니다</translation>
     </message>
@@ -10150,7 +10186,7 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RoleEvaluator</name>
     <message>
-        <location filename="../main/model/profile/RoleEvaluator.cpp" line="102"/>
+        <location filename="../model/profile/RoleEvaluator.cpp" line="102"/>
         <source>%1 = %2 (%3, function %4)</source>
         <translation>%1 = %2 (%3, 기능 %4)</translation>
     </message>
@@ -10158,62 +10194,62 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RunCommand</name>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="48"/>
+        <location filename="../cli/RunCommand.cpp" line="48"/>
         <source>Test run: start, stop, direction, running data, hold/free, speed (needs --yes)</source>
         <translation>시운전: 기동, 정지, 방향, 운전 데이터, hold/free, 속도 (--yes 필요)</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="53"/>
+        <location filename="../cli/RunCommand.cpp" line="53"/>
         <source>Send the command (it moves or stops a motor).</source>
         <translation>명령을 보냅니다(모터를 움직이거나 정지시킴).</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="63"/>
+        <location filename="../cli/RunCommand.cpp" line="63"/>
         <source>error: usage: %1 (one machine number; a negative speed after --)</source>
         <translation>오류: 사용법: %1 (국번 하나; 음수 속도는 -- 뒤에)</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="71"/>
-        <location filename="../main/cli/RunCommand.cpp" line="76"/>
-        <location filename="../main/cli/RunCommand.cpp" line="81"/>
-        <location filename="../main/cli/RunCommand.cpp" line="126"/>
+        <location filename="../cli/RunCommand.cpp" line="71"/>
+        <location filename="../cli/RunCommand.cpp" line="76"/>
+        <location filename="../cli/RunCommand.cpp" line="81"/>
+        <location filename="../cli/RunCommand.cpp" line="126"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="86"/>
+        <location filename="../cli/RunCommand.cpp" line="86"/>
         <source>Would send to machine number %1: %2
 This moves or stops a motor: add --yes to send it.</source>
         <translation>국번 %1에 보낼 명령: %2
 모터를 움직이거나 정지시킵니다: 보내려면 --yes를 추가하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="118"/>
+        <location filename="../cli/RunCommand.cpp" line="118"/>
         <source>Sent to machine number %1: %2</source>
         <translation>국번 %1에 보냄: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="120"/>
+        <location filename="../cli/RunCommand.cpp" line="120"/>
         <source>Sent to machine number %1, executed also by %2 (communication group): %3</source>
         <translation>국번 %1에 보냄, %2에서도 실행됨(통신 그룹): %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="156"/>
+        <location filename="../cli/RunCommand.cpp" line="156"/>
         <source>(not read: %1)</source>
         <translation>(읽지 않음: %1)</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="165"/>
+        <location filename="../cli/RunCommand.cpp" line="165"/>
         <source>State of machine number %1:</source>
         <translation>국번 %1의 상태:</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="176"/>
+        <location filename="../cli/RunCommand.cpp" line="176"/>
         <source>State of machine number %1 (communication group of %2): not read: %3</source>
         <translation>국번 %1의 상태(%2의 통신 그룹): 읽지 않음: %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="184"/>
+        <location filename="../cli/RunCommand.cpp" line="184"/>
         <source>State of machine number %1 (communication group of %2):</source>
         <translation>국번 %1의 상태(%2의 통신 그룹):</translation>
     </message>
@@ -10221,57 +10257,57 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunControl</name>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="59"/>
+        <location filename="../model/run/RunControl.cpp" line="59"/>
         <source>%1 needs one value, e.g. &quot;%1 %2&quot;</source>
         <translation>%1에는 값 하나가 필요합니다. 예: &quot;%1 %2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="62"/>
+        <location filename="../model/run/RunControl.cpp" line="62"/>
         <source>%1 takes no value</source>
         <translation>%1은(는) 값을 받지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="70"/>
+        <location filename="../model/run/RunControl.cpp" line="70"/>
         <source>select needs a running data number, e.g. &quot;select 2&quot;; got &quot;%1&quot;</source>
         <translation>select에는 운전 데이터 번호가 필요합니다. 예: &quot;select 2&quot;; 입력값: &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="80"/>
+        <location filename="../model/run/RunControl.cpp" line="80"/>
         <source>unknown run command &quot;%1&quot;; use start, stop, cw, ccw, select N, hold, free, coast or speed VALUE</source>
         <translation>알 수 없는 운전 명령 &quot;%1&quot;; start, stop, cw, ccw, select N, hold, free, coast 또는 speed VALUE를 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="127"/>
+        <location filename="../model/run/RunControl.cpp" line="127"/>
         <source>%1 drives have no &quot;%2&quot; command; they take: %3</source>
         <translation>%1 드라이버에는 &quot;%2&quot; 명령이 없습니다. 사용할 수 있는 명령: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="148"/>
+        <location filename="../model/run/RunControl.cpp" line="148"/>
         <source>%1 has no selection codes</source>
         <translation>%1에는 선택 코드가 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="149"/>
+        <location filename="../model/run/RunControl.cpp" line="149"/>
         <source>select %1: choose %2–%3 (%4 … %5)</source>
         <translation>select %1: %2–%3 중에서 선택하십시오(%4 … %5)</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="186"/>
+        <location filename="../model/run/RunControl.cpp" line="186"/>
         <source>cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>드라이버가 운전 명령을 받는지 확인하기 위해 %1을(를) 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="206"/>
+        <location filename="../model/run/RunControl.cpp" line="206"/>
         <source>machine number %1 is in &quot;%2&quot; (%3); nothing was sent</source>
         <translation>국번 %1은(는) &quot;%2&quot;(%3) 상태입니다. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="210"/>
+        <location filename="../model/run/RunControl.cpp" line="210"/>
         <source>In &quot;%1&quot; the drive takes run, stop, direction and speed selection from its input terminals and refuses motion commands over the bus. To test-run it from here, switch it to &quot;%2&quot;: opentop-cli set %3 %4=%5 (and back to &quot;%1&quot;, =%6, when the machine&apos;s own controls should run it again).</source>
         <translation>&quot;%1&quot;에서는 드라이버가 운전, 정지, 방향, 속도 선택을 입력 단자로 받고 버스를 통한 운전 명령은 거부합니다. 여기서 시운전하려면 &quot;%2&quot;(으)로 전환하십시오: opentop-cli set %3 %4=%5 (설비 자체 조작으로 다시 운전하려면 &quot;%1&quot;(=%6)(으)로 되돌리십시오).</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="263"/>
+        <location filename="../model/run/RunControl.cpp" line="263"/>
         <source>An alarm is active: the drive refuses to run until it is cleared. See opentop-cli alarms %1, then alarms %1 --reset --yes.</source>
         <translation>알람이 발생 중입니다: 해제할 때까지 드라이버는 운전을 거부합니다. opentop-cli alarms %1을(를) 확인한 뒤 alarms %1 --reset --yes를 실행하십시오.</translation>
     </message>
@@ -10279,68 +10315,68 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunLiveState</name>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="24"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="24"/>
         <source>The drive now</source>
         <translation>현재 드라이버</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="47"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="47"/>
         <source>State</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="49"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="49"/>
         <source>Alarm</source>
         <translation>알람</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="86"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="86"/>
         <source>%1:</source>
         <translation>%1:</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="123"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="123"/>
         <source>%1 (%2 %3)</source>
         <translation>%1 (%2 %3)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="125"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="125"/>
         <source>not reported</source>
         <translation>알려주지 않음</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="128"/>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="138"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="128"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="138"/>
         <source>not read</source>
         <translation>읽지 않음</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="130"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="130"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="133"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="133"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="135"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="135"/>
         <source>active</source>
         <translation>발생 중</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="154"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="154"/>
         <source>waiting for the first answer…</source>
         <translation>첫 응답 대기 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="154"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="154"/>
         <source>not watched</source>
         <translation>감시 안 함</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="166"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="166"/>
         <source>Not live: %1</source>
         <translation>실시간 아님: %1</translation>
     </message>
@@ -10348,12 +10384,12 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunningData</name>
     <message>
-        <location filename="../main/model/run/RunningData.cpp" line="56"/>
+        <location filename="../model/run/RunningData.cpp" line="56"/>
         <source>SPno%1 slows down from %2 r/min in %3 s: the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>SPno%1은(는) %2 r/min에서 %3 s 동안 감속합니다: 매뉴얼은 고속(약 %5 r/min 이상)에서 감속할 때 감속 시간을 %4 s 이상으로 하도록 요구합니다.</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunningData.cpp" line="124"/>
+        <location filename="../model/run/RunningData.cpp" line="124"/>
         <source>Short deceleration from high speed on %1 (%2 r/min in %3 s): the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>%1의 고속 감속 시간이 짧습니다(%2 r/min에서 %3 s): 매뉴얼은 고속(약 %5 r/min 이상)에서 감속할 때 감속 시간을 %4 s 이상으로 하도록 요구합니다.</translation>
     </message>
@@ -10361,153 +10397,153 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunningDataPage</name>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="39"/>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="39"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
         <source>Running data</source>
         <translation>운전 데이터</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
         <source>Speed (r/min)</source>
         <translation>속도 (r/min)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
         <source>Acceleration (s)</source>
         <translation>가속 (s)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="55"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
         <source>Deceleration (s)</source>
         <translation>감속 (s)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="55"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
         <source>Direction</source>
         <translation>방향</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="68"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="68"/>
         <source>SPno%1</source>
         <translation>SPno%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="71"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="71"/>
         <source>Selected by the inputs M0 = %1, M1 = %2, M2 = %3 or by the running data selection command</source>
         <translation>입력 M0 = %1, M1 = %2, M2 = %3 또는 운전 데이터 선택 명령으로 선택</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="89"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="89"/>
         <source>SS trimmer</source>
         <translation>SS 트리머</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="90"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="90"/>
         <source>SPno1 has no acceleration register: the SS trimmer on the drive sets it (0.5–30 s); it is not stored in the drive</source>
         <translation>SPno1에는 가속 레지스터가 없습니다: 드라이버의 SS 트리머로 설정합니다(0.5–30 s). 드라이버에 저장되지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="93"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="93"/>
         <source>SD trimmer</source>
         <translation>SD 트리머</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="94"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="94"/>
         <source>SPno1 has no deceleration register: the SD trimmer on the drive sets it (0.5 s or 2–30 s); it is not stored in the drive</source>
         <translation>SPno1에는 감속 레지스터가 없습니다: 드라이버의 SD 트리머로 설정합니다(0.5 s 또는 2–30 s). 드라이버에 저장되지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="98"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="98"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="99"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="99"/>
         <source>This drive has no register for this value</source>
         <translation>이 드라이버에는 이 값의 레지스터가 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="106"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="106"/>
         <source>Initialize</source>
         <translation>초기화</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="108"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="108"/>
         <source>Reset SPno%1 on the drive to its factory defaults</source>
         <translation>드라이버의 SPno%1을(를) 공장 출하값으로 되돌립니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="109"/>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="274"/>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="280"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="109"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="274"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="280"/>
         <source>Initialize SPno%1</source>
         <translation>SPno%1 초기화</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="130"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="130"/>
         <source>SPno1 runs at the speed of the external speed-setting VR (CN3) with the SS/SD trimmer times; it is not stored in the drive</source>
         <translation>SPno1은 외부 속도 설정 VR(CN3)의 속도와 SS/SD 트리머 시간으로 운전합니다. 드라이버에 저장되지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="214"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="214"/>
         <source>Allowed speed on this %1: %2 (0 stops the motor)</source>
         <translation>이 %1에서 허용되는 속도: %2 (0이면 모터 정지)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="224"/>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="240"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="224"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="240"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="227"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="227"/>
         <source>Allowed speed: %1</source>
         <translation>허용 속도: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="228"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="228"/>
         <source>The drive&apos;s variant is not known, so a speed must suit every variant (0 stops the motor): %1</source>
         <translation>드라이버의 기종을 알 수 없으므로 속도는 모든 기종에 맞아야 합니다(0이면 모터 정지): %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="240"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="240"/>
         <source>its factory default</source>
         <translation>공장 출하값</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="262"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="262"/>
         <source>The SPno1 speed and times come from the external VR and the SS/SD trimmers; they do not change.</source>
         <translation>SPno1의 속도와 시간은 외부 VR과 SS/SD 트리머로 정해지므로 바뀌지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="269"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="269"/>
         <source>Your unwritten edits in this row are discarded.</source>
         <translation>이 행에서 쓰지 않은 편집은 버려집니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="275"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="275"/>
         <source>Reset running data SPno%1 of drive %2 to these factory defaults?</source>
         <translation>드라이버 %2의 운전 데이터 SPno%1을(를) 이 공장 출하값으로 되돌리시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="286"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="286"/>
         <source>Initializing SPno%1…</source>
         <translation>SPno%1 초기화 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="301"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="301"/>
         <source>SPno%1 was not initialized: %2</source>
         <translation>SPno%1을(를) 초기화하지 못했습니다: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="317"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="317"/>
         <source>SPno%1 initialized; %n value(s) could not be read back</source>
         <translation>
             <numerusform>SPno%1 초기화 완료. 값 %n개를 다시 읽을 수 없습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="319"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="319"/>
         <source>SPno%1 initialized to its factory defaults</source>
         <translation>SPno%1을(를) 공장 출하값으로 초기화했습니다</translation>
     </message>
@@ -10515,83 +10551,83 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="110"/>
+        <location filename="../cli/ScanCommand.cpp" line="110"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>버스의 드라이버를 찾아 식별합니다(국번 1–247)</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="116"/>
+        <location filename="../cli/ScanCommand.cpp" line="116"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>조회할 첫 국번, 1–247 (기본값 1).</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="116"/>
-        <location filename="../main/cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="116"/>
+        <location filename="../cli/ScanCommand.cpp" line="117"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="117"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>조회할 마지막 국번, 1–247 (기본값 247).</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="119"/>
+        <location filename="../cli/ScanCommand.cpp" line="119"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>국번당 대기 시간(ms), 10–5000 (기본값: 통신 속도에서 산출; 느린 어댑터나 게이트웨이는 늘리십시오).</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="121"/>
+        <location filename="../cli/ScanCommand.cpp" line="121"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="134"/>
+        <location filename="../cli/ScanCommand.cpp" line="134"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>오류: --%1은(는) %2–%3의 숫자여야 합니다. &quot;%4&quot;은(는) 안 됩니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="146"/>
+        <location filename="../cli/ScanCommand.cpp" line="146"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>오류: scan은 인수를 받지 않습니다. --from N --to N을 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="155"/>
+        <location filename="../cli/ScanCommand.cpp" line="155"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>오류: --from %1이(가) --to %2보다 뒤입니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="173"/>
+        <location filename="../cli/ScanCommand.cpp" line="173"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>%3에서 국번 %1–%2 스캔 중, 국번당 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="209"/>
+        <location filename="../cli/ScanCommand.cpp" line="209"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>국번을 하나도 스캔하기 전에 중단되었습니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="211"/>
+        <location filename="../cli/ScanCommand.cpp" line="211"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>중단됨: 국번 %1–%2을(를) 스캔했습니다(%4개 중 %3개). %5–%6은(는) 조회하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="225"/>
+        <location filename="../cli/ScanCommand.cpp" line="225"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>오류: 국번 %1에서 스캔이 멈췄습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="235"/>
+        <location filename="../cli/ScanCommand.cpp" line="235"/>
         <source>warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="237"/>
+        <location filename="../cli/ScanCommand.cpp" line="237"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>참고: 드라이버 %1대가 %2 ms 대기 후에야 응답하여 다시 조회했습니다. 스캔에서 드라이버가 누락되면 --wait를 늘리십시오.</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="243"/>
+        <location filename="../cli/ScanCommand.cpp" line="243"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -10602,77 +10638,77 @@ This moves or stops a motor: add --yes to send it.</source>
   - 종단 저항 (버스 양 끝에 120 Ω)과 드라이버 전원.</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="280"/>
+        <location filename="../cli/ScanCommand.cpp" line="280"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 기종 알 수 없음</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="281"/>
+        <location filename="../cli/ScanCommand.cpp" line="281"/>
         <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
         <translation>드라이버가 기종을 알려주지 않습니다. --variant %1=VARIANT로 지정하십시오(%2)</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="297"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="297"/>
         <source>hex</source>
         <translation>16진수</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="297"/>
         <source>switches</source>
         <translation>스위치</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="297"/>
         <source>family</source>
         <translation>제품군</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="298"/>
         <source>model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="298"/>
         <source>firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="298"/>
         <source>state</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>comm. group</source>
         <translation>통신 그룹</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="372"/>
+        <location filename="../cli/ScanCommand.cpp" line="372"/>
         <source>1 drive found in %1 s</source>
         <translation>드라이버 1대 발견(%1 s)</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="373"/>
+        <location filename="../cli/ScanCommand.cpp" line="373"/>
         <source>%1 drives found in %2 s</source>
         <translation>드라이버 %1대 발견(%2 s)</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="375"/>
+        <location filename="../cli/ScanCommand.cpp" line="375"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>; 중복 가능성이 있는 국번 1개: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="377"/>
+        <location filename="../cli/ScanCommand.cpp" line="377"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>; 중복 가능성이 있는 국번 %1개: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="388"/>
+        <location filename="../cli/ScanCommand.cpp" line="388"/>
         <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>경고: 국번 %1(%2, %3)의 응답이 깨져 있습니다: 두 드라이버가 같은 국번을 쓰고 있을 가능성이 큽니다. 이 버스에 있는 드라이버의 SW1/SW2 스위치를 확인하고 드라이버마다 다른 국번을 준 뒤, 전원을 껐다 켜고 다시 스캔하십시오.</translation>
     </message>
@@ -10680,180 +10716,180 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="39"/>
+        <location filename="../cli/SetCommand.cpp" line="39"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>파라미터를 이름으로 쓰고, 검사하고, 다시 읽어 검증합니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="46"/>
+        <location filename="../cli/SetCommand.cpp" line="46"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store.</source>
         <translation>모터를 움직이거나 리셋, 삭제, 초기화, 저장하는 명령을 확인합니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="48"/>
+        <location filename="../cli/SetCommand.cpp" line="48"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>주소로 레지스터를 씁니다: ADDR=VALUE (반복 가능; --fc 16이면 VALUE,VALUE...).</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="49"/>
+        <location filename="../cli/SetCommand.cpp" line="49"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="50"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 쓰기의 기능 코드: 6(기본값) 또는 16.</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="50"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="59"/>
+        <location filename="../cli/SetCommand.cpp" line="59"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>오류: 사용법: set ID NAME=VALUE... (예: set 1 spno2.accel=2.5) 또는 set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="71"/>
+        <location filename="../cli/SetCommand.cpp" line="71"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>오류: &quot;%1&quot;은(는) NAME=VALUE 형식이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="78"/>
+        <location filename="../cli/SetCommand.cpp" line="78"/>
         <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
         <translation>오류: %1이(가) 두 번 지정되었습니다(%2=%3 및 %4). 설정은 한 번씩만 지정하십시오. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="89"/>
-        <location filename="../main/cli/SetCommand.cpp" line="186"/>
+        <location filename="../cli/SetCommand.cpp" line="89"/>
+        <location filename="../cli/SetCommand.cpp" line="186"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="99"/>
+        <location filename="../cli/SetCommand.cpp" line="99"/>
         <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>%1에 파라미터 &quot;%2&quot;이(가) 없습니다. &quot;opentop-cli params --family %1&quot;을 참조하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="102"/>
+        <location filename="../cli/SetCommand.cpp" line="102"/>
         <source>%1 is read-only</source>
         <translation>%1은(는) 읽기 전용입니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="104"/>
+        <location filename="../cli/SetCommand.cpp" line="104"/>
         <source>%1 is a %2 command; add --yes to send it</source>
         <translation>%1은(는) %2 명령입니다. 보내려면 --yes를 추가하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="136"/>
+        <location filename="../cli/SetCommand.cpp" line="136"/>
         <source>error: cannot read %1 to check the values; nothing written</source>
         <translation>오류: 값을 검사하기 위해 %1을(를) 읽을 수 없습니다. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="180"/>
+        <location filename="../cli/SetCommand.cpp" line="180"/>
         <source>warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="187"/>
+        <location filename="../cli/SetCommand.cpp" line="187"/>
         <source>nothing was written</source>
         <translation>아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="210"/>
+        <location filename="../cli/SetCommand.cpp" line="210"/>
         <source>not written (interrupted)</source>
         <translation>쓰지 않음(중단됨)</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="245"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="245"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="245"/>
-        <location filename="../main/cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="352"/>
         <source>Result</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="251"/>
-        <location filename="../main/cli/SetCommand.cpp" line="387"/>
+        <location filename="../cli/SetCommand.cpp" line="251"/>
+        <location filename="../cli/SetCommand.cpp" line="387"/>
         <source>written, verified</source>
         <translation>쓰기 완료, 검증됨</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="252"/>
+        <location filename="../cli/SetCommand.cpp" line="252"/>
         <source>written (command, not readable)</source>
         <translation>쓰기 완료(명령, 읽기 불가)</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="254"/>
+        <location filename="../cli/SetCommand.cpp" line="254"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>확인 안 됨(%1): 드라이버에 값이 들어갔는지 알 수 없습니다. &quot;get&quot;으로 다시 읽으십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="272"/>
+        <location filename="../cli/SetCommand.cpp" line="272"/>
         <source>error: --fc for raw writes is 6 or 16</source>
         <translation>오류: raw 쓰기의 --fc는 6 또는 16입니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="298"/>
+        <location filename="../cli/SetCommand.cpp" line="298"/>
         <source>error: &quot;%1&quot; is not ADDR=VALUE (0x.. or decimal, 0–65535; several values, comma separated, only with --fc 16)</source>
         <translation>오류: &quot;%1&quot;은(는) ADDR=VALUE 형식이 아닙니다(0x.. 또는 10진수, 0–65535; 여러 값은 쉼표로 구분하며 --fc 16에서만)</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="315"/>
+        <location filename="../cli/SetCommand.cpp" line="315"/>
         <source>error: 0x%1 is not a register the profile knows; add --yes to write it anyway; nothing was written</source>
         <translation>오류: 0x%1은(는) 프로파일에 없는 레지스터입니다. 그래도 쓰려면 --yes를 추가하십시오. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="325"/>
+        <location filename="../cli/SetCommand.cpp" line="325"/>
         <source>error: %1; nothing was written</source>
         <translation>오류: %1; 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="326"/>
+        <location filename="../cli/SetCommand.cpp" line="326"/>
         <source>%1 is a %2 command; add --yes</source>
         <translation>%1은(는) %2 명령입니다. --yes를 추가하십시오</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="333"/>
+        <location filename="../cli/SetCommand.cpp" line="333"/>
         <source>error: the write covers part of %1; add --yes to write it anyway; nothing was written</source>
         <translation>오류: 이 쓰기는 %1의 일부만 덮습니다. 그래도 쓰려면 --yes를 추가하십시오. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="352"/>
         <source>Address</source>
         <translation>주소</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="352"/>
         <source>Written</source>
         <translation>쓴 값</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="385"/>
+        <location filename="../cli/SetCommand.cpp" line="385"/>
         <source>written</source>
         <translation>쓰기 완료</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="389"/>
+        <location filename="../cli/SetCommand.cpp" line="389"/>
         <source>written, but reads back differently</source>
         <translation>쓰기 완료, 다시 읽은 값이 다름</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="392"/>
+        <location filename="../cli/SetCommand.cpp" line="392"/>
         <source>written (not readable back: %1)</source>
         <translation>쓰기 완료(다시 읽기 불가: %1)</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="400"/>
+        <location filename="../cli/SetCommand.cpp" line="400"/>
         <source>Also written to %1 (communication group); not read back: no parameter of the profile</source>
         <translation>%1에도 씀(통신 그룹). 다시 읽지 않음: 프로파일의 파라미터가 아님</translation>
     </message>
@@ -10861,17 +10897,17 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ShiftPlan</name>
     <message>
-        <location filename="../main/model/eol/ShiftPlan.cpp" line="30"/>
+        <location filename="../model/eol/ShiftPlan.cpp" line="30"/>
         <source>&quot;%1&quot; is not a time of day such as 06:00</source>
         <translation>&quot;%1&quot;은(는) 06:00 같은 시각이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ShiftPlan.cpp" line="35"/>
+        <location filename="../model/eol/ShiftPlan.cpp" line="35"/>
         <source>shift starts must be in order from the day&apos;s first: %1</source>
         <translation>근무조 시작 시각은 하루의 첫 근무조부터 순서대로 주어야 합니다: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ShiftPlan.cpp" line="42"/>
+        <location filename="../model/eol/ShiftPlan.cpp" line="42"/>
         <source>no shift start given; e.g. 06:00,14:00,22:00</source>
         <translation>근무조 시작 시각이 없습니다. 예: 06:00,14:00,22:00</translation>
     </message>
@@ -10879,47 +10915,47 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ShortcutsDialog</name>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="60"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="60"/>
         <source>Main window</source>
         <translation>메인 창</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="62"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="62"/>
         <source>Everywhere, dialogs included</source>
         <translation>모든 곳(대화 상자 포함)</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="63"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="63"/>
         <source>STOP ALL (stop every drive on the bus)</source>
         <translation>전체 정지 (버스의 모든 드라이버 정지)</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="72"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="72"/>
         <source>Keyboard shortcuts</source>
         <translation>단축키</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
         <source>Where</source>
         <translation>위치</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
         <source>Command</source>
         <translation>명령</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
         <source>Keys</source>
         <translation>키</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="86"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="86"/>
         <source> or </source>
         <translation> 또는 </translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="95"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="95"/>
         <source>STOP ALL&apos;s keys work in every window of the program, also while a dialog is open.</source>
         <translation>전체 정지 키는 대화 상자가 열려 있을 때도 프로그램의 모든 창에서 동작합니다.</translation>
     </message>
@@ -10927,32 +10963,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimApp</name>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="108"/>
+        <location filename="../sim/SimApp.cpp" line="108"/>
         <source>opentop-sim: warning: %1@%2 cannot use %3 %4 and will not answer</source>
         <translation>opentop-sim: 경고: %1@%2은(는) %3 %4을(를) 사용할 수 없으므로 응답하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="118"/>
+        <location filename="../sim/SimApp.cpp" line="118"/>
         <source>opentop-sim: --defect %1:%2: no drive with machine number %1 on the bus %3</source>
         <translation>opentop-sim: --defect %1:%2: 버스 %3에 국번 %1인 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="125"/>
+        <location filename="../sim/SimApp.cpp" line="125"/>
         <source>opentop-sim: --defect %1 (%2@%1): %3</source>
         <translation>opentop-sim: --defect %1 (%2@%1): %3</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="162"/>
+        <location filename="../sim/SimApp.cpp" line="162"/>
         <source>the port is unplugged already</source>
         <translation>포트가 이미 분리되어 있습니다</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="164"/>
+        <location filename="../sim/SimApp.cpp" line="164"/>
         <source>unplugged</source>
         <translation>분리됨</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="197"/>
+        <location filename="../sim/SimApp.cpp" line="197"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
@@ -10960,27 +10996,27 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimBackdoor</name>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="17"/>
+        <location filename="../sim/SimBackdoor.cpp" line="17"/>
         <source>usage: set ID ADDR VALUE [fc]</source>
         <translation>사용법: set ID ADDR VALUE [fc]</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="18"/>
+        <location filename="../sim/SimBackdoor.cpp" line="18"/>
         <source>usage: get ID ADDR [fc]</source>
         <translation>사용법: get ID ADDR [fc]</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="21"/>
+        <location filename="../sim/SimBackdoor.cpp" line="21"/>
         <source>address must be 0..0xFFFF, got &apos;%1&apos;</source>
         <translation>주소는 0..0xFFFF여야 합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="27"/>
+        <location filename="../sim/SimBackdoor.cpp" line="27"/>
         <source>function must be 3, 4 or 6 (write-only), got &apos;%1&apos;</source>
         <translation>기능은 3, 4 또는 6(쓰기 전용)이어야 합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="40"/>
+        <location filename="../sim/SimBackdoor.cpp" line="40"/>
         <source>value must be -32768..65535, got &apos;%1&apos;</source>
         <translation>값은 -32768..65535여야 합니다. 입력값: &apos;%1&apos;</translation>
     </message>
@@ -10988,27 +11024,27 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimBackend</name>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="24"/>
+        <location filename="../sim/SimBackend.cpp" line="24"/>
         <source>no simulated bus</source>
         <translation>시뮬레이션 버스 없음</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="47"/>
+        <location filename="../sim/SimBackend.cpp" line="47"/>
         <source>the simulated bus is not open</source>
         <translation>시뮬레이션 버스가 열려 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="53"/>
+        <location filename="../sim/SimBackend.cpp" line="53"/>
         <source>the simulated adapter was unplugged</source>
         <translation>시뮬레이션 어댑터가 분리되었습니다</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="80"/>
+        <location filename="../sim/SimBackend.cpp" line="80"/>
         <source>interrupted while waiting</source>
         <translation>대기 중 중단됨</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="87"/>
+        <location filename="../sim/SimBackend.cpp" line="87"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 이내에 응답 없음</translation>
     </message>
@@ -11016,27 +11052,27 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimBus</name>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="38"/>
+        <location filename="../sim/SimBus.cpp" line="38"/>
         <source>unknown device type &apos;%1&apos;; known: %2</source>
         <translation>알 수 없는 장치 유형 &apos;%1&apos;; 알려진 유형: %2</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="65"/>
+        <location filename="../sim/SimBus.cpp" line="65"/>
         <source>%1@%2{%3}: %4</source>
         <translation>%1@%2{%3}: %4</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="81"/>
+        <location filename="../sim/SimBus.cpp" line="81"/>
         <source>machine number %1 is outside 1..247</source>
         <translation>국번 %1이(가) 1..247 범위를 벗어납니다</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="82"/>
+        <location filename="../sim/SimBus.cpp" line="82"/>
         <source>machine number %1 is used twice</source>
         <translation>국번 %1이(가) 두 번 사용되었습니다</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="231"/>
+        <location filename="../sim/SimBus.cpp" line="231"/>
         <source>no device with machine number %1 (bus: %2)</source>
         <translation>국번 %1인 장치가 없습니다(버스: %2)</translation>
     </message>
@@ -11044,7 +11080,7 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimConsole</name>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="31"/>
+        <location filename="../sim/SimConsole.cpp" line="31"/>
         <source>commands:
   help                      this text
   list                      the devices and their state
@@ -11085,37 +11121,37 @@ This moves or stops a motor: add --yes to send it.</source>
   quit                      시뮬레이터 종료</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="63"/>
+        <location filename="../sim/SimConsole.cpp" line="63"/>
         <source>bye</source>
         <translation>종료합니다</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="68"/>
+        <location filename="../sim/SimConsole.cpp" line="68"/>
         <source>%1 needs the pty server (--pty)</source>
         <translation>%1에는 pty 서버(--pty)가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="79"/>
+        <location filename="../sim/SimConsole.cpp" line="79"/>
         <source>, defects: %1</source>
         <translation>, 결함: %1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="92"/>
+        <location filename="../sim/SimConsole.cpp" line="92"/>
         <source>no drive has defects</source>
         <translation>결함이 있는 드라이버 없음</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="98"/>
+        <location filename="../sim/SimConsole.cpp" line="98"/>
         <source>unknown command &apos;%1&apos;; type help for the list</source>
         <translation>알 수 없는 명령 &apos;%1&apos;; 목록을 보려면 help를 입력하십시오</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="102"/>
+        <location filename="../sim/SimConsole.cpp" line="102"/>
         <source>usage: %1 ID ...; ID is a machine number on the bus (%2)</source>
         <translation>사용법: %1 ID ...; ID는 버스에 있는 국번입니다(%2)</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="108"/>
+        <location filename="../sim/SimConsole.cpp" line="108"/>
         <source>&apos;%1&apos; is not a machine number; the bus has %2</source>
         <translation>&apos;%1&apos;은(는) 국번이 아닙니다. 버스에 있는 국번: %2</translation>
     </message>
@@ -11123,77 +11159,77 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimDefectSpec</name>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="45"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="45"/>
         <source>firmware=MAJOR.MINOR (e.g. firmware=1.4), max_speed=N (e.g. max_speed=800), stall, load=+N, load=-N or load=xF (e.g. load=+40, load=x1.5), alarm=CODE@TIME (e.g. alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (a parameter name or register address, e.g. nostick=spno2.speed, nostore=0x0081), clear</source>
         <translation>firmware=MAJOR.MINOR (예: firmware=1.4), max_speed=N (예: max_speed=800), stall, load=+N, load=-N 또는 load=xF (예: load=+40, load=x1.5), alarm=CODE@TIME (예: alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (파라미터 이름 또는 레지스터 주소, 예: nostick=spno2.speed, nostore=0x0081), clear</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="119"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="119"/>
         <source>unknown defect &quot;%1&quot;; allowed: %2</source>
         <translation>알 수 없는 결함 &quot;%1&quot;; 허용: %2</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="122"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="122"/>
         <source>&quot;%1&quot; needs a value: %2=...</source>
         <translation>&quot;%1&quot;에는 값이 필요합니다: %2=...</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="124"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="124"/>
         <source>&quot;%1&quot; takes no value; write %2</source>
         <translation>&quot;%1&quot;은(는) 값을 받지 않습니다. %2(으)로 쓰십시오</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="137"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="137"/>
         <source>firmware=%1: write MAJOR.MINOR with each 0..255, e.g. firmware=1.4</source>
         <translation>firmware=%1: 각각 0..255인 MAJOR.MINOR로 쓰십시오. 예: firmware=1.4</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="144"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="144"/>
         <source>max_speed=%1: write a whole number 0..%2, e.g. max_speed=800</source>
         <translation>max_speed=%1: 0..%2의 정수로 쓰십시오. 예: max_speed=800</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="154"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="154"/>
         <source>load=%1: a factor is x0.1..x10, e.g. load=x1.5</source>
         <translation>load=%1: 배율은 x0.1..x10입니다. 예: load=x1.5</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="159"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="159"/>
         <source>load=%1: an offset is -200..+200, e.g. load=+40</source>
         <translation>load=%1: 오프셋은 -200..+200입니다. 예: load=+40</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="162"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="162"/>
         <source>load=%1: write load=+N, load=-N (an offset) or load=xF (a factor), e.g. load=+40 or load=x1.5</source>
         <translation>load=%1: load=+N, load=-N (오프셋) 또는 load=xF (배율)로 쓰십시오. 예: load=+40 또는 load=x1.5</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="171"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="171"/>
         <source>alarm=%1: write alarm=CODE@TIME, e.g. alarm=0x07@1500ms or alarm=overload@2s</source>
         <translation>alarm=%1: alarm=CODE@TIME으로 쓰십시오. 예: alarm=0x07@1500ms 또는 alarm=overload@2s</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="176"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="176"/>
         <source>alarm=%1: the time after the start is 0..3600 s, written 1500ms, 1.5s or 1500 (ms)</source>
         <translation>alarm=%1: 기동 후 시간은 0..3600 s이며, 1500ms, 1.5s 또는 1500(ms)으로 씁니다</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="183"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="183"/>
         <source>%1=%2: name a parameter (e.g. spno2.speed) or a register address (e.g. 0x1102)</source>
         <translation>%1=%2: 파라미터 이름(예: spno2.speed) 또는 레지스터 주소(예: 0x1102)를 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="199"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="199"/>
         <source>no defect given; allowed: %1</source>
         <translation>결함이 지정되지 않았습니다. 허용: %1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="205"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="205"/>
         <source>empty item in &quot;%1&quot;</source>
         <translation>&quot;%1&quot;에 빈 항목이 있습니다</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="223"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="223"/>
         <source>&quot;%1&quot;: write ID:DEFECT[,DEFECT...] with ID the machine number 1..247, e.g. 3:firmware=1.4 or 5:max_speed=800,load=+40</source>
         <translation>&quot;%1&quot;: ID:DEFECT[,DEFECT...] 형식으로 쓰십시오. ID는 국번 1..247. 예: 3:firmware=1.4 또는 5:max_speed=800,load=+40</translation>
     </message>
@@ -11201,22 +11237,22 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimDefects</name>
     <message>
-        <location filename="../main/sim/SimDefects.cpp" line="71"/>
+        <location filename="../sim/SimDefects.cpp" line="71"/>
         <source>a %1 reports no firmware version</source>
         <translation>%1은(는) 펌웨어 버전을 알려주지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefects.cpp" line="82"/>
+        <location filename="../sim/SimDefects.cpp" line="82"/>
         <source>alarm=%1: a %2 has no alarm codes; its protection is the stall stop: write alarm=stall@TIME</source>
         <translation>alarm=%1: %2에는 알람 코드가 없습니다. 보호 기능은 구속 정지입니다: alarm=stall@TIME으로 쓰십시오</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefects.cpp" line="98"/>
+        <location filename="../sim/SimDefects.cpp" line="98"/>
         <source>alarm=%1: not an alarm of a %2; allowed: %3</source>
         <translation>alarm=%1: %2의 알람이 아닙니다. 허용: %3</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefects.cpp" line="109"/>
+        <location filename="../sim/SimDefects.cpp" line="109"/>
         <source>%1=%2: no writable parameter of a %3 has this name or address; e.g. %4</source>
         <translation>%1=%2: %3에는 이 이름 또는 주소의 쓰기 가능한 파라미터가 없습니다. 예: %4</translation>
     </message>
@@ -11224,32 +11260,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimDevice</name>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="241"/>
+        <location filename="../sim/SimDevice.cpp" line="241"/>
         <source>missing command</source>
         <translation>명령 없음</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="250"/>
+        <location filename="../sim/SimDevice.cpp" line="250"/>
         <source>slave %1 power cycled</source>
         <translation>슬레이브 %1 전원 재투입함</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="292"/>
+        <location filename="../sim/SimDevice.cpp" line="292"/>
         <source>usage: defect ID DEFECT[,DEFECT...] or defect ID clear; DEFECT: %1</source>
         <translation>사용법: defect ID DEFECT[,DEFECT...] 또는 defect ID clear; DEFECT: %1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="299"/>
+        <location filename="../sim/SimDevice.cpp" line="299"/>
         <source>slave %1 defects: %2</source>
         <translation>슬레이브 %1 결함: %2</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="301"/>
+        <location filename="../sim/SimDevice.cpp" line="301"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="306"/>
+        <location filename="../sim/SimDevice.cpp" line="306"/>
         <source>&apos;%1&apos; is not supported by a %2 device</source>
         <translation>&apos;%1&apos;은(는) %2 장치에서 지원하지 않습니다</translation>
     </message>
@@ -11257,7 +11293,7 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimOptions</name>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="14"/>
+        <location filename="../sim/SimOptions.cpp" line="14"/>
         <source>Usage: opentop-sim --devices SPEC [options]
 Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 
@@ -11282,105 +11318,82 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
                        nostore=PARAM         value lost at the next power cycle
                      e.g. --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
   --quiet            no frame trace on stderr
+  --lang CODE        language of messages: en, zh_TW, zh_CN, ko, ja
   --help             this text
   --version          the program&apos;s version
 
 Prints &quot;pty: PATH&quot; (and &quot;tcp: HOST:PORT&quot;), then &quot;ready&quot;. Reads console commands
 from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </source>
-        <translation>사용법: opentop-sim --devices SPEC [옵션]
-Modbus RTU 드라이버를 가상 터미널 또는 Modbus TCP 게이트웨이로 시뮬레이션합니다.
-
-  --devices SPEC     장치와 국번, 예: dbu200@1,dbu400@150,dcpid@7
-  --pty [PATH]       pty로 서비스 (기본값); PATH: 이 심볼릭 링크도 생성
-  --tcp HOST:PORT    Modbus TCP로 서비스 (HOST 기본값 127.0.0.1, PORT 0: 임의)
-  --baud N           전송 타이밍과 장치 설정에 쓰는 통신 속도 (19200)
-  --parity N|E|O     라인 패리티 (N)
-  --wire-timing      --baud의 실제 라인처럼 응답을 지연
-  --turnaround MS    --wire-timing 사용 시 장치 응답 전환 시간 (2)
-  --faults LIST      예: drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
-  --seed N           결함 주입의 시드 (1)
-  --defect ID:LIST   드라이버 ID의 결함 (반복 가능), LIST 항목:
-                       firmware=MAJOR.MINOR  식별 시 이 버전을 알려줌
-                       max_speed=N           모터가 N에서 포화 (DBU r/min,
-                                             DC 정류 횟수/s), 부하 높음
-                       stall                 모터가 회전하지 않음, 부하 높음
-                       load=+N|-N|xF         부하율(DC: 전류 %)에 오프셋 또는 배율
-                       alarm=CODE@TIME       TIME 동안 운전 후 알람, 예:
-                                             0x07@1500ms, overload@2s (DC: stall@1s)
-                       nostick=PARAM         쓰기는 수신 확인하지만 이전 값 유지
-                       nostore=PARAM         다음 전원 재투입 시 값 손실
-                     예: --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
-  --quiet            stderr에 프레임 추적을 출력하지 않음
-  --help             이 도움말
-  --version          프로그램 버전
-
-&quot;pty: PATH&quot;(및 &quot;tcp: HOST:PORT&quot;)를 출력한 뒤 &quot;ready&quot;를 출력합니다. 콘솔 명령을
-stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료합니다.
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="79"/>
+        <location filename="../sim/SimOptions.cpp" line="81"/>
+        <source>--lang needs a language code such as ko</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../sim/SimOptions.cpp" line="84"/>
         <source>--devices needs a device list such as dbu200@1,dcpid@7</source>
         <translation>--devices에는 dbu200@1,dcpid@7 같은 장치 목록이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="88"/>
+        <location filename="../sim/SimOptions.cpp" line="93"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:5020</source>
         <translation>--tcp에는 HOST:PORT가 필요합니다. 예: 127.0.0.1:5020</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="94"/>
+        <location filename="../sim/SimOptions.cpp" line="99"/>
         <source>--tcp needs HOST:PORT with PORT 0..65535, got &apos;%1&apos;</source>
         <translation>--tcp에는 PORT가 0..65535인 HOST:PORT가 필요합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="106"/>
+        <location filename="../sim/SimOptions.cpp" line="111"/>
         <source>--baud must be one of %1, got &apos;%2&apos;</source>
         <translation>--baud는 %1 중 하나여야 합니다. 입력값: &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="113"/>
+        <location filename="../sim/SimOptions.cpp" line="118"/>
         <source>--parity must be N, E or O, got &apos;%1&apos;</source>
         <translation>--parity는 N, E 또는 O여야 합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="121"/>
+        <location filename="../sim/SimOptions.cpp" line="126"/>
         <source>--turnaround must be 0..1000 ms, got &apos;%1&apos;</source>
         <translation>--turnaround는 0..1000 ms여야 합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="125"/>
+        <location filename="../sim/SimOptions.cpp" line="130"/>
         <source>--faults needs a list such as drop=0.02,crc=0.01</source>
         <translation>--faults에는 drop=0.02,crc=0.01 같은 목록이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="129"/>
+        <location filename="../sim/SimOptions.cpp" line="134"/>
         <source>--faults: %1</source>
         <translation>--faults: %1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="135"/>
+        <location filename="../sim/SimOptions.cpp" line="140"/>
         <source>--seed must be a whole number 0..4294967295, got &apos;%1&apos;</source>
         <translation>--seed는 0..4294967295의 정수여야 합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="139"/>
+        <location filename="../sim/SimOptions.cpp" line="144"/>
         <source>--defect needs ID:DEFECT[,DEFECT...], e.g. 3:firmware=1.4; DEFECT: %1</source>
         <translation>--defect에는 ID:DEFECT[,DEFECT...]가 필요합니다. 예: 3:firmware=1.4; DEFECT: %1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="146"/>
+        <location filename="../sim/SimOptions.cpp" line="151"/>
         <source>--defect: %1</source>
         <translation>--defect: %1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="152"/>
+        <location filename="../sim/SimOptions.cpp" line="157"/>
         <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --quiet, --help, --version</source>
         <translation>알 수 없는 인수 &apos;%1&apos;; 옵션: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --quiet, --help, --version</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="159"/>
+        <location filename="../sim/SimOptions.cpp" line="164"/>
         <source>--devices SPEC is required, e.g. --devices dbu200@1,dcpid@7</source>
         <translation>--devices SPEC이 필요합니다. 예: --devices dbu200@1,dcpid@7</translation>
     </message>
@@ -11388,22 +11401,22 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::SpeedDisplay</name>
     <message>
-        <location filename="../main/model/profile/SpeedDisplay.cpp" line="90"/>
+        <location filename="../model/profile/SpeedDisplay.cpp" line="90"/>
         <source>speed display settings not known: %1</source>
         <translation>속도 표시 설정을 알 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/SpeedDisplay.cpp" line="92"/>
+        <location filename="../model/profile/SpeedDisplay.cpp" line="92"/>
         <source>speed display unit code %1 is unknown (0–3)</source>
         <translation>속도 표시 단위 코드 %1을(를) 알 수 없습니다(0–3)</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/SpeedDisplay.cpp" line="94"/>
+        <location filename="../model/profile/SpeedDisplay.cpp" line="94"/>
         <source>speed display ratios must be positive (reduction %1, increase %2)</source>
         <translation>속도 표시 비율은 양수여야 합니다(감속비 %1, 증속비 %2)</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/SpeedDisplay.cpp" line="98"/>
+        <location filename="../model/profile/SpeedDisplay.cpp" line="98"/>
         <source>speed display decimals %1 outside 0–3</source>
         <translation>속도 표시 소수 자릿수 %1이(가) 0–3을 벗어납니다</translation>
     </message>
@@ -11411,182 +11424,182 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::SpeedUnitsPage</name>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="36"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="36"/>
         <source>Speed display</source>
         <translation>속도 표시</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="52"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="52"/>
         <source>Unit shown</source>
         <translation>표시 단위</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="53"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="53"/>
         <source>&amp;Unit:</source>
         <translation>단위(&amp;U):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="54"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="54"/>
         <source>Reduction r&amp;atio:</source>
         <translation>감속비(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="55"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="55"/>
         <source>&amp;Increasing ratio:</source>
         <translation>증속비(&amp;I):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="60"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="60"/>
         <source>Linear speed</source>
         <translation>선속도</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="61"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="61"/>
         <source>Roller diameter for &amp;yd/min:</source>
         <translation>yd/min용 롤러 직경(&amp;Y):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="62"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="62"/>
         <source>Roller diameter for &amp;m/min:</source>
         <translation>m/min용 롤러 직경(&amp;M):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="65"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="65"/>
         <source>Time for a distance</source>
         <translation>거리 이동 시간</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="66"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="66"/>
         <source>Roller &amp;diameter:</source>
         <translation>롤러 직경(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="67"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="67"/>
         <source>Dis&amp;tance:</source>
         <translation>거리(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="68"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="68"/>
         <source>Distance u&amp;nit:</source>
         <translation>거리 단위(&amp;N):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="69"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="69"/>
         <source>Time &amp;format (min = m:ss):</source>
         <translation>시간 형식(&amp;F) (min = m:ss):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="72"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="72"/>
         <source>Display</source>
         <translation>표시</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="73"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="73"/>
         <source>D&amp;ecimals (0–3):</source>
         <translation>소수 자릿수(&amp;E) (0–3):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="74"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="74"/>
         <source>U&amp;pdate time:</source>
         <translation>갱신 시간(&amp;P):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="78"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="78"/>
         <source>Display corrections (motor r/min)</source>
         <translation>표시 보정 (모터 r/min)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="79"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="79"/>
         <source>ro-&amp;0, 250 (300)–500 r/min:</source>
         <translation>ro-0(&amp;0), 250 (300)–500 r/min:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="79"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="79"/>
         <source>ro-&amp;1, 501–1000 r/min:</source>
         <translation>ro-1(&amp;1), 501–1000 r/min:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="80"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="80"/>
         <source>ro-&amp;2, 1001–2000 r/min:</source>
         <translation>ro-2(&amp;2), 1001–2000 r/min:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="80"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="80"/>
         <source>ro-&amp;3, 2001–3000 r/min:</source>
         <translation>ro-3(&amp;3), 2001–3000 r/min:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="85"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="85"/>
         <source>Preview of the drive&apos;s display</source>
         <translation>드라이버 표시 미리 보기</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="88"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="88"/>
         <source> r/min</source>
         <translation> r/min</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="89"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="89"/>
         <source>Motor speed for the preview</source>
         <translation>미리 보기용 모터 속도</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="90"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="90"/>
         <source>Motor &amp;speed:</source>
         <translation>모터 속도(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="93"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="93"/>
         <source>Forward</source>
         <translation>정회전</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="94"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="94"/>
         <source>Reverse (shown with “-”)</source>
         <translation>역회전 (“-”로 표시)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="95"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="95"/>
         <source>Dire&amp;ction:</source>
         <translation>방향(&amp;C):</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="110"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="110"/>
         <source>Drive shows:</source>
         <translation>드라이버 표시:</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="214"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="214"/>
         <source>yd</source>
         <translation>yd</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="214"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="214"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="255"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="255"/>
         <source>Drive shows %1 %2</source>
         <translation>드라이버 표시 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="259"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="259"/>
         <source>Section ro-%1: correction %2 r/min, shaft speed %3 r/min.</source>
         <translation>구간 ro-%1: 보정 %2 r/min, 축 속도 %3 r/min.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="264"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="264"/>
         <source>%1 has more digits than the drive&apos;s %2-digit display can show.</source>
         <translation>%1은(는) 드라이버의 %2자리 표시부로 나타낼 수 있는 자릿수를 넘습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="268"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="268"/>
         <source>Computed %1 %2; the %3-digit display drops the decimals that do not fit.</source>
         <translation>계산값 %1 %2; %3자리 표시부에서는 넘치는 소수 자리가 잘립니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="275"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="275"/>
         <source>Includes edits not yet written.</source>
         <translation>아직 쓰지 않은 편집이 포함되어 있습니다.</translation>
     </message>
@@ -11594,7 +11607,7 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::SpnoSelector</name>
     <message>
-        <location filename="../main/ui/run/SpnoSelector.cpp" line="62"/>
+        <location filename="../ui/run/SpnoSelector.cpp" line="62"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
@@ -11602,12 +11615,12 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::StaleLook</name>
     <message>
-        <location filename="../main/ui/widgets/StaleLook.cpp" line="52"/>
+        <location filename="../ui/widgets/StaleLook.cpp" line="52"/>
         <source>not read yet</source>
         <translation>아직 읽지 않음</translation>
     </message>
     <message>
-        <location filename="../main/ui/widgets/StaleLook.cpp" line="55"/>
+        <location filename="../ui/widgets/StaleLook.cpp" line="55"/>
         <source>updated %1 s ago</source>
         <translation>%1초 전 갱신</translation>
     </message>
@@ -11615,77 +11628,77 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::StartPreview</name>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="107"/>
+        <location filename="../model/run/StartPreview.cpp" line="107"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="107"/>
+        <location filename="../model/run/StartPreview.cpp" line="107"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="149"/>
+        <location filename="../model/run/StartPreview.cpp" line="149"/>
         <source>communication group of %1</source>
         <translation>%1의 통신 그룹</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="158"/>
+        <location filename="../model/run/StartPreview.cpp" line="158"/>
         <source>It runs with running data SPno%1</source>
         <translation>기동 시 운전 데이터: SPno%1</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="160"/>
+        <location filename="../model/run/StartPreview.cpp" line="160"/>
         <source> at %1</source>
         <translation> (%1)</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="163"/>
+        <location filename="../model/run/StartPreview.cpp" line="163"/>
         <source>, direction %1 (the direction command sent since)</source>
         <translation>, 방향 %1 (이후 보낸 방향 명령)</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="164"/>
+        <location filename="../model/run/StartPreview.cpp" line="164"/>
         <source>, direction %1</source>
         <translation>, 방향 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="167"/>
+        <location filename="../model/run/StartPreview.cpp" line="167"/>
         <source>Which running data it runs with could not be read.</source>
         <translation>어떤 운전 데이터로 운전할지 읽을 수 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="170"/>
+        <location filename="../model/run/StartPreview.cpp" line="170"/>
         <source>Warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="172"/>
+        <location filename="../model/run/StartPreview.cpp" line="172"/>
         <source>The start also reaches machine number(s) %1: %2.</source>
         <translation>기동 명령은 국번 %1에도 전달됩니다: %2.</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="175"/>
+        <location filename="../model/run/StartPreview.cpp" line="175"/>
         <source>Not read: %1.</source>
         <translation>읽지 않음: %1.</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="187"/>
+        <location filename="../model/run/StartPreview.cpp" line="187"/>
         <source>This starts the motor of machine number %1.</source>
         <translation>국번 %1의 모터를 기동합니다.</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="189"/>
+        <location filename="../model/run/StartPreview.cpp" line="189"/>
         <source>This sets the speed command of machine number %1 to %2: its motor runs.</source>
         <translation>국번 %1의 속도 명령을 %2(으)로 설정합니다: 모터가 운전합니다.</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="193"/>
+        <location filename="../model/run/StartPreview.cpp" line="193"/>
         <source>Make sure that nobody is near the machine and that it may move. STOP ALL stops every drive at any time.</source>
         <translation>설비 주변에 사람이 없고 설비가 움직여도 되는지 확인하십시오. 전체 정지로 언제든지 모든 드라이버를 정지할 수 있습니다.</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="196"/>
+        <location filename="../model/run/StartPreview.cpp" line="196"/>
         <source>You are asked once per drive while the program runs.</source>
         <translation>프로그램 실행 중 드라이버마다 한 번씩 확인합니다.</translation>
     </message>
@@ -11693,12 +11706,12 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::StatusLight</name>
     <message>
-        <location filename="../main/ui/widgets/StatusLight.cpp" line="30"/>
+        <location filename="../ui/widgets/StatusLight.cpp" line="30"/>
         <source>Status not known yet</source>
         <translation>상태 아직 알 수 없음</translation>
     </message>
     <message>
-        <location filename="../main/ui/widgets/StatusLight.cpp" line="42"/>
+        <location filename="../ui/widgets/StatusLight.cpp" line="42"/>
         <source>Status light %1: %2</source>
         <translation>상태등 %1: %2</translation>
     </message>
@@ -11706,63 +11719,63 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::StopAllButton</name>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="15"/>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="75"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="15"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="75"/>
         <source>STOP ALL</source>
         <translation>전체 정지</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="19"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="19"/>
         <source>Stops every drive on the bus at once (%1), then checks that each has stopped.</source>
         <translation>버스의 모든 드라이버를 한 번에 정지한 뒤(%1) 각 드라이버가 정지했는지 확인합니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="70"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="70"/>
         <source>STOPPING…</source>
         <translation>정지 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="86"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="86"/>
         <source>The stop broadcast to %1 drives FAILED: %2</source>
         <translation>드라이버 %1대에 보낸 정지 브로드캐스트 실패: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="89"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="89"/>
         <source>Stop sent to every drive. No drives are known on the bus, so none was checked; scan the bus to have them checked.</source>
         <translation>모든 드라이버에 정지를 보냈습니다. 버스에 알려진 드라이버가 없어 확인하지 않았습니다. 확인하려면 버스를 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="96"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="96"/>
         <source>Machine number %1: stopped after %2 s</source>
         <translation>국번 %1: %2 s 후 정지</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="99"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="99"/>
         <source>Machine number %1: STILL RUNNING (%2)</source>
         <translation>국번 %1: 아직 운전 중 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="102"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="102"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped</source>
         <translation>국번 %1: 응답 없음, 정지 확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="117"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="117"/>
         <source>STOP ALL: the stop broadcast FAILED</source>
         <translation>전체 정지: 정지 브로드캐스트 실패</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="118"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="118"/>
         <source>STOP ALL: stop sent, no drive checked</source>
         <translation>전체 정지: 정지 보냄, 확인한 드라이버 없음</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="119"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="119"/>
         <source>STOP ALL: every drive stopped</source>
         <translation>전체 정지: 모든 드라이버 정지</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="120"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="120"/>
         <source>STOP ALL: not every drive is confirmed stopped</source>
         <translation>전체 정지: 정지 확인되지 않은 드라이버 있음</translation>
     </message>
@@ -11770,87 +11783,87 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::StopAllCommand</name>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="54"/>
+        <location filename="../cli/StopAllCommand.cpp" line="54"/>
         <source>Broadcast stop to every drive, then confirm each has stopped (needs --yes)</source>
         <translation>모든 드라이버에 정지를 브로드캐스트한 뒤 각 드라이버의 정지를 확인합니다(--yes 필요)</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="60"/>
+        <location filename="../cli/StopAllCommand.cpp" line="60"/>
         <source>Send the stop broadcast.</source>
         <translation>정지 브로드캐스트를 보냅니다.</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="62"/>
+        <location filename="../cli/StopAllCommand.cpp" line="62"/>
         <source>Machine numbers to confirm, e.g. 1,2,5-7 (default on a simulated bus: its drives).</source>
         <translation>정지를 확인할 국번, 예: 1,2,5-7 (시뮬레이션 버스의 기본값: 그 버스의 드라이버).</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="63"/>
+        <location filename="../cli/StopAllCommand.cpp" line="63"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="72"/>
+        <location filename="../cli/StopAllCommand.cpp" line="72"/>
         <source>error: usage: %1 (no other arguments)</source>
         <translation>오류: 사용법: %1 (다른 인수 없음)</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="80"/>
+        <location filename="../cli/StopAllCommand.cpp" line="80"/>
         <source>error: --ids: %1</source>
         <translation>오류: --ids: %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="87"/>
+        <location filename="../cli/StopAllCommand.cpp" line="87"/>
         <source>Would broadcast to every drive on the bus (machine number 0, no reply):</source>
         <translation>버스의 모든 드라이버에 브로드캐스트할 명령(국번 0, 응답 없음):</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="91"/>
+        <location filename="../cli/StopAllCommand.cpp" line="91"/>
         <source>Add --yes to send it.</source>
         <translation>보내려면 --yes를 추가하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="119"/>
+        <location filename="../cli/StopAllCommand.cpp" line="119"/>
         <source>Broadcast %1: %2</source>
         <translation>브로드캐스트 %1: %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="120"/>
+        <location filename="../cli/StopAllCommand.cpp" line="120"/>
         <source>Broadcast %1 FAILED: %2: %3</source>
         <translation>브로드캐스트 %1 실패: %2: %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>Family</source>
         <translation>제품군</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>State</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>Speed</source>
         <translation>속도</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>After</source>
         <translation>이후</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>Detail</source>
         <translation>상세</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="156"/>
+        <location filename="../cli/StopAllCommand.cpp" line="156"/>
         <source>Only the broadcast was sent: drives do not answer a broadcast, so nothing confirms that they stopped. To confirm, pass the machine numbers on this bus, e.g. --ids 1,2,5-7 (opentop-cli scan finds them).</source>
         <translation>브로드캐스트만 보냈습니다: 드라이버는 브로드캐스트에 응답하지 않으므로 정지를 확인할 수 없습니다. 확인하려면 이 버스의 국번을 지정하십시오. 예: --ids 1,2,5-7 (opentop-cli scan으로 찾을 수 있음).</translation>
     </message>
@@ -11858,22 +11871,22 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::StopConfirmer</name>
     <message>
-        <location filename="../main/model/run/StopConfirmer.cpp" line="56"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="56"/>
         <source>%1 drives report neither running state nor speed</source>
         <translation>%1 드라이버는 운전 상태도 속도도 알려주지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StopConfirmer.cpp" line="86"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="86"/>
         <source>%1 is %2: the drive does not take motion commands over the bus (it follows its input terminals)</source>
         <translation>%1이(가) %2입니다: 드라이버가 버스를 통한 운전 명령을 받지 않습니다(입력 단자를 따름)</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StopConfirmer.cpp" line="140"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="140"/>
         <source>still at %1 after %2 s</source>
         <translation>%2 s 후에도 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StopConfirmer.cpp" line="142"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="142"/>
         <source>still running after %1 s</source>
         <translation>%1 s 후에도 운전 중</translation>
     </message>
@@ -11881,7 +11894,7 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::TcpSimServer</name>
     <message>
-        <location filename="../main/sim/TcpSimServer.cpp" line="47"/>
+        <location filename="../sim/TcpSimServer.cpp" line="47"/>
         <source>cannot listen on %1:%2: %3</source>
         <translation>%1:%2에서 수신 대기할 수 없습니다: %3</translation>
     </message>
@@ -11889,47 +11902,47 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::TerminalLamps</name>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="184"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="184"/>
         <source>n/a</source>
         <translation>해당 없음</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="185"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="185"/>
         <source>%1: not applicable (%2)</source>
         <translation>%1: 해당 없음 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="188"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="188"/>
         <source>?</source>
         <translation>?</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="189"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="189"/>
         <source>%1: not read</source>
         <translation>%1: 읽지 않음</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="193"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="193"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="193"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="193"/>
         <source>OFF</source>
         <translation>OFF</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="194"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="194"/>
         <source>%1 is ON</source>
         <translation>%1 ON</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="194"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="194"/>
         <source>%1 is OFF</source>
         <translation>%1 OFF</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="196"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="196"/>
         <source>%1 (last state read, not live)</source>
         <translation>%1 (마지막으로 읽은 상태, 실시간 아님)</translation>
     </message>
@@ -11937,112 +11950,112 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::TestRunPanel</name>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="45"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="45"/>
         <source>&lt;b&gt;Test run of machine number %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;국번 %1 시운전&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="50"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="50"/>
         <source>Machine number %1 has not been identified as a drive of a known family; a test run needs one.</source>
         <translation>국번 %1이(가) 알려진 제품군의 드라이버로 식별되지 않았습니다. 시운전에는 식별이 필요합니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="111"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="111"/>
         <source>&amp;Start</source>
         <translation>기동(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="111"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="111"/>
         <source>S&amp;top</source>
         <translation>정지(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="112"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="112"/>
         <source>&amp;CW</source>
         <translation>CW(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="112"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="112"/>
         <source>CC&amp;W</source>
         <translation>CCW(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="113"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="113"/>
         <source>&amp;Hold</source>
         <translation>여자 유지(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="113"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="113"/>
         <source>&amp;Free</source>
         <translation>여자 해제(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="132"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="132"/>
         <source>Se&amp;lect running data</source>
         <translation>운전 데이터 선택(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="143"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="143"/>
         <source>Return to &amp;I/O priority</source>
         <translation>I/O 우선으로 복귀(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="145"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="145"/>
         <source>Give run, stop, direction and speed selection back to the drive&apos;s input terminals</source>
         <translation>운전, 정지, 방향, 속도 선택을 드라이버의 입력 단자로 되돌립니다</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="191"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="191"/>
         <source>Cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>드라이버가 운전 명령을 받는지 확인하기 위해 %1을(를) 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="227"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="227"/>
         <source>Reading what the start will run…</source>
         <translation>기동 시 운전할 내용을 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="243"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="243"/>
         <source>Start the motor</source>
         <translation>모터 기동</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="257"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="257"/>
         <source>Sending %1…</source>
         <translation>%1 보내는 중…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="293"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="293"/>
         <source>Sent: %1</source>
         <translation>보냄: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="308"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="308"/>
         <source>Read back after the command at %1:</source>
         <translation>%1 명령 후 다시 읽은 값:</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="311"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="311"/>
         <source>The motor is running.</source>
         <translation>모터가 운전 중입니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="311"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="311"/>
         <source>The motor is stopped.</source>
         <translation>모터가 정지해 있습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="313"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="313"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="315"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="315"/>
         <source>(not read: %1)</source>
         <translation>(읽지 않음: %1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="379"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="379"/>
         <source>Polling is paused: the controller brakes the motor %1 s after the last frame it receives (%2). Resume polling to keep the motor running.</source>
         <translation>폴링이 일시 정지되었습니다: 컨트롤러는 마지막 프레임을 받은 뒤 %1 s가 지나면 모터에 브레이크를 겁니다(%2). 모터를 계속 운전하려면 폴링을 재개하십시오.</translation>
     </message>
@@ -12050,12 +12063,12 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::TrafficDescriber</name>
     <message>
-        <location filename="../main/model/traffic/TrafficDescriber.cpp" line="150"/>
+        <location filename="../model/traffic/TrafficDescriber.cpp" line="150"/>
         <source>broadcast: every drive executes it</source>
         <translation>브로드캐스트: 모든 드라이버가 실행</translation>
     </message>
     <message>
-        <location filename="../main/model/traffic/TrafficDescriber.cpp" line="159"/>
+        <location filename="../model/traffic/TrafficDescriber.cpp" line="159"/>
         <source>to %1 (group parent: also %2)</source>
         <translation>%1에게 (그룹 부모: %2에도)</translation>
     </message>
@@ -12063,57 +12076,57 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::TrafficLogModel</name>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="93"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="93"/>
         <source>Tx</source>
         <translation>Tx</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="95"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="95"/>
         <source>Rx</source>
         <translation>Rx</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="97"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="97"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="108"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="108"/>
         <source>%1 (%2 ms)</source>
         <translation>%1 (%2 ms)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="123"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="123"/>
         <source>Time</source>
         <translation>시각</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="125"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="125"/>
         <source>Direction</source>
         <translation>방향</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="127"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="127"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="129"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="129"/>
         <source>Function</source>
         <translation>기능</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="131"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="131"/>
         <source>Bytes</source>
         <translation>바이트</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="133"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="133"/>
         <source>Meaning</source>
         <translation>의미</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="135"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="135"/>
         <source>Error</source>
         <translation>오류</translation>
     </message>
@@ -12121,155 +12134,155 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::TrafficLogView</name>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="43"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="43"/>
         <source>&amp;Errors only</source>
         <translation>오류만(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="44"/>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="157"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="44"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="157"/>
         <source>&amp;Pause</source>
         <translation>일시 정지(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="52"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="52"/>
         <source>All drives</source>
         <translation>모든 드라이버</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="54"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="54"/>
         <source>All</source>
         <translation>전체</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="55"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="55"/>
         <source>Tx (requests)</source>
         <translation>Tx (요청)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="56"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="56"/>
         <source>Rx (replies)</source>
         <translation>Rx (응답)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="57"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="57"/>
         <source>Events (no reply)</source>
         <translation>이벤트 (응답 없음)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="61"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="61"/>
         <source>&amp;Clear</source>
         <translation>지우기(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="63"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="63"/>
         <source>&amp;Save…</source>
         <translation>저장(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="66"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="66"/>
         <source>&amp;Drive:</source>
         <translation>드라이버(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="68"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="68"/>
         <source>Di&amp;rection:</source>
         <translation>방향(&amp;R):</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="82"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="82"/>
         <source>Frames</source>
         <translation>프레임</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
         <source>Requests</source>
         <translation>요청</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
         <source>Replies</source>
         <translation>응답</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Timeouts</source>
         <translation>타임아웃</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>CRC errors</source>
         <translation>CRC 오류</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Exceptions</source>
         <translation>예외</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Wrong/garbled</source>
         <translation>잘못됨/깨짐</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Mean ms</source>
         <translation>평균 ms</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Max ms</source>
         <translation>최대 ms</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="114"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="114"/>
         <source>Statistics per drive</source>
         <translation>드라이버별 통계</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="157"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="157"/>
         <source>&amp;Resume</source>
         <translation>재개(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="211"/>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="264"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="211"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="264"/>
         <source>Broadcast</source>
         <translation>브로드캐스트</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="211"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="211"/>
         <source>Drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="253"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="253"/>
         <source>%1 addresses did not answer: %2</source>
         <translation>응답하지 않은 주소 %1개: %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="255"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="255"/>
         <source>No reply from machine numbers %1</source>
         <translation>응답 없는 국번: %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="281"/>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="286"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="281"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="286"/>
         <source>Save traffic log</source>
         <translation>통신 로그 저장</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="281"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="281"/>
         <source>Text files (*.txt)</source>
         <translation>텍스트 파일 (*.txt)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="287"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="287"/>
         <source>Could not save %1: %2</source>
         <translation>%1을(를) 저장할 수 없습니다: %2</translation>
     </message>
@@ -12277,456 +12290,456 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::Transport</name>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="16"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="16"/>
         <source>No serial port given: enter a device such as /dev/ttyUSB0 or COM3.</source>
         <translation>시리얼 포트가 지정되지 않았습니다: /dev/ttyUSB0 또는 COM3 같은 장치를 입력하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="20"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="20"/>
         <source>Baud rate %1 is not supported: use 1200–115200 (e.g. 9600, 19200, 38400, 57600, 115200).</source>
         <translation>통신 속도 %1은(는) 지원하지 않습니다: 1200–115200을 사용하십시오(예: 9600, 19200, 38400, 57600, 115200).</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="26"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="26"/>
         <source>Parity &apos;%1&apos; is not supported: use N (none), E (even) or O (odd).</source>
         <translation>패리티 &apos;%1&apos;은(는) 지원하지 않습니다: N(없음), E(짝수) 또는 O(홀수)를 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="31"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="31"/>
         <source>%1 data bits are not supported: use 7 or 8.</source>
         <translation>데이터 비트 %1은(는) 지원하지 않습니다: 7 또는 8을 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="35"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="35"/>
         <source>%1 stop bits are not supported: use 1 or 2.</source>
         <translation>스톱 비트 %1은(는) 지원하지 않습니다: 1 또는 2를 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="39"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="39"/>
         <source>Byte timeout %1 ms is not allowed: use 1–10000 ms, or 0 to derive it from the baud rate.</source>
         <translation>바이트 타임아웃 %1 ms는 허용되지 않습니다: 1–10000 ms를 사용하거나, 통신 속도에서 산출하려면 0을 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="47"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="47"/>
         <source>No host given: enter the gateway&apos;s address, e.g. 192.168.1.10.</source>
         <translation>호스트가 지정되지 않았습니다: 게이트웨이 주소를 입력하십시오. 예: 192.168.1.10.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="51"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="51"/>
         <source>TCP port %1 is not allowed: use 1–65535 (Modbus TCP uses 502).</source>
         <translation>TCP 포트 %1은(는) 허용되지 않습니다: 1–65535를 사용하십시오(Modbus TCP는 502 사용).</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="58"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="58"/>
         <source>No simulated devices given: use a list such as dbu200@1,dcpid@7.</source>
         <translation>시뮬레이션 장치가 지정되지 않았습니다: dbu200@1,dcpid@7 같은 목록을 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="64"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="64"/>
         <source>Timeout %1 ms is not allowed: use 10–10000 ms.</source>
         <translation>타임아웃 %1 ms는 허용되지 않습니다: 10–10000 ms를 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="68"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="68"/>
         <source>%1 retries are not allowed: use 0–10.</source>
         <translation>재시도 %1회는 허용되지 않습니다: 0–10을 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="56"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="56"/>
         <source>Vendor name</source>
         <translation>제조사 이름</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="58"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="58"/>
         <source>Product code</source>
         <translation>제품 코드</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="60"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="60"/>
         <source>Revision</source>
         <translation>개정</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="62"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="62"/>
         <source>Vendor URL</source>
         <translation>제조사 URL</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="64"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="64"/>
         <source>Product name</source>
         <translation>제품 이름</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="66"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="66"/>
         <source>Model name</source>
         <translation>모델 이름</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="68"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="68"/>
         <source>User application name</source>
         <translation>사용자 애플리케이션 이름</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="70"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="70"/>
         <source>Object 0x%1</source>
         <translation>오브젝트 0x%1</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="51"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="51"/>
         <source>Cannot open %1: %2</source>
         <translation>%1을(를) 열 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="127"/>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="309"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="127"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="309"/>
         <source>%1 is not open</source>
         <translation>%1이(가) 열려 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="144"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="144"/>
         <source>send failed</source>
         <translation>송신 실패</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="168"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="168"/>
         <source>interrupted while waiting</source>
         <translation>대기 중 중단됨</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="172"/>
-        <location filename="../main/transport/MockBackend.cpp" line="100"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="172"/>
+        <location filename="../transport/MockBackend.cpp" line="100"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 이내에 응답 없음</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="201"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="201"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>다른 응답이 이어졌습니다: 이 응답은 이전 요청에 대한 것일 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="270"/>
-        <location filename="../main/transport/RtuFrame.cpp" line="140"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="270"/>
+        <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>슬레이브 %1의 응답, 기대값 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="281"/>
-        <location filename="../main/transport/RtuBackend.cpp" line="145"/>
-        <location filename="../main/transport/TcpBackend.cpp" line="89"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="281"/>
+        <location filename="../transport/RtuBackend.cpp" line="145"/>
+        <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>응답 불완전</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="286"/>
-        <location filename="../main/transport/RtuFrame.cpp" line="133"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="286"/>
+        <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 불일치</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="293"/>
-        <location filename="../main/transport/RtuBackend.cpp" line="152"/>
-        <location filename="../main/transport/TcpBackend.cpp" line="95"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="293"/>
+        <location filename="../transport/RtuBackend.cpp" line="152"/>
+        <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>수신 실패</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="363"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="363"/>
         <source> (connection closed)</source>
         <translation> (연결 끊김)</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="384"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="384"/>
         <source>stale bytes discarded before sending</source>
         <translation>송신 전 남아 있던 바이트 버림</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="466"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="466"/>
         <source>late bytes discarded after an error</source>
         <translation>오류 후 늦게 온 바이트 버림</translation>
     </message>
     <message>
-        <location filename="../main/transport/MockBackend.cpp" line="57"/>
+        <location filename="../transport/MockBackend.cpp" line="57"/>
         <source>mock is not open</source>
         <translation>mock이 열려 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusBackend.cpp" line="39"/>
+        <location filename="../transport/ModbusBackend.cpp" line="39"/>
         <source>→ %1 bytes</source>
         <translation>→ %1 바이트</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusBackend.cpp" line="51"/>
+        <location filename="../transport/ModbusBackend.cpp" line="51"/>
         <source>echo %1 = %2</source>
         <translation>에코 %1 = %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusBackend.cpp" line="54"/>
+        <location filename="../transport/ModbusBackend.cpp" line="54"/>
         <source>echo %1 ×%2</source>
         <translation>에코 %1 ×%2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="192"/>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="211"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="192"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="211"/>
         <source>cancelled before sending</source>
         <translation>송신 전 취소됨</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="242"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="242"/>
         <source>cannot open %1</source>
         <translation>%1을(를) 열 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="285"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="285"/>
         <source>client closed</source>
         <translation>클라이언트 닫힘</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="142"/>
+        <location filename="../transport/ModbusRequest.cpp" line="142"/>
         <source>Slave address %1 is not allowed: use 1–247, or 0 to broadcast a write.</source>
         <translation>슬레이브 주소 %1은(는) 허용되지 않습니다: 1–247을 사용하거나, 쓰기를 브로드캐스트하려면 0을 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="147"/>
+        <location filename="../transport/ModbusRequest.cpp" line="147"/>
         <source>Function code 0x%1 is not allowed: use 0x01–0x7F.</source>
         <translation>기능 코드 0x%1은(는) 허용되지 않습니다: 0x01–0x7F를 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="151"/>
+        <location filename="../transport/ModbusRequest.cpp" line="151"/>
         <source>Timeout %1 ms is not allowed: use 10–10000 ms, or -1 for the default.</source>
         <translation>타임아웃 %1 ms는 허용되지 않습니다: 10–10000 ms를 사용하거나, 기본값은 -1을 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="156"/>
+        <location filename="../transport/ModbusRequest.cpp" line="156"/>
         <source>%1 retries are not allowed: use 0–10, or -1 for the default.</source>
         <translation>재시도 %1회는 허용되지 않습니다: 0–10을 사용하거나, 기본값은 -1을 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="163"/>
+        <location filename="../transport/ModbusRequest.cpp" line="163"/>
         <source>Function code 0x%1 must be sent as a raw request.</source>
         <translation>기능 코드 0x%1은(는) raw 요청으로 보내야 합니다.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="167"/>
+        <location filename="../transport/ModbusRequest.cpp" line="167"/>
         <source>Raw request data of %1 bytes is too long: at most %2 bytes.</source>
         <translation>raw 요청 데이터 %1바이트는 너무 깁니다: 최대 %2바이트.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="173"/>
+        <location filename="../transport/ModbusRequest.cpp" line="173"/>
         <source>Device identification cannot be broadcast.</source>
         <translation>장치 식별은 브로드캐스트할 수 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="183"/>
+        <location filename="../transport/ModbusRequest.cpp" line="183"/>
         <source>A read cannot be broadcast: use slave address 1–247.</source>
         <translation>읽기는 브로드캐스트할 수 없습니다: 슬레이브 주소 1–247을 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="186"/>
+        <location filename="../transport/ModbusRequest.cpp" line="186"/>
         <source>Cannot read %1 registers at once: use 1–125 registers.</source>
         <translation>레지스터 %1개를 한 번에 읽을 수 없습니다: 1–125개를 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="193"/>
+        <location filename="../transport/ModbusRequest.cpp" line="193"/>
         <source>Write single register needs exactly 1 value, not %1.</source>
         <translation>단일 레지스터 쓰기에는 값이 정확히 1개 필요합니다(%1개가 아님).</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="199"/>
+        <location filename="../transport/ModbusRequest.cpp" line="199"/>
         <source>Cannot write %1 registers at once: use 1–123 registers.</source>
         <translation>레지스터 %1개를 한 번에 쓸 수 없습니다: 1–123개를 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="204"/>
+        <location filename="../transport/ModbusRequest.cpp" line="204"/>
         <source>%1 values given for %2 registers.</source>
         <translation>레지스터 %2개에 값 %1개가 주어졌습니다.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="213"/>
+        <location filename="../transport/ModbusRequest.cpp" line="213"/>
         <source>Registers %1 ×%2 run past the last address 0xFFFF.</source>
         <translation>레지스터 %1 ×%2이(가) 마지막 주소 0xFFFF를 넘어갑니다.</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="224"/>
+        <location filename="../transport/ModbusRequest.cpp" line="224"/>
         <source>device identification code %1 object %2</source>
         <translation>장치 식별 코드 %1 오브젝트 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="232"/>
+        <location filename="../transport/ModbusRequest.cpp" line="232"/>
         <source>raw %1 %2</source>
         <translation>raw %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="236"/>
+        <location filename="../transport/ModbusRequest.cpp" line="236"/>
         <source>read %1 %2 ×%3</source>
         <translation>읽기 %1 %2 ×%3</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="240"/>
+        <location filename="../transport/ModbusRequest.cpp" line="240"/>
         <source>write %1 %2 = %3</source>
         <translation>쓰기 %1 %2 = %3</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="243"/>
+        <location filename="../transport/ModbusRequest.cpp" line="243"/>
         <source>write %1 %2 ×%3 = %4</source>
         <translation>쓰기 %1 %2 ×%3 = %4</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="249"/>
+        <location filename="../transport/ModbusRequest.cpp" line="249"/>
         <source>broadcast %1</source>
         <translation>브로드캐스트 %1</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="11"/>
+        <location filename="../transport/ModbusResult.cpp" line="11"/>
         <source>ok</source>
         <translation>정상</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="13"/>
+        <location filename="../transport/ModbusResult.cpp" line="13"/>
         <source>timeout</source>
         <translation>타임아웃</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="15"/>
+        <location filename="../transport/ModbusResult.cpp" line="15"/>
         <source>CRC error</source>
         <translation>CRC 오류</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="17"/>
+        <location filename="../transport/ModbusResult.cpp" line="17"/>
         <source>reply from wrong slave</source>
         <translation>다른 슬레이브의 응답</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="19"/>
+        <location filename="../transport/ModbusResult.cpp" line="19"/>
         <source>exception</source>
         <translation>예외</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="21"/>
+        <location filename="../transport/ModbusResult.cpp" line="21"/>
         <source>malformed reply</source>
         <translation>잘못된 형식의 응답</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="23"/>
+        <location filename="../transport/ModbusResult.cpp" line="23"/>
         <source>port error</source>
         <translation>포트 오류</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="25"/>
+        <location filename="../transport/ModbusResult.cpp" line="25"/>
         <source>not connected</source>
         <translation>연결 안 됨</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="27"/>
+        <location filename="../transport/ModbusResult.cpp" line="27"/>
         <source>invalid request</source>
         <translation>잘못된 요청</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="29"/>
+        <location filename="../transport/ModbusResult.cpp" line="29"/>
         <source>cancelled</source>
         <translation>취소됨</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="38"/>
+        <location filename="../transport/ModbusResult.cpp" line="38"/>
         <source>Illegal function</source>
         <translation>잘못된 기능 코드</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="40"/>
+        <location filename="../transport/ModbusResult.cpp" line="40"/>
         <source>Illegal data address</source>
         <translation>잘못된 데이터 주소</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="42"/>
+        <location filename="../transport/ModbusResult.cpp" line="42"/>
         <source>Illegal data value</source>
         <translation>잘못된 데이터 값</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="44"/>
+        <location filename="../transport/ModbusResult.cpp" line="44"/>
         <source>Slave device failure</source>
         <translation>슬레이브 장치 고장</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="46"/>
+        <location filename="../transport/ModbusResult.cpp" line="46"/>
         <source>Acknowledge (processing)</source>
         <translation>수신 확인 (처리 중)</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="48"/>
+        <location filename="../transport/ModbusResult.cpp" line="48"/>
         <source>Slave device busy</source>
         <translation>슬레이브 장치 사용 중</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="50"/>
+        <location filename="../transport/ModbusResult.cpp" line="50"/>
         <source>Negative acknowledge</source>
         <translation>부정 응답</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="52"/>
+        <location filename="../transport/ModbusResult.cpp" line="52"/>
         <source>Memory parity error</source>
         <translation>메모리 패리티 오류</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="54"/>
+        <location filename="../transport/ModbusResult.cpp" line="54"/>
         <source>Gateway path unavailable</source>
         <translation>게이트웨이 경로 사용 불가</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="56"/>
+        <location filename="../transport/ModbusResult.cpp" line="56"/>
         <source>Gateway target device failed to respond</source>
         <translation>게이트웨이 대상 장치 응답 없음</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="60"/>
+        <location filename="../transport/ModbusResult.cpp" line="60"/>
         <source>Prohibited action</source>
         <translation>금지된 동작</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="62"/>
+        <location filename="../transport/ModbusResult.cpp" line="62"/>
         <source>Undefined error</source>
         <translation>정의되지 않은 오류</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="64"/>
+        <location filename="../transport/ModbusResult.cpp" line="64"/>
         <source>Unknown exception</source>
         <translation>알 수 없는 예외</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="74"/>
+        <location filename="../transport/ModbusResult.cpp" line="74"/>
         <source>exception %1 %2</source>
         <translation>예외 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="79"/>
+        <location filename="../transport/ModbusResult.cpp" line="79"/>
         <source>timeout after %1 attempts</source>
         <translation>%1회 시도 후 타임아웃</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="81"/>
+        <location filename="../transport/ModbusResult.cpp" line="81"/>
         <source>timeout (no reply)</source>
         <translation>타임아웃 (응답 없음)</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="89"/>
+        <location filename="../transport/ModbusResult.cpp" line="89"/>
         <source> (%1 attempts)</source>
         <translation> (%1회 시도)</translation>
     </message>
     <message>
-        <location filename="../main/transport/PortLock.cpp" line="162"/>
+        <location filename="../transport/PortLock.cpp" line="162"/>
         <source>%1 is in use by another program; close it first.</source>
         <translation>다른 프로그램이 %1을(를) 사용 중입니다. 먼저 그 프로그램을 닫으십시오.</translation>
     </message>
     <message>
-        <location filename="../main/transport/PortLock.cpp" line="167"/>
+        <location filename="../transport/PortLock.cpp" line="167"/>
         <source>another program</source>
         <translation>다른 프로그램</translation>
     </message>
     <message>
-        <location filename="../main/transport/PortLock.cpp" line="169"/>
+        <location filename="../transport/PortLock.cpp" line="169"/>
         <source>%1 is in use by %2 (PID %3); close it first.</source>
         <translation>%2(PID %3)이(가) %1을(를) 사용 중입니다. 먼저 닫으십시오.</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuBackend.cpp" line="82"/>
+        <location filename="../transport/RtuBackend.cpp" line="82"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -12735,92 +12748,92 @@ then log out and in again (the group applies to new sessions only).</source>
 로그아웃했다가 다시 로그인하십시오(그룹은 새 세션에만 적용됨).</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuBackend.cpp" line="88"/>
+        <location filename="../transport/RtuBackend.cpp" line="88"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> (장치가 이 패리티를 지원하지 않을 수 있습니다. pty는 N이 필요합니다)</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuBackend.cpp" line="123"/>
+        <location filename="../transport/RtuBackend.cpp" line="123"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>응답이 %1바이트라고 알리지만 RTU 프레임에 들어갈 수 있는 크기보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuBackend.cpp" line="144"/>
+        <location filename="../transport/RtuBackend.cpp" line="144"/>
         <source>no reply</source>
         <translation>응답 없음</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="127"/>
+        <location filename="../transport/RtuFrame.cpp" line="127"/>
         <source>reply too short (%1 bytes)</source>
         <translation>응답이 너무 짧음(%1바이트)</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="148"/>
+        <location filename="../transport/RtuFrame.cpp" line="148"/>
         <source>exception reply of %1 bytes</source>
         <translation>%1바이트의 예외 응답</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="159"/>
+        <location filename="../transport/RtuFrame.cpp" line="159"/>
         <source>reply function %1, expected %2</source>
         <translation>응답 기능 %1, 기대값 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="166"/>
+        <location filename="../transport/RtuFrame.cpp" line="166"/>
         <source>reply ends inside its own data</source>
         <translation>응답이 자체 데이터 중간에서 끝남</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="171"/>
+        <location filename="../transport/RtuFrame.cpp" line="171"/>
         <source>reply of %1 bytes, expected %2</source>
         <translation>응답 %1바이트, 기대값 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="181"/>
+        <location filename="../transport/RtuFrame.cpp" line="181"/>
         <source>MEI type %1, expected %2</source>
         <translation>MEI 유형 %1, 기대값 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="194"/>
+        <location filename="../transport/RtuFrame.cpp" line="194"/>
         <source>byte count %1, expected %2</source>
         <translation>바이트 수 %1, 기대값 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="207"/>
+        <location filename="../transport/RtuFrame.cpp" line="207"/>
         <source>echo %1 = %2 differs from the write</source>
         <translation>에코 %1 = %2이(가) 쓴 내용과 다름</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="218"/>
+        <location filename="../transport/RtuFrame.cpp" line="218"/>
         <source>echo %1 ×%2 differs from the write</source>
         <translation>에코 %1 ×%2이(가) 쓴 내용과 다름</translation>
     </message>
     <message>
-        <location filename="../main/transport/SerialPortList.cpp" line="64"/>
+        <location filename="../transport/SerialPortList.cpp" line="64"/>
         <source>Pseudo-terminals (e.g. /dev/pts/3 or a socat link) are not listed: type their path.</source>
         <translation>가상 터미널(예: /dev/pts/3 또는 socat 링크)은 목록에 나오지 않습니다: 경로를 입력하십시오.</translation>
     </message>
     <message>
-        <location filename="../main/transport/TcpBackend.cpp" line="105"/>
+        <location filename="../transport/TcpBackend.cpp" line="105"/>
         <source>MBAP length %1</source>
         <translation>MBAP 길이 %1</translation>
     </message>
     <message>
-        <location filename="../main/transport/TrafficEntry.cpp" line="13"/>
+        <location filename="../transport/TrafficEntry.cpp" line="13"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../main/transport/TrafficEntry.cpp" line="15"/>
+        <location filename="../transport/TrafficEntry.cpp" line="15"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../main/transport/TrafficEntry.cpp" line="17"/>
+        <location filename="../transport/TrafficEntry.cpp" line="17"/>
         <source>--</source>
         <translation>--</translation>
     </message>
     <message>
-        <location filename="../main/transport/TrafficEntry.cpp" line="37"/>
+        <location filename="../transport/TrafficEntry.cpp" line="37"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
@@ -12828,13 +12841,13 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendAxes</name>
     <message>
-        <location filename="../main/ui/trends/TrendAxes.cpp" line="40"/>
-        <location filename="../main/ui/trends/TrendAxes.cpp" line="46"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="40"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="46"/>
         <source>%1 [%2]</source>
         <translation>%1 [%2]</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendAxes.cpp" line="45"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="45"/>
         <source>[%1]</source>
         <translation>[%1]</translation>
     </message>
@@ -12842,22 +12855,22 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendChart</name>
     <message>
-        <location filename="../main/ui/trends/TrendChart.cpp" line="43"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="43"/>
         <source>Time (hh:mm:ss)</source>
         <translation>시간 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendChart.cpp" line="85"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="85"/>
         <source>Drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendChart.cpp" line="277"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="277"/>
         <source>There is no trend data to export yet.</source>
         <translation>아직 내보낼 트렌드 데이터가 없습니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendChart.cpp" line="290"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="290"/>
         <source>Cannot write the picture %1.</source>
         <translation>이미지 %1을(를) 저장할 수 없습니다.</translation>
     </message>
@@ -12865,12 +12878,12 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendCsv</name>
     <message>
-        <location filename="../main/model/monitor/TrendCsv.cpp" line="25"/>
+        <location filename="../model/monitor/TrendCsv.cpp" line="25"/>
         <source>time</source>
         <translation>시간</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/TrendCsv.cpp" line="25"/>
+        <location filename="../model/monitor/TrendCsv.cpp" line="25"/>
         <source>seconds</source>
         <translation>초</translation>
     </message>
@@ -12878,123 +12891,123 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendPanel</name>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="50"/>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="78"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="50"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="78"/>
         <source>Pause</source>
         <translation>일시 정지</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="51"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="51"/>
         <source>Live</source>
         <translation>실시간</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="54"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="54"/>
         <source>How often each charted drive is polled. Commands you give always go first; the drives take turns on the bus.</source>
         <translation>차트에 표시하는 각 드라이버를 폴링하는 주기. 사용자가 내린 명령이 항상 먼저 처리되고, 드라이버들은 버스를 차례로 사용합니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="65"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="65"/>
         <source>30 s</source>
         <translation>30 s</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="65"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="65"/>
         <source>1 min</source>
         <translation>1 min</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="65"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="65"/>
         <source>5 min</source>
         <translation>5 min</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="65"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="65"/>
         <source>15 min</source>
         <translation>15 min</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="74"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="74"/>
         <source>Freezes the chart; the values keep being recorded.</source>
         <translation>차트를 고정합니다. 값은 계속 기록됩니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="78"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="78"/>
         <source>Resume</source>
         <translation>재개</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="81"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="81"/>
         <source>Back to the latest values after zooming or pausing.</source>
         <translation>확대하거나 일시 정지한 뒤 최신 값으로 돌아갑니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="86"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="86"/>
         <source>Clear markers</source>
         <translation>마커 지우기</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="89"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="89"/>
         <source>Export CSV…</source>
         <translation>CSV 내보내기…</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="92"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="92"/>
         <source>Export PNG…</source>
         <translation>PNG 내보내기…</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="97"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="97"/>
         <source>Drive / quantity</source>
         <translation>드라이버 / 측정 항목</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="111"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="111"/>
         <source>Poll rate:</source>
         <translation>폴링 주기:</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="113"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="113"/>
         <source>Window:</source>
         <translation>표시 범위:</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="141"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="141"/>
         <source>%1 Hz (%2 ms)</source>
         <translation>%1 Hz (%2 ms)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="200"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="200"/>
         <source>%1 [%2]</source>
         <translation>%1 [%2]</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="253"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="253"/>
         <source>Export trend as CSV</source>
         <translation>트렌드를 CSV로 내보내기</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="253"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="253"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="256"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="256"/>
         <source>Export CSV</source>
         <translation>CSV 내보내기</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="262"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="262"/>
         <source>Export trend as picture</source>
         <translation>트렌드를 이미지로 내보내기</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="263"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="263"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG 이미지 (*.png)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="266"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="266"/>
         <source>Export PNG</source>
         <translation>PNG 내보내기</translation>
     </message>
@@ -13002,37 +13015,37 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendReadout</name>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="25"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="25"/>
         <source>Markers: click in the chart to set marker A, click again to set marker B.</source>
         <translation>마커: 차트를 클릭하면 마커 A, 다시 클릭하면 마커 B를 설정합니다.</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="28"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="28"/>
         <source>A %1   B %2   Δt = B − A = %3 s</source>
         <translation>A %1   B %2   Δt = B − A = %3 s</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="31"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="31"/>
         <source>A %1   (click in the chart to set marker B)</source>
         <translation>A %1   (차트를 클릭하면 마커 B 설정)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="32"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="32"/>
         <source>B %1   (click in the chart to set marker A)</source>
         <translation>B %1   (차트를 클릭하면 마커 A 설정)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="34"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="34"/>
         <source>no data</source>
         <translation>데이터 없음</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="44"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="44"/>
         <source>%1:   A %2   B %3   Δ %4</source>
         <translation>%1:   A %2   B %3   Δ %4</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="46"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="46"/>
         <source>%1:   %2 %3</source>
         <translation>%1:   %2 %3</translation>
     </message>
@@ -13040,27 +13053,27 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitRecordJson</name>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="105"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="105"/>
         <source>not a unit record (format is not &quot;%1&quot;)</source>
         <translation>제품 기록이 아닙니다(format이 &quot;%1&quot;이(가) 아님)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="108"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="108"/>
         <source>unit record version %1 is not known to this program (it reads up to %2)</source>
         <translation>제품 기록 버전 %1은(는) 이 프로그램이 알지 못합니다(%2까지 읽음)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="115"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="115"/>
         <source>the unit record has no serial number</source>
         <translation>제품 기록에 시리얼 번호가 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="127"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="127"/>
         <source>unknown unit status &quot;%1&quot;</source>
         <translation>알 수 없는 제품 상태 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="171"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="171"/>
         <source>not JSON: %1</source>
         <translation>JSON이 아닙니다: %1</translation>
     </message>
@@ -13068,102 +13081,102 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitValuesCsv</name>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="70"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="70"/>
         <source>the CSV file is larger than %1 MB</source>
         <translation>CSV 파일이 %1 MB보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="72"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="72"/>
         <source>not a CSV text file (it holds NUL bytes)</source>
         <translation>CSV 텍스트 파일이 아닙니다(NUL 바이트 포함)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="93"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="93"/>
         <source>line %1: a quoted field is not closed properly</source>
         <translation>%1행: 따옴표로 묶은 필드가 올바르게 닫히지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="97"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="97"/>
         <source>line %1: the header must start with &quot;serial&quot;, not &quot;%2&quot;</source>
         <translation>%1행: 헤더는 &quot;%2&quot;이(가) 아니라 &quot;serial&quot;로 시작해야 합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="101"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="101"/>
         <source>line %1: the header names no per-unit value</source>
         <translation>%1행: 헤더에 제품별 값이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="103"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="103"/>
         <source>line %1: more than %2 columns</source>
         <translation>%1행: 열이 %2개보다 많습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="107"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="107"/>
         <source>line %1: column %2 has no name</source>
         <translation>%1행: 열 %2에 이름이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="109"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="109"/>
         <source>line %1: column &quot;%2&quot; appears twice</source>
         <translation>%1행: 열 &quot;%2&quot;이(가) 두 번 나옵니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="118"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="118"/>
         <source>line %1: %2 fields, but the header has %3</source>
         <translation>%1행: 필드가 %2개이지만 헤더는 %3개입니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="124"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="124"/>
         <source>line %1: no serial number</source>
         <translation>%1행: 시리얼 번호 없음</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="126"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="126"/>
         <source>line %1: serial number &quot;%2&quot; is already on line %3</source>
         <translation>%1행: 시리얼 번호 &quot;%2&quot;이(가) 이미 %3행에 있습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="133"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="133"/>
         <source>the CSV file is empty; it needs a header &quot;serial,&lt;parameter&gt;,...&quot;</source>
         <translation>CSV 파일이 비어 있습니다. &quot;serial,&lt;parameter&gt;,...&quot; 헤더가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="144"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="144"/>
         <source>cannot read %1: %2</source>
         <translation>%1을(를) 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="150"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="150"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="191"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="191"/>
         <source>serial number &quot;%1&quot; is not in the CSV file</source>
         <translation>시리얼 번호 &quot;%1&quot;이(가) CSV 파일에 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="204"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="204"/>
         <source>%1: column &quot;%2&quot; is ambiguous, several positions have this per-unit value; name the column &quot;%3:%2&quot;</source>
         <translation>%1: 열 &quot;%2&quot;이(가) 모호합니다. 여러 위치에 이 제품별 값이 있습니다. 열 이름을 &quot;%3:%2&quot;(으)로 하십시오</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="208"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="208"/>
         <source>%1: the CSV file has no column &quot;%2&quot; (or &quot;%3:%2&quot;) for this per-unit value</source>
         <translation>%1: CSV 파일에 이 제품별 값의 열 &quot;%2&quot;(또는 &quot;%3:%2&quot;)이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="213"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="213"/>
         <source>line %1, column &quot;%2&quot;: no value for serial number &quot;%3&quot;</source>
         <translation>%1행, 열 &quot;%2&quot;: 시리얼 번호 &quot;%3&quot;의 값이 없습니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="222"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="222"/>
         <source>line %1, column &quot;%2&quot;: &quot;%3&quot; is not a number</source>
         <translation>%1행, 열 &quot;%2&quot;: &quot;%3&quot;은(는) 숫자가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="227"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="227"/>
         <source>line %1: %2</source>
         <translation>%1행: %2</translation>
     </message>
@@ -13171,22 +13184,22 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UserGuideDialog</name>
     <message>
-        <location filename="../main/ui/help/UserGuideDialog.cpp" line="26"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="26"/>
         <source>OpenTOP user guide</source>
         <translation>OpenTOP 사용자 가이드</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/UserGuideDialog.cpp" line="28"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="28"/>
         <source> or </source>
         <translation> 또는 </translation>
     </message>
     <message>
-        <location filename="../main/ui/help/UserGuideDialog.cpp" line="31"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="31"/>
         <source>&lt;h2&gt;Commissioning a drive with OpenTOP&lt;/h2&gt;&lt;ol&gt;&lt;li&gt;&lt;b&gt;Connect.&lt;/b&gt; Bus ▸ Connect… chooses the serial port (or USB to RS-485 adapter), a Modbus TCP gateway or a simulated bus, with the bus&apos;s baud rate, parity and stop bits. The status bar says what the program is connected to; a simulated bus is marked as such.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Find the drives.&lt;/b&gt; Bus ▸ Scan bus (F5) asks every machine number 1–247; the drives that answer are identified and listed on the left with their state and control priority.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Select a drive.&lt;/b&gt; Its pages open on the right: Monitor (live values), the parameter pages of its profile, Test run and Alarms.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Edit settings.&lt;/b&gt; An edited field is marked as pending until it is written. Write page (or Drive ▸ Write all pending, Ctrl+W) writes and reads every value back to verify it; Revert drops the edits; Re-read (Ctrl+R) reads the drive again. A value the drive would refuse is never sent: the field says why.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Test-run the motor.&lt;/b&gt; The Test run page starts, stops and reverses the drive in communication priority and asks before the first start of each drive. Return the drive to I/O priority when done, so that the machine&apos;s own inputs control it again.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Stop.&lt;/b&gt; STOP ALL on the toolbar, or %1, stops every drive on the bus at once, from any window of the program.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Watch.&lt;/b&gt; View ▸ Trends (Ctrl+G) charts speeds and loads; View ▸ Bus overview shows every drive at a glance; View ▸ Traffic log (Ctrl+T) shows each frame on the bus with its meaning.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Keep the settings.&lt;/b&gt; Files ▸ Back up saves the settings of one drive or the whole bus to a file; Files ▸ Compare shows differences between drives, files and factory defaults; Files ▸ Restore writes a backup back after a preview.&lt;/li&gt;&lt;/ol&gt;&lt;p&gt;Every keyboard shortcut is listed in Help ▸ Keyboard shortcuts.&lt;/p&gt;&lt;h3&gt;More documentation&lt;/h3&gt;&lt;p&gt;The command line and the simulator: &lt;code&gt;man opentop&lt;/code&gt;, &lt;code&gt;man opentop-cli&lt;/code&gt;, &lt;code&gt;man opentop-sim&lt;/code&gt;.&lt;/p&gt;</source>
         <translation>&lt;h2&gt;OpenTOP으로 드라이버 커미셔닝하기&lt;/h2&gt;&lt;ol&gt;&lt;li&gt;&lt;b&gt;연결.&lt;/b&gt; 버스 ▸ 연결…에서 시리얼 포트(또는 USB–RS-485 어댑터), Modbus TCP 게이트웨이 또는 시뮬레이션 버스를 선택하고 버스의 통신 속도, 패리티, 스톱 비트를 지정합니다. 상태 표시줄에 연결 대상이 표시되며, 시뮬레이션 버스는 그렇게 표시됩니다.&lt;/li&gt;&lt;li&gt;&lt;b&gt;드라이버 찾기.&lt;/b&gt; 버스 ▸ 버스 스캔(F5)은 국번 1–247에 모두 묻습니다. 응답한 드라이버는 식별되어 왼쪽 목록에 상태, 제어 우선순위와 함께 표시됩니다.&lt;/li&gt;&lt;li&gt;&lt;b&gt;드라이버 선택.&lt;/b&gt; 오른쪽에 드라이버의 페이지가 열립니다: 모니터(실시간 값), 프로파일의 파라미터 페이지, 시운전, 알람.&lt;/li&gt;&lt;li&gt;&lt;b&gt;설정 편집.&lt;/b&gt; 편집한 항목은 쓸 때까지 쓰기 대기로 표시됩니다. 페이지 쓰기(또는 드라이버 ▸ 쓰기 대기 모두 쓰기, Ctrl+W)는 값을 쓰고 모두 다시 읽어 검증합니다. 되돌리기는 편집을 버리고, 다시 읽기(Ctrl+R)는 드라이버를 다시 읽습니다. 드라이버가 거부할 값은 보내지 않으며, 항목에 그 이유가 표시됩니다.&lt;/li&gt;&lt;li&gt;&lt;b&gt;모터 시운전.&lt;/b&gt; 시운전 페이지에서 통신 우선으로 드라이버를 기동, 정지, 역회전하며, 드라이버마다 첫 기동 전에 확인합니다. 끝나면 설비 자체의 입력으로 다시 제어하도록 드라이버를 I/O 우선으로 되돌리십시오.&lt;/li&gt;&lt;li&gt;&lt;b&gt;정지.&lt;/b&gt; 도구 모음의 전체 정지 또는 %1을(를) 누르면 프로그램의 어느 창에서든 버스의 모든 드라이버를 한 번에 정지합니다.&lt;/li&gt;&lt;li&gt;&lt;b&gt;감시.&lt;/b&gt; 보기 ▸ 트렌드(Ctrl+G)는 속도와 부하를 차트로 표시하고, 보기 ▸ 버스 개요는 모든 드라이버를 한눈에 보여 주며, 보기 ▸ 통신 로그(Ctrl+T)는 버스의 각 프레임과 그 의미를 표시합니다.&lt;/li&gt;&lt;li&gt;&lt;b&gt;설정 보관.&lt;/b&gt; 파일 ▸ 백업은 드라이버 한 대 또는 버스 전체의 설정을 파일로 저장합니다. 파일 ▸ 비교는 드라이버, 파일, 공장 출하값 사이의 차이를 표시합니다. 파일 ▸ 파일에서 복원은 미리 보기 후 백업을 다시 씁니다.&lt;/li&gt;&lt;/ol&gt;&lt;p&gt;모든 단축키는 도움말 ▸ 단축키에 있습니다.&lt;/p&gt;&lt;h3&gt;추가 문서&lt;/h3&gt;&lt;p&gt;명령줄과 시뮬레이터: &lt;code&gt;man opentop&lt;/code&gt;, &lt;code&gt;man opentop-cli&lt;/code&gt;, &lt;code&gt;man opentop-sim&lt;/code&gt;.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/UserGuideDialog.cpp" line="70"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="70"/>
         <source>&lt;p&gt;The full description of the program: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;프로그램 전체 설명: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</translation>
     </message>
@@ -13194,98 +13207,98 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ValueCodec</name>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="130"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="130"/>
         <source>depends on %1, which is not known yet</source>
         <translation>아직 알 수 없는 %1에 따라 달라집니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="132"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="132"/>
         <source>text of up to %1 characters</source>
         <translation>최대 %1자의 텍스트</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="142"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="142"/>
         <source> or </source>
         <translation> 또는 </translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="150"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="150"/>
         <source>, or </source>
         <translation>, 또는 </translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="151"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="151"/>
         <source>any value</source>
         <translation>모든 값</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="167"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="167"/>
         <source> (the variant is not known, so the value must suit %1; name the variant to use its own range)</source>
         <translation> (기종을 알 수 없으므로 값이 %1에 맞아야 합니다. 해당 기종의 범위를 쓰려면 기종을 지정하십시오)</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="177"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="177"/>
         <source>%1: the allowed values depend on %2, which has not been read</source>
         <translation>%1: 허용 값이 아직 읽지 않은 %2에 따라 달라집니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="182"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="182"/>
         <source>%1: value out of the register&apos;s range; allowed: %2</source>
         <translation>%1: 값이 레지스터 범위를 벗어났습니다. 허용: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="194"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="194"/>
         <source>%1: %2 is not allowed; allowed: %3</source>
         <translation>%1: %2은(는) 허용되지 않습니다. 허용: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="206"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="206"/>
         <source>%1: expected %2 registers, got %3</source>
         <translation>%1: 레지스터 %2개가 필요하지만 %3개입니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="243"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="243"/>
         <source>%1 is text, not a number</source>
         <translation>%1은(는) 숫자가 아니라 텍스트입니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="256"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="256"/>
         <source>%1: %2 is finer than the step of %3 %4; allowed: %5</source>
         <translation>%1: %2이(가) 단위 %3 %4보다 세밀합니다. 허용: %5</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="287"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="287"/>
         <source>%1: at most %2 characters</source>
         <translation>%1: 최대 %2자</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="293"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="293"/>
         <source>%1: only printable ASCII characters are allowed</source>
         <translation>%1: 출력 가능한 ASCII 문자만 허용됩니다</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="305"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="305"/>
         <source>%1: no value given; allowed: %2</source>
         <translation>%1: 값이 없습니다. 허용: %2</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="338"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="338"/>
         <source>%1: &quot;%2&quot; is only available when %3 is %4; allowed now: %5</source>
         <translation>%1: &quot;%2&quot;은(는) %3이(가) %4일 때만 사용할 수 있습니다. 현재 허용: %5</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="351"/>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="368"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="351"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="368"/>
         <source>%1: &quot;%2&quot; is not a valid value; allowed: %3</source>
         <translation>%1: &quot;%2&quot;은(는) 올바른 값이 아닙니다. 허용: %3</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="382"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="382"/>
         <source>(invalid)</source>
         <translation>(무효)</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="393"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="393"/>
         <source>unknown code %1</source>
         <translation>알 수 없는 코드 %1</translation>
     </message>
@@ -13293,22 +13306,22 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::YieldReport</name>
     <message>
-        <location filename="../main/model/eol/YieldReport.cpp" line="51"/>
+        <location filename="../model/eol/YieldReport.cpp" line="51"/>
         <source>still running (or its station has not restarted since it stopped)</source>
         <translation>아직 진행 중(또는 멈춘 뒤 스테이션이 다시 시작되지 않음)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/YieldReport.cpp" line="53"/>
+        <location filename="../model/eol/YieldReport.cpp" line="53"/>
         <source>interrupted</source>
         <translation>중단됨</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/YieldReport.cpp" line="55"/>
+        <location filename="../model/eol/YieldReport.cpp" line="55"/>
         <source>aborted</source>
         <translation>중지됨</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/YieldReport.cpp" line="57"/>
+        <location filename="../model/eol/YieldReport.cpp" line="57"/>
         <source>failed, no reason recorded</source>
         <translation>불합격, 원인 기록 없음</translation>
     </message>

@@ -4,28 +4,28 @@
 <context>
     <name>Freshness</name>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="29"/>
-        <location filename="../main/model/monitor/Freshness.cpp" line="31"/>
+        <location filename="../model/monitor/Freshness.cpp" line="29"/>
+        <location filename="../model/monitor/Freshness.cpp" line="31"/>
         <source>%1 s old</source>
         <translation>%1 s 前</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="33"/>
+        <location filename="../model/monitor/Freshness.cpp" line="33"/>
         <source>%1 min old</source>
         <translation>%1 min 前</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="34"/>
+        <location filename="../model/monitor/Freshness.cpp" line="34"/>
         <source>%1 h old</source>
         <translation>%1 h 前</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="40"/>
+        <location filename="../model/monitor/Freshness.cpp" line="40"/>
         <source>never read</source>
         <translation>从未读取</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="41"/>
+        <location filename="../model/monitor/Freshness.cpp" line="41"/>
         <source>last answer %1 (%2)</source>
         <translation>最后应答 %1（%2）</translation>
     </message>
@@ -33,12 +33,12 @@
 <context>
     <name>SimulatorProcess</name>
     <message>
-        <location filename="../main/app/bench/main.cpp" line="230"/>
+        <location filename="../app/bench/main.cpp" line="230"/>
         <source>cannot start %1: %2</source>
         <translation>无法启动 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/app/bench/main.cpp" line="236"/>
+        <location filename="../app/bench/main.cpp" line="236"/>
         <source>opentop-sim did not get ready: %1</source>
         <translation>opentop-sim 未就绪：%1</translation>
     </message>
@@ -46,42 +46,47 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../main/app/gui/main.cpp" line="46"/>
+        <location filename="../app/gui/main.cpp" line="54"/>
         <source>Commissioning tool for RS-485 Modbus-RTU motor drives.</source>
         <translation>RS-485 Modbus-RTU 电机驱动器调试工具。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="75"/>
+        <location filename="../app/gui/main.cpp" line="58"/>
+        <source>Language of the program: %1 (default: the language menu&apos;s choice, else the system&apos;s).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MonitorOptions.cpp" line="75"/>
         <source>Open the bus overview and the trends of every drive.</source>
         <translation>打开总线总览和所有驱动器的趋势。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="76"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="76"/>
         <source>Monitoring poll interval in milliseconds.</source>
         <translation>监视轮询周期（毫秒）。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="79"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="79"/>
         <source>Quit after this many seconds and print the monitoring statistics (for measurements).</source>
         <translation>运行指定秒数后退出并输出监视统计（用于测量）。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="83"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="83"/>
         <source>Print the monitoring totals every this many seconds (for measurements).</source>
         <translation>每隔指定秒数输出一次监视统计汇总（用于测量）。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="93"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="93"/>
         <source>--poll-ms needs a number of milliseconds</source>
         <translation>--poll-ms 需要一个毫秒数</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="98"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="98"/>
         <source>--quit-after needs a number of seconds</source>
         <translation>--quit-after 需要一个秒数</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="103"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="103"/>
         <source>--stats-every needs a number of seconds</source>
         <translation>--stats-every 需要一个秒数</translation>
     </message>
@@ -89,107 +94,107 @@
 <context>
     <name>opentop</name>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="69"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="69"/>
         <source>not read</source>
         <translation>未读取</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="89"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="89"/>
         <source>No alarm is active.</source>
         <translation>当前无报警。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="91"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="91"/>
         <source>Alarm active: %1 %2.</source>
         <translation>报警中：%1 %2。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="94"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="94"/>
         <source>An alarm is active.</source>
         <translation>有报警发生。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="97"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="97"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>该驱动器设定为仅通过重新上电清除报警（%1）：报警复位无法清除任何报警。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="104"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="104"/>
         <source>%1: could not be read: %2</source>
         <translation>%1：无法读取：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="108"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="108"/>
         <source>%1: no records.</source>
         <translation>%1：无记录。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="111"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="111"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1：%3 条记录中的 %2 条，最新在前</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>Code</source>
         <translation>代码</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>Panel</source>
         <translation>面板</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>Cleared by</source>
         <translation>清除方式</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="123"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="123"/>
         <source>unknown code</source>
         <translation>未知代码</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="130"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="130"/>
         <source>Cause: %1</source>
         <translation>原因：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="132"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="132"/>
         <source>Remedy: %1</source>
         <translation>处理方法：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="134"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="134"/>
         <source>To clear: %1</source>
         <translation>清除方法：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="140"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="140"/>
         <source>Communication error register (%1): could not be read.</source>
         <translation>通信错误寄存器（%1）：无法读取。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="144"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="144"/>
         <source>Communication error register (%1): none (0).</source>
         <translation>通信错误寄存器（%1）：无（0）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="147"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="147"/>
         <source>Communication error register (%1): %2, not a known code.</source>
         <translation>通信错误寄存器（%1）：%2，不是已知代码。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="151"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="151"/>
         <source>Communication error register (%1): %2 %3
   Cause: %4
   Remedy: %5</source>
@@ -198,192 +203,202 @@
   处理方法：%5</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="26"/>
+        <location filename="../cli/CliApp.cpp" line="26"/>
         <source>Machine-readable JSON on standard output.</source>
         <translation>在标准输出上输出机器可读的 JSON。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="27"/>
+        <location filename="../cli/CliApp.cpp" line="27"/>
         <source>Print every frame sent and received on standard error.</source>
         <translation>在标准错误上输出每一帧收发报文。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="29"/>
+        <location filename="../cli/CliApp.cpp" line="29"/>
         <source>Drive variant where the drive does not report it: VARIANT, or ID=VARIANT,... (e.g. dbu400, 150=dbu400).</source>
         <translation>驱动器未报告机型时指定机型：VARIANT，或 ID=VARIANT,…（例如 dbu400, 150=dbu400）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="31"/>
+        <location filename="../cli/CliApp.cpp" line="31"/>
         <source>VARIANT</source>
         <translation>VARIANT</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="33"/>
+        <location filename="../cli/CliApp.cpp" line="33"/>
         <source>The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES): before a write or command, their communication group is read to name every drive it also reaches.</source>
         <translation>总线上的驱动器，例如 1,3,5-7（默认：OPENTOP_BUS_DRIVES）：写入或执行命令前，先读取它们的通信组，以列出该操作同时影响的每台驱动器。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="36"/>
+        <location filename="../cli/CliApp.cpp" line="36"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="38"/>
+        <location filename="../cli/CliApp.cpp" line="38"/>
         <source>Show this help, or a command&apos;s help after the command.</source>
         <translation>显示本帮助；放在命令之后则显示该命令的帮助。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="39"/>
+        <location filename="../cli/CliApp.cpp" line="39"/>
         <source>Show the version.</source>
         <translation>显示版本。</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="28"/>
+        <location filename="../cli/CliApp.cpp" line="43"/>
+        <source>Language of the human output: en, zh_TW, zh_CN, ko, ja (default: the system&apos;s). --json output is the same in every language.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/CliApp.cpp" line="45"/>
+        <source>CODE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/StopAllCommand.cpp" line="28"/>
         <source>stopped</source>
         <translation>已停止</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="30"/>
+        <location filename="../cli/StopAllCommand.cpp" line="30"/>
         <source>STILL RUNNING</source>
         <translation>仍在运行</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="32"/>
+        <location filename="../cli/StopAllCommand.cpp" line="32"/>
         <source>no answer</source>
         <translation>无应答</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="47"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="47"/>
         <source>top level</source>
         <translation>顶层</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="50"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="50"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot; 必须为 1</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="59"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="59"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot; 必须是小写 id</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="69"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="69"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity 必须为 N、E 或 O</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="73"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="73"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial：baud 必须为 1200–115200，stopBits 必须为 1 或 2</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="89"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="89"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits：maxReadRegisters 1–125，maxWriteRegisters 1–123</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="91"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="91"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits：slaves 必须在 1–247 范围内</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="106"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="106"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1] 需要 id、model 和 label</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="108"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="108"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]：id &quot;%2&quot; 重复</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="119"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="119"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1] 需要唯一的 id 和 label</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="130"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="130"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1] 需要功能码 3 或 4，且 first ≤ last</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="174"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="174"/>
         <source>%1 has no name</source>
         <translation>%1 没有名称</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="176"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="176"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1：reset 必须是 %2 之一</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="179"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="179"/>
         <source>%1: code %2 repeated</source>
         <translation>%1：代码 %2 重复</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="201"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="201"/>
         <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
         <translation>%1：storeWith &quot;%2&quot; 不是命令参数</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="204"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="204"/>
         <source>%1: the default is not among its allowed values</source>
         <translation>%1：默认值不在允许值范围内</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="208"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="208"/>
         <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
         <translation>%1：位域 &quot;%2&quot;：功能 &quot;%3&quot; 不是可读参数</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="215"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="215"/>
         <source>%1: condition on unknown parameter &quot;%2&quot;</source>
         <translation>%1：条件引用了未知参数 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="217"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="217"/>
         <source>%1: the default is not allowed when %2</source>
         <translation>%1：当 %2 时不允许使用默认值</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="227"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="227"/>
         <source>%1 runs past address 0xFFFF</source>
         <translation>%1 超出地址 0xFFFF</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="230"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="230"/>
         <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
         <translation>%1 与 &quot;%2&quot; 在 0x%3 处重叠（%4 个寄存器）</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="254"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="254"/>
         <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
         <translation>identify：&quot;%1&quot; 必须是 identify 读取范围内的参数</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="257"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="257"/>
         <source>identify.nameMatch is not a valid regular expression</source>
         <translation>identify.nameMatch 不是有效的正则表达式</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="269"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="269"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1：未知参数 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="297"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="297"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1 必须是参数名、参数名列表或对象</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="306"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="306"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1：&quot;%2&quot; 没有位域 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="312"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="312"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1：%2 不是可用于写入 &quot;%3&quot; 的值</translation>
     </message>
@@ -391,17 +406,17 @@
 <context>
     <name>opentop::AboutDialog</name>
     <message>
-        <location filename="../main/ui/help/AboutDialog.cpp" line="20"/>
+        <location filename="../ui/help/AboutDialog.cpp" line="20"/>
         <source>About OpenTOP</source>
         <translation>关于 OpenTOP</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/AboutDialog.cpp" line="22"/>
+        <location filename="../ui/help/AboutDialog.cpp" line="22"/>
         <source>&lt;h2&gt;OpenTOP %1&lt;/h2&gt;&lt;p&gt;Commissioning tool for RS-485 Modbus-RTU motor drives: TROY DBU brushless drives and a DC motor PID controller.&lt;/p&gt;&lt;p&gt;Copyright © the OpenTOP developers.&lt;br&gt;Licence: GNU General Public License, version 3 or any later version (GPL-3.0-or-later). This program comes with ABSOLUTELY NO WARRANTY; it is free software, and you are welcome to redistribute it under the terms of that licence.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Built with&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (run time; built with %3): GNU Lesser General Public License, version 3 (LGPL-3.0-only); Qt Charts: GNU General Public License, version 3 (GPL-3.0-only)&lt;/li&gt;&lt;li&gt;libmodbus %4: GNU Lesser General Public License, version 2.1 or later (LGPL-2.1-or-later)&lt;/li&gt;&lt;li&gt;GoogleTest (tests only): BSD 3-Clause licence&lt;/li&gt;&lt;/ul&gt;</source>
         <translation>&lt;h2&gt;OpenTOP %1&lt;/h2&gt;&lt;p&gt;RS-485 Modbus-RTU 电机驱动器调试工具：TROY DBU 无刷驱动器和直流电机 PID 控制器。&lt;/p&gt;&lt;p&gt;Copyright © the OpenTOP developers.&lt;br&gt;许可证：GNU 通用公共许可证第 3 版或任何更高版本（GPL-3.0-or-later）。本程序不提供任何担保；它是自由软件，欢迎在该许可证条款下再发布。&lt;/p&gt;&lt;p&gt;&lt;b&gt;构建组件&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2（运行时；构建时 %3）：GNU 宽通用公共许可证第 3 版（LGPL-3.0-only）；Qt Charts：GNU 通用公共许可证第 3 版（GPL-3.0-only）&lt;/li&gt;&lt;li&gt;libmodbus %4：GNU 宽通用公共许可证 2.1 版或更高版本（LGPL-2.1-or-later）&lt;/li&gt;&lt;li&gt;GoogleTest（仅用于测试）：BSD 3-Clause 许可证&lt;/li&gt;&lt;/ul&gt;</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/AboutDialog.cpp" line="45"/>
+        <location filename="../ui/help/AboutDialog.cpp" line="45"/>
         <source>About &amp;Qt</source>
         <translation>关于 Qt(&amp;Q)</translation>
     </message>
@@ -409,47 +424,47 @@
 <context>
     <name>opentop::AlarmBanner</name>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="16"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="16"/>
         <source>Show</source>
         <translation>显示</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="17"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="17"/>
         <source>Dismiss</source>
         <translation>忽略</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="24"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="24"/>
         <source>Open the drive&apos;s alarm history</source>
         <translation>打开该驱动器的报警履历</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="25"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="25"/>
         <source>Hide this alarm until it is cleared; a new alarm shows again</source>
         <translation>在该报警清除前不再显示；新报警会重新显示</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="85"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="85"/>
         <source>Machine %1: %2 %3 — %4</source>
         <translation>站号 %1：%2 %3 — %4</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="89"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="89"/>
         <source>Machine %1: %2 %3</source>
         <translation>站号 %1：%2 %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="91"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="91"/>
         <source>Machine %1: alarm %2h (not in the alarm table)</source>
         <translation>站号 %1：报警 %2h（不在报警表中）</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="95"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="95"/>
         <source>Machine %1: an alarm is active</source>
         <translation>站号 %1：有报警发生</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="98"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="98"/>
         <source>(%n more drive(s) with an alarm)</source>
         <translation>
             <numerusform>（另有 %n 台驱动器报警）</numerusform>
@@ -459,84 +474,84 @@
 <context>
     <name>opentop::AlarmExport</name>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Machine</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Kind</source>
         <translation>类型</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Record</source>
         <translation>记录</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Code</source>
         <translation>代码</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Panel code</source>
         <translation>面板代码</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Cleared by</source>
         <translation>清除方式</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Cause</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Remedy</source>
         <translation>处理方法</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="49"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="49"/>
         <source>alarm</source>
         <translation>报警</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="50"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>warning</source>
         <translation>警告</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="58"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="58"/>
         <source>unknown code</source>
         <translation>未知代码</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="103"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="103"/>
         <source>machine %1: %2</source>
         <translation>站号 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="126"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="126"/>
         <source>%n record(s) of %1 drive(s) written to %2.</source>
         <translation>
             <numerusform>已将 %1 台驱动器的 %n 条记录写入 %2。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="131"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="131"/>
         <source>Not everything could be read: %1</source>
         <translation>部分内容无法读取：%1</translation>
     </message>
@@ -544,57 +559,57 @@
 <context>
     <name>opentop::AlarmHistory</name>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="68"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="68"/>
         <source>%1: erases the %2</source>
         <translation>%1：清除%2</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="107"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="107"/>
         <source>%1 drives have no alarm reset command</source>
         <translation>%1 驱动器没有报警复位命令</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="182"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="182"/>
         <source>The alarm</source>
         <translation>该报警</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="184"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="184"/>
         <source>%1 is cleared.</source>
         <translation>%1 已清除。</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="185"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="185"/>
         <source>No alarm was active; nothing to clear.</source>
         <translation>当前无报警，无需清除。</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="188"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="188"/>
         <source>%1 is still active: only a power cycle clears it. %2</source>
         <translation>%1 仍未清除：只能通过重新上电清除。%2</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="193"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="193"/>
         <source>%1 is still active: the drive is set to clear alarms by a power restart only (%2). Remove the cause, turn the power off, wait 5 s and turn it on again; or change that setting to allow the reset command.</source>
         <translation>%1 仍未清除：该驱动器设定为仅通过重新上电清除报警（%2）。请排除原因，关闭电源，等待 5 s 后再接通；或修改该设定以允许复位命令。</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="199"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="199"/>
         <source>%1 is still active: its cause is still present%2. Remove the cause and turn off the start signal, then reset again.</source>
         <translation>%1 仍未清除：原因仍然存在%2。请排除原因并关闭启动信号，然后再次复位。</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="205"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="205"/>
         <source>The reset was accepted; whether an alarm is still active could not be read.</source>
         <translation>复位已被接受；但无法读取报警是否仍然存在。</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="207"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="207"/>
         <source>The reset failed: %1</source>
         <translation>复位失败：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="210"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="210"/>
         <source>(The drive refused the reset: %1)</source>
         <translation>（驱动器拒绝复位：%1）</translation>
     </message>
@@ -602,8 +617,8 @@
 <context>
     <name>opentop::AlarmRecords</name>
     <message>
-        <location filename="../main/model/alarms/AlarmRecords.cpp" line="90"/>
-        <location filename="../main/model/alarms/AlarmRecords.cpp" line="101"/>
+        <location filename="../model/alarms/AlarmRecords.cpp" line="90"/>
+        <location filename="../model/alarms/AlarmRecords.cpp" line="101"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -611,92 +626,92 @@
 <context>
     <name>opentop::AlarmsCommand</name>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="163"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="163"/>
         <source>Show alarm and warning histories with causes and remedies; reset, erase</source>
         <translation>显示报警和警告履历及原因与处理方法；复位、清除记录</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="170"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="170"/>
         <source>Send the alarm reset command, then tell whether the alarm is cleared or needs a power cycle (needs --yes; exit 4 when it stays active).</source>
         <translation>发送报警复位命令，然后显示报警是否已清除或需要重新上电（需要 --yes；报警仍存在时退出码为 4）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="172"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="172"/>
         <source>Erase the alarm and warning records (needs --yes).</source>
         <translation>清除报警和警告记录（需要 --yes）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="173"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="173"/>
         <source>Confirm --reset and --clear-records.</source>
         <translation>确认 --reset 和 --clear-records。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="184"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="184"/>
         <source>error: usage: %1 (one machine number)</source>
         <translation>错误：用法：%1（一个站号）</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="192"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="192"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="198"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="198"/>
         <source>error: machine number %1 (%2) keeps no alarm or warning records</source>
         <translation>错误：站号 %1（%2）不保存报警或警告记录</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="205"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="205"/>
         <source>error: %1 drives have no %2 command</source>
         <translation>错误：%1 驱动器没有 %2 命令</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="207"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="207"/>
         <source>alarm reset</source>
         <translation>报警复位</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="207"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="207"/>
         <source>record erase</source>
         <translation>清除记录</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="218"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="218"/>
         <source>These change machine number %1; add --yes to send them:</source>
         <translation>以下操作将修改站号 %1；加上 --yes 才会发送：</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="222"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="222"/>
         <source>— clears the active alarm if its cause is gone and it is not one that only a power cycle clears</source>
         <translation>— 若原因已排除且该报警并非只能重新上电清除，则清除当前报警</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="246"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="246"/>
         <source>Machine number %1 (%2)</source>
         <translation>站号 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="272"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="272"/>
         <source>Alarm reset: %1</source>
         <translation>报警复位：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="295"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="295"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>已清除：%1（%2 条记录）；%3</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="298"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="298"/>
         <source>read back empty.</source>
         <translation>回读为空。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="299"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="299"/>
         <source>NOT empty when read back.</source>
         <translation>回读时不为空。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="302"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="302"/>
         <source>Erasing failed: %1</source>
         <translation>清除失败：%1</translation>
     </message>
@@ -704,143 +719,143 @@
 <context>
     <name>opentop::AlarmsPage</name>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="59"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="59"/>
         <source>&amp;Re-read</source>
         <translation>重新读取(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="60"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="60"/>
         <source>Reset &amp;alarm…</source>
         <translation>报警复位(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="61"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="61"/>
         <source>&amp;Clear records…</source>
         <translation>清除记录(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="65"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="65"/>
         <source>Alarms and warnings of machine %1 (%2)</source>
         <translation>站号 %1（%2）的报警和警告</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>Code</source>
         <translation>代码</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>Panel</source>
         <translation>面板</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>Cleared by</source>
         <translation>清除方式</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="102"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="102"/>
         <source>Cause and remedy</source>
         <translation>原因和处理方法</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="103"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="103"/>
         <source>Communication error register</source>
         <translation>通信错误寄存器</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="115"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="115"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>发送报警复位命令；显示报警是否已清除或只能重新上电清除</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="117"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="117"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>清除驱动器保存的报警和警告记录</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="122"/>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="293"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="122"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
         <source>Select a record to see its cause and remedy.</source>
         <translation>选择一条记录查看其原因和处理方法。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="123"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="123"/>
         <source>Not read yet.</source>
         <translation>尚未读取。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="125"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>该驱动器不保存报警或警告记录。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="155"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="155"/>
         <source>Alarm state: %1</source>
         <translation>报警状态：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="247"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="247"/>
         <source>Reading the records…</source>
         <translation>正在读取记录…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="263"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="263"/>
         <source>No alarm is active.</source>
         <translation>当前无报警。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="265"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="265"/>
         <source>Alarm active: %1 %2.</source>
         <translation>报警中：%1 %2。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="267"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="267"/>
         <source>An alarm is active.</source>
         <translation>有报警发生。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="270"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="270"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>该驱动器设定为仅通过重新上电清除报警（%1）：报警复位无法清除任何报警。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="274"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="274"/>
         <source>Could not be read: %1</source>
         <translation>无法读取：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="300"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="300"/>
         <source>This drive has no communication error register.</source>
         <translation>该驱动器没有通信错误寄存器。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="302"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="302"/>
         <source>%1: could not be read.</source>
         <translation>%1：无法读取。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="304"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="304"/>
         <source>%1: no error (0).</source>
         <translation>%1：无错误（0）。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="307"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="307"/>
         <source>%1: %2, not a known code.</source>
         <translation>%1：%2，不是已知代码。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="309"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="309"/>
         <source>%1: %2 %3
 Cause: %4
 Remedy: %5</source>
@@ -849,153 +864,153 @@ Remedy: %5</source>
 处理方法：%5</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="321"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="321"/>
         <source>No alarm records</source>
         <translation>无报警记录</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="321"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="321"/>
         <source>No warning records</source>
         <translation>无警告记录</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="327"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="327"/>
         <source>%1: could not be read: %2</source>
         <translation>%1：无法读取：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="330"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="330"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1：%3 条记录中的 %2 条，最新在前</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="341"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="341"/>
         <source>unknown code</source>
         <translation>未知代码</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="370"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="370"/>
         <source>Record %1: code %2 is not in the %3 table.</source>
         <translation>记录 %1：代码 %2 不在 %3 表中。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="375"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="375"/>
         <source>%1 %2 (record %3)</source>
         <translation>%1 %2（记录 %3）</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="377"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="377"/>
         <source>Cause: %1</source>
         <translation>原因：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="379"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="379"/>
         <source>Remedy: %1</source>
         <translation>处理方法：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="381"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="381"/>
         <source>To clear: %1</source>
         <translation>清除方法：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="410"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="410"/>
         <source>Writes: %1</source>
         <translation>写入：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="411"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="411"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>若原因已排除，将清除当前报警。部分报警只能通过重新上电清除；结果会给出提示。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="414"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="414"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>该驱动器设定为仅通过重新上电清除报警（%1）。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="416"/>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="418"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="416"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="418"/>
         <source>Reset alarm</source>
         <translation>报警复位</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="417"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="417"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>向站号 %1 发送报警复位命令？</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="425"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="425"/>
         <source>Sending the alarm reset…</source>
         <translation>正在发送报警复位…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="431"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="431"/>
         <source>Alarm reset: %1</source>
         <translation>报警复位：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="434"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="434"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>请关闭驱动器电源，等待 5 s 后再接通。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="445"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="445"/>
         <source>%1 (%2 records)</source>
         <translation>%1（%2 条记录）</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="447"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="447"/>
         <source>the alarm and warning records</source>
         <translation>报警和警告记录</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="448"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="448"/>
         <source>Clear records</source>
         <translation>清除记录</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="449"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="449"/>
         <source>Erase %1 of machine %2?</source>
         <translation>清除站号 %2 的%1？</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="449"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="449"/>
         <source> and </source>
         <translation> 和 </translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="450"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="450"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>记录清除后无法恢复。写入：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="452"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="452"/>
         <source>Erase</source>
         <translation>清除</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="459"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="459"/>
         <source>Erasing the records…</source>
         <translation>正在清除记录…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="467"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="467"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>已清除：%1（%2 条记录）；%3</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="470"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="470"/>
         <source>read back empty.</source>
         <translation>回读为空。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="471"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="471"/>
         <source>NOT empty when read back.</source>
         <translation>回读时不为空。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="473"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="473"/>
         <source>Erasing failed: %1</source>
         <translation>清除失败：%1</translation>
     </message>
@@ -1003,100 +1018,100 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupCommand</name>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="34"/>
+        <location filename="../cli/BackupCommand.cpp" line="34"/>
         <source>Save every setting of drives to a backup file (written only when all were read)</source>
         <translation>将驱动器的全部设定保存到备份文件（仅在全部读取成功后写入）</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="40"/>
+        <location filename="../cli/BackupCommand.cpp" line="40"/>
         <source>The backup file to write (replaced atomically).</source>
         <translation>要写入的备份文件（原子替换）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="41"/>
+        <location filename="../cli/BackupCommand.cpp" line="41"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="43"/>
+        <location filename="../cli/BackupCommand.cpp" line="43"/>
         <source>Every drive the connection knows (a simulated bus), or every drive a scan finds.</source>
         <translation>连接已知的所有驱动器（模拟总线），或扫描找到的所有驱动器。</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="51"/>
+        <location filename="../cli/BackupCommand.cpp" line="51"/>
         <source>error: name the machine numbers, or give --all: backup ID... -o FILE</source>
         <translation>错误：请指定站号，或使用 --all：backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="60"/>
-        <location filename="../main/cli/BackupCommand.cpp" line="220"/>
-        <location filename="../main/cli/BackupCommand.cpp" line="226"/>
+        <location filename="../cli/BackupCommand.cpp" line="60"/>
+        <location filename="../cli/BackupCommand.cpp" line="220"/>
+        <location filename="../cli/BackupCommand.cpp" line="226"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="69"/>
+        <location filename="../cli/BackupCommand.cpp" line="69"/>
         <source>scanning the bus for drives…</source>
         <translation>正在扫描总线上的驱动器…</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="99"/>
+        <location filename="../cli/BackupCommand.cpp" line="99"/>
         <source>error: the port %1 was lost while reading %2 (%3)</source>
         <translation>错误：读取 %2 时端口 %1 丢失（%3）</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="102"/>
-        <location filename="../main/cli/BackupCommand.cpp" line="222"/>
+        <location filename="../cli/BackupCommand.cpp" line="102"/>
+        <location filename="../cli/BackupCommand.cpp" line="222"/>
         <source>nothing written to %1</source>
         <translation>未写入 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="110"/>
+        <location filename="../cli/BackupCommand.cpp" line="110"/>
         <source>error: give the file to write: backup ID... -o FILE</source>
         <translation>错误：请指定要写入的文件：backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="114"/>
+        <location filename="../cli/BackupCommand.cpp" line="114"/>
         <source>error: %1; nothing read</source>
         <translation>错误：%1；未读取任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="126"/>
+        <location filename="../cli/BackupCommand.cpp" line="126"/>
         <source>interrupted: nothing written</source>
         <translation>已中断：未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="130"/>
+        <location filename="../cli/BackupCommand.cpp" line="130"/>
         <source>error: no drive answers on %1; nothing written</source>
         <translation>错误：%1 上没有驱动器应答；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="149"/>
+        <location filename="../cli/BackupCommand.cpp" line="149"/>
         <source>machine number %1</source>
         <translation>站号 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="164"/>
+        <location filename="../cli/BackupCommand.cpp" line="164"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>读取站号 %1 时中断：未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="172"/>
+        <location filename="../cli/BackupCommand.cpp" line="172"/>
         <source>%1: cannot read %2</source>
         <translation>%1：无法读取 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="174"/>
+        <location filename="../cli/BackupCommand.cpp" line="174"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1 含有其设备描述不允许的值，因此该备份无法恢复：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="188"/>
+        <location filename="../cli/BackupCommand.cpp" line="188"/>
         <source>%1: %2 settings read in %3 requests, %4 ms</source>
         <translation>%1：%3 次请求读取 %2 项设定，%4 ms</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="195"/>
+        <location filename="../cli/BackupCommand.cpp" line="195"/>
         <source>%1: reading failed, %2 of %3 settings read (%4 requests, %5 ms)</source>
         <translation>%1：读取失败，已读取 %3 项设定中的 %2 项（%4 次请求，%5 ms）</translation>
     </message>
@@ -1104,7 +1119,7 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupDevice</name>
     <message>
-        <location filename="../main/model/files/BackupDevice.cpp" line="75"/>
+        <location filename="../model/files/BackupDevice.cpp" line="75"/>
         <source>drive %1 (%2)</source>
         <translation>驱动器 %1（%2）</translation>
     </message>
@@ -1112,150 +1127,150 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupDialog</name>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="27"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="27"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="28"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="28"/>
         <source>&amp;Save the drives read</source>
         <translation>保存已读取的驱动器(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="29"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="29"/>
         <source>C&amp;lose</source>
         <translation>关闭(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="31"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="31"/>
         <source>Back up drives</source>
         <translation>备份驱动器</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Machine number</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Progress</source>
         <translation>进度</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="40"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="40"/>
         <source>Save only the drives that were read; the others are left out</source>
         <translation>仅保存已读取的驱动器；其余的不保存</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="42"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="42"/>
         <source>Stop after the drive being read</source>
         <translation>读完当前驱动器后停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="87"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="87"/>
         <source>Waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="91"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="91"/>
         <source>%v of %m drives</source>
         <translation>%v / %m 台驱动器</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupDialog.cpp" line="92"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="92"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>正在读取 %n 台驱动器的设定…</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="102"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="102"/>
         <source>Stopping after the drive being read…</source>
         <translation>读完当前驱动器后停止…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="119"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="119"/>
         <source>Not read (cancelled)</source>
         <translation>未读取（已取消）</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="129"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="129"/>
         <source>drive %1: not identified, nothing read</source>
         <translation>驱动器 %1：未识别，未读取任何内容</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="130"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="130"/>
         <source>Not identified</source>
         <translation>未识别</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="138"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="138"/>
         <source>Reading…</source>
         <translation>正在读取…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupDialog.cpp" line="150"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="150"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>%1 ms 内读取了 %n 项设定</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="155"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="155"/>
         <source>%1: cannot read %2</source>
         <translation>%1：无法读取 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="157"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="157"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1 含有其设备描述不允许的值，因此该备份无法恢复：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
         <source>Value not allowed</source>
         <translation>值不允许</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
         <source>Read failed</source>
         <translation>读取失败</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="180"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="180"/>
         <source>Not read: drive(s) %1. Nothing has been saved yet.</source>
         <translation>未读取：驱动器 %1。尚未保存任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupDialog.cpp" line="186"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="186"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>保存已读取的 %n 台驱动器？</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupDialog.cpp" line="210"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="210"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>已将 %n 台驱动器保存到 %1。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="216"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="216"/>
         <source>Left out (not read): drive(s) %1.</source>
         <translation>未保存（未读取）：驱动器 %1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="220"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="220"/>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
     </message>
@@ -1263,12 +1278,12 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFile</name>
     <message>
-        <location filename="../main/model/files/BackupFile.cpp" line="284"/>
+        <location filename="../model/files/BackupFile.cpp" line="284"/>
         <source>cannot read %1: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFile.cpp" line="291"/>
+        <location filename="../model/files/BackupFile.cpp" line="291"/>
         <source>%1 is larger than %2 MB, the most a backup file may hold (a backup of 247 drives is far smaller); not a backup file</source>
         <translation>%1 大于 %2 MB，超过备份文件的上限（247 台驱动器的备份也远小于此）；不是备份文件</translation>
     </message>
@@ -1276,122 +1291,122 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFileParser</name>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="48"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="48"/>
         <source>not a JSON file: %1 at byte %2</source>
         <translation>不是 JSON 文件：%1，位于字节 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="52"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="52"/>
         <source>not an OpenTOP backup file: the JSON is not an object</source>
         <translation>不是 OpenTOP 备份文件：JSON 不是对象</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="62"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="62"/>
         <source>&quot;created&quot; is not an ISO 8601 date and time</source>
         <translation>&quot;created&quot; 不是 ISO 8601 日期时间</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="74"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="74"/>
         <source>the file holds no drives (&quot;devices&quot; must be a non-empty list)</source>
         <translation>文件中没有驱动器（&quot;devices&quot; 必须是非空列表）</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="81"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="81"/>
         <source>%1: not a drive</source>
         <translation>%1：不是驱动器</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="83"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="83"/>
         <source>machine number %1 appears twice</source>
         <translation>站号 %1 出现了两次</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="97"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="97"/>
         <source>not an OpenTOP backup file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>不是 OpenTOP 备份文件（&quot;format&quot; 为 &quot;%1&quot;，而非 &quot;%2&quot;）</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="99"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="99"/>
         <source>not an OpenTOP backup file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>不是 OpenTOP 备份文件（没有 &quot;format&quot;: &quot;%1&quot;）</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="104"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="104"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot; 必须是从 1 起的整数</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="106"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="106"/>
         <source>written by a newer OpenTOP (format version %1); this version reads format version %2</source>
         <translation>由更新版本的 OpenTOP 写入（格式版本 %1）；本版本读取格式版本 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="112"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="112"/>
         <source>the file has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>文件没有校验和（&quot;checksum&quot;: &quot;sha256:…&quot;）；它不是由 OpenTOP 写入的，或写入后被修改过</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="117"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="117"/>
         <source>the file was changed after it was written (checksum mismatch)</source>
         <translation>文件在写入后被修改过（校验和不一致）</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="127"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="127"/>
         <source>%1: &quot;slave&quot; must be a machine number 1–247</source>
         <translation>%1：&quot;slave&quot; 必须是站号 1–247</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="128"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="128"/>
         <source>%1 (machine number %2)</source>
         <translation>%1（站号 %2）</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="132"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="132"/>
         <source>%1: unknown family &quot;%2&quot;; known: %3</source>
         <translation>%1：未知系列 &quot;%2&quot;；已知：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="137"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="137"/>
         <source>%1: &quot;variant&quot; must be text or null</source>
         <translation>%1：&quot;variant&quot; 必须是文本或 null</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="142"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="142"/>
         <source>%1: unknown variant &quot;%2&quot; of family %3; known: %4</source>
         <translation>%1：系列 %3 的未知机型 &quot;%2&quot;；已知：%4</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="144"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="144"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="151"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="151"/>
         <source>%1: &quot;parameters&quot; must be a list</source>
         <translation>%1：&quot;parameters&quot; 必须是列表</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="171"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="171"/>
         <source>%1: no &quot;name&quot;</source>
         <translation>%1：没有 &quot;name&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="174"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="174"/>
         <source>%1 %2: &quot;registers&quot; must be a list</source>
         <translation>%1 %2：&quot;registers&quot; 必须是列表</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="178"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="178"/>
         <source>%1 %2: registers must be numbers 0–65535</source>
         <translation>%1 %2：寄存器必须是 0–65535 的数字</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="184"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="184"/>
         <source>%1 %2: address &quot;%3&quot;, but the %4 profile has it at %5</source>
         <translation>%1 %2：地址为 &quot;%3&quot;，但 %4 设备描述中其地址为 %5</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="209"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="209"/>
         <source>%1: %2: &quot;value&quot; %3 does not match its registers (%4)</source>
         <translation>%1：%2：&quot;value&quot; %3 与其寄存器不一致（%4）</translation>
     </message>
@@ -1399,27 +1414,27 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupValidator</name>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="16"/>
+        <location filename="../model/files/BackupValidator.cpp" line="16"/>
         <source>unknown parameter &quot;%1&quot;: the %2 profile has no such setting</source>
         <translation>未知参数 &quot;%1&quot;：%2 设备描述中没有该设定</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="21"/>
+        <location filename="../model/files/BackupValidator.cpp" line="21"/>
         <source>&quot;%1&quot; is not a setting that backups hold</source>
         <translation>&quot;%1&quot; 不是备份所保存的设定</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="25"/>
+        <location filename="../model/files/BackupValidator.cpp" line="25"/>
         <source>&quot;%1&quot; appears twice</source>
         <translation>&quot;%1&quot; 出现了两次</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="28"/>
+        <location filename="../model/files/BackupValidator.cpp" line="28"/>
         <source>%1: %2 registers, but the parameter has %3</source>
         <translation>%1：%2 个寄存器，但该参数有 %3 个</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="53"/>
+        <location filename="../model/files/BackupValidator.cpp" line="53"/>
         <source>%1: its allowed values depend on %2, which the file does not hold</source>
         <translation>%1：其允许值取决于 %2，但文件中没有该项</translation>
     </message>
@@ -1427,87 +1442,87 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupViewer</name>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="22"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="22"/>
         <source>Backup file</source>
         <translation>备份文件</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
         <source>Label</source>
         <translation>标签</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
         <source>Registers</source>
         <translation>寄存器</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="34"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="34"/>
         <source>&amp;Open…</source>
         <translation>打开(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="35"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Open another backup file</source>
         <translation>打开另一个备份文件</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="36"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="36"/>
         <source>C&amp;lose</source>
         <translation>关闭(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="56"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="56"/>
         <source>%1: no such file</source>
         <translation>%1：文件不存在</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="62"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="62"/>
         <source>the file could not be read</source>
         <translation>无法读取该文件</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="63"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="63"/>
         <source>Backup file %1</source>
         <translation>备份文件 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="71"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="71"/>
         <source>Open backup file</source>
         <translation>打开备份文件</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="72"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="72"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 备份 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="94"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="94"/>
         <source>File: %1</source>
         <translation>文件：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="95"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="95"/>
         <source>Refused: %1</source>
         <translation>已拒绝：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="110"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="110"/>
         <source>, %1 bit/s, parity %2, %3 stop bit(s)</source>
         <translation>，%1 bit/s，校验位 %2，停止位 %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="112"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="112"/>
         <source>File: %1
 Written by %2 on %3 (UTC)
 Read from: %4
@@ -1518,17 +1533,17 @@ Drives: %5</source>
 驱动器：%5</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="121"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="121"/>
         <source>%1 %2, firmware %3</source>
         <translation>%1 %2，固件 %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="123"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="123"/>
         <source>(variant unknown)</source>
         <translation>（机型未知）</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupViewer.cpp" line="125"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="125"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n 项设定</numerusform>
@@ -1538,28 +1553,28 @@ Drives: %5</source>
 <context>
     <name>opentop::BusDocks</name>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="24"/>
+        <location filename="../ui/main/BusDocks.cpp" line="24"/>
         <source>Traffic log</source>
         <translation>报文日志</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="31"/>
+        <location filename="../ui/main/BusDocks.cpp" line="31"/>
         <source>Bus overview</source>
         <translation>总线总览</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="32"/>
+        <location filename="../ui/main/BusDocks.cpp" line="32"/>
         <source>Trends</source>
         <translation>趋势</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="33"/>
+        <location filename="../ui/main/BusDocks.cpp" line="33"/>
         <source>Communication groups</source>
         <translation>通信组</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="36"/>
-        <location filename="../main/ui/main/BusDocks.cpp" line="68"/>
+        <location filename="../ui/main/BusDocks.cpp" line="36"/>
+        <location filename="../ui/main/BusDocks.cpp" line="68"/>
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
@@ -1567,42 +1582,42 @@ Drives: %5</source>
 <context>
     <name>opentop::BusGroups</name>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="108"/>
+        <location filename="../model/bus/BusGroups.cpp" line="108"/>
         <source>machine number %1 is the parent of communication group %1: what is sent to it is also executed by %2 (children do not reply)</source>
         <translation>站号 %1 是通信组 %1 的组父站：发送给它的内容也会由 %2 执行（组子站不应答）</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="118"/>
+        <location filename="../model/bus/BusGroups.cpp" line="118"/>
         <source>%1 and %2</source>
         <translation>%1 和 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="127"/>
+        <location filename="../model/bus/BusGroups.cpp" line="127"/>
         <source>This also reaches machine number %1 (the child of communication group %2; it executes it without replying).</source>
         <translation>该操作也会作用于站号 %1（通信组 %2 的组子站；执行但不应答）。</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="131"/>
+        <location filename="../model/bus/BusGroups.cpp" line="131"/>
         <source>This also reaches machine numbers %1 (the children of communication group %2; they execute it without replying).</source>
         <translation>该操作也会作用于站号 %1（通信组 %2 的组子站；执行但不应答）。</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="141"/>
+        <location filename="../model/bus/BusGroups.cpp" line="141"/>
         <source>child of %1</source>
         <translation>%1 的组子站</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="144"/>
+        <location filename="../model/bus/BusGroups.cpp" line="144"/>
         <source>parent of %1</source>
         <translation>%1 的组父站</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="152"/>
+        <location filename="../model/bus/BusGroups.cpp" line="152"/>
         <source>machine number %1 is a child of %2 and itself a parent: a child must not be a group parent</source>
         <translation>站号 %1 是 %2 的组子站，本身又是组父站：组子站不能同时是组父站</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="157"/>
+        <location filename="../model/bus/BusGroups.cpp" line="157"/>
         <source>machine number %1 is in communication group %2, but no drive %2 is known: frames to %2 reach %1 although nothing answers</source>
         <translation>站号 %1 属于通信组 %2，但没有已知的驱动器 %2：发往 %2 的报文会作用于 %1，但无任何应答</translation>
     </message>
@@ -1610,95 +1625,95 @@ Drives: %5</source>
 <context>
     <name>opentop::BusListModel</name>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="71"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="71"/>
         <source>The machine number in hexadecimal, as the drive&apos;s rotary switches SW1 (high digit) and SW2 (low digit) are set</source>
         <translation>十六进制站号，对应驱动器旋转开关 SW1（高位）和 SW2（低位）的设定</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="74"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="74"/>
         <source>The drive&apos;s MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, purple external interrupt, blue memory or communication error, grey no answer</source>
         <translation>驱动器的 MONITOR 指示灯：红色报警，绿色就绪，橙色 CW，天蓝色 CCW，紫色外部中断，蓝色存储器或通信错误，灰色无应答</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="81"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="81"/>
         <source>LED</source>
         <translation>LED</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="83"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="83"/>
         <source>Machine no.</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="85"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="85"/>
         <source>Hex / switches</source>
         <translation>十六进制 / 开关</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="87"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="87"/>
         <source>Family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="89"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
         <source>Firmware</source>
         <translation>固件</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
         <source>Control priority</source>
         <translation>控制优先级</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="107"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="107"/>
         <source>Two drives may share machine number %1 (%2, %3): check the SW1/SW2 switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
         <translation>可能有两台驱动器共用站号 %1（%2、%3）：请检查线路上每台驱动器的 SW1/SW2 开关，为每台驱动器设定不同的站号并重新上电；终端电阻不当或 A/B 线接反也会导致应答出错。</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="126"/>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="130"/>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="132"/>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="138"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="126"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="130"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="138"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="129"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="129"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 机型未知</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="132"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="159"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="159"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>状态灯 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="162"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="162"/>
         <source>Status light grey: not live — %1</source>
         <translation>状态灯灰色：非实时 — %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="167"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="167"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>该驱动器未报告其机型。请在右键菜单（机型）中选择，以便按正确的限值检查数值。</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="176"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="176"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>该驱动器通过 I/O 端子接收运行命令；通过总线试运行需要通信优先级。</translation>
     </message>
@@ -1706,7 +1721,7 @@ Drives: %5</source>
 <context>
     <name>opentop::BusMemory</name>
     <message>
-        <location filename="../main/model/bus/BusMemory.cpp" line="44"/>
+        <location filename="../model/bus/BusMemory.cpp" line="44"/>
         <source>the simulated bus</source>
         <translation>模拟总线</translation>
     </message>
@@ -1714,7 +1729,7 @@ Drives: %5</source>
 <context>
     <name>opentop::BusOverview</name>
     <message>
-        <location filename="../main/ui/bus/BusOverview.cpp" line="37"/>
+        <location filename="../ui/bus/BusOverview.cpp" line="37"/>
         <source>Double-click a drive to open its pages.</source>
         <translation>双击驱动器打开其页面。</translation>
     </message>
@@ -1722,67 +1737,67 @@ Drives: %5</source>
 <context>
     <name>opentop::BusOverviewModel</name>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="89"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="89"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="91"/>
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="93"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="95"/>
         <source>Display</source>
         <translation>显示</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="97"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="97"/>
         <source>Target</source>
         <translation>目标</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="99"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="99"/>
         <source>Load</source>
         <translation>负载</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="101"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="101"/>
         <source>Alarm</source>
         <translation>报警</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="103"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="103"/>
         <source>Last answer</source>
         <translation>最后应答</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="118"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="118"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="125"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="125"/>
         <source>connection lost; %1</source>
         <translation>连接丢失；%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="127"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="127"/>
         <source>no answer: %1; %2</source>
         <translation>无应答：%1；%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="158"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="158"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="161"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="161"/>
         <source>active</source>
         <translation>发生中</translation>
     </message>
@@ -1790,142 +1805,142 @@ Drives: %5</source>
 <context>
     <name>opentop::BusPanel</name>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="32"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="32"/>
         <source>&amp;Scan</source>
         <translation>扫描(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="35"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="35"/>
         <source>A&amp;dd drive…</source>
         <translation>添加驱动器(&amp;D)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="37"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="37"/>
         <source>Ca&amp;ncel</source>
         <translation>取消(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="46"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="46"/>
         <source>Ask every machine number of the range who answers</source>
         <translation>逐个询问范围内的每个站号是否应答</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="48"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="48"/>
         <source>&amp;from</source>
         <translation>从(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="50"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="50"/>
         <source>&amp;to</source>
         <translation>到(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="55"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="55"/>
         <source>Machine numbers 1–247 (the DBU&apos;s SW1/SW2 switches in hex)</source>
         <translation>站号 1–247（DBU 的 SW1/SW2 开关，十六进制）</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="72"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="72"/>
         <source>Identify one machine number and add it to the list</source>
         <translation>识别一个站号并将其添加到列表</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="77"/>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="182"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="77"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="182"/>
         <source>%v of %m</source>
         <translation>%v / %m</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="78"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="78"/>
         <source>Scan progress</source>
         <translation>扫描进度</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="80"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="80"/>
         <source>Stop the scan after the request on the wire</source>
         <translation>在当前线路上的请求完成后停止扫描</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="113"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="113"/>
         <source>Drives on the bus</source>
         <translation>总线上的驱动器</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="173"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="173"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%v / %m（站号 %1）</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="183"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="183"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>正在扫描 %3 上的站号 %1–%2，每个 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="202"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="202"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>正在等待线路上的请求完成后取消…</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="219"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="219"/>
         <source>Did not answer the last scan.</source>
         <translation>上次扫描未应答。</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="225"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="225"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>扫描在站号 %1 处停止：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/bus/BusPanel.cpp" line="230"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="230"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>在站号 %1–%2 后取消扫描（%4 个中的 %3 个）：找到 %n 台驱动器。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/bus/BusPanel.cpp" line="238"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="238"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>在 %3 s 内于站号 %1–%2 上找到 %n 台驱动器。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="254"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="254"/>
         <source>Add drive</source>
         <translation>添加驱动器</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="254"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="254"/>
         <source>Machine number (1–247; the DBU shows it in hex on SW1/SW2):</source>
         <translation>站号（1–247；DBU 在 SW1/SW2 上以十六进制表示）：</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="264"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="264"/>
         <source>Asking machine number %1…</source>
         <translation>正在询问站号 %1…</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="269"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="269"/>
         <source>Machine number %1: %2 added.</source>
         <translation>站号 %1：已添加 %2。</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="271"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="271"/>
         <source>Machine number %1: %2 %3</source>
         <translation>站号 %1：%2 %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="329"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="329"/>
         <source>&amp;Variant</source>
         <translation>机型(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="345"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="345"/>
         <source>&amp;Identify again</source>
         <translation>重新识别(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="351"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="351"/>
         <source>&amp;Remove from list</source>
         <translation>从列表中移除(&amp;R)</translation>
     </message>
@@ -1933,42 +1948,42 @@ Drives: %5</source>
 <context>
     <name>opentop::BusRecallBar</name>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="20"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="20"/>
         <source>&amp;Scan the bus</source>
         <translation>扫描总线(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="28"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="28"/>
         <source>Hide this bar</source>
         <translation>隐藏此栏</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="29"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="29"/>
         <source>Hide</source>
         <translation>隐藏</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="46"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
         <source>Last time on %1: %2.</source>
         <translation>上次在 %1 上：%2。</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="48"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="48"/>
         <source>&amp;Restore the drive last seen</source>
         <translation>恢复上次识别到的驱动器(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="49"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="49"/>
         <source>&amp;Restore the %1 drives last seen</source>
         <translation>恢复上次识别到的 %1 台驱动器(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="50"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="50"/>
         <source>Identify the drives at these machine numbers again, with the variants set last time</source>
         <translation>按上次设定的机型，重新识别这些站号上的驱动器</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="60"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="60"/>
         <source>No drive is known on %1 yet. Scan the bus to find the drives.</source>
         <translation>%1 上尚无已知的驱动器。请扫描总线查找驱动器。</translation>
     </message>
@@ -1976,17 +1991,17 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../main/model/bus/BusScanner.cpp" line="156"/>
+        <location filename="../model/bus/BusScanner.cpp" line="156"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
         <translation>两次应答报文损坏（%1）：可能有两台驱动器共用站号 %2；请检查它们的 SW1/SW2 开关</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusScanner.cpp" line="161"/>
+        <location filename="../model/bus/BusScanner.cpp" line="161"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>有应答，但没有匹配的设备描述（%1）</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusScanner.cpp" line="191"/>
+        <location filename="../model/bus/BusScanner.cpp" line="191"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>首次应答较迟（超过 %1 ms 等待时间）；加长等待时间可使该总线的扫描更可靠</translation>
     </message>
@@ -1994,42 +2009,42 @@ Drives: %5</source>
 <context>
     <name>opentop::BusSpec</name>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="57"/>
+        <location filename="../model/bus/BusSpec.cpp" line="57"/>
         <source>&quot;%1&quot;: the braces do not pair; a drive&apos;s defects are written in braces after its number, e.g. dbu200@3{firmware=1.4,stall}</source>
         <translation>&quot;%1&quot;：花括号不成对；驱动器的缺陷写在其编号后的花括号中，例如 dbu200@3{firmware=1.4,stall}</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="62"/>
+        <location filename="../model/bus/BusSpec.cpp" line="62"/>
         <source>empty device list; write TYPE@ID[,TYPE@ID...], e.g. dbu200@1,dcpid@7 (types: %1)</source>
         <translation>设备列表为空；请写成 TYPE@ID[,TYPE@ID...]，例如 dbu200@1,dcpid@7（类型：%1）</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="70"/>
+        <location filename="../model/bus/BusSpec.cpp" line="70"/>
         <source>&quot;%1&quot;: the defects in braces end the item, e.g. dbu200@3{stall}</source>
         <translation>&quot;%1&quot;：花括号中的缺陷必须位于该项末尾，例如 dbu200@3{stall}</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="78"/>
+        <location filename="../model/bus/BusSpec.cpp" line="78"/>
         <source>&quot;%1&quot;: write TYPE@ID or TYPE@FIRST-LAST, e.g. dbu200@1</source>
         <translation>&quot;%1&quot;：请写成 TYPE@ID 或 TYPE@FIRST-LAST，例如 dbu200@1</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="83"/>
+        <location filename="../model/bus/BusSpec.cpp" line="83"/>
         <source>&quot;%1&quot;: unknown device type &quot;%2&quot;; known types: %3</source>
         <translation>&quot;%1&quot;：未知设备类型 &quot;%2&quot;；已知类型：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="90"/>
+        <location filename="../model/bus/BusSpec.cpp" line="90"/>
         <source>&quot;%1&quot;: the machine number must be a number or a range such as 1-16</source>
         <translation>&quot;%1&quot;：站号必须是数字或范围，例如 1-16</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="94"/>
+        <location filename="../model/bus/BusSpec.cpp" line="94"/>
         <source>&quot;%1&quot;: machine number %2 is outside %3–%4 for %5</source>
         <translation>&quot;%1&quot;：站号 %2 超出 %5 的范围 %3–%4</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="101"/>
+        <location filename="../model/bus/BusSpec.cpp" line="101"/>
         <source>machine number %1 is given twice</source>
         <translation>站号 %1 重复指定</translation>
     </message>
@@ -2037,205 +2052,205 @@ Drives: %5</source>
 <context>
     <name>opentop::CertificateHtml</name>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="44"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="44"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="46"/>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="46"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="48"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="48"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="50"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="50"/>
         <source>INTERRUPTED</source>
         <translation>已中断</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="52"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="52"/>
         <source>NOT FINISHED</source>
         <translation>未完成</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="65"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="65"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="72"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="72"/>
         <source>End-of-line test certificate</source>
         <translation>下线检测检验证书</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="75"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="75"/>
         <source>Serial number</source>
         <translation>序列号</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="76"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="76"/>
         <source>Recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="76"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="76"/>
         <source>%1, revision %2</source>
         <translation>%1，版本 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="77"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="77"/>
         <source>Recipe checksum</source>
         <translation>配方校验和</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="78"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
         <source>Station</source>
         <translation>工位</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="79"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="79"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="80"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="80"/>
         <source>Started</source>
         <translation>开始时间</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="81"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
         <source>Ended</source>
         <translation>结束时间</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
         <source>Record</source>
         <translation>记录</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="91"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="91"/>
         <source>First failure:</source>
         <translation>首个不合格项：</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="94"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="94"/>
         <source>Drives</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
         <source>Machine number</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
         <source>Variant</source>
         <translation>机型</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
         <source>Firmware</source>
         <translation>固件</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="99"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="99"/>
         <source>Settings</source>
         <translation>设定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
         <source>Setting</source>
         <translation>设定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
         <source>Written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
         <source>Read back</source>
         <translation>回读</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="101"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="101"/>
         <source>Verified</source>
         <translation>已校验</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="105"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="105"/>
         <source>written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="105"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="105"/>
         <source>already set</source>
         <translation>已是该值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="106"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="106"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="106"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="106"/>
         <source>NO</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="108"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="108"/>
         <source>Measurements</source>
         <translation>测量值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Step</source>
         <translation>步骤</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Quantity</source>
         <translation>测量项</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Limits</source>
         <translation>限值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
         <source>pass</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
         <source>Bus traffic around the failure</source>
         <translation>不合格前后的总线报文</translation>
     </message>
@@ -2243,12 +2258,12 @@ Drives: %5</source>
 <context>
     <name>opentop::CertificatePdf</name>
     <message>
-        <location filename="../main/report/CertificatePdf.cpp" line="23"/>
+        <location filename="../report/CertificatePdf.cpp" line="23"/>
         <source>End-of-line certificate %1</source>
         <translation>下线检测证书 %1</translation>
     </message>
     <message>
-        <location filename="../main/report/CertificatePdf.cpp" line="53"/>
+        <location filename="../report/CertificatePdf.cpp" line="53"/>
         <source>%1 · %2 · page %3 of %4</source>
         <translation>%1 · %2 · 第 %3 页，共 %4 页</translation>
     </message>
@@ -2256,7 +2271,7 @@ Drives: %5</source>
 <context>
     <name>opentop::CliApp</name>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="63"/>
+        <location filename="../cli/CliApp.cpp" line="69"/>
         <source>Usage: %1 [options] COMMAND [arguments]
 
 Commissioning tool for RS-485 Modbus-RTU motor drives.
@@ -2271,14 +2286,14 @@ RS-485 Modbus-RTU 电机驱动器调试工具。
 </translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="68"/>
+        <location filename="../cli/CliApp.cpp" line="74"/>
         <source>
 Connection (every command that talks to drives):
   --port PATH | --tcp HOST:PORT | --sim SPEC
   --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
   Defaults follow the family: dbu 19200 8N1, dcpid 9600 8E1; --timeout 200,
   --retries 3 (2 more while the line is noisy: a request needed a retry lately).
-Output: --json  --trace  --variant VARIANT
+Output: --json  --trace  --variant VARIANT  --lang CODE
 Groups: --bus-drives LIST (or OPENTOP_BUS_DRIVES): the drives whose communication
 group is checked before a write or command
 
@@ -2288,36 +2303,21 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
 </source>
-        <translation>
-连接（所有与驱动器通信的命令）：
-  --port PATH | --tcp HOST:PORT | --sim SPEC
-  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
-  默认值随系列而定：dbu 19200 8N1，dcpid 9600 8E1；--timeout 200，
-  --retries 3（线路有干扰时再加 2 次：即最近有请求需要重试）。
-输出：--json  --trace  --variant VARIANT
-通信组：--bus-drives LIST（或 OPENTOP_BUS_DRIVES）：写入或执行命令前
-检查其通信组的驱动器
-
-退出码：0 成功，1 通信失败，2 用法错误，3 值或文件无效
-（未写入任何内容），4 校验不一致或驱动器未停止，
-130 被 Ctrl-C、SIGTERM 或 SIGHUP 中断（会报告已完成的操作）。
-
-&quot;%1 help COMMAND&quot; 显示命令的选项。
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="147"/>
-        <location filename="../main/cli/CliApp.cpp" line="201"/>
+        <location filename="../cli/CliApp.cpp" line="153"/>
+        <location filename="../cli/CliApp.cpp" line="207"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>请尝试 &quot;%1 --help&quot;。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="167"/>
+        <location filename="../cli/CliApp.cpp" line="173"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1：未知命令 &quot;%2&quot;；可用命令： </translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="175"/>
+        <location filename="../cli/CliApp.cpp" line="181"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2326,12 +2326,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="189"/>
+        <location filename="../cli/CliApp.cpp" line="195"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2：--%3 不是该命令的选项；请参阅 &quot;%1 help %2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="200"/>
+        <location filename="../cli/CliApp.cpp" line="206"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -2339,44 +2339,44 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="75"/>
-        <location filename="../main/cli/CliContext.cpp" line="89"/>
-        <location filename="../main/cli/CliContext.cpp" line="97"/>
+        <location filename="../cli/CliContext.cpp" line="75"/>
+        <location filename="../cli/CliContext.cpp" line="89"/>
+        <location filename="../cli/CliContext.cpp" line="97"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="124"/>
+        <location filename="../cli/CliContext.cpp" line="124"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;：%3</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="187"/>
+        <location filename="../cli/CliContext.cpp" line="187"/>
         <source>machine number %1: no connection</source>
         <translation>站号 %1：无连接</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="192"/>
+        <location filename="../cli/CliContext.cpp" line="192"/>
         <source>machine number %1: %2%3</source>
         <translation>站号 %1：%2%3</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="245"/>
+        <location filename="../cli/CliContext.cpp" line="245"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1：&quot;%2&quot; 不是站号 1–247</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="249"/>
+        <location filename="../cli/CliContext.cpp" line="249"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1：&quot;%2&quot; 不是驱动器机型；请使用 %3 之一</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="267"/>
+        <location filename="../cli/CliContext.cpp" line="267"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; 不是站号 1–247，也不是 3-8 这样的范围</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="277"/>
+        <location filename="../cli/CliContext.cpp" line="277"/>
         <source>no machine number given</source>
         <translation>未指定站号</translation>
     </message>
@@ -2384,22 +2384,22 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CodeEntry</name>
     <message>
-        <location filename="../main/model/profile/CodeTable.cpp" line="10"/>
+        <location filename="../model/profile/CodeTable.cpp" line="10"/>
         <source>Alarm-Reset</source>
         <translation>报警复位</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/CodeTable.cpp" line="12"/>
+        <location filename="../model/profile/CodeTable.cpp" line="12"/>
         <source>power cycle</source>
         <translation>重新上电</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/CodeTable.cpp" line="14"/>
+        <location filename="../model/profile/CodeTable.cpp" line="14"/>
         <source>by itself</source>
         <translation>自动</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/CodeTable.cpp" line="15"/>
+        <location filename="../model/profile/CodeTable.cpp" line="15"/>
         <source>—</source>
         <translation>—</translation>
     </message>
@@ -2407,100 +2407,100 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareCommand</name>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="34"/>
+        <location filename="../cli/CompareCommand.cpp" line="34"/>
         <source>Show the settings that differ; A, B: a machine number, FILE or FILE:ID (exit 0 whether or not they differ)</source>
         <translation>显示不同的设定；A、B：站号、FILE 或 FILE:ID（无论是否有差异，退出码均为 0）</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="41"/>
+        <location filename="../cli/CompareCommand.cpp" line="41"/>
         <source>Compare A with the profile&apos;s factory defaults; settings the manual gives no default for are listed, never counted as differences.</source>
         <translation>将 A 与设备描述中的出厂默认值比较；手册未给出默认值的设定会列出，但不计为差异。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="54"/>
-        <location filename="../main/cli/CompareCommand.cpp" line="88"/>
-        <location filename="../main/cli/CompareCommand.cpp" line="146"/>
+        <location filename="../cli/CompareCommand.cpp" line="54"/>
+        <location filename="../cli/CompareCommand.cpp" line="88"/>
+        <location filename="../cli/CompareCommand.cpp" line="146"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="67"/>
+        <location filename="../cli/CompareCommand.cpp" line="67"/>
         <source>interrupted</source>
         <translation>已中断</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="72"/>
+        <location filename="../cli/CompareCommand.cpp" line="72"/>
         <source>error: %1: cannot read %2</source>
         <translation>错误：%1：无法读取 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="76"/>
+        <location filename="../cli/CompareCommand.cpp" line="76"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="107"/>
+        <location filename="../cli/CompareCommand.cpp" line="107"/>
         <source>error: %1 holds several drives (%2): name one as %1:ID</source>
         <translation>错误：%1 包含多台驱动器（%2）：请用 %1:ID 指定其中一台</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="110"/>
+        <location filename="../cli/CompareCommand.cpp" line="110"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>错误：%1 中没有站号为 %2 的驱动器；其中有 %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="126"/>
+        <location filename="../cli/CompareCommand.cpp" line="126"/>
         <source>error: compare A B, or compare A --defaults (A, B: a machine number, FILE or FILE:ID)</source>
         <translation>错误：compare A B 或 compare A --defaults（A、B：站号、FILE 或 FILE:ID）</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="144"/>
+        <location filename="../cli/CompareCommand.cpp" line="144"/>
         <source>factory defaults</source>
         <translation>出厂默认值</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="171"/>
+        <location filename="../cli/CompareCommand.cpp" line="171"/>
         <source>A: %1 (%2)</source>
         <translation>A：%1（%2）</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="172"/>
+        <location filename="../cli/CompareCommand.cpp" line="172"/>
         <source>B: %1</source>
         <translation>B：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
         <source>parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="177"/>
-        <location filename="../main/cli/CompareCommand.cpp" line="178"/>
+        <location filename="../cli/CompareCommand.cpp" line="177"/>
+        <location filename="../cli/CompareCommand.cpp" line="178"/>
         <source>(not held)</source>
         <translation>（无此项）</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="181"/>
+        <location filename="../cli/CompareCommand.cpp" line="181"/>
         <source> in %1 settings compared</source>
         <translation> （共比较 %1 项设定）</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="183"/>
+        <location filename="../cli/CompareCommand.cpp" line="183"/>
         <source>no differences (%1 settings compared)</source>
         <translation>无差异（共比较 %1 项设定）</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="190"/>
+        <location filename="../cli/CompareCommand.cpp" line="190"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
@@ -2508,162 +2508,162 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareDialog</name>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="32"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="32"/>
         <source>&amp;Differences only</source>
         <translation>仅显示差异(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="36"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="36"/>
         <source>Co&amp;mpare</source>
         <translation>比较(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="38"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="38"/>
         <source>Compare settings</source>
         <translation>比较设定</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="39"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="39"/>
         <source>Side A</source>
         <translation>A 侧</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="40"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="40"/>
         <source>Side B</source>
         <translation>B 侧</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="48"/>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
         <source>Setting</source>
         <translation>设定</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="48"/>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="54"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="54"/>
         <source>Filter by setting or parameter name</source>
         <translation>按设定名或参数名筛选</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="56"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="56"/>
         <source>Read the chosen sides and compare them (drives are read fresh)</source>
         <translation>读取所选两侧并进行比较（驱动器会重新读取）</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="66"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="66"/>
         <source>C&amp;lose</source>
         <translation>关闭(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="98"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="98"/>
         <source>%1 refused: %2</source>
         <translation>%1 已拒绝：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="112"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="112"/>
         <source>Reading…</source>
         <translation>正在读取…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="137"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="137"/>
         <source>side A</source>
         <translation>A 侧</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="137"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="137"/>
         <source>side B</source>
         <translation>B 侧</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="141"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="141"/>
         <source>Factory defaults</source>
         <translation>出厂默认值</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="148"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="148"/>
         <source>Choose a backup file and a drive in it for %1.</source>
         <translation>请为%1选择一个备份文件及其中的一台驱动器。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="152"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="152"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="162"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="162"/>
         <source>Choose an identified drive on the bus for %1.</source>
         <translation>请为%1选择总线上一台已识别的驱动器。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="170"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="170"/>
         <source>%1: cannot read %2</source>
         <translation>%1：无法读取 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="195"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="195"/>
         <source>Unknown family %1</source>
         <translation>未知系列 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
         <source>A: %1</source>
         <translation>A：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="215"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="215"/>
         <source>B: %1</source>
         <translation>B：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="216"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
         <source>factory defaults (%1)</source>
         <translation>出厂默认值（%1）</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="226"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="226"/>
         <source>(no documented default)</source>
         <translation>（无文档默认值）</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="227"/>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="229"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="229"/>
         <source>(not held)</source>
         <translation>（无此项）</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/CompareDialog.cpp" line="245"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="245"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n 处差异</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="246"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="246"/>
         <source> in %1 settings compared</source>
         <translation> （共比较 %1 项设定）</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="249"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="249"/>
         <source>Note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="256"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="256"/>
         <source>No factory default documented (never counted as a difference): %1</source>
         <translation>无文档出厂默认值（不计为差异）：%1</translation>
     </message>
@@ -2671,62 +2671,62 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareSide</name>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="22"/>
+        <location filename="../ui/files/CompareSide.cpp" line="22"/>
         <source>Browse…</source>
         <translation>浏览…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="25"/>
+        <location filename="../ui/files/CompareSide.cpp" line="25"/>
         <source>Drive on the bus</source>
         <translation>总线上的驱动器</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="26"/>
+        <location filename="../ui/files/CompareSide.cpp" line="26"/>
         <source>Drive in a backup file</source>
         <translation>备份文件中的驱动器</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="28"/>
+        <location filename="../ui/files/CompareSide.cpp" line="28"/>
         <source>Factory defaults</source>
         <translation>出厂默认值</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="32"/>
+        <location filename="../ui/files/CompareSide.cpp" line="32"/>
         <source>Drive %1 (%2)</source>
         <translation>驱动器 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="36"/>
+        <location filename="../ui/files/CompareSide.cpp" line="36"/>
         <source>Backup file</source>
         <translation>备份文件</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="41"/>
+        <location filename="../ui/files/CompareSide.cpp" line="41"/>
         <source>Source:</source>
         <translation>来源：</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="42"/>
+        <location filename="../ui/files/CompareSide.cpp" line="42"/>
         <source>Drive:</source>
         <translation>驱动器：</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="43"/>
+        <location filename="../ui/files/CompareSide.cpp" line="43"/>
         <source>File:</source>
         <translation>文件：</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="44"/>
+        <location filename="../ui/files/CompareSide.cpp" line="44"/>
         <source>Drive in file:</source>
         <translation>文件中的驱动器：</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="123"/>
+        <location filename="../ui/files/CompareSide.cpp" line="123"/>
         <source>Open backup file</source>
         <translation>打开备份文件</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="124"/>
+        <location filename="../ui/files/CompareSide.cpp" line="124"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 备份 (*.json);;所有文件 (*)</translation>
     </message>
@@ -2734,17 +2734,17 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::Comparer</name>
     <message>
-        <location filename="../main/model/files/Comparer.cpp" line="15"/>
+        <location filename="../model/files/Comparer.cpp" line="15"/>
         <source>nothing to compare: %1 is a %2 drive, %3 a %4 drive</source>
         <translation>无法比较：%1 是 %2 驱动器，%3 是 %4 驱动器</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Comparer.cpp" line="20"/>
+        <location filename="../model/files/Comparer.cpp" line="20"/>
         <source>the variants differ: %1 and %2</source>
         <translation>机型不同：%1 和 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Comparer.cpp" line="55"/>
+        <location filename="../model/files/Comparer.cpp" line="55"/>
         <source>factory defaults</source>
         <translation>出厂默认值</translation>
     </message>
@@ -2752,188 +2752,188 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::ConnectionDialog</name>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="61"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="61"/>
         <source>Connect to a bus</source>
         <translation>连接总线</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="66"/>
         <source>&amp;Serial port</source>
         <translation>串口(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="66"/>
         <source>Modbus &amp;TCP gateway</source>
         <translation>Modbus TCP 网关(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="67"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
         <source>Si&amp;mulated bus</source>
         <translation>模拟总线(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="83"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="83"/>
         <source>&amp;Advanced</source>
         <translation>高级(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="106"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="106"/>
         <source>&amp;Connect</source>
         <translation>连接(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="127"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="127"/>
         <source>&amp;Refresh</source>
         <translation>刷新(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="128"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="128"/>
         <source>List the serial ports again (after plugging in an adapter)</source>
         <translation>重新列出串口（插入适配器后）</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="133"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="133"/>
         <source>&amp;Port:</source>
         <translation>端口(&amp;P)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="142"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="142"/>
         <source>Custom</source>
         <translation>自定义</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="144"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="144"/>
         <source>%1 (%2 %3%4%5)</source>
         <translation>%1（%2 %3%4%5）</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="151"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="151"/>
         <source>Fills in the factory line settings of a drive family</source>
         <translation>填入该驱动器系列的出厂通信设定</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="154"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="154"/>
         <source>&amp;Family defaults:</source>
         <translation>系列默认值(&amp;F)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="158"/>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="286"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="158"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="286"/>
         <source>%1 bit/s</source>
         <translation>%1 bit/s</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="159"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="159"/>
         <source>&amp;Baud rate:</source>
         <translation>波特率(&amp;B)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="161"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="161"/>
         <source>None (N)</source>
         <translation>无 (N)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="162"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="162"/>
         <source>Even (E)</source>
         <translation>偶校验 (E)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="163"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
         <source>Odd (O)</source>
         <translation>奇校验 (O)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="164"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
         <source>P&amp;arity:</source>
         <translation>校验位(&amp;A)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="166"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="166"/>
         <source>1 bit</source>
         <translation>1 位</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="167"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="167"/>
         <source>2 bits</source>
         <translation>2 位</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="168"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
         <source>S&amp;top bits:</source>
         <translation>停止位(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="182"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="182"/>
         <source>e.g. 192.168.1.10</source>
         <translation>例如 192.168.1.10</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="183"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="183"/>
         <source>&amp;Host:</source>
         <translation>主机(&amp;H)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="186"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="186"/>
         <source>Modbus TCP uses port 502</source>
         <translation>Modbus TCP 使用端口 502</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="187"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="187"/>
         <source>TCP p&amp;ort:</source>
         <translation>TCP 端口(&amp;O)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="199"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="199"/>
         <source>Device types and machine numbers: TYPE@NUMBER, comma separated. Types: %1</source>
         <translation>设备类型和站号：TYPE@NUMBER，以逗号分隔。类型：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="202"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="202"/>
         <source>&amp;Devices:</source>
         <translation>设备(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="216"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="216"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="217"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="217"/>
         <source>How long to wait for each reply</source>
         <translation>等待每个应答的时间</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="218"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="218"/>
         <source>Response &amp;timeout:</source>
         <translation>应答超时(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="221"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="221"/>
         <source>Extra attempts after a request got no valid reply</source>
         <translation>请求未获得有效应答后的额外尝试次数</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="222"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="222"/>
         <source>R&amp;etries:</source>
         <translation>重试次数(&amp;E)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="322"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="322"/>
         <source>The device list is not valid.</source>
         <translation>设备列表无效。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="26"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="26"/>
         <source>The port is in use by another program (named above where the system tells it): a terminal program, ModemManager, another OpenTOP window or an opentop-cli command. Close it, or disconnect the other window, and connect again. Nothing was sent on the port.</source>
         <translation>该端口正被其他程序占用（系统能给出名称时已显示在上方）：终端程序、ModemManager、另一个 OpenTOP 窗口或 opentop-cli 命令。请关闭该程序，或断开另一个窗口的连接，然后重新连接。端口上未发送任何内容。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="33"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="33"/>
         <source>Your user may not open serial ports: add it to the dialout group with the command above, then log out and in again.</source>
         <translation>当前用户无权打开串口：请用上面的命令将其加入 dialout 组，然后注销并重新登录。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="36"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="36"/>
         <source>Your user may not open serial ports. Add it to the dialout group:
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -2942,37 +2942,37 @@ then log out and in again (the group applies to new sessions only).</source>
 然后注销并重新登录（该组仅对新会话生效）。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="41"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="41"/>
         <source>The port %1 does not exist: the USB adapter may be unplugged or have come back under another name, or the path is mistyped. Plug it in, press Refresh and pick it from the list; for a pseudo-terminal check that the program serving it (opentop-sim, socat) still runs.</source>
         <translation>端口 %1 不存在：USB 适配器可能已拔出或以其他名称重新出现，或路径输入有误。请插入适配器，按“刷新”并从列表中选择；如果是伪终端，请检查提供它的程序（opentop-sim、socat）是否仍在运行。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="48"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="48"/>
         <source>The connection opened but no drive answered. Check that the baud rate, parity and stop bits (%1) match the drives&apos; settings (DBU: 19200 8N1, DC controller: 9600 8E1) — a framing mismatch looks like silence — that the machine number is right, and that the A and B (D+ and D−) wires are not swapped.</source>
         <translation>连接已打开，但没有驱动器应答。请检查波特率、校验位和停止位（%1）是否与驱动器的设定一致（DBU：19200 8N1，直流控制器：9600 8E1）——帧格式不一致时看起来就像无应答——站号是否正确，以及 A 和 B（D+ 和 D−）线是否接反。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="56"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="56"/>
         <source>The gateway %1:%2 did not accept the connection: check the address and port (Modbus TCP uses 502), that the gateway is powered and on this network, and that no firewall blocks it.</source>
         <translation>网关 %1:%2 未接受连接：请检查地址和端口（Modbus TCP 使用 502），网关是否已通电并在本网络中，以及是否有防火墙阻挡。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="63"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="63"/>
         <source>Check that the adapter is plugged in, that %1 is the right port, and that no other program uses it.</source>
         <translation>请检查适配器是否已插入，%1 是否为正确的端口，以及是否有其他程序正在使用它。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="66"/>
         <source>Check the connection settings and try again.</source>
         <translation>请检查连接设定后重试。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="68"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="68"/>
         <source>Could not use %1: %2</source>
         <translation>无法使用 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="69"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="69"/>
         <source>What to check:</source>
         <translation>检查事项：</translation>
     </message>
@@ -2980,138 +2980,138 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ConnectionOptions</name>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="22"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="22"/>
         <source>Serial device (e.g. /dev/ttyUSB0 or a pty path).</source>
         <translation>串口设备（例如 /dev/ttyUSB0 或 pty 路径）。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="23"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="23"/>
         <source>PATH</source>
         <translation>PATH</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="24"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="24"/>
         <source>Modbus TCP gateway, HOST:PORT (port defaults to 502).</source>
         <translation>Modbus TCP 网关，HOST:PORT（端口默认为 502）。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="25"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="25"/>
         <source>HOST:PORT</source>
         <translation>HOST:PORT</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="26"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="26"/>
         <source>In-process simulated bus, e.g. dbu200@1,dbu400@150,dcpid@7.</source>
         <translation>进程内模拟总线，例如 dbu200@1,dbu400@150,dcpid@7。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="27"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="27"/>
         <source>SPEC</source>
         <translation>SPEC</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="29"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="29"/>
         <source>Device family whose serial defaults apply (dbu: 19200 8N1, dcpid: 9600 8E1).</source>
         <translation>采用其串口默认值的设备系列（dbu：19200 8N1，dcpid：9600 8E1）。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="30"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="30"/>
         <source>FAMILY</source>
         <translation>FAMILY</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="31"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="31"/>
         <source>Baud rate, 1200–115200.</source>
         <translation>波特率，1200–115200。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="31"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="31"/>
         <source>BAUD</source>
         <translation>BAUD</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="32"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="32"/>
         <source>Parity: N, E or O.</source>
         <translation>校验位：N、E 或 O。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="32"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="32"/>
         <source>N|E|O</source>
         <translation>N|E|O</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="33"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="33"/>
         <source>Stop bits: 1 or 2.</source>
         <translation>停止位：1 或 2。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="33"/>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="39"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="33"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="39"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="35"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="35"/>
         <source>Response timeout per attempt in ms, 10–10000 (default 200).</source>
         <translation>每次尝试的应答超时（ms），10–10000（默认 200）。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="35"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="35"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="37"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="37"/>
         <source>Extra attempts after no reply or a garbled one, 0–10 (default 3; 2 more while the line is noisy).</source>
         <translation>无应答或应答损坏后的额外尝试次数，0–10（默认 3；线路有干扰时再加 2 次）。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="73"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="73"/>
         <source>give only one of --port, --tcp and --sim</source>
         <translation>--port、--tcp 和 --sim 只能指定其中一个</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="75"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="75"/>
         <source>no bus given: use --port PATH, --tcp HOST:PORT or --sim SPEC</source>
         <translation>未指定总线：请使用 --port PATH、--tcp HOST:PORT 或 --sim SPEC</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="84"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="84"/>
         <source>--family %1: unknown family; use one of %2</source>
         <translation>--family %1：未知系列；请使用 %2 之一</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="103"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
         <source>--tcp: &quot;%1&quot; is not HOST:PORT</source>
         <translation>--tcp：&quot;%1&quot; 不是 HOST:PORT</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="112"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="112"/>
         <source>--sim: %1</source>
         <translation>--sim：%1</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="125"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="125"/>
         <source>--baud %1: use a baud rate 1200–115200 (e.g. 9600, 19200, 38400)</source>
         <translation>--baud %1：请使用 1200–115200 的波特率（例如 9600、19200、38400）</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="129"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="129"/>
         <source>--stop-bits %1: use 1 or 2</source>
         <translation>--stop-bits %1：请使用 1 或 2</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="131"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="131"/>
         <source>--timeout %1: use a response timeout of 10–10000 ms</source>
         <translation>--timeout %1：请使用 10–10000 ms 的应答超时</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="134"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="134"/>
         <source>--retries %1: use 0–10 extra attempts</source>
         <translation>--retries %1：请使用 0–10 次额外尝试</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="139"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="139"/>
         <source>--parity %1: use N (none), E (even) or O (odd)</source>
         <translation>--parity %1：请使用 N（无）、E（偶）或 O（奇）</translation>
     </message>
@@ -3119,18 +3119,18 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ConnectionStatus</name>
     <message>
-        <location filename="../main/ui/main/ConnectionStatus.cpp" line="20"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="20"/>
         <source>SIMULATED BUS — no hardware</source>
         <translation>模拟总线 — 无硬件</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/ConnectionStatus.cpp" line="21"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="21"/>
         <source>These drives exist only in this program; nothing moves.</source>
         <translation>这些驱动器仅存在于本程序中；不会有任何动作。</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/ConnectionStatus.cpp" line="26"/>
-        <location filename="../main/ui/main/ConnectionStatus.cpp" line="61"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="26"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="61"/>
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
@@ -3138,92 +3138,92 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::DbuSimDevice</name>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="340"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="340"/>
         <source>alarm 0x%1</source>
         <translation>报警 0x%1</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="341"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="341"/>
         <source>running</source>
         <translation>运行中</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="342"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="342"/>
         <source>stopped</source>
         <translation>已停止</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="343"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="343"/>
         <source>%1 %2 r/min (target %3) SPno%4 load %5 % %6, %7 priority, %8%9</source>
         <translation>%1 %2 r/min（目标 %3）SPno%4 负载 %5 % %6，%7优先级，%8%9</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="347"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="347"/>
         <source>communication</source>
         <translation>通信</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="347"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="347"/>
         <source>I/O</source>
         <translation>I/O</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="348"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="348"/>
         <source>offline</source>
         <translation>离线</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="348"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="348"/>
         <source>online</source>
         <translation>在线</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="349"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="349"/>
         <source>, ignoring stop</source>
         <translation>，忽略停止</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="357"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="357"/>
         <source>usage: %1 ID CODE</source>
         <translation>用法：%1 ID CODE</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="360"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="360"/>
         <source>warning cleared</source>
         <translation>警告已清除</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="365"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="365"/>
         <source>unknown %1 code %2; allowed: %3</source>
         <translation>未知%1代码 %2；允许：%3</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="373"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="373"/>
         <source>%1 0x%2 raised</source>
         <translation>已触发%1 0x%2</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="384"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="384"/>
         <source>usage: ignore-stop ID on|off</source>
         <translation>用法：ignore-stop ID on|off</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="386"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="386"/>
         <source>stop commands are acknowledged and ignored</source>
         <translation>停止命令会被应答但被忽略</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="387"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="387"/>
         <source>stop commands are obeyed</source>
         <translation>停止命令会被执行</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="403"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="403"/>
         <source>usage: %1 ID VALUE with VALUE %2..%3</source>
         <translation>用法：%1 ID VALUE，VALUE 范围 %2..%3</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="405"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="405"/>
         <source>%1 = %2</source>
         <translation>%1 = %2</translation>
     </message>
@@ -3231,232 +3231,232 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::DcControllerPage</name>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="41"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="41"/>
         <source>DC controller</source>
         <translation>直流控制器</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="44"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="44"/>
         <source>Re&amp;load stored configuration</source>
         <translation>重新载入已保存的配置(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="66"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="66"/>
         <source>Store &amp;configuration</source>
         <translation>保存配置(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="67"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="67"/>
         <source>Store P&amp;ID</source>
         <translation>保存 PID(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="68"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="68"/>
         <source>Store pre&amp;set</source>
         <translation>保存预设(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="71"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="71"/>
         <source>Writes %1 = 1: %2</source>
         <translation>写入 %1 = 1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="76"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="76"/>
         <source>Writes store.config = 0: the controller reloads the stored configuration; unstored configuration changes are discarded</source>
         <translation>写入 store.config = 0：控制器重新载入已保存的配置；未保存的配置修改将被丢弃</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="83"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="83"/>
         <source>Speed mode and motor currents</source>
         <translation>速度模式和电机电流</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="84"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="84"/>
         <source>Speed &amp;mode:</source>
         <translation>速度模式(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="85"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="85"/>
         <source>Rated current:</source>
         <translation>额定电流：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="86"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="86"/>
         <source>Maximum start/load current:</source>
         <translation>最大启动/负载电流：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="87"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="87"/>
         <source>Brake current:</source>
         <translation>制动电流：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="89"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="89"/>
         <source>Limit switches</source>
         <translation>限位开关</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="90"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="90"/>
         <source>Limits:</source>
         <translation>限位：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="91"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="91"/>
         <source>SQ1 active level (forward):</source>
         <translation>SQ1 有效电平（正转）：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="92"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="92"/>
         <source>SQ2 active level (reverse):</source>
         <translation>SQ2 有效电平（反转）：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="94"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="94"/>
         <source>Protective stops (0 = off)</source>
         <translation>保护停止（0 = 关闭）</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="95"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="95"/>
         <source>S&amp;tall stop time:</source>
         <translation>堵转停止时间(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="96"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="96"/>
         <source>Communication loss stop time:</source>
         <translation>通信中断停止时间：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="104"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="104"/>
         <source>Serial port (reconnect after a change)</source>
         <translation>串口（修改后需重新连接）</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="105"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="105"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="106"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="106"/>
         <source>Parity and stop bits:</source>
         <translation>校验位和停止位：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="107"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="107"/>
         <source>Configuration over serial:</source>
         <translation>通过串口配置：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="109"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="109"/>
         <source>Lost at power-off until stored (Store configuration); a stored baud rate or parity is used from the next power-up on, and the tool must then reconnect with it.</source>
         <translation>未保存（保存配置）前断电即丢失；保存的波特率或校验位从下次上电起生效，届时本工具必须用新设定重新连接。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="112"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="112"/>
         <source>Speed loop PID</source>
         <translation>速度环 PID</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="113"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="113"/>
         <source>&amp;P coefficient:</source>
         <translation>P 系数(&amp;P)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="114"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="114"/>
         <source>I coefficient:</source>
         <translation>I 系数：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="115"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="115"/>
         <source>&amp;D coefficient:</source>
         <translation>D 系数(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="116"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="116"/>
         <source>D period:</source>
         <translation>D 周期：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="118"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="118"/>
         <source>Preset speed (potentiometer/analog control)</source>
         <translation>预设速度（电位器/模拟量控制）</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="119"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="119"/>
         <source>Preset speed mo&amp;de:</source>
         <translation>预设速度模式(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="120"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="120"/>
         <source>Trigger:</source>
         <translation>触发：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="121"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="121"/>
         <source>&amp;Forward speed:</source>
         <translation>正转速度(&amp;F)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="122"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="122"/>
         <source>Reverse speed:</source>
         <translation>反转速度：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="124"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="124"/>
         <source>AI1/AI2 as digital ports</source>
         <translation>AI1/AI2 用作数字端口</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="125"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="125"/>
         <source>AI1 direction:</source>
         <translation>AI1 方向：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="126"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="126"/>
         <source>AI2 direction:</source>
         <translation>AI2 方向：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="127"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="127"/>
         <source>AI1 level:</source>
         <translation>AI1 电平：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="128"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="128"/>
         <source>AI2 level:</source>
         <translation>AI2 电平：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="130"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="130"/>
         <source>Takes effect now and is not kept over power-off: the controller has no store command for these, only a 5-register block write, which this page does not send.</source>
         <translation>立即生效，断电后不保留：控制器没有针对这些的保存命令，只有一个 5 寄存器的块写入，本页面不会发送。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="174"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="174"/>
         <source>The communication loss stop is off (%1 = 0 s): if the connection is lost while the motor runs, the controller keeps it running at the last speed command. Set a time so that it brakes when the bus goes quiet.</source>
         <translation>通信中断停止已关闭（%1 = 0 s）：如果电机运行时连接中断，控制器会按最后的速度命令继续运行。请设定一个时间，使总线无通信时电机制动。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="189"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="189"/>
         <source>Takes effect now, lost at power-off until stored (%1).</source>
         <translation>立即生效，保存（%1）前断电即丢失。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="250"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="250"/>
         <source>Forward and reverse speed in this mode (%1): %2</source>
         <translation>该模式下的正转和反转速度（%1）：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="252"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="252"/>
         <source>The unit and range of the speeds follow the preset speed mode (not read yet).</source>
         <translation>速度的单位和范围取决于预设速度模式（尚未读取）。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="286"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="286"/>
         <source>&lt;b&gt;Written but not stored:&lt;/b&gt; %1. These values act now and are lost when the controller is switched off.</source>
         <translation>&lt;b&gt;已写入但未保存：&lt;/b&gt;%1。这些值立即生效，控制器断电后丢失。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="308"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="308"/>
         <source>%1: the controller writes the values now in effect to its memory and uses them from the next power-up on.
 
 Stored: %2.</source>
@@ -3465,17 +3465,17 @@ Stored: %2.</source>
 已保存：%2。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="319"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="319"/>
         <source>Not written yet, so not stored: %1.</source>
         <translation>尚未写入，因此未保存：%1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="322"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="322"/>
         <source>%1: done, kept over power-off.</source>
         <translation>%1：完成，断电后保留。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="330"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="330"/>
         <source>The controller replaces its configuration (%1) with the one stored in its memory.
 
 Configuration changes written but not stored are discarded.</source>
@@ -3484,17 +3484,17 @@ Configuration changes written but not stored are discarded.</source>
 已写入但未保存的配置修改将被丢弃。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="336"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="336"/>
         <source>Stored configuration reloaded.</source>
         <translation>已重新载入保存的配置。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="344"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="344"/>
         <source>Writing %1 = %2…</source>
         <translation>正在写入 %1 = %2…</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="354"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="354"/>
         <source>%1 = %2 failed: %3</source>
         <translation>%1 = %2 失败：%3</translation>
     </message>
@@ -3502,32 +3502,32 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DcPidSimDevice</name>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="341"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="341"/>
         <source>%1 %2%3, output %4 %, command %5, line %6 %7</source>
         <translation>%1 %2%3，输出 %4 %，命令 %5，线路 %6 %7</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="343"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="343"/>
         <source> (stall stop)</source>
         <translation> （堵转停止）</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="357"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="359"/>
         <source>usage: %1 ID VALUE with VALUE %2..%3 %4</source>
         <translation>用法：%1 ID VALUE，VALUE 范围 %2..%3 %4</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="361"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="363"/>
         <source>(bit0 SQ1, bit1 SQ2, bit2 DE)</source>
         <translation>（bit0 SQ1，bit1 SQ2，bit2 DE）</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="361"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="363"/>
         <source>(% current)</source>
         <translation>（% 电流）</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="363"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="365"/>
         <source>%1 = %2</source>
         <translation>%1 = %2</translation>
     </message>
@@ -3535,37 +3535,37 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DcRunCommands</name>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="26"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="26"/>
         <source>Set s&amp;peed</source>
         <translation>设定速度(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="31"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="31"/>
         <source>set point, e.g. 50 or -20</source>
         <translation>设定值，例如 50 或 -20</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="39"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="39"/>
         <source>Speed command:</source>
         <translation>速度命令：</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="54"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="54"/>
         <source>&amp;Brake (speed 0)</source>
         <translation>制动(&amp;B)（速度 0）</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="56"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="56"/>
         <source>&amp;Natural stop</source>
         <translation>自然停止(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="90"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="90"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="91"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="91"/>
         <source>(reading %1…)</source>
         <translation>（正在读取 %1…）</translation>
     </message>
@@ -3573,17 +3573,17 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DependentValues</name>
     <message>
-        <location filename="../main/model/session/DependentValues.cpp" line="45"/>
+        <location filename="../model/session/DependentValues.cpp" line="45"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DependentValues.cpp" line="53"/>
+        <location filename="../model/session/DependentValues.cpp" line="53"/>
         <source>%1 = %2 would leave %3 without a valid value, because what they allow depends on it. Choose new values for them and write them together with it.</source>
         <translation>%1 = %2 会使 %3 失去有效值，因为它们的允许值取决于该项。请为它们选择新值，并与该项一起写入。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DependentValues.cpp" line="57"/>
+        <location filename="../model/session/DependentValues.cpp" line="57"/>
         <source>%1 cannot be checked: the values of %2 depend on it and could not be read</source>
         <translation>无法检查 %1：%2 的值取决于该项，但无法读取</translation>
     </message>
@@ -3591,17 +3591,17 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceIdentifier</name>
     <message>
-        <location filename="../main/model/session/DeviceIdentifier.cpp" line="31"/>
+        <location filename="../model/session/DeviceIdentifier.cpp" line="31"/>
         <source>answers, but none of the device profiles matches</source>
         <translation>有应答，但没有匹配的设备描述</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceIdentifier.cpp" line="96"/>
+        <location filename="../model/session/DeviceIdentifier.cpp" line="96"/>
         <source>device name &quot;%1&quot; is not a %2</source>
         <translation>设备名 &quot;%1&quot; 不是 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceIdentifier.cpp" line="115"/>
+        <location filename="../model/session/DeviceIdentifier.cpp" line="115"/>
         <source>the variant cannot be read from the device; choose it</source>
         <translation>无法从设备读取机型；请选择</translation>
     </message>
@@ -3609,27 +3609,27 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceInfo</name>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="28"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="28"/>
         <source>not checked</source>
         <translation>未检查</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="30"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="30"/>
         <source>online</source>
         <translation>在线</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="32"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="32"/>
         <source>no answer</source>
         <translation>无应答</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="34"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="34"/>
         <source>garbled replies (duplicate machine number?)</source>
         <translation>应答报文损坏（站号重复？）</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="37"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="37"/>
         <source>unknown device</source>
         <translation>未知设备</translation>
     </message>
@@ -3637,27 +3637,27 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceMonitor</name>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="60"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="60"/>
         <source>Stopped</source>
         <translation>已停止</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="62"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="62"/>
         <source>Running</source>
         <translation>运行中</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="63"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="63"/>
         <source>Running CCW</source>
         <translation>CCW 运行中</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="63"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="63"/>
         <source>Running CW</source>
         <translation>CW 运行中</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="206"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="206"/>
         <source>machine number %1: %2</source>
         <translation>站号 %1：%2</translation>
     </message>
@@ -3665,22 +3665,22 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceParameters</name>
     <message>
-        <location filename="../main/model/session/DeviceParameters.cpp" line="81"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="81"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 没有参数 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceParameters.cpp" line="83"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="83"/>
         <source>%1 is read-only</source>
         <translation>%1 为只读</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceParameters.cpp" line="85"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="85"/>
         <source>%1 is a command, not a setting; commands are sent one by one on request</source>
         <translation>%1 是命令，不是设定；命令仅在请求时逐条发送</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceParameters.cpp" line="211"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="211"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -3688,53 +3688,53 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceSession</name>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="90"/>
+        <location filename="../model/session/DeviceSession.cpp" line="90"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 没有参数 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="99"/>
-        <location filename="../main/model/session/DeviceSession.cpp" line="139"/>
+        <location filename="../model/session/DeviceSession.cpp" line="99"/>
+        <location filename="../model/session/DeviceSession.cpp" line="139"/>
         <source>%1 cannot be read (it is a write-only command)</source>
         <translation>无法读取 %1（它是只写命令）</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="202"/>
+        <location filename="../model/session/DeviceSession.cpp" line="202"/>
         <source>cannot check the value: reading %1 failed: %2</source>
         <translation>无法检查该值：读取 %1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="219"/>
+        <location filename="../model/session/DeviceSession.cpp" line="219"/>
         <source>%1 is read-only</source>
         <translation>%1 为只读</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="225"/>
+        <location filename="../model/session/DeviceSession.cpp" line="225"/>
         <source>%1 is a %2 command; it is only sent when explicitly requested</source>
         <translation>%1 是%2命令；仅在明确请求时才发送</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="254"/>
+        <location filename="../model/session/DeviceSession.cpp" line="254"/>
         <source>%1 cannot be checked: %2</source>
         <translation>无法检查 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="276"/>
+        <location filename="../model/session/DeviceSession.cpp" line="276"/>
         <source>reading %1 failed: %2</source>
         <translation>读取 %1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="327"/>
+        <location filename="../model/session/DeviceSession.cpp" line="327"/>
         <source>written, but reading it back failed: %1</source>
         <translation>已写入，但回读失败：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="336"/>
+        <location filename="../model/session/DeviceSession.cpp" line="336"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>校验失败：写入 %1，设备中为 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="372"/>
+        <location filename="../model/session/DeviceSession.cpp" line="372"/>
         <source>error code %1</source>
         <translation>错误代码 %1</translation>
     </message>
@@ -3742,22 +3742,22 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DrivePages</name>
     <message>
-        <location filename="../main/ui/main/DrivePages.cpp" line="97"/>
+        <location filename="../ui/main/DrivePages.cpp" line="97"/>
         <source>Monitor</source>
         <translation>监视</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/DrivePages.cpp" line="110"/>
+        <location filename="../ui/main/DrivePages.cpp" line="110"/>
         <source>Test run</source>
         <translation>试运行</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/DrivePages.cpp" line="112"/>
+        <location filename="../ui/main/DrivePages.cpp" line="112"/>
         <source>Alarms</source>
         <translation>报警</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/DrivePages.cpp" line="121"/>
+        <location filename="../ui/main/DrivePages.cpp" line="121"/>
         <source>Machine number %1 (%2, %3) — %4, firmware V%5</source>
         <translation>站号 %1（%2，%3）— %4，固件 V%5</translation>
     </message>
@@ -3765,111 +3765,111 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveStatusPoller</name>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="31"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="31"/>
         <source>not polled yet</source>
         <translation>尚未轮询</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="33"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="33"/>
         <source>online</source>
         <translation>在线</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="35"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="35"/>
         <source>no answer (%n poll(s) in a row)</source>
         <translation>
             <numerusform>无应答（连续 %n 次轮询）</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="37"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="37"/>
         <source>communication error (%n in a row)</source>
         <translation>
             <numerusform>通信错误（连续 %n 次）</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="43"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="43"/>
         <source>Status not known yet</source>
         <translation>状态未知</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="45"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="45"/>
         <source>No answer: %1</source>
         <translation>无应答：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="48"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="48"/>
         <source>Alarm %1 %2</source>
         <translation>报警 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="50"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="50"/>
         <source>Alarm %1h (not in the alarm table)</source>
         <translation>报警 %1h（不在报警表中）</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="52"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="52"/>
         <source>Alarm active</source>
         <translation>报警中</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="55"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="55"/>
         <source>Communication error: %1</source>
         <translation>通信错误：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="58"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="58"/>
         <source>Running</source>
         <translation>运行中</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="59"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="59"/>
         <source>Running CCW</source>
         <translation>CCW 运行中</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="60"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="60"/>
         <source>Running CW</source>
         <translation>CW 运行中</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="62"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="62"/>
         <source>Stopped, no alarm</source>
         <translation>已停止，无报警</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="69"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="69"/>
         <source>grey</source>
         <translation>灰色</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="71"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="71"/>
         <source>green</source>
         <translation>绿色</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="73"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="73"/>
         <source>orange</source>
         <translation>橙色</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="75"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="75"/>
         <source>sky blue</source>
         <translation>天蓝色</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="77"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="77"/>
         <source>red</source>
         <translation>红色</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="79"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="79"/>
         <source>purple</source>
         <translation>紫色</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="81"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="81"/>
         <source>blue</source>
         <translation>蓝色</translation>
     </message>
@@ -3877,86 +3877,86 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveWorkspace</name>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="33"/>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="131"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="33"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="131"/>
         <source>Write &amp;all pending</source>
         <translation>写入全部待写入项(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="34"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="34"/>
         <source>Revert all</source>
         <translation>全部还原</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="35"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="35"/>
         <source>Re-read all</source>
         <translation>全部重新读取</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="51"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="51"/>
         <source>Write every pending edit of this drive, on all pages, and verify</source>
         <translation>写入该驱动器所有页面上的全部待写入修改，并进行校验</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="84"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="84"/>
         <source>Select a drive in the bus list to set it up.</source>
         <translation>在总线列表中选择一台驱动器进行设定。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="130"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="130"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>写入全部待写入项(&amp;A)（%1）</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="152"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="152"/>
         <source>Reading the drive…</source>
         <translation>正在读取驱动器…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="154"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="154"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 个值无法读取</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="166"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="166"/>
         <source>Nothing was written: %1</source>
         <translation>未写入任何内容：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="179"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="179"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1：%2 未写入任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="187"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="187"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>向站号 %1 写入 %n 个待写入值</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="189"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="189"/>
         <source>Nothing was written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="192"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="192"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>正在写入 %n 个值…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="194"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="194"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>%n 项写入失败；请查看标记的字段</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="195"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="195"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n 个值已写入并校验</numerusform>
@@ -3966,79 +3966,79 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolCertificateCommand</name>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="30"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="30"/>
         <source>A unit&apos;s certificate: its newest record as a PDF, or as JSON with --json</source>
         <translation>产品的检验证书：其最新记录，输出为 PDF，或用 --json 输出为 JSON</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="36"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="36"/>
         <source>The results database (see results).</source>
         <translation>结果数据库（参见 results）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="36"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="36"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="37"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="37"/>
         <source>certificate: the record with this id instead of the newest.</source>
         <translation>certificate：使用该 id 的记录，而不是最新记录。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="38"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="38"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="58"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="58"/>
         <source>error: name one serial number, or a record with --id ID; usage: eol %1</source>
         <translation>错误：请指定一个序列号，或用 --id ID 指定一条记录；用法：eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="66"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="66"/>
         <source>error: the serial number is empty</source>
         <translation>错误：序列号为空</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="72"/>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="129"/>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="137"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="72"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="129"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="137"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="79"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="79"/>
         <source>error: this program cannot draw a PDF (no Qt GUI application); use --json</source>
         <translation>错误：本程序无法生成 PDF（没有 Qt GUI 应用程序）；请使用 --json</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="96"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="96"/>
         <source>error: no record %1 in %2 (%3)</source>
         <translation>错误：%2 中没有记录 %1（%3）</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="101"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="101"/>
         <source>error: record %1 is of serial number %2, not %3</source>
         <translation>错误：记录 %1 属于序列号 %2，而不是 %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="109"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="109"/>
         <source>error: %1: %2</source>
         <translation>错误：%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="113"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="113"/>
         <source>error: no record of serial number %1 in %2</source>
         <translation>错误：%2 中没有序列号 %1 的记录</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="132"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="132"/>
         <source>wrote %1</source>
         <translation>已写入 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="140"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="140"/>
         <source>wrote %1: serial number %2, %3, recorded %4</source>
         <translation>已写入 %1：序列号 %2，%3，记录于 %4</translation>
     </message>
@@ -4046,19 +4046,19 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolCommand</name>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="35"/>
+        <location filename="../cli/EolCommand.cpp" line="35"/>
         <source>End-of-line station: recipes, the results database, unit certificates</source>
         <translation>下线检测工位：配方、结果数据库、产品检验证书</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="40"/>
+        <location filename="../cli/EolCommand.cpp" line="40"/>
         <source>Subcommands:
 </source>
         <translation>子命令：
 </translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="43"/>
+        <location filename="../cli/EolCommand.cpp" line="43"/>
         <source>Results database: --db URL, else OPENTOP_EOL_DB, else the SQLite file
 $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 &quot;opentop-cli help eol&quot; lists every option; each subcommand takes only its own.</source>
@@ -4067,22 +4067,22 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 &quot;opentop-cli help eol&quot; 列出全部选项；每个子命令只接受自己的选项。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="91"/>
+        <location filename="../cli/EolCommand.cpp" line="91"/>
         <source>error: name a subcommand: eol %1</source>
         <translation>错误：请指定子命令：eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="93"/>
+        <location filename="../cli/EolCommand.cpp" line="93"/>
         <source>error: unknown subcommand &quot;eol %1&quot;; subcommands: %2</source>
         <translation>错误：未知子命令 &quot;eol %1&quot;；子命令：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="96"/>
+        <location filename="../cli/EolCommand.cpp" line="96"/>
         <source>See &quot;opentop-cli help eol&quot;.</source>
         <translation>请参阅 &quot;opentop-cli help eol&quot;。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="112"/>
+        <location filename="../cli/EolCommand.cpp" line="112"/>
         <source>error: eol %1: --%2 is not an option of this subcommand; usage: eol %3</source>
         <translation>错误：eol %1：--%2 不是该子命令的选项；用法：eol %3</translation>
     </message>
@@ -4090,112 +4090,112 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolDriveRun</name>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="51"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="51"/>
         <source>identifying</source>
         <translation>正在识别</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="64"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="64"/>
         <source>no drive answers at machine number %1</source>
         <translation>站号 %1 上没有驱动器应答</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="65"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="65"/>
         <source>the drive at machine number %1 is not identified: %2</source>
         <translation>站号 %1 上的驱动器未识别：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="75"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="75"/>
         <source>a %1 drive, the recipe needs a %2 drive</source>
         <translation>是 %1 驱动器，配方需要 %2 驱动器</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="85"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="85"/>
         <source>the drive does not report its variant and the recipe allows %1</source>
         <translation>驱动器未报告其机型，而配方允许 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="87"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="87"/>
         <source>variant %1, the recipe allows %2</source>
         <translation>机型 %1，配方允许 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="93"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="93"/>
         <source>firmware %1, the recipe allows %2</source>
         <translation>固件 %1，配方允许 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="94"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="100"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="100"/>
         <source>no profile for the family %1</source>
         <translation>没有系列 %1 的设备描述</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="132"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="132"/>
         <source>cannot read whether the motor runs: %1</source>
         <translation>无法读取电机是否在运行：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="140"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="140"/>
         <source>its motor was running before the test</source>
         <translation>测试前其电机已在运行</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="141"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="141"/>
         <source>the motor is already running before the test (left by an interrupted run?); nothing was written: stop it first (STOP ALL, or at the drive)</source>
         <translation>测试前电机已在运行（上次运行中断遗留？）；未写入任何内容：请先停止（全部停止，或在驱动器上停止）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="151"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="151"/>
         <source>writing the settings</source>
         <translation>正在写入设定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="186"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="186"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="193"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="193"/>
         <source>writing the settings: %1</source>
         <translation>正在写入设定：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="201"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="201"/>
         <source>reading every setting back</source>
         <translation>正在回读全部设定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="216"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="216"/>
         <source>%1 cannot be read back: %2</source>
         <translation>%1 无法回读：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="222"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="222"/>
         <source>%1 does not keep its value: set to %2, reads %3</source>
         <translation>%1 未保持其值：设定为 %2，读取为 %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="226"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="226"/>
         <source>verifying the settings: %1</source>
         <translation>正在校验设定：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="235"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="235"/>
         <source>testing</source>
         <translation>正在测试</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="239"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="239"/>
         <source>step %1 of %2: %3</source>
         <translation>步骤 %1/%2：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="293"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="293"/>
         <source>passed</source>
         <translation>合格</translation>
     </message>
@@ -4203,12 +4203,12 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolMenu</name>
     <message>
-        <location filename="../main/ui/eol/EolMenu.cpp" line="34"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="34"/>
         <source>&amp;Recipe editor…</source>
         <translation>配方编辑器(&amp;R)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/EolMenu.cpp" line="38"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="38"/>
         <source>Re&amp;sults…</source>
         <translation>结果(&amp;S)…</translation>
     </message>
@@ -4216,54 +4216,54 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRecipeCheckCommand</name>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="26"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="26"/>
         <source>Check a recipe against the drive profiles (and per-unit values of a CSV file)</source>
         <translation>按驱动器设备描述检查配方（以及 CSV 文件中的单台数值）</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="32"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="32"/>
         <source>recipe check: also check every unit&apos;s per-unit values in this CSV file.</source>
         <translation>recipe check：同时检查该 CSV 文件中每台产品的单台数值。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="33"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="33"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="39"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="39"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>错误：请指定一个配方文件；用法：eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="59"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="59"/>
         <source>error: %1 refused: %2</source>
         <translation>错误：%1 已拒绝：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="66"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="66"/>
         <source>%1, serial %2</source>
         <translation>%1，序列号 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="92"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="92"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="94"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="94"/>
         <source>%1 is not valid: %n problem(s); nothing may be run with it</source>
         <translation>
             <numerusform>%1 无效：%n 个问题；不得用它运行任何测试</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="102"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="102"/>
         <source>valid: %1 revision %2: %3</source>
         <translation>有效：%1 版本 %2：%3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="105"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="105"/>
         <source>; %n unit(s) of %1 checked</source>
         <translation>
             <numerusform>；已检查 %1 中的 %n 台产品</numerusform>
@@ -4273,143 +4273,143 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRecipeCreateCommand</name>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="31"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="31"/>
         <source>Make a recipe from a golden unit: a backup file or drives on the bus</source>
         <translation>从标准样机生成配方：备份文件或总线上的驱动器</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="37"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="37"/>
         <source>recipe create: the golden unit&apos;s backup file.</source>
         <translation>recipe create：标准样机的备份文件。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="38"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="38"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="40"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="40"/>
         <source>recipe create: the golden unit&apos;s drives on the bus, e.g. 1,2 (with the connection options).</source>
         <translation>recipe create：标准样机在总线上的驱动器，例如 1,2（配合连接选项）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="42"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="42"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="43"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="43"/>
         <source>recipe create: the product&apos;s name.</source>
         <translation>recipe create：产品名称。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="43"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="43"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
         <source>recipe create: the recipe&apos;s revision.</source>
         <translation>recipe create：配方版本。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
         <source>REV</source>
         <translation>REV</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="46"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
         <source>recipe create: replace an existing recipe file.</source>
         <translation>recipe create：替换已有的配方文件。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="58"/>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="151"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="58"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="151"/>
         <source>error: %1; nothing written</source>
         <translation>错误：%1；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="72"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="72"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>读取站号 %1 时中断：未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="79"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="79"/>
         <source>error: %1: cannot read %2</source>
         <translation>错误：%1：无法读取 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="82"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="82"/>
         <source>error: %1 holds a value its profile does not allow: %2</source>
         <translation>错误：%1 含有其设备描述不允许的值：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="85"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="85"/>
         <source>nothing written</source>
         <translation>未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="90"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="90"/>
         <source>%1: %2 settings read</source>
         <translation>%1：已读取 %2 项设定</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="101"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="101"/>
         <source>error: %1; usage: eol %2</source>
         <translation>错误：%1；用法：eol %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="105"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="105"/>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>意外的参数 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="109"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="109"/>
         <source>give either --from-backup FILE or --drives LIST</source>
         <translation>请指定 --from-backup FILE 或 --drives LIST 之一</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="113"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="113"/>
         <source>give the product&apos;s name with --product NAME</source>
         <translation>请用 --product NAME 指定产品名称</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
         <source>give the recipe&apos;s revision with --revision REV</source>
         <translation>请用 --revision REV 指定配方版本</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="118"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="118"/>
         <source>give the recipe file to write with -o RECIPE</source>
         <translation>请用 -o RECIPE 指定要写入的配方文件</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="121"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="121"/>
         <source>error: %1 exists; give --force to replace it</source>
         <translation>错误：%1 已存在；使用 --force 进行替换</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="125"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="125"/>
         <source>error: %1; nothing read</source>
         <translation>错误：%1；未读取任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="142"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="142"/>
         <source>--drives %1: %2</source>
         <translation>--drives %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="158"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="175"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="175"/>
         <source>wrote %1: %2 revision %3, %4</source>
         <translation>已写入 %1：%2 版本 %3，%4</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="182"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="182"/>
         <source>error: the recipe does not pass &quot;eol recipe check&quot;: fix it, then sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>错误：配方未通过 &quot;eol recipe check&quot;：请修正，然后用 &quot;opentop-cli eol recipe sign %1&quot; 签名</translation>
     </message>
@@ -4417,177 +4417,177 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRecipeShowCommand</name>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="58"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="58"/>
         <source>Show a recipe: positions, settings by label with units, steps and limits</source>
         <translation>显示配方：位置、按标签列出的设定（含单位）、步骤和限值</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="69"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="69"/>
         <source>&apos;%1&apos;</source>
         <translation>&apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="70"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="70"/>
         <source>&apos;%1&apos; %2</source>
         <translation>&apos;%1&apos; %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="71"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="71"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="83"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="83"/>
         <source>%1 SPno%2</source>
         <translation>%1 SPno%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="85"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="85"/>
         <source>%1 to %2</source>
         <translation>%1 到 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="88"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="88"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="93"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="93"/>
         <source>the drive&apos;s target speed</source>
         <translation>驱动器的目标速度</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="94"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="94"/>
         <source>%1 %2 %3 within %4 s</source>
         <translation>%1 %2 %3，在 %4 s 内</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="98"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="98"/>
         <source>%1 for %2 s</source>
         <translation>%1，持续 %2 s</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="101"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="101"/>
         <source>%1: stopped within %2 s + %3 s</source>
         <translation>%1：在 %2 s + %3 s 内停止</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="104"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="104"/>
         <source>%1: stopped within the deceleration time + %2 s</source>
         <translation>%1：在减速时间 + %2 s 内停止</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="109"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="109"/>
         <source>%1: &apos;%2&apos; is &quot;%3&quot;</source>
         <translation>%1：&apos;%2&apos; 为 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="126"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="126"/>
         <source>  no settings</source>
         <translation>  无设定</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
         <source>  setting</source>
         <translation>  设定</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
         <source>value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
         <source>unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
         <source>  per-unit value</source>
         <translation>  单台数值</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
         <source>range</source>
         <translation>范围</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
         <source>from</source>
         <translation>来源</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="141"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="141"/>
         <source>%1 … %2</source>
         <translation>%1 … %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="144"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="144"/>
         <source>CSV file by serial</source>
         <translation>按序列号取自 CSV 文件</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="145"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="145"/>
         <source>typed by the operator</source>
         <translation>由操作员输入</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="150"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="150"/>
         <source>  no test steps</source>
         <translation>  无测试步骤</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="153"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="153"/>
         <source>  steps:</source>
         <translation>  步骤：</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="167"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="167"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>错误：请指定一个配方文件；用法：eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="205"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="205"/>
         <source>%1, revision %2</source>
         <translation>%1，版本 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="208"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="208"/>
         <source>checksum %1</source>
         <translation>校验和 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
         <source>position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
         <source>machine number</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
         <source>name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
         <source>family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="210"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="210"/>
         <source>variants</source>
         <translation>机型</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="210"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="210"/>
         <source>firmware</source>
         <translation>固件</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="221"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="221"/>
         <source>any</source>
         <translation>任意</translation>
     </message>
@@ -4595,34 +4595,34 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRecipeSignCommand</name>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="26"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="26"/>
         <source>Accept a recipe edited by hand: a new checksum, only when it passes check</source>
         <translation>接受手工编辑的配方：仅在通过检查时生成新的校验和</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="32"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="32"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>错误：请指定一个配方文件；用法：eol %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="53"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="53"/>
         <source>error: %1 does not pass check (%n problem(s)); not signed</source>
         <translation>
             <numerusform>错误：%1 未通过检查（%n 个问题）；未签名</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="61"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="61"/>
         <source>error: %1; not signed</source>
         <translation>错误：%1；未签名</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="73"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="73"/>
         <source>%1 is signed already (%2); nothing changed</source>
         <translation>%1 已签名（%2）；未作任何修改</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="76"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="76"/>
         <source>signed %1: %2 revision %3, %4</source>
         <translation>已签名 %1：%2 版本 %3，%4</translation>
     </message>
@@ -4630,262 +4630,262 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolResultsCommand</name>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="65"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="65"/>
         <source>List units of the results database, their first-pass yield, or export them as CSV</source>
         <translation>列出结果数据库中的产品及其直通率，或导出为 CSV</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="72"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="72"/>
         <source>The results database: a SQLite file, sqlite:PATH or postgresql://user@host/db (default: OPENTOP_EOL_DB, else ~/.local/share/opentop/results.db).</source>
         <translation>结果数据库：SQLite 文件、sqlite:PATH 或 postgresql://user@host/db（默认：OPENTOP_EOL_DB，否则为 ~/.local/share/opentop/results.db）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="74"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="74"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="75"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="75"/>
         <source>results: only this serial number.</source>
         <translation>results：仅该序列号。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="75"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="75"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="77"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="77"/>
         <source>results: started at or after T (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</source>
         <translation>results：开始时间不早于 T（2026-11-24、2026-11-24T06:00、8h、2d、today）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="78"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="79"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="78"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="79"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="79"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="79"/>
         <source>results: started before T.</source>
         <translation>results：开始时间早于 T。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="80"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
         <source>results: only this recipe (product name).</source>
         <translation>results：仅该配方（产品名称）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="80"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="83"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="81"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
         <source>results: pass, fail, interrupted, aborted or running.</source>
         <translation>results：pass、fail、interrupted、aborted 或 running。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="82"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
         <source>V</source>
         <translation>V</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="83"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
         <source>results: only this station.</source>
         <translation>results：仅该工位。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="84"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
         <source>results: only the newest N units.</source>
         <translation>results：仅最新的 N 台产品。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="84"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="86"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
         <source>results: CSV (RFC 4180) on standard output or to -o FILE.</source>
         <translation>results：输出 CSV（RFC 4180）到标准输出或 -o FILE。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="88"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="88"/>
         <source>results: first-pass yield and failure reasons per recipe and per shift.</source>
         <translation>results：按配方和班次统计直通率及不合格原因。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="90"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="90"/>
         <source>results --yield: the shifts&apos; start times in local time (default 06:00,14:00,22:00).</source>
         <translation>results --yield：各班次的开始时间（本地时间，默认 06:00,14:00,22:00）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="91"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="123"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="123"/>
         <source>&quot;%1&quot; is not a time; give 2026-11-24, 2026-11-24T06:00 (local, or with Z or +01:00), 8h, 2d, today or yesterday</source>
         <translation>&quot;%1&quot; 不是时间；请使用 2026-11-24、2026-11-24T06:00（本地时间，或带 Z 或 +01:00）、8h、2d、today 或 yesterday</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="133"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="251"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="133"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="251"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="148"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="148"/>
         <source>--%1: %2</source>
         <translation>--%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="153"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="153"/>
         <source>--since %1 is not before --until %2</source>
         <translation>--since %1 不早于 --until %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="159"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="159"/>
         <source>--verdict &quot;%1&quot;: give pass, fail, interrupted, aborted or running</source>
         <translation>--verdict &quot;%1&quot;：请使用 pass、fail、interrupted、aborted 或 running</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="166"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="166"/>
         <source>--limit &quot;%1&quot;: give a number of units from 1</source>
         <translation>--limit &quot;%1&quot;：请给出从 1 起的产品台数</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="176"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="202"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="176"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="202"/>
         <source>no unit matches</source>
         <translation>没有匹配的产品</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
         <source>started</source>
         <translation>开始时间</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
         <source>serial</source>
         <translation>序列号</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="206"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="206"/>
         <source>recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
         <source>station</source>
         <translation>工位</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
         <source>operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="180"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="180"/>
         <source>verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="180"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="180"/>
         <source>time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="180"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="180"/>
         <source>reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="188"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="188"/>
         <source>%1 rev. %2</source>
         <translation>%1 版本 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="208"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="208"/>
         <source>shift</source>
         <translation>班次</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>serials</source>
         <translation>序列号数</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>first pass</source>
         <translation>一次合格</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>first-pass yield</source>
         <translation>直通率</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>records</source>
         <translation>记录数</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="210"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="210"/>
         <source>not finished</source>
         <translation>未完成</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="225"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="225"/>
         <source>First-pass yield per recipe</source>
         <translation>各配方直通率</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="227"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="227"/>
         <source>Per shift</source>
         <translation>各班次</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>Failure reasons</source>
         <translation>不合格原因</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="254"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="254"/>
         <source>wrote %1</source>
         <translation>已写入 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="263"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="263"/>
         <source>error: unexpected argument &quot;%1&quot;; usage: eol %2</source>
         <translation>错误：意外的参数 &quot;%1&quot;；用法：eol %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="269"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="269"/>
         <source>error: give --csv or --json, not both</source>
         <translation>错误：--csv 和 --json 只能指定其一</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="273"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="273"/>
         <source>error: -o names the CSV file: give --csv too</source>
         <translation>错误：-o 指定的是 CSV 文件：请同时指定 --csv</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="278"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="278"/>
         <source>error: --shifts is for --yield</source>
         <translation>错误：--shifts 仅用于 --yield</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="288"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="288"/>
         <source>error: --shifts %1: %2</source>
         <translation>错误：--shifts %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="308"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="308"/>
         <source>error: %1: %2</source>
         <translation>错误：%1：%2</translation>
     </message>
@@ -4893,48 +4893,48 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRun</name>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="54"/>
+        <location filename="../model/eol/EolRun.cpp" line="54"/>
         <source>the results database cannot record the unit: %1</source>
         <translation>结果数据库无法记录该产品：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="71"/>
+        <location filename="../model/eol/EolRun.cpp" line="71"/>
         <source>the recipe has no drives</source>
         <translation>配方中没有驱动器</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="84"/>
+        <location filename="../model/eol/EolRun.cpp" line="84"/>
         <source>the recipe is not valid: %1</source>
         <translation>配方无效：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="89"/>
+        <location filename="../model/eol/EolRun.cpp" line="89"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1：该产品没有 %2 的值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="107"/>
+        <location filename="../model/eol/EolRun.cpp" line="107"/>
         <source>cancelled by the operator</source>
         <translation>已被操作员取消</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="116"/>
+        <location filename="../model/eol/EolRun.cpp" line="116"/>
         <source>the connection was lost: %1</source>
         <translation>连接丢失：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="122"/>
-        <location filename="../main/model/eol/EolRun.cpp" line="129"/>
+        <location filename="../model/eol/EolRun.cpp" line="122"/>
+        <location filename="../model/eol/EolRun.cpp" line="129"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="126"/>
+        <location filename="../model/eol/EolRun.cpp" line="126"/>
         <source>%1 failed</source>
         <translation>%1 失败</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="164"/>
+        <location filename="../model/eol/EolRun.cpp" line="164"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>未确认已停止：%1</translation>
     </message>
@@ -4942,129 +4942,129 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="86"/>
+        <location filename="../cli/EolRunCommand.cpp" line="86"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>在下线工位设定并测试一台产品；记录结果</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>产品序列号（按条码读取）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="93"/>
         <source>Who tests it (default: the login name).</source>
         <translation>测试人员（默认：登录名）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="93"/>
-        <location filename="../main/cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>本工位名称（默认：主机名）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>结果数据库：SQLite 文件或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>含单台数值的 CSV 文件，按序列号对应。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>由操作员输入的单台数值，例如 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="131"/>
+        <location filename="../cli/EolRunCommand.cpp" line="131"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1：请写成 MACHINE:NAME=VALUE，例如 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="136"/>
+        <location filename="../cli/EolRunCommand.cpp" line="136"/>
         <source>--value %1: %2</source>
         <translation>--value %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="149"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="164"/>
+        <location filename="../cli/EolRunCommand.cpp" line="164"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1：配方无效；未发送任何内容：</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="185"/>
+        <location filename="../cli/EolRunCommand.cpp" line="185"/>
         <source>results database: %1; nothing was sent</source>
         <translation>结果数据库：%1；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="194"/>
+        <location filename="../cli/EolRunCommand.cpp" line="194"/>
         <source>note: %1 unit(s) this station left unfinished are now recorded as interrupted</source>
         <translation>注意：本工位遗留的 %1 台未完成产品现已记录为已中断</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="230"/>
-        <location filename="../main/cli/EolRunCommand.cpp" line="251"/>
+        <location filename="../cli/EolRunCommand.cpp" line="230"/>
+        <location filename="../cli/EolRunCommand.cpp" line="251"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="256"/>
         <source>ok</source>
         <translation>正常</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="256"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="274"/>
+        <location filename="../cli/EolRunCommand.cpp" line="274"/>
         <source>interrupted at the station</source>
         <translation>在工位上中断</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="303"/>
+        <location filename="../cli/EolRunCommand.cpp" line="303"/>
         <source>rev. %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="309"/>
+        <location filename="../cli/EolRunCommand.cpp" line="309"/>
         <source>the result was NOT recorded: %1</source>
         <translation>结果未记录：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="311"/>
+        <location filename="../cli/EolRunCommand.cpp" line="311"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告：未确认电机已停止：%1</translation>
     </message>
@@ -5072,23 +5072,23 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolSpeedChart</name>
     <message>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="20"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="20"/>
         <source>time (s)</source>
         <translation>时间 (s)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="44"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="44"/>
         <source>speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="44"/>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="57"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="44"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="57"/>
         <source>speed (%1)</source>
         <translation>速度（%1）</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="52"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="52"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
@@ -5096,37 +5096,37 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="100"/>
+        <location filename="../model/eol/EolStation.cpp" line="100"/>
         <source>no results database</source>
         <translation>无结果数据库</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="107"/>
+        <location filename="../model/eol/EolStation.cpp" line="107"/>
         <source>a unit is being tested</source>
         <translation>正在测试一台产品</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="111"/>
+        <location filename="../model/eol/EolStation.cpp" line="111"/>
         <source>open a recipe first</source>
         <translation>请先打开配方</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="115"/>
+        <location filename="../model/eol/EolStation.cpp" line="115"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>结果数据库未打开；不记录就不进行测试</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="119"/>
+        <location filename="../model/eol/EolStation.cpp" line="119"/>
         <source>not connected to a bus</source>
         <translation>未连接总线</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="123"/>
+        <location filename="../model/eol/EolStation.cpp" line="123"/>
         <source>no serial number</source>
         <translation>无序列号</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="141"/>
+        <location filename="../model/eol/EolStation.cpp" line="141"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>该配方从 CSV 文件获取单台数值：请先打开该文件</translation>
     </message>
@@ -5134,170 +5134,170 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolStepRunner</name>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="40"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="40"/>
         <source>allowed %1–%2 %3</source>
         <translation>允许 %1–%2 %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="42"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="42"/>
         <source>allowed at most %1 %2</source>
         <translation>最多允许 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="44"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="44"/>
         <source>allowed at least %1 %2</source>
         <translation>至少允许 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="92"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="92"/>
         <source>step %1 (%2)</source>
         <translation>步骤 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="125"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="125"/>
         <source>the drive&apos;s session ended</source>
         <translation>驱动器会话已结束</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="198"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="218"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="230"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="422"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="443"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="469"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="511"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="198"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="218"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="230"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="422"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="443"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="469"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="511"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="210"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="210"/>
         <source>%1: the drive has no communication priority</source>
         <translation>%1：驱动器没有通信优先级</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="260"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="260"/>
         <source>%1: the drive stopped answering: %2</source>
         <translation>%1：驱动器停止应答：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="268"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="268"/>
         <source>%1: the drive raised an alarm while running</source>
         <translation>%1：驱动器在运行中发生报警</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="291"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="291"/>
         <source>%1: %2 %3</source>
         <translation>%1：%2 %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="310"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="310"/>
         <source>%1: the drive has no speed to wait for</source>
         <translation>%1：驱动器没有可等待的速度</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="320"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="320"/>
         <source>time to reach speed</source>
         <translation>到达速度时间</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="342"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="347"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="466"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="342"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="347"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="466"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="348"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="348"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="349"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="349"/>
         <source>%1: did not reach %2 %3 ±%4 %3 within %5 s (last read %6 %3)</source>
         <translation>%1：未在 %5 s 内达到 %2 %3 ±%4 %3（最后读取 %6 %3）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="350"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="350"/>
         <source>its target</source>
         <translation>其目标值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="407"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="407"/>
         <source>%1 could not be read</source>
         <translation>无法读取 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="417"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="417"/>
         <source>%1 %2 %3, %4</source>
         <translation>%1 %2 %3，%4</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="435"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="435"/>
         <source>%1: the drive reports no alarms</source>
         <translation>%1：驱动器未报告报警</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="448"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="448"/>
         <source>alarms raised</source>
         <translation>发生的报警</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="451"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="451"/>
         <source>%1: the drive has an alarm</source>
         <translation>%1：驱动器有报警</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="466"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="466"/>
         <source>time to stop</source>
         <translation>停止时间</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="473"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="473"/>
         <source>%1: stopped after %2 s, allowed at most %3 s</source>
         <translation>%1：%2 s 后停止，最多允许 %3 s</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="502"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="502"/>
         <source>%1: nothing to read</source>
         <translation>%1：无可读取内容</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="519"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="519"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="522"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="522"/>
         <source>%1: %2 reads &quot;%3&quot;, expected &quot;%4&quot;</source>
         <translation>%1：%2 读取为 &quot;%3&quot;，预期为 &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="532"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="532"/>
         <source>%1: %2 reads %3 %4, %5</source>
         <translation>%1：%2 读取为 %3 %4，%5</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="554"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="554"/>
         <source>the stop command failed: %1</source>
         <translation>停止命令失败：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="569"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="569"/>
         <source>stopped after %1 s</source>
         <translation>%1 s 后停止</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="570"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="570"/>
         <source>not confirmed stopped: %1</source>
         <translation>未确认已停止：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="592"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="592"/>
         <source>communication priority could not be given back: %1</source>
         <translation>无法交还通信优先级：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="632"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="632"/>
         <source>the steps ended with the motor running</source>
         <translation>步骤结束时电机仍在运行</translation>
     </message>
@@ -5305,97 +5305,97 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolSupport</name>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="26"/>
+        <location filename="../cli/EolSupport.cpp" line="26"/>
         <source>no such file</source>
         <translation>文件不存在</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="28"/>
+        <location filename="../cli/EolSupport.cpp" line="28"/>
         <source>is a directory; name a recipe file</source>
         <translation>是目录；请指定配方文件</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="30"/>
+        <location filename="../cli/EolSupport.cpp" line="30"/>
         <source>is not a regular file (a device, FIFO or socket); name a recipe file</source>
         <translation>不是普通文件（是设备、FIFO 或套接字）；请指定配方文件</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="32"/>
+        <location filename="../cli/EolSupport.cpp" line="32"/>
         <source>is larger than %1 MB, the most a recipe file may hold</source>
         <translation>大于 %1 MB，超过配方文件的上限</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="36"/>
+        <location filename="../cli/EolSupport.cpp" line="36"/>
         <source>cannot be read: %1</source>
         <translation>无法读取：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="38"/>
-        <location filename="../main/cli/EolSupport.cpp" line="158"/>
+        <location filename="../cli/EolSupport.cpp" line="38"/>
+        <location filename="../cli/EolSupport.cpp" line="158"/>
         <source>error: %1: %2</source>
         <translation>错误：%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="65"/>
-        <location filename="../main/cli/EolSupport.cpp" line="173"/>
+        <location filename="../cli/EolSupport.cpp" line="65"/>
+        <location filename="../cli/EolSupport.cpp" line="173"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="72"/>
+        <location filename="../cli/EolSupport.cpp" line="72"/>
         <source>error: %1 refused: %2</source>
         <translation>错误：%1 已拒绝：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="79"/>
+        <location filename="../cli/EolSupport.cpp" line="79"/>
         <source>%1 was changed after OpenTOP wrote it (its checksum does not match), so no station runs it. Check it with &quot;opentop-cli eol recipe check %1&quot; and, when it is right, sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>%1 在 OpenTOP 写入后被修改过（校验和不一致），因此任何工位都不会运行它。请用 &quot;opentop-cli eol recipe check %1&quot; 检查，确认无误后用 &quot;opentop-cli eol recipe sign %1&quot; 签名</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="97"/>
+        <location filename="../cli/EolSupport.cpp" line="97"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolSupport.cpp" line="122"/>
+        <location filename="../cli/EolSupport.cpp" line="122"/>
         <source>%n position(s)</source>
         <translation>
             <numerusform>%n 个位置</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolSupport.cpp" line="123"/>
+        <location filename="../cli/EolSupport.cpp" line="123"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n 项设定</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolSupport.cpp" line="125"/>
+        <location filename="../cli/EolSupport.cpp" line="125"/>
         <source>%n per-unit value(s)</source>
         <translation>
             <numerusform>%n 个单台数值</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolSupport.cpp" line="126"/>
+        <location filename="../cli/EolSupport.cpp" line="126"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n 个步骤</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="133"/>
+        <location filename="../cli/EolSupport.cpp" line="133"/>
         <source>The file to write (recipe create; results --csv; certificate).</source>
         <translation>要写入的文件（recipe create；results --csv；certificate）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="134"/>
+        <location filename="../cli/EolSupport.cpp" line="134"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="164"/>
+        <location filename="../cli/EolSupport.cpp" line="164"/>
         <source>error: no results database at %1 (nothing recorded there yet); name one with --db URL</source>
         <translation>错误：%1 处没有结果数据库（尚未记录任何内容）；请用 --db URL 指定</translation>
     </message>
@@ -5403,23 +5403,23 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolTarget</name>
     <message>
-        <location filename="../main/model/eol/EolTarget.cpp" line="26"/>
+        <location filename="../model/eol/EolTarget.cpp" line="26"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolTarget.cpp" line="38"/>
-        <location filename="../main/model/eol/EolTarget.cpp" line="49"/>
+        <location filename="../model/eol/EolTarget.cpp" line="38"/>
+        <location filename="../model/eol/EolTarget.cpp" line="49"/>
         <source>not a parameter of %1</source>
         <translation>不是 %1 的参数</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolTarget.cpp" line="51"/>
+        <location filename="../model/eol/EolTarget.cpp" line="51"/>
         <source>this unit&apos;s value is missing</source>
         <translation>缺少该产品的值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolTarget.cpp" line="54"/>
+        <location filename="../model/eol/EolTarget.cpp" line="54"/>
         <source>%1 is outside this product&apos;s range %2–%3 %4</source>
         <translation>%1 超出该产品的范围 %2–%3 %4</translation>
     </message>
@@ -5427,27 +5427,27 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::ExitActions</name>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="34"/>
+        <location filename="../model/run/ExitActions.cpp" line="34"/>
         <source>The stop broadcast to the %1 drives failed: %2</source>
         <translation>向 %1 台驱动器广播停止失败：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="38"/>
+        <location filename="../model/run/ExitActions.cpp" line="38"/>
         <source>Machine number %1: STILL RUNNING (%2) %3</source>
         <translation>站号 %1：仍在运行（%2）%3</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="43"/>
+        <location filename="../model/run/ExitActions.cpp" line="43"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped %2</source>
         <translation>站号 %1：无应答，未确认已停止 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="68"/>
+        <location filename="../model/run/ExitActions.cpp" line="68"/>
         <source>Machine number %1: no way to give control back to its inputs is known</source>
         <translation>站号 %1：没有已知的方法将控制权交还其输入端子</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="80"/>
+        <location filename="../model/run/ExitActions.cpp" line="80"/>
         <source>Machine number %1: %2</source>
         <translation>站号 %1：%2</translation>
     </message>
@@ -5455,12 +5455,12 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::ExitCheck</name>
     <message>
-        <location filename="../main/model/run/ExitCheck.cpp" line="19"/>
+        <location filename="../model/run/ExitCheck.cpp" line="19"/>
         <source>in communication priority (its own inputs cannot start or stop it)</source>
         <translation>处于通信优先级（其自身的输入端子无法启动或停止它）</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitCheck.cpp" line="20"/>
+        <location filename="../model/run/ExitCheck.cpp" line="20"/>
         <source>Machine number %1 (%2): %3</source>
         <translation>站号 %1（%2）：%3</translation>
     </message>
@@ -5468,102 +5468,102 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::ExitGuard</name>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="44"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="44"/>
         <source>Drives left in communication priority</source>
         <translation>驱动器仍处于通信优先级</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="44"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="44"/>
         <source>Drives are running</source>
         <translation>驱动器正在运行</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="46"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="46"/>
         <source>Before you %1: these drives are left in communication priority.</source>
         <translation>%1之前：这些驱动器仍处于通信优先级。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="47"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="47"/>
         <source>Before you %1: these drives are running or left in communication priority.</source>
         <translation>%1之前：这些驱动器正在运行或仍处于通信优先级。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="51"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="51"/>
         <source>In communication priority a drive takes run and stop only from the bus: once OpenTOP lets go, only another bus master or switching its power off stops it.</source>
         <translation>在通信优先级下，驱动器只接受来自总线的运行和停止命令：OpenTOP 释放后，只有其他总线主站或切断其电源才能使其停止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="55"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="55"/>
         <source>&quot;Stop&quot; broadcasts every family&apos;s stop command to the whole bus and checks that each drive above has stopped.</source>
         <translation>“停止”会向整条总线广播所有系列的停止命令，并检查上述每台驱动器是否已停止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="59"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="59"/>
         <source>&quot;Give control back&quot; sets I/O priority, so the machine&apos;s own inputs run the drives again.</source>
         <translation>“交还控制权”会设定为 I/O 优先级，使设备自身的输入端子重新控制驱动器运行。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="63"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="63"/>
         <source>Stop the drives</source>
         <translation>停止驱动器</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="67"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="67"/>
         <source>Give control back (I/O priority)</source>
         <translation>交还控制权（I/O 优先级）</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="69"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="69"/>
         <source>Leave them so</source>
         <translation>保持现状</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="69"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="69"/>
         <source>Leave them running</source>
         <translation>保持运行</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="71"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="71"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="88"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="88"/>
         <source>Stopping the drives…</source>
         <translation>正在停止驱动器…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="88"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="88"/>
         <source>Giving control back to the drives&apos; inputs…</source>
         <translation>正在将控制权交还驱动器的输入端子…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="97"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="97"/>
         <source>stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="97"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="97"/>
         <source>give control back</source>
         <translation>交还控制权</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="113"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="113"/>
         <source>Not every drive is safe</source>
         <translation>并非所有驱动器都处于安全状态</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="114"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="114"/>
         <source>Could not %1 every drive:</source>
         <translation>以下驱动器未能%1：</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="116"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="116"/>
         <source>Stay connected</source>
         <translation>保持连接</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="117"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="117"/>
         <source>Go on anyway</source>
         <translation>仍然继续</translation>
     </message>
@@ -5571,27 +5571,27 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::FaultInjector</name>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="30"/>
+        <location filename="../sim/FaultInjector.cpp" line="30"/>
         <source>fault &apos;%1&apos; must be NAME=VALUE; names: %2</source>
         <translation>故障 &apos;%1&apos; 必须写成 NAME=VALUE；名称：%2</translation>
     </message>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="38"/>
+        <location filename="../sim/FaultInjector.cpp" line="38"/>
         <source>late_ms must be a whole number of milliseconds 1..60000, got &apos;%1&apos;</source>
         <translation>late_ms 必须是 1..60000 的整数毫秒，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="52"/>
+        <location filename="../sim/FaultInjector.cpp" line="52"/>
         <source>unknown fault &apos;%1&apos;; allowed: %2</source>
         <translation>未知故障 &apos;%1&apos;；允许：%2</translation>
     </message>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="57"/>
+        <location filename="../sim/FaultInjector.cpp" line="57"/>
         <source>fault rate %1 must be a number 0..1, got &apos;%2&apos;</source>
         <translation>故障率 %1 必须是 0..1 的数，实际为 &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="64"/>
+        <location filename="../sim/FaultInjector.cpp" line="64"/>
         <source>the fault rates add up to more than 1</source>
         <translation>各故障率之和大于 1</translation>
     </message>
@@ -5599,83 +5599,83 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::FileActions</name>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="22"/>
+        <location filename="../ui/files/FileActions.cpp" line="22"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 备份 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="38"/>
-        <location filename="../main/ui/files/FileActions.cpp" line="94"/>
+        <location filename="../ui/files/FileActions.cpp" line="38"/>
+        <location filename="../ui/files/FileActions.cpp" line="94"/>
         <source>&amp;Back up selected drive…</source>
         <translation>备份所选驱动器(&amp;B)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="44"/>
+        <location filename="../ui/files/FileActions.cpp" line="44"/>
         <source>Back up &amp;whole bus…</source>
         <translation>备份整条总线(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="50"/>
+        <location filename="../ui/files/FileActions.cpp" line="50"/>
         <source>Save the settings of every identified drive to one file</source>
         <translation>将所有已识别驱动器的设定保存到一个文件</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="52"/>
+        <location filename="../ui/files/FileActions.cpp" line="52"/>
         <source>&amp;Open backup file…</source>
         <translation>打开备份文件(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="54"/>
+        <location filename="../ui/files/FileActions.cpp" line="54"/>
         <source>Show the drives and settings a backup file holds</source>
         <translation>显示备份文件中的驱动器和设定</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="55"/>
+        <location filename="../ui/files/FileActions.cpp" line="55"/>
         <source>Co&amp;mpare…</source>
         <translation>比较(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="58"/>
+        <location filename="../ui/files/FileActions.cpp" line="58"/>
         <source>Compare drives and backup files side by side, or against factory defaults</source>
         <translation>并排比较驱动器和备份文件，或与出厂默认值比较</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="59"/>
+        <location filename="../ui/files/FileActions.cpp" line="59"/>
         <source>&amp;Restore from file…</source>
         <translation>从文件恢复(&amp;R)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="60"/>
+        <location filename="../ui/files/FileActions.cpp" line="60"/>
         <source>Preview, then write a backup&apos;s settings back to drives</source>
         <translation>预览后，将备份中的设定写回驱动器</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="93"/>
+        <location filename="../ui/files/FileActions.cpp" line="93"/>
         <source>&amp;Back up selected drives…</source>
         <translation>备份所选驱动器(&amp;B)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="96"/>
+        <location filename="../ui/files/FileActions.cpp" line="96"/>
         <source>Select an identified drive in the bus list first</source>
         <translation>请先在总线列表中选择一台已识别的驱动器</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="97"/>
+        <location filename="../ui/files/FileActions.cpp" line="97"/>
         <source>Save the settings of the selected drive(s) to a file</source>
         <translation>将所选驱动器的设定保存到文件</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="108"/>
+        <location filename="../ui/files/FileActions.cpp" line="108"/>
         <source>Back up to file</source>
         <translation>备份到文件</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="120"/>
+        <location filename="../ui/files/FileActions.cpp" line="120"/>
         <source>Open backup file</source>
         <translation>打开备份文件</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="141"/>
+        <location filename="../ui/files/FileActions.cpp" line="141"/>
         <source>Restore from backup file</source>
         <translation>从备份文件恢复</translation>
     </message>
@@ -5683,27 +5683,27 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::FileCommandSupport</name>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="28"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="28"/>
         <source>no such file</source>
         <translation>文件不存在</translation>
     </message>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="30"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="30"/>
         <source>is a directory; name a backup file</source>
         <translation>是目录；请指定备份文件</translation>
     </message>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="32"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="32"/>
         <source>is not a regular file (a device, FIFO or socket); name a backup file</source>
         <translation>不是普通文件（是设备、FIFO 或套接字）；请指定备份文件</translation>
     </message>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="34"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="34"/>
         <source>error: %1: %2</source>
         <translation>错误：%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="41"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="41"/>
         <source>error: %1 refused: %2</source>
         <translation>错误：%1 已拒绝：%2</translation>
     </message>
@@ -5711,135 +5711,135 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::GetCommand</name>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="43"/>
+        <location filename="../cli/GetCommand.cpp" line="43"/>
         <source>Read parameters by name in engineering units (or registers with --raw)</source>
         <translation>按名称读取参数，以工程单位显示（使用 --raw 则读取寄存器）</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="49"/>
+        <location filename="../cli/GetCommand.cpp" line="49"/>
         <source>Read every parameter of a group (see params).</source>
         <translation>读取一个组的全部参数（参见 params）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="49"/>
+        <location filename="../cli/GetCommand.cpp" line="49"/>
         <source>GROUP</source>
         <translation>GROUP</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="50"/>
+        <location filename="../cli/GetCommand.cpp" line="50"/>
         <source>Read every readable parameter.</source>
         <translation>读取全部可读参数。</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="52"/>
+        <location filename="../cli/GetCommand.cpp" line="52"/>
         <source>Read registers by address: ADDR or ADDR:COUNT (0x.. or decimal).</source>
         <translation>按地址读取寄存器：ADDR 或 ADDR:COUNT（0x.. 或十进制）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="52"/>
+        <location filename="../cli/GetCommand.cpp" line="52"/>
         <source>ADDR</source>
         <translation>ADDR</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="54"/>
+        <location filename="../cli/GetCommand.cpp" line="54"/>
         <source>Function code for --raw: 3 (holding) or 4 (input) to read, 6 or 16 to write.</source>
         <translation>--raw 的功能码：读取用 3（保持寄存器）或 4（输入寄存器），写入用 6 或 16。</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="55"/>
+        <location filename="../cli/GetCommand.cpp" line="55"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="63"/>
+        <location filename="../cli/GetCommand.cpp" line="63"/>
         <source>error: give one machine number first: get ID NAME...</source>
         <translation>错误：请先指定一个站号：get ID NAME...</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="71"/>
+        <location filename="../cli/GetCommand.cpp" line="71"/>
         <source>error: name parameters, or give exactly one of --group, --all, --raw</source>
         <translation>错误：请指定参数名，或只指定 --group、--all、--raw 中的一个</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="79"/>
-        <location filename="../main/cli/GetCommand.cpp" line="209"/>
+        <location filename="../cli/GetCommand.cpp" line="79"/>
+        <location filename="../cli/GetCommand.cpp" line="209"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="90"/>
+        <location filename="../cli/GetCommand.cpp" line="90"/>
         <source>error: %1 has no group &quot;%2&quot;; groups: %3</source>
         <translation>错误：%1 没有组 &quot;%2&quot;；可用组：%3</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="108"/>
+        <location filename="../cli/GetCommand.cpp" line="108"/>
         <source>error: %1 is a write-only command and cannot be read</source>
         <translation>错误：%1 是只写命令，无法读取</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="109"/>
+        <location filename="../cli/GetCommand.cpp" line="109"/>
         <source>error: %1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>错误：%1 没有参数 &quot;%2&quot;；请参阅 &quot;opentop-cli params --family %1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="123"/>
+        <location filename="../cli/GetCommand.cpp" line="123"/>
         <source>interrupted</source>
         <translation>已中断</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="153"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="153"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="153"/>
         <source>Raw</source>
         <translation>原始值</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="153"/>
         <source>Label</source>
         <translation>标签</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="158"/>
+        <location filename="../cli/GetCommand.cpp" line="158"/>
         <source>(failed: %1)</source>
         <translation>（失败：%1）</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="160"/>
+        <location filename="../cli/GetCommand.cpp" line="160"/>
         <source>  ! outside the profile&apos;s allowed values</source>
         <translation>  ! 超出设备描述的允许值</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/GetCommand.cpp" line="167"/>
+        <location filename="../cli/GetCommand.cpp" line="167"/>
         <source>error: %n parameter(s) could not be read</source>
         <translation>
             <numerusform>错误：%n 个参数无法读取</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="190"/>
+        <location filename="../cli/GetCommand.cpp" line="190"/>
         <source>error: --raw needs ADDR or ADDR:COUNT (address 0x0000–0xFFFF, count 1–125) and --fc 3 or 4</source>
         <translation>错误：--raw 需要 ADDR 或 ADDR:COUNT（地址 0x0000–0xFFFF，数量 1–125）以及 --fc 3 或 4</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="221"/>
         <source>Address</source>
         <translation>地址</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="221"/>
         <source>Hex</source>
         <translation>十六进制</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="221"/>
         <source>Decimal</source>
         <translation>十进制</translation>
     </message>
@@ -5847,63 +5847,63 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::GroupCheck</name>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="56"/>
-        <location filename="../main/cli/GroupCheck.cpp" line="95"/>
+        <location filename="../cli/GroupCheck.cpp" line="56"/>
+        <location filename="../cli/GroupCheck.cpp" line="95"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="66"/>
+        <location filename="../cli/GroupCheck.cpp" line="66"/>
         <source>note: the other drives on the bus are not known, so drives in communication group %1 (which also execute what is sent to %1) were not looked for; name them with --bus-drives LIST or OPENTOP_BUS_DRIVES</source>
         <translation>注意：总线上的其他驱动器未知，因此未查找通信组 %1 中的驱动器（它们也会执行发往 %1 的内容）；请用 --bus-drives LIST 或 OPENTOP_BUS_DRIVES 指定</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="87"/>
+        <location filename="../cli/GroupCheck.cpp" line="87"/>
         <source>warning: the communication group of %1 could not be read</source>
         <translation>警告：无法读取 %1 的通信组</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="95"/>
+        <location filename="../cli/GroupCheck.cpp" line="95"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="98"/>
+        <location filename="../cli/GroupCheck.cpp" line="98"/>
         <source>add --yes to send it to all of %1 and %2; nothing was sent</source>
         <translation>加上 --yes 才会发送给 %1 和 %2 全部；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="128"/>
+        <location filename="../cli/GroupCheck.cpp" line="128"/>
         <source>not readable</source>
         <translation>不可读</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="139"/>
+        <location filename="../cli/GroupCheck.cpp" line="139"/>
         <source>Read back from the drives of the group:</source>
         <translation>从该组的驱动器回读：</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="140"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="140"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="140"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="143"/>
+        <location filename="../cli/GroupCheck.cpp" line="143"/>
         <source>(not read: %1)</source>
         <translation>（未读取：%1）</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="188"/>
+        <location filename="../cli/GroupCheck.cpp" line="188"/>
         <source>off</source>
         <translation>关闭</translation>
     </message>
@@ -5911,22 +5911,22 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::GroupWriteCheck</name>
     <message>
-        <location filename="../main/ui/groups/GroupWriteCheck.cpp" line="50"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="50"/>
         <source>Machine number %1: %2</source>
         <translation>站号 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupWriteCheck.cpp" line="59"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="59"/>
         <source>Communication group</source>
         <translation>通信组</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupWriteCheck.cpp" line="63"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="63"/>
         <source>Their values are read back afterwards.</source>
         <translation>之后会回读它们的值。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupWriteCheck.cpp" line="64"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="64"/>
         <source>Send, also to %1</source>
         <translation>发送，同时发给 %1</translation>
     </message>
@@ -5934,212 +5934,212 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::GroupsView</name>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="34"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="34"/>
         <source>Read &amp;groups again</source>
         <translation>重新读取通信组(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="35"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="35"/>
         <source>&amp;Write plan…</source>
         <translation>写入计划(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="38"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="38"/>
         <source>A drive whose communication group is another drive&apos;s machine number is that drive&apos;s child: it executes every write and command sent to its parent, without replying. Plan the groups in the last column and write them; every drive&apos;s group is then read back.</source>
         <translation>通信组为另一台驱动器站号的驱动器，即为该驱动器的组子站：它会执行发往其组父站的每条写入和命令，但不应答。请在最后一列规划通信组并写入；之后会回读每台驱动器的通信组。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="49"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="49"/>
         <source>Machine number</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="49"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="49"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="49"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="49"/>
         <source>Group</source>
         <translation>组</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="50"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="50"/>
         <source>Follows / followed by</source>
         <translation>跟随 / 被跟随</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="50"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="50"/>
         <source>Problem</source>
         <translation>问题</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="50"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="50"/>
         <source>Plan</source>
         <translation>计划</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="51"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="51"/>
         <source>Read back</source>
         <translation>回读</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="57"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="57"/>
         <source>Read every drive&apos;s communication group from the drive</source>
         <translation>从每台驱动器读取其通信组</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="58"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="58"/>
         <source>Write the planned groups (asks first), then read every drive&apos;s group back</source>
         <translation>写入计划的通信组（先确认），然后回读每台驱动器的通信组</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="79"/>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="145"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="79"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="145"/>
         <source>Disabled</source>
         <translation>禁用</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="146"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="146"/>
         <source>Planned group of machine number %1</source>
         <translation>站号 %1 的计划通信组</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="147"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="147"/>
         <source>The group machine number %1 should have: its own number makes it a parent, another drive&apos;s number its child; Disabled: no group</source>
         <translation>站号 %1 应设的通信组站号：设为自身站号则为组父站，设为其他驱动器的站号则为其组子站；禁用：不分组</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="166"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="166"/>
         <source>child and parent</source>
         <translation>组子站兼组父站</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="167"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="167"/>
         <source>no drive %1</source>
         <translation>无驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="176"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="176"/>
         <source>not read</source>
         <translation>未读取</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="198"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="198"/>
         <source>No problem found in the groups as read from the drives.</source>
         <translation>从驱动器读取的通信组中未发现问题。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="199"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="199"/>
         <source>Problems:</source>
         <translation>问题：</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="206"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="206"/>
         <source>%1: %2 → %3</source>
         <translation>%1：%2 → %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="213"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="213"/>
         <source>The plan is what the drives hold.</source>
         <translation>计划与驱动器中的设定一致。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="214"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="214"/>
         <source>Plan changes: %1.</source>
         <translation>计划修改：%1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="216"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="216"/>
         <source>After it: %1</source>
         <translation>之后：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="242"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="242"/>
         <source>Reading every drive&apos;s group…</source>
         <translation>正在读取每台驱动器的通信组…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/groups/GroupsView.cpp" line="248"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="248"/>
         <source>%n drive(s) did not answer</source>
         <translation>
             <numerusform>%n 台驱动器未应答</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="263"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="263"/>
         <source>Machine number %1: group %2 → %3.</source>
         <translation>站号 %1：通信组 %2 → %3。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="268"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="268"/>
         <source>This also reaches %1 (its children), which are written again after it.</source>
         <translation>这也会作用于 %1（其组子站），之后会再次写入它们。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="277"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="277"/>
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="279"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="279"/>
         <source>Write communication groups</source>
         <translation>写入通信组</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/groups/GroupsView.cpp" line="280"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="280"/>
         <source>Write the planned communication group to %n drive(s)?</source>
         <translation>
             <numerusform>将计划的通信组写入 %n 台驱动器？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="284"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="284"/>
         <source>Drives with children are written last; every drive&apos;s group is read back afterwards.</source>
         <translation>有组子站的驱动器最后写入；之后会回读每台驱动器的通信组。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="286"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="286"/>
         <source>&amp;Write groups</source>
         <translation>写入通信组(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="317"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="317"/>
         <source>Writing group %1 to machine number %2…</source>
         <translation>正在将通信组 %1 写入站号 %2…</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="326"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="326"/>
         <source>write failed: %1</source>
         <translation>写入失败：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="340"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="340"/>
         <source>Reading every drive&apos;s group back…</source>
         <translation>正在回读每台驱动器的通信组…</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="353"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="353"/>
         <source>write failed</source>
         <translation>写入失败</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="354"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="354"/>
         <source>✓ %1</source>
         <translation>✓ %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="355"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="355"/>
         <source>✗ %1, planned %2</source>
         <translation>✗ %1，计划为 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="365"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="365"/>
         <source>Proved: every drive read back holds its planned group.</source>
         <translation>已确认：每台回读的驱动器都保持其计划的通信组。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/groups/GroupsView.cpp" line="366"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="366"/>
         <source>Not as planned: %1 (read back; %n drive(s) did not answer).</source>
         <translation>
             <numerusform>与计划不符：%1（已回读；%n 台驱动器未应答）。</numerusform>
@@ -6149,22 +6149,22 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::HelpActions</name>
     <message>
-        <location filename="../main/ui/help/HelpActions.cpp" line="18"/>
+        <location filename="../ui/help/HelpActions.cpp" line="18"/>
         <source>&amp;User guide</source>
         <translation>用户指南(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/HelpActions.cpp" line="21"/>
+        <location filename="../ui/help/HelpActions.cpp" line="21"/>
         <source>&amp;Keyboard shortcuts</source>
         <translation>键盘快捷键(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/HelpActions.cpp" line="25"/>
+        <location filename="../ui/help/HelpActions.cpp" line="25"/>
         <source>&amp;About OpenTOP</source>
         <translation>关于 OpenTOP(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/HelpActions.cpp" line="28"/>
+        <location filename="../ui/help/HelpActions.cpp" line="28"/>
         <source>About &amp;Qt</source>
         <translation>关于 Qt(&amp;Q)</translation>
     </message>
@@ -6172,187 +6172,187 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::IoTerminalsPage</name>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="31"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="31"/>
         <source>Not functioning: the drive ignores this input.</source>
         <translation>无功能：驱动器忽略该输入。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="33"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="33"/>
         <source>RUN/STOP: ON runs the motor, OFF stops it.</source>
         <translation>RUN/STOP：ON 时电机运行，OFF 时停止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="35"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="35"/>
         <source>CW/CCW: the running direction, OFF clockwise, ON counter-clockwise.</source>
         <translation>CW/CCW：运行方向，OFF 为顺时针，ON 为逆时针。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="38"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="38"/>
         <source>CW/STOP: ON runs the motor clockwise, OFF stops it.</source>
         <translation>CW/STOP：ON 时电机顺时针运行，OFF 时停止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="40"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="40"/>
         <source>CCW/STOP: ON runs the motor counter-clockwise, OFF stops it.</source>
         <translation>CCW/STOP：ON 时电机逆时针运行，OFF 时停止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="43"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="43"/>
         <source>Alarm-Reset: clears an alarm (alarm erase method Alarm-Reset).</source>
         <translation>Alarm-Reset：清除报警（报警清除方式为“报警复位”）。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="51"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="51"/>
         <source>M%1: bit %1 of the running data selection (M2 M1 M0 = 000–111 select SPno1–SPno8).</source>
         <translation>M%1：运行数据选择的第 %1 位（M2 M1 M0 = 000–111 选择 SPno1–SPno8）。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="56"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="56"/>
         <source>Ext-Error (EX-Er): an external interrupt that stops the motor; the only input still active in communication priority.</source>
         <translation>Ext-Error (EX-Er)：使电机停止的外部中断；通信优先级下唯一仍有效的输入。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="61"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="61"/>
         <source>H-Free: releases the motor&apos;s holding force while stopped.</source>
         <translation>H-Free：停止时释放电机的保持力。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="63"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="63"/>
         <source>Code %1 is not a known input function.</source>
         <translation>代码 %1 不是已知的输入功能。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="71"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="71"/>
         <source>Not functioning: the output stays off.</source>
         <translation>无功能：输出保持 OFF。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="73"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="73"/>
         <source>Alarm-Out: switches when an alarm stops the motor.</source>
         <translation>Alarm-Out：报警使电机停止时动作。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="75"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="75"/>
         <source>Reach Speed-Out: switches when the motor reaches the target speed.</source>
         <translation>Reach Speed-Out：电机达到目标速度时动作。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="78"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="78"/>
         <source>VA-Out: switches before the target speed, at the target speed minus the VA speed.</source>
         <translation>VA-Out：在达到目标速度之前，于目标速度减去 VA 速度处动作。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="81"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="81"/>
         <source>Speed-Out: speed pulses, 24 per motor revolution.</source>
         <translation>Speed-Out：速度脉冲，电机每转 24 个脉冲。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="83"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="83"/>
         <source>Warning-Out: switches on a warning; the motor keeps running.</source>
         <translation>Warning-Out：发生警告时动作；电机继续运行。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="86"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="86"/>
         <source>Move-Out: switches while the motor is turning.</source>
         <translation>Move-Out：电机转动期间动作。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="88"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="88"/>
         <source>Code %1 is not a known output function.</source>
         <translation>代码 %1 不是已知的输出功能。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="102"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="102"/>
         <source>I/O terminals</source>
         <translation>I/O 端子</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="118"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="118"/>
         <source>Control</source>
         <translation>控制</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="123"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="123"/>
         <source>Control &amp;mode:</source>
         <translation>控制模式(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="124"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="124"/>
         <source>Mode1 uses RUN/STOP and CW/CCW inputs (like UBD, SBD, DBD); Mode2 uses CW/STOP and CCW/STOP inputs (like DB, BMD). The input function codes differ: switching the mode disables the other mode&apos;s input functions, so every input X0–X3 needs a function of the new mode.</source>
         <translation>Mode1 使用 RUN/STOP 和 CW/CCW 输入（如 UBD、SBD、DBD）；Mode2 使用 CW/STOP 和 CCW/STOP 输入（如 DB、BMD）。两种模式的输入功能代码不同：切换模式会使另一模式的输入功能失效，因此每个输入 X0–X3 都需要设定新模式下的功能。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="136"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="136"/>
         <source>Control &amp;priority:</source>
         <translation>控制优先级(&amp;P)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="137"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="137"/>
         <source>In I/O priority the input terminals run the motor. In communication priority the drive runs from bus commands and of the inputs only EX-Er (external error) acts.</source>
         <translation>I/O 优先级下由输入端子控制电机运行。通信优先级下驱动器按总线命令运行，输入端子中只有 EX-Er（外部错误）有效。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="146"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="146"/>
         <source>Inputs — CN5</source>
         <translation>输入 — CN5</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="148"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="148"/>
         <source>COM0: input common (external supply)</source>
         <translation>COM0：输入公共端（外部电源）</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="151"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="151"/>
         <source>COM1: input common (internal supply)</source>
         <translation>COM1：输入公共端（内部电源）</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="156"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="156"/>
         <source>Outputs — CN6</source>
         <translation>输出 — CN6</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="174"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="174"/>
         <source>Give each flagged input the default function of the new mode (pending, not written)</source>
         <translation>为每个标记的输入设定新模式的默认功能（待写入，尚未写入）</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="203"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="203"/>
         <source>Connector pin %1</source>
         <translation>连接器引脚 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="208"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="208"/>
         <source>Terminal %1 function</source>
         <translation>端子 %1 功能</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="235"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="235"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="261"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="261"/>
         <source>Not read yet.</source>
         <translation>尚未读取。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="268"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="268"/>
         <source>Not valid in %1: choose again</source>
         <translation>在 %1 下无效：请重新选择</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="296"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="296"/>
         <source>The mode changes from %1 to %2 when written; Write page writes the mode first, then the terminals.</source>
         <translation>写入时模式将从 %1 改为 %2；“写入本页”会先写入模式，再写入端子。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="306"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="306"/>
         <source>Not valid in %1: %2. Choose their functions again before writing.</source>
         <translation>在 %1 下无效：%2。写入前请重新选择它们的功能。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="309"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="309"/>
         <source>Use %1 defaults</source>
         <translation>使用 %1 默认值</translation>
     </message>
@@ -6360,174 +6360,210 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::JsonReader</name>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="29"/>
-        <location filename="../main/model/profile/JsonReader.cpp" line="44"/>
-        <location filename="../main/model/profile/JsonReader.cpp" line="89"/>
-        <location filename="../main/model/profile/JsonReader.cpp" line="100"/>
-        <location filename="../main/model/profile/JsonReader.cpp" line="116"/>
+        <location filename="../model/profile/JsonReader.cpp" line="29"/>
+        <location filename="../model/profile/JsonReader.cpp" line="44"/>
+        <location filename="../model/profile/JsonReader.cpp" line="89"/>
+        <location filename="../model/profile/JsonReader.cpp" line="100"/>
+        <location filename="../model/profile/JsonReader.cpp" line="116"/>
         <source>&quot;%1&quot; is missing</source>
         <translation>缺少 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="33"/>
+        <location filename="../model/profile/JsonReader.cpp" line="33"/>
         <source>&quot;%1&quot; must be a string</source>
         <translation>&quot;%1&quot; 必须是字符串</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="48"/>
+        <location filename="../model/profile/JsonReader.cpp" line="48"/>
         <source>&quot;%1&quot; must be a number</source>
         <translation>&quot;%1&quot; 必须是数字</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="59"/>
+        <location filename="../model/profile/JsonReader.cpp" line="59"/>
         <source>%1 must be a whole number</source>
         <translation>%1 必须是整数</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="64"/>
+        <location filename="../model/profile/JsonReader.cpp" line="64"/>
         <source>%1 is out of range</source>
         <translation>%1 超出范围</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="80"/>
+        <location filename="../model/profile/JsonReader.cpp" line="80"/>
         <source>%1 must be an integer or a &quot;0x...&quot; string</source>
         <translation>%1 必须是整数或 &quot;0x...&quot; 字符串</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="104"/>
+        <location filename="../model/profile/JsonReader.cpp" line="104"/>
         <source>&quot;%1&quot; must be an array</source>
         <translation>&quot;%1&quot; 必须是数组</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="120"/>
+        <location filename="../model/profile/JsonReader.cpp" line="120"/>
         <source>&quot;%1&quot; must be an object</source>
         <translation>&quot;%1&quot; 必须是对象</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="130"/>
+        <location filename="../model/profile/JsonReader.cpp" line="130"/>
         <source>%1: unknown key &quot;%2&quot;</source>
         <translation>%1：未知键 &quot;%2&quot;</translation>
     </message>
 </context>
 <context>
+    <name>opentop::Language</name>
+    <message>
+        <location filename="../model/i18n/Language.cpp" line="137"/>
+        <source>unknown language &apos;%1&apos;; available: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/Language.cpp" line="151"/>
+        <source>the %1 translation is missing from this build</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>opentop::LanguageMenu</name>
+    <message>
+        <location filename="../ui/i18n/LanguageMenu.cpp" line="10"/>
+        <source>&amp;Language</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/i18n/LanguageMenu.cpp" line="15"/>
+        <source>System language (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>opentop::MainMenus</name>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="32"/>
+        <location filename="../ui/main/MainMenus.cpp" line="35"/>
         <source>&amp;Bus</source>
         <translation>总线(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="33"/>
+        <location filename="../ui/main/MainMenus.cpp" line="36"/>
         <source>Main</source>
         <translation>主工具栏</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="36"/>
+        <location filename="../ui/main/MainMenus.cpp" line="39"/>
         <source>&amp;Connect…</source>
         <translation>连接(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="38"/>
+        <location filename="../ui/main/MainMenus.cpp" line="41"/>
         <source>Choose the serial port, gateway or simulated bus (Ctrl+K)</source>
         <translation>选择串口、网关或模拟总线（Ctrl+K）</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="40"/>
+        <location filename="../ui/main/MainMenus.cpp" line="43"/>
         <source>&amp;Scan bus</source>
         <translation>扫描总线(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="46"/>
+        <location filename="../ui/main/MainMenus.cpp" line="49"/>
         <source>&amp;Disconnect</source>
         <translation>断开连接(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="50"/>
+        <location filename="../ui/main/MainMenus.cpp" line="53"/>
         <source>Communication &amp;groups…</source>
         <translation>通信组(&amp;G)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="54"/>
+        <location filename="../ui/main/MainMenus.cpp" line="57"/>
         <source>&amp;Export alarm histories…</source>
         <translation>导出报警履历(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="56"/>
+        <location filename="../ui/main/MainMenus.cpp" line="59"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="59"/>
+        <location filename="../ui/main/MainMenus.cpp" line="62"/>
         <source>&amp;Files</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="64"/>
+        <location filename="../ui/main/MainMenus.cpp" line="67"/>
         <source>&amp;Drive</source>
         <translation>驱动器(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="67"/>
+        <location filename="../ui/main/MainMenus.cpp" line="70"/>
         <source>&amp;Write all pending</source>
         <translation>写入全部待写入项(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="69"/>
+        <location filename="../ui/main/MainMenus.cpp" line="72"/>
         <source>&amp;Re-read all</source>
         <translation>全部重新读取(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="71"/>
+        <location filename="../ui/main/MainMenus.cpp" line="74"/>
         <source>Write a setting to the selected drives…</source>
         <translation>向所选驱动器写入一项设定…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="82"/>
+        <location filename="../ui/main/MainMenus.cpp" line="85"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="88"/>
+        <location filename="../ui/main/MainMenus.cpp" line="91"/>
         <source>&amp;Traffic log</source>
         <translation>报文日志(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="89"/>
+        <location filename="../ui/main/MainMenus.cpp" line="92"/>
         <source>Bus &amp;overview</source>
         <translation>总线总览(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="91"/>
+        <location filename="../ui/main/MainMenus.cpp" line="94"/>
         <source>T&amp;rends</source>
         <translation>趋势(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="92"/>
+        <location filename="../ui/main/MainMenus.cpp" line="95"/>
         <source>Communication &amp;groups</source>
         <translation>通信组(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="100"/>
+        <location filename="../ui/main/MainMenus.cpp" line="109"/>
+        <source>Language</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/main/MainMenus.cpp" line="110"/>
+        <source>OpenTOP will be in %1 the next time it starts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/main/MainMenus.cpp" line="116"/>
         <source>&amp;End of line</source>
         <translation>下线检测(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="102"/>
+        <location filename="../ui/main/MainMenus.cpp" line="118"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="115"/>
+        <location filename="../ui/main/MainMenus.cpp" line="131"/>
         <source>connect elsewhere</source>
         <translation>连接到其他总线</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="125"/>
+        <location filename="../ui/main/MainMenus.cpp" line="141"/>
         <source>Export alarm histories</source>
         <translation>导出报警履历</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="126"/>
+        <location filename="../ui/main/MainMenus.cpp" line="142"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
@@ -6535,33 +6571,33 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="50"/>
+        <location filename="../ui/main/MainWindow.cpp" line="50"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="126"/>
+        <location filename="../ui/main/MainWindow.cpp" line="126"/>
         <source>connect elsewhere</source>
         <translation>连接到其他总线</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="149"/>
+        <location filename="../ui/main/MainWindow.cpp" line="149"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>正在连接 %1…（仍连接着 %2）</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="188"/>
+        <location filename="../ui/main/MainWindow.cpp" line="188"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>已连接：%1（新连接失败：%2）</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="191"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="191"/>
+        <location filename="../ui/main/MainWindow.cpp" line="203"/>
         <source>Cannot connect</source>
         <translation>无法连接</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="192"/>
+        <location filename="../ui/main/MainWindow.cpp" line="192"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -6570,82 +6606,82 @@ Still connected to %2; nothing was changed.</source>
 仍连接着 %2；未作任何更改。</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="195"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="306"/>
+        <location filename="../ui/main/MainWindow.cpp" line="195"/>
+        <location filename="../ui/main/MainWindow.cpp" line="306"/>
         <source>Not connected: %1</source>
         <translation>未连接：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="252"/>
+        <location filename="../ui/main/MainWindow.cpp" line="252"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>通信组：%1（总线 › 通信组）</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="274"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="276"/>
+        <location filename="../ui/main/MainWindow.cpp" line="274"/>
+        <location filename="../ui/main/MainWindow.cpp" line="276"/>
         <source>Connection lost: %1</source>
         <translation>连接丢失：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="277"/>
+        <location filename="../ui/main/MainWindow.cpp" line="277"/>
         <source>Connection lost</source>
         <translation>连接丢失</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="285"/>
+        <location filename="../ui/main/MainWindow.cpp" line="285"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 模拟总线（无硬件）— %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="286"/>
+        <location filename="../ui/main/MainWindow.cpp" line="286"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="287"/>
+        <location filename="../ui/main/MainWindow.cpp" line="287"/>
         <source>Connecting to %1…</source>
         <translation>正在连接 %1…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="305"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="313"/>
+        <location filename="../ui/main/MainWindow.cpp" line="305"/>
+        <location filename="../ui/main/MainWindow.cpp" line="313"/>
         <source>Connected: %1</source>
         <translation>已连接：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="312"/>
+        <location filename="../ui/main/MainWindow.cpp" line="312"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>已连接：%1（模拟，无硬件）</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="333"/>
+        <location filename="../ui/main/MainWindow.cpp" line="333"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>驱动器未报告其机型；%1 为所设定的机型。</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="363"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="374"/>
+        <location filename="../ui/main/MainWindow.cpp" line="363"/>
+        <location filename="../ui/main/MainWindow.cpp" line="374"/>
         <source>disconnect</source>
         <translation>断开连接</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="370"/>
+        <location filename="../ui/main/MainWindow.cpp" line="370"/>
         <source>Not connected (disconnected)</source>
         <translation>未连接（已断开）</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="381"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="406"/>
+        <location filename="../ui/main/MainWindow.cpp" line="381"/>
+        <location filename="../ui/main/MainWindow.cpp" line="406"/>
         <source>quit</source>
         <translation>退出</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="392"/>
+        <location filename="../ui/main/MainWindow.cpp" line="392"/>
         <source>Unwritten changes</source>
         <translation>未写入的修改</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/main/MainWindow.cpp" line="393"/>
+        <location filename="../ui/main/MainWindow.cpp" line="393"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>有 %n 项修改尚未写入驱动器。退出并放弃这些修改？</numerusform>
@@ -6655,77 +6691,77 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorCommand</name>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="37"/>
+        <location filename="../cli/MonitorCommand.cpp" line="37"/>
         <source>Watch speed, load, state, inputs and alarms live (Ctrl-C ends)</source>
         <translation>实时监视速度、负载、状态、输入和报警（按 Ctrl-C 结束）</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="44"/>
+        <location filename="../cli/MonitorCommand.cpp" line="44"/>
         <source>Time between samples of a drive in ms, %1–%2 (default 500).</source>
         <translation>每台驱动器的采样间隔（ms），%1–%2（默认 500）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="47"/>
+        <location filename="../cli/MonitorCommand.cpp" line="47"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="48"/>
+        <location filename="../cli/MonitorCommand.cpp" line="48"/>
         <source>Stop after N samples per drive (default: until Ctrl-C).</source>
         <translation>每台驱动器采样 N 次后停止（默认：直到按 Ctrl-C）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="49"/>
+        <location filename="../cli/MonitorCommand.cpp" line="49"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="50"/>
+        <location filename="../cli/MonitorCommand.cpp" line="50"/>
         <source>Also write every sample to FILE (CSV with a header).</source>
         <translation>同时将每次采样写入 FILE（带表头的 CSV）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="51"/>
+        <location filename="../cli/MonitorCommand.cpp" line="51"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="63"/>
+        <location filename="../cli/MonitorCommand.cpp" line="63"/>
         <source>error: usage: %1</source>
         <translation>错误：用法：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="73"/>
+        <location filename="../cli/MonitorCommand.cpp" line="73"/>
         <source>error: --interval must be %1–%2 ms, got &quot;%3&quot;</source>
         <translation>错误：--interval 必须为 %1–%2 ms，实际为 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="86"/>
+        <location filename="../cli/MonitorCommand.cpp" line="86"/>
         <source>error: --count must be a whole number of samples, 1 or more, got &quot;%1&quot;</source>
         <translation>错误：--count 必须是 1 以上的整数采样次数，实际为 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="96"/>
+        <location filename="../cli/MonitorCommand.cpp" line="96"/>
         <source>error: cannot write %1: %2</source>
         <translation>错误：无法写入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="106"/>
+        <location filename="../cli/MonitorCommand.cpp" line="106"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="126"/>
+        <location filename="../cli/MonitorCommand.cpp" line="126"/>
         <source>warning: machine number %1: %2; speeds are shown in r/min only</source>
         <translation>警告：站号 %1：%2；速度仅以 r/min 显示</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="203"/>
+        <location filename="../cli/MonitorCommand.cpp" line="203"/>
         <source>error: cannot write %1: %2; monitoring stopped</source>
         <translation>错误：无法写入 %1：%2；监视已停止</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="227"/>
+        <location filename="../cli/MonitorCommand.cpp" line="227"/>
         <source>%1 error: %2</source>
         <translation>%1 错误：%2</translation>
     </message>
@@ -6733,13 +6769,13 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorDetails</name>
     <message>
-        <location filename="../main/ui/monitor/MonitorDetails.cpp" line="81"/>
-        <location filename="../main/ui/monitor/MonitorDetails.cpp" line="88"/>
+        <location filename="../ui/monitor/MonitorDetails.cpp" line="81"/>
+        <location filename="../ui/monitor/MonitorDetails.cpp" line="88"/>
         <source>not read</source>
         <translation>未读取</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorDetails.cpp" line="110"/>
+        <location filename="../ui/monitor/MonitorDetails.cpp" line="110"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -6747,42 +6783,42 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorOutput</name>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="114"/>
+        <location filename="../cli/MonitorOutput.cpp" line="114"/>
         <source>Target shown</source>
         <translation>目标显示值</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="114"/>
+        <location filename="../cli/MonitorOutput.cpp" line="114"/>
         <source>Speed shown</source>
         <translation>速度显示值</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="123"/>
+        <location filename="../cli/MonitorOutput.cpp" line="123"/>
         <source>Active alarm</source>
         <translation>当前报警</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="165"/>
+        <location filename="../cli/MonitorOutput.cpp" line="165"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="168"/>
+        <location filename="../cli/MonitorOutput.cpp" line="168"/>
         <source>code %1</source>
         <translation>代码 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="168"/>
+        <location filename="../cli/MonitorOutput.cpp" line="168"/>
         <source>active</source>
         <translation>发生中</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="175"/>
+        <location filename="../cli/MonitorOutput.cpp" line="175"/>
         <source>Time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="175"/>
+        <location filename="../cli/MonitorOutput.cpp" line="175"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -6790,37 +6826,37 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPage</name>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="175"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="175"/>
         <source>Live values</source>
         <translation>实时值</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="183"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="183"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="196"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="196"/>
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="261"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="261"/>
         <source>%1 %2 on the drive&apos;s display</source>
         <translation>驱动器显示屏上为 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="270"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="270"/>
         <source>Alarm %1 %2 — %3</source>
         <translation>报警 %1 %2 — %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="273"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="273"/>
         <source>Alarm active (reading which one…)</source>
         <translation>报警中（正在读取报警内容…）</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="328"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="328"/>
         <source>No live state: %1</source>
         <translation>无实时状态：%1</translation>
     </message>
@@ -6828,67 +6864,67 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPollBar</name>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="25"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="25"/>
         <source>Poll every</source>
         <translation>轮询周期</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="27"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="27"/>
         <source>%1 ms (%2 Hz)</source>
         <translation>%1 ms（%2 Hz）</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="28"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="28"/>
         <source>How often every monitored drive is read. Commands you give always go first; the drives share what is left of the bus in turn.</source>
         <translation>读取每台被监视驱动器的频率。您发出的命令总是优先；各驱动器轮流使用剩余的总线时间。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="36"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="36"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="44"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="44"/>
         <source>Resume polling</source>
         <translation>恢复轮询</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="44"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="44"/>
         <source>Pause polling</source>
         <translation>暂停轮询</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="58"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="58"/>
         <source>Polling paused: the values shown are the last ones read (%1).</source>
         <translation>轮询已暂停：显示的是最后读取的值（%1）。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="60"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="60"/>
         <source>Connection lost — not live: %1.</source>
         <translation>连接丢失 — 非实时：%1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="62"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="62"/>
         <source>Not live: %1.</source>
         <translation>非实时：%1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="63"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="63"/>
         <source>The drive does not answer (%1) — not live: %2.</source>
         <translation>驱动器无应答（%1）— 非实时：%2。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="66"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="66"/>
         <source>Values %1 · %2 samples/s</source>
         <translation>数值 %1 · %2 次采样/s</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="70"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="70"/>
         <source>Not read yet.</source>
         <translation>尚未读取。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="71"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="71"/>
         <source>Cannot read the drive: %1</source>
         <translation>无法读取驱动器：%1</translation>
     </message>
@@ -6896,12 +6932,12 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MotionPriorityBox</name>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="32"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="32"/>
         <source>Switch to communication priority…</source>
         <translation>切换到通信优先级…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="57"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="57"/>
         <source>Machine number %1 is in &quot;%2&quot; (%3): it takes run, stop, direction and speed selection from its input terminals and refuses motion commands over the bus, so the test run is disabled.
 
 Switching to &quot;%4&quot; hands these commands to the bus: the input terminals no longer start or stop the motor, and the machine&apos;s own controls stay without effect until you switch back to &quot;%2&quot;.</source>
@@ -6910,53 +6946,53 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 切换到“%4”会将这些命令交给总线：输入端子不再能启动或停止电机，设备自身的操作元件也将无效，直到切换回“%2”。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="83"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="83"/>
         <source>Switch to communication priority</source>
         <translation>切换到通信优先级</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="84"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="84"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from the bus (%2 = &quot;%3&quot;). Its input terminals then no longer start or stop the motor.</source>
         <translation>站号 %1 将通过总线接收运行、停止、方向和速度选择（%2 = &quot;%3&quot;）。之后其输入端子不再能启动或停止电机。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="90"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="90"/>
         <source>Switch</source>
         <translation>切换</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="99"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="99"/>
         <source>Switching to communication priority…</source>
         <translation>正在切换到通信优先级…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="107"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="107"/>
         <source>Machine number %1 takes motion commands over the bus now.</source>
         <translation>站号 %1 现在通过总线接收运动命令。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="109"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="109"/>
         <source>Cannot switch the control priority: %1</source>
         <translation>无法切换控制优先级：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="118"/>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="124"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="118"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="124"/>
         <source>Return to I/O priority</source>
         <translation>恢复为 I/O 优先级</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="119"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="119"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from its input terminals again, and refuse motion commands over the bus. If an input says run, the motor runs.</source>
         <translation>站号 %1 将重新通过输入端子接收运行、停止、方向和速度选择，并拒绝来自总线的运动命令。如果输入为运行，电机就会运行。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="127"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="127"/>
         <source>Returning to I/O priority…</source>
         <translation>正在恢复为 I/O 优先级…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="136"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="136"/>
         <source>Machine number %1 follows its input terminals again.</source>
         <translation>站号 %1 已重新按输入端子动作。</translation>
     </message>
@@ -6964,33 +7000,33 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MotorSpeedBox</name>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="23"/>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="45"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="23"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="45"/>
         <source>Motor speed</source>
         <translation>电机速度</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="33"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="33"/>
         <source>not set</source>
         <translation>未设定</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="34"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="34"/>
         <source>Commutations per motor revolution (a motor property, see its data sheet). r/min = %1 ÷ this × 60.</source>
         <translation>电机每转的换相次数（电机特性，参见其规格书）。r/min = %1 ÷ 此值 × 60。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="38"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="38"/>
         <source>Commutations per revolution</source>
         <translation>每转换相次数</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="75"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="75"/>
         <source>set the commutations per revolution</source>
         <translation>请设定每转换相次数</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="79"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="79"/>
         <source>%1 r/min</source>
         <translation>%1 r/min</translation>
     </message>
@@ -6998,161 +7034,161 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="35"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="35"/>
         <source>&amp;Write to all</source>
         <translation>全部写入(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
         <source>Write one setting to several drives</source>
         <translation>向多台驱动器写入一项设定</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
         <source>Machine number</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
         <source>Current value</source>
         <translation>当前值</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="55"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="55"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="74"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="74"/>
         <source>Not written: another family (%1)</source>
         <translation>未写入：其他系列（%1）</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="75"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="75"/>
         <source>Not written: not identified (%1)</source>
         <translation>未写入：未识别（%1）</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="80"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="80"/>
         <source>&amp;Setting:</source>
         <translation>设定(&amp;S)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="86"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="86"/>
         <source>New &amp;value:</source>
         <translation>新值(&amp;V)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="158"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="158"/>
         <source>cannot be read</source>
         <translation>无法读取</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="161"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="161"/>
         <source>reading…</source>
         <translation>正在读取…</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="189"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="189"/>
         <source>read failed: %1</source>
         <translation>读取失败：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="214"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="214"/>
         <source>Drive %1: %2 is not known yet, and the allowed values depend on it.</source>
         <translation>驱动器 %1：%2 尚未知，而允许值取决于该项。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="218"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="218"/>
         <source>drive %1: %2</source>
         <translation>驱动器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="222"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="222"/>
         <source>The unit differs between the drives (%1); write them one at a time.</source>
         <translation>各驱动器的单位不同（%1）；请逐台写入。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="230"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="230"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>驱动器 %1（%2）不允许：%3</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
         <source>None of the selected drives is identified.</source>
         <translation>所选驱动器均未识别。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
         <source>Drive %1: %2</source>
         <translation>驱动器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="249"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="249"/>
         <source>Allowed on %1</source>
         <translation>%1 上允许</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="257"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="257"/>
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="258"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="258"/>
         <source>Allowed on %1.</source>
         <translation>%1 上允许。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="290"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="290"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>将 %1 写入站号 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="292"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="292"/>
         <source>Nothing was written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="297"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="297"/>
         <source>waiting…</source>
         <translation>等待中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="299"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="299"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>正在将 %1 写入 %n 台驱动器…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="311"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="311"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>已在 %n 台驱动器中的 %1 台上写入并校验。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="320"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="320"/>
         <source>writing…</source>
         <translation>正在写入…</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="333"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="333"/>
         <source>Written and verified</source>
         <translation>已写入并校验</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>已写入，未校验（无法回读）</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="335"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="335"/>
         <source>Failed: %1</source>
         <translation>失败：%1</translation>
     </message>
@@ -7160,22 +7196,22 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::OutputFile</name>
     <message>
-        <location filename="../main/model/files/OutputFile.cpp" line="24"/>
+        <location filename="../model/files/OutputFile.cpp" line="24"/>
         <source>cannot write %1: it is a directory; name a file</source>
         <translation>无法写入 %1：它是目录；请指定文件</translation>
     </message>
     <message>
-        <location filename="../main/model/files/OutputFile.cpp" line="26"/>
+        <location filename="../model/files/OutputFile.cpp" line="26"/>
         <source>cannot write %1: the folder %2 does not exist</source>
         <translation>无法写入 %1：文件夹 %2 不存在</translation>
     </message>
     <message>
-        <location filename="../main/model/files/OutputFile.cpp" line="35"/>
+        <location filename="../model/files/OutputFile.cpp" line="35"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/files/OutputFile.cpp" line="40"/>
+        <location filename="../model/files/OutputFile.cpp" line="40"/>
         <source>it is a directory; name a file</source>
         <translation>是目录；请指定文件</translation>
     </message>
@@ -7183,87 +7219,87 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::PanelMirror</name>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="19"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="19"/>
         <source>speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="21"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="21"/>
         <source>machine number</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="23"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="23"/>
         <source>running data No.</source>
         <translation>运行数据编号</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="25"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="25"/>
         <source>countdown</source>
         <translation>倒计时</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="27"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="27"/>
         <source>load rate</source>
         <translation>负载率</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="46"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="46"/>
         <source>Alarm %1 %2</source>
         <translation>报警 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="47"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="47"/>
         <source>Alarm (code not read yet)</source>
         <translation>报警（代码尚未读取）</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="58"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="58"/>
         <source>Current speed %1 %2</source>
         <translation>当前速度 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="62"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="62"/>
         <source>Current speed: no finite value in %1</source>
         <translation>当前速度：%1 中无有限值</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="69"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="69"/>
         <source>Current speed %1 r/min</source>
         <translation>当前速度 %1 r/min</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="69"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="69"/>
         <source>Speed not read</source>
         <translation>速度未读取</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="75"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="75"/>
         <source>Machine number %1</source>
         <translation>站号 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="86"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="86"/>
         <source>Running data SPno%1</source>
         <translation>运行数据 SPno%1</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="89"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="89"/>
         <source>Running data not read</source>
         <translation>运行数据未读取</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="99"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="99"/>
         <source>Countdown set to %1 d %2 h %3 min %4 s (the drive does not report the time left)</source>
         <translation>倒计时设定为 %1 d %2 h %3 min %4 s（驱动器不报告剩余时间）</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="113"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="113"/>
         <source>Load rate %1 %</source>
         <translation>负载率 %1 %</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="116"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="116"/>
         <source>Load rate not read</source>
         <translation>负载率未读取</translation>
     </message>
@@ -7271,32 +7307,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::PanelMirrorView</name>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="21"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="21"/>
         <source>Drive panel</source>
         <translation>驱动器面板</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="51"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="51"/>
         <source>Not read yet</source>
         <translation>尚未读取</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="64"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="64"/>
         <source>%1 (more digits than the panel has)</source>
         <translation>%1（位数超过面板可显示的位数）</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="68"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="68"/>
         <source>Panel set to show the %1 while running.</source>
         <translation>面板设定为运行时显示%1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="69"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="69"/>
         <source>Drive panel shows %1</source>
         <translation>驱动器面板显示 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="77"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="77"/>
         <source>not live</source>
         <translation>非实时</translation>
     </message>
@@ -7304,27 +7340,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="170"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="170"/>
         <source>%1 (not valid now)</source>
         <translation>%1（当前无效）</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="188"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="188"/>
         <source>not read</source>
         <translation>未读取</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="197"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="197"/>
         <source>Allowed: %1</source>
         <translation>允许：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="200"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="200"/>
         <source>On the drive: %1</source>
         <translation>驱动器中：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="228"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="228"/>
         <source>Not accepted: %1</source>
         <translation>未接受：%1</translation>
     </message>
@@ -7332,92 +7368,92 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitBox</name>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="23"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="23"/>
         <source>Parameter initialisation</source>
         <translation>参数初始化</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="32"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="32"/>
         <source>Returns every setting of drive %1 to its factory default, including the communication settings: afterwards the drive may answer only at the default rate, and control priority goes back to its input terminals. The motor must be stopped. The consequences for this drive are listed before anything is sent.</source>
         <translation>将驱动器 %1 的全部设定恢复为出厂默认值，包括通信设定：之后驱动器可能只在默认波特率下应答，控制优先级也会恢复为输入端子。电机必须处于停止状态。发送前会列出对该驱动器的影响。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="40"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="40"/>
         <source>&amp;Initialise all parameters of drive %1…</source>
         <translation>初始化驱动器 %1 的全部参数(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="42"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="42"/>
         <source>Asks first, naming the drive and what changes</source>
         <translation>先确认，并列出驱动器及将要改变的内容</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="66"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="66"/>
         <source>Reading what the initialisation would change…</source>
         <translation>正在读取初始化将改变的内容…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="90"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="90"/>
         <source>Your %n unwritten edit(s) of this drive are discarded.</source>
         <translation>
             <numerusform>您对该驱动器的 %n 项未写入修改将被放弃。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="94"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="94"/>
         <source>Sent: %1 to machine %2 only.</source>
         <translation>已发送：%1，仅发给站号 %2。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="95"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="95"/>
         <source>Sent: %1 to machine %2.</source>
         <translation>已发送：%1，发给站号 %2。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="99"/>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="104"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="99"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="104"/>
         <source>Initialise drive %1</source>
         <translation>初始化驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="100"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="100"/>
         <source>Reset every setting of drive %1 (%2) to its factory defaults?</source>
         <translation>将驱动器 %1（%2）的全部设定恢复为出厂默认值？</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="114"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="114"/>
         <source>Cancelled; nothing was sent.</source>
         <translation>已取消；未发送任何内容。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="122"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="122"/>
         <source>Initialising drive %1…</source>
         <translation>正在初始化驱动器 %1…</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="131"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="131"/>
         <source>Drive %1 did not confirm the initialisation: %2</source>
         <translation>驱动器 %1 未确认初始化：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="132"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="132"/>
         <source>Nothing was sent: %1</source>
         <translation>未发送任何内容：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="139"/>
         <source>Drive %1 initialised; reading its values again…</source>
         <translation>驱动器 %1 已初始化；正在重新读取其值…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="145"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="145"/>
         <source>Drive %1 initialised; %n value(s) could not be read back (it may answer only at the default communication settings now).</source>
         <translation>
             <numerusform>驱动器 %1 已初始化；%n 个值无法回读（它现在可能只在默认通信设定下应答）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="149"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="149"/>
         <source>Drive %1 initialised to its factory defaults; values read again.</source>
         <translation>驱动器 %1 已恢复出厂默认值；已重新读取数值。</translation>
     </message>
@@ -7425,67 +7461,67 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitialiser</name>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="64"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="64"/>
         <source>%1 drives have no parameter initialisation.</source>
         <translation>%1 驱动器没有参数初始化功能。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="67"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="67"/>
         <source>%1 = %2 (register %3)</source>
         <translation>%1 = %2（寄存器 %3）</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="75"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="75"/>
         <source>Drive %1 is running. Stop the motor first: parameter initialisation is only sent to a drive at standstill.</source>
         <translation>驱动器 %1 正在运行。请先停止电机：参数初始化只发送给处于停止状态的驱动器。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="79"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="79"/>
         <source>Whether drive %1 is running could not be read (%2), so nothing was sent.</source>
         <translation>无法读取驱动器 %1 是否在运行（%2），因此未发送任何内容。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="93"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="93"/>
         <source>Every setting of drive %1 returns to its factory default: %2. Values set for this machine are lost; save a backup first to keep them.</source>
         <translation>驱动器 %1 的全部设定将恢复为出厂默认值：%2。为该设备设定的值将丢失；如需保留，请先保存备份。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="110"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="110"/>
         <source>%1 could not be read; it returns to %2. %3</source>
         <translation>无法读取 %1；它将恢复为 %2。%3</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="113"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="113"/>
         <source>%1 goes from %2 back to %3. %4</source>
         <translation>%1 将从 %2 恢复为 %3。%4</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="118"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="118"/>
         <source>%1 stays %2 (already the default).</source>
         <translation>%1 保持 %2（已是默认值）。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="124"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="124"/>
         <source>The drive may then stop answering this connection (from its next power-up): reconnect at the default setting to reach it.</source>
         <translation>之后驱动器可能不再在此连接上应答（从下次上电起）：请使用默认设定重新连接。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="128"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="128"/>
         <source>The drive no longer follows writes sent to its group&apos;s parent, and drives that followed it no longer do.</source>
         <translation>该驱动器将不再执行发往其组父站的写入，原先跟随它的驱动器也不再跟随。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="134"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="134"/>
         <source>The drive follows its input terminals again: an input that is on may start the motor, with the factory input functions.</source>
         <translation>驱动器将重新按输入端子动作：处于 ON 的输入可能会以出厂输入功能启动电机。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="136"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="136"/>
         <source>The machine number %1 is not a setting and does not change.</source>
         <translation>站号 %1 不是设定项，不会改变。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="138"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="138"/>
         <source>The motor must stand still: drive %1 reports it stopped now, and this is read again just before the command is sent.</source>
         <translation>电机必须静止：驱动器 %1 当前报告已停止，发送命令前会再次读取确认。</translation>
     </message>
@@ -7493,88 +7529,88 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterPage</name>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="23"/>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="83"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="23"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="83"/>
         <source>&amp;Write page</source>
         <translation>写入本页(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="24"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="24"/>
         <source>Re&amp;vert</source>
         <translation>还原(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="25"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="25"/>
         <source>Re-&amp;read</source>
         <translation>重新读取(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="45"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="45"/>
         <source>Write this page&apos;s pending edits to the drive and verify them by reading back</source>
         <translation>将本页的待写入修改写入驱动器，并通过回读校验</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="46"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="46"/>
         <source>Discard this page&apos;s pending edits</source>
         <translation>放弃本页的待写入修改</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="47"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="47"/>
         <source>Read this page&apos;s values from the drive again (edits stay)</source>
         <translation>重新从驱动器读取本页的值（修改保留）</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="84"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="84"/>
         <source>&amp;Write page (%1)</source>
         <translation>写入本页(&amp;W)（%1）</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="97"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="97"/>
         <source>Reading…</source>
         <translation>正在读取…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="101"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="101"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 个值无法读取</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="120"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="120"/>
         <source>Nothing was written: %n field(s) not accepted. %1</source>
         <translation>
             <numerusform>未写入任何内容：%n 个字段未被接受。%1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="139"/>
         <source>Write %n value(s) of the page %1 to machine number %2</source>
         <translation>
             <numerusform>将页面 %1 的 %n 个值写入站号 %2</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="143"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
         <source>Nothing was written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="148"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="148"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>正在写入 %n 个值…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="152"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="152"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>%n 项写入失败；请查看标记的字段</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="153"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="153"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n 个值已写入并校验</numerusform>
@@ -7584,212 +7620,212 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterReader</name>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="52"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="52"/>
         <source>entry</source>
         <translation>条目</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="60"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="60"/>
         <source>name must be lower-case dotted words: [a-z0-9_] separated by dots</source>
         <translation>名称必须是以点分隔的小写单词：[a-z0-9_]，以点分隔</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="68"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="68"/>
         <source>&quot;label&quot; is empty</source>
         <translation>&quot;label&quot; 为空</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="70"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="70"/>
         <source>group &quot;%1&quot; is not declared in &quot;groups&quot;</source>
         <translation>组 &quot;%1&quot; 未在 &quot;groups&quot; 中声明</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="72"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="72"/>
         <source>kind must be one of %1</source>
         <translation>kind 必须是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="78"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="78"/>
         <source>address must be 0x0000–0xFFFF</source>
         <translation>address 必须为 0x0000–0xFFFF</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="85"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="85"/>
         <source>read must be 3 (holding) or 4 (input)</source>
         <translation>read 必须为 3（保持寄存器）或 4（输入寄存器）</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="87"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="87"/>
         <source>write must be 6 or 16</source>
         <translation>write 必须为 6 或 16</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="91"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="91"/>
         <source>input registers (read 4) cannot be written</source>
         <translation>输入寄存器（read 4）不可写入</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="93"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="93"/>
         <source>neither readable nor writable</source>
         <translation>既不可读也不可写</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="101"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="101"/>
         <source>type must be u16, s16, u32, s32, f32, string or bits</source>
         <translation>type 必须为 u16、s16、u32、s32、f32、string 或 bits</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="110"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="110"/>
         <source>string parameters need &quot;count&quot; 1–125 registers</source>
         <translation>string 参数需要 &quot;count&quot; 为 1–125 个寄存器</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="115"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="115"/>
         <source>bits parameters have &quot;count&quot; 1 or 2</source>
         <translation>bits 参数的 &quot;count&quot; 为 1 或 2</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="120"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="120"/>
         <source>%1 takes %2 register(s), not %3</source>
         <translation>%1 占用 %2 个寄存器，而不是 %3 个</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="123"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="123"/>
         <source>a %1-register value cannot be written with function 06; use 16</source>
         <translation>%1 寄存器的值不能用功能码 06 写入；请使用 16</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="128"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="128"/>
         <source>safety must be one of %1</source>
         <translation>safety 必须是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="130"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="130"/>
         <source>commands need a &quot;safety&quot; class</source>
         <translation>命令需要 &quot;safety&quot; 类别</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="133"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="133"/>
         <source>code table &quot;%1&quot; is not declared</source>
         <translation>代码表 &quot;%1&quot; 未声明</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="140"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="140"/>
         <source>a setting needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>设定需要 &quot;allowed&quot; 或 &quot;enum&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="143"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="143"/>
         <source>a writable parameter needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>可写参数需要 &quot;allowed&quot; 或 &quot;enum&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="148"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="148"/>
         <source>bits parameters need &quot;bits&quot;</source>
         <translation>bits 参数需要 &quot;bits&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="156"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="156"/>
         <source>&quot;backup&quot; must be true or false</source>
         <translation>&quot;backup&quot; 必须为 true 或 false</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="161"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="161"/>
         <source>only readable and writable parameters can be backed up</source>
         <translation>只有可读且可写的参数才能备份</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="169"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="169"/>
         <source>scale must be positive</source>
         <translation>scale 必须为正数</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="179"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="179"/>
         <source>decimals must be 0–9</source>
         <translation>decimals 必须为 0–9</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="205"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="205"/>
         <source>default %1 is not a whole number of steps of %2</source>
         <translation>默认值 %1 不是步长 %2 的整数倍</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="214"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="214"/>
         <source>default must be a number (or &quot;0x...&quot; code)</source>
         <translation>默认值必须是数字（或 &quot;0x...&quot; 代码）</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="217"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="217"/>
         <source>default must be a number or a string</source>
         <translation>默认值必须是数字或字符串</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="228"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="228"/>
         <source>%1 must be an object {&quot;min&quot;:…, &quot;max&quot;:…}</source>
         <translation>%1 必须是对象 {&quot;min&quot;:…, &quot;max&quot;:…}</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="235"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="235"/>
         <source>%1 needs numeric min and max</source>
         <translation>%1 需要数值型的 min 和 max</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="241"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="241"/>
         <source>%1: %2 is not a whole number of steps of %3</source>
         <translation>%1：%2 不是步长 %3 的整数倍</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="249"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="249"/>
         <source>%1: min is greater than max</source>
         <translation>%1：min 大于 max</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="263"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="263"/>
         <source>%1 must be an object {&quot;value&quot;:…, &quot;label&quot;:…}</source>
         <translation>%1 必须是对象 {&quot;value&quot;:…, &quot;label&quot;:…}</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="278"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="278"/>
         <source>%1 has no label</source>
         <translation>%1 没有 label</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="280"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="280"/>
         <source>%1 repeats a code or label</source>
         <translation>%1 有重复的代码或 label</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="291"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="291"/>
         <source>&quot;bits&quot; only belongs to type bits</source>
         <translation>&quot;bits&quot; 只属于 bits 类型</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="315"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="315"/>
         <source>%1.appliesWhen needs &quot;param&quot; and &quot;equals&quot;</source>
         <translation>%1.appliesWhen 需要 &quot;param&quot; 和 &quot;equals&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="320"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="320"/>
         <source>%1 lies outside the %2-bit register</source>
         <translation>%1 超出 %2 位寄存器</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="322"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="322"/>
         <source>%1 needs a unique name</source>
         <translation>%1 需要唯一的名称</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="336"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="336"/>
         <source>%1 must be an object</source>
         <translation>%1 必须是对象</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="348"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="348"/>
         <source>%1 needs either &quot;variant&quot; or &quot;param&quot;</source>
         <translation>%1 需要 &quot;variant&quot; 或 &quot;param&quot; 之一</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="351"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="351"/>
         <source>%1: variant &quot;%2&quot; is not declared</source>
         <translation>%1：机型 &quot;%2&quot; 未声明</translation>
     </message>
@@ -7797,67 +7833,67 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParamsCommand</name>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="82"/>
+        <location filename="../cli/ParamsCommand.cpp" line="82"/>
         <source>List every parameter of the device profiles</source>
         <translation>列出设备描述中的全部参数</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="162"/>
+        <location filename="../cli/ParamsCommand.cpp" line="162"/>
         <source>error: params takes no arguments; use --family F</source>
         <translation>错误：params 不接受参数；请使用 --family F</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="170"/>
+        <location filename="../cli/ParamsCommand.cpp" line="170"/>
         <source>error: unknown family &quot;%1&quot;; known: %2</source>
         <translation>错误：未知系列 &quot;%1&quot;；已知：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Label</source>
         <translation>标签</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Address</source>
         <translation>地址</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Type</source>
         <translation>类型</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="193"/>
+        <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Allowed</source>
         <translation>允许值</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="193"/>
+        <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Default</source>
         <translation>默认值</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="193"/>
+        <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Access</source>
         <translation>访问</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="193"/>
+        <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Group</source>
         <translation>组</translation>
     </message>
@@ -7865,42 +7901,42 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::PortsCommand</name>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="16"/>
+        <location filename="../cli/PortsCommand.cpp" line="16"/>
         <source>List serial ports and USB adapters</source>
         <translation>列出串口和 USB 适配器</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="23"/>
+        <location filename="../cli/PortsCommand.cpp" line="23"/>
         <source>error: ports takes no arguments</source>
         <translation>错误：ports 不接受参数</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="43"/>
+        <location filename="../cli/PortsCommand.cpp" line="43"/>
         <source>No serial ports found.</source>
         <translation>未找到串口。</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="47"/>
+        <location filename="../cli/PortsCommand.cpp" line="47"/>
         <source>Port</source>
         <translation>端口</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="48"/>
+        <location filename="../cli/PortsCommand.cpp" line="48"/>
         <source>Adapter</source>
         <translation>适配器</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="49"/>
+        <location filename="../cli/PortsCommand.cpp" line="49"/>
         <source>Manufacturer</source>
         <translation>制造商</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="50"/>
+        <location filename="../cli/PortsCommand.cpp" line="50"/>
         <source>Serial no.</source>
         <translation>序列号</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="51"/>
+        <location filename="../cli/PortsCommand.cpp" line="51"/>
         <source>VID:PID</source>
         <translation>VID:PID</translation>
     </message>
@@ -7908,37 +7944,37 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="27"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="27"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>生产模式（下线检测）(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="30"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="30"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>下线检测工位的操作员界面；切换回来之前不能编辑参数（Ctrl+Shift+P）</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="33"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="33"/>
         <source>&amp;Full screen</source>
         <translation>全屏(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="49"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="49"/>
         <source>Production mode</source>
         <translation>生产模式</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="50"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="50"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>正在测试一台产品。请先取消测试（Esc）或等待测试完成，再切换回工程模式。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="79"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="79"/>
         <source>Results database</source>
         <translation>结果数据库</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="80"/>
         <source>%1
 
 No unit can be tested until results can be recorded.</source>
@@ -7947,17 +7983,17 @@ No unit can be tested until results can be recorded.</source>
 在能够记录结果之前，无法测试任何产品。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="95"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="95"/>
         <source>A unit is being tested</source>
         <translation>正在测试一台产品</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="96"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="96"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>正在测试产品 %1。取消测试并%2？会先停止其电机；该产品将记录为已中止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="108"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="108"/>
         <source>cancelled to %1</source>
         <translation>因%1而取消</translation>
     </message>
@@ -7965,47 +8001,47 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProductionOptions</name>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="31"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="31"/>
         <source>Start in production mode (end-of-line station) with this recipe.</source>
         <translation>以生产模式（下线检测工位）启动，并使用该配方。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="32"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="32"/>
         <source>RECIPE</source>
         <translation>RECIPE</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="33"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
         <source>Per-unit values (CSV by serial number) for production mode.</source>
         <translation>生产模式下的单台数值（按序列号对应的 CSV）。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="33"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="35"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="35"/>
         <source>Results database for production mode: an SQLite file or postgresql://user@host/db.</source>
         <translation>生产模式的结果数据库：SQLite 文件或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="36"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="36"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="37"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="37"/>
         <source>Start full screen.</source>
         <translation>以全屏启动。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="44"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="44"/>
         <source>--units and --results-db go with --production RECIPE</source>
         <translation>--units 和 --results-db 需与 --production RECIPE 一起使用</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="54"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="54"/>
         <source>%1 cannot be run:
   %2</source>
         <translation>%1 无法运行：
@@ -8015,82 +8051,82 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="65"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="66"/>
         <source>Open recipe…</source>
         <translation>打开配方…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="66"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
         <source>Per-unit values…</source>
         <translation>单台数值…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="69"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="70"/>
         <source>operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="72"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="73"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="77"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="78"/>
         <source>Operator:</source>
         <translation>操作员：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="83"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="84"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>扫描或输入序列号，然后按 Enter</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="84"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
         <source>Cancel unit (Esc)</source>
         <translation>取消本台测试（Esc）</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="102"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="103"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="102"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="103"/>
         <source>Now</source>
         <translation>当前</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="109"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
         <source>Time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="109"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
         <source>Serial</source>
         <translation>序列号</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="109"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="109"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
         <source>Reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="145"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="146"/>
         <source>READY</source>
         <translation>就绪</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="167"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="174"/>
         <source>Recipe not usable</source>
         <translation>配方不可用</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="168"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="175"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -8099,126 +8135,126 @@ No unit can be tested until results can be recorded.</source>
 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="180"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="187"/>
         <source>Open recipe</source>
         <translation>打开配方</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="180"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="187"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="187"/>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="193"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="194"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="200"/>
         <source>Per-unit values</source>
         <translation>单台数值</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="188"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/ProductionView.cpp" line="200"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="207"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 版本 %2 — %n 台驱动器</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="204"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="211"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;无：请打开该产品的配方&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="205"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="212"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>工位 %1 · 结果：%2 · 单台数值：%3</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="207"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
         <source>loaded</source>
         <translation>已载入</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="207"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="214"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="221"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>已测 %1 · 合格 %2 · 不合格 %3 · 直通率 %4 %</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="244"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
         <source>Per-unit value</source>
         <translation>单台数值</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="245"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>驱动器 %1：%2（%3–%4 %5）</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="258"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
         <source>NOT STARTED</source>
         <translation>未开始</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="274"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="281"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="275"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="282"/>
         <source>drive %1 (%2)</source>
         <translation>驱动器 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="276"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="283"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="279"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
         <source>TESTING</source>
         <translation>测试中</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="279"/>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="300"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
         <source>Unit %1</source>
         <translation>产品 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="296"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="303"/>
         <source>NOT RECORDED: %1</source>
         <translation>未记录：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="299"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="306"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="303"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="306"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="317"/>
         <source>Motor not confirmed stopped</source>
         <translation>未确认电机已停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="311"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="318"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -8230,32 +8266,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="336"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="336"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>偏移 %1 处不是有效的 JSON：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="340"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="340"/>
         <source>the top level must be a JSON object</source>
         <translation>顶层必须是 JSON 对象</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="351"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="351"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot; 为空</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="362"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="362"/>
         <source>must be an object</source>
         <translation>必须是对象</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="364"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
         <source>name repeated</source>
         <translation>名称重复</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="379"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="379"/>
         <source>%1: cannot open: %2</source>
         <translation>%1：无法打开：%2</translation>
     </message>
@@ -8263,12 +8299,12 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Progress</name>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="74"/>
+        <location filename="../cli/ScanCommand.cpp" line="74"/>
         <source>scanning %1/%2 (%3 %), machine number %4, %5 found</source>
         <translation>正在扫描 %1/%2（%3 %），站号 %4，已找到 %5 台</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="89"/>
+        <location filename="../cli/ScanCommand.cpp" line="89"/>
         <source>scan: %1 % (%2 of %3 machine numbers), %4 found</source>
         <translation>扫描：%1 %（%3 个站号中的 %2 个），已找到 %4 台</translation>
     </message>
@@ -8276,22 +8312,22 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::PtySimServer</name>
     <message>
-        <location filename="../main/sim/PtySimServer.cpp" line="49"/>
+        <location filename="../sim/PtySimServer.cpp" line="49"/>
         <source>cannot open a pseudo-terminal: %1</source>
         <translation>无法打开伪终端：%1</translation>
     </message>
     <message>
-        <location filename="../main/sim/PtySimServer.cpp" line="66"/>
+        <location filename="../sim/PtySimServer.cpp" line="66"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1 已存在且不是符号链接；拒绝替换</translation>
     </message>
     <message>
-        <location filename="../main/sim/PtySimServer.cpp" line="72"/>
+        <location filename="../sim/PtySimServer.cpp" line="72"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>无法创建符号链接 %1 -&gt; %2</translation>
     </message>
     <message>
-        <location filename="../main/sim/PtySimServer.cpp" line="114"/>
+        <location filename="../sim/PtySimServer.cpp" line="114"/>
         <source>the port is plugged in: %1</source>
         <translation>端口已插入：%1</translation>
     </message>
@@ -8299,52 +8335,52 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Recipe</name>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="62"/>
+        <location filename="../model/eol/Recipe.cpp" line="62"/>
         <source>take communication priority</source>
         <translation>获取通信优先级</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="64"/>
+        <location filename="../model/eol/Recipe.cpp" line="64"/>
         <source>select running data</source>
         <translation>选择运行数据</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="66"/>
+        <location filename="../model/eol/Recipe.cpp" line="66"/>
         <source>set the speed command</source>
         <translation>设定速度命令</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="68"/>
+        <location filename="../model/eol/Recipe.cpp" line="68"/>
         <source>start</source>
         <translation>启动</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="70"/>
+        <location filename="../model/eol/Recipe.cpp" line="70"/>
         <source>wait for speed</source>
         <translation>等待速度到达</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="72"/>
+        <location filename="../model/eol/Recipe.cpp" line="72"/>
         <source>hold and measure</source>
         <translation>保持并测量</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="74"/>
+        <location filename="../model/eol/Recipe.cpp" line="74"/>
         <source>check for alarms and warnings</source>
         <translation>检查报警和警告</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="76"/>
+        <location filename="../model/eol/Recipe.cpp" line="76"/>
         <source>stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="78"/>
+        <location filename="../model/eol/Recipe.cpp" line="78"/>
         <source>read and compare</source>
         <translation>读取并比较</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="106"/>
+        <location filename="../model/eol/Recipe.cpp" line="106"/>
         <source>position %1 (machine number %2)</source>
         <translation>位置 %1（站号 %2）</translation>
     </message>
@@ -8352,17 +8388,17 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeBuilder</name>
     <message>
-        <location filename="../main/model/eol/RecipeBuilder.cpp" line="208"/>
+        <location filename="../model/eol/RecipeBuilder.cpp" line="208"/>
         <source>%1: unknown family &quot;%2&quot;</source>
         <translation>%1：未知系列 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeBuilder.cpp" line="228"/>
+        <location filename="../model/eol/RecipeBuilder.cpp" line="228"/>
         <source>%1: %2 holds a value the profile does not allow: %3</source>
         <translation>%1：%2 含有设备描述不允许的值：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeBuilder.cpp" line="261"/>
+        <location filename="../model/eol/RecipeBuilder.cpp" line="261"/>
         <source>no drive to make a recipe of</source>
         <translation>没有可用于生成配方的驱动器</translation>
     </message>
@@ -8370,160 +8406,160 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeChecker</name>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="61"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="61"/>
         <source> (for %1)</source>
         <translation> （用于 %1）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="93"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="93"/>
         <source>the recipe names no product</source>
         <translation>配方未指定产品</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="95"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="95"/>
         <source>the recipe has no revision</source>
         <translation>配方没有版本</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="97"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="97"/>
         <source>the recipe names no drive</source>
         <translation>配方未指定驱动器</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="104"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="104"/>
         <source>%1: machine number %2 is already position %3; every drive of a unit needs its own machine number</source>
         <translation>%1：站号 %2 已用于位置 %3；一台产品中的每台驱动器都需要各自的站号</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="126"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="126"/>
         <source>%1: unknown family &quot;%2&quot;; known: %3</source>
         <translation>%1：未知系列 &quot;%2&quot;；已知：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="132"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="132"/>
         <source>%1: a %2 takes machine numbers %3–%4</source>
         <translation>%1：%2 的站号范围为 %3–%4</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="145"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="145"/>
         <source>%1: the %2 has no variant &quot;%3&quot;; known: %4</source>
         <translation>%1：%2 没有机型 &quot;%3&quot;；已知：%4</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="147"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="147"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="149"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="149"/>
         <source>%1: variant &quot;%2&quot; is named twice</source>
         <translation>%1：机型 &quot;%2&quot; 指定了两次</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="162"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="162"/>
         <source>%1: firmware version &quot;%2&quot; is not a version as the drive reports it (major.minor, e.g. &quot;1.5&quot;)</source>
         <translation>%1：固件版本 &quot;%2&quot; 不是驱动器报告的版本格式（major.minor，例如 &quot;1.5&quot;）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="175"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="175"/>
         <source>the %1 has no setting &quot;%2&quot;</source>
         <translation>%1 没有设定 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="177"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="177"/>
         <source>%1 is not a setting a recipe can write</source>
         <translation>%1 不是配方可以写入的设定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="179"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="179"/>
         <source>%1 decides how the drive communicates; a recipe cannot change it, or the station would lose the drive in the middle of the run</source>
         <translation>%1 决定驱动器的通信方式；配方不能修改它，否则工位会在运行中途失去与驱动器的连接</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="199"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="199"/>
         <source>%1: setting %2</source>
         <translation>%1：设定 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="204"/>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="269"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="204"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="269"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="210"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="210"/>
         <source>%1 is given twice</source>
         <translation>%1 指定了两次</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="218"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="218"/>
         <source>%1: what it allows depends on %2, which the recipe does not set; add %2 to the settings</source>
         <translation>%1：其允许值取决于 %2，但配方未设定该项；请将 %2 加入设定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="227"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="227"/>
         <source>%1 decides what %2 allows; set %2 in the recipe too, or the drive may be left with a value that is no longer valid</source>
         <translation>%1 决定 %2 的允许值；请在配方中同时设定 %2，否则驱动器可能残留一个不再有效的值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="243"/>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="311"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="243"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="311"/>
         <source>%1: unit &quot;%2&quot;, but the drive&apos;s value is in &quot;%3&quot;</source>
         <translation>%1：单位为 &quot;%2&quot;，但驱动器的值以 &quot;%3&quot; 为单位</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="264"/>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="364"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="264"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="364"/>
         <source>%1: per-unit value %2</source>
         <translation>%1：单台数值 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="275"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="275"/>
         <source>%1 is given twice (as a setting or as a per-unit value)</source>
         <translation>%1 指定了两次（作为设定或单台数值）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="281"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="281"/>
         <source>%1: the range&apos;s lowest value %2 is above its highest value %3</source>
         <translation>%1：范围的最小值 %2 大于最大值 %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="302"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="302"/>
         <source>%1: what it allows depends on %2, which the recipe does not set</source>
         <translation>%1：其允许值取决于 %2，但配方未设定该项</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="309"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="309"/>
         <source>%1 is not a number; a per-unit value needs a numeric setting</source>
         <translation>%1 不是数值；单台数值需要数值型设定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="314"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="314"/>
         <source>%1: range %2–%3%4</source>
         <translation>%1：范围 %2–%3%4</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="320"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="320"/>
         <source>%1 is outside what the drive allows: %2%3</source>
         <translation>%1 超出驱动器的允许范围：%2%3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="332"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="332"/>
         <source>%1 includes values the drive does not allow; allowed: %2%3</source>
         <translation>%1 包含驱动器不允许的值；允许：%2%3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="357"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="357"/>
         <source>%1: per-unit value %2: %3%4 is outside the recipe&apos;s range %5–%6%4</source>
         <translation>%1：单台数值 %2：%3%4 超出配方的范围 %5–%6%4</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="368"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="368"/>
         <source>%1: the recipe has no per-unit value %2</source>
         <translation>%1：配方中没有单台数值 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="371"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="371"/>
         <source>the recipe has no drive at machine number %1</source>
         <translation>配方中没有站号为 %1 的驱动器</translation>
     </message>
@@ -8531,218 +8567,218 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeEditor</name>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="46"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="46"/>
         <source>Recipe editor</source>
         <translation>配方编辑器</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="66"/>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="403"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="66"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="403"/>
         <source>Revision:</source>
         <translation>版本：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="68"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="68"/>
         <source>Product:</source>
         <translation>产品：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="69"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="69"/>
         <source>Description:</source>
         <translation>说明：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="70"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
         <source>Position:</source>
         <translation>位置：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="107"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="107"/>
         <source>New from drives on the bus…</source>
         <translation>从总线上的驱动器新建…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="108"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
         <source>New from backup file…</source>
         <translation>从备份文件新建…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="109"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
         <source>Open…</source>
         <translation>打开…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>Save as…</source>
         <translation>另存为…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="152"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="152"/>
         <source>%1: %2%3</source>
         <translation>%1：%2%3</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="155"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="155"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="224"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="224"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>从标准样机在总线上的驱动器或其备份文件生成配方，或打开已有配方。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="228"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="228"/>
         <source>the recipe is empty</source>
         <translation>配方为空</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="242"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="242"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="246"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="246"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>配方通过检查：可以保存和运行。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="249"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 个问题：修正之前无法保存配方。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="261"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="261"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>配方未通过检查（%n 个问题）；未保存任何内容</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="277"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="277"/>
         <source>cannot read %1: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="289"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="289"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 不是 OpenTOP 配方文件</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="296"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
         <source>Opened %1</source>
         <translation>已打开 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="297"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="297"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>已打开 %1，但它无法按原样载入（%2）。保存时会进行检查并重新签名。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="317"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="317"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>已从 %1 新建配方：请检查设定和测试步骤的限值，然后保存。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="329"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="329"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>站号 %1 不是总线上的已知驱动器；请先扫描总线</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="334"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>正在读取标准样机的设定…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="334"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="349"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="349"/>
         <source>cancelled: no recipe was made</source>
         <translation>已取消：未生成配方</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="375"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="375"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="388"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="388"/>
         <source>Open recipe</source>
         <translation>打开配方</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="389"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="389"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>配方 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="398"/>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="403"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="398"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="403"/>
         <source>New recipe</source>
         <translation>新建配方</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="398"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="398"/>
         <source>Product name:</source>
         <translation>产品名称：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="411"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="411"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>标准样机的备份文件</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="412"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="412"/>
         <source>Backups (*.json)</source>
         <translation>备份 (*.json)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="424"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="424"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>总线上没有驱动器：请先连接并扫描。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="432"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="432"/>
         <source>New recipe from drives</source>
         <translation>从驱动器新建配方</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="433"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="433"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>标准样机各驱动器的站号（已找到：%1）：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="443"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="443"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot; 不是站号（1–247）</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="452"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="452"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>已从总线上的驱动器新建配方：请检查设定和测试步骤的限值，然后保存。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="463"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="463"/>
         <source>Save recipe</source>
         <translation>保存配方</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="465"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="465"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="470"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="470"/>
         <source>Saved and signed: %1</source>
         <translation>已保存并签名：%1</translation>
     </message>
@@ -8750,17 +8786,17 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../main/model/eol/RecipeFile.cpp" line="250"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="250"/>
         <source>cannot read %1: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeFile.cpp" line="257"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="257"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1 大于 %2 MB，超过配方文件的上限；不是配方文件</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeFile.cpp" line="265"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="265"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -8768,153 +8804,153 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeParser</name>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="45"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="45"/>
         <source>not a JSON file: %1 at byte %2</source>
         <translation>不是 JSON 文件：%1，位于字节 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="49"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="49"/>
         <source>not an OpenTOP recipe file: the JSON is not an object</source>
         <translation>不是 OpenTOP 配方文件：JSON 不是对象</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="70"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="70"/>
         <source>&quot;positions&quot;: the recipe names no drive</source>
         <translation>&quot;positions&quot;：配方未指定驱动器</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="75"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="75"/>
         <source>%1: must be an object</source>
         <translation>%1：必须是对象</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="92"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="92"/>
         <source>not an OpenTOP recipe file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>不是 OpenTOP 配方文件（&quot;format&quot; 为 &quot;%1&quot;，而非 &quot;%2&quot;）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="94"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="94"/>
         <source>not an OpenTOP recipe file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>不是 OpenTOP 配方文件（没有 &quot;format&quot;: &quot;%1&quot;）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="99"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="99"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot; 必须是从 1 起的整数</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="101"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="101"/>
         <source>written by a newer OpenTOP (recipe format version %1); this version reads recipe format version %2</source>
         <translation>由更新版本的 OpenTOP 写入（配方格式版本 %1）；本版本读取配方格式版本 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="107"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="107"/>
         <source>the recipe has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>配方没有校验和（&quot;checksum&quot;: &quot;sha256:…&quot;）；它不是由 OpenTOP 写入的，或写入后被修改过</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="113"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="113"/>
         <source>the recipe was changed after it was written (checksum mismatch); open and save it with OpenTOP to accept the change</source>
         <translation>配方在写入后被修改过（校验和不一致）；请用 OpenTOP 打开并保存以接受该修改</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="130"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="130"/>
         <source>%1: &quot;machineNumber&quot; must be a machine number 1–247</source>
         <translation>%1：&quot;machineNumber&quot; 必须是站号 1–247</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="132"/>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="208"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="132"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="208"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="176"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="176"/>
         <source>%1 (%2): &quot;value&quot; must be a number or a text</source>
         <translation>%1（%2）：&quot;value&quot; 必须是数字或文本</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="192"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="192"/>
         <source>%1 (%2): &quot;source&quot; must be &quot;csv&quot; or &quot;operator&quot;, not &quot;%3&quot;</source>
         <translation>%1（%2）：&quot;source&quot; 必须是 &quot;csv&quot; 或 &quot;operator&quot;，而不是 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="205"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="205"/>
         <source>%1: unknown step type &quot;%2&quot;; known: %3</source>
         <translation>%1：未知步骤类型 &quot;%2&quot;；已知：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="219"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="219"/>
         <source>%1: &quot;spno&quot; must be a running data number such as 2</source>
         <translation>%1：&quot;spno&quot; 必须是运行数据编号，例如 2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="232"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="232"/>
         <source>%1: &quot;direction&quot; must be &quot;cw&quot; or &quot;ccw&quot;</source>
         <translation>%1：&quot;direction&quot; 必须是 &quot;cw&quot; 或 &quot;ccw&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="276"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="276"/>
         <source>%1: give either &quot;equals&quot; or limits, not both</source>
         <translation>%1：请指定 &quot;equals&quot; 或限值之一，不能同时指定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="282"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="282"/>
         <source>%1: unknown step</source>
         <translation>%1：未知步骤</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="298"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="298"/>
         <source>%1: &quot;unit&quot; must be a text (&quot;&quot; for a value without a unit)</source>
         <translation>%1：&quot;unit&quot; 必须是文本（无单位的值用 &quot;&quot;）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="301"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="301"/>
         <source>%1: a limit needs &quot;lower&quot;, &quot;upper&quot; or both</source>
         <translation>%1：限值需要 &quot;lower&quot;、&quot;upper&quot; 或两者</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="309"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="309"/>
         <source>%1: unknown key &quot;%2&quot;; allowed: %3</source>
         <translation>%1：未知键 &quot;%2&quot;；允许：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="323"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="323"/>
         <source>%1&quot;%2&quot; must be a non-empty text</source>
         <translation>%1&quot;%2&quot; 必须是非空文本</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="324"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="324"/>
         <source>%1&quot;%2&quot; must be a text</source>
         <translation>%1&quot;%2&quot; 必须是文本</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="336"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="336"/>
         <source>%1: &quot;%2&quot; must be a list of texts</source>
         <translation>%1：&quot;%2&quot; 必须是文本列表</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="339"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="339"/>
         <source>%1: &quot;%2&quot; must be a list of non-empty texts</source>
         <translation>%1：&quot;%2&quot; 必须是非空文本列表</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="349"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="349"/>
         <source>%1: &quot;%2&quot; must be a number</source>
         <translation>%1：&quot;%2&quot; 必须是数字</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="375"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="375"/>
         <source>%1&quot;%2&quot; must be a list</source>
         <translation>%1&quot;%2&quot; 必须是列表</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="378"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="378"/>
         <source>%1&quot;%2&quot; has %3 entries; at most %4 are allowed</source>
         <translation>%1&quot;%2&quot; 有 %3 个条目；最多允许 %4 个</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="384"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="384"/>
         <source>%1&quot;%2&quot;: every entry must be an object</source>
         <translation>%1&quot;%2&quot;：每个条目都必须是对象</translation>
     </message>
@@ -8922,151 +8958,151 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipePositionForm</name>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="125"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="125"/>
         <source>every variant of the family, e.g. dbu200, dbu400</source>
         <translation>该系列的所有机型，例如 dbu200, dbu400</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="127"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="127"/>
         <source>any firmware, e.g. 1.5, 1.6</source>
         <translation>任意固件，例如 1.5, 1.6</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Setting</source>
         <translation>设定</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Min</source>
         <translation>最小值</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Max</source>
         <translation>最大值</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Source</source>
         <translation>来源</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="139"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="139"/>
         <source>Add per-unit value…</source>
         <translation>添加单台数值…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="139"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="139"/>
         <source>Add setting…</source>
         <translation>添加设定…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="140"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="140"/>
         <source>Remove</source>
         <translation>移除</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="153"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="153"/>
         <source>Settings</source>
         <translation>设定</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="154"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="154"/>
         <source>Per-unit values</source>
         <translation>单台数值</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="155"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="155"/>
         <source>Test steps (JSON)</source>
         <translation>测试步骤（JSON）</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="158"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
         <source>Machine number:</source>
         <translation>站号：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="159"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
         <source>Name:</source>
         <translation>名称：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="160"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="160"/>
         <source>Family:</source>
         <translation>系列：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="161"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="161"/>
         <source>Allowed variants:</source>
         <translation>允许的机型：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="162"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="162"/>
         <source>Allowed firmware:</source>
         <translation>允许的固件：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="188"/>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="352"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="188"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="352"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="232"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="232"/>
         <source>CSV file</source>
         <translation>CSV 文件</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="233"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="233"/>
         <source>typed by the operator</source>
         <translation>由操作员输入</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="281"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="281"/>
         <source>test steps: %1 at character %2</source>
         <translation>测试步骤：%1，位于字符 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="283"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="283"/>
         <source>test steps: must be a JSON array of steps: [ {...}, ... ]</source>
         <translation>测试步骤：必须是步骤的 JSON 数组：[ {...}, ... ]</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="294"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="294"/>
         <source>(unknown: %1)</source>
         <translation>（未知：%1）</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="357"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="357"/>
         <source>Add a per-unit value</source>
         <translation>添加单台数值</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="357"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="357"/>
         <source>Add a setting</source>
         <translation>添加设定</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="358"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="358"/>
         <source>Setting:</source>
         <translation>设定：</translation>
     </message>
@@ -9074,143 +9110,143 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeStepChecker</name>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="22"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="22"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="40"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="40"/>
         <source>a %1 cannot do this step</source>
         <translation>%1 无法执行该步骤</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="53"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="53"/>
         <source>%1, step %2 (%3)</source>
         <translation>%1，步骤 %2（%3）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="63"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="63"/>
         <source>the drive takes motion commands only with communication priority; put a priority step before it</source>
         <translation>驱动器只在通信优先级下接受运动命令；请在其前面加入优先级步骤</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="71"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="71"/>
         <source>the motor is not running here; put a start step before it</source>
         <translation>此处电机未运行；请在其前面加入启动步骤</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="82"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="82"/>
         <source>%1: the steps leave the motor running; end them with a stop step</source>
         <translation>%1：步骤结束时电机仍在运行；请以停止步骤结束</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="92"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="92"/>
         <source>%1 %2 s is not sane; give more than 0 s and at most %3 s</source>
         <translation>%1 %2 s 不合理；请给出大于 0 s 且不超过 %3 s 的值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="105"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="105"/>
         <source>unit &quot;%1&quot;, but %2 is measured in &quot;%3&quot;</source>
         <translation>单位为 &quot;%1&quot;，但 %2 以 &quot;%3&quot; 为单位测量</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="129"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="129"/>
         <source>the profile&apos;s selection parameter is missing</source>
         <translation>缺少设备描述中的选择参数</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="131"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="131"/>
         <source>running data %1: %2</source>
         <translation>运行数据 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="146"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="146"/>
         <source>what %1 means depends on %2, which the recipe does not set; add it to the settings</source>
         <translation>%1 的含义取决于 %2，但配方未设定该项；请将其加入设定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="154"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="154"/>
         <source>a speed of 0 stops the motor; use a stop step</source>
         <translation>速度为 0 会使电机停止；请使用停止步骤</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="168"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="168"/>
         <source>unit &quot;%1&quot;, but with these settings %2 is in &quot;%3&quot;</source>
         <translation>单位为 &quot;%1&quot;，但在这些设定下 %2 以 &quot;%3&quot; 为单位</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="185"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="185"/>
         <source>a %1 does not report its target speed; give the target</source>
         <translation>%1 不报告其目标速度；请给出目标值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="187"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="187"/>
         <source>the target speed must be above 0</source>
         <translation>目标速度必须大于 0</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="190"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="190"/>
         <source>the tolerance %1 must be above 0 and below the target speed</source>
         <translation>容差 %1 必须大于 0 且小于目标速度</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="194"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="194"/>
         <source>the time to reach the speed</source>
         <translation>到达速度的时间</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="198"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="198"/>
         <source>the hold time</source>
         <translation>保持时间</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="200"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="200"/>
         <source>the step measures nothing; give limits</source>
         <translation>该步骤不测量任何内容；请给出限值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="208"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="208"/>
         <source>the margin</source>
         <translation>裕量</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="211"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="211"/>
         <source>a %1 has no deceleration time setting to wait for; give the deceleration (0 s when it brakes at once)</source>
         <translation>%1 没有可等待的减速时间设定；请给出减速时间（立即制动时为 0 s）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="217"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="217"/>
         <source>the deceleration time %1 s is not sane; give 0–%2 s</source>
         <translation>减速时间 %1 s 不合理；请给出 0–%2 s</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="232"/>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="274"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="232"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="274"/>
         <source>the %1 has no readable value &quot;%2&quot;</source>
         <translation>%1 没有可读取的值 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="237"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="237"/>
         <source>%1 is not a number</source>
         <translation>%1 不是数字</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="247"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="247"/>
         <source>%1: &quot;%2&quot; is not a statistic; use min, mean or max</source>
         <translation>%1：&quot;%2&quot; 不是统计量；请使用 min、mean 或 max</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="254"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="254"/>
         <source>%1: the limit&apos;s unit is &quot;%2&quot;, but the value is measured in &quot;%3&quot;</source>
         <translation>%1：限值的单位为 &quot;%2&quot;，但该值以 &quot;%3&quot; 为单位测量</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="261"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="261"/>
         <source>%1: the lower limit %2 %4 is above the upper limit %3 %4</source>
         <translation>%1：下限 %2 %4 大于上限 %3 %4</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="283"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="283"/>
         <source>%1 is a number; compare it with lower and upper limits</source>
         <translation>%1 是数字；请用下限和上限进行比较</translation>
     </message>
@@ -9218,42 +9254,42 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreChoice</name>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
         <source>Drive in file / setting</source>
         <translation>文件中的驱动器 / 设定</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
         <source>Value in file</source>
         <translation>文件中的值</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
         <source>Restore to</source>
         <translation>恢复到</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="54"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="54"/>
         <source>(do not restore)</source>
         <translation>（不恢复）</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="58"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="58"/>
         <source>Drive %1 (%2)</source>
         <translation>驱动器 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="117"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="117"/>
         <source>Two drives of the file would be restored to drive %1.</source>
         <translation>文件中的两台驱动器将恢复到驱动器 %1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="122"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="122"/>
         <source>Drive %1 is not on the bus (or not identified).</source>
         <translation>驱动器 %1 不在总线上（或未识别）。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="134"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="134"/>
         <source>Nothing chosen: tick at least one setting of a drive with a target.</source>
         <translation>未选择任何内容：请为有目标驱动器的驱动器至少勾选一项设定。</translation>
     </message>
@@ -9261,123 +9297,123 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreCommand</name>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="36"/>
+        <location filename="../cli/RestoreCommand.cpp" line="36"/>
         <source>Show what a backup file would change on its drives; with --yes write it, verified</source>
         <translation>显示备份文件将对其驱动器作出的修改；使用 --yes 则写入并校验</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="41"/>
+        <location filename="../cli/RestoreCommand.cpp" line="41"/>
         <source>Restore only these drives of the file, e.g. 1,5-7.</source>
         <translation>仅恢复文件中的这些驱动器，例如 1,5-7。</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="42"/>
+        <location filename="../cli/RestoreCommand.cpp" line="42"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="43"/>
+        <location filename="../cli/RestoreCommand.cpp" line="43"/>
         <source>Read the drives and show the plan; write nothing.</source>
         <translation>读取驱动器并显示计划；不写入任何内容。</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="44"/>
+        <location filename="../cli/RestoreCommand.cpp" line="44"/>
         <source>Write the plan (without it restore only shows it).</source>
         <translation>写入计划（不加此选项时 restore 仅显示计划）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="80"/>
+        <location filename="../cli/RestoreCommand.cpp" line="80"/>
         <source>%1: the drive&apos;s settings were not read; nothing compared, nothing written</source>
         <translation>%1：未读取驱动器的设定；未比较，未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="86"/>
-        <location filename="../main/cli/RestoreCommand.cpp" line="124"/>
+        <location filename="../cli/RestoreCommand.cpp" line="86"/>
+        <location filename="../cli/RestoreCommand.cpp" line="124"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="91"/>
         <source>parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="91"/>
         <source>file value</source>
         <translation>文件值</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="91"/>
         <source>device value</source>
         <translation>设备值</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="92"/>
+        <location filename="../cli/RestoreCommand.cpp" line="92"/>
         <source>result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="92"/>
+        <location filename="../cli/RestoreCommand.cpp" line="92"/>
         <source>action</source>
         <translation>操作</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="106"/>
+        <location filename="../cli/RestoreCommand.cpp" line="106"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>%1 项已写入并校验，%2 项未变，%3 项失败，%4 项未尝试</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="112"/>
+        <location filename="../cli/RestoreCommand.cpp" line="112"/>
         <source>, %1 not confirmed</source>
         <translation>，%1 项未确认</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="114"/>
+        <location filename="../cli/RestoreCommand.cpp" line="114"/>
         <source>; %1 of %2 store commands written</source>
         <translation>；已写入 %2 条保存命令中的 %1 条</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="149"/>
+        <location filename="../cli/RestoreCommand.cpp" line="149"/>
         <source>error: name one backup file: restore FILE [--ids LIST] [--yes]</source>
         <translation>错误：请指定一个备份文件：restore FILE [--ids LIST] [--yes]</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="163"/>
+        <location filename="../cli/RestoreCommand.cpp" line="163"/>
         <source>error: --ids: %1</source>
         <translation>错误：--ids：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="168"/>
+        <location filename="../cli/RestoreCommand.cpp" line="168"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>错误：%1 中没有站号为 %2 的驱动器；其中有 %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="191"/>
+        <location filename="../cli/RestoreCommand.cpp" line="191"/>
         <source>error: %1; nothing written</source>
         <translation>错误：%1；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="199"/>
+        <location filename="../cli/RestoreCommand.cpp" line="199"/>
         <source>error: %1: %2</source>
         <translation>错误：%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="228"/>
+        <location filename="../cli/RestoreCommand.cpp" line="228"/>
         <source>not attempted</source>
         <translation>未尝试</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="231"/>
+        <location filename="../cli/RestoreCommand.cpp" line="231"/>
         <source>%1: not attempted</source>
         <translation>%1：未尝试</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="253"/>
+        <location filename="../cli/RestoreCommand.cpp" line="253"/>
         <source>dry run: nothing written</source>
         <translation>仅预览：未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="254"/>
+        <location filename="../cli/RestoreCommand.cpp" line="254"/>
         <source>nothing written; add --yes to write</source>
         <translation>未写入任何内容；加上 --yes 才会写入</translation>
     </message>
@@ -9385,200 +9421,200 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreDialog</name>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="35"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="35"/>
         <source>&amp;Preview</source>
         <translation>预览(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="36"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="36"/>
         <source>&amp;Write to drives…</source>
         <translation>写入驱动器(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="37"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="38"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
         <source>&amp;Save report…</source>
         <translation>保存报告(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="40"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="40"/>
         <source>Restore from a backup file</source>
         <translation>从备份文件恢复</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="42"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="42"/>
         <source>No file chosen</source>
         <translation>未选择文件</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="43"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="43"/>
         <source>&amp;Choose file…</source>
         <translation>选择文件(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="45"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="45"/>
         <source>File:</source>
         <translation>文件：</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="56"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="56"/>
         <source>Read the drives and show what would change; writes nothing</source>
         <translation>读取驱动器并显示将要改变的内容；不写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="57"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="57"/>
         <source>Write the previewed changes, each verified by reading it back</source>
         <translation>写入预览的修改，每项都通过回读校验</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="58"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
         <source>Stop after the write in progress has been verified</source>
         <translation>当前写入校验完成后停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="59"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
         <source>Save the report as text, or as CSV when the name ends in .csv</source>
         <translation>将报告保存为文本；文件名以 .csv 结尾时保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="60"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
         <source>C&amp;lose</source>
         <translation>关闭(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="96"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="96"/>
         <source>%1: no such file</source>
         <translation>%1：文件不存在</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="101"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="101"/>
         <source>the file could not be read</source>
         <translation>无法读取该文件</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="102"/>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="186"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="102"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="186"/>
         <source>Refused, nothing will be written: %1</source>
         <translation>已拒绝，不会写入任何内容：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="107"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="107"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>文件中有 %n 台驱动器。请选择要恢复的内容，然后点击“预览”。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="148"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="148"/>
         <source>Refused, nothing written:</source>
         <translation>已拒绝，未写入任何内容：</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="150"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="150"/>
         <source>Drive %1 from %2: %3</source>
         <translation>来自 %2 的驱动器 %1：%3</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="185"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="185"/>
         <source>Choose a backup file first.</source>
         <translation>请先选择备份文件。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="227"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="227"/>
         <source>not attempted</source>
         <translation>未尝试</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
         <source>Reading drive %1…</source>
         <translation>正在读取驱动器 %1…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
         <source>Writing drive %1…</source>
         <translation>正在写入驱动器 %1…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="239"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="239"/>
         <source>drive %1: %2 (%v of %m)</source>
         <translation>驱动器 %1：%2（%v / %m）</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="267"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="267"/>
         <source>Stopping after the write in progress has been verified…</source>
         <translation>正在等待当前写入校验完成后停止…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="282"/>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="373"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="282"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="373"/>
         <source>Drive %1: %2</source>
         <translation>驱动器 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="285"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="285"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>%n 项设定待写入</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="292"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="292"/>
         <source>  Note: %1</source>
         <translation>  注意：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="295"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="295"/>
         <source>Nothing written yet. Write to drives to apply.</source>
         <translation>尚未写入任何内容。点击“写入驱动器”以应用。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="296"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="296"/>
         <source>Nothing written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="354"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="354"/>
         <source>Restore from backup file</source>
         <translation>从备份文件恢复</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="355"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="355"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 备份 (*.json);;所有文件 (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="375"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>将 %n 项设定写入驱动器 %1，每项都通过回读校验？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
         <source>Write to drives</source>
         <translation>写入驱动器</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
         <source>&amp;Write</source>
         <translation>写入(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="385"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="385"/>
         <source>Save restore report</source>
         <translation>保存恢复报告</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="386"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>文本 (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="391"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="391"/>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
     </message>
@@ -9586,109 +9622,109 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestorePlan</name>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="69"/>
+        <location filename="../model/files/RestorePlan.cpp" line="69"/>
         <source>the file holds a %1 drive (%2), but machine number %3 is a %4 drive; nothing written</source>
         <translation>文件中是 %1 驱动器（%2），但站号 %3 是 %4 驱动器；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="76"/>
+        <location filename="../model/files/RestorePlan.cpp" line="76"/>
         <source>the file is from a %1 (%2), but machine number %3 is a %4 (%5); their allowed values differ, nothing written</source>
         <translation>文件来自 %1（%2），但站号 %3 是 %4（%5）；两者的允许值不同，未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="83"/>
+        <location filename="../model/files/RestorePlan.cpp" line="83"/>
         <source>the drive does not tell its variant: every value must suit all variants (name it with --variant to use its own ranges)</source>
         <translation>驱动器不报告其机型：每个值都必须适用于所有机型（用 --variant 指定机型以使用其自身范围）</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="152"/>
+        <location filename="../model/files/RestorePlan.cpp" line="152"/>
         <source>%1: the value cannot be written exactly</source>
         <translation>%1：无法精确写入该值</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="165"/>
+        <location filename="../model/files/RestorePlan.cpp" line="165"/>
         <source>store commands are always written: what the drive has stored cannot be read back, only what it uses now</source>
         <translation>保存命令总是会写入：驱动器已保存的内容无法回读，只能读取其当前使用的值</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/model/files/RestorePlan.cpp" line="176"/>
+        <location filename="../model/files/RestorePlan.cpp" line="176"/>
         <source>%n value(s) of the file may not be written to this drive; nothing written</source>
         <translation>
             <numerusform>文件中有 %n 个值不能写入该驱动器；未写入任何内容</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="238"/>
+        <location filename="../model/files/RestorePlan.cpp" line="238"/>
         <source>keep</source>
         <translation>保留</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="240"/>
+        <location filename="../model/files/RestorePlan.cpp" line="240"/>
         <source>write</source>
         <translation>写入</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="242"/>
+        <location filename="../model/files/RestorePlan.cpp" line="242"/>
         <source>store</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="253"/>
+        <location filename="../model/files/RestorePlan.cpp" line="253"/>
         <source>unchanged</source>
         <translation>未变</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="255"/>
         <source>written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="255"/>
         <source>written and verified</source>
         <translation>已写入并校验</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="257"/>
+        <location filename="../model/files/RestorePlan.cpp" line="257"/>
         <source>failed: %1</source>
         <translation>失败：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="259"/>
+        <location filename="../model/files/RestorePlan.cpp" line="259"/>
         <source>not attempted</source>
         <translation>未尝试</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="261"/>
+        <location filename="../model/files/RestorePlan.cpp" line="261"/>
         <source>not confirmed (%1): the drive may or may not hold it; run the restore again to read it back</source>
         <translation>未确认（%1）：驱动器可能保存了该值，也可能没有；请再次执行恢复以回读</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="286"/>
+        <location filename="../model/files/RestorePlan.cpp" line="286"/>
         <source>planned</source>
         <translation>已计划</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="288"/>
+        <location filename="../model/files/RestorePlan.cpp" line="288"/>
         <source>restored</source>
         <translation>已恢复</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="290"/>
+        <location filename="../model/files/RestorePlan.cpp" line="290"/>
         <source>refused</source>
         <translation>已拒绝</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="292"/>
+        <location filename="../model/files/RestorePlan.cpp" line="292"/>
         <source>communication failure</source>
         <translation>通信失败</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="294"/>
+        <location filename="../model/files/RestorePlan.cpp" line="294"/>
         <source>verification mismatch</source>
         <translation>校验不一致</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="296"/>
+        <location filename="../model/files/RestorePlan.cpp" line="296"/>
         <source>interrupted</source>
         <translation>已中断</translation>
     </message>
@@ -9696,32 +9732,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestorePlanTable</name>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
         <source>Action</source>
         <translation>操作</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
         <source>File value</source>
         <translation>文件值</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="13"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="13"/>
         <source>Drive value before</source>
         <translation>驱动器原值</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="13"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="13"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
@@ -9729,62 +9765,62 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreReport</name>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="16"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="16"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>%1 项已写入并校验，%2 项未变，%3 项失败，%4 项未尝试</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="22"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="22"/>
         <source>, %1 not confirmed</source>
         <translation>，%1 项未确认</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="24"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="24"/>
         <source>; %1 of %2 store commands written</source>
         <translation>；已写入 %2 条保存命令中的 %1 条</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="33"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="33"/>
         <source>OpenTOP restore report</source>
         <translation>OpenTOP 恢复报告</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="33"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="33"/>
         <source>File: %1</source>
         <translation>文件：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="34"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
         <source>Date: %1 (UTC)</source>
         <translation>日期：%1（UTC）</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="37"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="37"/>
         <source>Written to the drives</source>
         <translation>已写入驱动器</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="37"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="37"/>
         <source>Preview only: nothing written</source>
         <translation>仅预览：未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="40"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="40"/>
         <source>Machine number %1 from %2: %3</source>
         <translation>来自 %2 的站号 %1：%3</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="51"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="51"/>
         <source>  %1: %2</source>
         <translation>  %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="53"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="53"/>
         <source>  %1: file %2, drive %3: %4</source>
         <translation>  %1：文件 %2，驱动器 %3：%4</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="59"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="59"/>
         <source>  Note: %1</source>
         <translation>  注意：%1</translation>
     </message>
@@ -9792,37 +9828,37 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Restorer</name>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="48"/>
+        <location filename="../model/files/Restorer.cpp" line="48"/>
         <source>interrupted before anything was written</source>
         <translation>在写入任何内容之前已中断</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="63"/>
+        <location filename="../model/files/Restorer.cpp" line="63"/>
         <source>reading the drive failed, nothing written (%1)</source>
         <translation>读取驱动器失败，未写入任何内容（%1）</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="99"/>
+        <location filename="../model/files/Restorer.cpp" line="99"/>
         <source>interrupted after %1 of %2 writes; run the restore again to complete it</source>
         <translation>在 %2 次写入中的第 %1 次后中断；请再次执行恢复以完成</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="134"/>
+        <location filename="../model/files/Restorer.cpp" line="134"/>
         <source>%1 not confirmed (%2): the drive may or may not hold it; run the restore again, it reads the drive back first</source>
         <translation>%1 未确认（%2）：驱动器可能保存了该值，也可能没有；请再次执行恢复，它会先回读驱动器</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="168"/>
+        <location filename="../model/files/Restorer.cpp" line="168"/>
         <source>after storing, the drive holds %1</source>
         <translation>保存后，驱动器中为 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="173"/>
+        <location filename="../model/files/Restorer.cpp" line="173"/>
         <source>the settings could not be read back after storing</source>
         <translation>保存后无法回读设定</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="206"/>
+        <location filename="../model/files/Restorer.cpp" line="206"/>
         <source>communication settings changed (%1): they take effect when the drive is next powered on; connect with the new settings after that</source>
         <translation>通信设定已修改（%1）：驱动器下次上电时生效；之后请用新设定连接</translation>
     </message>
@@ -9830,12 +9866,12 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultDatabase</name>
     <message>
-        <location filename="../main/model/eol/ResultDatabase.cpp" line="45"/>
+        <location filename="../model/eol/ResultDatabase.cpp" line="45"/>
         <source>results database %1: %2</source>
         <translation>结果数据库 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultDatabase.cpp" line="49"/>
+        <location filename="../model/eol/ResultDatabase.cpp" line="49"/>
         <source>the Qt SQL driver %1 is not installed (Debian: %2)</source>
         <translation>未安装 Qt SQL 驱动 %1（Debian：%2）</translation>
     </message>
@@ -9843,7 +9879,7 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultQueries</name>
     <message>
-        <location filename="../main/model/eol/ResultQueries.cpp" line="118"/>
+        <location filename="../model/eol/ResultQueries.cpp" line="118"/>
         <source>no unit record %1</source>
         <translation>没有产品记录 %1</translation>
     </message>
@@ -9851,7 +9887,7 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultSchema</name>
     <message>
-        <location filename="../main/model/eol/ResultSchema.cpp" line="138"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="138"/>
         <source>the results database has schema version %1, newer than this program knows (%2): update OpenTOP on this station; nothing was written</source>
         <translation>结果数据库的架构版本为 %1，比本程序所知的（%2）更新：请更新本工位的 OpenTOP；未写入任何内容</translation>
     </message>
@@ -9859,32 +9895,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultStore</name>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="55"/>
+        <location filename="../model/eol/ResultStore.cpp" line="72"/>
         <source>interrupted: the station stopped before the unit was finished (killed, power lost or crashed); the unit was not proven</source>
         <translation>已中断：工位在产品测试完成前停止（被终止、断电或崩溃）；该产品未经验证</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="63"/>
+        <location filename="../model/eol/ResultStore.cpp" line="80"/>
         <source>a unit needs a serial number</source>
         <translation>产品需要序列号</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="141"/>
+        <location filename="../model/eol/ResultStore.cpp" line="158"/>
         <source>a unit is finished with pass, fail or aborted, not %1</source>
         <translation>产品的结束判定只能是 pass、fail 或 aborted，而不是 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="164"/>
+        <location filename="../model/eol/ResultStore.cpp" line="181"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>产品 %1（序列号 %2）从未在结果数据库中开始测试</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="166"/>
+        <location filename="../model/eol/ResultStore.cpp" line="183"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>产品 %1（序列号 %2）已记录为 %3；保留其记录</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="184"/>
+        <location filename="../model/eol/ResultStore.cpp" line="201"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>产品 %1（序列号 %2）在结果数据库中不处于进行中：从未开始，或已完成，或已标记为中断</translation>
     </message>
@@ -9892,32 +9928,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultUrl</name>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="43"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="43"/>
         <source>no database given: name a file or a postgresql:// URL</source>
         <translation>未指定数据库：请指定文件或 postgresql:// URL</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="51"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="51"/>
         <source>unknown database URL &quot;%1&quot;: use a file path, sqlite:PATH or postgresql://user@host/database</source>
         <translation>未知的数据库 URL &quot;%1&quot;：请使用文件路径、sqlite:PATH 或 postgresql://user@host/database</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="55"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="55"/>
         <source>sqlite: needs a file path</source>
         <translation>sqlite: 需要文件路径</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="84"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="84"/>
         <source>the host in &quot;%1&quot; has no closing ]</source>
         <translation>&quot;%1&quot; 中的主机缺少右括号 ]</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="112"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="112"/>
         <source>unknown connection option &quot;%1&quot; in the database URL; known: %2</source>
         <translation>数据库 URL 中有未知的连接选项 &quot;%1&quot;；已知：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="129"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="129"/>
         <source>the port &quot;%1&quot; in the database URL is not a number from 1 to 65535</source>
         <translation>数据库 URL 中的端口 &quot;%1&quot; 不是 1 到 65535 的数字</translation>
     </message>
@@ -9925,224 +9961,224 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="60"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
         <source>End-of-line results</source>
         <translation>下线检测结果</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Started</source>
         <translation>开始时间</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Serial</source>
         <translation>序列号</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Station</source>
         <translation>工位</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Time (s)</source>
         <translation>时间 (s)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>First failure</source>
         <translation>首个不合格项</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="82"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="82"/>
         <source>Export CSV…</source>
         <translation>导出 CSV…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="83"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="83"/>
         <source>Certificate PDF…</source>
         <translation>检验证书 PDF…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="118"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="118"/>
         <source>SQLite file or postgresql://user@host/database</source>
         <translation>SQLite 文件或 postgresql://user@host/database</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="119"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="119"/>
         <source>Open</source>
         <translation>打开</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="120"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="120"/>
         <source>File…</source>
         <translation>文件…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="127"/>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="129"/>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="131"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="127"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="129"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="131"/>
         <source>any</source>
         <translation>任意</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="133"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="133"/>
         <source>Today</source>
         <translation>今天</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="134"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
         <source>Last 24 hours</source>
         <translation>最近 24 小时</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="135"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="135"/>
         <source>Last 7 days</source>
         <translation>最近 7 天</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="136"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
         <source>Last 30 days</source>
         <translation>最近 30 天</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="137"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
         <source>All</source>
         <translation>全部</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="140"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
         <source>Any</source>
         <translation>任意</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="144"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="144"/>
         <source>Search</source>
         <translation>搜索</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="148"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="148"/>
         <source>Serial:</source>
         <translation>序列号：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="149"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="149"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="150"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="150"/>
         <source>Station:</source>
         <translation>工位：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="151"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
         <source>Period:</source>
         <translation>时间段：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="152"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
         <source>Verdict:</source>
         <translation>判定：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="160"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="160"/>
         <source>Database:</source>
         <translation>数据库：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="192"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="192"/>
         <source>There is no results database at %1 yet: a station makes it when it records its first unit.</source>
         <translation>%1 处尚无结果数据库：工位记录第一台产品时会创建它。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="203"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="203"/>
         <source>Results database %1</source>
         <translation>结果数据库 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="249"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="249"/>
         <source>%1 rev. %2</source>
         <translation>%1 版本 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="253"/>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="279"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="253"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="279"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="276"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="276"/>
         <source>%n unit(s), %1 passed · first-pass yield %2 (%3 of %4 serials)</source>
         <translation>
             <numerusform>%n 台产品，%1 台合格 · 直通率 %2（%4 个序列号中的 %3 个）</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="279"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="279"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="288"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="288"/>
         <source>no unit is selected</source>
         <translation>未选择产品</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="320"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
         <source>Open results database</source>
         <translation>打开结果数据库</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="321"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="321"/>
         <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
         <translation>SQLite 数据库 (*.db *.sqlite);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="332"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="332"/>
         <source>Export units as CSV</source>
         <translation>将产品导出为 CSV</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="332"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="332"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="337"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="337"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>已将 %n 台产品写入 %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="348"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="348"/>
         <source>Save certificate</source>
         <translation>保存检验证书</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="349"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="349"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF 文件 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="354"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="354"/>
         <source>Certificate written to %1</source>
         <translation>检验证书已写入 %1</translation>
     </message>
@@ -10150,7 +10186,7 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RoleEvaluator</name>
     <message>
-        <location filename="../main/model/profile/RoleEvaluator.cpp" line="102"/>
+        <location filename="../model/profile/RoleEvaluator.cpp" line="102"/>
         <source>%1 = %2 (%3, function %4)</source>
         <translation>%1 = %2（%3，功能 %4）</translation>
     </message>
@@ -10158,62 +10194,62 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RunCommand</name>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="48"/>
+        <location filename="../cli/RunCommand.cpp" line="48"/>
         <source>Test run: start, stop, direction, running data, hold/free, speed (needs --yes)</source>
         <translation>试运行：启动、停止、方向、运行数据、保持/释放、速度（需要 --yes）</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="53"/>
+        <location filename="../cli/RunCommand.cpp" line="53"/>
         <source>Send the command (it moves or stops a motor).</source>
         <translation>发送命令（会使电机运动或停止）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="63"/>
+        <location filename="../cli/RunCommand.cpp" line="63"/>
         <source>error: usage: %1 (one machine number; a negative speed after --)</source>
         <translation>错误：用法：%1（一个站号；负速度放在 -- 之后）</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="71"/>
-        <location filename="../main/cli/RunCommand.cpp" line="76"/>
-        <location filename="../main/cli/RunCommand.cpp" line="81"/>
-        <location filename="../main/cli/RunCommand.cpp" line="126"/>
+        <location filename="../cli/RunCommand.cpp" line="71"/>
+        <location filename="../cli/RunCommand.cpp" line="76"/>
+        <location filename="../cli/RunCommand.cpp" line="81"/>
+        <location filename="../cli/RunCommand.cpp" line="126"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="86"/>
+        <location filename="../cli/RunCommand.cpp" line="86"/>
         <source>Would send to machine number %1: %2
 This moves or stops a motor: add --yes to send it.</source>
         <translation>将向站号 %1 发送：%2
 这会使电机运动或停止：加上 --yes 才会发送。</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="118"/>
+        <location filename="../cli/RunCommand.cpp" line="118"/>
         <source>Sent to machine number %1: %2</source>
         <translation>已发送到站号 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="120"/>
+        <location filename="../cli/RunCommand.cpp" line="120"/>
         <source>Sent to machine number %1, executed also by %2 (communication group): %3</source>
         <translation>已发送到站号 %1，%2 也会执行（通信组）：%3</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="156"/>
+        <location filename="../cli/RunCommand.cpp" line="156"/>
         <source>(not read: %1)</source>
         <translation>（未读取：%1）</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="165"/>
+        <location filename="../cli/RunCommand.cpp" line="165"/>
         <source>State of machine number %1:</source>
         <translation>站号 %1 的状态：</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="176"/>
+        <location filename="../cli/RunCommand.cpp" line="176"/>
         <source>State of machine number %1 (communication group of %2): not read: %3</source>
         <translation>站号 %1 的状态（%2 的通信组）：未读取：%3</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="184"/>
+        <location filename="../cli/RunCommand.cpp" line="184"/>
         <source>State of machine number %1 (communication group of %2):</source>
         <translation>站号 %1 的状态（%2 的通信组）：</translation>
     </message>
@@ -10221,57 +10257,57 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunControl</name>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="59"/>
+        <location filename="../model/run/RunControl.cpp" line="59"/>
         <source>%1 needs one value, e.g. &quot;%1 %2&quot;</source>
         <translation>%1 需要一个值，例如 &quot;%1 %2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="62"/>
+        <location filename="../model/run/RunControl.cpp" line="62"/>
         <source>%1 takes no value</source>
         <translation>%1 不接受值</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="70"/>
+        <location filename="../model/run/RunControl.cpp" line="70"/>
         <source>select needs a running data number, e.g. &quot;select 2&quot;; got &quot;%1&quot;</source>
         <translation>select 需要运行数据编号，例如 &quot;select 2&quot;；实际为 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="80"/>
+        <location filename="../model/run/RunControl.cpp" line="80"/>
         <source>unknown run command &quot;%1&quot;; use start, stop, cw, ccw, select N, hold, free, coast or speed VALUE</source>
         <translation>未知运行命令 &quot;%1&quot;；请使用 start、stop、cw、ccw、select N、hold、free、coast 或 speed VALUE</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="127"/>
+        <location filename="../model/run/RunControl.cpp" line="127"/>
         <source>%1 drives have no &quot;%2&quot; command; they take: %3</source>
         <translation>%1 驱动器没有 &quot;%2&quot; 命令；可用命令：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="148"/>
+        <location filename="../model/run/RunControl.cpp" line="148"/>
         <source>%1 has no selection codes</source>
         <translation>%1 没有选择代码</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="149"/>
+        <location filename="../model/run/RunControl.cpp" line="149"/>
         <source>select %1: choose %2–%3 (%4 … %5)</source>
         <translation>select %1：请选择 %2–%3（%4 … %5）</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="186"/>
+        <location filename="../model/run/RunControl.cpp" line="186"/>
         <source>cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>无法读取 %1 以确认驱动器是否接受运动命令：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="206"/>
+        <location filename="../model/run/RunControl.cpp" line="206"/>
         <source>machine number %1 is in &quot;%2&quot; (%3); nothing was sent</source>
         <translation>站号 %1 处于“%2”（%3）；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="210"/>
+        <location filename="../model/run/RunControl.cpp" line="210"/>
         <source>In &quot;%1&quot; the drive takes run, stop, direction and speed selection from its input terminals and refuses motion commands over the bus. To test-run it from here, switch it to &quot;%2&quot;: opentop-cli set %3 %4=%5 (and back to &quot;%1&quot;, =%6, when the machine&apos;s own controls should run it again).</source>
         <translation>在“%1”下，驱动器通过输入端子接收运行、停止、方向和速度选择，并拒绝来自总线的运动命令。要在此处试运行，请将其切换为“%2”：opentop-cli set %3 %4=%5（当需要由设备自身的操作元件控制时，再改回“%1”，=%6）。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="263"/>
+        <location filename="../model/run/RunControl.cpp" line="263"/>
         <source>An alarm is active: the drive refuses to run until it is cleared. See opentop-cli alarms %1, then alarms %1 --reset --yes.</source>
         <translation>有报警发生：报警清除前驱动器拒绝运行。请查看 opentop-cli alarms %1，然后执行 alarms %1 --reset --yes。</translation>
     </message>
@@ -10279,68 +10315,68 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunLiveState</name>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="24"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="24"/>
         <source>The drive now</source>
         <translation>驱动器当前状态</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="47"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="47"/>
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="49"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="49"/>
         <source>Alarm</source>
         <translation>报警</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="86"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="86"/>
         <source>%1:</source>
         <translation>%1：</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="123"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="123"/>
         <source>%1 (%2 %3)</source>
         <translation>%1（%2 %3）</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="125"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="125"/>
         <source>not reported</source>
         <translation>未报告</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="128"/>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="138"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="128"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="138"/>
         <source>not read</source>
         <translation>未读取</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="130"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="130"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="133"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="133"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="135"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="135"/>
         <source>active</source>
         <translation>发生中</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="154"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="154"/>
         <source>waiting for the first answer…</source>
         <translation>正在等待首次应答…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="154"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="154"/>
         <source>not watched</source>
         <translation>未监视</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="166"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="166"/>
         <source>Not live: %1</source>
         <translation>非实时：%1</translation>
     </message>
@@ -10348,12 +10384,12 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunningData</name>
     <message>
-        <location filename="../main/model/run/RunningData.cpp" line="56"/>
+        <location filename="../model/run/RunningData.cpp" line="56"/>
         <source>SPno%1 slows down from %2 r/min in %3 s: the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>SPno%1 在 %3 s 内从 %2 r/min 减速：手册要求从高速（约 %5 r/min 及以上）减速时，减速时间应大于 %4 s。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunningData.cpp" line="124"/>
+        <location filename="../model/run/RunningData.cpp" line="124"/>
         <source>Short deceleration from high speed on %1 (%2 r/min in %3 s): the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>%1 从高速减速过快（%3 s 内从 %2 r/min 减速）：手册要求从高速（约 %5 r/min 及以上）减速时，减速时间应大于 %4 s。</translation>
     </message>
@@ -10361,153 +10397,153 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunningDataPage</name>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="39"/>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="39"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
         <source>Running data</source>
         <translation>运行数据</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
         <source>Speed (r/min)</source>
         <translation>速度 (r/min)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
         <source>Acceleration (s)</source>
         <translation>加速时间 (s)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="55"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
         <source>Deceleration (s)</source>
         <translation>减速时间 (s)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="55"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
         <source>Direction</source>
         <translation>方向</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="68"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="68"/>
         <source>SPno%1</source>
         <translation>SPno%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="71"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="71"/>
         <source>Selected by the inputs M0 = %1, M1 = %2, M2 = %3 or by the running data selection command</source>
         <translation>由输入 M0 = %1、M1 = %2、M2 = %3 或运行数据选择命令选择</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="89"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="89"/>
         <source>SS trimmer</source>
         <translation>SS 调节器</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="90"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="90"/>
         <source>SPno1 has no acceleration register: the SS trimmer on the drive sets it (0.5–30 s); it is not stored in the drive</source>
         <translation>SPno1 没有加速时间寄存器：由驱动器上的 SS 调节器设定（0.5–30 s）；不保存在驱动器中</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="93"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="93"/>
         <source>SD trimmer</source>
         <translation>SD 调节器</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="94"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="94"/>
         <source>SPno1 has no deceleration register: the SD trimmer on the drive sets it (0.5 s or 2–30 s); it is not stored in the drive</source>
         <translation>SPno1 没有减速时间寄存器：由驱动器上的 SD 调节器设定（0.5 s 或 2–30 s）；不保存在驱动器中</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="98"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="98"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="99"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="99"/>
         <source>This drive has no register for this value</source>
         <translation>该驱动器没有此值的寄存器</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="106"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="106"/>
         <source>Initialize</source>
         <translation>初始化</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="108"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="108"/>
         <source>Reset SPno%1 on the drive to its factory defaults</source>
         <translation>将驱动器上的 SPno%1 恢复为出厂默认值</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="109"/>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="274"/>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="280"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="109"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="274"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="280"/>
         <source>Initialize SPno%1</source>
         <translation>初始化 SPno%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="130"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="130"/>
         <source>SPno1 runs at the speed of the external speed-setting VR (CN3) with the SS/SD trimmer times; it is not stored in the drive</source>
         <translation>SPno1 按外部调速电位器 VR（CN3）的速度运行，使用 SS/SD 调节器的时间；不保存在驱动器中</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="214"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="214"/>
         <source>Allowed speed on this %1: %2 (0 stops the motor)</source>
         <translation>该 %1 允许的速度：%2（0 使电机停止）</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="224"/>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="240"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="224"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="240"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="227"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="227"/>
         <source>Allowed speed: %1</source>
         <translation>允许的速度：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="228"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="228"/>
         <source>The drive&apos;s variant is not known, so a speed must suit every variant (0 stops the motor): %1</source>
         <translation>驱动器机型未知，因此速度必须适用于所有机型（0 使电机停止）：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="240"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="240"/>
         <source>its factory default</source>
         <translation>其出厂默认值</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="262"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="262"/>
         <source>The SPno1 speed and times come from the external VR and the SS/SD trimmers; they do not change.</source>
         <translation>SPno1 的速度和时间来自外部 VR 和 SS/SD 调节器；不会改变。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="269"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="269"/>
         <source>Your unwritten edits in this row are discarded.</source>
         <translation>该行中未写入的修改将被放弃。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="275"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="275"/>
         <source>Reset running data SPno%1 of drive %2 to these factory defaults?</source>
         <translation>将驱动器 %2 的运行数据 SPno%1 恢复为以下出厂默认值？</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="286"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="286"/>
         <source>Initializing SPno%1…</source>
         <translation>正在初始化 SPno%1…</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="301"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="301"/>
         <source>SPno%1 was not initialized: %2</source>
         <translation>SPno%1 未初始化：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="317"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="317"/>
         <source>SPno%1 initialized; %n value(s) could not be read back</source>
         <translation>
             <numerusform>SPno%1 已初始化；%n 个值无法回读</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="319"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="319"/>
         <source>SPno%1 initialized to its factory defaults</source>
         <translation>SPno%1 已恢复为出厂默认值</translation>
     </message>
@@ -10515,83 +10551,83 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="110"/>
+        <location filename="../cli/ScanCommand.cpp" line="110"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>查找并识别总线上的驱动器（站号 1–247）</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="116"/>
+        <location filename="../cli/ScanCommand.cpp" line="116"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>询问的起始站号，1–247（默认 1）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="116"/>
-        <location filename="../main/cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="116"/>
+        <location filename="../cli/ScanCommand.cpp" line="117"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="117"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>询问的结束站号，1–247（默认 247）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="119"/>
+        <location filename="../cli/ScanCommand.cpp" line="119"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>每个站号的等待时间（ms），10–5000（默认：根据波特率得出；适配器或网关较慢时请加大）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="121"/>
+        <location filename="../cli/ScanCommand.cpp" line="121"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="134"/>
+        <location filename="../cli/ScanCommand.cpp" line="134"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>错误：--%1 必须是 %2–%3 的数字，而不是 &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="146"/>
+        <location filename="../cli/ScanCommand.cpp" line="146"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>错误：scan 不接受参数；请使用 --from N --to N</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="155"/>
+        <location filename="../cli/ScanCommand.cpp" line="155"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>错误：--from %1 大于 --to %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="173"/>
+        <location filename="../cli/ScanCommand.cpp" line="173"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>正在扫描 %3 上的站号 %1–%2，每个 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="209"/>
+        <location filename="../cli/ScanCommand.cpp" line="209"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>在扫描任何站号之前已中断。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="211"/>
+        <location filename="../cli/ScanCommand.cpp" line="211"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>已中断：已扫描站号 %1–%2（%4 个中的 %3 个）；%5–%6 未询问。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="225"/>
+        <location filename="../cli/ScanCommand.cpp" line="225"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>错误：扫描在站号 %1 处停止：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="235"/>
+        <location filename="../cli/ScanCommand.cpp" line="235"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="237"/>
+        <location filename="../cli/ScanCommand.cpp" line="237"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>注意：%1 台驱动器在 %2 ms 等待时间之后才应答，已重新询问；如果扫描漏掉驱动器，请加大 --wait。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="243"/>
+        <location filename="../cli/ScanCommand.cpp" line="243"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -10602,77 +10638,77 @@ This moves or stops a motor: add --yes to send it.</source>
   - 终端电阻（总线两端各 120 Ω），以及驱动器是否已通电。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="280"/>
+        <location filename="../cli/ScanCommand.cpp" line="280"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 机型未知</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="281"/>
+        <location filename="../cli/ScanCommand.cpp" line="281"/>
         <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
         <translation>驱动器未报告其机型；请用 --variant %1=VARIANT 指定（%2）</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="297"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="297"/>
         <source>hex</source>
         <translation>十六进制</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="297"/>
         <source>switches</source>
         <translation>开关</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="297"/>
         <source>family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="298"/>
         <source>model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="298"/>
         <source>firmware</source>
         <translation>固件</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="298"/>
         <source>state</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>comm. group</source>
         <translation>通信组</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="372"/>
+        <location filename="../cli/ScanCommand.cpp" line="372"/>
         <source>1 drive found in %1 s</source>
         <translation>在 %1 s 内找到 1 台驱动器</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="373"/>
+        <location filename="../cli/ScanCommand.cpp" line="373"/>
         <source>%1 drives found in %2 s</source>
         <translation>在 %2 s 内找到 %1 台驱动器</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="375"/>
+        <location filename="../cli/ScanCommand.cpp" line="375"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>；1 个可能重复的站号：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="377"/>
+        <location filename="../cli/ScanCommand.cpp" line="377"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>；%1 个可能重复的站号：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="388"/>
+        <location filename="../cli/ScanCommand.cpp" line="388"/>
         <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>警告：站号 %1（%2，%3）的应答报文损坏：可能有两台驱动器设为同一站号。请检查该总线上各驱动器的 SW1/SW2 开关，为每台驱动器设定不同的站号，断电后重新上电，再次扫描。</translation>
     </message>
@@ -10680,180 +10716,180 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="39"/>
+        <location filename="../cli/SetCommand.cpp" line="39"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>按名称写入参数，经过验证、回读和校验</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="46"/>
+        <location filename="../cli/SetCommand.cpp" line="46"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store.</source>
         <translation>确认会使电机运动、复位、清除、初始化或保存的命令。</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="48"/>
+        <location filename="../cli/SetCommand.cpp" line="48"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>按地址写入寄存器：ADDR=VALUE（可重复；配合 --fc 16 时可写 VALUE,VALUE...）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="49"/>
+        <location filename="../cli/SetCommand.cpp" line="49"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="50"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 写入的功能码：6（默认）或 16。</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="50"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="59"/>
+        <location filename="../cli/SetCommand.cpp" line="59"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>错误：用法：set ID NAME=VALUE...（例如 set 1 spno2.accel=2.5），或 set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="71"/>
+        <location filename="../cli/SetCommand.cpp" line="71"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>错误：&quot;%1&quot; 不是 NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="78"/>
+        <location filename="../cli/SetCommand.cpp" line="78"/>
         <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
         <translation>错误：%1 指定了两次（%2=%3 和 %4）；每项设定只能指定一次；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="89"/>
-        <location filename="../main/cli/SetCommand.cpp" line="186"/>
+        <location filename="../cli/SetCommand.cpp" line="89"/>
+        <location filename="../cli/SetCommand.cpp" line="186"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="99"/>
+        <location filename="../cli/SetCommand.cpp" line="99"/>
         <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>%1 没有参数 &quot;%2&quot;；请参阅 &quot;opentop-cli params --family %1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="102"/>
+        <location filename="../cli/SetCommand.cpp" line="102"/>
         <source>%1 is read-only</source>
         <translation>%1 为只读</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="104"/>
+        <location filename="../cli/SetCommand.cpp" line="104"/>
         <source>%1 is a %2 command; add --yes to send it</source>
         <translation>%1 是%2命令；加上 --yes 才会发送</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="136"/>
+        <location filename="../cli/SetCommand.cpp" line="136"/>
         <source>error: cannot read %1 to check the values; nothing written</source>
         <translation>错误：无法读取 %1 来检查这些值；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="180"/>
+        <location filename="../cli/SetCommand.cpp" line="180"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="187"/>
+        <location filename="../cli/SetCommand.cpp" line="187"/>
         <source>nothing was written</source>
         <translation>未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="210"/>
+        <location filename="../cli/SetCommand.cpp" line="210"/>
         <source>not written (interrupted)</source>
         <translation>未写入（已中断）</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="245"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="245"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="245"/>
-        <location filename="../main/cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="352"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="251"/>
-        <location filename="../main/cli/SetCommand.cpp" line="387"/>
+        <location filename="../cli/SetCommand.cpp" line="251"/>
+        <location filename="../cli/SetCommand.cpp" line="387"/>
         <source>written, verified</source>
         <translation>已写入，已校验</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="252"/>
+        <location filename="../cli/SetCommand.cpp" line="252"/>
         <source>written (command, not readable)</source>
         <translation>已写入（命令，不可读）</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="254"/>
+        <location filename="../cli/SetCommand.cpp" line="254"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>未确认（%1）：驱动器可能保存了该值，也可能没有；可用 &quot;get&quot; 回读</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="272"/>
+        <location filename="../cli/SetCommand.cpp" line="272"/>
         <source>error: --fc for raw writes is 6 or 16</source>
         <translation>错误：raw 写入的 --fc 为 6 或 16</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="298"/>
+        <location filename="../cli/SetCommand.cpp" line="298"/>
         <source>error: &quot;%1&quot; is not ADDR=VALUE (0x.. or decimal, 0–65535; several values, comma separated, only with --fc 16)</source>
         <translation>错误：&quot;%1&quot; 不是 ADDR=VALUE（0x.. 或十进制，0–65535；多个值以逗号分隔，仅限 --fc 16）</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="315"/>
+        <location filename="../cli/SetCommand.cpp" line="315"/>
         <source>error: 0x%1 is not a register the profile knows; add --yes to write it anyway; nothing was written</source>
         <translation>错误：0x%1 不是设备描述中已知的寄存器；如仍要写入请加上 --yes；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="325"/>
+        <location filename="../cli/SetCommand.cpp" line="325"/>
         <source>error: %1; nothing was written</source>
         <translation>错误：%1；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="326"/>
+        <location filename="../cli/SetCommand.cpp" line="326"/>
         <source>%1 is a %2 command; add --yes</source>
         <translation>%1 是%2命令；请加上 --yes</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="333"/>
+        <location filename="../cli/SetCommand.cpp" line="333"/>
         <source>error: the write covers part of %1; add --yes to write it anyway; nothing was written</source>
         <translation>错误：此次写入只覆盖 %1 的一部分；如仍要写入请加上 --yes；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="352"/>
         <source>Address</source>
         <translation>地址</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="352"/>
         <source>Written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="385"/>
+        <location filename="../cli/SetCommand.cpp" line="385"/>
         <source>written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="389"/>
+        <location filename="../cli/SetCommand.cpp" line="389"/>
         <source>written, but reads back differently</source>
         <translation>已写入，但回读值不同</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="392"/>
+        <location filename="../cli/SetCommand.cpp" line="392"/>
         <source>written (not readable back: %1)</source>
         <translation>已写入（无法回读：%1）</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="400"/>
+        <location filename="../cli/SetCommand.cpp" line="400"/>
         <source>Also written to %1 (communication group); not read back: no parameter of the profile</source>
         <translation>同时写入了 %1（通信组）；未回读：不是设备描述中的参数</translation>
     </message>
@@ -10861,17 +10897,17 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ShiftPlan</name>
     <message>
-        <location filename="../main/model/eol/ShiftPlan.cpp" line="30"/>
+        <location filename="../model/eol/ShiftPlan.cpp" line="30"/>
         <source>&quot;%1&quot; is not a time of day such as 06:00</source>
         <translation>&quot;%1&quot; 不是 06:00 这样的时刻</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ShiftPlan.cpp" line="35"/>
+        <location filename="../model/eol/ShiftPlan.cpp" line="35"/>
         <source>shift starts must be in order from the day&apos;s first: %1</source>
         <translation>班次开始时间必须从当天第一个班次起按顺序排列：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ShiftPlan.cpp" line="42"/>
+        <location filename="../model/eol/ShiftPlan.cpp" line="42"/>
         <source>no shift start given; e.g. 06:00,14:00,22:00</source>
         <translation>未指定班次开始时间；例如 06:00,14:00,22:00</translation>
     </message>
@@ -10879,47 +10915,47 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ShortcutsDialog</name>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="60"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="60"/>
         <source>Main window</source>
         <translation>主窗口</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="62"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="62"/>
         <source>Everywhere, dialogs included</source>
         <translation>所有位置，包括对话框</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="63"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="63"/>
         <source>STOP ALL (stop every drive on the bus)</source>
         <translation>全部停止（停止总线上的所有驱动器）</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="72"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="72"/>
         <source>Keyboard shortcuts</source>
         <translation>键盘快捷键</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
         <source>Where</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
         <source>Command</source>
         <translation>命令</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
         <source>Keys</source>
         <translation>按键</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="86"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="86"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="95"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="95"/>
         <source>STOP ALL&apos;s keys work in every window of the program, also while a dialog is open.</source>
         <translation>“全部停止”的快捷键在程序的任何窗口中都有效，打开对话框时也有效。</translation>
     </message>
@@ -10927,32 +10963,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimApp</name>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="108"/>
+        <location filename="../sim/SimApp.cpp" line="108"/>
         <source>opentop-sim: warning: %1@%2 cannot use %3 %4 and will not answer</source>
         <translation>opentop-sim：警告：%1@%2 无法使用 %3 %4，将不会应答</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="118"/>
+        <location filename="../sim/SimApp.cpp" line="118"/>
         <source>opentop-sim: --defect %1:%2: no drive with machine number %1 on the bus %3</source>
         <translation>opentop-sim：--defect %1:%2：总线 %3 上没有站号为 %1 的驱动器</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="125"/>
+        <location filename="../sim/SimApp.cpp" line="125"/>
         <source>opentop-sim: --defect %1 (%2@%1): %3</source>
         <translation>opentop-sim：--defect %1（%2@%1）：%3</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="162"/>
+        <location filename="../sim/SimApp.cpp" line="162"/>
         <source>the port is unplugged already</source>
         <translation>端口已拔出</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="164"/>
+        <location filename="../sim/SimApp.cpp" line="164"/>
         <source>unplugged</source>
         <translation>已拔出</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="197"/>
+        <location filename="../sim/SimApp.cpp" line="197"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
@@ -10960,27 +10996,27 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimBackdoor</name>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="17"/>
+        <location filename="../sim/SimBackdoor.cpp" line="17"/>
         <source>usage: set ID ADDR VALUE [fc]</source>
         <translation>用法：set ID ADDR VALUE [fc]</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="18"/>
+        <location filename="../sim/SimBackdoor.cpp" line="18"/>
         <source>usage: get ID ADDR [fc]</source>
         <translation>用法：get ID ADDR [fc]</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="21"/>
+        <location filename="../sim/SimBackdoor.cpp" line="21"/>
         <source>address must be 0..0xFFFF, got &apos;%1&apos;</source>
         <translation>address 必须为 0..0xFFFF，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="27"/>
+        <location filename="../sim/SimBackdoor.cpp" line="27"/>
         <source>function must be 3, 4 or 6 (write-only), got &apos;%1&apos;</source>
         <translation>function 必须为 3、4 或 6（只写），实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="40"/>
+        <location filename="../sim/SimBackdoor.cpp" line="40"/>
         <source>value must be -32768..65535, got &apos;%1&apos;</source>
         <translation>value 必须为 -32768..65535，实际为 &apos;%1&apos;</translation>
     </message>
@@ -10988,27 +11024,27 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimBackend</name>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="24"/>
+        <location filename="../sim/SimBackend.cpp" line="24"/>
         <source>no simulated bus</source>
         <translation>无模拟总线</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="47"/>
+        <location filename="../sim/SimBackend.cpp" line="47"/>
         <source>the simulated bus is not open</source>
         <translation>模拟总线未打开</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="53"/>
+        <location filename="../sim/SimBackend.cpp" line="53"/>
         <source>the simulated adapter was unplugged</source>
         <translation>模拟适配器已拔出</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="80"/>
+        <location filename="../sim/SimBackend.cpp" line="80"/>
         <source>interrupted while waiting</source>
         <translation>等待时被中断</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="87"/>
+        <location filename="../sim/SimBackend.cpp" line="87"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 内无应答</translation>
     </message>
@@ -11016,27 +11052,27 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimBus</name>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="38"/>
+        <location filename="../sim/SimBus.cpp" line="38"/>
         <source>unknown device type &apos;%1&apos;; known: %2</source>
         <translation>未知设备类型 &apos;%1&apos;；已知：%2</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="65"/>
+        <location filename="../sim/SimBus.cpp" line="65"/>
         <source>%1@%2{%3}: %4</source>
         <translation>%1@%2{%3}：%4</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="81"/>
+        <location filename="../sim/SimBus.cpp" line="81"/>
         <source>machine number %1 is outside 1..247</source>
         <translation>站号 %1 超出 1..247</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="82"/>
+        <location filename="../sim/SimBus.cpp" line="82"/>
         <source>machine number %1 is used twice</source>
         <translation>站号 %1 重复使用</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="231"/>
+        <location filename="../sim/SimBus.cpp" line="231"/>
         <source>no device with machine number %1 (bus: %2)</source>
         <translation>没有站号为 %1 的设备（总线：%2）</translation>
     </message>
@@ -11044,7 +11080,7 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimConsole</name>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="31"/>
+        <location filename="../sim/SimConsole.cpp" line="31"/>
         <source>commands:
   help                      this text
   list                      the devices and their state
@@ -11085,37 +11121,37 @@ This moves or stops a motor: add --yes to send it.</source>
   quit                      停止模拟器</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="63"/>
+        <location filename="../sim/SimConsole.cpp" line="63"/>
         <source>bye</source>
         <translation>再见</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="68"/>
+        <location filename="../sim/SimConsole.cpp" line="68"/>
         <source>%1 needs the pty server (--pty)</source>
         <translation>%1 需要 pty 服务器（--pty）</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="79"/>
+        <location filename="../sim/SimConsole.cpp" line="79"/>
         <source>, defects: %1</source>
         <translation>，缺陷：%1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="92"/>
+        <location filename="../sim/SimConsole.cpp" line="92"/>
         <source>no drive has defects</source>
         <translation>没有驱动器有缺陷</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="98"/>
+        <location filename="../sim/SimConsole.cpp" line="98"/>
         <source>unknown command &apos;%1&apos;; type help for the list</source>
         <translation>未知命令 &apos;%1&apos;；输入 help 查看列表</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="102"/>
+        <location filename="../sim/SimConsole.cpp" line="102"/>
         <source>usage: %1 ID ...; ID is a machine number on the bus (%2)</source>
         <translation>用法：%1 ID ...；ID 为总线上的站号（%2）</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="108"/>
+        <location filename="../sim/SimConsole.cpp" line="108"/>
         <source>&apos;%1&apos; is not a machine number; the bus has %2</source>
         <translation>&apos;%1&apos; 不是站号；总线上有 %2</translation>
     </message>
@@ -11123,77 +11159,77 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimDefectSpec</name>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="45"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="45"/>
         <source>firmware=MAJOR.MINOR (e.g. firmware=1.4), max_speed=N (e.g. max_speed=800), stall, load=+N, load=-N or load=xF (e.g. load=+40, load=x1.5), alarm=CODE@TIME (e.g. alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (a parameter name or register address, e.g. nostick=spno2.speed, nostore=0x0081), clear</source>
         <translation>firmware=MAJOR.MINOR（例如 firmware=1.4），max_speed=N（例如 max_speed=800），stall，load=+N、load=-N 或 load=xF（例如 load=+40、load=x1.5），alarm=CODE@TIME（例如 alarm=0x07@1500ms、alarm=overload@2s；DC：alarm=stall@1s），nostick=PARAM，nostore=PARAM（参数名或寄存器地址，例如 nostick=spno2.speed、nostore=0x0081），clear</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="119"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="119"/>
         <source>unknown defect &quot;%1&quot;; allowed: %2</source>
         <translation>未知缺陷 &quot;%1&quot;；允许：%2</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="122"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="122"/>
         <source>&quot;%1&quot; needs a value: %2=...</source>
         <translation>&quot;%1&quot; 需要一个值：%2=...</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="124"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="124"/>
         <source>&quot;%1&quot; takes no value; write %2</source>
         <translation>&quot;%1&quot; 不接受值；请写成 %2</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="137"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="137"/>
         <source>firmware=%1: write MAJOR.MINOR with each 0..255, e.g. firmware=1.4</source>
         <translation>firmware=%1：请写成 MAJOR.MINOR，各为 0..255，例如 firmware=1.4</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="144"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="144"/>
         <source>max_speed=%1: write a whole number 0..%2, e.g. max_speed=800</source>
         <translation>max_speed=%1：请写成 0..%2 的整数，例如 max_speed=800</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="154"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="154"/>
         <source>load=%1: a factor is x0.1..x10, e.g. load=x1.5</source>
         <translation>load=%1：倍数为 x0.1..x10，例如 load=x1.5</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="159"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="159"/>
         <source>load=%1: an offset is -200..+200, e.g. load=+40</source>
         <translation>load=%1：偏移量为 -200..+200，例如 load=+40</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="162"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="162"/>
         <source>load=%1: write load=+N, load=-N (an offset) or load=xF (a factor), e.g. load=+40 or load=x1.5</source>
         <translation>load=%1：请写成 load=+N、load=-N（偏移量）或 load=xF（倍数），例如 load=+40 或 load=x1.5</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="171"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="171"/>
         <source>alarm=%1: write alarm=CODE@TIME, e.g. alarm=0x07@1500ms or alarm=overload@2s</source>
         <translation>alarm=%1：请写成 alarm=CODE@TIME，例如 alarm=0x07@1500ms 或 alarm=overload@2s</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="176"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="176"/>
         <source>alarm=%1: the time after the start is 0..3600 s, written 1500ms, 1.5s or 1500 (ms)</source>
         <translation>alarm=%1：启动后的时间为 0..3600 s，写成 1500ms、1.5s 或 1500（ms）</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="183"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="183"/>
         <source>%1=%2: name a parameter (e.g. spno2.speed) or a register address (e.g. 0x1102)</source>
         <translation>%1=%2：请指定参数名（例如 spno2.speed）或寄存器地址（例如 0x1102）</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="199"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="199"/>
         <source>no defect given; allowed: %1</source>
         <translation>未指定缺陷；允许：%1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="205"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="205"/>
         <source>empty item in &quot;%1&quot;</source>
         <translation>&quot;%1&quot; 中有空项</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="223"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="223"/>
         <source>&quot;%1&quot;: write ID:DEFECT[,DEFECT...] with ID the machine number 1..247, e.g. 3:firmware=1.4 or 5:max_speed=800,load=+40</source>
         <translation>&quot;%1&quot;：请写成 ID:DEFECT[,DEFECT...]，ID 为站号 1..247，例如 3:firmware=1.4 或 5:max_speed=800,load=+40</translation>
     </message>
@@ -11201,22 +11237,22 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimDefects</name>
     <message>
-        <location filename="../main/sim/SimDefects.cpp" line="71"/>
+        <location filename="../sim/SimDefects.cpp" line="71"/>
         <source>a %1 reports no firmware version</source>
         <translation>%1 不报告固件版本</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefects.cpp" line="82"/>
+        <location filename="../sim/SimDefects.cpp" line="82"/>
         <source>alarm=%1: a %2 has no alarm codes; its protection is the stall stop: write alarm=stall@TIME</source>
         <translation>alarm=%1：%2 没有报警代码；其保护功能为堵转停止：请写成 alarm=stall@TIME</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefects.cpp" line="98"/>
+        <location filename="../sim/SimDefects.cpp" line="98"/>
         <source>alarm=%1: not an alarm of a %2; allowed: %3</source>
         <translation>alarm=%1：不是 %2 的报警；允许：%3</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefects.cpp" line="109"/>
+        <location filename="../sim/SimDefects.cpp" line="109"/>
         <source>%1=%2: no writable parameter of a %3 has this name or address; e.g. %4</source>
         <translation>%1=%2：%3 没有该名称或地址的可写参数；例如 %4</translation>
     </message>
@@ -11224,32 +11260,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimDevice</name>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="241"/>
+        <location filename="../sim/SimDevice.cpp" line="241"/>
         <source>missing command</source>
         <translation>缺少命令</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="250"/>
+        <location filename="../sim/SimDevice.cpp" line="250"/>
         <source>slave %1 power cycled</source>
         <translation>从站 %1 已重新上电</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="292"/>
+        <location filename="../sim/SimDevice.cpp" line="292"/>
         <source>usage: defect ID DEFECT[,DEFECT...] or defect ID clear; DEFECT: %1</source>
         <translation>用法：defect ID DEFECT[,DEFECT...] 或 defect ID clear；DEFECT：%1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="299"/>
+        <location filename="../sim/SimDevice.cpp" line="299"/>
         <source>slave %1 defects: %2</source>
         <translation>从站 %1 的缺陷：%2</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="301"/>
+        <location filename="../sim/SimDevice.cpp" line="301"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="306"/>
+        <location filename="../sim/SimDevice.cpp" line="306"/>
         <source>&apos;%1&apos; is not supported by a %2 device</source>
         <translation>%2 设备不支持 &apos;%1&apos;</translation>
     </message>
@@ -11257,7 +11293,7 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimOptions</name>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="14"/>
+        <location filename="../sim/SimOptions.cpp" line="14"/>
         <source>Usage: opentop-sim --devices SPEC [options]
 Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 
@@ -11282,105 +11318,82 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
                        nostore=PARAM         value lost at the next power cycle
                      e.g. --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
   --quiet            no frame trace on stderr
+  --lang CODE        language of messages: en, zh_TW, zh_CN, ko, ja
   --help             this text
   --version          the program&apos;s version
 
 Prints &quot;pty: PATH&quot; (and &quot;tcp: HOST:PORT&quot;), then &quot;ready&quot;. Reads console commands
 from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </source>
-        <translation>用法：opentop-sim --devices SPEC [选项]
-在伪终端上或作为 Modbus TCP 网关模拟 Modbus RTU 驱动器。
-
-  --devices SPEC     设备和站号，例如 dbu200@1,dbu400@150,dcpid@7
-  --pty [PATH]       在 pty 上提供服务（默认）；PATH：同时创建该符号链接
-  --tcp HOST:PORT    提供 Modbus TCP 服务（HOST 默认为 127.0.0.1，PORT 0：任意）
-  --baud N           用于线路时序和设备设定的线路速率（19200）
-  --parity N|E|O     线路校验位（N）
-  --wire-timing      按 --baud 下真实线路的时序延迟应答
-  --turnaround MS    使用 --wire-timing 时设备的转换时间（2）
-  --faults LIST      例如 drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
-  --seed N           故障注入的随机种子（1）
-  --defect ID:LIST   驱动器 ID 的缺陷（可重复），LIST 取值：
-                       firmware=MAJOR.MINOR  识别时报告该版本
-                       max_speed=N           电机在 N 处饱和（DBU r/min，
-                                             DC 换相次数/s），负载高
-                       stall                 电机不转，负载高
-                       load=+N|-N|xF         负载率（DC：电流 %）偏移或缩放
-                       alarm=CODE@TIME       运行 TIME 后报警，例如
-                                             0x07@1500ms、overload@2s（DC：stall@1s）
-                       nostick=PARAM         写入被应答，但旧值保持不变
-                       nostore=PARAM         下次重新上电时值丢失
-                     例如 --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
-  --quiet            不在 stderr 上输出报文跟踪
-  --help             本说明
-  --version          程序版本
-
-输出 &quot;pty: PATH&quot;（以及 &quot;tcp: HOST:PORT&quot;），然后输出 &quot;ready&quot;。从 stdin 读取控制台命令
-（输入 help）。收到 SIGINT、SIGTERM 或 quit 时停止。
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="79"/>
+        <location filename="../sim/SimOptions.cpp" line="81"/>
+        <source>--lang needs a language code such as ko</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../sim/SimOptions.cpp" line="84"/>
         <source>--devices needs a device list such as dbu200@1,dcpid@7</source>
         <translation>--devices 需要设备列表，例如 dbu200@1,dcpid@7</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="88"/>
+        <location filename="../sim/SimOptions.cpp" line="93"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:5020</source>
         <translation>--tcp 需要 HOST:PORT，例如 127.0.0.1:5020</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="94"/>
+        <location filename="../sim/SimOptions.cpp" line="99"/>
         <source>--tcp needs HOST:PORT with PORT 0..65535, got &apos;%1&apos;</source>
         <translation>--tcp 需要 HOST:PORT，PORT 为 0..65535，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="106"/>
+        <location filename="../sim/SimOptions.cpp" line="111"/>
         <source>--baud must be one of %1, got &apos;%2&apos;</source>
         <translation>--baud 必须是 %1 之一，实际为 &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="113"/>
+        <location filename="../sim/SimOptions.cpp" line="118"/>
         <source>--parity must be N, E or O, got &apos;%1&apos;</source>
         <translation>--parity 必须为 N、E 或 O，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="121"/>
+        <location filename="../sim/SimOptions.cpp" line="126"/>
         <source>--turnaround must be 0..1000 ms, got &apos;%1&apos;</source>
         <translation>--turnaround 必须为 0..1000 ms，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="125"/>
+        <location filename="../sim/SimOptions.cpp" line="130"/>
         <source>--faults needs a list such as drop=0.02,crc=0.01</source>
         <translation>--faults 需要列表，例如 drop=0.02,crc=0.01</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="129"/>
+        <location filename="../sim/SimOptions.cpp" line="134"/>
         <source>--faults: %1</source>
         <translation>--faults：%1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="135"/>
+        <location filename="../sim/SimOptions.cpp" line="140"/>
         <source>--seed must be a whole number 0..4294967295, got &apos;%1&apos;</source>
         <translation>--seed 必须是 0..4294967295 的整数，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="139"/>
+        <location filename="../sim/SimOptions.cpp" line="144"/>
         <source>--defect needs ID:DEFECT[,DEFECT...], e.g. 3:firmware=1.4; DEFECT: %1</source>
         <translation>--defect 需要 ID:DEFECT[,DEFECT...]，例如 3:firmware=1.4；DEFECT：%1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="146"/>
+        <location filename="../sim/SimOptions.cpp" line="151"/>
         <source>--defect: %1</source>
         <translation>--defect：%1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="152"/>
+        <location filename="../sim/SimOptions.cpp" line="157"/>
         <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --quiet, --help, --version</source>
         <translation>未知参数 &apos;%1&apos;；选项：--devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --quiet, --help, --version</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="159"/>
+        <location filename="../sim/SimOptions.cpp" line="164"/>
         <source>--devices SPEC is required, e.g. --devices dbu200@1,dcpid@7</source>
         <translation>必须指定 --devices SPEC，例如 --devices dbu200@1,dcpid@7</translation>
     </message>
@@ -11388,22 +11401,22 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::SpeedDisplay</name>
     <message>
-        <location filename="../main/model/profile/SpeedDisplay.cpp" line="90"/>
+        <location filename="../model/profile/SpeedDisplay.cpp" line="90"/>
         <source>speed display settings not known: %1</source>
         <translation>速度显示设定未知：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/SpeedDisplay.cpp" line="92"/>
+        <location filename="../model/profile/SpeedDisplay.cpp" line="92"/>
         <source>speed display unit code %1 is unknown (0–3)</source>
         <translation>速度显示单位代码 %1 未知（0–3）</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/SpeedDisplay.cpp" line="94"/>
+        <location filename="../model/profile/SpeedDisplay.cpp" line="94"/>
         <source>speed display ratios must be positive (reduction %1, increase %2)</source>
         <translation>速度显示比必须为正数（减速比 %1，增速比 %2）</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/SpeedDisplay.cpp" line="98"/>
+        <location filename="../model/profile/SpeedDisplay.cpp" line="98"/>
         <source>speed display decimals %1 outside 0–3</source>
         <translation>速度显示小数位数 %1 超出 0–3</translation>
     </message>
@@ -11411,182 +11424,182 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::SpeedUnitsPage</name>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="36"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="36"/>
         <source>Speed display</source>
         <translation>速度显示</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="52"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="52"/>
         <source>Unit shown</source>
         <translation>显示单位</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="53"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="53"/>
         <source>&amp;Unit:</source>
         <translation>单位(&amp;U)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="54"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="54"/>
         <source>Reduction r&amp;atio:</source>
         <translation>减速比(&amp;A)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="55"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="55"/>
         <source>&amp;Increasing ratio:</source>
         <translation>增速比(&amp;I)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="60"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="60"/>
         <source>Linear speed</source>
         <translation>线速度</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="61"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="61"/>
         <source>Roller diameter for &amp;yd/min:</source>
         <translation>yd/min 用滚筒直径(&amp;Y)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="62"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="62"/>
         <source>Roller diameter for &amp;m/min:</source>
         <translation>m/min 用滚筒直径(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="65"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="65"/>
         <source>Time for a distance</source>
         <translation>移动距离所需时间</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="66"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="66"/>
         <source>Roller &amp;diameter:</source>
         <translation>滚筒直径(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="67"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="67"/>
         <source>Dis&amp;tance:</source>
         <translation>距离(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="68"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="68"/>
         <source>Distance u&amp;nit:</source>
         <translation>距离单位(&amp;N)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="69"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="69"/>
         <source>Time &amp;format (min = m:ss):</source>
         <translation>时间格式（min = m:ss）(&amp;F)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="72"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="72"/>
         <source>Display</source>
         <translation>显示</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="73"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="73"/>
         <source>D&amp;ecimals (0–3):</source>
         <translation>小数位数（0–3）(&amp;E)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="74"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="74"/>
         <source>U&amp;pdate time:</source>
         <translation>更新时间(&amp;P)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="78"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="78"/>
         <source>Display corrections (motor r/min)</source>
         <translation>显示修正（电机 r/min）</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="79"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="79"/>
         <source>ro-&amp;0, 250 (300)–500 r/min:</source>
         <translation>ro-0，250 (300)–500 r/min(&amp;0)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="79"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="79"/>
         <source>ro-&amp;1, 501–1000 r/min:</source>
         <translation>ro-1，501–1000 r/min(&amp;1)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="80"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="80"/>
         <source>ro-&amp;2, 1001–2000 r/min:</source>
         <translation>ro-2，1001–2000 r/min(&amp;2)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="80"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="80"/>
         <source>ro-&amp;3, 2001–3000 r/min:</source>
         <translation>ro-3，2001–3000 r/min(&amp;3)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="85"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="85"/>
         <source>Preview of the drive&apos;s display</source>
         <translation>驱动器显示预览</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="88"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="88"/>
         <source> r/min</source>
         <translation> r/min</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="89"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="89"/>
         <source>Motor speed for the preview</source>
         <translation>用于预览的电机速度</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="90"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="90"/>
         <source>Motor &amp;speed:</source>
         <translation>电机速度(&amp;S)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="93"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="93"/>
         <source>Forward</source>
         <translation>正转</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="94"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="94"/>
         <source>Reverse (shown with “-”)</source>
         <translation>反转（显示为“-”）</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="95"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="95"/>
         <source>Dire&amp;ction:</source>
         <translation>方向(&amp;C)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="110"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="110"/>
         <source>Drive shows:</source>
         <translation>驱动器显示：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="214"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="214"/>
         <source>yd</source>
         <translation>yd</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="214"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="214"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="255"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="255"/>
         <source>Drive shows %1 %2</source>
         <translation>驱动器显示 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="259"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="259"/>
         <source>Section ro-%1: correction %2 r/min, shaft speed %3 r/min.</source>
         <translation>区段 ro-%1：修正 %2 r/min，轴转速 %3 r/min。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="264"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="264"/>
         <source>%1 has more digits than the drive&apos;s %2-digit display can show.</source>
         <translation>%1 的位数超过驱动器 %2 位显示屏可显示的位数。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="268"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="268"/>
         <source>Computed %1 %2; the %3-digit display drops the decimals that do not fit.</source>
         <translation>计算值 %1 %2；%3 位显示屏会舍去放不下的小数位。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="275"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="275"/>
         <source>Includes edits not yet written.</source>
         <translation>包含尚未写入的修改。</translation>
     </message>
@@ -11594,7 +11607,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::SpnoSelector</name>
     <message>
-        <location filename="../main/ui/run/SpnoSelector.cpp" line="62"/>
+        <location filename="../ui/run/SpnoSelector.cpp" line="62"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
@@ -11602,12 +11615,12 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StaleLook</name>
     <message>
-        <location filename="../main/ui/widgets/StaleLook.cpp" line="52"/>
+        <location filename="../ui/widgets/StaleLook.cpp" line="52"/>
         <source>not read yet</source>
         <translation>尚未读取</translation>
     </message>
     <message>
-        <location filename="../main/ui/widgets/StaleLook.cpp" line="55"/>
+        <location filename="../ui/widgets/StaleLook.cpp" line="55"/>
         <source>updated %1 s ago</source>
         <translation>%1 s 前更新</translation>
     </message>
@@ -11615,77 +11628,77 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StartPreview</name>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="107"/>
+        <location filename="../model/run/StartPreview.cpp" line="107"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="107"/>
+        <location filename="../model/run/StartPreview.cpp" line="107"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="149"/>
+        <location filename="../model/run/StartPreview.cpp" line="149"/>
         <source>communication group of %1</source>
         <translation>%1 的通信组</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="158"/>
+        <location filename="../model/run/StartPreview.cpp" line="158"/>
         <source>It runs with running data SPno%1</source>
         <translation>以运行数据 SPno%1 运行</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="160"/>
+        <location filename="../model/run/StartPreview.cpp" line="160"/>
         <source> at %1</source>
         <translation> （%1）</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="163"/>
+        <location filename="../model/run/StartPreview.cpp" line="163"/>
         <source>, direction %1 (the direction command sent since)</source>
         <translation>，方向 %1（此后已发送方向命令）</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="164"/>
+        <location filename="../model/run/StartPreview.cpp" line="164"/>
         <source>, direction %1</source>
         <translation>，方向 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="167"/>
+        <location filename="../model/run/StartPreview.cpp" line="167"/>
         <source>Which running data it runs with could not be read.</source>
         <translation>无法读取以哪组运行数据运行。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="170"/>
+        <location filename="../model/run/StartPreview.cpp" line="170"/>
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="172"/>
+        <location filename="../model/run/StartPreview.cpp" line="172"/>
         <source>The start also reaches machine number(s) %1: %2.</source>
         <translation>启动也会作用于站号 %1：%2。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="175"/>
+        <location filename="../model/run/StartPreview.cpp" line="175"/>
         <source>Not read: %1.</source>
         <translation>未读取：%1。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="187"/>
+        <location filename="../model/run/StartPreview.cpp" line="187"/>
         <source>This starts the motor of machine number %1.</source>
         <translation>这将启动站号 %1 的电机。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="189"/>
+        <location filename="../model/run/StartPreview.cpp" line="189"/>
         <source>This sets the speed command of machine number %1 to %2: its motor runs.</source>
         <translation>这将把站号 %1 的速度命令设定为 %2：其电机将运行。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="193"/>
+        <location filename="../model/run/StartPreview.cpp" line="193"/>
         <source>Make sure that nobody is near the machine and that it may move. STOP ALL stops every drive at any time.</source>
         <translation>请确认设备附近无人且设备可以运动。“全部停止”可随时停止所有驱动器。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="196"/>
+        <location filename="../model/run/StartPreview.cpp" line="196"/>
         <source>You are asked once per drive while the program runs.</source>
         <translation>程序运行期间，每台驱动器只询问一次。</translation>
     </message>
@@ -11693,12 +11706,12 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StatusLight</name>
     <message>
-        <location filename="../main/ui/widgets/StatusLight.cpp" line="30"/>
+        <location filename="../ui/widgets/StatusLight.cpp" line="30"/>
         <source>Status not known yet</source>
         <translation>状态未知</translation>
     </message>
     <message>
-        <location filename="../main/ui/widgets/StatusLight.cpp" line="42"/>
+        <location filename="../ui/widgets/StatusLight.cpp" line="42"/>
         <source>Status light %1: %2</source>
         <translation>状态灯 %1：%2</translation>
     </message>
@@ -11706,63 +11719,63 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StopAllButton</name>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="15"/>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="75"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="15"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="75"/>
         <source>STOP ALL</source>
         <translation>全部停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="19"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="19"/>
         <source>Stops every drive on the bus at once (%1), then checks that each has stopped.</source>
         <translation>立即停止总线上的所有驱动器（%1），然后检查每台是否已停止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="70"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="70"/>
         <source>STOPPING…</source>
         <translation>正在停止…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="86"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="86"/>
         <source>The stop broadcast to %1 drives FAILED: %2</source>
         <translation>向 %1 台驱动器广播停止失败：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="89"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="89"/>
         <source>Stop sent to every drive. No drives are known on the bus, so none was checked; scan the bus to have them checked.</source>
         <translation>已向所有驱动器发送停止。总线上没有已知的驱动器，因此未检查任何驱动器；请扫描总线以便进行检查。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="96"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="96"/>
         <source>Machine number %1: stopped after %2 s</source>
         <translation>站号 %1：%2 s 后停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="99"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="99"/>
         <source>Machine number %1: STILL RUNNING (%2)</source>
         <translation>站号 %1：仍在运行（%2）</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="102"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="102"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped</source>
         <translation>站号 %1：无应答，未确认已停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="117"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="117"/>
         <source>STOP ALL: the stop broadcast FAILED</source>
         <translation>全部停止：停止广播失败</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="118"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="118"/>
         <source>STOP ALL: stop sent, no drive checked</source>
         <translation>全部停止：已发送停止，未检查驱动器</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="119"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="119"/>
         <source>STOP ALL: every drive stopped</source>
         <translation>全部停止：所有驱动器已停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="120"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="120"/>
         <source>STOP ALL: not every drive is confirmed stopped</source>
         <translation>全部停止：并非所有驱动器都已确认停止</translation>
     </message>
@@ -11770,87 +11783,87 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StopAllCommand</name>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="54"/>
+        <location filename="../cli/StopAllCommand.cpp" line="54"/>
         <source>Broadcast stop to every drive, then confirm each has stopped (needs --yes)</source>
         <translation>向所有驱动器广播停止，然后确认每台是否已停止（需要 --yes）</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="60"/>
+        <location filename="../cli/StopAllCommand.cpp" line="60"/>
         <source>Send the stop broadcast.</source>
         <translation>发送停止广播。</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="62"/>
+        <location filename="../cli/StopAllCommand.cpp" line="62"/>
         <source>Machine numbers to confirm, e.g. 1,2,5-7 (default on a simulated bus: its drives).</source>
         <translation>要确认的站号，例如 1,2,5-7（模拟总线上默认为其所有驱动器）。</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="63"/>
+        <location filename="../cli/StopAllCommand.cpp" line="63"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="72"/>
+        <location filename="../cli/StopAllCommand.cpp" line="72"/>
         <source>error: usage: %1 (no other arguments)</source>
         <translation>错误：用法：%1（不接受其他参数）</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="80"/>
+        <location filename="../cli/StopAllCommand.cpp" line="80"/>
         <source>error: --ids: %1</source>
         <translation>错误：--ids：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="87"/>
+        <location filename="../cli/StopAllCommand.cpp" line="87"/>
         <source>Would broadcast to every drive on the bus (machine number 0, no reply):</source>
         <translation>将向总线上的所有驱动器广播（站号 0，无应答）：</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="91"/>
+        <location filename="../cli/StopAllCommand.cpp" line="91"/>
         <source>Add --yes to send it.</source>
         <translation>加上 --yes 才会发送。</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="119"/>
+        <location filename="../cli/StopAllCommand.cpp" line="119"/>
         <source>Broadcast %1: %2</source>
         <translation>广播 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="120"/>
+        <location filename="../cli/StopAllCommand.cpp" line="120"/>
         <source>Broadcast %1 FAILED: %2: %3</source>
         <translation>广播 %1 失败：%2：%3</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>Family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>After</source>
         <translation>之后</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>Detail</source>
         <translation>详情</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="156"/>
+        <location filename="../cli/StopAllCommand.cpp" line="156"/>
         <source>Only the broadcast was sent: drives do not answer a broadcast, so nothing confirms that they stopped. To confirm, pass the machine numbers on this bus, e.g. --ids 1,2,5-7 (opentop-cli scan finds them).</source>
         <translation>只发送了广播：驱动器不应答广播，因此无法确认它们已停止。如需确认，请指定该总线上的站号，例如 --ids 1,2,5-7（opentop-cli scan 可找到它们）。</translation>
     </message>
@@ -11858,22 +11871,22 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StopConfirmer</name>
     <message>
-        <location filename="../main/model/run/StopConfirmer.cpp" line="56"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="56"/>
         <source>%1 drives report neither running state nor speed</source>
         <translation>%1 驱动器既不报告运行状态也不报告速度</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StopConfirmer.cpp" line="86"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="86"/>
         <source>%1 is %2: the drive does not take motion commands over the bus (it follows its input terminals)</source>
         <translation>%1 为 %2：驱动器不接受来自总线的运动命令（按其输入端子动作）</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StopConfirmer.cpp" line="140"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="140"/>
         <source>still at %1 after %2 s</source>
         <translation>%2 s 后仍为 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StopConfirmer.cpp" line="142"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="142"/>
         <source>still running after %1 s</source>
         <translation>%1 s 后仍在运行</translation>
     </message>
@@ -11881,7 +11894,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TcpSimServer</name>
     <message>
-        <location filename="../main/sim/TcpSimServer.cpp" line="47"/>
+        <location filename="../sim/TcpSimServer.cpp" line="47"/>
         <source>cannot listen on %1:%2: %3</source>
         <translation>无法在 %1:%2 上监听：%3</translation>
     </message>
@@ -11889,47 +11902,47 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TerminalLamps</name>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="184"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="184"/>
         <source>n/a</source>
         <translation>不适用</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="185"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="185"/>
         <source>%1: not applicable (%2)</source>
         <translation>%1：不适用（%2）</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="188"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="188"/>
         <source>?</source>
         <translation>?</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="189"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="189"/>
         <source>%1: not read</source>
         <translation>%1：未读取</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="193"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="193"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="193"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="193"/>
         <source>OFF</source>
         <translation>OFF</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="194"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="194"/>
         <source>%1 is ON</source>
         <translation>%1 为 ON</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="194"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="194"/>
         <source>%1 is OFF</source>
         <translation>%1 为 OFF</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="196"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="196"/>
         <source>%1 (last state read, not live)</source>
         <translation>%1（最后读取的状态，非实时）</translation>
     </message>
@@ -11937,112 +11950,112 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TestRunPanel</name>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="45"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="45"/>
         <source>&lt;b&gt;Test run of machine number %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;站号 %1 的试运行&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="50"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="50"/>
         <source>Machine number %1 has not been identified as a drive of a known family; a test run needs one.</source>
         <translation>站号 %1 尚未识别为已知系列的驱动器；试运行需要已识别的驱动器。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="111"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="111"/>
         <source>&amp;Start</source>
         <translation>启动(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="111"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="111"/>
         <source>S&amp;top</source>
         <translation>停止(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="112"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="112"/>
         <source>&amp;CW</source>
         <translation>CW(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="112"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="112"/>
         <source>CC&amp;W</source>
         <translation>CCW(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="113"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="113"/>
         <source>&amp;Hold</source>
         <translation>保持(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="113"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="113"/>
         <source>&amp;Free</source>
         <translation>释放(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="132"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="132"/>
         <source>Se&amp;lect running data</source>
         <translation>选择运行数据(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="143"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="143"/>
         <source>Return to &amp;I/O priority</source>
         <translation>恢复为 I/O 优先级(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="145"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="145"/>
         <source>Give run, stop, direction and speed selection back to the drive&apos;s input terminals</source>
         <translation>将运行、停止、方向和速度选择交还给驱动器的输入端子</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="191"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="191"/>
         <source>Cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>无法读取 %1 以确认驱动器是否接受运动命令：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="227"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="227"/>
         <source>Reading what the start will run…</source>
         <translation>正在读取启动后将运行的内容…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="243"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="243"/>
         <source>Start the motor</source>
         <translation>启动电机</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="257"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="257"/>
         <source>Sending %1…</source>
         <translation>正在发送 %1…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="293"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="293"/>
         <source>Sent: %1</source>
         <translation>已发送：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="308"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="308"/>
         <source>Read back after the command at %1:</source>
         <translation>%1 发送命令后回读：</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="311"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="311"/>
         <source>The motor is running.</source>
         <translation>电机正在运行。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="311"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="311"/>
         <source>The motor is stopped.</source>
         <translation>电机已停止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="313"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="313"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="315"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="315"/>
         <source>(not read: %1)</source>
         <translation>（未读取：%1）</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="379"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="379"/>
         <source>Polling is paused: the controller brakes the motor %1 s after the last frame it receives (%2). Resume polling to keep the motor running.</source>
         <translation>轮询已暂停：控制器在收到最后一帧报文 %1 s 后会使电机制动（%2）。请恢复轮询以保持电机运行。</translation>
     </message>
@@ -12050,12 +12063,12 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TrafficDescriber</name>
     <message>
-        <location filename="../main/model/traffic/TrafficDescriber.cpp" line="150"/>
+        <location filename="../model/traffic/TrafficDescriber.cpp" line="150"/>
         <source>broadcast: every drive executes it</source>
         <translation>广播：所有驱动器都会执行</translation>
     </message>
     <message>
-        <location filename="../main/model/traffic/TrafficDescriber.cpp" line="159"/>
+        <location filename="../model/traffic/TrafficDescriber.cpp" line="159"/>
         <source>to %1 (group parent: also %2)</source>
         <translation>发往 %1（组父站：%2 也会执行）</translation>
     </message>
@@ -12063,57 +12076,57 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TrafficLogModel</name>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="93"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="93"/>
         <source>Tx</source>
         <translation>Tx</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="95"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="95"/>
         <source>Rx</source>
         <translation>Rx</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="97"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="97"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="108"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="108"/>
         <source>%1 (%2 ms)</source>
         <translation>%1（%2 ms）</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="123"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="123"/>
         <source>Time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="125"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="125"/>
         <source>Direction</source>
         <translation>方向</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="127"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="127"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="129"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="129"/>
         <source>Function</source>
         <translation>功能码</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="131"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="131"/>
         <source>Bytes</source>
         <translation>字节</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="133"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="133"/>
         <source>Meaning</source>
         <translation>含义</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="135"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="135"/>
         <source>Error</source>
         <translation>错误</translation>
     </message>
@@ -12121,155 +12134,155 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TrafficLogView</name>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="43"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="43"/>
         <source>&amp;Errors only</source>
         <translation>仅显示错误(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="44"/>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="157"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="44"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="157"/>
         <source>&amp;Pause</source>
         <translation>暂停(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="52"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="52"/>
         <source>All drives</source>
         <translation>所有驱动器</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="54"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="54"/>
         <source>All</source>
         <translation>全部</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="55"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="55"/>
         <source>Tx (requests)</source>
         <translation>Tx（请求）</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="56"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="56"/>
         <source>Rx (replies)</source>
         <translation>Rx（应答）</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="57"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="57"/>
         <source>Events (no reply)</source>
         <translation>事件（无应答）</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="61"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="61"/>
         <source>&amp;Clear</source>
         <translation>清除(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="63"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="63"/>
         <source>&amp;Save…</source>
         <translation>保存(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="66"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="66"/>
         <source>&amp;Drive:</source>
         <translation>驱动器(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="68"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="68"/>
         <source>Di&amp;rection:</source>
         <translation>方向(&amp;R)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="82"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="82"/>
         <source>Frames</source>
         <translation>帧数</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
         <source>Requests</source>
         <translation>请求</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
         <source>Replies</source>
         <translation>应答</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Timeouts</source>
         <translation>超时</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>CRC errors</source>
         <translation>CRC 错误</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Exceptions</source>
         <translation>异常</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Wrong/garbled</source>
         <translation>错误/损坏</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Mean ms</source>
         <translation>平均 ms</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Max ms</source>
         <translation>最大 ms</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="114"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="114"/>
         <source>Statistics per drive</source>
         <translation>各驱动器统计</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="157"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="157"/>
         <source>&amp;Resume</source>
         <translation>继续(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="211"/>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="264"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="211"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="264"/>
         <source>Broadcast</source>
         <translation>广播</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="211"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="211"/>
         <source>Drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="253"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="253"/>
         <source>%1 addresses did not answer: %2</source>
         <translation>%1 个地址未应答：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="255"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="255"/>
         <source>No reply from machine numbers %1</source>
         <translation>站号 %1 无应答</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="281"/>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="286"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="281"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="286"/>
         <source>Save traffic log</source>
         <translation>保存报文日志</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="281"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="281"/>
         <source>Text files (*.txt)</source>
         <translation>文本文件 (*.txt)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="287"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="287"/>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
     </message>
@@ -12277,456 +12290,456 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::Transport</name>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="16"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="16"/>
         <source>No serial port given: enter a device such as /dev/ttyUSB0 or COM3.</source>
         <translation>未指定串口：请输入设备，例如 /dev/ttyUSB0 或 COM3。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="20"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="20"/>
         <source>Baud rate %1 is not supported: use 1200–115200 (e.g. 9600, 19200, 38400, 57600, 115200).</source>
         <translation>不支持波特率 %1：请使用 1200–115200（例如 9600、19200、38400、57600、115200）。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="26"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="26"/>
         <source>Parity &apos;%1&apos; is not supported: use N (none), E (even) or O (odd).</source>
         <translation>不支持校验位 &apos;%1&apos;：请使用 N（无）、E（偶）或 O（奇）。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="31"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="31"/>
         <source>%1 data bits are not supported: use 7 or 8.</source>
         <translation>不支持 %1 个数据位：请使用 7 或 8。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="35"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="35"/>
         <source>%1 stop bits are not supported: use 1 or 2.</source>
         <translation>不支持 %1 个停止位：请使用 1 或 2。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="39"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="39"/>
         <source>Byte timeout %1 ms is not allowed: use 1–10000 ms, or 0 to derive it from the baud rate.</source>
         <translation>不允许字节超时 %1 ms：请使用 1–10000 ms，或 0 表示根据波特率推算。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="47"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="47"/>
         <source>No host given: enter the gateway&apos;s address, e.g. 192.168.1.10.</source>
         <translation>未指定主机：请输入网关地址，例如 192.168.1.10。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="51"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="51"/>
         <source>TCP port %1 is not allowed: use 1–65535 (Modbus TCP uses 502).</source>
         <translation>不允许 TCP 端口 %1：请使用 1–65535（Modbus TCP 使用 502）。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="58"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="58"/>
         <source>No simulated devices given: use a list such as dbu200@1,dcpid@7.</source>
         <translation>未指定模拟设备：请使用 dbu200@1,dcpid@7 这样的列表。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="64"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="64"/>
         <source>Timeout %1 ms is not allowed: use 10–10000 ms.</source>
         <translation>不允许超时 %1 ms：请使用 10–10000 ms。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="68"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="68"/>
         <source>%1 retries are not allowed: use 0–10.</source>
         <translation>不允许重试 %1 次：请使用 0–10。</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="56"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="56"/>
         <source>Vendor name</source>
         <translation>厂商名称</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="58"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="58"/>
         <source>Product code</source>
         <translation>产品代码</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="60"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="60"/>
         <source>Revision</source>
         <translation>版本</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="62"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="62"/>
         <source>Vendor URL</source>
         <translation>厂商 URL</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="64"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="64"/>
         <source>Product name</source>
         <translation>产品名称</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="66"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="66"/>
         <source>Model name</source>
         <translation>型号名称</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="68"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="68"/>
         <source>User application name</source>
         <translation>用户应用名称</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="70"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="70"/>
         <source>Object 0x%1</source>
         <translation>对象 0x%1</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="51"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="51"/>
         <source>Cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="127"/>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="309"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="127"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="309"/>
         <source>%1 is not open</source>
         <translation>%1 未打开</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="144"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="144"/>
         <source>send failed</source>
         <translation>发送失败</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="168"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="168"/>
         <source>interrupted while waiting</source>
         <translation>等待时被中断</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="172"/>
-        <location filename="../main/transport/MockBackend.cpp" line="100"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="172"/>
+        <location filename="../transport/MockBackend.cpp" line="100"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 内无应答</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="201"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="201"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>之后又收到一个应答：这个应答可能是对之前请求的应答</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="270"/>
-        <location filename="../main/transport/RtuFrame.cpp" line="140"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="270"/>
+        <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>来自从站 %1 的应答，预期为 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="281"/>
-        <location filename="../main/transport/RtuBackend.cpp" line="145"/>
-        <location filename="../main/transport/TcpBackend.cpp" line="89"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="281"/>
+        <location filename="../transport/RtuBackend.cpp" line="145"/>
+        <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>应答不完整</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="286"/>
-        <location filename="../main/transport/RtuFrame.cpp" line="133"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="286"/>
+        <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 不一致</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="293"/>
-        <location filename="../main/transport/RtuBackend.cpp" line="152"/>
-        <location filename="../main/transport/TcpBackend.cpp" line="95"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="293"/>
+        <location filename="../transport/RtuBackend.cpp" line="152"/>
+        <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>接收失败</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="363"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="363"/>
         <source> (connection closed)</source>
         <translation> （连接已关闭）</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="384"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="384"/>
         <source>stale bytes discarded before sending</source>
         <translation>发送前丢弃了残留字节</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="466"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="466"/>
         <source>late bytes discarded after an error</source>
         <translation>出错后丢弃了迟到的字节</translation>
     </message>
     <message>
-        <location filename="../main/transport/MockBackend.cpp" line="57"/>
+        <location filename="../transport/MockBackend.cpp" line="57"/>
         <source>mock is not open</source>
         <translation>mock 未打开</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusBackend.cpp" line="39"/>
+        <location filename="../transport/ModbusBackend.cpp" line="39"/>
         <source>→ %1 bytes</source>
         <translation>→ %1 字节</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusBackend.cpp" line="51"/>
+        <location filename="../transport/ModbusBackend.cpp" line="51"/>
         <source>echo %1 = %2</source>
         <translation>回显 %1 = %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusBackend.cpp" line="54"/>
+        <location filename="../transport/ModbusBackend.cpp" line="54"/>
         <source>echo %1 ×%2</source>
         <translation>回显 %1 ×%2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="192"/>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="211"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="192"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="211"/>
         <source>cancelled before sending</source>
         <translation>发送前已取消</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="242"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="242"/>
         <source>cannot open %1</source>
         <translation>无法打开 %1</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="285"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="285"/>
         <source>client closed</source>
         <translation>客户端已关闭</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="142"/>
+        <location filename="../transport/ModbusRequest.cpp" line="142"/>
         <source>Slave address %1 is not allowed: use 1–247, or 0 to broadcast a write.</source>
         <translation>不允许从站地址 %1：请使用 1–247，或用 0 广播写入。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="147"/>
+        <location filename="../transport/ModbusRequest.cpp" line="147"/>
         <source>Function code 0x%1 is not allowed: use 0x01–0x7F.</source>
         <translation>不允许功能码 0x%1：请使用 0x01–0x7F。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="151"/>
+        <location filename="../transport/ModbusRequest.cpp" line="151"/>
         <source>Timeout %1 ms is not allowed: use 10–10000 ms, or -1 for the default.</source>
         <translation>不允许超时 %1 ms：请使用 10–10000 ms，或用 -1 表示默认值。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="156"/>
+        <location filename="../transport/ModbusRequest.cpp" line="156"/>
         <source>%1 retries are not allowed: use 0–10, or -1 for the default.</source>
         <translation>不允许重试 %1 次：请使用 0–10，或用 -1 表示默认值。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="163"/>
+        <location filename="../transport/ModbusRequest.cpp" line="163"/>
         <source>Function code 0x%1 must be sent as a raw request.</source>
         <translation>功能码 0x%1 必须作为原始请求发送。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="167"/>
+        <location filename="../transport/ModbusRequest.cpp" line="167"/>
         <source>Raw request data of %1 bytes is too long: at most %2 bytes.</source>
         <translation>%1 字节的原始请求数据过长：最多 %2 字节。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="173"/>
+        <location filename="../transport/ModbusRequest.cpp" line="173"/>
         <source>Device identification cannot be broadcast.</source>
         <translation>设备识别不能广播。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="183"/>
+        <location filename="../transport/ModbusRequest.cpp" line="183"/>
         <source>A read cannot be broadcast: use slave address 1–247.</source>
         <translation>读取不能广播：请使用从站地址 1–247。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="186"/>
+        <location filename="../transport/ModbusRequest.cpp" line="186"/>
         <source>Cannot read %1 registers at once: use 1–125 registers.</source>
         <translation>无法一次读取 %1 个寄存器：请使用 1–125 个寄存器。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="193"/>
+        <location filename="../transport/ModbusRequest.cpp" line="193"/>
         <source>Write single register needs exactly 1 value, not %1.</source>
         <translation>写单个寄存器需要且只需要 1 个值，而不是 %1 个。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="199"/>
+        <location filename="../transport/ModbusRequest.cpp" line="199"/>
         <source>Cannot write %1 registers at once: use 1–123 registers.</source>
         <translation>无法一次写入 %1 个寄存器：请使用 1–123 个寄存器。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="204"/>
+        <location filename="../transport/ModbusRequest.cpp" line="204"/>
         <source>%1 values given for %2 registers.</source>
         <translation>为 %2 个寄存器给出了 %1 个值。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="213"/>
+        <location filename="../transport/ModbusRequest.cpp" line="213"/>
         <source>Registers %1 ×%2 run past the last address 0xFFFF.</source>
         <translation>寄存器 %1 ×%2 超出最后地址 0xFFFF。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="224"/>
+        <location filename="../transport/ModbusRequest.cpp" line="224"/>
         <source>device identification code %1 object %2</source>
         <translation>设备识别代码 %1 对象 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="232"/>
+        <location filename="../transport/ModbusRequest.cpp" line="232"/>
         <source>raw %1 %2</source>
         <translation>原始 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="236"/>
+        <location filename="../transport/ModbusRequest.cpp" line="236"/>
         <source>read %1 %2 ×%3</source>
         <translation>读取 %1 %2 ×%3</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="240"/>
+        <location filename="../transport/ModbusRequest.cpp" line="240"/>
         <source>write %1 %2 = %3</source>
         <translation>写入 %1 %2 = %3</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="243"/>
+        <location filename="../transport/ModbusRequest.cpp" line="243"/>
         <source>write %1 %2 ×%3 = %4</source>
         <translation>写入 %1 %2 ×%3 = %4</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="249"/>
+        <location filename="../transport/ModbusRequest.cpp" line="249"/>
         <source>broadcast %1</source>
         <translation>广播 %1</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="11"/>
+        <location filename="../transport/ModbusResult.cpp" line="11"/>
         <source>ok</source>
         <translation>正常</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="13"/>
+        <location filename="../transport/ModbusResult.cpp" line="13"/>
         <source>timeout</source>
         <translation>超时</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="15"/>
+        <location filename="../transport/ModbusResult.cpp" line="15"/>
         <source>CRC error</source>
         <translation>CRC 错误</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="17"/>
+        <location filename="../transport/ModbusResult.cpp" line="17"/>
         <source>reply from wrong slave</source>
         <translation>应答来自错误的从站</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="19"/>
+        <location filename="../transport/ModbusResult.cpp" line="19"/>
         <source>exception</source>
         <translation>异常</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="21"/>
+        <location filename="../transport/ModbusResult.cpp" line="21"/>
         <source>malformed reply</source>
         <translation>应答格式错误</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="23"/>
+        <location filename="../transport/ModbusResult.cpp" line="23"/>
         <source>port error</source>
         <translation>端口错误</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="25"/>
+        <location filename="../transport/ModbusResult.cpp" line="25"/>
         <source>not connected</source>
         <translation>未连接</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="27"/>
+        <location filename="../transport/ModbusResult.cpp" line="27"/>
         <source>invalid request</source>
         <translation>无效请求</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="29"/>
+        <location filename="../transport/ModbusResult.cpp" line="29"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="38"/>
+        <location filename="../transport/ModbusResult.cpp" line="38"/>
         <source>Illegal function</source>
         <translation>非法功能</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="40"/>
+        <location filename="../transport/ModbusResult.cpp" line="40"/>
         <source>Illegal data address</source>
         <translation>非法数据地址</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="42"/>
+        <location filename="../transport/ModbusResult.cpp" line="42"/>
         <source>Illegal data value</source>
         <translation>非法数据值</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="44"/>
+        <location filename="../transport/ModbusResult.cpp" line="44"/>
         <source>Slave device failure</source>
         <translation>从站设备故障</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="46"/>
+        <location filename="../transport/ModbusResult.cpp" line="46"/>
         <source>Acknowledge (processing)</source>
         <translation>确认（处理中）</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="48"/>
+        <location filename="../transport/ModbusResult.cpp" line="48"/>
         <source>Slave device busy</source>
         <translation>从站设备忙</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="50"/>
+        <location filename="../transport/ModbusResult.cpp" line="50"/>
         <source>Negative acknowledge</source>
         <translation>否定确认</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="52"/>
+        <location filename="../transport/ModbusResult.cpp" line="52"/>
         <source>Memory parity error</source>
         <translation>存储器奇偶校验错误</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="54"/>
+        <location filename="../transport/ModbusResult.cpp" line="54"/>
         <source>Gateway path unavailable</source>
         <translation>网关路径不可用</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="56"/>
+        <location filename="../transport/ModbusResult.cpp" line="56"/>
         <source>Gateway target device failed to respond</source>
         <translation>网关目标设备无响应</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="60"/>
+        <location filename="../transport/ModbusResult.cpp" line="60"/>
         <source>Prohibited action</source>
         <translation>禁止的操作</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="62"/>
+        <location filename="../transport/ModbusResult.cpp" line="62"/>
         <source>Undefined error</source>
         <translation>未定义的错误</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="64"/>
+        <location filename="../transport/ModbusResult.cpp" line="64"/>
         <source>Unknown exception</source>
         <translation>未知异常</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="74"/>
+        <location filename="../transport/ModbusResult.cpp" line="74"/>
         <source>exception %1 %2</source>
         <translation>异常 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="79"/>
+        <location filename="../transport/ModbusResult.cpp" line="79"/>
         <source>timeout after %1 attempts</source>
         <translation>%1 次尝试后超时</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="81"/>
+        <location filename="../transport/ModbusResult.cpp" line="81"/>
         <source>timeout (no reply)</source>
         <translation>超时（无应答）</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="89"/>
+        <location filename="../transport/ModbusResult.cpp" line="89"/>
         <source> (%1 attempts)</source>
         <translation> （%1 次尝试）</translation>
     </message>
     <message>
-        <location filename="../main/transport/PortLock.cpp" line="162"/>
+        <location filename="../transport/PortLock.cpp" line="162"/>
         <source>%1 is in use by another program; close it first.</source>
         <translation>%1 正被其他程序占用；请先将其关闭。</translation>
     </message>
     <message>
-        <location filename="../main/transport/PortLock.cpp" line="167"/>
+        <location filename="../transport/PortLock.cpp" line="167"/>
         <source>another program</source>
         <translation>其他程序</translation>
     </message>
     <message>
-        <location filename="../main/transport/PortLock.cpp" line="169"/>
+        <location filename="../transport/PortLock.cpp" line="169"/>
         <source>%1 is in use by %2 (PID %3); close it first.</source>
         <translation>%1 正被 %2（PID %3）占用；请先将其关闭。</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuBackend.cpp" line="82"/>
+        <location filename="../transport/RtuBackend.cpp" line="82"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -12735,92 +12748,92 @@ then log out and in again (the group applies to new sessions only).</source>
 然后注销并重新登录（该组仅对新会话生效）。</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuBackend.cpp" line="88"/>
+        <location filename="../transport/RtuBackend.cpp" line="88"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> （设备可能不支持该校验位；pty 需要 N）</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuBackend.cpp" line="123"/>
+        <location filename="../transport/RtuBackend.cpp" line="123"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>应答声明 %1 字节，超过 RTU 帧的容量</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuBackend.cpp" line="144"/>
+        <location filename="../transport/RtuBackend.cpp" line="144"/>
         <source>no reply</source>
         <translation>无应答</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="127"/>
+        <location filename="../transport/RtuFrame.cpp" line="127"/>
         <source>reply too short (%1 bytes)</source>
         <translation>应答过短（%1 字节）</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="148"/>
+        <location filename="../transport/RtuFrame.cpp" line="148"/>
         <source>exception reply of %1 bytes</source>
         <translation>%1 字节的异常应答</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="159"/>
+        <location filename="../transport/RtuFrame.cpp" line="159"/>
         <source>reply function %1, expected %2</source>
         <translation>应答功能码 %1，预期为 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="166"/>
+        <location filename="../transport/RtuFrame.cpp" line="166"/>
         <source>reply ends inside its own data</source>
         <translation>应答在其自身数据内部结束</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="171"/>
+        <location filename="../transport/RtuFrame.cpp" line="171"/>
         <source>reply of %1 bytes, expected %2</source>
         <translation>应答 %1 字节，预期为 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="181"/>
+        <location filename="../transport/RtuFrame.cpp" line="181"/>
         <source>MEI type %1, expected %2</source>
         <translation>MEI 类型 %1，预期为 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="194"/>
+        <location filename="../transport/RtuFrame.cpp" line="194"/>
         <source>byte count %1, expected %2</source>
         <translation>字节数 %1，预期为 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="207"/>
+        <location filename="../transport/RtuFrame.cpp" line="207"/>
         <source>echo %1 = %2 differs from the write</source>
         <translation>回显 %1 = %2 与写入不一致</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="218"/>
+        <location filename="../transport/RtuFrame.cpp" line="218"/>
         <source>echo %1 ×%2 differs from the write</source>
         <translation>回显 %1 ×%2 与写入不一致</translation>
     </message>
     <message>
-        <location filename="../main/transport/SerialPortList.cpp" line="64"/>
+        <location filename="../transport/SerialPortList.cpp" line="64"/>
         <source>Pseudo-terminals (e.g. /dev/pts/3 or a socat link) are not listed: type their path.</source>
         <translation>伪终端（例如 /dev/pts/3 或 socat 链接）不会列出：请输入其路径。</translation>
     </message>
     <message>
-        <location filename="../main/transport/TcpBackend.cpp" line="105"/>
+        <location filename="../transport/TcpBackend.cpp" line="105"/>
         <source>MBAP length %1</source>
         <translation>MBAP 长度 %1</translation>
     </message>
     <message>
-        <location filename="../main/transport/TrafficEntry.cpp" line="13"/>
+        <location filename="../transport/TrafficEntry.cpp" line="13"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../main/transport/TrafficEntry.cpp" line="15"/>
+        <location filename="../transport/TrafficEntry.cpp" line="15"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../main/transport/TrafficEntry.cpp" line="17"/>
+        <location filename="../transport/TrafficEntry.cpp" line="17"/>
         <source>--</source>
         <translation>--</translation>
     </message>
     <message>
-        <location filename="../main/transport/TrafficEntry.cpp" line="37"/>
+        <location filename="../transport/TrafficEntry.cpp" line="37"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
@@ -12828,13 +12841,13 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendAxes</name>
     <message>
-        <location filename="../main/ui/trends/TrendAxes.cpp" line="40"/>
-        <location filename="../main/ui/trends/TrendAxes.cpp" line="46"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="40"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="46"/>
         <source>%1 [%2]</source>
         <translation>%1 [%2]</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendAxes.cpp" line="45"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="45"/>
         <source>[%1]</source>
         <translation>[%1]</translation>
     </message>
@@ -12842,22 +12855,22 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendChart</name>
     <message>
-        <location filename="../main/ui/trends/TrendChart.cpp" line="43"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="43"/>
         <source>Time (hh:mm:ss)</source>
         <translation>时间 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendChart.cpp" line="85"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="85"/>
         <source>Drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendChart.cpp" line="277"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="277"/>
         <source>There is no trend data to export yet.</source>
         <translation>尚无可导出的趋势数据。</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendChart.cpp" line="290"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="290"/>
         <source>Cannot write the picture %1.</source>
         <translation>无法写入图片 %1。</translation>
     </message>
@@ -12865,12 +12878,12 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendCsv</name>
     <message>
-        <location filename="../main/model/monitor/TrendCsv.cpp" line="25"/>
+        <location filename="../model/monitor/TrendCsv.cpp" line="25"/>
         <source>time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/TrendCsv.cpp" line="25"/>
+        <location filename="../model/monitor/TrendCsv.cpp" line="25"/>
         <source>seconds</source>
         <translation>秒</translation>
     </message>
@@ -12878,123 +12891,123 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendPanel</name>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="50"/>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="78"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="50"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="78"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="51"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="51"/>
         <source>Live</source>
         <translation>实时</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="54"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="54"/>
         <source>How often each charted drive is polled. Commands you give always go first; the drives take turns on the bus.</source>
         <translation>每台绘图驱动器的轮询频率。您发出的命令总是优先；各驱动器轮流使用总线。</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="65"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="65"/>
         <source>30 s</source>
         <translation>30 s</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="65"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="65"/>
         <source>1 min</source>
         <translation>1 min</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="65"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="65"/>
         <source>5 min</source>
         <translation>5 min</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="65"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="65"/>
         <source>15 min</source>
         <translation>15 min</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="74"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="74"/>
         <source>Freezes the chart; the values keep being recorded.</source>
         <translation>冻结图表；数值仍会继续记录。</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="78"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="78"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="81"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="81"/>
         <source>Back to the latest values after zooming or pausing.</source>
         <translation>缩放或暂停后回到最新值。</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="86"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="86"/>
         <source>Clear markers</source>
         <translation>清除标记</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="89"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="89"/>
         <source>Export CSV…</source>
         <translation>导出 CSV…</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="92"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="92"/>
         <source>Export PNG…</source>
         <translation>导出 PNG…</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="97"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="97"/>
         <source>Drive / quantity</source>
         <translation>驱动器 / 测量项</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="111"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="111"/>
         <source>Poll rate:</source>
         <translation>轮询频率：</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="113"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="113"/>
         <source>Window:</source>
         <translation>时间窗：</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="141"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="141"/>
         <source>%1 Hz (%2 ms)</source>
         <translation>%1 Hz（%2 ms）</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="200"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="200"/>
         <source>%1 [%2]</source>
         <translation>%1 [%2]</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="253"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="253"/>
         <source>Export trend as CSV</source>
         <translation>将趋势导出为 CSV</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="253"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="253"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="256"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="256"/>
         <source>Export CSV</source>
         <translation>导出 CSV</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="262"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="262"/>
         <source>Export trend as picture</source>
         <translation>将趋势导出为图片</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="263"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="263"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG 图片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="266"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="266"/>
         <source>Export PNG</source>
         <translation>导出 PNG</translation>
     </message>
@@ -13002,37 +13015,37 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendReadout</name>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="25"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="25"/>
         <source>Markers: click in the chart to set marker A, click again to set marker B.</source>
         <translation>标记：在图表中单击设置标记 A，再次单击设置标记 B。</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="28"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="28"/>
         <source>A %1   B %2   Δt = B − A = %3 s</source>
         <translation>A %1   B %2   Δt = B − A = %3 s</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="31"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="31"/>
         <source>A %1   (click in the chart to set marker B)</source>
         <translation>A %1   （在图表中单击设置标记 B）</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="32"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="32"/>
         <source>B %1   (click in the chart to set marker A)</source>
         <translation>B %1   （在图表中单击设置标记 A）</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="34"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="34"/>
         <source>no data</source>
         <translation>无数据</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="44"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="44"/>
         <source>%1:   A %2   B %3   Δ %4</source>
         <translation>%1：   A %2   B %3   Δ %4</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="46"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="46"/>
         <source>%1:   %2 %3</source>
         <translation>%1：   %2 %3</translation>
     </message>
@@ -13040,27 +13053,27 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitRecordJson</name>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="105"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="105"/>
         <source>not a unit record (format is not &quot;%1&quot;)</source>
         <translation>不是产品记录（format 不是 &quot;%1&quot;）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="108"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="108"/>
         <source>unit record version %1 is not known to this program (it reads up to %2)</source>
         <translation>本程序不认识产品记录版本 %1（最高可读取 %2）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="115"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="115"/>
         <source>the unit record has no serial number</source>
         <translation>产品记录没有序列号</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="127"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="127"/>
         <source>unknown unit status &quot;%1&quot;</source>
         <translation>未知的产品状态 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="171"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="171"/>
         <source>not JSON: %1</source>
         <translation>不是 JSON：%1</translation>
     </message>
@@ -13068,102 +13081,102 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitValuesCsv</name>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="70"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="70"/>
         <source>the CSV file is larger than %1 MB</source>
         <translation>CSV 文件大于 %1 MB</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="72"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="72"/>
         <source>not a CSV text file (it holds NUL bytes)</source>
         <translation>不是 CSV 文本文件（含有 NUL 字节）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="93"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="93"/>
         <source>line %1: a quoted field is not closed properly</source>
         <translation>第 %1 行：带引号的字段未正确结束</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="97"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="97"/>
         <source>line %1: the header must start with &quot;serial&quot;, not &quot;%2&quot;</source>
         <translation>第 %1 行：表头必须以 &quot;serial&quot; 开头，而不是 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="101"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="101"/>
         <source>line %1: the header names no per-unit value</source>
         <translation>第 %1 行：表头中没有单台数值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="103"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="103"/>
         <source>line %1: more than %2 columns</source>
         <translation>第 %1 行：超过 %2 列</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="107"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="107"/>
         <source>line %1: column %2 has no name</source>
         <translation>第 %1 行：第 %2 列没有名称</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="109"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="109"/>
         <source>line %1: column &quot;%2&quot; appears twice</source>
         <translation>第 %1 行：列 &quot;%2&quot; 出现了两次</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="118"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="118"/>
         <source>line %1: %2 fields, but the header has %3</source>
         <translation>第 %1 行：%2 个字段，但表头有 %3 个</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="124"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="124"/>
         <source>line %1: no serial number</source>
         <translation>第 %1 行：没有序列号</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="126"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="126"/>
         <source>line %1: serial number &quot;%2&quot; is already on line %3</source>
         <translation>第 %1 行：序列号 &quot;%2&quot; 已在第 %3 行出现</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="133"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="133"/>
         <source>the CSV file is empty; it needs a header &quot;serial,&lt;parameter&gt;,...&quot;</source>
         <translation>CSV 文件为空；需要表头 &quot;serial,&lt;parameter&gt;,...&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="144"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="144"/>
         <source>cannot read %1: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="150"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="150"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="191"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="191"/>
         <source>serial number &quot;%1&quot; is not in the CSV file</source>
         <translation>序列号 &quot;%1&quot; 不在 CSV 文件中</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="204"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="204"/>
         <source>%1: column &quot;%2&quot; is ambiguous, several positions have this per-unit value; name the column &quot;%3:%2&quot;</source>
         <translation>%1：列 &quot;%2&quot; 有歧义，多个位置都有该单台数值；请将列命名为 &quot;%3:%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="208"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="208"/>
         <source>%1: the CSV file has no column &quot;%2&quot; (or &quot;%3:%2&quot;) for this per-unit value</source>
         <translation>%1：CSV 文件中没有该单台数值的列 &quot;%2&quot;（或 &quot;%3:%2&quot;）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="213"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="213"/>
         <source>line %1, column &quot;%2&quot;: no value for serial number &quot;%3&quot;</source>
         <translation>第 %1 行，列 &quot;%2&quot;：序列号 &quot;%3&quot; 没有值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="222"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="222"/>
         <source>line %1, column &quot;%2&quot;: &quot;%3&quot; is not a number</source>
         <translation>第 %1 行，列 &quot;%2&quot;：&quot;%3&quot; 不是数字</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="227"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="227"/>
         <source>line %1: %2</source>
         <translation>第 %1 行：%2</translation>
     </message>
@@ -13171,22 +13184,22 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UserGuideDialog</name>
     <message>
-        <location filename="../main/ui/help/UserGuideDialog.cpp" line="26"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="26"/>
         <source>OpenTOP user guide</source>
         <translation>OpenTOP 用户指南</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/UserGuideDialog.cpp" line="28"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="28"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../main/ui/help/UserGuideDialog.cpp" line="31"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="31"/>
         <source>&lt;h2&gt;Commissioning a drive with OpenTOP&lt;/h2&gt;&lt;ol&gt;&lt;li&gt;&lt;b&gt;Connect.&lt;/b&gt; Bus ▸ Connect… chooses the serial port (or USB to RS-485 adapter), a Modbus TCP gateway or a simulated bus, with the bus&apos;s baud rate, parity and stop bits. The status bar says what the program is connected to; a simulated bus is marked as such.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Find the drives.&lt;/b&gt; Bus ▸ Scan bus (F5) asks every machine number 1–247; the drives that answer are identified and listed on the left with their state and control priority.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Select a drive.&lt;/b&gt; Its pages open on the right: Monitor (live values), the parameter pages of its profile, Test run and Alarms.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Edit settings.&lt;/b&gt; An edited field is marked as pending until it is written. Write page (or Drive ▸ Write all pending, Ctrl+W) writes and reads every value back to verify it; Revert drops the edits; Re-read (Ctrl+R) reads the drive again. A value the drive would refuse is never sent: the field says why.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Test-run the motor.&lt;/b&gt; The Test run page starts, stops and reverses the drive in communication priority and asks before the first start of each drive. Return the drive to I/O priority when done, so that the machine&apos;s own inputs control it again.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Stop.&lt;/b&gt; STOP ALL on the toolbar, or %1, stops every drive on the bus at once, from any window of the program.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Watch.&lt;/b&gt; View ▸ Trends (Ctrl+G) charts speeds and loads; View ▸ Bus overview shows every drive at a glance; View ▸ Traffic log (Ctrl+T) shows each frame on the bus with its meaning.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Keep the settings.&lt;/b&gt; Files ▸ Back up saves the settings of one drive or the whole bus to a file; Files ▸ Compare shows differences between drives, files and factory defaults; Files ▸ Restore writes a backup back after a preview.&lt;/li&gt;&lt;/ol&gt;&lt;p&gt;Every keyboard shortcut is listed in Help ▸ Keyboard shortcuts.&lt;/p&gt;&lt;h3&gt;More documentation&lt;/h3&gt;&lt;p&gt;The command line and the simulator: &lt;code&gt;man opentop&lt;/code&gt;, &lt;code&gt;man opentop-cli&lt;/code&gt;, &lt;code&gt;man opentop-sim&lt;/code&gt;.&lt;/p&gt;</source>
         <translation>&lt;h2&gt;用 OpenTOP 调试驱动器&lt;/h2&gt;&lt;ol&gt;&lt;li&gt;&lt;b&gt;连接。&lt;/b&gt;总线 ▸ 连接… 选择串口（或 USB 转 RS-485 适配器）、Modbus TCP 网关或模拟总线，并设定总线的波特率、校验位和停止位。状态栏显示程序当前的连接；模拟总线会明确标示。&lt;/li&gt;&lt;li&gt;&lt;b&gt;查找驱动器。&lt;/b&gt;总线 ▸ 扫描总线（F5）逐个询问站号 1–247；应答的驱动器会被识别，并与其状态和控制优先级一起列在左侧。&lt;/li&gt;&lt;li&gt;&lt;b&gt;选择驱动器。&lt;/b&gt;其页面在右侧打开：监视（实时值）、其设备描述中的各参数页面、试运行和报警。&lt;/li&gt;&lt;li&gt;&lt;b&gt;编辑设定。&lt;/b&gt;编辑过的字段在写入前标记为待写入。写入本页（或 驱动器 ▸ 写入全部待写入项，Ctrl+W）会写入每个值并回读校验；还原会放弃修改；重新读取（Ctrl+R）会重新读取驱动器。驱动器会拒绝的值绝不会发送：字段会说明原因。&lt;/li&gt;&lt;li&gt;&lt;b&gt;试运行电机。&lt;/b&gt;试运行页面在通信优先级下启动、停止驱动器并切换其方向，每台驱动器首次启动前会先确认。完成后请将驱动器恢复为 I/O 优先级，使设备自身的输入端子重新控制它。&lt;/li&gt;&lt;li&gt;&lt;b&gt;停止。&lt;/b&gt;工具栏上的“全部停止”或 %1 可在程序的任何窗口中立即停止总线上的所有驱动器。&lt;/li&gt;&lt;li&gt;&lt;b&gt;观察。&lt;/b&gt;视图 ▸ 趋势（Ctrl+G）绘制速度和负载曲线；视图 ▸ 总线总览 一目了然地显示每台驱动器；视图 ▸ 报文日志（Ctrl+T）显示总线上的每一帧及其含义。&lt;/li&gt;&lt;li&gt;&lt;b&gt;保存设定。&lt;/b&gt;文件 ▸ 备份 将一台驱动器或整条总线的设定保存到文件；文件 ▸ 比较 显示驱动器、文件和出厂默认值之间的差异；文件 ▸ 恢复 在预览后将备份写回。&lt;/li&gt;&lt;/ol&gt;&lt;p&gt;所有键盘快捷键都列在 帮助 ▸ 键盘快捷键 中。&lt;/p&gt;&lt;h3&gt;更多文档&lt;/h3&gt;&lt;p&gt;命令行和模拟器：&lt;code&gt;man opentop&lt;/code&gt;、&lt;code&gt;man opentop-cli&lt;/code&gt;、&lt;code&gt;man opentop-sim&lt;/code&gt;。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/UserGuideDialog.cpp" line="70"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="70"/>
         <source>&lt;p&gt;The full description of the program: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;程序的完整说明：&lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</translation>
     </message>
@@ -13194,98 +13207,98 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ValueCodec</name>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="130"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="130"/>
         <source>depends on %1, which is not known yet</source>
         <translation>取决于 %1，但该项尚未知</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="132"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="132"/>
         <source>text of up to %1 characters</source>
         <translation>最多 %1 个字符的文本</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="142"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="142"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="150"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="150"/>
         <source>, or </source>
         <translation>，或 </translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="151"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="151"/>
         <source>any value</source>
         <translation>任意值</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="167"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="167"/>
         <source> (the variant is not known, so the value must suit %1; name the variant to use its own range)</source>
         <translation> （机型未知，因此该值必须适用于 %1；指定机型以使用其自身范围）</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="177"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="177"/>
         <source>%1: the allowed values depend on %2, which has not been read</source>
         <translation>%1：允许值取决于 %2，但该项尚未读取</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="182"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="182"/>
         <source>%1: value out of the register&apos;s range; allowed: %2</source>
         <translation>%1：值超出寄存器范围；允许：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="194"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="194"/>
         <source>%1: %2 is not allowed; allowed: %3</source>
         <translation>%1：不允许 %2；允许：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="206"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="206"/>
         <source>%1: expected %2 registers, got %3</source>
         <translation>%1：预期 %2 个寄存器，实际为 %3 个</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="243"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="243"/>
         <source>%1 is text, not a number</source>
         <translation>%1 是文本，不是数字</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="256"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="256"/>
         <source>%1: %2 is finer than the step of %3 %4; allowed: %5</source>
         <translation>%1：%2 比步长 %3 %4 更精细；允许：%5</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="287"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="287"/>
         <source>%1: at most %2 characters</source>
         <translation>%1：最多 %2 个字符</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="293"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="293"/>
         <source>%1: only printable ASCII characters are allowed</source>
         <translation>%1：只允许可打印的 ASCII 字符</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="305"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="305"/>
         <source>%1: no value given; allowed: %2</source>
         <translation>%1：未给出值；允许：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="338"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="338"/>
         <source>%1: &quot;%2&quot; is only available when %3 is %4; allowed now: %5</source>
         <translation>%1：&quot;%2&quot; 仅在 %3 为 %4 时可用；当前允许：%5</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="351"/>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="368"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="351"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="368"/>
         <source>%1: &quot;%2&quot; is not a valid value; allowed: %3</source>
         <translation>%1：&quot;%2&quot; 不是有效值；允许：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="382"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="382"/>
         <source>(invalid)</source>
         <translation>（无效）</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="393"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="393"/>
         <source>unknown code %1</source>
         <translation>未知代码 %1</translation>
     </message>
@@ -13293,22 +13306,22 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::YieldReport</name>
     <message>
-        <location filename="../main/model/eol/YieldReport.cpp" line="51"/>
+        <location filename="../model/eol/YieldReport.cpp" line="51"/>
         <source>still running (or its station has not restarted since it stopped)</source>
         <translation>仍在进行中（或其工位停止后尚未重新启动）</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/YieldReport.cpp" line="53"/>
+        <location filename="../model/eol/YieldReport.cpp" line="53"/>
         <source>interrupted</source>
         <translation>已中断</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/YieldReport.cpp" line="55"/>
+        <location filename="../model/eol/YieldReport.cpp" line="55"/>
         <source>aborted</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/YieldReport.cpp" line="57"/>
+        <location filename="../model/eol/YieldReport.cpp" line="57"/>
         <source>failed, no reason recorded</source>
         <translation>不合格，未记录原因</translation>
     </message>

@@ -4,28 +4,28 @@
 <context>
     <name>Freshness</name>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="29"/>
-        <location filename="../main/model/monitor/Freshness.cpp" line="31"/>
+        <location filename="../model/monitor/Freshness.cpp" line="29"/>
+        <location filename="../model/monitor/Freshness.cpp" line="31"/>
         <source>%1 s old</source>
         <translation>%1 s 前</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="33"/>
+        <location filename="../model/monitor/Freshness.cpp" line="33"/>
         <source>%1 min old</source>
         <translation>%1 min 前</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="34"/>
+        <location filename="../model/monitor/Freshness.cpp" line="34"/>
         <source>%1 h old</source>
         <translation>%1 h 前</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="40"/>
+        <location filename="../model/monitor/Freshness.cpp" line="40"/>
         <source>never read</source>
         <translation>從未讀取</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/Freshness.cpp" line="41"/>
+        <location filename="../model/monitor/Freshness.cpp" line="41"/>
         <source>last answer %1 (%2)</source>
         <translation>最後回應 %1 (%2)</translation>
     </message>
@@ -33,12 +33,12 @@
 <context>
     <name>SimulatorProcess</name>
     <message>
-        <location filename="../main/app/bench/main.cpp" line="230"/>
+        <location filename="../app/bench/main.cpp" line="230"/>
         <source>cannot start %1: %2</source>
         <translation>無法啟動 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/app/bench/main.cpp" line="236"/>
+        <location filename="../app/bench/main.cpp" line="236"/>
         <source>opentop-sim did not get ready: %1</source>
         <translation>opentop-sim 未能就緒：%1</translation>
     </message>
@@ -46,42 +46,47 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../main/app/gui/main.cpp" line="46"/>
+        <location filename="../app/gui/main.cpp" line="54"/>
         <source>Commissioning tool for RS-485 Modbus-RTU motor drives.</source>
         <translation>RS-485 Modbus-RTU 馬達驅動器試車調機工具。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="75"/>
+        <location filename="../app/gui/main.cpp" line="58"/>
+        <source>Language of the program: %1 (default: the language menu&apos;s choice, else the system&apos;s).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MonitorOptions.cpp" line="75"/>
         <source>Open the bus overview and the trends of every drive.</source>
         <translation>開啟匯流排總覽及每台驅動器的趨勢圖。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="76"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="76"/>
         <source>Monitoring poll interval in milliseconds.</source>
         <translation>監視輪詢間隔，單位 ms。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="79"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="79"/>
         <source>Quit after this many seconds and print the monitoring statistics (for measurements).</source>
         <translation>經過此秒數後結束，並輸出監視統計 (供量測用)。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="83"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="83"/>
         <source>Print the monitoring totals every this many seconds (for measurements).</source>
         <translation>每隔此秒數輸出一次監視累計 (供量測用)。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="93"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="93"/>
         <source>--poll-ms needs a number of milliseconds</source>
         <translation>--poll-ms 需要毫秒數</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="98"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="98"/>
         <source>--quit-after needs a number of seconds</source>
         <translation>--quit-after 需要秒數</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/MonitorOptions.cpp" line="103"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="103"/>
         <source>--stats-every needs a number of seconds</source>
         <translation>--stats-every 需要秒數</translation>
     </message>
@@ -89,107 +94,107 @@
 <context>
     <name>opentop</name>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="69"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="69"/>
         <source>not read</source>
         <translation>未讀取</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="89"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="89"/>
         <source>No alarm is active.</source>
         <translation>目前無警報。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="91"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="91"/>
         <source>Alarm active: %1 %2.</source>
         <translation>警報發生中：%1 %2。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="94"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="94"/>
         <source>An alarm is active.</source>
         <translation>有警報發生中。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="97"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="97"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>此驅動器設定為僅能斷電重新上電解除警報 (%1)：Alarm-Reset 無法解除任何警報。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="104"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="104"/>
         <source>%1: could not be read: %2</source>
         <translation>%1：無法讀取：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="108"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="108"/>
         <source>%1: no records.</source>
         <translation>%1：無記錄。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="111"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="111"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1：共 %3 筆記錄中的 %2 筆，最新的在前</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>Code</source>
         <translation>代碼</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>Panel</source>
         <translation>面板</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>Name</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
         <source>Cleared by</source>
         <translation>解除方式</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="123"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="123"/>
         <source>unknown code</source>
         <translation>未知代碼</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="130"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="130"/>
         <source>Cause: %1</source>
         <translation>原因：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="132"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="132"/>
         <source>Remedy: %1</source>
         <translation>對策：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="134"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="134"/>
         <source>To clear: %1</source>
         <translation>解除方法：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="140"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="140"/>
         <source>Communication error register (%1): could not be read.</source>
         <translation>通訊錯誤暫存器 (%1)：無法讀取。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="144"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="144"/>
         <source>Communication error register (%1): none (0).</source>
         <translation>通訊錯誤暫存器 (%1)：無 (0)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="147"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="147"/>
         <source>Communication error register (%1): %2, not a known code.</source>
         <translation>通訊錯誤暫存器 (%1)：%2，非已知代碼。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="151"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="151"/>
         <source>Communication error register (%1): %2 %3
   Cause: %4
   Remedy: %5</source>
@@ -198,192 +203,202 @@
   對策：%5</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="26"/>
+        <location filename="../cli/CliApp.cpp" line="26"/>
         <source>Machine-readable JSON on standard output.</source>
         <translation>在標準輸出上輸出機器可讀的 JSON。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="27"/>
+        <location filename="../cli/CliApp.cpp" line="27"/>
         <source>Print every frame sent and received on standard error.</source>
         <translation>在標準錯誤輸出上印出每個收發的訊框。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="29"/>
+        <location filename="../cli/CliApp.cpp" line="29"/>
         <source>Drive variant where the drive does not report it: VARIANT, or ID=VARIANT,... (e.g. dbu400, 150=dbu400).</source>
         <translation>驅動器未回報機型時使用的機型：VARIANT，或 ID=VARIANT,... (例如 dbu400, 150=dbu400)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="31"/>
+        <location filename="../cli/CliApp.cpp" line="31"/>
         <source>VARIANT</source>
         <translation>VARIANT</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="33"/>
+        <location filename="../cli/CliApp.cpp" line="33"/>
         <source>The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES): before a write or command, their communication group is read to name every drive it also reaches.</source>
         <translation>匯流排上的驅動器，例如 1,3,5-7 (預設：OPENTOP_BUS_DRIVES)：寫入或下指令前，會先讀取其通訊群組，列出該操作同時送達的每台驅動器。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="36"/>
+        <location filename="../cli/CliApp.cpp" line="36"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="38"/>
+        <location filename="../cli/CliApp.cpp" line="38"/>
         <source>Show this help, or a command&apos;s help after the command.</source>
         <translation>顯示此說明；放在指令之後則顯示該指令的說明。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="39"/>
+        <location filename="../cli/CliApp.cpp" line="39"/>
         <source>Show the version.</source>
         <translation>顯示版本。</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="28"/>
+        <location filename="../cli/CliApp.cpp" line="43"/>
+        <source>Language of the human output: en, zh_TW, zh_CN, ko, ja (default: the system&apos;s). --json output is the same in every language.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/CliApp.cpp" line="45"/>
+        <source>CODE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/StopAllCommand.cpp" line="28"/>
         <source>stopped</source>
         <translation>已停止</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="30"/>
+        <location filename="../cli/StopAllCommand.cpp" line="30"/>
         <source>STILL RUNNING</source>
         <translation>仍在運轉</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="32"/>
+        <location filename="../cli/StopAllCommand.cpp" line="32"/>
         <source>no answer</source>
         <translation>無回應</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="47"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="47"/>
         <source>top level</source>
         <translation>最上層</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="50"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="50"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot; 必須為 1</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="59"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="59"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot; 必須是小寫的 id</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="69"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="69"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity 必須為 N、E 或 O</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="73"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="73"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial：baud 必須為 1200–115200，stopBits 必須為 1 或 2</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="89"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="89"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits：maxReadRegisters 須為 1–125，maxWriteRegisters 須為 1–123</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="91"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="91"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits：slaves 必須在 1–247 範圍內</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="106"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="106"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1] 需要 id、model 與 label</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="108"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="108"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]：id &quot;%2&quot; 重複</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="119"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="119"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1] 需要唯一的 id 與 label</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="130"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="130"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1] 需要功能碼 3 或 4，且 first ≤ last</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="174"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="174"/>
         <source>%1 has no name</source>
         <translation>%1 沒有名稱</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="176"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="176"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1：reset 必須是 %2 其中之一</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="179"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="179"/>
         <source>%1: code %2 repeated</source>
         <translation>%1：代碼 %2 重複</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="201"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="201"/>
         <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
         <translation>%1：storeWith &quot;%2&quot; 不是指令參數</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="204"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="204"/>
         <source>%1: the default is not among its allowed values</source>
         <translation>%1：預設值不在允許值之內</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="208"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="208"/>
         <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
         <translation>%1：位元欄位 &quot;%2&quot;：function &quot;%3&quot; 不是可讀取的參數</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="215"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="215"/>
         <source>%1: condition on unknown parameter &quot;%2&quot;</source>
         <translation>%1：條件引用了未知參數 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="217"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="217"/>
         <source>%1: the default is not allowed when %2</source>
         <translation>%1：當 %2 時不允許此預設值</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="227"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="227"/>
         <source>%1 runs past address 0xFFFF</source>
         <translation>%1 超出位址 0xFFFF</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="230"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="230"/>
         <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
         <translation>%1 與 &quot;%2&quot; 在 0x%3 重疊 (%4 個暫存器)</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="254"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="254"/>
         <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
         <translation>identify：&quot;%1&quot; 必須是 identify 讀取範圍內的參數</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="257"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="257"/>
         <source>identify.nameMatch is not a valid regular expression</source>
         <translation>identify.nameMatch 不是有效的正規表示式</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="269"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="269"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1：未知參數 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="297"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="297"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1 必須是參數名稱、名稱清單或物件</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="306"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="306"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1：&quot;%2&quot; 沒有位元欄位 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="312"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="312"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1：%2 不是 &quot;%3&quot; 可寫入的值</translation>
     </message>
@@ -391,17 +406,17 @@
 <context>
     <name>opentop::AboutDialog</name>
     <message>
-        <location filename="../main/ui/help/AboutDialog.cpp" line="20"/>
+        <location filename="../ui/help/AboutDialog.cpp" line="20"/>
         <source>About OpenTOP</source>
         <translation>關於 OpenTOP</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/AboutDialog.cpp" line="22"/>
+        <location filename="../ui/help/AboutDialog.cpp" line="22"/>
         <source>&lt;h2&gt;OpenTOP %1&lt;/h2&gt;&lt;p&gt;Commissioning tool for RS-485 Modbus-RTU motor drives: TROY DBU brushless drives and a DC motor PID controller.&lt;/p&gt;&lt;p&gt;Copyright © the OpenTOP developers.&lt;br&gt;Licence: GNU General Public License, version 3 or any later version (GPL-3.0-or-later). This program comes with ABSOLUTELY NO WARRANTY; it is free software, and you are welcome to redistribute it under the terms of that licence.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Built with&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (run time; built with %3): GNU Lesser General Public License, version 3 (LGPL-3.0-only); Qt Charts: GNU General Public License, version 3 (GPL-3.0-only)&lt;/li&gt;&lt;li&gt;libmodbus %4: GNU Lesser General Public License, version 2.1 or later (LGPL-2.1-or-later)&lt;/li&gt;&lt;li&gt;GoogleTest (tests only): BSD 3-Clause licence&lt;/li&gt;&lt;/ul&gt;</source>
         <translation>&lt;h2&gt;OpenTOP %1&lt;/h2&gt;&lt;p&gt;RS-485 Modbus-RTU 馬達驅動器試車調機工具：支援 TROY DBU 無刷馬達驅動器及 DC 馬達 PID 控制器。&lt;/p&gt;&lt;p&gt;Copyright © OpenTOP 開發者。&lt;br&gt;授權條款：GNU 通用公共授權條款第 3 版或任何更新版本 (GPL-3.0-or-later)。本程式不提供任何擔保；本程式為自由軟體，歡迎依該授權條款再散布。&lt;/p&gt;&lt;p&gt;&lt;b&gt;使用元件&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (執行時；建置時為 %3)：GNU 較寬鬆通用公共授權條款第 3 版 (LGPL-3.0-only)；Qt Charts：GNU 通用公共授權條款第 3 版 (GPL-3.0-only)&lt;/li&gt;&lt;li&gt;libmodbus %4：GNU 較寬鬆通用公共授權條款第 2.1 版或更新版本 (LGPL-2.1-or-later)&lt;/li&gt;&lt;li&gt;GoogleTest (僅用於測試)：BSD 3-Clause 授權條款&lt;/li&gt;&lt;/ul&gt;</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/AboutDialog.cpp" line="45"/>
+        <location filename="../ui/help/AboutDialog.cpp" line="45"/>
         <source>About &amp;Qt</source>
         <translation>關於 Qt(&amp;Q)</translation>
     </message>
@@ -409,47 +424,47 @@
 <context>
     <name>opentop::AlarmBanner</name>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="16"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="16"/>
         <source>Show</source>
         <translation>顯示</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="17"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="17"/>
         <source>Dismiss</source>
         <translation>略過</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="24"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="24"/>
         <source>Open the drive&apos;s alarm history</source>
         <translation>開啟此驅動器的警報記錄</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="25"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="25"/>
         <source>Hide this alarm until it is cleared; a new alarm shows again</source>
         <translation>在此警報解除前不再顯示；發生新警報時會再次顯示</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="85"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="85"/>
         <source>Machine %1: %2 %3 — %4</source>
         <translation>機號 %1：%2 %3 — %4</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="89"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="89"/>
         <source>Machine %1: %2 %3</source>
         <translation>機號 %1：%2 %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="91"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="91"/>
         <source>Machine %1: alarm %2h (not in the alarm table)</source>
         <translation>機號 %1：警報 %2h (不在警報表中)</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="95"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="95"/>
         <source>Machine %1: an alarm is active</source>
         <translation>機號 %1：有警報發生中</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/alarms/AlarmBanner.cpp" line="98"/>
+        <location filename="../ui/alarms/AlarmBanner.cpp" line="98"/>
         <source>(%n more drive(s) with an alarm)</source>
         <translation>
             <numerusform>(另有 %n 台驅動器發生警報)</numerusform>
@@ -459,84 +474,84 @@
 <context>
     <name>opentop::AlarmExport</name>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Machine</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Kind</source>
         <translation>類別</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Record</source>
         <translation>記錄</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
         <source>Code</source>
         <translation>代碼</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Panel code</source>
         <translation>面板代碼</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Name</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Cleared by</source>
         <translation>解除方式</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Cause</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Remedy</source>
         <translation>對策</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="49"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="49"/>
         <source>alarm</source>
         <translation>警報</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="50"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>warning</source>
         <translation>警告</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="58"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="58"/>
         <source>unknown code</source>
         <translation>未知代碼</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="103"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="103"/>
         <source>machine %1: %2</source>
         <translation>機號 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="126"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="126"/>
         <source>%n record(s) of %1 drive(s) written to %2.</source>
         <translation>
             <numerusform>已將 %1 台驅動器的 %n 筆記錄寫入 %2。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmExport.cpp" line="131"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="131"/>
         <source>Not everything could be read: %1</source>
         <translation>部分資料無法讀取：%1</translation>
     </message>
@@ -544,57 +559,57 @@
 <context>
     <name>opentop::AlarmHistory</name>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="68"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="68"/>
         <source>%1: erases the %2</source>
         <translation>%1：清除%2</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="107"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="107"/>
         <source>%1 drives have no alarm reset command</source>
         <translation>%1 驅動器沒有警報重置指令</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="182"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="182"/>
         <source>The alarm</source>
         <translation>此警報</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="184"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="184"/>
         <source>%1 is cleared.</source>
         <translation>%1 已解除。</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="185"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="185"/>
         <source>No alarm was active; nothing to clear.</source>
         <translation>沒有發生中的警報，無需解除。</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="188"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="188"/>
         <source>%1 is still active: only a power cycle clears it. %2</source>
         <translation>%1 仍在發生中：只能斷電重新上電解除。%2</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="193"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="193"/>
         <source>%1 is still active: the drive is set to clear alarms by a power restart only (%2). Remove the cause, turn the power off, wait 5 s and turn it on again; or change that setting to allow the reset command.</source>
         <translation>%1 仍在發生中：此驅動器設定為僅能斷電重新上電解除警報 (%2)。請排除原因，關閉電源，等待 5 s 後再開啟；或變更該設定以允許重置指令。</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="199"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="199"/>
         <source>%1 is still active: its cause is still present%2. Remove the cause and turn off the start signal, then reset again.</source>
         <translation>%1 仍在發生中：原因仍然存在%2。請排除原因並關閉啟動訊號，然後再次重置。</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="205"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="205"/>
         <source>The reset was accepted; whether an alarm is still active could not be read.</source>
         <translation>重置已被接受，但無法讀取是否仍有警報發生中。</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="207"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="207"/>
         <source>The reset failed: %1</source>
         <translation>重置失敗：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/alarms/AlarmHistory.cpp" line="210"/>
+        <location filename="../model/alarms/AlarmHistory.cpp" line="210"/>
         <source>(The drive refused the reset: %1)</source>
         <translation>(驅動器拒絕重置：%1)</translation>
     </message>
@@ -602,8 +617,8 @@
 <context>
     <name>opentop::AlarmRecords</name>
     <message>
-        <location filename="../main/model/alarms/AlarmRecords.cpp" line="90"/>
-        <location filename="../main/model/alarms/AlarmRecords.cpp" line="101"/>
+        <location filename="../model/alarms/AlarmRecords.cpp" line="90"/>
+        <location filename="../model/alarms/AlarmRecords.cpp" line="101"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -611,92 +626,92 @@
 <context>
     <name>opentop::AlarmsCommand</name>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="163"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="163"/>
         <source>Show alarm and warning histories with causes and remedies; reset, erase</source>
         <translation>顯示警報與警告記錄及其原因與對策；重置、清除</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="170"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="170"/>
         <source>Send the alarm reset command, then tell whether the alarm is cleared or needs a power cycle (needs --yes; exit 4 when it stays active).</source>
         <translation>送出警報重置指令，並告知警報是否已解除或需斷電重新上電 (需要 --yes；警報仍存在時結束碼為 4)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="172"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="172"/>
         <source>Erase the alarm and warning records (needs --yes).</source>
         <translation>清除警報與警告記錄 (需要 --yes)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="173"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="173"/>
         <source>Confirm --reset and --clear-records.</source>
         <translation>確認 --reset 與 --clear-records。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="184"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="184"/>
         <source>error: usage: %1 (one machine number)</source>
         <translation>錯誤：用法：%1 (一個機號)</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="192"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="192"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="198"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="198"/>
         <source>error: machine number %1 (%2) keeps no alarm or warning records</source>
         <translation>錯誤：機號 %1 (%2) 不保存警報或警告記錄</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="205"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="205"/>
         <source>error: %1 drives have no %2 command</source>
         <translation>錯誤：%1 驅動器沒有%2指令</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="207"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="207"/>
         <source>alarm reset</source>
         <translation>警報重置</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="207"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="207"/>
         <source>record erase</source>
         <translation>記錄清除</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="218"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="218"/>
         <source>These change machine number %1; add --yes to send them:</source>
         <translation>以下指令將作用於機號 %1；加上 --yes 才會送出：</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="222"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="222"/>
         <source>— clears the active alarm if its cause is gone and it is not one that only a power cycle clears</source>
         <translation>— 若原因已排除，且不屬於僅能斷電重新上電解除的警報，即解除發生中的警報</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="246"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="246"/>
         <source>Machine number %1 (%2)</source>
         <translation>機號 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="272"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="272"/>
         <source>Alarm reset: %1</source>
         <translation>警報重置：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="295"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="295"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>已清除：%1 (%2 筆記錄)；%3</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="298"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="298"/>
         <source>read back empty.</source>
         <translation>回讀為空。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="299"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="299"/>
         <source>NOT empty when read back.</source>
         <translation>回讀結果「不是」空的。</translation>
     </message>
     <message>
-        <location filename="../main/cli/AlarmsCommand.cpp" line="302"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="302"/>
         <source>Erasing failed: %1</source>
         <translation>清除失敗：%1</translation>
     </message>
@@ -704,143 +719,143 @@
 <context>
     <name>opentop::AlarmsPage</name>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="59"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="59"/>
         <source>&amp;Re-read</source>
         <translation>重新讀取(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="60"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="60"/>
         <source>Reset &amp;alarm…</source>
         <translation>警報重置(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="61"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="61"/>
         <source>&amp;Clear records…</source>
         <translation>清除記錄(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="65"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="65"/>
         <source>Alarms and warnings of machine %1 (%2)</source>
         <translation>機號 %1 (%2) 的警報與警告</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>Code</source>
         <translation>代碼</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>Panel</source>
         <translation>面板</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>Name</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
         <source>Cleared by</source>
         <translation>解除方式</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="102"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="102"/>
         <source>Cause and remedy</source>
         <translation>原因與對策</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="103"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="103"/>
         <source>Communication error register</source>
         <translation>通訊錯誤暫存器</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="115"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="115"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>送出警報重置指令，並告知警報是否已解除或只能斷電重新上電解除</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="117"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="117"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>清除驅動器保存的警報與警告記錄</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="122"/>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="293"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="122"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
         <source>Select a record to see its cause and remedy.</source>
         <translation>選擇一筆記錄以查看其原因與對策。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="123"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="123"/>
         <source>Not read yet.</source>
         <translation>尚未讀取。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="125"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>此驅動器不保存警報或警告記錄。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="155"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="155"/>
         <source>Alarm state: %1</source>
         <translation>警報狀態：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="247"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="247"/>
         <source>Reading the records…</source>
         <translation>正在讀取記錄…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="263"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="263"/>
         <source>No alarm is active.</source>
         <translation>目前無警報。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="265"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="265"/>
         <source>Alarm active: %1 %2.</source>
         <translation>警報發生中：%1 %2。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="267"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="267"/>
         <source>An alarm is active.</source>
         <translation>有警報發生中。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="270"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="270"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>此驅動器設定為僅能斷電重新上電解除警報 (%1)：Alarm-Reset 無法解除任何警報。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="274"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="274"/>
         <source>Could not be read: %1</source>
         <translation>無法讀取：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="300"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="300"/>
         <source>This drive has no communication error register.</source>
         <translation>此驅動器沒有通訊錯誤暫存器。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="302"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="302"/>
         <source>%1: could not be read.</source>
         <translation>%1：無法讀取。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="304"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="304"/>
         <source>%1: no error (0).</source>
         <translation>%1：無錯誤 (0)。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="307"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="307"/>
         <source>%1: %2, not a known code.</source>
         <translation>%1：%2，非已知代碼。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="309"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="309"/>
         <source>%1: %2 %3
 Cause: %4
 Remedy: %5</source>
@@ -849,153 +864,153 @@ Remedy: %5</source>
 對策：%5</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="321"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="321"/>
         <source>No alarm records</source>
         <translation>無警報記錄</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="321"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="321"/>
         <source>No warning records</source>
         <translation>無警告記錄</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="327"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="327"/>
         <source>%1: could not be read: %2</source>
         <translation>%1：無法讀取：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="330"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="330"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1：共 %3 筆記錄中的 %2 筆，最新的在前</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="341"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="341"/>
         <source>unknown code</source>
         <translation>未知代碼</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="370"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="370"/>
         <source>Record %1: code %2 is not in the %3 table.</source>
         <translation>記錄 %1：代碼 %2 不在%3表中。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="375"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="375"/>
         <source>%1 %2 (record %3)</source>
         <translation>%1 %2 (記錄 %3)</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="377"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="377"/>
         <source>Cause: %1</source>
         <translation>原因：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="379"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="379"/>
         <source>Remedy: %1</source>
         <translation>對策：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="381"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="381"/>
         <source>To clear: %1</source>
         <translation>解除方法：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="410"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="410"/>
         <source>Writes: %1</source>
         <translation>寫入：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="411"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="411"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>若原因已排除，即可解除發生中的警報。部分警報只能斷電重新上電解除；結果會顯示是哪一種。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="414"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="414"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>此驅動器設定為僅能斷電重新上電解除警報 (%1)。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="416"/>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="418"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="416"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="418"/>
         <source>Reset alarm</source>
         <translation>警報重置</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="417"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="417"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>要對機號 %1 送出警報重置指令嗎？</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="425"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="425"/>
         <source>Sending the alarm reset…</source>
         <translation>正在送出警報重置…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="431"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="431"/>
         <source>Alarm reset: %1</source>
         <translation>警報重置：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="434"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="434"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>請關閉驅動器電源，等待 5 s 後再開啟。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="445"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="445"/>
         <source>%1 (%2 records)</source>
         <translation>%1 (%2 筆記錄)</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="447"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="447"/>
         <source>the alarm and warning records</source>
         <translation>警報與警告記錄</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="448"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="448"/>
         <source>Clear records</source>
         <translation>清除記錄</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="449"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="449"/>
         <source>Erase %1 of machine %2?</source>
         <translation>要清除機號 %2 的%1嗎？</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="449"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="449"/>
         <source> and </source>
         <translation> 與 </translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="450"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="450"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>記錄清除後無法復原。寫入：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="452"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="452"/>
         <source>Erase</source>
         <translation>清除</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="459"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="459"/>
         <source>Erasing the records…</source>
         <translation>正在清除記錄…</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="467"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="467"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>已清除：%1 (%2 筆記錄)；%3</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="470"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="470"/>
         <source>read back empty.</source>
         <translation>回讀為空。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="471"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="471"/>
         <source>NOT empty when read back.</source>
         <translation>回讀結果「不是」空的。</translation>
     </message>
     <message>
-        <location filename="../main/ui/alarms/AlarmsPage.cpp" line="473"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="473"/>
         <source>Erasing failed: %1</source>
         <translation>清除失敗：%1</translation>
     </message>
@@ -1003,100 +1018,100 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupCommand</name>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="34"/>
+        <location filename="../cli/BackupCommand.cpp" line="34"/>
         <source>Save every setting of drives to a backup file (written only when all were read)</source>
         <translation>將驅動器的所有設定儲存至備份檔 (全部讀取成功才寫入)</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="40"/>
+        <location filename="../cli/BackupCommand.cpp" line="40"/>
         <source>The backup file to write (replaced atomically).</source>
         <translation>要寫入的備份檔 (整個檔案一次取代)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="41"/>
+        <location filename="../cli/BackupCommand.cpp" line="41"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="43"/>
+        <location filename="../cli/BackupCommand.cpp" line="43"/>
         <source>Every drive the connection knows (a simulated bus), or every drive a scan finds.</source>
         <translation>連線已知的所有驅動器 (模擬匯流排)，或掃描找到的所有驅動器。</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="51"/>
+        <location filename="../cli/BackupCommand.cpp" line="51"/>
         <source>error: name the machine numbers, or give --all: backup ID... -o FILE</source>
         <translation>錯誤：請指定機號，或使用 --all：backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="60"/>
-        <location filename="../main/cli/BackupCommand.cpp" line="220"/>
-        <location filename="../main/cli/BackupCommand.cpp" line="226"/>
+        <location filename="../cli/BackupCommand.cpp" line="60"/>
+        <location filename="../cli/BackupCommand.cpp" line="220"/>
+        <location filename="../cli/BackupCommand.cpp" line="226"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="69"/>
+        <location filename="../cli/BackupCommand.cpp" line="69"/>
         <source>scanning the bus for drives…</source>
         <translation>正在掃描匯流排上的驅動器…</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="99"/>
+        <location filename="../cli/BackupCommand.cpp" line="99"/>
         <source>error: the port %1 was lost while reading %2 (%3)</source>
         <translation>錯誤：讀取 %2 時連接埠 %1 中斷 (%3)</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="102"/>
-        <location filename="../main/cli/BackupCommand.cpp" line="222"/>
+        <location filename="../cli/BackupCommand.cpp" line="102"/>
+        <location filename="../cli/BackupCommand.cpp" line="222"/>
         <source>nothing written to %1</source>
         <translation>未寫入任何資料至 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="110"/>
+        <location filename="../cli/BackupCommand.cpp" line="110"/>
         <source>error: give the file to write: backup ID... -o FILE</source>
         <translation>錯誤：請指定要寫入的檔案：backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="114"/>
+        <location filename="../cli/BackupCommand.cpp" line="114"/>
         <source>error: %1; nothing read</source>
         <translation>錯誤：%1；未讀取任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="126"/>
+        <location filename="../cli/BackupCommand.cpp" line="126"/>
         <source>interrupted: nothing written</source>
         <translation>已中斷：未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="130"/>
+        <location filename="../cli/BackupCommand.cpp" line="130"/>
         <source>error: no drive answers on %1; nothing written</source>
         <translation>錯誤：%1 上沒有驅動器回應；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="149"/>
+        <location filename="../cli/BackupCommand.cpp" line="149"/>
         <source>machine number %1</source>
         <translation>機號 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="164"/>
+        <location filename="../cli/BackupCommand.cpp" line="164"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>讀取機號 %1 時中斷：未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="172"/>
+        <location filename="../cli/BackupCommand.cpp" line="172"/>
         <source>%1: cannot read %2</source>
         <translation>%1：無法讀取 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="174"/>
+        <location filename="../cli/BackupCommand.cpp" line="174"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1 含有定義檔不允許的值，此備份將無法還原：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="188"/>
+        <location filename="../cli/BackupCommand.cpp" line="188"/>
         <source>%1: %2 settings read in %3 requests, %4 ms</source>
         <translation>%1：以 %3 次請求讀取 %2 項設定，%4 ms</translation>
     </message>
     <message>
-        <location filename="../main/cli/BackupCommand.cpp" line="195"/>
+        <location filename="../cli/BackupCommand.cpp" line="195"/>
         <source>%1: reading failed, %2 of %3 settings read (%4 requests, %5 ms)</source>
         <translation>%1：讀取失敗，已讀取 %3 項設定中的 %2 項 (%4 次請求，%5 ms)</translation>
     </message>
@@ -1104,7 +1119,7 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupDevice</name>
     <message>
-        <location filename="../main/model/files/BackupDevice.cpp" line="75"/>
+        <location filename="../model/files/BackupDevice.cpp" line="75"/>
         <source>drive %1 (%2)</source>
         <translation>驅動器 %1 (%2)</translation>
     </message>
@@ -1112,150 +1127,150 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupDialog</name>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="27"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="27"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="28"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="28"/>
         <source>&amp;Save the drives read</source>
         <translation>儲存已讀取的驅動器(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="29"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="29"/>
         <source>C&amp;lose</source>
         <translation>關閉(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="31"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="31"/>
         <source>Back up drives</source>
         <translation>備份驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Machine number</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Progress</source>
         <translation>進度</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="40"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="40"/>
         <source>Save only the drives that were read; the others are left out</source>
         <translation>僅儲存已讀取的驅動器；其餘略過</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="42"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="42"/>
         <source>Stop after the drive being read</source>
         <translation>讀完目前這台驅動器後停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="87"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="87"/>
         <source>Waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="91"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="91"/>
         <source>%v of %m drives</source>
         <translation>%v / %m 台驅動器</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupDialog.cpp" line="92"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="92"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>正在讀取 %n 台驅動器的設定…</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="102"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="102"/>
         <source>Stopping after the drive being read…</source>
         <translation>讀完目前這台驅動器後將停止…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="119"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="119"/>
         <source>Not read (cancelled)</source>
         <translation>未讀取 (已取消)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="129"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="129"/>
         <source>drive %1: not identified, nothing read</source>
         <translation>驅動器 %1：無法識別，未讀取任何資料</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="130"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="130"/>
         <source>Not identified</source>
         <translation>無法識別</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="138"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="138"/>
         <source>Reading…</source>
         <translation>讀取中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupDialog.cpp" line="150"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="150"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>於 %1 ms 內讀取 %n 項設定</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="155"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="155"/>
         <source>%1: cannot read %2</source>
         <translation>%1：無法讀取 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="157"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="157"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1 含有定義檔不允許的值，此備份將無法還原：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
         <source>Value not allowed</source>
         <translation>不允許的值</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
         <source>Read failed</source>
         <translation>讀取失敗</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="180"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="180"/>
         <source>Not read: drive(s) %1. Nothing has been saved yet.</source>
         <translation>未讀取：驅動器 %1。尚未儲存任何資料。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupDialog.cpp" line="186"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="186"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>要儲存已讀取的 %n 台驅動器嗎？</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupDialog.cpp" line="210"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="210"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>已將 %n 台驅動器儲存至 %1。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="216"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="216"/>
         <source>Left out (not read): drive(s) %1.</source>
         <translation>已略過 (未讀取)：驅動器 %1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupDialog.cpp" line="220"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="220"/>
         <source>Could not save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
@@ -1263,12 +1278,12 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFile</name>
     <message>
-        <location filename="../main/model/files/BackupFile.cpp" line="284"/>
+        <location filename="../model/files/BackupFile.cpp" line="284"/>
         <source>cannot read %1: %2</source>
         <translation>無法讀取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFile.cpp" line="291"/>
+        <location filename="../model/files/BackupFile.cpp" line="291"/>
         <source>%1 is larger than %2 MB, the most a backup file may hold (a backup of 247 drives is far smaller); not a backup file</source>
         <translation>%1 大於備份檔上限 %2 MB (即使 247 台驅動器的備份也遠小於此)；不是備份檔</translation>
     </message>
@@ -1276,122 +1291,122 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFileParser</name>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="48"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="48"/>
         <source>not a JSON file: %1 at byte %2</source>
         <translation>不是 JSON 檔：%1 (第 %2 位元組)</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="52"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="52"/>
         <source>not an OpenTOP backup file: the JSON is not an object</source>
         <translation>不是 OpenTOP 備份檔：JSON 不是物件</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="62"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="62"/>
         <source>&quot;created&quot; is not an ISO 8601 date and time</source>
         <translation>&quot;created&quot; 不是 ISO 8601 日期時間</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="74"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="74"/>
         <source>the file holds no drives (&quot;devices&quot; must be a non-empty list)</source>
         <translation>檔案中沒有驅動器 (&quot;devices&quot; 必須是非空的清單)</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="81"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="81"/>
         <source>%1: not a drive</source>
         <translation>%1：不是驅動器</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="83"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="83"/>
         <source>machine number %1 appears twice</source>
         <translation>機號 %1 出現兩次</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="97"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="97"/>
         <source>not an OpenTOP backup file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>不是 OpenTOP 備份檔 (&quot;format&quot; 為 &quot;%1&quot;，而非 &quot;%2&quot;)</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="99"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="99"/>
         <source>not an OpenTOP backup file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>不是 OpenTOP 備份檔 (沒有 &quot;format&quot;: &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="104"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="104"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot; 必須是 1 以上的整數</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="106"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="106"/>
         <source>written by a newer OpenTOP (format version %1); this version reads format version %2</source>
         <translation>由較新版的 OpenTOP 寫入 (格式版本 %1)；此版本可讀取格式版本 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="112"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="112"/>
         <source>the file has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>檔案沒有檢查碼 (&quot;checksum&quot;: &quot;sha256:…&quot;)；並非由 OpenTOP 寫入，或寫入後曾被修改</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="117"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="117"/>
         <source>the file was changed after it was written (checksum mismatch)</source>
         <translation>檔案寫入後曾被修改 (檢查碼不符)</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="127"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="127"/>
         <source>%1: &quot;slave&quot; must be a machine number 1–247</source>
         <translation>%1：&quot;slave&quot; 必須是 1–247 的機號</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="128"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="128"/>
         <source>%1 (machine number %2)</source>
         <translation>%1 (機號 %2)</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="132"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="132"/>
         <source>%1: unknown family &quot;%2&quot;; known: %3</source>
         <translation>%1：未知的系列 &quot;%2&quot;；已知：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="137"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="137"/>
         <source>%1: &quot;variant&quot; must be text or null</source>
         <translation>%1：&quot;variant&quot; 必須是文字或 null</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="142"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="142"/>
         <source>%1: unknown variant &quot;%2&quot; of family %3; known: %4</source>
         <translation>%1：%3 系列沒有機型 &quot;%2&quot;；已知：%4</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="144"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="144"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="151"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="151"/>
         <source>%1: &quot;parameters&quot; must be a list</source>
         <translation>%1：&quot;parameters&quot; 必須是清單</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="171"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="171"/>
         <source>%1: no &quot;name&quot;</source>
         <translation>%1：沒有 &quot;name&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="174"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="174"/>
         <source>%1 %2: &quot;registers&quot; must be a list</source>
         <translation>%1 %2：&quot;registers&quot; 必須是清單</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="178"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="178"/>
         <source>%1 %2: registers must be numbers 0–65535</source>
         <translation>%1 %2：暫存器值必須是 0–65535 的數字</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="184"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="184"/>
         <source>%1 %2: address &quot;%3&quot;, but the %4 profile has it at %5</source>
         <translation>%1 %2：位址為 &quot;%3&quot;，但 %4 定義檔中位於 %5</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupFileParser.cpp" line="209"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="209"/>
         <source>%1: %2: &quot;value&quot; %3 does not match its registers (%4)</source>
         <translation>%1：%2：&quot;value&quot; %3 與其暫存器 (%4) 不符</translation>
     </message>
@@ -1399,27 +1414,27 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupValidator</name>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="16"/>
+        <location filename="../model/files/BackupValidator.cpp" line="16"/>
         <source>unknown parameter &quot;%1&quot;: the %2 profile has no such setting</source>
         <translation>未知參數 &quot;%1&quot;：%2 定義檔中沒有此設定</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="21"/>
+        <location filename="../model/files/BackupValidator.cpp" line="21"/>
         <source>&quot;%1&quot; is not a setting that backups hold</source>
         <translation>&quot;%1&quot; 不是備份所保存的設定</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="25"/>
+        <location filename="../model/files/BackupValidator.cpp" line="25"/>
         <source>&quot;%1&quot; appears twice</source>
         <translation>&quot;%1&quot; 出現兩次</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="28"/>
+        <location filename="../model/files/BackupValidator.cpp" line="28"/>
         <source>%1: %2 registers, but the parameter has %3</source>
         <translation>%1：%2 個暫存器，但此參數有 %3 個</translation>
     </message>
     <message>
-        <location filename="../main/model/files/BackupValidator.cpp" line="53"/>
+        <location filename="../model/files/BackupValidator.cpp" line="53"/>
         <source>%1: its allowed values depend on %2, which the file does not hold</source>
         <translation>%1：其允許值取決於 %2，但檔案中沒有該項</translation>
     </message>
@@ -1427,87 +1442,87 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupViewer</name>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="22"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="22"/>
         <source>Backup file</source>
         <translation>備份檔</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
         <source>Label</source>
         <translation>標籤</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
         <source>Registers</source>
         <translation>暫存器</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="34"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="34"/>
         <source>&amp;Open…</source>
         <translation>開啟(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="35"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Open another backup file</source>
         <translation>開啟其他備份檔</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="36"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="36"/>
         <source>C&amp;lose</source>
         <translation>關閉(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="56"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="56"/>
         <source>%1: no such file</source>
         <translation>%1：檔案不存在</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="62"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="62"/>
         <source>the file could not be read</source>
         <translation>無法讀取檔案</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="63"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="63"/>
         <source>Backup file %1</source>
         <translation>備份檔 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="71"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="71"/>
         <source>Open backup file</source>
         <translation>開啟備份檔</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="72"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="72"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 備份檔 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="94"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="94"/>
         <source>File: %1</source>
         <translation>檔案：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="95"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="95"/>
         <source>Refused: %1</source>
         <translation>已拒絕：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="110"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="110"/>
         <source>, %1 bit/s, parity %2, %3 stop bit(s)</source>
         <translation>，%1 bit/s，同位元 %2，%3 個停止位元</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="112"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="112"/>
         <source>File: %1
 Written by %2 on %3 (UTC)
 Read from: %4
@@ -1518,17 +1533,17 @@ Drives: %5</source>
 驅動器：%5</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="121"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="121"/>
         <source>%1 %2, firmware %3</source>
         <translation>%1 %2，韌體 %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/BackupViewer.cpp" line="123"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="123"/>
         <source>(variant unknown)</source>
         <translation>(機型未知)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/BackupViewer.cpp" line="125"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="125"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n 項設定</numerusform>
@@ -1538,28 +1553,28 @@ Drives: %5</source>
 <context>
     <name>opentop::BusDocks</name>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="24"/>
+        <location filename="../ui/main/BusDocks.cpp" line="24"/>
         <source>Traffic log</source>
         <translation>通訊記錄</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="31"/>
+        <location filename="../ui/main/BusDocks.cpp" line="31"/>
         <source>Bus overview</source>
         <translation>匯流排總覽</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="32"/>
+        <location filename="../ui/main/BusDocks.cpp" line="32"/>
         <source>Trends</source>
         <translation>趨勢圖</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="33"/>
+        <location filename="../ui/main/BusDocks.cpp" line="33"/>
         <source>Communication groups</source>
         <translation>通訊群組</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/BusDocks.cpp" line="36"/>
-        <location filename="../main/ui/main/BusDocks.cpp" line="68"/>
+        <location filename="../ui/main/BusDocks.cpp" line="36"/>
+        <location filename="../ui/main/BusDocks.cpp" line="68"/>
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -1567,42 +1582,42 @@ Drives: %5</source>
 <context>
     <name>opentop::BusGroups</name>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="108"/>
+        <location filename="../model/bus/BusGroups.cpp" line="108"/>
         <source>machine number %1 is the parent of communication group %1: what is sent to it is also executed by %2 (children do not reply)</source>
         <translation>機號 %1 是通訊群組 %1 的群組母站：送給它的指令也會由 %2 執行 (群組子站不回應)</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="118"/>
+        <location filename="../model/bus/BusGroups.cpp" line="118"/>
         <source>%1 and %2</source>
         <translation>%1 與 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="127"/>
+        <location filename="../model/bus/BusGroups.cpp" line="127"/>
         <source>This also reaches machine number %1 (the child of communication group %2; it executes it without replying).</source>
         <translation>此操作也會送達機號 %1 (通訊群組 %2 的群組子站；會執行但不回應)。</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="131"/>
+        <location filename="../model/bus/BusGroups.cpp" line="131"/>
         <source>This also reaches machine numbers %1 (the children of communication group %2; they execute it without replying).</source>
         <translation>此操作也會送達機號 %1 (通訊群組 %2 的群組子站；會執行但不回應)。</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="141"/>
+        <location filename="../model/bus/BusGroups.cpp" line="141"/>
         <source>child of %1</source>
         <translation>群組 %1 子站</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="144"/>
+        <location filename="../model/bus/BusGroups.cpp" line="144"/>
         <source>parent of %1</source>
         <translation>群組 %1 母站</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="152"/>
+        <location filename="../model/bus/BusGroups.cpp" line="152"/>
         <source>machine number %1 is a child of %2 and itself a parent: a child must not be a group parent</source>
         <translation>機號 %1 是群組 %2 的子站，本身又是母站：群組子站不可同時為群組母站</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusGroups.cpp" line="157"/>
+        <location filename="../model/bus/BusGroups.cpp" line="157"/>
         <source>machine number %1 is in communication group %2, but no drive %2 is known: frames to %2 reach %1 although nothing answers</source>
         <translation>機號 %1 屬於通訊群組 %2，但找不到機號 %2 的驅動器：送往 %2 的訊框會送達 %1，但不會有任何回應</translation>
     </message>
@@ -1610,95 +1625,95 @@ Drives: %5</source>
 <context>
     <name>opentop::BusListModel</name>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="71"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="71"/>
         <source>The machine number in hexadecimal, as the drive&apos;s rotary switches SW1 (high digit) and SW2 (low digit) are set</source>
         <translation>以十六進位表示的機號，即驅動器旋轉開關 SW1 (高位) 與 SW2 (低位) 的設定</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="74"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="74"/>
         <source>The drive&apos;s MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, purple external interrupt, blue memory or communication error, grey no answer</source>
         <translation>驅動器的 MONITOR LED：紅色為警報、綠色為就緒、橘色為 CW、天藍色為 CCW、紫色為外部中斷、藍色為記憶體或通訊錯誤、灰色為無回應</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="81"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="81"/>
         <source>LED</source>
         <translation>LED</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="83"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="83"/>
         <source>Machine no.</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="85"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="85"/>
         <source>Hex / switches</source>
         <translation>十六進位 / 開關</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="87"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="87"/>
         <source>Family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="89"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
         <source>Model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
         <source>Firmware</source>
         <translation>韌體</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
         <source>Control priority</source>
         <translation>控制優先權</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="107"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="107"/>
         <source>Two drives may share machine number %1 (%2, %3): check the SW1/SW2 switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
         <translation>可能有兩台驅動器使用相同機號 %1 (%2、%3)：請檢查線上每台驅動器的 SW1/SW2 開關，讓每台使用不同的機號並重新上電；終端電阻設定不良或 A/B 線對調也會使回應資料損壞。</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="126"/>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="130"/>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="132"/>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="138"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="126"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="130"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="138"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="129"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="129"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 機型未知</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="132"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="159"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="159"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>狀態燈 %1：%2 (%3)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="162"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="162"/>
         <source>Status light grey: not live — %1</source>
         <translation>狀態燈灰色：非即時 — %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="167"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="167"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>此驅動器不回報機型。請從右鍵選單 (機型) 中選擇，以便依正確的範圍檢查數值。</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusListModel.cpp" line="176"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="176"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>此驅動器由 I/O 端子接收運轉指令；要透過匯流排試運轉，需設為通訊優先。</translation>
     </message>
@@ -1706,7 +1721,7 @@ Drives: %5</source>
 <context>
     <name>opentop::BusMemory</name>
     <message>
-        <location filename="../main/model/bus/BusMemory.cpp" line="44"/>
+        <location filename="../model/bus/BusMemory.cpp" line="44"/>
         <source>the simulated bus</source>
         <translation>模擬匯流排</translation>
     </message>
@@ -1714,7 +1729,7 @@ Drives: %5</source>
 <context>
     <name>opentop::BusOverview</name>
     <message>
-        <location filename="../main/ui/bus/BusOverview.cpp" line="37"/>
+        <location filename="../ui/bus/BusOverview.cpp" line="37"/>
         <source>Double-click a drive to open its pages.</source>
         <translation>按兩下驅動器以開啟其頁面。</translation>
     </message>
@@ -1722,67 +1737,67 @@ Drives: %5</source>
 <context>
     <name>opentop::BusOverviewModel</name>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="89"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="89"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="91"/>
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="93"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="95"/>
         <source>Display</source>
         <translation>顯示</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="97"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="97"/>
         <source>Target</source>
         <translation>目標</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="99"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="99"/>
         <source>Load</source>
         <translation>負載</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="101"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="101"/>
         <source>Alarm</source>
         <translation>警報</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="103"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="103"/>
         <source>Last answer</source>
         <translation>最後回應</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="118"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="118"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="125"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="125"/>
         <source>connection lost; %1</source>
         <translation>連線中斷；%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="127"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="127"/>
         <source>no answer: %1; %2</source>
         <translation>無回應：%1；%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="158"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="158"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusOverviewModel.cpp" line="161"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="161"/>
         <source>active</source>
         <translation>發生中</translation>
     </message>
@@ -1790,142 +1805,142 @@ Drives: %5</source>
 <context>
     <name>opentop::BusPanel</name>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="32"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="32"/>
         <source>&amp;Scan</source>
         <translation>掃描(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="35"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="35"/>
         <source>A&amp;dd drive…</source>
         <translation>新增驅動器(&amp;D)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="37"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="37"/>
         <source>Ca&amp;ncel</source>
         <translation>取消(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="46"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="46"/>
         <source>Ask every machine number of the range who answers</source>
         <translation>逐一詢問範圍內的每個機號是否有回應</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="48"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="48"/>
         <source>&amp;from</source>
         <translation>從(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="50"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="50"/>
         <source>&amp;to</source>
         <translation>到(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="55"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="55"/>
         <source>Machine numbers 1–247 (the DBU&apos;s SW1/SW2 switches in hex)</source>
         <translation>機號 1–247 (DBU 的 SW1/SW2 開關以十六進位設定)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="72"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="72"/>
         <source>Identify one machine number and add it to the list</source>
         <translation>識別一個機號並加入清單</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="77"/>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="182"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="77"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="182"/>
         <source>%v of %m</source>
         <translation>%v / %m</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="78"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="78"/>
         <source>Scan progress</source>
         <translation>掃描進度</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="80"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="80"/>
         <source>Stop the scan after the request on the wire</source>
         <translation>目前線上的請求完成後停止掃描</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="113"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="113"/>
         <source>Drives on the bus</source>
         <translation>匯流排上的驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="173"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="173"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%v / %m (機號 %1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="183"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="183"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>正在 %3 上掃描機號 %1–%2，每個 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="202"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="202"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>目前線上的請求完成後取消…</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="219"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="219"/>
         <source>Did not answer the last scan.</source>
         <translation>上次掃描未回應。</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="225"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="225"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>掃描在機號 %1 停止：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/bus/BusPanel.cpp" line="230"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="230"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>掃描於機號 %1–%2 後取消 (%3 / %4)：找到 %n 台驅動器。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/bus/BusPanel.cpp" line="238"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="238"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>在機號 %1–%2 中找到 %n 台驅動器，耗時 %3 s。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="254"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="254"/>
         <source>Add drive</source>
         <translation>新增驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="254"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="254"/>
         <source>Machine number (1–247; the DBU shows it in hex on SW1/SW2):</source>
         <translation>機號 (1–247；DBU 以十六進位設定於 SW1/SW2)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="264"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="264"/>
         <source>Asking machine number %1…</source>
         <translation>正在詢問機號 %1…</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="269"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="269"/>
         <source>Machine number %1: %2 added.</source>
         <translation>機號 %1：已新增 %2。</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="271"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="271"/>
         <source>Machine number %1: %2 %3</source>
         <translation>機號 %1：%2 %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="329"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="329"/>
         <source>&amp;Variant</source>
         <translation>機型(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="345"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="345"/>
         <source>&amp;Identify again</source>
         <translation>重新識別(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusPanel.cpp" line="351"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="351"/>
         <source>&amp;Remove from list</source>
         <translation>從清單移除(&amp;R)</translation>
     </message>
@@ -1933,42 +1948,42 @@ Drives: %5</source>
 <context>
     <name>opentop::BusRecallBar</name>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="20"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="20"/>
         <source>&amp;Scan the bus</source>
         <translation>掃描匯流排(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="28"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="28"/>
         <source>Hide this bar</source>
         <translation>隱藏此列</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="29"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="29"/>
         <source>Hide</source>
         <translation>隱藏</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="46"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
         <source>Last time on %1: %2.</source>
         <translation>上次在 %1：%2。</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="48"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="48"/>
         <source>&amp;Restore the drive last seen</source>
         <translation>恢復上次出現的驅動器(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="49"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="49"/>
         <source>&amp;Restore the %1 drives last seen</source>
         <translation>恢復上次出現的 %1 台驅動器(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="50"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="50"/>
         <source>Identify the drives at these machine numbers again, with the variants set last time</source>
         <translation>以上次設定的機型，重新識別這些機號上的驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/bus/BusRecallBar.cpp" line="60"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="60"/>
         <source>No drive is known on %1 yet. Scan the bus to find the drives.</source>
         <translation>%1 上尚無已知的驅動器。請掃描匯流排以尋找驅動器。</translation>
     </message>
@@ -1976,17 +1991,17 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../main/model/bus/BusScanner.cpp" line="156"/>
+        <location filename="../model/bus/BusScanner.cpp" line="156"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
         <translation>兩次收到錯亂的回應 (%1)：可能有兩台驅動器使用相同機號 %2；請檢查其 SW1/SW2 開關</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusScanner.cpp" line="161"/>
+        <location filename="../model/bus/BusScanner.cpp" line="161"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>有回應，但沒有符合的定義檔 (%1)</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusScanner.cpp" line="191"/>
+        <location filename="../model/bus/BusScanner.cpp" line="191"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>第一次回應過慢 (超過 %1 ms 等待時間)；加長等待時間可使此匯流排的掃描更可靠</translation>
     </message>
@@ -1994,42 +2009,42 @@ Drives: %5</source>
 <context>
     <name>opentop::BusSpec</name>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="57"/>
+        <location filename="../model/bus/BusSpec.cpp" line="57"/>
         <source>&quot;%1&quot;: the braces do not pair; a drive&apos;s defects are written in braces after its number, e.g. dbu200@3{firmware=1.4,stall}</source>
         <translation>&quot;%1&quot;：大括號不成對；驅動器的缺陷寫在其機號後的大括號內，例如 dbu200@3{firmware=1.4,stall}</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="62"/>
+        <location filename="../model/bus/BusSpec.cpp" line="62"/>
         <source>empty device list; write TYPE@ID[,TYPE@ID...], e.g. dbu200@1,dcpid@7 (types: %1)</source>
         <translation>裝置清單為空；請寫成 TYPE@ID[,TYPE@ID...]，例如 dbu200@1,dcpid@7 (類型：%1)</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="70"/>
+        <location filename="../model/bus/BusSpec.cpp" line="70"/>
         <source>&quot;%1&quot;: the defects in braces end the item, e.g. dbu200@3{stall}</source>
         <translation>&quot;%1&quot;：大括號內的缺陷必須放在項目最後，例如 dbu200@3{stall}</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="78"/>
+        <location filename="../model/bus/BusSpec.cpp" line="78"/>
         <source>&quot;%1&quot;: write TYPE@ID or TYPE@FIRST-LAST, e.g. dbu200@1</source>
         <translation>&quot;%1&quot;：請寫成 TYPE@ID 或 TYPE@FIRST-LAST，例如 dbu200@1</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="83"/>
+        <location filename="../model/bus/BusSpec.cpp" line="83"/>
         <source>&quot;%1&quot;: unknown device type &quot;%2&quot;; known types: %3</source>
         <translation>&quot;%1&quot;：未知的裝置類型 &quot;%2&quot;；已知類型：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="90"/>
+        <location filename="../model/bus/BusSpec.cpp" line="90"/>
         <source>&quot;%1&quot;: the machine number must be a number or a range such as 1-16</source>
         <translation>&quot;%1&quot;：機號必須是數字或 1-16 這樣的範圍</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="94"/>
+        <location filename="../model/bus/BusSpec.cpp" line="94"/>
         <source>&quot;%1&quot;: machine number %2 is outside %3–%4 for %5</source>
         <translation>&quot;%1&quot;：機號 %2 超出 %5 的範圍 %3–%4</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/BusSpec.cpp" line="101"/>
+        <location filename="../model/bus/BusSpec.cpp" line="101"/>
         <source>machine number %1 is given twice</source>
         <translation>機號 %1 重複指定</translation>
     </message>
@@ -2037,205 +2052,205 @@ Drives: %5</source>
 <context>
     <name>opentop::CertificateHtml</name>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="44"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="44"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="46"/>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="46"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="48"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="48"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="50"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="50"/>
         <source>INTERRUPTED</source>
         <translation>已中斷</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="52"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="52"/>
         <source>NOT FINISHED</source>
         <translation>未完成</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="65"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="65"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="72"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="72"/>
         <source>End-of-line test certificate</source>
         <translation>終檢測試證書</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="75"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="75"/>
         <source>Serial number</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="76"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="76"/>
         <source>Recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="76"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="76"/>
         <source>%1, revision %2</source>
         <translation>%1，版次 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="77"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="77"/>
         <source>Recipe checksum</source>
         <translation>配方檢查碼</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="78"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
         <source>Station</source>
         <translation>工站</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="79"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="79"/>
         <source>Operator</source>
         <translation>作業員</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="80"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="80"/>
         <source>Started</source>
         <translation>開始時間</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="81"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
         <source>Ended</source>
         <translation>結束時間</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
         <source>Record</source>
         <translation>記錄</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="91"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="91"/>
         <source>First failure:</source>
         <translation>首個不合格項目：</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="94"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="94"/>
         <source>Drives</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
         <source>Machine number</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
         <source>Model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
         <source>Variant</source>
         <translation>機型</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
         <source>Firmware</source>
         <translation>韌體</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="99"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="99"/>
         <source>Settings</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
         <source>Written</source>
         <translation>寫入值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
         <source>Read back</source>
         <translation>回讀值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="101"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="101"/>
         <source>Verified</source>
         <translation>已驗證</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="105"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="105"/>
         <source>written</source>
         <translation>已寫入</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="105"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="105"/>
         <source>already set</source>
         <translation>原已設定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="106"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="106"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="106"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="106"/>
         <source>NO</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="108"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="108"/>
         <source>Measurements</source>
         <translation>量測值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Step</source>
         <translation>步驟</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Quantity</source>
         <translation>量測項目</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Limits</source>
         <translation>限值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
         <source>pass</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
         <source>Bus traffic around the failure</source>
         <translation>不合格前後的匯流排通訊</translation>
     </message>
@@ -2243,12 +2258,12 @@ Drives: %5</source>
 <context>
     <name>opentop::CertificatePdf</name>
     <message>
-        <location filename="../main/report/CertificatePdf.cpp" line="23"/>
+        <location filename="../report/CertificatePdf.cpp" line="23"/>
         <source>End-of-line certificate %1</source>
         <translation>終檢測試證書 %1</translation>
     </message>
     <message>
-        <location filename="../main/report/CertificatePdf.cpp" line="53"/>
+        <location filename="../report/CertificatePdf.cpp" line="53"/>
         <source>%1 · %2 · page %3 of %4</source>
         <translation>%1 · %2 · 第 %3 頁，共 %4 頁</translation>
     </message>
@@ -2256,7 +2271,7 @@ Drives: %5</source>
 <context>
     <name>opentop::CliApp</name>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="63"/>
+        <location filename="../cli/CliApp.cpp" line="69"/>
         <source>Usage: %1 [options] COMMAND [arguments]
 
 Commissioning tool for RS-485 Modbus-RTU motor drives.
@@ -2271,14 +2286,14 @@ RS-485 Modbus-RTU 馬達驅動器試車調機工具。
 </translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="68"/>
+        <location filename="../cli/CliApp.cpp" line="74"/>
         <source>
 Connection (every command that talks to drives):
   --port PATH | --tcp HOST:PORT | --sim SPEC
   --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
   Defaults follow the family: dbu 19200 8N1, dcpid 9600 8E1; --timeout 200,
   --retries 3 (2 more while the line is noisy: a request needed a retry lately).
-Output: --json  --trace  --variant VARIANT
+Output: --json  --trace  --variant VARIANT  --lang CODE
 Groups: --bus-drives LIST (or OPENTOP_BUS_DRIVES): the drives whose communication
 group is checked before a write or command
 
@@ -2288,36 +2303,21 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
 </source>
-        <translation>
-連線 (所有與驅動器通訊的指令)：
-  --port PATH | --tcp HOST:PORT | --sim SPEC
-  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
-  預設值依系列而定：dbu 19200 8N1，dcpid 9600 8E1；--timeout 200，
-  --retries 3 (線路雜訊多時再加 2 次：即最近有請求需要重試時)。
-輸出：--json  --trace  --variant VARIANT
-群組：--bus-drives LIST (或 OPENTOP_BUS_DRIVES)：寫入或下指令前
-要檢查其通訊群組的驅動器
-
-結束碼：0 成功，1 通訊失敗，2 用法錯誤，3 值或檔案無效
-(未寫入任何資料)，4 驗證不符或驅動器未停止，
-130 被 Ctrl-C、SIGTERM 或 SIGHUP 中斷 (會回報已完成的操作)。
-
-&quot;%1 help COMMAND&quot; 顯示指令的選項。
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="147"/>
-        <location filename="../main/cli/CliApp.cpp" line="201"/>
+        <location filename="../cli/CliApp.cpp" line="153"/>
+        <location filename="../cli/CliApp.cpp" line="207"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>請執行 &quot;%1 --help&quot;。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="167"/>
+        <location filename="../cli/CliApp.cpp" line="173"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1：未知指令 &quot;%2&quot;；可用指令： </translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="175"/>
+        <location filename="../cli/CliApp.cpp" line="181"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2326,12 +2326,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="189"/>
+        <location filename="../cli/CliApp.cpp" line="195"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2：--%3 不是此指令的選項；請參閱 &quot;%1 help %2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliApp.cpp" line="200"/>
+        <location filename="../cli/CliApp.cpp" line="206"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -2339,44 +2339,44 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="75"/>
-        <location filename="../main/cli/CliContext.cpp" line="89"/>
-        <location filename="../main/cli/CliContext.cpp" line="97"/>
+        <location filename="../cli/CliContext.cpp" line="75"/>
+        <location filename="../cli/CliContext.cpp" line="89"/>
+        <location filename="../cli/CliContext.cpp" line="97"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="124"/>
+        <location filename="../cli/CliContext.cpp" line="124"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;：%3</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="187"/>
+        <location filename="../cli/CliContext.cpp" line="187"/>
         <source>machine number %1: no connection</source>
         <translation>機號 %1：未連線</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="192"/>
+        <location filename="../cli/CliContext.cpp" line="192"/>
         <source>machine number %1: %2%3</source>
         <translation>機號 %1：%2%3</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="245"/>
+        <location filename="../cli/CliContext.cpp" line="245"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1：&quot;%2&quot; 不是 1–247 的機號</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="249"/>
+        <location filename="../cli/CliContext.cpp" line="249"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1：&quot;%2&quot; 不是驅動器機型；請使用下列其中之一：%3</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="267"/>
+        <location filename="../cli/CliContext.cpp" line="267"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; 不是 1–247 的機號，也不是 3-8 這樣的範圍</translation>
     </message>
     <message>
-        <location filename="../main/cli/CliContext.cpp" line="277"/>
+        <location filename="../cli/CliContext.cpp" line="277"/>
         <source>no machine number given</source>
         <translation>未指定機號</translation>
     </message>
@@ -2384,22 +2384,22 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CodeEntry</name>
     <message>
-        <location filename="../main/model/profile/CodeTable.cpp" line="10"/>
+        <location filename="../model/profile/CodeTable.cpp" line="10"/>
         <source>Alarm-Reset</source>
         <translation>Alarm-Reset</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/CodeTable.cpp" line="12"/>
+        <location filename="../model/profile/CodeTable.cpp" line="12"/>
         <source>power cycle</source>
         <translation>斷電重新上電</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/CodeTable.cpp" line="14"/>
+        <location filename="../model/profile/CodeTable.cpp" line="14"/>
         <source>by itself</source>
         <translation>自動解除</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/CodeTable.cpp" line="15"/>
+        <location filename="../model/profile/CodeTable.cpp" line="15"/>
         <source>—</source>
         <translation>—</translation>
     </message>
@@ -2407,100 +2407,100 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareCommand</name>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="34"/>
+        <location filename="../cli/CompareCommand.cpp" line="34"/>
         <source>Show the settings that differ; A, B: a machine number, FILE or FILE:ID (exit 0 whether or not they differ)</source>
         <translation>顯示不同的設定；A、B：機號、FILE 或 FILE:ID (無論是否有差異，結束碼皆為 0)</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="41"/>
+        <location filename="../cli/CompareCommand.cpp" line="41"/>
         <source>Compare A with the profile&apos;s factory defaults; settings the manual gives no default for are listed, never counted as differences.</source>
         <translation>將 A 與定義檔中的出廠預設值比較；手冊未列預設值的設定會列出，但不計為差異。</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="54"/>
-        <location filename="../main/cli/CompareCommand.cpp" line="88"/>
-        <location filename="../main/cli/CompareCommand.cpp" line="146"/>
+        <location filename="../cli/CompareCommand.cpp" line="54"/>
+        <location filename="../cli/CompareCommand.cpp" line="88"/>
+        <location filename="../cli/CompareCommand.cpp" line="146"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="67"/>
+        <location filename="../cli/CompareCommand.cpp" line="67"/>
         <source>interrupted</source>
         <translation>已中斷</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="72"/>
+        <location filename="../cli/CompareCommand.cpp" line="72"/>
         <source>error: %1: cannot read %2</source>
         <translation>錯誤：%1：無法讀取 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="76"/>
+        <location filename="../cli/CompareCommand.cpp" line="76"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="107"/>
+        <location filename="../cli/CompareCommand.cpp" line="107"/>
         <source>error: %1 holds several drives (%2): name one as %1:ID</source>
         <translation>錯誤：%1 含有多台驅動器 (%2)：請以 %1:ID 指定其中一台</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="110"/>
+        <location filename="../cli/CompareCommand.cpp" line="110"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>錯誤：%1 中沒有機號 %2 的驅動器；檔案中有 %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="126"/>
+        <location filename="../cli/CompareCommand.cpp" line="126"/>
         <source>error: compare A B, or compare A --defaults (A, B: a machine number, FILE or FILE:ID)</source>
         <translation>錯誤：compare A B，或 compare A --defaults (A、B：機號、FILE 或 FILE:ID)</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="144"/>
+        <location filename="../cli/CompareCommand.cpp" line="144"/>
         <source>factory defaults</source>
         <translation>出廠預設值</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="171"/>
+        <location filename="../cli/CompareCommand.cpp" line="171"/>
         <source>A: %1 (%2)</source>
         <translation>A：%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="172"/>
+        <location filename="../cli/CompareCommand.cpp" line="172"/>
         <source>B: %1</source>
         <translation>B：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
         <source>parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="177"/>
-        <location filename="../main/cli/CompareCommand.cpp" line="178"/>
+        <location filename="../cli/CompareCommand.cpp" line="177"/>
+        <location filename="../cli/CompareCommand.cpp" line="178"/>
         <source>(not held)</source>
         <translation>(未包含)</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="181"/>
+        <location filename="../cli/CompareCommand.cpp" line="181"/>
         <source> in %1 settings compared</source>
         <translation> (共比較 %1 項設定)</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="183"/>
+        <location filename="../cli/CompareCommand.cpp" line="183"/>
         <source>no differences (%1 settings compared)</source>
         <translation>無差異 (共比較 %1 項設定)</translation>
     </message>
     <message>
-        <location filename="../main/cli/CompareCommand.cpp" line="190"/>
+        <location filename="../cli/CompareCommand.cpp" line="190"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
@@ -2508,162 +2508,162 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareDialog</name>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="32"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="32"/>
         <source>&amp;Differences only</source>
         <translation>僅顯示差異(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="36"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="36"/>
         <source>Co&amp;mpare</source>
         <translation>比較(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="38"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="38"/>
         <source>Compare settings</source>
         <translation>比較設定</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="39"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="39"/>
         <source>Side A</source>
         <translation>A 側</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="40"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="40"/>
         <source>Side B</source>
         <translation>B 側</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="48"/>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="48"/>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="54"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="54"/>
         <source>Filter by setting or parameter name</source>
         <translation>依設定或參數名稱篩選</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="56"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="56"/>
         <source>Read the chosen sides and compare them (drives are read fresh)</source>
         <translation>讀取所選的兩側並比較 (驅動器會重新讀取)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="66"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="66"/>
         <source>C&amp;lose</source>
         <translation>關閉(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="98"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="98"/>
         <source>%1 refused: %2</source>
         <translation>%1 被拒絕：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="112"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="112"/>
         <source>Reading…</source>
         <translation>讀取中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="137"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="137"/>
         <source>side A</source>
         <translation>A 側</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="137"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="137"/>
         <source>side B</source>
         <translation>B 側</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="141"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="141"/>
         <source>Factory defaults</source>
         <translation>出廠預設值</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="148"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="148"/>
         <source>Choose a backup file and a drive in it for %1.</source>
         <translation>請為 %1 選擇備份檔及其中的驅動器。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="152"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="152"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="162"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="162"/>
         <source>Choose an identified drive on the bus for %1.</source>
         <translation>請為 %1 選擇匯流排上已識別的驅動器。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="170"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="170"/>
         <source>%1: cannot read %2</source>
         <translation>%1：無法讀取 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="195"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="195"/>
         <source>Unknown family %1</source>
         <translation>未知系列 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
         <source>A: %1</source>
         <translation>A：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="215"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="215"/>
         <source>B: %1</source>
         <translation>B：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="216"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
         <source>factory defaults (%1)</source>
         <translation>出廠預設值 (%1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="226"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="226"/>
         <source>(no documented default)</source>
         <translation>(手冊未列預設值)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="227"/>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="229"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="229"/>
         <source>(not held)</source>
         <translation>(未包含)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/CompareDialog.cpp" line="245"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="245"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n 項差異</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="246"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="246"/>
         <source> in %1 settings compared</source>
         <translation> (共比較 %1 項設定)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="249"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="249"/>
         <source>Note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareDialog.cpp" line="256"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="256"/>
         <source>No factory default documented (never counted as a difference): %1</source>
         <translation>手冊未列出廠預設值 (不計為差異)：%1</translation>
     </message>
@@ -2671,62 +2671,62 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareSide</name>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="22"/>
+        <location filename="../ui/files/CompareSide.cpp" line="22"/>
         <source>Browse…</source>
         <translation>瀏覽…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="25"/>
+        <location filename="../ui/files/CompareSide.cpp" line="25"/>
         <source>Drive on the bus</source>
         <translation>匯流排上的驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="26"/>
+        <location filename="../ui/files/CompareSide.cpp" line="26"/>
         <source>Drive in a backup file</source>
         <translation>備份檔中的驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="28"/>
+        <location filename="../ui/files/CompareSide.cpp" line="28"/>
         <source>Factory defaults</source>
         <translation>出廠預設值</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="32"/>
+        <location filename="../ui/files/CompareSide.cpp" line="32"/>
         <source>Drive %1 (%2)</source>
         <translation>驅動器 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="36"/>
+        <location filename="../ui/files/CompareSide.cpp" line="36"/>
         <source>Backup file</source>
         <translation>備份檔</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="41"/>
+        <location filename="../ui/files/CompareSide.cpp" line="41"/>
         <source>Source:</source>
         <translation>來源：</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="42"/>
+        <location filename="../ui/files/CompareSide.cpp" line="42"/>
         <source>Drive:</source>
         <translation>驅動器：</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="43"/>
+        <location filename="../ui/files/CompareSide.cpp" line="43"/>
         <source>File:</source>
         <translation>檔案：</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="44"/>
+        <location filename="../ui/files/CompareSide.cpp" line="44"/>
         <source>Drive in file:</source>
         <translation>檔案中的驅動器：</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="123"/>
+        <location filename="../ui/files/CompareSide.cpp" line="123"/>
         <source>Open backup file</source>
         <translation>開啟備份檔</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/CompareSide.cpp" line="124"/>
+        <location filename="../ui/files/CompareSide.cpp" line="124"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 備份檔 (*.json);;所有檔案 (*)</translation>
     </message>
@@ -2734,17 +2734,17 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::Comparer</name>
     <message>
-        <location filename="../main/model/files/Comparer.cpp" line="15"/>
+        <location filename="../model/files/Comparer.cpp" line="15"/>
         <source>nothing to compare: %1 is a %2 drive, %3 a %4 drive</source>
         <translation>無法比較：%1 是 %2 驅動器，%3 是 %4 驅動器</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Comparer.cpp" line="20"/>
+        <location filename="../model/files/Comparer.cpp" line="20"/>
         <source>the variants differ: %1 and %2</source>
         <translation>機型不同：%1 與 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Comparer.cpp" line="55"/>
+        <location filename="../model/files/Comparer.cpp" line="55"/>
         <source>factory defaults</source>
         <translation>出廠預設值</translation>
     </message>
@@ -2752,188 +2752,188 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::ConnectionDialog</name>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="61"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="61"/>
         <source>Connect to a bus</source>
         <translation>連線至匯流排</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="66"/>
         <source>&amp;Serial port</source>
         <translation>序列埠(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="66"/>
         <source>Modbus &amp;TCP gateway</source>
         <translation>Modbus TCP 閘道器(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="67"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
         <source>Si&amp;mulated bus</source>
         <translation>模擬匯流排(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="83"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="83"/>
         <source>&amp;Advanced</source>
         <translation>進階(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="106"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="106"/>
         <source>&amp;Connect</source>
         <translation>連線(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="127"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="127"/>
         <source>&amp;Refresh</source>
         <translation>重新整理(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="128"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="128"/>
         <source>List the serial ports again (after plugging in an adapter)</source>
         <translation>重新列出序列埠 (插入轉接器後使用)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="133"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="133"/>
         <source>&amp;Port:</source>
         <translation>連接埠(&amp;P)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="142"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="142"/>
         <source>Custom</source>
         <translation>自訂</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="144"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="144"/>
         <source>%1 (%2 %3%4%5)</source>
         <translation>%1 (%2 %3%4%5)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="151"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="151"/>
         <source>Fills in the factory line settings of a drive family</source>
         <translation>填入驅動器系列的出廠通訊設定</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="154"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="154"/>
         <source>&amp;Family defaults:</source>
         <translation>系列預設值(&amp;F)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="158"/>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="286"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="158"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="286"/>
         <source>%1 bit/s</source>
         <translation>%1 bit/s</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="159"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="159"/>
         <source>&amp;Baud rate:</source>
         <translation>鮑率(&amp;B)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="161"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="161"/>
         <source>None (N)</source>
         <translation>無 (N)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="162"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="162"/>
         <source>Even (E)</source>
         <translation>偶同位 (E)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="163"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
         <source>Odd (O)</source>
         <translation>奇同位 (O)</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="164"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
         <source>P&amp;arity:</source>
         <translation>同位元(&amp;A)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="166"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="166"/>
         <source>1 bit</source>
         <translation>1 位元</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="167"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="167"/>
         <source>2 bits</source>
         <translation>2 位元</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="168"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
         <source>S&amp;top bits:</source>
         <translation>停止位元(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="182"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="182"/>
         <source>e.g. 192.168.1.10</source>
         <translation>例如 192.168.1.10</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="183"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="183"/>
         <source>&amp;Host:</source>
         <translation>主機(&amp;H)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="186"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="186"/>
         <source>Modbus TCP uses port 502</source>
         <translation>Modbus TCP 使用連接埠 502</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="187"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="187"/>
         <source>TCP p&amp;ort:</source>
         <translation>TCP 連接埠(&amp;O)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="199"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="199"/>
         <source>Device types and machine numbers: TYPE@NUMBER, comma separated. Types: %1</source>
         <translation>裝置類型與機號：TYPE@NUMBER，以逗號分隔。類型：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="202"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="202"/>
         <source>&amp;Devices:</source>
         <translation>裝置(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="216"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="216"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="217"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="217"/>
         <source>How long to wait for each reply</source>
         <translation>每次等待回應的時間</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="218"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="218"/>
         <source>Response &amp;timeout:</source>
         <translation>回應逾時(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="221"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="221"/>
         <source>Extra attempts after a request got no valid reply</source>
         <translation>請求未收到有效回應時的額外重試次數</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="222"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="222"/>
         <source>R&amp;etries:</source>
         <translation>重試次數(&amp;E)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialog.cpp" line="322"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="322"/>
         <source>The device list is not valid.</source>
         <translation>裝置清單無效。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="26"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="26"/>
         <source>The port is in use by another program (named above where the system tells it): a terminal program, ModemManager, another OpenTOP window or an opentop-cli command. Close it, or disconnect the other window, and connect again. Nothing was sent on the port.</source>
         <translation>連接埠正被其他程式使用 (若系統有提供，程式名稱顯示於上方)：終端機程式、ModemManager、另一個 OpenTOP 視窗或 opentop-cli 指令。請關閉該程式，或讓另一個視窗中斷連線，然後再次連線。未在連接埠上送出任何資料。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="33"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="33"/>
         <source>Your user may not open serial ports: add it to the dialout group with the command above, then log out and in again.</source>
         <translation>您的使用者帳號無權開啟序列埠：請以上方指令將其加入 dialout 群組，然後登出再重新登入。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="36"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="36"/>
         <source>Your user may not open serial ports. Add it to the dialout group:
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -2942,37 +2942,37 @@ then log out and in again (the group applies to new sessions only).</source>
 然後登出再重新登入 (群組設定僅對新的登入工作階段生效)。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="41"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="41"/>
         <source>The port %1 does not exist: the USB adapter may be unplugged or have come back under another name, or the path is mistyped. Plug it in, press Refresh and pick it from the list; for a pseudo-terminal check that the program serving it (opentop-sim, socat) still runs.</source>
         <translation>連接埠 %1 不存在：USB 轉接器可能已拔除或以其他名稱重新出現，或路徑輸入錯誤。請插上轉接器，按「重新整理」並從清單中選取；若為虛擬終端機，請確認提供它的程式 (opentop-sim、socat) 仍在執行。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="48"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="48"/>
         <source>The connection opened but no drive answered. Check that the baud rate, parity and stop bits (%1) match the drives&apos; settings (DBU: 19200 8N1, DC controller: 9600 8E1) — a framing mismatch looks like silence — that the machine number is right, and that the A and B (D+ and D−) wires are not swapped.</source>
         <translation>連線已開啟，但沒有驅動器回應。請確認鮑率、同位元與停止位元 (%1) 與驅動器設定相符 (DBU：19200 8N1，DC 控制器：9600 8E1)——格式不符時看起來就像無回應——並確認機號正確，且 A、B (D+、D−) 線未接反。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="56"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="56"/>
         <source>The gateway %1:%2 did not accept the connection: check the address and port (Modbus TCP uses 502), that the gateway is powered and on this network, and that no firewall blocks it.</source>
         <translation>閘道器 %1:%2 未接受連線：請確認位址與連接埠 (Modbus TCP 使用 502)、閘道器已通電且位於此網路中，並確認沒有防火牆阻擋。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="63"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="63"/>
         <source>Check that the adapter is plugged in, that %1 is the right port, and that no other program uses it.</source>
         <translation>請確認轉接器已插上、%1 是正確的連接埠，且沒有其他程式正在使用。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="66"/>
         <source>Check the connection settings and try again.</source>
         <translation>請檢查連線設定後再試一次。</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="68"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="68"/>
         <source>Could not use %1: %2</source>
         <translation>無法使用 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/connection/ConnectionDialogExplain.cpp" line="69"/>
+        <location filename="../ui/connection/ConnectionDialogExplain.cpp" line="69"/>
         <source>What to check:</source>
         <translation>檢查項目：</translation>
     </message>
@@ -2980,138 +2980,138 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ConnectionOptions</name>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="22"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="22"/>
         <source>Serial device (e.g. /dev/ttyUSB0 or a pty path).</source>
         <translation>序列裝置 (例如 /dev/ttyUSB0 或 pty 路徑)。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="23"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="23"/>
         <source>PATH</source>
         <translation>PATH</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="24"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="24"/>
         <source>Modbus TCP gateway, HOST:PORT (port defaults to 502).</source>
         <translation>Modbus TCP 閘道器，HOST:PORT (連接埠預設為 502)。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="25"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="25"/>
         <source>HOST:PORT</source>
         <translation>HOST:PORT</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="26"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="26"/>
         <source>In-process simulated bus, e.g. dbu200@1,dbu400@150,dcpid@7.</source>
         <translation>程式內建的模擬匯流排，例如 dbu200@1,dbu400@150,dcpid@7。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="27"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="27"/>
         <source>SPEC</source>
         <translation>SPEC</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="29"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="29"/>
         <source>Device family whose serial defaults apply (dbu: 19200 8N1, dcpid: 9600 8E1).</source>
         <translation>套用其序列埠預設值的裝置系列 (dbu：19200 8N1，dcpid：9600 8E1)。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="30"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="30"/>
         <source>FAMILY</source>
         <translation>FAMILY</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="31"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="31"/>
         <source>Baud rate, 1200–115200.</source>
         <translation>鮑率，1200–115200。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="31"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="31"/>
         <source>BAUD</source>
         <translation>BAUD</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="32"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="32"/>
         <source>Parity: N, E or O.</source>
         <translation>同位元：N、E 或 O。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="32"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="32"/>
         <source>N|E|O</source>
         <translation>N|E|O</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="33"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="33"/>
         <source>Stop bits: 1 or 2.</source>
         <translation>停止位元：1 或 2。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="33"/>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="39"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="33"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="39"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="35"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="35"/>
         <source>Response timeout per attempt in ms, 10–10000 (default 200).</source>
         <translation>每次嘗試的回應逾時，單位 ms，10–10000 (預設 200)。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="35"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="35"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="37"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="37"/>
         <source>Extra attempts after no reply or a garbled one, 0–10 (default 3; 2 more while the line is noisy).</source>
         <translation>無回應或回應錯亂時的額外重試次數，0–10 (預設 3；線路雜訊多時再加 2 次)。</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="73"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="73"/>
         <source>give only one of --port, --tcp and --sim</source>
         <translation>--port、--tcp 與 --sim 只能指定其中一個</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="75"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="75"/>
         <source>no bus given: use --port PATH, --tcp HOST:PORT or --sim SPEC</source>
         <translation>未指定匯流排：請使用 --port PATH、--tcp HOST:PORT 或 --sim SPEC</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="84"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="84"/>
         <source>--family %1: unknown family; use one of %2</source>
         <translation>--family %1：未知系列；請使用下列其中之一：%2</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="103"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
         <source>--tcp: &quot;%1&quot; is not HOST:PORT</source>
         <translation>--tcp：&quot;%1&quot; 不是 HOST:PORT 格式</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="112"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="112"/>
         <source>--sim: %1</source>
         <translation>--sim：%1</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="125"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="125"/>
         <source>--baud %1: use a baud rate 1200–115200 (e.g. 9600, 19200, 38400)</source>
         <translation>--baud %1：請使用 1200–115200 的鮑率 (例如 9600、19200、38400)</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="129"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="129"/>
         <source>--stop-bits %1: use 1 or 2</source>
         <translation>--stop-bits %1：請使用 1 或 2</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="131"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="131"/>
         <source>--timeout %1: use a response timeout of 10–10000 ms</source>
         <translation>--timeout %1：回應逾時請使用 10–10000 ms</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="134"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="134"/>
         <source>--retries %1: use 0–10 extra attempts</source>
         <translation>--retries %1：額外重試次數請使用 0–10</translation>
     </message>
     <message>
-        <location filename="../main/connection/ConnectionOptions.cpp" line="139"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="139"/>
         <source>--parity %1: use N (none), E (even) or O (odd)</source>
         <translation>--parity %1：請使用 N (無)、E (偶同位) 或 O (奇同位)</translation>
     </message>
@@ -3119,18 +3119,18 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ConnectionStatus</name>
     <message>
-        <location filename="../main/ui/main/ConnectionStatus.cpp" line="20"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="20"/>
         <source>SIMULATED BUS — no hardware</source>
         <translation>模擬匯流排 — 無實體硬體</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/ConnectionStatus.cpp" line="21"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="21"/>
         <source>These drives exist only in this program; nothing moves.</source>
         <translation>這些驅動器只存在於本程式中；沒有任何馬達會轉動。</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/ConnectionStatus.cpp" line="26"/>
-        <location filename="../main/ui/main/ConnectionStatus.cpp" line="61"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="26"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="61"/>
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -3138,92 +3138,92 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::DbuSimDevice</name>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="340"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="340"/>
         <source>alarm 0x%1</source>
         <translation>警報 0x%1</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="341"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="341"/>
         <source>running</source>
         <translation>運轉中</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="342"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="342"/>
         <source>stopped</source>
         <translation>已停止</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="343"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="343"/>
         <source>%1 %2 r/min (target %3) SPno%4 load %5 % %6, %7 priority, %8%9</source>
         <translation>%1 %2 r/min (目標 %3) SPno%4 負載 %5 % %6，%7優先，%8%9</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="347"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="347"/>
         <source>communication</source>
         <translation>通訊</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="347"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="347"/>
         <source>I/O</source>
         <translation>I/O</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="348"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="348"/>
         <source>offline</source>
         <translation>離線</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="348"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="348"/>
         <source>online</source>
         <translation>連線中</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="349"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="349"/>
         <source>, ignoring stop</source>
         <translation>，忽略停止指令</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="357"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="357"/>
         <source>usage: %1 ID CODE</source>
         <translation>用法：%1 ID CODE</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="360"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="360"/>
         <source>warning cleared</source>
         <translation>警告已解除</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="365"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="365"/>
         <source>unknown %1 code %2; allowed: %3</source>
         <translation>未知的 %1 代碼 %2；允許：%3</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="373"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="373"/>
         <source>%1 0x%2 raised</source>
         <translation>已觸發 %1 0x%2</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="384"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="384"/>
         <source>usage: ignore-stop ID on|off</source>
         <translation>用法：ignore-stop ID on|off</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="386"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="386"/>
         <source>stop commands are acknowledged and ignored</source>
         <translation>停止指令會回應確認，但被忽略</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="387"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="387"/>
         <source>stop commands are obeyed</source>
         <translation>停止指令會被執行</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="403"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="403"/>
         <source>usage: %1 ID VALUE with VALUE %2..%3</source>
         <translation>用法：%1 ID VALUE，VALUE 為 %2..%3</translation>
     </message>
     <message>
-        <location filename="../main/sim/DbuSimDevice.cpp" line="405"/>
+        <location filename="../sim/DbuSimDevice.cpp" line="405"/>
         <source>%1 = %2</source>
         <translation>%1 = %2</translation>
     </message>
@@ -3231,232 +3231,232 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::DcControllerPage</name>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="41"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="41"/>
         <source>DC controller</source>
         <translation>DC 控制器</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="44"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="44"/>
         <source>Re&amp;load stored configuration</source>
         <translation>重新載入已保存的組態(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="66"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="66"/>
         <source>Store &amp;configuration</source>
         <translation>保存組態(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="67"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="67"/>
         <source>Store P&amp;ID</source>
         <translation>保存 PID(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="68"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="68"/>
         <source>Store pre&amp;set</source>
         <translation>保存預設速度(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="71"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="71"/>
         <source>Writes %1 = 1: %2</source>
         <translation>寫入 %1 = 1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="76"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="76"/>
         <source>Writes store.config = 0: the controller reloads the stored configuration; unstored configuration changes are discarded</source>
         <translation>寫入 store.config = 0：控制器重新載入已保存的組態；未保存的組態變更將被捨棄</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="83"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="83"/>
         <source>Speed mode and motor currents</source>
         <translation>速度模式與馬達電流</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="84"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="84"/>
         <source>Speed &amp;mode:</source>
         <translation>速度模式(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="85"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="85"/>
         <source>Rated current:</source>
         <translation>額定電流：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="86"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="86"/>
         <source>Maximum start/load current:</source>
         <translation>最大啟動/負載電流：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="87"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="87"/>
         <source>Brake current:</source>
         <translation>煞車電流：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="89"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="89"/>
         <source>Limit switches</source>
         <translation>極限開關</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="90"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="90"/>
         <source>Limits:</source>
         <translation>極限開關：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="91"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="91"/>
         <source>SQ1 active level (forward):</source>
         <translation>SQ1 有效準位 (正轉)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="92"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="92"/>
         <source>SQ2 active level (reverse):</source>
         <translation>SQ2 有效準位 (反轉)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="94"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="94"/>
         <source>Protective stops (0 = off)</source>
         <translation>保護停止 (0 = 關閉)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="95"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="95"/>
         <source>S&amp;tall stop time:</source>
         <translation>堵轉停止時間(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="96"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="96"/>
         <source>Communication loss stop time:</source>
         <translation>通訊中斷停止時間：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="104"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="104"/>
         <source>Serial port (reconnect after a change)</source>
         <translation>序列埠 (變更後需重新連線)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="105"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="105"/>
         <source>Baud rate:</source>
         <translation>鮑率：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="106"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="106"/>
         <source>Parity and stop bits:</source>
         <translation>同位元與停止位元：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="107"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="107"/>
         <source>Configuration over serial:</source>
         <translation>序列埠組態設定：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="109"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="109"/>
         <source>Lost at power-off until stored (Store configuration); a stored baud rate or parity is used from the next power-up on, and the tool must then reconnect with it.</source>
         <translation>保存前斷電即遺失 (保存組態)；已保存的鮑率或同位元自下次上電起生效，屆時本工具必須以新設定重新連線。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="112"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="112"/>
         <source>Speed loop PID</source>
         <translation>速度迴路 PID</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="113"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="113"/>
         <source>&amp;P coefficient:</source>
         <translation>P 係數(&amp;P)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="114"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="114"/>
         <source>I coefficient:</source>
         <translation>I 係數：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="115"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="115"/>
         <source>&amp;D coefficient:</source>
         <translation>D 係數(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="116"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="116"/>
         <source>D period:</source>
         <translation>D 週期：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="118"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="118"/>
         <source>Preset speed (potentiometer/analog control)</source>
         <translation>預設速度 (可變電阻/類比控制)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="119"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="119"/>
         <source>Preset speed mo&amp;de:</source>
         <translation>預設速度模式(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="120"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="120"/>
         <source>Trigger:</source>
         <translation>觸發：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="121"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="121"/>
         <source>&amp;Forward speed:</source>
         <translation>正轉速度(&amp;F)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="122"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="122"/>
         <source>Reverse speed:</source>
         <translation>反轉速度：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="124"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="124"/>
         <source>AI1/AI2 as digital ports</source>
         <translation>AI1/AI2 作為數位埠</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="125"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="125"/>
         <source>AI1 direction:</source>
         <translation>AI1 方向：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="126"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="126"/>
         <source>AI2 direction:</source>
         <translation>AI2 方向：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="127"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="127"/>
         <source>AI1 level:</source>
         <translation>AI1 準位：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="128"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="128"/>
         <source>AI2 level:</source>
         <translation>AI2 準位：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="130"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="130"/>
         <source>Takes effect now and is not kept over power-off: the controller has no store command for these, only a 5-register block write, which this page does not send.</source>
         <translation>立即生效，但斷電後不保留：控制器沒有可保存這些設定的指令，只能以 5 個暫存器的區塊寫入，而本頁不會送出該寫入。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="174"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="174"/>
         <source>The communication loss stop is off (%1 = 0 s): if the connection is lost while the motor runs, the controller keeps it running at the last speed command. Set a time so that it brakes when the bus goes quiet.</source>
         <translation>通訊中斷停止已關閉 (%1 = 0 s)：若馬達運轉中連線中斷，控制器會依最後的速度指令持續運轉。請設定時間，使匯流排無通訊時能煞車停止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="189"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="189"/>
         <source>Takes effect now, lost at power-off until stored (%1).</source>
         <translation>立即生效，保存 (%1) 前斷電即遺失。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="250"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="250"/>
         <source>Forward and reverse speed in this mode (%1): %2</source>
         <translation>此模式 (%1) 下的正轉與反轉速度：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="252"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="252"/>
         <source>The unit and range of the speeds follow the preset speed mode (not read yet).</source>
         <translation>速度的單位與範圍取決於預設速度模式 (尚未讀取)。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="286"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="286"/>
         <source>&lt;b&gt;Written but not stored:&lt;/b&gt; %1. These values act now and are lost when the controller is switched off.</source>
         <translation>&lt;b&gt;已寫入但未保存：&lt;/b&gt;%1。這些值目前有效，控制器關閉電源後即遺失。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="308"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="308"/>
         <source>%1: the controller writes the values now in effect to its memory and uses them from the next power-up on.
 
 Stored: %2.</source>
@@ -3465,17 +3465,17 @@ Stored: %2.</source>
 保存項目：%2。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="319"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="319"/>
         <source>Not written yet, so not stored: %1.</source>
         <translation>尚未寫入，因此不會保存：%1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="322"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="322"/>
         <source>%1: done, kept over power-off.</source>
         <translation>%1：完成，斷電後仍保留。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="330"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="330"/>
         <source>The controller replaces its configuration (%1) with the one stored in its memory.
 
 Configuration changes written but not stored are discarded.</source>
@@ -3484,17 +3484,17 @@ Configuration changes written but not stored are discarded.</source>
 已寫入但未保存的組態變更將被捨棄。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="336"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="336"/>
         <source>Stored configuration reloaded.</source>
         <translation>已重新載入保存的組態。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="344"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="344"/>
         <source>Writing %1 = %2…</source>
         <translation>正在寫入 %1 = %2…</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/DcControllerPage.cpp" line="354"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="354"/>
         <source>%1 = %2 failed: %3</source>
         <translation>%1 = %2 失敗：%3</translation>
     </message>
@@ -3502,32 +3502,32 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DcPidSimDevice</name>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="341"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="341"/>
         <source>%1 %2%3, output %4 %, command %5, line %6 %7</source>
         <translation>%1 %2%3，輸出 %4 %，指令 %5，線路 %6 %7</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="343"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="343"/>
         <source> (stall stop)</source>
         <translation> (堵轉停止)</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="357"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="359"/>
         <source>usage: %1 ID VALUE with VALUE %2..%3 %4</source>
         <translation>用法：%1 ID VALUE，VALUE 為 %2..%3 %4</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="361"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="363"/>
         <source>(bit0 SQ1, bit1 SQ2, bit2 DE)</source>
         <translation>(bit0 SQ1, bit1 SQ2, bit2 DE)</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="361"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="363"/>
         <source>(% current)</source>
         <translation>(電流 %)</translation>
     </message>
     <message>
-        <location filename="../main/sim/DcPidSimDevice.cpp" line="363"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="365"/>
         <source>%1 = %2</source>
         <translation>%1 = %2</translation>
     </message>
@@ -3535,37 +3535,37 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DcRunCommands</name>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="26"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="26"/>
         <source>Set s&amp;peed</source>
         <translation>設定速度(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="31"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="31"/>
         <source>set point, e.g. 50 or -20</source>
         <translation>設定值，例如 50 或 -20</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="39"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="39"/>
         <source>Speed command:</source>
         <translation>速度指令：</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="54"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="54"/>
         <source>&amp;Brake (speed 0)</source>
         <translation>煞車 (速度 0)(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="56"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="56"/>
         <source>&amp;Natural stop</source>
         <translation>自然停止(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="90"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="90"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/DcRunCommands.cpp" line="91"/>
+        <location filename="../ui/run/DcRunCommands.cpp" line="91"/>
         <source>(reading %1…)</source>
         <translation>(正在讀取 %1…)</translation>
     </message>
@@ -3573,17 +3573,17 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DependentValues</name>
     <message>
-        <location filename="../main/model/session/DependentValues.cpp" line="45"/>
+        <location filename="../model/session/DependentValues.cpp" line="45"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DependentValues.cpp" line="53"/>
+        <location filename="../model/session/DependentValues.cpp" line="53"/>
         <source>%1 = %2 would leave %3 without a valid value, because what they allow depends on it. Choose new values for them and write them together with it.</source>
         <translation>%1 = %2 會使 %3 失去有效值，因為它們的允許值取決於此參數。請為它們選擇新值，並與此參數一起寫入。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DependentValues.cpp" line="57"/>
+        <location filename="../model/session/DependentValues.cpp" line="57"/>
         <source>%1 cannot be checked: the values of %2 depend on it and could not be read</source>
         <translation>無法檢查 %1：%2 的值取決於此參數，但無法讀取</translation>
     </message>
@@ -3591,17 +3591,17 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceIdentifier</name>
     <message>
-        <location filename="../main/model/session/DeviceIdentifier.cpp" line="31"/>
+        <location filename="../model/session/DeviceIdentifier.cpp" line="31"/>
         <source>answers, but none of the device profiles matches</source>
         <translation>有回應，但沒有符合的定義檔</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceIdentifier.cpp" line="96"/>
+        <location filename="../model/session/DeviceIdentifier.cpp" line="96"/>
         <source>device name &quot;%1&quot; is not a %2</source>
         <translation>裝置名稱 &quot;%1&quot; 不是 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceIdentifier.cpp" line="115"/>
+        <location filename="../model/session/DeviceIdentifier.cpp" line="115"/>
         <source>the variant cannot be read from the device; choose it</source>
         <translation>無法從裝置讀取機型；請自行選擇</translation>
     </message>
@@ -3609,27 +3609,27 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceInfo</name>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="28"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="28"/>
         <source>not checked</source>
         <translation>未檢查</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="30"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="30"/>
         <source>online</source>
         <translation>連線中</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="32"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="32"/>
         <source>no answer</source>
         <translation>無回應</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="34"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="34"/>
         <source>garbled replies (duplicate machine number?)</source>
         <translation>回應錯亂 (機號重複？)</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceInfo.cpp" line="37"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="37"/>
         <source>unknown device</source>
         <translation>未知裝置</translation>
     </message>
@@ -3637,27 +3637,27 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceMonitor</name>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="60"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="60"/>
         <source>Stopped</source>
         <translation>已停止</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="62"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="62"/>
         <source>Running</source>
         <translation>運轉中</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="63"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="63"/>
         <source>Running CCW</source>
         <translation>CCW 運轉中</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="63"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="63"/>
         <source>Running CW</source>
         <translation>CW 運轉中</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/DeviceMonitor.cpp" line="206"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="206"/>
         <source>machine number %1: %2</source>
         <translation>機號 %1：%2</translation>
     </message>
@@ -3665,22 +3665,22 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceParameters</name>
     <message>
-        <location filename="../main/model/session/DeviceParameters.cpp" line="81"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="81"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 沒有參數 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceParameters.cpp" line="83"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="83"/>
         <source>%1 is read-only</source>
         <translation>%1 為唯讀</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceParameters.cpp" line="85"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="85"/>
         <source>%1 is a command, not a setting; commands are sent one by one on request</source>
         <translation>%1 是指令而非設定；指令只會依要求逐一送出</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceParameters.cpp" line="211"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="211"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -3688,53 +3688,53 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceSession</name>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="90"/>
+        <location filename="../model/session/DeviceSession.cpp" line="90"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 沒有參數 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="99"/>
-        <location filename="../main/model/session/DeviceSession.cpp" line="139"/>
+        <location filename="../model/session/DeviceSession.cpp" line="99"/>
+        <location filename="../model/session/DeviceSession.cpp" line="139"/>
         <source>%1 cannot be read (it is a write-only command)</source>
         <translation>%1 無法讀取 (為僅可寫入的指令)</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="202"/>
+        <location filename="../model/session/DeviceSession.cpp" line="202"/>
         <source>cannot check the value: reading %1 failed: %2</source>
         <translation>無法檢查此值：讀取 %1 失敗：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="219"/>
+        <location filename="../model/session/DeviceSession.cpp" line="219"/>
         <source>%1 is read-only</source>
         <translation>%1 為唯讀</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="225"/>
+        <location filename="../model/session/DeviceSession.cpp" line="225"/>
         <source>%1 is a %2 command; it is only sent when explicitly requested</source>
         <translation>%1 是 %2 指令；僅在明確要求時才會送出</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="254"/>
+        <location filename="../model/session/DeviceSession.cpp" line="254"/>
         <source>%1 cannot be checked: %2</source>
         <translation>無法檢查 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="276"/>
+        <location filename="../model/session/DeviceSession.cpp" line="276"/>
         <source>reading %1 failed: %2</source>
         <translation>讀取 %1 失敗：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="327"/>
+        <location filename="../model/session/DeviceSession.cpp" line="327"/>
         <source>written, but reading it back failed: %1</source>
         <translation>已寫入，但回讀失敗：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="336"/>
+        <location filename="../model/session/DeviceSession.cpp" line="336"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>驗證失敗：寫入 %1，裝置中為 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/session/DeviceSession.cpp" line="372"/>
+        <location filename="../model/session/DeviceSession.cpp" line="372"/>
         <source>error code %1</source>
         <translation>錯誤碼 %1</translation>
     </message>
@@ -3742,22 +3742,22 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DrivePages</name>
     <message>
-        <location filename="../main/ui/main/DrivePages.cpp" line="97"/>
+        <location filename="../ui/main/DrivePages.cpp" line="97"/>
         <source>Monitor</source>
         <translation>監視</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/DrivePages.cpp" line="110"/>
+        <location filename="../ui/main/DrivePages.cpp" line="110"/>
         <source>Test run</source>
         <translation>試運轉</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/DrivePages.cpp" line="112"/>
+        <location filename="../ui/main/DrivePages.cpp" line="112"/>
         <source>Alarms</source>
         <translation>警報</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/DrivePages.cpp" line="121"/>
+        <location filename="../ui/main/DrivePages.cpp" line="121"/>
         <source>Machine number %1 (%2, %3) — %4, firmware V%5</source>
         <translation>機號 %1 (%2，%3) — %4，韌體 V%5</translation>
     </message>
@@ -3765,111 +3765,111 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveStatusPoller</name>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="31"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="31"/>
         <source>not polled yet</source>
         <translation>尚未輪詢</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="33"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="33"/>
         <source>online</source>
         <translation>連線中</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="35"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="35"/>
         <source>no answer (%n poll(s) in a row)</source>
         <translation>
             <numerusform>無回應 (連續 %n 次輪詢)</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="37"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="37"/>
         <source>communication error (%n in a row)</source>
         <translation>
             <numerusform>通訊錯誤 (連續 %n 次)</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="43"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="43"/>
         <source>Status not known yet</source>
         <translation>狀態尚未得知</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="45"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="45"/>
         <source>No answer: %1</source>
         <translation>無回應：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="48"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="48"/>
         <source>Alarm %1 %2</source>
         <translation>警報 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="50"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="50"/>
         <source>Alarm %1h (not in the alarm table)</source>
         <translation>警報 %1h (不在警報表中)</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="52"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="52"/>
         <source>Alarm active</source>
         <translation>警報發生中</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="55"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="55"/>
         <source>Communication error: %1</source>
         <translation>通訊錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="58"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="58"/>
         <source>Running</source>
         <translation>運轉中</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="59"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="59"/>
         <source>Running CCW</source>
         <translation>CCW 運轉中</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="60"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="60"/>
         <source>Running CW</source>
         <translation>CW 運轉中</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="62"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="62"/>
         <source>Stopped, no alarm</source>
         <translation>已停止，無警報</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="69"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="69"/>
         <source>grey</source>
         <translation>灰色</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="71"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="71"/>
         <source>green</source>
         <translation>綠色</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="73"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="73"/>
         <source>orange</source>
         <translation>橘色</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="75"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="75"/>
         <source>sky blue</source>
         <translation>天藍色</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="77"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="77"/>
         <source>red</source>
         <translation>紅色</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="79"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="79"/>
         <source>purple</source>
         <translation>紫色</translation>
     </message>
     <message>
-        <location filename="../main/model/bus/DriveStatusPoller.cpp" line="81"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="81"/>
         <source>blue</source>
         <translation>藍色</translation>
     </message>
@@ -3877,86 +3877,86 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveWorkspace</name>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="33"/>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="131"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="33"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="131"/>
         <source>Write &amp;all pending</source>
         <translation>寫入所有待寫入項目(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="34"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="34"/>
         <source>Revert all</source>
         <translation>全部復原</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="35"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="35"/>
         <source>Re-read all</source>
         <translation>全部重新讀取</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="51"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="51"/>
         <source>Write every pending edit of this drive, on all pages, and verify</source>
         <translation>寫入此驅動器所有頁面上的待寫入變更並驗證</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="84"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="84"/>
         <source>Select a drive in the bus list to set it up.</source>
         <translation>請在匯流排清單中選擇要設定的驅動器。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="130"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="130"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>寫入所有待寫入項目 (%1)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="152"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="152"/>
         <source>Reading the drive…</source>
         <translation>正在讀取驅動器…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="154"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="154"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 個值無法讀取</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="166"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="166"/>
         <source>Nothing was written: %1</source>
         <translation>未寫入任何資料：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="179"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="179"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1：%2 未寫入任何資料。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="187"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="187"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>將 %n 個待寫入的值寫入機號 %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="189"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="189"/>
         <source>Nothing was written.</source>
         <translation>未寫入任何資料。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="192"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="192"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>正在寫入 %n 個值…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="194"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="194"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>%n 項寫入失敗；請查看標示的欄位</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/DriveWorkspace.cpp" line="195"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="195"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>已寫入並驗證 %n 個值</numerusform>
@@ -3966,79 +3966,79 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolCertificateCommand</name>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="30"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="30"/>
         <source>A unit&apos;s certificate: its newest record as a PDF, or as JSON with --json</source>
         <translation>產品的測試證書：以 PDF 輸出其最新記錄，或以 --json 輸出 JSON</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="36"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="36"/>
         <source>The results database (see results).</source>
         <translation>結果資料庫 (參閱 results)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="36"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="36"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="37"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="37"/>
         <source>certificate: the record with this id instead of the newest.</source>
         <translation>certificate：使用此 id 的記錄，而非最新記錄。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="38"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="38"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="58"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="58"/>
         <source>error: name one serial number, or a record with --id ID; usage: eol %1</source>
         <translation>錯誤：請指定一個序號，或以 --id ID 指定記錄；用法：eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="66"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="66"/>
         <source>error: the serial number is empty</source>
         <translation>錯誤：序號為空</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="72"/>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="129"/>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="137"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="72"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="129"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="137"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="79"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="79"/>
         <source>error: this program cannot draw a PDF (no Qt GUI application); use --json</source>
         <translation>錯誤：此程式無法產生 PDF (沒有 Qt GUI 應用程式)；請使用 --json</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="96"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="96"/>
         <source>error: no record %1 in %2 (%3)</source>
         <translation>錯誤：%2 中沒有記錄 %1 (%3)</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="101"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="101"/>
         <source>error: record %1 is of serial number %2, not %3</source>
         <translation>錯誤：記錄 %1 屬於序號 %2，而非 %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="109"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="109"/>
         <source>error: %1: %2</source>
         <translation>錯誤：%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="113"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="113"/>
         <source>error: no record of serial number %1 in %2</source>
         <translation>錯誤：%2 中沒有序號 %1 的記錄</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="132"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="132"/>
         <source>wrote %1</source>
         <translation>已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCertificateCommand.cpp" line="140"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="140"/>
         <source>wrote %1: serial number %2, %3, recorded %4</source>
         <translation>已寫入 %1：序號 %2，%3，記錄於 %4</translation>
     </message>
@@ -4046,19 +4046,19 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolCommand</name>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="35"/>
+        <location filename="../cli/EolCommand.cpp" line="35"/>
         <source>End-of-line station: recipes, the results database, unit certificates</source>
         <translation>終檢工站：配方、結果資料庫、產品測試證書</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="40"/>
+        <location filename="../cli/EolCommand.cpp" line="40"/>
         <source>Subcommands:
 </source>
         <translation>子指令：
 </translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="43"/>
+        <location filename="../cli/EolCommand.cpp" line="43"/>
         <source>Results database: --db URL, else OPENTOP_EOL_DB, else the SQLite file
 $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 &quot;opentop-cli help eol&quot; lists every option; each subcommand takes only its own.</source>
@@ -4067,22 +4067,22 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 &quot;opentop-cli help eol&quot; 會列出所有選項；每個子指令只接受自己的選項。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="91"/>
+        <location filename="../cli/EolCommand.cpp" line="91"/>
         <source>error: name a subcommand: eol %1</source>
         <translation>錯誤：請指定子指令：eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="93"/>
+        <location filename="../cli/EolCommand.cpp" line="93"/>
         <source>error: unknown subcommand &quot;eol %1&quot;; subcommands: %2</source>
         <translation>錯誤：未知子指令 &quot;eol %1&quot;；子指令：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="96"/>
+        <location filename="../cli/EolCommand.cpp" line="96"/>
         <source>See &quot;opentop-cli help eol&quot;.</source>
         <translation>請參閱 &quot;opentop-cli help eol&quot;。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolCommand.cpp" line="112"/>
+        <location filename="../cli/EolCommand.cpp" line="112"/>
         <source>error: eol %1: --%2 is not an option of this subcommand; usage: eol %3</source>
         <translation>錯誤：eol %1：--%2 不是此子指令的選項；用法：eol %3</translation>
     </message>
@@ -4090,112 +4090,112 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolDriveRun</name>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="51"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="51"/>
         <source>identifying</source>
         <translation>識別中</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="64"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="64"/>
         <source>no drive answers at machine number %1</source>
         <translation>機號 %1 沒有驅動器回應</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="65"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="65"/>
         <source>the drive at machine number %1 is not identified: %2</source>
         <translation>無法識別機號 %1 的驅動器：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="75"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="75"/>
         <source>a %1 drive, the recipe needs a %2 drive</source>
         <translation>為 %1 驅動器，配方需要 %2 驅動器</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="85"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="85"/>
         <source>the drive does not report its variant and the recipe allows %1</source>
         <translation>驅動器不回報機型，而配方僅允許 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="87"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="87"/>
         <source>variant %1, the recipe allows %2</source>
         <translation>機型為 %1，配方允許 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="93"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="93"/>
         <source>firmware %1, the recipe allows %2</source>
         <translation>韌體為 %1，配方允許 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="94"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="100"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="100"/>
         <source>no profile for the family %1</source>
         <translation>沒有 %1 系列的定義檔</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="132"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="132"/>
         <source>cannot read whether the motor runs: %1</source>
         <translation>無法讀取馬達是否運轉：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="140"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="140"/>
         <source>its motor was running before the test</source>
         <translation>測試前馬達已在運轉</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="141"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="141"/>
         <source>the motor is already running before the test (left by an interrupted run?); nothing was written: stop it first (STOP ALL, or at the drive)</source>
         <translation>測試前馬達已在運轉 (先前中斷的測試所遺留？)；未寫入任何資料：請先停止馬達 (全部停止，或在驅動器上操作)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="151"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="151"/>
         <source>writing the settings</source>
         <translation>正在寫入設定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="186"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="186"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="193"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="193"/>
         <source>writing the settings: %1</source>
         <translation>寫入設定：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="201"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="201"/>
         <source>reading every setting back</source>
         <translation>正在回讀所有設定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="216"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="216"/>
         <source>%1 cannot be read back: %2</source>
         <translation>%1 無法回讀：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="222"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="222"/>
         <source>%1 does not keep its value: set to %2, reads %3</source>
         <translation>%1 未保持其值：設定為 %2，讀取為 %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="226"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="226"/>
         <source>verifying the settings: %1</source>
         <translation>驗證設定：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="235"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="235"/>
         <source>testing</source>
         <translation>測試中</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="239"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="239"/>
         <source>step %1 of %2: %3</source>
         <translation>步驟 %1/%2：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolDriveRun.cpp" line="293"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="293"/>
         <source>passed</source>
         <translation>合格</translation>
     </message>
@@ -4203,12 +4203,12 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolMenu</name>
     <message>
-        <location filename="../main/ui/eol/EolMenu.cpp" line="34"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="34"/>
         <source>&amp;Recipe editor…</source>
         <translation>配方編輯器(&amp;R)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/EolMenu.cpp" line="38"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="38"/>
         <source>Re&amp;sults…</source>
         <translation>結果(&amp;S)…</translation>
     </message>
@@ -4216,54 +4216,54 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeCheckCommand</name>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="26"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="26"/>
         <source>Check a recipe against the drive profiles (and per-unit values of a CSV file)</source>
         <translation>依驅動器定義檔檢查配方 (以及 CSV 檔中的單台數值)</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="32"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="32"/>
         <source>recipe check: also check every unit&apos;s per-unit values in this CSV file.</source>
         <translation>recipe check：同時檢查此 CSV 檔中每台產品的單台數值。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="33"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="33"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="39"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="39"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>錯誤：請指定一個配方檔；用法：eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="59"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="59"/>
         <source>error: %1 refused: %2</source>
         <translation>錯誤：%1 被拒絕：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="66"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="66"/>
         <source>%1, serial %2</source>
         <translation>%1，序號 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="92"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="92"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="94"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="94"/>
         <source>%1 is not valid: %n problem(s); nothing may be run with it</source>
         <translation>
             <numerusform>%1 無效：%n 個問題；不可使用此配方執行</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="102"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="102"/>
         <source>valid: %1 revision %2: %3</source>
         <translation>有效：%1 版次 %2：%3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolRecipeCheckCommand.cpp" line="105"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="105"/>
         <source>; %n unit(s) of %1 checked</source>
         <translation>
             <numerusform>；已檢查 %1 的 %n 台產品</numerusform>
@@ -4273,143 +4273,143 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeCreateCommand</name>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="31"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="31"/>
         <source>Make a recipe from a golden unit: a backup file or drives on the bus</source>
         <translation>由標準樣品建立配方：來源為備份檔或匯流排上的驅動器</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="37"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="37"/>
         <source>recipe create: the golden unit&apos;s backup file.</source>
         <translation>recipe create：標準樣品的備份檔。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="38"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="38"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="40"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="40"/>
         <source>recipe create: the golden unit&apos;s drives on the bus, e.g. 1,2 (with the connection options).</source>
         <translation>recipe create：標準樣品在匯流排上的驅動器，例如 1,2 (搭配連線選項)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="42"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="42"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="43"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="43"/>
         <source>recipe create: the product&apos;s name.</source>
         <translation>recipe create：產品名稱。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="43"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="43"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
         <source>recipe create: the recipe&apos;s revision.</source>
         <translation>recipe create：配方版次。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
         <source>REV</source>
         <translation>REV</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="46"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
         <source>recipe create: replace an existing recipe file.</source>
         <translation>recipe create：取代既有的配方檔。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="58"/>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="151"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="58"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="151"/>
         <source>error: %1; nothing written</source>
         <translation>錯誤：%1；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="72"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="72"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>讀取機號 %1 時中斷：未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="79"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="79"/>
         <source>error: %1: cannot read %2</source>
         <translation>錯誤：%1：無法讀取 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="82"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="82"/>
         <source>error: %1 holds a value its profile does not allow: %2</source>
         <translation>錯誤：%1 含有定義檔不允許的值：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="85"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="85"/>
         <source>nothing written</source>
         <translation>未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="90"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="90"/>
         <source>%1: %2 settings read</source>
         <translation>%1：已讀取 %2 項設定</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="101"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="101"/>
         <source>error: %1; usage: eol %2</source>
         <translation>錯誤：%1；用法：eol %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="105"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="105"/>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>非預期的引數 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="109"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="109"/>
         <source>give either --from-backup FILE or --drives LIST</source>
         <translation>請指定 --from-backup FILE 或 --drives LIST 其中之一</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="113"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="113"/>
         <source>give the product&apos;s name with --product NAME</source>
         <translation>請以 --product NAME 指定產品名稱</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
         <source>give the recipe&apos;s revision with --revision REV</source>
         <translation>請以 --revision REV 指定配方版次</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="118"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="118"/>
         <source>give the recipe file to write with -o RECIPE</source>
         <translation>請以 -o RECIPE 指定要寫入的配方檔</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="121"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="121"/>
         <source>error: %1 exists; give --force to replace it</source>
         <translation>錯誤：%1 已存在；請加上 --force 以取代</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="125"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="125"/>
         <source>error: %1; nothing read</source>
         <translation>錯誤：%1；未讀取任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="142"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="142"/>
         <source>--drives %1: %2</source>
         <translation>--drives %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="158"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="175"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="175"/>
         <source>wrote %1: %2 revision %3, %4</source>
         <translation>已寫入 %1：%2 版次 %3，%4</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeCreateCommand.cpp" line="182"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="182"/>
         <source>error: the recipe does not pass &quot;eol recipe check&quot;: fix it, then sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>錯誤：配方未通過 &quot;eol recipe check&quot;：請修正後以 &quot;opentop-cli eol recipe sign %1&quot; 簽署</translation>
     </message>
@@ -4417,177 +4417,177 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeShowCommand</name>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="58"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="58"/>
         <source>Show a recipe: positions, settings by label with units, steps and limits</source>
         <translation>顯示配方：位置、依標籤列出的設定 (含單位)、步驟與限值</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="69"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="69"/>
         <source>&apos;%1&apos;</source>
         <translation>&apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="70"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="70"/>
         <source>&apos;%1&apos; %2</source>
         <translation>&apos;%1&apos; %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="71"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="71"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="83"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="83"/>
         <source>%1 SPno%2</source>
         <translation>%1 SPno%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="85"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="85"/>
         <source>%1 to %2</source>
         <translation>%1 至 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="88"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="88"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="93"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="93"/>
         <source>the drive&apos;s target speed</source>
         <translation>驅動器的目標速度</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="94"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="94"/>
         <source>%1 %2 %3 within %4 s</source>
         <translation>%1 %2 %3，限 %4 s 內</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="98"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="98"/>
         <source>%1 for %2 s</source>
         <translation>%1，持續 %2 s</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="101"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="101"/>
         <source>%1: stopped within %2 s + %3 s</source>
         <translation>%1：於 %2 s + %3 s 內停止</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="104"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="104"/>
         <source>%1: stopped within the deceleration time + %2 s</source>
         <translation>%1：於減速時間 + %2 s 內停止</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="109"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="109"/>
         <source>%1: &apos;%2&apos; is &quot;%3&quot;</source>
         <translation>%1：&apos;%2&apos; 為 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="126"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="126"/>
         <source>  no settings</source>
         <translation>  無設定</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
         <source>  setting</source>
         <translation>  設定</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
         <source>value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
         <source>unit</source>
         <translation>單位</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
         <source>  per-unit value</source>
         <translation>  單台數值</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
         <source>range</source>
         <translation>範圍</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
         <source>from</source>
         <translation>來源</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="141"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="141"/>
         <source>%1 … %2</source>
         <translation>%1 … %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="144"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="144"/>
         <source>CSV file by serial</source>
         <translation>依序號取自 CSV 檔</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="145"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="145"/>
         <source>typed by the operator</source>
         <translation>由作業員輸入</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="150"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="150"/>
         <source>  no test steps</source>
         <translation>  無測試步驟</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="153"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="153"/>
         <source>  steps:</source>
         <translation>  步驟：</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="167"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="167"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>錯誤：請指定一個配方檔；用法：eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="205"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="205"/>
         <source>%1, revision %2</source>
         <translation>%1，版次 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="208"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="208"/>
         <source>checksum %1</source>
         <translation>檢查碼 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
         <source>position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
         <source>machine number</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
         <source>name</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
         <source>family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="210"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="210"/>
         <source>variants</source>
         <translation>機型</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="210"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="210"/>
         <source>firmware</source>
         <translation>韌體</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeShowCommand.cpp" line="221"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="221"/>
         <source>any</source>
         <translation>不限</translation>
     </message>
@@ -4595,34 +4595,34 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeSignCommand</name>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="26"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="26"/>
         <source>Accept a recipe edited by hand: a new checksum, only when it passes check</source>
         <translation>接受手動編輯的配方：僅在通過檢查時產生新的檢查碼</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="32"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="32"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>錯誤：請指定一個配方檔；用法：eol %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="53"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="53"/>
         <source>error: %1 does not pass check (%n problem(s)); not signed</source>
         <translation>
             <numerusform>錯誤：%1 未通過檢查 (%n 個問題)；未簽署</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="61"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="61"/>
         <source>error: %1; not signed</source>
         <translation>錯誤：%1；未簽署</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="73"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="73"/>
         <source>%1 is signed already (%2); nothing changed</source>
         <translation>%1 已簽署 (%2)；未做任何變更</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRecipeSignCommand.cpp" line="76"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="76"/>
         <source>signed %1: %2 revision %3, %4</source>
         <translation>已簽署 %1：%2 版次 %3，%4</translation>
     </message>
@@ -4630,262 +4630,262 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolResultsCommand</name>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="65"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="65"/>
         <source>List units of the results database, their first-pass yield, or export them as CSV</source>
         <translation>列出結果資料庫中的產品、其一次良率，或匯出為 CSV</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="72"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="72"/>
         <source>The results database: a SQLite file, sqlite:PATH or postgresql://user@host/db (default: OPENTOP_EOL_DB, else ~/.local/share/opentop/results.db).</source>
         <translation>結果資料庫：SQLite 檔、sqlite:PATH 或 postgresql://user@host/db (預設：OPENTOP_EOL_DB，否則為 ~/.local/share/opentop/results.db)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="74"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="74"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="75"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="75"/>
         <source>results: only this serial number.</source>
         <translation>results：僅此序號。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="75"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="75"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="77"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="77"/>
         <source>results: started at or after T (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</source>
         <translation>results：於 T 或之後開始 (2026-11-24、2026-11-24T06:00、8h、2d、today)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="78"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="79"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="78"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="79"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="79"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="79"/>
         <source>results: started before T.</source>
         <translation>results：於 T 之前開始。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="80"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
         <source>results: only this recipe (product name).</source>
         <translation>results：僅此配方 (產品名稱)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="80"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="83"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="81"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
         <source>results: pass, fail, interrupted, aborted or running.</source>
         <translation>results：pass、fail、interrupted、aborted 或 running。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="82"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
         <source>V</source>
         <translation>V</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="83"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
         <source>results: only this station.</source>
         <translation>results：僅此工站。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="84"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
         <source>results: only the newest N units.</source>
         <translation>results：僅最新的 N 台產品。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="84"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="86"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
         <source>results: CSV (RFC 4180) on standard output or to -o FILE.</source>
         <translation>results：以 CSV (RFC 4180) 輸出至標準輸出或 -o FILE。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="88"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="88"/>
         <source>results: first-pass yield and failure reasons per recipe and per shift.</source>
         <translation>results：各配方及各班別的一次良率與不合格原因。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="90"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="90"/>
         <source>results --yield: the shifts&apos; start times in local time (default 06:00,14:00,22:00).</source>
         <translation>results --yield：各班別的開始時間，以本地時間表示 (預設 06:00,14:00,22:00)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="91"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="123"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="123"/>
         <source>&quot;%1&quot; is not a time; give 2026-11-24, 2026-11-24T06:00 (local, or with Z or +01:00), 8h, 2d, today or yesterday</source>
         <translation>&quot;%1&quot; 不是時間；請使用 2026-11-24、2026-11-24T06:00 (本地時間，或加上 Z 或 +01:00)、8h、2d、today 或 yesterday</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="133"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="251"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="133"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="251"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="148"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="148"/>
         <source>--%1: %2</source>
         <translation>--%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="153"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="153"/>
         <source>--since %1 is not before --until %2</source>
         <translation>--since %1 未早於 --until %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="159"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="159"/>
         <source>--verdict &quot;%1&quot;: give pass, fail, interrupted, aborted or running</source>
         <translation>--verdict &quot;%1&quot;：請使用 pass、fail、interrupted、aborted 或 running</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="166"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="166"/>
         <source>--limit &quot;%1&quot;: give a number of units from 1</source>
         <translation>--limit &quot;%1&quot;：請指定 1 以上的產品台數</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="176"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="202"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="176"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="202"/>
         <source>no unit matches</source>
         <translation>沒有符合的產品</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
         <source>started</source>
         <translation>開始時間</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
         <source>serial</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="206"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="206"/>
         <source>recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
         <source>station</source>
         <translation>工站</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
         <source>operator</source>
         <translation>作業員</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="180"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="180"/>
         <source>verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="180"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="180"/>
         <source>time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="180"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="180"/>
         <source>reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="188"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="188"/>
         <source>%1 rev. %2</source>
         <translation>%1 版次 %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="208"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="208"/>
         <source>shift</source>
         <translation>班別</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>serials</source>
         <translation>序號數</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>first pass</source>
         <translation>一次合格</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>first-pass yield</source>
         <translation>一次良率</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>records</source>
         <translation>記錄數</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="210"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="210"/>
         <source>not finished</source>
         <translation>未完成</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="225"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="225"/>
         <source>First-pass yield per recipe</source>
         <translation>各配方一次良率</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="227"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="227"/>
         <source>Per shift</source>
         <translation>各班別</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>Failure reasons</source>
         <translation>不合格原因</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="254"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="254"/>
         <source>wrote %1</source>
         <translation>已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="263"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="263"/>
         <source>error: unexpected argument &quot;%1&quot;; usage: eol %2</source>
         <translation>錯誤：非預期的引數 &quot;%1&quot;；用法：eol %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="269"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="269"/>
         <source>error: give --csv or --json, not both</source>
         <translation>錯誤：--csv 與 --json 只能擇一</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="273"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="273"/>
         <source>error: -o names the CSV file: give --csv too</source>
         <translation>錯誤：-o 指定的是 CSV 檔：請同時加上 --csv</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="278"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="278"/>
         <source>error: --shifts is for --yield</source>
         <translation>錯誤：--shifts 僅用於 --yield</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="288"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="288"/>
         <source>error: --shifts %1: %2</source>
         <translation>錯誤：--shifts %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolResultsCommand.cpp" line="308"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="308"/>
         <source>error: %1: %2</source>
         <translation>錯誤：%1：%2</translation>
     </message>
@@ -4893,48 +4893,48 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRun</name>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="54"/>
+        <location filename="../model/eol/EolRun.cpp" line="54"/>
         <source>the results database cannot record the unit: %1</source>
         <translation>結果資料庫無法記錄此產品：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="71"/>
+        <location filename="../model/eol/EolRun.cpp" line="71"/>
         <source>the recipe has no drives</source>
         <translation>配方中沒有驅動器</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="84"/>
+        <location filename="../model/eol/EolRun.cpp" line="84"/>
         <source>the recipe is not valid: %1</source>
         <translation>配方無效：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="89"/>
+        <location filename="../model/eol/EolRun.cpp" line="89"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1：此產品沒有 %2 的值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="107"/>
+        <location filename="../model/eol/EolRun.cpp" line="107"/>
         <source>cancelled by the operator</source>
         <translation>已由作業員取消</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="116"/>
+        <location filename="../model/eol/EolRun.cpp" line="116"/>
         <source>the connection was lost: %1</source>
         <translation>連線中斷：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="122"/>
-        <location filename="../main/model/eol/EolRun.cpp" line="129"/>
+        <location filename="../model/eol/EolRun.cpp" line="122"/>
+        <location filename="../model/eol/EolRun.cpp" line="129"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="126"/>
+        <location filename="../model/eol/EolRun.cpp" line="126"/>
         <source>%1 failed</source>
         <translation>%1 失敗</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolRun.cpp" line="164"/>
+        <location filename="../model/eol/EolRun.cpp" line="164"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>未確認停止：%1</translation>
     </message>
@@ -4942,129 +4942,129 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="86"/>
+        <location filename="../cli/EolRunCommand.cpp" line="86"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>於終檢工站設定並測試一台產品，並記錄結果</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>產品序號 (依條碼讀取值)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="93"/>
         <source>Who tests it (default: the login name).</source>
         <translation>測試人員 (預設：登入名稱)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="93"/>
-        <location filename="../main/cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>此工站名稱 (預設：主機名稱)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果資料庫：SQLite 檔或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>含單台數值的 CSV 檔，依序號對應。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>由作業員輸入的單台數值，例如 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="131"/>
+        <location filename="../cli/EolRunCommand.cpp" line="131"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1：請寫成 MACHINE:NAME=VALUE，例如 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="136"/>
+        <location filename="../cli/EolRunCommand.cpp" line="136"/>
         <source>--value %1: %2</source>
         <translation>--value %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="149"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="164"/>
+        <location filename="../cli/EolRunCommand.cpp" line="164"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1：配方無效；未送出任何資料：</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="185"/>
+        <location filename="../cli/EolRunCommand.cpp" line="185"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果資料庫：%1；未送出任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="194"/>
+        <location filename="../cli/EolRunCommand.cpp" line="194"/>
         <source>note: %1 unit(s) this station left unfinished are now recorded as interrupted</source>
         <translation>注意：此工站有 %1 台未完成的產品，現已記錄為已中斷</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="230"/>
-        <location filename="../main/cli/EolRunCommand.cpp" line="251"/>
+        <location filename="../cli/EolRunCommand.cpp" line="230"/>
+        <location filename="../cli/EolRunCommand.cpp" line="251"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="256"/>
         <source>ok</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="256"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="274"/>
+        <location filename="../cli/EolRunCommand.cpp" line="274"/>
         <source>interrupted at the station</source>
         <translation>在工站上中斷</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="303"/>
+        <location filename="../cli/EolRunCommand.cpp" line="303"/>
         <source>rev. %1</source>
         <translation>版次 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="309"/>
+        <location filename="../cli/EolRunCommand.cpp" line="309"/>
         <source>the result was NOT recorded: %1</source>
         <translation>結果「未」記錄：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolRunCommand.cpp" line="311"/>
+        <location filename="../cli/EolRunCommand.cpp" line="311"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告：未確認馬達已停止：%1</translation>
     </message>
@@ -5072,23 +5072,23 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolSpeedChart</name>
     <message>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="20"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="20"/>
         <source>time (s)</source>
         <translation>時間 (s)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="44"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="44"/>
         <source>speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="44"/>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="57"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="44"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="57"/>
         <source>speed (%1)</source>
         <translation>速度 (%1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/EolSpeedChart.cpp" line="52"/>
+        <location filename="../ui/eol/EolSpeedChart.cpp" line="52"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
@@ -5096,37 +5096,37 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="100"/>
+        <location filename="../model/eol/EolStation.cpp" line="100"/>
         <source>no results database</source>
         <translation>無結果資料庫</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="107"/>
+        <location filename="../model/eol/EolStation.cpp" line="107"/>
         <source>a unit is being tested</source>
         <translation>有產品正在測試中</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="111"/>
+        <location filename="../model/eol/EolStation.cpp" line="111"/>
         <source>open a recipe first</source>
         <translation>請先開啟配方</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="115"/>
+        <location filename="../model/eol/EolStation.cpp" line="115"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果資料庫未開啟；無法記錄結果時不會進行測試</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="119"/>
+        <location filename="../model/eol/EolStation.cpp" line="119"/>
         <source>not connected to a bus</source>
         <translation>未連線至匯流排</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="123"/>
+        <location filename="../model/eol/EolStation.cpp" line="123"/>
         <source>no serial number</source>
         <translation>無序號</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStation.cpp" line="141"/>
+        <location filename="../model/eol/EolStation.cpp" line="141"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>此配方的單台數值取自 CSV 檔：請先開啟該檔</translation>
     </message>
@@ -5134,170 +5134,170 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStepRunner</name>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="40"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="40"/>
         <source>allowed %1–%2 %3</source>
         <translation>允許 %1–%2 %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="42"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="42"/>
         <source>allowed at most %1 %2</source>
         <translation>最多允許 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="44"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="44"/>
         <source>allowed at least %1 %2</source>
         <translation>至少需 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="92"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="92"/>
         <source>step %1 (%2)</source>
         <translation>步驟 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="125"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="125"/>
         <source>the drive&apos;s session ended</source>
         <translation>驅動器的連線階段已結束</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="198"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="218"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="230"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="422"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="443"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="469"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="511"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="198"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="218"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="230"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="422"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="443"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="469"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="511"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="210"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="210"/>
         <source>%1: the drive has no communication priority</source>
         <translation>%1：驅動器未設為通訊優先</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="260"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="260"/>
         <source>%1: the drive stopped answering: %2</source>
         <translation>%1：驅動器停止回應：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="268"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="268"/>
         <source>%1: the drive raised an alarm while running</source>
         <translation>%1：驅動器在運轉中發生警報</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="291"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="291"/>
         <source>%1: %2 %3</source>
         <translation>%1：%2 %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="310"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="310"/>
         <source>%1: the drive has no speed to wait for</source>
         <translation>%1：驅動器沒有可等待的速度</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="320"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="320"/>
         <source>time to reach speed</source>
         <translation>到達速度時間</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="342"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="347"/>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="466"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="342"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="347"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="466"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="348"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="348"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="349"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="349"/>
         <source>%1: did not reach %2 %3 ±%4 %3 within %5 s (last read %6 %3)</source>
         <translation>%1：%5 s 內未達到 %2 %3 ±%4 %3 (最後讀取值 %6 %3)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="350"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="350"/>
         <source>its target</source>
         <translation>其目標值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="407"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="407"/>
         <source>%1 could not be read</source>
         <translation>無法讀取 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="417"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="417"/>
         <source>%1 %2 %3, %4</source>
         <translation>%1 %2 %3，%4</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="435"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="435"/>
         <source>%1: the drive reports no alarms</source>
         <translation>%1：此驅動器沒有可讀取的警報狀態</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="448"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="448"/>
         <source>alarms raised</source>
         <translation>發生的警報</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="451"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="451"/>
         <source>%1: the drive has an alarm</source>
         <translation>%1：驅動器有警報</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="466"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="466"/>
         <source>time to stop</source>
         <translation>停止所需時間</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="473"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="473"/>
         <source>%1: stopped after %2 s, allowed at most %3 s</source>
         <translation>%1：%2 s 後停止，最多允許 %3 s</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="502"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="502"/>
         <source>%1: nothing to read</source>
         <translation>%1：無可讀取的項目</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="519"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="519"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="522"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="522"/>
         <source>%1: %2 reads &quot;%3&quot;, expected &quot;%4&quot;</source>
         <translation>%1：%2 讀取為 &quot;%3&quot;，預期為 &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="532"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="532"/>
         <source>%1: %2 reads %3 %4, %5</source>
         <translation>%1：%2 讀取為 %3 %4，%5</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="554"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="554"/>
         <source>the stop command failed: %1</source>
         <translation>停止指令失敗：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="569"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="569"/>
         <source>stopped after %1 s</source>
         <translation>%1 s 後停止</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="570"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="570"/>
         <source>not confirmed stopped: %1</source>
         <translation>未確認停止：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="592"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="592"/>
         <source>communication priority could not be given back: %1</source>
         <translation>無法恢復原本的控制優先權：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolStepRunner.cpp" line="632"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="632"/>
         <source>the steps ended with the motor running</source>
         <translation>步驟結束時馬達仍在運轉</translation>
     </message>
@@ -5305,97 +5305,97 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolSupport</name>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="26"/>
+        <location filename="../cli/EolSupport.cpp" line="26"/>
         <source>no such file</source>
         <translation>檔案不存在</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="28"/>
+        <location filename="../cli/EolSupport.cpp" line="28"/>
         <source>is a directory; name a recipe file</source>
         <translation>是資料夾；請指定配方檔</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="30"/>
+        <location filename="../cli/EolSupport.cpp" line="30"/>
         <source>is not a regular file (a device, FIFO or socket); name a recipe file</source>
         <translation>不是一般檔案 (裝置、FIFO 或 socket)；請指定配方檔</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="32"/>
+        <location filename="../cli/EolSupport.cpp" line="32"/>
         <source>is larger than %1 MB, the most a recipe file may hold</source>
         <translation>大於配方檔上限 %1 MB</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="36"/>
+        <location filename="../cli/EolSupport.cpp" line="36"/>
         <source>cannot be read: %1</source>
         <translation>無法讀取：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="38"/>
-        <location filename="../main/cli/EolSupport.cpp" line="158"/>
+        <location filename="../cli/EolSupport.cpp" line="38"/>
+        <location filename="../cli/EolSupport.cpp" line="158"/>
         <source>error: %1: %2</source>
         <translation>錯誤：%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="65"/>
-        <location filename="../main/cli/EolSupport.cpp" line="173"/>
+        <location filename="../cli/EolSupport.cpp" line="65"/>
+        <location filename="../cli/EolSupport.cpp" line="173"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="72"/>
+        <location filename="../cli/EolSupport.cpp" line="72"/>
         <source>error: %1 refused: %2</source>
         <translation>錯誤：%1 被拒絕：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="79"/>
+        <location filename="../cli/EolSupport.cpp" line="79"/>
         <source>%1 was changed after OpenTOP wrote it (its checksum does not match), so no station runs it. Check it with &quot;opentop-cli eol recipe check %1&quot; and, when it is right, sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>%1 在 OpenTOP 寫入後曾被修改 (檢查碼不符)，因此任何工站都不會執行。請以 &quot;opentop-cli eol recipe check %1&quot; 檢查，確認無誤後以 &quot;opentop-cli eol recipe sign %1&quot; 簽署</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="97"/>
+        <location filename="../cli/EolSupport.cpp" line="97"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolSupport.cpp" line="122"/>
+        <location filename="../cli/EolSupport.cpp" line="122"/>
         <source>%n position(s)</source>
         <translation>
             <numerusform>%n 個位置</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolSupport.cpp" line="123"/>
+        <location filename="../cli/EolSupport.cpp" line="123"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n 項設定</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolSupport.cpp" line="125"/>
+        <location filename="../cli/EolSupport.cpp" line="125"/>
         <source>%n per-unit value(s)</source>
         <translation>
             <numerusform>%n 個單台數值</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/EolSupport.cpp" line="126"/>
+        <location filename="../cli/EolSupport.cpp" line="126"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n 個步驟</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="133"/>
+        <location filename="../cli/EolSupport.cpp" line="133"/>
         <source>The file to write (recipe create; results --csv; certificate).</source>
         <translation>要寫入的檔案 (recipe create；results --csv；certificate)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="134"/>
+        <location filename="../cli/EolSupport.cpp" line="134"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/EolSupport.cpp" line="164"/>
+        <location filename="../cli/EolSupport.cpp" line="164"/>
         <source>error: no results database at %1 (nothing recorded there yet); name one with --db URL</source>
         <translation>錯誤：%1 沒有結果資料庫 (尚未記錄任何資料)；請以 --db URL 指定</translation>
     </message>
@@ -5403,23 +5403,23 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolTarget</name>
     <message>
-        <location filename="../main/model/eol/EolTarget.cpp" line="26"/>
+        <location filename="../model/eol/EolTarget.cpp" line="26"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolTarget.cpp" line="38"/>
-        <location filename="../main/model/eol/EolTarget.cpp" line="49"/>
+        <location filename="../model/eol/EolTarget.cpp" line="38"/>
+        <location filename="../model/eol/EolTarget.cpp" line="49"/>
         <source>not a parameter of %1</source>
         <translation>不是 %1 的參數</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolTarget.cpp" line="51"/>
+        <location filename="../model/eol/EolTarget.cpp" line="51"/>
         <source>this unit&apos;s value is missing</source>
         <translation>缺少此產品的值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/EolTarget.cpp" line="54"/>
+        <location filename="../model/eol/EolTarget.cpp" line="54"/>
         <source>%1 is outside this product&apos;s range %2–%3 %4</source>
         <translation>%1 超出此產品的範圍 %2–%3 %4</translation>
     </message>
@@ -5427,27 +5427,27 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::ExitActions</name>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="34"/>
+        <location filename="../model/run/ExitActions.cpp" line="34"/>
         <source>The stop broadcast to the %1 drives failed: %2</source>
         <translation>對 %1 驅動器的停止廣播失敗：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="38"/>
+        <location filename="../model/run/ExitActions.cpp" line="38"/>
         <source>Machine number %1: STILL RUNNING (%2) %3</source>
         <translation>機號 %1：仍在運轉 (%2) %3</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="43"/>
+        <location filename="../model/run/ExitActions.cpp" line="43"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped %2</source>
         <translation>機號 %1：無回應，未確認停止 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="68"/>
+        <location filename="../model/run/ExitActions.cpp" line="68"/>
         <source>Machine number %1: no way to give control back to its inputs is known</source>
         <translation>機號 %1：不知道如何將控制權交還給其輸入端子</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitActions.cpp" line="80"/>
+        <location filename="../model/run/ExitActions.cpp" line="80"/>
         <source>Machine number %1: %2</source>
         <translation>機號 %1：%2</translation>
     </message>
@@ -5455,12 +5455,12 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::ExitCheck</name>
     <message>
-        <location filename="../main/model/run/ExitCheck.cpp" line="19"/>
+        <location filename="../model/run/ExitCheck.cpp" line="19"/>
         <source>in communication priority (its own inputs cannot start or stop it)</source>
         <translation>處於通訊優先 (其本身的輸入端子無法啟動或停止它)</translation>
     </message>
     <message>
-        <location filename="../main/model/run/ExitCheck.cpp" line="20"/>
+        <location filename="../model/run/ExitCheck.cpp" line="20"/>
         <source>Machine number %1 (%2): %3</source>
         <translation>機號 %1 (%2)：%3</translation>
     </message>
@@ -5468,102 +5468,102 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::ExitGuard</name>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="44"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="44"/>
         <source>Drives left in communication priority</source>
         <translation>仍處於通訊優先的驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="44"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="44"/>
         <source>Drives are running</source>
         <translation>驅動器運轉中</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="46"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="46"/>
         <source>Before you %1: these drives are left in communication priority.</source>
         <translation>在%1之前：以下驅動器仍處於通訊優先。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="47"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="47"/>
         <source>Before you %1: these drives are running or left in communication priority.</source>
         <translation>在%1之前：以下驅動器正在運轉或仍處於通訊優先。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="51"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="51"/>
         <source>In communication priority a drive takes run and stop only from the bus: once OpenTOP lets go, only another bus master or switching its power off stops it.</source>
         <translation>在通訊優先下，驅動器只接受來自匯流排的運轉與停止指令：OpenTOP 一旦放手，只有其他匯流排主站或切斷電源才能使其停止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="55"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="55"/>
         <source>&quot;Stop&quot; broadcasts every family&apos;s stop command to the whole bus and checks that each drive above has stopped.</source>
         <translation>「停止驅動器」會向整個匯流排廣播各系列的停止指令，並確認上列每台驅動器均已停止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="59"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="59"/>
         <source>&quot;Give control back&quot; sets I/O priority, so the machine&apos;s own inputs run the drives again.</source>
         <translation>「交還控制權」會設為 I/O 優先，讓機台本身的輸入端子再次控制驅動器。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="63"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="63"/>
         <source>Stop the drives</source>
         <translation>停止驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="67"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="67"/>
         <source>Give control back (I/O priority)</source>
         <translation>交還控制權 (I/O 優先)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="69"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="69"/>
         <source>Leave them so</source>
         <translation>維持現狀</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="69"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="69"/>
         <source>Leave them running</source>
         <translation>讓其繼續運轉</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="71"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="71"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="88"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="88"/>
         <source>Stopping the drives…</source>
         <translation>正在停止驅動器…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="88"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="88"/>
         <source>Giving control back to the drives&apos; inputs…</source>
         <translation>正在將控制權交還給驅動器的輸入端子…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="97"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="97"/>
         <source>stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="97"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="97"/>
         <source>give control back</source>
         <translation>交還控制權</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="113"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="113"/>
         <source>Not every drive is safe</source>
         <translation>並非所有驅動器都已處於安全狀態</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="114"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="114"/>
         <source>Could not %1 every drive:</source>
         <translation>無法對所有驅動器執行「%1」：</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="116"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="116"/>
         <source>Stay connected</source>
         <translation>保持連線</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/ExitGuard.cpp" line="117"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="117"/>
         <source>Go on anyway</source>
         <translation>仍要繼續</translation>
     </message>
@@ -5571,27 +5571,27 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::FaultInjector</name>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="30"/>
+        <location filename="../sim/FaultInjector.cpp" line="30"/>
         <source>fault &apos;%1&apos; must be NAME=VALUE; names: %2</source>
         <translation>故障 &apos;%1&apos; 必須寫成 NAME=VALUE；名稱：%2</translation>
     </message>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="38"/>
+        <location filename="../sim/FaultInjector.cpp" line="38"/>
         <source>late_ms must be a whole number of milliseconds 1..60000, got &apos;%1&apos;</source>
         <translation>late_ms 必須是 1..60000 的整數毫秒，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="52"/>
+        <location filename="../sim/FaultInjector.cpp" line="52"/>
         <source>unknown fault &apos;%1&apos;; allowed: %2</source>
         <translation>未知故障 &apos;%1&apos;；允許：%2</translation>
     </message>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="57"/>
+        <location filename="../sim/FaultInjector.cpp" line="57"/>
         <source>fault rate %1 must be a number 0..1, got &apos;%2&apos;</source>
         <translation>故障率 %1 必須是 0..1 的數字，收到 &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/FaultInjector.cpp" line="64"/>
+        <location filename="../sim/FaultInjector.cpp" line="64"/>
         <source>the fault rates add up to more than 1</source>
         <translation>故障率總和大於 1</translation>
     </message>
@@ -5599,83 +5599,83 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::FileActions</name>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="22"/>
+        <location filename="../ui/files/FileActions.cpp" line="22"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 備份檔 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="38"/>
-        <location filename="../main/ui/files/FileActions.cpp" line="94"/>
+        <location filename="../ui/files/FileActions.cpp" line="38"/>
+        <location filename="../ui/files/FileActions.cpp" line="94"/>
         <source>&amp;Back up selected drive…</source>
         <translation>備份所選驅動器(&amp;B)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="44"/>
+        <location filename="../ui/files/FileActions.cpp" line="44"/>
         <source>Back up &amp;whole bus…</source>
         <translation>備份整個匯流排(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="50"/>
+        <location filename="../ui/files/FileActions.cpp" line="50"/>
         <source>Save the settings of every identified drive to one file</source>
         <translation>將所有已識別驅動器的設定儲存至一個檔案</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="52"/>
+        <location filename="../ui/files/FileActions.cpp" line="52"/>
         <source>&amp;Open backup file…</source>
         <translation>開啟備份檔(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="54"/>
+        <location filename="../ui/files/FileActions.cpp" line="54"/>
         <source>Show the drives and settings a backup file holds</source>
         <translation>顯示備份檔中的驅動器與設定</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="55"/>
+        <location filename="../ui/files/FileActions.cpp" line="55"/>
         <source>Co&amp;mpare…</source>
         <translation>比較(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="58"/>
+        <location filename="../ui/files/FileActions.cpp" line="58"/>
         <source>Compare drives and backup files side by side, or against factory defaults</source>
         <translation>並排比較驅動器與備份檔，或與出廠預設值比較</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="59"/>
+        <location filename="../ui/files/FileActions.cpp" line="59"/>
         <source>&amp;Restore from file…</source>
         <translation>從檔案還原(&amp;R)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="60"/>
+        <location filename="../ui/files/FileActions.cpp" line="60"/>
         <source>Preview, then write a backup&apos;s settings back to drives</source>
         <translation>預覽後將備份的設定寫回驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="93"/>
+        <location filename="../ui/files/FileActions.cpp" line="93"/>
         <source>&amp;Back up selected drives…</source>
         <translation>備份所選驅動器(&amp;B)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="96"/>
+        <location filename="../ui/files/FileActions.cpp" line="96"/>
         <source>Select an identified drive in the bus list first</source>
         <translation>請先在匯流排清單中選擇已識別的驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="97"/>
+        <location filename="../ui/files/FileActions.cpp" line="97"/>
         <source>Save the settings of the selected drive(s) to a file</source>
         <translation>將所選驅動器的設定儲存至檔案</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="108"/>
+        <location filename="../ui/files/FileActions.cpp" line="108"/>
         <source>Back up to file</source>
         <translation>備份至檔案</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="120"/>
+        <location filename="../ui/files/FileActions.cpp" line="120"/>
         <source>Open backup file</source>
         <translation>開啟備份檔</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/FileActions.cpp" line="141"/>
+        <location filename="../ui/files/FileActions.cpp" line="141"/>
         <source>Restore from backup file</source>
         <translation>從備份檔還原</translation>
     </message>
@@ -5683,27 +5683,27 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::FileCommandSupport</name>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="28"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="28"/>
         <source>no such file</source>
         <translation>檔案不存在</translation>
     </message>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="30"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="30"/>
         <source>is a directory; name a backup file</source>
         <translation>是資料夾；請指定備份檔</translation>
     </message>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="32"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="32"/>
         <source>is not a regular file (a device, FIFO or socket); name a backup file</source>
         <translation>不是一般檔案 (裝置、FIFO 或 socket)；請指定備份檔</translation>
     </message>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="34"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="34"/>
         <source>error: %1: %2</source>
         <translation>錯誤：%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/FileCommandSupport.cpp" line="41"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="41"/>
         <source>error: %1 refused: %2</source>
         <translation>錯誤：%1 被拒絕：%2</translation>
     </message>
@@ -5711,135 +5711,135 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GetCommand</name>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="43"/>
+        <location filename="../cli/GetCommand.cpp" line="43"/>
         <source>Read parameters by name in engineering units (or registers with --raw)</source>
         <translation>依名稱以工程單位讀取參數 (或以 --raw 讀取暫存器)</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="49"/>
+        <location filename="../cli/GetCommand.cpp" line="49"/>
         <source>Read every parameter of a group (see params).</source>
         <translation>讀取某一參數群組的所有參數 (參閱 params)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="49"/>
+        <location filename="../cli/GetCommand.cpp" line="49"/>
         <source>GROUP</source>
         <translation>GROUP</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="50"/>
+        <location filename="../cli/GetCommand.cpp" line="50"/>
         <source>Read every readable parameter.</source>
         <translation>讀取所有可讀取的參數。</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="52"/>
+        <location filename="../cli/GetCommand.cpp" line="52"/>
         <source>Read registers by address: ADDR or ADDR:COUNT (0x.. or decimal).</source>
         <translation>依位址讀取暫存器：ADDR 或 ADDR:COUNT (0x.. 或十進位)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="52"/>
+        <location filename="../cli/GetCommand.cpp" line="52"/>
         <source>ADDR</source>
         <translation>ADDR</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="54"/>
+        <location filename="../cli/GetCommand.cpp" line="54"/>
         <source>Function code for --raw: 3 (holding) or 4 (input) to read, 6 or 16 to write.</source>
         <translation>--raw 使用的功能碼：讀取用 3 (holding) 或 4 (input)，寫入用 6 或 16。</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="55"/>
+        <location filename="../cli/GetCommand.cpp" line="55"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="63"/>
+        <location filename="../cli/GetCommand.cpp" line="63"/>
         <source>error: give one machine number first: get ID NAME...</source>
         <translation>錯誤：請先指定一個機號：get ID NAME...</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="71"/>
+        <location filename="../cli/GetCommand.cpp" line="71"/>
         <source>error: name parameters, or give exactly one of --group, --all, --raw</source>
         <translation>錯誤：請指定參數，或在 --group、--all、--raw 中擇一</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="79"/>
-        <location filename="../main/cli/GetCommand.cpp" line="209"/>
+        <location filename="../cli/GetCommand.cpp" line="79"/>
+        <location filename="../cli/GetCommand.cpp" line="209"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="90"/>
+        <location filename="../cli/GetCommand.cpp" line="90"/>
         <source>error: %1 has no group &quot;%2&quot;; groups: %3</source>
         <translation>錯誤：%1 沒有參數群組 &quot;%2&quot;；群組：%3</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="108"/>
+        <location filename="../cli/GetCommand.cpp" line="108"/>
         <source>error: %1 is a write-only command and cannot be read</source>
         <translation>錯誤：%1 是僅可寫入的指令，無法讀取</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="109"/>
+        <location filename="../cli/GetCommand.cpp" line="109"/>
         <source>error: %1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>錯誤：%1 沒有參數 &quot;%2&quot;；請參閱 &quot;opentop-cli params --family %1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="123"/>
+        <location filename="../cli/GetCommand.cpp" line="123"/>
         <source>interrupted</source>
         <translation>已中斷</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="153"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="153"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="153"/>
         <source>Raw</source>
         <translation>原始值</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="153"/>
         <source>Label</source>
         <translation>標籤</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="158"/>
+        <location filename="../cli/GetCommand.cpp" line="158"/>
         <source>(failed: %1)</source>
         <translation>(失敗：%1)</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="160"/>
+        <location filename="../cli/GetCommand.cpp" line="160"/>
         <source>  ! outside the profile&apos;s allowed values</source>
         <translation>  ! 超出定義檔的允許值</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/cli/GetCommand.cpp" line="167"/>
+        <location filename="../cli/GetCommand.cpp" line="167"/>
         <source>error: %n parameter(s) could not be read</source>
         <translation>
             <numerusform>錯誤：%n 個參數無法讀取</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="190"/>
+        <location filename="../cli/GetCommand.cpp" line="190"/>
         <source>error: --raw needs ADDR or ADDR:COUNT (address 0x0000–0xFFFF, count 1–125) and --fc 3 or 4</source>
         <translation>錯誤：--raw 需要 ADDR 或 ADDR:COUNT (位址 0x0000–0xFFFF，數量 1–125) 以及 --fc 3 或 4</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="221"/>
         <source>Address</source>
         <translation>位址</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="221"/>
         <source>Hex</source>
         <translation>十六進位</translation>
     </message>
     <message>
-        <location filename="../main/cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="221"/>
         <source>Decimal</source>
         <translation>十進位</translation>
     </message>
@@ -5847,63 +5847,63 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GroupCheck</name>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="56"/>
-        <location filename="../main/cli/GroupCheck.cpp" line="95"/>
+        <location filename="../cli/GroupCheck.cpp" line="56"/>
+        <location filename="../cli/GroupCheck.cpp" line="95"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="66"/>
+        <location filename="../cli/GroupCheck.cpp" line="66"/>
         <source>note: the other drives on the bus are not known, so drives in communication group %1 (which also execute what is sent to %1) were not looked for; name them with --bus-drives LIST or OPENTOP_BUS_DRIVES</source>
         <translation>注意：匯流排上的其他驅動器未知，因此未尋找通訊群組 %1 中的驅動器 (它們也會執行送往 %1 的指令)；請以 --bus-drives LIST 或 OPENTOP_BUS_DRIVES 指定</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="87"/>
+        <location filename="../cli/GroupCheck.cpp" line="87"/>
         <source>warning: the communication group of %1 could not be read</source>
         <translation>警告：無法讀取 %1 的通訊群組</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="95"/>
+        <location filename="../cli/GroupCheck.cpp" line="95"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="98"/>
+        <location filename="../cli/GroupCheck.cpp" line="98"/>
         <source>add --yes to send it to all of %1 and %2; nothing was sent</source>
         <translation>加上 --yes 才會送往 %1 及 %2 全部；未送出任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="128"/>
+        <location filename="../cli/GroupCheck.cpp" line="128"/>
         <source>not readable</source>
         <translation>無法讀取</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="139"/>
+        <location filename="../cli/GroupCheck.cpp" line="139"/>
         <source>Read back from the drives of the group:</source>
         <translation>從群組中的驅動器回讀：</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="140"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="140"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="140"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="143"/>
+        <location filename="../cli/GroupCheck.cpp" line="143"/>
         <source>(not read: %1)</source>
         <translation>(未讀取：%1)</translation>
     </message>
     <message>
-        <location filename="../main/cli/GroupCheck.cpp" line="188"/>
+        <location filename="../cli/GroupCheck.cpp" line="188"/>
         <source>off</source>
         <translation>停用</translation>
     </message>
@@ -5911,22 +5911,22 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GroupWriteCheck</name>
     <message>
-        <location filename="../main/ui/groups/GroupWriteCheck.cpp" line="50"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="50"/>
         <source>Machine number %1: %2</source>
         <translation>機號 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupWriteCheck.cpp" line="59"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="59"/>
         <source>Communication group</source>
         <translation>通訊群組</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupWriteCheck.cpp" line="63"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="63"/>
         <source>Their values are read back afterwards.</source>
         <translation>之後會回讀它們的值。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupWriteCheck.cpp" line="64"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="64"/>
         <source>Send, also to %1</source>
         <translation>送出 (也會送往 %1)</translation>
     </message>
@@ -5934,212 +5934,212 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GroupsView</name>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="34"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="34"/>
         <source>Read &amp;groups again</source>
         <translation>重新讀取群組(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="35"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="35"/>
         <source>&amp;Write plan…</source>
         <translation>寫入規劃(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="38"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="38"/>
         <source>A drive whose communication group is another drive&apos;s machine number is that drive&apos;s child: it executes every write and command sent to its parent, without replying. Plan the groups in the last column and write them; every drive&apos;s group is then read back.</source>
         <translation>若驅動器的通訊群組設為另一台驅動器的機號，即成為該驅動器的群組子站：它會執行送往群組母站的每個寫入與指令，但不回應。請在最後一欄規劃群組並寫入；之後會回讀每台驅動器的群組。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="49"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="49"/>
         <source>Machine number</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="49"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="49"/>
         <source>Model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="49"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="49"/>
         <source>Group</source>
         <translation>群組</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="50"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="50"/>
         <source>Follows / followed by</source>
         <translation>跟隨 / 被跟隨</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="50"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="50"/>
         <source>Problem</source>
         <translation>問題</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="50"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="50"/>
         <source>Plan</source>
         <translation>規劃</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="51"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="51"/>
         <source>Read back</source>
         <translation>回讀值</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="57"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="57"/>
         <source>Read every drive&apos;s communication group from the drive</source>
         <translation>從每台驅動器讀取其通訊群組</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="58"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="58"/>
         <source>Write the planned groups (asks first), then read every drive&apos;s group back</source>
         <translation>寫入規劃的群組 (會先詢問)，然後回讀每台驅動器的群組</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="79"/>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="145"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="79"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="145"/>
         <source>Disabled</source>
         <translation>停用</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="146"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="146"/>
         <source>Planned group of machine number %1</source>
         <translation>機號 %1 的規劃群組</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="147"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="147"/>
         <source>The group machine number %1 should have: its own number makes it a parent, another drive&apos;s number its child; Disabled: no group</source>
         <translation>機號 %1 應設定的群組：設為自己的機號即成為群組母站，設為其他驅動器的機號即成為其群組子站；停用：不屬於任何群組</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="166"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="166"/>
         <source>child and parent</source>
         <translation>既是子站又是母站</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="167"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="167"/>
         <source>no drive %1</source>
         <translation>沒有驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="176"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="176"/>
         <source>not read</source>
         <translation>未讀取</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="198"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="198"/>
         <source>No problem found in the groups as read from the drives.</source>
         <translation>從驅動器讀取的群組設定中未發現問題。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="199"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="199"/>
         <source>Problems:</source>
         <translation>問題：</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="206"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="206"/>
         <source>%1: %2 → %3</source>
         <translation>%1：%2 → %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="213"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="213"/>
         <source>The plan is what the drives hold.</source>
         <translation>規劃與驅動器中的設定相同。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="214"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="214"/>
         <source>Plan changes: %1.</source>
         <translation>規劃變更：%1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="216"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="216"/>
         <source>After it: %1</source>
         <translation>變更後：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="242"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="242"/>
         <source>Reading every drive&apos;s group…</source>
         <translation>正在讀取每台驅動器的群組…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/groups/GroupsView.cpp" line="248"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="248"/>
         <source>%n drive(s) did not answer</source>
         <translation>
             <numerusform>%n 台驅動器未回應</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="263"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="263"/>
         <source>Machine number %1: group %2 → %3.</source>
         <translation>機號 %1：群組 %2 → %3。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="268"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="268"/>
         <source>This also reaches %1 (its children), which are written again after it.</source>
         <translation>此操作也會送達 %1 (其群組子站)，之後會再重新寫入它們。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="277"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="277"/>
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="279"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="279"/>
         <source>Write communication groups</source>
         <translation>寫入通訊群組</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/groups/GroupsView.cpp" line="280"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="280"/>
         <source>Write the planned communication group to %n drive(s)?</source>
         <translation>
             <numerusform>要將規劃的通訊群組寫入 %n 台驅動器嗎？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="284"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="284"/>
         <source>Drives with children are written last; every drive&apos;s group is read back afterwards.</source>
         <translation>有群組子站的驅動器最後寫入；之後會回讀每台驅動器的群組。</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="286"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="286"/>
         <source>&amp;Write groups</source>
         <translation>寫入群組(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="317"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="317"/>
         <source>Writing group %1 to machine number %2…</source>
         <translation>正在將群組 %1 寫入機號 %2…</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="326"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="326"/>
         <source>write failed: %1</source>
         <translation>寫入失敗：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="340"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="340"/>
         <source>Reading every drive&apos;s group back…</source>
         <translation>正在回讀每台驅動器的群組…</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="353"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="353"/>
         <source>write failed</source>
         <translation>寫入失敗</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="354"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="354"/>
         <source>✓ %1</source>
         <translation>✓ %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="355"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="355"/>
         <source>✗ %1, planned %2</source>
         <translation>✗ %1，規劃為 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/groups/GroupsView.cpp" line="365"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="365"/>
         <source>Proved: every drive read back holds its planned group.</source>
         <translation>已確認：每台回讀的驅動器都保有其規劃的群組。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/groups/GroupsView.cpp" line="366"/>
+        <location filename="../ui/groups/GroupsView.cpp" line="366"/>
         <source>Not as planned: %1 (read back; %n drive(s) did not answer).</source>
         <translation>
             <numerusform>與規劃不符：%1 (已回讀；%n 台驅動器未回應)。</numerusform>
@@ -6149,22 +6149,22 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::HelpActions</name>
     <message>
-        <location filename="../main/ui/help/HelpActions.cpp" line="18"/>
+        <location filename="../ui/help/HelpActions.cpp" line="18"/>
         <source>&amp;User guide</source>
         <translation>使用手冊(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/HelpActions.cpp" line="21"/>
+        <location filename="../ui/help/HelpActions.cpp" line="21"/>
         <source>&amp;Keyboard shortcuts</source>
         <translation>鍵盤快速鍵(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/HelpActions.cpp" line="25"/>
+        <location filename="../ui/help/HelpActions.cpp" line="25"/>
         <source>&amp;About OpenTOP</source>
         <translation>關於 OpenTOP(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/HelpActions.cpp" line="28"/>
+        <location filename="../ui/help/HelpActions.cpp" line="28"/>
         <source>About &amp;Qt</source>
         <translation>關於 Qt(&amp;Q)</translation>
     </message>
@@ -6172,187 +6172,187 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::IoTerminalsPage</name>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="31"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="31"/>
         <source>Not functioning: the drive ignores this input.</source>
         <translation>無功能：驅動器忽略此輸入。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="33"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="33"/>
         <source>RUN/STOP: ON runs the motor, OFF stops it.</source>
         <translation>RUN/STOP：ON 時馬達運轉，OFF 時停止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="35"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="35"/>
         <source>CW/CCW: the running direction, OFF clockwise, ON counter-clockwise.</source>
         <translation>CW/CCW：運轉方向，OFF 為順時針，ON 為逆時針。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="38"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="38"/>
         <source>CW/STOP: ON runs the motor clockwise, OFF stops it.</source>
         <translation>CW/STOP：ON 時馬達順時針運轉，OFF 時停止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="40"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="40"/>
         <source>CCW/STOP: ON runs the motor counter-clockwise, OFF stops it.</source>
         <translation>CCW/STOP：ON 時馬達逆時針運轉，OFF 時停止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="43"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="43"/>
         <source>Alarm-Reset: clears an alarm (alarm erase method Alarm-Reset).</source>
         <translation>Alarm-Reset：解除警報 (警報解除方式為 Alarm-Reset 時)。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="51"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="51"/>
         <source>M%1: bit %1 of the running data selection (M2 M1 M0 = 000–111 select SPno1–SPno8).</source>
         <translation>M%1：運轉資料選擇的第 %1 位元 (M2 M1 M0 = 000–111 選擇 SPno1–SPno8)。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="56"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="56"/>
         <source>Ext-Error (EX-Er): an external interrupt that stops the motor; the only input still active in communication priority.</source>
         <translation>Ext-Error (EX-Er)：使馬達停止的外部中斷；通訊優先下唯一仍有效的輸入。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="61"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="61"/>
         <source>H-Free: releases the motor&apos;s holding force while stopped.</source>
         <translation>H-Free：停止時解除馬達的保持力。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="63"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="63"/>
         <source>Code %1 is not a known input function.</source>
         <translation>代碼 %1 不是已知的輸入功能。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="71"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="71"/>
         <source>Not functioning: the output stays off.</source>
         <translation>無功能：輸出保持 OFF。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="73"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="73"/>
         <source>Alarm-Out: switches when an alarm stops the motor.</source>
         <translation>Alarm-Out：警報使馬達停止時動作。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="75"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="75"/>
         <source>Reach Speed-Out: switches when the motor reaches the target speed.</source>
         <translation>Reach Speed-Out：馬達到達目標速度時動作。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="78"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="78"/>
         <source>VA-Out: switches before the target speed, at the target speed minus the VA speed.</source>
         <translation>VA-Out：在到達目標速度之前，於目標速度減去 VA 速度時動作。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="81"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="81"/>
         <source>Speed-Out: speed pulses, 24 per motor revolution.</source>
         <translation>Speed-Out：速度脈波，馬達每轉 24 個脈波。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="83"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="83"/>
         <source>Warning-Out: switches on a warning; the motor keeps running.</source>
         <translation>Warning-Out：發生警告時動作；馬達繼續運轉。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="86"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="86"/>
         <source>Move-Out: switches while the motor is turning.</source>
         <translation>Move-Out：馬達轉動中時動作。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="88"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="88"/>
         <source>Code %1 is not a known output function.</source>
         <translation>代碼 %1 不是已知的輸出功能。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="102"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="102"/>
         <source>I/O terminals</source>
         <translation>I/O 端子</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="118"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="118"/>
         <source>Control</source>
         <translation>控制</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="123"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="123"/>
         <source>Control &amp;mode:</source>
         <translation>控制模式(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="124"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="124"/>
         <source>Mode1 uses RUN/STOP and CW/CCW inputs (like UBD, SBD, DBD); Mode2 uses CW/STOP and CCW/STOP inputs (like DB, BMD). The input function codes differ: switching the mode disables the other mode&apos;s input functions, so every input X0–X3 needs a function of the new mode.</source>
         <translation>Mode1 使用 RUN/STOP 與 CW/CCW 輸入 (同 UBD、SBD、DBD)；Mode2 使用 CW/STOP 與 CCW/STOP 輸入 (同 DB、BMD)。兩者的輸入功能代碼不同：切換模式會停用另一模式的輸入功能，因此每個輸入 X0–X3 都需要指定新模式的功能。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="136"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="136"/>
         <source>Control &amp;priority:</source>
         <translation>控制優先權(&amp;P)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="137"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="137"/>
         <source>In I/O priority the input terminals run the motor. In communication priority the drive runs from bus commands and of the inputs only EX-Er (external error) acts.</source>
         <translation>I/O 優先時由輸入端子控制馬達運轉。通訊優先時驅動器依匯流排指令運轉，輸入端子中只有 EX-Er (外部異常) 有作用。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="146"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="146"/>
         <source>Inputs — CN5</source>
         <translation>輸入 — CN5</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="148"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="148"/>
         <source>COM0: input common (external supply)</source>
         <translation>COM0：輸入共用端 (外部電源)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="151"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="151"/>
         <source>COM1: input common (internal supply)</source>
         <translation>COM1：輸入共用端 (內部電源)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="156"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="156"/>
         <source>Outputs — CN6</source>
         <translation>輸出 — CN6</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="174"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="174"/>
         <source>Give each flagged input the default function of the new mode (pending, not written)</source>
         <translation>將每個標示的輸入設為新模式的預設功能 (待寫入，尚未寫入)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="203"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="203"/>
         <source>Connector pin %1</source>
         <translation>接頭針腳 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="208"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="208"/>
         <source>Terminal %1 function</source>
         <translation>端子 %1 功能</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="235"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="235"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="261"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="261"/>
         <source>Not read yet.</source>
         <translation>尚未讀取。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="268"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="268"/>
         <source>Not valid in %1: choose again</source>
         <translation>在 %1 中無效：請重新選擇</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="296"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="296"/>
         <source>The mode changes from %1 to %2 when written; Write page writes the mode first, then the terminals.</source>
         <translation>寫入後模式將由 %1 變為 %2；「寫入本頁」會先寫入模式，再寫入端子。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="306"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="306"/>
         <source>Not valid in %1: %2. Choose their functions again before writing.</source>
         <translation>在 %1 中無效：%2。寫入前請重新選擇其功能。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/IoTerminalsPage.cpp" line="309"/>
+        <location filename="../ui/pages/IoTerminalsPage.cpp" line="309"/>
         <source>Use %1 defaults</source>
         <translation>使用 %1 預設值</translation>
     </message>
@@ -6360,174 +6360,210 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::JsonReader</name>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="29"/>
-        <location filename="../main/model/profile/JsonReader.cpp" line="44"/>
-        <location filename="../main/model/profile/JsonReader.cpp" line="89"/>
-        <location filename="../main/model/profile/JsonReader.cpp" line="100"/>
-        <location filename="../main/model/profile/JsonReader.cpp" line="116"/>
+        <location filename="../model/profile/JsonReader.cpp" line="29"/>
+        <location filename="../model/profile/JsonReader.cpp" line="44"/>
+        <location filename="../model/profile/JsonReader.cpp" line="89"/>
+        <location filename="../model/profile/JsonReader.cpp" line="100"/>
+        <location filename="../model/profile/JsonReader.cpp" line="116"/>
         <source>&quot;%1&quot; is missing</source>
         <translation>缺少 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="33"/>
+        <location filename="../model/profile/JsonReader.cpp" line="33"/>
         <source>&quot;%1&quot; must be a string</source>
         <translation>&quot;%1&quot; 必須是字串</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="48"/>
+        <location filename="../model/profile/JsonReader.cpp" line="48"/>
         <source>&quot;%1&quot; must be a number</source>
         <translation>&quot;%1&quot; 必須是數字</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="59"/>
+        <location filename="../model/profile/JsonReader.cpp" line="59"/>
         <source>%1 must be a whole number</source>
         <translation>%1 必須是整數</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="64"/>
+        <location filename="../model/profile/JsonReader.cpp" line="64"/>
         <source>%1 is out of range</source>
         <translation>%1 超出範圍</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="80"/>
+        <location filename="../model/profile/JsonReader.cpp" line="80"/>
         <source>%1 must be an integer or a &quot;0x...&quot; string</source>
         <translation>%1 必須是整數或 &quot;0x...&quot; 字串</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="104"/>
+        <location filename="../model/profile/JsonReader.cpp" line="104"/>
         <source>&quot;%1&quot; must be an array</source>
         <translation>&quot;%1&quot; 必須是陣列</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="120"/>
+        <location filename="../model/profile/JsonReader.cpp" line="120"/>
         <source>&quot;%1&quot; must be an object</source>
         <translation>&quot;%1&quot; 必須是物件</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/JsonReader.cpp" line="130"/>
+        <location filename="../model/profile/JsonReader.cpp" line="130"/>
         <source>%1: unknown key &quot;%2&quot;</source>
         <translation>%1：未知的鍵 &quot;%2&quot;</translation>
     </message>
 </context>
 <context>
+    <name>opentop::Language</name>
+    <message>
+        <location filename="../model/i18n/Language.cpp" line="137"/>
+        <source>unknown language &apos;%1&apos;; available: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/Language.cpp" line="151"/>
+        <source>the %1 translation is missing from this build</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>opentop::LanguageMenu</name>
+    <message>
+        <location filename="../ui/i18n/LanguageMenu.cpp" line="10"/>
+        <source>&amp;Language</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/i18n/LanguageMenu.cpp" line="15"/>
+        <source>System language (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>opentop::MainMenus</name>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="32"/>
+        <location filename="../ui/main/MainMenus.cpp" line="35"/>
         <source>&amp;Bus</source>
         <translation>匯流排(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="33"/>
+        <location filename="../ui/main/MainMenus.cpp" line="36"/>
         <source>Main</source>
         <translation>主要</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="36"/>
+        <location filename="../ui/main/MainMenus.cpp" line="39"/>
         <source>&amp;Connect…</source>
         <translation>連線(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="38"/>
+        <location filename="../ui/main/MainMenus.cpp" line="41"/>
         <source>Choose the serial port, gateway or simulated bus (Ctrl+K)</source>
         <translation>選擇序列埠、閘道器或模擬匯流排 (Ctrl+K)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="40"/>
+        <location filename="../ui/main/MainMenus.cpp" line="43"/>
         <source>&amp;Scan bus</source>
         <translation>掃描匯流排(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="46"/>
+        <location filename="../ui/main/MainMenus.cpp" line="49"/>
         <source>&amp;Disconnect</source>
         <translation>中斷連線(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="50"/>
+        <location filename="../ui/main/MainMenus.cpp" line="53"/>
         <source>Communication &amp;groups…</source>
         <translation>通訊群組(&amp;G)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="54"/>
+        <location filename="../ui/main/MainMenus.cpp" line="57"/>
         <source>&amp;Export alarm histories…</source>
         <translation>匯出警報記錄(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="56"/>
+        <location filename="../ui/main/MainMenus.cpp" line="59"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="59"/>
+        <location filename="../ui/main/MainMenus.cpp" line="62"/>
         <source>&amp;Files</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="64"/>
+        <location filename="../ui/main/MainMenus.cpp" line="67"/>
         <source>&amp;Drive</source>
         <translation>驅動器(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="67"/>
+        <location filename="../ui/main/MainMenus.cpp" line="70"/>
         <source>&amp;Write all pending</source>
         <translation>寫入所有待寫入項目(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="69"/>
+        <location filename="../ui/main/MainMenus.cpp" line="72"/>
         <source>&amp;Re-read all</source>
         <translation>全部重新讀取(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="71"/>
+        <location filename="../ui/main/MainMenus.cpp" line="74"/>
         <source>Write a setting to the selected drives…</source>
         <translation>將設定寫入所選驅動器…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="82"/>
+        <location filename="../ui/main/MainMenus.cpp" line="85"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="88"/>
+        <location filename="../ui/main/MainMenus.cpp" line="91"/>
         <source>&amp;Traffic log</source>
         <translation>通訊記錄(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="89"/>
+        <location filename="../ui/main/MainMenus.cpp" line="92"/>
         <source>Bus &amp;overview</source>
         <translation>匯流排總覽(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="91"/>
+        <location filename="../ui/main/MainMenus.cpp" line="94"/>
         <source>T&amp;rends</source>
         <translation>趨勢圖(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="92"/>
+        <location filename="../ui/main/MainMenus.cpp" line="95"/>
         <source>Communication &amp;groups</source>
         <translation>通訊群組(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="100"/>
+        <location filename="../ui/main/MainMenus.cpp" line="109"/>
+        <source>Language</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/main/MainMenus.cpp" line="110"/>
+        <source>OpenTOP will be in %1 the next time it starts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/main/MainMenus.cpp" line="116"/>
         <source>&amp;End of line</source>
         <translation>終檢(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="102"/>
+        <location filename="../ui/main/MainMenus.cpp" line="118"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="115"/>
+        <location filename="../ui/main/MainMenus.cpp" line="131"/>
         <source>connect elsewhere</source>
         <translation>連線至其他匯流排</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="125"/>
+        <location filename="../ui/main/MainMenus.cpp" line="141"/>
         <source>Export alarm histories</source>
         <translation>匯出警報記錄</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainMenus.cpp" line="126"/>
+        <location filename="../ui/main/MainMenus.cpp" line="142"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
@@ -6535,33 +6571,33 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="50"/>
+        <location filename="../ui/main/MainWindow.cpp" line="50"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="126"/>
+        <location filename="../ui/main/MainWindow.cpp" line="126"/>
         <source>connect elsewhere</source>
         <translation>連線至其他匯流排</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="149"/>
+        <location filename="../ui/main/MainWindow.cpp" line="149"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>正在連線至 %1… (仍連線於 %2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="188"/>
+        <location filename="../ui/main/MainWindow.cpp" line="188"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>已連線：%1 (新連線失敗：%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="191"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="191"/>
+        <location filename="../ui/main/MainWindow.cpp" line="203"/>
         <source>Cannot connect</source>
         <translation>無法連線</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="192"/>
+        <location filename="../ui/main/MainWindow.cpp" line="192"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -6570,82 +6606,82 @@ Still connected to %2; nothing was changed.</source>
 仍連線於 %2；未做任何變更。</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="195"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="306"/>
+        <location filename="../ui/main/MainWindow.cpp" line="195"/>
+        <location filename="../ui/main/MainWindow.cpp" line="306"/>
         <source>Not connected: %1</source>
         <translation>未連線：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="252"/>
+        <location filename="../ui/main/MainWindow.cpp" line="252"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>通訊群組：%1 (匯流排 › 通訊群組)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="274"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="276"/>
+        <location filename="../ui/main/MainWindow.cpp" line="274"/>
+        <location filename="../ui/main/MainWindow.cpp" line="276"/>
         <source>Connection lost: %1</source>
         <translation>連線中斷：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="277"/>
+        <location filename="../ui/main/MainWindow.cpp" line="277"/>
         <source>Connection lost</source>
         <translation>連線中斷</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="285"/>
+        <location filename="../ui/main/MainWindow.cpp" line="285"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 模擬匯流排 (無實體硬體) — %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="286"/>
+        <location filename="../ui/main/MainWindow.cpp" line="286"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="287"/>
+        <location filename="../ui/main/MainWindow.cpp" line="287"/>
         <source>Connecting to %1…</source>
         <translation>正在連線至 %1…</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="305"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="313"/>
+        <location filename="../ui/main/MainWindow.cpp" line="305"/>
+        <location filename="../ui/main/MainWindow.cpp" line="313"/>
         <source>Connected: %1</source>
         <translation>已連線：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="312"/>
+        <location filename="../ui/main/MainWindow.cpp" line="312"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>已連線：%1 (模擬，無實體硬體)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="333"/>
+        <location filename="../ui/main/MainWindow.cpp" line="333"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>此驅動器不回報機型；%1 為設定的機型。</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="363"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="374"/>
+        <location filename="../ui/main/MainWindow.cpp" line="363"/>
+        <location filename="../ui/main/MainWindow.cpp" line="374"/>
         <source>disconnect</source>
         <translation>中斷連線</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="370"/>
+        <location filename="../ui/main/MainWindow.cpp" line="370"/>
         <source>Not connected (disconnected)</source>
         <translation>未連線 (已中斷連線)</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="381"/>
-        <location filename="../main/ui/main/MainWindow.cpp" line="406"/>
+        <location filename="../ui/main/MainWindow.cpp" line="381"/>
+        <location filename="../ui/main/MainWindow.cpp" line="406"/>
         <source>quit</source>
         <translation>結束</translation>
     </message>
     <message>
-        <location filename="../main/ui/main/MainWindow.cpp" line="392"/>
+        <location filename="../ui/main/MainWindow.cpp" line="392"/>
         <source>Unwritten changes</source>
         <translation>未寫入的變更</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/main/MainWindow.cpp" line="393"/>
+        <location filename="../ui/main/MainWindow.cpp" line="393"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>有 %n 項變更尚未寫入驅動器。要結束並捨棄這些變更嗎？</numerusform>
@@ -6655,77 +6691,77 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorCommand</name>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="37"/>
+        <location filename="../cli/MonitorCommand.cpp" line="37"/>
         <source>Watch speed, load, state, inputs and alarms live (Ctrl-C ends)</source>
         <translation>即時監視速度、負載、狀態、輸入與警報 (按 Ctrl-C 結束)</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="44"/>
+        <location filename="../cli/MonitorCommand.cpp" line="44"/>
         <source>Time between samples of a drive in ms, %1–%2 (default 500).</source>
         <translation>每台驅動器的取樣間隔，單位 ms，%1–%2 (預設 500)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="47"/>
+        <location filename="../cli/MonitorCommand.cpp" line="47"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="48"/>
+        <location filename="../cli/MonitorCommand.cpp" line="48"/>
         <source>Stop after N samples per drive (default: until Ctrl-C).</source>
         <translation>每台驅動器取樣 N 次後停止 (預設：直到按下 Ctrl-C)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="49"/>
+        <location filename="../cli/MonitorCommand.cpp" line="49"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="50"/>
+        <location filename="../cli/MonitorCommand.cpp" line="50"/>
         <source>Also write every sample to FILE (CSV with a header).</source>
         <translation>同時將每筆取樣寫入 FILE (含標題列的 CSV)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="51"/>
+        <location filename="../cli/MonitorCommand.cpp" line="51"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="63"/>
+        <location filename="../cli/MonitorCommand.cpp" line="63"/>
         <source>error: usage: %1</source>
         <translation>錯誤：用法：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="73"/>
+        <location filename="../cli/MonitorCommand.cpp" line="73"/>
         <source>error: --interval must be %1–%2 ms, got &quot;%3&quot;</source>
         <translation>錯誤：--interval 必須為 %1–%2 ms，收到 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="86"/>
+        <location filename="../cli/MonitorCommand.cpp" line="86"/>
         <source>error: --count must be a whole number of samples, 1 or more, got &quot;%1&quot;</source>
         <translation>錯誤：--count 必須是 1 以上的整數取樣次數，收到 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="96"/>
+        <location filename="../cli/MonitorCommand.cpp" line="96"/>
         <source>error: cannot write %1: %2</source>
         <translation>錯誤：無法寫入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="106"/>
+        <location filename="../cli/MonitorCommand.cpp" line="106"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="126"/>
+        <location filename="../cli/MonitorCommand.cpp" line="126"/>
         <source>warning: machine number %1: %2; speeds are shown in r/min only</source>
         <translation>警告：機號 %1：%2；速度僅以 r/min 顯示</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="203"/>
+        <location filename="../cli/MonitorCommand.cpp" line="203"/>
         <source>error: cannot write %1: %2; monitoring stopped</source>
         <translation>錯誤：無法寫入 %1：%2；監視已停止</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorCommand.cpp" line="227"/>
+        <location filename="../cli/MonitorCommand.cpp" line="227"/>
         <source>%1 error: %2</source>
         <translation>%1 錯誤：%2</translation>
     </message>
@@ -6733,13 +6769,13 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorDetails</name>
     <message>
-        <location filename="../main/ui/monitor/MonitorDetails.cpp" line="81"/>
-        <location filename="../main/ui/monitor/MonitorDetails.cpp" line="88"/>
+        <location filename="../ui/monitor/MonitorDetails.cpp" line="81"/>
+        <location filename="../ui/monitor/MonitorDetails.cpp" line="88"/>
         <source>not read</source>
         <translation>未讀取</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorDetails.cpp" line="110"/>
+        <location filename="../ui/monitor/MonitorDetails.cpp" line="110"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -6747,42 +6783,42 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorOutput</name>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="114"/>
+        <location filename="../cli/MonitorOutput.cpp" line="114"/>
         <source>Target shown</source>
         <translation>目標顯示值</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="114"/>
+        <location filename="../cli/MonitorOutput.cpp" line="114"/>
         <source>Speed shown</source>
         <translation>速度顯示值</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="123"/>
+        <location filename="../cli/MonitorOutput.cpp" line="123"/>
         <source>Active alarm</source>
         <translation>發生中的警報</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="165"/>
+        <location filename="../cli/MonitorOutput.cpp" line="165"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="168"/>
+        <location filename="../cli/MonitorOutput.cpp" line="168"/>
         <source>code %1</source>
         <translation>代碼 %1</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="168"/>
+        <location filename="../cli/MonitorOutput.cpp" line="168"/>
         <source>active</source>
         <translation>發生中</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="175"/>
+        <location filename="../cli/MonitorOutput.cpp" line="175"/>
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../main/cli/MonitorOutput.cpp" line="175"/>
+        <location filename="../cli/MonitorOutput.cpp" line="175"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -6790,37 +6826,37 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPage</name>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="175"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="175"/>
         <source>Live values</source>
         <translation>即時值</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="183"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="183"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="196"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="196"/>
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="261"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="261"/>
         <source>%1 %2 on the drive&apos;s display</source>
         <translation>驅動器顯示器上為 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="270"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="270"/>
         <source>Alarm %1 %2 — %3</source>
         <translation>警報 %1 %2 — %3</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="273"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="273"/>
         <source>Alarm active (reading which one…)</source>
         <translation>警報發生中 (正在讀取警報代碼…)</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPage.cpp" line="328"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="328"/>
         <source>No live state: %1</source>
         <translation>無即時狀態：%1</translation>
     </message>
@@ -6828,67 +6864,67 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPollBar</name>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="25"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="25"/>
         <source>Poll every</source>
         <translation>輪詢間隔</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="27"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="27"/>
         <source>%1 ms (%2 Hz)</source>
         <translation>%1 ms (%2 Hz)</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="28"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="28"/>
         <source>How often every monitored drive is read. Commands you give always go first; the drives share what is left of the bus in turn.</source>
         <translation>每台受監視驅動器的讀取頻率。您下達的指令一律優先；其餘的匯流排時間由各驅動器輪流使用。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="36"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="36"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="44"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="44"/>
         <source>Resume polling</source>
         <translation>恢復輪詢</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="44"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="44"/>
         <source>Pause polling</source>
         <translation>暫停輪詢</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="58"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="58"/>
         <source>Polling paused: the values shown are the last ones read (%1).</source>
         <translation>輪詢已暫停：顯示的是最後讀取的值 (%1)。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="60"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="60"/>
         <source>Connection lost — not live: %1.</source>
         <translation>連線中斷 — 非即時：%1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="62"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="62"/>
         <source>Not live: %1.</source>
         <translation>非即時：%1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="63"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="63"/>
         <source>The drive does not answer (%1) — not live: %2.</source>
         <translation>驅動器無回應 (%1) — 非即時：%2。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="66"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="66"/>
         <source>Values %1 · %2 samples/s</source>
         <translation>數值 %1 · %2 次取樣/s</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="70"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="70"/>
         <source>Not read yet.</source>
         <translation>尚未讀取。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MonitorPollBar.cpp" line="71"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="71"/>
         <source>Cannot read the drive: %1</source>
         <translation>無法讀取驅動器：%1</translation>
     </message>
@@ -6896,12 +6932,12 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MotionPriorityBox</name>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="32"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="32"/>
         <source>Switch to communication priority…</source>
         <translation>切換為通訊優先…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="57"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="57"/>
         <source>Machine number %1 is in &quot;%2&quot; (%3): it takes run, stop, direction and speed selection from its input terminals and refuses motion commands over the bus, so the test run is disabled.
 
 Switching to &quot;%4&quot; hands these commands to the bus: the input terminals no longer start or stop the motor, and the machine&apos;s own controls stay without effect until you switch back to &quot;%2&quot;.</source>
@@ -6910,53 +6946,53 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 切換為「%4」會將這些指令交給匯流排：輸入端子將不再能啟動或停止馬達，在您切換回「%2」之前，機台本身的控制均無作用。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="83"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="83"/>
         <source>Switch to communication priority</source>
         <translation>切換為通訊優先</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="84"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="84"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from the bus (%2 = &quot;%3&quot;). Its input terminals then no longer start or stop the motor.</source>
         <translation>機號 %1 的運轉、停止、方向與速度選擇將改由匯流排控制 (%2 = &quot;%3&quot;)。之後其輸入端子將不再能啟動或停止馬達。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="90"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="90"/>
         <source>Switch</source>
         <translation>切換</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="99"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="99"/>
         <source>Switching to communication priority…</source>
         <translation>正在切換為通訊優先…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="107"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="107"/>
         <source>Machine number %1 takes motion commands over the bus now.</source>
         <translation>機號 %1 現在接受來自匯流排的運轉指令。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="109"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="109"/>
         <source>Cannot switch the control priority: %1</source>
         <translation>無法切換控制優先權：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="118"/>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="124"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="118"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="124"/>
         <source>Return to I/O priority</source>
         <translation>恢復為 I/O 優先</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="119"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="119"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from its input terminals again, and refuse motion commands over the bus. If an input says run, the motor runs.</source>
         <translation>機號 %1 將再次由輸入端子控制運轉、停止、方向與速度選擇，並拒絕來自匯流排的運轉指令。若輸入為運轉狀態，馬達即會運轉。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="127"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="127"/>
         <source>Returning to I/O priority…</source>
         <translation>正在恢復為 I/O 優先…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/MotionPriorityBox.cpp" line="136"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="136"/>
         <source>Machine number %1 follows its input terminals again.</source>
         <translation>機號 %1 已恢復由輸入端子控制。</translation>
     </message>
@@ -6964,33 +7000,33 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MotorSpeedBox</name>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="23"/>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="45"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="23"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="45"/>
         <source>Motor speed</source>
         <translation>馬達速度</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="33"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="33"/>
         <source>not set</source>
         <translation>未設定</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="34"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="34"/>
         <source>Commutations per motor revolution (a motor property, see its data sheet). r/min = %1 ÷ this × 60.</source>
         <translation>馬達每轉的換相次數 (馬達特性，請參閱其規格書)。r/min = %1 ÷ 此值 × 60。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="38"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="38"/>
         <source>Commutations per revolution</source>
         <translation>每轉換相次數</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="75"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="75"/>
         <source>set the commutations per revolution</source>
         <translation>請設定每轉換相次數</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/MotorSpeedBox.cpp" line="79"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="79"/>
         <source>%1 r/min</source>
         <translation>%1 r/min</translation>
     </message>
@@ -6998,161 +7034,161 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="35"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="35"/>
         <source>&amp;Write to all</source>
         <translation>全部寫入(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
         <source>Write one setting to several drives</source>
         <translation>將一項設定寫入多台驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
         <source>Machine number</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
         <source>Model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
         <source>Current value</source>
         <translation>目前值</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="55"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="55"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="74"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="74"/>
         <source>Not written: another family (%1)</source>
         <translation>未寫入：不同系列 (%1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="75"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="75"/>
         <source>Not written: not identified (%1)</source>
         <translation>未寫入：無法識別 (%1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="80"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="80"/>
         <source>&amp;Setting:</source>
         <translation>設定(&amp;S)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="86"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="86"/>
         <source>New &amp;value:</source>
         <translation>新值(&amp;V)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="158"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="158"/>
         <source>cannot be read</source>
         <translation>無法讀取</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="161"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="161"/>
         <source>reading…</source>
         <translation>讀取中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="189"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="189"/>
         <source>read failed: %1</source>
         <translation>讀取失敗：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="214"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="214"/>
         <source>Drive %1: %2 is not known yet, and the allowed values depend on it.</source>
         <translation>驅動器 %1：%2 尚未得知，而允許值取決於此項。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="218"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="218"/>
         <source>drive %1: %2</source>
         <translation>驅動器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="222"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="222"/>
         <source>The unit differs between the drives (%1); write them one at a time.</source>
         <translation>各驅動器的單位不同 (%1)；請逐台寫入。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="230"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="230"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>驅動器 %1 (%2) 不允許：%3</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
         <source>None of the selected drives is identified.</source>
         <translation>所選驅動器均未識別。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
         <source>Drive %1: %2</source>
         <translation>驅動器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="249"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="249"/>
         <source>Allowed on %1</source>
         <translation>%1 的允許值</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="257"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="257"/>
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="258"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="258"/>
         <source>Allowed on %1.</source>
         <translation>%1 的允許值。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="290"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="290"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>將 %1 寫入機號 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="292"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="292"/>
         <source>Nothing was written.</source>
         <translation>未寫入任何資料。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="297"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="297"/>
         <source>waiting…</source>
         <translation>等待中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="299"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="299"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>正在將 %1 寫入 %n 台驅動器…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="311"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="311"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>已於 %n 台驅動器中的 %1 台寫入並驗證。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="320"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="320"/>
         <source>writing…</source>
         <translation>寫入中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="333"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="333"/>
         <source>Written and verified</source>
         <translation>已寫入並驗證</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>已寫入，未驗證 (無法回讀)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/MultiDriveWriteDialog.cpp" line="335"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="335"/>
         <source>Failed: %1</source>
         <translation>失敗：%1</translation>
     </message>
@@ -7160,22 +7196,22 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::OutputFile</name>
     <message>
-        <location filename="../main/model/files/OutputFile.cpp" line="24"/>
+        <location filename="../model/files/OutputFile.cpp" line="24"/>
         <source>cannot write %1: it is a directory; name a file</source>
         <translation>無法寫入 %1：這是資料夾；請指定檔案</translation>
     </message>
     <message>
-        <location filename="../main/model/files/OutputFile.cpp" line="26"/>
+        <location filename="../model/files/OutputFile.cpp" line="26"/>
         <source>cannot write %1: the folder %2 does not exist</source>
         <translation>無法寫入 %1：資料夾 %2 不存在</translation>
     </message>
     <message>
-        <location filename="../main/model/files/OutputFile.cpp" line="35"/>
+        <location filename="../model/files/OutputFile.cpp" line="35"/>
         <source>cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/files/OutputFile.cpp" line="40"/>
+        <location filename="../model/files/OutputFile.cpp" line="40"/>
         <source>it is a directory; name a file</source>
         <translation>這是資料夾；請指定檔案</translation>
     </message>
@@ -7183,87 +7219,87 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::PanelMirror</name>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="19"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="19"/>
         <source>speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="21"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="21"/>
         <source>machine number</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="23"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="23"/>
         <source>running data No.</source>
         <translation>運轉資料編號</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="25"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="25"/>
         <source>countdown</source>
         <translation>倒數計時</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="27"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="27"/>
         <source>load rate</source>
         <translation>負載率</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="46"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="46"/>
         <source>Alarm %1 %2</source>
         <translation>警報 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="47"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="47"/>
         <source>Alarm (code not read yet)</source>
         <translation>警報 (尚未讀取代碼)</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="58"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="58"/>
         <source>Current speed %1 %2</source>
         <translation>目前速度 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="62"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="62"/>
         <source>Current speed: no finite value in %1</source>
         <translation>目前速度：以 %1 表示時無有限值</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="69"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="69"/>
         <source>Current speed %1 r/min</source>
         <translation>目前速度 %1 r/min</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="69"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="69"/>
         <source>Speed not read</source>
         <translation>尚未讀取速度</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="75"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="75"/>
         <source>Machine number %1</source>
         <translation>機號 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="86"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="86"/>
         <source>Running data SPno%1</source>
         <translation>運轉資料 SPno%1</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="89"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="89"/>
         <source>Running data not read</source>
         <translation>尚未讀取運轉資料</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="99"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="99"/>
         <source>Countdown set to %1 d %2 h %3 min %4 s (the drive does not report the time left)</source>
         <translation>倒數計時設定為 %1 d %2 h %3 min %4 s (驅動器不回報剩餘時間)</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="113"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="113"/>
         <source>Load rate %1 %</source>
         <translation>負載率 %1 %</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/PanelMirror.cpp" line="116"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="116"/>
         <source>Load rate not read</source>
         <translation>尚未讀取負載率</translation>
     </message>
@@ -7271,32 +7307,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::PanelMirrorView</name>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="21"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="21"/>
         <source>Drive panel</source>
         <translation>驅動器面板</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="51"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="51"/>
         <source>Not read yet</source>
         <translation>尚未讀取</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="64"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="64"/>
         <source>%1 (more digits than the panel has)</source>
         <translation>%1 (位數超過面板可顯示的位數)</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="68"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="68"/>
         <source>Panel set to show the %1 while running.</source>
         <translation>面板設定為運轉中顯示 %1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="69"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="69"/>
         <source>Drive panel shows %1</source>
         <translation>驅動器面板顯示 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/PanelMirrorView.cpp" line="77"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="77"/>
         <source>not live</source>
         <translation>非即時</translation>
     </message>
@@ -7304,27 +7340,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="170"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="170"/>
         <source>%1 (not valid now)</source>
         <translation>%1 (目前無效)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="188"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="188"/>
         <source>not read</source>
         <translation>未讀取</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="197"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="197"/>
         <source>Allowed: %1</source>
         <translation>允許值：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="200"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="200"/>
         <source>On the drive: %1</source>
         <translation>驅動器中：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterField.cpp" line="228"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="228"/>
         <source>Not accepted: %1</source>
         <translation>不接受：%1</translation>
     </message>
@@ -7332,92 +7368,92 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitBox</name>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="23"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="23"/>
         <source>Parameter initialisation</source>
         <translation>參數初始化</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="32"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="32"/>
         <source>Returns every setting of drive %1 to its factory default, including the communication settings: afterwards the drive may answer only at the default rate, and control priority goes back to its input terminals. The motor must be stopped. The consequences for this drive are listed before anything is sent.</source>
         <translation>將驅動器 %1 的所有設定恢復為出廠預設值，包括通訊設定：之後驅動器可能只以預設鮑率回應，且控制優先權會回到輸入端子。馬達必須停止。送出任何資料前，會先列出對此驅動器的影響。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="40"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="40"/>
         <source>&amp;Initialise all parameters of drive %1…</source>
         <translation>初始化驅動器 %1 的所有參數(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="42"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="42"/>
         <source>Asks first, naming the drive and what changes</source>
         <translation>會先詢問，並列出驅動器及變更內容</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="66"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="66"/>
         <source>Reading what the initialisation would change…</source>
         <translation>正在讀取初始化將變更的內容…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="90"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="90"/>
         <source>Your %n unwritten edit(s) of this drive are discarded.</source>
         <translation>
             <numerusform>此驅動器 %n 項未寫入的變更將被捨棄。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="94"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="94"/>
         <source>Sent: %1 to machine %2 only.</source>
         <translation>已送出：%1，僅送往機號 %2。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="95"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="95"/>
         <source>Sent: %1 to machine %2.</source>
         <translation>已送出：%1 至機號 %2。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="99"/>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="104"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="99"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="104"/>
         <source>Initialise drive %1</source>
         <translation>初始化驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="100"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="100"/>
         <source>Reset every setting of drive %1 (%2) to its factory defaults?</source>
         <translation>要將驅動器 %1 (%2) 的所有設定恢復為出廠預設值嗎？</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="114"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="114"/>
         <source>Cancelled; nothing was sent.</source>
         <translation>已取消；未送出任何資料。</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="122"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="122"/>
         <source>Initialising drive %1…</source>
         <translation>正在初始化驅動器 %1…</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="131"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="131"/>
         <source>Drive %1 did not confirm the initialisation: %2</source>
         <translation>驅動器 %1 未確認初始化：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="132"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="132"/>
         <source>Nothing was sent: %1</source>
         <translation>未送出任何資料：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="139"/>
         <source>Drive %1 initialised; reading its values again…</source>
         <translation>驅動器 %1 已初始化；正在重新讀取其值…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="145"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="145"/>
         <source>Drive %1 initialised; %n value(s) could not be read back (it may answer only at the default communication settings now).</source>
         <translation>
             <numerusform>驅動器 %1 已初始化；%n 個值無法回讀 (驅動器現在可能只以預設通訊設定回應)。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterInitBox.cpp" line="149"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="149"/>
         <source>Drive %1 initialised to its factory defaults; values read again.</source>
         <translation>驅動器 %1 已初始化為出廠預設值；已重新讀取數值。</translation>
     </message>
@@ -7425,67 +7461,67 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitialiser</name>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="64"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="64"/>
         <source>%1 drives have no parameter initialisation.</source>
         <translation>%1 驅動器沒有參數初始化功能。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="67"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="67"/>
         <source>%1 = %2 (register %3)</source>
         <translation>%1 = %2 (暫存器 %3)</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="75"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="75"/>
         <source>Drive %1 is running. Stop the motor first: parameter initialisation is only sent to a drive at standstill.</source>
         <translation>驅動器 %1 正在運轉。請先停止馬達：參數初始化只會送往靜止中的驅動器。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="79"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="79"/>
         <source>Whether drive %1 is running could not be read (%2), so nothing was sent.</source>
         <translation>無法讀取驅動器 %1 是否運轉 (%2)，因此未送出任何資料。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="93"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="93"/>
         <source>Every setting of drive %1 returns to its factory default: %2. Values set for this machine are lost; save a backup first to keep them.</source>
         <translation>驅動器 %1 的所有設定將恢復為出廠預設值：%2。為此機台設定的值將遺失；若要保留，請先儲存備份。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="110"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="110"/>
         <source>%1 could not be read; it returns to %2. %3</source>
         <translation>無法讀取 %1；將恢復為 %2。%3</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="113"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="113"/>
         <source>%1 goes from %2 back to %3. %4</source>
         <translation>%1 由 %2 恢復為 %3。%4</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="118"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="118"/>
         <source>%1 stays %2 (already the default).</source>
         <translation>%1 維持 %2 (已是預設值)。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="124"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="124"/>
         <source>The drive may then stop answering this connection (from its next power-up): reconnect at the default setting to reach it.</source>
         <translation>之後驅動器可能不再回應此連線 (自下次上電起)：請以預設設定重新連線。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="128"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="128"/>
         <source>The drive no longer follows writes sent to its group&apos;s parent, and drives that followed it no longer do.</source>
         <translation>此驅動器將不再跟隨送往其群組母站的寫入，原本跟隨它的驅動器也不再跟隨。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="134"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="134"/>
         <source>The drive follows its input terminals again: an input that is on may start the motor, with the factory input functions.</source>
         <translation>驅動器將再次由輸入端子控制：依出廠輸入功能，處於 ON 的輸入可能使馬達啟動。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="136"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="136"/>
         <source>The machine number %1 is not a setting and does not change.</source>
         <translation>機號 %1 不屬於設定，不會變更。</translation>
     </message>
     <message>
-        <location filename="../main/model/session/ParameterInitialiser.cpp" line="138"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="138"/>
         <source>The motor must stand still: drive %1 reports it stopped now, and this is read again just before the command is sent.</source>
         <translation>馬達必須靜止：驅動器 %1 目前回報已停止，送出指令前會再讀取一次。</translation>
     </message>
@@ -7493,88 +7529,88 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterPage</name>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="23"/>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="83"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="23"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="83"/>
         <source>&amp;Write page</source>
         <translation>寫入本頁(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="24"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="24"/>
         <source>Re&amp;vert</source>
         <translation>復原(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="25"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="25"/>
         <source>Re-&amp;read</source>
         <translation>重新讀取(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="45"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="45"/>
         <source>Write this page&apos;s pending edits to the drive and verify them by reading back</source>
         <translation>將本頁的待寫入變更寫入驅動器，並以回讀驗證</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="46"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="46"/>
         <source>Discard this page&apos;s pending edits</source>
         <translation>捨棄本頁的待寫入變更</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="47"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="47"/>
         <source>Read this page&apos;s values from the drive again (edits stay)</source>
         <translation>從驅動器重新讀取本頁的值 (變更會保留)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="84"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="84"/>
         <source>&amp;Write page (%1)</source>
         <translation>寫入本頁 (%1)(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="97"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="97"/>
         <source>Reading…</source>
         <translation>讀取中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="101"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="101"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 個值無法讀取</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="120"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="120"/>
         <source>Nothing was written: %n field(s) not accepted. %1</source>
         <translation>
             <numerusform>未寫入任何資料：%n 個欄位不接受。%1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="139"/>
         <source>Write %n value(s) of the page %1 to machine number %2</source>
         <translation>
             <numerusform>將頁面「%1」的 %n 個值寫入機號 %2</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="143"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
         <source>Nothing was written.</source>
         <translation>未寫入任何資料。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="148"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="148"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>正在寫入 %n 個值…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="152"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="152"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>%n 項寫入失敗；請查看標示的欄位</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/workspace/ParameterPage.cpp" line="153"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="153"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>已寫入並驗證 %n 個值</numerusform>
@@ -7584,212 +7620,212 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterReader</name>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="52"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="52"/>
         <source>entry</source>
         <translation>項目</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="60"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="60"/>
         <source>name must be lower-case dotted words: [a-z0-9_] separated by dots</source>
         <translation>name 必須是以點分隔的小寫字詞：[a-z0-9_] 以點分隔</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="68"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="68"/>
         <source>&quot;label&quot; is empty</source>
         <translation>&quot;label&quot; 為空</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="70"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="70"/>
         <source>group &quot;%1&quot; is not declared in &quot;groups&quot;</source>
         <translation>group &quot;%1&quot; 未在 &quot;groups&quot; 中宣告</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="72"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="72"/>
         <source>kind must be one of %1</source>
         <translation>kind 必須是 %1 其中之一</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="78"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="78"/>
         <source>address must be 0x0000–0xFFFF</source>
         <translation>address 必須為 0x0000–0xFFFF</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="85"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="85"/>
         <source>read must be 3 (holding) or 4 (input)</source>
         <translation>read 必須為 3 (holding) 或 4 (input)</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="87"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="87"/>
         <source>write must be 6 or 16</source>
         <translation>write 必須為 6 或 16</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="91"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="91"/>
         <source>input registers (read 4) cannot be written</source>
         <translation>input 暫存器 (read 4) 無法寫入</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="93"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="93"/>
         <source>neither readable nor writable</source>
         <translation>既不可讀取也不可寫入</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="101"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="101"/>
         <source>type must be u16, s16, u32, s32, f32, string or bits</source>
         <translation>type 必須為 u16、s16、u32、s32、f32、string 或 bits</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="110"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="110"/>
         <source>string parameters need &quot;count&quot; 1–125 registers</source>
         <translation>string 參數需要 &quot;count&quot; 為 1–125 個暫存器</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="115"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="115"/>
         <source>bits parameters have &quot;count&quot; 1 or 2</source>
         <translation>bits 參數的 &quot;count&quot; 為 1 或 2</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="120"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="120"/>
         <source>%1 takes %2 register(s), not %3</source>
         <translation>%1 佔用 %2 個暫存器，而非 %3 個</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="123"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="123"/>
         <source>a %1-register value cannot be written with function 06; use 16</source>
         <translation>%1 個暫存器的值無法以功能碼 06 寫入；請使用 16</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="128"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="128"/>
         <source>safety must be one of %1</source>
         <translation>safety 必須是 %1 其中之一</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="130"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="130"/>
         <source>commands need a &quot;safety&quot; class</source>
         <translation>指令需要 &quot;safety&quot; 類別</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="133"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="133"/>
         <source>code table &quot;%1&quot; is not declared</source>
         <translation>代碼表 &quot;%1&quot; 未宣告</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="140"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="140"/>
         <source>a setting needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>設定需要 &quot;allowed&quot; 或 &quot;enum&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="143"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="143"/>
         <source>a writable parameter needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>可寫入的參數需要 &quot;allowed&quot; 或 &quot;enum&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="148"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="148"/>
         <source>bits parameters need &quot;bits&quot;</source>
         <translation>bits 參數需要 &quot;bits&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="156"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="156"/>
         <source>&quot;backup&quot; must be true or false</source>
         <translation>&quot;backup&quot; 必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="161"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="161"/>
         <source>only readable and writable parameters can be backed up</source>
         <translation>只有可讀寫的參數能夠備份</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="169"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="169"/>
         <source>scale must be positive</source>
         <translation>scale 必須為正數</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="179"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="179"/>
         <source>decimals must be 0–9</source>
         <translation>decimals 必須為 0–9</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="205"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="205"/>
         <source>default %1 is not a whole number of steps of %2</source>
         <translation>預設值 %1 不是 %2 的整數倍</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="214"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="214"/>
         <source>default must be a number (or &quot;0x...&quot; code)</source>
         <translation>預設值必須是數字 (或 &quot;0x...&quot; 代碼)</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="217"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="217"/>
         <source>default must be a number or a string</source>
         <translation>預設值必須是數字或字串</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="228"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="228"/>
         <source>%1 must be an object {&quot;min&quot;:…, &quot;max&quot;:…}</source>
         <translation>%1 必須是物件 {&quot;min&quot;:…, &quot;max&quot;:…}</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="235"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="235"/>
         <source>%1 needs numeric min and max</source>
         <translation>%1 需要數值型的 min 與 max</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="241"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="241"/>
         <source>%1: %2 is not a whole number of steps of %3</source>
         <translation>%1：%2 不是 %3 的整數倍</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="249"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="249"/>
         <source>%1: min is greater than max</source>
         <translation>%1：min 大於 max</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="263"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="263"/>
         <source>%1 must be an object {&quot;value&quot;:…, &quot;label&quot;:…}</source>
         <translation>%1 必須是物件 {&quot;value&quot;:…, &quot;label&quot;:…}</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="278"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="278"/>
         <source>%1 has no label</source>
         <translation>%1 沒有 label</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="280"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="280"/>
         <source>%1 repeats a code or label</source>
         <translation>%1 有重複的代碼或 label</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="291"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="291"/>
         <source>&quot;bits&quot; only belongs to type bits</source>
         <translation>&quot;bits&quot; 只適用於 type bits</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="315"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="315"/>
         <source>%1.appliesWhen needs &quot;param&quot; and &quot;equals&quot;</source>
         <translation>%1.appliesWhen 需要 &quot;param&quot; 與 &quot;equals&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="320"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="320"/>
         <source>%1 lies outside the %2-bit register</source>
         <translation>%1 超出 %2 位元暫存器的範圍</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="322"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="322"/>
         <source>%1 needs a unique name</source>
         <translation>%1 需要唯一的名稱</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="336"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="336"/>
         <source>%1 must be an object</source>
         <translation>%1 必須是物件</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="348"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="348"/>
         <source>%1 needs either &quot;variant&quot; or &quot;param&quot;</source>
         <translation>%1 需要 &quot;variant&quot; 或 &quot;param&quot; 其中之一</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ParameterReader.cpp" line="351"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="351"/>
         <source>%1: variant &quot;%2&quot; is not declared</source>
         <translation>%1：variant &quot;%2&quot; 未宣告</translation>
     </message>
@@ -7797,67 +7833,67 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParamsCommand</name>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="82"/>
+        <location filename="../cli/ParamsCommand.cpp" line="82"/>
         <source>List every parameter of the device profiles</source>
         <translation>列出定義檔中的所有參數</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="162"/>
+        <location filename="../cli/ParamsCommand.cpp" line="162"/>
         <source>error: params takes no arguments; use --family F</source>
         <translation>錯誤：params 不接受引數；請使用 --family F</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="170"/>
+        <location filename="../cli/ParamsCommand.cpp" line="170"/>
         <source>error: unknown family &quot;%1&quot;; known: %2</source>
         <translation>錯誤：未知系列 &quot;%1&quot;；已知：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Name</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Label</source>
         <translation>標籤</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Address</source>
         <translation>位址</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Type</source>
         <translation>類型</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="192"/>
+        <location filename="../cli/ParamsCommand.cpp" line="192"/>
         <source>Unit</source>
         <translation>單位</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="193"/>
+        <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Allowed</source>
         <translation>允許值</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="193"/>
+        <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Default</source>
         <translation>預設值</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="193"/>
+        <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Access</source>
         <translation>存取</translation>
     </message>
     <message>
-        <location filename="../main/cli/ParamsCommand.cpp" line="193"/>
+        <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Group</source>
         <translation>群組</translation>
     </message>
@@ -7865,42 +7901,42 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::PortsCommand</name>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="16"/>
+        <location filename="../cli/PortsCommand.cpp" line="16"/>
         <source>List serial ports and USB adapters</source>
         <translation>列出序列埠與 USB 轉接器</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="23"/>
+        <location filename="../cli/PortsCommand.cpp" line="23"/>
         <source>error: ports takes no arguments</source>
         <translation>錯誤：ports 不接受引數</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="43"/>
+        <location filename="../cli/PortsCommand.cpp" line="43"/>
         <source>No serial ports found.</source>
         <translation>找不到序列埠。</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="47"/>
+        <location filename="../cli/PortsCommand.cpp" line="47"/>
         <source>Port</source>
         <translation>連接埠</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="48"/>
+        <location filename="../cli/PortsCommand.cpp" line="48"/>
         <source>Adapter</source>
         <translation>轉接器</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="49"/>
+        <location filename="../cli/PortsCommand.cpp" line="49"/>
         <source>Manufacturer</source>
         <translation>製造商</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="50"/>
+        <location filename="../cli/PortsCommand.cpp" line="50"/>
         <source>Serial no.</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../main/cli/PortsCommand.cpp" line="51"/>
+        <location filename="../cli/PortsCommand.cpp" line="51"/>
         <source>VID:PID</source>
         <translation>VID:PID</translation>
     </message>
@@ -7908,37 +7944,37 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="27"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="27"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>生產模式 (終檢)(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="30"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="30"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>終檢工站的作業員畫面；切換回來之前無法編輯參數 (Ctrl+Shift+P)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="33"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="33"/>
         <source>&amp;Full screen</source>
         <translation>全螢幕(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="49"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="49"/>
         <source>Production mode</source>
         <translation>生產模式</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="50"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="50"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>有產品正在測試中。請先取消 (Esc) 或等待測試完成，再切換回工程模式。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="79"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="79"/>
         <source>Results database</source>
         <translation>結果資料庫</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="80"/>
         <source>%1
 
 No unit can be tested until results can be recorded.</source>
@@ -7947,17 +7983,17 @@ No unit can be tested until results can be recorded.</source>
 在能夠記錄結果之前，無法測試任何產品。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="95"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="95"/>
         <source>A unit is being tested</source>
         <translation>有產品正在測試中</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="96"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="96"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>產品 %1 正在測試中。要取消測試並%2嗎？會先停止其馬達，並將此產品記錄為已中止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionMode.cpp" line="108"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="108"/>
         <source>cancelled to %1</source>
         <translation>因%1而取消</translation>
     </message>
@@ -7965,47 +8001,47 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProductionOptions</name>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="31"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="31"/>
         <source>Start in production mode (end-of-line station) with this recipe.</source>
         <translation>以此配方啟動生產模式 (終檢工站)。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="32"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="32"/>
         <source>RECIPE</source>
         <translation>RECIPE</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="33"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
         <source>Per-unit values (CSV by serial number) for production mode.</source>
         <translation>生產模式使用的單台數值 (依序號的 CSV)。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="33"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="35"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="35"/>
         <source>Results database for production mode: an SQLite file or postgresql://user@host/db.</source>
         <translation>生產模式的結果資料庫：SQLite 檔或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="36"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="36"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="37"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="37"/>
         <source>Start full screen.</source>
         <translation>以全螢幕啟動。</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="44"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="44"/>
         <source>--units and --results-db go with --production RECIPE</source>
         <translation>--units 與 --results-db 須搭配 --production RECIPE 使用</translation>
     </message>
     <message>
-        <location filename="../main/app/gui/ProductionOptions.cpp" line="54"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="54"/>
         <source>%1 cannot be run:
   %2</source>
         <translation>%1 無法執行：
@@ -8015,82 +8051,82 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="65"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="66"/>
         <source>Open recipe…</source>
         <translation>開啟配方…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="66"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
         <source>Per-unit values…</source>
         <translation>單台數值…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="69"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="70"/>
         <source>operator</source>
         <translation>作業員</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="72"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="73"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="77"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="78"/>
         <source>Operator:</source>
         <translation>作業員：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="83"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="84"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>掃描或輸入序號後按 Enter</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="84"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
         <source>Cancel unit (Esc)</source>
         <translation>取消此產品 (Esc)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="102"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="103"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="102"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="103"/>
         <source>Now</source>
         <translation>目前</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="109"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="109"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
         <source>Serial</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="109"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="109"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
         <source>Reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="145"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="146"/>
         <source>READY</source>
         <translation>就緒</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="167"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="174"/>
         <source>Recipe not usable</source>
         <translation>配方無法使用</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="168"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="175"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -8099,126 +8135,126 @@ No unit can be tested until results can be recorded.</source>
 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="180"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="187"/>
         <source>Open recipe</source>
         <translation>開啟配方</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="180"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="187"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="187"/>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="193"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="194"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="200"/>
         <source>Per-unit values</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="188"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/ProductionView.cpp" line="200"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="207"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 版次 %2 — %n 台驅動器</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="204"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="211"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;無：請開啟產品的配方&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="205"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="212"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>工站 %1 · 結果：%2 · 單台數值：%3</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="207"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
         <source>loaded</source>
         <translation>已載入</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="207"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="214"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="221"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>已測試 %1 · 合格 %2 · 不合格 %3 · 一次良率 %4 %</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="244"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
         <source>Per-unit value</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="245"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>驅動器 %1：%2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="258"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
         <source>NOT STARTED</source>
         <translation>未開始</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="274"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="281"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="275"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="282"/>
         <source>drive %1 (%2)</source>
         <translation>驅動器 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="276"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="283"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="279"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
         <source>TESTING</source>
         <translation>測試中</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="279"/>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="300"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
         <source>Unit %1</source>
         <translation>產品 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="296"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="303"/>
         <source>NOT RECORDED: %1</source>
         <translation>未記錄：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="299"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="306"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="303"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="306"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="317"/>
         <source>Motor not confirmed stopped</source>
         <translation>未確認馬達已停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ProductionView.cpp" line="311"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="318"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -8230,32 +8266,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="336"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="336"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>位移 %1 處不是有效的 JSON：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="340"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="340"/>
         <source>the top level must be a JSON object</source>
         <translation>最上層必須是 JSON 物件</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="351"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="351"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot; 為空</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="362"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="362"/>
         <source>must be an object</source>
         <translation>必須是物件</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="364"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
         <source>name repeated</source>
         <translation>名稱重複</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ProfileLoader.cpp" line="379"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="379"/>
         <source>%1: cannot open: %2</source>
         <translation>%1：無法開啟：%2</translation>
     </message>
@@ -8263,12 +8299,12 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Progress</name>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="74"/>
+        <location filename="../cli/ScanCommand.cpp" line="74"/>
         <source>scanning %1/%2 (%3 %), machine number %4, %5 found</source>
         <translation>掃描中 %1/%2 (%3 %)，機號 %4，已找到 %5 台</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="89"/>
+        <location filename="../cli/ScanCommand.cpp" line="89"/>
         <source>scan: %1 % (%2 of %3 machine numbers), %4 found</source>
         <translation>掃描：%1 % (%3 個機號中的第 %2 個)，已找到 %4 台</translation>
     </message>
@@ -8276,22 +8312,22 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::PtySimServer</name>
     <message>
-        <location filename="../main/sim/PtySimServer.cpp" line="49"/>
+        <location filename="../sim/PtySimServer.cpp" line="49"/>
         <source>cannot open a pseudo-terminal: %1</source>
         <translation>無法開啟虛擬終端機：%1</translation>
     </message>
     <message>
-        <location filename="../main/sim/PtySimServer.cpp" line="66"/>
+        <location filename="../sim/PtySimServer.cpp" line="66"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1 已存在且不是符號連結；拒絕取代</translation>
     </message>
     <message>
-        <location filename="../main/sim/PtySimServer.cpp" line="72"/>
+        <location filename="../sim/PtySimServer.cpp" line="72"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>無法建立符號連結 %1 -&gt; %2</translation>
     </message>
     <message>
-        <location filename="../main/sim/PtySimServer.cpp" line="114"/>
+        <location filename="../sim/PtySimServer.cpp" line="114"/>
         <source>the port is plugged in: %1</source>
         <translation>連接埠已接上：%1</translation>
     </message>
@@ -8299,52 +8335,52 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Recipe</name>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="62"/>
+        <location filename="../model/eol/Recipe.cpp" line="62"/>
         <source>take communication priority</source>
         <translation>取得通訊優先</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="64"/>
+        <location filename="../model/eol/Recipe.cpp" line="64"/>
         <source>select running data</source>
         <translation>選擇運轉資料</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="66"/>
+        <location filename="../model/eol/Recipe.cpp" line="66"/>
         <source>set the speed command</source>
         <translation>設定速度指令</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="68"/>
+        <location filename="../model/eol/Recipe.cpp" line="68"/>
         <source>start</source>
         <translation>啟動</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="70"/>
+        <location filename="../model/eol/Recipe.cpp" line="70"/>
         <source>wait for speed</source>
         <translation>等待到達速度</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="72"/>
+        <location filename="../model/eol/Recipe.cpp" line="72"/>
         <source>hold and measure</source>
         <translation>保持並量測</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="74"/>
+        <location filename="../model/eol/Recipe.cpp" line="74"/>
         <source>check for alarms and warnings</source>
         <translation>檢查警報與警告</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="76"/>
+        <location filename="../model/eol/Recipe.cpp" line="76"/>
         <source>stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="78"/>
+        <location filename="../model/eol/Recipe.cpp" line="78"/>
         <source>read and compare</source>
         <translation>讀取並比較</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/Recipe.cpp" line="106"/>
+        <location filename="../model/eol/Recipe.cpp" line="106"/>
         <source>position %1 (machine number %2)</source>
         <translation>位置 %1 (機號 %2)</translation>
     </message>
@@ -8352,17 +8388,17 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeBuilder</name>
     <message>
-        <location filename="../main/model/eol/RecipeBuilder.cpp" line="208"/>
+        <location filename="../model/eol/RecipeBuilder.cpp" line="208"/>
         <source>%1: unknown family &quot;%2&quot;</source>
         <translation>%1：未知系列 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeBuilder.cpp" line="228"/>
+        <location filename="../model/eol/RecipeBuilder.cpp" line="228"/>
         <source>%1: %2 holds a value the profile does not allow: %3</source>
         <translation>%1：%2 含有定義檔不允許的值：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeBuilder.cpp" line="261"/>
+        <location filename="../model/eol/RecipeBuilder.cpp" line="261"/>
         <source>no drive to make a recipe of</source>
         <translation>沒有可用來建立配方的驅動器</translation>
     </message>
@@ -8370,160 +8406,160 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeChecker</name>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="61"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="61"/>
         <source> (for %1)</source>
         <translation> (適用於 %1)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="93"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="93"/>
         <source>the recipe names no product</source>
         <translation>配方未指定產品</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="95"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="95"/>
         <source>the recipe has no revision</source>
         <translation>配方沒有版次</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="97"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="97"/>
         <source>the recipe names no drive</source>
         <translation>配方未指定驅動器</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="104"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="104"/>
         <source>%1: machine number %2 is already position %3; every drive of a unit needs its own machine number</source>
         <translation>%1：機號 %2 已用於位置 %3；產品中的每台驅動器都需要各自的機號</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="126"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="126"/>
         <source>%1: unknown family &quot;%2&quot;; known: %3</source>
         <translation>%1：未知的系列 &quot;%2&quot;；已知：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="132"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="132"/>
         <source>%1: a %2 takes machine numbers %3–%4</source>
         <translation>%1：%2 的機號範圍為 %3–%4</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="145"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="145"/>
         <source>%1: the %2 has no variant &quot;%3&quot;; known: %4</source>
         <translation>%1：%2 沒有機型 &quot;%3&quot;；已知：%4</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="147"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="147"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="149"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="149"/>
         <source>%1: variant &quot;%2&quot; is named twice</source>
         <translation>%1：機型 &quot;%2&quot; 重複指定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="162"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="162"/>
         <source>%1: firmware version &quot;%2&quot; is not a version as the drive reports it (major.minor, e.g. &quot;1.5&quot;)</source>
         <translation>%1：韌體版本 &quot;%2&quot; 不是驅動器回報的版本格式 (major.minor，例如 &quot;1.5&quot;)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="175"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="175"/>
         <source>the %1 has no setting &quot;%2&quot;</source>
         <translation>%1 沒有設定 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="177"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="177"/>
         <source>%1 is not a setting a recipe can write</source>
         <translation>%1 不是配方可寫入的設定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="179"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="179"/>
         <source>%1 decides how the drive communicates; a recipe cannot change it, or the station would lose the drive in the middle of the run</source>
         <translation>%1 決定驅動器的通訊方式；配方不能變更此設定，否則工站會在測試途中失去與驅動器的連線</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="199"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="199"/>
         <source>%1: setting %2</source>
         <translation>%1：設定 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="204"/>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="269"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="204"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="269"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="210"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="210"/>
         <source>%1 is given twice</source>
         <translation>%1 重複指定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="218"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="218"/>
         <source>%1: what it allows depends on %2, which the recipe does not set; add %2 to the settings</source>
         <translation>%1：其允許值取決於配方未設定的 %2；請將 %2 加入設定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="227"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="227"/>
         <source>%1 decides what %2 allows; set %2 in the recipe too, or the drive may be left with a value that is no longer valid</source>
         <translation>%1 決定 %2 的允許值；請同時在配方中設定 %2，否則驅動器可能留下已不再有效的值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="243"/>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="311"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="243"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="311"/>
         <source>%1: unit &quot;%2&quot;, but the drive&apos;s value is in &quot;%3&quot;</source>
         <translation>%1：單位為 &quot;%2&quot;，但驅動器的值以 &quot;%3&quot; 表示</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="264"/>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="364"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="264"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="364"/>
         <source>%1: per-unit value %2</source>
         <translation>%1：單台數值 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="275"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="275"/>
         <source>%1 is given twice (as a setting or as a per-unit value)</source>
         <translation>%1 重複指定 (作為設定或單台數值)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="281"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="281"/>
         <source>%1: the range&apos;s lowest value %2 is above its highest value %3</source>
         <translation>%1：範圍的最小值 %2 大於最大值 %3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="302"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="302"/>
         <source>%1: what it allows depends on %2, which the recipe does not set</source>
         <translation>%1：其允許值取決於配方未設定的 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="309"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="309"/>
         <source>%1 is not a number; a per-unit value needs a numeric setting</source>
         <translation>%1 不是數值；單台數值需要數值型設定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="314"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="314"/>
         <source>%1: range %2–%3%4</source>
         <translation>%1：範圍 %2–%3%4</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="320"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="320"/>
         <source>%1 is outside what the drive allows: %2%3</source>
         <translation>%1 超出驅動器的允許範圍：%2%3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="332"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="332"/>
         <source>%1 includes values the drive does not allow; allowed: %2%3</source>
         <translation>%1 包含驅動器不允許的值；允許：%2%3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="357"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="357"/>
         <source>%1: per-unit value %2: %3%4 is outside the recipe&apos;s range %5–%6%4</source>
         <translation>%1：單台數值 %2：%3%4 超出配方範圍 %5–%6%4</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="368"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="368"/>
         <source>%1: the recipe has no per-unit value %2</source>
         <translation>%1：配方中沒有單台數值 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeChecker.cpp" line="371"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="371"/>
         <source>the recipe has no drive at machine number %1</source>
         <translation>配方中沒有機號 %1 的驅動器</translation>
     </message>
@@ -8531,218 +8567,218 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeEditor</name>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="46"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="46"/>
         <source>Recipe editor</source>
         <translation>配方編輯器</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="66"/>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="403"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="66"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="403"/>
         <source>Revision:</source>
         <translation>版次：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="68"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="68"/>
         <source>Product:</source>
         <translation>產品：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="69"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="69"/>
         <source>Description:</source>
         <translation>說明：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="70"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
         <source>Position:</source>
         <translation>位置：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="107"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="107"/>
         <source>New from drives on the bus…</source>
         <translation>從匯流排上的驅動器新建…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="108"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
         <source>New from backup file…</source>
         <translation>從備份檔新建…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="109"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
         <source>Open…</source>
         <translation>開啟…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>Save</source>
         <translation>儲存</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>Save as…</source>
         <translation>另存新檔…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="152"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="152"/>
         <source>%1: %2%3</source>
         <translation>%1：%2%3</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="155"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="155"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="224"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="224"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>由標準樣品在匯流排上的驅動器或其備份檔建立配方，或開啟既有配方。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="228"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="228"/>
         <source>the recipe is empty</source>
         <translation>配方為空</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="242"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="242"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="246"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="246"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>配方通過檢查：可儲存並執行。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="249"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 個問題：修正之前無法儲存配方。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="261"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="261"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>配方未通過檢查 (%n 個問題)；未儲存任何資料</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="277"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="277"/>
         <source>cannot read %1: %2</source>
         <translation>無法讀取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="289"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="289"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 不是 OpenTOP 配方檔</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="296"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="297"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="297"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>已開啟 %1，但無法直接載入 (%2)。儲存時會檢查並重新簽署。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="317"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="317"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>由 %1 建立的新配方：請檢查設定與測試步驟的限值後儲存。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="329"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="329"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>機號 %1 不是匯流排上已知的驅動器；請先掃描匯流排</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="334"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>正在讀取標準樣品的設定…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="334"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="349"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="349"/>
         <source>cancelled: no recipe was made</source>
         <translation>已取消：未建立配方</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="375"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="375"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="388"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="388"/>
         <source>Open recipe</source>
         <translation>開啟配方</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="389"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="389"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>配方 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="398"/>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="403"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="398"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="403"/>
         <source>New recipe</source>
         <translation>新配方</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="398"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="398"/>
         <source>Product name:</source>
         <translation>產品名稱：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="411"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="411"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>標準樣品的備份檔</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="412"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="412"/>
         <source>Backups (*.json)</source>
         <translation>備份檔 (*.json)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="424"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="424"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>匯流排上沒有驅動器：請先連線並掃描。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="432"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="432"/>
         <source>New recipe from drives</source>
         <translation>從驅動器新建配方</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="433"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="433"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>標準樣品驅動器的機號 (已找到：%1)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="443"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="443"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot; 不是機號 (1–247)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="452"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="452"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>由匯流排上的驅動器建立的新配方：請檢查設定與測試步驟的限值後儲存。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="463"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="463"/>
         <source>Save recipe</source>
         <translation>儲存配方</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="465"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="465"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipeEditor.cpp" line="470"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="470"/>
         <source>Saved and signed: %1</source>
         <translation>已儲存並簽署：%1</translation>
     </message>
@@ -8750,17 +8786,17 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../main/model/eol/RecipeFile.cpp" line="250"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="250"/>
         <source>cannot read %1: %2</source>
         <translation>無法讀取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeFile.cpp" line="257"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="257"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1 大於配方檔上限 %2 MB；不是配方檔</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeFile.cpp" line="265"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="265"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -8768,153 +8804,153 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeParser</name>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="45"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="45"/>
         <source>not a JSON file: %1 at byte %2</source>
         <translation>不是 JSON 檔：%1 (第 %2 位元組)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="49"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="49"/>
         <source>not an OpenTOP recipe file: the JSON is not an object</source>
         <translation>不是 OpenTOP 配方檔：JSON 不是物件</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="70"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="70"/>
         <source>&quot;positions&quot;: the recipe names no drive</source>
         <translation>&quot;positions&quot;：配方未指定驅動器</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="75"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="75"/>
         <source>%1: must be an object</source>
         <translation>%1：必須是物件</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="92"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="92"/>
         <source>not an OpenTOP recipe file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>不是 OpenTOP 配方檔 (&quot;format&quot; 為 &quot;%1&quot;，而非 &quot;%2&quot;)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="94"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="94"/>
         <source>not an OpenTOP recipe file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>不是 OpenTOP 配方檔 (沒有 &quot;format&quot;: &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="99"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="99"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot; 必須是 1 以上的整數</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="101"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="101"/>
         <source>written by a newer OpenTOP (recipe format version %1); this version reads recipe format version %2</source>
         <translation>由較新版的 OpenTOP 寫入 (配方格式版本 %1)；此版本可讀取配方格式版本 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="107"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="107"/>
         <source>the recipe has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>配方沒有檢查碼 (&quot;checksum&quot;: &quot;sha256:…&quot;)；並非由 OpenTOP 寫入，或寫入後曾被修改</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="113"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="113"/>
         <source>the recipe was changed after it was written (checksum mismatch); open and save it with OpenTOP to accept the change</source>
         <translation>配方寫入後曾被修改 (檢查碼不符)；請以 OpenTOP 開啟並儲存，以接受此變更</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="130"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="130"/>
         <source>%1: &quot;machineNumber&quot; must be a machine number 1–247</source>
         <translation>%1：&quot;machineNumber&quot; 必須是 1–247 的機號</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="132"/>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="208"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="132"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="208"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="176"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="176"/>
         <source>%1 (%2): &quot;value&quot; must be a number or a text</source>
         <translation>%1 (%2)：&quot;value&quot; 必須是數字或文字</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="192"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="192"/>
         <source>%1 (%2): &quot;source&quot; must be &quot;csv&quot; or &quot;operator&quot;, not &quot;%3&quot;</source>
         <translation>%1 (%2)：&quot;source&quot; 必須是 &quot;csv&quot; 或 &quot;operator&quot;，而非 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="205"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="205"/>
         <source>%1: unknown step type &quot;%2&quot;; known: %3</source>
         <translation>%1：未知的步驟類型 &quot;%2&quot;；已知：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="219"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="219"/>
         <source>%1: &quot;spno&quot; must be a running data number such as 2</source>
         <translation>%1：&quot;spno&quot; 必須是運轉資料編號，例如 2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="232"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="232"/>
         <source>%1: &quot;direction&quot; must be &quot;cw&quot; or &quot;ccw&quot;</source>
         <translation>%1：&quot;direction&quot; 必須是 &quot;cw&quot; 或 &quot;ccw&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="276"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="276"/>
         <source>%1: give either &quot;equals&quot; or limits, not both</source>
         <translation>%1：&quot;equals&quot; 與限值只能擇一</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="282"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="282"/>
         <source>%1: unknown step</source>
         <translation>%1：未知步驟</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="298"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="298"/>
         <source>%1: &quot;unit&quot; must be a text (&quot;&quot; for a value without a unit)</source>
         <translation>%1：&quot;unit&quot; 必須是文字 (無單位的值請用 &quot;&quot;)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="301"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="301"/>
         <source>%1: a limit needs &quot;lower&quot;, &quot;upper&quot; or both</source>
         <translation>%1：限值需要 &quot;lower&quot;、&quot;upper&quot; 或兩者</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="309"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="309"/>
         <source>%1: unknown key &quot;%2&quot;; allowed: %3</source>
         <translation>%1：未知的鍵 &quot;%2&quot;；允許：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="323"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="323"/>
         <source>%1&quot;%2&quot; must be a non-empty text</source>
         <translation>%1&quot;%2&quot; 必須是非空的文字</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="324"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="324"/>
         <source>%1&quot;%2&quot; must be a text</source>
         <translation>%1&quot;%2&quot; 必須是文字</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="336"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="336"/>
         <source>%1: &quot;%2&quot; must be a list of texts</source>
         <translation>%1：&quot;%2&quot; 必須是文字清單</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="339"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="339"/>
         <source>%1: &quot;%2&quot; must be a list of non-empty texts</source>
         <translation>%1：&quot;%2&quot; 必須是非空文字的清單</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="349"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="349"/>
         <source>%1: &quot;%2&quot; must be a number</source>
         <translation>%1：&quot;%2&quot; 必須是數字</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="375"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="375"/>
         <source>%1&quot;%2&quot; must be a list</source>
         <translation>%1&quot;%2&quot; 必須是清單</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="378"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="378"/>
         <source>%1&quot;%2&quot; has %3 entries; at most %4 are allowed</source>
         <translation>%1&quot;%2&quot; 有 %3 個項目；最多允許 %4 個</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeParser.cpp" line="384"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="384"/>
         <source>%1&quot;%2&quot;: every entry must be an object</source>
         <translation>%1&quot;%2&quot;：每個項目都必須是物件</translation>
     </message>
@@ -8922,151 +8958,151 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipePositionForm</name>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="125"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="125"/>
         <source>every variant of the family, e.g. dbu200, dbu400</source>
         <translation>此系列的所有機型，例如 dbu200, dbu400</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="127"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="127"/>
         <source>any firmware, e.g. 1.5, 1.6</source>
         <translation>任何韌體，例如 1.5, 1.6</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Name</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Unit</source>
         <translation>單位</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Min</source>
         <translation>最小值</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Max</source>
         <translation>最大值</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Source</source>
         <translation>來源</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="139"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="139"/>
         <source>Add per-unit value…</source>
         <translation>新增單台數值…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="139"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="139"/>
         <source>Add setting…</source>
         <translation>新增設定…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="140"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="140"/>
         <source>Remove</source>
         <translation>移除</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="153"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="153"/>
         <source>Settings</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="154"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="154"/>
         <source>Per-unit values</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="155"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="155"/>
         <source>Test steps (JSON)</source>
         <translation>測試步驟 (JSON)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="158"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
         <source>Machine number:</source>
         <translation>機號：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="159"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
         <source>Name:</source>
         <translation>名稱：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="160"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="160"/>
         <source>Family:</source>
         <translation>系列：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="161"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="161"/>
         <source>Allowed variants:</source>
         <translation>允許的機型：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="162"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="162"/>
         <source>Allowed firmware:</source>
         <translation>允許的韌體：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="188"/>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="352"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="188"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="352"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="232"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="232"/>
         <source>CSV file</source>
         <translation>CSV 檔</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="233"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="233"/>
         <source>typed by the operator</source>
         <translation>由作業員輸入</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="281"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="281"/>
         <source>test steps: %1 at character %2</source>
         <translation>測試步驟：第 %2 個字元處 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="283"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="283"/>
         <source>test steps: must be a JSON array of steps: [ {...}, ... ]</source>
         <translation>測試步驟：必須是步驟的 JSON 陣列：[ {...}, ... ]</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="294"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="294"/>
         <source>(unknown: %1)</source>
         <translation>(未知：%1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="357"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="357"/>
         <source>Add a per-unit value</source>
         <translation>新增單台數值</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="357"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="357"/>
         <source>Add a setting</source>
         <translation>新增設定</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/RecipePositionForm.cpp" line="358"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="358"/>
         <source>Setting:</source>
         <translation>設定：</translation>
     </message>
@@ -9074,143 +9110,143 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeStepChecker</name>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="22"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="22"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="40"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="40"/>
         <source>a %1 cannot do this step</source>
         <translation>%1 無法執行此步驟</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="53"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="53"/>
         <source>%1, step %2 (%3)</source>
         <translation>%1，步驟 %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="63"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="63"/>
         <source>the drive takes motion commands only with communication priority; put a priority step before it</source>
         <translation>驅動器只在通訊優先時接受運轉指令；請在此之前加入優先權步驟</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="71"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="71"/>
         <source>the motor is not running here; put a start step before it</source>
         <translation>此時馬達未運轉；請在此之前加入啟動步驟</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="82"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="82"/>
         <source>%1: the steps leave the motor running; end them with a stop step</source>
         <translation>%1：步驟結束後馬達仍在運轉；請以停止步驟結尾</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="92"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="92"/>
         <source>%1 %2 s is not sane; give more than 0 s and at most %3 s</source>
         <translation>%1 %2 s 不合理；請指定大於 0 s 且不超過 %3 s 的值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="105"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="105"/>
         <source>unit &quot;%1&quot;, but %2 is measured in &quot;%3&quot;</source>
         <translation>單位為 &quot;%1&quot;，但 %2 以 &quot;%3&quot; 量測</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="129"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="129"/>
         <source>the profile&apos;s selection parameter is missing</source>
         <translation>缺少定義檔中的選擇參數</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="131"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="131"/>
         <source>running data %1: %2</source>
         <translation>運轉資料 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="146"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="146"/>
         <source>what %1 means depends on %2, which the recipe does not set; add it to the settings</source>
         <translation>%1 的意義取決於配方未設定的 %2；請將其加入設定</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="154"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="154"/>
         <source>a speed of 0 stops the motor; use a stop step</source>
         <translation>速度 0 會使馬達停止；請使用停止步驟</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="168"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="168"/>
         <source>unit &quot;%1&quot;, but with these settings %2 is in &quot;%3&quot;</source>
         <translation>單位為 &quot;%1&quot;，但依這些設定 %2 以 &quot;%3&quot; 表示</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="185"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="185"/>
         <source>a %1 does not report its target speed; give the target</source>
         <translation>%1 不回報目標速度；請指定目標值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="187"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="187"/>
         <source>the target speed must be above 0</source>
         <translation>目標速度必須大於 0</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="190"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="190"/>
         <source>the tolerance %1 must be above 0 and below the target speed</source>
         <translation>容許誤差 %1 必須大於 0 且小於目標速度</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="194"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="194"/>
         <source>the time to reach the speed</source>
         <translation>到達速度時間</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="198"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="198"/>
         <source>the hold time</source>
         <translation>保持時間</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="200"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="200"/>
         <source>the step measures nothing; give limits</source>
         <translation>此步驟未量測任何項目；請指定限值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="208"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="208"/>
         <source>the margin</source>
         <translation>裕度</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="211"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="211"/>
         <source>a %1 has no deceleration time setting to wait for; give the deceleration (0 s when it brakes at once)</source>
         <translation>%1 沒有可等待的減速時間設定；請指定減速時間 (立即煞車時為 0 s)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="217"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="217"/>
         <source>the deceleration time %1 s is not sane; give 0–%2 s</source>
         <translation>減速時間 %1 s 不合理；請指定 0–%2 s</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="232"/>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="274"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="232"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="274"/>
         <source>the %1 has no readable value &quot;%2&quot;</source>
         <translation>%1 沒有可讀取的值 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="237"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="237"/>
         <source>%1 is not a number</source>
         <translation>%1 不是數字</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="247"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="247"/>
         <source>%1: &quot;%2&quot; is not a statistic; use min, mean or max</source>
         <translation>%1：&quot;%2&quot; 不是統計量；請使用 min、mean 或 max</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="254"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="254"/>
         <source>%1: the limit&apos;s unit is &quot;%2&quot;, but the value is measured in &quot;%3&quot;</source>
         <translation>%1：限值的單位為 &quot;%2&quot;，但量測值以 &quot;%3&quot; 表示</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="261"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="261"/>
         <source>%1: the lower limit %2 %4 is above the upper limit %3 %4</source>
         <translation>%1：下限 %2 %4 大於上限 %3 %4</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/RecipeStepChecker.cpp" line="283"/>
+        <location filename="../model/eol/RecipeStepChecker.cpp" line="283"/>
         <source>%1 is a number; compare it with lower and upper limits</source>
         <translation>%1 是數值；請以下限與上限比較</translation>
     </message>
@@ -9218,42 +9254,42 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreChoice</name>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
         <source>Drive in file / setting</source>
         <translation>檔案中的驅動器 / 設定</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
         <source>Value in file</source>
         <translation>檔案中的值</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
         <source>Restore to</source>
         <translation>還原至</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="54"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="54"/>
         <source>(do not restore)</source>
         <translation>(不還原)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="58"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="58"/>
         <source>Drive %1 (%2)</source>
         <translation>驅動器 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="117"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="117"/>
         <source>Two drives of the file would be restored to drive %1.</source>
         <translation>檔案中有兩台驅動器將還原至驅動器 %1。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="122"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="122"/>
         <source>Drive %1 is not on the bus (or not identified).</source>
         <translation>驅動器 %1 不在匯流排上 (或未識別)。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreChoice.cpp" line="134"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="134"/>
         <source>Nothing chosen: tick at least one setting of a drive with a target.</source>
         <translation>未選擇任何項目：請至少勾選一台已指定還原目標之驅動器的一項設定。</translation>
     </message>
@@ -9261,123 +9297,123 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreCommand</name>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="36"/>
+        <location filename="../cli/RestoreCommand.cpp" line="36"/>
         <source>Show what a backup file would change on its drives; with --yes write it, verified</source>
         <translation>顯示備份檔將在驅動器上變更的內容；加上 --yes 則寫入並驗證</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="41"/>
+        <location filename="../cli/RestoreCommand.cpp" line="41"/>
         <source>Restore only these drives of the file, e.g. 1,5-7.</source>
         <translation>只還原檔案中的這些驅動器，例如 1,5-7。</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="42"/>
+        <location filename="../cli/RestoreCommand.cpp" line="42"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="43"/>
+        <location filename="../cli/RestoreCommand.cpp" line="43"/>
         <source>Read the drives and show the plan; write nothing.</source>
         <translation>讀取驅動器並顯示還原計畫；不寫入任何資料。</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="44"/>
+        <location filename="../cli/RestoreCommand.cpp" line="44"/>
         <source>Write the plan (without it restore only shows it).</source>
         <translation>寫入還原計畫 (未指定時 restore 只會顯示計畫)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="80"/>
+        <location filename="../cli/RestoreCommand.cpp" line="80"/>
         <source>%1: the drive&apos;s settings were not read; nothing compared, nothing written</source>
         <translation>%1：未讀取驅動器的設定；未比較，也未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="86"/>
-        <location filename="../main/cli/RestoreCommand.cpp" line="124"/>
+        <location filename="../cli/RestoreCommand.cpp" line="86"/>
+        <location filename="../cli/RestoreCommand.cpp" line="124"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="91"/>
         <source>parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="91"/>
         <source>file value</source>
         <translation>檔案值</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="91"/>
         <source>device value</source>
         <translation>裝置值</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="92"/>
+        <location filename="../cli/RestoreCommand.cpp" line="92"/>
         <source>result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="92"/>
+        <location filename="../cli/RestoreCommand.cpp" line="92"/>
         <source>action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="106"/>
+        <location filename="../cli/RestoreCommand.cpp" line="106"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>%1 項已寫入並驗證，%2 項未變更，%3 項失敗，%4 項未執行</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="112"/>
+        <location filename="../cli/RestoreCommand.cpp" line="112"/>
         <source>, %1 not confirmed</source>
         <translation>，%1 項未確認</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="114"/>
+        <location filename="../cli/RestoreCommand.cpp" line="114"/>
         <source>; %1 of %2 store commands written</source>
         <translation>；已寫入 %2 個保存指令中的 %1 個</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="149"/>
+        <location filename="../cli/RestoreCommand.cpp" line="149"/>
         <source>error: name one backup file: restore FILE [--ids LIST] [--yes]</source>
         <translation>錯誤：請指定一個備份檔：restore FILE [--ids LIST] [--yes]</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="163"/>
+        <location filename="../cli/RestoreCommand.cpp" line="163"/>
         <source>error: --ids: %1</source>
         <translation>錯誤：--ids：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="168"/>
+        <location filename="../cli/RestoreCommand.cpp" line="168"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>錯誤：%1 中沒有機號 %2 的驅動器；檔案中有 %3</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="191"/>
+        <location filename="../cli/RestoreCommand.cpp" line="191"/>
         <source>error: %1; nothing written</source>
         <translation>錯誤：%1；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="199"/>
+        <location filename="../cli/RestoreCommand.cpp" line="199"/>
         <source>error: %1: %2</source>
         <translation>錯誤：%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="228"/>
+        <location filename="../cli/RestoreCommand.cpp" line="228"/>
         <source>not attempted</source>
         <translation>未執行</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="231"/>
+        <location filename="../cli/RestoreCommand.cpp" line="231"/>
         <source>%1: not attempted</source>
         <translation>%1：未執行</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="253"/>
+        <location filename="../cli/RestoreCommand.cpp" line="253"/>
         <source>dry run: nothing written</source>
         <translation>僅預覽：未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/RestoreCommand.cpp" line="254"/>
+        <location filename="../cli/RestoreCommand.cpp" line="254"/>
         <source>nothing written; add --yes to write</source>
         <translation>未寫入任何資料；加上 --yes 才會寫入</translation>
     </message>
@@ -9385,200 +9421,200 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreDialog</name>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="35"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="35"/>
         <source>&amp;Preview</source>
         <translation>預覽(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="36"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="36"/>
         <source>&amp;Write to drives…</source>
         <translation>寫入驅動器(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="37"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="38"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
         <source>&amp;Save report…</source>
         <translation>儲存報告(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="40"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="40"/>
         <source>Restore from a backup file</source>
         <translation>從備份檔還原</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="42"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="42"/>
         <source>No file chosen</source>
         <translation>未選擇檔案</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="43"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="43"/>
         <source>&amp;Choose file…</source>
         <translation>選擇檔案(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="45"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="45"/>
         <source>File:</source>
         <translation>檔案：</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="56"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="56"/>
         <source>Read the drives and show what would change; writes nothing</source>
         <translation>讀取驅動器並顯示將變更的內容；不寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="57"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="57"/>
         <source>Write the previewed changes, each verified by reading it back</source>
         <translation>寫入預覽的變更，每項皆以回讀驗證</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="58"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
         <source>Stop after the write in progress has been verified</source>
         <translation>目前進行中的寫入驗證完成後停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="59"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
         <source>Save the report as text, or as CSV when the name ends in .csv</source>
         <translation>將報告儲存為文字檔；檔名以 .csv 結尾時儲存為 CSV</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="60"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
         <source>C&amp;lose</source>
         <translation>關閉(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="96"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="96"/>
         <source>%1: no such file</source>
         <translation>%1：檔案不存在</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="101"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="101"/>
         <source>the file could not be read</source>
         <translation>無法讀取檔案</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="102"/>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="186"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="102"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="186"/>
         <source>Refused, nothing will be written: %1</source>
         <translation>已拒絕，不會寫入任何資料：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="107"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="107"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>檔案中有 %n 台驅動器。請選擇要還原的項目，然後按「預覽」。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="148"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="148"/>
         <source>Refused, nothing written:</source>
         <translation>已拒絕，未寫入任何資料：</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="150"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="150"/>
         <source>Drive %1 from %2: %3</source>
         <translation>驅動器 %1 (來自 %2)：%3</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="185"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="185"/>
         <source>Choose a backup file first.</source>
         <translation>請先選擇備份檔。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="227"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="227"/>
         <source>not attempted</source>
         <translation>未執行</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
         <source>Reading drive %1…</source>
         <translation>正在讀取驅動器 %1…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
         <source>Writing drive %1…</source>
         <translation>正在寫入驅動器 %1…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="239"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="239"/>
         <source>drive %1: %2 (%v of %m)</source>
         <translation>驅動器 %1：%2 (%v / %m)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="267"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="267"/>
         <source>Stopping after the write in progress has been verified…</source>
         <translation>目前進行中的寫入驗證完成後將停止…</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="282"/>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="373"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="282"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="373"/>
         <source>Drive %1: %2</source>
         <translation>驅動器 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="285"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="285"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>%n 項設定待寫入</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="292"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="292"/>
         <source>  Note: %1</source>
         <translation>  注意：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="295"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="295"/>
         <source>Nothing written yet. Write to drives to apply.</source>
         <translation>尚未寫入任何資料。請按「寫入驅動器」以套用。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="296"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="296"/>
         <source>Nothing written.</source>
         <translation>未寫入任何資料。</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="354"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="354"/>
         <source>Restore from backup file</source>
         <translation>從備份檔還原</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="355"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="355"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 備份檔 (*.json);;所有檔案 (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="375"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>要將 %n 項設定寫入驅動器 %1，並逐項以回讀驗證嗎？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
         <source>Write to drives</source>
         <translation>寫入驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
         <source>&amp;Write</source>
         <translation>寫入(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="385"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="385"/>
         <source>Save restore report</source>
         <translation>儲存還原報告</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="386"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>文字檔 (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreDialog.cpp" line="391"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="391"/>
         <source>Could not save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
@@ -9586,109 +9622,109 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestorePlan</name>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="69"/>
+        <location filename="../model/files/RestorePlan.cpp" line="69"/>
         <source>the file holds a %1 drive (%2), but machine number %3 is a %4 drive; nothing written</source>
         <translation>檔案中為 %1 驅動器 (%2)，但機號 %3 是 %4 驅動器；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="76"/>
+        <location filename="../model/files/RestorePlan.cpp" line="76"/>
         <source>the file is from a %1 (%2), but machine number %3 is a %4 (%5); their allowed values differ, nothing written</source>
         <translation>檔案來自 %1 (%2)，但機號 %3 是 %4 (%5)；兩者的允許值不同，未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="83"/>
+        <location filename="../model/files/RestorePlan.cpp" line="83"/>
         <source>the drive does not tell its variant: every value must suit all variants (name it with --variant to use its own ranges)</source>
         <translation>驅動器不回報機型：每個值都必須適用於所有機型 (以 --variant 指定機型即可使用其範圍)</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="152"/>
+        <location filename="../model/files/RestorePlan.cpp" line="152"/>
         <source>%1: the value cannot be written exactly</source>
         <translation>%1：無法精確寫入此值</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="165"/>
+        <location filename="../model/files/RestorePlan.cpp" line="165"/>
         <source>store commands are always written: what the drive has stored cannot be read back, only what it uses now</source>
         <translation>保存指令一律會寫入：驅動器已保存的內容無法回讀，只能讀取目前使用中的值</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/model/files/RestorePlan.cpp" line="176"/>
+        <location filename="../model/files/RestorePlan.cpp" line="176"/>
         <source>%n value(s) of the file may not be written to this drive; nothing written</source>
         <translation>
             <numerusform>檔案中有 %n 個值不可寫入此驅動器；未寫入任何資料</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="238"/>
+        <location filename="../model/files/RestorePlan.cpp" line="238"/>
         <source>keep</source>
         <translation>保留</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="240"/>
+        <location filename="../model/files/RestorePlan.cpp" line="240"/>
         <source>write</source>
         <translation>寫入</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="242"/>
+        <location filename="../model/files/RestorePlan.cpp" line="242"/>
         <source>store</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="253"/>
+        <location filename="../model/files/RestorePlan.cpp" line="253"/>
         <source>unchanged</source>
         <translation>未變更</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="255"/>
         <source>written</source>
         <translation>已寫入</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="255"/>
         <source>written and verified</source>
         <translation>已寫入並驗證</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="257"/>
+        <location filename="../model/files/RestorePlan.cpp" line="257"/>
         <source>failed: %1</source>
         <translation>失敗：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="259"/>
+        <location filename="../model/files/RestorePlan.cpp" line="259"/>
         <source>not attempted</source>
         <translation>未執行</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="261"/>
+        <location filename="../model/files/RestorePlan.cpp" line="261"/>
         <source>not confirmed (%1): the drive may or may not hold it; run the restore again to read it back</source>
         <translation>未確認 (%1)：驅動器可能已保有此值，也可能沒有；請再次執行還原以回讀</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="286"/>
+        <location filename="../model/files/RestorePlan.cpp" line="286"/>
         <source>planned</source>
         <translation>已規劃</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="288"/>
+        <location filename="../model/files/RestorePlan.cpp" line="288"/>
         <source>restored</source>
         <translation>已還原</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="290"/>
+        <location filename="../model/files/RestorePlan.cpp" line="290"/>
         <source>refused</source>
         <translation>已拒絕</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="292"/>
+        <location filename="../model/files/RestorePlan.cpp" line="292"/>
         <source>communication failure</source>
         <translation>通訊失敗</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="294"/>
+        <location filename="../model/files/RestorePlan.cpp" line="294"/>
         <source>verification mismatch</source>
         <translation>驗證不符</translation>
     </message>
     <message>
-        <location filename="../main/model/files/RestorePlan.cpp" line="296"/>
+        <location filename="../model/files/RestorePlan.cpp" line="296"/>
         <source>interrupted</source>
         <translation>已中斷</translation>
     </message>
@@ -9696,32 +9732,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestorePlanTable</name>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
         <source>File value</source>
         <translation>檔案值</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="13"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="13"/>
         <source>Drive value before</source>
         <translation>驅動器原值</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestorePlanTable.cpp" line="13"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="13"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
@@ -9729,62 +9765,62 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreReport</name>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="16"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="16"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>%1 項已寫入並驗證，%2 項未變更，%3 項失敗，%4 項未執行</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="22"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="22"/>
         <source>, %1 not confirmed</source>
         <translation>，%1 項未確認</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="24"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="24"/>
         <source>; %1 of %2 store commands written</source>
         <translation>；已寫入 %2 個保存指令中的 %1 個</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="33"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="33"/>
         <source>OpenTOP restore report</source>
         <translation>OpenTOP 還原報告</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="33"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="33"/>
         <source>File: %1</source>
         <translation>檔案：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="34"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
         <source>Date: %1 (UTC)</source>
         <translation>日期：%1 (UTC)</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="37"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="37"/>
         <source>Written to the drives</source>
         <translation>已寫入驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="37"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="37"/>
         <source>Preview only: nothing written</source>
         <translation>僅預覽：未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="40"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="40"/>
         <source>Machine number %1 from %2: %3</source>
         <translation>機號 %1 (來自 %2)：%3</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="51"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="51"/>
         <source>  %1: %2</source>
         <translation>  %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="53"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="53"/>
         <source>  %1: file %2, drive %3: %4</source>
         <translation>  %1：檔案 %2，驅動器 %3：%4</translation>
     </message>
     <message>
-        <location filename="../main/ui/files/RestoreReport.cpp" line="59"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="59"/>
         <source>  Note: %1</source>
         <translation>  注意：%1</translation>
     </message>
@@ -9792,37 +9828,37 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Restorer</name>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="48"/>
+        <location filename="../model/files/Restorer.cpp" line="48"/>
         <source>interrupted before anything was written</source>
         <translation>在寫入任何資料前中斷</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="63"/>
+        <location filename="../model/files/Restorer.cpp" line="63"/>
         <source>reading the drive failed, nothing written (%1)</source>
         <translation>讀取驅動器失敗，未寫入任何資料 (%1)</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="99"/>
+        <location filename="../model/files/Restorer.cpp" line="99"/>
         <source>interrupted after %1 of %2 writes; run the restore again to complete it</source>
         <translation>在 %2 項寫入中完成 %1 項後中斷；請再次執行還原以完成</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="134"/>
+        <location filename="../model/files/Restorer.cpp" line="134"/>
         <source>%1 not confirmed (%2): the drive may or may not hold it; run the restore again, it reads the drive back first</source>
         <translation>%1 未確認 (%2)：驅動器可能已保有此值，也可能沒有；請再次執行還原，它會先回讀驅動器</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="168"/>
+        <location filename="../model/files/Restorer.cpp" line="168"/>
         <source>after storing, the drive holds %1</source>
         <translation>保存後驅動器中為 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="173"/>
+        <location filename="../model/files/Restorer.cpp" line="173"/>
         <source>the settings could not be read back after storing</source>
         <translation>保存後無法回讀設定</translation>
     </message>
     <message>
-        <location filename="../main/model/files/Restorer.cpp" line="206"/>
+        <location filename="../model/files/Restorer.cpp" line="206"/>
         <source>communication settings changed (%1): they take effect when the drive is next powered on; connect with the new settings after that</source>
         <translation>通訊設定已變更 (%1)：將於驅動器下次上電時生效；之後請以新設定連線</translation>
     </message>
@@ -9830,12 +9866,12 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultDatabase</name>
     <message>
-        <location filename="../main/model/eol/ResultDatabase.cpp" line="45"/>
+        <location filename="../model/eol/ResultDatabase.cpp" line="45"/>
         <source>results database %1: %2</source>
         <translation>結果資料庫 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultDatabase.cpp" line="49"/>
+        <location filename="../model/eol/ResultDatabase.cpp" line="49"/>
         <source>the Qt SQL driver %1 is not installed (Debian: %2)</source>
         <translation>未安裝 Qt SQL 驅動程式 %1 (Debian：%2)</translation>
     </message>
@@ -9843,7 +9879,7 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultQueries</name>
     <message>
-        <location filename="../main/model/eol/ResultQueries.cpp" line="118"/>
+        <location filename="../model/eol/ResultQueries.cpp" line="118"/>
         <source>no unit record %1</source>
         <translation>沒有產品記錄 %1</translation>
     </message>
@@ -9851,7 +9887,7 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultSchema</name>
     <message>
-        <location filename="../main/model/eol/ResultSchema.cpp" line="138"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="138"/>
         <source>the results database has schema version %1, newer than this program knows (%2): update OpenTOP on this station; nothing was written</source>
         <translation>結果資料庫的結構版本為 %1，比本程式支援的版本 (%2) 還新：請更新此工站的 OpenTOP；未寫入任何資料</translation>
     </message>
@@ -9859,32 +9895,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultStore</name>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="55"/>
+        <location filename="../model/eol/ResultStore.cpp" line="72"/>
         <source>interrupted: the station stopped before the unit was finished (killed, power lost or crashed); the unit was not proven</source>
         <translation>已中斷：工站在產品測試完成前停止 (被終止、斷電或當機)；此產品未經驗證</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="63"/>
+        <location filename="../model/eol/ResultStore.cpp" line="80"/>
         <source>a unit needs a serial number</source>
         <translation>產品需要序號</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="141"/>
+        <location filename="../model/eol/ResultStore.cpp" line="158"/>
         <source>a unit is finished with pass, fail or aborted, not %1</source>
         <translation>產品的結束判定須為 pass、fail 或 aborted，而非 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="164"/>
+        <location filename="../model/eol/ResultStore.cpp" line="181"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>產品 %1 (序號 %2) 從未在結果資料庫中開始</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="166"/>
+        <location filename="../model/eol/ResultStore.cpp" line="183"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>產品 %1 (序號 %2) 已記錄為 %3；保留其記錄</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultStore.cpp" line="184"/>
+        <location filename="../model/eol/ResultStore.cpp" line="201"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>產品 %1 (序號 %2) 在結果資料庫中並非測試中：從未開始，或已完成或已標記為中斷</translation>
     </message>
@@ -9892,32 +9928,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultUrl</name>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="43"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="43"/>
         <source>no database given: name a file or a postgresql:// URL</source>
         <translation>未指定資料庫：請指定檔案或 postgresql:// URL</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="51"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="51"/>
         <source>unknown database URL &quot;%1&quot;: use a file path, sqlite:PATH or postgresql://user@host/database</source>
         <translation>未知的資料庫 URL &quot;%1&quot;：請使用檔案路徑、sqlite:PATH 或 postgresql://user@host/database</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="55"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="55"/>
         <source>sqlite: needs a file path</source>
         <translation>sqlite: 需要檔案路徑</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="84"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="84"/>
         <source>the host in &quot;%1&quot; has no closing ]</source>
         <translation>&quot;%1&quot; 中的主機缺少結尾的 ]</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="112"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="112"/>
         <source>unknown connection option &quot;%1&quot; in the database URL; known: %2</source>
         <translation>資料庫 URL 中有未知的連線選項 &quot;%1&quot;；已知：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ResultUrl.cpp" line="129"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="129"/>
         <source>the port &quot;%1&quot; in the database URL is not a number from 1 to 65535</source>
         <translation>資料庫 URL 中的連接埠 &quot;%1&quot; 不是 1 到 65535 的數字</translation>
     </message>
@@ -9925,224 +9961,224 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="60"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
         <source>End-of-line results</source>
         <translation>終檢結果</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Started</source>
         <translation>開始時間</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Serial</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Station</source>
         <translation>工站</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Operator</source>
         <translation>作業員</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Time (s)</source>
         <translation>時間 (s)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>First failure</source>
         <translation>首個不合格項目</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="82"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="82"/>
         <source>Export CSV…</source>
         <translation>匯出 CSV…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="83"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="83"/>
         <source>Certificate PDF…</source>
         <translation>測試證書 PDF…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="118"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="118"/>
         <source>SQLite file or postgresql://user@host/database</source>
         <translation>SQLite 檔或 postgresql://user@host/database</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="119"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="119"/>
         <source>Open</source>
         <translation>開啟</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="120"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="120"/>
         <source>File…</source>
         <translation>檔案…</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="127"/>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="129"/>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="131"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="127"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="129"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="131"/>
         <source>any</source>
         <translation>不限</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="133"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="133"/>
         <source>Today</source>
         <translation>今天</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="134"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
         <source>Last 24 hours</source>
         <translation>最近 24 小時</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="135"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="135"/>
         <source>Last 7 days</source>
         <translation>最近 7 天</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="136"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
         <source>Last 30 days</source>
         <translation>最近 30 天</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="137"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
         <source>All</source>
         <translation>全部</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="140"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
         <source>Any</source>
         <translation>不限</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="144"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="144"/>
         <source>Search</source>
         <translation>搜尋</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="148"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="148"/>
         <source>Serial:</source>
         <translation>序號：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="149"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="149"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="150"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="150"/>
         <source>Station:</source>
         <translation>工站：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="151"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
         <source>Period:</source>
         <translation>期間：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="152"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
         <source>Verdict:</source>
         <translation>判定：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="160"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="160"/>
         <source>Database:</source>
         <translation>資料庫：</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="192"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="192"/>
         <source>There is no results database at %1 yet: a station makes it when it records its first unit.</source>
         <translation>%1 尚無結果資料庫：工站記錄第一台產品時會建立。</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="203"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="203"/>
         <source>Results database %1</source>
         <translation>結果資料庫 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="249"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="249"/>
         <source>%1 rev. %2</source>
         <translation>%1 版次 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="253"/>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="279"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="253"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="279"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="276"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="276"/>
         <source>%n unit(s), %1 passed · first-pass yield %2 (%3 of %4 serials)</source>
         <translation>
             <numerusform>%n 台產品，%1 台合格 · 一次良率 %2 (%4 個序號中的 %3 個)</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="279"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="279"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="288"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="288"/>
         <source>no unit is selected</source>
         <translation>未選擇產品</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="320"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
         <source>Open results database</source>
         <translation>開啟結果資料庫</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="321"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="321"/>
         <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
         <translation>SQLite 資料庫 (*.db *.sqlite);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="332"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="332"/>
         <source>Export units as CSV</source>
         <translation>將產品匯出為 CSV</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="332"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="332"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="337"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="337"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>已將 %n 台產品寫入 %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="348"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="348"/>
         <source>Save certificate</source>
         <translation>儲存測試證書</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="349"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="349"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF 檔 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../main/ui/eol/ResultsBrowser.cpp" line="354"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="354"/>
         <source>Certificate written to %1</source>
         <translation>測試證書已寫入 %1</translation>
     </message>
@@ -10150,7 +10186,7 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RoleEvaluator</name>
     <message>
-        <location filename="../main/model/profile/RoleEvaluator.cpp" line="102"/>
+        <location filename="../model/profile/RoleEvaluator.cpp" line="102"/>
         <source>%1 = %2 (%3, function %4)</source>
         <translation>%1 = %2 (%3，功能 %4)</translation>
     </message>
@@ -10158,62 +10194,62 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RunCommand</name>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="48"/>
+        <location filename="../cli/RunCommand.cpp" line="48"/>
         <source>Test run: start, stop, direction, running data, hold/free, speed (needs --yes)</source>
         <translation>試運轉：啟動、停止、方向、運轉資料、保持/釋放、速度 (需要 --yes)</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="53"/>
+        <location filename="../cli/RunCommand.cpp" line="53"/>
         <source>Send the command (it moves or stops a motor).</source>
         <translation>送出指令 (會使馬達運轉或停止)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="63"/>
+        <location filename="../cli/RunCommand.cpp" line="63"/>
         <source>error: usage: %1 (one machine number; a negative speed after --)</source>
         <translation>錯誤：用法：%1 (一個機號；負速度請放在 -- 之後)</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="71"/>
-        <location filename="../main/cli/RunCommand.cpp" line="76"/>
-        <location filename="../main/cli/RunCommand.cpp" line="81"/>
-        <location filename="../main/cli/RunCommand.cpp" line="126"/>
+        <location filename="../cli/RunCommand.cpp" line="71"/>
+        <location filename="../cli/RunCommand.cpp" line="76"/>
+        <location filename="../cli/RunCommand.cpp" line="81"/>
+        <location filename="../cli/RunCommand.cpp" line="126"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="86"/>
+        <location filename="../cli/RunCommand.cpp" line="86"/>
         <source>Would send to machine number %1: %2
 This moves or stops a motor: add --yes to send it.</source>
         <translation>將送往機號 %1：%2
 此操作會使馬達運轉或停止：加上 --yes 才會送出。</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="118"/>
+        <location filename="../cli/RunCommand.cpp" line="118"/>
         <source>Sent to machine number %1: %2</source>
         <translation>已送往機號 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="120"/>
+        <location filename="../cli/RunCommand.cpp" line="120"/>
         <source>Sent to machine number %1, executed also by %2 (communication group): %3</source>
         <translation>已送往機號 %1，%2 也會執行 (通訊群組)：%3</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="156"/>
+        <location filename="../cli/RunCommand.cpp" line="156"/>
         <source>(not read: %1)</source>
         <translation>(未讀取：%1)</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="165"/>
+        <location filename="../cli/RunCommand.cpp" line="165"/>
         <source>State of machine number %1:</source>
         <translation>機號 %1 的狀態：</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="176"/>
+        <location filename="../cli/RunCommand.cpp" line="176"/>
         <source>State of machine number %1 (communication group of %2): not read: %3</source>
         <translation>機號 %1 的狀態 (%2 的通訊群組)：未讀取：%3</translation>
     </message>
     <message>
-        <location filename="../main/cli/RunCommand.cpp" line="184"/>
+        <location filename="../cli/RunCommand.cpp" line="184"/>
         <source>State of machine number %1 (communication group of %2):</source>
         <translation>機號 %1 的狀態 (%2 的通訊群組)：</translation>
     </message>
@@ -10221,57 +10257,57 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunControl</name>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="59"/>
+        <location filename="../model/run/RunControl.cpp" line="59"/>
         <source>%1 needs one value, e.g. &quot;%1 %2&quot;</source>
         <translation>%1 需要一個值，例如 &quot;%1 %2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="62"/>
+        <location filename="../model/run/RunControl.cpp" line="62"/>
         <source>%1 takes no value</source>
         <translation>%1 不接受值</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="70"/>
+        <location filename="../model/run/RunControl.cpp" line="70"/>
         <source>select needs a running data number, e.g. &quot;select 2&quot;; got &quot;%1&quot;</source>
         <translation>select 需要運轉資料編號，例如 &quot;select 2&quot;；收到 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="80"/>
+        <location filename="../model/run/RunControl.cpp" line="80"/>
         <source>unknown run command &quot;%1&quot;; use start, stop, cw, ccw, select N, hold, free, coast or speed VALUE</source>
         <translation>未知的運轉指令 &quot;%1&quot;；請使用 start、stop、cw、ccw、select N、hold、free、coast 或 speed VALUE</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="127"/>
+        <location filename="../model/run/RunControl.cpp" line="127"/>
         <source>%1 drives have no &quot;%2&quot; command; they take: %3</source>
         <translation>%1 驅動器沒有 &quot;%2&quot; 指令；可用指令：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="148"/>
+        <location filename="../model/run/RunControl.cpp" line="148"/>
         <source>%1 has no selection codes</source>
         <translation>%1 沒有選擇代碼</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="149"/>
+        <location filename="../model/run/RunControl.cpp" line="149"/>
         <source>select %1: choose %2–%3 (%4 … %5)</source>
         <translation>select %1：請選擇 %2–%3 (%4 … %5)</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="186"/>
+        <location filename="../model/run/RunControl.cpp" line="186"/>
         <source>cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>無法讀取 %1 以確認驅動器是否接受運轉指令：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="206"/>
+        <location filename="../model/run/RunControl.cpp" line="206"/>
         <source>machine number %1 is in &quot;%2&quot; (%3); nothing was sent</source>
         <translation>機號 %1 處於 &quot;%2&quot; (%3)；未送出任何資料</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="210"/>
+        <location filename="../model/run/RunControl.cpp" line="210"/>
         <source>In &quot;%1&quot; the drive takes run, stop, direction and speed selection from its input terminals and refuses motion commands over the bus. To test-run it from here, switch it to &quot;%2&quot;: opentop-cli set %3 %4=%5 (and back to &quot;%1&quot;, =%6, when the machine&apos;s own controls should run it again).</source>
         <translation>在 &quot;%1&quot; 下，驅動器的運轉、停止、方向與速度選擇均來自輸入端子，並拒絕來自匯流排的運轉指令。若要從這裡試運轉，請切換為 &quot;%2&quot;：opentop-cli set %3 %4=%5 (當要由機台本身的控制再次運轉時，請切回 &quot;%1&quot;，=%6)。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunControl.cpp" line="263"/>
+        <location filename="../model/run/RunControl.cpp" line="263"/>
         <source>An alarm is active: the drive refuses to run until it is cleared. See opentop-cli alarms %1, then alarms %1 --reset --yes.</source>
         <translation>警報發生中：警報解除前驅動器拒絕運轉。請參閱 opentop-cli alarms %1，然後執行 alarms %1 --reset --yes。</translation>
     </message>
@@ -10279,68 +10315,68 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunLiveState</name>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="24"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="24"/>
         <source>The drive now</source>
         <translation>驅動器目前狀態</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="47"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="47"/>
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="49"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="49"/>
         <source>Alarm</source>
         <translation>警報</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="86"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="86"/>
         <source>%1:</source>
         <translation>%1：</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="123"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="123"/>
         <source>%1 (%2 %3)</source>
         <translation>%1 (%2 %3)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="125"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="125"/>
         <source>not reported</source>
         <translation>未回報</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="128"/>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="138"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="128"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="138"/>
         <source>not read</source>
         <translation>未讀取</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="130"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="130"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="133"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="133"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="135"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="135"/>
         <source>active</source>
         <translation>發生中</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="154"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="154"/>
         <source>waiting for the first answer…</source>
         <translation>等待第一次回應…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="154"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="154"/>
         <source>not watched</source>
         <translation>未監視</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/RunLiveState.cpp" line="166"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="166"/>
         <source>Not live: %1</source>
         <translation>非即時：%1</translation>
     </message>
@@ -10348,12 +10384,12 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunningData</name>
     <message>
-        <location filename="../main/model/run/RunningData.cpp" line="56"/>
+        <location filename="../model/run/RunningData.cpp" line="56"/>
         <source>SPno%1 slows down from %2 r/min in %3 s: the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>SPno%1 在 %3 s 內從 %2 r/min 減速：手冊要求從高速 (約 %5 r/min 以上) 減速時，減速時間應大於 %4 s。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/RunningData.cpp" line="124"/>
+        <location filename="../model/run/RunningData.cpp" line="124"/>
         <source>Short deceleration from high speed on %1 (%2 r/min in %3 s): the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>%1 從高速減速的時間過短 (%3 s 內從 %2 r/min 減速)：手冊要求從高速 (約 %5 r/min 以上) 減速時，減速時間應大於 %4 s。</translation>
     </message>
@@ -10361,153 +10397,153 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunningDataPage</name>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="39"/>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="39"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
         <source>Running data</source>
         <translation>運轉資料</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
         <source>Speed (r/min)</source>
         <translation>速度 (r/min)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
         <source>Acceleration (s)</source>
         <translation>加速時間 (s)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="55"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
         <source>Deceleration (s)</source>
         <translation>減速時間 (s)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="55"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
         <source>Direction</source>
         <translation>方向</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="68"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="68"/>
         <source>SPno%1</source>
         <translation>SPno%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="71"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="71"/>
         <source>Selected by the inputs M0 = %1, M1 = %2, M2 = %3 or by the running data selection command</source>
         <translation>由輸入 M0 = %1、M1 = %2、M2 = %3 或運轉資料選擇指令選擇</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="89"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="89"/>
         <source>SS trimmer</source>
         <translation>SS 旋鈕</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="90"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="90"/>
         <source>SPno1 has no acceleration register: the SS trimmer on the drive sets it (0.5–30 s); it is not stored in the drive</source>
         <translation>SPno1 沒有加速時間暫存器：由驅動器上的 SS 旋鈕設定 (0.5–30 s)；不會儲存於驅動器中</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="93"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="93"/>
         <source>SD trimmer</source>
         <translation>SD 旋鈕</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="94"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="94"/>
         <source>SPno1 has no deceleration register: the SD trimmer on the drive sets it (0.5 s or 2–30 s); it is not stored in the drive</source>
         <translation>SPno1 沒有減速時間暫存器：由驅動器上的 SD 旋鈕設定 (0.5 s 或 2–30 s)；不會儲存於驅動器中</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="98"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="98"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="99"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="99"/>
         <source>This drive has no register for this value</source>
         <translation>此驅動器沒有此值的暫存器</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="106"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="106"/>
         <source>Initialize</source>
         <translation>初始化</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="108"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="108"/>
         <source>Reset SPno%1 on the drive to its factory defaults</source>
         <translation>將驅動器上的 SPno%1 恢復為出廠預設值</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="109"/>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="274"/>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="280"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="109"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="274"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="280"/>
         <source>Initialize SPno%1</source>
         <translation>初始化 SPno%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="130"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="130"/>
         <source>SPno1 runs at the speed of the external speed-setting VR (CN3) with the SS/SD trimmer times; it is not stored in the drive</source>
         <translation>SPno1 以外部速度設定 VR (CN3) 的速度運轉，加減速時間依 SS/SD 旋鈕；不會儲存於驅動器中</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="214"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="214"/>
         <source>Allowed speed on this %1: %2 (0 stops the motor)</source>
         <translation>此 %1 的允許速度：%2 (0 使馬達停止)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="224"/>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="240"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="224"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="240"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="227"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="227"/>
         <source>Allowed speed: %1</source>
         <translation>允許速度：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="228"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="228"/>
         <source>The drive&apos;s variant is not known, so a speed must suit every variant (0 stops the motor): %1</source>
         <translation>驅動器機型未知，因此速度必須適用於所有機型 (0 使馬達停止)：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="240"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="240"/>
         <source>its factory default</source>
         <translation>其出廠預設值</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="262"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="262"/>
         <source>The SPno1 speed and times come from the external VR and the SS/SD trimmers; they do not change.</source>
         <translation>SPno1 的速度與時間來自外部 VR 與 SS/SD 旋鈕；不會變更。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="269"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="269"/>
         <source>Your unwritten edits in this row are discarded.</source>
         <translation>此列中未寫入的變更將被捨棄。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="275"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="275"/>
         <source>Reset running data SPno%1 of drive %2 to these factory defaults?</source>
         <translation>要將驅動器 %2 的運轉資料 SPno%1 恢復為這些出廠預設值嗎？</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="286"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="286"/>
         <source>Initializing SPno%1…</source>
         <translation>正在初始化 SPno%1…</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="301"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="301"/>
         <source>SPno%1 was not initialized: %2</source>
         <translation>SPno%1 未初始化：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="317"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="317"/>
         <source>SPno%1 initialized; %n value(s) could not be read back</source>
         <translation>
             <numerusform>SPno%1 已初始化；%n 個值無法回讀</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/RunningDataPage.cpp" line="319"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="319"/>
         <source>SPno%1 initialized to its factory defaults</source>
         <translation>SPno%1 已初始化為出廠預設值</translation>
     </message>
@@ -10515,83 +10551,83 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="110"/>
+        <location filename="../cli/ScanCommand.cpp" line="110"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>尋找並識別匯流排上的驅動器 (機號 1–247)</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="116"/>
+        <location filename="../cli/ScanCommand.cpp" line="116"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>起始詢問機號，1–247 (預設 1)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="116"/>
-        <location filename="../main/cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="116"/>
+        <location filename="../cli/ScanCommand.cpp" line="117"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="117"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>最後詢問機號，1–247 (預設 247)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="119"/>
+        <location filename="../cli/ScanCommand.cpp" line="119"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>每個機號的等待時間，單位 ms，10–5000 (預設：依鮑率計算；轉接器或閘道器較慢時請加大)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="121"/>
+        <location filename="../cli/ScanCommand.cpp" line="121"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="134"/>
+        <location filename="../cli/ScanCommand.cpp" line="134"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>錯誤：--%1 必須是 %2–%3 的數字，而非 &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="146"/>
+        <location filename="../cli/ScanCommand.cpp" line="146"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>錯誤：scan 不接受引數；請使用 --from N --to N</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="155"/>
+        <location filename="../cli/ScanCommand.cpp" line="155"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>錯誤：--from %1 大於 --to %2</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="173"/>
+        <location filename="../cli/ScanCommand.cpp" line="173"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>正在 %3 上掃描機號 %1–%2，每個 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="209"/>
+        <location filename="../cli/ScanCommand.cpp" line="209"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>在掃描任何機號前中斷。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="211"/>
+        <location filename="../cli/ScanCommand.cpp" line="211"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>已中斷：已掃描機號 %1–%2 (%4 個中的 %3 個)；%5–%6 未詢問。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="225"/>
+        <location filename="../cli/ScanCommand.cpp" line="225"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>錯誤：掃描在機號 %1 停止：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="235"/>
+        <location filename="../cli/ScanCommand.cpp" line="235"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="237"/>
+        <location filename="../cli/ScanCommand.cpp" line="237"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>注意：%1 台驅動器在 %2 ms 等待時間後才回應，已重新詢問；若掃描遺漏驅動器，請加長 --wait。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="243"/>
+        <location filename="../cli/ScanCommand.cpp" line="243"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -10602,77 +10638,77 @@ This moves or stops a motor: add --yes to send it.</source>
   - 終端電阻 (匯流排兩端各 120 Ω) 以及驅動器是否已通電。</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="280"/>
+        <location filename="../cli/ScanCommand.cpp" line="280"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 機型未知</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="281"/>
+        <location filename="../cli/ScanCommand.cpp" line="281"/>
         <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
         <translation>驅動器不回報機型；請以 --variant %1=VARIANT 指定 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="297"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="297"/>
         <source>hex</source>
         <translation>十六進位</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="297"/>
         <source>switches</source>
         <translation>開關</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="297"/>
         <source>family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="298"/>
         <source>model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="298"/>
         <source>firmware</source>
         <translation>韌體</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="298"/>
         <source>state</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>comm. group</source>
         <translation>通訊群組</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="372"/>
+        <location filename="../cli/ScanCommand.cpp" line="372"/>
         <source>1 drive found in %1 s</source>
         <translation>於 %1 s 內找到 1 台驅動器</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="373"/>
+        <location filename="../cli/ScanCommand.cpp" line="373"/>
         <source>%1 drives found in %2 s</source>
         <translation>於 %2 s 內找到 %1 台驅動器</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="375"/>
+        <location filename="../cli/ScanCommand.cpp" line="375"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>；1 個可能重複的機號：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="377"/>
+        <location filename="../cli/ScanCommand.cpp" line="377"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>；%1 個可能重複的機號：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/ScanCommand.cpp" line="388"/>
+        <location filename="../cli/ScanCommand.cpp" line="388"/>
         <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>警告：機號 %1 (%2，%3) 的回應錯亂：可能有兩台驅動器使用相同機號。請檢查此匯流排上驅動器的 SW1/SW2 開關，讓每台使用不同的機號，斷電重新上電後再次掃描。</translation>
     </message>
@@ -10680,180 +10716,180 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="39"/>
+        <location filename="../cli/SetCommand.cpp" line="39"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>依名稱寫入參數，經檢查、回讀並驗證</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="46"/>
+        <location filename="../cli/SetCommand.cpp" line="46"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store.</source>
         <translation>確認會使馬達運轉、重置、清除、初始化或保存的指令。</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="48"/>
+        <location filename="../cli/SetCommand.cpp" line="48"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>依位址寫入暫存器：ADDR=VALUE (可重複指定；搭配 --fc 16 時可寫 VALUE,VALUE...)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="49"/>
+        <location filename="../cli/SetCommand.cpp" line="49"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="50"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 寫入使用的功能碼：6 (預設) 或 16。</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="50"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="59"/>
+        <location filename="../cli/SetCommand.cpp" line="59"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>錯誤：用法：set ID NAME=VALUE... (例如 set 1 spno2.accel=2.5)，或 set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="71"/>
+        <location filename="../cli/SetCommand.cpp" line="71"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>錯誤：&quot;%1&quot; 不是 NAME=VALUE 格式</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="78"/>
+        <location filename="../cli/SetCommand.cpp" line="78"/>
         <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
         <translation>錯誤：%1 重複指定 (%2=%3 與 %4)；每項設定只能指定一次；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="89"/>
-        <location filename="../main/cli/SetCommand.cpp" line="186"/>
+        <location filename="../cli/SetCommand.cpp" line="89"/>
+        <location filename="../cli/SetCommand.cpp" line="186"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="99"/>
+        <location filename="../cli/SetCommand.cpp" line="99"/>
         <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>%1 沒有參數 &quot;%2&quot;；請參閱 &quot;opentop-cli params --family %1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="102"/>
+        <location filename="../cli/SetCommand.cpp" line="102"/>
         <source>%1 is read-only</source>
         <translation>%1 為唯讀</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="104"/>
+        <location filename="../cli/SetCommand.cpp" line="104"/>
         <source>%1 is a %2 command; add --yes to send it</source>
         <translation>%1 是 %2 指令；加上 --yes 才會送出</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="136"/>
+        <location filename="../cli/SetCommand.cpp" line="136"/>
         <source>error: cannot read %1 to check the values; nothing written</source>
         <translation>錯誤：無法讀取 %1 以檢查數值；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="180"/>
+        <location filename="../cli/SetCommand.cpp" line="180"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="187"/>
+        <location filename="../cli/SetCommand.cpp" line="187"/>
         <source>nothing was written</source>
         <translation>未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="210"/>
+        <location filename="../cli/SetCommand.cpp" line="210"/>
         <source>not written (interrupted)</source>
         <translation>未寫入 (已中斷)</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="245"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="245"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="245"/>
-        <location filename="../main/cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="352"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="251"/>
-        <location filename="../main/cli/SetCommand.cpp" line="387"/>
+        <location filename="../cli/SetCommand.cpp" line="251"/>
+        <location filename="../cli/SetCommand.cpp" line="387"/>
         <source>written, verified</source>
         <translation>已寫入，已驗證</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="252"/>
+        <location filename="../cli/SetCommand.cpp" line="252"/>
         <source>written (command, not readable)</source>
         <translation>已寫入 (指令，不可讀取)</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="254"/>
+        <location filename="../cli/SetCommand.cpp" line="254"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>未確認 (%1)：驅動器可能已保有此值，也可能沒有；可用 &quot;get&quot; 回讀</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="272"/>
+        <location filename="../cli/SetCommand.cpp" line="272"/>
         <source>error: --fc for raw writes is 6 or 16</source>
         <translation>錯誤：raw 寫入的 --fc 為 6 或 16</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="298"/>
+        <location filename="../cli/SetCommand.cpp" line="298"/>
         <source>error: &quot;%1&quot; is not ADDR=VALUE (0x.. or decimal, 0–65535; several values, comma separated, only with --fc 16)</source>
         <translation>錯誤：&quot;%1&quot; 不是 ADDR=VALUE 格式 (0x.. 或十進位，0–65535；多個值以逗號分隔，僅限 --fc 16)</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="315"/>
+        <location filename="../cli/SetCommand.cpp" line="315"/>
         <source>error: 0x%1 is not a register the profile knows; add --yes to write it anyway; nothing was written</source>
         <translation>錯誤：0x%1 不是定義檔中的暫存器；若仍要寫入請加上 --yes；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="325"/>
+        <location filename="../cli/SetCommand.cpp" line="325"/>
         <source>error: %1; nothing was written</source>
         <translation>錯誤：%1；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="326"/>
+        <location filename="../cli/SetCommand.cpp" line="326"/>
         <source>%1 is a %2 command; add --yes</source>
         <translation>%1 是 %2 指令；請加上 --yes</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="333"/>
+        <location filename="../cli/SetCommand.cpp" line="333"/>
         <source>error: the write covers part of %1; add --yes to write it anyway; nothing was written</source>
         <translation>錯誤：此寫入只涵蓋 %1 的一部分；若仍要寫入請加上 --yes；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="352"/>
         <source>Address</source>
         <translation>位址</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="352"/>
         <source>Written</source>
         <translation>寫入值</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="385"/>
+        <location filename="../cli/SetCommand.cpp" line="385"/>
         <source>written</source>
         <translation>已寫入</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="389"/>
+        <location filename="../cli/SetCommand.cpp" line="389"/>
         <source>written, but reads back differently</source>
         <translation>已寫入，但回讀值不同</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="392"/>
+        <location filename="../cli/SetCommand.cpp" line="392"/>
         <source>written (not readable back: %1)</source>
         <translation>已寫入 (無法回讀：%1)</translation>
     </message>
     <message>
-        <location filename="../main/cli/SetCommand.cpp" line="400"/>
+        <location filename="../cli/SetCommand.cpp" line="400"/>
         <source>Also written to %1 (communication group); not read back: no parameter of the profile</source>
         <translation>也已寫入 %1 (通訊群組)；未回讀：不是定義檔中的參數</translation>
     </message>
@@ -10861,17 +10897,17 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ShiftPlan</name>
     <message>
-        <location filename="../main/model/eol/ShiftPlan.cpp" line="30"/>
+        <location filename="../model/eol/ShiftPlan.cpp" line="30"/>
         <source>&quot;%1&quot; is not a time of day such as 06:00</source>
         <translation>&quot;%1&quot; 不是 06:00 這樣的時刻</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ShiftPlan.cpp" line="35"/>
+        <location filename="../model/eol/ShiftPlan.cpp" line="35"/>
         <source>shift starts must be in order from the day&apos;s first: %1</source>
         <translation>班別開始時間必須從當天第一班起依序排列：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/ShiftPlan.cpp" line="42"/>
+        <location filename="../model/eol/ShiftPlan.cpp" line="42"/>
         <source>no shift start given; e.g. 06:00,14:00,22:00</source>
         <translation>未指定班別開始時間；例如 06:00,14:00,22:00</translation>
     </message>
@@ -10879,47 +10915,47 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ShortcutsDialog</name>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="60"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="60"/>
         <source>Main window</source>
         <translation>主視窗</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="62"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="62"/>
         <source>Everywhere, dialogs included</source>
         <translation>所有位置 (包含對話框)</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="63"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="63"/>
         <source>STOP ALL (stop every drive on the bus)</source>
         <translation>全部停止 (停止匯流排上的所有驅動器)</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="72"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="72"/>
         <source>Keyboard shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
         <source>Where</source>
         <translation>適用範圍</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
         <source>Command</source>
         <translation>指令</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
         <source>Keys</source>
         <translation>按鍵</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="86"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="86"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../main/ui/help/ShortcutsDialog.cpp" line="95"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="95"/>
         <source>STOP ALL&apos;s keys work in every window of the program, also while a dialog is open.</source>
         <translation>「全部停止」的按鍵在程式的每個視窗中都有效，開啟對話框時也一樣。</translation>
     </message>
@@ -10927,32 +10963,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimApp</name>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="108"/>
+        <location filename="../sim/SimApp.cpp" line="108"/>
         <source>opentop-sim: warning: %1@%2 cannot use %3 %4 and will not answer</source>
         <translation>opentop-sim：警告：%1@%2 無法使用 %3 %4，將不會回應</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="118"/>
+        <location filename="../sim/SimApp.cpp" line="118"/>
         <source>opentop-sim: --defect %1:%2: no drive with machine number %1 on the bus %3</source>
         <translation>opentop-sim：--defect %1:%2：匯流排 %3 上沒有機號 %1 的驅動器</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="125"/>
+        <location filename="../sim/SimApp.cpp" line="125"/>
         <source>opentop-sim: --defect %1 (%2@%1): %3</source>
         <translation>opentop-sim：--defect %1 (%2@%1)：%3</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="162"/>
+        <location filename="../sim/SimApp.cpp" line="162"/>
         <source>the port is unplugged already</source>
         <translation>連接埠已拔除</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="164"/>
+        <location filename="../sim/SimApp.cpp" line="164"/>
         <source>unplugged</source>
         <translation>已拔除</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimApp.cpp" line="197"/>
+        <location filename="../sim/SimApp.cpp" line="197"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
@@ -10960,27 +10996,27 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimBackdoor</name>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="17"/>
+        <location filename="../sim/SimBackdoor.cpp" line="17"/>
         <source>usage: set ID ADDR VALUE [fc]</source>
         <translation>用法：set ID ADDR VALUE [fc]</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="18"/>
+        <location filename="../sim/SimBackdoor.cpp" line="18"/>
         <source>usage: get ID ADDR [fc]</source>
         <translation>用法：get ID ADDR [fc]</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="21"/>
+        <location filename="../sim/SimBackdoor.cpp" line="21"/>
         <source>address must be 0..0xFFFF, got &apos;%1&apos;</source>
         <translation>位址必須為 0..0xFFFF，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="27"/>
+        <location filename="../sim/SimBackdoor.cpp" line="27"/>
         <source>function must be 3, 4 or 6 (write-only), got &apos;%1&apos;</source>
         <translation>功能碼必須為 3、4 或 6 (僅寫入)，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackdoor.cpp" line="40"/>
+        <location filename="../sim/SimBackdoor.cpp" line="40"/>
         <source>value must be -32768..65535, got &apos;%1&apos;</source>
         <translation>值必須為 -32768..65535，收到 &apos;%1&apos;</translation>
     </message>
@@ -10988,27 +11024,27 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimBackend</name>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="24"/>
+        <location filename="../sim/SimBackend.cpp" line="24"/>
         <source>no simulated bus</source>
         <translation>沒有模擬匯流排</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="47"/>
+        <location filename="../sim/SimBackend.cpp" line="47"/>
         <source>the simulated bus is not open</source>
         <translation>模擬匯流排未開啟</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="53"/>
+        <location filename="../sim/SimBackend.cpp" line="53"/>
         <source>the simulated adapter was unplugged</source>
         <translation>模擬轉接器已拔除</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="80"/>
+        <location filename="../sim/SimBackend.cpp" line="80"/>
         <source>interrupted while waiting</source>
         <translation>等待中被中斷</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBackend.cpp" line="87"/>
+        <location filename="../sim/SimBackend.cpp" line="87"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 內無回應</translation>
     </message>
@@ -11016,27 +11052,27 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimBus</name>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="38"/>
+        <location filename="../sim/SimBus.cpp" line="38"/>
         <source>unknown device type &apos;%1&apos;; known: %2</source>
         <translation>未知的裝置類型 &apos;%1&apos;；已知：%2</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="65"/>
+        <location filename="../sim/SimBus.cpp" line="65"/>
         <source>%1@%2{%3}: %4</source>
         <translation>%1@%2{%3}：%4</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="81"/>
+        <location filename="../sim/SimBus.cpp" line="81"/>
         <source>machine number %1 is outside 1..247</source>
         <translation>機號 %1 超出 1..247</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="82"/>
+        <location filename="../sim/SimBus.cpp" line="82"/>
         <source>machine number %1 is used twice</source>
         <translation>機號 %1 重複使用</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimBus.cpp" line="231"/>
+        <location filename="../sim/SimBus.cpp" line="231"/>
         <source>no device with machine number %1 (bus: %2)</source>
         <translation>沒有機號 %1 的裝置 (匯流排：%2)</translation>
     </message>
@@ -11044,7 +11080,7 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimConsole</name>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="31"/>
+        <location filename="../sim/SimConsole.cpp" line="31"/>
         <source>commands:
   help                      this text
   list                      the devices and their state
@@ -11085,37 +11121,37 @@ This moves or stops a motor: add --yes to send it.</source>
   quit                      停止模擬器</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="63"/>
+        <location filename="../sim/SimConsole.cpp" line="63"/>
         <source>bye</source>
         <translation>再見</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="68"/>
+        <location filename="../sim/SimConsole.cpp" line="68"/>
         <source>%1 needs the pty server (--pty)</source>
         <translation>%1 需要 pty 伺服器 (--pty)</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="79"/>
+        <location filename="../sim/SimConsole.cpp" line="79"/>
         <source>, defects: %1</source>
         <translation>，缺陷：%1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="92"/>
+        <location filename="../sim/SimConsole.cpp" line="92"/>
         <source>no drive has defects</source>
         <translation>沒有驅動器有缺陷</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="98"/>
+        <location filename="../sim/SimConsole.cpp" line="98"/>
         <source>unknown command &apos;%1&apos;; type help for the list</source>
         <translation>未知指令 &apos;%1&apos;；輸入 help 查看清單</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="102"/>
+        <location filename="../sim/SimConsole.cpp" line="102"/>
         <source>usage: %1 ID ...; ID is a machine number on the bus (%2)</source>
         <translation>用法：%1 ID ...；ID 為匯流排上的機號 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimConsole.cpp" line="108"/>
+        <location filename="../sim/SimConsole.cpp" line="108"/>
         <source>&apos;%1&apos; is not a machine number; the bus has %2</source>
         <translation>&apos;%1&apos; 不是機號；匯流排上有 %2</translation>
     </message>
@@ -11123,77 +11159,77 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimDefectSpec</name>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="45"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="45"/>
         <source>firmware=MAJOR.MINOR (e.g. firmware=1.4), max_speed=N (e.g. max_speed=800), stall, load=+N, load=-N or load=xF (e.g. load=+40, load=x1.5), alarm=CODE@TIME (e.g. alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (a parameter name or register address, e.g. nostick=spno2.speed, nostore=0x0081), clear</source>
         <translation>firmware=MAJOR.MINOR (例如 firmware=1.4)、max_speed=N (例如 max_speed=800)、stall、load=+N、load=-N 或 load=xF (例如 load=+40、load=x1.5)、alarm=CODE@TIME (例如 alarm=0x07@1500ms、alarm=overload@2s；DC：alarm=stall@1s)、nostick=PARAM、nostore=PARAM (參數名稱或暫存器位址，例如 nostick=spno2.speed、nostore=0x0081)、clear</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="119"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="119"/>
         <source>unknown defect &quot;%1&quot;; allowed: %2</source>
         <translation>未知的缺陷 &quot;%1&quot;；允許：%2</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="122"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="122"/>
         <source>&quot;%1&quot; needs a value: %2=...</source>
         <translation>&quot;%1&quot; 需要值：%2=...</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="124"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="124"/>
         <source>&quot;%1&quot; takes no value; write %2</source>
         <translation>&quot;%1&quot; 不接受值；請寫成 %2</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="137"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="137"/>
         <source>firmware=%1: write MAJOR.MINOR with each 0..255, e.g. firmware=1.4</source>
         <translation>firmware=%1：請寫成 MAJOR.MINOR，各為 0..255，例如 firmware=1.4</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="144"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="144"/>
         <source>max_speed=%1: write a whole number 0..%2, e.g. max_speed=800</source>
         <translation>max_speed=%1：請寫 0..%2 的整數，例如 max_speed=800</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="154"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="154"/>
         <source>load=%1: a factor is x0.1..x10, e.g. load=x1.5</source>
         <translation>load=%1：倍率為 x0.1..x10，例如 load=x1.5</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="159"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="159"/>
         <source>load=%1: an offset is -200..+200, e.g. load=+40</source>
         <translation>load=%1：偏移量為 -200..+200，例如 load=+40</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="162"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="162"/>
         <source>load=%1: write load=+N, load=-N (an offset) or load=xF (a factor), e.g. load=+40 or load=x1.5</source>
         <translation>load=%1：請寫成 load=+N、load=-N (偏移量) 或 load=xF (倍率)，例如 load=+40 或 load=x1.5</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="171"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="171"/>
         <source>alarm=%1: write alarm=CODE@TIME, e.g. alarm=0x07@1500ms or alarm=overload@2s</source>
         <translation>alarm=%1：請寫成 alarm=CODE@TIME，例如 alarm=0x07@1500ms 或 alarm=overload@2s</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="176"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="176"/>
         <source>alarm=%1: the time after the start is 0..3600 s, written 1500ms, 1.5s or 1500 (ms)</source>
         <translation>alarm=%1：啟動後的時間為 0..3600 s，可寫成 1500ms、1.5s 或 1500 (ms)</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="183"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="183"/>
         <source>%1=%2: name a parameter (e.g. spno2.speed) or a register address (e.g. 0x1102)</source>
         <translation>%1=%2：請指定參數 (例如 spno2.speed) 或暫存器位址 (例如 0x1102)</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="199"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="199"/>
         <source>no defect given; allowed: %1</source>
         <translation>未指定缺陷；允許：%1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="205"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="205"/>
         <source>empty item in &quot;%1&quot;</source>
         <translation>&quot;%1&quot; 中有空項目</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefectSpec.cpp" line="223"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="223"/>
         <source>&quot;%1&quot;: write ID:DEFECT[,DEFECT...] with ID the machine number 1..247, e.g. 3:firmware=1.4 or 5:max_speed=800,load=+40</source>
         <translation>&quot;%1&quot;：請寫成 ID:DEFECT[,DEFECT...]，ID 為機號 1..247，例如 3:firmware=1.4 或 5:max_speed=800,load=+40</translation>
     </message>
@@ -11201,22 +11237,22 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimDefects</name>
     <message>
-        <location filename="../main/sim/SimDefects.cpp" line="71"/>
+        <location filename="../sim/SimDefects.cpp" line="71"/>
         <source>a %1 reports no firmware version</source>
         <translation>%1 不回報韌體版本</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefects.cpp" line="82"/>
+        <location filename="../sim/SimDefects.cpp" line="82"/>
         <source>alarm=%1: a %2 has no alarm codes; its protection is the stall stop: write alarm=stall@TIME</source>
         <translation>alarm=%1：%2 沒有警報代碼；其保護功能為堵轉停止：請寫成 alarm=stall@TIME</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefects.cpp" line="98"/>
+        <location filename="../sim/SimDefects.cpp" line="98"/>
         <source>alarm=%1: not an alarm of a %2; allowed: %3</source>
         <translation>alarm=%1：不是 %2 的警報；允許：%3</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDefects.cpp" line="109"/>
+        <location filename="../sim/SimDefects.cpp" line="109"/>
         <source>%1=%2: no writable parameter of a %3 has this name or address; e.g. %4</source>
         <translation>%1=%2：%3 沒有此名稱或位址的可寫入參數；例如 %4</translation>
     </message>
@@ -11224,32 +11260,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimDevice</name>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="241"/>
+        <location filename="../sim/SimDevice.cpp" line="241"/>
         <source>missing command</source>
         <translation>缺少指令</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="250"/>
+        <location filename="../sim/SimDevice.cpp" line="250"/>
         <source>slave %1 power cycled</source>
         <translation>從站 %1 已斷電重新上電</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="292"/>
+        <location filename="../sim/SimDevice.cpp" line="292"/>
         <source>usage: defect ID DEFECT[,DEFECT...] or defect ID clear; DEFECT: %1</source>
         <translation>用法：defect ID DEFECT[,DEFECT...] 或 defect ID clear；DEFECT：%1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="299"/>
+        <location filename="../sim/SimDevice.cpp" line="299"/>
         <source>slave %1 defects: %2</source>
         <translation>從站 %1 的缺陷：%2</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="301"/>
+        <location filename="../sim/SimDevice.cpp" line="301"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimDevice.cpp" line="306"/>
+        <location filename="../sim/SimDevice.cpp" line="306"/>
         <source>&apos;%1&apos; is not supported by a %2 device</source>
         <translation>%2 裝置不支援 &apos;%1&apos;</translation>
     </message>
@@ -11257,7 +11293,7 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimOptions</name>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="14"/>
+        <location filename="../sim/SimOptions.cpp" line="14"/>
         <source>Usage: opentop-sim --devices SPEC [options]
 Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 
@@ -11282,105 +11318,82 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
                        nostore=PARAM         value lost at the next power cycle
                      e.g. --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
   --quiet            no frame trace on stderr
+  --lang CODE        language of messages: en, zh_TW, zh_CN, ko, ja
   --help             this text
   --version          the program&apos;s version
 
 Prints &quot;pty: PATH&quot; (and &quot;tcp: HOST:PORT&quot;), then &quot;ready&quot;. Reads console commands
 from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </source>
-        <translation>用法：opentop-sim --devices SPEC [選項]
-在虛擬終端機上或以 Modbus TCP 閘道器形式模擬 Modbus RTU 驅動器。
-
-  --devices SPEC     裝置與機號，例如 dbu200@1,dbu400@150,dcpid@7
-  --pty [PATH]       在 pty 上提供服務 (預設)；PATH：同時建立此符號連結
-  --tcp HOST:PORT    提供 Modbus TCP 服務 (HOST 預設為 127.0.0.1，PORT 0：任意)
-  --baud N           用於線路時序與裝置設定的鮑率 (19200)
-  --parity N|E|O     線路同位元 (N)
-  --wire-timing      依實際線路在 --baud 下的速度延遲回應
-  --turnaround MS    搭配 --wire-timing 的裝置回轉時間 (2)
-  --faults LIST      例如 drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
-  --seed N           故障注入的亂數種子 (1)
-  --defect ID:LIST   驅動器 ID 的缺陷 (可重複指定)，LIST 可包含：
-                       firmware=MAJOR.MINOR  識別時回報此版本
-                       max_speed=N           馬達在 N 飽和 (DBU 為 r/min，
-                                             DC 為換相次數/s)，負載偏高
-                       stall                 馬達不轉動，負載偏高
-                       load=+N|-N|xF         負載率 (DC：電流 %) 偏移或縮放
-                       alarm=CODE@TIME       運轉 TIME 後發生警報，例如
-                                             0x07@1500ms、overload@2s (DC：stall@1s)
-                       nostick=PARAM         寫入有回應確認，但保留舊值
-                       nostore=PARAM         下次斷電重新上電後值遺失
-                     例如 --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
-  --quiet            不在 stderr 輸出訊框追蹤
-  --help             本說明
-  --version          程式版本
-
-輸出 &quot;pty: PATH&quot; (以及 &quot;tcp: HOST:PORT&quot;)，然後輸出 &quot;ready&quot;。從 stdin 讀取主控台
-指令 (輸入 help)。收到 SIGINT、SIGTERM 或 quit 時停止。
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="79"/>
+        <location filename="../sim/SimOptions.cpp" line="81"/>
+        <source>--lang needs a language code such as ko</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../sim/SimOptions.cpp" line="84"/>
         <source>--devices needs a device list such as dbu200@1,dcpid@7</source>
         <translation>--devices 需要裝置清單，例如 dbu200@1,dcpid@7</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="88"/>
+        <location filename="../sim/SimOptions.cpp" line="93"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:5020</source>
         <translation>--tcp 需要 HOST:PORT，例如 127.0.0.1:5020</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="94"/>
+        <location filename="../sim/SimOptions.cpp" line="99"/>
         <source>--tcp needs HOST:PORT with PORT 0..65535, got &apos;%1&apos;</source>
         <translation>--tcp 需要 HOST:PORT，PORT 為 0..65535，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="106"/>
+        <location filename="../sim/SimOptions.cpp" line="111"/>
         <source>--baud must be one of %1, got &apos;%2&apos;</source>
         <translation>--baud 必須是 %1 其中之一，收到 &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="113"/>
+        <location filename="../sim/SimOptions.cpp" line="118"/>
         <source>--parity must be N, E or O, got &apos;%1&apos;</source>
         <translation>--parity 必須為 N、E 或 O，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="121"/>
+        <location filename="../sim/SimOptions.cpp" line="126"/>
         <source>--turnaround must be 0..1000 ms, got &apos;%1&apos;</source>
         <translation>--turnaround 必須為 0..1000 ms，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="125"/>
+        <location filename="../sim/SimOptions.cpp" line="130"/>
         <source>--faults needs a list such as drop=0.02,crc=0.01</source>
         <translation>--faults 需要清單，例如 drop=0.02,crc=0.01</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="129"/>
+        <location filename="../sim/SimOptions.cpp" line="134"/>
         <source>--faults: %1</source>
         <translation>--faults：%1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="135"/>
+        <location filename="../sim/SimOptions.cpp" line="140"/>
         <source>--seed must be a whole number 0..4294967295, got &apos;%1&apos;</source>
         <translation>--seed 必須是 0..4294967295 的整數，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="139"/>
+        <location filename="../sim/SimOptions.cpp" line="144"/>
         <source>--defect needs ID:DEFECT[,DEFECT...], e.g. 3:firmware=1.4; DEFECT: %1</source>
         <translation>--defect 需要 ID:DEFECT[,DEFECT...]，例如 3:firmware=1.4；DEFECT：%1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="146"/>
+        <location filename="../sim/SimOptions.cpp" line="151"/>
         <source>--defect: %1</source>
         <translation>--defect：%1</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="152"/>
+        <location filename="../sim/SimOptions.cpp" line="157"/>
         <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --quiet, --help, --version</source>
         <translation>未知引數 &apos;%1&apos;；選項：--devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --quiet, --help, --version</translation>
     </message>
     <message>
-        <location filename="../main/sim/SimOptions.cpp" line="159"/>
+        <location filename="../sim/SimOptions.cpp" line="164"/>
         <source>--devices SPEC is required, e.g. --devices dbu200@1,dcpid@7</source>
         <translation>必須指定 --devices SPEC，例如 --devices dbu200@1,dcpid@7</translation>
     </message>
@@ -11388,22 +11401,22 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::SpeedDisplay</name>
     <message>
-        <location filename="../main/model/profile/SpeedDisplay.cpp" line="90"/>
+        <location filename="../model/profile/SpeedDisplay.cpp" line="90"/>
         <source>speed display settings not known: %1</source>
         <translation>速度顯示設定未知：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/SpeedDisplay.cpp" line="92"/>
+        <location filename="../model/profile/SpeedDisplay.cpp" line="92"/>
         <source>speed display unit code %1 is unknown (0–3)</source>
         <translation>速度顯示單位代碼 %1 未知 (0–3)</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/SpeedDisplay.cpp" line="94"/>
+        <location filename="../model/profile/SpeedDisplay.cpp" line="94"/>
         <source>speed display ratios must be positive (reduction %1, increase %2)</source>
         <translation>速度顯示的比率必須為正數 (減速比 %1，增速比 %2)</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/SpeedDisplay.cpp" line="98"/>
+        <location filename="../model/profile/SpeedDisplay.cpp" line="98"/>
         <source>speed display decimals %1 outside 0–3</source>
         <translation>速度顯示小數位數 %1 超出 0–3</translation>
     </message>
@@ -11411,182 +11424,182 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::SpeedUnitsPage</name>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="36"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="36"/>
         <source>Speed display</source>
         <translation>速度顯示</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="52"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="52"/>
         <source>Unit shown</source>
         <translation>顯示單位</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="53"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="53"/>
         <source>&amp;Unit:</source>
         <translation>單位(&amp;U)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="54"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="54"/>
         <source>Reduction r&amp;atio:</source>
         <translation>減速比(&amp;A)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="55"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="55"/>
         <source>&amp;Increasing ratio:</source>
         <translation>增速比(&amp;I)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="60"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="60"/>
         <source>Linear speed</source>
         <translation>線速度</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="61"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="61"/>
         <source>Roller diameter for &amp;yd/min:</source>
         <translation>yd/min 用滾輪直徑(&amp;Y)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="62"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="62"/>
         <source>Roller diameter for &amp;m/min:</source>
         <translation>m/min 用滾輪直徑(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="65"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="65"/>
         <source>Time for a distance</source>
         <translation>行經距離所需時間</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="66"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="66"/>
         <source>Roller &amp;diameter:</source>
         <translation>滾輪直徑(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="67"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="67"/>
         <source>Dis&amp;tance:</source>
         <translation>距離(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="68"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="68"/>
         <source>Distance u&amp;nit:</source>
         <translation>距離單位(&amp;N)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="69"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="69"/>
         <source>Time &amp;format (min = m:ss):</source>
         <translation>時間格式 (min = m:ss)(&amp;F)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="72"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="72"/>
         <source>Display</source>
         <translation>顯示</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="73"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="73"/>
         <source>D&amp;ecimals (0–3):</source>
         <translation>小數位數 (0–3)(&amp;E)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="74"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="74"/>
         <source>U&amp;pdate time:</source>
         <translation>更新時間(&amp;P)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="78"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="78"/>
         <source>Display corrections (motor r/min)</source>
         <translation>顯示修正量 (馬達 r/min)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="79"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="79"/>
         <source>ro-&amp;0, 250 (300)–500 r/min:</source>
         <translation>ro-0，250 (300)–500 r/min(&amp;0)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="79"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="79"/>
         <source>ro-&amp;1, 501–1000 r/min:</source>
         <translation>ro-1，501–1000 r/min(&amp;1)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="80"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="80"/>
         <source>ro-&amp;2, 1001–2000 r/min:</source>
         <translation>ro-2，1001–2000 r/min(&amp;2)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="80"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="80"/>
         <source>ro-&amp;3, 2001–3000 r/min:</source>
         <translation>ro-3，2001–3000 r/min(&amp;3)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="85"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="85"/>
         <source>Preview of the drive&apos;s display</source>
         <translation>驅動器顯示預覽</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="88"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="88"/>
         <source> r/min</source>
         <translation> r/min</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="89"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="89"/>
         <source>Motor speed for the preview</source>
         <translation>預覽用的馬達速度</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="90"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="90"/>
         <source>Motor &amp;speed:</source>
         <translation>馬達速度(&amp;S)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="93"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="93"/>
         <source>Forward</source>
         <translation>正轉</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="94"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="94"/>
         <source>Reverse (shown with “-”)</source>
         <translation>反轉 (以「-」顯示)</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="95"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="95"/>
         <source>Dire&amp;ction:</source>
         <translation>方向(&amp;C)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="110"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="110"/>
         <source>Drive shows:</source>
         <translation>驅動器顯示：</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="214"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="214"/>
         <source>yd</source>
         <translation>yd</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="214"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="214"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="255"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="255"/>
         <source>Drive shows %1 %2</source>
         <translation>驅動器顯示 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="259"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="259"/>
         <source>Section ro-%1: correction %2 r/min, shaft speed %3 r/min.</source>
         <translation>區段 ro-%1：修正量 %2 r/min，軸速度 %3 r/min。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="264"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="264"/>
         <source>%1 has more digits than the drive&apos;s %2-digit display can show.</source>
         <translation>%1 的位數超過驅動器 %2 位數顯示器可顯示的範圍。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="268"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="268"/>
         <source>Computed %1 %2; the %3-digit display drops the decimals that do not fit.</source>
         <translation>計算值為 %1 %2；%3 位數顯示器會捨去放不下的小數位。</translation>
     </message>
     <message>
-        <location filename="../main/ui/pages/SpeedUnitsPage.cpp" line="275"/>
+        <location filename="../ui/pages/SpeedUnitsPage.cpp" line="275"/>
         <source>Includes edits not yet written.</source>
         <translation>包含尚未寫入的變更。</translation>
     </message>
@@ -11594,7 +11607,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::SpnoSelector</name>
     <message>
-        <location filename="../main/ui/run/SpnoSelector.cpp" line="62"/>
+        <location filename="../ui/run/SpnoSelector.cpp" line="62"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
@@ -11602,12 +11615,12 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StaleLook</name>
     <message>
-        <location filename="../main/ui/widgets/StaleLook.cpp" line="52"/>
+        <location filename="../ui/widgets/StaleLook.cpp" line="52"/>
         <source>not read yet</source>
         <translation>尚未讀取</translation>
     </message>
     <message>
-        <location filename="../main/ui/widgets/StaleLook.cpp" line="55"/>
+        <location filename="../ui/widgets/StaleLook.cpp" line="55"/>
         <source>updated %1 s ago</source>
         <translation>%1 s 前更新</translation>
     </message>
@@ -11615,77 +11628,77 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StartPreview</name>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="107"/>
+        <location filename="../model/run/StartPreview.cpp" line="107"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="107"/>
+        <location filename="../model/run/StartPreview.cpp" line="107"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="149"/>
+        <location filename="../model/run/StartPreview.cpp" line="149"/>
         <source>communication group of %1</source>
         <translation>%1 的通訊群組</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="158"/>
+        <location filename="../model/run/StartPreview.cpp" line="158"/>
         <source>It runs with running data SPno%1</source>
         <translation>將以運轉資料 SPno%1 運轉</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="160"/>
+        <location filename="../model/run/StartPreview.cpp" line="160"/>
         <source> at %1</source>
         <translation> (速度 %1)</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="163"/>
+        <location filename="../model/run/StartPreview.cpp" line="163"/>
         <source>, direction %1 (the direction command sent since)</source>
         <translation>，方向 %1 (依之後送出的方向指令)</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="164"/>
+        <location filename="../model/run/StartPreview.cpp" line="164"/>
         <source>, direction %1</source>
         <translation>，方向 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="167"/>
+        <location filename="../model/run/StartPreview.cpp" line="167"/>
         <source>Which running data it runs with could not be read.</source>
         <translation>無法讀取將以哪一組運轉資料運轉。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="170"/>
+        <location filename="../model/run/StartPreview.cpp" line="170"/>
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="172"/>
+        <location filename="../model/run/StartPreview.cpp" line="172"/>
         <source>The start also reaches machine number(s) %1: %2.</source>
         <translation>啟動指令也會送達機號 %1：%2。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="175"/>
+        <location filename="../model/run/StartPreview.cpp" line="175"/>
         <source>Not read: %1.</source>
         <translation>未讀取：%1。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="187"/>
+        <location filename="../model/run/StartPreview.cpp" line="187"/>
         <source>This starts the motor of machine number %1.</source>
         <translation>這會啟動機號 %1 的馬達。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="189"/>
+        <location filename="../model/run/StartPreview.cpp" line="189"/>
         <source>This sets the speed command of machine number %1 to %2: its motor runs.</source>
         <translation>這會將機號 %1 的速度指令設為 %2：其馬達將運轉。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="193"/>
+        <location filename="../model/run/StartPreview.cpp" line="193"/>
         <source>Make sure that nobody is near the machine and that it may move. STOP ALL stops every drive at any time.</source>
         <translation>請確認機台附近沒有人員，且機台可以動作。「全部停止」可隨時停止所有驅動器。</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StartPreview.cpp" line="196"/>
+        <location filename="../model/run/StartPreview.cpp" line="196"/>
         <source>You are asked once per drive while the program runs.</source>
         <translation>程式執行期間，每台驅動器只會詢問一次。</translation>
     </message>
@@ -11693,12 +11706,12 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StatusLight</name>
     <message>
-        <location filename="../main/ui/widgets/StatusLight.cpp" line="30"/>
+        <location filename="../ui/widgets/StatusLight.cpp" line="30"/>
         <source>Status not known yet</source>
         <translation>狀態尚未得知</translation>
     </message>
     <message>
-        <location filename="../main/ui/widgets/StatusLight.cpp" line="42"/>
+        <location filename="../ui/widgets/StatusLight.cpp" line="42"/>
         <source>Status light %1: %2</source>
         <translation>狀態燈 %1：%2</translation>
     </message>
@@ -11706,63 +11719,63 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StopAllButton</name>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="15"/>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="75"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="15"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="75"/>
         <source>STOP ALL</source>
         <translation>全部停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="19"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="19"/>
         <source>Stops every drive on the bus at once (%1), then checks that each has stopped.</source>
         <translation>立即停止匯流排上的所有驅動器 (%1)，然後確認每台均已停止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="70"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="70"/>
         <source>STOPPING…</source>
         <translation>停止中…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="86"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="86"/>
         <source>The stop broadcast to %1 drives FAILED: %2</source>
         <translation>對 %1 驅動器的停止廣播「失敗」：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="89"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="89"/>
         <source>Stop sent to every drive. No drives are known on the bus, so none was checked; scan the bus to have them checked.</source>
         <translation>已對所有驅動器送出停止指令。匯流排上沒有已知的驅動器，因此未確認任何驅動器；請掃描匯流排以便確認。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="96"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="96"/>
         <source>Machine number %1: stopped after %2 s</source>
         <translation>機號 %1：%2 s 後停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="99"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="99"/>
         <source>Machine number %1: STILL RUNNING (%2)</source>
         <translation>機號 %1：仍在運轉 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="102"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="102"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped</source>
         <translation>機號 %1：無回應，未確認停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="117"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="117"/>
         <source>STOP ALL: the stop broadcast FAILED</source>
         <translation>全部停止：停止廣播「失敗」</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="118"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="118"/>
         <source>STOP ALL: stop sent, no drive checked</source>
         <translation>全部停止：已送出停止指令，未確認任何驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="119"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="119"/>
         <source>STOP ALL: every drive stopped</source>
         <translation>全部停止：所有驅動器均已停止</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/StopAllButton.cpp" line="120"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="120"/>
         <source>STOP ALL: not every drive is confirmed stopped</source>
         <translation>全部停止：並非所有驅動器都已確認停止</translation>
     </message>
@@ -11770,87 +11783,87 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StopAllCommand</name>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="54"/>
+        <location filename="../cli/StopAllCommand.cpp" line="54"/>
         <source>Broadcast stop to every drive, then confirm each has stopped (needs --yes)</source>
         <translation>對所有驅動器廣播停止指令，然後確認每台均已停止 (需要 --yes)</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="60"/>
+        <location filename="../cli/StopAllCommand.cpp" line="60"/>
         <source>Send the stop broadcast.</source>
         <translation>送出停止廣播。</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="62"/>
+        <location filename="../cli/StopAllCommand.cpp" line="62"/>
         <source>Machine numbers to confirm, e.g. 1,2,5-7 (default on a simulated bus: its drives).</source>
         <translation>要確認的機號，例如 1,2,5-7 (模擬匯流排預設為其所有驅動器)。</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="63"/>
+        <location filename="../cli/StopAllCommand.cpp" line="63"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="72"/>
+        <location filename="../cli/StopAllCommand.cpp" line="72"/>
         <source>error: usage: %1 (no other arguments)</source>
         <translation>錯誤：用法：%1 (不接受其他引數)</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="80"/>
+        <location filename="../cli/StopAllCommand.cpp" line="80"/>
         <source>error: --ids: %1</source>
         <translation>錯誤：--ids：%1</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="87"/>
+        <location filename="../cli/StopAllCommand.cpp" line="87"/>
         <source>Would broadcast to every drive on the bus (machine number 0, no reply):</source>
         <translation>將廣播至匯流排上的所有驅動器 (機號 0，無回應)：</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="91"/>
+        <location filename="../cli/StopAllCommand.cpp" line="91"/>
         <source>Add --yes to send it.</source>
         <translation>加上 --yes 才會送出。</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="119"/>
+        <location filename="../cli/StopAllCommand.cpp" line="119"/>
         <source>Broadcast %1: %2</source>
         <translation>廣播 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="120"/>
+        <location filename="../cli/StopAllCommand.cpp" line="120"/>
         <source>Broadcast %1 FAILED: %2: %3</source>
         <translation>廣播 %1「失敗」：%2：%3</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>Family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>After</source>
         <translation>經過時間</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="124"/>
+        <location filename="../cli/StopAllCommand.cpp" line="124"/>
         <source>Detail</source>
         <translation>詳細資料</translation>
     </message>
     <message>
-        <location filename="../main/cli/StopAllCommand.cpp" line="156"/>
+        <location filename="../cli/StopAllCommand.cpp" line="156"/>
         <source>Only the broadcast was sent: drives do not answer a broadcast, so nothing confirms that they stopped. To confirm, pass the machine numbers on this bus, e.g. --ids 1,2,5-7 (opentop-cli scan finds them).</source>
         <translation>僅送出廣播：驅動器不會回應廣播，因此無法確認是否已停止。若要確認，請指定此匯流排上的機號，例如 --ids 1,2,5-7 (可用 opentop-cli scan 尋找)。</translation>
     </message>
@@ -11858,22 +11871,22 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StopConfirmer</name>
     <message>
-        <location filename="../main/model/run/StopConfirmer.cpp" line="56"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="56"/>
         <source>%1 drives report neither running state nor speed</source>
         <translation>%1 驅動器不回報運轉狀態或速度</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StopConfirmer.cpp" line="86"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="86"/>
         <source>%1 is %2: the drive does not take motion commands over the bus (it follows its input terminals)</source>
         <translation>%1 為 %2：驅動器不接受來自匯流排的運轉指令 (由輸入端子控制)</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StopConfirmer.cpp" line="140"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="140"/>
         <source>still at %1 after %2 s</source>
         <translation>%2 s 後仍為 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/run/StopConfirmer.cpp" line="142"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="142"/>
         <source>still running after %1 s</source>
         <translation>%1 s 後仍在運轉</translation>
     </message>
@@ -11881,7 +11894,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TcpSimServer</name>
     <message>
-        <location filename="../main/sim/TcpSimServer.cpp" line="47"/>
+        <location filename="../sim/TcpSimServer.cpp" line="47"/>
         <source>cannot listen on %1:%2: %3</source>
         <translation>無法在 %1:%2 上監聽：%3</translation>
     </message>
@@ -11889,47 +11902,47 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TerminalLamps</name>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="184"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="184"/>
         <source>n/a</source>
         <translation>不適用</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="185"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="185"/>
         <source>%1: not applicable (%2)</source>
         <translation>%1：不適用 (%2)</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="188"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="188"/>
         <source>?</source>
         <translation>?</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="189"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="189"/>
         <source>%1: not read</source>
         <translation>%1：未讀取</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="193"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="193"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="193"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="193"/>
         <source>OFF</source>
         <translation>OFF</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="194"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="194"/>
         <source>%1 is ON</source>
         <translation>%1 為 ON</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="194"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="194"/>
         <source>%1 is OFF</source>
         <translation>%1 為 OFF</translation>
     </message>
     <message>
-        <location filename="../main/ui/monitor/TerminalLamps.cpp" line="196"/>
+        <location filename="../ui/monitor/TerminalLamps.cpp" line="196"/>
         <source>%1 (last state read, not live)</source>
         <translation>%1 (最後讀取的狀態，非即時)</translation>
     </message>
@@ -11937,112 +11950,112 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TestRunPanel</name>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="45"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="45"/>
         <source>&lt;b&gt;Test run of machine number %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;機號 %1 試運轉&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="50"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="50"/>
         <source>Machine number %1 has not been identified as a drive of a known family; a test run needs one.</source>
         <translation>機號 %1 尚未識別為已知系列的驅動器；試運轉需要已識別的驅動器。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="111"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="111"/>
         <source>&amp;Start</source>
         <translation>啟動(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="111"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="111"/>
         <source>S&amp;top</source>
         <translation>停止(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="112"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="112"/>
         <source>&amp;CW</source>
         <translation>CW(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="112"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="112"/>
         <source>CC&amp;W</source>
         <translation>CCW(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="113"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="113"/>
         <source>&amp;Hold</source>
         <translation>保持(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="113"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="113"/>
         <source>&amp;Free</source>
         <translation>釋放(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="132"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="132"/>
         <source>Se&amp;lect running data</source>
         <translation>選擇運轉資料(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="143"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="143"/>
         <source>Return to &amp;I/O priority</source>
         <translation>恢復為 I/O 優先(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="145"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="145"/>
         <source>Give run, stop, direction and speed selection back to the drive&apos;s input terminals</source>
         <translation>將運轉、停止、方向與速度選擇交還給驅動器的輸入端子</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="191"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="191"/>
         <source>Cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>無法讀取 %1 以確認驅動器是否接受運轉指令：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="227"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="227"/>
         <source>Reading what the start will run…</source>
         <translation>正在讀取啟動後的運轉內容…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="243"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="243"/>
         <source>Start the motor</source>
         <translation>啟動馬達</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="257"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="257"/>
         <source>Sending %1…</source>
         <translation>正在送出 %1…</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="293"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="293"/>
         <source>Sent: %1</source>
         <translation>已送出：%1</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="308"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="308"/>
         <source>Read back after the command at %1:</source>
         <translation>%1 指令後回讀：</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="311"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="311"/>
         <source>The motor is running.</source>
         <translation>馬達運轉中。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="311"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="311"/>
         <source>The motor is stopped.</source>
         <translation>馬達已停止。</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="313"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="313"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="315"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="315"/>
         <source>(not read: %1)</source>
         <translation>(未讀取：%1)</translation>
     </message>
     <message>
-        <location filename="../main/ui/run/TestRunPanel.cpp" line="379"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="379"/>
         <source>Polling is paused: the controller brakes the motor %1 s after the last frame it receives (%2). Resume polling to keep the motor running.</source>
         <translation>輪詢已暫停：控制器會在收到最後一個訊框 %1 s 後煞車停止馬達 (%2)。請恢復輪詢以保持馬達運轉。</translation>
     </message>
@@ -12050,12 +12063,12 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TrafficDescriber</name>
     <message>
-        <location filename="../main/model/traffic/TrafficDescriber.cpp" line="150"/>
+        <location filename="../model/traffic/TrafficDescriber.cpp" line="150"/>
         <source>broadcast: every drive executes it</source>
         <translation>廣播：所有驅動器都會執行</translation>
     </message>
     <message>
-        <location filename="../main/model/traffic/TrafficDescriber.cpp" line="159"/>
+        <location filename="../model/traffic/TrafficDescriber.cpp" line="159"/>
         <source>to %1 (group parent: also %2)</source>
         <translation>送往 %1 (群組母站：%2 也會執行)</translation>
     </message>
@@ -12063,57 +12076,57 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TrafficLogModel</name>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="93"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="93"/>
         <source>Tx</source>
         <translation>Tx</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="95"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="95"/>
         <source>Rx</source>
         <translation>Rx</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="97"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="97"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="108"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="108"/>
         <source>%1 (%2 ms)</source>
         <translation>%1 (%2 ms)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="123"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="123"/>
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="125"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="125"/>
         <source>Direction</source>
         <translation>方向</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="127"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="127"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="129"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="129"/>
         <source>Function</source>
         <translation>功能碼</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="131"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="131"/>
         <source>Bytes</source>
         <translation>位元組</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="133"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="133"/>
         <source>Meaning</source>
         <translation>意義</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogModel.cpp" line="135"/>
+        <location filename="../ui/traffic/TrafficLogModel.cpp" line="135"/>
         <source>Error</source>
         <translation>錯誤</translation>
     </message>
@@ -12121,155 +12134,155 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TrafficLogView</name>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="43"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="43"/>
         <source>&amp;Errors only</source>
         <translation>僅顯示錯誤(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="44"/>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="157"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="44"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="157"/>
         <source>&amp;Pause</source>
         <translation>暫停(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="52"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="52"/>
         <source>All drives</source>
         <translation>所有驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="54"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="54"/>
         <source>All</source>
         <translation>全部</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="55"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="55"/>
         <source>Tx (requests)</source>
         <translation>Tx (請求)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="56"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="56"/>
         <source>Rx (replies)</source>
         <translation>Rx (回應)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="57"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="57"/>
         <source>Events (no reply)</source>
         <translation>事件 (無回應)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="61"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="61"/>
         <source>&amp;Clear</source>
         <translation>清除(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="63"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="63"/>
         <source>&amp;Save…</source>
         <translation>儲存(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="66"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="66"/>
         <source>&amp;Drive:</source>
         <translation>驅動器(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="68"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="68"/>
         <source>Di&amp;rection:</source>
         <translation>方向(&amp;R)：</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="82"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="82"/>
         <source>Frames</source>
         <translation>訊框數</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
         <source>Requests</source>
         <translation>請求數</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
         <source>Replies</source>
         <translation>回應數</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Timeouts</source>
         <translation>逾時數</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>CRC errors</source>
         <translation>CRC 錯誤</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Exceptions</source>
         <translation>例外</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Wrong/garbled</source>
         <translation>錯誤/錯亂</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Mean ms</source>
         <translation>平均 ms</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Max ms</source>
         <translation>最大 ms</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="114"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="114"/>
         <source>Statistics per drive</source>
         <translation>各驅動器統計</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="157"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="157"/>
         <source>&amp;Resume</source>
         <translation>繼續(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="211"/>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="264"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="211"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="264"/>
         <source>Broadcast</source>
         <translation>廣播</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="211"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="211"/>
         <source>Drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="253"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="253"/>
         <source>%1 addresses did not answer: %2</source>
         <translation>%1 個位址未回應：%2</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="255"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="255"/>
         <source>No reply from machine numbers %1</source>
         <translation>機號 %1 無回應</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="281"/>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="286"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="281"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="286"/>
         <source>Save traffic log</source>
         <translation>儲存通訊記錄</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="281"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="281"/>
         <source>Text files (*.txt)</source>
         <translation>文字檔 (*.txt)</translation>
     </message>
     <message>
-        <location filename="../main/ui/traffic/TrafficLogView.cpp" line="287"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="287"/>
         <source>Could not save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
@@ -12277,456 +12290,456 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::Transport</name>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="16"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="16"/>
         <source>No serial port given: enter a device such as /dev/ttyUSB0 or COM3.</source>
         <translation>未指定序列埠：請輸入裝置，例如 /dev/ttyUSB0 或 COM3。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="20"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="20"/>
         <source>Baud rate %1 is not supported: use 1200–115200 (e.g. 9600, 19200, 38400, 57600, 115200).</source>
         <translation>不支援鮑率 %1：請使用 1200–115200 (例如 9600、19200、38400、57600、115200)。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="26"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="26"/>
         <source>Parity &apos;%1&apos; is not supported: use N (none), E (even) or O (odd).</source>
         <translation>不支援同位元 &apos;%1&apos;：請使用 N (無)、E (偶同位) 或 O (奇同位)。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="31"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="31"/>
         <source>%1 data bits are not supported: use 7 or 8.</source>
         <translation>不支援 %1 個資料位元：請使用 7 或 8。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="35"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="35"/>
         <source>%1 stop bits are not supported: use 1 or 2.</source>
         <translation>不支援 %1 個停止位元：請使用 1 或 2。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="39"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="39"/>
         <source>Byte timeout %1 ms is not allowed: use 1–10000 ms, or 0 to derive it from the baud rate.</source>
         <translation>不允許位元組逾時 %1 ms：請使用 1–10000 ms，或設為 0 依鮑率計算。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="47"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="47"/>
         <source>No host given: enter the gateway&apos;s address, e.g. 192.168.1.10.</source>
         <translation>未指定主機：請輸入閘道器位址，例如 192.168.1.10。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="51"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="51"/>
         <source>TCP port %1 is not allowed: use 1–65535 (Modbus TCP uses 502).</source>
         <translation>不允許 TCP 連接埠 %1：請使用 1–65535 (Modbus TCP 使用 502)。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="58"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="58"/>
         <source>No simulated devices given: use a list such as dbu200@1,dcpid@7.</source>
         <translation>未指定模擬裝置：請使用清單，例如 dbu200@1,dcpid@7。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="64"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="64"/>
         <source>Timeout %1 ms is not allowed: use 10–10000 ms.</source>
         <translation>不允許逾時 %1 ms：請使用 10–10000 ms。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ConnectionSettings.cpp" line="68"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="68"/>
         <source>%1 retries are not allowed: use 0–10.</source>
         <translation>不允許重試 %1 次：請使用 0–10。</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="56"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="56"/>
         <source>Vendor name</source>
         <translation>廠商名稱</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="58"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="58"/>
         <source>Product code</source>
         <translation>產品代碼</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="60"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="60"/>
         <source>Revision</source>
         <translation>版次</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="62"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="62"/>
         <source>Vendor URL</source>
         <translation>廠商網址</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="64"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="64"/>
         <source>Product name</source>
         <translation>產品名稱</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="66"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="66"/>
         <source>Model name</source>
         <translation>型號名稱</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="68"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="68"/>
         <source>User application name</source>
         <translation>使用者應用程式名稱</translation>
     </message>
     <message>
-        <location filename="../main/transport/DeviceIdentification.cpp" line="70"/>
+        <location filename="../transport/DeviceIdentification.cpp" line="70"/>
         <source>Object 0x%1</source>
         <translation>物件 0x%1</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="51"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="51"/>
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="127"/>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="309"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="127"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="309"/>
         <source>%1 is not open</source>
         <translation>%1 未開啟</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="144"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="144"/>
         <source>send failed</source>
         <translation>傳送失敗</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="168"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="168"/>
         <source>interrupted while waiting</source>
         <translation>等待中被中斷</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="172"/>
-        <location filename="../main/transport/MockBackend.cpp" line="100"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="172"/>
+        <location filename="../transport/MockBackend.cpp" line="100"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 內無回應</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="201"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="201"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>之後又收到另一個回應：此回應可能是對先前請求的回應</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="270"/>
-        <location filename="../main/transport/RtuFrame.cpp" line="140"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="270"/>
+        <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>回應來自從站 %1，預期為 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="281"/>
-        <location filename="../main/transport/RtuBackend.cpp" line="145"/>
-        <location filename="../main/transport/TcpBackend.cpp" line="89"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="281"/>
+        <location filename="../transport/RtuBackend.cpp" line="145"/>
+        <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>回應不完整</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="286"/>
-        <location filename="../main/transport/RtuFrame.cpp" line="133"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="286"/>
+        <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 不符</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="293"/>
-        <location filename="../main/transport/RtuBackend.cpp" line="152"/>
-        <location filename="../main/transport/TcpBackend.cpp" line="95"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="293"/>
+        <location filename="../transport/RtuBackend.cpp" line="152"/>
+        <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>接收失敗</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="363"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="363"/>
         <source> (connection closed)</source>
         <translation> (連線已關閉)</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="384"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="384"/>
         <source>stale bytes discarded before sending</source>
         <translation>傳送前已捨棄殘留位元組</translation>
     </message>
     <message>
-        <location filename="../main/transport/LibmodbusBackend.cpp" line="466"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="466"/>
         <source>late bytes discarded after an error</source>
         <translation>錯誤後已捨棄延遲到達的位元組</translation>
     </message>
     <message>
-        <location filename="../main/transport/MockBackend.cpp" line="57"/>
+        <location filename="../transport/MockBackend.cpp" line="57"/>
         <source>mock is not open</source>
         <translation>mock 未開啟</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusBackend.cpp" line="39"/>
+        <location filename="../transport/ModbusBackend.cpp" line="39"/>
         <source>→ %1 bytes</source>
         <translation>→ %1 位元組</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusBackend.cpp" line="51"/>
+        <location filename="../transport/ModbusBackend.cpp" line="51"/>
         <source>echo %1 = %2</source>
         <translation>回傳 %1 = %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusBackend.cpp" line="54"/>
+        <location filename="../transport/ModbusBackend.cpp" line="54"/>
         <source>echo %1 ×%2</source>
         <translation>回傳 %1 ×%2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="192"/>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="211"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="192"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="211"/>
         <source>cancelled before sending</source>
         <translation>傳送前已取消</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="242"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="242"/>
         <source>cannot open %1</source>
         <translation>無法開啟 %1</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusClientWorker.cpp" line="285"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="285"/>
         <source>client closed</source>
         <translation>用戶端已關閉</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="142"/>
+        <location filename="../transport/ModbusRequest.cpp" line="142"/>
         <source>Slave address %1 is not allowed: use 1–247, or 0 to broadcast a write.</source>
         <translation>不允許從站位址 %1：請使用 1–247，或以 0 廣播寫入。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="147"/>
+        <location filename="../transport/ModbusRequest.cpp" line="147"/>
         <source>Function code 0x%1 is not allowed: use 0x01–0x7F.</source>
         <translation>不允許功能碼 0x%1：請使用 0x01–0x7F。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="151"/>
+        <location filename="../transport/ModbusRequest.cpp" line="151"/>
         <source>Timeout %1 ms is not allowed: use 10–10000 ms, or -1 for the default.</source>
         <translation>不允許逾時 %1 ms：請使用 10–10000 ms，或以 -1 使用預設值。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="156"/>
+        <location filename="../transport/ModbusRequest.cpp" line="156"/>
         <source>%1 retries are not allowed: use 0–10, or -1 for the default.</source>
         <translation>不允許重試 %1 次：請使用 0–10，或以 -1 使用預設值。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="163"/>
+        <location filename="../transport/ModbusRequest.cpp" line="163"/>
         <source>Function code 0x%1 must be sent as a raw request.</source>
         <translation>功能碼 0x%1 必須以原始請求送出。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="167"/>
+        <location filename="../transport/ModbusRequest.cpp" line="167"/>
         <source>Raw request data of %1 bytes is too long: at most %2 bytes.</source>
         <translation>原始請求資料 %1 位元組過長：最多 %2 位元組。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="173"/>
+        <location filename="../transport/ModbusRequest.cpp" line="173"/>
         <source>Device identification cannot be broadcast.</source>
         <translation>裝置識別無法廣播。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="183"/>
+        <location filename="../transport/ModbusRequest.cpp" line="183"/>
         <source>A read cannot be broadcast: use slave address 1–247.</source>
         <translation>讀取無法廣播：請使用從站位址 1–247。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="186"/>
+        <location filename="../transport/ModbusRequest.cpp" line="186"/>
         <source>Cannot read %1 registers at once: use 1–125 registers.</source>
         <translation>無法一次讀取 %1 個暫存器：請使用 1–125 個暫存器。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="193"/>
+        <location filename="../transport/ModbusRequest.cpp" line="193"/>
         <source>Write single register needs exactly 1 value, not %1.</source>
         <translation>寫入單一暫存器需要恰好 1 個值，而非 %1 個。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="199"/>
+        <location filename="../transport/ModbusRequest.cpp" line="199"/>
         <source>Cannot write %1 registers at once: use 1–123 registers.</source>
         <translation>無法一次寫入 %1 個暫存器：請使用 1–123 個暫存器。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="204"/>
+        <location filename="../transport/ModbusRequest.cpp" line="204"/>
         <source>%1 values given for %2 registers.</source>
         <translation>為 %2 個暫存器指定了 %1 個值。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="213"/>
+        <location filename="../transport/ModbusRequest.cpp" line="213"/>
         <source>Registers %1 ×%2 run past the last address 0xFFFF.</source>
         <translation>暫存器 %1 ×%2 超出最後位址 0xFFFF。</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="224"/>
+        <location filename="../transport/ModbusRequest.cpp" line="224"/>
         <source>device identification code %1 object %2</source>
         <translation>裝置識別 代碼 %1 物件 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="232"/>
+        <location filename="../transport/ModbusRequest.cpp" line="232"/>
         <source>raw %1 %2</source>
         <translation>原始 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="236"/>
+        <location filename="../transport/ModbusRequest.cpp" line="236"/>
         <source>read %1 %2 ×%3</source>
         <translation>讀取 %1 %2 ×%3</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="240"/>
+        <location filename="../transport/ModbusRequest.cpp" line="240"/>
         <source>write %1 %2 = %3</source>
         <translation>寫入 %1 %2 = %3</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="243"/>
+        <location filename="../transport/ModbusRequest.cpp" line="243"/>
         <source>write %1 %2 ×%3 = %4</source>
         <translation>寫入 %1 %2 ×%3 = %4</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusRequest.cpp" line="249"/>
+        <location filename="../transport/ModbusRequest.cpp" line="249"/>
         <source>broadcast %1</source>
         <translation>廣播 %1</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="11"/>
+        <location filename="../transport/ModbusResult.cpp" line="11"/>
         <source>ok</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="13"/>
+        <location filename="../transport/ModbusResult.cpp" line="13"/>
         <source>timeout</source>
         <translation>逾時</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="15"/>
+        <location filename="../transport/ModbusResult.cpp" line="15"/>
         <source>CRC error</source>
         <translation>CRC 錯誤</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="17"/>
+        <location filename="../transport/ModbusResult.cpp" line="17"/>
         <source>reply from wrong slave</source>
         <translation>錯誤從站的回應</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="19"/>
+        <location filename="../transport/ModbusResult.cpp" line="19"/>
         <source>exception</source>
         <translation>例外</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="21"/>
+        <location filename="../transport/ModbusResult.cpp" line="21"/>
         <source>malformed reply</source>
         <translation>格式錯誤的回應</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="23"/>
+        <location filename="../transport/ModbusResult.cpp" line="23"/>
         <source>port error</source>
         <translation>連接埠錯誤</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="25"/>
+        <location filename="../transport/ModbusResult.cpp" line="25"/>
         <source>not connected</source>
         <translation>未連線</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="27"/>
+        <location filename="../transport/ModbusResult.cpp" line="27"/>
         <source>invalid request</source>
         <translation>無效請求</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="29"/>
+        <location filename="../transport/ModbusResult.cpp" line="29"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="38"/>
+        <location filename="../transport/ModbusResult.cpp" line="38"/>
         <source>Illegal function</source>
         <translation>非法功能碼</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="40"/>
+        <location filename="../transport/ModbusResult.cpp" line="40"/>
         <source>Illegal data address</source>
         <translation>非法資料位址</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="42"/>
+        <location filename="../transport/ModbusResult.cpp" line="42"/>
         <source>Illegal data value</source>
         <translation>非法資料值</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="44"/>
+        <location filename="../transport/ModbusResult.cpp" line="44"/>
         <source>Slave device failure</source>
         <translation>從站裝置故障</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="46"/>
+        <location filename="../transport/ModbusResult.cpp" line="46"/>
         <source>Acknowledge (processing)</source>
         <translation>確認 (處理中)</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="48"/>
+        <location filename="../transport/ModbusResult.cpp" line="48"/>
         <source>Slave device busy</source>
         <translation>從站裝置忙碌</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="50"/>
+        <location filename="../transport/ModbusResult.cpp" line="50"/>
         <source>Negative acknowledge</source>
         <translation>否定確認</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="52"/>
+        <location filename="../transport/ModbusResult.cpp" line="52"/>
         <source>Memory parity error</source>
         <translation>記憶體同位錯誤</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="54"/>
+        <location filename="../transport/ModbusResult.cpp" line="54"/>
         <source>Gateway path unavailable</source>
         <translation>閘道器路徑無法使用</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="56"/>
+        <location filename="../transport/ModbusResult.cpp" line="56"/>
         <source>Gateway target device failed to respond</source>
         <translation>閘道器目標裝置未回應</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="60"/>
+        <location filename="../transport/ModbusResult.cpp" line="60"/>
         <source>Prohibited action</source>
         <translation>禁止的動作</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="62"/>
+        <location filename="../transport/ModbusResult.cpp" line="62"/>
         <source>Undefined error</source>
         <translation>未定義的錯誤</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="64"/>
+        <location filename="../transport/ModbusResult.cpp" line="64"/>
         <source>Unknown exception</source>
         <translation>未知例外</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="74"/>
+        <location filename="../transport/ModbusResult.cpp" line="74"/>
         <source>exception %1 %2</source>
         <translation>例外 %1 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="79"/>
+        <location filename="../transport/ModbusResult.cpp" line="79"/>
         <source>timeout after %1 attempts</source>
         <translation>嘗試 %1 次後逾時</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="81"/>
+        <location filename="../transport/ModbusResult.cpp" line="81"/>
         <source>timeout (no reply)</source>
         <translation>逾時 (無回應)</translation>
     </message>
     <message>
-        <location filename="../main/transport/ModbusResult.cpp" line="89"/>
+        <location filename="../transport/ModbusResult.cpp" line="89"/>
         <source> (%1 attempts)</source>
         <translation> (嘗試 %1 次)</translation>
     </message>
     <message>
-        <location filename="../main/transport/PortLock.cpp" line="162"/>
+        <location filename="../transport/PortLock.cpp" line="162"/>
         <source>%1 is in use by another program; close it first.</source>
         <translation>%1 正被其他程式使用；請先關閉該程式。</translation>
     </message>
     <message>
-        <location filename="../main/transport/PortLock.cpp" line="167"/>
+        <location filename="../transport/PortLock.cpp" line="167"/>
         <source>another program</source>
         <translation>其他程式</translation>
     </message>
     <message>
-        <location filename="../main/transport/PortLock.cpp" line="169"/>
+        <location filename="../transport/PortLock.cpp" line="169"/>
         <source>%1 is in use by %2 (PID %3); close it first.</source>
         <translation>%1 正被 %2 (PID %3) 使用；請先關閉該程式。</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuBackend.cpp" line="82"/>
+        <location filename="../transport/RtuBackend.cpp" line="82"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -12735,92 +12748,92 @@ then log out and in again (the group applies to new sessions only).</source>
 然後登出再重新登入 (群組設定僅對新的登入工作階段生效)。</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuBackend.cpp" line="88"/>
+        <location filename="../transport/RtuBackend.cpp" line="88"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> (裝置可能不支援此同位元；pty 需使用 N)</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuBackend.cpp" line="123"/>
+        <location filename="../transport/RtuBackend.cpp" line="123"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>回應宣告 %1 位元組，超過 RTU 訊框的容量</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuBackend.cpp" line="144"/>
+        <location filename="../transport/RtuBackend.cpp" line="144"/>
         <source>no reply</source>
         <translation>無回應</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="127"/>
+        <location filename="../transport/RtuFrame.cpp" line="127"/>
         <source>reply too short (%1 bytes)</source>
         <translation>回應過短 (%1 位元組)</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="148"/>
+        <location filename="../transport/RtuFrame.cpp" line="148"/>
         <source>exception reply of %1 bytes</source>
         <translation>%1 位元組的例外回應</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="159"/>
+        <location filename="../transport/RtuFrame.cpp" line="159"/>
         <source>reply function %1, expected %2</source>
         <translation>回應功能碼為 %1，預期為 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="166"/>
+        <location filename="../transport/RtuFrame.cpp" line="166"/>
         <source>reply ends inside its own data</source>
         <translation>回應在其資料中途結束</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="171"/>
+        <location filename="../transport/RtuFrame.cpp" line="171"/>
         <source>reply of %1 bytes, expected %2</source>
         <translation>回應為 %1 位元組，預期為 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="181"/>
+        <location filename="../transport/RtuFrame.cpp" line="181"/>
         <source>MEI type %1, expected %2</source>
         <translation>MEI 類型為 %1，預期為 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="194"/>
+        <location filename="../transport/RtuFrame.cpp" line="194"/>
         <source>byte count %1, expected %2</source>
         <translation>位元組數為 %1，預期為 %2</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="207"/>
+        <location filename="../transport/RtuFrame.cpp" line="207"/>
         <source>echo %1 = %2 differs from the write</source>
         <translation>回傳 %1 = %2 與寫入內容不同</translation>
     </message>
     <message>
-        <location filename="../main/transport/RtuFrame.cpp" line="218"/>
+        <location filename="../transport/RtuFrame.cpp" line="218"/>
         <source>echo %1 ×%2 differs from the write</source>
         <translation>回傳 %1 ×%2 與寫入內容不同</translation>
     </message>
     <message>
-        <location filename="../main/transport/SerialPortList.cpp" line="64"/>
+        <location filename="../transport/SerialPortList.cpp" line="64"/>
         <source>Pseudo-terminals (e.g. /dev/pts/3 or a socat link) are not listed: type their path.</source>
         <translation>虛擬終端機 (例如 /dev/pts/3 或 socat 連結) 不會列出：請直接輸入其路徑。</translation>
     </message>
     <message>
-        <location filename="../main/transport/TcpBackend.cpp" line="105"/>
+        <location filename="../transport/TcpBackend.cpp" line="105"/>
         <source>MBAP length %1</source>
         <translation>MBAP 長度 %1</translation>
     </message>
     <message>
-        <location filename="../main/transport/TrafficEntry.cpp" line="13"/>
+        <location filename="../transport/TrafficEntry.cpp" line="13"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location filename="../main/transport/TrafficEntry.cpp" line="15"/>
+        <location filename="../transport/TrafficEntry.cpp" line="15"/>
         <source>RX</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location filename="../main/transport/TrafficEntry.cpp" line="17"/>
+        <location filename="../transport/TrafficEntry.cpp" line="17"/>
         <source>--</source>
         <translation>--</translation>
     </message>
     <message>
-        <location filename="../main/transport/TrafficEntry.cpp" line="37"/>
+        <location filename="../transport/TrafficEntry.cpp" line="37"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
@@ -12828,13 +12841,13 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendAxes</name>
     <message>
-        <location filename="../main/ui/trends/TrendAxes.cpp" line="40"/>
-        <location filename="../main/ui/trends/TrendAxes.cpp" line="46"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="40"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="46"/>
         <source>%1 [%2]</source>
         <translation>%1 [%2]</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendAxes.cpp" line="45"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="45"/>
         <source>[%1]</source>
         <translation>[%1]</translation>
     </message>
@@ -12842,22 +12855,22 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendChart</name>
     <message>
-        <location filename="../main/ui/trends/TrendChart.cpp" line="43"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="43"/>
         <source>Time (hh:mm:ss)</source>
         <translation>時間 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendChart.cpp" line="85"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="85"/>
         <source>Drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendChart.cpp" line="277"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="277"/>
         <source>There is no trend data to export yet.</source>
         <translation>尚無可匯出的趨勢資料。</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendChart.cpp" line="290"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="290"/>
         <source>Cannot write the picture %1.</source>
         <translation>無法寫入圖片 %1。</translation>
     </message>
@@ -12865,12 +12878,12 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendCsv</name>
     <message>
-        <location filename="../main/model/monitor/TrendCsv.cpp" line="25"/>
+        <location filename="../model/monitor/TrendCsv.cpp" line="25"/>
         <source>time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../main/model/monitor/TrendCsv.cpp" line="25"/>
+        <location filename="../model/monitor/TrendCsv.cpp" line="25"/>
         <source>seconds</source>
         <translation>秒</translation>
     </message>
@@ -12878,123 +12891,123 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendPanel</name>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="50"/>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="78"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="50"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="78"/>
         <source>Pause</source>
         <translation>暫停</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="51"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="51"/>
         <source>Live</source>
         <translation>即時</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="54"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="54"/>
         <source>How often each charted drive is polled. Commands you give always go first; the drives take turns on the bus.</source>
         <translation>每台繪圖中驅動器的輪詢頻率。您下達的指令一律優先；各驅動器輪流使用匯流排。</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="65"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="65"/>
         <source>30 s</source>
         <translation>30 s</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="65"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="65"/>
         <source>1 min</source>
         <translation>1 min</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="65"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="65"/>
         <source>5 min</source>
         <translation>5 min</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="65"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="65"/>
         <source>15 min</source>
         <translation>15 min</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="74"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="74"/>
         <source>Freezes the chart; the values keep being recorded.</source>
         <translation>凍結圖表；數值仍會持續記錄。</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="78"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="78"/>
         <source>Resume</source>
         <translation>繼續</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="81"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="81"/>
         <source>Back to the latest values after zooming or pausing.</source>
         <translation>縮放或暫停後回到最新數值。</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="86"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="86"/>
         <source>Clear markers</source>
         <translation>清除標記</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="89"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="89"/>
         <source>Export CSV…</source>
         <translation>匯出 CSV…</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="92"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="92"/>
         <source>Export PNG…</source>
         <translation>匯出 PNG…</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="97"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="97"/>
         <source>Drive / quantity</source>
         <translation>驅動器 / 量測項目</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="111"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="111"/>
         <source>Poll rate:</source>
         <translation>輪詢頻率：</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="113"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="113"/>
         <source>Window:</source>
         <translation>時間範圍：</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="141"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="141"/>
         <source>%1 Hz (%2 ms)</source>
         <translation>%1 Hz (%2 ms)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="200"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="200"/>
         <source>%1 [%2]</source>
         <translation>%1 [%2]</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="253"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="253"/>
         <source>Export trend as CSV</source>
         <translation>將趨勢圖匯出為 CSV</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="253"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="253"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="256"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="256"/>
         <source>Export CSV</source>
         <translation>匯出 CSV</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="262"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="262"/>
         <source>Export trend as picture</source>
         <translation>將趨勢圖匯出為圖片</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="263"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="263"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG 圖片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendPanel.cpp" line="266"/>
+        <location filename="../ui/trends/TrendPanel.cpp" line="266"/>
         <source>Export PNG</source>
         <translation>匯出 PNG</translation>
     </message>
@@ -13002,37 +13015,37 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendReadout</name>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="25"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="25"/>
         <source>Markers: click in the chart to set marker A, click again to set marker B.</source>
         <translation>標記：在圖表中按一下設定標記 A，再按一下設定標記 B。</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="28"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="28"/>
         <source>A %1   B %2   Δt = B − A = %3 s</source>
         <translation>A %1   B %2   Δt = B − A = %3 s</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="31"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="31"/>
         <source>A %1   (click in the chart to set marker B)</source>
         <translation>A %1   (在圖表中按一下以設定標記 B)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="32"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="32"/>
         <source>B %1   (click in the chart to set marker A)</source>
         <translation>B %1   (在圖表中按一下以設定標記 A)</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="34"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="34"/>
         <source>no data</source>
         <translation>無資料</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="44"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="44"/>
         <source>%1:   A %2   B %3   Δ %4</source>
         <translation>%1:   A %2   B %3   Δ %4</translation>
     </message>
     <message>
-        <location filename="../main/ui/trends/TrendReadout.cpp" line="46"/>
+        <location filename="../ui/trends/TrendReadout.cpp" line="46"/>
         <source>%1:   %2 %3</source>
         <translation>%1:   %2 %3</translation>
     </message>
@@ -13040,27 +13053,27 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitRecordJson</name>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="105"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="105"/>
         <source>not a unit record (format is not &quot;%1&quot;)</source>
         <translation>不是產品記錄 (format 不是 &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="108"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="108"/>
         <source>unit record version %1 is not known to this program (it reads up to %2)</source>
         <translation>本程式不認得產品記錄版本 %1 (最多可讀取 %2)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="115"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="115"/>
         <source>the unit record has no serial number</source>
         <translation>產品記錄沒有序號</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="127"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="127"/>
         <source>unknown unit status &quot;%1&quot;</source>
         <translation>未知的產品狀態 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitRecordJson.cpp" line="171"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="171"/>
         <source>not JSON: %1</source>
         <translation>不是 JSON：%1</translation>
     </message>
@@ -13068,102 +13081,102 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitValuesCsv</name>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="70"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="70"/>
         <source>the CSV file is larger than %1 MB</source>
         <translation>CSV 檔大於 %1 MB</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="72"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="72"/>
         <source>not a CSV text file (it holds NUL bytes)</source>
         <translation>不是 CSV 文字檔 (含有 NUL 位元組)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="93"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="93"/>
         <source>line %1: a quoted field is not closed properly</source>
         <translation>第 %1 行：引號欄位未正確結束</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="97"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="97"/>
         <source>line %1: the header must start with &quot;serial&quot;, not &quot;%2&quot;</source>
         <translation>第 %1 行：標題列必須以 &quot;serial&quot; 開頭，而非 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="101"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="101"/>
         <source>line %1: the header names no per-unit value</source>
         <translation>第 %1 行：標題列中沒有任何單台數值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="103"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="103"/>
         <source>line %1: more than %2 columns</source>
         <translation>第 %1 行：超過 %2 欄</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="107"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="107"/>
         <source>line %1: column %2 has no name</source>
         <translation>第 %1 行：第 %2 欄沒有名稱</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="109"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="109"/>
         <source>line %1: column &quot;%2&quot; appears twice</source>
         <translation>第 %1 行：欄位 &quot;%2&quot; 出現兩次</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="118"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="118"/>
         <source>line %1: %2 fields, but the header has %3</source>
         <translation>第 %1 行：有 %2 個欄位，但標題列有 %3 個</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="124"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="124"/>
         <source>line %1: no serial number</source>
         <translation>第 %1 行：沒有序號</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="126"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="126"/>
         <source>line %1: serial number &quot;%2&quot; is already on line %3</source>
         <translation>第 %1 行：序號 &quot;%2&quot; 已出現在第 %3 行</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="133"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="133"/>
         <source>the CSV file is empty; it needs a header &quot;serial,&lt;parameter&gt;,...&quot;</source>
         <translation>CSV 檔為空；需要標題列 &quot;serial,&lt;parameter&gt;,...&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="144"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="144"/>
         <source>cannot read %1: %2</source>
         <translation>無法讀取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="150"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="150"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="191"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="191"/>
         <source>serial number &quot;%1&quot; is not in the CSV file</source>
         <translation>序號 &quot;%1&quot; 不在 CSV 檔中</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="204"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="204"/>
         <source>%1: column &quot;%2&quot; is ambiguous, several positions have this per-unit value; name the column &quot;%3:%2&quot;</source>
         <translation>%1：欄位 &quot;%2&quot; 不明確，多個位置都有此單台數值；請將欄位命名為 &quot;%3:%2&quot;</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="208"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="208"/>
         <source>%1: the CSV file has no column &quot;%2&quot; (or &quot;%3:%2&quot;) for this per-unit value</source>
         <translation>%1：CSV 檔中沒有此單台數值的欄位 &quot;%2&quot; (或 &quot;%3:%2&quot;)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="213"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="213"/>
         <source>line %1, column &quot;%2&quot;: no value for serial number &quot;%3&quot;</source>
         <translation>第 %1 行，欄位 &quot;%2&quot;：序號 &quot;%3&quot; 沒有值</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="222"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="222"/>
         <source>line %1, column &quot;%2&quot;: &quot;%3&quot; is not a number</source>
         <translation>第 %1 行，欄位 &quot;%2&quot;：&quot;%3&quot; 不是數字</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/UnitValuesCsv.cpp" line="227"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="227"/>
         <source>line %1: %2</source>
         <translation>第 %1 行：%2</translation>
     </message>
@@ -13171,22 +13184,22 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UserGuideDialog</name>
     <message>
-        <location filename="../main/ui/help/UserGuideDialog.cpp" line="26"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="26"/>
         <source>OpenTOP user guide</source>
         <translation>OpenTOP 使用手冊</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/UserGuideDialog.cpp" line="28"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="28"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../main/ui/help/UserGuideDialog.cpp" line="31"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="31"/>
         <source>&lt;h2&gt;Commissioning a drive with OpenTOP&lt;/h2&gt;&lt;ol&gt;&lt;li&gt;&lt;b&gt;Connect.&lt;/b&gt; Bus ▸ Connect… chooses the serial port (or USB to RS-485 adapter), a Modbus TCP gateway or a simulated bus, with the bus&apos;s baud rate, parity and stop bits. The status bar says what the program is connected to; a simulated bus is marked as such.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Find the drives.&lt;/b&gt; Bus ▸ Scan bus (F5) asks every machine number 1–247; the drives that answer are identified and listed on the left with their state and control priority.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Select a drive.&lt;/b&gt; Its pages open on the right: Monitor (live values), the parameter pages of its profile, Test run and Alarms.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Edit settings.&lt;/b&gt; An edited field is marked as pending until it is written. Write page (or Drive ▸ Write all pending, Ctrl+W) writes and reads every value back to verify it; Revert drops the edits; Re-read (Ctrl+R) reads the drive again. A value the drive would refuse is never sent: the field says why.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Test-run the motor.&lt;/b&gt; The Test run page starts, stops and reverses the drive in communication priority and asks before the first start of each drive. Return the drive to I/O priority when done, so that the machine&apos;s own inputs control it again.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Stop.&lt;/b&gt; STOP ALL on the toolbar, or %1, stops every drive on the bus at once, from any window of the program.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Watch.&lt;/b&gt; View ▸ Trends (Ctrl+G) charts speeds and loads; View ▸ Bus overview shows every drive at a glance; View ▸ Traffic log (Ctrl+T) shows each frame on the bus with its meaning.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Keep the settings.&lt;/b&gt; Files ▸ Back up saves the settings of one drive or the whole bus to a file; Files ▸ Compare shows differences between drives, files and factory defaults; Files ▸ Restore writes a backup back after a preview.&lt;/li&gt;&lt;/ol&gt;&lt;p&gt;Every keyboard shortcut is listed in Help ▸ Keyboard shortcuts.&lt;/p&gt;&lt;h3&gt;More documentation&lt;/h3&gt;&lt;p&gt;The command line and the simulator: &lt;code&gt;man opentop&lt;/code&gt;, &lt;code&gt;man opentop-cli&lt;/code&gt;, &lt;code&gt;man opentop-sim&lt;/code&gt;.&lt;/p&gt;</source>
         <translation>&lt;h2&gt;使用 OpenTOP 試車調機驅動器&lt;/h2&gt;&lt;ol&gt;&lt;li&gt;&lt;b&gt;連線。&lt;/b&gt;匯流排 ▸ 連線… 可選擇序列埠 (或 USB 轉 RS-485 轉接器)、Modbus TCP 閘道器或模擬匯流排，並設定匯流排的鮑率、同位元與停止位元。狀態列會顯示程式目前的連線對象；模擬匯流排會特別標示。&lt;/li&gt;&lt;li&gt;&lt;b&gt;尋找驅動器。&lt;/b&gt;匯流排 ▸ 掃描匯流排 (F5) 會詢問每個機號 1–247；有回應的驅動器會被識別，並連同其狀態與控制優先權列在左側。&lt;/li&gt;&lt;li&gt;&lt;b&gt;選擇驅動器。&lt;/b&gt;其頁面會在右側開啟：監視 (即時值)、依定義檔的參數頁、試運轉與警報。&lt;/li&gt;&lt;li&gt;&lt;b&gt;編輯設定。&lt;/b&gt;已編輯的欄位在寫入前會標示為待寫入。寫入本頁 (或 驅動器 ▸ 寫入所有待寫入項目，Ctrl+W) 會寫入每個值並回讀驗證；復原會捨棄變更；重新讀取 (Ctrl+R) 會重新讀取驅動器。驅動器會拒絕的值絕不會送出：欄位會說明原因。&lt;/li&gt;&lt;li&gt;&lt;b&gt;試運轉馬達。&lt;/b&gt;試運轉頁面會在通訊優先下啟動、停止及反轉驅動器，每台驅動器第一次啟動前會先詢問。完成後請將驅動器恢復為 I/O 優先，讓機台本身的輸入端子再次控制。&lt;/li&gt;&lt;li&gt;&lt;b&gt;停止。&lt;/b&gt;工具列上的「全部停止」或 %1，可從程式的任何視窗立即停止匯流排上的所有驅動器。&lt;/li&gt;&lt;li&gt;&lt;b&gt;監看。&lt;/b&gt;檢視 ▸ 趨勢圖 (Ctrl+G) 繪製速度與負載曲線；檢視 ▸ 匯流排總覽 可一覽所有驅動器；檢視 ▸ 通訊記錄 (Ctrl+T) 顯示匯流排上的每個訊框及其意義。&lt;/li&gt;&lt;li&gt;&lt;b&gt;保留設定。&lt;/b&gt;檔案 ▸ 備份 將單台驅動器或整個匯流排的設定儲存至檔案；檔案 ▸ 比較 顯示驅動器、檔案與出廠預設值之間的差異；檔案 ▸ 還原 會在預覽後將備份寫回。&lt;/li&gt;&lt;/ol&gt;&lt;p&gt;所有鍵盤快速鍵均列於 說明 ▸ 鍵盤快速鍵。&lt;/p&gt;&lt;h3&gt;更多文件&lt;/h3&gt;&lt;p&gt;命令列與模擬器：&lt;code&gt;man opentop&lt;/code&gt;、&lt;code&gt;man opentop-cli&lt;/code&gt;、&lt;code&gt;man opentop-sim&lt;/code&gt;。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../main/ui/help/UserGuideDialog.cpp" line="70"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="70"/>
         <source>&lt;p&gt;The full description of the program: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;程式的完整說明：&lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</translation>
     </message>
@@ -13194,98 +13207,98 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ValueCodec</name>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="130"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="130"/>
         <source>depends on %1, which is not known yet</source>
         <translation>取決於尚未得知的 %1</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="132"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="132"/>
         <source>text of up to %1 characters</source>
         <translation>最多 %1 個字元的文字</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="142"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="142"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="150"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="150"/>
         <source>, or </source>
         <translation>，或 </translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="151"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="151"/>
         <source>any value</source>
         <translation>任意值</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="167"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="167"/>
         <source> (the variant is not known, so the value must suit %1; name the variant to use its own range)</source>
         <translation> (機型未知，因此值必須適用於 %1；指定機型即可使用其範圍)</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="177"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="177"/>
         <source>%1: the allowed values depend on %2, which has not been read</source>
         <translation>%1：允許值取決於尚未讀取的 %2</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="182"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="182"/>
         <source>%1: value out of the register&apos;s range; allowed: %2</source>
         <translation>%1：值超出暫存器範圍；允許：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="194"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="194"/>
         <source>%1: %2 is not allowed; allowed: %3</source>
         <translation>%1：不允許 %2；允許：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="206"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="206"/>
         <source>%1: expected %2 registers, got %3</source>
         <translation>%1：預期 %2 個暫存器，收到 %3 個</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="243"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="243"/>
         <source>%1 is text, not a number</source>
         <translation>%1 是文字，不是數字</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="256"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="256"/>
         <source>%1: %2 is finer than the step of %3 %4; allowed: %5</source>
         <translation>%1：%2 比最小單位 %3 %4 更細；允許：%5</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="287"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="287"/>
         <source>%1: at most %2 characters</source>
         <translation>%1：最多 %2 個字元</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="293"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="293"/>
         <source>%1: only printable ASCII characters are allowed</source>
         <translation>%1：只允許可列印的 ASCII 字元</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="305"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="305"/>
         <source>%1: no value given; allowed: %2</source>
         <translation>%1：未指定值；允許：%2</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="338"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="338"/>
         <source>%1: &quot;%2&quot; is only available when %3 is %4; allowed now: %5</source>
         <translation>%1：&quot;%2&quot; 僅在 %3 為 %4 時可用；目前允許：%5</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="351"/>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="368"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="351"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="368"/>
         <source>%1: &quot;%2&quot; is not a valid value; allowed: %3</source>
         <translation>%1：&quot;%2&quot; 不是有效值；允許：%3</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="382"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="382"/>
         <source>(invalid)</source>
         <translation>(無效)</translation>
     </message>
     <message>
-        <location filename="../main/model/profile/ValueCodec.cpp" line="393"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="393"/>
         <source>unknown code %1</source>
         <translation>未知代碼 %1</translation>
     </message>
@@ -13293,22 +13306,22 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::YieldReport</name>
     <message>
-        <location filename="../main/model/eol/YieldReport.cpp" line="51"/>
+        <location filename="../model/eol/YieldReport.cpp" line="51"/>
         <source>still running (or its station has not restarted since it stopped)</source>
         <translation>仍在執行中 (或其工站停止後尚未重新啟動)</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/YieldReport.cpp" line="53"/>
+        <location filename="../model/eol/YieldReport.cpp" line="53"/>
         <source>interrupted</source>
         <translation>已中斷</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/YieldReport.cpp" line="55"/>
+        <location filename="../model/eol/YieldReport.cpp" line="55"/>
         <source>aborted</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../main/model/eol/YieldReport.cpp" line="57"/>
+        <location filename="../model/eol/YieldReport.cpp" line="57"/>
         <source>failed, no reason recorded</source>
         <translation>不合格，未記錄原因</translation>
     </message>

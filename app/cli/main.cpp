@@ -1,6 +1,7 @@
 // opentop-cli: the command line. Composition root only; the commands live in cli/.
 #include "CliApp.h"
 #include "CliContext.h"
+#include "i18n/Language.h"
 
 #include <QCoreApplication>
 #include <QGuiApplication>
@@ -28,6 +29,13 @@ int main(int argc, char* argv[])
     QLoggingCategory::setFilterRules(QStringLiteral("opentop.*.warning=false"));
     QCoreApplication::setApplicationName(QStringLiteral("opentop-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(OPENTOP_VERSION));
+    // --lang, else the system locale; before the parser, whose help is translated.
+    QString languageError;
+    if (!opentop::Language::installFor(opentop::Language::requestedIn(arguments), QString(),
+                                       &languageError)) {
+        std::fprintf(stderr, "opentop-cli: %s\n", qPrintable(languageError));
+        return 2;
+    }
     opentop::CliContext::installInterruptHandler();
     QTextStream out(stdout);
     QTextStream err(stderr);

@@ -8,6 +8,7 @@
 #include "TrafficLog.h"
 #include "bus/BusSpec.h"
 #include "connection/ConnectionDialog.h"
+#include "i18n/Language.h"
 #include "main/MainWindow.h"
 #include "pages/EditorRegistry.h"
 
@@ -41,11 +42,24 @@ int main(int argc, char* argv[])
     for (int size : {16, 24, 32, 48, 64, 128, 256})
         icon.addFile(QStringLiteral(":/icons/%1/opentop.png").arg(size), QSize(size, size));
     QApplication::setWindowIcon(icon);
+    // Before any text is made: the help below is already in the chosen language.
+    QString languageError;
+    if (!opentop::Language::installFor(opentop::Language::requestedIn(argc, argv),
+                                       opentop::Language::saved(), &languageError)) {
+        std::fprintf(stderr, "opentop: %s\n", qPrintable(languageError));
+        return 2;
+    }
     QCommandLineParser parser;
     parser.setApplicationDescription(
         QApplication::translate("main", "Commissioning tool for RS-485 Modbus-RTU motor drives."));
     parser.addHelpOption();
     parser.addVersionOption();
+    parser.addOption({QStringLiteral("lang"),
+                      QApplication::translate("main", "Language of the program: %1 (default: "
+                                                      "the language menu's choice, else the "
+                                                      "system's).")
+                          .arg(opentop::Language::available().join(QStringLiteral(", "))),
+                      QStringLiteral("code")});
     opentop::ConnectionOptions::addTo(parser);
     opentop::MonitorOptions::addTo(parser);
     opentop::ProductionOptions::addTo(parser);

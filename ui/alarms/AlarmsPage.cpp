@@ -74,6 +74,11 @@ AlarmsPage::AlarmsPage(DeviceSession* session, QWidget* parent)
     m_commError->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
     auto* layout = new QVBoxLayout(this);
+    // Tight: with every dock open on a 768-px laptop screen, and CJK rows taller, the page's
+    // minimum height decides whether the window fits.
+    layout->setSpacing(3);
+    layout->setContentsMargins(layout->contentsMargins().left(), 4,
+                               layout->contentsMargins().right(), 4);
     layout->addWidget(m_title);
     layout->addWidget(m_status);
     m_age->setVisible(false); // once the page follows the drive live

@@ -6,6 +6,8 @@
 #include "connection/ConnectionDialog.h"
 #include "files/FileActions.h"
 #include "help/HelpActions.h"
+#include "i18n/Language.h"
+#include "i18n/LanguageMenu.h"
 #include "main/BusDocks.h"
 #include "main/MainWindow.h"
 #include "run/ExitGuard.h"
@@ -16,6 +18,7 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QStatusBar>
 #include <QToolBar>
 
@@ -97,6 +100,19 @@ MainMenus::MainMenus(MainWindow* window, BusDocks* docks, std::function<QVector<
         a->setShortcut(key);
         view->addAction(a);
     }
+    view->addSeparator();
+    auto* language = new LanguageMenu(window);
+    view->addMenu(language);
+    connect(language, &LanguageMenu::restartNeeded, window, [window](const QString& code) {
+        // Asynchronous: nothing waits on it, and a running drive's controls stay reachable.
+        auto* box = new QMessageBox(
+            QMessageBox::Information, tr("Language"),
+            tr("OpenTOP will be in %1 the next time it starts.").arg(Language::nativeName(code)),
+            QMessageBox::Ok, window);
+        box->setObjectName(QStringLiteral("languageRestartBox"));
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+    });
     m_eol = bar->addMenu(tr("&End of line"));
     m_editing << m_eol;
     new HelpActions(window, bar->addMenu(tr("&Help")));

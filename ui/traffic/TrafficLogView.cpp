@@ -116,6 +116,10 @@ TrafficLogView::TrafficLogView(TrafficLog* log, QWidget* parent)
     m_stats->setHorizontalHeaderLabels(statsHeaders);
     m_stats->verticalHeader()->hide();
     m_stats->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    // Its header and a row at least, not a scroll bar's height: with every dock open on a
+    // laptop (and CJK rows taller) the window must still fit the screen.
+    m_stats->setMinimumHeight(m_stats->horizontalHeader()->sizeHint().height() +
+                              2 * m_stats->frameWidth() + m_stats->fontMetrics().height() + 8);
 
     auto* splitter = new QSplitter(Qt::Vertical, this);
     splitter->addWidget(m_table);

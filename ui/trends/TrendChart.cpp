@@ -43,7 +43,8 @@ TrendChart::TrendChart(MonitorHub* hub, QWidget* parent)
     m_timeAxis->setTitleText(tr("Time (hh:mm:ss)"));
     m_timeAxis->setTickCount(7);
     m_chart->addAxis(m_timeAxis, Qt::AlignBottom);
-    m_view->setMinimumSize(320, 160); // a chart still, in a dock on a laptop
+    // A chart still, in a dock on a laptop, also where CJK text makes every row taller.
+    m_view->setMinimumSize(320, 124);
 
     m_readout->setTextFormat(Qt::PlainText);
     m_readout->setWordWrap(true);

@@ -28,6 +28,7 @@
 #include <QStatusBar>
 #include <QStyle>
 #include <QTabBar>
+#include <QTextBoundaryFinder>
 #include <QTextEdit>
 #include <QToolBar>
 #include <QToolButton>
@@ -248,9 +249,18 @@ private:
     {
         if (label->textFormat() == Qt::RichText || Qt::mightBeRichText(label->text()))
             return 0;
+        // The longest piece the text may not be broken in: between spaces in English, but
+        // between any two ideographs in Chinese or Japanese (Unicode line breaking, as Qt wraps).
+        const QString text = label->text();
+        QTextBoundaryFinder lines(QTextBoundaryFinder::Line, text);
         int longest = 0;
-        for (const QString& word : label->text().split(QRegularExpression(QStringLiteral("\\s+"))))
-            longest = std::max(longest, label->fontMetrics().horizontalAdvance(word));
+        int start = 0;
+        while (lines.toNextBoundary() != -1) {
+            const int end = int(lines.position());
+            longest = std::max(longest, label->fontMetrics().horizontalAdvance(
+                                            text.mid(start, end - start).trimmed()));
+            start = end;
+        }
         return longest;
     }
 

@@ -1,7 +1,6 @@
 // The whole program's window against an in-process simulated bus (dbu200@1, dbu200@2,
 // dbu400@150, dcpid@7), connected and identified; helpers that act as the user or the drive.
 #pragma once
-#include "main/MainWindow.h"
 #include "BackendFactory.h"
 #include "ModbusClient.h"
 #include "SimBus.h"
@@ -12,6 +11,8 @@
 #include "bus/BusOverviewModel.h"
 #include "bus/BusPanel.h"
 #include "bus/DriveStatusPoller.h"
+#include "i18n/Language.h"
+#include "main/MainWindow.h"
 #include "monitor/MonitorHub.h"
 #include "monitor/MonitorPage.h"
 #include "pages/EditorRegistry.h"
@@ -62,6 +63,11 @@ protected:
     {
         QCoreApplication::setOrganizationName(QStringLiteral("OpenTOP-test"));
         QSettings().clear();
+        if (language != QLatin1String("en")) {
+            // As opentop --lang does: before the window makes any text.
+            QString error;
+            ASSERT_TRUE(Language::install(language, &error)) << qPrintable(error);
+        }
         registerBuiltInEditors();
         window = std::make_unique<MainWindow>(
             [this](const ConnectionSettings& s, TrafficLog* log, QString* error) {
@@ -150,6 +156,13 @@ protected:
         return false;
     }
 
+    void TearDown() override
+    {
+        window.reset();
+        Language::uninstall();
+    }
+
+    QString language = QStringLiteral("en"); // set by a derived fixture before SetUp
     std::shared_ptr<SimBus> bus;
     std::unique_ptr<MainWindow> window;
 };
