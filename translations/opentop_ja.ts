@@ -31,19 +31,6 @@
     </message>
 </context>
 <context>
-    <name>SimulatorProcess</name>
-    <message>
-        <location filename="../app/bench/main.cpp" line="230"/>
-        <source>cannot start %1: %2</source>
-        <translation>%1 を起動できません: %2</translation>
-    </message>
-    <message>
-        <location filename="../app/bench/main.cpp" line="236"/>
-        <source>opentop-sim did not get ready: %1</source>
-        <translation>opentop-sim の準備が完了しませんでした: %1</translation>
-    </message>
-</context>
-<context>
     <name>main</name>
     <message>
         <location filename="../app/gui/main.cpp" line="54"/>
@@ -53,7 +40,7 @@
     <message>
         <location filename="../app/gui/main.cpp" line="58"/>
         <source>Language of the program: %1 (default: the language menu&apos;s choice, else the system&apos;s).</source>
-        <translation type="unfinished"></translation>
+        <translation>プログラムの言語: %1 (既定: 言語メニューでの選択、なければシステムの言語)。</translation>
     </message>
     <message>
         <location filename="../app/gui/MonitorOptions.cpp" line="75"/>
@@ -245,12 +232,12 @@
     <message>
         <location filename="../cli/CliApp.cpp" line="43"/>
         <source>Language of the human output: en, zh_TW, zh_CN, ko, ja (default: the system&apos;s). --json output is the same in every language.</source>
-        <translation type="unfinished"></translation>
+        <translation>人が読む出力の言語: en、zh_TW、zh_CN、ko、ja (既定: システムの言語)。--json の出力はどの言語でも同じです。</translation>
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="45"/>
         <source>CODE</source>
-        <translation type="unfinished"></translation>
+        <translation>CODE</translation>
     </message>
     <message>
         <location filename="../cli/StopAllCommand.cpp" line="28"/>
@@ -739,123 +726,123 @@
         <translation>局番 %1 (%2) のアラームと警告</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>#</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>Code</source>
         <translation>コード</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>Panel</source>
         <translation>パネル表示</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>Cleared by</source>
         <translation>解除方法</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="102"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="107"/>
         <source>Cause and remedy</source>
         <translation>原因と対策</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="103"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="108"/>
         <source>Communication error register</source>
         <translation>通信エラーレジスタ</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="115"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="120"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>アラームリセットコマンドを送信し、アラームが解除されたか、電源再投入でのみ解除できるかを表示します</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="117"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="122"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>ドライバが保持しているアラーム履歴・警告履歴を消去します</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="122"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="127"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="298"/>
         <source>Select a record to see its cause and remedy.</source>
         <translation>履歴を選択すると原因と対策を表示します。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="123"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="128"/>
         <source>Not read yet.</source>
         <translation>未読出しです。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="130"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>このドライバはアラーム・警告履歴を保持しません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="155"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="160"/>
         <source>Alarm state: %1</source>
         <translation>アラーム状態: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="247"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="252"/>
         <source>Reading the records…</source>
         <translation>履歴を読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="263"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="268"/>
         <source>No alarm is active.</source>
         <translation>アラームは発生していません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="265"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="270"/>
         <source>Alarm active: %1 %2.</source>
         <translation>アラーム発生中: %1 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="267"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="272"/>
         <source>An alarm is active.</source>
         <translation>アラームが発生しています。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="270"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>このドライバはアラームを電源再投入でのみ解除する設定です (%1)。Alarm-Reset では解除できません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="274"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="279"/>
         <source>Could not be read: %1</source>
         <translation>読み出せません: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="300"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="305"/>
         <source>This drive has no communication error register.</source>
         <translation>このドライバには通信エラーレジスタがありません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="302"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="307"/>
         <source>%1: could not be read.</source>
         <translation>%1: 読み出せません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="304"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="309"/>
         <source>%1: no error (0).</source>
         <translation>%1: エラーなし (0)。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="307"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
         <source>%1: %2, not a known code.</source>
         <translation>%1: %2（既知のコードではありません）。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="309"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
         <source>%1: %2 %3
 Cause: %4
 Remedy: %5</source>
@@ -864,153 +851,153 @@ Remedy: %5</source>
 対策: %5</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="321"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="326"/>
         <source>No alarm records</source>
         <translation>アラーム履歴なし</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="321"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="326"/>
         <source>No warning records</source>
         <translation>警告履歴なし</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="327"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="332"/>
         <source>%1: could not be read: %2</source>
         <translation>%1: 読み出せません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="330"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="335"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1: %3 件中 %2 件（新しい順）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="341"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="346"/>
         <source>unknown code</source>
         <translation>不明なコード</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="370"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="375"/>
         <source>Record %1: code %2 is not in the %3 table.</source>
         <translation>履歴 %1: コード %2 は %3 表にありません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="375"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="380"/>
         <source>%1 %2 (record %3)</source>
         <translation>%1 %2（履歴 %3）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="377"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="382"/>
         <source>Cause: %1</source>
         <translation>原因: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="379"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="384"/>
         <source>Remedy: %1</source>
         <translation>対策: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="381"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="386"/>
         <source>To clear: %1</source>
         <translation>解除方法: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="410"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="415"/>
         <source>Writes: %1</source>
         <translation>書込み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="411"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="416"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>原因が取り除かれていれば、発生中のアラームを解除します。電源再投入でのみ解除できるアラームもあります。結果に表示されます。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="414"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="419"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>このドライバはアラームを電源再投入でのみ解除する設定です (%1)。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="416"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="418"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="421"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="423"/>
         <source>Reset alarm</source>
         <translation>アラームリセット</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="417"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="422"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>局番 %1 にアラームリセットコマンドを送信しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="425"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="430"/>
         <source>Sending the alarm reset…</source>
         <translation>アラームリセットを送信中…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="431"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="436"/>
         <source>Alarm reset: %1</source>
         <translation>アラームリセット: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="434"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="439"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>ドライバの電源を切り、5 s 待ってから再投入してください。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="445"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="450"/>
         <source>%1 (%2 records)</source>
         <translation>%1（%2 件）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="447"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="452"/>
         <source>the alarm and warning records</source>
         <translation>アラーム履歴と警告履歴</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="448"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="453"/>
         <source>Clear records</source>
         <translation>履歴消去</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="449"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="454"/>
         <source>Erase %1 of machine %2?</source>
         <translation>局番 %2 の%1を消去しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="449"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="454"/>
         <source> and </source>
         <translation> と </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="450"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>履歴は復元できません。書込み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="452"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
         <source>Erase</source>
         <translation>消去</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="459"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="464"/>
         <source>Erasing the records…</source>
         <translation>履歴を消去中…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="467"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="472"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>消去: %1（%2 件）。%3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="470"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="475"/>
         <source>read back empty.</source>
         <translation>読み戻し結果は空です。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="471"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="476"/>
         <source>NOT empty when read back.</source>
         <translation>読み戻し結果が空ではありません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="473"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
         <source>Erasing failed: %1</source>
         <translation>消去に失敗しました: %1</translation>
     </message>
@@ -2303,7 +2290,22 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>
+接続（ドライバと通信するすべてのコマンド）:
+  --port PATH | --tcp HOST:PORT | --sim SPEC
+  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
+  既定値はファミリによります: dbu 19200 8N1、dcpid 9600 8E1。--timeout 200、
+  --retries 3（回線にノイズが多い間は 2 回追加: 最近の要求で再送が必要だった場合）。
+出力: --json  --trace  --variant VARIANT  --lang CODE
+グループ: --bus-drives LIST（または OPENTOP_BUS_DRIVES）: 書込みやコマンドの前に
+通信グループを確認するドライバ
+
+終了コード: 0 成功、1 通信失敗、2 使い方の誤り、3 不正な値またはファイル
+（何も書き込まない）、4 照合不一致または停止しなかったドライバあり、
+130 Ctrl-C、SIGTERM、SIGHUP による中断（実行済みの内容を報告）。
+
+&quot;%1 help COMMAND&quot; でコマンドのオプションを表示します。
+</translation>
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="153"/>
@@ -6412,14 +6414,14 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::Language</name>
     <message>
-        <location filename="../model/i18n/Language.cpp" line="137"/>
+        <location filename="../model/i18n/Language.cpp" line="139"/>
         <source>unknown language &apos;%1&apos;; available: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>不明な言語 &apos;%1&apos;。使用可能: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/Language.cpp" line="151"/>
+        <location filename="../model/i18n/Language.cpp" line="154"/>
         <source>the %1 translation is missing from this build</source>
-        <translation type="unfinished"></translation>
+        <translation>このビルドには %1 の翻訳がありません</translation>
     </message>
 </context>
 <context>
@@ -6427,12 +6429,12 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     <message>
         <location filename="../ui/i18n/LanguageMenu.cpp" line="10"/>
         <source>&amp;Language</source>
-        <translation type="unfinished"></translation>
+        <translation>言語(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/i18n/LanguageMenu.cpp" line="15"/>
+        <location filename="../ui/i18n/LanguageMenu.cpp" line="16"/>
         <source>System language (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>システムの言語 (%1)</translation>
     </message>
 </context>
 <context>
@@ -6535,12 +6537,12 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     <message>
         <location filename="../ui/main/MainMenus.cpp" line="109"/>
         <source>Language</source>
-        <translation type="unfinished"></translation>
+        <translation>言語</translation>
     </message>
     <message>
         <location filename="../ui/main/MainMenus.cpp" line="110"/>
         <source>OpenTOP will be in %1 the next time it starts.</source>
-        <translation type="unfinished"></translation>
+        <translation>OpenTOP は次回の起動時から %1 で表示されます。</translation>
     </message>
     <message>
         <location filename="../ui/main/MainMenus.cpp" line="116"/>
@@ -11325,12 +11327,42 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 Prints &quot;pty: PATH&quot; (and &quot;tcp: HOST:PORT&quot;), then &quot;ready&quot;. Reads console commands
 from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>使い方: opentop-sim --devices SPEC [options]
+疑似端末上、または Modbus TCP ゲートウェイとして Modbus RTU ドライバをシミュレートします。
+
+  --devices SPEC     デバイスと局番。例: dbu200@1,dbu400@150,dcpid@7
+  --pty [PATH]       pty で提供（既定）。PATH: このシンボリックリンクも作成
+  --tcp HOST:PORT    Modbus TCP で提供（HOST の既定は 127.0.0.1、PORT 0: 任意）
+  --baud N           回線タイミングとデバイス設定の通信速度 (19200)
+  --parity N|E|O     回線のパリティ (N)
+  --wire-timing      --baud の実回線と同様に応答を遅延させる
+  --turnaround MS    --wire-timing 時のデバイスのターンアラウンド (2)
+  --faults LIST      例: drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
+  --seed N           フォールト注入のシード (1)
+  --defect ID:LIST   ドライバ ID の不具合（複数指定可）。LIST の要素:
+                       firmware=MAJOR.MINOR  識別時にこのバージョンを通知
+                       max_speed=N           モータは N で飽和 (DBU r/min、
+                                             DC 転流回数/s)、負荷大
+                       stall                 モータが回転しない、負荷大
+                       load=+N|-N|xF         負荷率 (DC: 電流 %) にオフセットまたは倍率
+                       alarm=CODE@TIME       運転して TIME 後にアラーム。例:
+                                             0x07@1500ms、overload@2s (DC: stall@1s)
+                       nostick=PARAM         書込みに応答するが、旧値のまま
+                       nostore=PARAM         次の電源再投入で値が消える
+                     例: --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
+  --quiet            stderr にフレームトレースを出力しない
+  --lang CODE        メッセージの言語: en, zh_TW, zh_CN, ko, ja
+  --help             このテキスト
+  --version          プログラムのバージョン
+
+&quot;pty: PATH&quot;（および &quot;tcp: HOST:PORT&quot;）を出力した後、&quot;ready&quot; を出力します。コンソールコマンドを
+標準入力から読み取ります (help と入力)。SIGINT、SIGTERM、quit で停止します。
+</translation>
     </message>
     <message>
         <location filename="../sim/SimOptions.cpp" line="81"/>
         <source>--lang needs a language code such as ko</source>
-        <translation type="unfinished"></translation>
+        <translation>--lang には ko などの言語コードが必要です</translation>
     </message>
     <message>
         <location filename="../sim/SimOptions.cpp" line="84"/>
@@ -12140,7 +12172,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     </message>
     <message>
         <location filename="../ui/traffic/TrafficLogView.cpp" line="44"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="157"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="161"/>
         <source>&amp;Pause</source>
         <translation>一時停止(&amp;P)</translation>
     </message>
@@ -12245,44 +12277,44 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>ドライバ別統計</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="157"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="161"/>
         <source>&amp;Resume</source>
         <translation>再開(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="211"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="264"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="215"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="268"/>
         <source>Broadcast</source>
         <translation>ブロードキャスト</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="211"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="215"/>
         <source>Drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="253"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="257"/>
         <source>%1 addresses did not answer: %2</source>
         <translation>%1 個のアドレスが応答しませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="255"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="259"/>
         <source>No reply from machine numbers %1</source>
         <translation>局番 %1 から応答なし</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="281"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="286"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="285"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="290"/>
         <source>Save traffic log</source>
         <translation>通信ログを保存</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="281"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="285"/>
         <source>Text files (*.txt)</source>
         <translation>テキストファイル (*.txt)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="287"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="291"/>
         <source>Could not save %1: %2</source>
         <translation>%1 を保存できませんでした: %2</translation>
     </message>
@@ -12860,17 +12892,17 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>時刻 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="85"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="86"/>
         <source>Drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="277"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="278"/>
         <source>There is no trend data to export yet.</source>
         <translation>エクスポートするトレンドデータがまだありません。</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="290"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="291"/>
         <source>Cannot write the picture %1.</source>
         <translation>画像 %1 を書き込めません。</translation>
     </message>

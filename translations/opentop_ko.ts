@@ -31,19 +31,6 @@
     </message>
 </context>
 <context>
-    <name>SimulatorProcess</name>
-    <message>
-        <location filename="../app/bench/main.cpp" line="230"/>
-        <source>cannot start %1: %2</source>
-        <translation>%1을(를) 시작할 수 없습니다: %2</translation>
-    </message>
-    <message>
-        <location filename="../app/bench/main.cpp" line="236"/>
-        <source>opentop-sim did not get ready: %1</source>
-        <translation>opentop-sim이 준비되지 않았습니다: %1</translation>
-    </message>
-</context>
-<context>
     <name>main</name>
     <message>
         <location filename="../app/gui/main.cpp" line="54"/>
@@ -53,7 +40,7 @@
     <message>
         <location filename="../app/gui/main.cpp" line="58"/>
         <source>Language of the program: %1 (default: the language menu&apos;s choice, else the system&apos;s).</source>
-        <translation type="unfinished"></translation>
+        <translation>프로그램 언어: %1 (기본값: 언어 메뉴에서 고른 언어, 없으면 시스템 언어).</translation>
     </message>
     <message>
         <location filename="../app/gui/MonitorOptions.cpp" line="75"/>
@@ -245,12 +232,12 @@
     <message>
         <location filename="../cli/CliApp.cpp" line="43"/>
         <source>Language of the human output: en, zh_TW, zh_CN, ko, ja (default: the system&apos;s). --json output is the same in every language.</source>
-        <translation type="unfinished"></translation>
+        <translation>사람이 읽는 출력의 언어: en, zh_TW, zh_CN, ko, ja (기본값: 시스템 언어). --json 출력은 모든 언어에서 같습니다.</translation>
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="45"/>
         <source>CODE</source>
-        <translation type="unfinished"></translation>
+        <translation>CODE</translation>
     </message>
     <message>
         <location filename="../cli/StopAllCommand.cpp" line="28"/>
@@ -739,123 +726,123 @@
         <translation>국번 %1의 알람과 경고 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>Code</source>
         <translation>코드</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>Panel</source>
         <translation>패널</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>Name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>Cleared by</source>
         <translation>해제 방법</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="102"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="107"/>
         <source>Cause and remedy</source>
         <translation>원인 및 조치</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="103"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="108"/>
         <source>Communication error register</source>
         <translation>통신 오류 레지스터</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="115"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="120"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>알람 리셋 명령을 보냅니다. 알람이 해제되었는지, 전원 재투입으로만 해제되는지 알려줍니다</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="117"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="122"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>드라이버에 보관된 알람·경고 기록을 삭제합니다</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="122"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="127"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="298"/>
         <source>Select a record to see its cause and remedy.</source>
         <translation>원인과 조치를 보려면 기록을 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="123"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="128"/>
         <source>Not read yet.</source>
         <translation>아직 읽지 않음.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="130"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>이 드라이버는 알람·경고 기록을 보관하지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="155"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="160"/>
         <source>Alarm state: %1</source>
         <translation>알람 상태: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="247"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="252"/>
         <source>Reading the records…</source>
         <translation>기록을 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="263"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="268"/>
         <source>No alarm is active.</source>
         <translation>발생 중인 알람이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="265"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="270"/>
         <source>Alarm active: %1 %2.</source>
         <translation>알람 발생 중: %1 %2.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="267"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="272"/>
         <source>An alarm is active.</source>
         <translation>알람이 발생 중입니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="270"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>이 드라이버는 전원 재투입으로만 알람이 해제되도록 설정되어 있습니다(%1): Alarm-Reset으로는 어떤 알람도 해제되지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="274"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="279"/>
         <source>Could not be read: %1</source>
         <translation>읽을 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="300"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="305"/>
         <source>This drive has no communication error register.</source>
         <translation>이 드라이버에는 통신 오류 레지스터가 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="302"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="307"/>
         <source>%1: could not be read.</source>
         <translation>%1: 읽을 수 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="304"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="309"/>
         <source>%1: no error (0).</source>
         <translation>%1: 오류 없음(0).</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="307"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
         <source>%1: %2, not a known code.</source>
         <translation>%1: %2, 알 수 없는 코드.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="309"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
         <source>%1: %2 %3
 Cause: %4
 Remedy: %5</source>
@@ -864,153 +851,153 @@ Remedy: %5</source>
 조치: %5</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="321"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="326"/>
         <source>No alarm records</source>
         <translation>알람 기록 없음</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="321"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="326"/>
         <source>No warning records</source>
         <translation>경고 기록 없음</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="327"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="332"/>
         <source>%1: could not be read: %2</source>
         <translation>%1: 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="330"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="335"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1: 기록 %3개 중 %2개, 최신순</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="341"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="346"/>
         <source>unknown code</source>
         <translation>알 수 없는 코드</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="370"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="375"/>
         <source>Record %1: code %2 is not in the %3 table.</source>
         <translation>기록 %1: 코드 %2이(가) %3 표에 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="375"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="380"/>
         <source>%1 %2 (record %3)</source>
         <translation>%1 %2 (기록 %3)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="377"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="382"/>
         <source>Cause: %1</source>
         <translation>원인: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="379"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="384"/>
         <source>Remedy: %1</source>
         <translation>조치: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="381"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="386"/>
         <source>To clear: %1</source>
         <translation>해제 방법: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="410"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="415"/>
         <source>Writes: %1</source>
         <translation>쓰기: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="411"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="416"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>원인이 제거되었으면 발생 중인 알람을 해제합니다. 일부 알람은 전원 재투입으로만 해제되며, 결과에 표시됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="414"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="419"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>이 드라이버는 전원 재투입으로만 알람이 해제되도록 설정되어 있습니다(%1).</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="416"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="418"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="421"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="423"/>
         <source>Reset alarm</source>
         <translation>알람 리셋</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="417"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="422"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>국번 %1에 알람 리셋 명령을 보내시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="425"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="430"/>
         <source>Sending the alarm reset…</source>
         <translation>알람 리셋을 보내는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="431"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="436"/>
         <source>Alarm reset: %1</source>
         <translation>알람 리셋: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="434"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="439"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>드라이버 전원을 끄고 5 s 기다린 뒤 다시 켜십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="445"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="450"/>
         <source>%1 (%2 records)</source>
         <translation>%1 (기록 %2건)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="447"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="452"/>
         <source>the alarm and warning records</source>
         <translation>알람·경고 기록</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="448"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="453"/>
         <source>Clear records</source>
         <translation>기록 삭제</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="449"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="454"/>
         <source>Erase %1 of machine %2?</source>
         <translation>국번 %2의 %1을(를) 삭제하시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="449"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="454"/>
         <source> and </source>
         <translation> 및 </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="450"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>삭제한 기록은 복원할 수 없습니다. 쓰기: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="452"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
         <source>Erase</source>
         <translation>삭제</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="459"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="464"/>
         <source>Erasing the records…</source>
         <translation>기록을 삭제하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="467"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="472"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>삭제됨: %1 (기록 %2건); %3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="470"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="475"/>
         <source>read back empty.</source>
         <translation>다시 읽기 결과 비어 있음.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="471"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="476"/>
         <source>NOT empty when read back.</source>
         <translation>다시 읽기 결과 비어 있지 않음.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="473"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
         <source>Erasing failed: %1</source>
         <translation>삭제 실패: %1</translation>
     </message>
@@ -2303,7 +2290,22 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>
+연결 (드라이버와 통신하는 모든 명령):
+  --port PATH | --tcp HOST:PORT | --sim SPEC
+  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
+  기본값은 제품군에 따름: dbu 19200 8N1, dcpid 9600 8E1; --timeout 200,
+  --retries 3 (라인에 노이즈가 있으면(최근 재시도가 필요했던 요청이 있으면) 2회 추가).
+출력: --json  --trace  --variant VARIANT  --lang CODE
+그룹: --bus-drives LIST (또는 OPENTOP_BUS_DRIVES): 쓰기나 명령 전에 통신 그룹을
+확인할 드라이버
+
+종료 코드: 0 성공, 1 통신 실패, 2 사용법 오류, 3 잘못된 값 또는 파일
+(아무것도 쓰지 않음), 4 검증 불일치 또는 정지하지 않은 드라이버 있음,
+130 Ctrl-C, SIGTERM 또는 SIGHUP으로 중단됨(수행한 작업은 보고함).
+
+&quot;%1 help COMMAND&quot;로 명령의 옵션을 볼 수 있습니다.
+</translation>
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="153"/>
@@ -6412,14 +6414,14 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::Language</name>
     <message>
-        <location filename="../model/i18n/Language.cpp" line="137"/>
+        <location filename="../model/i18n/Language.cpp" line="139"/>
         <source>unknown language &apos;%1&apos;; available: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>알 수 없는 언어 &apos;%1&apos;; 사용 가능: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/Language.cpp" line="151"/>
+        <location filename="../model/i18n/Language.cpp" line="154"/>
         <source>the %1 translation is missing from this build</source>
-        <translation type="unfinished"></translation>
+        <translation>이 빌드에 %1 번역이 없습니다</translation>
     </message>
 </context>
 <context>
@@ -6427,12 +6429,12 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
     <message>
         <location filename="../ui/i18n/LanguageMenu.cpp" line="10"/>
         <source>&amp;Language</source>
-        <translation type="unfinished"></translation>
+        <translation>언어(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/i18n/LanguageMenu.cpp" line="15"/>
+        <location filename="../ui/i18n/LanguageMenu.cpp" line="16"/>
         <source>System language (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>시스템 언어(%1)</translation>
     </message>
 </context>
 <context>
@@ -6535,12 +6537,12 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
     <message>
         <location filename="../ui/main/MainMenus.cpp" line="109"/>
         <source>Language</source>
-        <translation type="unfinished"></translation>
+        <translation>언어</translation>
     </message>
     <message>
         <location filename="../ui/main/MainMenus.cpp" line="110"/>
         <source>OpenTOP will be in %1 the next time it starts.</source>
-        <translation type="unfinished"></translation>
+        <translation>OpenTOP은 다음에 시작할 때 %1(으)로 표시됩니다.</translation>
     </message>
     <message>
         <location filename="../ui/main/MainMenus.cpp" line="116"/>
@@ -11325,12 +11327,42 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 Prints &quot;pty: PATH&quot; (and &quot;tcp: HOST:PORT&quot;), then &quot;ready&quot;. Reads console commands
 from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>사용법: opentop-sim --devices SPEC [옵션]
+Modbus RTU 드라이버를 가상 터미널 또는 Modbus TCP 게이트웨이로 시뮬레이션합니다.
+
+  --devices SPEC     장치와 국번, 예: dbu200@1,dbu400@150,dcpid@7
+  --pty [PATH]       pty로 서비스 (기본값); PATH: 이 심볼릭 링크도 생성
+  --tcp HOST:PORT    Modbus TCP로 서비스 (HOST 기본값 127.0.0.1, PORT 0: 임의)
+  --baud N           전송 타이밍과 장치 설정에 쓰는 통신 속도 (19200)
+  --parity N|E|O     라인 패리티 (N)
+  --wire-timing      --baud의 실제 라인처럼 응답을 지연
+  --turnaround MS    --wire-timing 사용 시 장치 응답 전환 시간 (2)
+  --faults LIST      예: drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
+  --seed N           결함 주입의 시드 (1)
+  --defect ID:LIST   드라이버 ID의 결함 (반복 가능), LIST 항목:
+                       firmware=MAJOR.MINOR  식별 시 이 버전을 알려줌
+                       max_speed=N           모터가 N에서 포화 (DBU r/min,
+                                             DC 정류 횟수/s), 부하 높음
+                       stall                 모터가 회전하지 않음, 부하 높음
+                       load=+N|-N|xF         부하율(DC: 전류 %)에 오프셋 또는 배율
+                       alarm=CODE@TIME       TIME 동안 운전 후 알람, 예:
+                                             0x07@1500ms, overload@2s (DC: stall@1s)
+                       nostick=PARAM         쓰기는 수신 확인하지만 이전 값 유지
+                       nostore=PARAM         다음 전원 재투입 시 값 손실
+                     예: --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
+  --quiet            stderr에 프레임 추적을 출력하지 않음
+  --lang CODE        메시지 언어: en, zh_TW, zh_CN, ko, ja
+  --help             이 도움말
+  --version          프로그램 버전
+
+&quot;pty: PATH&quot;(및 &quot;tcp: HOST:PORT&quot;)를 출력한 뒤 &quot;ready&quot;를 출력합니다. 콘솔 명령을
+stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료합니다.
+</translation>
     </message>
     <message>
         <location filename="../sim/SimOptions.cpp" line="81"/>
         <source>--lang needs a language code such as ko</source>
-        <translation type="unfinished"></translation>
+        <translation>--lang에는 ko 같은 언어 코드가 필요합니다</translation>
     </message>
     <message>
         <location filename="../sim/SimOptions.cpp" line="84"/>
@@ -12140,7 +12172,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     </message>
     <message>
         <location filename="../ui/traffic/TrafficLogView.cpp" line="44"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="157"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="161"/>
         <source>&amp;Pause</source>
         <translation>일시 정지(&amp;P)</translation>
     </message>
@@ -12245,44 +12277,44 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>드라이버별 통계</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="157"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="161"/>
         <source>&amp;Resume</source>
         <translation>재개(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="211"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="264"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="215"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="268"/>
         <source>Broadcast</source>
         <translation>브로드캐스트</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="211"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="215"/>
         <source>Drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="253"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="257"/>
         <source>%1 addresses did not answer: %2</source>
         <translation>응답하지 않은 주소 %1개: %2</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="255"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="259"/>
         <source>No reply from machine numbers %1</source>
         <translation>응답 없는 국번: %1</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="281"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="286"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="285"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="290"/>
         <source>Save traffic log</source>
         <translation>통신 로그 저장</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="281"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="285"/>
         <source>Text files (*.txt)</source>
         <translation>텍스트 파일 (*.txt)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="287"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="291"/>
         <source>Could not save %1: %2</source>
         <translation>%1을(를) 저장할 수 없습니다: %2</translation>
     </message>
@@ -12860,17 +12892,17 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>시간 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="85"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="86"/>
         <source>Drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="277"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="278"/>
         <source>There is no trend data to export yet.</source>
         <translation>아직 내보낼 트렌드 데이터가 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="290"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="291"/>
         <source>Cannot write the picture %1.</source>
         <translation>이미지 %1을(를) 저장할 수 없습니다.</translation>
     </message>

@@ -31,19 +31,6 @@
     </message>
 </context>
 <context>
-    <name>SimulatorProcess</name>
-    <message>
-        <location filename="../app/bench/main.cpp" line="230"/>
-        <source>cannot start %1: %2</source>
-        <translation>无法启动 %1：%2</translation>
-    </message>
-    <message>
-        <location filename="../app/bench/main.cpp" line="236"/>
-        <source>opentop-sim did not get ready: %1</source>
-        <translation>opentop-sim 未就绪：%1</translation>
-    </message>
-</context>
-<context>
     <name>main</name>
     <message>
         <location filename="../app/gui/main.cpp" line="54"/>
@@ -53,7 +40,7 @@
     <message>
         <location filename="../app/gui/main.cpp" line="58"/>
         <source>Language of the program: %1 (default: the language menu&apos;s choice, else the system&apos;s).</source>
-        <translation type="unfinished"></translation>
+        <translation>程序的语言：%1（默认：语言菜单的选择，否则为系统语言）。</translation>
     </message>
     <message>
         <location filename="../app/gui/MonitorOptions.cpp" line="75"/>
@@ -245,12 +232,12 @@
     <message>
         <location filename="../cli/CliApp.cpp" line="43"/>
         <source>Language of the human output: en, zh_TW, zh_CN, ko, ja (default: the system&apos;s). --json output is the same in every language.</source>
-        <translation type="unfinished"></translation>
+        <translation>供人阅读的输出的语言：en、zh_TW、zh_CN、ko、ja（默认：系统语言）。--json 输出在各语言中都相同。</translation>
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="45"/>
         <source>CODE</source>
-        <translation type="unfinished"></translation>
+        <translation>CODE</translation>
     </message>
     <message>
         <location filename="../cli/StopAllCommand.cpp" line="28"/>
@@ -739,123 +726,123 @@
         <translation>站号 %1（%2）的报警和警告</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>Code</source>
         <translation>代码</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>Panel</source>
         <translation>面板</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>Cleared by</source>
         <translation>清除方式</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="102"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="107"/>
         <source>Cause and remedy</source>
         <translation>原因和处理方法</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="103"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="108"/>
         <source>Communication error register</source>
         <translation>通信错误寄存器</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="115"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="120"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>发送报警复位命令；显示报警是否已清除或只能重新上电清除</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="117"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="122"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>清除驱动器保存的报警和警告记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="122"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="127"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="298"/>
         <source>Select a record to see its cause and remedy.</source>
         <translation>选择一条记录查看其原因和处理方法。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="123"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="128"/>
         <source>Not read yet.</source>
         <translation>尚未读取。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="130"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>该驱动器不保存报警或警告记录。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="155"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="160"/>
         <source>Alarm state: %1</source>
         <translation>报警状态：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="247"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="252"/>
         <source>Reading the records…</source>
         <translation>正在读取记录…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="263"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="268"/>
         <source>No alarm is active.</source>
         <translation>当前无报警。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="265"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="270"/>
         <source>Alarm active: %1 %2.</source>
         <translation>报警中：%1 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="267"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="272"/>
         <source>An alarm is active.</source>
         <translation>有报警发生。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="270"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>该驱动器设定为仅通过重新上电清除报警（%1）：报警复位无法清除任何报警。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="274"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="279"/>
         <source>Could not be read: %1</source>
         <translation>无法读取：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="300"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="305"/>
         <source>This drive has no communication error register.</source>
         <translation>该驱动器没有通信错误寄存器。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="302"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="307"/>
         <source>%1: could not be read.</source>
         <translation>%1：无法读取。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="304"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="309"/>
         <source>%1: no error (0).</source>
         <translation>%1：无错误（0）。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="307"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
         <source>%1: %2, not a known code.</source>
         <translation>%1：%2，不是已知代码。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="309"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
         <source>%1: %2 %3
 Cause: %4
 Remedy: %5</source>
@@ -864,153 +851,153 @@ Remedy: %5</source>
 处理方法：%5</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="321"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="326"/>
         <source>No alarm records</source>
         <translation>无报警记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="321"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="326"/>
         <source>No warning records</source>
         <translation>无警告记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="327"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="332"/>
         <source>%1: could not be read: %2</source>
         <translation>%1：无法读取：%2</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="330"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="335"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1：%3 条记录中的 %2 条，最新在前</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="341"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="346"/>
         <source>unknown code</source>
         <translation>未知代码</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="370"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="375"/>
         <source>Record %1: code %2 is not in the %3 table.</source>
         <translation>记录 %1：代码 %2 不在 %3 表中。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="375"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="380"/>
         <source>%1 %2 (record %3)</source>
         <translation>%1 %2（记录 %3）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="377"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="382"/>
         <source>Cause: %1</source>
         <translation>原因：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="379"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="384"/>
         <source>Remedy: %1</source>
         <translation>处理方法：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="381"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="386"/>
         <source>To clear: %1</source>
         <translation>清除方法：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="410"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="415"/>
         <source>Writes: %1</source>
         <translation>写入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="411"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="416"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>若原因已排除，将清除当前报警。部分报警只能通过重新上电清除；结果会给出提示。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="414"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="419"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>该驱动器设定为仅通过重新上电清除报警（%1）。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="416"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="418"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="421"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="423"/>
         <source>Reset alarm</source>
         <translation>报警复位</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="417"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="422"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>向站号 %1 发送报警复位命令？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="425"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="430"/>
         <source>Sending the alarm reset…</source>
         <translation>正在发送报警复位…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="431"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="436"/>
         <source>Alarm reset: %1</source>
         <translation>报警复位：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="434"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="439"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>请关闭驱动器电源，等待 5 s 后再接通。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="445"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="450"/>
         <source>%1 (%2 records)</source>
         <translation>%1（%2 条记录）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="447"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="452"/>
         <source>the alarm and warning records</source>
         <translation>报警和警告记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="448"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="453"/>
         <source>Clear records</source>
         <translation>清除记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="449"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="454"/>
         <source>Erase %1 of machine %2?</source>
         <translation>清除站号 %2 的%1？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="449"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="454"/>
         <source> and </source>
         <translation> 和 </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="450"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>记录清除后无法恢复。写入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="452"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
         <source>Erase</source>
         <translation>清除</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="459"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="464"/>
         <source>Erasing the records…</source>
         <translation>正在清除记录…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="467"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="472"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>已清除：%1（%2 条记录）；%3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="470"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="475"/>
         <source>read back empty.</source>
         <translation>回读为空。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="471"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="476"/>
         <source>NOT empty when read back.</source>
         <translation>回读时不为空。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="473"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
         <source>Erasing failed: %1</source>
         <translation>清除失败：%1</translation>
     </message>
@@ -2303,7 +2290,22 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>
+连接（所有与驱动器通信的命令）：
+  --port PATH | --tcp HOST:PORT | --sim SPEC
+  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
+  默认值随系列而定：dbu 19200 8N1，dcpid 9600 8E1；--timeout 200，
+  --retries 3（线路有干扰时再加 2 次：即最近有请求需要重试）。
+输出：--json  --trace  --variant VARIANT  --lang CODE
+通信组：--bus-drives LIST（或 OPENTOP_BUS_DRIVES）：写入或执行命令前
+检查其通信组的驱动器
+
+退出码：0 成功，1 通信失败，2 用法错误，3 值或文件无效
+（未写入任何内容），4 校验不一致或驱动器未停止，
+130 被 Ctrl-C、SIGTERM 或 SIGHUP 中断（会报告已完成的操作）。
+
+&quot;%1 help COMMAND&quot; 显示命令的选项。
+</translation>
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="153"/>
@@ -6412,14 +6414,14 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::Language</name>
     <message>
-        <location filename="../model/i18n/Language.cpp" line="137"/>
+        <location filename="../model/i18n/Language.cpp" line="139"/>
         <source>unknown language &apos;%1&apos;; available: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>未知的语言“%1”；可用：%2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/Language.cpp" line="151"/>
+        <location filename="../model/i18n/Language.cpp" line="154"/>
         <source>the %1 translation is missing from this build</source>
-        <translation type="unfinished"></translation>
+        <translation>此版本缺少 %1 翻译</translation>
     </message>
 </context>
 <context>
@@ -6427,12 +6429,12 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
     <message>
         <location filename="../ui/i18n/LanguageMenu.cpp" line="10"/>
         <source>&amp;Language</source>
-        <translation type="unfinished"></translation>
+        <translation>语言(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/i18n/LanguageMenu.cpp" line="15"/>
+        <location filename="../ui/i18n/LanguageMenu.cpp" line="16"/>
         <source>System language (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>系统语言（%1）</translation>
     </message>
 </context>
 <context>
@@ -6535,12 +6537,12 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
     <message>
         <location filename="../ui/main/MainMenus.cpp" line="109"/>
         <source>Language</source>
-        <translation type="unfinished"></translation>
+        <translation>语言</translation>
     </message>
     <message>
         <location filename="../ui/main/MainMenus.cpp" line="110"/>
         <source>OpenTOP will be in %1 the next time it starts.</source>
-        <translation type="unfinished"></translation>
+        <translation>OpenTOP 下次启动时将以 %1 显示。</translation>
     </message>
     <message>
         <location filename="../ui/main/MainMenus.cpp" line="116"/>
@@ -11325,12 +11327,42 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 Prints &quot;pty: PATH&quot; (and &quot;tcp: HOST:PORT&quot;), then &quot;ready&quot;. Reads console commands
 from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>用法：opentop-sim --devices SPEC [选项]
+在伪终端上或作为 Modbus TCP 网关模拟 Modbus RTU 驱动器。
+
+  --devices SPEC     设备和站号，例如 dbu200@1,dbu400@150,dcpid@7
+  --pty [PATH]       在 pty 上提供服务（默认）；PATH：同时创建该符号链接
+  --tcp HOST:PORT    提供 Modbus TCP 服务（HOST 默认为 127.0.0.1，PORT 0：任意）
+  --baud N           用于线路时序和设备设定的线路速率（19200）
+  --parity N|E|O     线路校验位（N）
+  --wire-timing      按 --baud 下真实线路的时序延迟应答
+  --turnaround MS    使用 --wire-timing 时设备的转换时间（2）
+  --faults LIST      例如 drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
+  --seed N           故障注入的随机种子（1）
+  --defect ID:LIST   驱动器 ID 的缺陷（可重复），LIST 取值：
+                       firmware=MAJOR.MINOR  识别时报告该版本
+                       max_speed=N           电机在 N 处饱和（DBU r/min，
+                                             DC 换相次数/s），负载高
+                       stall                 电机不转，负载高
+                       load=+N|-N|xF         负载率（DC：电流 %）偏移或缩放
+                       alarm=CODE@TIME       运行 TIME 后报警，例如
+                                             0x07@1500ms、overload@2s（DC：stall@1s）
+                       nostick=PARAM         写入被应答，但旧值保持不变
+                       nostore=PARAM         下次重新上电时值丢失
+                     例如 --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
+  --quiet            不在 stderr 上输出报文跟踪
+  --lang CODE        消息的语言：en, zh_TW, zh_CN, ko, ja
+  --help             本说明
+  --version          程序版本
+
+输出 &quot;pty: PATH&quot;（以及 &quot;tcp: HOST:PORT&quot;），然后输出 &quot;ready&quot;。从 stdin 读取控制台命令
+（输入 help）。收到 SIGINT、SIGTERM 或 quit 时停止。
+</translation>
     </message>
     <message>
         <location filename="../sim/SimOptions.cpp" line="81"/>
         <source>--lang needs a language code such as ko</source>
-        <translation type="unfinished"></translation>
+        <translation>--lang 需要语言代码，例如 ko</translation>
     </message>
     <message>
         <location filename="../sim/SimOptions.cpp" line="84"/>
@@ -12140,7 +12172,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     </message>
     <message>
         <location filename="../ui/traffic/TrafficLogView.cpp" line="44"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="157"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="161"/>
         <source>&amp;Pause</source>
         <translation>暂停(&amp;P)</translation>
     </message>
@@ -12245,44 +12277,44 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>各驱动器统计</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="157"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="161"/>
         <source>&amp;Resume</source>
         <translation>继续(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="211"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="264"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="215"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="268"/>
         <source>Broadcast</source>
         <translation>广播</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="211"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="215"/>
         <source>Drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="253"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="257"/>
         <source>%1 addresses did not answer: %2</source>
         <translation>%1 个地址未应答：%2</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="255"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="259"/>
         <source>No reply from machine numbers %1</source>
         <translation>站号 %1 无应答</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="281"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="286"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="285"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="290"/>
         <source>Save traffic log</source>
         <translation>保存报文日志</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="281"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="285"/>
         <source>Text files (*.txt)</source>
         <translation>文本文件 (*.txt)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="287"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="291"/>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
     </message>
@@ -12860,17 +12892,17 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>时间 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="85"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="86"/>
         <source>Drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="277"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="278"/>
         <source>There is no trend data to export yet.</source>
         <translation>尚无可导出的趋势数据。</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="290"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="291"/>
         <source>Cannot write the picture %1.</source>
         <translation>无法写入图片 %1。</translation>
     </message>

@@ -31,19 +31,6 @@
     </message>
 </context>
 <context>
-    <name>SimulatorProcess</name>
-    <message>
-        <location filename="../app/bench/main.cpp" line="230"/>
-        <source>cannot start %1: %2</source>
-        <translation>無法啟動 %1：%2</translation>
-    </message>
-    <message>
-        <location filename="../app/bench/main.cpp" line="236"/>
-        <source>opentop-sim did not get ready: %1</source>
-        <translation>opentop-sim 未能就緒：%1</translation>
-    </message>
-</context>
-<context>
     <name>main</name>
     <message>
         <location filename="../app/gui/main.cpp" line="54"/>
@@ -53,7 +40,7 @@
     <message>
         <location filename="../app/gui/main.cpp" line="58"/>
         <source>Language of the program: %1 (default: the language menu&apos;s choice, else the system&apos;s).</source>
-        <translation type="unfinished"></translation>
+        <translation>程式的語言：%1（預設：語言選單的選擇，否則為系統語言）。</translation>
     </message>
     <message>
         <location filename="../app/gui/MonitorOptions.cpp" line="75"/>
@@ -245,12 +232,12 @@
     <message>
         <location filename="../cli/CliApp.cpp" line="43"/>
         <source>Language of the human output: en, zh_TW, zh_CN, ko, ja (default: the system&apos;s). --json output is the same in every language.</source>
-        <translation type="unfinished"></translation>
+        <translation>供人閱讀之輸出的語言：en、zh_TW、zh_CN、ko、ja（預設：系統語言）。--json 輸出在各語言中都相同。</translation>
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="45"/>
         <source>CODE</source>
-        <translation type="unfinished"></translation>
+        <translation>CODE</translation>
     </message>
     <message>
         <location filename="../cli/StopAllCommand.cpp" line="28"/>
@@ -739,123 +726,123 @@
         <translation>機號 %1 (%2) 的警報與警告</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>Code</source>
         <translation>代碼</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>Panel</source>
         <translation>面板</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>Name</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="87"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
         <source>Cleared by</source>
         <translation>解除方式</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="102"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="107"/>
         <source>Cause and remedy</source>
         <translation>原因與對策</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="103"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="108"/>
         <source>Communication error register</source>
         <translation>通訊錯誤暫存器</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="115"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="120"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>送出警報重置指令，並告知警報是否已解除或只能斷電重新上電解除</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="117"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="122"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>清除驅動器保存的警報與警告記錄</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="122"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="127"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="298"/>
         <source>Select a record to see its cause and remedy.</source>
         <translation>選擇一筆記錄以查看其原因與對策。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="123"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="128"/>
         <source>Not read yet.</source>
         <translation>尚未讀取。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="130"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>此驅動器不保存警報或警告記錄。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="155"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="160"/>
         <source>Alarm state: %1</source>
         <translation>警報狀態：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="247"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="252"/>
         <source>Reading the records…</source>
         <translation>正在讀取記錄…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="263"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="268"/>
         <source>No alarm is active.</source>
         <translation>目前無警報。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="265"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="270"/>
         <source>Alarm active: %1 %2.</source>
         <translation>警報發生中：%1 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="267"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="272"/>
         <source>An alarm is active.</source>
         <translation>有警報發生中。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="270"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>此驅動器設定為僅能斷電重新上電解除警報 (%1)：Alarm-Reset 無法解除任何警報。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="274"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="279"/>
         <source>Could not be read: %1</source>
         <translation>無法讀取：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="300"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="305"/>
         <source>This drive has no communication error register.</source>
         <translation>此驅動器沒有通訊錯誤暫存器。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="302"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="307"/>
         <source>%1: could not be read.</source>
         <translation>%1：無法讀取。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="304"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="309"/>
         <source>%1: no error (0).</source>
         <translation>%1：無錯誤 (0)。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="307"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
         <source>%1: %2, not a known code.</source>
         <translation>%1：%2，非已知代碼。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="309"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
         <source>%1: %2 %3
 Cause: %4
 Remedy: %5</source>
@@ -864,153 +851,153 @@ Remedy: %5</source>
 對策：%5</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="321"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="326"/>
         <source>No alarm records</source>
         <translation>無警報記錄</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="321"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="326"/>
         <source>No warning records</source>
         <translation>無警告記錄</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="327"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="332"/>
         <source>%1: could not be read: %2</source>
         <translation>%1：無法讀取：%2</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="330"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="335"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1：共 %3 筆記錄中的 %2 筆，最新的在前</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="341"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="346"/>
         <source>unknown code</source>
         <translation>未知代碼</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="370"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="375"/>
         <source>Record %1: code %2 is not in the %3 table.</source>
         <translation>記錄 %1：代碼 %2 不在%3表中。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="375"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="380"/>
         <source>%1 %2 (record %3)</source>
         <translation>%1 %2 (記錄 %3)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="377"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="382"/>
         <source>Cause: %1</source>
         <translation>原因：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="379"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="384"/>
         <source>Remedy: %1</source>
         <translation>對策：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="381"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="386"/>
         <source>To clear: %1</source>
         <translation>解除方法：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="410"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="415"/>
         <source>Writes: %1</source>
         <translation>寫入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="411"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="416"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>若原因已排除，即可解除發生中的警報。部分警報只能斷電重新上電解除；結果會顯示是哪一種。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="414"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="419"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>此驅動器設定為僅能斷電重新上電解除警報 (%1)。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="416"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="418"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="421"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="423"/>
         <source>Reset alarm</source>
         <translation>警報重置</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="417"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="422"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>要對機號 %1 送出警報重置指令嗎？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="425"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="430"/>
         <source>Sending the alarm reset…</source>
         <translation>正在送出警報重置…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="431"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="436"/>
         <source>Alarm reset: %1</source>
         <translation>警報重置：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="434"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="439"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>請關閉驅動器電源，等待 5 s 後再開啟。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="445"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="450"/>
         <source>%1 (%2 records)</source>
         <translation>%1 (%2 筆記錄)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="447"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="452"/>
         <source>the alarm and warning records</source>
         <translation>警報與警告記錄</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="448"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="453"/>
         <source>Clear records</source>
         <translation>清除記錄</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="449"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="454"/>
         <source>Erase %1 of machine %2?</source>
         <translation>要清除機號 %2 的%1嗎？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="449"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="454"/>
         <source> and </source>
         <translation> 與 </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="450"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>記錄清除後無法復原。寫入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="452"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
         <source>Erase</source>
         <translation>清除</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="459"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="464"/>
         <source>Erasing the records…</source>
         <translation>正在清除記錄…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="467"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="472"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>已清除：%1 (%2 筆記錄)；%3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="470"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="475"/>
         <source>read back empty.</source>
         <translation>回讀為空。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="471"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="476"/>
         <source>NOT empty when read back.</source>
         <translation>回讀結果「不是」空的。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="473"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
         <source>Erasing failed: %1</source>
         <translation>清除失敗：%1</translation>
     </message>
@@ -2303,7 +2290,22 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>
+連線 (所有與驅動器通訊的指令)：
+  --port PATH | --tcp HOST:PORT | --sim SPEC
+  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
+  預設值依系列而定：dbu 19200 8N1，dcpid 9600 8E1；--timeout 200，
+  --retries 3 (線路雜訊多時再加 2 次：即最近有請求需要重試時)。
+輸出：--json  --trace  --variant VARIANT  --lang CODE
+群組：--bus-drives LIST (或 OPENTOP_BUS_DRIVES)：寫入或下指令前
+要檢查其通訊群組的驅動器
+
+結束碼：0 成功，1 通訊失敗，2 用法錯誤，3 值或檔案無效
+(未寫入任何資料)，4 驗證不符或驅動器未停止，
+130 被 Ctrl-C、SIGTERM 或 SIGHUP 中斷 (會回報已完成的操作)。
+
+&quot;%1 help COMMAND&quot; 顯示指令的選項。
+</translation>
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="153"/>
@@ -6412,14 +6414,14 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::Language</name>
     <message>
-        <location filename="../model/i18n/Language.cpp" line="137"/>
+        <location filename="../model/i18n/Language.cpp" line="139"/>
         <source>unknown language &apos;%1&apos;; available: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>未知的語言「%1」；可用：%2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/Language.cpp" line="151"/>
+        <location filename="../model/i18n/Language.cpp" line="154"/>
         <source>the %1 translation is missing from this build</source>
-        <translation type="unfinished"></translation>
+        <translation>此版本缺少 %1 翻譯</translation>
     </message>
 </context>
 <context>
@@ -6427,12 +6429,12 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     <message>
         <location filename="../ui/i18n/LanguageMenu.cpp" line="10"/>
         <source>&amp;Language</source>
-        <translation type="unfinished"></translation>
+        <translation>語言(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/i18n/LanguageMenu.cpp" line="15"/>
+        <location filename="../ui/i18n/LanguageMenu.cpp" line="16"/>
         <source>System language (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>系統語言（%1）</translation>
     </message>
 </context>
 <context>
@@ -6535,12 +6537,12 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     <message>
         <location filename="../ui/main/MainMenus.cpp" line="109"/>
         <source>Language</source>
-        <translation type="unfinished"></translation>
+        <translation>語言</translation>
     </message>
     <message>
         <location filename="../ui/main/MainMenus.cpp" line="110"/>
         <source>OpenTOP will be in %1 the next time it starts.</source>
-        <translation type="unfinished"></translation>
+        <translation>OpenTOP 下次啟動時將以 %1 顯示。</translation>
     </message>
     <message>
         <location filename="../ui/main/MainMenus.cpp" line="116"/>
@@ -11325,12 +11327,42 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 Prints &quot;pty: PATH&quot; (and &quot;tcp: HOST:PORT&quot;), then &quot;ready&quot;. Reads console commands
 from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>用法：opentop-sim --devices SPEC [選項]
+在虛擬終端機上或以 Modbus TCP 閘道器形式模擬 Modbus RTU 驅動器。
+
+  --devices SPEC     裝置與機號，例如 dbu200@1,dbu400@150,dcpid@7
+  --pty [PATH]       在 pty 上提供服務 (預設)；PATH：同時建立此符號連結
+  --tcp HOST:PORT    提供 Modbus TCP 服務 (HOST 預設為 127.0.0.1，PORT 0：任意)
+  --baud N           用於線路時序與裝置設定的鮑率 (19200)
+  --parity N|E|O     線路同位元 (N)
+  --wire-timing      依實際線路在 --baud 下的速度延遲回應
+  --turnaround MS    搭配 --wire-timing 的裝置回轉時間 (2)
+  --faults LIST      例如 drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
+  --seed N           故障注入的亂數種子 (1)
+  --defect ID:LIST   驅動器 ID 的缺陷 (可重複指定)，LIST 可包含：
+                       firmware=MAJOR.MINOR  識別時回報此版本
+                       max_speed=N           馬達在 N 飽和 (DBU 為 r/min，
+                                             DC 為換相次數/s)，負載偏高
+                       stall                 馬達不轉動，負載偏高
+                       load=+N|-N|xF         負載率 (DC：電流 %) 偏移或縮放
+                       alarm=CODE@TIME       運轉 TIME 後發生警報，例如
+                                             0x07@1500ms、overload@2s (DC：stall@1s)
+                       nostick=PARAM         寫入有回應確認，但保留舊值
+                       nostore=PARAM         下次斷電重新上電後值遺失
+                     例如 --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
+  --quiet            不在 stderr 輸出訊框追蹤
+  --lang CODE        訊息的語言：en, zh_TW, zh_CN, ko, ja
+  --help             本說明
+  --version          程式版本
+
+輸出 &quot;pty: PATH&quot; (以及 &quot;tcp: HOST:PORT&quot;)，然後輸出 &quot;ready&quot;。從 stdin 讀取主控台
+指令 (輸入 help)。收到 SIGINT、SIGTERM 或 quit 時停止。
+</translation>
     </message>
     <message>
         <location filename="../sim/SimOptions.cpp" line="81"/>
         <source>--lang needs a language code such as ko</source>
-        <translation type="unfinished"></translation>
+        <translation>--lang 需要語言代碼，例如 ko</translation>
     </message>
     <message>
         <location filename="../sim/SimOptions.cpp" line="84"/>
@@ -12140,7 +12172,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     </message>
     <message>
         <location filename="../ui/traffic/TrafficLogView.cpp" line="44"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="157"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="161"/>
         <source>&amp;Pause</source>
         <translation>暫停(&amp;P)</translation>
     </message>
@@ -12245,44 +12277,44 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>各驅動器統計</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="157"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="161"/>
         <source>&amp;Resume</source>
         <translation>繼續(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="211"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="264"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="215"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="268"/>
         <source>Broadcast</source>
         <translation>廣播</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="211"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="215"/>
         <source>Drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="253"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="257"/>
         <source>%1 addresses did not answer: %2</source>
         <translation>%1 個位址未回應：%2</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="255"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="259"/>
         <source>No reply from machine numbers %1</source>
         <translation>機號 %1 無回應</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="281"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="286"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="285"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="290"/>
         <source>Save traffic log</source>
         <translation>儲存通訊記錄</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="281"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="285"/>
         <source>Text files (*.txt)</source>
         <translation>文字檔 (*.txt)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="287"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="291"/>
         <source>Could not save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
@@ -12860,17 +12892,17 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>時間 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="85"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="86"/>
         <source>Drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="277"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="278"/>
         <source>There is no trend data to export yet.</source>
         <translation>尚無可匯出的趨勢資料。</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="290"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="291"/>
         <source>Cannot write the picture %1.</source>
         <translation>無法寫入圖片 %1。</translation>
     </message>
