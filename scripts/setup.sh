@@ -39,6 +39,9 @@ packages=(
     mbpoll socat python3-pymodbus
     # the GUI without a display: a virtual X server, its auth, a screenshot tool and fonts
     xvfb xauth imagemagick fonts-dejavu-core
+    # the program in Chinese, Korean and Japanese: CJK glyphs (no text as boxes) and Qt's own
+    # translations (standard dialog buttons)
+    fonts-noto-cjk qt6-translations-l10n
 )
 
 missing=()
