@@ -173,10 +173,10 @@ void EolDriveRun::written(const RestorePlan& plan)
         // the language of the station: records of every station are read and compared together.
         w.label = meta ? meta->canonicalLabel : item.parameter;
         const BackupParameter* want = m_target.parameter(item.parameter);
-        w.value = meta && want ? ValueCodec::formatCanonical(
-                                     *meta, ValueCodec::decode(*meta, want->registers, context),
-                                     context)
-                               : item.fileText;
+        w.value = meta && want
+                      ? ValueCodec::formatCanonical(
+                            *meta, ValueCodec::decode(*meta, want->registers, context), context)
+                      : item.fileText;
         w.written = item.action == RestorePlan::Item::Action::Write &&
                     item.status != RestorePlan::Item::Status::NotAttempted;
         w.verified = false; // proven by the read below

@@ -523,8 +523,7 @@ void EolStepRunner::runRead(const RecipeStep& step)
             const bool pass = r.value.text == step.equals;
             // The code as the value, the label it reads as in the quantity's name.
             record(tr("%1 (%2)").arg(recordLabelOf(limit.parameter), r.value.text), r.value.raw,
-                   QString(), std::nullopt,
-                   std::nullopt, pass);
+                   QString(), std::nullopt, std::nullopt, pass);
             if (!pass) {
                 fail(tr("%1: %2 reads \"%3\", expected \"%4\"")
                          .arg(stepText(), label, r.value.text, step.equals));
@@ -534,7 +533,8 @@ void EolStepRunner::runRead(const RecipeStep& step)
             return;
         }
         const bool pass = withinLimits(r.value.number, limit.lower, limit.upper);
-        record(recordLabelOf(limit.parameter), r.value.number, unit, limit.lower, limit.upper, pass);
+        record(recordLabelOf(limit.parameter), r.value.number, unit, limit.lower, limit.upper,
+               pass);
         if (!pass) {
             fail(tr("%1: %2 reads %3 %4, %5")
                      .arg(stepText(), label, number(r.value.number), unit,

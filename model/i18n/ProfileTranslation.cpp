@@ -86,11 +86,9 @@ std::optional<ProfileTranslation> ProfileTranslation::loadFile(const QString& pa
     return loadJson(data, QFileInfo(path).fileName(), profile, language, error);
 }
 
-std::optional<ProfileTranslation> ProfileTranslation::loadJson(const QByteArray& json,
-                                                               const QString& sourceName,
-                                                               const Profile& profile,
-                                                               const QString& language,
-                                                               QString* error)
+std::optional<ProfileTranslation>
+ProfileTranslation::loadJson(const QByteArray& json, const QString& sourceName,
+                             const Profile& profile, const QString& language, QString* error)
 {
     auto fail = [&](const QString& message) {
         if (error)
@@ -118,8 +116,8 @@ std::optional<ProfileTranslation> ProfileTranslation::loadJson(const QByteArray&
     t.m_family = root.value(QStringLiteral("family")).toString();
     t.m_language = root.value(QStringLiteral("language")).toString();
     if (t.m_family != profile.family)
-        return fail(tr("\"family\" is \"%1\", but the profile is \"%2\"")
-                        .arg(t.m_family, profile.family));
+        return fail(
+            tr("\"family\" is \"%1\", but the profile is \"%2\"").arg(t.m_family, profile.family));
     if (t.m_language.isEmpty() || (!language.isEmpty() && t.m_language != language))
         return fail(tr("\"language\" is \"%1\", expected \"%2\"").arg(t.m_language, language));
     const QJsonValue texts = root.value(QStringLiteral("texts"));

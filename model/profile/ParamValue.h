@@ -10,8 +10,8 @@ struct ParamValue
 {
     bool valid = false; // false when the registers could not be decoded
     QVector<quint16> registers;
-    double raw = 0;      // integer types: the integer; f32: the float
-    double number = 0;   // engineering value (raw * scale)
+    double raw = 0;    // integer types: the integer; f32: the float
+    double number = 0; // engineering value (raw * scale)
     // Strings: the text; enumerations: the profile's English label (EnumOption::canonicalLabel),
     // an interface like the raw value. For people: ValueCodec::format.
     QString text;

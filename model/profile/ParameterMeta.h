@@ -91,7 +91,7 @@ struct ValueCondition
 // Metadata only: values live in the device model, conversions in ValueCodec.
 struct ParameterMeta
 {
-    QString name; // stable dotted name, unique in its profile: "spno2.speed"
+    QString name;           // stable dotted name, unique in its profile: "spno2.speed"
     QString label;          // for people: in the profile language (ProfileTranslation)
     QString canonicalLabel; // the profile's English label: result records, files
     QString help;

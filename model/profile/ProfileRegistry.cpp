@@ -40,13 +40,14 @@ bool isEnglish(const QString& language)
 bool ProfileRegistry::setLanguage(const QString& language)
 {
     LanguageState& state = languageState();
-    if (state.builtInMade && language != state.language) {
+    const QString wanted = isEnglish(language) ? QString() : language;
+    if (state.builtInMade && wanted != state.language) {
         qCWarning(lcModel) << "profile language" << language
                            << "set after the profiles were loaded; they stay in"
                            << (state.language.isEmpty() ? QStringLiteral("en") : state.language);
         return false;
     }
-    state.language = isEnglish(language) ? QString() : language;
+    state.language = wanted;
     return true;
 }
 
@@ -68,8 +69,9 @@ std::optional<ProfileRegistry> ProfileRegistry::load(const QString& language, QS
         if (!p)
             return std::nullopt;
         if (!isEnglish(language)) {
-            const QString path = QDir(translationDir)
-                                     .filePath(QStringLiteral("%1.%2.json").arg(p->family, language));
+            const QString path =
+                QDir(translationDir)
+                    .filePath(QStringLiteral("%1.%2.json").arg(p->family, language));
             if (QFile::exists(path)) {
                 const std::optional<ProfileTranslation> t =
                     ProfileTranslation::loadFile(path, *p, language, error);
