@@ -94,6 +94,17 @@ bool CliApp::needsGui(const QStringList& arguments)
     return eol > 0 && arguments.indexOf(QStringLiteral("certificate"), eol) > eol;
 }
 
+QString CliApp::profileLanguage(const QStringList& arguments, const QString& language)
+{
+    for (const QString& a : arguments.mid(1)) {
+        if (a == QLatin1String("--"))
+            break;
+        if (a == QLatin1String("--json") || a.startsWith(QLatin1String("--json=")))
+            return QStringLiteral("en");
+    }
+    return language.isEmpty() ? QStringLiteral("en") : language;
+}
+
 int CliApp::run(const QStringList& arguments, QTextStream& out, QTextStream& err)
 {
     const QString program = QFileInfo(arguments.value(0, QStringLiteral("opentop-cli"))).fileName();

@@ -22,6 +22,11 @@ public:
     // True when the command line needs a QGuiApplication (offscreen) rather than a
     // QCoreApplication: drawing a certificate's PDF (eol certificate).
     static bool needsGui(const QStringList& arguments);
+    // The language of the device profiles' texts for this command line, to give
+    // ProfileRegistry::setLanguage before anything loads the profiles: `language` (the program's
+    // language), except "en" with --json: JSON is for programs and keeps the profiles' English
+    // (labels, units, alarm names), the same on every machine.
+    static QString profileLanguage(const QStringList& arguments, const QString& language);
     const std::vector<std::unique_ptr<CliCommand>>& commands() const { return m_commands; }
 
 private:

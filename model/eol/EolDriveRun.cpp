@@ -161,6 +161,7 @@ void EolDriveRun::write()
 void EolDriveRun::written(const RestorePlan& plan)
 {
     const Profile& profile = m_session->profile();
+    const ValueContext context = m_session->context();
     for (const RestorePlan::Item& item : plan.items) {
         if (item.action == RestorePlan::Item::Action::Store)
             continue;
@@ -168,8 +169,14 @@ void EolDriveRun::written(const RestorePlan& plan)
         WrittenValue w;
         w.machineNumber = m_position.machineNumber;
         w.parameter = item.parameter;
-        w.label = meta ? meta->label : item.parameter;
-        w.value = item.fileText;
+        // A result record holds the profile's English (canonicalLabel, formatCanonical), whatever
+        // the language of the station: records of every station are read and compared together.
+        w.label = meta ? meta->canonicalLabel : item.parameter;
+        const BackupParameter* want = m_target.parameter(item.parameter);
+        w.value = meta && want
+                      ? ValueCodec::formatCanonical(
+                            *meta, ValueCodec::decode(*meta, want->registers, context), context)
+                      : item.fileText;
         w.written = item.action == RestorePlan::Item::Action::Write &&
                     item.status != RestorePlan::Item::Status::NotAttempted;
         w.verified = false; // proven by the read below
@@ -216,7 +223,7 @@ void EolDriveRun::verify()
                         firstFailure = tr("%1 cannot be read back: %2").arg(w.label, r.error);
                     continue;
                 }
-                w.readBack = ValueCodec::format(*meta, r.value, context);
+                w.readBack = ValueCodec::formatCanonical(*meta, r.value, context);
                 w.verified = r.value.registers == want->registers;
                 if (!w.verified && firstFailure.isEmpty())
                     firstFailure = tr("%1 does not keep its value: set to %2, reads %3")

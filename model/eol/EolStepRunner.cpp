@@ -98,10 +98,16 @@ QString EolStepRunner::labelOf(const QString& parameter) const
     return meta ? meta->label : parameter;
 }
 
+QString EolStepRunner::recordLabelOf(const QString& parameter) const
+{
+    const ParameterMeta* meta = m_session ? m_session->profile().parameter(parameter) : nullptr;
+    return meta ? meta->canonicalLabel : parameter;
+}
+
 QString EolStepRunner::unitOf(const QString& parameter) const
 {
     const ParameterMeta* meta = m_session ? m_session->profile().parameter(parameter) : nullptr;
-    return meta ? meta->specFor(m_session->context()).unit : QString();
+    return meta ? meta->specFor(m_session->context()).canonicalUnit : QString();
 }
 
 void EolStepRunner::record(const QString& quantity, double value, const QString& unit,
@@ -400,7 +406,7 @@ void EolStepRunner::runHold(const RecipeStep& step)
             for (const RecipeLimit& l : step.limits) {
                 const Stats s = stats->value(l.parameter);
                 const QString quantity =
-                    QStringLiteral("%1 %2").arg(labelOf(l.parameter), l.statistic);
+                    QStringLiteral("%1 %2").arg(recordLabelOf(l.parameter), l.statistic);
                 const QString unit = unitOf(l.parameter);
                 if (!s.count) {
                     if (firstFailure.isEmpty())
@@ -516,8 +522,8 @@ void EolStepRunner::runRead(const RecipeStep& step)
         if (!step.equals.isEmpty()) {
             const bool pass = r.value.text == step.equals;
             // The code as the value, the label it reads as in the quantity's name.
-            record(tr("%1 (%2)").arg(label, r.value.text), r.value.raw, QString(), std::nullopt,
-                   std::nullopt, pass);
+            record(tr("%1 (%2)").arg(recordLabelOf(limit.parameter), r.value.text), r.value.raw,
+                   QString(), std::nullopt, std::nullopt, pass);
             if (!pass) {
                 fail(tr("%1: %2 reads \"%3\", expected \"%4\"")
                          .arg(stepText(), label, r.value.text, step.equals));
@@ -527,7 +533,8 @@ void EolStepRunner::runRead(const RecipeStep& step)
             return;
         }
         const bool pass = withinLimits(r.value.number, limit.lower, limit.upper);
-        record(label, r.value.number, unit, limit.lower, limit.upper, pass);
+        record(recordLabelOf(limit.parameter), r.value.number, unit, limit.lower, limit.upper,
+               pass);
         if (!pass) {
             fail(tr("%1: %2 reads %3 %4, %5")
                      .arg(stepText(), label, number(r.value.number), unit,

@@ -89,6 +89,7 @@ private:
     void finish(bool ok);
     QString stepText() const;
     QString labelOf(const QString& parameter) const;
+    QString recordLabelOf(const QString& parameter) const; // English: for result records
     QString unitOf(const QString& parameter) const;
     bool current(quint64 token) const { return token == m_token; }
 

@@ -55,7 +55,7 @@ std::optional<BackupDevice> EolTarget::build(const Profile& profile, const Recip
                                     .arg(value)
                                     .arg(u.min)
                                     .arg(u.max)
-                                    .arg(meta->specFor(context).unit)
+                                    .arg(meta->specFor(context).canonicalUnit)
                                     .trimmed());
         const ValueCodec::Encoded e = ValueCodec::encodeNumber(*meta, value, context);
         if (!e.ok)

@@ -48,7 +48,7 @@ RecipeLimit limit(const Profile& profile, const QString& parameter, const char* 
 {
     const ParameterMeta* meta = profile.parameter(parameter);
     return RecipeLimit{parameter, QString::fromLatin1(statistic), lower, upper,
-                       meta ? meta->spec.unit : QString()};
+                       meta ? meta->spec.canonicalUnit : QString()};
 }
 
 double rounded(double value, int decimals)
@@ -104,7 +104,7 @@ QVector<RecipeStep> dbuSteps(const Profile& profile, const RecipePosition& posit
     s.target = target;
     s.tolerance = tolerance;
     if (const ParameterMeta* speed = profile.parameter(roleParameter(profile, "currentSpeed")))
-        s.unit = speed->spec.unit;
+        s.unit = speed->spec.canonicalUnit;
     s.timeout = rounded(accel + 5, 1);
     steps << s;
     s = RecipeStep();
@@ -140,19 +140,19 @@ QVector<RecipeStep> dcSteps(const Profile& profile, const RecipePosition& positi
     RecipeStep s;
     s.type = RecipeStep::Type::Speed;
     s.speed = value;
-    s.unit = spec.unit;
+    s.unit = spec.canonicalUnit;
     steps << s;
     s = RecipeStep();
     s.type = RecipeStep::Type::Hold;
     s.duration = kHoldSeconds;
-    if (speed && spec.unit == speed->spec.unit) {
+    if (speed && spec.canonicalUnit == speed->spec.canonicalUnit) {
         // The command is itself a speed (the speed loop): wait for it and hold it.
         const double tolerance = std::max(1.0, std::round(value * kSpeedTolerance * 2));
         RecipeStep wait;
         wait.type = RecipeStep::Type::WaitSpeed;
         wait.target = value;
         wait.tolerance = tolerance;
-        wait.unit = spec.unit;
+        wait.unit = spec.canonicalUnit;
         wait.timeout = 10;
         steps << wait;
         speedLimits(profile, value, tolerance, &s);
@@ -164,7 +164,7 @@ QVector<RecipeStep> dcSteps(const Profile& profile, const RecipePosition& positi
     const ProfileRole* monitor = profile.role(QStringLiteral("monitor"));
     for (const QString& name : monitor ? monitor->parameters : QStringList()) {
         const ParameterMeta* meta = profile.parameter(name);
-        const bool current = meta && meta->spec.unit == QLatin1String("A");
+        const bool current = meta && meta->spec.canonicalUnit == QLatin1String("A");
         if (!current && name != roleParameter(profile, "running"))
             continue;
         double max = 0;
@@ -236,7 +236,7 @@ std::optional<RecipePosition> RecipeBuilder::positionFrom(const BackupDevice& de
         else
             s.value = BackupFile::valueOf(*meta, p.registers, context);
         if (s.value.isDouble())
-            s.unit = meta->specFor(context).unit;
+            s.unit = meta->specFor(context).canonicalUnit;
         position.settings << s;
     }
     position.steps = defaultSteps(*profile, position);

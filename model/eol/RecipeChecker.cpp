@@ -237,7 +237,7 @@ void RecipeChecker::checkSettings(const Profile& profile, const RecipePosition& 
                 report(QStringLiteral(".value"), e.error + forVariant(profile, position, variant));
                 break;
             }
-            const QString unit = meta.specFor(context).unit;
+            const QString unit = meta.specFor(context).canonicalUnit;
             if (!s.unit.isEmpty() && s.unit != unit) {
                 report(QStringLiteral(".unit"),
                        tr("%1: unit \"%2\", but the drive's value is in \"%3\"")
@@ -307,10 +307,10 @@ QString RecipeChecker::rangeProblem(const Profile& profile, const RecipePosition
         const ValueSpec& spec = meta.specFor(context);
         if (!meta.isNumeric() || (spec.ranges.isEmpty() && !spec.options.isEmpty()))
             return tr("%1 is not a number; a per-unit value needs a numeric setting").arg(label);
-        if (!value.unit.isEmpty() && value.unit != spec.unit)
+        if (!value.unit.isEmpty() && value.unit != spec.canonicalUnit)
             return tr("%1: unit \"%2\", but the drive's value is in \"%3\"")
-                .arg(label, value.unit, spec.unit);
-        const QString unit = spec.unit.isEmpty() ? QString() : QLatin1Char(' ') + spec.unit;
+                .arg(label, value.unit, spec.canonicalUnit);
+        const QString unit = spec.canonicalUnit.isEmpty() ? QString() : QLatin1Char(' ') + spec.canonicalUnit;
         const QString shown = tr("%1: range %2–%3%4")
                                   .arg(label, ValueCodec::formatNumber(value.min, spec.decimals),
                                        ValueCodec::formatNumber(value.max, spec.decimals), unit);
@@ -352,7 +352,7 @@ QString RecipeChecker::checkUnitValue(const Recipe& recipe, int machineNumber,
             if (!meta)
                 break;
             const QString unit =
-                meta->spec.unit.isEmpty() ? QString() : QLatin1Char(' ') + meta->spec.unit;
+                meta->spec.canonicalUnit.isEmpty() ? QString() : QLatin1Char(' ') + meta->spec.canonicalUnit;
             if (!std::isfinite(value) || value < u.min || value > u.max)
                 return tr("%1: per-unit value %2: %3%4 is outside the recipe's range %5–%6%4")
                     .arg(where, labelOf(*profile, parameter), QString::number(value), unit,

@@ -30,7 +30,7 @@ const ParameterMeta* RecipeStepChecker::roleParameter(const char* role) const
 
 QString RecipeStepChecker::unitOf(const ParameterMeta& meta, const QString& variant) const
 {
-    return meta.specFor(RecipeChecker::contextOf(m_profile, m_position, variant)).unit;
+    return meta.specFor(RecipeChecker::contextOf(m_profile, m_position, variant)).canonicalUnit;
 }
 
 bool RecipeStepChecker::needsRole(const char* role)
@@ -162,7 +162,7 @@ void RecipeStepChecker::checkStep(const RecipeStep& step)
                        e.error + RecipeChecker::forVariant(m_profile, m_position, variant));
                 return;
             }
-            const QString unit = meta->specFor(context).unit;
+            const QString unit = meta->specFor(context).canonicalUnit;
             if (!step.unit.isEmpty() && step.unit != unit) {
                 report(QStringLiteral(".unit"),
                        tr("unit \"%1\", but with these settings %2 is in \"%3\"")

@@ -225,8 +225,10 @@ QJsonObject BackupFile::toObject(const ProfileRegistry& registry) const
             if (meta) {
                 o.insert(QStringLiteral("address"), meta->addressText());
                 o.insert(QStringLiteral("value"), valueOf(*meta, p.registers, context));
-                o.insert(QStringLiteral("text"), d.text(*profile, p.name));
-                o.insert(QStringLiteral("unit"), meta->specFor(context).unit);
+                // The profile's English, whatever the profile language: a file is an interface.
+                o.insert(QStringLiteral("text"),
+                         ValueCodec::formatCanonical(*meta, d.value(*profile, p.name), context));
+                o.insert(QStringLiteral("unit"), meta->specFor(context).canonicalUnit);
             }
             parameters << o;
         }

@@ -37,7 +37,7 @@ QString exactText(const ParameterMeta& meta, const QVector<quint16>& registers,
 QString storeText(const ParameterMeta& command)
 {
     for (const EnumOption& o : command.spec.options) {
-        if (o.label.contains(QLatin1String("store"), Qt::CaseInsensitive))
+        if (o.canonicalLabel.contains(QLatin1String("store"), Qt::CaseInsensitive))
             return QString::number(o.value);
     }
     if (command.spec.options.size() == 1)

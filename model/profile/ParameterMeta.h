@@ -30,8 +30,11 @@ enum class Access
 struct EnumOption
 {
     qint64 value = 0;
-    QString label;
+    QString label; // for people: in the profile language (ProfileTranslation)
     QString help;
+    // The profile's English label: an interface, not a text for people. Backup and recipe files,
+    // result records and --json write it, and typed values are matched against it too.
+    QString canonicalLabel;
 };
 
 // An allowed interval in raw units (integers for integer types, the float itself for f32).
@@ -60,7 +63,8 @@ struct BitField
 struct ValueSpec
 {
     double scale = 1.0;               // engineering = raw * scale
-    QString unit;                     // "s", "r/min", "A", "%"...
+    QString unit;                     // "s", "r/min", "A", "%"... (profile language)
+    QString canonicalUnit;            // the profile's own unit, for files and --json
     int decimals = 0;                 // shown after the point
     QVector<ValueRange> ranges;       // allowed intervals (raw)
     QVector<EnumOption> options;      // allowed codes with labels (also allowed beside ranges)
@@ -76,14 +80,20 @@ struct ValueCondition
     QString param;
     qint64 equals = 0;
     ValueSpec spec;
+    // What the `when` entry gives itself; the rest of `spec` is the parameter's. The profile's
+    // texts (ProfileTexts) name only a condition's own texts.
+    bool ownUnit = false;
+    bool ownNote = false;
+    bool ownOptions = false;
 };
 
 // Everything known about one register or register group of a device, apart from its value.
 // Metadata only: values live in the device model, conversions in ValueCodec.
 struct ParameterMeta
 {
-    QString name; // stable dotted name, unique in its profile: "spno2.speed"
-    QString label;
+    QString name;           // stable dotted name, unique in its profile: "spno2.speed"
+    QString label;          // for people: in the profile language (ProfileTranslation)
+    QString canonicalLabel; // the profile's English label: result records, files
     QString help;
     QString group; // id of a ProfileGroup
     quint16 address = 0;

@@ -59,6 +59,7 @@ bool ParameterReader::read(const QJsonObject& o, ParameterMeta* meta)
     if (!nameRe.match(meta->name).hasMatch())
         return m_json.fail(tr("name must be lower-case dotted words: [a-z0-9_] separated by dots"));
     meta->label = m_json.string(o, QStringLiteral("label")).value_or(QString());
+    meta->canonicalLabel = meta->label;
     meta->help = m_json.string(o, QStringLiteral("help"), false).value_or(QString());
     meta->group = m_json.string(o, QStringLiteral("group")).value_or(QString());
     meta->kind = m_json.string(o, QStringLiteral("kind")).value_or(QString());
@@ -172,8 +173,10 @@ bool ParameterReader::readSpec(const QJsonObject& o, const ParameterMeta& meta, 
     }
     if (meta.type == DataType::F32 && !o.contains(QStringLiteral("decimals")))
         spec->decimals = std::max(spec->decimals, 4);
-    if (const auto unit = m_json.string(o, QStringLiteral("unit"), false))
+    if (const auto unit = m_json.string(o, QStringLiteral("unit"), false)) {
         spec->unit = *unit;
+        spec->canonicalUnit = *unit;
+    }
     if (const auto decimals = m_json.integer(o, QStringLiteral("decimals"), false)) {
         if (*decimals < 0 || *decimals > 9)
             return m_json.fail(tr("decimals must be 0–9"));
@@ -274,6 +277,7 @@ bool ParameterReader::readOptions(const QJsonArray& a, const ParameterMeta& /*me
         option.value = *value;
         option.label = e.value(QStringLiteral("label")).toString();
         option.help = e.value(QStringLiteral("help")).toString();
+        option.canonicalLabel = option.label;
         if (option.label.trimmed().isEmpty())
             return m_json.fail(tr("%1 has no label").arg(where));
         if (codes.contains(option.value) || labels.contains(option.label.toLower()))
@@ -358,6 +362,9 @@ bool ParameterReader::readConditions(const QJsonArray& a, ParameterMeta* meta)
         }
         condition.spec = meta->spec;
         condition.spec.defaultRaw.reset();
+        condition.ownUnit = c.contains(QStringLiteral("unit"));
+        condition.ownNote = c.contains(QStringLiteral("note"));
+        condition.ownOptions = c.contains(QStringLiteral("enum"));
         if (!readSpec(c, *meta, &condition.spec))
             return false;
         if (!condition.spec.defaultRaw)

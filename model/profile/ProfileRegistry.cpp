@@ -1,6 +1,7 @@
 #include "profile/ProfileRegistry.h"
 
 #include "ModelLog.h"
+#include "i18n/ProfileTranslation.h"
 #include "profile/ProfileLoader.h"
 
 #include <QDir>
@@ -15,27 +16,90 @@ ProfileRegistry::ProfileRegistry(QVector<Profile> profiles)
 {
 }
 
+namespace {
+
+struct LanguageState
+{
+    QString language;
+    bool builtInMade = false;
+};
+
+LanguageState& languageState()
+{
+    static LanguageState state;
+    return state;
+}
+
+bool isEnglish(const QString& language)
+{
+    return language.isEmpty() || language == QLatin1String("en");
+}
+
+} // namespace
+
+bool ProfileRegistry::setLanguage(const QString& language)
+{
+    LanguageState& state = languageState();
+    const QString wanted = isEnglish(language) ? QString() : language;
+    if (state.builtInMade && wanted != state.language) {
+        qCWarning(lcModel) << "profile language" << language
+                           << "set after the profiles were loaded; they stay in"
+                           << (state.language.isEmpty() ? QStringLiteral("en") : state.language);
+        return false;
+    }
+    state.language = wanted;
+    return true;
+}
+
+QString ProfileRegistry::language()
+{
+    return languageState().language.isEmpty() ? QStringLiteral("en") : languageState().language;
+}
+
+std::optional<ProfileRegistry> ProfileRegistry::load(const QString& language, QString* error,
+                                                     const QString& profileDir,
+                                                     const QString& translationDir)
+{
+    QVector<Profile> profiles;
+    const QDir dir(profileDir);
+    // Files only: the translations sit in :/profiles/i18n/, which this listing does not enter.
+    const QStringList files = dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
+    for (const QString& file : files) {
+        std::optional<Profile> p = ProfileLoader::loadFile(dir.filePath(file), error);
+        if (!p)
+            return std::nullopt;
+        if (!isEnglish(language)) {
+            const QString path =
+                QDir(translationDir)
+                    .filePath(QStringLiteral("%1.%2.json").arg(p->family, language));
+            if (QFile::exists(path)) {
+                const std::optional<ProfileTranslation> t =
+                    ProfileTranslation::loadFile(path, *p, language, error);
+                if (!t)
+                    return std::nullopt;
+                t->apply(*p);
+            }
+        }
+        profiles << *p;
+    }
+    return ProfileRegistry(profiles);
+}
+
 const ProfileRegistry& ProfileRegistry::builtIn()
 {
     static const ProfileRegistry registry = [] {
-        QVector<Profile> profiles;
-        const QDir dir(QStringLiteral(":/profiles"));
-        const QStringList files =
-            dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
-        for (const QString& file : files) {
-            QString error;
-            std::optional<Profile> p = ProfileLoader::loadFile(dir.filePath(file), &error);
-            if (!p) {
-                // A broken built-in profile is a build defect: refuse to run rather than
-                // talk to drives with wrong register maps.
-                std::fprintf(stderr, "opentop: built-in profile rejected: %s\n", qPrintable(error));
-                std::abort();
-            }
-            profiles << *p;
+        languageState().builtInMade = true;
+        QString error;
+        std::optional<ProfileRegistry> loaded = load(languageState().language, &error);
+        if (!loaded) {
+            // A broken built-in profile or translation is a build defect: refuse to run rather
+            // than talk to drives with wrong register maps or show half-checked texts.
+            std::fprintf(stderr, "opentop: built-in profile rejected: %s\n", qPrintable(error));
+            std::abort();
         }
-        if (profiles.isEmpty())
+        if (loaded->profiles().isEmpty())
             qCCritical(lcModel) << "no built-in device profiles found";
-        return ProfileRegistry(profiles);
+        return *loaded;
     }();
     return registry;
 }

@@ -4,6 +4,7 @@
 
 #include <QStringList>
 #include <QVector>
+#include <optional>
 
 namespace opentop {
 
@@ -11,8 +12,21 @@ namespace opentop {
 class ProfileRegistry
 {
 public:
-    // Loads every built-in profile once; aborts loudly if one is malformed (a build defect).
+    // Loads every built-in profile once, in the language of setLanguage(); aborts loudly if a
+    // profile or its translation is malformed (a build defect).
     static const ProfileRegistry& builtIn();
+    // The language of the profiles' texts for people ("ko", "zh_TW"; "en" or empty: English).
+    // Call it before the first builtIn(); later calls are refused (returns false), because
+    // callers keep pointers into the registry. A family without a translation stays English.
+    static bool setLanguage(const QString& language);
+    static QString language();
+    // The built-in profiles in `language`, independent of builtIn(): for tests and tools.
+    // Empty with *error set when a profile or an existing translation is malformed. The folders
+    // are for tests: profiles `<profileDir>/*.json`, texts `<translationDir>/<family>.<lang>.json`.
+    static std::optional<ProfileRegistry>
+    load(const QString& language, QString* error,
+         const QString& profileDir = QStringLiteral(":/profiles"),
+         const QString& translationDir = QStringLiteral(":/profiles/i18n"));
 
     explicit ProfileRegistry(QVector<Profile> profiles);
 

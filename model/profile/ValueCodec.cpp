@@ -226,8 +226,9 @@ ParamValue ValueCodec::decode(const ParameterMeta& meta, const QVector<quint16>&
     const ValueSpec& spec = meta.specFor(context, &unresolved);
     v.raw = registersToRaw(meta, registers);
     v.number = v.raw * spec.scale;
+    // The English label: the value as files, recipes and scripts name it; format() shows it.
     if (const EnumOption* o = findOption(spec, v.raw))
-        v.text = o->label;
+        v.text = o->canonicalLabel.isEmpty() ? o->label : o->canonicalLabel;
     if (unresolved.isEmpty() && meta.kind != QLatin1String("command")) {
         v.error = checkRaw(meta, v.raw, context);
         v.allowed = v.error.isEmpty();
@@ -312,8 +313,13 @@ ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QStr
         e.error = checkRaw(meta, 0, context);
         return e;
     }
-    // An enumeration label first: "CCW", "cw/stop", "Disabled".
+    // An enumeration label first: "CCW", "cw/stop", "Disabled". The profile's English label
+    // (what scripts and files use) before the label in the profile language.
     const QString wanted = normalizedLabel(text);
+    for (const EnumOption& o : spec.options) {
+        if (normalizedLabel(o.canonicalLabel) == wanted)
+            return encodeRaw(meta, double(o.value), context);
+    }
     for (const EnumOption& o : spec.options) {
         if (normalizedLabel(o.label) == wanted)
             return encodeRaw(meta, double(o.value), context);
@@ -323,7 +329,8 @@ ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QStr
     int prefixMatches = 0;
     for (const EnumOption& o : spec.options) {
         if (!wanted.isEmpty() && !wanted.front().isDigit() &&
-            normalizedLabel(o.label).startsWith(wanted)) {
+            (normalizedLabel(o.label).startsWith(wanted) ||
+             normalizedLabel(o.canonicalLabel).startsWith(wanted))) {
             prefixMatch = &o;
             ++prefixMatches;
         }
@@ -334,7 +341,8 @@ ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QStr
     // drive in Mode2).
     for (const ValueCondition& c : meta.conditions) {
         for (const EnumOption& o : c.spec.options) {
-            if (!c.param.isEmpty() && normalizedLabel(o.label) == wanted) {
+            if (!c.param.isEmpty() && (normalizedLabel(o.label) == wanted ||
+                                       normalizedLabel(o.canonicalLabel) == wanted)) {
                 e.error = tr("%1: \"%2\" is only available when %3 is %4; allowed now: %5")
                               .arg(context.nameFor(meta.name), text, context.nameFor(c.param))
                               .arg(c.equals)
@@ -355,9 +363,12 @@ ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QStr
         return encodeRaw(meta, double(raw), context);
     }
     // A number, optionally followed by the unit ("2.5 s", "1500 r/min", "1500rpm").
+    // The unit in the profile language or the profile's own ("30 일" or "30 d").
     QString number = text;
-    QString unit = spec.unit;
-    if (!unit.isEmpty() && number.endsWith(unit, Qt::CaseInsensitive))
+    const QString unit = spec.canonicalUnit;
+    if (!spec.unit.isEmpty() && number.endsWith(spec.unit, Qt::CaseInsensitive))
+        number.chop(spec.unit.size());
+    else if (!unit.isEmpty() && number.endsWith(unit, Qt::CaseInsensitive))
         number.chop(unit.size());
     else if (unit == QLatin1String("r/min") &&
              number.endsWith(QLatin1String("rpm"), Qt::CaseInsensitive))
@@ -378,6 +389,18 @@ ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QStr
 QString ValueCodec::format(const ParameterMeta& meta, const ParamValue& value,
                            const ValueContext& context)
 {
+    return formatAs(meta, value, context, false);
+}
+
+QString ValueCodec::formatCanonical(const ParameterMeta& meta, const ParamValue& value,
+                                    const ValueContext& context)
+{
+    return formatAs(meta, value, context, true);
+}
+
+QString ValueCodec::formatAs(const ParameterMeta& meta, const ParamValue& value,
+                             const ValueContext& context, bool canonical)
+{
     if (!value.valid)
         return tr("(invalid)");
     if (meta.type == DataType::String)
@@ -388,11 +411,14 @@ QString ValueCodec::format(const ParameterMeta& meta, const ParamValue& value,
     }
     const ValueSpec& spec = meta.specFor(context);
     if (const EnumOption* o = findOption(spec, value.raw))
-        return o->label;
+        return canonical && !o->canonicalLabel.isEmpty() ? o->canonicalLabel : o->label;
     if (spec.ranges.isEmpty() && !spec.options.isEmpty())
         return tr("unknown code %1").arg(qlonglong(value.raw));
     const QString number = formatNumber(value.number, spec.decimals);
-    return spec.unit.isEmpty() ? number : number + QLatin1Char(' ') + spec.unit;
+    // A spec made in code rather than read from a profile has no canonical unit.
+    const QString& unit =
+        canonical && !spec.canonicalUnit.isEmpty() ? spec.canonicalUnit : spec.unit;
+    return unit.isEmpty() ? number : number + QLatin1Char(' ') + unit;
 }
 
 } // namespace opentop

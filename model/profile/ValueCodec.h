@@ -45,7 +45,15 @@ public:
     // "2.5 s", "CCW", "1500 r/min", "-3 r/min".
     static QString format(const ParameterMeta& meta, const ParamValue& value,
                           const ValueContext& context = {});
+    // The same with the profile's English label and unit (EnumOption::canonicalLabel,
+    // ValueSpec::canonicalUnit), whatever the profile language: for files and --json.
+    static QString formatCanonical(const ParameterMeta& meta, const ParamValue& value,
+                                   const ValueContext& context = {});
     static QString formatNumber(double number, int decimals);
+
+private:
+    static QString formatAs(const ParameterMeta& meta, const ParamValue& value,
+                            const ValueContext& context, bool canonical);
 };
 
 } // namespace opentop

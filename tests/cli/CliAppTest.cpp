@@ -37,3 +37,25 @@ TEST(CliApp, ParsesMachineNumberLists)
     EXPECT_FALSE(CliContext::parseIds(QStringLiteral("x"), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("1–247")));
 }
+
+TEST(CliApp, JsonKeepsTheProfilesEnglish)
+{
+    const QString ko = QStringLiteral("ko");
+    const QString program = QStringLiteral("opentop-cli");
+    EXPECT_EQ(CliApp::profileLanguage({program, QStringLiteral("get"), QStringLiteral("1"),
+                                       QStringLiteral("core.control_priority")},
+                                      ko),
+              ko);
+    EXPECT_EQ(
+        CliApp::profileLanguage({program, QStringLiteral("alarms"), QStringLiteral("--json")}, ko),
+        QStringLiteral("en"));
+    EXPECT_EQ(CliApp::profileLanguage({program, QStringLiteral("--json=1")}, ko),
+              QStringLiteral("en"));
+    // A value after "--" is no option.
+    EXPECT_EQ(
+        CliApp::profileLanguage(
+            {program, QStringLiteral("set"), QStringLiteral("--"), QStringLiteral("--json")}, ko),
+        ko);
+    EXPECT_EQ(CliApp::profileLanguage({program, QStringLiteral("scan")}, QString()),
+              QStringLiteral("en"));
+}

@@ -313,7 +313,8 @@ void setAllowed(ParameterMeta& p, QVector<ValueRange> ranges, QVector<qint64> co
         spec->ranges = ranges;
         spec->options.clear();
         for (qint64 code : codes)
-            spec->options.push_back({code, QStringLiteral("code"), QString()});
+            spec->options.push_back(
+                {code, QStringLiteral("code"), QString(), QStringLiteral("code")});
     }
 }
 
