@@ -389,6 +389,11 @@
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1: %2은(는) &quot;%3&quot;에 쓸 수 있는 값이 아닙니다</translation>
     </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="55"/>
+        <source> and %1 more</source>
+        <translation> 외 %1개</translation>
+    </message>
 </context>
 <context>
     <name>opentop::AboutDialog</name>
@@ -1265,12 +1270,12 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFile</name>
     <message>
-        <location filename="../model/files/BackupFile.cpp" line="284"/>
+        <location filename="../model/files/BackupFile.cpp" line="286"/>
         <source>cannot read %1: %2</source>
         <translation>%1을(를) 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFile.cpp" line="291"/>
+        <location filename="../model/files/BackupFile.cpp" line="293"/>
         <source>%1 is larger than %2 MB, the most a backup file may hold (a backup of 247 drives is far smaller); not a backup file</source>
         <translation>%1이(가) 백업 파일의 최대 크기 %2 MB보다 큽니다(드라이버 247대의 백업도 훨씬 작음). 백업 파일이 아닙니다</translation>
     </message>
@@ -2308,18 +2313,18 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="153"/>
-        <location filename="../cli/CliApp.cpp" line="207"/>
+        <location filename="../cli/CliApp.cpp" line="164"/>
+        <location filename="../cli/CliApp.cpp" line="218"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>&quot;%1 --help&quot;를 실행해 보십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="173"/>
+        <location filename="../cli/CliApp.cpp" line="184"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1: 알 수 없는 명령 &quot;%2&quot;; 명령: </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="181"/>
+        <location filename="../cli/CliApp.cpp" line="192"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2328,12 +2333,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="195"/>
+        <location filename="../cli/CliApp.cpp" line="206"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2: --%3은(는) 이 명령의 옵션이 아닙니다. &quot;%1 help %2&quot;를 참조하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="206"/>
+        <location filename="../cli/CliApp.cpp" line="217"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -4157,47 +4162,47 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>설정 쓰는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="186"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="193"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="193"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="200"/>
         <source>writing the settings: %1</source>
         <translation>설정 쓰는 중: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="201"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="208"/>
         <source>reading every setting back</source>
         <translation>모든 설정을 다시 읽는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="216"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="223"/>
         <source>%1 cannot be read back: %2</source>
         <translation>%1을(를) 다시 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="222"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="229"/>
         <source>%1 does not keep its value: set to %2, reads %3</source>
         <translation>%1이(가) 값을 유지하지 않습니다: %2(으)로 설정했지만 %3(으)로 읽힘</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="226"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="233"/>
         <source>verifying the settings: %1</source>
         <translation>설정 검증 중: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="235"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="242"/>
         <source>testing</source>
         <translation>검사 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="239"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="246"/>
         <source>step %1 of %2: %3</source>
         <translation>단계 %1/%2: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="293"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="300"/>
         <source>passed</source>
         <translation>합격</translation>
     </message>
@@ -5156,150 +5161,150 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>단계 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="125"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="131"/>
         <source>the drive&apos;s session ended</source>
         <translation>드라이버 세션이 끝났습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="198"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="218"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="230"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="422"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="443"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="469"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="511"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="204"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="224"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="236"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="428"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="449"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="475"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="517"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="210"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="216"/>
         <source>%1: the drive has no communication priority</source>
         <translation>%1: 드라이버가 통신 우선이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="260"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="266"/>
         <source>%1: the drive stopped answering: %2</source>
         <translation>%1: 드라이버가 응답하지 않습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="268"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="274"/>
         <source>%1: the drive raised an alarm while running</source>
         <translation>%1: 운전 중 드라이버에서 알람이 발생했습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="291"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="297"/>
         <source>%1: %2 %3</source>
         <translation>%1: %2 %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="310"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="316"/>
         <source>%1: the drive has no speed to wait for</source>
         <translation>%1: 드라이버에 기다릴 속도가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="320"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="326"/>
         <source>time to reach speed</source>
         <translation>속도 도달 시간</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="342"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="347"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="466"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="348"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="353"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="472"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="348"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="354"/>
         <source>unknown</source>
         <translation>알 수 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="349"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="355"/>
         <source>%1: did not reach %2 %3 ±%4 %3 within %5 s (last read %6 %3)</source>
         <translation>%1: %5 s 이내에 %2 %3 ±%4 %3에 도달하지 못했습니다(마지막 읽은 값 %6 %3)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="350"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="356"/>
         <source>its target</source>
         <translation>목표 속도</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="407"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="413"/>
         <source>%1 could not be read</source>
         <translation>%1을(를) 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="417"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="423"/>
         <source>%1 %2 %3, %4</source>
         <translation>%1 %2 %3, %4</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="435"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="441"/>
         <source>%1: the drive reports no alarms</source>
         <translation>%1: 드라이버가 알람을 알려주지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="448"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="454"/>
         <source>alarms raised</source>
         <translation>알람 발생</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="451"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="457"/>
         <source>%1: the drive has an alarm</source>
         <translation>%1: 드라이버에 알람이 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="466"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="472"/>
         <source>time to stop</source>
         <translation>정지 시간</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="473"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="479"/>
         <source>%1: stopped after %2 s, allowed at most %3 s</source>
         <translation>%1: %2 s 후 정지, 허용 최대 %3 s</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="502"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="508"/>
         <source>%1: nothing to read</source>
         <translation>%1: 읽을 항목이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="519"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="525"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="522"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="528"/>
         <source>%1: %2 reads &quot;%3&quot;, expected &quot;%4&quot;</source>
         <translation>%1: %2 읽은 값 &quot;%3&quot;, 기대값 &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="532"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="539"/>
         <source>%1: %2 reads %3 %4, %5</source>
         <translation>%1: %2 읽은 값 %3 %4, %5</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="554"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="561"/>
         <source>the stop command failed: %1</source>
         <translation>정지 명령 실패: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="569"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="576"/>
         <source>stopped after %1 s</source>
         <translation>%1 s 후 정지</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="570"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="577"/>
         <source>not confirmed stopped: %1</source>
         <translation>정지 확인 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="592"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="599"/>
         <source>communication priority could not be given back: %1</source>
         <translation>통신 우선을 되돌릴 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="632"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="639"/>
         <source>the steps ended with the motor running</source>
         <translation>모터가 운전 중인 상태로 단계가 끝났습니다</translation>
     </message>
@@ -6414,12 +6419,12 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::Language</name>
     <message>
-        <location filename="../model/i18n/Language.cpp" line="139"/>
+        <location filename="../model/i18n/Language.cpp" line="140"/>
         <source>unknown language &apos;%1&apos;; available: %2</source>
         <translation>알 수 없는 언어 &apos;%1&apos;; 사용 가능: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/Language.cpp" line="154"/>
+        <location filename="../model/i18n/Language.cpp" line="157"/>
         <source>the %1 translation is missing from this build</source>
         <translation>이 빌드에 %1 번역이 없습니다</translation>
     </message>
@@ -7632,202 +7637,202 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>name은 점으로 구분한 소문자 단어여야 합니다: [a-z0-9_]를 점으로 구분</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="68"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="69"/>
         <source>&quot;label&quot; is empty</source>
         <translation>&quot;label&quot;이 비어 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="70"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="71"/>
         <source>group &quot;%1&quot; is not declared in &quot;groups&quot;</source>
         <translation>그룹 &quot;%1&quot;이(가) &quot;groups&quot;에 선언되어 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="72"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="73"/>
         <source>kind must be one of %1</source>
         <translation>kind는 %1 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="78"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="79"/>
         <source>address must be 0x0000–0xFFFF</source>
         <translation>address는 0x0000–0xFFFF여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="85"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="86"/>
         <source>read must be 3 (holding) or 4 (input)</source>
         <translation>read는 3(holding) 또는 4(input)여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="87"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="88"/>
         <source>write must be 6 or 16</source>
         <translation>write는 6 또는 16이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="91"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="92"/>
         <source>input registers (read 4) cannot be written</source>
         <translation>입력 레지스터(read 4)에는 쓸 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="93"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="94"/>
         <source>neither readable nor writable</source>
         <translation>읽을 수도 쓸 수도 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="101"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="102"/>
         <source>type must be u16, s16, u32, s32, f32, string or bits</source>
         <translation>type은 u16, s16, u32, s32, f32, string 또는 bits여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="110"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="111"/>
         <source>string parameters need &quot;count&quot; 1–125 registers</source>
         <translation>string 파라미터에는 &quot;count&quot; 1–125 레지스터가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="115"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="116"/>
         <source>bits parameters have &quot;count&quot; 1 or 2</source>
         <translation>bits 파라미터의 &quot;count&quot;는 1 또는 2입니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="120"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="121"/>
         <source>%1 takes %2 register(s), not %3</source>
         <translation>%1은(는) 레지스터 %3개가 아니라 %2개를 차지합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="123"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="124"/>
         <source>a %1-register value cannot be written with function 06; use 16</source>
         <translation>레지스터 %1개짜리 값은 기능 06으로 쓸 수 없습니다. 16을 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="128"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="129"/>
         <source>safety must be one of %1</source>
         <translation>safety는 %1 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="130"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="131"/>
         <source>commands need a &quot;safety&quot; class</source>
         <translation>명령에는 &quot;safety&quot; 등급이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="133"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="134"/>
         <source>code table &quot;%1&quot; is not declared</source>
         <translation>코드 표 &quot;%1&quot;이(가) 선언되어 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="140"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="141"/>
         <source>a setting needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>설정에는 &quot;allowed&quot; 또는 &quot;enum&quot;이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="143"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="144"/>
         <source>a writable parameter needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>쓸 수 있는 파라미터에는 &quot;allowed&quot; 또는 &quot;enum&quot;이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="148"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="149"/>
         <source>bits parameters need &quot;bits&quot;</source>
         <translation>bits 파라미터에는 &quot;bits&quot;가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="156"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="157"/>
         <source>&quot;backup&quot; must be true or false</source>
         <translation>&quot;backup&quot;은 true 또는 false여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="161"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="162"/>
         <source>only readable and writable parameters can be backed up</source>
         <translation>읽기·쓰기가 모두 가능한 파라미터만 백업할 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="169"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="170"/>
         <source>scale must be positive</source>
         <translation>scale은 양수여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="179"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="182"/>
         <source>decimals must be 0–9</source>
         <translation>decimals는 0–9여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="205"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="208"/>
         <source>default %1 is not a whole number of steps of %2</source>
         <translation>기본값 %1이(가) %2 단위의 정수배가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="214"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="217"/>
         <source>default must be a number (or &quot;0x...&quot; code)</source>
         <translation>기본값은 숫자(또는 &quot;0x...&quot; 코드)여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="217"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="220"/>
         <source>default must be a number or a string</source>
         <translation>기본값은 숫자 또는 문자열이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="228"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="231"/>
         <source>%1 must be an object {&quot;min&quot;:…, &quot;max&quot;:…}</source>
         <translation>%1은(는) 객체 {&quot;min&quot;:…, &quot;max&quot;:…}여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="235"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="238"/>
         <source>%1 needs numeric min and max</source>
         <translation>%1에는 숫자 min과 max가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="241"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="244"/>
         <source>%1: %2 is not a whole number of steps of %3</source>
         <translation>%1: %2이(가) %3 단위의 정수배가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="249"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="252"/>
         <source>%1: min is greater than max</source>
         <translation>%1: min이 max보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="263"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="266"/>
         <source>%1 must be an object {&quot;value&quot;:…, &quot;label&quot;:…}</source>
         <translation>%1은(는) 객체 {&quot;value&quot;:…, &quot;label&quot;:…}여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="278"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="282"/>
         <source>%1 has no label</source>
         <translation>%1에 label이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="280"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="284"/>
         <source>%1 repeats a code or label</source>
         <translation>%1에 코드 또는 label이 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="291"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="295"/>
         <source>&quot;bits&quot; only belongs to type bits</source>
         <translation>&quot;bits&quot;는 type bits에만 쓸 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="315"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="319"/>
         <source>%1.appliesWhen needs &quot;param&quot; and &quot;equals&quot;</source>
         <translation>%1.appliesWhen에는 &quot;param&quot;과 &quot;equals&quot;가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="320"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="324"/>
         <source>%1 lies outside the %2-bit register</source>
         <translation>%1이(가) %2비트 레지스터 범위를 벗어납니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="322"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="326"/>
         <source>%1 needs a unique name</source>
         <translation>%1에는 고유한 이름이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="336"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="340"/>
         <source>%1 must be an object</source>
         <translation>%1은(는) 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="348"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="352"/>
         <source>%1 needs either &quot;variant&quot; or &quot;param&quot;</source>
         <translation>%1에는 &quot;variant&quot; 또는 &quot;param&quot;이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="351"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="355"/>
         <source>%1: variant &quot;%2&quot; is not declared</source>
         <translation>%1: variant &quot;%2&quot;이(가) 선언되어 있지 않습니다</translation>
     </message>
@@ -8296,6 +8301,84 @@ No unit can be tested until results can be recorded.</source>
         <location filename="../model/profile/ProfileLoader.cpp" line="379"/>
         <source>%1: cannot open: %2</source>
         <translation>%1: 열 수 없습니다: %2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ProfileTranslation</name>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="74"/>
+        <source>%1: cannot open: %2</source>
+        <translation>%1: 열 수 없습니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="81"/>
+        <source>%1 is larger than %2 MB, the most a profile translation may hold</source>
+        <translation>%1이(가) 프로파일 번역의 최대 크기인 %2 MB보다 큽니다</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="99"/>
+        <source>larger than %1 MB, the most a profile translation may hold</source>
+        <translation>프로파일 번역의 최대 크기인 %1 MB보다 큽니다</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="104"/>
+        <source>not valid JSON at offset %1: %2</source>
+        <translation>오프셋 %1에서 올바른 JSON이 아닙니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="108"/>
+        <source>the top level must be a JSON object</source>
+        <translation>최상위는 JSON 객체여야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="111"/>
+        <source>&quot;format&quot; must be &quot;%1&quot;</source>
+        <translation>&quot;format&quot;은(는) &quot;%1&quot;이어야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="114"/>
+        <source>&quot;formatVersion&quot; must be %1</source>
+        <translation>&quot;formatVersion&quot;은(는) %1이어야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="120"/>
+        <source>&quot;family&quot; is &quot;%1&quot;, but the profile is &quot;%2&quot;</source>
+        <translation>&quot;family&quot;가 &quot;%1&quot;이지만 프로파일은 &quot;%2&quot;입니다</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="122"/>
+        <source>&quot;language&quot; is &quot;%1&quot;, expected &quot;%2&quot;</source>
+        <translation>&quot;language&quot;가 &quot;%1&quot;이지만 &quot;%2&quot;여야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="125"/>
+        <source>&quot;texts&quot; must be an object of key → text</source>
+        <translation>&quot;texts&quot;는 키 → 텍스트 객체여야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="129"/>
+        <source>texts &quot;%1&quot; must be a non-empty string</source>
+        <translation>texts &quot;%1&quot;은(는) 비어 있지 않은 문자열이어야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="146"/>
+        <source>%1 key(s) of the profile missing: %2</source>
+        <translation>프로파일의 키 %1개가 없습니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="150"/>
+        <source>%1 key(s) the profile does not have: %2</source>
+        <translation>프로파일에 없는 키 %1개: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="158"/>
+        <source>texts &quot;%1&quot;: the panel codes must stay as in the English (%2), found (%3)</source>
+        <translation>texts &quot;%1&quot;: 패널 코드는 영어와 같아야 합니다(%2). 실제: (%3)</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="163"/>
+        <source>texts &quot;%1&quot;: the placeholders must stay as in the English (%2), found (%3)</source>
+        <translation>texts &quot;%1&quot;: 자리 표시자는 영어와 같아야 합니다(%2). 실제: (%3)</translation>
     </message>
 </context>
 <context>
@@ -13289,48 +13372,48 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>%1: 레지스터 %2개가 필요하지만 %3개입니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="243"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="244"/>
         <source>%1 is text, not a number</source>
         <translation>%1은(는) 숫자가 아니라 텍스트입니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="256"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="257"/>
         <source>%1: %2 is finer than the step of %3 %4; allowed: %5</source>
         <translation>%1: %2이(가) 단위 %3 %4보다 세밀합니다. 허용: %5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="287"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="288"/>
         <source>%1: at most %2 characters</source>
         <translation>%1: 최대 %2자</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="293"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="294"/>
         <source>%1: only printable ASCII characters are allowed</source>
         <translation>%1: 출력 가능한 ASCII 문자만 허용됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="305"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="306"/>
         <source>%1: no value given; allowed: %2</source>
         <translation>%1: 값이 없습니다. 허용: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="338"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="346"/>
         <source>%1: &quot;%2&quot; is only available when %3 is %4; allowed now: %5</source>
         <translation>%1: &quot;%2&quot;은(는) %3이(가) %4일 때만 사용할 수 있습니다. 현재 허용: %5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="351"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="368"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="359"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="379"/>
         <source>%1: &quot;%2&quot; is not a valid value; allowed: %3</source>
         <translation>%1: &quot;%2&quot;은(는) 올바른 값이 아닙니다. 허용: %3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="382"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="405"/>
         <source>(invalid)</source>
         <translation>(무효)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="393"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="416"/>
         <source>unknown code %1</source>
         <translation>알 수 없는 코드 %1</translation>
     </message>

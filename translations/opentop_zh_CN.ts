@@ -389,6 +389,11 @@
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1：%2 不是可用于写入 &quot;%3&quot; 的值</translation>
     </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="55"/>
+        <source> and %1 more</source>
+        <translation> 及另外 %1 个</translation>
+    </message>
 </context>
 <context>
     <name>opentop::AboutDialog</name>
@@ -1265,12 +1270,12 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFile</name>
     <message>
-        <location filename="../model/files/BackupFile.cpp" line="284"/>
+        <location filename="../model/files/BackupFile.cpp" line="286"/>
         <source>cannot read %1: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFile.cpp" line="291"/>
+        <location filename="../model/files/BackupFile.cpp" line="293"/>
         <source>%1 is larger than %2 MB, the most a backup file may hold (a backup of 247 drives is far smaller); not a backup file</source>
         <translation>%1 大于 %2 MB，超过备份文件的上限（247 台驱动器的备份也远小于此）；不是备份文件</translation>
     </message>
@@ -2308,18 +2313,18 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="153"/>
-        <location filename="../cli/CliApp.cpp" line="207"/>
+        <location filename="../cli/CliApp.cpp" line="164"/>
+        <location filename="../cli/CliApp.cpp" line="218"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>请尝试 &quot;%1 --help&quot;。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="173"/>
+        <location filename="../cli/CliApp.cpp" line="184"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1：未知命令 &quot;%2&quot;；可用命令： </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="181"/>
+        <location filename="../cli/CliApp.cpp" line="192"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2328,12 +2333,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="195"/>
+        <location filename="../cli/CliApp.cpp" line="206"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2：--%3 不是该命令的选项；请参阅 &quot;%1 help %2&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="206"/>
+        <location filename="../cli/CliApp.cpp" line="217"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -4157,47 +4162,47 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <translation>正在写入设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="186"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="193"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="193"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="200"/>
         <source>writing the settings: %1</source>
         <translation>正在写入设定：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="201"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="208"/>
         <source>reading every setting back</source>
         <translation>正在回读全部设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="216"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="223"/>
         <source>%1 cannot be read back: %2</source>
         <translation>%1 无法回读：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="222"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="229"/>
         <source>%1 does not keep its value: set to %2, reads %3</source>
         <translation>%1 未保持其值：设定为 %2，读取为 %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="226"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="233"/>
         <source>verifying the settings: %1</source>
         <translation>正在校验设定：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="235"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="242"/>
         <source>testing</source>
         <translation>正在测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="239"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="246"/>
         <source>step %1 of %2: %3</source>
         <translation>步骤 %1/%2：%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="293"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="300"/>
         <source>passed</source>
         <translation>合格</translation>
     </message>
@@ -5156,150 +5161,150 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <translation>步骤 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="125"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="131"/>
         <source>the drive&apos;s session ended</source>
         <translation>驱动器会话已结束</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="198"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="218"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="230"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="422"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="443"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="469"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="511"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="204"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="224"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="236"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="428"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="449"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="475"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="517"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="210"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="216"/>
         <source>%1: the drive has no communication priority</source>
         <translation>%1：驱动器没有通信优先级</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="260"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="266"/>
         <source>%1: the drive stopped answering: %2</source>
         <translation>%1：驱动器停止应答：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="268"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="274"/>
         <source>%1: the drive raised an alarm while running</source>
         <translation>%1：驱动器在运行中发生报警</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="291"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="297"/>
         <source>%1: %2 %3</source>
         <translation>%1：%2 %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="310"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="316"/>
         <source>%1: the drive has no speed to wait for</source>
         <translation>%1：驱动器没有可等待的速度</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="320"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="326"/>
         <source>time to reach speed</source>
         <translation>到达速度时间</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="342"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="347"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="466"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="348"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="353"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="472"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="348"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="354"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="349"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="355"/>
         <source>%1: did not reach %2 %3 ±%4 %3 within %5 s (last read %6 %3)</source>
         <translation>%1：未在 %5 s 内达到 %2 %3 ±%4 %3（最后读取 %6 %3）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="350"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="356"/>
         <source>its target</source>
         <translation>其目标值</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="407"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="413"/>
         <source>%1 could not be read</source>
         <translation>无法读取 %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="417"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="423"/>
         <source>%1 %2 %3, %4</source>
         <translation>%1 %2 %3，%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="435"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="441"/>
         <source>%1: the drive reports no alarms</source>
         <translation>%1：驱动器未报告报警</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="448"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="454"/>
         <source>alarms raised</source>
         <translation>发生的报警</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="451"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="457"/>
         <source>%1: the drive has an alarm</source>
         <translation>%1：驱动器有报警</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="466"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="472"/>
         <source>time to stop</source>
         <translation>停止时间</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="473"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="479"/>
         <source>%1: stopped after %2 s, allowed at most %3 s</source>
         <translation>%1：%2 s 后停止，最多允许 %3 s</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="502"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="508"/>
         <source>%1: nothing to read</source>
         <translation>%1：无可读取内容</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="519"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="525"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="522"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="528"/>
         <source>%1: %2 reads &quot;%3&quot;, expected &quot;%4&quot;</source>
         <translation>%1：%2 读取为 &quot;%3&quot;，预期为 &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="532"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="539"/>
         <source>%1: %2 reads %3 %4, %5</source>
         <translation>%1：%2 读取为 %3 %4，%5</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="554"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="561"/>
         <source>the stop command failed: %1</source>
         <translation>停止命令失败：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="569"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="576"/>
         <source>stopped after %1 s</source>
         <translation>%1 s 后停止</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="570"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="577"/>
         <source>not confirmed stopped: %1</source>
         <translation>未确认已停止：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="592"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="599"/>
         <source>communication priority could not be given back: %1</source>
         <translation>无法交还通信优先级：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="632"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="639"/>
         <source>the steps ended with the motor running</source>
         <translation>步骤结束时电机仍在运行</translation>
     </message>
@@ -6414,12 +6419,12 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::Language</name>
     <message>
-        <location filename="../model/i18n/Language.cpp" line="139"/>
+        <location filename="../model/i18n/Language.cpp" line="140"/>
         <source>unknown language &apos;%1&apos;; available: %2</source>
         <translation>未知的语言“%1”；可用：%2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/Language.cpp" line="154"/>
+        <location filename="../model/i18n/Language.cpp" line="157"/>
         <source>the %1 translation is missing from this build</source>
         <translation>此版本缺少 %1 翻译</translation>
     </message>
@@ -7632,202 +7637,202 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>名称必须是以点分隔的小写单词：[a-z0-9_]，以点分隔</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="68"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="69"/>
         <source>&quot;label&quot; is empty</source>
         <translation>&quot;label&quot; 为空</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="70"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="71"/>
         <source>group &quot;%1&quot; is not declared in &quot;groups&quot;</source>
         <translation>组 &quot;%1&quot; 未在 &quot;groups&quot; 中声明</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="72"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="73"/>
         <source>kind must be one of %1</source>
         <translation>kind 必须是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="78"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="79"/>
         <source>address must be 0x0000–0xFFFF</source>
         <translation>address 必须为 0x0000–0xFFFF</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="85"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="86"/>
         <source>read must be 3 (holding) or 4 (input)</source>
         <translation>read 必须为 3（保持寄存器）或 4（输入寄存器）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="87"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="88"/>
         <source>write must be 6 or 16</source>
         <translation>write 必须为 6 或 16</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="91"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="92"/>
         <source>input registers (read 4) cannot be written</source>
         <translation>输入寄存器（read 4）不可写入</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="93"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="94"/>
         <source>neither readable nor writable</source>
         <translation>既不可读也不可写</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="101"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="102"/>
         <source>type must be u16, s16, u32, s32, f32, string or bits</source>
         <translation>type 必须为 u16、s16、u32、s32、f32、string 或 bits</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="110"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="111"/>
         <source>string parameters need &quot;count&quot; 1–125 registers</source>
         <translation>string 参数需要 &quot;count&quot; 为 1–125 个寄存器</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="115"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="116"/>
         <source>bits parameters have &quot;count&quot; 1 or 2</source>
         <translation>bits 参数的 &quot;count&quot; 为 1 或 2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="120"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="121"/>
         <source>%1 takes %2 register(s), not %3</source>
         <translation>%1 占用 %2 个寄存器，而不是 %3 个</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="123"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="124"/>
         <source>a %1-register value cannot be written with function 06; use 16</source>
         <translation>%1 寄存器的值不能用功能码 06 写入；请使用 16</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="128"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="129"/>
         <source>safety must be one of %1</source>
         <translation>safety 必须是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="130"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="131"/>
         <source>commands need a &quot;safety&quot; class</source>
         <translation>命令需要 &quot;safety&quot; 类别</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="133"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="134"/>
         <source>code table &quot;%1&quot; is not declared</source>
         <translation>代码表 &quot;%1&quot; 未声明</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="140"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="141"/>
         <source>a setting needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>设定需要 &quot;allowed&quot; 或 &quot;enum&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="143"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="144"/>
         <source>a writable parameter needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>可写参数需要 &quot;allowed&quot; 或 &quot;enum&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="148"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="149"/>
         <source>bits parameters need &quot;bits&quot;</source>
         <translation>bits 参数需要 &quot;bits&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="156"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="157"/>
         <source>&quot;backup&quot; must be true or false</source>
         <translation>&quot;backup&quot; 必须为 true 或 false</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="161"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="162"/>
         <source>only readable and writable parameters can be backed up</source>
         <translation>只有可读且可写的参数才能备份</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="169"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="170"/>
         <source>scale must be positive</source>
         <translation>scale 必须为正数</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="179"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="182"/>
         <source>decimals must be 0–9</source>
         <translation>decimals 必须为 0–9</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="205"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="208"/>
         <source>default %1 is not a whole number of steps of %2</source>
         <translation>默认值 %1 不是步长 %2 的整数倍</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="214"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="217"/>
         <source>default must be a number (or &quot;0x...&quot; code)</source>
         <translation>默认值必须是数字（或 &quot;0x...&quot; 代码）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="217"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="220"/>
         <source>default must be a number or a string</source>
         <translation>默认值必须是数字或字符串</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="228"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="231"/>
         <source>%1 must be an object {&quot;min&quot;:…, &quot;max&quot;:…}</source>
         <translation>%1 必须是对象 {&quot;min&quot;:…, &quot;max&quot;:…}</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="235"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="238"/>
         <source>%1 needs numeric min and max</source>
         <translation>%1 需要数值型的 min 和 max</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="241"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="244"/>
         <source>%1: %2 is not a whole number of steps of %3</source>
         <translation>%1：%2 不是步长 %3 的整数倍</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="249"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="252"/>
         <source>%1: min is greater than max</source>
         <translation>%1：min 大于 max</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="263"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="266"/>
         <source>%1 must be an object {&quot;value&quot;:…, &quot;label&quot;:…}</source>
         <translation>%1 必须是对象 {&quot;value&quot;:…, &quot;label&quot;:…}</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="278"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="282"/>
         <source>%1 has no label</source>
         <translation>%1 没有 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="280"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="284"/>
         <source>%1 repeats a code or label</source>
         <translation>%1 有重复的代码或 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="291"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="295"/>
         <source>&quot;bits&quot; only belongs to type bits</source>
         <translation>&quot;bits&quot; 只属于 bits 类型</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="315"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="319"/>
         <source>%1.appliesWhen needs &quot;param&quot; and &quot;equals&quot;</source>
         <translation>%1.appliesWhen 需要 &quot;param&quot; 和 &quot;equals&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="320"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="324"/>
         <source>%1 lies outside the %2-bit register</source>
         <translation>%1 超出 %2 位寄存器</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="322"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="326"/>
         <source>%1 needs a unique name</source>
         <translation>%1 需要唯一的名称</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="336"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="340"/>
         <source>%1 must be an object</source>
         <translation>%1 必须是对象</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="348"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="352"/>
         <source>%1 needs either &quot;variant&quot; or &quot;param&quot;</source>
         <translation>%1 需要 &quot;variant&quot; 或 &quot;param&quot; 之一</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="351"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="355"/>
         <source>%1: variant &quot;%2&quot; is not declared</source>
         <translation>%1：机型 &quot;%2&quot; 未声明</translation>
     </message>
@@ -8296,6 +8301,84 @@ No unit can be tested until results can be recorded.</source>
         <location filename="../model/profile/ProfileLoader.cpp" line="379"/>
         <source>%1: cannot open: %2</source>
         <translation>%1：无法打开：%2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ProfileTranslation</name>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="74"/>
+        <source>%1: cannot open: %2</source>
+        <translation>%1：无法打开：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="81"/>
+        <source>%1 is larger than %2 MB, the most a profile translation may hold</source>
+        <translation>%1 大于 %2 MB，即设备描述翻译的上限</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="99"/>
+        <source>larger than %1 MB, the most a profile translation may hold</source>
+        <translation>大于 %1 MB，即设备描述翻译的上限</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="104"/>
+        <source>not valid JSON at offset %1: %2</source>
+        <translation>偏移 %1 处不是有效的 JSON：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="108"/>
+        <source>the top level must be a JSON object</source>
+        <translation>顶层必须是 JSON 对象</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="111"/>
+        <source>&quot;format&quot; must be &quot;%1&quot;</source>
+        <translation>&quot;format&quot; 必须是 &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="114"/>
+        <source>&quot;formatVersion&quot; must be %1</source>
+        <translation>&quot;formatVersion&quot; 必须是 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="120"/>
+        <source>&quot;family&quot; is &quot;%1&quot;, but the profile is &quot;%2&quot;</source>
+        <translation>&quot;family&quot; 是 &quot;%1&quot;，但设备描述是 &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="122"/>
+        <source>&quot;language&quot; is &quot;%1&quot;, expected &quot;%2&quot;</source>
+        <translation>&quot;language&quot; 是 &quot;%1&quot;，应为 &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="125"/>
+        <source>&quot;texts&quot; must be an object of key → text</source>
+        <translation>&quot;texts&quot; 必须是 键 → 文本 的对象</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="129"/>
+        <source>texts &quot;%1&quot; must be a non-empty string</source>
+        <translation>texts &quot;%1&quot; 必须是非空字符串</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="146"/>
+        <source>%1 key(s) of the profile missing: %2</source>
+        <translation>缺少设备描述的 %1 个键：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="150"/>
+        <source>%1 key(s) the profile does not have: %2</source>
+        <translation>%1 个键不属于此设备描述：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="158"/>
+        <source>texts &quot;%1&quot;: the panel codes must stay as in the English (%2), found (%3)</source>
+        <translation>texts &quot;%1&quot;：面板代码必须与英文相同（%2），实际为（%3）</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="163"/>
+        <source>texts &quot;%1&quot;: the placeholders must stay as in the English (%2), found (%3)</source>
+        <translation>texts &quot;%1&quot;：占位符必须与英文相同（%2），实际为（%3）</translation>
     </message>
 </context>
 <context>
@@ -13289,48 +13372,48 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>%1：预期 %2 个寄存器，实际为 %3 个</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="243"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="244"/>
         <source>%1 is text, not a number</source>
         <translation>%1 是文本，不是数字</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="256"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="257"/>
         <source>%1: %2 is finer than the step of %3 %4; allowed: %5</source>
         <translation>%1：%2 比步长 %3 %4 更精细；允许：%5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="287"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="288"/>
         <source>%1: at most %2 characters</source>
         <translation>%1：最多 %2 个字符</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="293"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="294"/>
         <source>%1: only printable ASCII characters are allowed</source>
         <translation>%1：只允许可打印的 ASCII 字符</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="305"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="306"/>
         <source>%1: no value given; allowed: %2</source>
         <translation>%1：未给出值；允许：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="338"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="346"/>
         <source>%1: &quot;%2&quot; is only available when %3 is %4; allowed now: %5</source>
         <translation>%1：&quot;%2&quot; 仅在 %3 为 %4 时可用；当前允许：%5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="351"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="368"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="359"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="379"/>
         <source>%1: &quot;%2&quot; is not a valid value; allowed: %3</source>
         <translation>%1：&quot;%2&quot; 不是有效值；允许：%3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="382"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="405"/>
         <source>(invalid)</source>
         <translation>（无效）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="393"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="416"/>
         <source>unknown code %1</source>
         <translation>未知代码 %1</translation>
     </message>

@@ -2,6 +2,7 @@
 #include "CliApp.h"
 #include "CliContext.h"
 #include "i18n/Language.h"
+#include "profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
 #include <QGuiApplication>
@@ -36,6 +37,9 @@ int main(int argc, char* argv[])
         std::fprintf(stderr, "opentop-cli: %s\n", qPrintable(languageError));
         return 2;
     }
+    // --json output is an interface: its device texts stay English in every language.
+    opentop::ProfileRegistry::setLanguage(
+        opentop::CliApp::profileLanguage(arguments, opentop::Language::current()));
     opentop::CliContext::installInterruptHandler();
     QTextStream out(stdout);
     QTextStream err(stderr);

@@ -2,6 +2,7 @@
 
 #include "ModelLog.h"
 #include "i18n/NamespaceTranslator.h"
+#include "profile/ProfileRegistry.h"
 
 #include <QFile>
 #include <QLibraryInfo>
@@ -143,6 +144,8 @@ bool Language::install(const QString& code, QString* error)
     }
     uninstall();
     g_current = *wanted;
+    // The device texts too, if the profiles are not loaded yet (then they stay as loaded).
+    ProfileRegistry::setLanguage(*wanted);
     if (*wanted == kEnglish)
         return true;
     auto* app = QCoreApplication::instance();
