@@ -65,17 +65,22 @@ for lang in "${languages[@]}"; do
     xdotool key Return # close the scan's summary, if it shows one
     # Drive 1 is selected and its monitor in front.
     shot "lang-$lang-monitor.png" 3
-    # The side tabs are rows of the same height in every CJK language: core parameters, third.
-    xdotool mousemove 430 222 click 1
+    # The core parameters: the third page (Drive ▸ Next page, Ctrl+PgDown).
+    xdotool key ctrl+Next ctrl+Next
     shot "lang-$lang-workspace.png" 2
-    # An overload alarm on drive 1; the open alarms page follows it without a click.
+    # An overload alarm on drive 1: the red banner names it; its Show button (right-aligned)
+    # opens the drive's alarms page, where the newest record's cause and remedy are shown.
     echo "alarm 1 7" >&7
-    xdotool mousemove 430 404 click 1
     sleep 3
-    xdotool mousemove "${ALARM_ROW_X:-560}" "${ALARM_ROW_Y:-250}" click 1
+    xdotool mousemove 1232 96 click 1
+    sleep 2
+    xdotool mousemove 800 283 click 1
     shot "lang-$lang-alarms.png" 2
     kill "$app_pid"; wait "$app_pid" 2> /dev/null || true; app_pid=""
+    echo quit >&7
     exec 7>&-
+    sleep 0.5
+    kill "$sim_pid" 2> /dev/null || true
     wait "$sim_pid" 2> /dev/null || true; sim_pid=""
 done
 }

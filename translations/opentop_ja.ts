@@ -6515,62 +6515,72 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>選択したドライバに設定を書込み…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="85"/>
+        <location filename="../ui/main/MainMenus.cpp" line="80"/>
+        <source>&amp;Next page</source>
+        <translation>次のページ(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/MainMenus.cpp" line="86"/>
+        <source>&amp;Previous page</source>
+        <translation>前のページ(&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/MainMenus.cpp" line="100"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="91"/>
+        <location filename="../ui/main/MainMenus.cpp" line="106"/>
         <source>&amp;Traffic log</source>
         <translation>通信ログ(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="92"/>
+        <location filename="../ui/main/MainMenus.cpp" line="107"/>
         <source>Bus &amp;overview</source>
         <translation>バス一覧(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="94"/>
+        <location filename="../ui/main/MainMenus.cpp" line="109"/>
         <source>T&amp;rends</source>
         <translation>トレンド(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="95"/>
+        <location filename="../ui/main/MainMenus.cpp" line="110"/>
         <source>Communication &amp;groups</source>
         <translation>通信グループ(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="109"/>
+        <location filename="../ui/main/MainMenus.cpp" line="124"/>
         <source>Language</source>
         <translation>言語</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="110"/>
+        <location filename="../ui/main/MainMenus.cpp" line="125"/>
         <source>OpenTOP will be in %1 the next time it starts.</source>
         <translation>OpenTOP は次回の起動時から %1 で表示されます。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="116"/>
+        <location filename="../ui/main/MainMenus.cpp" line="131"/>
         <source>&amp;End of line</source>
         <translation>出荷検査(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="118"/>
+        <location filename="../ui/main/MainMenus.cpp" line="133"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="131"/>
+        <location filename="../ui/main/MainMenus.cpp" line="146"/>
         <source>connect elsewhere</source>
         <translation>別の接続先への接続</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="141"/>
+        <location filename="../ui/main/MainMenus.cpp" line="156"/>
         <source>Export alarm histories</source>
         <translation>アラーム履歴のエクスポート</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="142"/>
+        <location filename="../ui/main/MainMenus.cpp" line="157"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>

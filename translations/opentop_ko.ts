@@ -6515,62 +6515,72 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>선택한 드라이버에 설정 하나 쓰기…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="85"/>
+        <location filename="../ui/main/MainMenus.cpp" line="80"/>
+        <source>&amp;Next page</source>
+        <translation>다음 페이지(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/MainMenus.cpp" line="86"/>
+        <source>&amp;Previous page</source>
+        <translation>이전 페이지(&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/MainMenus.cpp" line="100"/>
         <source>&amp;View</source>
         <translation>보기(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="91"/>
+        <location filename="../ui/main/MainMenus.cpp" line="106"/>
         <source>&amp;Traffic log</source>
         <translation>통신 로그(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="92"/>
+        <location filename="../ui/main/MainMenus.cpp" line="107"/>
         <source>Bus &amp;overview</source>
         <translation>버스 개요(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="94"/>
+        <location filename="../ui/main/MainMenus.cpp" line="109"/>
         <source>T&amp;rends</source>
         <translation>트렌드(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="95"/>
+        <location filename="../ui/main/MainMenus.cpp" line="110"/>
         <source>Communication &amp;groups</source>
         <translation>통신 그룹(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="109"/>
+        <location filename="../ui/main/MainMenus.cpp" line="124"/>
         <source>Language</source>
         <translation>언어</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="110"/>
+        <location filename="../ui/main/MainMenus.cpp" line="125"/>
         <source>OpenTOP will be in %1 the next time it starts.</source>
         <translation>OpenTOP은 다음에 시작할 때 %1(으)로 표시됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="116"/>
+        <location filename="../ui/main/MainMenus.cpp" line="131"/>
         <source>&amp;End of line</source>
         <translation>출하 검사(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="118"/>
+        <location filename="../ui/main/MainMenus.cpp" line="133"/>
         <source>&amp;Help</source>
         <translation>도움말(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="131"/>
+        <location filename="../ui/main/MainMenus.cpp" line="146"/>
         <source>connect elsewhere</source>
         <translation>다른 곳에 연결</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="141"/>
+        <location filename="../ui/main/MainMenus.cpp" line="156"/>
         <source>Export alarm histories</source>
         <translation>알람 이력 내보내기</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="142"/>
+        <location filename="../ui/main/MainMenus.cpp" line="157"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>

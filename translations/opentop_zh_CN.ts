@@ -6515,62 +6515,72 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <translation>向所选驱动器写入一项设定…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="85"/>
+        <location filename="../ui/main/MainMenus.cpp" line="80"/>
+        <source>&amp;Next page</source>
+        <translation>下一页(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/MainMenus.cpp" line="86"/>
+        <source>&amp;Previous page</source>
+        <translation>上一页(&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/MainMenus.cpp" line="100"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="91"/>
+        <location filename="../ui/main/MainMenus.cpp" line="106"/>
         <source>&amp;Traffic log</source>
         <translation>报文日志(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="92"/>
+        <location filename="../ui/main/MainMenus.cpp" line="107"/>
         <source>Bus &amp;overview</source>
         <translation>总线总览(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="94"/>
+        <location filename="../ui/main/MainMenus.cpp" line="109"/>
         <source>T&amp;rends</source>
         <translation>趋势(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="95"/>
+        <location filename="../ui/main/MainMenus.cpp" line="110"/>
         <source>Communication &amp;groups</source>
         <translation>通信组(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="109"/>
+        <location filename="../ui/main/MainMenus.cpp" line="124"/>
         <source>Language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="110"/>
+        <location filename="../ui/main/MainMenus.cpp" line="125"/>
         <source>OpenTOP will be in %1 the next time it starts.</source>
         <translation>OpenTOP 下次启动时将以 %1 显示。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="116"/>
+        <location filename="../ui/main/MainMenus.cpp" line="131"/>
         <source>&amp;End of line</source>
         <translation>下线检测(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="118"/>
+        <location filename="../ui/main/MainMenus.cpp" line="133"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="131"/>
+        <location filename="../ui/main/MainMenus.cpp" line="146"/>
         <source>connect elsewhere</source>
         <translation>连接到其他总线</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="141"/>
+        <location filename="../ui/main/MainMenus.cpp" line="156"/>
         <source>Export alarm histories</source>
         <translation>导出报警履历</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="142"/>
+        <location filename="../ui/main/MainMenus.cpp" line="157"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>

@@ -58,6 +58,15 @@ BusRecallBar::BusRecallBar(BusDrives* drives, const ConnectionSettings& settings
         m_restore->hide();
         m_text->setText(
             tr("No drive is known on %1 yet. Scan the bus to find the drives.").arg(place));
+        // Once a drive answers (a scan from the toolbar, a drive added by number) the bar would
+        // say something false: it goes.
+        auto hideOnceOneAnswers = [this] {
+            for (int slave : m_drives->slaves())
+                if (m_drives->info(slave).state == DeviceInfo::State::Present)
+                    hide();
+        };
+        connect(drives, &BusDrives::driveAdded, this, hideOnceOneAnswers);
+        connect(drives, &BusDrives::driveChanged, this, hideOnceOneAnswers);
     }
     setVisible(offer);
     // From now on, what is on this bus is what will be offered next time.

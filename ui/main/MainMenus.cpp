@@ -74,6 +74,21 @@ MainMenus::MainMenus(MainWindow* window, BusDocks* docks, std::function<QVector<
     m_multiWrite = drive->addAction(tr("Write a setting to the selected drives…"), this,
                                     &MainMenus::writeToSelected);
     m_multiWrite->setEnabled(false);
+    // The selected drive's pages from the keyboard, as tabs elsewhere (the side tabs take no
+    // focus while a value is being typed).
+    drive->addSeparator();
+    QAction* nextPage = drive->addAction(tr("&Next page"), workspace, [workspace] {
+        QTabWidget* tabs = workspace->tabs();
+        if (tabs->count() > 0)
+            tabs->setCurrentIndex((tabs->currentIndex() + 1) % tabs->count());
+    });
+    nextPage->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_PageDown));
+    QAction* previousPage = drive->addAction(tr("&Previous page"), workspace, [workspace] {
+        QTabWidget* tabs = workspace->tabs();
+        if (tabs->count() > 0)
+            tabs->setCurrentIndex((tabs->currentIndex() + tabs->count() - 1) % tabs->count());
+    });
+    previousPage->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_PageUp));
     toolbar->addAction(writeAll);
     toolbar->addAction(m_multiWrite);
     toolbar->addSeparator();

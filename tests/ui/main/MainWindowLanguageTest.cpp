@@ -142,3 +142,19 @@ TEST(LanguageTest, CodesAsPeopleAndLocalesWriteThemAreUnderstood)
     EXPECT_TRUE(error.contains(QStringLiteral("zh_TW"))) << qPrintable(error);
     EXPECT_EQ(Language::current(), QStringLiteral("en"));
 }
+
+TEST_F(MainWindowFixture, CtrlPageDownAndUpTurnTheSelectedDrivesPages)
+{
+    select({1});
+    ASSERT_TRUE(
+        waitFor([&] { return window->workspace()->drive() == window->drives()->parameters(1); }));
+    QTabWidget* tabs = window->workspace()->tabs();
+    ASSERT_GT(tabs->count(), 3);
+    tabs->setCurrentIndex(0);
+    window->activateWindow();
+    QTest::keyClick(window.get(), Qt::Key_PageDown, Qt::ControlModifier);
+    EXPECT_EQ(tabs->currentIndex(), 1);
+    QTest::keyClick(window.get(), Qt::Key_PageUp, Qt::ControlModifier);
+    QTest::keyClick(window.get(), Qt::Key_PageUp, Qt::ControlModifier);
+    EXPECT_EQ(tabs->currentIndex(), tabs->count() - 1); // round to the last page
+}
