@@ -390,7 +390,7 @@
         <translation>%1: %2 は &quot;%3&quot; で書き込める値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="55"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="56"/>
         <source> and %1 more</source>
         <translation> ほか %1 件</translation>
     </message>
@@ -1270,12 +1270,7 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFile</name>
     <message>
-        <location filename="../model/files/BackupFile.cpp" line="286"/>
-        <source>cannot read %1: %2</source>
-        <translation>%1 を読み込めません: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/files/BackupFile.cpp" line="293"/>
+        <location filename="../model/files/BackupFile.cpp" line="290"/>
         <source>%1 is larger than %2 MB, the most a backup file may hold (a backup of 247 drives is far smaller); not a backup file</source>
         <translation>%1 は %2 MB を超えています。これはバックアップファイルの上限です（247 台分のバックアップでもはるかに小さくなります）。バックアップファイルではありません</translation>
     </message>
@@ -6177,6 +6172,14 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
 </context>
 <context>
+    <name>opentop::InputFile</name>
+    <message>
+        <location filename="../model/files/InputFile.cpp" line="13"/>
+        <source>cannot read %1: %2</source>
+        <translation>%1 を読み込めません: %2</translation>
+    </message>
+</context>
+<context>
     <name>opentop::IoTerminalsPage</name>
     <message>
         <location filename="../ui/pages/IoTerminalsPage.cpp" line="31"/>
@@ -8316,77 +8319,72 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileTranslation</name>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="74"/>
-        <source>%1: cannot open: %2</source>
-        <translation>%1: 開けません: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="81"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="78"/>
         <source>%1 is larger than %2 MB, the most a profile translation may hold</source>
         <translation>%1 はプロファイル翻訳の上限 %2 MB を超えています</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="99"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="96"/>
         <source>larger than %1 MB, the most a profile translation may hold</source>
         <translation>プロファイル翻訳の上限 %1 MB を超えています</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="104"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="101"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>オフセット %1 で有効な JSON ではありません: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="108"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="105"/>
         <source>the top level must be a JSON object</source>
         <translation>最上位は JSON オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="111"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="108"/>
         <source>&quot;format&quot; must be &quot;%1&quot;</source>
         <translation>&quot;format&quot; は &quot;%1&quot; でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="114"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="111"/>
         <source>&quot;formatVersion&quot; must be %1</source>
         <translation>&quot;formatVersion&quot; は %1 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="120"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="117"/>
         <source>&quot;family&quot; is &quot;%1&quot;, but the profile is &quot;%2&quot;</source>
         <translation>&quot;family&quot; は &quot;%1&quot; ですが、プロファイルは &quot;%2&quot; です</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="122"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="119"/>
         <source>&quot;language&quot; is &quot;%1&quot;, expected &quot;%2&quot;</source>
         <translation>&quot;language&quot; は &quot;%1&quot; ですが、&quot;%2&quot; であるべきです</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="125"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="122"/>
         <source>&quot;texts&quot; must be an object of key → text</source>
         <translation>&quot;texts&quot; はキー → テキストのオブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="129"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="126"/>
         <source>texts &quot;%1&quot; must be a non-empty string</source>
         <translation>texts &quot;%1&quot; は空でない文字列でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="146"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="143"/>
         <source>%1 key(s) of the profile missing: %2</source>
         <translation>プロファイルのキーが %1 個ありません: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="150"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="147"/>
         <source>%1 key(s) the profile does not have: %2</source>
         <translation>プロファイルにないキーが %1 個あります: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="158"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="155"/>
         <source>texts &quot;%1&quot;: the panel codes must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;: パネルコードは英語と同じでなければなりません (%2)。実際: (%3)</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="163"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="160"/>
         <source>texts &quot;%1&quot;: the placeholders must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;: プレースホルダーは英語と同じでなければなりません (%2)。実際: (%3)</translation>
     </message>
@@ -8881,17 +8879,12 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="250"/>
-        <source>cannot read %1: %2</source>
-        <translation>%1 を読み込めません: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="257"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="254"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1 は %2 MB を超えています（レシピファイルの上限）。レシピファイルではありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="265"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="262"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -13206,102 +13199,97 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitValuesCsv</name>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="70"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="71"/>
         <source>the CSV file is larger than %1 MB</source>
         <translation>CSV ファイルが %1 MB を超えています</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="72"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="73"/>
         <source>not a CSV text file (it holds NUL bytes)</source>
         <translation>CSV テキストファイルではありません（NUL バイトを含みます）</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="93"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="94"/>
         <source>line %1: a quoted field is not closed properly</source>
         <translation>%1 行目: 引用符で囲まれたフィールドが正しく閉じられていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="97"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="98"/>
         <source>line %1: the header must start with &quot;serial&quot;, not &quot;%2&quot;</source>
         <translation>%1 行目: ヘッダは &quot;%2&quot; ではなく &quot;serial&quot; で始まる必要があります</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="101"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="102"/>
         <source>line %1: the header names no per-unit value</source>
         <translation>%1 行目: ヘッダに個別値の名前がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="103"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="104"/>
         <source>line %1: more than %2 columns</source>
         <translation>%1 行目: 列が %2 個を超えています</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="107"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="108"/>
         <source>line %1: column %2 has no name</source>
         <translation>%1 行目: 列 %2 に名前がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="109"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="110"/>
         <source>line %1: column &quot;%2&quot; appears twice</source>
         <translation>%1 行目: 列 &quot;%2&quot; が 2 回出現しています</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="118"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="119"/>
         <source>line %1: %2 fields, but the header has %3</source>
         <translation>%1 行目: フィールドが %2 個ですが、ヘッダは %3 個です</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="124"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="125"/>
         <source>line %1: no serial number</source>
         <translation>%1 行目: シリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="126"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="127"/>
         <source>line %1: serial number &quot;%2&quot; is already on line %3</source>
         <translation>%1 行目: シリアル番号 &quot;%2&quot; はすでに %3 行目にあります</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="133"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="134"/>
         <source>the CSV file is empty; it needs a header &quot;serial,&lt;parameter&gt;,...&quot;</source>
         <translation>CSV ファイルが空です。ヘッダ &quot;serial,&lt;parameter&gt;,...&quot; が必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="144"/>
-        <source>cannot read %1: %2</source>
-        <translation>%1 を読み込めません: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="150"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="148"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="191"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="189"/>
         <source>serial number &quot;%1&quot; is not in the CSV file</source>
         <translation>シリアル番号 &quot;%1&quot; は CSV ファイルにありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="204"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="202"/>
         <source>%1: column &quot;%2&quot; is ambiguous, several positions have this per-unit value; name the column &quot;%3:%2&quot;</source>
         <translation>%1: 列 &quot;%2&quot; があいまいです（複数の位置にこの個別値があります）。列名を &quot;%3:%2&quot; にしてください</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="208"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="206"/>
         <source>%1: the CSV file has no column &quot;%2&quot; (or &quot;%3:%2&quot;) for this per-unit value</source>
         <translation>%1: CSV ファイルにこの個別値の列 &quot;%2&quot;（または &quot;%3:%2&quot;）がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="213"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="211"/>
         <source>line %1, column &quot;%2&quot;: no value for serial number &quot;%3&quot;</source>
         <translation>%1 行目、列 &quot;%2&quot;: シリアル番号 &quot;%3&quot; の値がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="222"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="220"/>
         <source>line %1, column &quot;%2&quot;: &quot;%3&quot; is not a number</source>
         <translation>%1 行目、列 &quot;%2&quot;: &quot;%3&quot; は数値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="227"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="225"/>
         <source>line %1: %2</source>
         <translation>%1 行目: %2</translation>
     </message>

@@ -390,7 +390,7 @@
         <translation>%1: %2은(는) &quot;%3&quot;에 쓸 수 있는 값이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="55"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="56"/>
         <source> and %1 more</source>
         <translation> 외 %1개</translation>
     </message>
@@ -1270,12 +1270,7 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFile</name>
     <message>
-        <location filename="../model/files/BackupFile.cpp" line="286"/>
-        <source>cannot read %1: %2</source>
-        <translation>%1을(를) 읽을 수 없습니다: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/files/BackupFile.cpp" line="293"/>
+        <location filename="../model/files/BackupFile.cpp" line="290"/>
         <source>%1 is larger than %2 MB, the most a backup file may hold (a backup of 247 drives is far smaller); not a backup file</source>
         <translation>%1이(가) 백업 파일의 최대 크기 %2 MB보다 큽니다(드라이버 247대의 백업도 훨씬 작음). 백업 파일이 아닙니다</translation>
     </message>
@@ -6177,6 +6172,14 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
     </message>
 </context>
 <context>
+    <name>opentop::InputFile</name>
+    <message>
+        <location filename="../model/files/InputFile.cpp" line="13"/>
+        <source>cannot read %1: %2</source>
+        <translation>%1을(를) 읽을 수 없습니다: %2</translation>
+    </message>
+</context>
+<context>
     <name>opentop::IoTerminalsPage</name>
     <message>
         <location filename="../ui/pages/IoTerminalsPage.cpp" line="31"/>
@@ -8316,77 +8319,72 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileTranslation</name>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="74"/>
-        <source>%1: cannot open: %2</source>
-        <translation>%1: 열 수 없습니다: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="81"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="78"/>
         <source>%1 is larger than %2 MB, the most a profile translation may hold</source>
         <translation>%1이(가) 프로파일 번역의 최대 크기인 %2 MB보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="99"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="96"/>
         <source>larger than %1 MB, the most a profile translation may hold</source>
         <translation>프로파일 번역의 최대 크기인 %1 MB보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="104"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="101"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>오프셋 %1에서 올바른 JSON이 아닙니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="108"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="105"/>
         <source>the top level must be a JSON object</source>
         <translation>최상위는 JSON 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="111"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="108"/>
         <source>&quot;format&quot; must be &quot;%1&quot;</source>
         <translation>&quot;format&quot;은(는) &quot;%1&quot;이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="114"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="111"/>
         <source>&quot;formatVersion&quot; must be %1</source>
         <translation>&quot;formatVersion&quot;은(는) %1이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="120"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="117"/>
         <source>&quot;family&quot; is &quot;%1&quot;, but the profile is &quot;%2&quot;</source>
         <translation>&quot;family&quot;가 &quot;%1&quot;이지만 프로파일은 &quot;%2&quot;입니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="122"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="119"/>
         <source>&quot;language&quot; is &quot;%1&quot;, expected &quot;%2&quot;</source>
         <translation>&quot;language&quot;가 &quot;%1&quot;이지만 &quot;%2&quot;여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="125"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="122"/>
         <source>&quot;texts&quot; must be an object of key → text</source>
         <translation>&quot;texts&quot;는 키 → 텍스트 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="129"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="126"/>
         <source>texts &quot;%1&quot; must be a non-empty string</source>
         <translation>texts &quot;%1&quot;은(는) 비어 있지 않은 문자열이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="146"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="143"/>
         <source>%1 key(s) of the profile missing: %2</source>
         <translation>프로파일의 키 %1개가 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="150"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="147"/>
         <source>%1 key(s) the profile does not have: %2</source>
         <translation>프로파일에 없는 키 %1개: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="158"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="155"/>
         <source>texts &quot;%1&quot;: the panel codes must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;: 패널 코드는 영어와 같아야 합니다(%2). 실제: (%3)</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="163"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="160"/>
         <source>texts &quot;%1&quot;: the placeholders must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;: 자리 표시자는 영어와 같아야 합니다(%2). 실제: (%3)</translation>
     </message>
@@ -8881,17 +8879,12 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="250"/>
-        <source>cannot read %1: %2</source>
-        <translation>%1을(를) 읽을 수 없습니다: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="257"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="254"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1이(가) 레시피 파일의 최대 크기 %2 MB보다 큽니다. 레시피 파일이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="265"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="262"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -13206,102 +13199,97 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitValuesCsv</name>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="70"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="71"/>
         <source>the CSV file is larger than %1 MB</source>
         <translation>CSV 파일이 %1 MB보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="72"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="73"/>
         <source>not a CSV text file (it holds NUL bytes)</source>
         <translation>CSV 텍스트 파일이 아닙니다(NUL 바이트 포함)</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="93"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="94"/>
         <source>line %1: a quoted field is not closed properly</source>
         <translation>%1행: 따옴표로 묶은 필드가 올바르게 닫히지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="97"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="98"/>
         <source>line %1: the header must start with &quot;serial&quot;, not &quot;%2&quot;</source>
         <translation>%1행: 헤더는 &quot;%2&quot;이(가) 아니라 &quot;serial&quot;로 시작해야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="101"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="102"/>
         <source>line %1: the header names no per-unit value</source>
         <translation>%1행: 헤더에 제품별 값이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="103"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="104"/>
         <source>line %1: more than %2 columns</source>
         <translation>%1행: 열이 %2개보다 많습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="107"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="108"/>
         <source>line %1: column %2 has no name</source>
         <translation>%1행: 열 %2에 이름이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="109"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="110"/>
         <source>line %1: column &quot;%2&quot; appears twice</source>
         <translation>%1행: 열 &quot;%2&quot;이(가) 두 번 나옵니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="118"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="119"/>
         <source>line %1: %2 fields, but the header has %3</source>
         <translation>%1행: 필드가 %2개이지만 헤더는 %3개입니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="124"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="125"/>
         <source>line %1: no serial number</source>
         <translation>%1행: 시리얼 번호 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="126"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="127"/>
         <source>line %1: serial number &quot;%2&quot; is already on line %3</source>
         <translation>%1행: 시리얼 번호 &quot;%2&quot;이(가) 이미 %3행에 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="133"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="134"/>
         <source>the CSV file is empty; it needs a header &quot;serial,&lt;parameter&gt;,...&quot;</source>
         <translation>CSV 파일이 비어 있습니다. &quot;serial,&lt;parameter&gt;,...&quot; 헤더가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="144"/>
-        <source>cannot read %1: %2</source>
-        <translation>%1을(를) 읽을 수 없습니다: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="150"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="148"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="191"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="189"/>
         <source>serial number &quot;%1&quot; is not in the CSV file</source>
         <translation>시리얼 번호 &quot;%1&quot;이(가) CSV 파일에 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="204"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="202"/>
         <source>%1: column &quot;%2&quot; is ambiguous, several positions have this per-unit value; name the column &quot;%3:%2&quot;</source>
         <translation>%1: 열 &quot;%2&quot;이(가) 모호합니다. 여러 위치에 이 제품별 값이 있습니다. 열 이름을 &quot;%3:%2&quot;(으)로 하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="208"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="206"/>
         <source>%1: the CSV file has no column &quot;%2&quot; (or &quot;%3:%2&quot;) for this per-unit value</source>
         <translation>%1: CSV 파일에 이 제품별 값의 열 &quot;%2&quot;(또는 &quot;%3:%2&quot;)이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="213"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="211"/>
         <source>line %1, column &quot;%2&quot;: no value for serial number &quot;%3&quot;</source>
         <translation>%1행, 열 &quot;%2&quot;: 시리얼 번호 &quot;%3&quot;의 값이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="222"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="220"/>
         <source>line %1, column &quot;%2&quot;: &quot;%3&quot; is not a number</source>
         <translation>%1행, 열 &quot;%2&quot;: &quot;%3&quot;은(는) 숫자가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="227"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="225"/>
         <source>line %1: %2</source>
         <translation>%1행: %2</translation>
     </message>

@@ -390,7 +390,7 @@
         <translation>%1：%2 不是 &quot;%3&quot; 可寫入的值</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="55"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="56"/>
         <source> and %1 more</source>
         <translation> 及另外 %1 個</translation>
     </message>
@@ -1270,12 +1270,7 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFile</name>
     <message>
-        <location filename="../model/files/BackupFile.cpp" line="286"/>
-        <source>cannot read %1: %2</source>
-        <translation>無法讀取 %1：%2</translation>
-    </message>
-    <message>
-        <location filename="../model/files/BackupFile.cpp" line="293"/>
+        <location filename="../model/files/BackupFile.cpp" line="290"/>
         <source>%1 is larger than %2 MB, the most a backup file may hold (a backup of 247 drives is far smaller); not a backup file</source>
         <translation>%1 大於備份檔上限 %2 MB (即使 247 台驅動器的備份也遠小於此)；不是備份檔</translation>
     </message>
@@ -6177,6 +6172,14 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
 </context>
 <context>
+    <name>opentop::InputFile</name>
+    <message>
+        <location filename="../model/files/InputFile.cpp" line="13"/>
+        <source>cannot read %1: %2</source>
+        <translation>無法讀取 %1：%2</translation>
+    </message>
+</context>
+<context>
     <name>opentop::IoTerminalsPage</name>
     <message>
         <location filename="../ui/pages/IoTerminalsPage.cpp" line="31"/>
@@ -8316,77 +8319,72 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileTranslation</name>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="74"/>
-        <source>%1: cannot open: %2</source>
-        <translation>%1：無法開啟：%2</translation>
-    </message>
-    <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="81"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="78"/>
         <source>%1 is larger than %2 MB, the most a profile translation may hold</source>
         <translation>%1 大於 %2 MB，即定義檔翻譯的上限</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="99"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="96"/>
         <source>larger than %1 MB, the most a profile translation may hold</source>
         <translation>大於 %1 MB，即定義檔翻譯的上限</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="104"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="101"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>位移 %1 處不是有效的 JSON：%2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="108"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="105"/>
         <source>the top level must be a JSON object</source>
         <translation>最上層必須是 JSON 物件</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="111"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="108"/>
         <source>&quot;format&quot; must be &quot;%1&quot;</source>
         <translation>&quot;format&quot; 必須是 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="114"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="111"/>
         <source>&quot;formatVersion&quot; must be %1</source>
         <translation>&quot;formatVersion&quot; 必須是 %1</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="120"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="117"/>
         <source>&quot;family&quot; is &quot;%1&quot;, but the profile is &quot;%2&quot;</source>
         <translation>&quot;family&quot; 是 &quot;%1&quot;，但定義檔是 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="122"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="119"/>
         <source>&quot;language&quot; is &quot;%1&quot;, expected &quot;%2&quot;</source>
         <translation>&quot;language&quot; 是 &quot;%1&quot;，應為 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="125"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="122"/>
         <source>&quot;texts&quot; must be an object of key → text</source>
         <translation>&quot;texts&quot; 必須是 鍵 → 文字 的物件</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="129"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="126"/>
         <source>texts &quot;%1&quot; must be a non-empty string</source>
         <translation>texts &quot;%1&quot; 必須是非空字串</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="146"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="143"/>
         <source>%1 key(s) of the profile missing: %2</source>
         <translation>缺少定義檔的 %1 個鍵：%2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="150"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="147"/>
         <source>%1 key(s) the profile does not have: %2</source>
         <translation>%1 個鍵不屬於此定義檔：%2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="158"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="155"/>
         <source>texts &quot;%1&quot;: the panel codes must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;：面板代碼必須與英文相同（%2），實際為（%3）</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="163"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="160"/>
         <source>texts &quot;%1&quot;: the placeholders must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;：預留位置必須與英文相同（%2），實際為（%3）</translation>
     </message>
@@ -8881,17 +8879,12 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="250"/>
-        <source>cannot read %1: %2</source>
-        <translation>無法讀取 %1：%2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="257"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="254"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1 大於配方檔上限 %2 MB；不是配方檔</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="265"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="262"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -13206,102 +13199,97 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitValuesCsv</name>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="70"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="71"/>
         <source>the CSV file is larger than %1 MB</source>
         <translation>CSV 檔大於 %1 MB</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="72"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="73"/>
         <source>not a CSV text file (it holds NUL bytes)</source>
         <translation>不是 CSV 文字檔 (含有 NUL 位元組)</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="93"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="94"/>
         <source>line %1: a quoted field is not closed properly</source>
         <translation>第 %1 行：引號欄位未正確結束</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="97"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="98"/>
         <source>line %1: the header must start with &quot;serial&quot;, not &quot;%2&quot;</source>
         <translation>第 %1 行：標題列必須以 &quot;serial&quot; 開頭，而非 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="101"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="102"/>
         <source>line %1: the header names no per-unit value</source>
         <translation>第 %1 行：標題列中沒有任何單台數值</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="103"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="104"/>
         <source>line %1: more than %2 columns</source>
         <translation>第 %1 行：超過 %2 欄</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="107"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="108"/>
         <source>line %1: column %2 has no name</source>
         <translation>第 %1 行：第 %2 欄沒有名稱</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="109"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="110"/>
         <source>line %1: column &quot;%2&quot; appears twice</source>
         <translation>第 %1 行：欄位 &quot;%2&quot; 出現兩次</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="118"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="119"/>
         <source>line %1: %2 fields, but the header has %3</source>
         <translation>第 %1 行：有 %2 個欄位，但標題列有 %3 個</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="124"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="125"/>
         <source>line %1: no serial number</source>
         <translation>第 %1 行：沒有序號</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="126"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="127"/>
         <source>line %1: serial number &quot;%2&quot; is already on line %3</source>
         <translation>第 %1 行：序號 &quot;%2&quot; 已出現在第 %3 行</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="133"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="134"/>
         <source>the CSV file is empty; it needs a header &quot;serial,&lt;parameter&gt;,...&quot;</source>
         <translation>CSV 檔為空；需要標題列 &quot;serial,&lt;parameter&gt;,...&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="144"/>
-        <source>cannot read %1: %2</source>
-        <translation>無法讀取 %1：%2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="150"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="148"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="191"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="189"/>
         <source>serial number &quot;%1&quot; is not in the CSV file</source>
         <translation>序號 &quot;%1&quot; 不在 CSV 檔中</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="204"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="202"/>
         <source>%1: column &quot;%2&quot; is ambiguous, several positions have this per-unit value; name the column &quot;%3:%2&quot;</source>
         <translation>%1：欄位 &quot;%2&quot; 不明確，多個位置都有此單台數值；請將欄位命名為 &quot;%3:%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="208"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="206"/>
         <source>%1: the CSV file has no column &quot;%2&quot; (or &quot;%3:%2&quot;) for this per-unit value</source>
         <translation>%1：CSV 檔中沒有此單台數值的欄位 &quot;%2&quot; (或 &quot;%3:%2&quot;)</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="213"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="211"/>
         <source>line %1, column &quot;%2&quot;: no value for serial number &quot;%3&quot;</source>
         <translation>第 %1 行，欄位 &quot;%2&quot;：序號 &quot;%3&quot; 沒有值</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="222"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="220"/>
         <source>line %1, column &quot;%2&quot;: &quot;%3&quot; is not a number</source>
         <translation>第 %1 行，欄位 &quot;%2&quot;：&quot;%3&quot; 不是數字</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="227"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="225"/>
         <source>line %1: %2</source>
         <translation>第 %1 行：%2</translation>
     </message>

@@ -1,4 +1,5 @@
 #include "eol/RecipeFile.h"
+#include "files/InputFile.h"
 
 #include "eol/RecipeParser.h"
 #include "files/BackupFile.h"
@@ -244,15 +245,11 @@ bool RecipeFile::save(const Recipe& recipe, const QString& path, QString* error)
 
 std::optional<Recipe> RecipeFile::load(const QString& path, QString* error, QString* checksum)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        if (error)
-            *error = tr("cannot read %1: %2").arg(path, file.errorString());
+    QByteArray data;
+    const InputFile::Status read = InputFile::read(path, kMaxFileBytes, &data, error);
+    if (read == InputFile::Status::CannotOpen)
         return std::nullopt;
-    }
-    // Never more than the cap is read, whatever the file claims to hold (a device has no size).
-    const QByteArray data = file.read(kMaxFileBytes + 1);
-    if (data.size() > kMaxFileBytes) {
+    if (read == InputFile::Status::TooLarge) {
         if (error)
             *error = tr("%1 is larger than %2 MB, the most a recipe file may hold; not a recipe "
                         "file")

@@ -1,4 +1,5 @@
 #include "eol/UnitValuesCsv.h"
+#include "files/InputFile.h"
 
 #include "eol/Recipe.h"
 #include "eol/RecipeChecker.h"
@@ -138,13 +139,10 @@ std::optional<UnitValuesCsv> UnitValuesCsv::parse(const QByteArray& data, QStrin
 
 std::optional<UnitValuesCsv> UnitValuesCsv::load(const QString& path, QString* error)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        if (error)
-            *error = tr("cannot read %1: %2").arg(path, file.errorString());
+    QByteArray data;
+    if (InputFile::read(path, kMaxFileBytes, &data, error) == InputFile::Status::CannotOpen)
         return std::nullopt;
-    }
-    const QByteArray data = file.read(kMaxFileBytes + 1);
+    // A file over the cap is refused by parse(), which sees the extra byte.
     std::optional<UnitValuesCsv> csv = parse(data, error);
     if (!csv && error)
         *error = tr("%1: %2").arg(path, *error);

@@ -1,4 +1,5 @@
 #include "files/BackupFile.h"
+#include "files/InputFile.h"
 #include "files/OutputFile.h"
 
 #include "files/BackupFileParser.h"
@@ -280,15 +281,11 @@ bool BackupFile::save(const QString& path, const ProfileRegistry& registry, QStr
 std::optional<BackupFile> BackupFile::load(const QString& path, const ProfileRegistry& registry,
                                            QString* error)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        if (error)
-            *error = tr("cannot read %1: %2").arg(path, file.errorString());
+    QByteArray data;
+    const InputFile::Status read = InputFile::read(path, kMaxFileBytes, &data, error);
+    if (read == InputFile::Status::CannotOpen)
         return std::nullopt;
-    }
-    // Never more than the cap is read, whatever the file claims to hold (a device has no size).
-    const QByteArray data = file.read(kMaxFileBytes + 1);
-    if (data.size() > kMaxFileBytes) {
+    if (read == InputFile::Status::TooLarge) {
         if (error)
             *error = tr("%1 is larger than %2 MB, the most a backup file may hold (a backup of "
                         "247 drives is far smaller); not a backup file")

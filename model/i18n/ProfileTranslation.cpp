@@ -1,4 +1,5 @@
 #include "i18n/ProfileTranslation.h"
+#include "files/InputFile.h"
 
 #include "i18n/ProfileTexts.h"
 
@@ -68,15 +69,11 @@ std::optional<ProfileTranslation> ProfileTranslation::loadFile(const QString& pa
                                                                const QString& language,
                                                                QString* error)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        if (error)
-            *error = tr("%1: cannot open: %2").arg(path, file.errorString());
+    QByteArray data;
+    const InputFile::Status read = InputFile::read(path, kMaxFileBytes, &data, error);
+    if (read == InputFile::Status::CannotOpen)
         return std::nullopt;
-    }
-    // Never more than the cap is read, whatever the file claims to hold.
-    const QByteArray data = file.read(kMaxFileBytes + 1);
-    if (data.size() > kMaxFileBytes) {
+    if (read == InputFile::Status::TooLarge) {
         if (error)
             *error = tr("%1 is larger than %2 MB, the most a profile translation may hold")
                          .arg(path)

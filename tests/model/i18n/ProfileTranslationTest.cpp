@@ -195,5 +195,5 @@ TEST(ProfileTranslation, BrokenAndOversizedFilesGiveAnErrorNotACrash)
     EXPECT_TRUE(error.contains(big)) << qPrintable(error);
     EXPECT_FALSE(ProfileTranslation::loadFile(dir.filePath(QStringLiteral("none.json")), dbu,
                                               QStringLiteral("ko"), &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("cannot open"))) << qPrintable(error);
+    EXPECT_TRUE(error.contains(QStringLiteral("cannot read"))) << qPrintable(error);
 }
