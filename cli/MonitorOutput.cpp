@@ -1,5 +1,7 @@
 #include "MonitorOutput.h"
 
+#include "TerminalWidth.h"
+
 #include "monitor/DeviceMonitor.h"
 #include "profile/RoleEvaluator.h"
 #include "profile/ValueCodec.h"
@@ -34,7 +36,7 @@ int valueWidth(const ParameterMeta& meta, const ValueContext& context)
     const ValueSpec& spec = meta.specFor(context);
     int width = 0;
     for (const EnumOption& o : spec.options)
-        width = std::max(width, int(o.label.size()));
+        width = std::max(width, TerminalWidth::of(o.label));
     if (!spec.ranges.isEmpty() || spec.options.isEmpty()) {
         int digits = 5 + (spec.decimals > 0 ? spec.decimals + 1 : 0);
         for (const ValueRange& r : spec.ranges) {
@@ -42,7 +44,8 @@ int valueWidth(const ParameterMeta& meta, const ValueContext& context)
                 digits = std::max<int>(
                     digits, ValueCodec::formatNumber(raw * spec.scale, spec.decimals).size());
         }
-        width = std::max(width, digits + (spec.unit.isEmpty() ? 0 : int(spec.unit.size()) + 1));
+        width =
+            std::max(width, digits + (spec.unit.isEmpty() ? 0 : TerminalWidth::of(spec.unit) + 1));
     }
     return width;
 }
@@ -89,8 +92,8 @@ MonitorOutput::MonitorOutput(const DeviceMonitor& monitor)
                 c.header = shortHeader(f.label, f.name);
                 c.key = name + QLatin1Char('.') + f.name;
                 for (const QString& v : f.values)
-                    c.width = std::max(c.width, int(v.size()));
-                c.width = std::max({c.width, int(c.header.size()), 2});
+                    c.width = std::max(c.width, TerminalWidth::of(v));
+                c.width = std::max({c.width, TerminalWidth::of(c.header), 2});
                 m_columns << c;
             }
             continue;
@@ -102,7 +105,7 @@ MonitorOutput::MonitorOutput(const DeviceMonitor& monitor)
         c.number = meta->isNumeric() && spec.options.isEmpty();
         c.key = spec.unit.isEmpty() || !c.number ? name
                                                  : QStringLiteral("%1 [%2]").arg(name, spec.unit);
-        c.width = std::max(int(c.header.size()), valueWidth(*meta, context));
+        c.width = std::max(TerminalWidth::of(c.header), valueWidth(*meta, context));
         m_columns << c;
         const std::optional<SpeedDisplay>& display = monitor.speedDisplay();
         if (display && (meta == current || meta == target)) {
@@ -113,7 +116,8 @@ MonitorOutput::MonitorOutput(const DeviceMonitor& monitor)
             d.number = true;
             d.header = d.target ? tr("Target shown") : tr("Speed shown");
             d.key = QStringLiteral("%1.display [%2]").arg(name, display->unit());
-            d.width = std::max<int>(d.header.size(), 10 + display->unit().size());
+            d.width =
+                std::max(TerminalWidth::of(d.header), 10 + TerminalWidth::of(display->unit()));
             m_columns << d;
         }
     }
@@ -122,7 +126,7 @@ MonitorOutput::MonitorOutput(const DeviceMonitor& monitor)
         a.kind = Column::Kind::Alarm;
         a.header = tr("Active alarm");
         a.key = QStringLiteral("alarm");
-        a.width = a.header.size();
+        a.width = TerminalWidth::of(a.header);
         m_columns << a;
     }
 }
@@ -172,10 +176,11 @@ QString MonitorOutput::text(const Column& c, const MonitorSample& s) const
 
 QString MonitorOutput::headerLine() const
 {
-    QString line = tr("Time").leftJustified(12) + QStringLiteral("  ") + tr("ID").rightJustified(3);
+    QString line = TerminalWidth::padRight(tr("Time"), 12) + QStringLiteral("  ") +
+                   TerminalWidth::padLeft(tr("ID"), 3);
     for (const Column& c : m_columns)
-        line += QStringLiteral("  ") +
-                (c.number ? c.header.rightJustified(c.width) : c.header.leftJustified(c.width));
+        line += QStringLiteral("  ") + (c.number ? TerminalWidth::padLeft(c.header, c.width)
+                                                 : TerminalWidth::padRight(c.header, c.width));
     return line.trimmed();
 }
 
@@ -185,8 +190,8 @@ QString MonitorOutput::line(const MonitorSample& sample) const
         timeText(sample) + QStringLiteral("  ") + QString::number(sample.slave).rightJustified(3);
     for (const Column& c : m_columns) {
         const QString cell = text(c, sample);
-        line += QStringLiteral("  ") +
-                (c.number ? cell.rightJustified(c.width) : cell.leftJustified(c.width));
+        line += QStringLiteral("  ") + (c.number ? TerminalWidth::padLeft(cell, c.width)
+                                                 : TerminalWidth::padRight(cell, c.width));
     }
     while (line.endsWith(QLatin1Char(' ')))
         line.chop(1);

@@ -1,5 +1,7 @@
 #include "TextTable.h"
 
+#include "TerminalWidth.h"
+
 #include <QTextStream>
 #include <algorithm>
 
@@ -29,7 +31,7 @@ void TextTable::print(QTextStream& out) const
     QVector<int> width(m_headers.size(), 0);
     auto measure = [&](const QStringList& row) {
         for (int c = 0; c < m_headers.size(); ++c)
-            width[c] = std::max(width[c], int(row.value(c).size()));
+            width[c] = std::max(width[c], TerminalWidth::of(row.value(c)));
     };
     measure(m_headers);
     for (const QStringList& row : m_rows)
@@ -40,9 +42,9 @@ void TextTable::print(QTextStream& out) const
             const QString cell = row.value(c);
             const bool last = c == m_headers.size() - 1;
             if (m_right[c])
-                text += cell.rightJustified(width[c]);
+                text += TerminalWidth::padLeft(cell, width[c]);
             else
-                text += last ? cell : cell.leftJustified(width[c]);
+                text += last ? cell : TerminalWidth::padRight(cell, width[c]);
             if (!last)
                 text += QStringLiteral("  ");
         }
