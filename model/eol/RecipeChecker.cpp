@@ -310,7 +310,8 @@ QString RecipeChecker::rangeProblem(const Profile& profile, const RecipePosition
         if (!value.unit.isEmpty() && value.unit != spec.canonicalUnit)
             return tr("%1: unit \"%2\", but the drive's value is in \"%3\"")
                 .arg(label, value.unit, spec.canonicalUnit);
-        const QString unit = spec.canonicalUnit.isEmpty() ? QString() : QLatin1Char(' ') + spec.canonicalUnit;
+        const QString unit =
+            spec.canonicalUnit.isEmpty() ? QString() : QLatin1Char(' ') + spec.canonicalUnit;
         const QString shown = tr("%1: range %2–%3%4")
                                   .arg(label, ValueCodec::formatNumber(value.min, spec.decimals),
                                        ValueCodec::formatNumber(value.max, spec.decimals), unit);
@@ -351,8 +352,9 @@ QString RecipeChecker::checkUnitValue(const Recipe& recipe, int machineNumber,
             const ParameterMeta* meta = profile->parameter(parameter);
             if (!meta)
                 break;
-            const QString unit =
-                meta->spec.canonicalUnit.isEmpty() ? QString() : QLatin1Char(' ') + meta->spec.canonicalUnit;
+            const QString unit = meta->spec.canonicalUnit.isEmpty()
+                                     ? QString()
+                                     : QLatin1Char(' ') + meta->spec.canonicalUnit;
             if (!std::isfinite(value) || value < u.min || value > u.max)
                 return tr("%1: per-unit value %2: %3%4 is outside the recipe's range %5–%6%4")
                     .arg(where, labelOf(*profile, parameter), QString::number(value), unit,
