@@ -12,11 +12,7 @@ namespace opentop {
 
 namespace {
 
-constexpr double kRunPerSecond = 2.0;      // full output in 0.5 s
-constexpr double kBrakePerSecond = 5.0;    // braking stops from full output in 0.2 s
-constexpr double kCoastPerSecond = 0.5;    // natural stop takes 2 s from full output
-constexpr double kFullCommutation = 1000;  // commutations per second at full output
-constexpr double kHeldCurrentFactor = 1.5; // a motor held below its speed by a defect
+constexpr double kStoppedCommutation = 0.5; // below this the shaft counts as stopped
 
 struct StoreBlock
 {
@@ -171,11 +167,14 @@ void DcPidSimDevice::afterBlockWrite(quint8 function, quint16 address, int count
     }
 }
 
-double DcPidSimDevice::commandFraction() const
+DcSpeedLoop::Gains DcPidSimDevice::gains() const
 {
-    static const double fullScale[] = {1000, 2000, 1000, 500}; // per config.speed_mode
-    const int mode = std::clamp(int(rawOf(QStringLiteral("config.speed_mode"))), 0, 3);
-    return std::clamp(m_command / fullScale[mode], -1.0, 1.0);
+    DcSpeedLoop::Gains g;
+    g.p = rawOf(QStringLiteral("pid.p"));
+    g.i = rawOf(QStringLiteral("pid.i"));
+    g.d = rawOf(QStringLiteral("pid.d"));
+    g.dPeriodMs = int(rawOf(QStringLiteral("pid.d_period")));
+    return g;
 }
 
 void DcPidSimDevice::step(qint64 nowMs, int dtMs)
@@ -186,29 +185,63 @@ void DcPidSimDevice::step(qint64 nowMs, int dtMs)
         m_drive = Drive::Braking;
         m_command = 0;
     }
+    for (int ms = 0; ms < dtMs; ++ms)
+        stepMotor();
     stallProtection(dtMs);
-    double target = m_drive == Drive::Running ? commandFraction() : 0;
-    if (rawOf(QStringLiteral("config.limit_enable")) == 1) {
+    if (m_drive != Drive::Running && m_drive != Drive::Locked &&
+        std::abs(m_motor.commutation()) < kStoppedCommutation)
+        m_drive = Drive::Idle;
+}
+
+void DcPidSimDevice::stepMotor()
+{
+    DcMotor::Input in;
+    in.maxCurrentA = rawOf(QStringLiteral("config.max_current")) / 100;
+    in.brakeCurrentA = rawOf(QStringLiteral("config.brake_current")) / 100;
+    if (defects().stall)
+        in.maxCommutation = 0;
+    else if (defects().maxSpeed)
+        in.maxCommutation = *defects().maxSpeed;
+    bool limited = false;
+    if (m_drive == Drive::Running && rawOf(QStringLiteral("config.limit_enable")) == 1) {
         const bool sq1 = m_inputs & 1;
         const bool sq2 = m_inputs & 2;
-        if (target > 0 && sq1 == (rawOf(QStringLiteral("config.sq1_level")) == 1))
-            target = 0; // forward limit
-        if (target < 0 && sq2 == (rawOf(QStringLiteral("config.sq2_level")) == 1))
-            target = 0; // reverse limit
+        limited = (m_command > 0 && sq1 == (rawOf(QStringLiteral("config.sq1_level")) == 1)) ||
+                  (m_command < 0 && sq2 == (rawOf(QStringLiteral("config.sq2_level")) == 1));
     }
-    const double down = m_drive == Drive::Coasting  ? kCoastPerSecond
-                        : m_drive == Drive::Running ? kRunPerSecond
-                                                    : kBrakePerSecond;
-    m_ramp.step(target, kRunPerSecond, down, dtMs);
-    if (m_drive != Drive::Running && m_ramp.value() == 0 && m_drive != Drive::Locked)
-        m_drive = Drive::Idle;
+    const int mode = int(rawOf(QStringLiteral("config.speed_mode")));
+    if (m_drive == Drive::Running && !limited && m_command != 0) {
+        switch (mode) {
+        case 1:
+            in.drive = DcMotor::Drive::Current;
+            in.currentA = m_command / 100.0;
+            break;
+        case 2:
+            in.drive = DcMotor::Drive::Duty;
+            in.duty = m_loop.step(m_command, m_motor.measuredCommutation(), gains());
+            break;
+        case 3:
+            in.drive = DcMotor::Drive::Duty;
+            in.duty = m_loop.step(m_command, m_motor.tachoVolts() * 100, gains());
+            break;
+        default:
+            in.drive = DcMotor::Drive::Duty;
+            in.duty = m_command / 1000.0;
+            break;
+        }
+    } else {
+        m_loop.reset();
+        in.drive = m_drive == Drive::Coasting ? DcMotor::Drive::Coast
+                   : m_drive == Drive::Locked ? DcMotor::Drive::Hold
+                   : m_drive == Drive::Idle   ? DcMotor::Drive::Coast
+                                              : DcMotor::Drive::Brake;
+    }
+    m_motor.step(in);
 }
 
 double DcPidSimDevice::turning() const
 {
-    const double commutation = m_ramp.value() * kFullCommutation;
-    const double reachable = defects().reachable(std::abs(commutation));
-    return commutation < 0 ? -reachable : reachable;
+    return m_motor.measuredCommutation();
 }
 
 void DcPidSimDevice::stallProtection(int dtMs)
@@ -217,7 +250,8 @@ void DcPidSimDevice::stallProtection(int dtMs)
     const SimDefects& defect = defects();
     m_runningMs = running ? m_runningMs + dtMs : 0;
     // The controller's stall stop (config.stall_time): output but no rotation for that time.
-    const bool stalled = running && m_ramp.value() != 0 && turning() == 0;
+    const bool stalled = running && std::abs(m_motor.appliedDuty()) > 0.01 &&
+                         std::abs(turning()) < kStoppedCommutation;
     m_stalledMs = stalled ? m_stalledMs + dtMs : 0;
     const double stallMs = rawOf(QStringLiteral("config.stall_time")) * 100;
     const bool defectDue = running && defect.alarmCode && m_runningMs >= defect.alarmAfterMs;
@@ -233,31 +267,21 @@ void DcPidSimDevice::stallProtection(int dtMs)
 void DcPidSimDevice::refreshStatus(qint64)
 {
     const SimDefects& defect = defects();
-    const double level = std::abs(m_ramp.value());
-    const int mode = int(rawOf(QStringLiteral("config.speed_mode")));
-    const double rated = rawOf(QStringLiteral("config.rated_current"));
-    const double maxCurrent = rawOf(QStringLiteral("config.max_current"));
-    double current = 0;
-    if (mode == 1)
-        current = level * 2000;
-    else if (level > 0)
-        current = rated * (0.15 + 0.55 * level) + 0.1 * rated * std::abs(m_ramp.rate());
-    if (level > 0 && defect.limits(level * kFullCommutation))
-        current = defect.stall ? maxCurrent : current * kHeldCurrentFactor;
+    double current = std::abs(m_motor.currentA()) * 100; // 0.01 A
     current *= defect.loadScale * (1 + (m_loadOffset + defect.loadOffset) / 100.0);
-    if (maxCurrent > 0)
-        current = std::min(current, maxCurrent);
-    if (m_drive == Drive::Braking && level > 0)
-        current = std::min(rawOf(QStringLiteral("config.brake_current")), current);
+    current = std::max(0.0, current);
 
     auto put = [this](const char* n, double value) {
         const ParameterMeta* p = param(name(n));
         if (p)
             setRawOf(p->name, p->isSigned() ? value : std::abs(value));
     };
-    put("status.pwm", std::round(m_ramp.value() * 1000));
-    put("status.current", std::round(current));
-    put("status.commutation", std::round(turning()));
+    put("status.pwm", std::round(m_motor.appliedDuty() * 1000));
+    put("status.current", std::round(std::min(current, 2000.0)));
+    put("status.commutation", std::round(std::min(std::abs(turning()), 2000.0)));
+    if (int(rawOf(QStringLiteral("config.speed_mode"))) == 3)
+        put("status.ai1_voltage",
+            std::round(std::min(std::abs(m_motor.tachoVolts()) * 100, 500.0)));
     put("status.sq1_level", m_inputs & 1);
     put("status.sq2_level", (m_inputs >> 1) & 1);
     put("status.de_level", (m_inputs >> 2) & 1);
@@ -267,7 +291,8 @@ void DcPidSimDevice::refreshStatus(qint64)
 
 void DcPidSimDevice::onPowerCycle(qint64 nowMs)
 {
-    m_ramp.set(0);
+    m_motor.reset();
+    m_loop.reset();
     m_drive = Drive::Idle;
     m_command = 0;
     m_runningMs = m_stalledMs = 0;
@@ -341,7 +366,7 @@ QString DcPidSimDevice::stateText() const
     return tr("%1 %2%3, output %4 %, command %5, line %6 %7")
         .arg(type(), QLatin1String(drives[int(m_drive)]),
              m_stallStopped ? tr(" (stall stop)") : QString(),
-             QString::number(std::lround(m_ramp.value() * 100)), QString::number(m_command),
+             QString::number(std::lround(m_motor.appliedDuty() * 100)), QString::number(m_command),
              QString::number(m_lineBaud), QString(QLatin1Char(m_lineParity)));
 }
 
@@ -364,7 +389,25 @@ SimControlResult DcPidSimDevice::controlCommand(const QStringList& args, qint64 
         (input ? m_inputs : m_loadOffset) = int(v);
         return {true, tr("%1 = %2").arg(cmd).arg(v)};
     }
+    if (cmd == QLatin1String("motor"))
+        return motorCommand(args);
     return SimDevice::controlCommand(args, nowMs);
+}
+
+SimControlResult DcPidSimDevice::motorCommand(const QStringList& args)
+{
+    if (args.size() > 1) {
+        QString why;
+        const std::optional<DcMotor::Model> model =
+            DcMotor::Model::parse(args.mid(1).join(QLatin1Char(',')), m_motor.model(), &why);
+        if (!model)
+            return fail(why);
+        m_motor.setModel(*model);
+    }
+    return {true, tr("motor %1, speed %2 1/s, current %3 A")
+                      .arg(m_motor.model().toString())
+                      .arg(m_motor.commutation(), 0, 'f', 1)
+                      .arg(m_motor.currentA(), 0, 'f', 2)};
 }
 
 } // namespace opentop

@@ -1,13 +1,16 @@
 #pragma once
 
+#include "DcMotor.h"
+#include "DcSpeedLoop.h"
 #include "SimDevice.h"
-#include "SpeedRamp.h"
 
 namespace opentop {
 
 // The 9–36 V / 20 A DC motor controller with PID speed control (its manual, section 1): 03, 06,
-// 10 and 2B/0E, exception 0x40 for locked serial settings, speed command per speed mode with a
-// simple ramp, temporary configuration until stored, braking on communication loss.
+// 10 and 2B/0E, exception 0x40 for locked serial settings, the speed command per speed mode
+// driving a simulated motor and load (DcMotor) — open-loop PWM, current, or the speed PID
+// (DcSpeedLoop) with the coefficients in its registers —, temporary configuration until stored,
+// braking on communication loss.
 class DcPidSimDevice : public SimDevice
 {
     Q_DECLARE_TR_FUNCTIONS(opentop::DcPidSimDevice)
@@ -29,7 +32,9 @@ public:
     void configureLine(int baud, char parity) override;
 
     Drive drive() const { return m_drive; }
-    double level() const { return m_ramp.value(); } // -1 .. 1 of full output
+    double duty() const { return m_motor.appliedDuty(); } // -1 .. 1 of full output
+    const DcMotor& motor() const { return m_motor; }
+    void setMotorModel(const DcMotor::Model& model) { m_motor.setModel(model); }
 
     static char parityForCode(int code);
 
@@ -49,7 +54,10 @@ protected:
     SimControlResult controlCommand(const QStringList& args, qint64 nowMs) override;
 
 private:
-    double commandFraction() const;
+    // One millisecond of the controller and its motor.
+    void stepMotor();
+    DcSpeedLoop::Gains gains() const;
+    SimControlResult motorCommand(const QStringList& args);
     QByteArray identification(quint8 readCode, quint8 objectId, SimError* error) const;
     void takeLineSettings();
     // Signed commutations per second: the output's, unless a defect holds the motor.
@@ -57,7 +65,8 @@ private:
     // The stall stop (config.stall_time) and an alarm defect: brakes the motor.
     void stallProtection(int dtMs);
 
-    SpeedRamp m_ramp;
+    DcMotor m_motor;
+    DcSpeedLoop m_loop;
     Drive m_drive = Drive::Idle;
     int m_command = 0;
     qint64 m_lastFrameMs = 0;

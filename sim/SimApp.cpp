@@ -1,5 +1,7 @@
 #include "SimApp.h"
 
+#include "DcPidSimDevice.h"
+
 #include "PtySimServer.h"
 #include "SimBus.h"
 #include "SimConsole.h"
@@ -112,6 +114,10 @@ int SimApp::start(const QStringList& arguments)
                          .arg(QLatin1Char(m_options.parity)));
     }
     m_bus->setFaults(FaultInjector(m_options.faults, m_options.seed));
+    for (SimDevice* d : m_bus->devices()) {
+        if (auto* dc = dynamic_cast<DcPidSimDevice*>(d))
+            dc->setMotorModel(m_options.motor);
+    }
     for (const auto& [slave, spec] : m_options.defects) {
         SimDevice* d = m_bus->device(slave);
         if (!d) {

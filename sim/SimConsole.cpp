@@ -10,8 +10,9 @@ namespace opentop {
 
 namespace {
 
-const char* const kDeviceCommands[] = {"alarm",       "warning",     "load", "vr",  "input",
-                                       "ignore-stop", "power-cycle", "get",  "set", "defect"};
+const char* const kDeviceCommands[] = {"alarm", "warning",     "load",        "vr",
+                                       "input", "ignore-stop", "power-cycle", "get",
+                                       "set",   "defect",      "motor"};
 
 } // namespace
 
@@ -44,6 +45,8 @@ QString SimConsole::helpText()
               "                            defect 3 max_speed=800 or defect 4 alarm=0x07@2s\n"
               "  defect ID clear           the drive has no defects again\n"
               "  defects                   the drives' defects\n"
+              "  motor ID [KEY=VALUE ...]  show or change a DC controller's motor and load,\n"
+              "                            e.g. motor 7 load=0.05 inertia=3e-4 (see --motor)\n"
               "  unplug                    close the pty under its client (adapter pulled out)\n"
               "  replug                    a new pty behind the same symlink\n"
               "  quit                      stop the simulator");

@@ -34,6 +34,10 @@ QString SimOptions::usage()
         "                       nostick=PARAM         writes acknowledged, old value stays\n"
         "                       nostore=PARAM         value lost at the next power cycle\n"
         "                     e.g. --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40\n"
+        "  --motor LIST       the DC controllers' motor and load, e.g. inertia=2e-4,load=0.05;\n"
+        "                     supply (V), resistance (ohm), no_load (1/s at full duty),\n"
+        "                     commutations (per revolution), inertia (kg m2), viscous\n"
+        "                     (N m s/rad), coulomb (N m), load (N m), gate (ms), tacho (V s)\n"
         "  --quiet            no frame trace on stderr\n"
         "  --lang CODE        language of messages: en, zh_TW, zh_CN, ko, ja\n"
         "  --help             this text\n"
@@ -150,12 +154,21 @@ std::optional<SimOptions> SimOptions::parse(const QStringList& arguments, QStrin
             if (!spec)
                 return failed(tr("--defect: %1").arg(why));
             o.defects.append({slave, *spec});
+        } else if (arg == QLatin1String("--motor")) {
+            if (!value(&v))
+                return failed(tr("--motor needs a list such as inertia=2e-4,load=0.05"));
+            QString why;
+            const std::optional<DcMotor::Model> model = DcMotor::Model::parse(v, o.motor, &why);
+            if (!model)
+                return failed(tr("--motor: %1").arg(why));
+            o.motor = *model;
         } else if (arg == QLatin1String("--quiet") || arg == QLatin1String("-q")) {
             o.quiet = true;
         } else {
             return failed(
                 tr("unknown argument '%1'; options: --devices, --pty, --tcp, --baud, "
-                   "--parity, --wire-timing, --turnaround, --faults, --seed, --defect, --quiet, "
+                   "--parity, --wire-timing, --turnaround, --faults, --seed, --defect, --motor, "
+                   "--quiet, "
                    "--help, --version")
                     .arg(arguments.at(i)));
         }

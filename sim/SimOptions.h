@@ -1,5 +1,6 @@
 #pragma once
 
+#include "DcMotor.h"
 #include "FaultInjector.h"
 #include "SimDefectSpec.h"
 
@@ -30,6 +31,7 @@ public:
     FaultInjector::Rates faults;
     quint32 seed = 1;
     QVector<QPair<int, SimDefectSpec>> defects; // --defect ID:DEFECT[,...], in order
+    DcMotor::Model motor;                       // --motor, every DC controller
     bool quiet = false;
     bool help = false;
     bool version = false;

@@ -4,6 +4,7 @@
 #include "profile/ParameterMeta.h"
 
 #include <QHash>
+#include <QJsonObject>
 #include <QString>
 #include <QStringList>
 #include <QVector>
@@ -88,6 +89,9 @@ public:
     QHash<QString, CodeTable> codeTables;
     QHash<QString, ProfileRole> roles;
     QVector<ParameterMeta> parameters;
+    // How the device's speed loop is tuned (model/tuning/TuningSpec reads and checks it);
+    // empty when it has none.
+    QJsonObject tuning;
 
     const ParameterMeta* parameter(const QString& parameterName) const;
     // The parameter whose registers include `address` in the read (3/4) or write space.

@@ -43,7 +43,7 @@ bool readHeader(const QJsonObject& root, JsonReader& json, Profile* p)
              QStringLiteral("vendor"), QStringLiteral("manual"), QStringLiteral("serial"),
              QStringLiteral("limits"), QStringLiteral("variants"), QStringLiteral("identify"),
              QStringLiteral("readBlocks"), QStringLiteral("groups"), QStringLiteral("codeTables"),
-             QStringLiteral("parameters"), QStringLiteral("roles")},
+             QStringLiteral("parameters"), QStringLiteral("roles"), QStringLiteral("tuning")},
             tr("top level")))
         return false;
     if (json.integer(root, QStringLiteral("schema")).value_or(0) != 1)
@@ -52,6 +52,7 @@ bool readHeader(const QJsonObject& root, JsonReader& json, Profile* p)
     p->name = json.string(root, QStringLiteral("name")).value_or(QString());
     p->vendor = json.string(root, QStringLiteral("vendor"), false).value_or(QString());
     p->manual = json.string(root, QStringLiteral("manual"), false).value_or(QString());
+    p->tuning = root.value(QStringLiteral("tuning")).toObject(); // checked by TuningSpec
     if (json.failed())
         return false;
     static const QRegularExpression idRe(QStringLiteral("^[a-z][a-z0-9_]*$"));

@@ -1,0 +1,32 @@
+#pragma once
+
+#include "tuning/TuningSample.h"
+
+#include <QCoreApplication>
+#include <QString>
+#include <optional>
+
+namespace opentop {
+
+// What a step response shows, measured from the samples after a set point change `from` →
+// `to` at t = 0 (TuningSample::tMs): rise time 10–90 % of the step, overshoot beyond `to` in
+// percent of the step, settling time into and staying within ±2 % of the step, steady-state
+// error (mean of the last quarter of the record minus `to`) and peak current.
+struct StepMetrics
+{
+    Q_DECLARE_TR_FUNCTIONS(opentop::StepMetrics)
+public:
+    bool valid = false;
+    QString error;
+    std::optional<double> riseMs;     // none: never reached 90 %
+    double overshootPercent = 0;      // 0 when it never went beyond `to`
+    std::optional<double> settlingMs; // none: not settled within the record
+    double steadyStateError = 0;      // speed units, signed
+    double peakCurrent = 0;
+    double recordMs = 0;
+
+    static StepMetrics measure(const TuningSamples& samples, double from, double to);
+    static constexpr double kSettlingBand = 0.02;
+};
+
+} // namespace opentop

@@ -1,0 +1,133 @@
+#pragma once
+
+#include "tuning/PidGains.h"
+#include "tuning/PlantModel.h"
+#include "tuning/RelayAnalysis.h"
+#include "tuning/StepMetrics.h"
+#include "tuning/TuningRules.h"
+#include "tuning/TuningSpec.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace opentop {
+
+class DeviceSession;
+struct ParamValue;
+
+// Speed-loop tests on a drive that has a TuningSpec, over its DeviceSession: a step test (from
+// speed A to B in the present closed-loop mode, recorded as fast as the line allows) and the
+// relay autotune (in the open-loop mode, the output switched around an operating speed). Each
+// test is started only by an explicit call, keeps the speed and current within its limits
+// (beyond them it stops the motor at once), runs with the communication-loss braking time set,
+// and ends by stopping the motor, confirming the stop, and restoring the speed mode and the
+// communication-loss time it found. Gains are written only by writeGains() and stored only by
+// storeGains().
+class TuningRunner : public QObject
+{
+    Q_OBJECT
+public:
+    struct Limits
+    {
+        double maxSpeed = 0;   // feedback units; beyond: stop
+        double maxCurrent = 0; // A; beyond: stop
+        double commLossS = 0.5;
+        int stopTimeoutMs = 5000;
+    };
+    struct StepPlan
+    {
+        double from = 0; // engineering units of the closed-loop mode's speed command
+        double to = 0;
+        int settleMs = 3000; // longest wait at `from` before the step
+        int recordMs = 1500;
+    };
+    struct RelayPlan
+    {
+        double speed = 0;      // operating speed, feedback units
+        double amplitude = 10; // output swing, % of full duty
+        double hysteresis = 0; // feedback units; 0: 1 % of the speed
+        int maxMs = 10000;     // the relay's longest run
+        int cycles = 4;        // steady cycles wanted
+        TuningRules::Rule rule = TuningRules::Rule::Medium;
+    };
+    struct Result
+    {
+        bool ok = false;
+        bool aborted = false; // stopped by a limit, cancel or a failure
+        QString error;
+        bool stopConfirmed = true;
+        QString stopDetail;
+        TuningSamples samples;
+        PidGains gains; // in the drive during the test
+        QString speedUnit;
+        // Step test
+        double from = 0, to = 0;
+        StepMetrics metrics;
+        // Autotune
+        double plantGain = 0; // register units
+        double busDelayMs = 0;
+        RelayAnalysis relay;
+        PlantModel plant;
+        double ultimateGain = 0; // of the drive's own loop (register units)
+        double ultimatePeriodMs = 0;
+        PidGains proposal;
+        TuningSamples predicted; // the proposal on the model, from → to as a step test would
+    };
+    using Done = std::function<void(const Result&)>;
+    using GainsDone = std::function<void(bool ok, const PidGains& gains, const QString& error)>;
+
+    TuningRunner(DeviceSession* session, const TuningSpec& spec, QObject* parent = nullptr);
+    const TuningSpec& spec() const { return m_spec; }
+    DeviceSession* session() const { return m_session; }
+
+    void setLimits(const Limits& limits) { m_limits = limits; }
+    const Limits& limits() const { return m_limits; }
+    // The proposal's predicted step: from → to in the closed-loop mode's units.
+    static TuningSamples predictStep(const Result& autotune, const PidGains& gains,
+                                     const TuningSpec& spec, double feedbackScale, double from,
+                                     double to, int durationMs);
+
+    // Only one test at a time; `done` runs once, never before the call returns.
+    void startStep(const StepPlan& plan, Done done);
+    void startAutotune(const RelayPlan& plan, Done done);
+    void cancel();
+    bool isRunning() const { return bool(m_done); }
+
+    void readGains(GainsDone done);
+    // Writes the gains (temporary in the drive until stored) and reads them back.
+    void writeGains(const PidGains& gains, GainsDone done);
+    void storeGains(std::function<void(bool ok, const QString& error)> done);
+
+signals:
+    void sampled(const opentop::TuningSample& sample);
+    void phase(const QString& text);
+
+private:
+    struct Context;
+    void begin(Done done, std::function<void()> body);
+    void poll(std::function<void(const TuningSample&)> then);
+    void command(double engineering, std::function<void()> then);
+    void setMode(int mode, std::function<void()> then);
+    void fail(const QString& error, bool aborted = true);
+    void finish();
+    void waitStopped(qint64 untilMs, std::function<void(bool stopped)> then);
+    void stepApproach(const StepPlan& plan);
+    void stepRecord(const StepPlan& plan);
+    void relayEstimate(const RelayPlan& plan, int stage, double u1, double y1);
+    void relayRun(const RelayPlan& plan, double u0, bool high);
+    void relayConclude(const RelayPlan& plan);
+    double feedbackScale() const;
+    double modeOf() const;
+    void writeNumber(const QString& parameter, double value, std::function<void(bool)> then);
+
+    DeviceSession* m_session;
+    TuningSpec m_spec;
+    Limits m_limits;
+    Done m_done;
+    std::shared_ptr<Context> m_ctx;
+};
+
+} // namespace opentop
