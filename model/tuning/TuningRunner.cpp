@@ -144,7 +144,9 @@ void TuningRunner::writeNumber(const QString& parameter, double value,
 
 void TuningRunner::command(double engineering, std::function<void()> then)
 {
-    writeNumber(m_spec.command, engineering, [then](bool) { then(); });
+    const double step = feedbackScale(); // whole raw units of the present mode
+    writeNumber(m_spec.command, step > 0 ? std::round(engineering / step) * step : engineering,
+                [then](bool) { then(); });
 }
 
 void TuningRunner::setMode(int mode, std::function<void()> then)

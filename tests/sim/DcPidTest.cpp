@@ -138,7 +138,8 @@ TEST_F(DcPid, PidFloatsStoredBySevenRegistersOrCommand)
     ASSERT_TRUE(sim.write(7, "store.pid", 1).ok());
     powerCycle();
     EXPECT_DOUBLE_EQ(sim.raw(7, "pid.i"), 0.2f);
-    EXPECT_EQ(sim.writeMany(7, 0x0090, floatRegisters(2.0f)).exception, 0x03);
+    EXPECT_TRUE(sim.writeMany(7, 0x0090, floatRegisters(2.0f)).ok()); // above the proposed 0–1
+    EXPECT_EQ(sim.writeMany(7, 0x0090, floatRegisters(200.0f)).exception, 0x03);
 }
 
 TEST_F(DcPid, PresetStoredByFourRegisters)
@@ -163,25 +164,33 @@ TEST_F(DcPid, GpioStoredByFiveRegisters)
     EXPECT_EQ(sim.write(7, 0x0054, 1).exception, 0x02); // not accessible alone
 }
 
-TEST_F(DcPid, SpeedCommandRampsPwmAndBrakes)
+TEST_F(DcPid, SpeedCommandDrivesTheMotorAndBrakes)
 {
-    ASSERT_TRUE(sim.write(7, "speed.command", 500).ok()); // 50.0 % duty
-    sim.advance(100);
-    EXPECT_NEAR(pwm(), 200, 1);
-    sim.advance(200);
+    const auto speed = [&] { return sim.raw(7, "status.commutation"); };
+    ASSERT_TRUE(sim.write(7, "speed.command", 500).ok()); // 50.0 % duty, applied at once
+    sim.advance(20);
+    EXPECT_LT(pwm(), 500); // the 10 A current limit holds the duty back while starting
+    EXPECT_EQ(sim.readOne(7, "status.current"), sim.readOne(7, "config.max_current"));
+    EXPECT_LT(speed(), 200);                           // the shaft is still accelerating
+    sim.advance(400);
     EXPECT_EQ(pwm(), 500);
-    EXPECT_EQ(sim.readOne(7, "status.pwm"), 500);
-    EXPECT_EQ(sim.readOne(7, "status.commutation"), 500);
-    EXPECT_GT(sim.readOne(7, "status.current"), 0);
+    EXPECT_NEAR(speed(), 490, 10); // no-load speed at half duty, less friction
+    EXPECT_LT(sim.readOne(7, "status.current"), 100);
     ASSERT_TRUE(sim.write(7, "speed.command", 0).ok()); // brake
-    sim.advance(100);
+    sim.advance(20);
     EXPECT_EQ(pwm(), 0);
+    sim.advance(400);
+    EXPECT_EQ(speed(), 0);
     ASSERT_TRUE(sim.write(7, "speed.command", 0xFC18).ok()); // -1000: reverse, full
     sim.advance(600);
-    EXPECT_EQ(pwm(), 1000);                             // magnitude; the register is unsigned
-    ASSERT_TRUE(sim.write(7, "speed.release", 1).ok()); // natural stop: 2 s from full
-    sim.advance(1000);
-    EXPECT_NEAR(pwm(), 500, 5);
+    EXPECT_EQ(pwm(), 1000); // magnitude; the register is unsigned
+    EXPECT_NEAR(speed(), 980, 15);
+    ASSERT_TRUE(sim.write(7, "speed.release", 1).ok()); // natural stop: slower than braking
+    sim.advance(400);
+    EXPECT_EQ(pwm(), 0);
+    EXPECT_GT(speed(), 500);
+    sim.advance(3000);
+    EXPECT_EQ(speed(), 0);
 }
 
 TEST_F(DcPid, CommunicationLossBrakes)
@@ -235,10 +244,12 @@ TEST_F(DcPid, LockStopsAndTorqueModeSetsTheCurrent)
     EXPECT_EQ(pwm(), 0);
     EXPECT_EQ(static_cast<DcPidSimDevice*>(sim.device(7))->drive(), DcPidSimDevice::Drive::Locked);
     ASSERT_TRUE(sim.write(7, "config.speed_mode", 1).ok());
-    ASSERT_TRUE(sim.write(7, "speed.command", 600).ok()); // 6.00 A
-    sim.advance(500);
+    ASSERT_TRUE(sim.write(7, "speed.command", 600).ok()); // 6.00 A while the supply allows it
+    sim.advance(20);
     EXPECT_EQ(sim.readOne(7, "status.current"), 600);
     ASSERT_TRUE(sim.write(7, "config.max_current", 400).ok());
     sim.advance(10);
     EXPECT_EQ(sim.readOne(7, "status.current"), 400); // limited by the maximum current
+    sim.advance(1000); // unloaded, the motor runs up until the back-EMF leaves little current
+    EXPECT_LT(sim.readOne(7, "status.current"), 100);
 }

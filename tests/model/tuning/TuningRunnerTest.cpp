@@ -1,0 +1,179 @@
+// Speed-loop tests on a simulated DC controller: step responses with poor and good gains, the
+// relay autotune's proposal, the test's limits, and what a test leaves behind in the drive.
+#include "tuning/TuningRunner.h"
+#include "DriveSimFixture.h"
+
+using namespace opentop;
+using namespace opentop::test;
+
+namespace {
+
+class TuningRunnerTest : public DriveSimFixture
+{
+protected:
+    void SetUp() override
+    {
+        startBus(QStringLiteral("dcpid@7"));
+        control(7, {QStringLiteral("set"), QStringLiteral("0x0080"), QStringLiteral("2")});
+        QString error;
+        spec = *TuningSpec::of(session(7)->profile(), &error);
+        runner = std::make_unique<TuningRunner>(session(7), spec);
+        TuningRunner::Limits limits;
+        limits.maxSpeed = 900;
+        limits.maxCurrent = 15;
+        runner->setLimits(limits);
+    }
+    void TearDown() override
+    {
+        runner.reset();
+        DriveSimFixture::TearDown();
+    }
+    TuningRunner::Result step(double from, double to, int recordMs = 1200)
+    {
+        TuningRunner::StepPlan plan;
+        plan.from = from;
+        plan.to = to;
+        plan.recordMs = recordMs;
+        return await<TuningRunner::Result>([&](auto done) { runner->startStep(plan, done); },
+                                           30000);
+    }
+    bool setGains(const PidGains& g)
+    {
+        bool ok = false;
+        await<bool>([&](auto done) {
+            runner->writeGains(g, [&ok, done](bool written, const PidGains&, const QString&) {
+                ok = written;
+                done(written);
+            });
+        });
+        return ok;
+    }
+    PidGains gains()
+    {
+        PidGains out;
+        await<bool>([&](auto done) {
+            runner->readGains([&out, done](bool ok, const PidGains& g, const QString&) {
+                out = g;
+                done(ok);
+            });
+        });
+        return out;
+    }
+    double raw(const char* name)
+    {
+        bus->device(7)->advance(bus->nowMs());
+        return bus->device(7)->raw(QString::fromLatin1(name)).value_or(-1);
+    }
+
+    TuningSpec spec;
+    std::unique_ptr<TuningRunner> runner;
+};
+
+PidGains pid(double p, double i, double d = 0, int dPeriod = 10)
+{
+    PidGains g;
+    g.p = p;
+    g.i = i;
+    g.d = d;
+    g.dPeriodMs = dPeriod;
+    return g;
+}
+
+} // namespace
+
+TEST_F(TuningRunnerTest, HighProportionalGainOscillatesAndAutotunedGainsSettle)
+{
+    ASSERT_TRUE(setGains(pid(10, 0.1)));
+    const TuningRunner::Result high = step(200, 500);
+    ASSERT_TRUE(high.ok) << qPrintable(high.error);
+    EXPECT_FALSE(high.metrics.settlingMs) << "settled in " << *high.metrics.settlingMs << " ms";
+    EXPECT_TRUE(high.stopConfirmed);
+
+    TuningRunner::RelayPlan relay;
+    relay.speed = 400;
+    relay.amplitude = 10;
+    relay.rule = TuningRules::Rule::Medium;
+    const TuningRunner::Result tuned =
+        await<TuningRunner::Result>([&](auto done) { runner->startAutotune(relay, done); }, 30000);
+    ASSERT_TRUE(tuned.ok) << qPrintable(tuned.error);
+    EXPECT_TRUE(tuned.relay.ok);
+    EXPECT_GT(tuned.ultimateGain, 1);
+    EXPECT_LT(tuned.ultimateGain, 10); // P = 10 oscillates: the ultimate gain is below it
+    EXPECT_FALSE(tuned.predicted.isEmpty());
+    EXPECT_EQ(raw("config.speed_mode"), 2); // the closed-loop mode is back
+    EXPECT_EQ(raw("status.commutation"), 0);
+
+    ASSERT_TRUE(setGains(tuned.proposal));
+    const TuningRunner::Result good = step(200, 500);
+    ASSERT_TRUE(good.ok) << qPrintable(good.error);
+    ASSERT_TRUE(good.metrics.settlingMs) << qPrintable(tuned.proposal.toString());
+    EXPECT_LT(*good.metrics.settlingMs, 600);
+    EXPECT_LT(good.metrics.overshootPercent, 30);
+    EXPECT_NEAR(good.metrics.steadyStateError, 0, 10);
+    EXPECT_GT(good.metrics.peakCurrent, 1);
+}
+
+TEST_F(TuningRunnerTest, LimitExceededMidTestStopsTheMotorAndRestoresTheDrive)
+{
+    ASSERT_TRUE(setGains(pid(1, 0.1))); // overshoots by about a third
+    TuningRunner::Limits limits = runner->limits();
+    limits.maxSpeed = 450;
+    runner->setLimits(limits);
+    const double lossBefore = raw("config.comm_loss_time");
+    const TuningRunner::Result r = step(0, 400);
+    EXPECT_FALSE(r.ok);
+    EXPECT_TRUE(r.aborted);
+    EXPECT_TRUE(r.error.contains(QStringLiteral("450"))) << qPrintable(r.error);
+    EXPECT_TRUE(r.stopConfirmed) << qPrintable(r.stopDetail);
+    EXPECT_EQ(raw("status.commutation"), 0);
+    EXPECT_EQ(raw("config.comm_loss_time"), lossBefore);
+    EXPECT_EQ(raw("config.speed_mode"), 2);
+}
+
+TEST_F(TuningRunnerTest, CommunicationLossBrakingIsSetWhileTheTestRuns)
+{
+    double during = -1;
+    QObject::connect(runner.get(), &TuningRunner::sampled, runner.get(),
+                     [&] { during = raw("config.comm_loss_time"); });
+    const TuningRunner::Result r = step(0, 300, 400);
+    ASSERT_TRUE(r.ok) << qPrintable(r.error);
+    EXPECT_EQ(during, 5); // 0.5 s
+    EXPECT_EQ(raw("config.comm_loss_time"), 0);
+}
+
+TEST_F(TuningRunnerTest, CancelStopsAndRejectRestoresTheGains)
+{
+    const PidGains before = gains();
+    ASSERT_TRUE(setGains(pid(2.5, 0.12, 0.4, 5)));
+    EXPECT_EQ(gains(), pid(2.5, 0.12f, 0.4f, 5)) << qPrintable(gains().toString());
+    ASSERT_TRUE(setGains(before)); // what reject does
+    EXPECT_EQ(gains(), before);
+
+    TuningRunner::Result result;
+    bool finished = false;
+    TuningRunner::StepPlan plan;
+    plan.from = 0;
+    plan.to = 500;
+    plan.recordMs = 5000;
+    runner->startStep(plan, [&](const TuningRunner::Result& r) {
+        result = r;
+        finished = true;
+    });
+    ASSERT_TRUE(waitUntil([&] { return raw("status.commutation") > 100; }));
+    runner->cancel();
+    ASSERT_TRUE(waitUntil([&] { return finished; }, 10000));
+    EXPECT_TRUE(result.aborted);
+    EXPECT_TRUE(result.stopConfirmed);
+    EXPECT_EQ(raw("status.commutation"), 0);
+}
+
+TEST_F(TuningRunnerTest, RefusesOutsideAClosedLoopModeWithoutMoving)
+{
+    control(7, {QStringLiteral("set"), QStringLiteral("0x0080"), QStringLiteral("0")});
+    const int writesBefore = framesSent(0x06) + framesSent(0x10);
+    const TuningRunner::Result r = step(0, 300);
+    EXPECT_FALSE(r.ok);
+    EXPECT_FALSE(r.aborted);
+    EXPECT_TRUE(r.error.contains(QStringLiteral("closed-loop"))) << qPrintable(r.error);
+    EXPECT_EQ(framesSent(0x06) + framesSent(0x10), writesBefore);
+}
