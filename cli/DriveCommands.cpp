@@ -3,6 +3,7 @@
 #include "MonitorCommand.h"
 #include "RunCommand.h"
 #include "StopAllCommand.h"
+#include "TuneCommand.h"
 
 namespace opentop {
 
@@ -12,6 +13,7 @@ void addDriveCommands(CliCommandList& list)
     list.push_back(std::make_unique<AlarmsCommand>());
     list.push_back(std::make_unique<RunCommand>());
     list.push_back(std::make_unique<StopAllCommand>());
+    list.push_back(std::make_unique<TuneCommand>());
 }
 
 } // namespace opentop

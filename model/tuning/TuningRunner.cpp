@@ -191,7 +191,21 @@ void TuningRunner::begin(Done done, std::function<void()> body)
             g.dPeriodMs = int(r.results.value(m_spec.dPeriod).value.number);
             if (!m_spec.closedLoop(int(*ctx->originalMode))) {
                 ctx->finishing = true;
-                fail(tr("the drive is not in a closed-loop speed mode: choose one first"), false);
+                QStringList modes;
+                const ParameterMeta* modeMeta = m_session->profile().parameter(m_spec.speedMode);
+                for (const TuningSpec::ClosedLoopMode& m : m_spec.closedLoopModes) {
+                    QString label = QString::number(m.mode);
+                    for (const EnumOption& o : modeMeta
+                                                   ? modeMeta->specFor(m_session->context()).options
+                                                   : QVector<EnumOption>())
+                        if (o.value == m.mode)
+                            label = QStringLiteral("%1 (%2)").arg(o.label).arg(m.mode);
+                    modes << label;
+                }
+                fail(tr("the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first")
+                         .arg(modeMeta ? modeMeta->label : m_spec.speedMode, m_spec.speedMode,
+                              modes.join(tr(" or "))),
+                     false);
                 return;
             }
             ctx->closedScale = feedbackScale();
@@ -278,7 +292,7 @@ void TuningRunner::fail(const QString& error, bool aborted)
     const auto ctx = m_ctx;
     if (!ctx || (ctx->finishing && !ctx->result.error.isEmpty()))
         return;
-    qCInfo(lcModel) << "tuning test ends:" << error;
+    qCDebug(lcModel) << "tuning test ends:" << error;
     ctx->result.ok = false;
     ctx->result.error = error;
     ctx->result.aborted = aborted;
@@ -614,9 +628,9 @@ void TuningRunner::relayConclude(const RelayPlan& plan)
     r.proposal = TuningRules::propose(plan.rule, ku, tu, m_spec, r.gains.dPeriodMs);
     r.predicted = predictStep(r, r.proposal, m_spec, scale, plan.speed / 2, plan.speed, 1500);
     r.ok = true;
-    qCInfo(lcModel) << "autotune: K" << kRaw << "Ku" << kuRaw << "Tu" << r.relay.periodMs
-                    << "bus delay" << r.busDelayMs << "model tau" << r.plant.tauMs << "dead"
-                    << r.plant.deadMs << "proposal" << r.proposal.toString();
+    qCDebug(lcModel) << "autotune: K" << kRaw << "Ku" << kuRaw << "Tu" << r.relay.periodMs
+                     << "bus delay" << r.busDelayMs << "model tau" << r.plant.tauMs << "dead"
+                     << r.plant.deadMs << "proposal" << r.proposal.toString();
     finish();
 }
 
