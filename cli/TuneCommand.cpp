@@ -6,9 +6,11 @@
 #include "tuning/TuningRunner.h"
 
 #include <QCoreApplication>
+#include <QEventLoop>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QTimer>
 
 namespace opentop {
 
@@ -44,6 +46,31 @@ QString samplesCsv(const TuningRunner::Result& r)
                     .arg(s.current)
                     .arg(s.output);
     return text;
+}
+
+// Runs until `start`'s callback. Ctrl-C (or SIGTERM) cancels the test, which stops the motor and
+// confirms the stop: the command still waits for that, so no way out leaves the motor running.
+bool awaitRunner(CliContext& context, TuningRunner& runner,
+                 const std::function<void(std::function<void()>)>& start)
+{
+    QEventLoop loop;
+    bool finished = false;
+    bool interrupted = false;
+    QTimer poll;
+    QObject::connect(&poll, &QTimer::timeout, &loop, [&] {
+        if (context.interrupted() && !interrupted) {
+            interrupted = true;
+            runner.cancel();
+        }
+    });
+    poll.start(50);
+    start([&finished, &loop] {
+        finished = true;
+        loop.quit();
+    });
+    if (!finished)
+        loop.exec();
+    return !interrupted;
 }
 
 } // namespace
@@ -167,7 +194,7 @@ int TuneCommand::run(CliContext& context, const QStringList& args)
         plan.from = a;
         plan.to = b;
         plan.recordMs = int(record);
-        return context.wait([&](std::function<void()> finish) {
+        return awaitRunner(context, runner, [&](std::function<void()> finish) {
             runner.startStep(plan, [result, finish](const TuningRunner::Result& r) {
                 *result = r;
                 finish();
@@ -185,16 +212,12 @@ int TuneCommand::run(CliContext& context, const QStringList& args)
         plan.speed = speed;
         plan.amplitude = amplitude;
         plan.rule = *rule;
-        interrupted = !context.wait([&](std::function<void()> finish) {
+        interrupted = !awaitRunner(context, runner, [&](std::function<void()> finish) {
             runner.startAutotune(plan, [&result, finish](const TuningRunner::Result& r) {
                 result = r;
                 finish();
             });
         });
-    }
-    if (interrupted) {
-        runner.cancel();
-        return ExitInterrupted;
     }
     const QString unit = result.speedUnit;
     json.insert(QStringLiteral("ok"), result.ok);
@@ -221,7 +244,7 @@ int TuneCommand::run(CliContext& context, const QStringList& args)
             o.insert(QStringLiteral("settling_ms"), *m.settlingMs);
         return o;
     };
-    int code = result.ok ? ExitOk : result.aborted ? ExitMismatch : ExitInvalid;
+    int code = result.ok ? ExitOk : result.aborted ? ExitFail : ExitInvalid;
     if (result.ok && step) {
         lines << tr("Step %1 → %2 %3:").arg(from).arg(to).arg(unit);
         metricsLines(result.metrics);
@@ -243,9 +266,9 @@ int TuneCommand::run(CliContext& context, const QStringList& args)
         json.insert(QStringLiteral("ku"), result.relay.ultimateGain);
         json.insert(QStringLiteral("tu_ms"), result.relay.periodMs);
         json.insert(QStringLiteral("proposal"), gainsJson(result.proposal));
-        if (p.isSet(QStringLiteral("accept"))) {
+        if (p.isSet(QStringLiteral("accept")) && !interrupted) {
             bool written = false;
-            context.wait([&](std::function<void()> finish) {
+            awaitRunner(context, runner, [&](std::function<void()> finish) {
                 runner.writeGains(
                     result.proposal,
                     [&written, &error, finish](bool good, const PidGains&, const QString& why) {
@@ -259,10 +282,7 @@ int TuneCommand::run(CliContext& context, const QStringList& args)
                 code = ExitCommunication;
             } else {
                 lines << tr("Proposed gains written (not stored).");
-                if (!runStep(speed / 2, speed, &check)) {
-                    runner.cancel();
-                    return ExitInterrupted;
-                }
+                interrupted = !runStep(speed / 2, speed, &check);
                 if (check.ok) {
                     lines << tr("Measured step %1 → %2 %3 with them:")
                                  .arg(speed / 2)
@@ -271,9 +291,9 @@ int TuneCommand::run(CliContext& context, const QStringList& args)
                     metricsLines(check.metrics);
                     json.insert(QStringLiteral("measured"), metricsJson(check.metrics));
                 }
-                if (p.isSet(QStringLiteral("store")) && check.ok) {
+                if (p.isSet(QStringLiteral("store")) && check.ok && !interrupted) {
                     bool stored = false;
-                    context.wait([&](std::function<void()> finish) {
+                    awaitRunner(context, runner, [&](std::function<void()> finish) {
                         runner.storeGains([&stored, &error, finish](bool good, const QString& why) {
                             stored = good;
                             error = why;
@@ -304,7 +324,7 @@ int TuneCommand::run(CliContext& context, const QStringList& args)
         out << QJsonDocument(json).toJson(QJsonDocument::Compact) << '\n';
     else
         out << lines.join(QLatin1Char('\n')) << '\n';
-    return code;
+    return interrupted && code != ExitMismatch ? int(ExitInterrupted) : code;
 }
 
 } // namespace opentop
