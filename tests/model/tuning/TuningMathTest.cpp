@@ -1,10 +1,13 @@
 // The tuning calculations on responses whose figures are known in closed form.
+#include "profile/ProfileRegistry.h"
 #include "tuning/PlantModel.h"
 #include "tuning/RelayAnalysis.h"
 #include "tuning/StepMetrics.h"
 #include "tuning/TuningRules.h"
 #include "tuning/TuningSpec.h"
 
+#include <QJsonArray>
+#include <QJsonObject>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -151,4 +154,29 @@ TEST(PlantModel, PredictedStepSettlesWithProposedGainsAndOscillatesBeyondKu)
     const StepMetrics unstable =
         StepMetrics::measure(m.simulateStep(high, spec, 200, 400, 1500, 1), 200, 400);
     EXPECT_FALSE(unstable.settlingMs);
+}
+
+TEST(TuningSpec, TheDcControllerCanBeTunedTheDbuCannot)
+{
+    QString error;
+    const Profile* dc = ProfileRegistry::builtIn().family(QStringLiteral("dcpid"));
+    ASSERT_TRUE(dc);
+    const std::optional<TuningSpec> spec = TuningSpec::of(*dc, &error);
+    ASSERT_TRUE(spec) << qPrintable(error);
+    EXPECT_EQ(spec->gainP, QStringLiteral("pid.p"));
+    EXPECT_EQ(spec->openLoopMode, 0);
+    ASSERT_TRUE(spec->closedLoop(2));
+    EXPECT_EQ(spec->closedLoop(2)->feedback, QStringLiteral("status.commutation"));
+    EXPECT_FALSE(spec->closedLoop(0));
+    const Profile* dbu = ProfileRegistry::builtIn().family(QStringLiteral("dbu"));
+    EXPECT_FALSE(TuningSpec::of(*dbu, &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("no speed loop"))) << qPrintable(error);
+    // A section that names an unknown feedback is refused with what it needs.
+    Profile broken = *dc;
+    broken.tuning.insert(
+        QStringLiteral("closedLoopModes"),
+        QJsonArray{QJsonObject{{QStringLiteral("mode"), 2},
+                               {QStringLiteral("feedback"), QStringLiteral("status.nothing")}}});
+    EXPECT_FALSE(TuningSpec::of(broken, &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("closedLoopModes"))) << qPrintable(error);
 }
