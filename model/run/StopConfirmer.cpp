@@ -124,7 +124,9 @@ void StopConfirmer::evaluate(bool readOk, std::optional<bool> running, std::opti
         m_failures = 0;
         m_result.speed = speed;
         m_result.speedText = speedText;
-        const bool stopped = running ? !*running : *speed == 0;
+        // Both, where the drive reports both: a DC controller's output is off at once when it
+        // brakes, while the shaft still turns.
+        const bool stopped = (!running || !*running) && (!speed || *speed == 0);
         if (stopped) {
             finish(StopResult::State::Stopped, QString());
             return;
