@@ -6,6 +6,7 @@
 #include "TextTable.h"
 #include "bus/BusGroups.h"
 #include "bus/BusScanner.h"
+#include "bus/FixedLineHint.h"
 #include "profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
@@ -250,6 +251,12 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
                              .arg(range.to)
                              .arg(context.client()->describe())
                       << Qt::endl;
+        // A DC controller in potentiometer/analog control ignores its configured line settings.
+        const FixedLineHint fixed = FixedLineHint::dcPotentiometer();
+        if (fixed.worthRetrying(context.client()->settings(), range.from, range.to))
+            context.err() << tr("hint: %1 Retry with the same connection and: %2")
+                                 .arg(fixed.explanation(), fixed.commandLine())
+                          << Qt::endl;
         return ExitCommunication;
     }
     return ExitOk;

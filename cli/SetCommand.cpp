@@ -4,10 +4,12 @@
 #include "GroupCheck.h"
 #include "ModbusClient.h"
 #include "TextTable.h"
+#include "files/RestorePlan.h"
 #include "profile/ValueCodec.h"
 #include "run/RunningData.h"
 #include "session/DependentValues.h"
 #include "session/DeviceSession.h"
+#include "session/SerialLock.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -43,7 +45,8 @@ QList<QCommandLineOption> SetCommand::options() const
 {
     return {
         {QStringLiteral("yes"),
-         tr("Confirm commands that move a motor, reset, erase, initialise or store.")},
+         tr("Confirm commands that move a motor, reset, erase, initialise or store, and "
+            "setting the serial configuration lock.")},
         {QStringLiteral("raw"),
          tr("Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16)."),
          tr("ADDR=VALUE")},
@@ -155,18 +158,31 @@ int SetCommand::run(CliContext& context, const QStringList& args)
         QStringList names;
         for (const Assignment& a : assignments)
             names << a.name;
+        QStringList warnings; // allowed, but outside the recommended range, or a serial lock
         for (const Assignment& a : assignments) {
             const ValueCodec::Encoded e = ValueCodec::encodeText(*a.meta, a.text, overlay);
             if (!e.ok) {
                 problems << e.error;
                 continue;
             }
+            if (!e.warning.isEmpty())
+                warnings << e.warning;
+            // It can shut this program out of the drive's configuration: only on request.
+            const QString lock = SerialLock::warning(profile, *a.meta, qint64(e.raw), overlay);
+            if (!lock.isEmpty() && !confirmed)
+                problems << lock + QLatin1Char(' ') + tr("Add --yes to set it.");
+            else if (!lock.isEmpty())
+                warnings << lock;
             // The same rule DeviceSession::write applies, before anything is sent.
             const QString left =
                 DependentValues::problem(profile, *a.meta, qint64(e.raw), overlay, names);
             if (!left.isEmpty())
                 problems << left;
             pending.insert(a.name, qint64(e.raw));
+        }
+        if (problems.isEmpty()) {
+            for (const QString& w : warnings)
+                context.err() << tr("warning: %1").arg(w) << Qt::endl;
         }
         // Advice, not a refusal: the manual's deceleration rule for the values as written.
         QStringList advised;
@@ -233,6 +249,8 @@ int SetCommand::run(CliContext& context, const QStringList& args)
                          ValueCodec::format(*a.meta, a.outcome.value, valueContext));
             if (!a.outcome.error.isEmpty())
                 r.insert(QStringLiteral("error"), a.outcome.error);
+            if (!a.outcome.warning.isEmpty())
+                r.insert(QStringLiteral("warning"), a.outcome.warning);
             if (a.outcome.unconfirmed)
                 r.insert(QStringLiteral("notConfirmed"), true);
             results.append(r);
@@ -259,6 +277,17 @@ int SetCommand::run(CliContext& context, const QStringList& args)
         }
         table.print(context.out());
         group.print(childValues);
+    }
+    // The line settings change at the drive's next power-up (the same answer as the profile's
+    // help, the restore and the simulator: errata DC-18).
+    for (const Assignment& a : assignments) {
+        if (a.outcome.ok && RestorePlan::isCommunicationSetting(profile, *a.meta) &&
+            !SerialLock::locks(profile, *a.meta, 1))
+            context.err() << tr("note: the drive uses %1 from its next power-up on: switch the "
+                                "drive off and on, then connect with the new "
+                                "setting (--baud, --parity)")
+                                 .arg(a.name)
+                          << Qt::endl;
     }
     return code;
 }

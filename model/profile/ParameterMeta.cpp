@@ -2,7 +2,20 @@
 
 #include "profile/ValueContext.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace opentop {
+
+bool ValueSpec::isRecommended(double raw) const
+{
+    if (recommended.isEmpty())
+        return true;
+    const double eps = 1e-9 * std::max(1.0, std::fabs(raw)); // f32 values read back
+    return std::any_of(recommended.begin(), recommended.end(), [raw, eps](const ValueRange& r) {
+        return raw >= r.min - eps && raw <= r.max + eps;
+    });
+}
 
 bool ParameterMeta::dependsOnParameter() const
 {

@@ -62,15 +62,36 @@ struct BitField
 // What may change with the drive variant or with another parameter's value.
 struct ValueSpec
 {
-    double scale = 1.0;               // engineering = raw * scale
-    QString unit;                     // "s", "r/min", "A", "%"... (profile language)
-    QString canonicalUnit;            // the profile's own unit, for files and --json
-    int decimals = 0;                 // shown after the point
-    QVector<ValueRange> ranges;       // allowed intervals (raw)
+    double scale = 1.0;         // engineering = raw * scale
+    QString unit;               // "s", "r/min", "A", "%"... (profile language)
+    QString canonicalUnit;      // the profile's own unit, for files and --json
+    int decimals = 0;           // shown after the point
+    QVector<ValueRange> ranges; // allowed intervals (raw)
+    // Recommended intervals (raw), each inside an allowed one: a value allowed but outside them
+    // is written with a warning (ValueCodec::recommendationWarning). Empty: no recommendation.
+    QVector<ValueRange> recommended;
     QVector<EnumOption> options;      // allowed codes with labels (also allowed beside ranges)
     std::optional<double> defaultRaw; // factory default (raw); none when the manual gives none
     QString defaultText;              // string parameters
     QString note;                     // short context, e.g. "PWM duty in this speed mode"
+
+    // Whether `raw` lies in a recommended interval; true when there is no recommendation.
+    bool isRecommended(double raw) const;
+};
+
+// A write the device wants as part of a larger frame (profile key "writeBlock"): function 0x10
+// over `count` registers from `address`. The registers before the tail are read first (03), so
+// the others keep their values; the parameter's own registers replace theirs and the `tail`
+// values follow (the DC controller's 15-register configuration write from 0x0080 and its
+// 5-register GPIO write from 0x0050, which also store what they write).
+struct BlockWrite
+{
+    quint16 address = 0;
+    int count = 0; // 0: written on its own
+    QVector<quint16> tail;
+
+    bool isSet() const { return count > 0; }
+    int readCount() const { return count - int(tail.size()); }
 };
 
 // A ValueSpec that applies when the variant is `variant`, or parameter `param` holds `equals`.
@@ -102,10 +123,11 @@ struct ParameterMeta
     DataType type = DataType::U16;
     int registerCount = 1;
     Access access = Access::ReadWrite;
-    QString kind;      // setting | status | info | command | record | reserved
-    QString safety;    // commands only: motion | reset | erase | init | store | comm
-    QString codeTable; // record and code registers: id of a CodeTable
-    QString storeWith; // settings that are temporary until this command parameter is written
+    QString kind;          // setting | status | info | command | record | reserved
+    QString safety;        // commands only: motion | reset | erase | init | store | comm
+    QString codeTable;     // record and code registers: id of a CodeTable
+    QString storeWith;     // settings that are temporary until this command parameter is written
+    BlockWrite writeBlock; // how a write of it is sent when not on its own
     QVector<BitField> bits;
     ValueSpec spec;                     // the base spec
     QVector<ValueCondition> conditions; // first match overrides the base spec

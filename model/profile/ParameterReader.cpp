@@ -5,6 +5,7 @@
 #include <QCoreApplication>
 #include <QRegularExpression>
 #include <QSet>
+#include <algorithm>
 #include <cmath>
 
 namespace opentop {
@@ -25,7 +26,7 @@ const QStringList kSafety = {QStringLiteral("motion"), QStringLiteral("reset"),
 const QStringList kSpecKeys = {QStringLiteral("scale"),    QStringLiteral("unit"),
                                QStringLiteral("decimals"), QStringLiteral("allowed"),
                                QStringLiteral("enum"),     QStringLiteral("default"),
-                               QStringLiteral("note")};
+                               QStringLiteral("note"),     QStringLiteral("recommended")};
 
 int decimalsForScale(double scale)
 {
@@ -42,12 +43,12 @@ bool ParameterReader::read(const QJsonObject& o, ParameterMeta* meta)
 {
     static const QStringList known =
         QStringList{
-            QStringLiteral("name"),      QStringLiteral("label"),   QStringLiteral("help"),
-            QStringLiteral("group"),     QStringLiteral("address"), QStringLiteral("read"),
-            QStringLiteral("write"),     QStringLiteral("type"),    QStringLiteral("count"),
-            QStringLiteral("kind"),      QStringLiteral("when"),    QStringLiteral("bits"),
-            QStringLiteral("codeTable"), QStringLiteral("safety"),  QStringLiteral("storeWith"),
-            QStringLiteral("backup")} +
+            QStringLiteral("name"),      QStringLiteral("label"),     QStringLiteral("help"),
+            QStringLiteral("group"),     QStringLiteral("address"),   QStringLiteral("read"),
+            QStringLiteral("write"),     QStringLiteral("type"),      QStringLiteral("count"),
+            QStringLiteral("kind"),      QStringLiteral("when"),      QStringLiteral("bits"),
+            QStringLiteral("codeTable"), QStringLiteral("safety"),    QStringLiteral("storeWith"),
+            QStringLiteral("backup"),    QStringLiteral("writeBlock")} +
         kSpecKeys;
     if (!m_json.onlyKeys(o, known, tr("entry")))
         return false;
@@ -133,6 +134,10 @@ bool ParameterReader::read(const QJsonObject& o, ParameterMeta* meta)
     if (!meta->codeTable.isEmpty() && !m_profile.codeTable(meta->codeTable))
         return m_json.fail(tr("code table \"%1\" is not declared").arg(meta->codeTable));
     meta->storeWith = m_json.string(o, QStringLiteral("storeWith"), false).value_or(QString());
+    if (const auto block = m_json.object(o, QStringLiteral("writeBlock"), false)) {
+        if (!readWriteBlock(*block, meta))
+            return false;
+    }
 
     if (!readSpec(o, *meta, &meta->spec))
         return false;
@@ -163,6 +168,41 @@ bool ParameterReader::read(const QJsonObject& o, ParameterMeta* meta)
     return !m_json.failed();
 }
 
+bool ParameterReader::readWriteBlock(const QJsonObject& o, ParameterMeta* meta)
+{
+    const QString where = QStringLiteral("writeBlock");
+    if (!m_json.onlyKeys(
+            o, {QStringLiteral("address"), QStringLiteral("count"), QStringLiteral("tail")}, where))
+        return false;
+    const auto address = m_json.integer(o, QStringLiteral("address"));
+    const auto count = m_json.integer(o, QStringLiteral("count"));
+    if (!address || !count)
+        return m_json.fail(tr("%1 needs \"address\" and \"count\"").arg(where));
+    if (!meta->writeFunction)
+        return m_json.fail(tr("%1: the parameter is not writable").arg(where));
+    if (*address < 0 || *address > 0xFFFF || *count < 1 || *count > m_profile.maxWriteRegisters ||
+        *address + *count > 0x10000)
+        return m_json.fail(tr("%1: address 0x0000–0xFFFF and count 1–%2 (limits.maxWriteRegisters)")
+                               .arg(where)
+                               .arg(m_profile.maxWriteRegisters));
+    meta->writeBlock.address = quint16(*address);
+    meta->writeBlock.count = int(*count);
+    if (const auto tail = m_json.array(o, QStringLiteral("tail"), false)) {
+        for (const QJsonValue& v : *tail) {
+            const double d = v.toDouble(-1);
+            if (!v.isDouble() || d < 0 || d > 0xFFFF || d != std::floor(d))
+                return m_json.fail(tr("%1: tail values are registers, 0–65535").arg(where));
+            meta->writeBlock.tail << quint16(d);
+        }
+    }
+    const int first = meta->writeBlock.address;
+    const int readEnd = first + meta->writeBlock.readCount();
+    if (meta->address < first || meta->address + meta->registerCount > readEnd)
+        return m_json.fail(
+            tr("%1: the parameter's registers must lie in the block, before its tail").arg(where));
+    return !m_json.failed();
+}
+
 bool ParameterReader::readSpec(const QJsonObject& o, const ParameterMeta& meta, ValueSpec* spec)
 {
     if (const auto scale = m_json.number(o, QStringLiteral("scale"), false)) {
@@ -186,8 +226,24 @@ bool ParameterReader::readSpec(const QJsonObject& o, const ParameterMeta& meta, 
         spec->note = *note;
     if (const auto allowed = m_json.array(o, QStringLiteral("allowed"), false)) {
         spec->ranges.clear();
-        if (!readRanges(*allowed, meta, spec->scale, spec))
+        if (!readRanges(*allowed, QStringLiteral("allowed"), meta, spec->scale, &spec->ranges))
             return false;
+    }
+    if (const auto recommended = m_json.array(o, QStringLiteral("recommended"), false)) {
+        spec->recommended.clear();
+        if (!readRanges(*recommended, QStringLiteral("recommended"), meta, spec->scale,
+                        &spec->recommended))
+            return false;
+    }
+    // A recommendation narrows what is allowed: each interval inside an allowed one.
+    for (int i = 0; i < spec->recommended.size(); ++i) {
+        const ValueRange& r = spec->recommended.at(i);
+        const bool inside =
+            std::any_of(spec->ranges.begin(), spec->ranges.end(),
+                        [&r](const ValueRange& a) { return r.min >= a.min && r.max <= a.max; });
+        if (!inside)
+            return m_json.fail(
+                tr("recommended[%1] is not inside one of the \"allowed\" intervals").arg(i));
     }
     if (const auto options = m_json.array(o, QStringLiteral("enum"), false)) {
         spec->options.clear();
@@ -222,11 +278,11 @@ bool ParameterReader::readSpec(const QJsonObject& o, const ParameterMeta& meta, 
     return true;
 }
 
-bool ParameterReader::readRanges(const QJsonArray& a, const ParameterMeta& meta, double scale,
-                                 ValueSpec* spec)
+bool ParameterReader::readRanges(const QJsonArray& a, const QString& key, const ParameterMeta& meta,
+                                 double scale, QVector<ValueRange>* ranges)
 {
     for (int i = 0; i < a.size(); ++i) {
-        const QString where = QStringLiteral("allowed[%1]").arg(i);
+        const QString where = QStringLiteral("%1[%2]").arg(key).arg(i);
         if (!a[i].isObject())
             return m_json.fail(tr("%1 must be an object {\"min\":…, \"max\":…}").arg(where));
         const QJsonObject r = a[i].toObject();
@@ -250,7 +306,7 @@ bool ParameterReader::readRanges(const QJsonArray& a, const ParameterMeta& meta,
         }
         if (range.min > range.max)
             return m_json.fail(tr("%1: min is greater than max").arg(where));
-        spec->ranges << range;
+        *ranges << range;
     }
     return true;
 }

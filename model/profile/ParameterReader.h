@@ -23,8 +23,11 @@ public:
 
 private:
     bool readSpec(const QJsonObject& o, const ParameterMeta& meta, ValueSpec* spec);
-    bool readRanges(const QJsonArray& a, const ParameterMeta& meta, double scale, ValueSpec* spec);
+    // `key` ("allowed", "recommended") names the list in messages.
+    bool readRanges(const QJsonArray& a, const QString& key, const ParameterMeta& meta,
+                    double scale, QVector<ValueRange>* ranges);
     bool readOptions(const QJsonArray& a, const ParameterMeta& meta, ValueSpec* spec);
+    bool readWriteBlock(const QJsonObject& o, ParameterMeta* meta);
     bool readBits(const QJsonArray& a, ParameterMeta* meta);
     bool readConditions(const QJsonArray& a, ParameterMeta* meta);
 

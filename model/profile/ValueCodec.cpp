@@ -122,6 +122,38 @@ QString ValueCodec::formatNumber(double number, int decimals)
     return text;
 }
 
+QString ValueCodec::recommendedText(const ParameterMeta& meta, const ValueContext& context)
+{
+    QString unresolved;
+    const ValueSpec& spec = meta.specFor(context, &unresolved);
+    if (!unresolved.isEmpty() || spec.recommended.isEmpty())
+        return QString();
+    QStringList ranges;
+    for (const ValueRange& r : spec.recommended) {
+        const QString lo = formatNumber(r.min * spec.scale, spec.decimals);
+        const QString hi = formatNumber(r.max * spec.scale, spec.decimals);
+        ranges << (r.min == r.max ? lo : lo + QStringLiteral("–") + hi);
+    }
+    const QString last = ranges.takeLast();
+    QString text = ranges.isEmpty() ? last : ranges.join(QStringLiteral(", ")) + tr(" or ") + last;
+    if (!spec.unit.isEmpty())
+        text += QLatin1Char(' ') + spec.unit;
+    return text;
+}
+
+QString ValueCodec::recommendationWarning(const ParameterMeta& meta, double raw,
+                                          const ValueContext& context)
+{
+    QString unresolved;
+    const ValueSpec& spec = meta.specFor(context, &unresolved);
+    if (!unresolved.isEmpty() || spec.isRecommended(raw))
+        return QString();
+    const QString shown = formatNumber(raw * spec.scale, spec.decimals) +
+                          (spec.unit.isEmpty() ? QString() : QLatin1Char(' ') + spec.unit);
+    return tr("%1: %2 is outside the recommended range %3; it is allowed and will be written")
+        .arg(context.nameFor(meta.name), shown, recommendedText(meta, context));
+}
+
 QString ValueCodec::allowedText(const ParameterMeta& meta, const ValueContext& context)
 {
     QString unresolved;
@@ -272,8 +304,10 @@ ValueCodec::Encoded ValueCodec::encodeRaw(const ParameterMeta& meta, double raw,
     e.error = checkRaw(meta, raw, context);
     e.ok = e.error.isEmpty();
     e.raw = raw;
-    if (e.ok)
+    if (e.ok) {
         e.registers = rawToRegisters(meta, raw);
+        e.warning = recommendationWarning(meta, raw, context);
+    }
     return e;
 }
 

@@ -19,6 +19,9 @@ public:
         QVector<quint16> registers;
         double raw = 0;
         QString error; // names the allowed values when a value is refused
+        // An allowed value outside the profile's recommended range: written, but the caller
+        // shows this (recommendationWarning). Empty otherwise.
+        QString warning;
     };
 
     // Registers as read from the device -> value. Flags values outside the allowed set.
@@ -40,6 +43,14 @@ public:
     // Empty when `raw` is allowed; otherwise a message naming the allowed values.
     static QString checkRaw(const ParameterMeta& meta, double raw,
                             const ValueContext& context = {});
+    // The warning for an allowed value outside the recommended range ("recommended" in the
+    // profile), naming that range: "pid.p: 2.5 is outside the recommended range 0.0000–1.0000;
+    // it is allowed and will be written". Empty when `raw` is recommended or the parameter has no
+    // recommendation. It does not check the allowed range (checkRaw does).
+    static QString recommendationWarning(const ParameterMeta& meta, double raw,
+                                         const ValueContext& context = {});
+    // The recommended intervals as text ("0.0000–1.0000"); empty when there are none.
+    static QString recommendedText(const ParameterMeta& meta, const ValueContext& context = {});
     // "0 or 250–3000 r/min", "CW (0), CCW (1)", "0.5 or 2.0–30.0 s".
     static QString allowedText(const ParameterMeta& meta, const ValueContext& context = {});
     // "2.5 s", "CCW", "1500 r/min", "-3 r/min".

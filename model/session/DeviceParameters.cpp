@@ -188,6 +188,22 @@ QString DeviceParameters::problemText(const QString& name) const
     return e ? withoutName(name, e->message) : QString();
 }
 
+QString DeviceParameters::warningText(const QString& name) const
+{
+    const Entry* e = entry(name);
+    if (!e || !e->meta->isNumeric())
+        return QString();
+    const ValueContext context = m_session->context();
+    if (e->state == State::Pending && !e->pendingRegisters.isEmpty())
+        return withoutName(
+            name,
+            ValueCodec::recommendationWarning(
+                *e->meta, ValueCodec::registersToRaw(*e->meta, e->pendingRegisters), context));
+    if (e->state == State::Invalid || !e->device.valid)
+        return QString();
+    return withoutName(name, ValueCodec::recommendationWarning(*e->meta, e->device.raw, context));
+}
+
 QString DeviceParameters::withoutName(const QString& name, const QString& message) const
 {
     const Entry* e = entry(name);

@@ -65,6 +65,10 @@ public:
     // What is wrong with the invalid edits among `names`, one line each, named by label:
     // "SPno2 speed: 5000 r/min is not allowed; allowed: 0 or 250–3000 r/min".
     QStringList invalidSummary(const QStringList& names = {}) const;
+    // The warning for the value a field shows (the pending edit, else the drive's value) when it
+    // is allowed but outside the profile's recommended range (ValueCodec::recommendationWarning),
+    // without the parameter's name in front; empty otherwise.
+    QString warningText(const QString& name) const;
     // A refusal without the parameter's own name in front, for showing at its field.
     QString problemText(const QString& name) const;
     // `message` about `name` without the name in front.

@@ -240,6 +240,7 @@ void DeviceSession::write(const QString& name, const QString& text, const WriteO
             done(outcome);
             return;
         }
+        outcome.warning = encoded.warning;
         // Settings that depend on this one must stay valid: know their values, then check.
         QStringList dependents = DependentValues::of(m_profile, *meta);
         for (const QString& c : options.companions)
@@ -283,10 +284,47 @@ void DeviceSession::ensureCached(QStringList names, std::function<void(QString)>
 void DeviceSession::send(const ParameterMeta* meta, const QVector<quint16>& registers,
                          const WriteOptions& options, Outcome outcome, Done done, int busyRetries)
 {
-    const ModbusRequest request =
-        meta->writeFunction == 16
-            ? ModbusRequest::writeMultiple(quint8(m_slave), meta->address, registers)
-            : ModbusRequest::writeSingle(quint8(m_slave), meta->address, registers.first());
+    const BlockWrite& block = meta->writeBlock;
+    if (!block.isSet()) {
+        const ModbusRequest request =
+            meta->writeFunction == 16
+                ? ModbusRequest::writeMultiple(quint8(m_slave), meta->address, registers)
+                : ModbusRequest::writeSingle(quint8(m_slave), meta->address, registers.first());
+        submitWrite(meta, request, registers, options, outcome, done, busyRetries);
+        return;
+    }
+    // The device wants this setting in a larger frame (the DC controller's configuration and
+    // GPIO writes, which also store): read the rest of the block so it keeps its values.
+    m_client->submit(
+        ModbusRequest::readHolding(quint8(m_slave), block.address, quint16(block.readCount())),
+        this,
+        [this, meta, registers, options, outcome, done,
+         busyRetries](const ModbusResult& r) mutable {
+            const BlockWrite& b = meta->writeBlock;
+            if (!r.ok() || r.registers.size() != b.readCount()) {
+                outcome.error = tr("not written: %1 is written together with 0x%2–0x%3, and "
+                                   "reading those first failed: %4")
+                                    .arg(nameFor(meta->name))
+                                    .arg(b.address, 4, 16, QLatin1Char('0'))
+                                    .arg(b.address + b.count - 1, 4, 16, QLatin1Char('0'))
+                                    .arg(r.ok() ? tr("short reply") : r.errorText());
+                done(outcome);
+                return;
+            }
+            QVector<quint16> frame = r.registers;
+            const int at = meta->address - b.address;
+            for (int i = 0; i < registers.size(); ++i)
+                frame[at + i] = registers.at(i);
+            frame += b.tail;
+            submitWrite(meta, ModbusRequest::writeMultiple(quint8(m_slave), b.address, frame),
+                        registers, options, outcome, done, busyRetries);
+        });
+}
+
+void DeviceSession::submitWrite(const ParameterMeta* meta, const ModbusRequest& request,
+                                const QVector<quint16>& registers, const WriteOptions& options,
+                                Outcome outcome, Done done, int busyRetries)
+{
     outcome.sent = true;
     const QVector<quint16> written = registers;
     m_client->submit(

@@ -30,9 +30,13 @@ public:
     {
         bool ok = false;
         QString parameter;
-        ParamValue value;      // the value read (or read back after a write)
-        QString error;         // what went wrong, for people
-        QString deviceError;   // decoded device error register, when there is one
+        ParamValue value;    // the value read (or read back after a write)
+        QString error;       // what went wrong, for people
+        QString deviceError; // decoded device error register, when there is one
+        // A value written although outside the profile's recommended range: the text naming
+        // that range (ValueCodec::recommendationWarning), for the caller to show. Set as soon as
+        // the value is accepted, whatever the write's result.
+        QString warning;
         bool sent = false;     // whether anything reached the wire (false: refused before)
         bool verified = false; // a write was read back and matched
         bool mismatch = false; // a write was read back and differed
@@ -109,8 +113,12 @@ private:
     void ensureCached(QStringList names, std::function<void(QString)> then);
     // `busyRetries`: how often a setting is sent again when the drive refused it only because
     // it was busy (its communication error register says so: nothing was executed).
+    // A setting with a `writeBlock` reads the rest of its block first and goes as that frame.
     void send(const ParameterMeta* meta, const QVector<quint16>& registers,
               const WriteOptions& options, Outcome outcome, Done done, int busyRetries = 3);
+    void submitWrite(const ParameterMeta* meta, const ModbusRequest& request,
+                     const QVector<quint16>& registers, const WriteOptions& options,
+                     Outcome outcome, Done done, int busyRetries);
     // Reads the drive's reason for an exception; `onBusy`, when set, runs instead of `done`
     // when the reason is one to send the request again for.
     void explainFailure(const ModbusResult& result, Outcome outcome, Done done,

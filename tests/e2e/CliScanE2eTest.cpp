@@ -124,3 +124,35 @@ TEST(CliScanE2e, CtrlCStopsTheScanAndReportsWhatWasScanned)
     EXPECT_TRUE(row(r.out, 2).contains(QStringLiteral("online"))) << r.out.toStdString();
     EXPECT_TRUE(r.out.contains(QStringLiteral("1 drive found in ")));
 }
+
+TEST(CliScanE2e, AnEmptyScanNamesTheOptionsThatFindADcControllerInPotentiometerMode)
+{
+    // A DC controller in potentiometer/analog control: 9600 8E1, address 1.
+    SimProcess sim;
+    QString error;
+    ASSERT_TRUE(
+        sim.start({QStringLiteral("--devices"), QStringLiteral("dcpid@1"), QStringLiteral("--baud"),
+                   QStringLiteral("9600"), QStringLiteral("--parity"), QStringLiteral("E")},
+                  &error))
+        << error.toStdString();
+    const CliResult empty =
+        runScan(sim, {QStringLiteral("--from"), QStringLiteral("2"), QStringLiteral("--to"),
+                      QStringLiteral("3"), QStringLiteral("--wait"), QStringLiteral("50")});
+    EXPECT_EQ(empty.code, 1) << empty.err.toStdString();
+    const QString marker = QStringLiteral("Retry with the same connection and: ");
+    QString hint;
+    for (const QString& line : empty.err.split(QLatin1Char('\n'))) {
+        if (line.startsWith(QLatin1String("hint: ")) && line.contains(marker))
+            hint = line.mid(line.indexOf(marker) + marker.size()).trimmed();
+    }
+    ASSERT_FALSE(hint.isEmpty()) << empty.err.toStdString();
+    // The options as printed, given to the real program, find the controller.
+    QProcess cli;
+    cli.start(cliProgram(), QStringList{QStringLiteral("--port"), sim.pty} +
+                                hint.split(QLatin1Char(' '), Qt::SkipEmptyParts));
+    ASSERT_TRUE(cli.waitForStarted(5000));
+    const CliResult found = finishCli(cli);
+    ASSERT_EQ(found.code, 0) << found.err.toStdString();
+    EXPECT_EQ(row(found.out, 1), QStringLiteral("1 01h SW1=0 SW2=1 dcpid DCPID-20A V1.0 online"))
+        << found.out.toStdString();
+}

@@ -138,8 +138,9 @@ TEST_F(DcPid, PidFloatsStoredBySevenRegistersOrCommand)
     ASSERT_TRUE(sim.write(7, "store.pid", 1).ok());
     powerCycle();
     EXPECT_DOUBLE_EQ(sim.raw(7, "pid.i"), 0.2f);
-    EXPECT_TRUE(sim.writeMany(7, 0x0090, floatRegisters(2.0f)).ok()); // above the proposed 0–1
-    EXPECT_EQ(sim.writeMany(7, 0x0090, floatRegisters(200.0f)).exception, 0x03);
+    // Allowed 0–100 (the manual only proposes 0.001–1, errata DC-20): 150 is refused.
+    EXPECT_TRUE(sim.writeMany(7, 0x0090, floatRegisters(2.0f)).ok());
+    EXPECT_EQ(sim.writeMany(7, 0x0090, floatRegisters(150.0f)).exception, 0x03);
 }
 
 TEST_F(DcPid, PresetStoredByFourRegisters)

@@ -5,6 +5,7 @@
 #include "bus/BusListModel.h"
 #include "bus/BusScanner.h"
 #include "bus/DriveStatusPoller.h"
+#include "bus/FixedLineHint.h"
 #include "profile/ProfileRegistry.h"
 #include "session/DeviceIdentifier.h"
 
@@ -85,6 +86,16 @@ BusPanel::BusPanel(BusDrives* drives, DriveStatusPoller* poller, QWidget* parent
     m_message->setWordWrap(true);
     m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(m_message);
+    const FixedLineHint fixed = FixedLineHint::dcPotentiometer();
+    m_fixedLine = new QPushButton(tr("Rescan at %1").arg(fixed.shortText()), this);
+    m_fixedLine->setObjectName(QStringLiteral("fixedLineRescan"));
+    m_fixedLine->setToolTip(fixed.explanation());
+    m_fixedLine->setVisible(false);
+    connect(m_fixedLine, &QPushButton::clicked, this, [this] {
+        m_fixedLine->setVisible(false);
+        emit fixedLineRescanRequested();
+    });
+    layout->addWidget(m_fixedLine, 0, Qt::AlignLeft);
 
     m_view->setModel(m_model);
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -162,6 +173,7 @@ void BusPanel::startScan(int from, int to)
         return;
     m_from->setValue(from);
     m_to->setValue(to);
+    m_fixedLine->setVisible(false);
     delete m_scanner;
     m_scanner = new BusScanner(m_drives->client(), ProfileRegistry::builtIn(), this);
     m_scanner->setRange(from, to);
@@ -235,10 +247,19 @@ void BusPanel::onScanFinished()
                         .arg(scanned)
                         .arg(m_scanner->total()));
     } else {
-        showMessage(tr("%n drive(s) found on machine numbers %1–%2 in %3 s.", nullptr, found)
-                        .arg(from)
-                        .arg(m_scanner->to())
-                        .arg(seconds, 0, 'f', 1));
+        QString text = tr("%n drive(s) found on machine numbers %1–%2 in %3 s.", nullptr, found)
+                           .arg(from)
+                           .arg(m_scanner->to())
+                           .arg(seconds, 0, 'f', 1);
+        // Nobody answered: a DC controller in potentiometer/analog control talks only at its
+        // fixed settings, whatever it was configured to.
+        const FixedLineHint fixed = FixedLineHint::dcPotentiometer();
+        const bool offer = found == 0 && fixed.worthRetrying(m_drives->client()->settings(), from,
+                                                             m_scanner->to());
+        if (offer)
+            text += QLatin1Char(' ') + fixed.explanation();
+        showMessage(text, found == 0);
+        m_fixedLine->setVisible(offer);
     }
     if (m_resumePoller && m_poller)
         m_poller->start();

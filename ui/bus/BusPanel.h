@@ -47,6 +47,9 @@ public:
     QProgressBar* progressBar() const { return m_progress; }
     // The last scan or add result for people ("3 drives found in 1.2 s").
     QString message() const;
+    // Shown after a scan that found nothing, when the line is not at the DC controller's fixed
+    // potentiometer-mode settings (FixedLineHint): asks for a rescan at them.
+    QPushButton* fixedLineButton() const { return m_fixedLine; }
     // The context menu for `slaves` (the caller owns it); public for tests.
     QMenu* contextMenuFor(const QVector<int>& slaves, QWidget* parent);
 
@@ -54,6 +57,9 @@ signals:
     void selectionChanged(const QVector<int>& slaves);
     void scanFinished();
     void driveAddedByNumber(int slave); // identification of addDrive() finished
+    // The user asks to reconnect at FixedLineHint's settings and scan its address; the main
+    // window owns the connection and does it.
+    void fixedLineRescanRequested();
 
 private:
     void scanClicked();
@@ -68,6 +74,7 @@ private:
     DriveStatusPoller* m_poller;
     BusListModel* m_model;
     BusScanner* m_scanner = nullptr;
+    QPushButton* m_fixedLine = nullptr;
     DeviceIdentifier* m_identifier;
     QPushButton* m_scan;
     QSpinBox* m_from;

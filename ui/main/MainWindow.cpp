@@ -9,6 +9,7 @@
 #include "bus/BusPanel.h"
 #include "bus/BusRecallBar.h"
 #include "bus/DriveStatusPoller.h"
+#include "bus/FixedLineHint.h"
 #include "connection/ConnectionDialog.h"
 #include "eol/EolMenu.h"
 #include "eol/ProductionMode.h"
@@ -200,6 +201,7 @@ void MainWindow::refuseConnection(const ConnectionSettings& settings, const QStr
             if (!m_connected && !m_candidate)
                 teardown();
         });
+    m_fixedLineScanPending = false;
     QMessageBox::warning(this, tr("Cannot connect"), why);
     emit connectionChanged(false);
 }
@@ -269,6 +271,15 @@ void MainWindow::adopt(std::unique_ptr<ModbusClient> client, const ConnectionSet
     m_splitter->setStretchFactor(0, 0);
     m_geometry.divide(m_panel);
     connect(m_panel, &BusPanel::selectionChanged, m_pages, &DrivePages::showDrive);
+    // A scan found nothing: reconnect at the DC controller's fixed potentiometer-mode settings
+    // and ask its address (FixedLineHint), once the new connection is up.
+    connect(m_panel, &BusPanel::fixedLineRescanRequested, this, [this] {
+        // Later: the panel asking is replaced by the new connection's.
+        QTimer::singleShot(0, this, [this] {
+            m_fixedLineScanPending = true;
+            connectTo(FixedLineHint::dcPotentiometer().applyTo(m_settings));
+        });
+    });
     connect(m_client.get(), &ModbusClient::connectionLost, this, [this](const QString& lost) {
         m_connected = false; // nothing to keep when another connection is tried
         setConnectionText(tr("Connection lost: %1").arg(lost), true);
@@ -314,6 +325,11 @@ void MainWindow::onOpened(bool ok, const QString& error)
                       false);
     m_poller->start();
     identifyKnown();
+    if (m_fixedLineScanPending && m_panel) {
+        const int slave = FixedLineHint::dcPotentiometer().slave();
+        m_panel->startScan(slave, slave);
+    }
+    m_fixedLineScanPending = false;
     emit connectionChanged(true);
 }
 

@@ -125,6 +125,8 @@ private:
     ConnectionSettings m_candidateSettings;
     QHash<int, QString> m_candidateTypes;
     bool m_connected = false;
+    // The connection being opened is the bus panel's rescan at FixedLineHint's settings.
+    bool m_fixedLineScanPending = false;
     BusDrives* m_drives = nullptr;
     DriveStatusPoller* m_poller = nullptr;
     BusPanel* m_panel = nullptr;

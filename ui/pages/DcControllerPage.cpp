@@ -3,6 +3,7 @@
 #include "profile/ValueCodec.h"
 #include "run/RunLiveState.h"
 #include "session/DeviceSession.h"
+#include "session/SerialLock.h"
 #include "workspace/ParameterField.h"
 #include "workspace/PendingValues.h"
 
@@ -101,14 +102,15 @@ DcControllerPage::DcControllerPage(DeviceParameters* parameters, QWidget* parent
     m_commLossNote->setWordWrap(true);
     m_commLossNote->setStyleSheet(QStringLiteral("color: #a05000;"));
     m_commLossNote->hide();
-    addGroup(grid, 3, 0, tr("Serial port (reconnect after a change)"),
+    addGroup(grid, 3, 0, tr("Serial port (used from the next power-up)"),
              {{QStringLiteral("config.baud"), tr("Baud rate:")},
               {QStringLiteral("config.parity"), tr("Parity and stop bits:")},
               {QStringLiteral("config.serial_lock"), tr("Configuration over serial:")}},
-             // The line changes at power-up, not while this connection runs.
-             tr("Lost at power-off until stored (Store configuration); a stored baud rate or "
-                "parity is used from the next power-up on, and the tool must then reconnect "
-                "with it."));
+             // The line changes at power-up, not while this connection runs (errata DC-18).
+             tr("Baud rate and parity are written as one 15-register block from 0x0080 that "
+                "also stores the configuration; the controller uses them from the next "
+                "power-up on: switch it off and on, then reconnect with them. The lock is lost "
+                "at power-off until stored (Store configuration)."));
     addGroup(grid, 0, 1, tr("Speed loop PID"),
              {{QStringLiteral("pid.p"), tr("&P coefficient:")},
               {QStringLiteral("pid.i"), tr("I coefficient:")},
@@ -126,10 +128,9 @@ DcControllerPage::DcControllerPage(DeviceParameters* parameters, QWidget* parent
               {QStringLiteral("gpio.ai2_direction"), tr("AI2 direction:")},
               {QStringLiteral("gpio.ai1_level"), tr("AI1 level:")},
               {QStringLiteral("gpio.ai2_level"), tr("AI2 level:")}},
-             // Only a 5-register block write from 0x0050 stores them (errata DC-12).
-             tr("Takes effect now and is not kept over power-off: the controller has no store "
-                "command for these, only a 5-register block write, which this page does not "
-                "send."));
+             // Only a 5-register block write from 0x0050 stores them (errata DC-12, DC-18).
+             tr("Takes effect now and is kept over power-off: each change is written as one "
+                "5-register block from 0x0050 that also stores the port states."));
     grid->setRowStretch(4, 1);
 
     auto* scroll = new QScrollArea;
@@ -171,7 +172,9 @@ void DcControllerPage::updateCommLossNote()
     const DeviceParameters::Entry* e = parameters()->entry(kCommLoss);
     const bool off = e && e->device.valid && e->device.raw == 0;
     m_commLossNote->setText(
-        off ? tr("The communication loss stop is off (%1 = 0 s): if the connection is lost while "
+        // The manual does not say what 0 does; OpenTOP assumes off (errata DC-16).
+        off ? tr("The communication loss stop time is 0 s (%1): the manual does not say what 0 "
+                 "does, and OpenTOP assumes the stop is then off: if the connection is lost while "
                  "the motor runs, the controller keeps it running at the last speed command. Set "
                  "a time so that it brakes when the bus goes quiet.")
                   .arg(e->meta->label)
@@ -237,6 +240,22 @@ void DcControllerPage::parameterChanged(const QString& name)
     updatePresetRange();
 }
 
+bool DcControllerPage::confirmWrite(const QStringList& pending)
+{
+    for (const QString& name : pending) {
+        const DeviceParameters::Entry* e = parameters()->entry(name);
+        if (!e || e->pendingRegisters.isEmpty())
+            continue;
+        const qint64 raw = qint64(ValueCodec::registersToRaw(*e->meta, e->pendingRegisters));
+        const QString warning = SerialLock::warning(parameters()->profile(), *e->meta, raw,
+                                                    parameters()->session()->context());
+        if (!warning.isEmpty() &&
+            !m_confirm(e->meta->label, warning + QStringLiteral("\n\n") + tr("Set it anyway?")))
+            return false;
+    }
+    return true;
+}
+
 void DcControllerPage::updatePresetRange()
 {
     const DeviceParameters::Entry* e = parameters()->entry(kForward);
@@ -261,7 +280,15 @@ void DcControllerPage::trackWrite(const QString& name)
     m_states.insert(name, e->state);
     const QString command = e->meta->storeWith;
     if (command.isEmpty() || before != DeviceParameters::State::Writing ||
-        e->state != DeviceParameters::State::Clean || m_unstored.contains(command))
+        e->state != DeviceParameters::State::Clean)
+        return;
+    if (e->meta->writeBlock.isSet()) {
+        // The block write (15 registers from 0x0080) stored the whole configuration.
+        m_unstored.removeAll(command);
+        updateBanner();
+        return;
+    }
+    if (m_unstored.contains(command))
         return;
     m_unstored << command;
     updateBanner();

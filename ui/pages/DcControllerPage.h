@@ -49,6 +49,10 @@ public:
     // Asks, then writes store.config = 0 and reads the configuration again.
     void reloadStoredConfiguration();
 
+    // Asks before a write that sets the serial configuration lock (SerialLock: it can shut the
+    // program out of the configuration over this line; the question says how to undo it).
+    bool confirmWrite(const QStringList& pending) override;
+
 signals:
     void storeFinished(bool ok);
 

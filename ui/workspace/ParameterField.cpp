@@ -124,6 +124,9 @@ void ParameterField::check(const QString& text)
     const ValueCodec::Encoded encoded = ValueCodec::encodeText(*e->meta, text, context());
     m_problem =
         text.trimmed().isEmpty() ? QString() : m_parameters->withoutName(m_name, encoded.error);
+    m_typingWarning = text.trimmed().isEmpty() || !encoded.ok
+                          ? QString()
+                          : m_parameters->withoutName(m_name, encoded.warning);
     applyStyle();
 }
 
@@ -132,8 +135,18 @@ void ParameterField::commit(const QString& text)
     if (m_syncing || text.trimmed().isEmpty())
         return;
     m_problem.clear(); // the model has the edit now, accepted or refused (kept as invalid)
+    m_typingWarning.clear();
     m_parameters->setPending(m_name, text);
     applyStyle(); // the field keeps a refused text so the user can correct or revert it
+}
+
+QString ParameterField::warning() const
+{
+    if (!problem().isEmpty())
+        return QString();
+    if (!m_typingWarning.isEmpty())
+        return m_typingWarning;
+    return m_parameters->warningText(m_name);
 }
 
 QString ParameterField::problem() const
@@ -175,6 +188,7 @@ void ParameterField::sync()
         m_combo->setCurrentIndex(index);
     } else if (!m_edit->hasFocus() || !m_edit->isModified()) {
         m_problem.clear(); // the text comes from the model again, and so does its problem
+        m_typingWarning.clear();
         if (pending) {
             m_edit->setText(e->pendingText);
         } else if (e->device.valid) {
@@ -223,10 +237,19 @@ void ParameterField::applyStyle()
         editor()->setStyleSheet(style);
     editor()->setAccessibleDescription(problem);
     // In words at the field, not only in a tooltip.
-    const QString message = problem.isEmpty() ? QString()
+    // An allowed value outside the recommended range: said at the field too, in amber.
+    const QString warning = this->warning();
+    const QString message = problem.isEmpty() ? warning
                             : e->state == DeviceParameters::State::Invalid || !m_problem.isEmpty()
                                 ? tr("Not accepted: %1").arg(problem)
                                 : problem;
+    const QString messageStyle = problem.isEmpty() && !warning.isEmpty()
+                                     ? QStringLiteral("color: #a05000;")
+                                     : QStringLiteral("color: #b01c1c;");
+    if (m_message->styleSheet() != messageStyle)
+        m_message->setStyleSheet(messageStyle);
+    if (problem.isEmpty() && !warning.isEmpty())
+        editor()->setAccessibleDescription(warning);
     if (m_message->text() != message)
         m_message->setText(message);
     m_message->setVisible(!message.isEmpty());

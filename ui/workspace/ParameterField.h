@@ -33,6 +33,9 @@ public:
     // What the text in the field is refused for (or why its write failed); empty when fine.
     // It is also the text of the message under the field.
     QString problem() const;
+    // An allowed value outside the recommended range (typed, pending or on the drive): the
+    // warning shown at the field, naming the recommended range; empty otherwise.
+    QString warning() const;
     QLabel* messageLabel() const { return m_message; }
     // Programmatic input, as if typed and confirmed (tests, multi-field editors).
     void enter(const QString& text);
@@ -53,7 +56,8 @@ private:
     QLineEdit* m_edit = nullptr;
     QLabel* m_unit;
     QLabel* m_message;
-    QString m_problem; // refusal of text being typed, before it is confirmed
+    QString m_problem;       // refusal of text being typed, before it is confirmed
+    QString m_typingWarning; // the recommendation warning of text being typed
     bool m_syncing = false;
     std::function<ValueContext()> m_contextProvider;
 };

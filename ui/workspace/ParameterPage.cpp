@@ -134,6 +134,10 @@ void ParameterPage::writePage()
         setStatus(blocker, true); // nothing is sent
         return;
     }
+    if (!confirmWrite(pending)) {
+        setStatus(tr("Nothing was written."));
+        return;
+    }
     // A group parent's write is executed by its children too: named and asked first.
     if (!GroupWriteCheck::confirm(this, m_parameters->session(),
                                   tr("Write %n value(s) of the page %1 to machine number %2",

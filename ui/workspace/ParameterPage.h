@@ -35,6 +35,13 @@ public:
     // Why the page's edits must not be written as they are (e.g. terminals whose function is
     // not valid in the control mode being written); empty when they may.
     virtual QString writeBlocker() const { return QString(); }
+    // Asked before the page's `pending` edits are written (after they were all accepted); false
+    // writes nothing. The DC controller's page asks before setting its serial lock.
+    virtual bool confirmWrite(const QStringList& pending)
+    {
+        Q_UNUSED(pending);
+        return true;
+    }
 
 signals:
     void pendingChanged();    // the number of pending edits on this page changed

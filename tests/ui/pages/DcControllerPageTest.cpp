@@ -1,7 +1,10 @@
 #include "pages/DcControllerPage.h"
+#include "SimDevice.h"
 #include "UiSimFixture.h"
 #include "session/DeviceParameters.h"
 #include "workspace/ParameterField.h"
+
+#include <QLabel>
 
 using namespace opentop;
 
@@ -124,4 +127,62 @@ TEST_F(DcControllerPageTest, PresetSpeedsFollowThePendingPresetMode)
     page->field(QStringLiteral("preset.forward_speed"))->enter(QStringLiteral("150"));
     EXPECT_TRUE(page->field(QStringLiteral("preset.forward_speed"))->problem().isEmpty())
         << qPrintable(page->field(QStringLiteral("preset.forward_speed"))->problem());
+}
+
+TEST_F(DcControllerPageTest, SettingTheSerialLockAsksFirstAndSaysHowToUndoIt)
+{
+    const QString lock = QStringLiteral("config.serial_lock");
+    answer = false;
+    page->field(lock)->enter(QStringLiteral("Disabled"));
+    ASSERT_TRUE(page->field(lock)->problem().isEmpty());
+    page->writePage();
+    ASSERT_EQ(asked.size(), 1);
+    EXPECT_TRUE(asked.first().contains(QStringLiteral("prohibits configuration over the serial")))
+        << qPrintable(asked.first());
+    EXPECT_TRUE(asked.first().contains(QStringLiteral("9600 bit/s, 8E1, address 1")))
+        << qPrintable(asked.first());
+    EXPECT_EQ(simRegister(7, 0x008D), 0); // declined: nothing sent
+    EXPECT_EQ(params->pendingNames(), QStringList{lock});
+
+    answer = true;
+    ASSERT_TRUE(
+        runUntil(page.get(), &ParameterPage::operationFinished, [this] { page->writePage(); }));
+    EXPECT_EQ(asked.size(), 2);
+    EXPECT_EQ(simRegister(7, 0x008D), 1);
+    // Lifting it asks nothing.
+    writeSetting(lock, QStringLiteral("Allowed"));
+    EXPECT_EQ(asked.size(), 2);
+    EXPECT_EQ(simRegister(7, 0x008D), 0);
+}
+
+TEST_F(DcControllerPageTest, BaudRateIsStoredByItsBlockWriteAndUsedAfterThePowerCycle)
+{
+    writeSetting(QStringLiteral("config.stall_time"), QStringLiteral("1.5"));
+    EXPECT_EQ(page->unstored(), QStringList{QStringLiteral("store.config")});
+    writeSetting(QStringLiteral("config.baud"), QStringLiteral("38400"));
+    // The 15-register write stored the whole configuration: nothing left to store.
+    EXPECT_FALSE(page->bannerShown());
+    EXPECT_EQ(bus->device(7)->lineBaud(), 9600);
+    control(7, {QStringLiteral("power-cycle")});
+    EXPECT_EQ(bus->device(7)->lineBaud(), 38400);
+    EXPECT_EQ(simRegister(7, 0x008B), 38400);
+    EXPECT_EQ(simRegister(7, 0x0081), 15);
+}
+
+TEST_F(DcControllerPageTest, PidAboveTheRecommendationShowsAWarningAtTheField)
+{
+    ParameterField* p = page->field(QStringLiteral("pid.p"));
+    p->enter(QStringLiteral("2.5"));
+    EXPECT_TRUE(p->problem().isEmpty()) << qPrintable(p->problem());
+    EXPECT_TRUE(p->warning().contains(QStringLiteral("recommended range 0.0000–1.0000")))
+        << qPrintable(p->warning());
+    EXPECT_EQ(p->messageLabel()->text(), p->warning());
+    ASSERT_TRUE(
+        runUntil(page.get(), &ParameterPage::operationFinished, [this] { page->writePage(); }));
+    EXPECT_TRUE(params->pendingNames().isEmpty());
+    // Written; the drive's value is still outside the recommendation, and the field says so.
+    EXPECT_FALSE(p->warning().isEmpty());
+    writeSetting(QStringLiteral("pid.p"), QStringLiteral("0.4"));
+    EXPECT_TRUE(p->warning().isEmpty()) << qPrintable(p->warning());
+    EXPECT_TRUE(p->messageLabel()->isHidden());
 }
