@@ -21,15 +21,37 @@ StepMetrics StepMetrics::measure(const TuningSamples& samples, double from, doub
     }
     // Progress along the step, 0 at `from`, 1 at `to`.
     const auto progress = [&](const TuningSample& s) { return (s.speed - from) / step; };
-    std::optional<double> t10;
+    // The rise from the last reading before the step, if there is one, with crossings
+    // interpolated between readings.
+    TuningSamples seq;
+    for (const TuningSample& s : samples) {
+        if (s.tMs < 0)
+            seq = {s};
+    }
+    seq += after;
+    const auto crossing = [&](int k, double level) {
+        if (k == 0)
+            return seq[0].tMs;
+        const double pa = progress(seq[k - 1]), pb = progress(seq[k]);
+        const double f = pb > pa ? (level - pa) / (pb - pa) : 1;
+        return seq[k - 1].tMs + std::clamp(f, 0.0, 1.0) * (seq[k].tMs - seq[k - 1].tMs);
+    };
+    int k90 = -1;
+    for (int k = 0; k < seq.size() && k90 < 0; ++k) {
+        if (progress(seq[k]) >= 0.9)
+            k90 = k;
+    }
+    int k10 = -1; // the first reading at or beyond 10 % after the last one below it
+    for (int k = 0; k < k90; ++k) {
+        if (progress(seq[k]) < 0.1)
+            k10 = k + 1;
+    }
+    // No reading below 10 %: the speed was not at `from` when the step began.
+    if (k90 >= 0 && k10 >= 1)
+        m.riseMs = crossing(k90, 0.9) - crossing(k10, 0.1);
     double peak = -1e300;
     for (const TuningSample& s : after) {
-        const double p = progress(s);
-        if (!t10 && p >= 0.1)
-            t10 = s.tMs;
-        if (t10 && !m.riseMs && p >= 0.9)
-            m.riseMs = s.tMs - *t10;
-        peak = std::max(peak, p);
+        peak = std::max(peak, progress(s));
         m.peakCurrent = std::max(m.peakCurrent, std::abs(s.current));
     }
     m.overshootPercent = std::max(0.0, (peak - 1) * 100);

@@ -18,7 +18,8 @@ struct StepMetrics
 public:
     bool valid = false;
     QString error;
-    std::optional<double> riseMs;     // none: never reached 90 %
+    // None: never reached 90 %, or never below 10 % (the speed was not at `from` at the step).
+    std::optional<double> riseMs;
     double overshootPercent = 0;      // 0 when it never went beyond `to`
     std::optional<double> settlingMs; // none: not settled within the record
     double steadyStateError = 0;      // speed units, signed

@@ -3,6 +3,7 @@
 #include "ModelLog.h"
 #include "session/DeviceSession.h"
 
+#include <QPointer>
 #include <QTimer>
 
 #include <algorithm>
@@ -60,6 +61,19 @@ TuningRunner::TuningRunner(DeviceSession* session, const TuningSpec& spec, QObje
 {
 }
 
+TuningRunner::~TuningRunner()
+{
+    // Gone while a test runs (its page or command torn down): the motor must not go on. The
+    // stop is sent without waiting; the session's callbacks find this runner gone.
+    if (m_done && m_session && m_ctx && !m_ctx->finishing) {
+        DeviceSession::WriteOptions options;
+        options.explicitCommand = true;
+        options.verify = false;
+        m_session->write(m_spec.command, QStringLiteral("0"), options,
+                         [](const DeviceSession::Outcome&) {});
+    }
+}
+
 double TuningRunner::modeOf() const
 {
     return m_session->cachedValue(m_spec.speedMode).raw;
@@ -73,21 +87,24 @@ double TuningRunner::feedbackScale() const
 
 void TuningRunner::readGains(GainsDone done)
 {
-    m_session->readMany(m_spec.gainParameters(), [this, done](const auto& r) {
-        PidGains g;
-        for (const QString& name : m_spec.gainParameters()) {
-            const DeviceSession::Outcome o = r.results.value(name);
-            if (!o.ok) {
-                done(false, g, o.error);
-                return;
-            }
-        }
-        g.p = r.results.value(m_spec.gainP).value.number;
-        g.i = r.results.value(m_spec.gainI).value.number;
-        g.d = r.results.value(m_spec.gainD).value.number;
-        g.dPeriodMs = int(r.results.value(m_spec.dPeriod).value.number);
-        done(true, g, QString());
-    });
+    m_session->readMany(m_spec.gainParameters(),
+                        [self = QPointer(this), this, done](const auto& r) {
+                            if (!self)
+                                return;
+                            PidGains g;
+                            for (const QString& name : m_spec.gainParameters()) {
+                                const DeviceSession::Outcome o = r.results.value(name);
+                                if (!o.ok) {
+                                    done(false, g, o.error);
+                                    return;
+                                }
+                            }
+                            g.p = r.results.value(m_spec.gainP).value.number;
+                            g.i = r.results.value(m_spec.gainI).value.number;
+                            g.d = r.results.value(m_spec.gainD).value.number;
+                            g.dPeriodMs = int(r.results.value(m_spec.dPeriod).value.number);
+                            done(true, g, QString());
+                        });
 }
 
 void TuningRunner::writeGains(const PidGains& gains, GainsDone done)
@@ -97,7 +114,9 @@ void TuningRunner::writeGains(const PidGains& gains, GainsDone done)
                                                     {m_spec.gainD, gains.d},
                                                     {m_spec.dPeriod, double(gains.dPeriodMs)}};
     auto next = std::make_shared<std::function<void(int)>>();
-    *next = [this, values, gains, done, next](int k) {
+    *next = [self = QPointer(this), this, values, gains, done, next](int k) {
+        if (!self)
+            return;
         if (k == values.size()) {
             readGains(done);
             return;
@@ -131,8 +150,8 @@ void TuningRunner::writeNumber(const QString& parameter, double value,
     options.explicitCommand = true;
     const auto ctx = m_ctx;
     m_session->write(parameter, QString::number(value, 'g', 10), options,
-                     [this, ctx, then](const DeviceSession::Outcome& o) {
-                         if (ctx != m_ctx)
+                     [self = QPointer(this), this, ctx, then](const DeviceSession::Outcome& o) {
+                         if (!self || ctx != m_ctx)
                              return;
                          if (!o.ok && !ctx->finishing) {
                              fail(o.error);
@@ -172,8 +191,8 @@ void TuningRunner::begin(Done done, std::function<void()> body)
     emit phase(tr("Reading the drive's settings"));
     m_session->readMany(
         QStringList{m_spec.speedMode, m_spec.commLossTime} + m_spec.gainParameters(),
-        [this, ctx, body](const DeviceSession::ReadManyOutcome& r) {
-            if (ctx != m_ctx)
+        [self = QPointer(this), this, ctx, body](const DeviceSession::ReadManyOutcome& r) {
+            if (!self || ctx != m_ctx)
                 return;
             if (r.failed) {
                 ctx->finishing = true; // nothing moved yet
@@ -236,8 +255,9 @@ void TuningRunner::poll(std::function<void(const TuningSample&)> then)
     const QString feedback = loop ? loop->feedback : QString();
     m_session->readMany(
         {feedback, m_spec.loadCurrent, m_spec.output},
-        [this, ctx, feedback, then](const DeviceSession::ReadManyOutcome& r) {
-            if (ctx != m_ctx)
+        [self = QPointer(this), this, ctx, feedback,
+         then](const DeviceSession::ReadManyOutcome& r) {
+            if (!self || ctx != m_ctx)
                 return;
             if (r.failed) {
                 if (++ctx->failedPolls >= kMaxFailedPolls && !ctx->finishing) {

@@ -80,6 +80,7 @@ public:
     using GainsDone = std::function<void(bool ok, const PidGains& gains, const QString& error)>;
 
     TuningRunner(DeviceSession* session, const TuningSpec& spec, QObject* parent = nullptr);
+    ~TuningRunner() override;
     const TuningSpec& spec() const { return m_spec; }
     DeviceSession* session() const { return m_session; }
 

@@ -159,9 +159,9 @@ TEST_F(TuningRunnerTest, CancelStopsAndRejectRestoresTheGains)
         result = r;
         finished = true;
     });
-    ASSERT_TRUE(waitUntil([&] { return raw("status.commutation") > 100; }));
+    EXPECT_TRUE(waitUntil([&] { return raw("status.commutation") > 100; }, 15000));
     runner->cancel();
-    ASSERT_TRUE(waitUntil([&] { return finished; }, 10000));
+    ASSERT_TRUE(waitUntil([&] { return finished; }, 20000));
     EXPECT_TRUE(result.aborted);
     EXPECT_TRUE(result.stopConfirmed);
     EXPECT_EQ(raw("status.commutation"), 0);
@@ -176,4 +176,15 @@ TEST_F(TuningRunnerTest, RefusesOutsideAClosedLoopModeWithoutMoving)
     EXPECT_FALSE(r.aborted);
     EXPECT_TRUE(r.error.contains(QStringLiteral("closed-loop"))) << qPrintable(r.error);
     EXPECT_EQ(framesSent(0x06) + framesSent(0x10), writesBefore);
+}
+
+TEST_F(TuningRunnerTest, ARunnerDestroyedMidTestStopsTheMotor)
+{
+    TuningRunner::StepPlan plan;
+    plan.to = 500;
+    plan.recordMs = 5000;
+    runner->startStep(plan, [](const TuningRunner::Result&) { ADD_FAILURE() << "no result"; });
+    ASSERT_TRUE(waitUntil([&] { return raw("status.commutation") > 100; }, 15000));
+    runner.reset();
+    EXPECT_TRUE(waitUntil([&] { return raw("status.commutation") == 0; }, 5000));
 }
