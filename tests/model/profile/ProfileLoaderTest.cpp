@@ -174,6 +174,12 @@ INSTANTIATE_TEST_SUITE_P(
         Rejection{"storeWith not a command", 1,
                   [](QJsonObject& p) { p[QStringLiteral("storeWith")] = QStringLiteral("speed"); },
                   "storeWith \"speed\" is not a command parameter"},
+        Rejection{"word order of a 1-register value", 1,
+                  [](QJsonObject& p) { p[QStringLiteral("wordOrder")] = QStringLiteral("low-first"); },
+                  "\"wordOrder\" is for 2-register numbers and bit fields only"},
+        Rejection{"unknown word order", 8,
+                  [](QJsonObject& p) { p[QStringLiteral("wordOrder")] = QStringLiteral("little"); },
+                  "\"wordOrder\" must be \"high-first\" or \"low-first\""},
         Rejection{"bad name", 1,
                   [](QJsonObject& p) { p[QStringLiteral("name")] = QStringLiteral("Accel X"); },
                   "name must be lower-case dotted words"}));
@@ -209,6 +215,25 @@ TEST(ProfileLoader, RejectsDuplicateNamesAndBrokenJson)
 
     EXPECT_FALSE(ProfileLoader::loadFile(QStringLiteral("/nonexistent/p.json"), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("/nonexistent/p.json: cannot open")));
+}
+
+TEST(ProfileLoader, WordOrderIsReadPerParameter)
+{
+    QString error;
+    const auto high = loadWithParam(12, [](QJsonObject&) {}, &error);
+    ASSERT_TRUE(high) << qPrintable(error);
+    EXPECT_EQ(high->parameter(QStringLiteral("status"))->wordOrder, WordOrder::HighFirst);
+    const auto low = loadWithParam(
+        12, [](QJsonObject& p) { p[QStringLiteral("wordOrder")] = QStringLiteral("low-first"); },
+        &error);
+    ASSERT_TRUE(low) << qPrintable(error);
+    EXPECT_EQ(low->parameter(QStringLiteral("status"))->wordOrder, WordOrder::LowFirst);
+    const auto explicitHigh = loadWithParam(
+        8, [](QJsonObject& p) { p[QStringLiteral("wordOrder")] = QStringLiteral("high-first"); },
+        &error);
+    ASSERT_TRUE(explicitHigh) << qPrintable(error);
+    EXPECT_EQ(explicitHigh->parameter(QStringLiteral("reduction"))->wordOrder,
+              WordOrder::HighFirst);
 }
 
 TEST(ProfileLoader, RolesBindMeaningToParameters)
