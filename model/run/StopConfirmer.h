@@ -31,8 +31,9 @@ struct StopResult
 
 // Confirms that one drive stops after a stop command by polling its "running" role (or its
 // current speed) until it has stopped. The deadline follows the drive's deceleration settings
-// (readable settings in seconds whose name ends in "decel"), within fixed bounds; past it, a
-// drive that is still slowing down gets more time up to the bound, one whose speed no longer
+// (the "decelerations" role) and, while running data with a knob runs, the knob's maximum (the
+// profile's decelerationKnobs: the DBU's SD knob for SPno1, unreadable), within fixed bounds; past
+// it, a drive that is still slowing down gets more time up to the bound, one whose speed no longer
 // falls is reported as still running.
 class StopConfirmer : public QObject
 {
@@ -63,6 +64,10 @@ private:
                   const QString& speedText, const QString& error);
     void finish(StopResult::State state, const QString& detail);
     QStringList decelParameters() const;
+    // The profile's decelerationKnobs: the knob's maximum when the running data selected has
+    // one (or when which one runs is not known), nothing otherwise.
+    std::optional<double>
+    knobSeconds(const std::function<std::optional<double>(const QString&)>& raw) const;
 
     DeviceSession* m_session;
     QElapsedTimer m_sinceStop;
