@@ -113,16 +113,19 @@ void StopConfirmer::round()
                         .arg(priority->label,
                              ValueCodec::format(*priority, o.results.value(priority->name).value,
                                                 m_session->context()));
+            const auto deadline = [this](double seconds) {
+                const double ms = seconds >= 0 ? seconds * 1000 * m_timing.decelFactor
+                                               : double(m_timing.unknownDecelMs);
+                return std::min<qint64>(m_timing.maxMs, qint64(std::ceil(ms)) + m_timing.marginMs);
+            };
+            m_settingsMs = deadline(decelSeconds);
             // The knob bounds a stop the drive executes; one that does not take bus commands
             // ignored ours, and waiting for its knob would only delay saying so.
             if (m_priorityNote.isEmpty()) {
                 if (const std::optional<double> knob = knobSeconds(raw))
                     decelSeconds = std::max(decelSeconds, *knob);
             }
-            const double decelMs = decelSeconds >= 0 ? decelSeconds * 1000 * m_timing.decelFactor
-                                                     : double(m_timing.unknownDecelMs);
-            m_expectedMs =
-                std::min<qint64>(m_timing.maxMs, qint64(std::ceil(decelMs)) + m_timing.marginMs);
+            m_expectedMs = deadline(decelSeconds);
         }
         const std::optional<bool> running = RoleEvaluator::flag(prof, kRunning, raw);
         std::optional<double> speed;
@@ -164,12 +167,17 @@ void StopConfirmer::evaluate(bool readOk, std::optional<bool> running, std::opti
             finish(StopResult::State::Stopped, QString());
             return;
         }
+        if (speed && m_lowest && *speed < *m_lowest)
+            m_fell = true;
         if (speed && (!m_lowest || *speed < *m_lowest)) {
             m_lowest = speed;
             m_progressMs = now;
         }
         const bool slowingDown = speed && now - m_progressMs < m_timing.stallMs;
-        if (now >= m_timing.maxMs || (now >= m_expectedMs && !slowingDown)) {
+        // The knob's time is for a drive that slows down: one whose speed has not fallen at all
+        // since the stop is judged by its settings' deadline.
+        const bool neverSlowed = speed && !m_fell && now >= m_settingsMs;
+        if (now >= m_timing.maxMs || ((now >= m_expectedMs || neverSlowed) && !slowingDown)) {
             QString detail =
                 speed
                     ? tr("still at %1 after %2 s")
