@@ -5,10 +5,12 @@
 #include "ModbusClient.h"
 #include "TextTable.h"
 #include "files/RestorePlan.h"
+#include "profile/RoleEvaluator.h"
 #include "profile/ValueCodec.h"
 #include "run/RunningData.h"
 #include "session/DependentValues.h"
 #include "session/DeviceSession.h"
+#include "session/ParameterInitialiser.h"
 #include "session/SerialLock.h"
 
 #include <QCoreApplication>
@@ -125,6 +127,29 @@ int SetCommand::run(CliContext& context, const QStringList& args)
             }
         }
     }
+    // Parameter initialisation resets the line settings and control priority too: the
+    // consequences are said before anything is sent (also as the reason to add --yes), and what
+    // to do afterwards once it was sent.
+    std::optional<ParameterInitialiser::Plan> initPlan;
+    const ParameterMeta* initMeta =
+        RoleEvaluator::parameter(profile, QStringLiteral("parameterInit"));
+    if (initMeta &&
+        std::any_of(assignments.begin(), assignments.end(),
+                    [initMeta](const Assignment& a) { return a.name == initMeta->name; })) {
+        ParameterInitialiser init(session);
+        ParameterInitialiser::Plan plan;
+        context.wait([&](std::function<void()> finish) {
+            init.check([&plan, finish](const ParameterInitialiser::Plan& p) {
+                plan = p;
+                finish();
+            });
+        });
+        for (const QString& c : plan.consequences)
+            context.err() << tr("warning: %1").arg(c) << Qt::endl;
+        if (!plan.refusal.isEmpty())
+            problems << plan.refusal;
+        initPlan = plan;
+    }
     // What allowed values depend on must be known before anything can be validated.
     if (problems.isEmpty() && !controlling.isEmpty()) {
         DeviceSession::ReadManyOutcome read;
@@ -229,6 +254,22 @@ int SetCommand::run(CliContext& context, const QStringList& args)
         }
         if (!a.outcome.ok && code == ExitOk)
             code = a.outcome.mismatch ? ExitMismatch : ExitCommunication;
+    }
+    if (initPlan) {
+        const bool sent = std::any_of(assignments.begin(), assignments.end(), [&](const auto& a) {
+            return a.name == initMeta->name && a.outcome.ok;
+        });
+        if (sent) {
+            for (const QString& step : initPlan->afterwards)
+                context.err() << tr("next: %1").arg(step) << Qt::endl;
+            if (initPlan->reconnectBaud > 0)
+                context.err() << tr("next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... "
+                                    "(the factory line settings)")
+                                     .arg(initPlan->reconnectBaud)
+                                     .arg(QLatin1Char(initPlan->reconnectParity))
+                                     .arg(initPlan->reconnectStopBits)
+                              << Qt::endl;
+        }
     }
     const ValueContext valueContext = session->context();
     QStringList written;

@@ -158,6 +158,14 @@ QString ModbusRequest::validate() const
                    "%1 retries are not allowed: use 0–10, or -1 for the default.")
             .arg(retries);
 
+    // A broadcast gets no reply, so only a write means anything; the T-net drives execute only
+    // functions 06h and 10h sent to machine number 0 (DBU manual 11-3, function code table).
+    if (isBroadcast() && function != WriteSingle && function != WriteMultiple)
+        return QCoreApplication::translate(
+                   "opentop::Transport",
+                   "Function 0x%1 cannot be broadcast: only functions 06h and 10h (writes) may be "
+                   "sent to machine number 0; use slave address 1–247.")
+            .arg(hex2(function));
     if (raw || !isStandard(function)) {
         if (!raw)
             return QCoreApplication::translate("opentop::Transport",
@@ -169,9 +177,6 @@ QString ModbusRequest::validate() const
                        "Raw request data of %1 bytes is too long: at most %2 bytes.")
                 .arg(rawData.size())
                 .arg(kMaxRawData);
-        if (function == EncapsulatedInterface && isBroadcast())
-            return QCoreApplication::translate("opentop::Transport",
-                                               "Device identification cannot be broadcast.");
         return QString();
     }
 
@@ -179,9 +184,6 @@ QString ModbusRequest::validate() const
     switch (function) {
     case ReadHolding:
     case ReadInput:
-        if (isBroadcast())
-            return QCoreApplication::translate(
-                "opentop::Transport", "A read cannot be broadcast: use slave address 1–247.");
         if (count < 1 || count > kMaxReadCount)
             return QCoreApplication::translate(
                        "opentop::Transport",

@@ -65,7 +65,8 @@ QString RtuBackend::describe() const
 
 int RtuBackend::defaultTurnaroundMs() const
 {
-    return std::max(10, int(std::ceil(3.5 * settings().charTimeMs() + 5)));
+    // Strictly more than C3.5 + 5 ms, also where that is a whole number of milliseconds.
+    return std::max(10, int(std::floor(3.5 * settings().charTimeMs() + 5)) + 1);
 }
 
 _modbus* RtuBackend::createContext()

@@ -19,7 +19,9 @@ public:
     bool open(QString* error) override;
     void close() override;
     QString describe() const override;
-    // max(3.5 character times + 5 ms, 10 ms): the T-net manual's broadcast gap (T2 > C3.5 + 5 ms).
+    // The T-net manual's broadcast gap T2 > C3.5 + 5 ms (DBU manual 11-1): the next whole
+    // millisecond above 3.5 character times + 5 ms, at least 10 ms (the manual's C3.5 is 4.0 ms at
+    // 9600 bit/s and 2.5 ms at 19200, more than 3.5 character times of 8N1).
     int defaultTurnaroundMs() const override;
 
 protected:

@@ -83,6 +83,41 @@ QString DriveStatus::ledName(Led led)
     return QString();
 }
 
+QString DriveStatus::ledLight(Led led)
+{
+    switch (led) {
+    case Led::Grey:
+        return QString();
+    case Led::Green:
+        return QStringLiteral("green");
+    case Led::Orange:
+        return QStringLiteral("orange");
+    case Led::SkyBlue:
+        return QStringLiteral("skyBlue");
+    case Led::Red:
+        return QStringLiteral("red");
+    case Led::Purple:
+        return QStringLiteral("purple");
+    case Led::Blue:
+        return QStringLiteral("blue");
+    }
+    return QString();
+}
+
+QString DriveStatus::ledLabel(Led shown) const
+{
+    return ledEntry && shown == led ? ledEntry->label : ledName(shown);
+}
+
+QString DriveStatus::ledManualText() const
+{
+    if (!ledEntry)
+        return QString();
+    if (ledEntry->blink.isEmpty())
+        return ledEntry->meaning;
+    return DriveStatusPoller::tr("%1; %2").arg(ledEntry->meaning, ledEntry->blink);
+}
+
 DriveStatusPoller::DriveStatusPoller(BusDrives* drives, QObject* parent)
     : QObject(parent)
     , m_drives(drives)
@@ -316,7 +351,8 @@ void DriveStatusPoller::readAlarm(int slave, quint64 generation)
 void DriveStatusPoller::driveDone(int slave, const DriveStatus& status)
 {
     DriveStatus s = status;
-    s.led = ledFor(s);
+    const DeviceSession* session = m_drives->session(slave);
+    applyLed(&s, session ? &session->profile() : nullptr);
     m_status.insert(slave, s);
     emit statusChanged(slave);
     pollNext();
@@ -348,6 +384,14 @@ DriveStatus::Led DriveStatusPoller::shownLed(int slave, const QDateTime& now) co
     if (s.led == DriveStatus::Led::Blue && m_drives->linkUp())
         return s.led;
     return freshness(slave, now) == Freshness::State::Live ? s.led : DriveStatus::Led::Grey;
+}
+
+void DriveStatusPoller::applyLed(DriveStatus* status, const Profile* profile)
+{
+    status->led = ledFor(*status);
+    const StatusLedEntry* entry =
+        profile ? profile->ledEntry(DriveStatus::ledLight(status->led)) : nullptr;
+    status->ledEntry = entry ? std::optional<StatusLedEntry>(*entry) : std::nullopt;
 }
 
 DriveStatus::Led DriveStatusPoller::ledFor(const DriveStatus& s)

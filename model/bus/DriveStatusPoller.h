@@ -2,6 +2,7 @@
 
 #include "monitor/Freshness.h"
 #include "profile/CodeTable.h"
+#include "profile/Profile.h"
 
 #include <QDateTime>
 #include <QHash>
@@ -44,6 +45,9 @@ struct DriveStatus
     QString priorityText;            // the "motionPriority" setting, e.g. "Communication priority"
     std::optional<bool> motionPriority; // whether it holds the value motion by bus needs
     Led led = Led::Grey;
+    // The profile's entry for `led` (statusLed: colour, name, the manual's meaning and blink);
+    // none for grey or a family without the table.
+    std::optional<StatusLedEntry> ledEntry;
     QDateTime lastAnswer; // when the drive last answered a poll
 
     // Failures in a row after which a drive counts as not answering (grey, not blue).
@@ -55,6 +59,14 @@ struct DriveStatus
     // What the LED means for this drive: "Alarm AL007 Overload", "Running CW", ...
     QString ledText() const;
     static QString ledName(Led led); // "red", "sky blue"
+    // The profile's name of a light (statusLed's "light"): "red", "skyBlue"; empty for grey.
+    static QString ledLight(Led led);
+    // The colour's name for people: the profile's label while `shown` is the status's own light,
+    // otherwise ledName(shown).
+    QString ledLabel(Led shown) const;
+    // What the drive's manual says of its light: "Alarm; flashes while an alarm is active";
+    // empty without a profile entry.
+    QString ledManualText() const;
 };
 
 // Polls every identified drive of a BusDrives for the few values the bus list shows, one drive
@@ -96,6 +108,8 @@ public:
     int cyclesCompleted() const { return m_cycles; }
     // The DBU's LED rules applied to a status (public for tests and other views).
     static DriveStatus::Led ledFor(const DriveStatus& status);
+    // ledFor and the entry of `profile`'s status LED table for it (nullptr: none).
+    static void applyLed(DriveStatus* status, const Profile* profile);
 
 signals:
     void statusChanged(int slave);

@@ -488,6 +488,15 @@ void EolStepRunner::runStop(const RecipeStep& step)
         stopWithin(*step.deceleration);
         return;
     }
+    // Running data whose deceleration comes from a knob (the DBU's SPno1: the SD knob, not
+    // readable): allow the knob's maximum (the profile's decelerationKnobs).
+    if (m_selected) {
+        if (const std::optional<double> knob =
+                m_session->profile().knobDeceleration(m_selected - 1)) {
+            stopWithin(*knob);
+            return;
+        }
+    }
     // The drive's own deceleration time of the running data it runs.
     const QString decel = QStringLiteral("spno%1.decel").arg(m_selected);
     if (!m_selected || !m_session->profile().parameter(decel)) {

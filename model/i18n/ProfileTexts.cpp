@@ -54,6 +54,12 @@ void ProfileTexts::visitTexts(Profile& profile, bool inherited, const Visit& vis
             visit(entry + QStringLiteral(".remedy"), e.remedy);
         }
     }
+    for (StatusLedEntry& e : profile.statusLed) {
+        const QString led = QStringLiteral("statusLed.") + e.light;
+        visit(led + QStringLiteral(".label"), e.label);
+        visit(led + QStringLiteral(".meaning"), e.meaning);
+        visit(led + QStringLiteral(".blink"), e.blink);
+    }
     for (ParameterMeta& p : profile.parameters) {
         const QString param = QStringLiteral("parameters.") + p.name;
         visit(param + QStringLiteral(".label"), p.label);

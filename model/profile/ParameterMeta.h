@@ -19,6 +19,13 @@ enum class DataType
     String,
     Bits
 };
+// How a 2-register value lies in its registers: the high word at the lower address (the
+// Modbus convention and the profiles' default) or the low word there.
+enum class WordOrder
+{
+    HighFirst,
+    LowFirst
+};
 enum class Access
 {
     ReadOnly,
@@ -122,6 +129,7 @@ struct ParameterMeta
     quint8 writeFunction = 0; // 6 or 16; 0 when not writable
     DataType type = DataType::U16;
     int registerCount = 1;
+    WordOrder wordOrder = WordOrder::HighFirst; // 2-register numbers and bit fields
     Access access = Access::ReadWrite;
     QString kind;          // setting | status | info | command | record | reserved
     QString safety;        // commands only: motion | reset | erase | init | store | comm

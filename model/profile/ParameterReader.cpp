@@ -42,13 +42,15 @@ int decimalsForScale(double scale)
 bool ParameterReader::read(const QJsonObject& o, ParameterMeta* meta)
 {
     static const QStringList known =
-        QStringList{
-            QStringLiteral("name"),      QStringLiteral("label"),     QStringLiteral("help"),
-            QStringLiteral("group"),     QStringLiteral("address"),   QStringLiteral("read"),
-            QStringLiteral("write"),     QStringLiteral("type"),      QStringLiteral("count"),
-            QStringLiteral("kind"),      QStringLiteral("when"),      QStringLiteral("bits"),
-            QStringLiteral("codeTable"), QStringLiteral("safety"),    QStringLiteral("storeWith"),
-            QStringLiteral("backup"),    QStringLiteral("writeBlock")} +
+        QStringList{QStringLiteral("name"),       QStringLiteral("label"),
+                    QStringLiteral("help"),       QStringLiteral("group"),
+                    QStringLiteral("address"),    QStringLiteral("read"),
+                    QStringLiteral("write"),      QStringLiteral("type"),
+                    QStringLiteral("count"),      QStringLiteral("kind"),
+                    QStringLiteral("when"),       QStringLiteral("bits"),
+                    QStringLiteral("codeTable"),  QStringLiteral("safety"),
+                    QStringLiteral("storeWith"),  QStringLiteral("backup"),
+                    QStringLiteral("writeBlock"), QStringLiteral("wordOrder")} +
         kSpecKeys;
     if (!m_json.onlyKeys(o, known, tr("entry")))
         return false;
@@ -120,6 +122,15 @@ bool ParameterReader::read(const QJsonObject& o, ParameterMeta* meta)
         if (count && *count != natural)
             return m_json.fail(
                 tr("%1 takes %2 register(s), not %3").arg(typeName).arg(natural).arg(*count));
+    }
+    if (const auto order = m_json.string(o, QStringLiteral("wordOrder"), false)) {
+        const bool wide = meta->registerCount == 2 && meta->type != DataType::String;
+        if (!wide)
+            return m_json.fail(tr("\"wordOrder\" is for 2-register numbers and bit fields only"));
+        if (*order == QLatin1String("low-first"))
+            meta->wordOrder = WordOrder::LowFirst;
+        else if (*order != QLatin1String("high-first"))
+            return m_json.fail(tr("\"wordOrder\" must be \"high-first\" or \"low-first\""));
     }
     if (meta->registerCount > 1 && meta->writeFunction == 6)
         return m_json.fail(tr("a %1-register value cannot be written with function 06; use 16")

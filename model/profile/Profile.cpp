@@ -96,4 +96,22 @@ void Profile::index()
         m_byName.insert(parameters[i].name, i);
 }
 
+std::optional<double> Profile::knobDeceleration(qint64 selected) const
+{
+    for (const DecelerationKnob& k : decelerationKnobs) {
+        if (k.selected == selected)
+            return k.maxSeconds;
+    }
+    return std::nullopt;
+}
+
+const StatusLedEntry* Profile::ledEntry(const QString& light) const
+{
+    for (const StatusLedEntry& e : statusLed) {
+        if (e.light == light)
+            return &e;
+    }
+    return nullptr;
+}
+
 } // namespace opentop

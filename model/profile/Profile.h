@@ -64,6 +64,28 @@ struct SerialDefaults
     char parity = 'N';
     int stopBits = 1;
     QVector<int> bauds;
+    int powerOnDelayMs = 0; // after power-on, the drive answers only after this long
+};
+
+// A deceleration the drive takes from a knob, not from a setting that can be read (the DBU's SD
+// knob for SPno1): a stop may take up to `maxSeconds` while the running data whose "selected"
+// role value is `selected` runs.
+struct DecelerationKnob
+{
+    qint64 selected = 0;
+    double maxSeconds = 0;
+};
+
+// One colour of the drive's status LED as its manual gives it. `light` is the model's name for
+// it (DriveStatus::Led: green, orange, skyBlue, red, purple, blue; white: no power); `colour` the
+// "#rrggbb" a view paints; `blink` how the manual says it blinks (empty: it does not say).
+struct StatusLedEntry
+{
+    QString light;
+    QString colour;
+    QString label;   // "Red" (profile language)
+    QString meaning; // "Alarm"
+    QString blink;   // "Flashes"
 };
 
 // A device family described by data: parameters, groups, code tables, limits.
@@ -92,7 +114,13 @@ public:
     // How the device's speed loop is tuned (model/tuning/TuningSpec reads and checks it);
     // empty when it has none.
     QJsonObject tuning;
+    QVector<DecelerationKnob> decelerationKnobs;
+    QVector<StatusLedEntry> statusLed;
 
+    // The knob's deceleration for running data `selected` (the "selected" role's raw value).
+    std::optional<double> knobDeceleration(qint64 selected) const;
+    // The LED entry for `light`; nullptr when the profile has none.
+    const StatusLedEntry* ledEntry(const QString& light) const;
     const ParameterMeta* parameter(const QString& parameterName) const;
     // The parameter whose registers include `address` in the read (3/4) or write space.
     const ParameterMeta* parameterAt(quint8 function, quint16 address) const;

@@ -43,7 +43,8 @@ bool readHeader(const QJsonObject& root, JsonReader& json, Profile* p)
              QStringLiteral("vendor"), QStringLiteral("manual"), QStringLiteral("serial"),
              QStringLiteral("limits"), QStringLiteral("variants"), QStringLiteral("identify"),
              QStringLiteral("readBlocks"), QStringLiteral("groups"), QStringLiteral("codeTables"),
-             QStringLiteral("parameters"), QStringLiteral("roles"), QStringLiteral("tuning")},
+             QStringLiteral("parameters"), QStringLiteral("roles"), QStringLiteral("tuning"),
+             QStringLiteral("decelerationKnobs"), QStringLiteral("statusLed")},
             tr("top level")))
         return false;
     if (json.integer(root, QStringLiteral("schema")).value_or(0) != 1)
@@ -74,6 +75,10 @@ bool readHeader(const QJsonObject& root, JsonReader& json, Profile* p)
         return json.fail(tr("serial: baud must be 1200–115200 and stopBits 1 or 2"));
     for (const QJsonValue& b : serial.value(QStringLiteral("bauds")).toArray())
         p->serial.bauds << b.toInt();
+    p->serial.powerOnDelayMs =
+        int(json.integer(serial, QStringLiteral("powerOnDelayMs"), false).value_or(0));
+    if (p->serial.powerOnDelayMs < 0 || p->serial.powerOnDelayMs > 60000)
+        return json.fail(tr("serial.powerOnDelayMs must be 0–60000"));
 
     const QJsonObject limits = json.object(root, QStringLiteral("limits")).value_or(QJsonObject());
     p->maxReadRegisters = int(json.integer(limits, QStringLiteral("maxReadRegisters")).value_or(0));
@@ -320,6 +325,81 @@ bool readRoles(const QJsonObject& root, JsonReader& json, Profile* p)
     return true;
 }
 
+bool readDecelerationKnobs(const QJsonObject& root, JsonReader& json, Profile* p)
+{
+    const QJsonArray knobs = root.value(QStringLiteral("decelerationKnobs")).toArray();
+    if (knobs.isEmpty())
+        return true;
+    const ProfileRole* selected = p->role(QStringLiteral("selected"));
+    const ParameterMeta* meta = selected ? p->parameter(selected->parameter) : nullptr;
+    if (!meta)
+        return json.fail(tr("decelerationKnobs need the \"selected\" role"));
+    int width = 16;
+    for (const BitField& b : meta->bits) {
+        if (b.name == selected->field)
+            width = b.width;
+    }
+    for (int i = 0; i < knobs.size(); ++i) {
+        const QString where = QStringLiteral("decelerationKnobs[%1]").arg(i);
+        const QJsonObject o = knobs[i].toObject();
+        if (!json.onlyKeys(o, {QStringLiteral("selected"), QStringLiteral("maxSeconds")}, where))
+            return false;
+        DecelerationKnob k;
+        const auto value = json.integerValue(o.value(QStringLiteral("selected")),
+                                             where + QStringLiteral(".selected"));
+        const auto seconds = json.number(o, QStringLiteral("maxSeconds"));
+        if (!value || !seconds)
+            return json.fail(tr("%1 needs \"selected\" and \"maxSeconds\"").arg(where));
+        if (*value < 0 || *value >= (qint64(1) << width) || p->knobDeceleration(*value))
+            return json.fail(
+                tr("%1: \"selected\" %2 is not a value of the \"selected\" role, or repeated")
+                    .arg(where)
+                    .arg(*value));
+        if (*seconds <= 0 || *seconds > 600)
+            return json.fail(
+                tr("%1: \"maxSeconds\" must be more than 0 and at most 600").arg(where));
+        k.selected = *value;
+        k.maxSeconds = *seconds;
+        p->decelerationKnobs << k;
+    }
+    return true;
+}
+
+bool readStatusLed(const QJsonObject& root, JsonReader& json, Profile* p)
+{
+    static const QStringList lights = {QStringLiteral("green"),   QStringLiteral("orange"),
+                                       QStringLiteral("skyBlue"), QStringLiteral("red"),
+                                       QStringLiteral("purple"),  QStringLiteral("blue"),
+                                       QStringLiteral("white")};
+    static const QRegularExpression colourRe(QStringLiteral("^#[0-9a-fA-F]{6}$"));
+    const QJsonArray entries = root.value(QStringLiteral("statusLed")).toArray();
+    for (int i = 0; i < entries.size(); ++i) {
+        const QString where = QStringLiteral("statusLed[%1]").arg(i);
+        const QJsonObject o = entries[i].toObject();
+        if (!json.onlyKeys(o,
+                           {QStringLiteral("light"), QStringLiteral("colour"),
+                            QStringLiteral("label"), QStringLiteral("meaning"),
+                            QStringLiteral("blink")},
+                           where))
+            return false;
+        StatusLedEntry e;
+        e.light = o.value(QStringLiteral("light")).toString();
+        e.colour = o.value(QStringLiteral("colour")).toString();
+        e.label = o.value(QStringLiteral("label")).toString();
+        e.meaning = o.value(QStringLiteral("meaning")).toString();
+        e.blink = o.value(QStringLiteral("blink")).toString();
+        if (!lights.contains(e.light) || p->ledEntry(e.light))
+            return json.fail(tr("%1: \"light\" must be one of %2, each once")
+                                 .arg(where, lights.join(QStringLiteral(", "))));
+        if (!colourRe.match(e.colour).hasMatch())
+            return json.fail(tr("%1: \"colour\" must be #rrggbb").arg(where));
+        if (e.label.trimmed().isEmpty() || e.meaning.trimmed().isEmpty())
+            return json.fail(tr("%1: \"label\" and \"meaning\" must not be empty").arg(where));
+        p->statusLed << e;
+    }
+    return true;
+}
+
 } // namespace
 
 std::optional<Profile> ProfileLoader::loadJson(const QByteArray& data, const QString& sourceName,
@@ -367,7 +447,8 @@ std::optional<Profile> ProfileLoader::loadJson(const QByteArray& data, const QSt
         profile.parameters << meta;
     }
     profile.index();
-    if (!crossCheck(root, json, &profile) || !readRoles(root, json, &profile))
+    if (!crossCheck(root, json, &profile) || !readRoles(root, json, &profile) ||
+        !readDecelerationKnobs(root, json, &profile) || !readStatusLed(root, json, &profile))
         return failWith(detail);
     return profile;
 }

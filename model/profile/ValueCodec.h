@@ -39,7 +39,14 @@ public:
                              const ValueContext& context = {});
     // Raw value -> registers without validation (for the simulator and for raw service access).
     static QVector<quint16> rawToRegisters(const ParameterMeta& meta, double raw);
+    // A 2-register bit field register is read in its `wordOrder`, unless the drive shows that it
+    // keeps the word in the other register: every field lies in one word, that word reads 0,
+    // and the other word has bits only where the fields are (wordsSwapped). Then the words are
+    // taken the other way round, so that a drive of either layout reads right.
     static double registersToRaw(const ParameterMeta& meta, const QVector<quint16>& registers);
+    static bool wordsSwapped(const ParameterMeta& meta, quint32 wide);
+    // The bits the parameter's fields occupy.
+    static quint32 fieldMask(const ParameterMeta& meta);
     // Empty when `raw` is allowed; otherwise a message naming the allowed values.
     static QString checkRaw(const ParameterMeta& meta, double raw,
                             const ValueContext& context = {});

@@ -13,6 +13,7 @@ namespace {
 const QString kRunning = QStringLiteral("running");
 const QString kCurrentSpeed = QStringLiteral("currentSpeed");
 const QString kPriority = QStringLiteral("motionPriority");
+const QString kSelected = QStringLiteral("selected");
 
 } // namespace
 
@@ -34,6 +35,29 @@ QStringList StopConfirmer::decelParameters() const
     // Role "decelerations": the settings (in s) that bound how long stopping may take.
     const ProfileRole* role = m_session->profile().role(QStringLiteral("decelerations"));
     return role ? role->parameters : QStringList();
+}
+
+std::optional<double>
+StopConfirmer::knobSeconds(const std::function<std::optional<double>(const QString&)>& raw) const
+{
+    const Profile& profile = m_session->profile();
+    if (profile.decelerationKnobs.isEmpty())
+        return std::nullopt;
+    const ProfileRole* role = profile.role(kSelected);
+    const ParameterMeta* meta = RoleEvaluator::parameter(profile, kSelected);
+    const std::optional<double> value = meta ? raw(meta->name) : std::nullopt;
+    if (!value) {
+        // Which running data runs is not known: it may be one whose knob cannot be read.
+        double most = 0;
+        for (const DecelerationKnob& k : profile.decelerationKnobs)
+            most = std::max(most, k.maxSeconds);
+        return most;
+    }
+    qint64 selected = qint64(*value);
+    if (const BitField* field =
+            role->field.isEmpty() ? nullptr : RoleEvaluator::bitField(*meta, role->field))
+        selected = RoleEvaluator::fieldValue(*field, *value);
+    return profile.knobDeceleration(selected);
 }
 
 void StopConfirmer::start(std::function<void(const StopResult&)> done)
@@ -61,6 +85,11 @@ void StopConfirmer::round()
         names += decelParameters();
         if (const ParameterMeta* p = RoleEvaluator::parameter(profile, kPriority))
             names << p->name;
+        // A knob's deceleration cannot be read: which running data runs says whether it counts.
+        if (const ParameterMeta* p = RoleEvaluator::parameter(profile, kSelected);
+            p && p->isReadable() && !profile.decelerationKnobs.isEmpty() &&
+            !names.contains(p->name))
+            names << p->name;
     }
     m_session->readMany(names, [this](const DeviceSession::ReadManyOutcome& o) {
         const Profile& prof = m_session->profile();
@@ -76,10 +105,6 @@ void StopConfirmer::round()
                 if (r.value.valid)
                     decelSeconds = std::max(decelSeconds, r.value.number);
             }
-            const double decelMs = decelSeconds >= 0 ? decelSeconds * 1000 * m_timing.decelFactor
-                                                     : double(m_timing.unknownDecelMs);
-            m_expectedMs =
-                std::min<qint64>(m_timing.maxMs, qint64(std::ceil(decelMs)) + m_timing.marginMs);
             const ParameterMeta* priority = RoleEvaluator::parameter(prof, kPriority);
             if (priority && RoleEvaluator::holds(prof, kPriority, raw) == false)
                 m_priorityNote =
@@ -88,6 +113,19 @@ void StopConfirmer::round()
                         .arg(priority->label,
                              ValueCodec::format(*priority, o.results.value(priority->name).value,
                                                 m_session->context()));
+            const auto deadline = [this](double seconds) {
+                const double ms = seconds >= 0 ? seconds * 1000 * m_timing.decelFactor
+                                               : double(m_timing.unknownDecelMs);
+                return std::min<qint64>(m_timing.maxMs, qint64(std::ceil(ms)) + m_timing.marginMs);
+            };
+            m_settingsMs = deadline(decelSeconds);
+            // The knob bounds a stop the drive executes; one that does not take bus commands
+            // ignored ours, and waiting for its knob would only delay saying so.
+            if (m_priorityNote.isEmpty()) {
+                if (const std::optional<double> knob = knobSeconds(raw))
+                    decelSeconds = std::max(decelSeconds, *knob);
+            }
+            m_expectedMs = deadline(decelSeconds);
         }
         const std::optional<bool> running = RoleEvaluator::flag(prof, kRunning, raw);
         std::optional<double> speed;
@@ -131,12 +169,17 @@ void StopConfirmer::evaluate(bool readOk, std::optional<bool> running, std::opti
             finish(StopResult::State::Stopped, QString());
             return;
         }
+        if (speed && m_lowest && *speed < *m_lowest)
+            m_fell = true;
         if (speed && (!m_lowest || *speed < *m_lowest)) {
             m_lowest = speed;
             m_progressMs = now;
         }
         const bool slowingDown = speed && now - m_progressMs < m_timing.stallMs;
-        if (now >= m_timing.maxMs || (now >= m_expectedMs && !slowingDown)) {
+        // The knob's time is for a drive that slows down: one whose speed has not fallen at all
+        // since the stop is judged by its settings' deadline.
+        const bool neverSlowed = speed && !m_fell && now >= m_settingsMs;
+        if (now >= m_timing.maxMs || ((now >= m_expectedMs || neverSlowed) && !slowingDown)) {
             QString detail =
                 speed
                     ? tr("still at %1 after %2 s")

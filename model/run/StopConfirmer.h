@@ -31,9 +31,11 @@ struct StopResult
 
 // Confirms that one drive stops after a stop command by polling its "running" role (or its
 // current speed) until it has stopped. The deadline follows the drive's deceleration settings
-// (readable settings in seconds whose name ends in "decel"), within fixed bounds; past it, a
-// drive that is still slowing down gets more time up to the bound, one whose speed no longer
-// falls is reported as still running.
+// (the "decelerations" role) and, while running data with a knob runs, the knob's maximum (the
+// profile's decelerationKnobs: the DBU's SD knob for SPno1, not readable), within fixed bounds;
+// past it, a drive that is still slowing down gets more time up to the bound, one whose speed
+// no longer falls is reported as still running. A drive whose speed has not fallen at all since
+// the stop is judged by the settings' deadline alone: the knob's time is for a drive that slows.
 class StopConfirmer : public QObject
 {
     Q_OBJECT
@@ -63,6 +65,10 @@ private:
                   const QString& speedText, const QString& error);
     void finish(StopResult::State state, const QString& detail);
     QStringList decelParameters() const;
+    // The profile's decelerationKnobs: the knob's maximum when the running data selected has
+    // one (or when which one runs is not known), nothing otherwise.
+    std::optional<double>
+    knobSeconds(const std::function<std::optional<double>(const QString&)>& raw) const;
 
     DeviceSession* m_session;
     QElapsedTimer m_sinceStop;
@@ -71,6 +77,8 @@ private:
     std::function<void(const StopResult&)> m_done;
     bool m_first = true;
     qint64 m_expectedMs = 0;
+    qint64 m_settingsMs = 0; // the deadline of the readable settings alone (no knob)
+    bool m_fell = false;     // the speed has fallen since the first read
     int m_failures = 0;
     std::optional<double> m_lowest; // lowest speed seen so far
     qint64 m_progressMs = 0;        // when the speed last fell

@@ -5,6 +5,7 @@
 #include "session/DeviceSession.h"
 
 #include <QHash>
+#include <algorithm>
 #include <memory>
 
 namespace opentop {
@@ -118,11 +119,32 @@ ParameterInitialiser::plan(const std::function<std::optional<double>(const QStri
             p.consequences << tr("%1 stays %2 (already the default).").arg(meta->label, to);
         }
     };
+    const SerialDefaults& line = profile.serial;
+    const QString lineText = tr("%1 bit/s, parity %2, %3 stop bit(s)")
+                                 .arg(line.baud)
+                                 .arg(QLatin1Char(line.parity))
+                                 .arg(line.stopBits);
     if (const ProfileRole* comm = profile.role(kCommunication)) {
-        for (const QString& n : comm->parameters)
+        for (const QString& n : comm->parameters) {
+            const int before = p.communication.size();
             change(profile.parameter(n),
-                   tr("The drive may then stop answering this connection (from its next "
-                      "power-up): reconnect at the default setting to reach it."));
+                   tr("The link to the drive is lost from its next power-up: it answers only at "
+                      "the factory line settings, %1.")
+                       .arg(lineText));
+            if (p.communication.size() > before)
+                p.reconnectBaud = line.baud;
+        }
+    }
+    if (p.reconnectBaud > 0) {
+        p.reconnectParity = line.parity;
+        p.reconnectStopBits = line.stopBits;
+        p.powerOnDelayMs = line.powerOnDelayMs;
+        p.afterwards << tr("To reach drive %1 again: switch it off and on, wait %2 s after "
+                           "power-on, then reconnect at %3.")
+                            .arg(slave)
+                            .arg(ValueCodec::formatNumber(std::max(line.powerOnDelayMs, 0) / 1000.0,
+                                                          line.powerOnDelayMs % 1000 ? 1 : 0))
+                            .arg(lineText);
     }
     change(RoleEvaluator::parameter(profile, kGroup),
            tr("The drive no longer follows writes sent to its group's parent, and drives that "
@@ -130,9 +152,24 @@ ParameterInitialiser::plan(const std::function<std::optional<double>(const QStri
     const ParameterMeta* priority = RoleEvaluator::parameter(profile, kIoPriority);
     const ProfileRole* io = profile.role(kIoPriority);
     if (priority && io && io->value && priority->spec.defaultRaw &&
-        qint64(*priority->spec.defaultRaw) == *io->value)
-        change(priority, tr("The drive follows its input terminals again: an input that is on "
-                            "may start the motor, with the factory input functions."));
+        qint64(*priority->spec.defaultRaw) == *io->value) {
+        const std::optional<double> now = raw(priority->name);
+        const bool lost = !now || qint64(*now) != *io->value;
+        change(priority,
+               tr("Bus control is lost: the drive follows its input terminals again and refuses "
+                  "start, stop and speed commands over the bus; an input that is on may start the "
+                  "motor, with the factory input functions."));
+        if (lost) {
+            p.busControlLost = true;
+            const ParameterMeta* motion =
+                RoleEvaluator::parameter(profile, QStringLiteral("motionPriority"));
+            const ProfileRole* motionRole = profile.role(QStringLiteral("motionPriority"));
+            if (motion && motionRole && motionRole->value)
+                p.afterwards << tr("To control the motor over the bus again, set %1 to %2.")
+                                    .arg(motion->label, RoleEvaluator::valueText(
+                                                            *motion, *motionRole->value, context));
+        }
+    }
     p.consequences << tr("The machine number %1 is not a setting and does not change.").arg(slave);
     if (runningMeta && running == false)
         p.consequences << tr("The motor must stand still: drive %1 reports it stopped now, and "

@@ -26,6 +26,16 @@ public:
         QStringList consequences;  // for people, one sentence each
         QStringList communication; // labels of communication settings whose value changes
         QString command;           // "Parameter initialisation = Initialise (1) (0x1025, …)"
+        // What the user must do afterwards to reach and drive it again, one sentence each:
+        // reconnect at the factory line settings, give bus control back.
+        QStringList afterwards;
+        // The profile's factory line settings to reconnect with when a communication setting
+        // returns to a default that differs or could not be read; 0: the link stays as it is.
+        int reconnectBaud = 0;
+        char reconnectParity = 'N';
+        int reconnectStopBits = 1;
+        int powerOnDelayMs = 0;      // the profile's: wait this long after power-on
+        bool busControlLost = false; // control priority returns to the drive's inputs
     };
     using PlanDone = std::function<void(const Plan&)>;
 

@@ -152,6 +152,31 @@ TEST(SetCommand, CommandsAndRawWritesNeedConfirmation)
     EXPECT_EQ(r.code, ExitUsage);
 }
 
+// Parameter initialisation (0x1025) resets the line settings and control priority too: the
+// command line says what it changes before it needs --yes.
+TEST(SetCommand, ParameterInitialisationSaysWhatItResetsFirst)
+{
+    CliRun r = runCli(
+        {QStringLiteral("set"), QStringLiteral("1"), QStringLiteral("cmd.param_init=1"), kSim});
+    EXPECT_EQ(r.code, ExitInvalid);
+    const int warning = r.err.indexOf(
+        QStringLiteral("warning: Every setting of drive 1 returns to its factory default"));
+    EXPECT_GE(warning, 0) << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("warning: Communication rate stays 19200 bit/s")))
+        << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("warning: Control priority stays I/O priority")))
+        << qPrintable(r.err);
+    EXPECT_GT(r.err.indexOf(QStringLiteral("add --yes")), warning) << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("nothing was written")));
+    // Confirmed: sent. The line and control priority stay as they are: nothing to do next.
+    r = runCli({QStringLiteral("set"), QStringLiteral("1"), QStringLiteral("cmd.param_init=1"),
+                QStringLiteral("--yes"), kSim});
+    EXPECT_EQ(r.code, ExitOk) << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("warning: Every setting of drive 1")))
+        << qPrintable(r.err);
+    EXPECT_FALSE(r.err.contains(QStringLiteral("next:"))) << qPrintable(r.err);
+}
+
 TEST(PortsCommand, ListsAndExplainsTypedPaths)
 {
     const CliRun r = runCli({QStringLiteral("ports")});

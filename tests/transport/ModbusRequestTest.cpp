@@ -29,6 +29,40 @@ TEST(ModbusRequestTest, ValidateAcceptsGoodRequests)
     EXPECT_EQ(ModbusRequest::readDeviceIdentification(1).validate(), QString());
 }
 
+// DBU manual 11-3: only functions 06h and 10h may be broadcast; anything else sent to machine
+// number 0 is refused before it reaches the line, with a reason.
+TEST(ModbusRequestTest, OnlyWritesMayBeBroadcast)
+{
+    EXPECT_EQ(ModbusRequest::writeSingle(0, 0x2003, 0).validate(), QString());
+    EXPECT_EQ(ModbusRequest::writeMultiple(0, 0x0403, {0, 100}).validate(), QString());
+    EXPECT_EQ(ModbusRequest::rawRequest(0, 0x06, QByteArray::fromHex("20030000")).validate(),
+              QString());
+    const struct
+    {
+        ModbusRequest request;
+        const char* function;
+    } refused[] = {
+        {ModbusRequest::readHolding(0, 0x2003, 1), "0x03"},
+        {ModbusRequest::readInput(0, 0x0065, 2), "0x04"},
+        {ModbusRequest::readDeviceIdentification(0), "0x2B"},
+        {ModbusRequest::rawRequest(0, 0x05, QByteArray::fromHex("0000FF00")), "0x05"},
+        {ModbusRequest::rawRequest(0, 0x0F, QByteArray::fromHex("00000001010001")), "0x0F"},
+        {ModbusRequest::rawRequest(0, 0x41, QByteArray()), "0x41"},
+    };
+    for (const auto& r : refused) {
+        const QString error = r.request.validate();
+        EXPECT_TRUE(error.contains(
+            QStringLiteral("Function %1 cannot be broadcast").arg(QString::fromLatin1(r.function))))
+            << qPrintable(error);
+        EXPECT_TRUE(error.contains(QStringLiteral("only functions 06h and 10h")))
+            << qPrintable(error);
+        // The same request to one drive is fine.
+        ModbusRequest unicast = r.request;
+        unicast.slave = 1;
+        EXPECT_EQ(unicast.validate(), QString()) << r.function;
+    }
+}
+
 TEST(ModbusRequestTest, ValidateRejectsWithReasons)
 {
     EXPECT_TRUE(ModbusRequest::readHolding(1, 0, 0).validate().contains(QStringLiteral("1–125")));

@@ -11,6 +11,7 @@
 
 #include <QElapsedTimer>
 #include <QThread>
+#include <algorithm>
 #include <gtest/gtest.h>
 
 using namespace opentop;
@@ -289,6 +290,28 @@ TEST(RtuBackendTest, BroadcastSendsAndKeepsTheBusQuiet)
               RtuFrame::encodeRequest(ModbusRequest::writeSingle(0, 0x2000, 1)));
     ConnectionSettings slow = ptySettings(f.device.path(), 1200);
     EXPECT_EQ(RtuBackend(slow).turnaroundMs(), 35); // 3.5 × 8.33 ms + 5 ms
+}
+
+// DBU manual 11-1: broadcasting gap T2 > C3.5 + 5 ms, with C3.5 = 4.0 ms at 9600 bit/s and
+// 2.5 ms at 19200 bit/s. The quiet time after a broadcast keeps it at every rate, strictly.
+TEST(RtuBackendTest, BroadcastGapIsLongerThanC35PlusFiveMs)
+{
+    const struct
+    {
+        int baud;
+        double manualC35Ms; // the manual's figure where it gives one, else 3.5 characters
+    } rates[] = {{9600, 4.0}, {14400, 0}, {19200, 2.5}, {28800, 0},
+                 {38400, 0},  {57600, 0}, {115200, 0},  {1200, 0}};
+    for (const auto& r : rates) {
+        ConnectionSettings s = ptySettings(QStringLiteral("/dev/null"), r.baud);
+        const double c35 = std::max(r.manualC35Ms, 3.5 * s.charTimeMs());
+        EXPECT_GT(RtuBackend(s).turnaroundMs(), c35 + 5) << r.baud;
+    }
+    // Where 3.5 characters + 5 ms is a whole number of ms (10 bits at 1000 bit/s: 40 ms), the gap
+    // is still longer.
+    ConnectionSettings exact = ptySettings(QStringLiteral("/dev/null"), 1000);
+    ASSERT_DOUBLE_EQ(3.5 * exact.charTimeMs() + 5, 40.0);
+    EXPECT_EQ(RtuBackend(exact).turnaroundMs(), 41);
 }
 
 TEST(RtuBackendTest, VanishingPortIsAPortError)

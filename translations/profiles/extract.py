@@ -19,6 +19,9 @@ def texts(profile):
         for e in t.get('entries', []):
             for f in ('name', 'resetText', 'cause', 'remedy'):
                 put(f"codeTables.{tid}.{e['code']}.{f}", e.get(f))
+    for e in profile.get('statusLed', []):
+        for f in ('label', 'meaning', 'blink'):
+            put(f"statusLed.{e['light']}.{f}", e.get(f))
     for p in profile.get('parameters', []):
         n = p['name']
         for f in ('label', 'help', 'unit', 'note'):

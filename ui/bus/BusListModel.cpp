@@ -155,10 +155,14 @@ QString BusListModel::toolTip(const DeviceInfo& d, int column) const
         const Freshness::State state =
             m_poller ? m_poller->freshness(d.slave, now) : Freshness::State::None;
         const DriveStatus::Led led = shownLed(d.slave);
-        if (state == Freshness::State::Live || led != DriveStatus::Led::Grey)
-            return tr("Status light %1: %2 (%3)")
-                .arg(DriveStatus::ledName(led), s.ledText(),
-                     StaleLook::ageText(state, s.lastAnswer, now));
+        if (state == Freshness::State::Live || led != DriveStatus::Led::Grey) {
+            QString tip = tr("Status light %1: %2 (%3)")
+                              .arg(s.ledLabel(led), s.ledText(),
+                                   StaleLook::ageText(state, s.lastAnswer, now));
+            if (led == s.led && s.ledEntry)
+                tip += QLatin1Char('\n') + tr("The drive's manual: %1").arg(s.ledManualText());
+            return tip;
+        }
         return tr("Status light grey: not live — %1")
             .arg(StaleLook::ageText(state, s.lastAnswer, now));
     }
@@ -182,17 +186,17 @@ QString BusListModel::toolTip(const DeviceInfo& d, int column) const
     return d.detail;
 }
 
-QIcon BusListModel::ledIcon(DriveStatus::Led led) const
+QIcon BusListModel::ledIcon(const QColor& color) const
 {
-    auto it = m_icons.find(int(led));
+    auto it = m_icons.find(color.rgba());
     if (it == m_icons.end()) {
         // Painted at the screen's scale so that it stays round and sharp on HiDPI screens.
         const qreal dpr = qApp ? qApp->devicePixelRatio() : 1.0;
         QIcon icon;
-        icon.addPixmap(StatusLight::pixmap(led, 14, dpr));
+        icon.addPixmap(StatusLight::pixmap(color, 14, dpr));
         if (dpr < 2.0)
-            icon.addPixmap(StatusLight::pixmap(led, 14, 2.0));
-        it = m_icons.insert(int(led), icon);
+            icon.addPixmap(StatusLight::pixmap(color, 14, 2.0));
+        it = m_icons.insert(color.rgba(), icon);
     }
     return *it;
 }
@@ -214,7 +218,7 @@ QVariant BusListModel::data(const QModelIndex& index, int role) const
         return display(d, index.column());
     case Qt::DecorationRole:
         if (index.column() == Light)
-            return ledIcon(shownLed(d.slave));
+            return ledIcon(StatusLight::color(status(d.slave), shownLed(d.slave)));
         return {};
     case Qt::ForegroundRole:
         if (garbled)

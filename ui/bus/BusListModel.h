@@ -4,6 +4,7 @@
 #include "session/DeviceInfo.h"
 
 #include <QAbstractTableModel>
+#include <QColor>
 #include <QHash>
 #include <QIcon>
 #include <QTimer>
@@ -68,11 +69,11 @@ private:
     void statusChanged(int slave);
     QVariant display(const DeviceInfo& d, int column) const;
     QString toolTip(const DeviceInfo& d, int column) const;
-    QIcon ledIcon(DriveStatus::Led led) const;
+    QIcon ledIcon(const QColor& color) const; // cached by colour
 
     QVector<DeviceInfo> m_devices;
     DriveStatusPoller* m_poller = nullptr;
-    mutable QHash<int, QIcon> m_icons;
+    mutable QHash<QRgb, QIcon> m_icons;
     QTimer m_age; // lights and ages follow the clock between polls
 };
 

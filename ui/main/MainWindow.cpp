@@ -25,6 +25,7 @@
 #include "session/DeviceParameters.h"
 #include "traffic/TrafficDescriber.h"
 #include "workspace/DriveWorkspace.h"
+#include "workspace/ParameterInitBox.h"
 
 #include <QAction>
 #include <QCloseEvent>
@@ -59,6 +60,12 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     setCentralWidget(m_central);
     m_docks = new BusDocks(this, m_log.get());
     m_status->showIn(statusBar());
+    // After a parameter initialisation the drive answers at its factory line settings: the
+    // box offers to reconnect at them, and this window does it (queued: the reconnect replaces
+    // the pages the box lives on).
+    ParameterInitBox::setReconnectHandler(this, [this](const ConnectionSettings& settings) {
+        QTimer::singleShot(0, this, [this, settings] { connectTo(settings); });
+    });
     m_pages = new DrivePages(this); // before the menus: they ask it for the selection
     m_menus = new MainMenus(
         this, m_docks, [this] { return m_pages->selected(); }, [this] { return m_settings; });

@@ -308,7 +308,7 @@ void MonitorPage::showPanel(const MonitorSample& s)
     status.alarmActive = s.alarmActive;
     status.alarmCode = s.activeAlarmCode;
     status.alarm = s.activeAlarm;
-    status.led = DriveStatusPoller::ledFor(status);
+    DriveStatusPoller::applyLed(&status, &profile);
     if (!m_look || m_look->state() == Freshness::State::Live)
         m_panel->light()->setStatus(status);
 }

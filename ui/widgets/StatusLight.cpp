@@ -32,14 +32,21 @@ StatusLight::StatusLight(QWidget* parent)
 
 void StatusLight::setStatus(const DriveStatus& status)
 {
-    setLed(status.led, status.ledText());
+    setLed(status.led, status.ledText(), status.ledEntry ? &*status.ledEntry : nullptr);
 }
 
-void StatusLight::setLed(DriveStatus::Led led, const QString& meaning)
+void StatusLight::setLed(DriveStatus::Led led, const QString& meaning, const StatusLedEntry* entry)
 {
     m_led = led;
     m_meaning = meaning;
-    const QString text = tr("Status light %1: %2").arg(DriveStatus::ledName(led), meaning);
+    m_color = entry ? QColor(entry->colour) : color(led);
+    QString text =
+        tr("Status light %1: %2").arg(entry ? entry->label : DriveStatus::ledName(led), meaning);
+    if (entry) {
+        DriveStatus manual;
+        manual.ledEntry = *entry;
+        text += QLatin1Char('\n') + tr("The drive's manual: %1").arg(manual.ledManualText());
+    }
     setToolTip(text);
     setAccessibleName(text);
     update();
@@ -78,13 +85,20 @@ QColor StatusLight::color(DriveStatus::Led led)
     return Qt::gray;
 }
 
-QPixmap StatusLight::pixmap(DriveStatus::Led led, int size, qreal devicePixelRatio)
+QColor StatusLight::color(const DriveStatus& status, DriveStatus::Led shown)
+{
+    if (status.ledEntry && shown == status.led)
+        return QColor(status.ledEntry->colour);
+    return color(shown);
+}
+
+QPixmap StatusLight::pixmap(const QColor& color, int size, qreal devicePixelRatio)
 {
     QPixmap pm(QSize(size, size) * devicePixelRatio);
     pm.setDevicePixelRatio(devicePixelRatio);
     pm.fill(Qt::transparent);
     QPainter p(&pm);
-    paintLed(p, QRectF(0, 0, size, size), color(led));
+    paintLed(p, QRectF(0, 0, size, size), color);
     return pm;
 }
 
@@ -92,7 +106,7 @@ void StatusLight::paintEvent(QPaintEvent*)
 {
     QPainter p(this);
     const qreal d = std::min(width(), height());
-    paintLed(p, QRectF((width() - d) / 2, (height() - d) / 2, d, d), color(m_led));
+    paintLed(p, QRectF((width() - d) / 2, (height() - d) / 2, d, d), m_color);
 }
 
 } // namespace opentop

@@ -1,5 +1,6 @@
 #include "workspace/ParameterInitBox.h"
 
+#include "ModbusClient.h"
 #include "groups/GroupWriteCheck.h"
 #include "session/DeviceParameters.h"
 #include "session/DeviceSession.h"
@@ -10,9 +11,23 @@
 #include <QMessageBox>
 #include <QPointer>
 #include <QPushButton>
+#include <QTimer>
 #include <QVBoxLayout>
 
 namespace opentop {
+
+namespace {
+
+QPointer<QObject> s_reconnectOwner;
+ParameterInitBox::ReconnectHandler s_reconnect;
+
+} // namespace
+
+void ParameterInitBox::setReconnectHandler(QObject* owner, ReconnectHandler handler)
+{
+    s_reconnectOwner = owner;
+    s_reconnect = std::move(handler);
+}
 
 bool ParameterInitBox::supported(const DeviceParameters* parameters)
 {
@@ -25,6 +40,7 @@ ParameterInitBox::ParameterInitBox(DeviceParameters* parameters, QWidget* parent
     , m_initialiser(new ParameterInitialiser(parameters->session(), this))
     , m_status(new QLabel(this))
     , m_button(new QPushButton(this))
+    , m_reconnect(new QPushButton(this))
 {
     const int slave = parameters->session()->slave();
     auto* layout = new QVBoxLayout(this);
@@ -45,7 +61,11 @@ ParameterInitBox::ParameterInitBox(DeviceParameters* parameters, QWidget* parent
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_status->hide();
     layout->addWidget(m_status);
+    m_reconnect->setObjectName(QStringLiteral("parameterInitReconnect"));
+    m_reconnect->hide();
+    layout->addWidget(m_reconnect, 0, Qt::AlignLeft);
     connect(m_button, &QPushButton::clicked, this, &ParameterInitBox::start);
+    connect(m_reconnect, &QPushButton::clicked, this, &ParameterInitBox::reconnect);
 }
 
 QString ParameterInitBox::statusText() const
@@ -75,15 +95,20 @@ void ParameterInitBox::start()
             return;
         }
         self->setStatus(QString(), false);
-        self->ask(plan.consequences, plan.command);
+        self->ask(plan);
     });
 }
 
-void ParameterInitBox::ask(const QStringList& consequences, const QString& command)
+void ParameterInitBox::ask(const ParameterInitialiser::Plan& plan)
 {
+    m_plan = plan;
+    const QString& command = plan.command;
     const DeviceSession* session = m_parameters->session();
     const int slave = session->slave();
-    QString details = QStringLiteral("• ") + consequences.join(QStringLiteral("\n• "));
+    QString details = QStringLiteral("• ") + plan.consequences.join(QStringLiteral("\n• "));
+    if (!plan.afterwards.isEmpty())
+        details += QStringLiteral("\n\n") + tr("Afterwards:") + QStringLiteral("\n• ") +
+                   plan.afterwards.join(QStringLiteral("\n• "));
     const int edits = m_parameters->pendingNames().size();
     if (edits > 0)
         details += QStringLiteral("\n• ") +
@@ -136,21 +161,67 @@ void ParameterInitBox::send()
         }
         // The drive holds its defaults now: drop the edits and read everything again.
         self->m_parameters->revertAll();
+        const ConnectionSettings now = self->m_parameters->session()->client()->settings();
+        const ConnectionSettings factory = self->reconnectSettings();
+        if (self->m_plan.reconnectBaud > 0 && now.kind != ConnectionSettings::Kind::Tcp &&
+            (factory.baud != now.baud || factory.parity != now.parity ||
+             factory.stopBits != now.stopBits)) {
+            self->m_reconnect->setText(
+                tr("&Reconnect at %1 bit/s after the power-up").arg(self->m_plan.reconnectBaud));
+            self->m_reconnect->setToolTip(self->m_plan.afterwards.join(QLatin1Char('\n')));
+            self->m_reconnect->show();
+        }
         self->setStatus(tr("Drive %1 initialised; reading its values again…").arg(slave), false);
         self->m_parameters->refresh({}, [self, slave](int failed) {
             if (!self)
                 return;
             self->m_button->setEnabled(true);
-            self->setStatus(
+            QString text =
                 failed ? tr("Drive %1 initialised; %n value(s) could not be read back (it may "
                             "answer only at the default communication settings now).",
                             nullptr, failed)
                              .arg(slave)
                        : tr("Drive %1 initialised to its factory defaults; values read again.")
-                             .arg(slave),
-                failed > 0);
+                             .arg(slave);
+            for (const QString& step : self->m_plan.afterwards)
+                text += QLatin1Char('\n') + step;
+            self->setStatus(text, failed > 0);
             emit self->finished();
         });
+    });
+}
+
+ConnectionSettings ParameterInitBox::reconnectSettings() const
+{
+    ConnectionSettings settings = m_parameters->session()->client()->settings();
+    if (m_plan.reconnectBaud > 0) {
+        settings.baud = m_plan.reconnectBaud;
+        settings.parity = m_plan.reconnectParity;
+        settings.stopBits = m_plan.reconnectStopBits;
+    }
+    return settings;
+}
+
+void ParameterInitBox::reconnect()
+{
+    const ConnectionSettings settings = reconnectSettings();
+    m_reconnect->setEnabled(false);
+    // The drive needs its power-on delay before it communicates (DBU manual 11-2: 1 s).
+    setStatus(tr("Reconnecting at %1 bit/s in %2 s…")
+                  .arg(settings.baud)
+                  .arg(m_plan.powerOnDelayMs / 1000.0, 0, 'f', 1),
+              false);
+    QPointer<ParameterInitBox> self(this);
+    QTimer::singleShot(m_plan.powerOnDelayMs, this, [self, settings] {
+        if (!self)
+            return;
+        self->m_reconnect->hide();
+        self->m_reconnect->setEnabled(true);
+        if (s_reconnectOwner && s_reconnect)
+            s_reconnect(settings); // may delete this box with the old connection's pages
+        else if (self)
+            self->setStatus(tr("Reconnect at %1 bit/s from the Bus menu.").arg(settings.baud),
+                            true);
     });
 }
 

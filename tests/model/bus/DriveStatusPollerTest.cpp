@@ -192,3 +192,57 @@ TEST(DriveStatusLedTest, CommunicationFailuresAreBlueThenGrey)
     s.alarmCode = 0x07;
     EXPECT_EQ(DriveStatusPoller::ledFor(s), Led::Red);
 }
+
+// The DBU's seven-colour LED table (manual chapter 4, "MONITOR Status indicator") is profile
+// data: each state the program derives takes the profile's colour, name and meaning.
+TEST(DriveStatusLedTest, TheProfilesTableGivesColourNameAndMeaning)
+{
+    const Profile& dbu = *ProfileRegistry::builtIn().family(QStringLiteral("dbu"));
+    ASSERT_EQ(dbu.statusLed.size(), 7);
+    const struct
+    {
+        Led led;
+        const char* colour;
+        const char* meaning;
+    } table[] = {
+        {Led::Red, "#e51c23", "Alarm"},
+        {Led::Green, "#2eb83c", "Run / edit"},
+        {Led::Orange, "#ff8c00", "CW"},
+        {Led::SkyBlue, "#4fc3f7", "CCW"},
+        {Led::Purple, "#9c27b0", "External interrupt"},
+        {Led::Blue, "#154dd6", "Memory, CPU or communication"},
+    };
+    for (const auto& t : table) {
+        const StatusLedEntry* e = dbu.ledEntry(DriveStatus::ledLight(t.led));
+        ASSERT_NE(e, nullptr) << t.colour;
+        EXPECT_EQ(e->colour, QString::fromLatin1(t.colour));
+        EXPECT_TRUE(e->meaning.contains(QString::fromLatin1(t.meaning))) << qPrintable(e->meaning);
+    }
+    ASSERT_NE(dbu.ledEntry(QStringLiteral("white")), nullptr); // no power: listed, never derived
+    EXPECT_TRUE(dbu.ledEntry(QStringLiteral("red"))->blink.contains(QStringLiteral("Flashes")));
+
+    DriveStatus s;
+    s.polled = s.answered = true;
+    s.running = true;
+    s.reverse = true;
+    Profile edited = dbu;
+    for (StatusLedEntry& e : edited.statusLed) {
+        if (e.light == QLatin1String("skyBlue")) {
+            e.colour = QStringLiteral("#123456");
+            e.label = QStringLiteral("Teal");
+        }
+    }
+    DriveStatusPoller::applyLed(&s, &edited);
+    EXPECT_EQ(s.led, Led::SkyBlue);
+    ASSERT_TRUE(s.ledEntry);
+    EXPECT_EQ(s.ledEntry->colour, QStringLiteral("#123456"));
+    EXPECT_EQ(s.ledLabel(Led::SkyBlue), QStringLiteral("Teal"));
+    EXPECT_EQ(s.ledLabel(Led::Grey), DriveStatus::ledName(Led::Grey)); // shown grey: not live
+    EXPECT_TRUE(s.ledManualText().contains(QStringLiteral("CCW")));
+    // Without a table (the DC controller's profile): no entry, the program's names.
+    DriveStatusPoller::applyLed(&s, ProfileRegistry::builtIn().family(QStringLiteral("dcpid")));
+    EXPECT_FALSE(s.ledEntry);
+    EXPECT_EQ(s.ledLabel(Led::SkyBlue), DriveStatus::ledName(Led::SkyBlue));
+    DriveStatusPoller::applyLed(&s, nullptr);
+    EXPECT_FALSE(s.ledEntry);
+}

@@ -130,6 +130,34 @@ TEST_F(EolRunTest, AGoodDriveIsWrittenVerifiedTestedAndPasses)
     EXPECT_EQ(readText(1, QStringLiteral("core.control_priority")), priorityBefore);
 }
 
+// SPno1 decelerates as the SD knob is set, which cannot be read: the stop step allows the
+// knob's maximum from the profile (30 s) plus the margin, not the unknown-deceleration default.
+TEST_F(EolRunTest, StoppingSpno1AllowsTheKnobsMaximum)
+{
+    startBus(QStringLiteral("dbu200@1"));
+    Recipe recipe = quickDbuRecipe({1});
+    RecipePosition& p = recipe.positions[0];
+    stepOf(p, RecipeStep::Type::Select)->spno = 1;
+    QVector<RecipeStep> steps;
+    for (const RecipeStep& s : p.steps)
+        if (s.type != RecipeStep::Type::WaitSpeed && s.type != RecipeStep::Type::Hold)
+            steps << s;
+    p.steps = steps;
+    const double margin = stepOf(p, RecipeStep::Type::Stop)->margin;
+    const UnitRecord r = run(recipe);
+    EXPECT_EQ(r.status, UnitStatus::Pass) << qPrintable(r.failureReason);
+    bool found = false;
+    for (const Measurement& m : r.measurements) {
+        if (m.quantity != QLatin1String("time to stop"))
+            continue;
+        found = true;
+        ASSERT_TRUE(m.upper);
+        EXPECT_DOUBLE_EQ(*m.upper, 30.0 + margin);
+    }
+    EXPECT_TRUE(found);
+    EXPECT_FALSE(running(1));
+}
+
 TEST_F(EolRunTest, ASecondRunWritesNothingThatIsAlreadyRight)
 {
     startBus(QStringLiteral("dbu200@1"));

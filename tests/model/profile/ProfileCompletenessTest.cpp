@@ -213,6 +213,51 @@ TEST(ProfileCompleteness, DcBusSettings)
     EXPECT_EQ(dcpid().serial.stopBits, 1);
 }
 
+// 12-10 (errata DBU-7): 0x0417 holds whole distance units, 0–99999 = 0000 0000h–0001 869Fh,
+// high word first like the function 10h example; chapter 7's 0–5999.9 is not what it holds.
+TEST(ProfileCompleteness, DbuDistanceForTheTimeDisplay)
+{
+    const ParameterMeta* distance = dbu().parameterAt(3, 0x0417);
+    ASSERT_NE(distance, nullptr);
+    EXPECT_EQ(distance->name, QStringLiteral("unit.distance"));
+    EXPECT_DOUBLE_EQ(distance->spec.scale, 1.0);
+    EXPECT_EQ(distance->writeFunction, 16);
+    ValueCodec::Encoded e = ValueCodec::encodeNumber(*distance, 99999);
+    ASSERT_TRUE(e.ok) << e.error.toStdString();
+    EXPECT_EQ(e.registers, (QVector<quint16>{0x0001, 0x869F}));
+    EXPECT_DOUBLE_EQ(ValueCodec::decode(*distance, {0x0001, 0x869F}).number, 99999);
+    EXPECT_FALSE(ValueCodec::encodeNumber(*distance, 100000).ok);
+    EXPECT_FALSE(ValueCodec::encodeNumber(*distance, 5999.9).ok); // no tenths
+    EXPECT_TRUE(ValueCodec::encodeNumber(*distance, 6000).ok);    // above chapter 7's 5999.9
+}
+
+// 12-11: 0x0065 is read as two registers, high word first (bits 31–16 unused, in 0x0065). A drive
+// that keeps the bits in 0x0065 instead reads the same (errata DBU-25).
+TEST(ProfileCompleteness, DbuDriverStatusReadsEitherLayout)
+{
+    const ParameterMeta* status = dbu().parameterAt(4, 0x0065);
+    ASSERT_NE(status, nullptr);
+    EXPECT_EQ(status->wordOrder, WordOrder::HighFirst);
+    const auto field = [status](const QVector<quint16>& regs, const char* name) {
+        const double raw = ValueCodec::decode(*status, regs).raw;
+        for (const BitField& b : status->bits) {
+            if (b.name == QLatin1String(name))
+                return (qint64(raw) >> b.bit) & ((1 << b.width) - 1);
+        }
+        ADD_FAILURE() << name;
+        return qint64(-1);
+    };
+    // Running CCW with SPno3 and the alarm on: bits 1, 2, 9, 11 = 0x0A06.
+    for (const QVector<quint16>& regs :
+         {QVector<quint16>{0x0000, 0x0A06}, QVector<quint16>{0x0A06, 0x0000}}) {
+        EXPECT_EQ(field(regs, "running"), 1);
+        EXPECT_EQ(field(regs, "direction"), 1);
+        EXPECT_EQ(field(regs, "spno_bits"), 2);
+        EXPECT_EQ(field(regs, "alarm"), 1);
+    }
+    EXPECT_EQ(field({0x0000, 0x0000}, "running"), 0);
+}
+
 // The worked values of chapter 12 through the profile and the codec.
 TEST(ProfileCompleteness, DbuManualValueExamples)
 {

@@ -174,6 +174,13 @@ INSTANTIATE_TEST_SUITE_P(
         Rejection{"storeWith not a command", 1,
                   [](QJsonObject& p) { p[QStringLiteral("storeWith")] = QStringLiteral("speed"); },
                   "storeWith \"speed\" is not a command parameter"},
+        Rejection{
+            "word order of a 1-register value", 1,
+            [](QJsonObject& p) { p[QStringLiteral("wordOrder")] = QStringLiteral("low-first"); },
+            "\"wordOrder\" is for 2-register numbers and bit fields only"},
+        Rejection{"unknown word order", 8,
+                  [](QJsonObject& p) { p[QStringLiteral("wordOrder")] = QStringLiteral("little"); },
+                  "\"wordOrder\" must be \"high-first\" or \"low-first\""},
         Rejection{"bad name", 1,
                   [](QJsonObject& p) { p[QStringLiteral("name")] = QStringLiteral("Accel X"); },
                   "name must be lower-case dotted words"}));
@@ -209,6 +216,26 @@ TEST(ProfileLoader, RejectsDuplicateNamesAndBrokenJson)
 
     EXPECT_FALSE(ProfileLoader::loadFile(QStringLiteral("/nonexistent/p.json"), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("/nonexistent/p.json: cannot open")));
+}
+
+TEST(ProfileLoader, WordOrderIsReadPerParameter)
+{
+    QString error;
+    const auto high = loadWithParam(
+        12, [](QJsonObject&) {}, &error);
+    ASSERT_TRUE(high) << qPrintable(error);
+    EXPECT_EQ(high->parameter(QStringLiteral("status"))->wordOrder, WordOrder::HighFirst);
+    const auto low = loadWithParam(
+        12, [](QJsonObject& p) { p[QStringLiteral("wordOrder")] = QStringLiteral("low-first"); },
+        &error);
+    ASSERT_TRUE(low) << qPrintable(error);
+    EXPECT_EQ(low->parameter(QStringLiteral("status"))->wordOrder, WordOrder::LowFirst);
+    const auto explicitHigh = loadWithParam(
+        8, [](QJsonObject& p) { p[QStringLiteral("wordOrder")] = QStringLiteral("high-first"); },
+        &error);
+    ASSERT_TRUE(explicitHigh) << qPrintable(error);
+    EXPECT_EQ(explicitHigh->parameter(QStringLiteral("reduction"))->wordOrder,
+              WordOrder::HighFirst);
 }
 
 TEST(ProfileLoader, RolesBindMeaningToParameters)
@@ -267,4 +294,94 @@ TEST(ProfileLoader, AHugeNumberIsRefusedAsOutOfRange)
     QString error;
     EXPECT_FALSE(ProfileLoader::loadJson(toJson(root), QStringLiteral("tdev.json"), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("out of range"))) << qPrintable(error);
+}
+
+TEST(ProfileLoader, DecelerationKnobsNeedTheSelectedRole)
+{
+    QJsonObject root = testProfileJson();
+    root[QStringLiteral("decelerationKnobs")] = QJsonArray{
+        QJsonObject{{QStringLiteral("selected"), 0}, {QStringLiteral("maxSeconds"), 30}}};
+    QString error;
+    EXPECT_FALSE(ProfileLoader::loadJson(toJson(root), QStringLiteral("tdev.json"), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("decelerationKnobs need the \"selected\" role")))
+        << qPrintable(error);
+
+    root[QStringLiteral("roles")] =
+        QJsonObject{{QStringLiteral("selected"),
+                     QJsonObject{{QStringLiteral("param"), QStringLiteral("status")},
+                                 {QStringLiteral("field"), QStringLiteral("spno")}}}};
+    auto profile = ProfileLoader::loadJson(toJson(root), QStringLiteral("tdev.json"), &error);
+    ASSERT_TRUE(profile) << qPrintable(error);
+    EXPECT_EQ(profile->knobDeceleration(0), std::optional<double>(30));
+    EXPECT_FALSE(profile->knobDeceleration(1));
+
+    // The spno field is 3 bits wide: 8 is not a value of it.
+    root[QStringLiteral("decelerationKnobs")] = QJsonArray{
+        QJsonObject{{QStringLiteral("selected"), 8}, {QStringLiteral("maxSeconds"), 30}}};
+    EXPECT_FALSE(ProfileLoader::loadJson(toJson(root), QStringLiteral("tdev.json"), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("decelerationKnobs[0]: \"selected\" 8")))
+        << qPrintable(error);
+    root[QStringLiteral("decelerationKnobs")] =
+        QJsonArray{QJsonObject{{QStringLiteral("selected"), 0}, {QStringLiteral("maxSeconds"), 0}}};
+    EXPECT_FALSE(ProfileLoader::loadJson(toJson(root), QStringLiteral("tdev.json"), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("\"maxSeconds\" must be more than 0")))
+        << qPrintable(error);
+}
+
+TEST(ProfileLoader, StatusLedTableAndPowerOnDelay)
+{
+    QJsonObject root = testProfileJson();
+    const QJsonObject red{{QStringLiteral("light"), QStringLiteral("red")},
+                          {QStringLiteral("colour"), QStringLiteral("#e51c23")},
+                          {QStringLiteral("label"), QStringLiteral("Red")},
+                          {QStringLiteral("meaning"), QStringLiteral("Alarm")},
+                          {QStringLiteral("blink"), QStringLiteral("Flashes")}};
+    root[QStringLiteral("statusLed")] = QJsonArray{red};
+    QJsonObject serial = root.value(QStringLiteral("serial")).toObject();
+    serial[QStringLiteral("powerOnDelayMs")] = 1000;
+    root[QStringLiteral("serial")] = serial;
+    QString error;
+    auto profile = ProfileLoader::loadJson(toJson(root), QStringLiteral("tdev.json"), &error);
+    ASSERT_TRUE(profile) << qPrintable(error);
+    EXPECT_EQ(profile->serial.powerOnDelayMs, 1000);
+    ASSERT_NE(profile->ledEntry(QStringLiteral("red")), nullptr);
+    EXPECT_EQ(profile->ledEntry(QStringLiteral("red"))->blink, QStringLiteral("Flashes"));
+    EXPECT_EQ(profile->ledEntry(QStringLiteral("green")), nullptr);
+
+    const struct
+    {
+        QJsonArray table;
+        const char* expected;
+    } bad[] = {
+        {QJsonArray{red, red}, "statusLed[1]: \"light\" must be one of"},
+        {QJsonArray{[&] {
+             QJsonObject o = red;
+             o[QStringLiteral("light")] = QStringLiteral("pink");
+             return o;
+         }()},
+         "statusLed[0]: \"light\" must be one of"},
+        {QJsonArray{[&] {
+             QJsonObject o = red;
+             o[QStringLiteral("colour")] = QStringLiteral("red");
+             return o;
+         }()},
+         "statusLed[0]: \"colour\" must be #rrggbb"},
+        {QJsonArray{[&] {
+             QJsonObject o = red;
+             o[QStringLiteral("meaning")] = QString();
+             return o;
+         }()},
+         "\"label\" and \"meaning\" must not be empty"},
+    };
+    for (const auto& b : bad) {
+        root[QStringLiteral("statusLed")] = b.table;
+        EXPECT_FALSE(ProfileLoader::loadJson(toJson(root), QStringLiteral("tdev.json"), &error));
+        EXPECT_TRUE(error.contains(QString::fromUtf8(b.expected))) << qPrintable(error);
+    }
+    root[QStringLiteral("statusLed")] = QJsonArray{red};
+    serial[QStringLiteral("powerOnDelayMs")] = -1;
+    root[QStringLiteral("serial")] = serial;
+    EXPECT_FALSE(ProfileLoader::loadJson(toJson(root), QStringLiteral("tdev.json"), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("serial.powerOnDelayMs must be 0–60000")))
+        << qPrintable(error);
 }

@@ -183,6 +183,59 @@ TEST(ValueCodec, ThirtyTwoBitHighWordFirst)
     EXPECT_FALSE(ValueCodec::encodeNumber(meta("pid.p"), 1.5).ok);
 }
 
+TEST(ValueCodec, WordOrderDecidesWhichRegisterHoldsTheHighWord)
+{
+    // High word first (the default): the status bits 15–0 are in the second register.
+    const ParameterMeta& high = meta("status"); // fields: bit 1 and bits 8–10 (mask 0x0702)
+    ASSERT_EQ(high.wordOrder, WordOrder::HighFirst);
+    EXPECT_EQ(ValueCodec::fieldMask(high), 0x0702u);
+    EXPECT_DOUBLE_EQ(ValueCodec::decode(high, {0x0000, 0x0302}).raw, 0x0302);
+    EXPECT_DOUBLE_EQ(ValueCodec::decode(high, {0x0001, 0x0302}).raw, 0x00010302);
+    // Low word first: the same bits are in the first register.
+    ParameterMeta low = high;
+    low.wordOrder = WordOrder::LowFirst;
+    EXPECT_DOUBLE_EQ(ValueCodec::decode(low, {0x0302, 0x0000}).raw, 0x0302);
+    EXPECT_DOUBLE_EQ(ValueCodec::decode(low, {0x0302, 0x0001}).raw, 0x00010302);
+}
+
+TEST(ValueCodec, StatusBitsInTheOtherRegisterAreFound)
+{
+    // A drive that keeps the fields in the register the word order calls the high word: the
+    // declared word reads 0 and the other one has bits only where fields are. Read either way
+    // round, the running bit and the running data come out the same.
+    const ParameterMeta& high = meta("status");
+    EXPECT_DOUBLE_EQ(ValueCodec::decode(high, {0x0302, 0x0000}).raw, 0x0302);
+    ParameterMeta low = high;
+    low.wordOrder = WordOrder::LowFirst;
+    EXPECT_DOUBLE_EQ(ValueCodec::decode(low, {0x0000, 0x0302}).raw, 0x0302);
+    // Not swapped: bits outside the fields (0x0800), both words set, or nothing at all.
+    EXPECT_FALSE(ValueCodec::wordsSwapped(high, 0x08020000u));
+    EXPECT_DOUBLE_EQ(ValueCodec::decode(high, {0x0802, 0x0000}).raw, 0x08020000);
+    EXPECT_FALSE(ValueCodec::wordsSwapped(high, 0x03020002u));
+    EXPECT_FALSE(ValueCodec::wordsSwapped(high, 0));
+    EXPECT_TRUE(ValueCodec::wordsSwapped(high, 0x03020000u));
+    // Numbers have no fields to tell by: their word order is taken as declared.
+    EXPECT_FALSE(ValueCodec::wordsSwapped(meta("reduction"), 0x00640000u));
+}
+
+TEST(ValueCodec, WordOrderOfNumbers)
+{
+    // Numbers both ways: 99999 = 0x0001869F.
+    ParameterMeta wide = meta("reduction");
+    EXPECT_EQ(ValueCodec::rawToRegisters(wide, 99999), (QVector<quint16>{0x0001, 0x869F}));
+    EXPECT_DOUBLE_EQ(ValueCodec::registersToRaw(wide, {0x0001, 0x869F}), 99999);
+    wide.wordOrder = WordOrder::LowFirst;
+    EXPECT_EQ(ValueCodec::rawToRegisters(wide, 99999), (QVector<quint16>{0x869F, 0x0001}));
+    EXPECT_DOUBLE_EQ(ValueCodec::registersToRaw(wide, {0x869F, 0x0001}), 99999);
+    const auto encoded = ValueCodec::encodeNumber(wide, 1.0);
+    ASSERT_TRUE(encoded.ok) << qPrintable(encoded.error);
+    EXPECT_EQ(encoded.registers, (QVector<quint16>{0x0064, 0x0000}));
+    ParameterMeta f = meta("pid.p");
+    f.wordOrder = WordOrder::LowFirst;
+    EXPECT_EQ(ValueCodec::rawToRegisters(f, 0.5), (QVector<quint16>{0x0000, 0x3F00}));
+    EXPECT_FLOAT_EQ(float(ValueCodec::registersToRaw(f, {0xCCCD, 0x3DCC})), 0.1f);
+}
+
 TEST(ValueCodec, StringsAndBits)
 {
     const ParamValue name = ValueCodec::decode(meta("info.name"), {0x5444, 0x2020, 0x2020, 0x2020});

@@ -203,6 +203,26 @@ TEST_F(RunControlTest, StopAllStopsEveryDriveAndReportsTheOneThatIgnoresStop)
     EXPECT_EQ(speed(2), 1350);
 }
 
+// SPno1 may take the SD knob's 30 s to stop, but a drive whose speed does not fall at all after
+// the stop is reported at its settings' deadline, not after the knob's.
+TEST_F(RunControlTest, StopAllReportsAnSpno1DriveThatIgnoresStopWithoutWaitingForTheKnob)
+{
+    startBus(QStringLiteral("dbu200@1"));
+    communicationPriority(1);
+    ASSERT_TRUE(run(1, {QStringLiteral("select"), QStringLiteral("1")}).ok);
+    ASSERT_TRUE(run(1, {QStringLiteral("start")}).ok);
+    control(1, {QStringLiteral("ignore-stop"), QStringLiteral("on")});
+    ASSERT_TRUE(waitUntil([&] { return speed(1) > 0; }));
+    RunControl control(client.get(), ProfileRegistry::builtIn());
+    QElapsedTimer timer;
+    timer.start();
+    const RunControl::StopReport report =
+        await<RunControl::StopReport>([&](auto done) { control.stopAll({1}, done); });
+    EXPECT_LT(timer.elapsed(), 10000);
+    ASSERT_EQ(report.drives.size(), 1);
+    EXPECT_EQ(report.drives[0].state, StopResult::State::StillRunning);
+}
+
 TEST_F(RunControlTest, StopAllExplainsADriveInIoPriority)
 {
     startBus(QStringLiteral("dbu200@1"));

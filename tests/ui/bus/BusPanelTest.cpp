@@ -199,7 +199,10 @@ TEST_F(BusPanelTest, StatusLightsFollowAStartedDrive)
     ASSERT_TRUE(waitFor([&] { return led(1) == Led::Red; }));
     const QString tip = data(1, BusListModel::Light, Qt::ToolTipRole).toString();
     EXPECT_TRUE(tip.contains(QStringLiteral("Alarm AL007 Overload"))) << qPrintable(tip);
-    EXPECT_TRUE(tip.contains(QStringLiteral("red")));
+    // The colour's name and the manual's meaning from the profile's status LED table.
+    EXPECT_TRUE(tip.contains(QStringLiteral("Status light Red: "))) << qPrintable(tip);
+    EXPECT_TRUE(tip.contains(QStringLiteral("The drive's manual: Alarm; Flashes")))
+        << qPrintable(tip);
 }
 
 TEST_F(BusPanelTest, AScanPausesThePollerAndResumesIt)

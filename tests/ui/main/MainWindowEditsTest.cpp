@@ -310,7 +310,10 @@ TEST_F(MainWindowEditsTest, ParameterInitialisationNamesTheDriveSpellsOutWhatCha
     EXPECT_TRUE(text.contains(QStringLiteral("drive 1"))) << qPrintable(text);
     EXPECT_TRUE(text.contains(QStringLiteral("Communication rate goes from 38400 bit/s")))
         << qPrintable(text);
-    EXPECT_TRUE(text.contains(QStringLiteral("stop answering"))) << qPrintable(text);
+    EXPECT_TRUE(
+        text.contains(QStringLiteral("The link to the drive is lost from its next power-up")))
+        << qPrintable(text);
+    EXPECT_TRUE(text.contains(QStringLiteral("then reconnect at 19200 bit/s"))) << qPrintable(text);
     EXPECT_FALSE(text.contains(QStringLiteral("comm.rate"))) << qPrintable(text);
     EXPECT_EQ(box->standardButton(box->defaultButton()), QMessageBox::Cancel);
     box->button(QMessageBox::Cancel)->click();
