@@ -122,8 +122,7 @@ void DrivePages::showDrive(const QVector<int>& slaves)
         workspace->tabs()->addTab(tuning, tr("Speed loop tuning"));
         // STOP ALL ends a tuning test too (the test would otherwise command the motor again).
         if (StopAllButton* stopAll = m_window->stopAllButton())
-            connect(stopAll, &StopAllButton::started, tuning,
-                    [tuning] { tuning->runner()->cancel(); });
+            connect(stopAll, &StopAllButton::started, tuning, &TuningPage::cancelTest);
     }
     auto* alarms = new AlarmsPage(drives->session(info.slave), workspace->tabs());
     workspace->tabs()->addTab(alarms, tr("Alarms"));

@@ -29,10 +29,10 @@ TuningMetricsView::TuningMetricsView(QWidget* parent)
     form->addRow(tr("Peak current:"), m_peak);
     for (QLabel* l : {m_rise, m_overshoot, m_settling, m_error, m_peak})
         l->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    show(nullptr);
+    showRun(nullptr);
 }
 
-void TuningMetricsView::show(const TuningRun* run)
+void TuningMetricsView::showRun(const TuningRun* run)
 {
     const QString none = QStringLiteral("–");
     const QLocale locale;

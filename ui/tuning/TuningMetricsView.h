@@ -17,7 +17,7 @@ public:
     explicit TuningMetricsView(QWidget* parent = nullptr);
 
     // The run's metrics (nothing: dashes).
-    void show(const TuningRun* run);
+    void showRun(const TuningRun* run);
     // "Rise time 52 ms; overshoot 4.1 %; ..." (tests, the CSV header).
     QString text() const;
 

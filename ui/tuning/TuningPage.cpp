@@ -4,36 +4,23 @@
 #include "tuning/AutotunePanel.h"
 #include "tuning/NumberField.h"
 #include "tuning/StepTestPanel.h"
-#include "tuning/TuningChart.h"
 #include "tuning/TuningGains.h"
 #include "tuning/TuningLimitsBox.h"
-#include "tuning/TuningMetricsView.h"
-#include "tuning/TuningRunCsv.h"
-#include "tuning/TuningRunList.h"
+#include "tuning/TuningRunsView.h"
 #include "widgets/ConfirmBox.h"
 
-#include <QFileDialog>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QMessageBox>
 #include <QPointer>
 #include <QPushButton>
-#include <QSplitter>
 #include <QTabWidget>
-#include <QTimer>
 #include <QVBoxLayout>
 
 #include <algorithm>
-#include <iterator>
 
 namespace opentop {
 
 namespace {
-
-const QColor kColours[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28),
-                           QColor(0x2c, 0xa0, 0x2c), QColor(0x94, 0x67, 0xbd),
-                           QColor(0xff, 0x7f, 0x0e), QColor(0x8c, 0x56, 0x4b),
-                           QColor(0xe3, 0x77, 0xc2), QColor(0x17, 0xbe, 0xcf)};
 
 QString n(double v)
 {
@@ -57,12 +44,7 @@ TuningPage::TuningPage(DeviceSession* session, const TuningSpec& spec, const QSt
     , m_sides(new QTabWidget(this))
     , m_step(new StepTestPanel(this))
     , m_autotune(new AutotunePanel(spec, this))
-    , m_chart(new TuningChart(this))
-    , m_runList(new TuningRunList(this))
-    , m_metrics(new TuningMetricsView(this))
-    , m_saveCsv(new QPushButton(tr("Save run as CSV…"), this))
-    , m_savePng(new QPushButton(tr("Save chart as PNG…"), this))
-    , m_redraw(new QTimer(this))
+    , m_runs(new TuningRunsView(drive, this))
 {
     setObjectName(QStringLiteral("tuningPage"));
     m_stop->setObjectName(QStringLiteral("tuningStop"));
@@ -73,8 +55,6 @@ TuningPage::TuningPage(DeviceSession* session, const TuningSpec& spec, const QSt
     m_stopReport->setObjectName(QStringLiteral("stopReport"));
     m_phase->setWordWrap(true);
     m_stopReport->setWordWrap(true);
-    m_saveCsv->setObjectName(QStringLiteral("saveCsv"));
-    m_savePng->setObjectName(QStringLiteral("savePng"));
 
     // STOP, what runs now and how the last test stopped: always in view.
     auto* top = new QHBoxLayout;
@@ -93,44 +73,13 @@ TuningPage::TuningPage(DeviceSession* session, const TuningSpec& spec, const QSt
     left->addWidget(m_sides, 1);
     leftBox->setMaximumWidth(330);
 
-    auto* key = new QLabel(tr("solid: speed · dotted: command · dash-dot: current (right axis) · "
-                              "dashed: predicted speed"),
-                           this);
-    key->setWordWrap(true);
-    auto* chartBox = new QWidget(this);
-    auto* chartColumn = new QVBoxLayout(chartBox);
-    chartColumn->setContentsMargins(0, 0, 0, 0);
-    chartColumn->addWidget(m_chart, 1);
-    chartColumn->addWidget(key);
-    auto* bottomBox = new QWidget(this);
-    auto* bottom = new QHBoxLayout(bottomBox);
-    bottom->setContentsMargins(0, 0, 0, 0);
-    bottom->addWidget(m_runList, 3);
-    auto* metricsColumn = new QVBoxLayout;
-    metricsColumn->addWidget(m_metrics);
-    auto* saves = new QHBoxLayout;
-    saves->addWidget(m_saveCsv);
-    saves->addWidget(m_savePng);
-    metricsColumn->addLayout(saves);
-    metricsColumn->addStretch();
-    bottom->addLayout(metricsColumn, 2);
-    auto* right = new QSplitter(Qt::Vertical, this);
-    right->addWidget(chartBox);
-    right->addWidget(bottomBox);
-    right->setStretchFactor(0, 3);
-    right->setStretchFactor(1, 1);
-    right->setChildrenCollapsible(false);
-    m_runList->setMinimumHeight(90);
-
     auto* columns = new QHBoxLayout;
     columns->addWidget(leftBox);
-    columns->addWidget(right, 1);
+    columns->addWidget(m_runs, 1);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(top);
     layout->addLayout(columns, 1);
 
-    m_redraw->setInterval(150);
-    connect(m_redraw, &QTimer::timeout, this, &TuningPage::redraw);
     connect(m_stop, &QPushButton::clicked, this, &TuningPage::stop);
     connect(m_step, &StepTestPanel::runClicked, this, &TuningPage::runStep);
     connect(m_step, &StepTestPanel::stepChanged, this, &TuningPage::updateAutoLimits);
@@ -139,17 +88,9 @@ TuningPage::TuningPage(DeviceSession* session, const TuningSpec& spec, const QSt
     connect(m_autotune, &AutotunePanel::rejectClicked, this, &TuningPage::reject);
     connect(m_autotune, &AutotunePanel::storeClicked, this, [this] { m_gains->store(); });
     connect(m_sides, &QTabWidget::currentChanged, this, &TuningPage::updateAutoLimits);
-    connect(m_saveCsv, &QPushButton::clicked, this, &TuningPage::saveCsvAsked);
-    connect(m_savePng, &QPushButton::clicked, this, &TuningPage::savePngAsked);
-    connect(m_runList, &TuningRunList::visibilityChanged, this, [this](int id, bool visible) {
-        if (TuningRun* run = runOf(id))
-            run->visible = visible;
-        redraw();
-    });
-    connect(m_runList, &TuningRunList::runSelected, this, &TuningPage::redraw);
     connect(m_runner, &TuningRunner::phase, this, [this](const QString& text) { setPhase(text); });
     connect(m_runner, &TuningRunner::sampled, this, [this](const TuningSample& s) {
-        if (TuningRun* run = runOf(m_liveId))
+        if (TuningRun* run = m_runs->run(m_liveId))
             run->result.samples << s;
     });
     connect(m_gains, &TuningGains::presentChanged, m_autotune, &AutotunePanel::setPresentGains);
@@ -157,7 +98,6 @@ TuningPage::TuningPage(DeviceSession* session, const TuningSpec& spec, const QSt
     connect(m_gains, &TuningGains::busyChanged, this, &TuningPage::updateState);
     setPhase(tr("Ready. Nothing moves until you confirm a test."));
     updateState();
-    redraw();
 }
 
 TuningPage::~TuningPage()
@@ -184,6 +124,11 @@ QString TuningPage::phaseText() const
 QString TuningPage::stopReport() const
 {
     return m_stopReport->text();
+}
+
+const QVector<TuningRun>& TuningPage::runs() const
+{
+    return m_runs->runs();
 }
 
 bool TuningPage::isBusy() const
@@ -251,7 +196,7 @@ void TuningPage::readDrive()
         m_step->setSpeedUnit(m_unit);
         m_limits->setSpeedUnit(m_unit);
         m_autotune->setSpeedUnit(m_unit, m_scale);
-        m_chart->setSpeedUnit(m_unit);
+        m_runs->setSpeedUnit(m_unit);
         updateAutoLimits();
     });
     m_gains->refresh();
@@ -316,8 +261,7 @@ void TuningPage::runAutotune()
 void TuningPage::stop()
 {
     if (m_runner->isRunning()) {
-        setPhase(tr("Stopping…"), true);
-        m_runner->cancel();
+        cancelTest();
         return;
     }
     // Nothing of the page runs: the stop command all the same.
@@ -334,24 +278,34 @@ void TuningPage::stop()
                      });
 }
 
+void TuningPage::cancelTest()
+{
+    if (!m_runner->isRunning())
+        return;
+    m_cancelled = true;
+    setPhase(tr("Stopping…"), true);
+    m_runner->cancel();
+}
+
 void TuningPage::startStep(const TuningRunner::StepPlan& plan, const TuningRunner::Limits& limits)
 {
     if (isBusy())
         return;
     m_testing = true;
+    m_cancelled = false;
     m_stopReport->clear();
     m_runner->setLimits(limits);
-    TuningRun& run =
-        addRun(TuningRun::Kind::Step,
-               tr("Run %1: %2 → %3 %4").arg(m_nextId).arg(n(plan.from), n(plan.to), m_unit),
-               m_gains->present().value_or(PidGains()));
+    TuningRun& run = m_runs->addRun(
+        TuningRun::Kind::Step,
+        tr("Run %1: %2 → %3 %4").arg(m_runs->nextId()).arg(n(plan.from), n(plan.to), m_unit),
+        m_gains->present().value_or(PidGains()));
     run.live = true;
     run.result.from = plan.from;
     run.result.to = plan.to;
     run.result.speedUnit = m_unit;
     m_liveId = run.id;
-    m_runList->updateRun(run);
-    m_redraw->start();
+    m_runs->runChanged(run.id);
+    m_runs->setRecording(true);
     updateState();
     const QPointer<TuningPage> self(this);
     TuningRunner* runner = m_runner;
@@ -367,24 +321,23 @@ void TuningPage::startStep(const TuningRunner::StepPlan& plan, const TuningRunne
 void TuningPage::stepDone(const TuningRunner::Result& result)
 {
     m_testing = false;
-    m_redraw->stop();
-    if (TuningRun* run = runOf(m_liveId)) {
+    if (TuningRun* run = m_runs->run(m_liveId)) {
         run->live = false;
         run->result = result;
         run->result.speedUnit = result.speedUnit.isEmpty() ? m_unit : result.speedUnit;
         if (result.ok || !result.samples.isEmpty())
             run->gains = result.gains;
-        m_runList->updateRun(*run);
-        m_runList->selectRun(run->id);
+        m_runs->runChanged(run->id);
     }
     m_liveId = -1;
+    m_runs->setRecording(false);
     showStopReport(result);
     setPhase(result.ok ? tr("Step test done.") : tr("Step test ended: %1").arg(result.error),
              !result.ok);
-    if (result.aborted && m_gains->isChanged())
+    // Stopped by the user: the gains the page changed go back (a limit leaves them, to see).
+    if (result.aborted && m_cancelled && m_gains->isChanged())
         m_gains->restore(tr("The test was stopped"));
     updateState();
-    redraw();
 }
 
 void TuningPage::startAutotune(const TuningRunner::RelayPlan& plan,
@@ -393,6 +346,7 @@ void TuningPage::startAutotune(const TuningRunner::RelayPlan& plan,
     if (isBusy())
         return;
     m_testing = true;
+    m_cancelled = false;
     m_stopReport->clear();
     m_runner->setLimits(limits);
     m_autotune->clearResult();
@@ -416,7 +370,7 @@ void TuningPage::autotuneDone(const TuningRunner::Result& result)
     m_autotune->showResult(result);
     if (!result.ok) {
         setPhase(tr("Autotune ended: %1").arg(result.error), true);
-        if (result.aborted && m_gains->isChanged())
+        if (result.aborted && m_cancelled && m_gains->isChanged())
             m_gains->restore(tr("The autotune was stopped"));
         updateState();
         return;
@@ -426,19 +380,18 @@ void TuningPage::autotuneDone(const TuningRunner::Result& result)
     const double to = m_autotune->speed();
     const double from = to / 2;
     TuningRun& run =
-        addRun(TuningRun::Kind::Prediction, tr("Predicted: %1 → %2 %3").arg(n(from), n(to), m_unit),
-               result.proposal);
+        m_runs->addRun(TuningRun::Kind::Prediction,
+                       tr("Predicted: %1 → %2 %3").arg(n(from), n(to), m_unit), result.proposal);
     run.result.samples = result.predicted;
     run.result.from = from;
     run.result.to = to;
     run.result.speedUnit = result.speedUnit.isEmpty() ? m_unit : result.speedUnit;
     run.result.metrics = StepMetrics::measure(result.predicted, from, to);
-    m_runList->updateRun(run);
+    m_runs->runChanged(run.id);
     m_step->setStep(from, to);
     setPhase(tr("Autotune done: proposal %1. Accept writes it to the drive.")
                  .arg(result.proposal.toString()));
     updateState();
-    redraw();
 }
 
 void TuningPage::showStopReport(const TuningRunner::Result& result)
@@ -477,87 +430,11 @@ void TuningPage::reject()
     m_gains->restore(tr("Proposal rejected"));
 }
 
-TuningRun& TuningPage::addRun(TuningRun::Kind kind, const QString& title, const PidGains& gains)
-{
-    TuningRun run;
-    run.id = m_nextId++;
-    run.kind = kind;
-    run.title = title;
-    run.gains = gains;
-    run.color = kColours[(run.id - 1) % int(std::size(kColours))];
-    m_runs << run;
-    m_runList->addRun(run);
-    return m_runs.last();
-}
-
-TuningRun* TuningPage::runOf(int id)
-{
-    for (TuningRun& run : m_runs) {
-        if (run.id == id)
-            return &run;
-    }
-    return nullptr;
-}
-
-const TuningRun* TuningPage::selectedRun() const
-{
-    for (const TuningRun& run : m_runs) {
-        if (run.id == m_runList->selectedRun())
-            return &run;
-    }
-    return m_runs.isEmpty() ? nullptr : &m_runs.last();
-}
-
-void TuningPage::redraw()
-{
-    QVector<const TuningRun*> shown;
-    for (const TuningRun& run : m_runs) {
-        if (run.visible)
-            shown << &run;
-    }
-    m_chart->setRuns(shown);
-    m_metrics->show(selectedRun());
-}
-
 void TuningPage::updateState()
 {
     const bool busy = isBusy();
     m_step->setBusy(busy);
     m_autotune->setState(busy, m_autotuneResult.has_value(), m_gains->isAccepted());
-    m_saveCsv->setEnabled(!m_runs.isEmpty() && !m_testing);
-    m_savePng->setEnabled(!m_runs.isEmpty());
-}
-
-bool TuningPage::saveCsv(const QString& path, QString* error) const
-{
-    const TuningRun* run = selectedRun();
-    if (!run) {
-        *error = tr("no run to save");
-        return false;
-    }
-    return TuningRunCsv::write(path, *run, m_drive, error);
-}
-
-bool TuningPage::savePng(const QString& path) const
-{
-    return m_chart->grab().save(path, "PNG");
-}
-
-void TuningPage::saveCsvAsked()
-{
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save run as CSV"), QString(),
-                                                      tr("CSV files (*.csv)"));
-    QString error;
-    if (!path.isEmpty() && !saveCsv(path, &error))
-        QMessageBox::warning(this, tr("Save run as CSV"), error);
-}
-
-void TuningPage::savePngAsked()
-{
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save chart as PNG"), QString(),
-                                                      tr("PNG images (*.png)"));
-    if (!path.isEmpty() && !savePng(path))
-        QMessageBox::warning(this, tr("Save chart as PNG"), tr("Could not write %1.").arg(path));
 }
 
 } // namespace opentop

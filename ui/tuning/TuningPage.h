@@ -10,7 +10,6 @@
 class QLabel;
 class QPushButton;
 class QTabWidget;
-class QTimer;
 
 namespace opentop {
 
@@ -19,9 +18,7 @@ class DeviceSession;
 class StepTestPanel;
 class TuningGains;
 class TuningLimitsBox;
-class TuningChart;
-class TuningMetricsView;
-class TuningRunList;
+class TuningRunsView;
 
 // "Speed loop tuning" for a drive whose profile has a TuningSpec: step tests overlaid on one
 // chart (each run with its gains, shown or hidden, its metrics), the relay autotune with its
@@ -41,12 +38,10 @@ public:
 
     TuningRunner* runner() const { return m_runner; }
     TuningGains* gains() const { return m_gains; }
-    TuningChart* chart() const { return m_chart; }
-    TuningRunList* runList() const { return m_runList; }
-    TuningMetricsView* metrics() const { return m_metrics; }
+    TuningRunsView* runsView() const { return m_runs; }
     AutotunePanel* autotunePanel() const { return m_autotune; }
     StepTestPanel* stepPanel() const { return m_step; }
-    const QVector<TuningRun>& runs() const { return m_runs; }
+    const QVector<TuningRun>& runs() const;
     QString phaseText() const;
     QString stopReport() const;
     bool isBusy() const;
@@ -54,15 +49,14 @@ public:
     void showStepTest();
     void showAutotune();
 
-    bool saveCsv(const QString& path, QString* error) const;
-    bool savePng(const QString& path) const;
-
 public slots:
     // Asks, then runs (the Run and Autotune buttons).
     void runStep();
     void runAutotune();
     // Cancels the running test; when none runs, sends the stop command.
     void stop();
+    // Cancels the running test, if any (STOP ALL: it stops every drive itself).
+    void cancelTest();
 
 protected:
     void showEvent(QShowEvent* event) override;
@@ -78,14 +72,8 @@ private:
     void showStopReport(const TuningRunner::Result& result);
     void accept();
     void reject();
-    TuningRun& addRun(TuningRun::Kind kind, const QString& title, const PidGains& gains);
-    TuningRun* runOf(int id);
-    const TuningRun* selectedRun() const;
-    void redraw();
     void updateState();
     void setPhase(const QString& text, bool bad = false);
-    void saveCsvAsked();
-    void savePngAsked();
 
     DeviceSession* m_session;
     TuningSpec m_spec;
@@ -97,8 +85,7 @@ private:
     double m_maxCurrentSetting = 0; // A, 0: unknown
     std::optional<TuningRunner::Result> m_autotuneResult;
     bool m_testing = false;
-    QVector<TuningRun> m_runs;
-    int m_nextId = 1;
+    bool m_cancelled = false; // the user stopped the running test
     int m_liveId = -1;
 
     QPushButton* m_stop;
@@ -108,12 +95,7 @@ private:
     QTabWidget* m_sides;
     StepTestPanel* m_step;
     AutotunePanel* m_autotune;
-    TuningChart* m_chart;
-    TuningRunList* m_runList;
-    TuningMetricsView* m_metrics;
-    QPushButton* m_saveCsv;
-    QPushButton* m_savePng;
-    QTimer* m_redraw;
+    TuningRunsView* m_runs;
 };
 
 } // namespace opentop

@@ -10,6 +10,7 @@
 #include "tuning/TuningPage.h"
 #include "tuning/TuningRunCsv.h"
 #include "tuning/TuningRunList.h"
+#include "tuning/TuningRunsView.h"
 
 #include <QLineEdit>
 #include <QTemporaryDir>
@@ -127,18 +128,18 @@ TEST_F(TuningPageTest, AStepTestAsksFirstThenShowsARunWithItsMetrics)
     EXPECT_GT(run.result.metrics.peakCurrent, 0);
     EXPECT_EQ(run.result.speedUnit, QStringLiteral("1/s"));
     EXPECT_TRUE(run.result.stopConfirmed) << qPrintable(run.result.stopDetail);
-    EXPECT_GE(page->chart()->curveCount(), 3);
+    EXPECT_GE(page->runsView()->chart()->curveCount(), 3);
     EXPECT_TRUE(page->stopReport().contains(QStringLiteral("stopped")))
         << qPrintable(page->stopReport());
     // Saved with its gains and metrics in the header.
     QTemporaryDir dir;
     QString error;
-    ASSERT_TRUE(page->saveCsv(dir.filePath(QStringLiteral("run.csv")), &error))
+    ASSERT_TRUE(page->runsView()->saveCsv(dir.filePath(QStringLiteral("run.csv")), &error))
         << qPrintable(error);
     const QString csv = TuningRunCsv::text(run, QStringLiteral("drive 7"));
     EXPECT_TRUE(csv.contains(QStringLiteral("# gains: P 0.1000"))) << qPrintable(csv.left(400));
     EXPECT_TRUE(csv.contains(QStringLiteral("# rise_time_ms: "))) << qPrintable(csv.left(400));
-    EXPECT_TRUE(page->savePng(dir.filePath(QStringLiteral("chart.png"))));
+    EXPECT_TRUE(page->runsView()->savePng(dir.filePath(QStringLiteral("chart.png"))));
     // Nothing moves after the test.
     EXPECT_TRUE(waitFor([&] { return simRegister(7, 0x0040) == 0; }));
 }
