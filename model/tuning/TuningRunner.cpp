@@ -144,7 +144,12 @@ void TuningRunner::writeNumber(const QString& parameter, double value,
 
 void TuningRunner::command(double engineering, std::function<void()> then)
 {
-    writeNumber(m_spec.command, engineering, [then](bool) { then(); });
+    // On the command's resolution in the present mode (0.1 % of duty in open loop): the
+    // session refuses a finer value.
+    const ParameterMeta* meta = m_session->profile().parameter(m_spec.command);
+    const double step = meta ? meta->specFor(m_session->context()).scale : 0;
+    const double value = step > 0 ? std::round(engineering / step) * step : engineering;
+    writeNumber(m_spec.command, value, [then](bool) { then(); });
 }
 
 void TuningRunner::setMode(int mode, std::function<void()> then)

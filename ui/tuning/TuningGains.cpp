@@ -42,9 +42,12 @@ void TuningGains::write(const PidGains& gains, const Then& then)
         } else {
             emit self->message(tr("Writing the gains failed: %1").arg(error), true);
         }
-        self->setBusy(false);
+        // Idle before `then` (which may go on), shown after it (which changes the state).
+        self->m_busy = false;
         if (then)
             then(ok);
+        if (self)
+            emit self->busyChanged();
     });
 }
 
@@ -100,9 +103,11 @@ void TuningGains::store(const Then& then)
         } else {
             emit self->message(tr("Storing the gains failed: %1").arg(error), true);
         }
-        self->setBusy(false);
+        self->m_busy = false;
         if (then)
             then(ok);
+        if (self)
+            emit self->busyChanged();
     });
 }
 

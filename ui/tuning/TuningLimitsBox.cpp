@@ -14,7 +14,7 @@ TuningLimitsBox::TuningLimitsBox(QWidget* parent)
     , m_maxCurrent(NumberField::make(QStringLiteral("maxCurrent"), QString(), this))
     , m_speedUnit(new QLabel(this))
 {
-    m_maxSpeed->setToolTip(tr("Beyond it the motor is stopped at once. Empty: 110 % of the step "
+    m_maxSpeed->setToolTip(tr("Beyond it the motor is stopped at once. Empty: 125 % of the step "
                               "test's highest speed, 150 % of the autotune's speed"));
     m_maxCurrent->setToolTip(tr("Beyond it the motor is stopped at once. Empty: 1.2 × the "
                                 "drive's maximum current"));

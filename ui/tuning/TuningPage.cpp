@@ -202,12 +202,12 @@ void TuningPage::readDrive()
     m_gains->refresh();
 }
 
-// Defaults: 110 % of the step's highest speed (150 % of the relay's operating speed, which it
-// oscillates around), 1.2 × the drive's maximum current.
+// Defaults: 125 % of the step's highest speed (room for the overshoot a rule allows), 150 % of
+// the relay's operating speed (it oscillates around it), 1.2 × the drive's maximum current.
 void TuningPage::updateAutoLimits()
 {
     const double speed =
-        m_sides->currentIndex() == 0 ? 1.1 * m_step->highestSpeed() : 1.5 * m_autotune->speed();
+        m_sides->currentIndex() == 0 ? 1.25 * m_step->highestSpeed() : 1.5 * m_autotune->speed();
     m_limits->setDefaults(speed, 1.2 * m_maxCurrentSetting);
 }
 
