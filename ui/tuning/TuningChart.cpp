@@ -39,6 +39,8 @@ TuningChart::TuningChart(QWidget* parent)
     chart->setMargins(QMargins(4, 4, 4, 4));
     m_time->setTitleText(tr("Time (ms)"));
     m_time->setLabelFormat(QStringLiteral("%.0f"));
+    m_time->setTickType(QValueAxis::TicksDynamic); // round times from the step on
+    m_time->setTickAnchor(0);
     m_current->setTitleText(tr("Current (A)"));
     m_current->setLabelFormat(QStringLiteral("%.1f"));
     m_speed->setLabelFormat(QStringLiteral("%.0f"));
@@ -109,8 +111,10 @@ void TuningChart::setRuns(const QVector<const TuningRun*>& runs)
             add(current, m_current);
         }
     }
-    m_time->setRange(runs.isEmpty() ? 0 : -kBeforeStepMs, niceCeiling(std::max(maxT, 100.0)));
-    m_speed->setRange(0, niceCeiling(maxSpeed * 1.1));
+    const double end = niceCeiling(std::max(maxT, 100.0));
+    m_time->setRange(runs.isEmpty() ? 0 : -kBeforeStepMs, end);
+    m_time->setTickInterval(niceCeiling(end / 6));
+    m_speed->setRange(0, niceCeiling(std::max(maxSpeed * 1.1, 10.0)));
     m_current->setRange(minCurrent < 0 ? -niceCeiling(-minCurrent * 1.1) : 0,
                         niceCeiling(std::max(maxCurrent * 1.1, 0.5)));
 }

@@ -71,7 +71,7 @@ TuningPage::TuningPage(DeviceSession* session, const TuningSpec& spec, const QSt
     left->setContentsMargins(0, 0, 0, 0);
     left->addWidget(m_limits);
     left->addWidget(m_sides, 1);
-    leftBox->setMaximumWidth(330);
+    leftBox->setMaximumWidth(300);
 
     auto* columns = new QHBoxLayout;
     columns->addWidget(leftBox);

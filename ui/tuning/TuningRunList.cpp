@@ -1,6 +1,7 @@
 #include "tuning/TuningRunList.h"
 
 #include <QHeaderView>
+#include <QLocale>
 #include <QPixmap>
 
 namespace opentop {
@@ -40,7 +41,11 @@ void TuningRunList::fill(QTreeWidgetItem* item, const TuningRun& run)
     swatch.fill(run.color);
     item->setIcon(0, QIcon(swatch));
     item->setText(0, run.live ? tr("%1 (recording)").arg(run.title) : run.title);
-    item->setText(1, run.gains.toString());
+    const QLocale locale;
+    item->setText(1, tr("P %1 · I %2 · D %3")
+                         .arg(locale.toString(run.gains.p, 'g', 4),
+                              locale.toString(run.gains.i, 'g', 4),
+                              locale.toString(run.gains.d, 'g', 4)));
     item->setToolTip(1, run.gains.toString());
     item->setCheckState(0, run.visible ? Qt::Checked : Qt::Unchecked);
 }

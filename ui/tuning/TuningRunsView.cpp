@@ -33,12 +33,14 @@ TuningRunsView::TuningRunsView(const QString& drive, QWidget* parent)
     , m_chart(new TuningChart(this))
     , m_runList(new TuningRunList(this))
     , m_metrics(new TuningMetricsView(this))
-    , m_saveCsv(new QPushButton(tr("Save run as CSV…"), this))
-    , m_savePng(new QPushButton(tr("Save chart as PNG…"), this))
+    , m_saveCsv(new QPushButton(tr("Save CSV…"), this))
+    , m_savePng(new QPushButton(tr("Save PNG…"), this))
     , m_redraw(new QTimer(this))
 {
     m_saveCsv->setObjectName(QStringLiteral("saveCsv"));
     m_savePng->setObjectName(QStringLiteral("savePng"));
+    m_saveCsv->setToolTip(tr("Saves the selected run: its samples, gains and metrics"));
+    m_savePng->setToolTip(tr("Saves the chart as it is shown"));
     auto* key = new QLabel(tr("solid: speed · dotted: command · dash-dot: current (right axis) · "
                               "dashed: predicted speed"),
                            this);
