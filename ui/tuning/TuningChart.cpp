@@ -52,7 +52,7 @@ TuningChart::TuningChart(QWidget* parent)
     m_current->setRange(0, 1);
     setChart(chart);
     setRenderHint(QPainter::Antialiasing);
-    setMinimumSize(360, 240);
+    setMinimumSize(360, 160);
     setSpeedUnit(QString());
 }
 

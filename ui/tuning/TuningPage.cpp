@@ -13,6 +13,7 @@
 #include <QLabel>
 #include <QPointer>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QTabWidget>
 #include <QVBoxLayout>
 
@@ -71,10 +72,17 @@ TuningPage::TuningPage(DeviceSession* session, const TuningSpec& spec, const QSt
     left->setContentsMargins(0, 0, 0, 0);
     left->addWidget(m_limits);
     left->addWidget(m_sides, 1);
-    leftBox->setMaximumWidth(300);
+    // Scrolls rather than raising the window's minimum height (docks open on a laptop).
+    auto* leftScroll = new QScrollArea(this);
+    leftScroll->setFrameShape(QFrame::NoFrame);
+    leftScroll->setWidgetResizable(true);
+    leftScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    leftScroll->setWidget(leftBox);
+    leftScroll->setMaximumWidth(300);
+    leftScroll->setMinimumWidth(260);
 
     auto* columns = new QHBoxLayout;
-    columns->addWidget(leftBox);
+    columns->addWidget(leftScroll);
     columns->addWidget(m_runs, 1);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(top);

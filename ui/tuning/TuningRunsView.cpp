@@ -68,7 +68,7 @@ TuningRunsView::TuningRunsView(const QString& drive, QWidget* parent)
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 1);
     split->setChildrenCollapsible(false);
-    m_runList->setMinimumHeight(90);
+    m_runList->setMinimumHeight(60);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(split);
