@@ -8,8 +8,12 @@
 #include "main/MainWindow.h"
 #include "monitor/MonitorPage.h"
 #include "pages/DcControllerPage.h"
+#include "run/StopAllButton.h"
 #include "run/TestRunPanel.h"
 #include "session/DeviceParameters.h"
+#include "session/DeviceSession.h"
+#include "tuning/TuningPage.h"
+#include "tuning/TuningSpec.h"
 #include "workspace/DriveWorkspace.h"
 
 #include <QItemSelectionModel>
@@ -108,6 +112,18 @@ void DrivePages::showDrive(const QVector<int>& slaves)
     runScroll->setWidgetResizable(true);
     runScroll->setWidget(run);
     workspace->tabs()->addTab(runScroll, tr("Test run"));
+    // Speed loop tuning for a drive whose profile says how its loop is tuned.
+    QString why;
+    if (const std::optional<TuningSpec> spec =
+            TuningSpec::of(drives->session(info.slave)->profile(), &why)) {
+        auto* tuning =
+            new TuningPage(drives->session(info.slave), *spec,
+                           tr("drive %1 (%2)").arg(info.slave).arg(info.model), workspace->tabs());
+        workspace->tabs()->addTab(tuning, tr("Speed loop tuning"));
+        // STOP ALL ends a tuning test too (the test would otherwise command the motor again).
+        if (StopAllButton* stopAll = m_window->stopAllButton())
+            connect(stopAll, &StopAllButton::started, tuning, &TuningPage::cancelTest);
+    }
     auto* alarms = new AlarmsPage(drives->session(info.slave), workspace->tabs());
     workspace->tabs()->addTab(alarms, tr("Alarms"));
     // Live: raised, cleared and power-cycled alarms show without a click, as on the banner.

@@ -1,0 +1,225 @@
+// The Speed loop tuning page in the real window against the simulated DC controller (dcpid@7):
+// only for drives whose profile can be tuned, a step test with its metrics, the relay autotune's
+// proposal, Accept (writes it, then a step test to compare) and Reject (the old gains back).
+#include "main/MainWindowFixture.h"
+
+#include "tuning/AutotunePanel.h"
+#include "tuning/StepTestPanel.h"
+#include "tuning/TuningChart.h"
+#include "tuning/TuningGains.h"
+#include "tuning/TuningPage.h"
+#include "tuning/TuningRunCsv.h"
+#include "tuning/TuningRunList.h"
+#include "tuning/TuningRunsView.h"
+
+#include <QLineEdit>
+#include <QTemporaryDir>
+
+#include <cmath>
+
+using MainWindowTuningTest = opentop::test::MainWindowFixture;
+
+namespace opentop::test {
+namespace {
+
+TuningPage* tuningPageOf(MainWindow& window, int slave)
+{
+    if (window.workspace()->drive() != window.drives()->parameters(slave))
+        return nullptr;
+    QTabWidget* tabs = window.workspace()->tabs();
+    for (int i = 0; i < tabs->count(); ++i) {
+        if (auto* page = qobject_cast<TuningPage*>(tabs->widget(i))) {
+            tabs->setCurrentIndex(i);
+            return page;
+        }
+    }
+    return nullptr;
+}
+
+// Answers the confirmation that shows with Yes (or Cancel); returns its text.
+QString answer(QMessageBox::StandardButton button)
+{
+    QMessageBox* box = nullptr;
+    waitFor([&] {
+        box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        return box != nullptr;
+    });
+    if (!box)
+        return QString();
+    const QString text = box->text();
+    box->button(button)->click();
+    return text;
+}
+
+bool near(double a, double b)
+{
+    return std::abs(a - b) <= 1e-3 * std::max(1.0, std::abs(b));
+}
+
+// The gains in the (simulated) drive, read over the bus.
+std::optional<PidGains> driveGains(MainWindow& window, int slave, const TuningSpec& spec)
+{
+    TuningRunner probe(window.drives()->session(slave), spec);
+    std::optional<PidGains> gains;
+    bool done = false;
+    probe.readGains([&](bool ok, const PidGains& g, const QString&) {
+        if (ok)
+            gains = g;
+        done = true;
+    });
+    waitFor([&] { return done; });
+    return gains;
+}
+
+class TuningPageTest : public MainWindowFixture
+{
+protected:
+    void SetUp() override
+    {
+        MainWindowFixture::SetUp();
+        // The speed loop (commutation frequency) is the closed-loop mode tests step in.
+        bus->control(7, {QStringLiteral("set"), QStringLiteral("0x0080"), QStringLiteral("2")});
+        select({7});
+        ASSERT_TRUE(waitFor([&] { return (page = tuningPageOf(*window, 7)) != nullptr; }));
+        QString error;
+        spec = *TuningSpec::of(window->drives()->session(7)->profile(), &error);
+        ASSERT_TRUE(waitFor([&] { return page->gains()->present().has_value(); }));
+    }
+
+    bool idle(int ms = 40000)
+    {
+        return waitFor([&] { return !page->isBusy(); }, ms);
+    }
+
+    TuningPage* page = nullptr;
+    TuningSpec spec;
+};
+
+} // namespace
+} // namespace opentop::test
+
+using namespace opentop::test;
+
+TEST_F(MainWindowTuningTest, TheTuningPageIsThereForTheDcControllerOnly)
+{
+    select({7});
+    EXPECT_TRUE(waitFor([&] { return tuningPageOf(*window, 7) != nullptr; }));
+    select({1});
+    ASSERT_TRUE(
+        waitFor([&] { return window->workspace()->drive() == window->drives()->parameters(1); }));
+    EXPECT_EQ(tuningPageOf(*window, 1), nullptr);
+}
+
+TEST_F(TuningPageTest, AStepTestAsksFirstThenShowsARunWithItsMetrics)
+{
+    page->stepPanel()->setStep(0, 300);
+    page->stepPanel()->findChild<QPushButton*>(QStringLiteral("runStep"))->click();
+    const QString question = answer(QMessageBox::Yes);
+    EXPECT_TRUE(question.contains(QStringLiteral("The motor of drive 7 (DCPID-20A)")))
+        << qPrintable(question);
+    EXPECT_TRUE(question.contains(QStringLiteral("from 0 to 300 1/s"))) << qPrintable(question);
+    ASSERT_TRUE(waitFor([&] { return page->isBusy(); }));
+    ASSERT_TRUE(idle());
+    ASSERT_EQ(page->runs().size(), 1);
+    const TuningRun& run = page->runs().first();
+    EXPECT_TRUE(run.result.ok) << qPrintable(run.result.error);
+    ASSERT_TRUE(run.result.metrics.valid) << qPrintable(run.result.metrics.error);
+    EXPECT_TRUE(run.result.metrics.riseMs.has_value());
+    EXPECT_GT(run.result.metrics.peakCurrent, 0);
+    EXPECT_EQ(run.result.speedUnit, QStringLiteral("1/s"));
+    EXPECT_TRUE(run.result.stopConfirmed) << qPrintable(run.result.stopDetail);
+    EXPECT_GE(page->runsView()->chart()->curveCount(), 3);
+    EXPECT_TRUE(page->stopReport().contains(QStringLiteral("stopped")))
+        << qPrintable(page->stopReport());
+    // Saved with its gains and metrics in the header.
+    QTemporaryDir dir;
+    QString error;
+    ASSERT_TRUE(page->runsView()->saveCsv(dir.filePath(QStringLiteral("run.csv")), &error))
+        << qPrintable(error);
+    const QString csv = TuningRunCsv::text(run, QStringLiteral("drive 7"));
+    EXPECT_TRUE(csv.contains(QStringLiteral("# gains: P 0.1000"))) << qPrintable(csv.left(400));
+    EXPECT_TRUE(csv.contains(QStringLiteral("# rise_time_ms: "))) << qPrintable(csv.left(400));
+    EXPECT_TRUE(page->runsView()->savePng(dir.filePath(QStringLiteral("chart.png"))));
+    // Nothing moves after the test.
+    EXPECT_TRUE(waitFor([&] { return simRegister(7, 0x0040) == 0; }));
+}
+
+TEST_F(TuningPageTest, NothingMovesWhenTheQuestionIsCancelled)
+{
+    page->stepPanel()->findChild<QPushButton*>(QStringLiteral("runStep"))->click();
+    EXPECT_FALSE(answer(QMessageBox::Cancel).isEmpty());
+    QTest::qWait(300);
+    EXPECT_FALSE(page->isBusy());
+    EXPECT_TRUE(page->runs().isEmpty());
+}
+
+TEST_F(TuningPageTest, AutotuneProposesGainsAcceptWritesThemAndRejectRestoresTheOldOnes)
+{
+    const std::optional<PidGains> old = driveGains(*window, 7, spec);
+    ASSERT_TRUE(old);
+    page->showAutotune();
+    AutotunePanel* panel = page->autotunePanel();
+    panel->findChild<QLineEdit*>(QStringLiteral("autotuneSpeed"))->setText(QStringLiteral("300"));
+    panel->findChild<QPushButton*>(QStringLiteral("autotune"))->click();
+    const QString question = answer(QMessageBox::Yes);
+    EXPECT_TRUE(question.contains(QStringLiteral("drive 7 (DCPID-20A)"))) << qPrintable(question);
+    EXPECT_TRUE(question.contains(QStringLiteral("open loop"))) << qPrintable(question);
+    ASSERT_TRUE(waitFor([&] { return page->isBusy(); }));
+    ASSERT_TRUE(idle(60000));
+    ASSERT_FALSE(panel->proposalText().isEmpty())
+        << qPrintable(panel->resultText() + QLatin1Char('\n') + page->phaseText());
+    EXPECT_TRUE(panel->resultText().contains(QStringLiteral("Ku")))
+        << qPrintable(panel->resultText());
+    EXPECT_TRUE(panel->resultText().contains(QStringLiteral("Tu")))
+        << qPrintable(panel->resultText());
+    ASSERT_EQ(page->runs().size(), 1);
+    EXPECT_TRUE(page->runs().first().isPrediction());
+    EXPECT_FALSE(page->runs().first().result.samples.isEmpty());
+    const PidGains proposal = page->runs().first().gains;
+    // The speed mode is the closed loop again, the motor stopped.
+    EXPECT_EQ(simRegister(7, 0x0080), 2);
+    // Accept: the proposal in the drive, then the step test the prediction shows.
+    auto* accept = panel->findChild<QPushButton*>(QStringLiteral("accept"));
+    auto* store = panel->findChild<QPushButton*>(QStringLiteral("store"));
+    EXPECT_FALSE(store->isEnabled());
+    ASSERT_TRUE(accept->isEnabled());
+    accept->click();
+    const QString step = answer(QMessageBox::Yes);
+    EXPECT_TRUE(step.contains(QStringLiteral("from 150 to 300 1/s"))) << qPrintable(step);
+    const std::optional<PidGains> written = driveGains(*window, 7, spec);
+    ASSERT_TRUE(written);
+    EXPECT_TRUE(near(written->p, proposal.p)) << written->p << " " << proposal.p;
+    EXPECT_TRUE(near(written->i, proposal.i)) << written->i << " " << proposal.i;
+    ASSERT_TRUE(waitFor([&] { return page->runs().size() == 2; }));
+    ASSERT_TRUE(idle());
+    const TuningRun& measured = page->runs().last();
+    EXPECT_TRUE(measured.result.metrics.valid) << qPrintable(measured.result.error);
+    EXPECT_TRUE(near(measured.gains.p, proposal.p));
+    EXPECT_TRUE(store->isEnabled());
+    // Reject: the gains the drive had before.
+    panel->findChild<QPushButton*>(QStringLiteral("reject"))->click();
+    ASSERT_TRUE(idle());
+    const std::optional<PidGains> back = driveGains(*window, 7, spec);
+    ASSERT_TRUE(back);
+    EXPECT_TRUE(near(back->p, old->p)) << back->p << " " << old->p;
+    EXPECT_TRUE(near(back->i, old->i)) << back->i << " " << old->i;
+    EXPECT_TRUE(near(back->d, old->d));
+    EXPECT_FALSE(store->isEnabled());
+}
+
+TEST_F(TuningPageTest, StopCancelsARunningStepTestAndTheMotorStops)
+{
+    page->stepPanel()->setStep(0, 400);
+    page->stepPanel()
+        ->findChild<QLineEdit*>(QStringLiteral("recordTime"))
+        ->setText(QStringLiteral("10000"));
+    page->stepPanel()->findChild<QPushButton*>(QStringLiteral("runStep"))->click();
+    answer(QMessageBox::Yes);
+    ASSERT_TRUE(waitFor([&] { return simRegister(7, 0x0040) > 0; }));
+    page->findChild<QPushButton*>(QStringLiteral("tuningStop"))->click();
+    ASSERT_TRUE(idle());
+    ASSERT_EQ(page->runs().size(), 1);
+    EXPECT_TRUE(page->runs().first().result.aborted);
+    EXPECT_TRUE(page->runs().first().result.stopConfirmed);
+    EXPECT_EQ(simRegister(7, 0x0040), 0);
+}
