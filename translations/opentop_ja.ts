@@ -255,144 +255,189 @@
         <translation>応答なし</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="47"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="48"/>
         <source>top level</source>
         <translation>最上位</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="50"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="51"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot; は 1 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="59"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="61"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot; は小文字の ID でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="69"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="71"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity は N、E、O のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="73"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="75"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial: baud は 1200–115200、stopBits は 1 または 2 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="89"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="81"/>
+        <source>serial.powerOnDelayMs must be 0–60000</source>
+        <translation>serial.powerOnDelayMs は 0–60000 でなければなりません</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="95"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits: maxReadRegisters は 1–125、maxWriteRegisters は 1–123 です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="91"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="97"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits: slaves は 1–247 の範囲でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="106"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="112"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1] には id、model、label が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="108"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="114"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]: id &quot;%2&quot; が重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="119"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="125"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1] には一意の id と label が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="130"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="136"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1] には function 3 または 4 と first ≤ last が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="174"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="180"/>
         <source>%1 has no name</source>
         <translation>%1 に名前がありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="176"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="182"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1: reset は %2 のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="179"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="185"/>
         <source>%1: code %2 repeated</source>
         <translation>%1: コード %2 が重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="201"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="207"/>
         <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
         <translation>%1: storeWith &quot;%2&quot; はコマンドパラメータではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="204"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="210"/>
         <source>%1: the default is not among its allowed values</source>
         <translation>%1: 初期値が許容値に含まれていません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="208"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="214"/>
         <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
         <translation>%1: ビットフィールド &quot;%2&quot;: function &quot;%3&quot; は読出し可能なパラメータではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="215"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="221"/>
         <source>%1: condition on unknown parameter &quot;%2&quot;</source>
         <translation>%1: 不明なパラメータ &quot;%2&quot; に対する条件です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="217"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="223"/>
         <source>%1: the default is not allowed when %2</source>
         <translation>%1: %2 のときは初期値が許容されません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="227"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
         <source>%1 runs past address 0xFFFF</source>
         <translation>%1 がアドレス 0xFFFF を超えています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="230"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="236"/>
         <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
         <translation>%1 が 0x%3 で &quot;%2&quot; と重なっています（%4 レジスタ）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="254"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="260"/>
         <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
         <translation>identify: &quot;%1&quot; は identify の読出し範囲内のパラメータでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="257"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="263"/>
         <source>identify.nameMatch is not a valid regular expression</source>
         <translation>identify.nameMatch が正しい正規表現ではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="269"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1: 不明なパラメータ &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="297"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="303"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1 はパラメータ名、名前のリスト、またはオブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="306"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="312"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1: &quot;%2&quot; にビットフィールド &quot;%3&quot; はありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="312"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="318"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1: %2 は &quot;%3&quot; で書き込める値ではありません</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="336"/>
+        <source>decelerationKnobs need the &quot;selected&quot; role</source>
+        <translation>decelerationKnobs には &quot;selected&quot; ロールが必要です</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="352"/>
+        <source>%1 needs &quot;selected&quot; and &quot;maxSeconds&quot;</source>
+        <translation>%1 には &quot;selected&quot; と &quot;maxSeconds&quot; が必要です</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="355"/>
+        <source>%1: &quot;selected&quot; %2 is not a value of the &quot;selected&quot; role, or repeated</source>
+        <translation>%1: &quot;selected&quot; %2 は &quot;selected&quot; ロールの値ではないか、重複しています</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="360"/>
+        <source>%1: &quot;maxSeconds&quot; must be more than 0 and at most 600</source>
+        <translation>%1: &quot;maxSeconds&quot; は 0 より大きく 600 以下でなければなりません</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="392"/>
+        <source>%1: &quot;light&quot; must be one of %2, each once</source>
+        <translation>%1: &quot;light&quot; は %2 のいずれかで、それぞれ 1 回だけでなければなりません</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="395"/>
+        <source>%1: &quot;colour&quot; must be #rrggbb</source>
+        <translation>%1: &quot;colour&quot; は #rrggbb でなければなりません</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="397"/>
+        <source>%1: &quot;label&quot; and &quot;meaning&quot; must not be empty</source>
+        <translation>%1: &quot;label&quot; と &quot;meaning&quot; は空にできません</translation>
     </message>
     <message>
         <location filename="../model/i18n/ProfileTranslation.cpp" line="56"/>
         <source> and %1 more</source>
         <translation> ほか %1 件</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="26"/>
+        <source>not reached</source>
+        <translation>未到達</translation>
     </message>
 </context>
 <context>
@@ -1005,6 +1050,134 @@ Remedy: %5</source>
         <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
         <source>Erasing failed: %1</source>
         <translation>消去に失敗しました: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::AutotunePanel</name>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="24"/>
+        <source>Autotune…</source>
+        <translation>オートチューニング…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="27"/>
+        <source>Accept</source>
+        <translation>採用</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="28"/>
+        <source>Reject</source>
+        <translation>不採用</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="29"/>
+        <source>Store in the drive</source>
+        <translation>ドライバに保存</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="43"/>
+        <source>Writes the proposed gains to the drive (temporary until stored) and offers a step test to compare with the prediction</source>
+        <translation>提案ゲインをドライバに書き込み（保存するまでは一時的）、予測と比較するためのステップ試験を提示します</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="45"/>
+        <source>Writes back the gains the drive had before</source>
+        <translation>ドライバの以前のゲインを書き戻します</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="46"/>
+        <source>Stores the gains in the drive so that they survive a power cycle</source>
+        <translation>電源再投入後も残るよう、ゲインをドライバに保存します</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="51"/>
+        <source>Operating speed:</source>
+        <translation>運転速度:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="52"/>
+        <source>Relay amplitude:</source>
+        <translation>リレー振幅:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="53"/>
+        <source>%</source>
+        <translation>%</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="54"/>
+        <source>Rule:</source>
+        <translation>チューニングルール:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="58"/>
+        <source>Present</source>
+        <translation>現在</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="59"/>
+        <source>Proposed</source>
+        <translation>提案</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <source>P</source>
+        <translation>P</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <source>I</source>
+        <translation>I</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <source>D</source>
+        <translation>D</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <source>D period</source>
+        <translation>D 周期</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="106"/>
+        <source>Enter an operating speed above 0 %1.</source>
+        <translation>0 %1 より大きい運転速度を入力してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="110"/>
+        <source>Enter a relay amplitude of 1–50 %.</source>
+        <translation>リレー振幅を 1–50 % で入力してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="123"/>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="138"/>
+        <source>No autotune result yet.</source>
+        <translation>オートチューニング結果はまだありません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="146"/>
+        <source>Autotune failed: %1</source>
+        <translation>オートチューニング失敗: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="155"/>
+        <source>Ku %1 %/%2, Tu %3 ms</source>
+        <translation>Ku %1 %/%2、Tu %3 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="158"/>
+        <source>Model: K %1 %2/%, τ %3 ms, dead time %4 ms</source>
+        <translation>モデル: K %1 %2/%、τ %3 ms、むだ時間 %4 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="163"/>
+        <source>No model: %1</source>
+        <translation>モデルなし: %1</translation>
     </message>
 </context>
 <context>
@@ -1690,17 +1863,22 @@ Drives: %5</source>
         <translation>ステータスランプ %1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="162"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="163"/>
+        <source>The drive&apos;s manual: %1</source>
+        <translation>ドライバのマニュアル: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="166"/>
         <source>Status light grey: not live — %1</source>
         <translation>ステータスランプ 灰: 更新停止 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="167"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="171"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>ドライバが機種を通知しません。値が正しい範囲でチェックされるよう、コンテキストメニュー（機種）から選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="176"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="180"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>ドライバは I/O 端子から運転指令を受け付けています。バス経由の試運転には通信優先が必要です。</translation>
     </message>
@@ -1792,142 +1970,147 @@ Drives: %5</source>
 <context>
     <name>opentop::BusPanel</name>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="32"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="33"/>
         <source>&amp;Scan</source>
         <translation>スキャン(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="35"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="36"/>
         <source>A&amp;dd drive…</source>
         <translation>ドライバ追加(&amp;D)…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="37"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="38"/>
         <source>Ca&amp;ncel</source>
         <translation>キャンセル(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="46"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="47"/>
         <source>Ask every machine number of the range who answers</source>
         <translation>範囲内の各局番に応答を問い合わせます</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="48"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="49"/>
         <source>&amp;from</source>
         <translation>開始局番(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="50"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="51"/>
         <source>&amp;to</source>
         <translation>終了局番(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="55"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="56"/>
         <source>Machine numbers 1–247 (the DBU&apos;s SW1/SW2 switches in hex)</source>
         <translation>局番 1–247（DBU では SW1/SW2 スイッチの 16 進値）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="72"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="73"/>
         <source>Identify one machine number and add it to the list</source>
         <translation>局番を 1 つ識別してリストに追加します</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="77"/>
-        <location filename="../ui/bus/BusPanel.cpp" line="182"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="78"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="194"/>
         <source>%v of %m</source>
         <translation>%v / %m</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="78"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="79"/>
         <source>Scan progress</source>
         <translation>スキャン進捗</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="80"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="81"/>
         <source>Stop the scan after the request on the wire</source>
         <translation>送信中の要求が終わったらスキャンを停止します</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="113"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="90"/>
+        <source>Rescan at %1</source>
+        <translation>%1 で再スキャン</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="124"/>
         <source>Drives on the bus</source>
         <translation>バス上のドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="173"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="185"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%v / %m（局番 %1）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="183"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="195"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>%3 で局番 %1–%2 をスキャン中（各 %4 ms）…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="202"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="214"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>送信中の要求が終わったらキャンセルします…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="219"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="231"/>
         <source>Did not answer the last scan.</source>
         <translation>前回のスキャンで応答しませんでした。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="225"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="237"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>局番 %1 でスキャンが停止しました: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="230"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="242"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>局番 %1–%2 の後でスキャンをキャンセルしました（%4 中 %3）: %n 台のドライバが見つかりました。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="238"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="250"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>局番 %1–%2 で %n 台のドライバが見つかりました（%3 s）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="254"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="275"/>
         <source>Add drive</source>
         <translation>ドライバ追加</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="254"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="275"/>
         <source>Machine number (1–247; the DBU shows it in hex on SW1/SW2):</source>
         <translation>局番（1–247。DBU では SW1/SW2 の 16 進値）:</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="264"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="285"/>
         <source>Asking machine number %1…</source>
         <translation>局番 %1 に問い合わせ中…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="269"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="290"/>
         <source>Machine number %1: %2 added.</source>
         <translation>局番 %1: %2 を追加しました。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="271"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="292"/>
         <source>Machine number %1: %2 %3</source>
         <translation>局番 %1: %2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="329"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="350"/>
         <source>&amp;Variant</source>
         <translation>機種(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="345"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="366"/>
         <source>&amp;Identify again</source>
         <translation>再識別(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="351"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="372"/>
         <source>&amp;Remove from list</source>
         <translation>リストから削除(&amp;R)</translation>
     </message>
@@ -3233,232 +3416,237 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::DcControllerPage</name>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="41"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="42"/>
         <source>DC controller</source>
         <translation>DC コントローラ</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="44"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="45"/>
         <source>Re&amp;load stored configuration</source>
         <translation>保存済み設定を再読込み(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="66"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="67"/>
         <source>Store &amp;configuration</source>
         <translation>設定を保存(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="67"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="68"/>
         <source>Store P&amp;ID</source>
         <translation>PID を保存(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="68"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="69"/>
         <source>Store pre&amp;set</source>
         <translation>設定速度を保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="71"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="72"/>
         <source>Writes %1 = 1: %2</source>
         <translation>%1 = 1 を書込み: %2</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="76"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="77"/>
         <source>Writes store.config = 0: the controller reloads the stored configuration; unstored configuration changes are discarded</source>
         <translation>store.config = 0 を書込み: コントローラは保存済みの設定を再読込みします。保存していない設定変更は破棄されます</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="83"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="84"/>
         <source>Speed mode and motor currents</source>
         <translation>速度モードとモータ電流</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="84"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="85"/>
         <source>Speed &amp;mode:</source>
         <translation>速度モード(&amp;M):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="85"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="86"/>
         <source>Rated current:</source>
         <translation>定格電流:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="86"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="87"/>
         <source>Maximum start/load current:</source>
         <translation>最大起動/負荷電流:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="87"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="88"/>
         <source>Brake current:</source>
         <translation>ブレーキ電流:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="89"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="90"/>
         <source>Limit switches</source>
         <translation>リミットスイッチ</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="90"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="91"/>
         <source>Limits:</source>
         <translation>リミット:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="91"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="92"/>
         <source>SQ1 active level (forward):</source>
         <translation>SQ1 アクティブレベル（正転）:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="92"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="93"/>
         <source>SQ2 active level (reverse):</source>
         <translation>SQ2 アクティブレベル（逆転）:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="94"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="95"/>
         <source>Protective stops (0 = off)</source>
         <translation>保護停止（0 = 無効）</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="95"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="96"/>
         <source>S&amp;tall stop time:</source>
         <translation>ストール停止時間(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="96"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="97"/>
         <source>Communication loss stop time:</source>
         <translation>通信断停止時間:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="104"/>
-        <source>Serial port (reconnect after a change)</source>
-        <translation>シリアルポート（変更後は再接続）</translation>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="105"/>
+        <source>Serial port (used from the next power-up)</source>
+        <translation>シリアルポート（次回の電源投入から有効）</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="105"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="110"/>
+        <source>Baud rate and parity are written as one 15-register block from 0x0080 that also stores the configuration; the controller uses them from the next power-up on: switch it off and on, then reconnect with them. The lock is lost at power-off until stored (Store configuration).</source>
+        <translation>ボーレートとパリティは 0x0080 からの 15 レジスタの一括書込みで書き込まれ、この書込みで設定も保存されます。コントローラは次回の電源投入からこれらを使用します: 電源を入れ直し、新しい設定で再接続してください。シリアル設定ロックは保存（設定を保存）するまで電源オフで失われます。</translation>
+    </message>
+    <message>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="132"/>
+        <source>Takes effect now and is kept over power-off: each change is written as one 5-register block from 0x0050 that also stores the port states.</source>
+        <translation>即時に有効になり、電源オフ後も保持されます: 変更のたびに 0x0050 からの 5 レジスタの一括書込みで書き込まれ、この書込みでポート状態も保存されます。</translation>
+    </message>
+    <message>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="176"/>
+        <source>The communication loss stop time is 0 s (%1): the manual does not say what 0 does, and OpenTOP assumes the stop is then off: if the connection is lost while the motor runs, the controller keeps it running at the last speed command. Set a time so that it brakes when the bus goes quiet.</source>
+        <translation>通信断停止時間が 0 s です (%1): マニュアルは 0 の意味を記載しておらず、OpenTOP はこの場合停止が無効になると仮定しています: モータ運転中に接続が切れると、コントローラは最後の速度指令で運転を続けます。バスが無通信になったときにブレーキがかかるよう、時間を設定してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="106"/>
         <source>Baud rate:</source>
         <translation>ボーレート:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="106"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="107"/>
         <source>Parity and stop bits:</source>
         <translation>パリティとストップビット:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="107"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="108"/>
         <source>Configuration over serial:</source>
         <translation>シリアル経由の設定:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="109"/>
-        <source>Lost at power-off until stored (Store configuration); a stored baud rate or parity is used from the next power-up on, and the tool must then reconnect with it.</source>
-        <translation>保存（設定を保存）するまでは電源オフで失われます。保存したボーレートやパリティは次回の電源投入から使用され、ツールはその設定で再接続する必要があります。</translation>
-    </message>
-    <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="112"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="114"/>
         <source>Speed loop PID</source>
         <translation>速度ループ PID</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="113"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="115"/>
         <source>&amp;P coefficient:</source>
         <translation>P 係数(&amp;P):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="114"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="116"/>
         <source>I coefficient:</source>
         <translation>I 係数:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="115"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="117"/>
         <source>&amp;D coefficient:</source>
         <translation>D 係数(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="116"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="118"/>
         <source>D period:</source>
         <translation>D 周期:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="118"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="120"/>
         <source>Preset speed (potentiometer/analog control)</source>
         <translation>設定速度（ボリューム/アナログ制御）</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="119"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="121"/>
         <source>Preset speed mo&amp;de:</source>
         <translation>設定速度モード(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="120"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="122"/>
         <source>Trigger:</source>
         <translation>トリガ:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="121"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="123"/>
         <source>&amp;Forward speed:</source>
         <translation>正転速度(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="122"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="124"/>
         <source>Reverse speed:</source>
         <translation>逆転速度:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="124"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="126"/>
         <source>AI1/AI2 as digital ports</source>
         <translation>AI1/AI2 をデジタルポートとして使用</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="125"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="127"/>
         <source>AI1 direction:</source>
         <translation>AI1 方向:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="126"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="128"/>
         <source>AI2 direction:</source>
         <translation>AI2 方向:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="127"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="129"/>
         <source>AI1 level:</source>
         <translation>AI1 レベル:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="128"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="130"/>
         <source>AI2 level:</source>
         <translation>AI2 レベル:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="130"/>
-        <source>Takes effect now and is not kept over power-off: the controller has no store command for these, only a 5-register block write, which this page does not send.</source>
-        <translation>即時に有効になりますが、電源オフ後は保持されません: コントローラにはこれらを保存するコマンドがなく、5 レジスタの一括書込みしかありませんが、このページはそれを送信しません。</translation>
-    </message>
-    <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="174"/>
-        <source>The communication loss stop is off (%1 = 0 s): if the connection is lost while the motor runs, the controller keeps it running at the last speed command. Set a time so that it brakes when the bus goes quiet.</source>
-        <translation>通信断停止が無効です (%1 = 0 s): モータ運転中に接続が切れると、コントローラは最後の速度指令で運転を続けます。バスが無通信になったときにブレーキがかかるよう、時間を設定してください。</translation>
-    </message>
-    <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="189"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="192"/>
         <source>Takes effect now, lost at power-off until stored (%1).</source>
         <translation>即時に有効。保存 (%1) するまでは電源オフで失われます。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="250"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="253"/>
+        <source>Set it anyway?</source>
+        <translation>それでも設定しますか？</translation>
+    </message>
+    <message>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="269"/>
         <source>Forward and reverse speed in this mode (%1): %2</source>
         <translation>このモード (%1) での正転速度と逆転速度: %2</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="252"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="271"/>
         <source>The unit and range of the speeds follow the preset speed mode (not read yet).</source>
         <translation>速度の単位と範囲は設定速度モードによります（未読出し）。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="286"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="313"/>
         <source>&lt;b&gt;Written but not stored:&lt;/b&gt; %1. These values act now and are lost when the controller is switched off.</source>
         <translation>&lt;b&gt;書込み済み・未保存:&lt;/b&gt; %1。これらの値は現在有効ですが、コントローラの電源を切ると失われます。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="308"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="335"/>
         <source>%1: the controller writes the values now in effect to its memory and uses them from the next power-up on.
 
 Stored: %2.</source>
@@ -3467,17 +3655,17 @@ Stored: %2.</source>
 保存: %2。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="319"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="346"/>
         <source>Not written yet, so not stored: %1.</source>
         <translation>未書込みのため保存されていません: %1。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="322"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="349"/>
         <source>%1: done, kept over power-off.</source>
         <translation>%1: 完了。電源オフ後も保持されます。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="330"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="357"/>
         <source>The controller replaces its configuration (%1) with the one stored in its memory.
 
 Configuration changes written but not stored are discarded.</source>
@@ -3486,52 +3674,70 @@ Configuration changes written but not stored are discarded.</source>
 書込み済みで未保存の設定変更は破棄されます。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="336"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="363"/>
         <source>Stored configuration reloaded.</source>
         <translation>保存済み設定を再読込みしました。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="344"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="371"/>
         <source>Writing %1 = %2…</source>
         <translation>%1 = %2 を書込み中…</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="354"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="381"/>
         <source>%1 = %2 failed: %3</source>
         <translation>%1 = %2 失敗: %3</translation>
     </message>
 </context>
 <context>
+    <name>opentop::DcMotor</name>
+    <message>
+        <location filename="../sim/DcMotor.cpp" line="64"/>
+        <source>unknown motor setting &apos;%1&apos;; settings: %2</source>
+        <translation>不明なモータ設定 &apos;%1&apos;。設定: %2</translation>
+    </message>
+    <message>
+        <location filename="../sim/DcMotor.cpp" line="71"/>
+        <source>motor setting %1 must be a number %2..%3, got &apos;%4&apos;</source>
+        <translation>モータ設定 %1 は %2..%3 の数値でなければなりません（指定値 &apos;%4&apos;）</translation>
+    </message>
+</context>
+<context>
     <name>opentop::DcPidSimDevice</name>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="341"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="366"/>
         <source>%1 %2%3, output %4 %, command %5, line %6 %7</source>
         <translation>%1 %2%3、出力 %4 %、指令 %5、回線 %6 %7</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="343"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="368"/>
         <source> (stall stop)</source>
         <translation> (ストール停止)</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="359"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="384"/>
         <source>usage: %1 ID VALUE with VALUE %2..%3 %4</source>
         <translation>使い方: %1 ID VALUE（VALUE は %2..%3 %4）</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="363"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="388"/>
         <source>(bit0 SQ1, bit1 SQ2, bit2 DE)</source>
         <translation>(bit0 SQ1、bit1 SQ2、bit2 DE)</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="363"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="388"/>
         <source>(% current)</source>
         <translation>(電流 %)</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="365"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="390"/>
         <source>%1 = %2</source>
         <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <location filename="../sim/DcPidSimDevice.cpp" line="407"/>
+        <source>motor %1, speed %2 1/s, current %3 A</source>
+        <translation>モータ %1、速度 %2 1/s、電流 %3 A</translation>
     </message>
 </context>
 <context>
@@ -3682,7 +3888,7 @@ Configuration changes written but not stored are discarded.</source>
         <translation>%1 は設定ではなくコマンドです。コマンドは要求に応じて 1 つずつ送信します</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="211"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="227"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -3716,27 +3922,37 @@ Configuration changes written but not stored are discarded.</source>
         <translation>%1 は %2 コマンドです。明示的に要求した場合にのみ送信します</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="254"/>
+        <location filename="../model/session/DeviceSession.cpp" line="255"/>
         <source>%1 cannot be checked: %2</source>
         <translation>%1 はチェックできません: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="276"/>
+        <location filename="../model/session/DeviceSession.cpp" line="277"/>
         <source>reading %1 failed: %2</source>
         <translation>%1 の読出しに失敗しました: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="327"/>
+        <location filename="../model/session/DeviceSession.cpp" line="305"/>
+        <source>not written: %1 is written together with 0x%2–0x%3, and reading those first failed: %4</source>
+        <translation>未書込み: %1 は 0x%2–0x%3 と一緒に書き込まれますが、それらの事前読出しに失敗しました: %4</translation>
+    </message>
+    <message>
+        <location filename="../model/session/DeviceSession.cpp" line="310"/>
+        <source>short reply</source>
+        <translation>応答が短すぎます</translation>
+    </message>
+    <message>
+        <location filename="../model/session/DeviceSession.cpp" line="365"/>
         <source>written, but reading it back failed: %1</source>
         <translation>書き込みましたが、読み戻しに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="336"/>
+        <location filename="../model/session/DeviceSession.cpp" line="374"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>照合失敗: %1 を書き込みましたが、デバイスの値は %2 です</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="372"/>
+        <location filename="../model/session/DeviceSession.cpp" line="410"/>
         <source>error code %1</source>
         <translation>エラーコード %1</translation>
     </message>
@@ -3744,22 +3960,32 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DrivePages</name>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="97"/>
+        <location filename="../ui/main/DrivePages.cpp" line="101"/>
         <source>Monitor</source>
         <translation>モニタ</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="110"/>
+        <location filename="../ui/main/DrivePages.cpp" line="114"/>
         <source>Test run</source>
         <translation>試運転</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="112"/>
+        <location filename="../ui/main/DrivePages.cpp" line="121"/>
+        <source>drive %1 (%2)</source>
+        <translation>ドライバ %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/DrivePages.cpp" line="122"/>
+        <source>Speed loop tuning</source>
+        <translation>速度ループチューニング</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/DrivePages.cpp" line="128"/>
         <source>Alarms</source>
         <translation>アラーム</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="121"/>
+        <location filename="../ui/main/DrivePages.cpp" line="137"/>
         <source>Machine number %1 (%2, %3) — %4, firmware V%5</source>
         <translation>局番 %1 (%2, %3) — %4、ファームウェア V%5</translation>
     </message>
@@ -3874,6 +4100,11 @@ Configuration changes written but not stored are discarded.</source>
         <location filename="../model/bus/DriveStatusPoller.cpp" line="81"/>
         <source>blue</source>
         <translation>青</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="118"/>
+        <source>%1; %2</source>
+        <translation>%1、%2</translation>
     </message>
 </context>
 <context>
@@ -5167,7 +5398,7 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <location filename="../model/eol/EolStepRunner.cpp" line="428"/>
         <location filename="../model/eol/EolStepRunner.cpp" line="449"/>
         <location filename="../model/eol/EolStepRunner.cpp" line="475"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="517"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="526"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -5259,47 +5490,47 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>%1: %2 s 後に停止、許容は最大 %3 s</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="508"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="517"/>
         <source>%1: nothing to read</source>
         <translation>%1: 読み出すものがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="525"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="534"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="528"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="537"/>
         <source>%1: %2 reads &quot;%3&quot;, expected &quot;%4&quot;</source>
         <translation>%1: %2 の読出し値は &quot;%3&quot;、期待値は &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="539"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="548"/>
         <source>%1: %2 reads %3 %4, %5</source>
         <translation>%1: %2 の読出し値 %3 %4、%5</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="561"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="570"/>
         <source>the stop command failed: %1</source>
         <translation>停止コマンドが失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="576"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="585"/>
         <source>stopped after %1 s</source>
         <translation>%1 s 後に停止</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="577"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="586"/>
         <source>not confirmed stopped: %1</source>
         <translation>停止未確認: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="599"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="608"/>
         <source>communication priority could not be given back: %1</source>
         <translation>通信優先を戻せませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="639"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="648"/>
         <source>the steps ended with the motor running</source>
         <translation>ステップ終了時にモータが運転中でした</translation>
     </message>
@@ -5708,6 +5939,19 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <location filename="../cli/FileCommandSupport.cpp" line="41"/>
         <source>error: %1 refused: %2</source>
         <translation>エラー: %1 は使用できません: %2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::FixedLineHint</name>
+    <message>
+        <location filename="../model/bus/FixedLineHint.cpp" line="41"/>
+        <source>A DC controller in potentiometer/analog control mode talks only at %1 bit/s, 8%2%3, address %4.</source>
+        <translation>ボリューム/アナログ制御モードの DC コントローラは %1 bit/s、8%2%3、アドレス %4 でのみ通信します。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/FixedLineHint.cpp" line="60"/>
+        <source>%1 8%2%3, address %4</source>
+        <translation>%1 8%2%3、アドレス %4</translation>
     </message>
 </context>
 <context>
@@ -6591,33 +6835,33 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="50"/>
+        <location filename="../ui/main/MainWindow.cpp" line="52"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="126"/>
+        <location filename="../ui/main/MainWindow.cpp" line="134"/>
         <source>connect elsewhere</source>
         <translation>別の接続先への接続</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="149"/>
+        <location filename="../ui/main/MainWindow.cpp" line="157"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>%1 に接続中…（%2 には接続したまま）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="188"/>
+        <location filename="../ui/main/MainWindow.cpp" line="196"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>接続済み: %1（新しい接続は失敗しました: %2）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="191"/>
-        <location filename="../ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="199"/>
+        <location filename="../ui/main/MainWindow.cpp" line="212"/>
         <source>Cannot connect</source>
         <translation>接続できません</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="192"/>
+        <location filename="../ui/main/MainWindow.cpp" line="200"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -6626,82 +6870,82 @@ Still connected to %2; nothing was changed.</source>
 %2 に接続したままです。何も変更していません。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="195"/>
-        <location filename="../ui/main/MainWindow.cpp" line="306"/>
+        <location filename="../ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="324"/>
         <source>Not connected: %1</source>
         <translation>未接続: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="252"/>
+        <location filename="../ui/main/MainWindow.cpp" line="261"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>通信グループ: %1（バス › 通信グループ）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="274"/>
-        <location filename="../ui/main/MainWindow.cpp" line="276"/>
+        <location filename="../ui/main/MainWindow.cpp" line="292"/>
+        <location filename="../ui/main/MainWindow.cpp" line="294"/>
         <source>Connection lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="277"/>
+        <location filename="../ui/main/MainWindow.cpp" line="295"/>
         <source>Connection lost</source>
         <translation>接続断</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="285"/>
+        <location filename="../ui/main/MainWindow.cpp" line="303"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — シミュレーションバス（ハードウェアなし）— %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="286"/>
+        <location filename="../ui/main/MainWindow.cpp" line="304"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="287"/>
+        <location filename="../ui/main/MainWindow.cpp" line="305"/>
         <source>Connecting to %1…</source>
         <translation>%1 に接続中…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="305"/>
-        <location filename="../ui/main/MainWindow.cpp" line="313"/>
+        <location filename="../ui/main/MainWindow.cpp" line="323"/>
+        <location filename="../ui/main/MainWindow.cpp" line="331"/>
         <source>Connected: %1</source>
         <translation>接続済み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="312"/>
+        <location filename="../ui/main/MainWindow.cpp" line="330"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>接続済み: %1（シミュレーション、ハードウェアなし）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="333"/>
+        <location filename="../ui/main/MainWindow.cpp" line="356"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>ドライバが機種を通知しません。%1 は設定された機種です。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="363"/>
-        <location filename="../ui/main/MainWindow.cpp" line="374"/>
+        <location filename="../ui/main/MainWindow.cpp" line="386"/>
+        <location filename="../ui/main/MainWindow.cpp" line="397"/>
         <source>disconnect</source>
         <translation>切断</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="370"/>
+        <location filename="../ui/main/MainWindow.cpp" line="393"/>
         <source>Not connected (disconnected)</source>
         <translation>未接続（切断済み）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="381"/>
-        <location filename="../ui/main/MainWindow.cpp" line="406"/>
+        <location filename="../ui/main/MainWindow.cpp" line="404"/>
+        <location filename="../ui/main/MainWindow.cpp" line="429"/>
         <source>quit</source>
         <translation>終了</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="392"/>
+        <location filename="../ui/main/MainWindow.cpp" line="415"/>
         <source>Unwritten changes</source>
         <translation>未書込みの変更</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="393"/>
+        <location filename="../ui/main/MainWindow.cpp" line="416"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>%n 件の編集がドライバに書き込まれていません。破棄して終了しますか？</numerusform>
@@ -6803,42 +7047,42 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorOutput</name>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="114"/>
+        <location filename="../cli/MonitorOutput.cpp" line="117"/>
         <source>Target shown</source>
         <translation>目標（表示値）</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="114"/>
+        <location filename="../cli/MonitorOutput.cpp" line="117"/>
         <source>Speed shown</source>
         <translation>速度（表示値）</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="123"/>
+        <location filename="../cli/MonitorOutput.cpp" line="127"/>
         <source>Active alarm</source>
         <translation>発生中のアラーム</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="165"/>
+        <location filename="../cli/MonitorOutput.cpp" line="169"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="168"/>
+        <location filename="../cli/MonitorOutput.cpp" line="172"/>
         <source>code %1</source>
         <translation>コード %1</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="168"/>
+        <location filename="../cli/MonitorOutput.cpp" line="172"/>
         <source>active</source>
         <translation>発生中</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="175"/>
+        <location filename="../cli/MonitorOutput.cpp" line="179"/>
         <source>Time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="175"/>
+        <location filename="../cli/MonitorOutput.cpp" line="180"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -7360,27 +7604,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="170"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="183"/>
         <source>%1 (not valid now)</source>
         <translation>%1（現在は無効）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="188"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="202"/>
         <source>not read</source>
         <translation>未読出し</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="197"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="211"/>
         <source>Allowed: %1</source>
         <translation>許容: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="200"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="214"/>
         <source>On the drive: %1</source>
         <translation>ドライバの値: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="228"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="244"/>
         <source>Not accepted: %1</source>
         <translation>受け付けられません: %1</translation>
     </message>
@@ -7388,160 +7632,195 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitBox</name>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="23"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="38"/>
         <source>Parameter initialisation</source>
         <translation>パラメータ初期化</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="32"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="48"/>
         <source>Returns every setting of drive %1 to its factory default, including the communication settings: afterwards the drive may answer only at the default rate, and control priority goes back to its input terminals. The motor must be stopped. The consequences for this drive are listed before anything is sent.</source>
         <translation>ドライバ %1 の全設定を、通信設定も含めて工場出荷時設定に戻します: その後、ドライバは初期値の通信速度でしか応答しない場合があり、制御優先は入力端子側に戻ります。モータは停止している必要があります。送信前に、このドライバへの影響を一覧表示します。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="40"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="56"/>
         <source>&amp;Initialise all parameters of drive %1…</source>
         <translation>ドライバ %1 の全パラメータを初期化(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="42"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="58"/>
         <source>Asks first, naming the drive and what changes</source>
         <translation>ドライバと変更内容を示して事前に確認します</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="66"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="86"/>
         <source>Reading what the initialisation would change…</source>
         <translation>初期化による変更内容を読出し中…</translation>
     </message>
+    <message>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="110"/>
+        <source>Afterwards:</source>
+        <translation>その後:</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="90"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="115"/>
         <source>Your %n unwritten edit(s) of this drive are discarded.</source>
         <translation>
             <numerusform>このドライバの未書込みの編集 %n 件は破棄されます。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="94"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="119"/>
         <source>Sent: %1 to machine %2 only.</source>
         <translation>送信済み: %1（局番 %2 のみ）。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="95"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="120"/>
         <source>Sent: %1 to machine %2.</source>
         <translation>送信済み: %1（局番 %2）。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="99"/>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="104"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="124"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="129"/>
         <source>Initialise drive %1</source>
         <translation>ドライバ %1 の初期化</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="100"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="125"/>
         <source>Reset every setting of drive %1 (%2) to its factory defaults?</source>
         <translation>ドライバ %1 (%2) の全設定を工場出荷時設定に戻しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="114"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="139"/>
         <source>Cancelled; nothing was sent.</source>
         <translation>キャンセルしました。何も送信していません。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="122"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="147"/>
         <source>Initialising drive %1…</source>
         <translation>ドライバ %1 を初期化中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="131"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="156"/>
         <source>Drive %1 did not confirm the initialisation: %2</source>
         <translation>ドライバ %1 が初期化を確認しませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="132"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="157"/>
         <source>Nothing was sent: %1</source>
         <translation>何も送信していません: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="170"/>
+        <source>&amp;Reconnect at %1 bit/s after the power-up</source>
+        <translation>電源投入後に %1 bit/s で再接続(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="174"/>
         <source>Drive %1 initialised; reading its values again…</source>
         <translation>ドライバ %1 を初期化しました。値を再読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="145"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="180"/>
         <source>Drive %1 initialised; %n value(s) could not be read back (it may answer only at the default communication settings now).</source>
         <translation>
             <numerusform>ドライバ %1 を初期化しました。%n 個の値を読み戻せませんでした（現在は初期値の通信設定でのみ応答する可能性があります）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="149"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="184"/>
         <source>Drive %1 initialised to its factory defaults; values read again.</source>
         <translation>ドライバ %1 を工場出荷時設定に初期化しました。値を再読出ししました。</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="210"/>
+        <source>Reconnecting at %1 bit/s in %2 s…</source>
+        <translation>%2 s 後に %1 bit/s で再接続します…</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="223"/>
+        <source>Reconnect at %1 bit/s from the Bus menu.</source>
+        <translation>「バス」メニューから %1 bit/s で再接続してください。</translation>
     </message>
 </context>
 <context>
     <name>opentop::ParameterInitialiser</name>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="64"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="65"/>
         <source>%1 drives have no parameter initialisation.</source>
         <translation>%1 ドライバにはパラメータ初期化がありません。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="67"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="68"/>
         <source>%1 = %2 (register %3)</source>
         <translation>%1 = %2（レジスタ %3）</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="75"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="76"/>
         <source>Drive %1 is running. Stop the motor first: parameter initialisation is only sent to a drive at standstill.</source>
         <translation>ドライバ %1 は運転中です。先にモータを停止してください: パラメータ初期化は停止中のドライバにのみ送信します。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="79"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="80"/>
         <source>Whether drive %1 is running could not be read (%2), so nothing was sent.</source>
         <translation>ドライバ %1 が運転中かどうかを読み出せなかったため (%2)、何も送信していません。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="93"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="94"/>
         <source>Every setting of drive %1 returns to its factory default: %2. Values set for this machine are lost; save a backup first to keep them.</source>
         <translation>ドライバ %1 の全設定が工場出荷時設定に戻ります: %2。この機械用に設定した値は失われます。残すには先にバックアップを保存してください。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="110"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="111"/>
         <source>%1 could not be read; it returns to %2. %3</source>
         <translation>%1 を読み出せませんでした。%2 に戻ります。%3</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="113"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="114"/>
         <source>%1 goes from %2 back to %3. %4</source>
         <translation>%1 は %2 から %3 に戻ります。%4</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="118"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="119"/>
         <source>%1 stays %2 (already the default).</source>
         <translation>%1 は %2 のままです（すでに初期値）。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="124"/>
-        <source>The drive may then stop answering this connection (from its next power-up): reconnect at the default setting to reach it.</source>
-        <translation>その後、ドライバがこの接続で応答しなくなる可能性があります（次回の電源投入から）: 初期値の通信設定で再接続してください。</translation>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="123"/>
+        <source>%1 bit/s, parity %2, %3 stop bit(s)</source>
+        <translation>%1 bit/s、パリティ %2、ストップビット %3</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="128"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="131"/>
+        <source>The link to the drive is lost from its next power-up: it answers only at the factory line settings, %1.</source>
+        <translation>次回の電源投入からドライバとの接続が失われます: ドライバは工場出荷時の通信設定 (%1) でのみ応答します。</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="142"/>
+        <source>To reach drive %1 again: switch it off and on, wait %2 s after power-on, then reconnect at %3.</source>
+        <translation>ドライバ %1 に再び接続するには: 電源を入れ直し、電源投入後 %2 s 待ってから %3 で再接続してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="159"/>
+        <source>Bus control is lost: the drive follows its input terminals again and refuses start, stop and speed commands over the bus; an input that is on may start the motor, with the factory input functions.</source>
+        <translation>バスからの制御ができなくなります: ドライバは再び入力端子に従い、バス経由の起動・停止・速度指令を拒否します。オンになっている入力があると、工場出荷時の入力機能でモータが起動する可能性があります。</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="168"/>
+        <source>To control the motor over the bus again, set %1 to %2.</source>
+        <translation>バス経由で再びモータを制御するには、%1 を %2 に設定してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="150"/>
         <source>The drive no longer follows writes sent to its group&apos;s parent, and drives that followed it no longer do.</source>
         <translation>ドライバはグループ親局宛の書込みに従わなくなり、このドライバに従っていたドライバも従わなくなります。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="134"/>
-        <source>The drive follows its input terminals again: an input that is on may start the motor, with the factory input functions.</source>
-        <translation>ドライバは再び入力端子に従います: オンになっている入力があると、工場出荷時の入力機能でモータが起動する可能性があります。</translation>
-    </message>
-    <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="136"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="173"/>
         <source>The machine number %1 is not a setting and does not change.</source>
         <translation>局番 %1 は設定ではないため変更されません。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="138"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="175"/>
         <source>The motor must stand still: drive %1 reports it stopped now, and this is read again just before the command is sent.</source>
         <translation>モータは停止している必要があります: ドライバ %1 は現在停止中と通知しています。コマンド送信の直前に再度読み出します。</translation>
     </message>
@@ -7604,33 +7883,34 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
         <source>Write %n value(s) of the page %1 to machine number %2</source>
         <translation>
             <numerusform>ページ %1 の %n 個の値を局番 %2 に書込み</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="138"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="147"/>
         <source>Nothing was written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="148"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="152"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>%n 個の値を書込み中…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="152"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="156"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>%n 個の書込みに失敗しました。マークされた項目を確認してください</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="153"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="157"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n 個の値を書込み・照合しました</numerusform>
@@ -7640,212 +7920,252 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterReader</name>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="52"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="55"/>
         <source>entry</source>
         <translation>エントリ</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="60"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="63"/>
         <source>name must be lower-case dotted words: [a-z0-9_] separated by dots</source>
         <translation>name はドット区切りの小文字の単語でなければなりません（[a-z0-9_] をドットで区切る）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="69"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="72"/>
         <source>&quot;label&quot; is empty</source>
         <translation>&quot;label&quot; が空です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="71"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="74"/>
         <source>group &quot;%1&quot; is not declared in &quot;groups&quot;</source>
         <translation>グループ &quot;%1&quot; が &quot;groups&quot; で宣言されていません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="73"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="76"/>
         <source>kind must be one of %1</source>
         <translation>kind は %1 のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="79"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="82"/>
         <source>address must be 0x0000–0xFFFF</source>
         <translation>address は 0x0000–0xFFFF でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="86"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="89"/>
         <source>read must be 3 (holding) or 4 (input)</source>
         <translation>read は 3（保持）または 4（入力）でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="88"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="91"/>
         <source>write must be 6 or 16</source>
         <translation>write は 6 または 16 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="92"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="95"/>
         <source>input registers (read 4) cannot be written</source>
         <translation>入力レジスタ (read 4) には書き込めません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="94"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="97"/>
         <source>neither readable nor writable</source>
         <translation>読出しも書込みもできません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="102"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="105"/>
         <source>type must be u16, s16, u32, s32, f32, string or bits</source>
         <translation>type は u16、s16、u32、s32、f32、string、bits のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="111"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="114"/>
         <source>string parameters need &quot;count&quot; 1–125 registers</source>
         <translation>string パラメータには &quot;count&quot; 1–125 レジスタが必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="116"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="119"/>
         <source>bits parameters have &quot;count&quot; 1 or 2</source>
         <translation>bits パラメータの &quot;count&quot; は 1 または 2 です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="121"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="124"/>
         <source>%1 takes %2 register(s), not %3</source>
         <translation>%1 は %3 ではなく %2 レジスタを使用します</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="124"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="129"/>
+        <source>&quot;wordOrder&quot; is for 2-register numbers and bit fields only</source>
+        <translation>&quot;wordOrder&quot; は 2 レジスタの数値とビットフィールド専用です</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="133"/>
+        <source>&quot;wordOrder&quot; must be &quot;high-first&quot; or &quot;low-first&quot;</source>
+        <translation>&quot;wordOrder&quot; は &quot;high-first&quot; または &quot;low-first&quot; でなければなりません</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="136"/>
         <source>a %1-register value cannot be written with function 06; use 16</source>
         <translation>%1 レジスタの値はファンクション 06 では書き込めません。16 を使用してください</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="129"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="141"/>
         <source>safety must be one of %1</source>
         <translation>safety は %1 のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="131"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="143"/>
         <source>commands need a &quot;safety&quot; class</source>
         <translation>コマンドには &quot;safety&quot; クラスが必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="134"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="146"/>
         <source>code table &quot;%1&quot; is not declared</source>
         <translation>コードテーブル &quot;%1&quot; が宣言されていません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="141"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="157"/>
         <source>a setting needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>設定には &quot;allowed&quot; または &quot;enum&quot; が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="144"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="160"/>
         <source>a writable parameter needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>書込み可能なパラメータには &quot;allowed&quot; または &quot;enum&quot; が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="149"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="165"/>
         <source>bits parameters need &quot;bits&quot;</source>
         <translation>bits パラメータには &quot;bits&quot; が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="157"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="173"/>
         <source>&quot;backup&quot; must be true or false</source>
         <translation>&quot;backup&quot; は true または false でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="162"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="178"/>
         <source>only readable and writable parameters can be backed up</source>
         <translation>バックアップできるのは読出し・書込み可能なパラメータのみです</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="170"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="191"/>
+        <source>%1 needs &quot;address&quot; and &quot;count&quot;</source>
+        <translation>%1 には &quot;address&quot; と &quot;count&quot; が必要です</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="193"/>
+        <source>%1: the parameter is not writable</source>
+        <translation>%1: このパラメータは書込みできません</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="196"/>
+        <source>%1: address 0x0000–0xFFFF and count 1–%2 (limits.maxWriteRegisters)</source>
+        <translation>%1: address は 0x0000–0xFFFF、count は 1–%2 でなければなりません（limits.maxWriteRegisters）</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="205"/>
+        <source>%1: tail values are registers, 0–65535</source>
+        <translation>%1: tail の値はレジスタ値（0–65535）です</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="213"/>
+        <source>%1: the parameter&apos;s registers must lie in the block, before its tail</source>
+        <translation>%1: パラメータのレジスタはブロック内の tail より前になければなりません</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="221"/>
         <source>scale must be positive</source>
         <translation>scale は正の値でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="182"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="233"/>
         <source>decimals must be 0–9</source>
         <translation>decimals は 0–9 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="208"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="257"/>
+        <source>recommended[%1] is not inside one of the &quot;allowed&quot; intervals</source>
+        <translation>recommended[%1] がどの &quot;allowed&quot; 区間にも含まれていません</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="275"/>
         <source>default %1 is not a whole number of steps of %2</source>
         <translation>default %1 が %2 のステップの整数倍ではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="217"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="284"/>
         <source>default must be a number (or &quot;0x...&quot; code)</source>
         <translation>default は数値（または &quot;0x...&quot; コード）でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="220"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="287"/>
         <source>default must be a number or a string</source>
         <translation>default は数値または文字列でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="231"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="298"/>
         <source>%1 must be an object {&quot;min&quot;:…, &quot;max&quot;:…}</source>
         <translation>%1 はオブジェクト {&quot;min&quot;:…, &quot;max&quot;:…} でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="238"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="305"/>
         <source>%1 needs numeric min and max</source>
         <translation>%1 には数値の min と max が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="244"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="311"/>
         <source>%1: %2 is not a whole number of steps of %3</source>
         <translation>%1: %2 が %3 のステップの整数倍ではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="252"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="319"/>
         <source>%1: min is greater than max</source>
         <translation>%1: min が max より大きくなっています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="266"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="333"/>
         <source>%1 must be an object {&quot;value&quot;:…, &quot;label&quot;:…}</source>
         <translation>%1 はオブジェクト {&quot;value&quot;:…, &quot;label&quot;:…} でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="282"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="349"/>
         <source>%1 has no label</source>
         <translation>%1 にラベルがありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="284"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="351"/>
         <source>%1 repeats a code or label</source>
         <translation>%1 でコードまたはラベルが重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="295"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="362"/>
         <source>&quot;bits&quot; only belongs to type bits</source>
         <translation>&quot;bits&quot; は type bits にのみ使用できます</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="319"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="386"/>
         <source>%1.appliesWhen needs &quot;param&quot; and &quot;equals&quot;</source>
         <translation>%1.appliesWhen には &quot;param&quot; と &quot;equals&quot; が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="324"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="391"/>
         <source>%1 lies outside the %2-bit register</source>
         <translation>%1 が %2 ビットレジスタの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="326"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="393"/>
         <source>%1 needs a unique name</source>
         <translation>%1 には一意の名前が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="340"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="407"/>
         <source>%1 must be an object</source>
         <translation>%1 はオブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="352"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="419"/>
         <source>%1 needs either &quot;variant&quot; or &quot;param&quot;</source>
         <translation>%1 には &quot;variant&quot; または &quot;param&quot; のいずれかが必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="355"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="422"/>
         <source>%1: variant &quot;%2&quot; is not declared</source>
         <translation>%1: 機種 &quot;%2&quot; が宣言されていません</translation>
     </message>
@@ -7916,6 +8236,22 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Group</source>
         <translation>グループ</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::PidGains</name>
+    <message>
+        <location filename="../model/tuning/PidGains.cpp" line="9"/>
+        <source>P %1, I %2, D %3, D period %4 ms</source>
+        <translation>P %1、I %2、D %3、D 周期 %4 ms</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::PlantModel</name>
+    <message>
+        <location filename="../model/tuning/PlantModel.cpp" line="18"/>
+        <source>the relay test gives no usable model (K·Ku = %1, Tu = %2 ms)</source>
+        <translation>リレー試験から使用できるモデルが得られません（K·Ku = %1、Tu = %2 ms）</translation>
     </message>
 </context>
 <context>
@@ -8286,32 +8622,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="336"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="417"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>オフセット %1 で JSON が不正です: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="340"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="421"/>
         <source>the top level must be a JSON object</source>
         <translation>最上位は JSON オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="351"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="432"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot; が空です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="362"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="443"/>
         <source>must be an object</source>
         <translation>オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="445"/>
         <source>name repeated</source>
         <translation>名前が重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="379"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="461"/>
         <source>%1: cannot open: %2</source>
         <translation>%1: 開けません: %2</translation>
     </message>
@@ -8392,12 +8728,12 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Progress</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="74"/>
+        <location filename="../cli/ScanCommand.cpp" line="75"/>
         <source>scanning %1/%2 (%3 %), machine number %4, %5 found</source>
         <translation>スキャン中 %1/%2 (%3 %)、局番 %4、%5 台検出</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="89"/>
+        <location filename="../cli/ScanCommand.cpp" line="90"/>
         <source>scan: %1 % (%2 of %3 machine numbers), %4 found</source>
         <translation>スキャン: %1 %（%3 局番中 %2）、%4 台検出</translation>
     </message>
@@ -8602,7 +8938,7 @@ No unit can be tested until results can be recorded.</source>
     </message>
     <message>
         <location filename="../model/eol/RecipeChecker.cpp" line="264"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="364"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="366"/>
         <source>%1: per-unit value %2</source>
         <translation>%1: 個別値 %2</translation>
     </message>
@@ -8627,32 +8963,32 @@ No unit can be tested until results can be recorded.</source>
         <translation>%1 は数値ではありません。個別値には数値の設定が必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="314"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="315"/>
         <source>%1: range %2–%3%4</source>
         <translation>%1: 範囲 %2–%3%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="320"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="321"/>
         <source>%1 is outside what the drive allows: %2%3</source>
         <translation>%1 はドライバの許容範囲外です: %2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="332"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="333"/>
         <source>%1 includes values the drive does not allow; allowed: %2%3</source>
         <translation>%1 にドライバで許可されていない値が含まれています。許容値: %2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="357"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="359"/>
         <source>%1: per-unit value %2: %3%4 is outside the recipe&apos;s range %5–%6%4</source>
         <translation>%1: 個別値 %2: %3%4 はレシピの範囲 %5–%6%4 外です</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="368"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="370"/>
         <source>%1: the recipe has no per-unit value %2</source>
         <translation>%1: レシピに個別値 %2 はありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="371"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="373"/>
         <source>the recipe has no drive at machine number %1</source>
         <translation>レシピに局番 %1 のドライバはありません</translation>
     </message>
@@ -9337,6 +9673,24 @@ No unit can be tested until results can be recorded.</source>
         <location filename="../model/eol/RecipeStepChecker.cpp" line="283"/>
         <source>%1 is a number; compare it with lower and upper limits</source>
         <translation>%1 は数値です。下限・上限の規格値と比較してください</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RelayAnalysis</name>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="27"/>
+        <source>no steady oscillation: %1 full cycles around %2, %3 needed</source>
+        <translation>安定した振動がありません: %2 付近で完全な周期が %1 回（%3 回必要）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="59"/>
+        <source>the oscillation (±%1) is no larger than the hysteresis (%2)</source>
+        <translation>振動 (±%1) がヒステリシス (%2) より大きくありません</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="65"/>
+        <source>the oscillation is not steady: periods or amplitudes differ by %1 %</source>
+        <translation>振動が安定していません: 周期または振幅が %1 % 異なります</translation>
     </message>
 </context>
 <context>
@@ -10639,83 +10993,83 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="110"/>
+        <location filename="../cli/ScanCommand.cpp" line="111"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>バス上のドライバを検出・識別します（局番 1–247）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="116"/>
+        <location filename="../cli/ScanCommand.cpp" line="117"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>問い合わせる最初の局番、1–247（既定 1）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="116"/>
         <location filename="../cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="118"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="118"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>問い合わせる最後の局番、1–247（既定 247）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="119"/>
+        <location filename="../cli/ScanCommand.cpp" line="120"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>局番ごとの待ち時間 (ms)、10–5000（既定: ボーレートから算出。低速なアダプタやゲートウェイでは大きくしてください）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="121"/>
+        <location filename="../cli/ScanCommand.cpp" line="122"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="134"/>
+        <location filename="../cli/ScanCommand.cpp" line="135"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>エラー: --%1 は %2–%3 の数値でなければなりません（&quot;%4&quot; は不可）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="146"/>
+        <location filename="../cli/ScanCommand.cpp" line="147"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>エラー: scan は引数を取りません。--from N --to N を使用してください</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="155"/>
+        <location filename="../cli/ScanCommand.cpp" line="156"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>エラー: --from %1 が --to %2 より後です</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="173"/>
+        <location filename="../cli/ScanCommand.cpp" line="174"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>%3 で局番 %1–%2 をスキャン中（各 %4 ms）…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="209"/>
+        <location filename="../cli/ScanCommand.cpp" line="210"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>局番をスキャンする前に中断しました。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="211"/>
+        <location filename="../cli/ScanCommand.cpp" line="212"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>中断: 局番 %1–%2 をスキャンしました（%4 中 %3）。%5–%6 は未問い合わせです。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="225"/>
+        <location filename="../cli/ScanCommand.cpp" line="226"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>エラー: 局番 %1 でスキャンが停止しました: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="235"/>
+        <location filename="../cli/ScanCommand.cpp" line="236"/>
         <source>warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="237"/>
+        <location filename="../cli/ScanCommand.cpp" line="238"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>注: %1 台のドライバが %2 ms の待ち時間の後に応答したため、再度問い合わせました。スキャンでドライバが見つからない場合は、--wait を長くしてください。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="243"/>
+        <location filename="../cli/ScanCommand.cpp" line="244"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -10726,258 +11080,293 @@ This moves or stops a motor: add --yes to send it.</source>
   - 終端抵抗（バスの両端に 120 Ω）とドライバの電源</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="280"/>
+        <location filename="../cli/ScanCommand.cpp" line="257"/>
+        <source>hint: %1 Retry with the same connection and: %2</source>
+        <translation>ヒント: %1 同じ接続に次を加えて再試行してください: %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="287"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 機種不明</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="281"/>
+        <location filename="../cli/ScanCommand.cpp" line="288"/>
         <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
         <translation>ドライバが機種を通知しません。--variant %1=VARIANT で指定してください (%2)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>hex</source>
         <translation>16 進</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>switches</source>
         <translation>スイッチ</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>family</source>
         <translation>ファミリ</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="305"/>
         <source>model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="305"/>
         <source>firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="305"/>
         <source>state</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="311"/>
         <source>comm. group</source>
         <translation>通信グループ</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="372"/>
+        <location filename="../cli/ScanCommand.cpp" line="379"/>
         <source>1 drive found in %1 s</source>
         <translation>1 台のドライバを検出（%1 s）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="373"/>
+        <location filename="../cli/ScanCommand.cpp" line="380"/>
         <source>%1 drives found in %2 s</source>
         <translation>%1 台のドライバを検出（%2 s）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="375"/>
+        <location filename="../cli/ScanCommand.cpp" line="382"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>。局番重複の可能性 1 件: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="377"/>
+        <location filename="../cli/ScanCommand.cpp" line="384"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>。局番重複の可能性 %1 件: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="388"/>
+        <location filename="../cli/ScanCommand.cpp" line="395"/>
         <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>警告: 局番 %1 (%2, %3) の応答が化けています: 2 台のドライバが同じ局番になっている可能性があります。このバス上のドライバの SW1/SW2 スイッチを確認し、各ドライバに固有の局番を設定して電源を入れ直し、再度スキャンしてください。</translation>
     </message>
 </context>
 <context>
+    <name>opentop::SerialLock</name>
+    <message>
+        <location filename="../model/session/SerialLock.cpp" line="39"/>
+        <source>%1 = %2 prohibits configuration over the serial interface: OpenTOP may then no longer be able to change this drive&apos;s settings over the serial line it talks on. To undo it: write %1 = %3 again if the drive still accepts it; while it is not stored, switch the drive off and on; otherwise switch the controller to potentiometer/analog control, connect at 9600 bit/s, 8E1, address 1 and write %1 = %3 there.</source>
+        <translation>%1 = %2 はシリアルインタフェース経由の設定を禁止します: その後、OpenTOP は通信中のシリアル回線でこのドライバの設定を変更できなくなる可能性があります。元に戻す方法: ドライバがまだ受け付ける場合は %1 = %3 を書き込み直します。保存されていなければドライバの電源を入れ直します。それ以外の場合は、コントローラをボリューム/アナログ制御に切り替え、9600 bit/s、8E1、アドレス 1 で接続して %1 = %3 を書き込みます。</translation>
+    </message>
+</context>
+<context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="39"/>
+        <location filename="../cli/SetCommand.cpp" line="43"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>パラメータを名前で書き込み、検証・読み戻し・照合します</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="46"/>
-        <source>Confirm commands that move a motor, reset, erase, initialise or store.</source>
-        <translation>モータの運転、リセット、消去、初期化、保存を行うコマンドを確定します。</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="48"/>
+        <location filename="../cli/SetCommand.cpp" line="53"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>アドレスでレジスタに書き込みます: ADDR=VALUE（複数指定可。--fc 16 では VALUE,VALUE...）。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="49"/>
+        <location filename="../cli/SetCommand.cpp" line="54"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="55"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 書込みのファンクションコード: 6（既定）または 16。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="55"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="59"/>
+        <location filename="../cli/SetCommand.cpp" line="64"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>エラー: 使い方: set ID NAME=VALUE...（例: set 1 spno2.accel=2.5）、または set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="71"/>
+        <location filename="../cli/SetCommand.cpp" line="76"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>エラー: &quot;%1&quot; は NAME=VALUE ではありません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="78"/>
+        <location filename="../cli/SetCommand.cpp" line="83"/>
         <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
         <translation>エラー: %1 が 2 回指定されています（%2=%3 と %4）。各設定は 1 回だけ指定してください。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="89"/>
-        <location filename="../cli/SetCommand.cpp" line="186"/>
+        <location filename="../cli/SetCommand.cpp" line="94"/>
+        <location filename="../cli/SetCommand.cpp" line="227"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="99"/>
+        <location filename="../cli/SetCommand.cpp" line="104"/>
         <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>%1 にパラメータ &quot;%2&quot; はありません。&quot;opentop-cli params --family %1&quot; を参照してください</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="102"/>
+        <location filename="../cli/SetCommand.cpp" line="107"/>
         <source>%1 is read-only</source>
         <translation>%1 は読出し専用です</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="104"/>
+        <location filename="../cli/SetCommand.cpp" line="109"/>
         <source>%1 is a %2 command; add --yes to send it</source>
         <translation>%1 は %2 コマンドです。送信するには --yes を付けてください</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="136"/>
+        <location filename="../cli/SetCommand.cpp" line="164"/>
         <source>error: cannot read %1 to check the values; nothing written</source>
         <translation>エラー: 値をチェックするための %1 を読み出せません。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="180"/>
+        <location filename="../cli/SetCommand.cpp" line="148"/>
+        <location filename="../cli/SetCommand.cpp" line="210"/>
+        <location filename="../cli/SetCommand.cpp" line="221"/>
         <source>warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="187"/>
+        <location filename="../cli/SetCommand.cpp" line="50"/>
+        <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
+        <translation>モータの運転、リセット、消去、初期化、保存を行うコマンドと、シリアル設定ロックの設定を確定します。</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="198"/>
+        <source>Add --yes to set it.</source>
+        <translation>設定するには --yes を付けてください。</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="228"/>
         <source>nothing was written</source>
         <translation>何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="210"/>
+        <location filename="../cli/SetCommand.cpp" line="251"/>
         <source>not written (interrupted)</source>
         <translation>未書込み（中断）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="264"/>
+        <source>next: %1</source>
+        <translation>次に: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="266"/>
+        <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
+        <translation>次に: opentop-cli --baud %1 --parity %2 --stop-bits %3 ...（工場出荷時の通信設定）</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="304"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="304"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="245"/>
-        <location filename="../cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="304"/>
+        <location filename="../cli/SetCommand.cpp" line="422"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="251"/>
-        <location filename="../cli/SetCommand.cpp" line="387"/>
+        <location filename="../cli/SetCommand.cpp" line="310"/>
+        <location filename="../cli/SetCommand.cpp" line="457"/>
         <source>written, verified</source>
         <translation>書込み済み、照合済み</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="252"/>
+        <location filename="../cli/SetCommand.cpp" line="311"/>
         <source>written (command, not readable)</source>
         <translation>書込み済み（コマンド、読出し不可）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="254"/>
+        <location filename="../cli/SetCommand.cpp" line="313"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>未確認 (%1): ドライバがその値を保持しているかどうか不明です。&quot;get&quot; で読み戻してください</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="272"/>
+        <location filename="../cli/SetCommand.cpp" line="327"/>
+        <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
+        <translation>注: ドライバは次回の電源投入から %1 を使用します: ドライバの電源を入れ直し、新しい設定（--baud、--parity）で接続してください</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="342"/>
         <source>error: --fc for raw writes is 6 or 16</source>
         <translation>エラー: raw 書込みの --fc は 6 または 16 です</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="298"/>
+        <location filename="../cli/SetCommand.cpp" line="368"/>
         <source>error: &quot;%1&quot; is not ADDR=VALUE (0x.. or decimal, 0–65535; several values, comma separated, only with --fc 16)</source>
         <translation>エラー: &quot;%1&quot; は ADDR=VALUE ではありません（0x.. または 10 進、0–65535。カンマ区切りの複数値は --fc 16 の場合のみ）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="315"/>
+        <location filename="../cli/SetCommand.cpp" line="385"/>
         <source>error: 0x%1 is not a register the profile knows; add --yes to write it anyway; nothing was written</source>
         <translation>エラー: 0x%1 はプロファイルにないレジスタです。それでも書き込むには --yes を付けてください。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="325"/>
+        <location filename="../cli/SetCommand.cpp" line="395"/>
         <source>error: %1; nothing was written</source>
         <translation>エラー: %1。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="326"/>
+        <location filename="../cli/SetCommand.cpp" line="396"/>
         <source>%1 is a %2 command; add --yes</source>
         <translation>%1 は %2 コマンドです。--yes を付けてください</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="333"/>
+        <location filename="../cli/SetCommand.cpp" line="403"/>
         <source>error: the write covers part of %1; add --yes to write it anyway; nothing was written</source>
         <translation>エラー: この書込みは %1 の一部にかかります。それでも書き込むには --yes を付けてください。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="422"/>
         <source>Address</source>
         <translation>アドレス</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="422"/>
         <source>Written</source>
         <translation>書込み</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="385"/>
+        <location filename="../cli/SetCommand.cpp" line="455"/>
         <source>written</source>
         <translation>書込み済み</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="389"/>
+        <location filename="../cli/SetCommand.cpp" line="459"/>
         <source>written, but reads back differently</source>
         <translation>書き込みましたが、読み戻した値が異なります</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="392"/>
+        <location filename="../cli/SetCommand.cpp" line="462"/>
         <source>written (not readable back: %1)</source>
         <translation>書込み済み（読み戻し不可: %1）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="400"/>
+        <location filename="../cli/SetCommand.cpp" line="470"/>
         <source>Also written to %1 (communication group); not read back: no parameter of the profile</source>
         <translation>%1 にも書き込みました（通信グループ）。読み戻しなし: プロファイルのパラメータではありません</translation>
     </message>
@@ -11051,32 +11440,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimApp</name>
     <message>
-        <location filename="../sim/SimApp.cpp" line="108"/>
+        <location filename="../sim/SimApp.cpp" line="110"/>
         <source>opentop-sim: warning: %1@%2 cannot use %3 %4 and will not answer</source>
         <translation>opentop-sim: 警告: %1@%2 は %3 %4 を使用できないため応答しません</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="118"/>
+        <location filename="../sim/SimApp.cpp" line="124"/>
         <source>opentop-sim: --defect %1:%2: no drive with machine number %1 on the bus %3</source>
         <translation>opentop-sim: --defect %1:%2: バス %3 に局番 %1 のドライバはありません</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="125"/>
+        <location filename="../sim/SimApp.cpp" line="131"/>
         <source>opentop-sim: --defect %1 (%2@%1): %3</source>
         <translation>opentop-sim: --defect %1 (%2@%1): %3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="162"/>
+        <location filename="../sim/SimApp.cpp" line="168"/>
         <source>the port is unplugged already</source>
         <translation>ポートはすでに切断されています</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="164"/>
+        <location filename="../sim/SimApp.cpp" line="170"/>
         <source>unplugged</source>
         <translation>切断しました</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="197"/>
+        <location filename="../sim/SimApp.cpp" line="203"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
@@ -11168,7 +11557,7 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimConsole</name>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="31"/>
+        <location filename="../sim/SimConsole.cpp" line="32"/>
         <source>commands:
   help                      this text
   list                      the devices and their state
@@ -11185,6 +11574,8 @@ This moves or stops a motor: add --yes to send it.</source>
                             defect 3 max_speed=800 or defect 4 alarm=0x07@2s
   defect ID clear           the drive has no defects again
   defects                   the drives&apos; defects
+  motor ID [KEY=VALUE ...]  show or change a DC controller&apos;s motor and load,
+                            e.g. motor 7 load=0.05 inertia=3e-4 (see --motor)
   unplug                    close the pty under its client (adapter pulled out)
   replug                    a new pty behind the same symlink
   quit                      stop the simulator</source>
@@ -11204,42 +11595,44 @@ This moves or stops a motor: add --yes to send it.</source>
                             defect 3 max_speed=800 または defect 4 alarm=0x07@2s
   defect ID clear           ドライバの不具合をなくす
   defects                   ドライバの不具合一覧
+  motor ID [KEY=VALUE ...]  DC コントローラのモータと負荷を表示・変更。例:
+                            motor 7 load=0.05 inertia=3e-4（--motor を参照）
   unplug                    クライアントの pty を閉じる（アダプタ抜去）
   replug                    同じシンボリックリンクの先に新しい pty を作成
   quit                      シミュレータを停止</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="63"/>
+        <location filename="../sim/SimConsole.cpp" line="66"/>
         <source>bye</source>
         <translation>終了します</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="68"/>
+        <location filename="../sim/SimConsole.cpp" line="71"/>
         <source>%1 needs the pty server (--pty)</source>
         <translation>%1 には pty サーバ (--pty) が必要です</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="79"/>
+        <location filename="../sim/SimConsole.cpp" line="82"/>
         <source>, defects: %1</source>
         <translation>、不具合: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="92"/>
+        <location filename="../sim/SimConsole.cpp" line="95"/>
         <source>no drive has defects</source>
         <translation>不具合のあるドライバはありません</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="98"/>
+        <location filename="../sim/SimConsole.cpp" line="101"/>
         <source>unknown command &apos;%1&apos;; type help for the list</source>
         <translation>不明なコマンド &apos;%1&apos;。help と入力すると一覧を表示します</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="102"/>
+        <location filename="../sim/SimConsole.cpp" line="105"/>
         <source>usage: %1 ID ...; ID is a machine number on the bus (%2)</source>
         <translation>使い方: %1 ID ...。ID はバス上の局番です (%2)</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="108"/>
+        <location filename="../sim/SimConsole.cpp" line="111"/>
         <source>&apos;%1&apos; is not a machine number; the bus has %2</source>
         <translation>&apos;%1&apos; は局番ではありません。バス上の局番: %2</translation>
     </message>
@@ -11405,6 +11798,10 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
                        nostick=PARAM         writes acknowledged, old value stays
                        nostore=PARAM         value lost at the next power cycle
                      e.g. --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
+  --motor LIST       the DC controllers&apos; motor and load, e.g. inertia=2e-4,load=0.05;
+                     supply (V), resistance (ohm), no_load (1/s at full duty),
+                     commutations (per revolution), inertia (kg m2), viscous
+                     (N m s/rad), coulomb (N m), load (N m), gate (ms), tacho (V s)
   --quiet            no frame trace on stderr
   --lang CODE        language of messages: en, zh_TW, zh_CN, ko, ja
   --help             this text
@@ -11436,6 +11833,10 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
                        nostick=PARAM         書込みに応答するが、旧値のまま
                        nostore=PARAM         次の電源再投入で値が消える
                      例: --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
+  --motor LIST       DC コントローラのモータと負荷。例: inertia=2e-4,load=0.05。
+                     supply (V)、resistance (ohm)、no_load（フルデューティ時の 1/s）、
+                     commutations（1 回転あたりの転流回数）、inertia (kg m2)、viscous
+                     (N m s/rad)、coulomb (N m)、load (N m)、gate (ms)、tacho (V s)
   --quiet            stderr にフレームトレースを出力しない
   --lang CODE        メッセージの言語: en, zh_TW, zh_CN, ko, ja
   --help             このテキスト
@@ -11446,72 +11847,82 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="81"/>
+        <location filename="../sim/SimOptions.cpp" line="85"/>
         <source>--lang needs a language code such as ko</source>
         <translation>--lang には ko などの言語コードが必要です</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="84"/>
+        <location filename="../sim/SimOptions.cpp" line="88"/>
         <source>--devices needs a device list such as dbu200@1,dcpid@7</source>
         <translation>--devices には dbu200@1,dcpid@7 のようなデバイスリストが必要です</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="93"/>
+        <location filename="../sim/SimOptions.cpp" line="97"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:5020</source>
         <translation>--tcp には HOST:PORT が必要です。例: 127.0.0.1:5020</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="99"/>
+        <location filename="../sim/SimOptions.cpp" line="103"/>
         <source>--tcp needs HOST:PORT with PORT 0..65535, got &apos;%1&apos;</source>
         <translation>--tcp には PORT が 0..65535 の HOST:PORT が必要です（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="111"/>
+        <location filename="../sim/SimOptions.cpp" line="115"/>
         <source>--baud must be one of %1, got &apos;%2&apos;</source>
         <translation>--baud は %1 のいずれかでなければなりません（指定値 &apos;%2&apos;）</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="118"/>
+        <location filename="../sim/SimOptions.cpp" line="122"/>
         <source>--parity must be N, E or O, got &apos;%1&apos;</source>
         <translation>--parity は N、E、O のいずれかでなければなりません（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="126"/>
+        <location filename="../sim/SimOptions.cpp" line="130"/>
         <source>--turnaround must be 0..1000 ms, got &apos;%1&apos;</source>
         <translation>--turnaround は 0..1000 ms でなければなりません（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="130"/>
+        <location filename="../sim/SimOptions.cpp" line="134"/>
         <source>--faults needs a list such as drop=0.02,crc=0.01</source>
         <translation>--faults には drop=0.02,crc=0.01 のようなリストが必要です</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="134"/>
+        <location filename="../sim/SimOptions.cpp" line="138"/>
         <source>--faults: %1</source>
         <translation>--faults: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="140"/>
+        <location filename="../sim/SimOptions.cpp" line="144"/>
         <source>--seed must be a whole number 0..4294967295, got &apos;%1&apos;</source>
         <translation>--seed は 0..4294967295 の整数でなければなりません（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="144"/>
+        <location filename="../sim/SimOptions.cpp" line="148"/>
         <source>--defect needs ID:DEFECT[,DEFECT...], e.g. 3:firmware=1.4; DEFECT: %1</source>
         <translation>--defect には ID:DEFECT[,DEFECT...] が必要です。例: 3:firmware=1.4。DEFECT: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="151"/>
+        <location filename="../sim/SimOptions.cpp" line="155"/>
         <source>--defect: %1</source>
         <translation>--defect: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="157"/>
-        <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --quiet, --help, --version</source>
-        <translation>不明な引数 &apos;%1&apos;。オプション: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --quiet, --help, --version</translation>
+        <location filename="../sim/SimOptions.cpp" line="159"/>
+        <source>--motor needs a list such as inertia=2e-4,load=0.05</source>
+        <translation>--motor には inertia=2e-4,load=0.05 のようなリストが必要です</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="164"/>
+        <location filename="../sim/SimOptions.cpp" line="163"/>
+        <source>--motor: %1</source>
+        <translation>--motor: %1</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimOptions.cpp" line="169"/>
+        <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
+        <translation>不明な引数 &apos;%1&apos;。オプション: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimOptions.cpp" line="177"/>
         <source>--devices SPEC is required, e.g. --devices dbu200@1,dcpid@7</source>
         <translation>--devices SPEC は必須です。例: --devices dbu200@1,dcpid@7</translation>
     </message>
@@ -11829,9 +12240,65 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>状態不明</translation>
     </message>
     <message>
-        <location filename="../ui/widgets/StatusLight.cpp" line="42"/>
+        <location filename="../ui/widgets/StatusLight.cpp" line="44"/>
         <source>Status light %1: %2</source>
         <translation>ステータスランプ %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/widgets/StatusLight.cpp" line="48"/>
+        <source>The drive&apos;s manual: %1</source>
+        <translation>ドライバのマニュアル: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StepMetrics</name>
+    <message>
+        <location filename="../model/tuning/StepMetrics.cpp" line="18"/>
+        <source>the step has no height (from = to)</source>
+        <translation>ステップ幅が 0 です（from = to）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/StepMetrics.cpp" line="19"/>
+        <source>too few samples after the step (%1)</source>
+        <translation>ステップ後のサンプルが少なすぎます (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StepTestPanel</name>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="22"/>
+        <source>Run step test…</source>
+        <translation>ステップ試験を実行…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="29"/>
+        <source>From:</source>
+        <translation>開始:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="30"/>
+        <source>To:</source>
+        <translation>終了:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="31"/>
+        <source>Record time:</source>
+        <translation>記録時間:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="32"/>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="75"/>
+        <source>Enter two different speeds of 0 %1 or more.</source>
+        <translation>0 %1 以上の異なる 2 つの速度を入力してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="79"/>
+        <source>Enter a record time of 100–60000 ms.</source>
+        <translation>記録時間を 100–60000 ms で入力してください。</translation>
     </message>
 </context>
 <context>
@@ -11989,22 +12456,22 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StopConfirmer</name>
     <message>
-        <location filename="../model/run/StopConfirmer.cpp" line="56"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="80"/>
         <source>%1 drives report neither running state nor speed</source>
         <translation>%1 ドライバは運転状態も速度も通知しません</translation>
     </message>
     <message>
-        <location filename="../model/run/StopConfirmer.cpp" line="86"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="111"/>
         <source>%1 is %2: the drive does not take motion commands over the bus (it follows its input terminals)</source>
         <translation>%1 は %2 です: ドライバはバス経由の運転コマンドを受け付けません（入力端子に従います）</translation>
     </message>
     <message>
-        <location filename="../model/run/StopConfirmer.cpp" line="140"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="185"/>
         <source>still at %1 after %2 s</source>
         <translation>%2 s 後も %1 のままです</translation>
     </message>
     <message>
-        <location filename="../model/run/StopConfirmer.cpp" line="142"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="187"/>
         <source>still running after %1 s</source>
         <translation>%1 s 後も運転中</translation>
     </message>
@@ -12542,7 +13009,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     </message>
     <message>
         <location filename="../transport/LibmodbusBackend.cpp" line="281"/>
-        <location filename="../transport/RtuBackend.cpp" line="145"/>
+        <location filename="../transport/RtuBackend.cpp" line="146"/>
         <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>応答が不完全です</translation>
@@ -12555,7 +13022,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     </message>
     <message>
         <location filename="../transport/LibmodbusBackend.cpp" line="293"/>
-        <location filename="../transport/RtuBackend.cpp" line="152"/>
+        <location filename="../transport/RtuBackend.cpp" line="153"/>
         <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>受信失敗</translation>
@@ -12632,77 +13099,72 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>リトライ %1 回は使用できません: 0–10、または既定値には -1 を使用してください。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="163"/>
+        <location filename="../transport/ModbusRequest.cpp" line="164"/>
+        <source>Function 0x%1 cannot be broadcast: only functions 06h and 10h (writes) may be sent to machine number 0; use slave address 1–247.</source>
+        <translation>ファンクション 0x%1 はブロードキャストできません: 局番 0 に送信できるのはファンクション 06h と 10h（書込み）のみです。スレーブアドレス 1–247 を使用してください。</translation>
+    </message>
+    <message>
+        <location filename="../transport/ModbusRequest.cpp" line="171"/>
         <source>Function code 0x%1 must be sent as a raw request.</source>
         <translation>ファンクションコード 0x%1 は raw 要求として送信する必要があります。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="167"/>
+        <location filename="../transport/ModbusRequest.cpp" line="175"/>
         <source>Raw request data of %1 bytes is too long: at most %2 bytes.</source>
         <translation>%1 バイトの raw 要求データは長すぎます: 最大 %2 バイトです。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="173"/>
-        <source>Device identification cannot be broadcast.</source>
-        <translation>デバイス識別はブロードキャストできません。</translation>
-    </message>
-    <message>
-        <location filename="../transport/ModbusRequest.cpp" line="183"/>
-        <source>A read cannot be broadcast: use slave address 1–247.</source>
-        <translation>読出しはブロードキャストできません: スレーブアドレス 1–247 を使用してください。</translation>
-    </message>
-    <message>
-        <location filename="../transport/ModbusRequest.cpp" line="186"/>
+        <location filename="../transport/ModbusRequest.cpp" line="188"/>
         <source>Cannot read %1 registers at once: use 1–125 registers.</source>
         <translation>%1 レジスタを一度に読み出せません: 1–125 レジスタを使用してください。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="193"/>
+        <location filename="../transport/ModbusRequest.cpp" line="195"/>
         <source>Write single register needs exactly 1 value, not %1.</source>
         <translation>単一レジスタ書込みには値が 1 つだけ必要です（%1 個ではなく）。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="199"/>
+        <location filename="../transport/ModbusRequest.cpp" line="201"/>
         <source>Cannot write %1 registers at once: use 1–123 registers.</source>
         <translation>%1 レジスタを一度に書き込めません: 1–123 レジスタを使用してください。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="204"/>
+        <location filename="../transport/ModbusRequest.cpp" line="206"/>
         <source>%1 values given for %2 registers.</source>
         <translation>%2 レジスタに対して %1 個の値が指定されています。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="213"/>
+        <location filename="../transport/ModbusRequest.cpp" line="215"/>
         <source>Registers %1 ×%2 run past the last address 0xFFFF.</source>
         <translation>レジスタ %1 ×%2 が最終アドレス 0xFFFF を超えています。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="224"/>
+        <location filename="../transport/ModbusRequest.cpp" line="226"/>
         <source>device identification code %1 object %2</source>
         <translation>デバイス識別 コード %1 オブジェクト %2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="232"/>
+        <location filename="../transport/ModbusRequest.cpp" line="234"/>
         <source>raw %1 %2</source>
         <translation>raw %1 %2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="236"/>
+        <location filename="../transport/ModbusRequest.cpp" line="238"/>
         <source>read %1 %2 ×%3</source>
         <translation>読出し %1 %2 ×%3</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="240"/>
+        <location filename="../transport/ModbusRequest.cpp" line="242"/>
         <source>write %1 %2 = %3</source>
         <translation>書込み %1 %2 = %3</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="243"/>
+        <location filename="../transport/ModbusRequest.cpp" line="245"/>
         <source>write %1 %2 ×%3 = %4</source>
         <translation>書込み %1 %2 ×%3 = %4</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="249"/>
+        <location filename="../transport/ModbusRequest.cpp" line="251"/>
         <source>broadcast %1</source>
         <translation>ブロードキャスト %1</translation>
     </message>
@@ -12857,7 +13319,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>%1 は %2 (PID %3) が使用中です。先に終了してください。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="82"/>
+        <location filename="../transport/RtuBackend.cpp" line="83"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -12866,17 +13328,17 @@ then log out and in again (the group applies to new sessions only).</source>
 ログアウトして再ログインしてください（グループは新しいセッションにのみ適用されます）。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="88"/>
+        <location filename="../transport/RtuBackend.cpp" line="89"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> (デバイスがこのパリティに対応していない可能性があります。pty は N が必要です)</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="123"/>
+        <location filename="../transport/RtuBackend.cpp" line="124"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>応答が %1 バイトを示していますが、RTU フレームの最大長を超えています</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="144"/>
+        <location filename="../transport/RtuBackend.cpp" line="145"/>
         <source>no reply</source>
         <translation>応答なし</translation>
     </message>
@@ -13169,6 +13631,820 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::TuneCommand</name>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="80"/>
+        <source>Speed-loop step test and relay autotune of a DC controller (needs --yes)</source>
+        <translation>DC コントローラの速度ループのステップ試験とリレーオートチューニング（--yes が必要）</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="86"/>
+        <source>Run the test (it moves the motor).</source>
+        <translation>試験を実行します（モータが動きます）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="87"/>
+        <source>step: speed before the step (default 0).</source>
+        <translation>step: ステップ前の速度（既定 0）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="87"/>
+        <location filename="../cli/TuneCommand.cpp" line="88"/>
+        <location filename="../cli/TuneCommand.cpp" line="91"/>
+        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <source>SPEED</source>
+        <translation>SPEED</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="88"/>
+        <source>step: speed after the step.</source>
+        <translation>step: ステップ後の速度。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="89"/>
+        <source>step: record this long after the step (default 1500).</source>
+        <translation>step: ステップ後に記録する時間（既定 1500）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="90"/>
+        <source>MS</source>
+        <translation>MS</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="91"/>
+        <source>autotune: operating speed of the relay test.</source>
+        <translation>autotune: リレー試験の運転速度。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="92"/>
+        <source>autotune: output swing, % of full output (default 10).</source>
+        <translation>autotune: 出力の振り幅。フル出力に対する %（既定 10）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="93"/>
+        <source>PERCENT</source>
+        <translation>PERCENT</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="95"/>
+        <source>autotune: soft, medium (default), stiff, tyreus-luyben or zn-pi.</source>
+        <translation>autotune: soft、medium（既定）、stiff、tyreus-luyben、zn-pi のいずれか。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="95"/>
+        <source>RULE</source>
+        <translation>RULE</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="96"/>
+        <source>autotune: write the proposed gains, then run a step test from half the operating speed to it.</source>
+        <translation>autotune: 提案ゲインを書き込み、運転速度の半分から運転速度までのステップ試験を実行します。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="98"/>
+        <source>autotune: with --accept, store the gains in the drive.</source>
+        <translation>autotune: --accept と併用すると、ゲインをドライバに保存します。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <source>Stop at once beyond this speed (default 120 % of the test&apos;s highest).</source>
+        <translation>速度がこの値を超えたら直ちに停止します（既定: 試験の最高速度の 120 %）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="101"/>
+        <source>Stop at once beyond this current in A (default 20).</source>
+        <translation>電流がこの値 (A) を超えたら直ちに停止します（既定 20）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="102"/>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <source>Write the samples to FILE.</source>
+        <translation>サンプルを FILE に書き出します。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <source>FILE</source>
+        <translation>FILE</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="117"/>
+        <source>error: usage: %1</source>
+        <translation>エラー: 使い方: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="127"/>
+        <source>error: --%1 must be a number 0 or more, got &apos;%2&apos;</source>
+        <translation>エラー: --%1 は 0 以上の数値でなければなりません（指定値 &apos;%2&apos;）</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="149"/>
+        <location filename="../cli/TuneCommand.cpp" line="160"/>
+        <location filename="../cli/TuneCommand.cpp" line="165"/>
+        <location filename="../cli/TuneCommand.cpp" line="319"/>
+        <source>error: %1</source>
+        <translation>エラー: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="150"/>
+        <source>step needs --to SPEED</source>
+        <translation>step には --to SPEED が必要です</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="151"/>
+        <source>--rule must be one of %1</source>
+        <translation>--rule は %1 のいずれかでなければなりません</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="153"/>
+        <source>autotune needs --speed SPEED</source>
+        <translation>autotune には --speed SPEED が必要です</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="169"/>
+        <source>Would run the motor of machine number %1 from %2 to %3 and record the step response.</source>
+        <translation>局番 %1 のモータを %2 から %3 へ運転し、ステップ応答を記録します。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="174"/>
+        <source>Would run the motor of machine number %1 in a relay test around %2 (output ±%3 %).</source>
+        <translation>局番 %1 のモータを %2 付近でリレー試験運転します（出力 ±%3 %）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="180"/>
+        <source>This moves the motor: add --yes to run it.</source>
+        <translation>モータが動きます: 実行するには --yes を付けてください。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="229"/>
+        <source>Machine number %1, gains %2</source>
+        <translation>局番 %1、ゲイン %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="231"/>
+        <source>  rise time (10–90 %): %1</source>
+        <translation>  立ち上がり時間 (10–90 %): %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="232"/>
+        <source>  overshoot: %1 %</source>
+        <translation>  オーバーシュート: %1 %</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="233"/>
+        <source>  settling time (2 %): %1</source>
+        <translation>  整定時間 (2 %): %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="234"/>
+        <source>  steady-state error: %1 %2</source>
+        <translation>  定常偏差: %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="235"/>
+        <source>  peak current: %1 A</source>
+        <translation>  ピーク電流: %1 A</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="249"/>
+        <source>Step %1 → %2 %3:</source>
+        <translation>ステップ %1 → %2 %3:</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="253"/>
+        <source>Relay test: Ku %1, Tu %2 ms (amplitude ±%3 %4, %5 cycles)</source>
+        <translation>リレー試験: Ku %1、Tu %2 ms（振幅 ±%3 %4、%5 周期）</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="259"/>
+        <source>Model: gain %1, time constant %2 ms, dead time %3 ms (the bus&apos;s %4 ms left out)</source>
+        <translation>モデル: ゲイン %1、時定数 %2 ms、むだ時間 %3 ms（バスの %4 ms は除外）</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="265"/>
+        <source>Proposed (%1): %2</source>
+        <translation>提案値 (%1): %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="281"/>
+        <source>Writing the proposed gains failed: %1</source>
+        <translation>提案ゲインの書込みに失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="284"/>
+        <source>Proposed gains written (not stored).</source>
+        <translation>提案ゲインを書き込みました（未保存）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="287"/>
+        <source>Measured step %1 → %2 %3 with them:</source>
+        <translation>このゲインで測定したステップ %1 → %2 %3:</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="303"/>
+        <source>Gains stored in the drive.</source>
+        <translation>ゲインをドライバに保存しました。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="304"/>
+        <source>Storing the gains failed: %1</source>
+        <translation>ゲインの保存に失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="311"/>
+        <source>Test ended: %1</source>
+        <translation>試験終了: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningChart</name>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="40"/>
+        <source>Time (ms)</source>
+        <translation>時間 (ms)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="44"/>
+        <source>Current (A)</source>
+        <translation>電流 (A)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="61"/>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="61"/>
+        <source>Speed (%1)</source>
+        <translation>速度 (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningGains</name>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="43"/>
+        <source>Writing the gains failed: %1</source>
+        <translation>ゲインの書込みに失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="62"/>
+        <source>Proposal written (temporary until stored).</source>
+        <translation>提案値を書き込みました（保存するまでは一時的）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="83"/>
+        <source>%1: the gains before were written back (%2).</source>
+        <translation>%1: 元のゲインを書き戻しました (%2)。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="102"/>
+        <source>Gains stored in the drive.</source>
+        <translation>ゲインをドライバに保存しました。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="104"/>
+        <source>Storing the gains failed: %1</source>
+        <translation>ゲインの保存に失敗しました: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningLimitsBox</name>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="12"/>
+        <source>Limits</source>
+        <translation>制限値</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="17"/>
+        <source>Beyond it the motor is stopped at once. Empty: 125 % of the step test&apos;s highest speed, 150 % of the autotune&apos;s speed</source>
+        <translation>この値を超えるとモータを即時停止します。空欄: ステップ試験の最高速度の 125 %、オートチューニング速度の 150 %</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="19"/>
+        <source>Beyond it the motor is stopped at once. Empty: 1.2 × the drive&apos;s maximum current</source>
+        <translation>この値を超えるとモータを即時停止します。空欄: 1.2 × ドライバの最大電流</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="22"/>
+        <source>Max. speed:</source>
+        <translation>最高速度:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="23"/>
+        <source>Max. current:</source>
+        <translation>最大電流:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="24"/>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="37"/>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="39"/>
+        <source>auto: %1</source>
+        <translation>自動: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="39"/>
+        <source>none</source>
+        <translation>なし</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="48"/>
+        <source>Enter a speed limit above 0 %1, or leave it empty.</source>
+        <translation>0 %1 より大きい速度制限値を入力するか、空欄にしてください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="52"/>
+        <source>Enter a current limit above 0 A, or leave it empty.</source>
+        <translation>0 A より大きい電流制限値を入力するか、空欄にしてください。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningMetricsView</name>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="25"/>
+        <source>Rise time (10–90 %):</source>
+        <translation>立ち上がり時間 (10–90 %):</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="26"/>
+        <source>Overshoot:</source>
+        <translation>オーバーシュート:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="27"/>
+        <source>Settling time (2 %):</source>
+        <translation>整定時間 (2 %):</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="28"/>
+        <source>Steady-state error:</source>
+        <translation>定常偏差:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="29"/>
+        <source>Peak current:</source>
+        <translation>ピーク電流:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="40"/>
+        <source>No run yet</source>
+        <translation>まだ実行していません</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="41"/>
+        <source>%1: recording</source>
+        <translation>%1: 記録中</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="44"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="52"/>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="55"/>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="53"/>
+        <source>not reached</source>
+        <translation>未到達</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="54"/>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="56"/>
+        <source>not settled</source>
+        <translation>未整定</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="57"/>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="58"/>
+        <source>%1 A</source>
+        <translation>%1 A</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="63"/>
+        <source>Rise time %1; overshoot %2; settling time %3; steady-state error %4; peak current %5</source>
+        <translation>立ち上がり時間 %1、オーバーシュート %2、整定時間 %3、定常偏差 %4、ピーク電流 %5</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningPage</name>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="41"/>
+        <source>STOP</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="52"/>
+        <source>Cancels the running test: the motor is stopped and the stop confirmed</source>
+        <translation>実行中の試験を中止します: モータを停止し、停止を確認します</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="68"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="245"/>
+        <source>Step test</source>
+        <translation>ステップ試験</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="69"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <source>Relay autotune</source>
+        <translation>リレーオートチューニング</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="107"/>
+        <source>Ready. Nothing moves until you confirm a test.</source>
+        <translation>準備完了。試験を確認するまでモータは動きません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="198"/>
+        <source>Could not read the speed mode: %1</source>
+        <translation>速度モードを読み出せませんでした: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="201"/>
+        <source>The drive is not in a closed-loop speed mode (now: %1). Choose one on its settings page first.</source>
+        <translation>ドライバが閉ループ速度モードではありません（現在: %1）。先に設定ページで閉ループモードを選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="224"/>
+        <source>Limits: %1 %2, %3.</source>
+        <translation>制限値: %1 %2、%3。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="226"/>
+        <source>%1 A</source>
+        <translation>%1 A</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="226"/>
+        <source>no current limit</source>
+        <translation>電流制限なし</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="241"/>
+        <source>The motor of %1 will run from %2 to %3 %4 in its present speed mode, for about %5 s, and then stop.</source>
+        <translation>%1 のモータが現在の速度モードで %2 から %3 %4 まで約 %5 s 運転し、その後停止します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="245"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <source>Run</source>
+        <translation>実行</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="261"/>
+        <source>The motor of %1 will run in open loop (the speed loop off) around %2 %3, its output switching by ±%4 %, for up to %5 s, and then stop.</source>
+        <translation>%1 のモータが開ループ（速度ループ無効）で %2 %3 付近を運転し、出力を ±%4 % で切り替えます。最大 %5 s 後に停止します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="283"/>
+        <source>Stop command sent.</source>
+        <translation>停止コマンドを送信しました。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="284"/>
+        <source>Stop command failed: %1</source>
+        <translation>停止コマンドが失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="294"/>
+        <source>Stopping…</source>
+        <translation>停止中…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="308"/>
+        <source>Run %1: %2 → %3 %4</source>
+        <translation>実行 %1: %2 → %3 %4</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="343"/>
+        <source>Step test done.</source>
+        <translation>ステップ試験が完了しました。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="343"/>
+        <source>Step test ended: %1</source>
+        <translation>ステップ試験終了: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="347"/>
+        <source>The test was stopped</source>
+        <translation>試験が停止されました</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="380"/>
+        <source>Autotune ended: %1</source>
+        <translation>オートチューニング終了: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="382"/>
+        <source>The autotune was stopped</source>
+        <translation>オートチューニングが停止されました</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="392"/>
+        <source>Predicted: %1 → %2 %3</source>
+        <translation>予測: %1 → %2 %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="400"/>
+        <source>Autotune done: proposal %1. Accept writes it to the drive.</source>
+        <translation>オートチューニング完了: 提案値 %1。採用するとドライバに書き込みます。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="434"/>
+        <source>Proposal rejected; the drive&apos;s gains were not changed.</source>
+        <translation>提案値を却下しました。ドライバのゲインは変更していません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="438"/>
+        <source>Proposal rejected</source>
+        <translation>提案値を却下</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRules</name>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="60"/>
+        <source>Soft (no overshoot)</source>
+        <translation>ソフト（オーバーシュートなし）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="62"/>
+        <source>Medium (some overshoot)</source>
+        <translation>標準（若干のオーバーシュート）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="64"/>
+        <source>Stiff (Ziegler–Nichols)</source>
+        <translation>高剛性（Ziegler–Nichols）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="66"/>
+        <source>Tyreus–Luyben (robust)</source>
+        <translation>Tyreus–Luyben（ロバスト）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="68"/>
+        <source>PI only (Ziegler–Nichols)</source>
+        <translation>PI のみ（Ziegler–Nichols）</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRunCsv</name>
+    <message>
+        <location filename="../ui/tuning/TuningRunCsv.cpp" line="66"/>
+        <source>could not write %1: %2</source>
+        <translation>%1 に書き込めません: %2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRunList</name>
+    <message>
+        <location filename="../ui/tuning/TuningRunList.cpp" line="14"/>
+        <source>Run</source>
+        <translation>実行</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunList.cpp" line="14"/>
+        <source>Gains</source>
+        <translation>ゲイン</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunList.cpp" line="43"/>
+        <source>%1 (recording)</source>
+        <translation>%1（記録中）</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunList.cpp" line="45"/>
+        <source>P %1 · I %2 · D %3</source>
+        <translation>P %1 · I %2 · D %3</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRunner</name>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="183"/>
+        <source>a tuning test is already running</source>
+        <translation>チューニング試験がすでに実行中です</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="191"/>
+        <source>Reading the drive&apos;s settings</source>
+        <translation>ドライバの設定を読出し中</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="199"/>
+        <source>could not read the drive&apos;s settings: %1</source>
+        <translation>ドライバの設定を読み出せませんでした: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="224"/>
+        <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
+        <translation>ドライバが閉ループ速度モードではありません: 先に %1 (%2) を %3 に設定してください</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="226"/>
+        <source> or </source>
+        <translation> または </translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="241"/>
+        <source>Setting the communication-loss braking time to %1 s</source>
+        <translation>通信断停止時間を %1 s に設定中</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="265"/>
+        <source>the drive stopped answering: %1</source>
+        <translation>ドライバが応答しなくなりました: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="283"/>
+        <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
+        <translation>速度 %1 %2 が試験の制限値 %3 %2 を超えました: 即時停止</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="290"/>
+        <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
+        <translation>電流 %1 A が試験の制限値 %2 A を超えました: 即時停止</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="296"/>
+        <source>cancelled</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="356"/>
+        <source>Stopping the motor</source>
+        <translation>モータを停止中</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="362"/>
+        <source>motor stopped (confirmed)</source>
+        <translation>モータ停止（確認済み）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="363"/>
+        <source>the motor could not be confirmed stopped: check it</source>
+        <translation>モータの停止を確認できません: モータを点検してください</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="398"/>
+        <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
+        <translation>ステップ試験はある速度から別の速度へ正転で行います: 開始速度と目標速度は異なる値で、0 以上でなければなりません</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="405"/>
+        <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
+        <translation>%1 %2 は試験の速度制限値 %3 %2 を超えています</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="413"/>
+        <source>Running to %1 %2</source>
+        <translation>%1 %2 まで運転中</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="449"/>
+        <source>Step to %1 %2</source>
+        <translation>%1 %2 へステップ</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="477"/>
+        <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
+        <translation>運転速度は 0 より大きく、試験の速度制限値 %1 %2 より小さくなければなりません</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="484"/>
+        <source>the relay amplitude must be 0–50 % of full output</source>
+        <translation>リレー振幅は最大出力の 0–50 % でなければなりません</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="487"/>
+        <source>Open loop: finding the output for %1 %2</source>
+        <translation>開ループ: %1 %2 に必要な出力を探索中</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="536"/>
+        <source>the motor did not turn at %1 % output</source>
+        <translation>出力 %1 % でモータが回転しませんでした</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="572"/>
+        <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
+        <translation>運転速度には出力 %1 % が必要です: その上下に ±%2 % の余裕がありません</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="577"/>
+        <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
+        <translation>%1 %2 付近でリレー試験中 (出力 %3 % ± %4 %)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="611"/>
+        <source>no steady oscillation within %1 s: %2</source>
+        <translation>%1 s 以内に安定した振動が得られませんでした: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="613"/>
+        <source>try a larger amplitude</source>
+        <translation>振幅を大きくしてみてください</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRunsView</name>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="36"/>
+        <source>Save CSV…</source>
+        <translation>CSV を保存…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="37"/>
+        <source>Save PNG…</source>
+        <translation>PNG を保存…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="42"/>
+        <source>Saves the selected run: its samples, gains and metrics</source>
+        <translation>選択した実行結果を保存します: サンプル、ゲイン、指標</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="43"/>
+        <source>Saves the chart as it is shown</source>
+        <translation>表示どおりにグラフを保存します</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
+        <source>solid: speed · dotted: command · dash-dot: current (right axis) · dashed: predicted speed</source>
+        <translation>実線: 速度 · 点線: 指令 · 一点鎖線: 電流（右軸） · 破線: 予測速度</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="161"/>
+        <source>no run to save</source>
+        <translation>保存する実行結果がありません</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="174"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="178"/>
+        <source>Save run as CSV</source>
+        <translation>実行結果を CSV で保存</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="175"/>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV ファイル (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="183"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <source>Save chart as PNG</source>
+        <translation>グラフを PNG で保存</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="184"/>
+        <source>PNG images (*.png)</source>
+        <translation>PNG 画像 (*.png)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <source>Could not write %1.</source>
+        <translation>%1 に書き込めませんでした。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningSpec</name>
+    <message>
+        <location filename="../model/tuning/TuningSpec.cpp" line="23"/>
+        <source>%1 has no speed loop to tune</source>
+        <translation>%1 にはチューニングする速度ループがありません</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningSpec.cpp" line="51"/>
+        <source>%1: the profile&apos;s tuning needs the roles pidP, pidI, pidD, pidDPeriod, pidStore, speedMode, speedCommand, commLossTime, loadCurrent and output</source>
+        <translation>%1: プロファイルのチューニングにはロール pidP、pidI、pidD、pidDPeriod、pidStore、speedMode、speedCommand、commLossTime、loadCurrent、output が必要です</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningSpec.cpp" line="60"/>
+        <source>%1: the profile&apos;s tuning section needs periodMs ≥ 1, outputFullScale &gt; 0, openLoopMode and closedLoopModes with known feedback parameters</source>
+        <translation>%1: プロファイルのチューニングセクションには periodMs ≥ 1、outputFullScale &gt; 0、openLoopMode、およびフィードバックパラメータが既知の closedLoopModes が必要です</translation>
+    </message>
+</context>
+<context>
     <name>opentop::UnitRecordJson</name>
     <message>
         <location filename="../model/eol/UnitRecordJson.cpp" line="105"/>
@@ -13320,98 +14596,104 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ValueCodec</name>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="130"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="202"/>
         <source>depends on %1, which is not known yet</source>
         <translation>%1 に依存しますが、まだ不明です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="132"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="204"/>
         <source>text of up to %1 characters</source>
         <translation>最大 %1 文字のテキスト</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="142"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="178"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="214"/>
         <source> or </source>
         <translation> または </translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="150"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="193"/>
+        <source>%1: %2 is outside the recommended range %3; it is allowed and will be written</source>
+        <translation>%1: %2 は推奨範囲 %3 外です。許容される値のため書き込みます</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueCodec.cpp" line="222"/>
         <source>, or </source>
         <translation>、または </translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="151"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="223"/>
         <source>any value</source>
         <translation>任意の値</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="167"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="239"/>
         <source> (the variant is not known, so the value must suit %1; name the variant to use its own range)</source>
         <translation> (機種が不明なため、値は %1 に適合する必要があります。機種を指定するとその機種の範囲を使用します)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="177"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="249"/>
         <source>%1: the allowed values depend on %2, which has not been read</source>
         <translation>%1: 許容値が依存する %2 をまだ読み出していません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="182"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="254"/>
         <source>%1: value out of the register&apos;s range; allowed: %2</source>
         <translation>%1: 値がレジスタの範囲外です。許容値: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="194"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="266"/>
         <source>%1: %2 is not allowed; allowed: %3</source>
         <translation>%1: %2 は許可されていません。許容値: %3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="206"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="278"/>
         <source>%1: expected %2 registers, got %3</source>
         <translation>%1: %2 レジスタが必要ですが、%3 レジスタでした</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="244"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="316"/>
         <source>%1 is text, not a number</source>
         <translation>%1 はテキストで、数値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="257"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="329"/>
         <source>%1: %2 is finer than the step of %3 %4; allowed: %5</source>
         <translation>%1: %2 は %3 %4 の刻みより細かい値です。許容値: %5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="288"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="362"/>
         <source>%1: at most %2 characters</source>
         <translation>%1: 最大 %2 文字</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="294"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="368"/>
         <source>%1: only printable ASCII characters are allowed</source>
         <translation>%1: 印字可能な ASCII 文字のみ使用できます</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="306"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="380"/>
         <source>%1: no value given; allowed: %2</source>
         <translation>%1: 値が指定されていません。許容値: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="346"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="420"/>
         <source>%1: &quot;%2&quot; is only available when %3 is %4; allowed now: %5</source>
         <translation>%1: &quot;%2&quot; は %3 が %4 の場合のみ使用できます。現在の許容値: %5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="359"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="379"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="433"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="453"/>
         <source>%1: &quot;%2&quot; is not a valid value; allowed: %3</source>
         <translation>%1: &quot;%2&quot; は有効な値ではありません。許容値: %3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="405"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="479"/>
         <source>(invalid)</source>
         <translation>（無効）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="416"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="490"/>
         <source>unknown code %1</source>
         <translation>不明なコード %1</translation>
     </message>

@@ -255,144 +255,189 @@
         <translation>응답 없음</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="47"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="48"/>
         <source>top level</source>
         <translation>최상위</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="50"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="51"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot;는 1이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="59"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="61"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot;는 소문자 ID여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="69"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="71"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity는 N, E, O 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="73"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="75"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial: baud는 1200–115200, stopBits는 1 또는 2여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="89"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="81"/>
+        <source>serial.powerOnDelayMs must be 0–60000</source>
+        <translation>serial.powerOnDelayMs는 0–60000이어야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="95"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits: maxReadRegisters는 1–125, maxWriteRegisters는 1–123</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="91"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="97"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits: slaves는 1–247 범위여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="106"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="112"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1]에는 id, model, label이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="108"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="114"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]: id &quot;%2&quot;가 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="119"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="125"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1]에는 고유한 id와 label이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="130"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="136"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1]에는 function 3 또는 4와 first ≤ last가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="174"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="180"/>
         <source>%1 has no name</source>
         <translation>%1에 이름이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="176"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="182"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1: reset은 %2 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="179"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="185"/>
         <source>%1: code %2 repeated</source>
         <translation>%1: 코드 %2가 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="201"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="207"/>
         <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
         <translation>%1: storeWith &quot;%2&quot;은(는) 명령 파라미터가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="204"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="210"/>
         <source>%1: the default is not among its allowed values</source>
         <translation>%1: 기본값이 허용 값에 포함되지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="208"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="214"/>
         <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
         <translation>%1: 비트 필드 &quot;%2&quot;: 기능 &quot;%3&quot;은(는) 읽을 수 있는 파라미터가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="215"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="221"/>
         <source>%1: condition on unknown parameter &quot;%2&quot;</source>
         <translation>%1: 알 수 없는 파라미터 &quot;%2&quot;에 대한 조건</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="217"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="223"/>
         <source>%1: the default is not allowed when %2</source>
         <translation>%1: %2일 때는 기본값이 허용되지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="227"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
         <source>%1 runs past address 0xFFFF</source>
         <translation>%1이(가) 주소 0xFFFF를 넘어갑니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="230"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="236"/>
         <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
         <translation>%1이(가) 0x%3에서 &quot;%2&quot;와(과) 겹칩니다(레지스터 %4개)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="254"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="260"/>
         <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
         <translation>identify: &quot;%1&quot;은(는) identify 읽기 범위 안의 파라미터여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="257"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="263"/>
         <source>identify.nameMatch is not a valid regular expression</source>
         <translation>identify.nameMatch가 올바른 정규식이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="269"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1: 알 수 없는 파라미터 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="297"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="303"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1은(는) 파라미터 이름, 이름 목록 또는 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="306"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="312"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1: &quot;%2&quot;에 비트 필드 &quot;%3&quot;이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="312"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="318"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1: %2은(는) &quot;%3&quot;에 쓸 수 있는 값이 아닙니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="336"/>
+        <source>decelerationKnobs need the &quot;selected&quot; role</source>
+        <translation>decelerationKnobs에는 &quot;selected&quot; 역할이 필요합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="352"/>
+        <source>%1 needs &quot;selected&quot; and &quot;maxSeconds&quot;</source>
+        <translation>%1에는 &quot;selected&quot;와 &quot;maxSeconds&quot;가 필요합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="355"/>
+        <source>%1: &quot;selected&quot; %2 is not a value of the &quot;selected&quot; role, or repeated</source>
+        <translation>%1: &quot;selected&quot; %2은(는) &quot;selected&quot; 역할의 값이 아니거나 중복됩니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="360"/>
+        <source>%1: &quot;maxSeconds&quot; must be more than 0 and at most 600</source>
+        <translation>%1: &quot;maxSeconds&quot;는 0보다 크고 600 이하여야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="392"/>
+        <source>%1: &quot;light&quot; must be one of %2, each once</source>
+        <translation>%1: &quot;light&quot;는 %2 중 하나여야 하며 각각 한 번만 쓸 수 있습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="395"/>
+        <source>%1: &quot;colour&quot; must be #rrggbb</source>
+        <translation>%1: &quot;colour&quot;는 #rrggbb 형식이어야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="397"/>
+        <source>%1: &quot;label&quot; and &quot;meaning&quot; must not be empty</source>
+        <translation>%1: &quot;label&quot;과 &quot;meaning&quot;은 비어 있으면 안 됩니다</translation>
     </message>
     <message>
         <location filename="../model/i18n/ProfileTranslation.cpp" line="56"/>
         <source> and %1 more</source>
         <translation> 외 %1개</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="26"/>
+        <source>not reached</source>
+        <translation>도달하지 않음</translation>
     </message>
 </context>
 <context>
@@ -1005,6 +1050,134 @@ Remedy: %5</source>
         <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
         <source>Erasing failed: %1</source>
         <translation>삭제 실패: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::AutotunePanel</name>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="24"/>
+        <source>Autotune…</source>
+        <translation>오토튜닝…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="27"/>
+        <source>Accept</source>
+        <translation>수락</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="28"/>
+        <source>Reject</source>
+        <translation>거부</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="29"/>
+        <source>Store in the drive</source>
+        <translation>드라이버에 저장</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="43"/>
+        <source>Writes the proposed gains to the drive (temporary until stored) and offers a step test to compare with the prediction</source>
+        <translation>제안된 게인을 드라이버에 쓰고(저장하기 전까지는 임시), 예측과 비교할 스텝 시험을 제안합니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="45"/>
+        <source>Writes back the gains the drive had before</source>
+        <translation>드라이버의 이전 게인을 다시 씁니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="46"/>
+        <source>Stores the gains in the drive so that they survive a power cycle</source>
+        <translation>전원 재투입 후에도 유지되도록 게인을 드라이버에 저장합니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="51"/>
+        <source>Operating speed:</source>
+        <translation>운전 속도:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="52"/>
+        <source>Relay amplitude:</source>
+        <translation>릴레이 진폭:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="53"/>
+        <source>%</source>
+        <translation>%</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="54"/>
+        <source>Rule:</source>
+        <translation>튜닝 규칙:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="58"/>
+        <source>Present</source>
+        <translation>현재</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="59"/>
+        <source>Proposed</source>
+        <translation>제안</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <source>P</source>
+        <translation>P</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <source>I</source>
+        <translation>I</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <source>D</source>
+        <translation>D</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <source>D period</source>
+        <translation>D 주기</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="106"/>
+        <source>Enter an operating speed above 0 %1.</source>
+        <translation>0 %1보다 큰 운전 속도를 입력하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="110"/>
+        <source>Enter a relay amplitude of 1–50 %.</source>
+        <translation>릴레이 진폭을 1–50 %로 입력하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="123"/>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="138"/>
+        <source>No autotune result yet.</source>
+        <translation>아직 오토튜닝 결과가 없습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="146"/>
+        <source>Autotune failed: %1</source>
+        <translation>오토튜닝 실패: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="155"/>
+        <source>Ku %1 %/%2, Tu %3 ms</source>
+        <translation>Ku %1 %/%2, Tu %3 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="158"/>
+        <source>Model: K %1 %2/%, τ %3 ms, dead time %4 ms</source>
+        <translation>모델: K %1 %2/%, τ %3 ms, 무효 시간 %4 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="163"/>
+        <source>No model: %1</source>
+        <translation>모델 없음: %1</translation>
     </message>
 </context>
 <context>
@@ -1690,17 +1863,22 @@ Drives: %5</source>
         <translation>상태등 %1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="162"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="163"/>
+        <source>The drive&apos;s manual: %1</source>
+        <translation>드라이버 매뉴얼: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="166"/>
         <source>Status light grey: not live — %1</source>
         <translation>상태등 회색: 실시간 아님 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="167"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="171"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>드라이버가 기종을 알려주지 않습니다. 올바른 한계값으로 값을 검사하도록 컨텍스트 메뉴(기종)에서 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="176"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="180"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>드라이버가 I/O 단자로 운전 명령을 받고 있습니다. 버스를 통한 시운전에는 통신 우선이 필요합니다.</translation>
     </message>
@@ -1792,142 +1970,147 @@ Drives: %5</source>
 <context>
     <name>opentop::BusPanel</name>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="32"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="33"/>
         <source>&amp;Scan</source>
         <translation>스캔(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="35"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="36"/>
         <source>A&amp;dd drive…</source>
         <translation>드라이버 추가(&amp;D)…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="37"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="38"/>
         <source>Ca&amp;ncel</source>
         <translation>취소(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="46"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="47"/>
         <source>Ask every machine number of the range who answers</source>
         <translation>범위 안의 모든 국번에 응답 여부를 묻습니다</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="48"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="49"/>
         <source>&amp;from</source>
         <translation>시작(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="50"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="51"/>
         <source>&amp;to</source>
         <translation>끝(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="55"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="56"/>
         <source>Machine numbers 1–247 (the DBU&apos;s SW1/SW2 switches in hex)</source>
         <translation>국번 1–247 (DBU의 SW1/SW2 스위치는 16진수)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="72"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="73"/>
         <source>Identify one machine number and add it to the list</source>
         <translation>국번 하나를 식별하여 목록에 추가합니다</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="77"/>
-        <location filename="../ui/bus/BusPanel.cpp" line="182"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="78"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="194"/>
         <source>%v of %m</source>
         <translation>%m 중 %v</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="78"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="79"/>
         <source>Scan progress</source>
         <translation>스캔 진행</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="80"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="81"/>
         <source>Stop the scan after the request on the wire</source>
         <translation>전송 중인 요청이 끝나면 스캔을 멈춥니다</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="113"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="90"/>
+        <source>Rescan at %1</source>
+        <translation>%1(으)로 다시 스캔</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="124"/>
         <source>Drives on the bus</source>
         <translation>버스의 드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="173"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="185"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%m 중 %v (국번 %1)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="183"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="195"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>%3에서 국번 %1–%2 스캔 중, 국번당 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="202"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="214"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>전송 중인 요청이 끝나면 취소합니다…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="219"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="231"/>
         <source>Did not answer the last scan.</source>
         <translation>마지막 스캔에서 응답하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="225"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="237"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>국번 %1에서 스캔이 멈췄습니다: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="230"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="242"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>국번 %1–%2 스캔 후 취소됨(%4 중 %3): 드라이버 %n대 발견.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="238"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="250"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>국번 %1–%2에서 드라이버 %n대 발견(%3 s).</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="254"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="275"/>
         <source>Add drive</source>
         <translation>드라이버 추가</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="254"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="275"/>
         <source>Machine number (1–247; the DBU shows it in hex on SW1/SW2):</source>
         <translation>국번 (1–247; DBU에서는 SW1/SW2에 16진수로 표시):</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="264"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="285"/>
         <source>Asking machine number %1…</source>
         <translation>국번 %1에 묻는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="269"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="290"/>
         <source>Machine number %1: %2 added.</source>
         <translation>국번 %1: %2 추가됨.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="271"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="292"/>
         <source>Machine number %1: %2 %3</source>
         <translation>국번 %1: %2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="329"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="350"/>
         <source>&amp;Variant</source>
         <translation>기종(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="345"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="366"/>
         <source>&amp;Identify again</source>
         <translation>다시 식별(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="351"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="372"/>
         <source>&amp;Remove from list</source>
         <translation>목록에서 제거(&amp;R)</translation>
     </message>
@@ -3233,232 +3416,237 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::DcControllerPage</name>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="41"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="42"/>
         <source>DC controller</source>
         <translation>DC 컨트롤러</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="44"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="45"/>
         <source>Re&amp;load stored configuration</source>
         <translation>저장된 설정 다시 불러오기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="66"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="67"/>
         <source>Store &amp;configuration</source>
         <translation>설정 저장(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="67"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="68"/>
         <source>Store P&amp;ID</source>
         <translation>PID 저장(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="68"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="69"/>
         <source>Store pre&amp;set</source>
         <translation>프리셋 저장(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="71"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="72"/>
         <source>Writes %1 = 1: %2</source>
         <translation>%1 = 1 쓰기: %2</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="76"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="77"/>
         <source>Writes store.config = 0: the controller reloads the stored configuration; unstored configuration changes are discarded</source>
         <translation>store.config = 0 쓰기: 컨트롤러가 저장된 설정을 다시 불러옵니다. 저장하지 않은 설정 변경은 버려집니다</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="83"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="84"/>
         <source>Speed mode and motor currents</source>
         <translation>속도 모드와 모터 전류</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="84"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="85"/>
         <source>Speed &amp;mode:</source>
         <translation>속도 모드(&amp;M):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="85"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="86"/>
         <source>Rated current:</source>
         <translation>정격 전류:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="86"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="87"/>
         <source>Maximum start/load current:</source>
         <translation>최대 기동/부하 전류:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="87"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="88"/>
         <source>Brake current:</source>
         <translation>브레이크 전류:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="89"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="90"/>
         <source>Limit switches</source>
         <translation>리밋 스위치</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="90"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="91"/>
         <source>Limits:</source>
         <translation>리밋:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="91"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="92"/>
         <source>SQ1 active level (forward):</source>
         <translation>SQ1 동작 레벨 (정회전):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="92"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="93"/>
         <source>SQ2 active level (reverse):</source>
         <translation>SQ2 동작 레벨 (역회전):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="94"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="95"/>
         <source>Protective stops (0 = off)</source>
         <translation>보호 정지 (0 = 사용 안 함)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="95"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="96"/>
         <source>S&amp;tall stop time:</source>
         <translation>구속 정지 시간(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="96"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="97"/>
         <source>Communication loss stop time:</source>
         <translation>통신 두절 정지 시간:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="104"/>
-        <source>Serial port (reconnect after a change)</source>
-        <translation>시리얼 포트 (변경 후 다시 연결)</translation>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="105"/>
+        <source>Serial port (used from the next power-up)</source>
+        <translation>시리얼 포트 (다음 전원 투입부터 적용)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="105"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="110"/>
+        <source>Baud rate and parity are written as one 15-register block from 0x0080 that also stores the configuration; the controller uses them from the next power-up on: switch it off and on, then reconnect with them. The lock is lost at power-off until stored (Store configuration).</source>
+        <translation>통신 속도와 패리티는 0x0080부터의 15개 레지스터 블록 하나로 쓰이며, 이 쓰기는 설정도 저장합니다. 컨트롤러는 다음 전원 투입부터 이 값을 사용합니다: 전원을 껐다 켠 뒤 새 설정으로 다시 연결하십시오. 시리얼 설정 잠금은 저장(설정 저장)하기 전까지 전원을 끄면 사라집니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="132"/>
+        <source>Takes effect now and is kept over power-off: each change is written as one 5-register block from 0x0050 that also stores the port states.</source>
+        <translation>즉시 적용되며 전원을 꺼도 유지됩니다: 변경할 때마다 0x0050부터의 5개 레지스터 블록 하나로 쓰이며, 이 쓰기는 포트 상태도 저장합니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="176"/>
+        <source>The communication loss stop time is 0 s (%1): the manual does not say what 0 does, and OpenTOP assumes the stop is then off: if the connection is lost while the motor runs, the controller keeps it running at the last speed command. Set a time so that it brakes when the bus goes quiet.</source>
+        <translation>통신 두절 정지 시간이 0 s입니다(%1): 매뉴얼은 0의 의미를 설명하지 않으며, OpenTOP은 이 경우 정지 기능이 꺼진다고 가정합니다: 모터 운전 중 연결이 끊기면 컨트롤러는 마지막 속도 명령으로 계속 운전합니다. 버스 통신이 끊기면 브레이크가 걸리도록 시간을 설정하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="106"/>
         <source>Baud rate:</source>
         <translation>통신 속도:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="106"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="107"/>
         <source>Parity and stop bits:</source>
         <translation>패리티와 스톱 비트:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="107"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="108"/>
         <source>Configuration over serial:</source>
         <translation>시리얼로 설정 변경:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="109"/>
-        <source>Lost at power-off until stored (Store configuration); a stored baud rate or parity is used from the next power-up on, and the tool must then reconnect with it.</source>
-        <translation>저장하기 전까지는 전원을 끄면 사라집니다(설정 저장). 저장한 통신 속도나 패리티는 다음 전원 투입부터 적용되며, 그 후 이 도구도 그 설정으로 다시 연결해야 합니다.</translation>
-    </message>
-    <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="112"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="114"/>
         <source>Speed loop PID</source>
         <translation>속도 루프 PID</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="113"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="115"/>
         <source>&amp;P coefficient:</source>
         <translation>P 계수(&amp;P):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="114"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="116"/>
         <source>I coefficient:</source>
         <translation>I 계수:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="115"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="117"/>
         <source>&amp;D coefficient:</source>
         <translation>D 계수(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="116"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="118"/>
         <source>D period:</source>
         <translation>D 주기:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="118"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="120"/>
         <source>Preset speed (potentiometer/analog control)</source>
         <translation>프리셋 속도 (포텐셔미터/아날로그 제어)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="119"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="121"/>
         <source>Preset speed mo&amp;de:</source>
         <translation>프리셋 속도 모드(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="120"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="122"/>
         <source>Trigger:</source>
         <translation>트리거:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="121"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="123"/>
         <source>&amp;Forward speed:</source>
         <translation>정회전 속도(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="122"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="124"/>
         <source>Reverse speed:</source>
         <translation>역회전 속도:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="124"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="126"/>
         <source>AI1/AI2 as digital ports</source>
         <translation>AI1/AI2를 디지털 포트로 사용</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="125"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="127"/>
         <source>AI1 direction:</source>
         <translation>AI1 방향:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="126"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="128"/>
         <source>AI2 direction:</source>
         <translation>AI2 방향:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="127"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="129"/>
         <source>AI1 level:</source>
         <translation>AI1 레벨:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="128"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="130"/>
         <source>AI2 level:</source>
         <translation>AI2 레벨:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="130"/>
-        <source>Takes effect now and is not kept over power-off: the controller has no store command for these, only a 5-register block write, which this page does not send.</source>
-        <translation>즉시 적용되며 전원을 끄면 유지되지 않습니다: 컨트롤러에는 이 항목의 저장 명령이 없고 5개 레지스터 일괄 쓰기만 있는데, 이 페이지는 그것을 보내지 않습니다.</translation>
-    </message>
-    <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="174"/>
-        <source>The communication loss stop is off (%1 = 0 s): if the connection is lost while the motor runs, the controller keeps it running at the last speed command. Set a time so that it brakes when the bus goes quiet.</source>
-        <translation>통신 두절 정지가 꺼져 있습니다(%1 = 0 s): 모터 운전 중 연결이 끊기면 컨트롤러는 마지막 속도 명령으로 계속 운전합니다. 버스 통신이 끊기면 브레이크가 걸리도록 시간을 설정하십시오.</translation>
-    </message>
-    <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="189"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="192"/>
         <source>Takes effect now, lost at power-off until stored (%1).</source>
         <translation>즉시 적용되며, 저장하기 전까지는 전원을 끄면 사라집니다(%1).</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="250"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="253"/>
+        <source>Set it anyway?</source>
+        <translation>그래도 설정하시겠습니까?</translation>
+    </message>
+    <message>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="269"/>
         <source>Forward and reverse speed in this mode (%1): %2</source>
         <translation>이 모드(%1)의 정회전·역회전 속도: %2</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="252"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="271"/>
         <source>The unit and range of the speeds follow the preset speed mode (not read yet).</source>
         <translation>속도의 단위와 범위는 프리셋 속도 모드에 따릅니다(아직 읽지 않음).</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="286"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="313"/>
         <source>&lt;b&gt;Written but not stored:&lt;/b&gt; %1. These values act now and are lost when the controller is switched off.</source>
         <translation>&lt;b&gt;쓰기 완료, 저장 안 됨:&lt;/b&gt; %1. 이 값은 지금 적용되어 있지만 컨트롤러 전원을 끄면 사라집니다.</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="308"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="335"/>
         <source>%1: the controller writes the values now in effect to its memory and uses them from the next power-up on.
 
 Stored: %2.</source>
@@ -3467,17 +3655,17 @@ Stored: %2.</source>
 저장 대상: %2.</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="319"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="346"/>
         <source>Not written yet, so not stored: %1.</source>
         <translation>아직 쓰지 않아 저장되지 않음: %1.</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="322"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="349"/>
         <source>%1: done, kept over power-off.</source>
         <translation>%1: 완료, 전원을 꺼도 유지됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="330"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="357"/>
         <source>The controller replaces its configuration (%1) with the one stored in its memory.
 
 Configuration changes written but not stored are discarded.</source>
@@ -3486,52 +3674,70 @@ Configuration changes written but not stored are discarded.</source>
 쓰기만 하고 저장하지 않은 설정 변경은 버려집니다.</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="336"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="363"/>
         <source>Stored configuration reloaded.</source>
         <translation>저장된 설정을 다시 불러왔습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="344"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="371"/>
         <source>Writing %1 = %2…</source>
         <translation>%1 = %2 쓰는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="354"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="381"/>
         <source>%1 = %2 failed: %3</source>
         <translation>%1 = %2 실패: %3</translation>
     </message>
 </context>
 <context>
+    <name>opentop::DcMotor</name>
+    <message>
+        <location filename="../sim/DcMotor.cpp" line="64"/>
+        <source>unknown motor setting &apos;%1&apos;; settings: %2</source>
+        <translation>알 수 없는 모터 설정 &apos;%1&apos;; 설정: %2</translation>
+    </message>
+    <message>
+        <location filename="../sim/DcMotor.cpp" line="71"/>
+        <source>motor setting %1 must be a number %2..%3, got &apos;%4&apos;</source>
+        <translation>모터 설정 %1은(는) %2..%3의 숫자여야 합니다. 입력값: &apos;%4&apos;</translation>
+    </message>
+</context>
+<context>
     <name>opentop::DcPidSimDevice</name>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="341"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="366"/>
         <source>%1 %2%3, output %4 %, command %5, line %6 %7</source>
         <translation>%1 %2%3, 출력 %4 %, 명령 %5, 라인 %6 %7</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="343"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="368"/>
         <source> (stall stop)</source>
         <translation> (구속 정지)</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="359"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="384"/>
         <source>usage: %1 ID VALUE with VALUE %2..%3 %4</source>
         <translation>사용법: %1 ID VALUE (VALUE는 %2..%3 %4)</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="363"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="388"/>
         <source>(bit0 SQ1, bit1 SQ2, bit2 DE)</source>
         <translation>(bit0 SQ1, bit1 SQ2, bit2 DE)</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="363"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="388"/>
         <source>(% current)</source>
         <translation>(전류 %)</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="365"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="390"/>
         <source>%1 = %2</source>
         <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <location filename="../sim/DcPidSimDevice.cpp" line="407"/>
+        <source>motor %1, speed %2 1/s, current %3 A</source>
+        <translation>모터 %1, 속도 %2 1/s, 전류 %3 A</translation>
     </message>
 </context>
 <context>
@@ -3682,7 +3888,7 @@ Configuration changes written but not stored are discarded.</source>
         <translation>%1은(는) 설정이 아니라 명령입니다. 명령은 요청할 때 하나씩 보냅니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="211"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="227"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -3716,27 +3922,37 @@ Configuration changes written but not stored are discarded.</source>
         <translation>%1은(는) %2 명령입니다. 명시적으로 요청할 때만 보냅니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="254"/>
+        <location filename="../model/session/DeviceSession.cpp" line="255"/>
         <source>%1 cannot be checked: %2</source>
         <translation>%1을(를) 검사할 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="276"/>
+        <location filename="../model/session/DeviceSession.cpp" line="277"/>
         <source>reading %1 failed: %2</source>
         <translation>%1 읽기 실패: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="327"/>
+        <location filename="../model/session/DeviceSession.cpp" line="305"/>
+        <source>not written: %1 is written together with 0x%2–0x%3, and reading those first failed: %4</source>
+        <translation>쓰지 않음: %1은(는) 0x%2–0x%3과(와) 함께 쓰는데, 이 레지스터를 먼저 읽지 못했습니다: %4</translation>
+    </message>
+    <message>
+        <location filename="../model/session/DeviceSession.cpp" line="310"/>
+        <source>short reply</source>
+        <translation>응답이 너무 짧음</translation>
+    </message>
+    <message>
+        <location filename="../model/session/DeviceSession.cpp" line="365"/>
         <source>written, but reading it back failed: %1</source>
         <translation>썼지만 다시 읽기에 실패했습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="336"/>
+        <location filename="../model/session/DeviceSession.cpp" line="374"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>검증 실패: %1을(를) 썼지만 장치 값은 %2입니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="372"/>
+        <location filename="../model/session/DeviceSession.cpp" line="410"/>
         <source>error code %1</source>
         <translation>오류 코드 %1</translation>
     </message>
@@ -3744,22 +3960,32 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DrivePages</name>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="97"/>
+        <location filename="../ui/main/DrivePages.cpp" line="101"/>
         <source>Monitor</source>
         <translation>모니터</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="110"/>
+        <location filename="../ui/main/DrivePages.cpp" line="114"/>
         <source>Test run</source>
         <translation>시운전</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="112"/>
+        <location filename="../ui/main/DrivePages.cpp" line="121"/>
+        <source>drive %1 (%2)</source>
+        <translation>드라이버 %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/DrivePages.cpp" line="122"/>
+        <source>Speed loop tuning</source>
+        <translation>속도 루프 튜닝</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/DrivePages.cpp" line="128"/>
         <source>Alarms</source>
         <translation>알람</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="121"/>
+        <location filename="../ui/main/DrivePages.cpp" line="137"/>
         <source>Machine number %1 (%2, %3) — %4, firmware V%5</source>
         <translation>국번 %1 (%2, %3) — %4, 펌웨어 V%5</translation>
     </message>
@@ -3874,6 +4100,11 @@ Configuration changes written but not stored are discarded.</source>
         <location filename="../model/bus/DriveStatusPoller.cpp" line="81"/>
         <source>blue</source>
         <translation>파랑</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="118"/>
+        <source>%1; %2</source>
+        <translation>%1; %2</translation>
     </message>
 </context>
 <context>
@@ -5167,7 +5398,7 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <location filename="../model/eol/EolStepRunner.cpp" line="428"/>
         <location filename="../model/eol/EolStepRunner.cpp" line="449"/>
         <location filename="../model/eol/EolStepRunner.cpp" line="475"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="517"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="526"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -5259,47 +5490,47 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>%1: %2 s 후 정지, 허용 최대 %3 s</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="508"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="517"/>
         <source>%1: nothing to read</source>
         <translation>%1: 읽을 항목이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="525"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="534"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="528"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="537"/>
         <source>%1: %2 reads &quot;%3&quot;, expected &quot;%4&quot;</source>
         <translation>%1: %2 읽은 값 &quot;%3&quot;, 기대값 &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="539"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="548"/>
         <source>%1: %2 reads %3 %4, %5</source>
         <translation>%1: %2 읽은 값 %3 %4, %5</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="561"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="570"/>
         <source>the stop command failed: %1</source>
         <translation>정지 명령 실패: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="576"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="585"/>
         <source>stopped after %1 s</source>
         <translation>%1 s 후 정지</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="577"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="586"/>
         <source>not confirmed stopped: %1</source>
         <translation>정지 확인 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="599"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="608"/>
         <source>communication priority could not be given back: %1</source>
         <translation>통신 우선을 되돌릴 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="639"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="648"/>
         <source>the steps ended with the motor running</source>
         <translation>모터가 운전 중인 상태로 단계가 끝났습니다</translation>
     </message>
@@ -5708,6 +5939,19 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <location filename="../cli/FileCommandSupport.cpp" line="41"/>
         <source>error: %1 refused: %2</source>
         <translation>오류: %1 거부됨: %2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::FixedLineHint</name>
+    <message>
+        <location filename="../model/bus/FixedLineHint.cpp" line="41"/>
+        <source>A DC controller in potentiometer/analog control mode talks only at %1 bit/s, 8%2%3, address %4.</source>
+        <translation>포텐셔미터/아날로그 제어 모드의 DC 컨트롤러는 %1 bit/s, 8%2%3, 국번 %4로만 통신합니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/FixedLineHint.cpp" line="60"/>
+        <source>%1 8%2%3, address %4</source>
+        <translation>%1 8%2%3, 국번 %4</translation>
     </message>
 </context>
 <context>
@@ -6591,33 +6835,33 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="50"/>
+        <location filename="../ui/main/MainWindow.cpp" line="52"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="126"/>
+        <location filename="../ui/main/MainWindow.cpp" line="134"/>
         <source>connect elsewhere</source>
         <translation>다른 곳에 연결</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="149"/>
+        <location filename="../ui/main/MainWindow.cpp" line="157"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>%1에 연결하는 중… (%2에 아직 연결되어 있음)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="188"/>
+        <location filename="../ui/main/MainWindow.cpp" line="196"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>연결됨: %1 (새 연결 실패: %2)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="191"/>
-        <location filename="../ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="199"/>
+        <location filename="../ui/main/MainWindow.cpp" line="212"/>
         <source>Cannot connect</source>
         <translation>연결할 수 없음</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="192"/>
+        <location filename="../ui/main/MainWindow.cpp" line="200"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -6626,82 +6870,82 @@ Still connected to %2; nothing was changed.</source>
 %2에 아직 연결되어 있습니다. 아무것도 변경하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="195"/>
-        <location filename="../ui/main/MainWindow.cpp" line="306"/>
+        <location filename="../ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="324"/>
         <source>Not connected: %1</source>
         <translation>연결 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="252"/>
+        <location filename="../ui/main/MainWindow.cpp" line="261"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>통신 그룹: %1 (버스 › 통신 그룹)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="274"/>
-        <location filename="../ui/main/MainWindow.cpp" line="276"/>
+        <location filename="../ui/main/MainWindow.cpp" line="292"/>
+        <location filename="../ui/main/MainWindow.cpp" line="294"/>
         <source>Connection lost: %1</source>
         <translation>연결 끊김: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="277"/>
+        <location filename="../ui/main/MainWindow.cpp" line="295"/>
         <source>Connection lost</source>
         <translation>연결 끊김</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="285"/>
+        <location filename="../ui/main/MainWindow.cpp" line="303"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 시뮬레이션 버스 (실제 하드웨어 없음) — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="286"/>
+        <location filename="../ui/main/MainWindow.cpp" line="304"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="287"/>
+        <location filename="../ui/main/MainWindow.cpp" line="305"/>
         <source>Connecting to %1…</source>
         <translation>%1에 연결하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="305"/>
-        <location filename="../ui/main/MainWindow.cpp" line="313"/>
+        <location filename="../ui/main/MainWindow.cpp" line="323"/>
+        <location filename="../ui/main/MainWindow.cpp" line="331"/>
         <source>Connected: %1</source>
         <translation>연결됨: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="312"/>
+        <location filename="../ui/main/MainWindow.cpp" line="330"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>연결됨: %1 (시뮬레이션, 실제 하드웨어 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="333"/>
+        <location filename="../ui/main/MainWindow.cpp" line="356"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>드라이버가 기종을 알려주지 않습니다. %1은(는) 설정된 기종입니다.</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="363"/>
-        <location filename="../ui/main/MainWindow.cpp" line="374"/>
+        <location filename="../ui/main/MainWindow.cpp" line="386"/>
+        <location filename="../ui/main/MainWindow.cpp" line="397"/>
         <source>disconnect</source>
         <translation>연결 해제</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="370"/>
+        <location filename="../ui/main/MainWindow.cpp" line="393"/>
         <source>Not connected (disconnected)</source>
         <translation>연결 안 됨(연결 해제함)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="381"/>
-        <location filename="../ui/main/MainWindow.cpp" line="406"/>
+        <location filename="../ui/main/MainWindow.cpp" line="404"/>
+        <location filename="../ui/main/MainWindow.cpp" line="429"/>
         <source>quit</source>
         <translation>종료</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="392"/>
+        <location filename="../ui/main/MainWindow.cpp" line="415"/>
         <source>Unwritten changes</source>
         <translation>쓰지 않은 변경 사항</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="393"/>
+        <location filename="../ui/main/MainWindow.cpp" line="416"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>드라이버에 쓰지 않은 편집이 %n개 있습니다. 버리고 종료하시겠습니까?</numerusform>
@@ -6803,42 +7047,42 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorOutput</name>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="114"/>
+        <location filename="../cli/MonitorOutput.cpp" line="117"/>
         <source>Target shown</source>
         <translation>표시 목표값</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="114"/>
+        <location filename="../cli/MonitorOutput.cpp" line="117"/>
         <source>Speed shown</source>
         <translation>표시 속도</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="123"/>
+        <location filename="../cli/MonitorOutput.cpp" line="127"/>
         <source>Active alarm</source>
         <translation>발생 중인 알람</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="165"/>
+        <location filename="../cli/MonitorOutput.cpp" line="169"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="168"/>
+        <location filename="../cli/MonitorOutput.cpp" line="172"/>
         <source>code %1</source>
         <translation>코드 %1</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="168"/>
+        <location filename="../cli/MonitorOutput.cpp" line="172"/>
         <source>active</source>
         <translation>발생 중</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="175"/>
+        <location filename="../cli/MonitorOutput.cpp" line="179"/>
         <source>Time</source>
         <translation>시각</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="175"/>
+        <location filename="../cli/MonitorOutput.cpp" line="180"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -7360,27 +7604,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="170"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="183"/>
         <source>%1 (not valid now)</source>
         <translation>%1 (현재 무효)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="188"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="202"/>
         <source>not read</source>
         <translation>읽지 않음</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="197"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="211"/>
         <source>Allowed: %1</source>
         <translation>허용: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="200"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="214"/>
         <source>On the drive: %1</source>
         <translation>드라이버 값: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="228"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="244"/>
         <source>Not accepted: %1</source>
         <translation>받아들일 수 없음: %1</translation>
     </message>
@@ -7388,160 +7632,195 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitBox</name>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="23"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="38"/>
         <source>Parameter initialisation</source>
         <translation>파라미터 초기화</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="32"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="48"/>
         <source>Returns every setting of drive %1 to its factory default, including the communication settings: afterwards the drive may answer only at the default rate, and control priority goes back to its input terminals. The motor must be stopped. The consequences for this drive are listed before anything is sent.</source>
         <translation>드라이버 %1의 모든 설정을 통신 설정까지 포함하여 공장 출하값으로 되돌립니다: 그 후 드라이버는 기본 통신 속도로만 응답할 수 있고, 제어 우선순위는 입력 단자로 돌아갑니다. 모터는 정지해 있어야 합니다. 무엇이든 보내기 전에 이 드라이버에 미치는 영향을 먼저 표시합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="40"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="56"/>
         <source>&amp;Initialise all parameters of drive %1…</source>
         <translation>드라이버 %1의 모든 파라미터 초기화(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="42"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="58"/>
         <source>Asks first, naming the drive and what changes</source>
         <translation>드라이버와 변경 내용을 표시하고 먼저 확인합니다</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="66"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="86"/>
         <source>Reading what the initialisation would change…</source>
         <translation>초기화로 변경될 내용을 읽는 중…</translation>
     </message>
+    <message>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="110"/>
+        <source>Afterwards:</source>
+        <translation>이후:</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="90"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="115"/>
         <source>Your %n unwritten edit(s) of this drive are discarded.</source>
         <translation>
             <numerusform>이 드라이버에서 쓰지 않은 편집 %n개는 버려집니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="94"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="119"/>
         <source>Sent: %1 to machine %2 only.</source>
         <translation>보냄: %1, 국번 %2에만.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="95"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="120"/>
         <source>Sent: %1 to machine %2.</source>
         <translation>보냄: %1, 국번 %2.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="99"/>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="104"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="124"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="129"/>
         <source>Initialise drive %1</source>
         <translation>드라이버 %1 초기화</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="100"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="125"/>
         <source>Reset every setting of drive %1 (%2) to its factory defaults?</source>
         <translation>드라이버 %1(%2)의 모든 설정을 공장 출하값으로 되돌리시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="114"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="139"/>
         <source>Cancelled; nothing was sent.</source>
         <translation>취소됨. 아무것도 보내지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="122"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="147"/>
         <source>Initialising drive %1…</source>
         <translation>드라이버 %1 초기화 중…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="131"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="156"/>
         <source>Drive %1 did not confirm the initialisation: %2</source>
         <translation>드라이버 %1이(가) 초기화를 확인하지 않았습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="132"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="157"/>
         <source>Nothing was sent: %1</source>
         <translation>아무것도 보내지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="170"/>
+        <source>&amp;Reconnect at %1 bit/s after the power-up</source>
+        <translation>전원 투입 후 %1 bit/s로 다시 연결(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="174"/>
         <source>Drive %1 initialised; reading its values again…</source>
         <translation>드라이버 %1 초기화 완료. 값을 다시 읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="145"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="180"/>
         <source>Drive %1 initialised; %n value(s) could not be read back (it may answer only at the default communication settings now).</source>
         <translation>
             <numerusform>드라이버 %1 초기화 완료. 값 %n개를 다시 읽을 수 없습니다(이제 기본 통신 설정으로만 응답할 수 있음).</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="149"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="184"/>
         <source>Drive %1 initialised to its factory defaults; values read again.</source>
         <translation>드라이버 %1을(를) 공장 출하값으로 초기화하고 값을 다시 읽었습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="210"/>
+        <source>Reconnecting at %1 bit/s in %2 s…</source>
+        <translation>%2 s 후 %1 bit/s로 다시 연결합니다…</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="223"/>
+        <source>Reconnect at %1 bit/s from the Bus menu.</source>
+        <translation>버스 메뉴에서 %1 bit/s로 다시 연결하십시오.</translation>
     </message>
 </context>
 <context>
     <name>opentop::ParameterInitialiser</name>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="64"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="65"/>
         <source>%1 drives have no parameter initialisation.</source>
         <translation>%1 드라이버에는 파라미터 초기화가 없습니다.</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="67"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="68"/>
         <source>%1 = %2 (register %3)</source>
         <translation>%1 = %2 (레지스터 %3)</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="75"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="76"/>
         <source>Drive %1 is running. Stop the motor first: parameter initialisation is only sent to a drive at standstill.</source>
         <translation>드라이버 %1이(가) 운전 중입니다. 먼저 모터를 정지하십시오: 파라미터 초기화는 정지 상태의 드라이버에만 보냅니다.</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="79"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="80"/>
         <source>Whether drive %1 is running could not be read (%2), so nothing was sent.</source>
         <translation>드라이버 %1의 운전 여부를 읽을 수 없어(%2) 아무것도 보내지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="93"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="94"/>
         <source>Every setting of drive %1 returns to its factory default: %2. Values set for this machine are lost; save a backup first to keep them.</source>
         <translation>드라이버 %1의 모든 설정이 공장 출하값으로 돌아갑니다: %2. 이 설비에 맞춰 설정한 값은 사라지므로, 유지하려면 먼저 백업을 저장하십시오.</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="110"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="111"/>
         <source>%1 could not be read; it returns to %2. %3</source>
         <translation>%1을(를) 읽을 수 없습니다. %2(으)로 돌아갑니다. %3</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="113"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="114"/>
         <source>%1 goes from %2 back to %3. %4</source>
         <translation>%1이(가) %2에서 %3(으)로 돌아갑니다. %4</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="118"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="119"/>
         <source>%1 stays %2 (already the default).</source>
         <translation>%1은(는) %2 그대로입니다(이미 기본값).</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="124"/>
-        <source>The drive may then stop answering this connection (from its next power-up): reconnect at the default setting to reach it.</source>
-        <translation>그 후(다음 전원 투입부터) 드라이버가 이 연결에 응답하지 않을 수 있습니다: 기본 설정으로 다시 연결하십시오.</translation>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="123"/>
+        <source>%1 bit/s, parity %2, %3 stop bit(s)</source>
+        <translation>%1 bit/s, 패리티 %2, 스톱 비트 %3</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="128"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="131"/>
+        <source>The link to the drive is lost from its next power-up: it answers only at the factory line settings, %1.</source>
+        <translation>다음 전원 투입부터 드라이버와의 연결이 끊깁니다: 드라이버는 공장 출하 통신 설정(%1)으로만 응답합니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="142"/>
+        <source>To reach drive %1 again: switch it off and on, wait %2 s after power-on, then reconnect at %3.</source>
+        <translation>드라이버 %1에 다시 연결하려면: 전원을 껐다 켜고, 전원 투입 후 %2 s 기다린 다음 %3(으)로 다시 연결하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="159"/>
+        <source>Bus control is lost: the drive follows its input terminals again and refuses start, stop and speed commands over the bus; an input that is on may start the motor, with the factory input functions.</source>
+        <translation>버스 제어가 해제됩니다: 드라이버가 다시 입력 단자를 따르며 버스를 통한 기동·정지·속도 명령을 거부합니다. ON인 입력이 있으면 공장 출하 입력 기능으로 모터가 기동할 수 있습니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="168"/>
+        <source>To control the motor over the bus again, set %1 to %2.</source>
+        <translation>버스로 모터를 다시 제어하려면 %1을(를) %2(으)로 설정하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="150"/>
         <source>The drive no longer follows writes sent to its group&apos;s parent, and drives that followed it no longer do.</source>
         <translation>드라이버가 더 이상 그룹 부모로 보낸 쓰기를 따르지 않으며, 이 드라이버를 따르던 드라이버도 더 이상 따르지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="134"/>
-        <source>The drive follows its input terminals again: an input that is on may start the motor, with the factory input functions.</source>
-        <translation>드라이버가 다시 입력 단자를 따릅니다: ON인 입력이 있으면 공장 출하 입력 기능으로 모터가 기동할 수 있습니다.</translation>
-    </message>
-    <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="136"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="173"/>
         <source>The machine number %1 is not a setting and does not change.</source>
         <translation>국번 %1은(는) 설정이 아니므로 바뀌지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="138"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="175"/>
         <source>The motor must stand still: drive %1 reports it stopped now, and this is read again just before the command is sent.</source>
         <translation>모터가 정지해 있어야 합니다: 드라이버 %1은(는) 지금 정지 상태이며, 명령을 보내기 직전에 다시 확인합니다.</translation>
     </message>
@@ -7604,33 +7883,34 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
         <source>Write %n value(s) of the page %1 to machine number %2</source>
         <translation>
             <numerusform>페이지 %1의 값 %n개를 국번 %2에 쓰기</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="138"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="147"/>
         <source>Nothing was written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="148"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="152"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>값 %n개 쓰는 중…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="152"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="156"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>쓰기 %n건 실패. 표시된 항목을 확인하십시오</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="153"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="157"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>값 %n개 쓰기 및 검증 완료</numerusform>
@@ -7640,212 +7920,252 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterReader</name>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="52"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="55"/>
         <source>entry</source>
         <translation>항목</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="60"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="63"/>
         <source>name must be lower-case dotted words: [a-z0-9_] separated by dots</source>
         <translation>name은 점으로 구분한 소문자 단어여야 합니다: [a-z0-9_]를 점으로 구분</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="69"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="72"/>
         <source>&quot;label&quot; is empty</source>
         <translation>&quot;label&quot;이 비어 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="71"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="74"/>
         <source>group &quot;%1&quot; is not declared in &quot;groups&quot;</source>
         <translation>그룹 &quot;%1&quot;이(가) &quot;groups&quot;에 선언되어 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="73"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="76"/>
         <source>kind must be one of %1</source>
         <translation>kind는 %1 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="79"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="82"/>
         <source>address must be 0x0000–0xFFFF</source>
         <translation>address는 0x0000–0xFFFF여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="86"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="89"/>
         <source>read must be 3 (holding) or 4 (input)</source>
         <translation>read는 3(holding) 또는 4(input)여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="88"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="91"/>
         <source>write must be 6 or 16</source>
         <translation>write는 6 또는 16이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="92"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="95"/>
         <source>input registers (read 4) cannot be written</source>
         <translation>입력 레지스터(read 4)에는 쓸 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="94"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="97"/>
         <source>neither readable nor writable</source>
         <translation>읽을 수도 쓸 수도 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="102"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="105"/>
         <source>type must be u16, s16, u32, s32, f32, string or bits</source>
         <translation>type은 u16, s16, u32, s32, f32, string 또는 bits여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="111"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="114"/>
         <source>string parameters need &quot;count&quot; 1–125 registers</source>
         <translation>string 파라미터에는 &quot;count&quot; 1–125 레지스터가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="116"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="119"/>
         <source>bits parameters have &quot;count&quot; 1 or 2</source>
         <translation>bits 파라미터의 &quot;count&quot;는 1 또는 2입니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="121"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="124"/>
         <source>%1 takes %2 register(s), not %3</source>
         <translation>%1은(는) 레지스터 %3개가 아니라 %2개를 차지합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="124"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="129"/>
+        <source>&quot;wordOrder&quot; is for 2-register numbers and bit fields only</source>
+        <translation>&quot;wordOrder&quot;는 2레지스터 숫자와 비트 필드에만 쓸 수 있습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="133"/>
+        <source>&quot;wordOrder&quot; must be &quot;high-first&quot; or &quot;low-first&quot;</source>
+        <translation>&quot;wordOrder&quot;는 &quot;high-first&quot; 또는 &quot;low-first&quot;여야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="136"/>
         <source>a %1-register value cannot be written with function 06; use 16</source>
         <translation>레지스터 %1개짜리 값은 기능 06으로 쓸 수 없습니다. 16을 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="129"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="141"/>
         <source>safety must be one of %1</source>
         <translation>safety는 %1 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="131"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="143"/>
         <source>commands need a &quot;safety&quot; class</source>
         <translation>명령에는 &quot;safety&quot; 등급이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="134"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="146"/>
         <source>code table &quot;%1&quot; is not declared</source>
         <translation>코드 표 &quot;%1&quot;이(가) 선언되어 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="141"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="157"/>
         <source>a setting needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>설정에는 &quot;allowed&quot; 또는 &quot;enum&quot;이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="144"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="160"/>
         <source>a writable parameter needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>쓸 수 있는 파라미터에는 &quot;allowed&quot; 또는 &quot;enum&quot;이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="149"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="165"/>
         <source>bits parameters need &quot;bits&quot;</source>
         <translation>bits 파라미터에는 &quot;bits&quot;가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="157"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="173"/>
         <source>&quot;backup&quot; must be true or false</source>
         <translation>&quot;backup&quot;은 true 또는 false여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="162"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="178"/>
         <source>only readable and writable parameters can be backed up</source>
         <translation>읽기·쓰기가 모두 가능한 파라미터만 백업할 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="170"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="191"/>
+        <source>%1 needs &quot;address&quot; and &quot;count&quot;</source>
+        <translation>%1에는 &quot;address&quot;와 &quot;count&quot;가 필요합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="193"/>
+        <source>%1: the parameter is not writable</source>
+        <translation>%1: 이 파라미터는 쓸 수 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="196"/>
+        <source>%1: address 0x0000–0xFFFF and count 1–%2 (limits.maxWriteRegisters)</source>
+        <translation>%1: address는 0x0000–0xFFFF, count는 1–%2여야 합니다(limits.maxWriteRegisters)</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="205"/>
+        <source>%1: tail values are registers, 0–65535</source>
+        <translation>%1: tail 값은 레지스터 값(0–65535)입니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="213"/>
+        <source>%1: the parameter&apos;s registers must lie in the block, before its tail</source>
+        <translation>%1: 파라미터의 레지스터는 블록 안, tail 앞에 있어야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="221"/>
         <source>scale must be positive</source>
         <translation>scale은 양수여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="182"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="233"/>
         <source>decimals must be 0–9</source>
         <translation>decimals는 0–9여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="208"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="257"/>
+        <source>recommended[%1] is not inside one of the &quot;allowed&quot; intervals</source>
+        <translation>recommended[%1]이(가) &quot;allowed&quot; 구간 중 어디에도 속하지 않습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="275"/>
         <source>default %1 is not a whole number of steps of %2</source>
         <translation>기본값 %1이(가) %2 단위의 정수배가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="217"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="284"/>
         <source>default must be a number (or &quot;0x...&quot; code)</source>
         <translation>기본값은 숫자(또는 &quot;0x...&quot; 코드)여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="220"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="287"/>
         <source>default must be a number or a string</source>
         <translation>기본값은 숫자 또는 문자열이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="231"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="298"/>
         <source>%1 must be an object {&quot;min&quot;:…, &quot;max&quot;:…}</source>
         <translation>%1은(는) 객체 {&quot;min&quot;:…, &quot;max&quot;:…}여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="238"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="305"/>
         <source>%1 needs numeric min and max</source>
         <translation>%1에는 숫자 min과 max가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="244"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="311"/>
         <source>%1: %2 is not a whole number of steps of %3</source>
         <translation>%1: %2이(가) %3 단위의 정수배가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="252"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="319"/>
         <source>%1: min is greater than max</source>
         <translation>%1: min이 max보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="266"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="333"/>
         <source>%1 must be an object {&quot;value&quot;:…, &quot;label&quot;:…}</source>
         <translation>%1은(는) 객체 {&quot;value&quot;:…, &quot;label&quot;:…}여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="282"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="349"/>
         <source>%1 has no label</source>
         <translation>%1에 label이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="284"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="351"/>
         <source>%1 repeats a code or label</source>
         <translation>%1에 코드 또는 label이 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="295"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="362"/>
         <source>&quot;bits&quot; only belongs to type bits</source>
         <translation>&quot;bits&quot;는 type bits에만 쓸 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="319"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="386"/>
         <source>%1.appliesWhen needs &quot;param&quot; and &quot;equals&quot;</source>
         <translation>%1.appliesWhen에는 &quot;param&quot;과 &quot;equals&quot;가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="324"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="391"/>
         <source>%1 lies outside the %2-bit register</source>
         <translation>%1이(가) %2비트 레지스터 범위를 벗어납니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="326"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="393"/>
         <source>%1 needs a unique name</source>
         <translation>%1에는 고유한 이름이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="340"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="407"/>
         <source>%1 must be an object</source>
         <translation>%1은(는) 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="352"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="419"/>
         <source>%1 needs either &quot;variant&quot; or &quot;param&quot;</source>
         <translation>%1에는 &quot;variant&quot; 또는 &quot;param&quot;이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="355"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="422"/>
         <source>%1: variant &quot;%2&quot; is not declared</source>
         <translation>%1: variant &quot;%2&quot;이(가) 선언되어 있지 않습니다</translation>
     </message>
@@ -7916,6 +8236,22 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Group</source>
         <translation>그룹</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::PidGains</name>
+    <message>
+        <location filename="../model/tuning/PidGains.cpp" line="9"/>
+        <source>P %1, I %2, D %3, D period %4 ms</source>
+        <translation>P %1, I %2, D %3, D 주기 %4 ms</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::PlantModel</name>
+    <message>
+        <location filename="../model/tuning/PlantModel.cpp" line="18"/>
+        <source>the relay test gives no usable model (K·Ku = %1, Tu = %2 ms)</source>
+        <translation>릴레이 시험으로 쓸 수 있는 모델을 얻지 못했습니다(K·Ku = %1, Tu = %2 ms)</translation>
     </message>
 </context>
 <context>
@@ -8286,32 +8622,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="336"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="417"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>오프셋 %1에서 올바른 JSON이 아닙니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="340"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="421"/>
         <source>the top level must be a JSON object</source>
         <translation>최상위는 JSON 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="351"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="432"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot;가 비어 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="362"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="443"/>
         <source>must be an object</source>
         <translation>객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="445"/>
         <source>name repeated</source>
         <translation>이름이 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="379"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="461"/>
         <source>%1: cannot open: %2</source>
         <translation>%1: 열 수 없습니다: %2</translation>
     </message>
@@ -8392,12 +8728,12 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Progress</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="74"/>
+        <location filename="../cli/ScanCommand.cpp" line="75"/>
         <source>scanning %1/%2 (%3 %), machine number %4, %5 found</source>
         <translation>스캔 중 %1/%2 (%3 %), 국번 %4, %5대 발견</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="89"/>
+        <location filename="../cli/ScanCommand.cpp" line="90"/>
         <source>scan: %1 % (%2 of %3 machine numbers), %4 found</source>
         <translation>스캔: %1 % (국번 %3개 중 %2개), %4대 발견</translation>
     </message>
@@ -8602,7 +8938,7 @@ No unit can be tested until results can be recorded.</source>
     </message>
     <message>
         <location filename="../model/eol/RecipeChecker.cpp" line="264"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="364"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="366"/>
         <source>%1: per-unit value %2</source>
         <translation>%1: 제품별 값 %2</translation>
     </message>
@@ -8627,32 +8963,32 @@ No unit can be tested until results can be recorded.</source>
         <translation>%1은(는) 숫자가 아닙니다. 제품별 값에는 숫자 설정이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="314"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="315"/>
         <source>%1: range %2–%3%4</source>
         <translation>%1: 범위 %2–%3%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="320"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="321"/>
         <source>%1 is outside what the drive allows: %2%3</source>
         <translation>%1이(가) 드라이버 허용 범위를 벗어납니다: %2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="332"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="333"/>
         <source>%1 includes values the drive does not allow; allowed: %2%3</source>
         <translation>%1에 드라이버가 허용하지 않는 값이 포함되어 있습니다. 허용: %2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="357"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="359"/>
         <source>%1: per-unit value %2: %3%4 is outside the recipe&apos;s range %5–%6%4</source>
         <translation>%1: 제품별 값 %2: %3%4이(가) 레시피 범위 %5–%6%4을(를) 벗어납니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="368"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="370"/>
         <source>%1: the recipe has no per-unit value %2</source>
         <translation>%1: 레시피에 제품별 값 %2이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="371"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="373"/>
         <source>the recipe has no drive at machine number %1</source>
         <translation>레시피에 국번 %1의 드라이버가 없습니다</translation>
     </message>
@@ -9337,6 +9673,24 @@ No unit can be tested until results can be recorded.</source>
         <location filename="../model/eol/RecipeStepChecker.cpp" line="283"/>
         <source>%1 is a number; compare it with lower and upper limits</source>
         <translation>%1은(는) 숫자입니다. 하한값·상한값과 비교하십시오</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RelayAnalysis</name>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="27"/>
+        <source>no steady oscillation: %1 full cycles around %2, %3 needed</source>
+        <translation>안정된 진동 없음: %2 부근에서 완전한 주기 %1회, %3회 필요</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="59"/>
+        <source>the oscillation (±%1) is no larger than the hysteresis (%2)</source>
+        <translation>진동(±%1)이 히스테리시스(%2)보다 크지 않습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="65"/>
+        <source>the oscillation is not steady: periods or amplitudes differ by %1 %</source>
+        <translation>진동이 안정되지 않았습니다: 주기 또는 진폭이 %1 % 차이 납니다</translation>
     </message>
 </context>
 <context>
@@ -10639,83 +10993,83 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="110"/>
+        <location filename="../cli/ScanCommand.cpp" line="111"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>버스의 드라이버를 찾아 식별합니다(국번 1–247)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="116"/>
+        <location filename="../cli/ScanCommand.cpp" line="117"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>조회할 첫 국번, 1–247 (기본값 1).</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="116"/>
         <location filename="../cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="118"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="118"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>조회할 마지막 국번, 1–247 (기본값 247).</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="119"/>
+        <location filename="../cli/ScanCommand.cpp" line="120"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>국번당 대기 시간(ms), 10–5000 (기본값: 통신 속도에서 산출; 느린 어댑터나 게이트웨이는 늘리십시오).</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="121"/>
+        <location filename="../cli/ScanCommand.cpp" line="122"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="134"/>
+        <location filename="../cli/ScanCommand.cpp" line="135"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>오류: --%1은(는) %2–%3의 숫자여야 합니다. &quot;%4&quot;은(는) 안 됩니다</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="146"/>
+        <location filename="../cli/ScanCommand.cpp" line="147"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>오류: scan은 인수를 받지 않습니다. --from N --to N을 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="155"/>
+        <location filename="../cli/ScanCommand.cpp" line="156"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>오류: --from %1이(가) --to %2보다 뒤입니다</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="173"/>
+        <location filename="../cli/ScanCommand.cpp" line="174"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>%3에서 국번 %1–%2 스캔 중, 국번당 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="209"/>
+        <location filename="../cli/ScanCommand.cpp" line="210"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>국번을 하나도 스캔하기 전에 중단되었습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="211"/>
+        <location filename="../cli/ScanCommand.cpp" line="212"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>중단됨: 국번 %1–%2을(를) 스캔했습니다(%4개 중 %3개). %5–%6은(는) 조회하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="225"/>
+        <location filename="../cli/ScanCommand.cpp" line="226"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>오류: 국번 %1에서 스캔이 멈췄습니다: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="235"/>
+        <location filename="../cli/ScanCommand.cpp" line="236"/>
         <source>warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="237"/>
+        <location filename="../cli/ScanCommand.cpp" line="238"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>참고: 드라이버 %1대가 %2 ms 대기 후에야 응답하여 다시 조회했습니다. 스캔에서 드라이버가 누락되면 --wait를 늘리십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="243"/>
+        <location filename="../cli/ScanCommand.cpp" line="244"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -10726,258 +11080,293 @@ This moves or stops a motor: add --yes to send it.</source>
   - 종단 저항 (버스 양 끝에 120 Ω)과 드라이버 전원.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="280"/>
+        <location filename="../cli/ScanCommand.cpp" line="257"/>
+        <source>hint: %1 Retry with the same connection and: %2</source>
+        <translation>힌트: %1 같은 연결에 다음을 추가하여 다시 시도하십시오: %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="287"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 기종 알 수 없음</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="281"/>
+        <location filename="../cli/ScanCommand.cpp" line="288"/>
         <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
         <translation>드라이버가 기종을 알려주지 않습니다. --variant %1=VARIANT로 지정하십시오(%2)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>hex</source>
         <translation>16진수</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>switches</source>
         <translation>스위치</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>family</source>
         <translation>제품군</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="305"/>
         <source>model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="305"/>
         <source>firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="305"/>
         <source>state</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="311"/>
         <source>comm. group</source>
         <translation>통신 그룹</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="372"/>
+        <location filename="../cli/ScanCommand.cpp" line="379"/>
         <source>1 drive found in %1 s</source>
         <translation>드라이버 1대 발견(%1 s)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="373"/>
+        <location filename="../cli/ScanCommand.cpp" line="380"/>
         <source>%1 drives found in %2 s</source>
         <translation>드라이버 %1대 발견(%2 s)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="375"/>
+        <location filename="../cli/ScanCommand.cpp" line="382"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>; 중복 가능성이 있는 국번 1개: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="377"/>
+        <location filename="../cli/ScanCommand.cpp" line="384"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>; 중복 가능성이 있는 국번 %1개: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="388"/>
+        <location filename="../cli/ScanCommand.cpp" line="395"/>
         <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>경고: 국번 %1(%2, %3)의 응답이 깨져 있습니다: 두 드라이버가 같은 국번을 쓰고 있을 가능성이 큽니다. 이 버스에 있는 드라이버의 SW1/SW2 스위치를 확인하고 드라이버마다 다른 국번을 준 뒤, 전원을 껐다 켜고 다시 스캔하십시오.</translation>
     </message>
 </context>
 <context>
+    <name>opentop::SerialLock</name>
+    <message>
+        <location filename="../model/session/SerialLock.cpp" line="39"/>
+        <source>%1 = %2 prohibits configuration over the serial interface: OpenTOP may then no longer be able to change this drive&apos;s settings over the serial line it talks on. To undo it: write %1 = %3 again if the drive still accepts it; while it is not stored, switch the drive off and on; otherwise switch the controller to potentiometer/analog control, connect at 9600 bit/s, 8E1, address 1 and write %1 = %3 there.</source>
+        <translation>%1 = %2은(는) 시리얼 인터페이스를 통한 설정 변경을 금지합니다: 그러면 OpenTOP이 현재 통신 중인 시리얼 라인으로 이 드라이버의 설정을 더 이상 변경하지 못할 수 있습니다. 되돌리는 방법: 드라이버가 아직 받아들이면 %1 = %3을(를) 다시 씁니다. 저장되지 않았다면 드라이버 전원을 껐다 켭니다. 그렇지 않으면 컨트롤러를 포텐셔미터/아날로그 제어로 바꾸고 9600 bit/s, 8E1, 국번 1로 연결하여 %1 = %3을(를) 씁니다.</translation>
+    </message>
+</context>
+<context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="39"/>
+        <location filename="../cli/SetCommand.cpp" line="43"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>파라미터를 이름으로 쓰고, 검사하고, 다시 읽어 검증합니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="46"/>
-        <source>Confirm commands that move a motor, reset, erase, initialise or store.</source>
-        <translation>모터를 움직이거나 리셋, 삭제, 초기화, 저장하는 명령을 확인합니다.</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="48"/>
+        <location filename="../cli/SetCommand.cpp" line="53"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>주소로 레지스터를 씁니다: ADDR=VALUE (반복 가능; --fc 16이면 VALUE,VALUE...).</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="49"/>
+        <location filename="../cli/SetCommand.cpp" line="54"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="55"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 쓰기의 기능 코드: 6(기본값) 또는 16.</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="55"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="59"/>
+        <location filename="../cli/SetCommand.cpp" line="64"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>오류: 사용법: set ID NAME=VALUE... (예: set 1 spno2.accel=2.5) 또는 set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="71"/>
+        <location filename="../cli/SetCommand.cpp" line="76"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>오류: &quot;%1&quot;은(는) NAME=VALUE 형식이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="78"/>
+        <location filename="../cli/SetCommand.cpp" line="83"/>
         <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
         <translation>오류: %1이(가) 두 번 지정되었습니다(%2=%3 및 %4). 설정은 한 번씩만 지정하십시오. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="89"/>
-        <location filename="../cli/SetCommand.cpp" line="186"/>
+        <location filename="../cli/SetCommand.cpp" line="94"/>
+        <location filename="../cli/SetCommand.cpp" line="227"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="99"/>
+        <location filename="../cli/SetCommand.cpp" line="104"/>
         <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>%1에 파라미터 &quot;%2&quot;이(가) 없습니다. &quot;opentop-cli params --family %1&quot;을 참조하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="102"/>
+        <location filename="../cli/SetCommand.cpp" line="107"/>
         <source>%1 is read-only</source>
         <translation>%1은(는) 읽기 전용입니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="104"/>
+        <location filename="../cli/SetCommand.cpp" line="109"/>
         <source>%1 is a %2 command; add --yes to send it</source>
         <translation>%1은(는) %2 명령입니다. 보내려면 --yes를 추가하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="136"/>
+        <location filename="../cli/SetCommand.cpp" line="164"/>
         <source>error: cannot read %1 to check the values; nothing written</source>
         <translation>오류: 값을 검사하기 위해 %1을(를) 읽을 수 없습니다. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="180"/>
+        <location filename="../cli/SetCommand.cpp" line="148"/>
+        <location filename="../cli/SetCommand.cpp" line="210"/>
+        <location filename="../cli/SetCommand.cpp" line="221"/>
         <source>warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="187"/>
+        <location filename="../cli/SetCommand.cpp" line="50"/>
+        <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
+        <translation>모터를 움직이거나 리셋, 삭제, 초기화, 저장하는 명령과 시리얼 설정 잠금의 설정을 확인합니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="198"/>
+        <source>Add --yes to set it.</source>
+        <translation>설정하려면 --yes를 추가하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="228"/>
         <source>nothing was written</source>
         <translation>아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="210"/>
+        <location filename="../cli/SetCommand.cpp" line="251"/>
         <source>not written (interrupted)</source>
         <translation>쓰지 않음(중단됨)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="264"/>
+        <source>next: %1</source>
+        <translation>다음: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="266"/>
+        <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
+        <translation>다음: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (공장 출하 통신 설정)</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="304"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="304"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="245"/>
-        <location filename="../cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="304"/>
+        <location filename="../cli/SetCommand.cpp" line="422"/>
         <source>Result</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="251"/>
-        <location filename="../cli/SetCommand.cpp" line="387"/>
+        <location filename="../cli/SetCommand.cpp" line="310"/>
+        <location filename="../cli/SetCommand.cpp" line="457"/>
         <source>written, verified</source>
         <translation>쓰기 완료, 검증됨</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="252"/>
+        <location filename="../cli/SetCommand.cpp" line="311"/>
         <source>written (command, not readable)</source>
         <translation>쓰기 완료(명령, 읽기 불가)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="254"/>
+        <location filename="../cli/SetCommand.cpp" line="313"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>확인 안 됨(%1): 드라이버에 값이 들어갔는지 알 수 없습니다. &quot;get&quot;으로 다시 읽으십시오</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="272"/>
+        <location filename="../cli/SetCommand.cpp" line="327"/>
+        <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
+        <translation>참고: 드라이버는 다음 전원 투입부터 %1을(를) 사용합니다: 드라이버 전원을 껐다 켠 뒤 새 설정(--baud, --parity)으로 연결하십시오</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="342"/>
         <source>error: --fc for raw writes is 6 or 16</source>
         <translation>오류: raw 쓰기의 --fc는 6 또는 16입니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="298"/>
+        <location filename="../cli/SetCommand.cpp" line="368"/>
         <source>error: &quot;%1&quot; is not ADDR=VALUE (0x.. or decimal, 0–65535; several values, comma separated, only with --fc 16)</source>
         <translation>오류: &quot;%1&quot;은(는) ADDR=VALUE 형식이 아닙니다(0x.. 또는 10진수, 0–65535; 여러 값은 쉼표로 구분하며 --fc 16에서만)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="315"/>
+        <location filename="../cli/SetCommand.cpp" line="385"/>
         <source>error: 0x%1 is not a register the profile knows; add --yes to write it anyway; nothing was written</source>
         <translation>오류: 0x%1은(는) 프로파일에 없는 레지스터입니다. 그래도 쓰려면 --yes를 추가하십시오. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="325"/>
+        <location filename="../cli/SetCommand.cpp" line="395"/>
         <source>error: %1; nothing was written</source>
         <translation>오류: %1; 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="326"/>
+        <location filename="../cli/SetCommand.cpp" line="396"/>
         <source>%1 is a %2 command; add --yes</source>
         <translation>%1은(는) %2 명령입니다. --yes를 추가하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="333"/>
+        <location filename="../cli/SetCommand.cpp" line="403"/>
         <source>error: the write covers part of %1; add --yes to write it anyway; nothing was written</source>
         <translation>오류: 이 쓰기는 %1의 일부만 덮습니다. 그래도 쓰려면 --yes를 추가하십시오. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="422"/>
         <source>Address</source>
         <translation>주소</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="422"/>
         <source>Written</source>
         <translation>쓴 값</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="385"/>
+        <location filename="../cli/SetCommand.cpp" line="455"/>
         <source>written</source>
         <translation>쓰기 완료</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="389"/>
+        <location filename="../cli/SetCommand.cpp" line="459"/>
         <source>written, but reads back differently</source>
         <translation>쓰기 완료, 다시 읽은 값이 다름</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="392"/>
+        <location filename="../cli/SetCommand.cpp" line="462"/>
         <source>written (not readable back: %1)</source>
         <translation>쓰기 완료(다시 읽기 불가: %1)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="400"/>
+        <location filename="../cli/SetCommand.cpp" line="470"/>
         <source>Also written to %1 (communication group); not read back: no parameter of the profile</source>
         <translation>%1에도 씀(통신 그룹). 다시 읽지 않음: 프로파일의 파라미터가 아님</translation>
     </message>
@@ -11051,32 +11440,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimApp</name>
     <message>
-        <location filename="../sim/SimApp.cpp" line="108"/>
+        <location filename="../sim/SimApp.cpp" line="110"/>
         <source>opentop-sim: warning: %1@%2 cannot use %3 %4 and will not answer</source>
         <translation>opentop-sim: 경고: %1@%2은(는) %3 %4을(를) 사용할 수 없으므로 응답하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="118"/>
+        <location filename="../sim/SimApp.cpp" line="124"/>
         <source>opentop-sim: --defect %1:%2: no drive with machine number %1 on the bus %3</source>
         <translation>opentop-sim: --defect %1:%2: 버스 %3에 국번 %1인 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="125"/>
+        <location filename="../sim/SimApp.cpp" line="131"/>
         <source>opentop-sim: --defect %1 (%2@%1): %3</source>
         <translation>opentop-sim: --defect %1 (%2@%1): %3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="162"/>
+        <location filename="../sim/SimApp.cpp" line="168"/>
         <source>the port is unplugged already</source>
         <translation>포트가 이미 분리되어 있습니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="164"/>
+        <location filename="../sim/SimApp.cpp" line="170"/>
         <source>unplugged</source>
         <translation>분리됨</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="197"/>
+        <location filename="../sim/SimApp.cpp" line="203"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
@@ -11168,7 +11557,7 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimConsole</name>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="31"/>
+        <location filename="../sim/SimConsole.cpp" line="32"/>
         <source>commands:
   help                      this text
   list                      the devices and their state
@@ -11185,6 +11574,8 @@ This moves or stops a motor: add --yes to send it.</source>
                             defect 3 max_speed=800 or defect 4 alarm=0x07@2s
   defect ID clear           the drive has no defects again
   defects                   the drives&apos; defects
+  motor ID [KEY=VALUE ...]  show or change a DC controller&apos;s motor and load,
+                            e.g. motor 7 load=0.05 inertia=3e-4 (see --motor)
   unplug                    close the pty under its client (adapter pulled out)
   replug                    a new pty behind the same symlink
   quit                      stop the simulator</source>
@@ -11204,42 +11595,44 @@ This moves or stops a motor: add --yes to send it.</source>
                             defect 3 max_speed=800 또는 defect 4 alarm=0x07@2s
   defect ID clear           드라이버의 결함을 모두 제거
   defects                   드라이버의 결함 목록
+  motor ID [KEY=VALUE ...]  DC 컨트롤러의 모터와 부하를 표시 또는 변경, 예:
+                            motor 7 load=0.05 inertia=3e-4 (--motor 참조)
   unplug                    클라이언트가 쓰는 pty를 닫음 (어댑터 분리)
   replug                    같은 심볼릭 링크 뒤에 새 pty 생성
   quit                      시뮬레이터 종료</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="63"/>
+        <location filename="../sim/SimConsole.cpp" line="66"/>
         <source>bye</source>
         <translation>종료합니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="68"/>
+        <location filename="../sim/SimConsole.cpp" line="71"/>
         <source>%1 needs the pty server (--pty)</source>
         <translation>%1에는 pty 서버(--pty)가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="79"/>
+        <location filename="../sim/SimConsole.cpp" line="82"/>
         <source>, defects: %1</source>
         <translation>, 결함: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="92"/>
+        <location filename="../sim/SimConsole.cpp" line="95"/>
         <source>no drive has defects</source>
         <translation>결함이 있는 드라이버 없음</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="98"/>
+        <location filename="../sim/SimConsole.cpp" line="101"/>
         <source>unknown command &apos;%1&apos;; type help for the list</source>
         <translation>알 수 없는 명령 &apos;%1&apos;; 목록을 보려면 help를 입력하십시오</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="102"/>
+        <location filename="../sim/SimConsole.cpp" line="105"/>
         <source>usage: %1 ID ...; ID is a machine number on the bus (%2)</source>
         <translation>사용법: %1 ID ...; ID는 버스에 있는 국번입니다(%2)</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="108"/>
+        <location filename="../sim/SimConsole.cpp" line="111"/>
         <source>&apos;%1&apos; is not a machine number; the bus has %2</source>
         <translation>&apos;%1&apos;은(는) 국번이 아닙니다. 버스에 있는 국번: %2</translation>
     </message>
@@ -11405,6 +11798,10 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
                        nostick=PARAM         writes acknowledged, old value stays
                        nostore=PARAM         value lost at the next power cycle
                      e.g. --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
+  --motor LIST       the DC controllers&apos; motor and load, e.g. inertia=2e-4,load=0.05;
+                     supply (V), resistance (ohm), no_load (1/s at full duty),
+                     commutations (per revolution), inertia (kg m2), viscous
+                     (N m s/rad), coulomb (N m), load (N m), gate (ms), tacho (V s)
   --quiet            no frame trace on stderr
   --lang CODE        language of messages: en, zh_TW, zh_CN, ko, ja
   --help             this text
@@ -11436,6 +11833,10 @@ Modbus RTU 드라이버를 가상 터미널 또는 Modbus TCP 게이트웨이로
                        nostick=PARAM         쓰기는 수신 확인하지만 이전 값 유지
                        nostore=PARAM         다음 전원 재투입 시 값 손실
                      예: --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
+  --motor LIST       DC 컨트롤러의 모터와 부하, 예: inertia=2e-4,load=0.05;
+                     supply (V), resistance (ohm), no_load (최대 듀티에서의 1/s),
+                     commutations (1회전당 정류 횟수), inertia (kg m2), viscous
+                     (N m s/rad), coulomb (N m), load (N m), gate (ms), tacho (V s)
   --quiet            stderr에 프레임 추적을 출력하지 않음
   --lang CODE        메시지 언어: en, zh_TW, zh_CN, ko, ja
   --help             이 도움말
@@ -11446,72 +11847,82 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 </translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="81"/>
+        <location filename="../sim/SimOptions.cpp" line="85"/>
         <source>--lang needs a language code such as ko</source>
         <translation>--lang에는 ko 같은 언어 코드가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="84"/>
+        <location filename="../sim/SimOptions.cpp" line="88"/>
         <source>--devices needs a device list such as dbu200@1,dcpid@7</source>
         <translation>--devices에는 dbu200@1,dcpid@7 같은 장치 목록이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="93"/>
+        <location filename="../sim/SimOptions.cpp" line="97"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:5020</source>
         <translation>--tcp에는 HOST:PORT가 필요합니다. 예: 127.0.0.1:5020</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="99"/>
+        <location filename="../sim/SimOptions.cpp" line="103"/>
         <source>--tcp needs HOST:PORT with PORT 0..65535, got &apos;%1&apos;</source>
         <translation>--tcp에는 PORT가 0..65535인 HOST:PORT가 필요합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="111"/>
+        <location filename="../sim/SimOptions.cpp" line="115"/>
         <source>--baud must be one of %1, got &apos;%2&apos;</source>
         <translation>--baud는 %1 중 하나여야 합니다. 입력값: &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="118"/>
+        <location filename="../sim/SimOptions.cpp" line="122"/>
         <source>--parity must be N, E or O, got &apos;%1&apos;</source>
         <translation>--parity는 N, E 또는 O여야 합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="126"/>
+        <location filename="../sim/SimOptions.cpp" line="130"/>
         <source>--turnaround must be 0..1000 ms, got &apos;%1&apos;</source>
         <translation>--turnaround는 0..1000 ms여야 합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="130"/>
+        <location filename="../sim/SimOptions.cpp" line="134"/>
         <source>--faults needs a list such as drop=0.02,crc=0.01</source>
         <translation>--faults에는 drop=0.02,crc=0.01 같은 목록이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="134"/>
+        <location filename="../sim/SimOptions.cpp" line="138"/>
         <source>--faults: %1</source>
         <translation>--faults: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="140"/>
+        <location filename="../sim/SimOptions.cpp" line="144"/>
         <source>--seed must be a whole number 0..4294967295, got &apos;%1&apos;</source>
         <translation>--seed는 0..4294967295의 정수여야 합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="144"/>
+        <location filename="../sim/SimOptions.cpp" line="148"/>
         <source>--defect needs ID:DEFECT[,DEFECT...], e.g. 3:firmware=1.4; DEFECT: %1</source>
         <translation>--defect에는 ID:DEFECT[,DEFECT...]가 필요합니다. 예: 3:firmware=1.4; DEFECT: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="151"/>
+        <location filename="../sim/SimOptions.cpp" line="155"/>
         <source>--defect: %1</source>
         <translation>--defect: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="157"/>
-        <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --quiet, --help, --version</source>
-        <translation>알 수 없는 인수 &apos;%1&apos;; 옵션: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --quiet, --help, --version</translation>
+        <location filename="../sim/SimOptions.cpp" line="159"/>
+        <source>--motor needs a list such as inertia=2e-4,load=0.05</source>
+        <translation>--motor에는 inertia=2e-4,load=0.05 같은 목록이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="164"/>
+        <location filename="../sim/SimOptions.cpp" line="163"/>
+        <source>--motor: %1</source>
+        <translation>--motor: %1</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimOptions.cpp" line="169"/>
+        <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
+        <translation>알 수 없는 인수 &apos;%1&apos;; 옵션: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimOptions.cpp" line="177"/>
         <source>--devices SPEC is required, e.g. --devices dbu200@1,dcpid@7</source>
         <translation>--devices SPEC이 필요합니다. 예: --devices dbu200@1,dcpid@7</translation>
     </message>
@@ -11829,9 +12240,65 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
         <translation>상태 아직 알 수 없음</translation>
     </message>
     <message>
-        <location filename="../ui/widgets/StatusLight.cpp" line="42"/>
+        <location filename="../ui/widgets/StatusLight.cpp" line="44"/>
         <source>Status light %1: %2</source>
         <translation>상태등 %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/widgets/StatusLight.cpp" line="48"/>
+        <source>The drive&apos;s manual: %1</source>
+        <translation>드라이버 매뉴얼: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StepMetrics</name>
+    <message>
+        <location filename="../model/tuning/StepMetrics.cpp" line="18"/>
+        <source>the step has no height (from = to)</source>
+        <translation>스텝 크기가 0입니다(from = to)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/StepMetrics.cpp" line="19"/>
+        <source>too few samples after the step (%1)</source>
+        <translation>스텝 이후 샘플이 너무 적습니다(%1)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StepTestPanel</name>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="22"/>
+        <source>Run step test…</source>
+        <translation>스텝 시험 실행…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="29"/>
+        <source>From:</source>
+        <translation>시작:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="30"/>
+        <source>To:</source>
+        <translation>목표:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="31"/>
+        <source>Record time:</source>
+        <translation>기록 시간:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="32"/>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="75"/>
+        <source>Enter two different speeds of 0 %1 or more.</source>
+        <translation>0 %1 이상의 서로 다른 두 속도를 입력하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="79"/>
+        <source>Enter a record time of 100–60000 ms.</source>
+        <translation>기록 시간을 100–60000 ms로 입력하십시오.</translation>
     </message>
 </context>
 <context>
@@ -11989,22 +12456,22 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::StopConfirmer</name>
     <message>
-        <location filename="../model/run/StopConfirmer.cpp" line="56"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="80"/>
         <source>%1 drives report neither running state nor speed</source>
         <translation>%1 드라이버는 운전 상태도 속도도 알려주지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/run/StopConfirmer.cpp" line="86"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="111"/>
         <source>%1 is %2: the drive does not take motion commands over the bus (it follows its input terminals)</source>
         <translation>%1이(가) %2입니다: 드라이버가 버스를 통한 운전 명령을 받지 않습니다(입력 단자를 따름)</translation>
     </message>
     <message>
-        <location filename="../model/run/StopConfirmer.cpp" line="140"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="185"/>
         <source>still at %1 after %2 s</source>
         <translation>%2 s 후에도 %1</translation>
     </message>
     <message>
-        <location filename="../model/run/StopConfirmer.cpp" line="142"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="187"/>
         <source>still running after %1 s</source>
         <translation>%1 s 후에도 운전 중</translation>
     </message>
@@ -12542,7 +13009,7 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
     </message>
     <message>
         <location filename="../transport/LibmodbusBackend.cpp" line="281"/>
-        <location filename="../transport/RtuBackend.cpp" line="145"/>
+        <location filename="../transport/RtuBackend.cpp" line="146"/>
         <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>응답 불완전</translation>
@@ -12555,7 +13022,7 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
     </message>
     <message>
         <location filename="../transport/LibmodbusBackend.cpp" line="293"/>
-        <location filename="../transport/RtuBackend.cpp" line="152"/>
+        <location filename="../transport/RtuBackend.cpp" line="153"/>
         <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>수신 실패</translation>
@@ -12632,77 +13099,72 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
         <translation>재시도 %1회는 허용되지 않습니다: 0–10을 사용하거나, 기본값은 -1을 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="163"/>
+        <location filename="../transport/ModbusRequest.cpp" line="164"/>
+        <source>Function 0x%1 cannot be broadcast: only functions 06h and 10h (writes) may be sent to machine number 0; use slave address 1–247.</source>
+        <translation>기능 코드 0x%1은(는) 브로드캐스트할 수 없습니다: 기능 코드 06h와 10h(쓰기)만 국번 0으로 보낼 수 있습니다. 슬레이브 주소 1–247을 사용하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../transport/ModbusRequest.cpp" line="171"/>
         <source>Function code 0x%1 must be sent as a raw request.</source>
         <translation>기능 코드 0x%1은(는) raw 요청으로 보내야 합니다.</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="167"/>
+        <location filename="../transport/ModbusRequest.cpp" line="175"/>
         <source>Raw request data of %1 bytes is too long: at most %2 bytes.</source>
         <translation>raw 요청 데이터 %1바이트는 너무 깁니다: 최대 %2바이트.</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="173"/>
-        <source>Device identification cannot be broadcast.</source>
-        <translation>장치 식별은 브로드캐스트할 수 없습니다.</translation>
-    </message>
-    <message>
-        <location filename="../transport/ModbusRequest.cpp" line="183"/>
-        <source>A read cannot be broadcast: use slave address 1–247.</source>
-        <translation>읽기는 브로드캐스트할 수 없습니다: 슬레이브 주소 1–247을 사용하십시오.</translation>
-    </message>
-    <message>
-        <location filename="../transport/ModbusRequest.cpp" line="186"/>
+        <location filename="../transport/ModbusRequest.cpp" line="188"/>
         <source>Cannot read %1 registers at once: use 1–125 registers.</source>
         <translation>레지스터 %1개를 한 번에 읽을 수 없습니다: 1–125개를 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="193"/>
+        <location filename="../transport/ModbusRequest.cpp" line="195"/>
         <source>Write single register needs exactly 1 value, not %1.</source>
         <translation>단일 레지스터 쓰기에는 값이 정확히 1개 필요합니다(%1개가 아님).</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="199"/>
+        <location filename="../transport/ModbusRequest.cpp" line="201"/>
         <source>Cannot write %1 registers at once: use 1–123 registers.</source>
         <translation>레지스터 %1개를 한 번에 쓸 수 없습니다: 1–123개를 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="204"/>
+        <location filename="../transport/ModbusRequest.cpp" line="206"/>
         <source>%1 values given for %2 registers.</source>
         <translation>레지스터 %2개에 값 %1개가 주어졌습니다.</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="213"/>
+        <location filename="../transport/ModbusRequest.cpp" line="215"/>
         <source>Registers %1 ×%2 run past the last address 0xFFFF.</source>
         <translation>레지스터 %1 ×%2이(가) 마지막 주소 0xFFFF를 넘어갑니다.</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="224"/>
+        <location filename="../transport/ModbusRequest.cpp" line="226"/>
         <source>device identification code %1 object %2</source>
         <translation>장치 식별 코드 %1 오브젝트 %2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="232"/>
+        <location filename="../transport/ModbusRequest.cpp" line="234"/>
         <source>raw %1 %2</source>
         <translation>raw %1 %2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="236"/>
+        <location filename="../transport/ModbusRequest.cpp" line="238"/>
         <source>read %1 %2 ×%3</source>
         <translation>읽기 %1 %2 ×%3</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="240"/>
+        <location filename="../transport/ModbusRequest.cpp" line="242"/>
         <source>write %1 %2 = %3</source>
         <translation>쓰기 %1 %2 = %3</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="243"/>
+        <location filename="../transport/ModbusRequest.cpp" line="245"/>
         <source>write %1 %2 ×%3 = %4</source>
         <translation>쓰기 %1 %2 ×%3 = %4</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="249"/>
+        <location filename="../transport/ModbusRequest.cpp" line="251"/>
         <source>broadcast %1</source>
         <translation>브로드캐스트 %1</translation>
     </message>
@@ -12857,7 +13319,7 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
         <translation>%2(PID %3)이(가) %1을(를) 사용 중입니다. 먼저 닫으십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="82"/>
+        <location filename="../transport/RtuBackend.cpp" line="83"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -12866,17 +13328,17 @@ then log out and in again (the group applies to new sessions only).</source>
 로그아웃했다가 다시 로그인하십시오(그룹은 새 세션에만 적용됨).</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="88"/>
+        <location filename="../transport/RtuBackend.cpp" line="89"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> (장치가 이 패리티를 지원하지 않을 수 있습니다. pty는 N이 필요합니다)</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="123"/>
+        <location filename="../transport/RtuBackend.cpp" line="124"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>응답이 %1바이트라고 알리지만 RTU 프레임에 들어갈 수 있는 크기보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="144"/>
+        <location filename="../transport/RtuBackend.cpp" line="145"/>
         <source>no reply</source>
         <translation>응답 없음</translation>
     </message>
@@ -13169,6 +13631,820 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::TuneCommand</name>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="80"/>
+        <source>Speed-loop step test and relay autotune of a DC controller (needs --yes)</source>
+        <translation>DC 컨트롤러의 속도 루프 스텝 시험과 릴레이 오토튜닝 (--yes 필요)</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="86"/>
+        <source>Run the test (it moves the motor).</source>
+        <translation>시험을 실행합니다(모터가 움직입니다).</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="87"/>
+        <source>step: speed before the step (default 0).</source>
+        <translation>step: 스텝 전 속도 (기본값 0).</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="87"/>
+        <location filename="../cli/TuneCommand.cpp" line="88"/>
+        <location filename="../cli/TuneCommand.cpp" line="91"/>
+        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <source>SPEED</source>
+        <translation>SPEED</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="88"/>
+        <source>step: speed after the step.</source>
+        <translation>step: 스텝 후 속도.</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="89"/>
+        <source>step: record this long after the step (default 1500).</source>
+        <translation>step: 스텝 후 기록할 시간 (기본값 1500).</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="90"/>
+        <source>MS</source>
+        <translation>MS</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="91"/>
+        <source>autotune: operating speed of the relay test.</source>
+        <translation>autotune: 릴레이 시험의 운전 속도.</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="92"/>
+        <source>autotune: output swing, % of full output (default 10).</source>
+        <translation>autotune: 출력 스윙, 최대 출력에 대한 % (기본값 10).</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="93"/>
+        <source>PERCENT</source>
+        <translation>PERCENT</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="95"/>
+        <source>autotune: soft, medium (default), stiff, tyreus-luyben or zn-pi.</source>
+        <translation>autotune: soft, medium (기본값), stiff, tyreus-luyben 또는 zn-pi.</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="95"/>
+        <source>RULE</source>
+        <translation>RULE</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="96"/>
+        <source>autotune: write the proposed gains, then run a step test from half the operating speed to it.</source>
+        <translation>autotune: 제안된 게인을 쓴 뒤, 운전 속도의 절반에서 운전 속도까지 스텝 시험을 실행합니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="98"/>
+        <source>autotune: with --accept, store the gains in the drive.</source>
+        <translation>autotune: --accept와 함께 쓰면 게인을 드라이버에 저장합니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <source>Stop at once beyond this speed (default 120 % of the test&apos;s highest).</source>
+        <translation>속도가 이 값을 넘으면 즉시 정지합니다(기본값: 시험 최고 속도의 120 %).</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="101"/>
+        <source>Stop at once beyond this current in A (default 20).</source>
+        <translation>전류가 이 값(A)을 넘으면 즉시 정지합니다(기본값 20).</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="102"/>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <source>Write the samples to FILE.</source>
+        <translation>샘플을 FILE에 씁니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <source>FILE</source>
+        <translation>FILE</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="117"/>
+        <source>error: usage: %1</source>
+        <translation>오류: 사용법: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="127"/>
+        <source>error: --%1 must be a number 0 or more, got &apos;%2&apos;</source>
+        <translation>오류: --%1은(는) 0 이상의 숫자여야 합니다. 입력값: &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="149"/>
+        <location filename="../cli/TuneCommand.cpp" line="160"/>
+        <location filename="../cli/TuneCommand.cpp" line="165"/>
+        <location filename="../cli/TuneCommand.cpp" line="319"/>
+        <source>error: %1</source>
+        <translation>오류: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="150"/>
+        <source>step needs --to SPEED</source>
+        <translation>step에는 --to SPEED가 필요합니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="151"/>
+        <source>--rule must be one of %1</source>
+        <translation>--rule은 %1 중 하나여야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="153"/>
+        <source>autotune needs --speed SPEED</source>
+        <translation>autotune에는 --speed SPEED가 필요합니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="169"/>
+        <source>Would run the motor of machine number %1 from %2 to %3 and record the step response.</source>
+        <translation>국번 %1의 모터를 %2에서 %3(으)로 운전하고 스텝 응답을 기록합니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="174"/>
+        <source>Would run the motor of machine number %1 in a relay test around %2 (output ±%3 %).</source>
+        <translation>국번 %1의 모터를 %2 부근에서 릴레이 시험으로 운전합니다(출력 ±%3 %).</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="180"/>
+        <source>This moves the motor: add --yes to run it.</source>
+        <translation>모터가 움직입니다: 실행하려면 --yes를 추가하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="229"/>
+        <source>Machine number %1, gains %2</source>
+        <translation>국번 %1, 게인 %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="231"/>
+        <source>  rise time (10–90 %): %1</source>
+        <translation>  상승 시간 (10–90 %): %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="232"/>
+        <source>  overshoot: %1 %</source>
+        <translation>  오버슈트: %1 %</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="233"/>
+        <source>  settling time (2 %): %1</source>
+        <translation>  정정 시간 (2 %): %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="234"/>
+        <source>  steady-state error: %1 %2</source>
+        <translation>  정상상태 오차: %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="235"/>
+        <source>  peak current: %1 A</source>
+        <translation>  피크 전류: %1 A</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="249"/>
+        <source>Step %1 → %2 %3:</source>
+        <translation>스텝 %1 → %2 %3:</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="253"/>
+        <source>Relay test: Ku %1, Tu %2 ms (amplitude ±%3 %4, %5 cycles)</source>
+        <translation>릴레이 시험: Ku %1, Tu %2 ms (진폭 ±%3 %4, %5주기)</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="259"/>
+        <source>Model: gain %1, time constant %2 ms, dead time %3 ms (the bus&apos;s %4 ms left out)</source>
+        <translation>모델: 게인 %1, 시정수 %2 ms, 무효 시간 %3 ms (버스의 %4 ms는 제외)</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="265"/>
+        <source>Proposed (%1): %2</source>
+        <translation>제안값 (%1): %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="281"/>
+        <source>Writing the proposed gains failed: %1</source>
+        <translation>제안 게인 쓰기 실패: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="284"/>
+        <source>Proposed gains written (not stored).</source>
+        <translation>제안 게인을 썼습니다(저장 안 됨).</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="287"/>
+        <source>Measured step %1 → %2 %3 with them:</source>
+        <translation>이 게인으로 측정한 스텝 %1 → %2 %3:</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="303"/>
+        <source>Gains stored in the drive.</source>
+        <translation>게인을 드라이버에 저장했습니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="304"/>
+        <source>Storing the gains failed: %1</source>
+        <translation>게인 저장 실패: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="311"/>
+        <source>Test ended: %1</source>
+        <translation>시험 종료: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningChart</name>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="40"/>
+        <source>Time (ms)</source>
+        <translation>시간 (ms)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="44"/>
+        <source>Current (A)</source>
+        <translation>전류 (A)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="61"/>
+        <source>Speed</source>
+        <translation>속도</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="61"/>
+        <source>Speed (%1)</source>
+        <translation>속도 (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningGains</name>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="43"/>
+        <source>Writing the gains failed: %1</source>
+        <translation>게인 쓰기 실패: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="62"/>
+        <source>Proposal written (temporary until stored).</source>
+        <translation>제안값을 썼습니다(저장 전까지 임시).</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="83"/>
+        <source>%1: the gains before were written back (%2).</source>
+        <translation>%1: 이전 게인을 다시 썼습니다(%2).</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="102"/>
+        <source>Gains stored in the drive.</source>
+        <translation>게인을 드라이버에 저장했습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="104"/>
+        <source>Storing the gains failed: %1</source>
+        <translation>게인 저장 실패: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningLimitsBox</name>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="12"/>
+        <source>Limits</source>
+        <translation>한계값</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="17"/>
+        <source>Beyond it the motor is stopped at once. Empty: 125 % of the step test&apos;s highest speed, 150 % of the autotune&apos;s speed</source>
+        <translation>이 값을 넘으면 모터를 즉시 정지합니다. 비워 두면: 스텝 시험 최고 속도의 125 %, 오토튜닝 속도의 150 %</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="19"/>
+        <source>Beyond it the motor is stopped at once. Empty: 1.2 × the drive&apos;s maximum current</source>
+        <translation>이 값을 넘으면 모터를 즉시 정지합니다. 비워 두면: 1.2 × 드라이버 최대 전류</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="22"/>
+        <source>Max. speed:</source>
+        <translation>최고 속도:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="23"/>
+        <source>Max. current:</source>
+        <translation>최대 전류:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="24"/>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="37"/>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="39"/>
+        <source>auto: %1</source>
+        <translation>자동: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="39"/>
+        <source>none</source>
+        <translation>없음</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="48"/>
+        <source>Enter a speed limit above 0 %1, or leave it empty.</source>
+        <translation>0 %1보다 큰 속도 한계값을 입력하거나 비워 두십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="52"/>
+        <source>Enter a current limit above 0 A, or leave it empty.</source>
+        <translation>0 A보다 큰 전류 한계값을 입력하거나 비워 두십시오.</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningMetricsView</name>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="25"/>
+        <source>Rise time (10–90 %):</source>
+        <translation>상승 시간 (10–90 %):</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="26"/>
+        <source>Overshoot:</source>
+        <translation>오버슈트:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="27"/>
+        <source>Settling time (2 %):</source>
+        <translation>정정 시간 (2 %):</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="28"/>
+        <source>Steady-state error:</source>
+        <translation>정상상태 오차:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="29"/>
+        <source>Peak current:</source>
+        <translation>피크 전류:</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="40"/>
+        <source>No run yet</source>
+        <translation>아직 실행한 시험 없음</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="41"/>
+        <source>%1: recording</source>
+        <translation>%1: 기록 중</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="44"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="52"/>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="55"/>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="53"/>
+        <source>not reached</source>
+        <translation>도달 안 함</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="54"/>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="56"/>
+        <source>not settled</source>
+        <translation>정정 안 됨</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="57"/>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="58"/>
+        <source>%1 A</source>
+        <translation>%1 A</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="63"/>
+        <source>Rise time %1; overshoot %2; settling time %3; steady-state error %4; peak current %5</source>
+        <translation>상승 시간 %1; 오버슈트 %2; 정정 시간 %3; 정상상태 오차 %4; 피크 전류 %5</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningPage</name>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="41"/>
+        <source>STOP</source>
+        <translation>정지</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="52"/>
+        <source>Cancels the running test: the motor is stopped and the stop confirmed</source>
+        <translation>진행 중인 시험을 취소합니다: 모터를 정지하고 정지를 확인합니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="68"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="245"/>
+        <source>Step test</source>
+        <translation>스텝 시험</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="69"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <source>Relay autotune</source>
+        <translation>릴레이 오토튜닝</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="107"/>
+        <source>Ready. Nothing moves until you confirm a test.</source>
+        <translation>준비 완료. 시험을 확인하기 전에는 아무것도 움직이지 않습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="198"/>
+        <source>Could not read the speed mode: %1</source>
+        <translation>속도 모드를 읽을 수 없습니다: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="201"/>
+        <source>The drive is not in a closed-loop speed mode (now: %1). Choose one on its settings page first.</source>
+        <translation>드라이버가 폐루프 속도 모드가 아닙니다(현재: %1). 먼저 설정 페이지에서 폐루프 모드를 선택하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="224"/>
+        <source>Limits: %1 %2, %3.</source>
+        <translation>한계값: %1 %2, %3.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="226"/>
+        <source>%1 A</source>
+        <translation>%1 A</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="226"/>
+        <source>no current limit</source>
+        <translation>전류 한계값 없음</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="241"/>
+        <source>The motor of %1 will run from %2 to %3 %4 in its present speed mode, for about %5 s, and then stop.</source>
+        <translation>%1의 모터가 현재 속도 모드로 %2에서 %3 %4까지 약 %5 s 동안 운전한 뒤 정지합니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="245"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <source>Run</source>
+        <translation>실행</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="261"/>
+        <source>The motor of %1 will run in open loop (the speed loop off) around %2 %3, its output switching by ±%4 %, for up to %5 s, and then stop.</source>
+        <translation>%1의 모터가 개루프(속도 루프 끔)로 %2 %3 부근에서 운전하며 출력을 ±%4 %씩 전환합니다. 최대 %5 s 후 정지합니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="283"/>
+        <source>Stop command sent.</source>
+        <translation>정지 명령을 보냈습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="284"/>
+        <source>Stop command failed: %1</source>
+        <translation>정지 명령 실패: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="294"/>
+        <source>Stopping…</source>
+        <translation>정지하는 중…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="308"/>
+        <source>Run %1: %2 → %3 %4</source>
+        <translation>실행 %1: %2 → %3 %4</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="343"/>
+        <source>Step test done.</source>
+        <translation>스텝 시험 완료.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="343"/>
+        <source>Step test ended: %1</source>
+        <translation>스텝 시험 종료: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="347"/>
+        <source>The test was stopped</source>
+        <translation>시험이 정지됨</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="380"/>
+        <source>Autotune ended: %1</source>
+        <translation>오토튜닝 종료: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="382"/>
+        <source>The autotune was stopped</source>
+        <translation>오토튜닝이 정지됨</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="392"/>
+        <source>Predicted: %1 → %2 %3</source>
+        <translation>예측: %1 → %2 %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="400"/>
+        <source>Autotune done: proposal %1. Accept writes it to the drive.</source>
+        <translation>오토튜닝 완료: 제안값 %1. 수락하면 드라이버에 씁니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="434"/>
+        <source>Proposal rejected; the drive&apos;s gains were not changed.</source>
+        <translation>제안값을 거부했습니다. 드라이버의 게인은 바뀌지 않았습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="438"/>
+        <source>Proposal rejected</source>
+        <translation>제안값 거부됨</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRules</name>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="60"/>
+        <source>Soft (no overshoot)</source>
+        <translation>부드러움 (오버슈트 없음)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="62"/>
+        <source>Medium (some overshoot)</source>
+        <translation>보통 (약간의 오버슈트)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="64"/>
+        <source>Stiff (Ziegler–Nichols)</source>
+        <translation>고강성 (Ziegler–Nichols)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="66"/>
+        <source>Tyreus–Luyben (robust)</source>
+        <translation>Tyreus–Luyben (강건)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="68"/>
+        <source>PI only (Ziegler–Nichols)</source>
+        <translation>PI만 (Ziegler–Nichols)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRunCsv</name>
+    <message>
+        <location filename="../ui/tuning/TuningRunCsv.cpp" line="66"/>
+        <source>could not write %1: %2</source>
+        <translation>%1에 쓸 수 없습니다: %2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRunList</name>
+    <message>
+        <location filename="../ui/tuning/TuningRunList.cpp" line="14"/>
+        <source>Run</source>
+        <translation>실행</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunList.cpp" line="14"/>
+        <source>Gains</source>
+        <translation>게인</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunList.cpp" line="43"/>
+        <source>%1 (recording)</source>
+        <translation>%1 (기록 중)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunList.cpp" line="45"/>
+        <source>P %1 · I %2 · D %3</source>
+        <translation>P %1 · I %2 · D %3</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRunner</name>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="183"/>
+        <source>a tuning test is already running</source>
+        <translation>튜닝 시험이 이미 실행 중입니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="191"/>
+        <source>Reading the drive&apos;s settings</source>
+        <translation>드라이버 설정을 읽는 중</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="199"/>
+        <source>could not read the drive&apos;s settings: %1</source>
+        <translation>드라이버 설정을 읽을 수 없습니다: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="224"/>
+        <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
+        <translation>드라이버가 폐루프 속도 모드가 아닙니다: 먼저 %1(%2)을(를) %3(으)로 설정하십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="226"/>
+        <source> or </source>
+        <translation> 또는 </translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="241"/>
+        <source>Setting the communication-loss braking time to %1 s</source>
+        <translation>통신 두절 정지 시간을 %1 s로 설정하는 중</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="265"/>
+        <source>the drive stopped answering: %1</source>
+        <translation>드라이버가 응답하지 않습니다: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="283"/>
+        <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
+        <translation>속도 %1 %2이(가) 시험 한계값 %3 %2을(를) 넘었습니다: 즉시 정지함</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="290"/>
+        <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
+        <translation>전류 %1 A가 시험 한계값 %2 A를 넘었습니다: 즉시 정지함</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="296"/>
+        <source>cancelled</source>
+        <translation>취소됨</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="356"/>
+        <source>Stopping the motor</source>
+        <translation>모터를 정지하는 중</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="362"/>
+        <source>motor stopped (confirmed)</source>
+        <translation>모터 정지됨(확인됨)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="363"/>
+        <source>the motor could not be confirmed stopped: check it</source>
+        <translation>모터 정지를 확인할 수 없습니다: 모터를 점검하십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="398"/>
+        <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
+        <translation>스텝 시험은 한 속도에서 다른 속도로 정회전합니다: 시작 속도와 목표 속도는 서로 달라야 하며 0 이상이어야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="405"/>
+        <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
+        <translation>%1 %2이(가) 시험 속도 한계값 %3 %2을(를) 넘습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="413"/>
+        <source>Running to %1 %2</source>
+        <translation>%1 %2까지 운전하는 중</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="449"/>
+        <source>Step to %1 %2</source>
+        <translation>%1 %2(으)로 스텝</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="477"/>
+        <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
+        <translation>운전 속도는 0보다 크고 시험 속도 한계값 %1 %2보다 작아야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="484"/>
+        <source>the relay amplitude must be 0–50 % of full output</source>
+        <translation>릴레이 진폭은 최대 출력의 0–50 %여야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="487"/>
+        <source>Open loop: finding the output for %1 %2</source>
+        <translation>개루프: %1 %2에 필요한 출력을 찾는 중</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="536"/>
+        <source>the motor did not turn at %1 % output</source>
+        <translation>출력 %1 %에서 모터가 돌지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="572"/>
+        <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
+        <translation>운전 속도에 출력 %1 %가 필요합니다: 그 위아래로 ±%2 %의 여유가 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="577"/>
+        <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
+        <translation>%1 %2 부근에서 릴레이 시험 중 (출력 %3 % ± %4 %)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="611"/>
+        <source>no steady oscillation within %1 s: %2</source>
+        <translation>%1 s 이내에 안정된 진동이 없습니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="613"/>
+        <source>try a larger amplitude</source>
+        <translation>진폭을 크게 해 보십시오</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRunsView</name>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="36"/>
+        <source>Save CSV…</source>
+        <translation>CSV 저장…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="37"/>
+        <source>Save PNG…</source>
+        <translation>PNG 저장…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="42"/>
+        <source>Saves the selected run: its samples, gains and metrics</source>
+        <translation>선택한 실행 기록을 저장합니다: 샘플, 게인, 지표</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="43"/>
+        <source>Saves the chart as it is shown</source>
+        <translation>표시된 그대로 차트를 저장합니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
+        <source>solid: speed · dotted: command · dash-dot: current (right axis) · dashed: predicted speed</source>
+        <translation>실선: 속도 · 점선: 명령 · 일점쇄선: 전류(오른쪽 축) · 파선: 예측 속도</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="161"/>
+        <source>no run to save</source>
+        <translation>저장할 실행 기록이 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="174"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="178"/>
+        <source>Save run as CSV</source>
+        <translation>실행 기록을 CSV로 저장</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="175"/>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 파일 (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="183"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <source>Save chart as PNG</source>
+        <translation>차트를 PNG로 저장</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="184"/>
+        <source>PNG images (*.png)</source>
+        <translation>PNG 이미지 (*.png)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <source>Could not write %1.</source>
+        <translation>%1에 쓸 수 없습니다.</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningSpec</name>
+    <message>
+        <location filename="../model/tuning/TuningSpec.cpp" line="23"/>
+        <source>%1 has no speed loop to tune</source>
+        <translation>%1에는 튜닝할 속도 루프가 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningSpec.cpp" line="51"/>
+        <source>%1: the profile&apos;s tuning needs the roles pidP, pidI, pidD, pidDPeriod, pidStore, speedMode, speedCommand, commLossTime, loadCurrent and output</source>
+        <translation>%1: 프로파일의 튜닝에는 pidP, pidI, pidD, pidDPeriod, pidStore, speedMode, speedCommand, commLossTime, loadCurrent, output 역할이 필요합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningSpec.cpp" line="60"/>
+        <source>%1: the profile&apos;s tuning section needs periodMs ≥ 1, outputFullScale &gt; 0, openLoopMode and closedLoopModes with known feedback parameters</source>
+        <translation>%1: 프로파일의 튜닝 섹션에는 periodMs ≥ 1, outputFullScale &gt; 0, openLoopMode, 그리고 피드백 파라미터가 알려진 closedLoopModes가 필요합니다</translation>
+    </message>
+</context>
+<context>
     <name>opentop::UnitRecordJson</name>
     <message>
         <location filename="../model/eol/UnitRecordJson.cpp" line="105"/>
@@ -13320,98 +14596,104 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ValueCodec</name>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="130"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="202"/>
         <source>depends on %1, which is not known yet</source>
         <translation>아직 알 수 없는 %1에 따라 달라집니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="132"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="204"/>
         <source>text of up to %1 characters</source>
         <translation>최대 %1자의 텍스트</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="142"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="178"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="214"/>
         <source> or </source>
         <translation> 또는 </translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="150"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="193"/>
+        <source>%1: %2 is outside the recommended range %3; it is allowed and will be written</source>
+        <translation>%1: %2은(는) 권장 범위 %3을(를) 벗어납니다. 허용되는 값이므로 씁니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueCodec.cpp" line="222"/>
         <source>, or </source>
         <translation>, 또는 </translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="151"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="223"/>
         <source>any value</source>
         <translation>모든 값</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="167"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="239"/>
         <source> (the variant is not known, so the value must suit %1; name the variant to use its own range)</source>
         <translation> (기종을 알 수 없으므로 값이 %1에 맞아야 합니다. 해당 기종의 범위를 쓰려면 기종을 지정하십시오)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="177"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="249"/>
         <source>%1: the allowed values depend on %2, which has not been read</source>
         <translation>%1: 허용 값이 아직 읽지 않은 %2에 따라 달라집니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="182"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="254"/>
         <source>%1: value out of the register&apos;s range; allowed: %2</source>
         <translation>%1: 값이 레지스터 범위를 벗어났습니다. 허용: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="194"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="266"/>
         <source>%1: %2 is not allowed; allowed: %3</source>
         <translation>%1: %2은(는) 허용되지 않습니다. 허용: %3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="206"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="278"/>
         <source>%1: expected %2 registers, got %3</source>
         <translation>%1: 레지스터 %2개가 필요하지만 %3개입니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="244"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="316"/>
         <source>%1 is text, not a number</source>
         <translation>%1은(는) 숫자가 아니라 텍스트입니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="257"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="329"/>
         <source>%1: %2 is finer than the step of %3 %4; allowed: %5</source>
         <translation>%1: %2이(가) 단위 %3 %4보다 세밀합니다. 허용: %5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="288"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="362"/>
         <source>%1: at most %2 characters</source>
         <translation>%1: 최대 %2자</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="294"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="368"/>
         <source>%1: only printable ASCII characters are allowed</source>
         <translation>%1: 출력 가능한 ASCII 문자만 허용됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="306"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="380"/>
         <source>%1: no value given; allowed: %2</source>
         <translation>%1: 값이 없습니다. 허용: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="346"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="420"/>
         <source>%1: &quot;%2&quot; is only available when %3 is %4; allowed now: %5</source>
         <translation>%1: &quot;%2&quot;은(는) %3이(가) %4일 때만 사용할 수 있습니다. 현재 허용: %5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="359"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="379"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="433"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="453"/>
         <source>%1: &quot;%2&quot; is not a valid value; allowed: %3</source>
         <translation>%1: &quot;%2&quot;은(는) 올바른 값이 아닙니다. 허용: %3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="405"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="479"/>
         <source>(invalid)</source>
         <translation>(무효)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="416"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="490"/>
         <source>unknown code %1</source>
         <translation>알 수 없는 코드 %1</translation>
     </message>

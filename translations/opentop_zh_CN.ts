@@ -255,144 +255,189 @@
         <translation>无应答</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="47"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="48"/>
         <source>top level</source>
         <translation>顶层</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="50"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="51"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot; 必须为 1</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="59"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="61"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot; 必须是小写 id</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="69"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="71"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity 必须为 N、E 或 O</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="73"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="75"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial：baud 必须为 1200–115200，stopBits 必须为 1 或 2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="89"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="81"/>
+        <source>serial.powerOnDelayMs must be 0–60000</source>
+        <translation>serial.powerOnDelayMs 必须为 0–60000</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="95"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits：maxReadRegisters 1–125，maxWriteRegisters 1–123</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="91"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="97"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits：slaves 必须在 1–247 范围内</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="106"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="112"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1] 需要 id、model 和 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="108"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="114"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]：id &quot;%2&quot; 重复</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="119"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="125"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1] 需要唯一的 id 和 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="130"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="136"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1] 需要功能码 3 或 4，且 first ≤ last</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="174"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="180"/>
         <source>%1 has no name</source>
         <translation>%1 没有名称</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="176"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="182"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1：reset 必须是 %2 之一</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="179"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="185"/>
         <source>%1: code %2 repeated</source>
         <translation>%1：代码 %2 重复</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="201"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="207"/>
         <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
         <translation>%1：storeWith &quot;%2&quot; 不是命令参数</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="204"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="210"/>
         <source>%1: the default is not among its allowed values</source>
         <translation>%1：默认值不在允许值范围内</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="208"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="214"/>
         <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
         <translation>%1：位域 &quot;%2&quot;：功能 &quot;%3&quot; 不是可读参数</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="215"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="221"/>
         <source>%1: condition on unknown parameter &quot;%2&quot;</source>
         <translation>%1：条件引用了未知参数 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="217"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="223"/>
         <source>%1: the default is not allowed when %2</source>
         <translation>%1：当 %2 时不允许使用默认值</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="227"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
         <source>%1 runs past address 0xFFFF</source>
         <translation>%1 超出地址 0xFFFF</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="230"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="236"/>
         <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
         <translation>%1 与 &quot;%2&quot; 在 0x%3 处重叠（%4 个寄存器）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="254"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="260"/>
         <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
         <translation>identify：&quot;%1&quot; 必须是 identify 读取范围内的参数</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="257"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="263"/>
         <source>identify.nameMatch is not a valid regular expression</source>
         <translation>identify.nameMatch 不是有效的正则表达式</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="269"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1：未知参数 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="297"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="303"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1 必须是参数名、参数名列表或对象</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="306"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="312"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1：&quot;%2&quot; 没有位域 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="312"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="318"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1：%2 不是可用于写入 &quot;%3&quot; 的值</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="336"/>
+        <source>decelerationKnobs need the &quot;selected&quot; role</source>
+        <translation>decelerationKnobs 需要 &quot;selected&quot; 角色</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="352"/>
+        <source>%1 needs &quot;selected&quot; and &quot;maxSeconds&quot;</source>
+        <translation>%1 需要 &quot;selected&quot; 和 &quot;maxSeconds&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="355"/>
+        <source>%1: &quot;selected&quot; %2 is not a value of the &quot;selected&quot; role, or repeated</source>
+        <translation>%1：&quot;selected&quot; %2 不是 &quot;selected&quot; 角色的值，或重复出现</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="360"/>
+        <source>%1: &quot;maxSeconds&quot; must be more than 0 and at most 600</source>
+        <translation>%1：&quot;maxSeconds&quot; 必须大于 0 且不超过 600</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="392"/>
+        <source>%1: &quot;light&quot; must be one of %2, each once</source>
+        <translation>%1：&quot;light&quot; 必须是 %2 之一，且每个只能出现一次</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="395"/>
+        <source>%1: &quot;colour&quot; must be #rrggbb</source>
+        <translation>%1：&quot;colour&quot; 必须为 #rrggbb</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="397"/>
+        <source>%1: &quot;label&quot; and &quot;meaning&quot; must not be empty</source>
+        <translation>%1：&quot;label&quot; 和 &quot;meaning&quot; 不能为空</translation>
     </message>
     <message>
         <location filename="../model/i18n/ProfileTranslation.cpp" line="56"/>
         <source> and %1 more</source>
         <translation> 及另外 %1 个</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="26"/>
+        <source>not reached</source>
+        <translation>未达到</translation>
     </message>
 </context>
 <context>
@@ -1005,6 +1050,134 @@ Remedy: %5</source>
         <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
         <source>Erasing failed: %1</source>
         <translation>清除失败：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::AutotunePanel</name>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="24"/>
+        <source>Autotune…</source>
+        <translation>自整定…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="27"/>
+        <source>Accept</source>
+        <translation>接受</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="28"/>
+        <source>Reject</source>
+        <translation>拒绝</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="29"/>
+        <source>Store in the drive</source>
+        <translation>保存到驱动器</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="43"/>
+        <source>Writes the proposed gains to the drive (temporary until stored) and offers a step test to compare with the prediction</source>
+        <translation>将建议增益写入驱动器（保存前仅临时有效），并提供阶跃测试以与预测结果比较</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="45"/>
+        <source>Writes back the gains the drive had before</source>
+        <translation>将驱动器原来的增益写回</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="46"/>
+        <source>Stores the gains in the drive so that they survive a power cycle</source>
+        <translation>将增益保存到驱动器，重新上电后仍保留</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="51"/>
+        <source>Operating speed:</source>
+        <translation>运行速度：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="52"/>
+        <source>Relay amplitude:</source>
+        <translation>继电器幅值：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="53"/>
+        <source>%</source>
+        <translation>%</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="54"/>
+        <source>Rule:</source>
+        <translation>整定规则：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="58"/>
+        <source>Present</source>
+        <translation>当前</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="59"/>
+        <source>Proposed</source>
+        <translation>建议</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <source>P</source>
+        <translation>P</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <source>I</source>
+        <translation>I</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <source>D</source>
+        <translation>D</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <source>D period</source>
+        <translation>D 周期</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="106"/>
+        <source>Enter an operating speed above 0 %1.</source>
+        <translation>请输入大于 0 %1 的运行速度。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="110"/>
+        <source>Enter a relay amplitude of 1–50 %.</source>
+        <translation>请输入 1–50 % 的继电器幅值。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="123"/>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="138"/>
+        <source>No autotune result yet.</source>
+        <translation>尚无自整定结果。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="146"/>
+        <source>Autotune failed: %1</source>
+        <translation>自整定失败：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="155"/>
+        <source>Ku %1 %/%2, Tu %3 ms</source>
+        <translation>Ku %1 %/%2，Tu %3 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="158"/>
+        <source>Model: K %1 %2/%, τ %3 ms, dead time %4 ms</source>
+        <translation>模型：K %1 %2/%，τ %3 ms，纯滞后时间 %4 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="163"/>
+        <source>No model: %1</source>
+        <translation>无模型：%1</translation>
     </message>
 </context>
 <context>
@@ -1690,17 +1863,22 @@ Drives: %5</source>
         <translation>状态灯 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="162"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="163"/>
+        <source>The drive&apos;s manual: %1</source>
+        <translation>驱动器手册：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="166"/>
         <source>Status light grey: not live — %1</source>
         <translation>状态灯灰色：非实时 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="167"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="171"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>该驱动器未报告其机型。请在右键菜单（机型）中选择，以便按正确的限值检查数值。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="176"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="180"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>该驱动器通过 I/O 端子接收运行命令；通过总线试运行需要通信优先级。</translation>
     </message>
@@ -1792,142 +1970,147 @@ Drives: %5</source>
 <context>
     <name>opentop::BusPanel</name>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="32"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="33"/>
         <source>&amp;Scan</source>
         <translation>扫描(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="35"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="36"/>
         <source>A&amp;dd drive…</source>
         <translation>添加驱动器(&amp;D)…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="37"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="38"/>
         <source>Ca&amp;ncel</source>
         <translation>取消(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="46"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="47"/>
         <source>Ask every machine number of the range who answers</source>
         <translation>逐个询问范围内的每个站号是否应答</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="48"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="49"/>
         <source>&amp;from</source>
         <translation>从(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="50"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="51"/>
         <source>&amp;to</source>
         <translation>到(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="55"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="56"/>
         <source>Machine numbers 1–247 (the DBU&apos;s SW1/SW2 switches in hex)</source>
         <translation>站号 1–247（DBU 的 SW1/SW2 开关，十六进制）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="72"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="73"/>
         <source>Identify one machine number and add it to the list</source>
         <translation>识别一个站号并将其添加到列表</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="77"/>
-        <location filename="../ui/bus/BusPanel.cpp" line="182"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="78"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="194"/>
         <source>%v of %m</source>
         <translation>%v / %m</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="78"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="79"/>
         <source>Scan progress</source>
         <translation>扫描进度</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="80"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="81"/>
         <source>Stop the scan after the request on the wire</source>
         <translation>在当前线路上的请求完成后停止扫描</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="113"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="90"/>
+        <source>Rescan at %1</source>
+        <translation>以 %1 重新扫描</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="124"/>
         <source>Drives on the bus</source>
         <translation>总线上的驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="173"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="185"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%v / %m（站号 %1）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="183"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="195"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>正在扫描 %3 上的站号 %1–%2，每个 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="202"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="214"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>正在等待线路上的请求完成后取消…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="219"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="231"/>
         <source>Did not answer the last scan.</source>
         <translation>上次扫描未应答。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="225"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="237"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>扫描在站号 %1 处停止：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="230"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="242"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>在站号 %1–%2 后取消扫描（%4 个中的 %3 个）：找到 %n 台驱动器。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="238"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="250"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>在 %3 s 内于站号 %1–%2 上找到 %n 台驱动器。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="254"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="275"/>
         <source>Add drive</source>
         <translation>添加驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="254"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="275"/>
         <source>Machine number (1–247; the DBU shows it in hex on SW1/SW2):</source>
         <translation>站号（1–247；DBU 在 SW1/SW2 上以十六进制表示）：</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="264"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="285"/>
         <source>Asking machine number %1…</source>
         <translation>正在询问站号 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="269"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="290"/>
         <source>Machine number %1: %2 added.</source>
         <translation>站号 %1：已添加 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="271"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="292"/>
         <source>Machine number %1: %2 %3</source>
         <translation>站号 %1：%2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="329"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="350"/>
         <source>&amp;Variant</source>
         <translation>机型(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="345"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="366"/>
         <source>&amp;Identify again</source>
         <translation>重新识别(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="351"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="372"/>
         <source>&amp;Remove from list</source>
         <translation>从列表中移除(&amp;R)</translation>
     </message>
@@ -3233,232 +3416,237 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::DcControllerPage</name>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="41"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="42"/>
         <source>DC controller</source>
         <translation>直流控制器</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="44"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="45"/>
         <source>Re&amp;load stored configuration</source>
         <translation>重新载入已保存的配置(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="66"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="67"/>
         <source>Store &amp;configuration</source>
         <translation>保存配置(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="67"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="68"/>
         <source>Store P&amp;ID</source>
         <translation>保存 PID(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="68"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="69"/>
         <source>Store pre&amp;set</source>
         <translation>保存预设(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="71"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="72"/>
         <source>Writes %1 = 1: %2</source>
         <translation>写入 %1 = 1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="76"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="77"/>
         <source>Writes store.config = 0: the controller reloads the stored configuration; unstored configuration changes are discarded</source>
         <translation>写入 store.config = 0：控制器重新载入已保存的配置；未保存的配置修改将被丢弃</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="83"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="84"/>
         <source>Speed mode and motor currents</source>
         <translation>速度模式和电机电流</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="84"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="85"/>
         <source>Speed &amp;mode:</source>
         <translation>速度模式(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="85"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="86"/>
         <source>Rated current:</source>
         <translation>额定电流：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="86"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="87"/>
         <source>Maximum start/load current:</source>
         <translation>最大启动/负载电流：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="87"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="88"/>
         <source>Brake current:</source>
         <translation>制动电流：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="89"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="90"/>
         <source>Limit switches</source>
         <translation>限位开关</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="90"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="91"/>
         <source>Limits:</source>
         <translation>限位：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="91"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="92"/>
         <source>SQ1 active level (forward):</source>
         <translation>SQ1 有效电平（正转）：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="92"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="93"/>
         <source>SQ2 active level (reverse):</source>
         <translation>SQ2 有效电平（反转）：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="94"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="95"/>
         <source>Protective stops (0 = off)</source>
         <translation>保护停止（0 = 关闭）</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="95"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="96"/>
         <source>S&amp;tall stop time:</source>
         <translation>堵转停止时间(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="96"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="97"/>
         <source>Communication loss stop time:</source>
         <translation>通信中断停止时间：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="104"/>
-        <source>Serial port (reconnect after a change)</source>
-        <translation>串口（修改后需重新连接）</translation>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="105"/>
+        <source>Serial port (used from the next power-up)</source>
+        <translation>串口（从下次上电起生效）</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="105"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="110"/>
+        <source>Baud rate and parity are written as one 15-register block from 0x0080 that also stores the configuration; the controller uses them from the next power-up on: switch it off and on, then reconnect with them. The lock is lost at power-off until stored (Store configuration).</source>
+        <translation>波特率和校验位以从 0x0080 起的一个 15 寄存器块写入，该写入同时保存配置；控制器从下次上电起使用新设定：请将其断电再上电，然后用新设定重新连接。串口配置锁定在保存（保存配置）前断电即丢失。</translation>
+    </message>
+    <message>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="132"/>
+        <source>Takes effect now and is kept over power-off: each change is written as one 5-register block from 0x0050 that also stores the port states.</source>
+        <translation>立即生效，断电后保留：每次修改都以从 0x0050 起的一个 5 寄存器块写入，该写入同时保存端口状态。</translation>
+    </message>
+    <message>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="176"/>
+        <source>The communication loss stop time is 0 s (%1): the manual does not say what 0 does, and OpenTOP assumes the stop is then off: if the connection is lost while the motor runs, the controller keeps it running at the last speed command. Set a time so that it brakes when the bus goes quiet.</source>
+        <translation>通信中断停止时间为 0 s（%1）：手册没有说明 0 的作用，OpenTOP 假定此时该停止功能关闭：如果电机运行时连接中断，控制器会按最后的速度命令继续运行。请设定一个时间，使总线无通信时电机制动。</translation>
+    </message>
+    <message>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="106"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="106"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="107"/>
         <source>Parity and stop bits:</source>
         <translation>校验位和停止位：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="107"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="108"/>
         <source>Configuration over serial:</source>
         <translation>通过串口配置：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="109"/>
-        <source>Lost at power-off until stored (Store configuration); a stored baud rate or parity is used from the next power-up on, and the tool must then reconnect with it.</source>
-        <translation>未保存（保存配置）前断电即丢失；保存的波特率或校验位从下次上电起生效，届时本工具必须用新设定重新连接。</translation>
-    </message>
-    <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="112"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="114"/>
         <source>Speed loop PID</source>
         <translation>速度环 PID</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="113"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="115"/>
         <source>&amp;P coefficient:</source>
         <translation>P 系数(&amp;P)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="114"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="116"/>
         <source>I coefficient:</source>
         <translation>I 系数：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="115"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="117"/>
         <source>&amp;D coefficient:</source>
         <translation>D 系数(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="116"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="118"/>
         <source>D period:</source>
         <translation>D 周期：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="118"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="120"/>
         <source>Preset speed (potentiometer/analog control)</source>
         <translation>预设速度（电位器/模拟量控制）</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="119"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="121"/>
         <source>Preset speed mo&amp;de:</source>
         <translation>预设速度模式(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="120"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="122"/>
         <source>Trigger:</source>
         <translation>触发：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="121"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="123"/>
         <source>&amp;Forward speed:</source>
         <translation>正转速度(&amp;F)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="122"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="124"/>
         <source>Reverse speed:</source>
         <translation>反转速度：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="124"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="126"/>
         <source>AI1/AI2 as digital ports</source>
         <translation>AI1/AI2 用作数字端口</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="125"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="127"/>
         <source>AI1 direction:</source>
         <translation>AI1 方向：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="126"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="128"/>
         <source>AI2 direction:</source>
         <translation>AI2 方向：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="127"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="129"/>
         <source>AI1 level:</source>
         <translation>AI1 电平：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="128"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="130"/>
         <source>AI2 level:</source>
         <translation>AI2 电平：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="130"/>
-        <source>Takes effect now and is not kept over power-off: the controller has no store command for these, only a 5-register block write, which this page does not send.</source>
-        <translation>立即生效，断电后不保留：控制器没有针对这些的保存命令，只有一个 5 寄存器的块写入，本页面不会发送。</translation>
-    </message>
-    <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="174"/>
-        <source>The communication loss stop is off (%1 = 0 s): if the connection is lost while the motor runs, the controller keeps it running at the last speed command. Set a time so that it brakes when the bus goes quiet.</source>
-        <translation>通信中断停止已关闭（%1 = 0 s）：如果电机运行时连接中断，控制器会按最后的速度命令继续运行。请设定一个时间，使总线无通信时电机制动。</translation>
-    </message>
-    <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="189"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="192"/>
         <source>Takes effect now, lost at power-off until stored (%1).</source>
         <translation>立即生效，保存（%1）前断电即丢失。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="250"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="253"/>
+        <source>Set it anyway?</source>
+        <translation>仍要设定吗？</translation>
+    </message>
+    <message>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="269"/>
         <source>Forward and reverse speed in this mode (%1): %2</source>
         <translation>该模式下的正转和反转速度（%1）：%2</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="252"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="271"/>
         <source>The unit and range of the speeds follow the preset speed mode (not read yet).</source>
         <translation>速度的单位和范围取决于预设速度模式（尚未读取）。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="286"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="313"/>
         <source>&lt;b&gt;Written but not stored:&lt;/b&gt; %1. These values act now and are lost when the controller is switched off.</source>
         <translation>&lt;b&gt;已写入但未保存：&lt;/b&gt;%1。这些值立即生效，控制器断电后丢失。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="308"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="335"/>
         <source>%1: the controller writes the values now in effect to its memory and uses them from the next power-up on.
 
 Stored: %2.</source>
@@ -3467,17 +3655,17 @@ Stored: %2.</source>
 已保存：%2。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="319"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="346"/>
         <source>Not written yet, so not stored: %1.</source>
         <translation>尚未写入，因此未保存：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="322"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="349"/>
         <source>%1: done, kept over power-off.</source>
         <translation>%1：完成，断电后保留。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="330"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="357"/>
         <source>The controller replaces its configuration (%1) with the one stored in its memory.
 
 Configuration changes written but not stored are discarded.</source>
@@ -3486,52 +3674,70 @@ Configuration changes written but not stored are discarded.</source>
 已写入但未保存的配置修改将被丢弃。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="336"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="363"/>
         <source>Stored configuration reloaded.</source>
         <translation>已重新载入保存的配置。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="344"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="371"/>
         <source>Writing %1 = %2…</source>
         <translation>正在写入 %1 = %2…</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="354"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="381"/>
         <source>%1 = %2 failed: %3</source>
         <translation>%1 = %2 失败：%3</translation>
     </message>
 </context>
 <context>
+    <name>opentop::DcMotor</name>
+    <message>
+        <location filename="../sim/DcMotor.cpp" line="64"/>
+        <source>unknown motor setting &apos;%1&apos;; settings: %2</source>
+        <translation>未知的电机设定 &apos;%1&apos;；可用设定：%2</translation>
+    </message>
+    <message>
+        <location filename="../sim/DcMotor.cpp" line="71"/>
+        <source>motor setting %1 must be a number %2..%3, got &apos;%4&apos;</source>
+        <translation>电机设定 %1 必须是 %2..%3 的数，实际为 &apos;%4&apos;</translation>
+    </message>
+</context>
+<context>
     <name>opentop::DcPidSimDevice</name>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="341"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="366"/>
         <source>%1 %2%3, output %4 %, command %5, line %6 %7</source>
         <translation>%1 %2%3，输出 %4 %，命令 %5，线路 %6 %7</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="343"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="368"/>
         <source> (stall stop)</source>
         <translation> （堵转停止）</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="359"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="384"/>
         <source>usage: %1 ID VALUE with VALUE %2..%3 %4</source>
         <translation>用法：%1 ID VALUE，VALUE 范围 %2..%3 %4</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="363"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="388"/>
         <source>(bit0 SQ1, bit1 SQ2, bit2 DE)</source>
         <translation>（bit0 SQ1，bit1 SQ2，bit2 DE）</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="363"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="388"/>
         <source>(% current)</source>
         <translation>（% 电流）</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="365"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="390"/>
         <source>%1 = %2</source>
         <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <location filename="../sim/DcPidSimDevice.cpp" line="407"/>
+        <source>motor %1, speed %2 1/s, current %3 A</source>
+        <translation>电机 %1，速度 %2 1/s，电流 %3 A</translation>
     </message>
 </context>
 <context>
@@ -3682,7 +3888,7 @@ Configuration changes written but not stored are discarded.</source>
         <translation>%1 是命令，不是设定；命令仅在请求时逐条发送</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="211"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="227"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -3716,27 +3922,37 @@ Configuration changes written but not stored are discarded.</source>
         <translation>%1 是%2命令；仅在明确请求时才发送</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="254"/>
+        <location filename="../model/session/DeviceSession.cpp" line="255"/>
         <source>%1 cannot be checked: %2</source>
         <translation>无法检查 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="276"/>
+        <location filename="../model/session/DeviceSession.cpp" line="277"/>
         <source>reading %1 failed: %2</source>
         <translation>读取 %1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="327"/>
+        <location filename="../model/session/DeviceSession.cpp" line="305"/>
+        <source>not written: %1 is written together with 0x%2–0x%3, and reading those first failed: %4</source>
+        <translation>未写入：%1 需与 0x%2–0x%3 一起写入，而预先读取这些寄存器失败：%4</translation>
+    </message>
+    <message>
+        <location filename="../model/session/DeviceSession.cpp" line="310"/>
+        <source>short reply</source>
+        <translation>应答过短</translation>
+    </message>
+    <message>
+        <location filename="../model/session/DeviceSession.cpp" line="365"/>
         <source>written, but reading it back failed: %1</source>
         <translation>已写入，但回读失败：%1</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="336"/>
+        <location filename="../model/session/DeviceSession.cpp" line="374"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>校验失败：写入 %1，设备中为 %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="372"/>
+        <location filename="../model/session/DeviceSession.cpp" line="410"/>
         <source>error code %1</source>
         <translation>错误代码 %1</translation>
     </message>
@@ -3744,22 +3960,32 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DrivePages</name>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="97"/>
+        <location filename="../ui/main/DrivePages.cpp" line="101"/>
         <source>Monitor</source>
         <translation>监视</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="110"/>
+        <location filename="../ui/main/DrivePages.cpp" line="114"/>
         <source>Test run</source>
         <translation>试运行</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="112"/>
+        <location filename="../ui/main/DrivePages.cpp" line="121"/>
+        <source>drive %1 (%2)</source>
+        <translation>驱动器 %1（%2）</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/DrivePages.cpp" line="122"/>
+        <source>Speed loop tuning</source>
+        <translation>速度环整定</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/DrivePages.cpp" line="128"/>
         <source>Alarms</source>
         <translation>报警</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="121"/>
+        <location filename="../ui/main/DrivePages.cpp" line="137"/>
         <source>Machine number %1 (%2, %3) — %4, firmware V%5</source>
         <translation>站号 %1（%2，%3）— %4，固件 V%5</translation>
     </message>
@@ -3874,6 +4100,11 @@ Configuration changes written but not stored are discarded.</source>
         <location filename="../model/bus/DriveStatusPoller.cpp" line="81"/>
         <source>blue</source>
         <translation>蓝色</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="118"/>
+        <source>%1; %2</source>
+        <translation>%1；%2</translation>
     </message>
 </context>
 <context>
@@ -5167,7 +5398,7 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <location filename="../model/eol/EolStepRunner.cpp" line="428"/>
         <location filename="../model/eol/EolStepRunner.cpp" line="449"/>
         <location filename="../model/eol/EolStepRunner.cpp" line="475"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="517"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="526"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -5259,47 +5490,47 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <translation>%1：%2 s 后停止，最多允许 %3 s</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="508"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="517"/>
         <source>%1: nothing to read</source>
         <translation>%1：无可读取内容</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="525"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="534"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="528"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="537"/>
         <source>%1: %2 reads &quot;%3&quot;, expected &quot;%4&quot;</source>
         <translation>%1：%2 读取为 &quot;%3&quot;，预期为 &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="539"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="548"/>
         <source>%1: %2 reads %3 %4, %5</source>
         <translation>%1：%2 读取为 %3 %4，%5</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="561"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="570"/>
         <source>the stop command failed: %1</source>
         <translation>停止命令失败：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="576"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="585"/>
         <source>stopped after %1 s</source>
         <translation>%1 s 后停止</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="577"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="586"/>
         <source>not confirmed stopped: %1</source>
         <translation>未确认已停止：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="599"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="608"/>
         <source>communication priority could not be given back: %1</source>
         <translation>无法交还通信优先级：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="639"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="648"/>
         <source>the steps ended with the motor running</source>
         <translation>步骤结束时电机仍在运行</translation>
     </message>
@@ -5708,6 +5939,19 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <location filename="../cli/FileCommandSupport.cpp" line="41"/>
         <source>error: %1 refused: %2</source>
         <translation>错误：%1 已拒绝：%2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::FixedLineHint</name>
+    <message>
+        <location filename="../model/bus/FixedLineHint.cpp" line="41"/>
+        <source>A DC controller in potentiometer/analog control mode talks only at %1 bit/s, 8%2%3, address %4.</source>
+        <translation>处于电位器/模拟量控制模式的直流控制器只以 %1 bit/s、8%2%3、地址 %4 通信。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/FixedLineHint.cpp" line="60"/>
+        <source>%1 8%2%3, address %4</source>
+        <translation>%1 8%2%3，地址 %4</translation>
     </message>
 </context>
 <context>
@@ -6591,33 +6835,33 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="50"/>
+        <location filename="../ui/main/MainWindow.cpp" line="52"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="126"/>
+        <location filename="../ui/main/MainWindow.cpp" line="134"/>
         <source>connect elsewhere</source>
         <translation>连接到其他总线</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="149"/>
+        <location filename="../ui/main/MainWindow.cpp" line="157"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>正在连接 %1…（仍连接着 %2）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="188"/>
+        <location filename="../ui/main/MainWindow.cpp" line="196"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>已连接：%1（新连接失败：%2）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="191"/>
-        <location filename="../ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="199"/>
+        <location filename="../ui/main/MainWindow.cpp" line="212"/>
         <source>Cannot connect</source>
         <translation>无法连接</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="192"/>
+        <location filename="../ui/main/MainWindow.cpp" line="200"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -6626,82 +6870,82 @@ Still connected to %2; nothing was changed.</source>
 仍连接着 %2；未作任何更改。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="195"/>
-        <location filename="../ui/main/MainWindow.cpp" line="306"/>
+        <location filename="../ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="324"/>
         <source>Not connected: %1</source>
         <translation>未连接：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="252"/>
+        <location filename="../ui/main/MainWindow.cpp" line="261"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>通信组：%1（总线 › 通信组）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="274"/>
-        <location filename="../ui/main/MainWindow.cpp" line="276"/>
+        <location filename="../ui/main/MainWindow.cpp" line="292"/>
+        <location filename="../ui/main/MainWindow.cpp" line="294"/>
         <source>Connection lost: %1</source>
         <translation>连接丢失：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="277"/>
+        <location filename="../ui/main/MainWindow.cpp" line="295"/>
         <source>Connection lost</source>
         <translation>连接丢失</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="285"/>
+        <location filename="../ui/main/MainWindow.cpp" line="303"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 模拟总线（无硬件）— %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="286"/>
+        <location filename="../ui/main/MainWindow.cpp" line="304"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="287"/>
+        <location filename="../ui/main/MainWindow.cpp" line="305"/>
         <source>Connecting to %1…</source>
         <translation>正在连接 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="305"/>
-        <location filename="../ui/main/MainWindow.cpp" line="313"/>
+        <location filename="../ui/main/MainWindow.cpp" line="323"/>
+        <location filename="../ui/main/MainWindow.cpp" line="331"/>
         <source>Connected: %1</source>
         <translation>已连接：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="312"/>
+        <location filename="../ui/main/MainWindow.cpp" line="330"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>已连接：%1（模拟，无硬件）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="333"/>
+        <location filename="../ui/main/MainWindow.cpp" line="356"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>驱动器未报告其机型；%1 为所设定的机型。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="363"/>
-        <location filename="../ui/main/MainWindow.cpp" line="374"/>
+        <location filename="../ui/main/MainWindow.cpp" line="386"/>
+        <location filename="../ui/main/MainWindow.cpp" line="397"/>
         <source>disconnect</source>
         <translation>断开连接</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="370"/>
+        <location filename="../ui/main/MainWindow.cpp" line="393"/>
         <source>Not connected (disconnected)</source>
         <translation>未连接（已断开）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="381"/>
-        <location filename="../ui/main/MainWindow.cpp" line="406"/>
+        <location filename="../ui/main/MainWindow.cpp" line="404"/>
+        <location filename="../ui/main/MainWindow.cpp" line="429"/>
         <source>quit</source>
         <translation>退出</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="392"/>
+        <location filename="../ui/main/MainWindow.cpp" line="415"/>
         <source>Unwritten changes</source>
         <translation>未写入的修改</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="393"/>
+        <location filename="../ui/main/MainWindow.cpp" line="416"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>有 %n 项修改尚未写入驱动器。退出并放弃这些修改？</numerusform>
@@ -6803,42 +7047,42 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorOutput</name>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="114"/>
+        <location filename="../cli/MonitorOutput.cpp" line="117"/>
         <source>Target shown</source>
         <translation>目标显示值</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="114"/>
+        <location filename="../cli/MonitorOutput.cpp" line="117"/>
         <source>Speed shown</source>
         <translation>速度显示值</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="123"/>
+        <location filename="../cli/MonitorOutput.cpp" line="127"/>
         <source>Active alarm</source>
         <translation>当前报警</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="165"/>
+        <location filename="../cli/MonitorOutput.cpp" line="169"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="168"/>
+        <location filename="../cli/MonitorOutput.cpp" line="172"/>
         <source>code %1</source>
         <translation>代码 %1</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="168"/>
+        <location filename="../cli/MonitorOutput.cpp" line="172"/>
         <source>active</source>
         <translation>发生中</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="175"/>
+        <location filename="../cli/MonitorOutput.cpp" line="179"/>
         <source>Time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="175"/>
+        <location filename="../cli/MonitorOutput.cpp" line="180"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -7360,27 +7604,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="170"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="183"/>
         <source>%1 (not valid now)</source>
         <translation>%1（当前无效）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="188"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="202"/>
         <source>not read</source>
         <translation>未读取</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="197"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="211"/>
         <source>Allowed: %1</source>
         <translation>允许：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="200"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="214"/>
         <source>On the drive: %1</source>
         <translation>驱动器中：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="228"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="244"/>
         <source>Not accepted: %1</source>
         <translation>未接受：%1</translation>
     </message>
@@ -7388,160 +7632,195 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitBox</name>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="23"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="38"/>
         <source>Parameter initialisation</source>
         <translation>参数初始化</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="32"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="48"/>
         <source>Returns every setting of drive %1 to its factory default, including the communication settings: afterwards the drive may answer only at the default rate, and control priority goes back to its input terminals. The motor must be stopped. The consequences for this drive are listed before anything is sent.</source>
         <translation>将驱动器 %1 的全部设定恢复为出厂默认值，包括通信设定：之后驱动器可能只在默认波特率下应答，控制优先级也会恢复为输入端子。电机必须处于停止状态。发送前会列出对该驱动器的影响。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="40"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="56"/>
         <source>&amp;Initialise all parameters of drive %1…</source>
         <translation>初始化驱动器 %1 的全部参数(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="42"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="58"/>
         <source>Asks first, naming the drive and what changes</source>
         <translation>先确认，并列出驱动器及将要改变的内容</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="66"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="86"/>
         <source>Reading what the initialisation would change…</source>
         <translation>正在读取初始化将改变的内容…</translation>
     </message>
+    <message>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="110"/>
+        <source>Afterwards:</source>
+        <translation>之后：</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="90"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="115"/>
         <source>Your %n unwritten edit(s) of this drive are discarded.</source>
         <translation>
             <numerusform>您对该驱动器的 %n 项未写入修改将被放弃。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="94"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="119"/>
         <source>Sent: %1 to machine %2 only.</source>
         <translation>已发送：%1，仅发给站号 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="95"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="120"/>
         <source>Sent: %1 to machine %2.</source>
         <translation>已发送：%1，发给站号 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="99"/>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="104"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="124"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="129"/>
         <source>Initialise drive %1</source>
         <translation>初始化驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="100"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="125"/>
         <source>Reset every setting of drive %1 (%2) to its factory defaults?</source>
         <translation>将驱动器 %1（%2）的全部设定恢复为出厂默认值？</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="114"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="139"/>
         <source>Cancelled; nothing was sent.</source>
         <translation>已取消；未发送任何内容。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="122"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="147"/>
         <source>Initialising drive %1…</source>
         <translation>正在初始化驱动器 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="131"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="156"/>
         <source>Drive %1 did not confirm the initialisation: %2</source>
         <translation>驱动器 %1 未确认初始化：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="132"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="157"/>
         <source>Nothing was sent: %1</source>
         <translation>未发送任何内容：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="170"/>
+        <source>&amp;Reconnect at %1 bit/s after the power-up</source>
+        <translation>上电后以 %1 bit/s 重新连接(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="174"/>
         <source>Drive %1 initialised; reading its values again…</source>
         <translation>驱动器 %1 已初始化；正在重新读取其值…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="145"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="180"/>
         <source>Drive %1 initialised; %n value(s) could not be read back (it may answer only at the default communication settings now).</source>
         <translation>
             <numerusform>驱动器 %1 已初始化；%n 个值无法回读（它现在可能只在默认通信设定下应答）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="149"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="184"/>
         <source>Drive %1 initialised to its factory defaults; values read again.</source>
         <translation>驱动器 %1 已恢复出厂默认值；已重新读取数值。</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="210"/>
+        <source>Reconnecting at %1 bit/s in %2 s…</source>
+        <translation>%2 s 后以 %1 bit/s 重新连接…</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="223"/>
+        <source>Reconnect at %1 bit/s from the Bus menu.</source>
+        <translation>请从“总线”菜单以 %1 bit/s 重新连接。</translation>
     </message>
 </context>
 <context>
     <name>opentop::ParameterInitialiser</name>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="64"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="65"/>
         <source>%1 drives have no parameter initialisation.</source>
         <translation>%1 驱动器没有参数初始化功能。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="67"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="68"/>
         <source>%1 = %2 (register %3)</source>
         <translation>%1 = %2（寄存器 %3）</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="75"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="76"/>
         <source>Drive %1 is running. Stop the motor first: parameter initialisation is only sent to a drive at standstill.</source>
         <translation>驱动器 %1 正在运行。请先停止电机：参数初始化只发送给处于停止状态的驱动器。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="79"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="80"/>
         <source>Whether drive %1 is running could not be read (%2), so nothing was sent.</source>
         <translation>无法读取驱动器 %1 是否在运行（%2），因此未发送任何内容。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="93"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="94"/>
         <source>Every setting of drive %1 returns to its factory default: %2. Values set for this machine are lost; save a backup first to keep them.</source>
         <translation>驱动器 %1 的全部设定将恢复为出厂默认值：%2。为该设备设定的值将丢失；如需保留，请先保存备份。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="110"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="111"/>
         <source>%1 could not be read; it returns to %2. %3</source>
         <translation>无法读取 %1；它将恢复为 %2。%3</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="113"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="114"/>
         <source>%1 goes from %2 back to %3. %4</source>
         <translation>%1 将从 %2 恢复为 %3。%4</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="118"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="119"/>
         <source>%1 stays %2 (already the default).</source>
         <translation>%1 保持 %2（已是默认值）。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="124"/>
-        <source>The drive may then stop answering this connection (from its next power-up): reconnect at the default setting to reach it.</source>
-        <translation>之后驱动器可能不再在此连接上应答（从下次上电起）：请使用默认设定重新连接。</translation>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="123"/>
+        <source>%1 bit/s, parity %2, %3 stop bit(s)</source>
+        <translation>%1 bit/s，校验位 %2，%3 个停止位</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="128"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="131"/>
+        <source>The link to the drive is lost from its next power-up: it answers only at the factory line settings, %1.</source>
+        <translation>从下次上电起将失去与驱动器的连接：驱动器只在出厂通信设定 %1 下应答。</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="142"/>
+        <source>To reach drive %1 again: switch it off and on, wait %2 s after power-on, then reconnect at %3.</source>
+        <translation>要再次连接驱动器 %1：请将其断电再上电，上电后等待 %2 s，然后以 %3 重新连接。</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="159"/>
+        <source>Bus control is lost: the drive follows its input terminals again and refuses start, stop and speed commands over the bus; an input that is on may start the motor, with the factory input functions.</source>
+        <translation>将失去总线控制：驱动器将重新按输入端子动作，并拒绝通过总线发送的启动、停止和速度命令；处于 ON 的输入可能会以出厂输入功能启动电机。</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="168"/>
+        <source>To control the motor over the bus again, set %1 to %2.</source>
+        <translation>要再次通过总线控制电机，请将 %1 设为 %2。</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="150"/>
         <source>The drive no longer follows writes sent to its group&apos;s parent, and drives that followed it no longer do.</source>
         <translation>该驱动器将不再执行发往其组父站的写入，原先跟随它的驱动器也不再跟随。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="134"/>
-        <source>The drive follows its input terminals again: an input that is on may start the motor, with the factory input functions.</source>
-        <translation>驱动器将重新按输入端子动作：处于 ON 的输入可能会以出厂输入功能启动电机。</translation>
-    </message>
-    <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="136"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="173"/>
         <source>The machine number %1 is not a setting and does not change.</source>
         <translation>站号 %1 不是设定项，不会改变。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="138"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="175"/>
         <source>The motor must stand still: drive %1 reports it stopped now, and this is read again just before the command is sent.</source>
         <translation>电机必须静止：驱动器 %1 当前报告已停止，发送命令前会再次读取确认。</translation>
     </message>
@@ -7604,33 +7883,34 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
         <source>Write %n value(s) of the page %1 to machine number %2</source>
         <translation>
             <numerusform>将页面 %1 的 %n 个值写入站号 %2</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="138"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="147"/>
         <source>Nothing was written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="148"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="152"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>正在写入 %n 个值…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="152"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="156"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>%n 项写入失败；请查看标记的字段</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="153"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="157"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n 个值已写入并校验</numerusform>
@@ -7640,212 +7920,252 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterReader</name>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="52"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="55"/>
         <source>entry</source>
         <translation>条目</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="60"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="63"/>
         <source>name must be lower-case dotted words: [a-z0-9_] separated by dots</source>
         <translation>名称必须是以点分隔的小写单词：[a-z0-9_]，以点分隔</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="69"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="72"/>
         <source>&quot;label&quot; is empty</source>
         <translation>&quot;label&quot; 为空</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="71"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="74"/>
         <source>group &quot;%1&quot; is not declared in &quot;groups&quot;</source>
         <translation>组 &quot;%1&quot; 未在 &quot;groups&quot; 中声明</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="73"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="76"/>
         <source>kind must be one of %1</source>
         <translation>kind 必须是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="79"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="82"/>
         <source>address must be 0x0000–0xFFFF</source>
         <translation>address 必须为 0x0000–0xFFFF</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="86"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="89"/>
         <source>read must be 3 (holding) or 4 (input)</source>
         <translation>read 必须为 3（保持寄存器）或 4（输入寄存器）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="88"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="91"/>
         <source>write must be 6 or 16</source>
         <translation>write 必须为 6 或 16</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="92"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="95"/>
         <source>input registers (read 4) cannot be written</source>
         <translation>输入寄存器（read 4）不可写入</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="94"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="97"/>
         <source>neither readable nor writable</source>
         <translation>既不可读也不可写</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="102"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="105"/>
         <source>type must be u16, s16, u32, s32, f32, string or bits</source>
         <translation>type 必须为 u16、s16、u32、s32、f32、string 或 bits</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="111"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="114"/>
         <source>string parameters need &quot;count&quot; 1–125 registers</source>
         <translation>string 参数需要 &quot;count&quot; 为 1–125 个寄存器</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="116"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="119"/>
         <source>bits parameters have &quot;count&quot; 1 or 2</source>
         <translation>bits 参数的 &quot;count&quot; 为 1 或 2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="121"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="124"/>
         <source>%1 takes %2 register(s), not %3</source>
         <translation>%1 占用 %2 个寄存器，而不是 %3 个</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="124"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="129"/>
+        <source>&quot;wordOrder&quot; is for 2-register numbers and bit fields only</source>
+        <translation>&quot;wordOrder&quot; 仅适用于 2 寄存器数值和位域</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="133"/>
+        <source>&quot;wordOrder&quot; must be &quot;high-first&quot; or &quot;low-first&quot;</source>
+        <translation>&quot;wordOrder&quot; 必须为 &quot;high-first&quot; 或 &quot;low-first&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="136"/>
         <source>a %1-register value cannot be written with function 06; use 16</source>
         <translation>%1 寄存器的值不能用功能码 06 写入；请使用 16</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="129"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="141"/>
         <source>safety must be one of %1</source>
         <translation>safety 必须是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="131"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="143"/>
         <source>commands need a &quot;safety&quot; class</source>
         <translation>命令需要 &quot;safety&quot; 类别</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="134"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="146"/>
         <source>code table &quot;%1&quot; is not declared</source>
         <translation>代码表 &quot;%1&quot; 未声明</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="141"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="157"/>
         <source>a setting needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>设定需要 &quot;allowed&quot; 或 &quot;enum&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="144"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="160"/>
         <source>a writable parameter needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>可写参数需要 &quot;allowed&quot; 或 &quot;enum&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="149"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="165"/>
         <source>bits parameters need &quot;bits&quot;</source>
         <translation>bits 参数需要 &quot;bits&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="157"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="173"/>
         <source>&quot;backup&quot; must be true or false</source>
         <translation>&quot;backup&quot; 必须为 true 或 false</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="162"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="178"/>
         <source>only readable and writable parameters can be backed up</source>
         <translation>只有可读且可写的参数才能备份</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="170"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="191"/>
+        <source>%1 needs &quot;address&quot; and &quot;count&quot;</source>
+        <translation>%1 需要 &quot;address&quot; 和 &quot;count&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="193"/>
+        <source>%1: the parameter is not writable</source>
+        <translation>%1：该参数不可写入</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="196"/>
+        <source>%1: address 0x0000–0xFFFF and count 1–%2 (limits.maxWriteRegisters)</source>
+        <translation>%1：address 须为 0x0000–0xFFFF，count 须为 1–%2（limits.maxWriteRegisters）</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="205"/>
+        <source>%1: tail values are registers, 0–65535</source>
+        <translation>%1：tail 的值为寄存器值，0–65535</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="213"/>
+        <source>%1: the parameter&apos;s registers must lie in the block, before its tail</source>
+        <translation>%1：参数的寄存器必须位于块内、tail 之前</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="221"/>
         <source>scale must be positive</source>
         <translation>scale 必须为正数</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="182"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="233"/>
         <source>decimals must be 0–9</source>
         <translation>decimals 必须为 0–9</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="208"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="257"/>
+        <source>recommended[%1] is not inside one of the &quot;allowed&quot; intervals</source>
+        <translation>recommended[%1] 不在任何 &quot;allowed&quot; 区间内</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="275"/>
         <source>default %1 is not a whole number of steps of %2</source>
         <translation>默认值 %1 不是步长 %2 的整数倍</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="217"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="284"/>
         <source>default must be a number (or &quot;0x...&quot; code)</source>
         <translation>默认值必须是数字（或 &quot;0x...&quot; 代码）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="220"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="287"/>
         <source>default must be a number or a string</source>
         <translation>默认值必须是数字或字符串</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="231"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="298"/>
         <source>%1 must be an object {&quot;min&quot;:…, &quot;max&quot;:…}</source>
         <translation>%1 必须是对象 {&quot;min&quot;:…, &quot;max&quot;:…}</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="238"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="305"/>
         <source>%1 needs numeric min and max</source>
         <translation>%1 需要数值型的 min 和 max</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="244"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="311"/>
         <source>%1: %2 is not a whole number of steps of %3</source>
         <translation>%1：%2 不是步长 %3 的整数倍</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="252"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="319"/>
         <source>%1: min is greater than max</source>
         <translation>%1：min 大于 max</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="266"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="333"/>
         <source>%1 must be an object {&quot;value&quot;:…, &quot;label&quot;:…}</source>
         <translation>%1 必须是对象 {&quot;value&quot;:…, &quot;label&quot;:…}</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="282"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="349"/>
         <source>%1 has no label</source>
         <translation>%1 没有 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="284"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="351"/>
         <source>%1 repeats a code or label</source>
         <translation>%1 有重复的代码或 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="295"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="362"/>
         <source>&quot;bits&quot; only belongs to type bits</source>
         <translation>&quot;bits&quot; 只属于 bits 类型</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="319"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="386"/>
         <source>%1.appliesWhen needs &quot;param&quot; and &quot;equals&quot;</source>
         <translation>%1.appliesWhen 需要 &quot;param&quot; 和 &quot;equals&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="324"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="391"/>
         <source>%1 lies outside the %2-bit register</source>
         <translation>%1 超出 %2 位寄存器</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="326"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="393"/>
         <source>%1 needs a unique name</source>
         <translation>%1 需要唯一的名称</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="340"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="407"/>
         <source>%1 must be an object</source>
         <translation>%1 必须是对象</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="352"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="419"/>
         <source>%1 needs either &quot;variant&quot; or &quot;param&quot;</source>
         <translation>%1 需要 &quot;variant&quot; 或 &quot;param&quot; 之一</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="355"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="422"/>
         <source>%1: variant &quot;%2&quot; is not declared</source>
         <translation>%1：机型 &quot;%2&quot; 未声明</translation>
     </message>
@@ -7916,6 +8236,22 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Group</source>
         <translation>组</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::PidGains</name>
+    <message>
+        <location filename="../model/tuning/PidGains.cpp" line="9"/>
+        <source>P %1, I %2, D %3, D period %4 ms</source>
+        <translation>P %1，I %2，D %3，D 周期 %4 ms</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::PlantModel</name>
+    <message>
+        <location filename="../model/tuning/PlantModel.cpp" line="18"/>
+        <source>the relay test gives no usable model (K·Ku = %1, Tu = %2 ms)</source>
+        <translation>继电器测试无法得出可用的模型（K·Ku = %1，Tu = %2 ms）</translation>
     </message>
 </context>
 <context>
@@ -8286,32 +8622,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="336"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="417"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>偏移 %1 处不是有效的 JSON：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="340"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="421"/>
         <source>the top level must be a JSON object</source>
         <translation>顶层必须是 JSON 对象</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="351"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="432"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot; 为空</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="362"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="443"/>
         <source>must be an object</source>
         <translation>必须是对象</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="445"/>
         <source>name repeated</source>
         <translation>名称重复</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="379"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="461"/>
         <source>%1: cannot open: %2</source>
         <translation>%1：无法打开：%2</translation>
     </message>
@@ -8392,12 +8728,12 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Progress</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="74"/>
+        <location filename="../cli/ScanCommand.cpp" line="75"/>
         <source>scanning %1/%2 (%3 %), machine number %4, %5 found</source>
         <translation>正在扫描 %1/%2（%3 %），站号 %4，已找到 %5 台</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="89"/>
+        <location filename="../cli/ScanCommand.cpp" line="90"/>
         <source>scan: %1 % (%2 of %3 machine numbers), %4 found</source>
         <translation>扫描：%1 %（%3 个站号中的 %2 个），已找到 %4 台</translation>
     </message>
@@ -8602,7 +8938,7 @@ No unit can be tested until results can be recorded.</source>
     </message>
     <message>
         <location filename="../model/eol/RecipeChecker.cpp" line="264"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="364"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="366"/>
         <source>%1: per-unit value %2</source>
         <translation>%1：单台数值 %2</translation>
     </message>
@@ -8627,32 +8963,32 @@ No unit can be tested until results can be recorded.</source>
         <translation>%1 不是数值；单台数值需要数值型设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="314"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="315"/>
         <source>%1: range %2–%3%4</source>
         <translation>%1：范围 %2–%3%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="320"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="321"/>
         <source>%1 is outside what the drive allows: %2%3</source>
         <translation>%1 超出驱动器的允许范围：%2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="332"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="333"/>
         <source>%1 includes values the drive does not allow; allowed: %2%3</source>
         <translation>%1 包含驱动器不允许的值；允许：%2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="357"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="359"/>
         <source>%1: per-unit value %2: %3%4 is outside the recipe&apos;s range %5–%6%4</source>
         <translation>%1：单台数值 %2：%3%4 超出配方的范围 %5–%6%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="368"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="370"/>
         <source>%1: the recipe has no per-unit value %2</source>
         <translation>%1：配方中没有单台数值 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="371"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="373"/>
         <source>the recipe has no drive at machine number %1</source>
         <translation>配方中没有站号为 %1 的驱动器</translation>
     </message>
@@ -9337,6 +9673,24 @@ No unit can be tested until results can be recorded.</source>
         <location filename="../model/eol/RecipeStepChecker.cpp" line="283"/>
         <source>%1 is a number; compare it with lower and upper limits</source>
         <translation>%1 是数字；请用下限和上限进行比较</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RelayAnalysis</name>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="27"/>
+        <source>no steady oscillation: %1 full cycles around %2, %3 needed</source>
+        <translation>无稳定振荡：在 %2 附近只有 %1 个完整周期，需要 %3 个</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="59"/>
+        <source>the oscillation (±%1) is no larger than the hysteresis (%2)</source>
+        <translation>振荡（±%1）不大于滞环（%2）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="65"/>
+        <source>the oscillation is not steady: periods or amplitudes differ by %1 %</source>
+        <translation>振荡不稳定：周期或幅值相差 %1 %</translation>
     </message>
 </context>
 <context>
@@ -10639,83 +10993,83 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="110"/>
+        <location filename="../cli/ScanCommand.cpp" line="111"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>查找并识别总线上的驱动器（站号 1–247）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="116"/>
+        <location filename="../cli/ScanCommand.cpp" line="117"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>询问的起始站号，1–247（默认 1）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="116"/>
         <location filename="../cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="118"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="118"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>询问的结束站号，1–247（默认 247）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="119"/>
+        <location filename="../cli/ScanCommand.cpp" line="120"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>每个站号的等待时间（ms），10–5000（默认：根据波特率得出；适配器或网关较慢时请加大）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="121"/>
+        <location filename="../cli/ScanCommand.cpp" line="122"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="134"/>
+        <location filename="../cli/ScanCommand.cpp" line="135"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>错误：--%1 必须是 %2–%3 的数字，而不是 &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="146"/>
+        <location filename="../cli/ScanCommand.cpp" line="147"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>错误：scan 不接受参数；请使用 --from N --to N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="155"/>
+        <location filename="../cli/ScanCommand.cpp" line="156"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>错误：--from %1 大于 --to %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="173"/>
+        <location filename="../cli/ScanCommand.cpp" line="174"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>正在扫描 %3 上的站号 %1–%2，每个 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="209"/>
+        <location filename="../cli/ScanCommand.cpp" line="210"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>在扫描任何站号之前已中断。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="211"/>
+        <location filename="../cli/ScanCommand.cpp" line="212"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>已中断：已扫描站号 %1–%2（%4 个中的 %3 个）；%5–%6 未询问。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="225"/>
+        <location filename="../cli/ScanCommand.cpp" line="226"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>错误：扫描在站号 %1 处停止：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="235"/>
+        <location filename="../cli/ScanCommand.cpp" line="236"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="237"/>
+        <location filename="../cli/ScanCommand.cpp" line="238"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>注意：%1 台驱动器在 %2 ms 等待时间之后才应答，已重新询问；如果扫描漏掉驱动器，请加大 --wait。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="243"/>
+        <location filename="../cli/ScanCommand.cpp" line="244"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -10726,258 +11080,293 @@ This moves or stops a motor: add --yes to send it.</source>
   - 终端电阻（总线两端各 120 Ω），以及驱动器是否已通电。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="280"/>
+        <location filename="../cli/ScanCommand.cpp" line="257"/>
+        <source>hint: %1 Retry with the same connection and: %2</source>
+        <translation>提示：%1 请使用相同连接并加上以下选项重试：%2</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="287"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 机型未知</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="281"/>
+        <location filename="../cli/ScanCommand.cpp" line="288"/>
         <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
         <translation>驱动器未报告其机型；请用 --variant %1=VARIANT 指定（%2）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>hex</source>
         <translation>十六进制</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>switches</source>
         <translation>开关</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="305"/>
         <source>model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="305"/>
         <source>firmware</source>
         <translation>固件</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="305"/>
         <source>state</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="311"/>
         <source>comm. group</source>
         <translation>通信组</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="372"/>
+        <location filename="../cli/ScanCommand.cpp" line="379"/>
         <source>1 drive found in %1 s</source>
         <translation>在 %1 s 内找到 1 台驱动器</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="373"/>
+        <location filename="../cli/ScanCommand.cpp" line="380"/>
         <source>%1 drives found in %2 s</source>
         <translation>在 %2 s 内找到 %1 台驱动器</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="375"/>
+        <location filename="../cli/ScanCommand.cpp" line="382"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>；1 个可能重复的站号：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="377"/>
+        <location filename="../cli/ScanCommand.cpp" line="384"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>；%1 个可能重复的站号：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="388"/>
+        <location filename="../cli/ScanCommand.cpp" line="395"/>
         <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>警告：站号 %1（%2，%3）的应答报文损坏：可能有两台驱动器设为同一站号。请检查该总线上各驱动器的 SW1/SW2 开关，为每台驱动器设定不同的站号，断电后重新上电，再次扫描。</translation>
     </message>
 </context>
 <context>
+    <name>opentop::SerialLock</name>
+    <message>
+        <location filename="../model/session/SerialLock.cpp" line="39"/>
+        <source>%1 = %2 prohibits configuration over the serial interface: OpenTOP may then no longer be able to change this drive&apos;s settings over the serial line it talks on. To undo it: write %1 = %3 again if the drive still accepts it; while it is not stored, switch the drive off and on; otherwise switch the controller to potentiometer/analog control, connect at 9600 bit/s, 8E1, address 1 and write %1 = %3 there.</source>
+        <translation>%1 = %2 会禁止通过串口进行配置：之后 OpenTOP 可能无法再通过当前通信的串行线路修改该驱动器的设定。撤销方法：若驱动器仍接受，再次写入 %1 = %3；尚未保存时，将驱动器断电再上电；否则将控制器切换为电位器/模拟量控制，以 9600 bit/s、8E1、地址 1 连接，并在该连接下写入 %1 = %3。</translation>
+    </message>
+</context>
+<context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="39"/>
+        <location filename="../cli/SetCommand.cpp" line="43"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>按名称写入参数，经过验证、回读和校验</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="46"/>
-        <source>Confirm commands that move a motor, reset, erase, initialise or store.</source>
-        <translation>确认会使电机运动、复位、清除、初始化或保存的命令。</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="48"/>
+        <location filename="../cli/SetCommand.cpp" line="53"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>按地址写入寄存器：ADDR=VALUE（可重复；配合 --fc 16 时可写 VALUE,VALUE...）。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="49"/>
+        <location filename="../cli/SetCommand.cpp" line="54"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="55"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 写入的功能码：6（默认）或 16。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="55"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="59"/>
+        <location filename="../cli/SetCommand.cpp" line="64"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>错误：用法：set ID NAME=VALUE...（例如 set 1 spno2.accel=2.5），或 set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="71"/>
+        <location filename="../cli/SetCommand.cpp" line="76"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>错误：&quot;%1&quot; 不是 NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="78"/>
+        <location filename="../cli/SetCommand.cpp" line="83"/>
         <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
         <translation>错误：%1 指定了两次（%2=%3 和 %4）；每项设定只能指定一次；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="89"/>
-        <location filename="../cli/SetCommand.cpp" line="186"/>
+        <location filename="../cli/SetCommand.cpp" line="94"/>
+        <location filename="../cli/SetCommand.cpp" line="227"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="99"/>
+        <location filename="../cli/SetCommand.cpp" line="104"/>
         <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>%1 没有参数 &quot;%2&quot;；请参阅 &quot;opentop-cli params --family %1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="102"/>
+        <location filename="../cli/SetCommand.cpp" line="107"/>
         <source>%1 is read-only</source>
         <translation>%1 为只读</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="104"/>
+        <location filename="../cli/SetCommand.cpp" line="109"/>
         <source>%1 is a %2 command; add --yes to send it</source>
         <translation>%1 是%2命令；加上 --yes 才会发送</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="136"/>
+        <location filename="../cli/SetCommand.cpp" line="164"/>
         <source>error: cannot read %1 to check the values; nothing written</source>
         <translation>错误：无法读取 %1 来检查这些值；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="180"/>
+        <location filename="../cli/SetCommand.cpp" line="148"/>
+        <location filename="../cli/SetCommand.cpp" line="210"/>
+        <location filename="../cli/SetCommand.cpp" line="221"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="187"/>
+        <location filename="../cli/SetCommand.cpp" line="50"/>
+        <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
+        <translation>确认会使电机运动、复位、清除、初始化或保存的命令，以及串口配置锁定的设定。</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="198"/>
+        <source>Add --yes to set it.</source>
+        <translation>加上 --yes 才会设定。</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="228"/>
         <source>nothing was written</source>
         <translation>未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="210"/>
+        <location filename="../cli/SetCommand.cpp" line="251"/>
         <source>not written (interrupted)</source>
         <translation>未写入（已中断）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="264"/>
+        <source>next: %1</source>
+        <translation>下一步：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="266"/>
+        <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
+        <translation>下一步：opentop-cli --baud %1 --parity %2 --stop-bits %3 ...（出厂通信设定）</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="304"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="304"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="245"/>
-        <location filename="../cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="304"/>
+        <location filename="../cli/SetCommand.cpp" line="422"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="251"/>
-        <location filename="../cli/SetCommand.cpp" line="387"/>
+        <location filename="../cli/SetCommand.cpp" line="310"/>
+        <location filename="../cli/SetCommand.cpp" line="457"/>
         <source>written, verified</source>
         <translation>已写入，已校验</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="252"/>
+        <location filename="../cli/SetCommand.cpp" line="311"/>
         <source>written (command, not readable)</source>
         <translation>已写入（命令，不可读）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="254"/>
+        <location filename="../cli/SetCommand.cpp" line="313"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>未确认（%1）：驱动器可能保存了该值，也可能没有；可用 &quot;get&quot; 回读</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="272"/>
+        <location filename="../cli/SetCommand.cpp" line="327"/>
+        <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
+        <translation>注意：驱动器从下次上电起使用 %1：请将驱动器断电再上电，然后用新设定（--baud、--parity）连接</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="342"/>
         <source>error: --fc for raw writes is 6 or 16</source>
         <translation>错误：raw 写入的 --fc 为 6 或 16</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="298"/>
+        <location filename="../cli/SetCommand.cpp" line="368"/>
         <source>error: &quot;%1&quot; is not ADDR=VALUE (0x.. or decimal, 0–65535; several values, comma separated, only with --fc 16)</source>
         <translation>错误：&quot;%1&quot; 不是 ADDR=VALUE（0x.. 或十进制，0–65535；多个值以逗号分隔，仅限 --fc 16）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="315"/>
+        <location filename="../cli/SetCommand.cpp" line="385"/>
         <source>error: 0x%1 is not a register the profile knows; add --yes to write it anyway; nothing was written</source>
         <translation>错误：0x%1 不是设备描述中已知的寄存器；如仍要写入请加上 --yes；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="325"/>
+        <location filename="../cli/SetCommand.cpp" line="395"/>
         <source>error: %1; nothing was written</source>
         <translation>错误：%1；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="326"/>
+        <location filename="../cli/SetCommand.cpp" line="396"/>
         <source>%1 is a %2 command; add --yes</source>
         <translation>%1 是%2命令；请加上 --yes</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="333"/>
+        <location filename="../cli/SetCommand.cpp" line="403"/>
         <source>error: the write covers part of %1; add --yes to write it anyway; nothing was written</source>
         <translation>错误：此次写入只覆盖 %1 的一部分；如仍要写入请加上 --yes；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="422"/>
         <source>Address</source>
         <translation>地址</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="422"/>
         <source>Written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="385"/>
+        <location filename="../cli/SetCommand.cpp" line="455"/>
         <source>written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="389"/>
+        <location filename="../cli/SetCommand.cpp" line="459"/>
         <source>written, but reads back differently</source>
         <translation>已写入，但回读值不同</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="392"/>
+        <location filename="../cli/SetCommand.cpp" line="462"/>
         <source>written (not readable back: %1)</source>
         <translation>已写入（无法回读：%1）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="400"/>
+        <location filename="../cli/SetCommand.cpp" line="470"/>
         <source>Also written to %1 (communication group); not read back: no parameter of the profile</source>
         <translation>同时写入了 %1（通信组）；未回读：不是设备描述中的参数</translation>
     </message>
@@ -11051,32 +11440,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimApp</name>
     <message>
-        <location filename="../sim/SimApp.cpp" line="108"/>
+        <location filename="../sim/SimApp.cpp" line="110"/>
         <source>opentop-sim: warning: %1@%2 cannot use %3 %4 and will not answer</source>
         <translation>opentop-sim：警告：%1@%2 无法使用 %3 %4，将不会应答</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="118"/>
+        <location filename="../sim/SimApp.cpp" line="124"/>
         <source>opentop-sim: --defect %1:%2: no drive with machine number %1 on the bus %3</source>
         <translation>opentop-sim：--defect %1:%2：总线 %3 上没有站号为 %1 的驱动器</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="125"/>
+        <location filename="../sim/SimApp.cpp" line="131"/>
         <source>opentop-sim: --defect %1 (%2@%1): %3</source>
         <translation>opentop-sim：--defect %1（%2@%1）：%3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="162"/>
+        <location filename="../sim/SimApp.cpp" line="168"/>
         <source>the port is unplugged already</source>
         <translation>端口已拔出</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="164"/>
+        <location filename="../sim/SimApp.cpp" line="170"/>
         <source>unplugged</source>
         <translation>已拔出</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="197"/>
+        <location filename="../sim/SimApp.cpp" line="203"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
@@ -11168,7 +11557,7 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimConsole</name>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="31"/>
+        <location filename="../sim/SimConsole.cpp" line="32"/>
         <source>commands:
   help                      this text
   list                      the devices and their state
@@ -11185,6 +11574,8 @@ This moves or stops a motor: add --yes to send it.</source>
                             defect 3 max_speed=800 or defect 4 alarm=0x07@2s
   defect ID clear           the drive has no defects again
   defects                   the drives&apos; defects
+  motor ID [KEY=VALUE ...]  show or change a DC controller&apos;s motor and load,
+                            e.g. motor 7 load=0.05 inertia=3e-4 (see --motor)
   unplug                    close the pty under its client (adapter pulled out)
   replug                    a new pty behind the same symlink
   quit                      stop the simulator</source>
@@ -11204,42 +11595,44 @@ This moves or stops a motor: add --yes to send it.</source>
                             defect 3 max_speed=800 或 defect 4 alarm=0x07@2s
   defect ID clear           清除驱动器的全部缺陷
   defects                   各驱动器的缺陷
+  motor ID [KEY=VALUE ...]  显示或修改直流控制器的电机和负载，
+                            例如 motor 7 load=0.05 inertia=3e-4（参见 --motor）
   unplug                    在客户端仍连接时关闭 pty（模拟拔出适配器）
   replug                    在同一符号链接后创建新的 pty
   quit                      停止模拟器</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="63"/>
+        <location filename="../sim/SimConsole.cpp" line="66"/>
         <source>bye</source>
         <translation>再见</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="68"/>
+        <location filename="../sim/SimConsole.cpp" line="71"/>
         <source>%1 needs the pty server (--pty)</source>
         <translation>%1 需要 pty 服务器（--pty）</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="79"/>
+        <location filename="../sim/SimConsole.cpp" line="82"/>
         <source>, defects: %1</source>
         <translation>，缺陷：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="92"/>
+        <location filename="../sim/SimConsole.cpp" line="95"/>
         <source>no drive has defects</source>
         <translation>没有驱动器有缺陷</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="98"/>
+        <location filename="../sim/SimConsole.cpp" line="101"/>
         <source>unknown command &apos;%1&apos;; type help for the list</source>
         <translation>未知命令 &apos;%1&apos;；输入 help 查看列表</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="102"/>
+        <location filename="../sim/SimConsole.cpp" line="105"/>
         <source>usage: %1 ID ...; ID is a machine number on the bus (%2)</source>
         <translation>用法：%1 ID ...；ID 为总线上的站号（%2）</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="108"/>
+        <location filename="../sim/SimConsole.cpp" line="111"/>
         <source>&apos;%1&apos; is not a machine number; the bus has %2</source>
         <translation>&apos;%1&apos; 不是站号；总线上有 %2</translation>
     </message>
@@ -11405,6 +11798,10 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
                        nostick=PARAM         writes acknowledged, old value stays
                        nostore=PARAM         value lost at the next power cycle
                      e.g. --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
+  --motor LIST       the DC controllers&apos; motor and load, e.g. inertia=2e-4,load=0.05;
+                     supply (V), resistance (ohm), no_load (1/s at full duty),
+                     commutations (per revolution), inertia (kg m2), viscous
+                     (N m s/rad), coulomb (N m), load (N m), gate (ms), tacho (V s)
   --quiet            no frame trace on stderr
   --lang CODE        language of messages: en, zh_TW, zh_CN, ko, ja
   --help             this text
@@ -11436,6 +11833,10 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
                        nostick=PARAM         写入被应答，但旧值保持不变
                        nostore=PARAM         下次重新上电时值丢失
                      例如 --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
+  --motor LIST       直流控制器的电机和负载，例如 inertia=2e-4,load=0.05；
+                     supply（V）、resistance（ohm）、no_load（满占空比时的 1/s）、
+                     commutations（每转换相次数）、inertia（kg m2）、viscous
+                     （N m s/rad）、coulomb（N m）、load（N m）、gate（ms）、tacho（V s）
   --quiet            不在 stderr 上输出报文跟踪
   --lang CODE        消息的语言：en, zh_TW, zh_CN, ko, ja
   --help             本说明
@@ -11446,72 +11847,82 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="81"/>
+        <location filename="../sim/SimOptions.cpp" line="85"/>
         <source>--lang needs a language code such as ko</source>
         <translation>--lang 需要语言代码，例如 ko</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="84"/>
+        <location filename="../sim/SimOptions.cpp" line="88"/>
         <source>--devices needs a device list such as dbu200@1,dcpid@7</source>
         <translation>--devices 需要设备列表，例如 dbu200@1,dcpid@7</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="93"/>
+        <location filename="../sim/SimOptions.cpp" line="97"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:5020</source>
         <translation>--tcp 需要 HOST:PORT，例如 127.0.0.1:5020</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="99"/>
+        <location filename="../sim/SimOptions.cpp" line="103"/>
         <source>--tcp needs HOST:PORT with PORT 0..65535, got &apos;%1&apos;</source>
         <translation>--tcp 需要 HOST:PORT，PORT 为 0..65535，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="111"/>
+        <location filename="../sim/SimOptions.cpp" line="115"/>
         <source>--baud must be one of %1, got &apos;%2&apos;</source>
         <translation>--baud 必须是 %1 之一，实际为 &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="118"/>
+        <location filename="../sim/SimOptions.cpp" line="122"/>
         <source>--parity must be N, E or O, got &apos;%1&apos;</source>
         <translation>--parity 必须为 N、E 或 O，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="126"/>
+        <location filename="../sim/SimOptions.cpp" line="130"/>
         <source>--turnaround must be 0..1000 ms, got &apos;%1&apos;</source>
         <translation>--turnaround 必须为 0..1000 ms，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="130"/>
+        <location filename="../sim/SimOptions.cpp" line="134"/>
         <source>--faults needs a list such as drop=0.02,crc=0.01</source>
         <translation>--faults 需要列表，例如 drop=0.02,crc=0.01</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="134"/>
+        <location filename="../sim/SimOptions.cpp" line="138"/>
         <source>--faults: %1</source>
         <translation>--faults：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="140"/>
+        <location filename="../sim/SimOptions.cpp" line="144"/>
         <source>--seed must be a whole number 0..4294967295, got &apos;%1&apos;</source>
         <translation>--seed 必须是 0..4294967295 的整数，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="144"/>
+        <location filename="../sim/SimOptions.cpp" line="148"/>
         <source>--defect needs ID:DEFECT[,DEFECT...], e.g. 3:firmware=1.4; DEFECT: %1</source>
         <translation>--defect 需要 ID:DEFECT[,DEFECT...]，例如 3:firmware=1.4；DEFECT：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="151"/>
+        <location filename="../sim/SimOptions.cpp" line="155"/>
         <source>--defect: %1</source>
         <translation>--defect：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="157"/>
-        <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --quiet, --help, --version</source>
-        <translation>未知参数 &apos;%1&apos;；选项：--devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --quiet, --help, --version</translation>
+        <location filename="../sim/SimOptions.cpp" line="159"/>
+        <source>--motor needs a list such as inertia=2e-4,load=0.05</source>
+        <translation>--motor 需要列表，例如 inertia=2e-4,load=0.05</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="164"/>
+        <location filename="../sim/SimOptions.cpp" line="163"/>
+        <source>--motor: %1</source>
+        <translation>--motor：%1</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimOptions.cpp" line="169"/>
+        <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
+        <translation>未知参数 &apos;%1&apos;；选项：--devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimOptions.cpp" line="177"/>
         <source>--devices SPEC is required, e.g. --devices dbu200@1,dcpid@7</source>
         <translation>必须指定 --devices SPEC，例如 --devices dbu200@1,dcpid@7</translation>
     </message>
@@ -11829,9 +12240,65 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>状态未知</translation>
     </message>
     <message>
-        <location filename="../ui/widgets/StatusLight.cpp" line="42"/>
+        <location filename="../ui/widgets/StatusLight.cpp" line="44"/>
         <source>Status light %1: %2</source>
         <translation>状态灯 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/widgets/StatusLight.cpp" line="48"/>
+        <source>The drive&apos;s manual: %1</source>
+        <translation>驱动器手册：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StepMetrics</name>
+    <message>
+        <location filename="../model/tuning/StepMetrics.cpp" line="18"/>
+        <source>the step has no height (from = to)</source>
+        <translation>阶跃幅度为零（from = to）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/StepMetrics.cpp" line="19"/>
+        <source>too few samples after the step (%1)</source>
+        <translation>阶跃后的采样点过少（%1）</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StepTestPanel</name>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="22"/>
+        <source>Run step test…</source>
+        <translation>运行阶跃测试…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="29"/>
+        <source>From:</source>
+        <translation>从：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="30"/>
+        <source>To:</source>
+        <translation>到：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="31"/>
+        <source>Record time:</source>
+        <translation>记录时间：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="32"/>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="75"/>
+        <source>Enter two different speeds of 0 %1 or more.</source>
+        <translation>请输入两个不同且不小于 0 %1 的速度。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="79"/>
+        <source>Enter a record time of 100–60000 ms.</source>
+        <translation>请输入 100–60000 ms 的记录时间。</translation>
     </message>
 </context>
 <context>
@@ -11989,22 +12456,22 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StopConfirmer</name>
     <message>
-        <location filename="../model/run/StopConfirmer.cpp" line="56"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="80"/>
         <source>%1 drives report neither running state nor speed</source>
         <translation>%1 驱动器既不报告运行状态也不报告速度</translation>
     </message>
     <message>
-        <location filename="../model/run/StopConfirmer.cpp" line="86"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="111"/>
         <source>%1 is %2: the drive does not take motion commands over the bus (it follows its input terminals)</source>
         <translation>%1 为 %2：驱动器不接受来自总线的运动命令（按其输入端子动作）</translation>
     </message>
     <message>
-        <location filename="../model/run/StopConfirmer.cpp" line="140"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="185"/>
         <source>still at %1 after %2 s</source>
         <translation>%2 s 后仍为 %1</translation>
     </message>
     <message>
-        <location filename="../model/run/StopConfirmer.cpp" line="142"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="187"/>
         <source>still running after %1 s</source>
         <translation>%1 s 后仍在运行</translation>
     </message>
@@ -12542,7 +13009,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     </message>
     <message>
         <location filename="../transport/LibmodbusBackend.cpp" line="281"/>
-        <location filename="../transport/RtuBackend.cpp" line="145"/>
+        <location filename="../transport/RtuBackend.cpp" line="146"/>
         <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>应答不完整</translation>
@@ -12555,7 +13022,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     </message>
     <message>
         <location filename="../transport/LibmodbusBackend.cpp" line="293"/>
-        <location filename="../transport/RtuBackend.cpp" line="152"/>
+        <location filename="../transport/RtuBackend.cpp" line="153"/>
         <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>接收失败</translation>
@@ -12632,77 +13099,72 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>不允许重试 %1 次：请使用 0–10，或用 -1 表示默认值。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="163"/>
+        <location filename="../transport/ModbusRequest.cpp" line="164"/>
+        <source>Function 0x%1 cannot be broadcast: only functions 06h and 10h (writes) may be sent to machine number 0; use slave address 1–247.</source>
+        <translation>功能码 0x%1 不能广播：只有功能码 06h 和 10h（写入）可以发给站号 0；请使用从站地址 1–247。</translation>
+    </message>
+    <message>
+        <location filename="../transport/ModbusRequest.cpp" line="171"/>
         <source>Function code 0x%1 must be sent as a raw request.</source>
         <translation>功能码 0x%1 必须作为原始请求发送。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="167"/>
+        <location filename="../transport/ModbusRequest.cpp" line="175"/>
         <source>Raw request data of %1 bytes is too long: at most %2 bytes.</source>
         <translation>%1 字节的原始请求数据过长：最多 %2 字节。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="173"/>
-        <source>Device identification cannot be broadcast.</source>
-        <translation>设备识别不能广播。</translation>
-    </message>
-    <message>
-        <location filename="../transport/ModbusRequest.cpp" line="183"/>
-        <source>A read cannot be broadcast: use slave address 1–247.</source>
-        <translation>读取不能广播：请使用从站地址 1–247。</translation>
-    </message>
-    <message>
-        <location filename="../transport/ModbusRequest.cpp" line="186"/>
+        <location filename="../transport/ModbusRequest.cpp" line="188"/>
         <source>Cannot read %1 registers at once: use 1–125 registers.</source>
         <translation>无法一次读取 %1 个寄存器：请使用 1–125 个寄存器。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="193"/>
+        <location filename="../transport/ModbusRequest.cpp" line="195"/>
         <source>Write single register needs exactly 1 value, not %1.</source>
         <translation>写单个寄存器需要且只需要 1 个值，而不是 %1 个。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="199"/>
+        <location filename="../transport/ModbusRequest.cpp" line="201"/>
         <source>Cannot write %1 registers at once: use 1–123 registers.</source>
         <translation>无法一次写入 %1 个寄存器：请使用 1–123 个寄存器。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="204"/>
+        <location filename="../transport/ModbusRequest.cpp" line="206"/>
         <source>%1 values given for %2 registers.</source>
         <translation>为 %2 个寄存器给出了 %1 个值。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="213"/>
+        <location filename="../transport/ModbusRequest.cpp" line="215"/>
         <source>Registers %1 ×%2 run past the last address 0xFFFF.</source>
         <translation>寄存器 %1 ×%2 超出最后地址 0xFFFF。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="224"/>
+        <location filename="../transport/ModbusRequest.cpp" line="226"/>
         <source>device identification code %1 object %2</source>
         <translation>设备识别代码 %1 对象 %2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="232"/>
+        <location filename="../transport/ModbusRequest.cpp" line="234"/>
         <source>raw %1 %2</source>
         <translation>原始 %1 %2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="236"/>
+        <location filename="../transport/ModbusRequest.cpp" line="238"/>
         <source>read %1 %2 ×%3</source>
         <translation>读取 %1 %2 ×%3</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="240"/>
+        <location filename="../transport/ModbusRequest.cpp" line="242"/>
         <source>write %1 %2 = %3</source>
         <translation>写入 %1 %2 = %3</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="243"/>
+        <location filename="../transport/ModbusRequest.cpp" line="245"/>
         <source>write %1 %2 ×%3 = %4</source>
         <translation>写入 %1 %2 ×%3 = %4</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="249"/>
+        <location filename="../transport/ModbusRequest.cpp" line="251"/>
         <source>broadcast %1</source>
         <translation>广播 %1</translation>
     </message>
@@ -12857,7 +13319,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>%1 正被 %2（PID %3）占用；请先将其关闭。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="82"/>
+        <location filename="../transport/RtuBackend.cpp" line="83"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -12866,17 +13328,17 @@ then log out and in again (the group applies to new sessions only).</source>
 然后注销并重新登录（该组仅对新会话生效）。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="88"/>
+        <location filename="../transport/RtuBackend.cpp" line="89"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> （设备可能不支持该校验位；pty 需要 N）</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="123"/>
+        <location filename="../transport/RtuBackend.cpp" line="124"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>应答声明 %1 字节，超过 RTU 帧的容量</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="144"/>
+        <location filename="../transport/RtuBackend.cpp" line="145"/>
         <source>no reply</source>
         <translation>无应答</translation>
     </message>
@@ -13169,6 +13631,820 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::TuneCommand</name>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="80"/>
+        <source>Speed-loop step test and relay autotune of a DC controller (needs --yes)</source>
+        <translation>直流控制器的速度环阶跃测试和继电器自整定（需要 --yes）</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="86"/>
+        <source>Run the test (it moves the motor).</source>
+        <translation>执行测试（会使电机运动）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="87"/>
+        <source>step: speed before the step (default 0).</source>
+        <translation>step：阶跃前的速度（默认 0）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="87"/>
+        <location filename="../cli/TuneCommand.cpp" line="88"/>
+        <location filename="../cli/TuneCommand.cpp" line="91"/>
+        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <source>SPEED</source>
+        <translation>SPEED</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="88"/>
+        <source>step: speed after the step.</source>
+        <translation>step：阶跃后的速度。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="89"/>
+        <source>step: record this long after the step (default 1500).</source>
+        <translation>step：阶跃后记录的时长（默认 1500）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="90"/>
+        <source>MS</source>
+        <translation>MS</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="91"/>
+        <source>autotune: operating speed of the relay test.</source>
+        <translation>autotune：继电器测试的运行速度。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="92"/>
+        <source>autotune: output swing, % of full output (default 10).</source>
+        <translation>autotune：输出摆幅，以满输出的 % 表示（默认 10）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="93"/>
+        <source>PERCENT</source>
+        <translation>PERCENT</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="95"/>
+        <source>autotune: soft, medium (default), stiff, tyreus-luyben or zn-pi.</source>
+        <translation>autotune：soft、medium（默认）、stiff、tyreus-luyben 或 zn-pi。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="95"/>
+        <source>RULE</source>
+        <translation>RULE</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="96"/>
+        <source>autotune: write the proposed gains, then run a step test from half the operating speed to it.</source>
+        <translation>autotune：写入建议增益，然后执行从运行速度的一半到运行速度的阶跃测试。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="98"/>
+        <source>autotune: with --accept, store the gains in the drive.</source>
+        <translation>autotune：配合 --accept 时，将增益保存到驱动器。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <source>Stop at once beyond this speed (default 120 % of the test&apos;s highest).</source>
+        <translation>速度超过此值时立即停止（默认为测试最高速度的 120 %）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="101"/>
+        <source>Stop at once beyond this current in A (default 20).</source>
+        <translation>电流超过此值（A）时立即停止（默认 20）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="102"/>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <source>Write the samples to FILE.</source>
+        <translation>将采样数据写入 FILE。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <source>FILE</source>
+        <translation>FILE</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="117"/>
+        <source>error: usage: %1</source>
+        <translation>错误：用法：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="127"/>
+        <source>error: --%1 must be a number 0 or more, got &apos;%2&apos;</source>
+        <translation>错误：--%1 必须是不小于 0 的数，实际为 &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="149"/>
+        <location filename="../cli/TuneCommand.cpp" line="160"/>
+        <location filename="../cli/TuneCommand.cpp" line="165"/>
+        <location filename="../cli/TuneCommand.cpp" line="319"/>
+        <source>error: %1</source>
+        <translation>错误：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="150"/>
+        <source>step needs --to SPEED</source>
+        <translation>step 需要 --to SPEED</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="151"/>
+        <source>--rule must be one of %1</source>
+        <translation>--rule 必须是 %1 之一</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="153"/>
+        <source>autotune needs --speed SPEED</source>
+        <translation>autotune 需要 --speed SPEED</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="169"/>
+        <source>Would run the motor of machine number %1 from %2 to %3 and record the step response.</source>
+        <translation>将使站号 %1 的电机从 %2 运行到 %3，并记录阶跃响应。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="174"/>
+        <source>Would run the motor of machine number %1 in a relay test around %2 (output ±%3 %).</source>
+        <translation>将使站号 %1 的电机在 %2 附近进行继电器测试（输出 ±%3 %）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="180"/>
+        <source>This moves the motor: add --yes to run it.</source>
+        <translation>这会使电机运动：加上 --yes 才会执行。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="229"/>
+        <source>Machine number %1, gains %2</source>
+        <translation>站号 %1，增益 %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="231"/>
+        <source>  rise time (10–90 %): %1</source>
+        <translation>  上升时间（10–90 %）：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="232"/>
+        <source>  overshoot: %1 %</source>
+        <translation>  超调：%1 %</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="233"/>
+        <source>  settling time (2 %): %1</source>
+        <translation>  调节时间（2 %）：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="234"/>
+        <source>  steady-state error: %1 %2</source>
+        <translation>  稳态误差：%1 %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="235"/>
+        <source>  peak current: %1 A</source>
+        <translation>  峰值电流：%1 A</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="249"/>
+        <source>Step %1 → %2 %3:</source>
+        <translation>阶跃 %1 → %2 %3：</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="253"/>
+        <source>Relay test: Ku %1, Tu %2 ms (amplitude ±%3 %4, %5 cycles)</source>
+        <translation>继电器测试：Ku %1，Tu %2 ms（幅值 ±%3 %4，%5 个周期）</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="259"/>
+        <source>Model: gain %1, time constant %2 ms, dead time %3 ms (the bus&apos;s %4 ms left out)</source>
+        <translation>模型：增益 %1，时间常数 %2 ms，纯滞后时间 %3 ms（已扣除总线的 %4 ms）</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="265"/>
+        <source>Proposed (%1): %2</source>
+        <translation>建议值（%1）：%2</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="281"/>
+        <source>Writing the proposed gains failed: %1</source>
+        <translation>写入建议增益失败：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="284"/>
+        <source>Proposed gains written (not stored).</source>
+        <translation>已写入建议增益（未保存）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="287"/>
+        <source>Measured step %1 → %2 %3 with them:</source>
+        <translation>用该增益测得的阶跃 %1 → %2 %3：</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="303"/>
+        <source>Gains stored in the drive.</source>
+        <translation>增益已保存到驱动器。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="304"/>
+        <source>Storing the gains failed: %1</source>
+        <translation>保存增益失败：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="311"/>
+        <source>Test ended: %1</source>
+        <translation>测试结束：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningChart</name>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="40"/>
+        <source>Time (ms)</source>
+        <translation>时间 (ms)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="44"/>
+        <source>Current (A)</source>
+        <translation>电流 (A)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="61"/>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="61"/>
+        <source>Speed (%1)</source>
+        <translation>速度 (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningGains</name>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="43"/>
+        <source>Writing the gains failed: %1</source>
+        <translation>写入增益失败：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="62"/>
+        <source>Proposal written (temporary until stored).</source>
+        <translation>已写入建议值（保存前仅临时有效）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="83"/>
+        <source>%1: the gains before were written back (%2).</source>
+        <translation>%1：已写回原来的增益（%2）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="102"/>
+        <source>Gains stored in the drive.</source>
+        <translation>增益已保存到驱动器。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="104"/>
+        <source>Storing the gains failed: %1</source>
+        <translation>保存增益失败：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningLimitsBox</name>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="12"/>
+        <source>Limits</source>
+        <translation>限值</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="17"/>
+        <source>Beyond it the motor is stopped at once. Empty: 125 % of the step test&apos;s highest speed, 150 % of the autotune&apos;s speed</source>
+        <translation>超过该值时电机立即停止。留空：阶跃测试最高速度的 125 %，自整定速度的 150 %</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="19"/>
+        <source>Beyond it the motor is stopped at once. Empty: 1.2 × the drive&apos;s maximum current</source>
+        <translation>超过该值时电机立即停止。留空：1.2 × 驱动器最大电流</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="22"/>
+        <source>Max. speed:</source>
+        <translation>最高速度：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="23"/>
+        <source>Max. current:</source>
+        <translation>最大电流：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="24"/>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="37"/>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="39"/>
+        <source>auto: %1</source>
+        <translation>自动：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="39"/>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="48"/>
+        <source>Enter a speed limit above 0 %1, or leave it empty.</source>
+        <translation>请输入大于 0 %1 的速度限值，或留空。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="52"/>
+        <source>Enter a current limit above 0 A, or leave it empty.</source>
+        <translation>请输入大于 0 A 的电流限值，或留空。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningMetricsView</name>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="25"/>
+        <source>Rise time (10–90 %):</source>
+        <translation>上升时间（10–90 %）：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="26"/>
+        <source>Overshoot:</source>
+        <translation>超调：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="27"/>
+        <source>Settling time (2 %):</source>
+        <translation>调节时间（2 %）：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="28"/>
+        <source>Steady-state error:</source>
+        <translation>稳态误差：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="29"/>
+        <source>Peak current:</source>
+        <translation>峰值电流：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="40"/>
+        <source>No run yet</source>
+        <translation>尚未进行测试</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="41"/>
+        <source>%1: recording</source>
+        <translation>%1：记录中</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="44"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="52"/>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="55"/>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="53"/>
+        <source>not reached</source>
+        <translation>未达到</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="54"/>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="56"/>
+        <source>not settled</source>
+        <translation>未稳定</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="57"/>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="58"/>
+        <source>%1 A</source>
+        <translation>%1 A</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="63"/>
+        <source>Rise time %1; overshoot %2; settling time %3; steady-state error %4; peak current %5</source>
+        <translation>上升时间 %1；超调 %2；调节时间 %3；稳态误差 %4；峰值电流 %5</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningPage</name>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="41"/>
+        <source>STOP</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="52"/>
+        <source>Cancels the running test: the motor is stopped and the stop confirmed</source>
+        <translation>取消正在进行的测试：停止电机并确认已停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="68"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="245"/>
+        <source>Step test</source>
+        <translation>阶跃测试</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="69"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <source>Relay autotune</source>
+        <translation>继电器自整定</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="107"/>
+        <source>Ready. Nothing moves until you confirm a test.</source>
+        <translation>就绪。确认测试之前，电机不会运行。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="198"/>
+        <source>Could not read the speed mode: %1</source>
+        <translation>无法读取速度模式：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="201"/>
+        <source>The drive is not in a closed-loop speed mode (now: %1). Choose one on its settings page first.</source>
+        <translation>驱动器不处于闭环速度模式（当前：%1）。请先在其设定页面中选择一种闭环模式。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="224"/>
+        <source>Limits: %1 %2, %3.</source>
+        <translation>限值：%1 %2，%3。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="226"/>
+        <source>%1 A</source>
+        <translation>%1 A</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="226"/>
+        <source>no current limit</source>
+        <translation>无电流限值</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="241"/>
+        <source>The motor of %1 will run from %2 to %3 %4 in its present speed mode, for about %5 s, and then stop.</source>
+        <translation>%1 的电机将以当前速度模式从 %2 运行到 %3 %4，持续约 %5 s，然后停止。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="245"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <source>Run</source>
+        <translation>执行</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="261"/>
+        <source>The motor of %1 will run in open loop (the speed loop off) around %2 %3, its output switching by ±%4 %, for up to %5 s, and then stop.</source>
+        <translation>%1 的电机将以开环方式（速度环关闭）在 %2 %3 附近运行，输出以 ±%4 % 切换，最长 %5 s，然后停止。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="283"/>
+        <source>Stop command sent.</source>
+        <translation>已发送停止命令。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="284"/>
+        <source>Stop command failed: %1</source>
+        <translation>停止命令失败：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="294"/>
+        <source>Stopping…</source>
+        <translation>正在停止…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="308"/>
+        <source>Run %1: %2 → %3 %4</source>
+        <translation>测试 %1：%2 → %3 %4</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="343"/>
+        <source>Step test done.</source>
+        <translation>阶跃测试完成。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="343"/>
+        <source>Step test ended: %1</source>
+        <translation>阶跃测试结束：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="347"/>
+        <source>The test was stopped</source>
+        <translation>测试已停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="380"/>
+        <source>Autotune ended: %1</source>
+        <translation>自整定结束：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="382"/>
+        <source>The autotune was stopped</source>
+        <translation>自整定已停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="392"/>
+        <source>Predicted: %1 → %2 %3</source>
+        <translation>预测：%1 → %2 %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="400"/>
+        <source>Autotune done: proposal %1. Accept writes it to the drive.</source>
+        <translation>自整定完成：建议值 %1。接受后将写入驱动器。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="434"/>
+        <source>Proposal rejected; the drive&apos;s gains were not changed.</source>
+        <translation>已拒绝建议值；驱动器的增益未改变。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="438"/>
+        <source>Proposal rejected</source>
+        <translation>已拒绝建议值</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRules</name>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="60"/>
+        <source>Soft (no overshoot)</source>
+        <translation>柔和（无超调）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="62"/>
+        <source>Medium (some overshoot)</source>
+        <translation>适中（少量超调）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="64"/>
+        <source>Stiff (Ziegler–Nichols)</source>
+        <translation>高刚性（Ziegler–Nichols）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="66"/>
+        <source>Tyreus–Luyben (robust)</source>
+        <translation>Tyreus–Luyben（鲁棒）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="68"/>
+        <source>PI only (Ziegler–Nichols)</source>
+        <translation>仅 PI（Ziegler–Nichols）</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRunCsv</name>
+    <message>
+        <location filename="../ui/tuning/TuningRunCsv.cpp" line="66"/>
+        <source>could not write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRunList</name>
+    <message>
+        <location filename="../ui/tuning/TuningRunList.cpp" line="14"/>
+        <source>Run</source>
+        <translation>测试</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunList.cpp" line="14"/>
+        <source>Gains</source>
+        <translation>增益</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunList.cpp" line="43"/>
+        <source>%1 (recording)</source>
+        <translation>%1（记录中）</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunList.cpp" line="45"/>
+        <source>P %1 · I %2 · D %3</source>
+        <translation>P %1 · I %2 · D %3</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRunner</name>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="183"/>
+        <source>a tuning test is already running</source>
+        <translation>已有整定测试正在进行</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="191"/>
+        <source>Reading the drive&apos;s settings</source>
+        <translation>正在读取驱动器设定</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="199"/>
+        <source>could not read the drive&apos;s settings: %1</source>
+        <translation>无法读取驱动器设定：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="224"/>
+        <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
+        <translation>驱动器不处于闭环速度模式：请先将 %1（%2）设为 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="226"/>
+        <source> or </source>
+        <translation> 或 </translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="241"/>
+        <source>Setting the communication-loss braking time to %1 s</source>
+        <translation>正在将通信中断停止时间设为 %1 s</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="265"/>
+        <source>the drive stopped answering: %1</source>
+        <translation>驱动器停止应答：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="283"/>
+        <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
+        <translation>速度 %1 %2 超出测试限值 %3 %2：已立即停止</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="290"/>
+        <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
+        <translation>电流 %1 A 超出测试限值 %2 A：已立即停止</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="296"/>
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="356"/>
+        <source>Stopping the motor</source>
+        <translation>正在停止电机</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="362"/>
+        <source>motor stopped (confirmed)</source>
+        <translation>电机已停止（已确认）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="363"/>
+        <source>the motor could not be confirmed stopped: check it</source>
+        <translation>无法确认电机已停止：请检查电机</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="398"/>
+        <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
+        <translation>阶跃测试以正转从一个速度变到另一个速度：起始速度和目标速度必须不同，且不小于 0</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="405"/>
+        <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
+        <translation>%1 %2 超出测试的速度限值 %3 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="413"/>
+        <source>Running to %1 %2</source>
+        <translation>正在运行至 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="449"/>
+        <source>Step to %1 %2</source>
+        <translation>阶跃至 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="477"/>
+        <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
+        <translation>运行速度必须大于 0 且小于测试的速度限值 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="484"/>
+        <source>the relay amplitude must be 0–50 % of full output</source>
+        <translation>继电器幅值必须为最大输出的 0–50 %</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="487"/>
+        <source>Open loop: finding the output for %1 %2</source>
+        <translation>开环：正在寻找 %1 %2 所需的输出</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="536"/>
+        <source>the motor did not turn at %1 % output</source>
+        <translation>输出 %1 % 时电机未转动</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="572"/>
+        <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
+        <translation>运行速度需要 %1 % 的输出：上下没有 ±%2 % 的余量</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="577"/>
+        <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
+        <translation>正在 %1 %2 附近进行继电器测试（输出 %3 % ± %4 %）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="611"/>
+        <source>no steady oscillation within %1 s: %2</source>
+        <translation>%1 s 内未出现稳定振荡：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="613"/>
+        <source>try a larger amplitude</source>
+        <translation>请尝试加大幅值</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRunsView</name>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="36"/>
+        <source>Save CSV…</source>
+        <translation>保存 CSV…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="37"/>
+        <source>Save PNG…</source>
+        <translation>保存 PNG…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="42"/>
+        <source>Saves the selected run: its samples, gains and metrics</source>
+        <translation>保存所选测试：其采样数据、增益和指标</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="43"/>
+        <source>Saves the chart as it is shown</source>
+        <translation>按当前显示保存图表</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
+        <source>solid: speed · dotted: command · dash-dot: current (right axis) · dashed: predicted speed</source>
+        <translation>实线：速度 · 点线：命令 · 点划线：电流（右轴） · 虚线：预测速度</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="161"/>
+        <source>no run to save</source>
+        <translation>没有可保存的测试</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="174"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="178"/>
+        <source>Save run as CSV</source>
+        <translation>将测试保存为 CSV</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="175"/>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="183"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <source>Save chart as PNG</source>
+        <translation>将图表保存为 PNG</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="184"/>
+        <source>PNG images (*.png)</source>
+        <translation>PNG 图片 (*.png)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <source>Could not write %1.</source>
+        <translation>无法写入 %1。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningSpec</name>
+    <message>
+        <location filename="../model/tuning/TuningSpec.cpp" line="23"/>
+        <source>%1 has no speed loop to tune</source>
+        <translation>%1 没有可整定的速度环</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningSpec.cpp" line="51"/>
+        <source>%1: the profile&apos;s tuning needs the roles pidP, pidI, pidD, pidDPeriod, pidStore, speedMode, speedCommand, commLossTime, loadCurrent and output</source>
+        <translation>%1：设备描述的整定需要以下角色：pidP、pidI、pidD、pidDPeriod、pidStore、speedMode、speedCommand、commLossTime、loadCurrent 和 output</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningSpec.cpp" line="60"/>
+        <source>%1: the profile&apos;s tuning section needs periodMs ≥ 1, outputFullScale &gt; 0, openLoopMode and closedLoopModes with known feedback parameters</source>
+        <translation>%1：设备描述的整定部分需要 periodMs ≥ 1、outputFullScale &gt; 0、openLoopMode，以及反馈参数已知的 closedLoopModes</translation>
+    </message>
+</context>
+<context>
     <name>opentop::UnitRecordJson</name>
     <message>
         <location filename="../model/eol/UnitRecordJson.cpp" line="105"/>
@@ -13320,98 +14596,104 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ValueCodec</name>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="130"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="202"/>
         <source>depends on %1, which is not known yet</source>
         <translation>取决于 %1，但该项尚未知</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="132"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="204"/>
         <source>text of up to %1 characters</source>
         <translation>最多 %1 个字符的文本</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="142"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="178"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="214"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="150"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="193"/>
+        <source>%1: %2 is outside the recommended range %3; it is allowed and will be written</source>
+        <translation>%1：%2 超出建议范围 %3；该值仍允许，将会写入</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueCodec.cpp" line="222"/>
         <source>, or </source>
         <translation>，或 </translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="151"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="223"/>
         <source>any value</source>
         <translation>任意值</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="167"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="239"/>
         <source> (the variant is not known, so the value must suit %1; name the variant to use its own range)</source>
         <translation> （机型未知，因此该值必须适用于 %1；指定机型以使用其自身范围）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="177"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="249"/>
         <source>%1: the allowed values depend on %2, which has not been read</source>
         <translation>%1：允许值取决于 %2，但该项尚未读取</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="182"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="254"/>
         <source>%1: value out of the register&apos;s range; allowed: %2</source>
         <translation>%1：值超出寄存器范围；允许：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="194"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="266"/>
         <source>%1: %2 is not allowed; allowed: %3</source>
         <translation>%1：不允许 %2；允许：%3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="206"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="278"/>
         <source>%1: expected %2 registers, got %3</source>
         <translation>%1：预期 %2 个寄存器，实际为 %3 个</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="244"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="316"/>
         <source>%1 is text, not a number</source>
         <translation>%1 是文本，不是数字</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="257"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="329"/>
         <source>%1: %2 is finer than the step of %3 %4; allowed: %5</source>
         <translation>%1：%2 比步长 %3 %4 更精细；允许：%5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="288"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="362"/>
         <source>%1: at most %2 characters</source>
         <translation>%1：最多 %2 个字符</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="294"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="368"/>
         <source>%1: only printable ASCII characters are allowed</source>
         <translation>%1：只允许可打印的 ASCII 字符</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="306"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="380"/>
         <source>%1: no value given; allowed: %2</source>
         <translation>%1：未给出值；允许：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="346"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="420"/>
         <source>%1: &quot;%2&quot; is only available when %3 is %4; allowed now: %5</source>
         <translation>%1：&quot;%2&quot; 仅在 %3 为 %4 时可用；当前允许：%5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="359"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="379"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="433"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="453"/>
         <source>%1: &quot;%2&quot; is not a valid value; allowed: %3</source>
         <translation>%1：&quot;%2&quot; 不是有效值；允许：%3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="405"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="479"/>
         <source>(invalid)</source>
         <translation>（无效）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="416"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="490"/>
         <source>unknown code %1</source>
         <translation>未知代码 %1</translation>
     </message>

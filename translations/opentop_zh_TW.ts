@@ -255,144 +255,189 @@
         <translation>無回應</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="47"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="48"/>
         <source>top level</source>
         <translation>最上層</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="50"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="51"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot; 必須為 1</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="59"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="61"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot; 必須是小寫的 id</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="69"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="71"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity 必須為 N、E 或 O</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="73"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="75"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial：baud 必須為 1200–115200，stopBits 必須為 1 或 2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="89"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="81"/>
+        <source>serial.powerOnDelayMs must be 0–60000</source>
+        <translation>serial.powerOnDelayMs 必須為 0–60000</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="95"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits：maxReadRegisters 須為 1–125，maxWriteRegisters 須為 1–123</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="91"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="97"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits：slaves 必須在 1–247 範圍內</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="106"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="112"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1] 需要 id、model 與 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="108"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="114"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]：id &quot;%2&quot; 重複</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="119"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="125"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1] 需要唯一的 id 與 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="130"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="136"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1] 需要功能碼 3 或 4，且 first ≤ last</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="174"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="180"/>
         <source>%1 has no name</source>
         <translation>%1 沒有名稱</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="176"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="182"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1：reset 必須是 %2 其中之一</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="179"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="185"/>
         <source>%1: code %2 repeated</source>
         <translation>%1：代碼 %2 重複</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="201"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="207"/>
         <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
         <translation>%1：storeWith &quot;%2&quot; 不是指令參數</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="204"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="210"/>
         <source>%1: the default is not among its allowed values</source>
         <translation>%1：預設值不在允許值之內</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="208"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="214"/>
         <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
         <translation>%1：位元欄位 &quot;%2&quot;：function &quot;%3&quot; 不是可讀取的參數</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="215"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="221"/>
         <source>%1: condition on unknown parameter &quot;%2&quot;</source>
         <translation>%1：條件引用了未知參數 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="217"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="223"/>
         <source>%1: the default is not allowed when %2</source>
         <translation>%1：當 %2 時不允許此預設值</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="227"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
         <source>%1 runs past address 0xFFFF</source>
         <translation>%1 超出位址 0xFFFF</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="230"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="236"/>
         <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
         <translation>%1 與 &quot;%2&quot; 在 0x%3 重疊 (%4 個暫存器)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="254"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="260"/>
         <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
         <translation>identify：&quot;%1&quot; 必須是 identify 讀取範圍內的參數</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="257"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="263"/>
         <source>identify.nameMatch is not a valid regular expression</source>
         <translation>identify.nameMatch 不是有效的正規表示式</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="269"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1：未知參數 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="297"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="303"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1 必須是參數名稱、名稱清單或物件</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="306"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="312"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1：&quot;%2&quot; 沒有位元欄位 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="312"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="318"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1：%2 不是 &quot;%3&quot; 可寫入的值</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="336"/>
+        <source>decelerationKnobs need the &quot;selected&quot; role</source>
+        <translation>decelerationKnobs 需要 &quot;selected&quot; 角色</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="352"/>
+        <source>%1 needs &quot;selected&quot; and &quot;maxSeconds&quot;</source>
+        <translation>%1 需要 &quot;selected&quot; 與 &quot;maxSeconds&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="355"/>
+        <source>%1: &quot;selected&quot; %2 is not a value of the &quot;selected&quot; role, or repeated</source>
+        <translation>%1：&quot;selected&quot; %2 不是 &quot;selected&quot; 角色的值，或重複出現</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="360"/>
+        <source>%1: &quot;maxSeconds&quot; must be more than 0 and at most 600</source>
+        <translation>%1：&quot;maxSeconds&quot; 必須大於 0 且不超過 600</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="392"/>
+        <source>%1: &quot;light&quot; must be one of %2, each once</source>
+        <translation>%1：&quot;light&quot; 必須是 %2 其中之一，且每個只能出現一次</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="395"/>
+        <source>%1: &quot;colour&quot; must be #rrggbb</source>
+        <translation>%1：&quot;colour&quot; 必須為 #rrggbb</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="397"/>
+        <source>%1: &quot;label&quot; and &quot;meaning&quot; must not be empty</source>
+        <translation>%1：&quot;label&quot; 與 &quot;meaning&quot; 不可為空</translation>
     </message>
     <message>
         <location filename="../model/i18n/ProfileTranslation.cpp" line="56"/>
         <source> and %1 more</source>
         <translation> 及另外 %1 個</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="26"/>
+        <source>not reached</source>
+        <translation>未達到</translation>
     </message>
 </context>
 <context>
@@ -1005,6 +1050,134 @@ Remedy: %5</source>
         <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
         <source>Erasing failed: %1</source>
         <translation>清除失敗：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::AutotunePanel</name>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="24"/>
+        <source>Autotune…</source>
+        <translation>自動調諧…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="27"/>
+        <source>Accept</source>
+        <translation>接受</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="28"/>
+        <source>Reject</source>
+        <translation>拒絕</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="29"/>
+        <source>Store in the drive</source>
+        <translation>保存至驅動器</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="43"/>
+        <source>Writes the proposed gains to the drive (temporary until stored) and offers a step test to compare with the prediction</source>
+        <translation>將建議增益寫入驅動器 (保存前僅暫時有效)，並提供步階測試以與預測結果比較</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="45"/>
+        <source>Writes back the gains the drive had before</source>
+        <translation>將驅動器原本的增益寫回</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="46"/>
+        <source>Stores the gains in the drive so that they survive a power cycle</source>
+        <translation>將增益保存至驅動器，斷電重新上電後仍保留</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="51"/>
+        <source>Operating speed:</source>
+        <translation>運轉速度：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="52"/>
+        <source>Relay amplitude:</source>
+        <translation>繼電器振幅：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="53"/>
+        <source>%</source>
+        <translation>%</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="54"/>
+        <source>Rule:</source>
+        <translation>調諧規則：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="58"/>
+        <source>Present</source>
+        <translation>目前</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="59"/>
+        <source>Proposed</source>
+        <translation>建議</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <source>P</source>
+        <translation>P</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <source>I</source>
+        <translation>I</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <source>D</source>
+        <translation>D</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <source>D period</source>
+        <translation>D 週期</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="106"/>
+        <source>Enter an operating speed above 0 %1.</source>
+        <translation>請輸入大於 0 %1 的運轉速度。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="110"/>
+        <source>Enter a relay amplitude of 1–50 %.</source>
+        <translation>請輸入 1–50 % 的繼電器振幅。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="123"/>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="138"/>
+        <source>No autotune result yet.</source>
+        <translation>尚無自動調諧結果。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="146"/>
+        <source>Autotune failed: %1</source>
+        <translation>自動調諧失敗：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="155"/>
+        <source>Ku %1 %/%2, Tu %3 ms</source>
+        <translation>Ku %1 %/%2，Tu %3 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="158"/>
+        <source>Model: K %1 %2/%, τ %3 ms, dead time %4 ms</source>
+        <translation>模型：K %1 %2/%，τ %3 ms，延遲時間 %4 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="163"/>
+        <source>No model: %1</source>
+        <translation>無模型：%1</translation>
     </message>
 </context>
 <context>
@@ -1690,17 +1863,22 @@ Drives: %5</source>
         <translation>狀態燈 %1：%2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="162"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="163"/>
+        <source>The drive&apos;s manual: %1</source>
+        <translation>驅動器手冊：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="166"/>
         <source>Status light grey: not live — %1</source>
         <translation>狀態燈灰色：非即時 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="167"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="171"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>此驅動器不回報機型。請從右鍵選單 (機型) 中選擇，以便依正確的範圍檢查數值。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="176"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="180"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>此驅動器由 I/O 端子接收運轉指令；要透過匯流排試運轉，需設為通訊優先。</translation>
     </message>
@@ -1792,142 +1970,147 @@ Drives: %5</source>
 <context>
     <name>opentop::BusPanel</name>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="32"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="33"/>
         <source>&amp;Scan</source>
         <translation>掃描(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="35"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="36"/>
         <source>A&amp;dd drive…</source>
         <translation>新增驅動器(&amp;D)…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="37"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="38"/>
         <source>Ca&amp;ncel</source>
         <translation>取消(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="46"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="47"/>
         <source>Ask every machine number of the range who answers</source>
         <translation>逐一詢問範圍內的每個機號是否有回應</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="48"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="49"/>
         <source>&amp;from</source>
         <translation>從(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="50"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="51"/>
         <source>&amp;to</source>
         <translation>到(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="55"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="56"/>
         <source>Machine numbers 1–247 (the DBU&apos;s SW1/SW2 switches in hex)</source>
         <translation>機號 1–247 (DBU 的 SW1/SW2 開關以十六進位設定)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="72"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="73"/>
         <source>Identify one machine number and add it to the list</source>
         <translation>識別一個機號並加入清單</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="77"/>
-        <location filename="../ui/bus/BusPanel.cpp" line="182"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="78"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="194"/>
         <source>%v of %m</source>
         <translation>%v / %m</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="78"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="79"/>
         <source>Scan progress</source>
         <translation>掃描進度</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="80"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="81"/>
         <source>Stop the scan after the request on the wire</source>
         <translation>目前線上的請求完成後停止掃描</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="113"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="90"/>
+        <source>Rescan at %1</source>
+        <translation>以 %1 重新掃描</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="124"/>
         <source>Drives on the bus</source>
         <translation>匯流排上的驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="173"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="185"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%v / %m (機號 %1)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="183"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="195"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>正在 %3 上掃描機號 %1–%2，每個 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="202"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="214"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>目前線上的請求完成後取消…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="219"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="231"/>
         <source>Did not answer the last scan.</source>
         <translation>上次掃描未回應。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="225"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="237"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>掃描在機號 %1 停止：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="230"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="242"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>掃描於機號 %1–%2 後取消 (%3 / %4)：找到 %n 台驅動器。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="238"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="250"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>在機號 %1–%2 中找到 %n 台驅動器，耗時 %3 s。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="254"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="275"/>
         <source>Add drive</source>
         <translation>新增驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="254"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="275"/>
         <source>Machine number (1–247; the DBU shows it in hex on SW1/SW2):</source>
         <translation>機號 (1–247；DBU 以十六進位設定於 SW1/SW2)：</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="264"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="285"/>
         <source>Asking machine number %1…</source>
         <translation>正在詢問機號 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="269"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="290"/>
         <source>Machine number %1: %2 added.</source>
         <translation>機號 %1：已新增 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="271"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="292"/>
         <source>Machine number %1: %2 %3</source>
         <translation>機號 %1：%2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="329"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="350"/>
         <source>&amp;Variant</source>
         <translation>機型(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="345"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="366"/>
         <source>&amp;Identify again</source>
         <translation>重新識別(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="351"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="372"/>
         <source>&amp;Remove from list</source>
         <translation>從清單移除(&amp;R)</translation>
     </message>
@@ -3233,232 +3416,237 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::DcControllerPage</name>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="41"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="42"/>
         <source>DC controller</source>
         <translation>DC 控制器</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="44"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="45"/>
         <source>Re&amp;load stored configuration</source>
         <translation>重新載入已保存的組態(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="66"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="67"/>
         <source>Store &amp;configuration</source>
         <translation>保存組態(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="67"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="68"/>
         <source>Store P&amp;ID</source>
         <translation>保存 PID(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="68"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="69"/>
         <source>Store pre&amp;set</source>
         <translation>保存預設速度(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="71"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="72"/>
         <source>Writes %1 = 1: %2</source>
         <translation>寫入 %1 = 1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="76"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="77"/>
         <source>Writes store.config = 0: the controller reloads the stored configuration; unstored configuration changes are discarded</source>
         <translation>寫入 store.config = 0：控制器重新載入已保存的組態；未保存的組態變更將被捨棄</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="83"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="84"/>
         <source>Speed mode and motor currents</source>
         <translation>速度模式與馬達電流</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="84"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="85"/>
         <source>Speed &amp;mode:</source>
         <translation>速度模式(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="85"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="86"/>
         <source>Rated current:</source>
         <translation>額定電流：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="86"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="87"/>
         <source>Maximum start/load current:</source>
         <translation>最大啟動/負載電流：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="87"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="88"/>
         <source>Brake current:</source>
         <translation>煞車電流：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="89"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="90"/>
         <source>Limit switches</source>
         <translation>極限開關</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="90"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="91"/>
         <source>Limits:</source>
         <translation>極限開關：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="91"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="92"/>
         <source>SQ1 active level (forward):</source>
         <translation>SQ1 有效準位 (正轉)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="92"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="93"/>
         <source>SQ2 active level (reverse):</source>
         <translation>SQ2 有效準位 (反轉)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="94"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="95"/>
         <source>Protective stops (0 = off)</source>
         <translation>保護停止 (0 = 關閉)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="95"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="96"/>
         <source>S&amp;tall stop time:</source>
         <translation>堵轉停止時間(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="96"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="97"/>
         <source>Communication loss stop time:</source>
         <translation>通訊中斷停止時間：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="104"/>
-        <source>Serial port (reconnect after a change)</source>
-        <translation>序列埠 (變更後需重新連線)</translation>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="105"/>
+        <source>Serial port (used from the next power-up)</source>
+        <translation>序列埠 (自下次上電起生效)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="105"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="110"/>
+        <source>Baud rate and parity are written as one 15-register block from 0x0080 that also stores the configuration; the controller uses them from the next power-up on: switch it off and on, then reconnect with them. The lock is lost at power-off until stored (Store configuration).</source>
+        <translation>鮑率與同位元會以自 0x0080 起的一個 15 暫存器區塊寫入，此寫入同時會保存組態；控制器自下次上電起使用新設定：請將其斷電再上電，然後以新設定重新連線。序列組態鎖定在保存 (保存組態) 前斷電即遺失。</translation>
+    </message>
+    <message>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="132"/>
+        <source>Takes effect now and is kept over power-off: each change is written as one 5-register block from 0x0050 that also stores the port states.</source>
+        <translation>立即生效，斷電後仍保留：每次變更都會以自 0x0050 起的一個 5 暫存器區塊寫入，此寫入同時會保存各埠狀態。</translation>
+    </message>
+    <message>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="176"/>
+        <source>The communication loss stop time is 0 s (%1): the manual does not say what 0 does, and OpenTOP assumes the stop is then off: if the connection is lost while the motor runs, the controller keeps it running at the last speed command. Set a time so that it brakes when the bus goes quiet.</source>
+        <translation>通訊中斷停止時間為 0 s (%1)：手冊並未說明 0 的作用，OpenTOP 假設此時停止功能為關閉：若馬達運轉中連線中斷，控制器會依最後的速度指令持續運轉。請設定時間，使匯流排無通訊時能煞車停止。</translation>
+    </message>
+    <message>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="106"/>
         <source>Baud rate:</source>
         <translation>鮑率：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="106"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="107"/>
         <source>Parity and stop bits:</source>
         <translation>同位元與停止位元：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="107"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="108"/>
         <source>Configuration over serial:</source>
         <translation>序列埠組態設定：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="109"/>
-        <source>Lost at power-off until stored (Store configuration); a stored baud rate or parity is used from the next power-up on, and the tool must then reconnect with it.</source>
-        <translation>保存前斷電即遺失 (保存組態)；已保存的鮑率或同位元自下次上電起生效，屆時本工具必須以新設定重新連線。</translation>
-    </message>
-    <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="112"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="114"/>
         <source>Speed loop PID</source>
         <translation>速度迴路 PID</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="113"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="115"/>
         <source>&amp;P coefficient:</source>
         <translation>P 係數(&amp;P)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="114"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="116"/>
         <source>I coefficient:</source>
         <translation>I 係數：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="115"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="117"/>
         <source>&amp;D coefficient:</source>
         <translation>D 係數(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="116"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="118"/>
         <source>D period:</source>
         <translation>D 週期：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="118"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="120"/>
         <source>Preset speed (potentiometer/analog control)</source>
         <translation>預設速度 (可變電阻/類比控制)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="119"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="121"/>
         <source>Preset speed mo&amp;de:</source>
         <translation>預設速度模式(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="120"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="122"/>
         <source>Trigger:</source>
         <translation>觸發：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="121"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="123"/>
         <source>&amp;Forward speed:</source>
         <translation>正轉速度(&amp;F)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="122"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="124"/>
         <source>Reverse speed:</source>
         <translation>反轉速度：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="124"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="126"/>
         <source>AI1/AI2 as digital ports</source>
         <translation>AI1/AI2 作為數位埠</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="125"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="127"/>
         <source>AI1 direction:</source>
         <translation>AI1 方向：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="126"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="128"/>
         <source>AI2 direction:</source>
         <translation>AI2 方向：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="127"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="129"/>
         <source>AI1 level:</source>
         <translation>AI1 準位：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="128"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="130"/>
         <source>AI2 level:</source>
         <translation>AI2 準位：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="130"/>
-        <source>Takes effect now and is not kept over power-off: the controller has no store command for these, only a 5-register block write, which this page does not send.</source>
-        <translation>立即生效，但斷電後不保留：控制器沒有可保存這些設定的指令，只能以 5 個暫存器的區塊寫入，而本頁不會送出該寫入。</translation>
-    </message>
-    <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="174"/>
-        <source>The communication loss stop is off (%1 = 0 s): if the connection is lost while the motor runs, the controller keeps it running at the last speed command. Set a time so that it brakes when the bus goes quiet.</source>
-        <translation>通訊中斷停止已關閉 (%1 = 0 s)：若馬達運轉中連線中斷，控制器會依最後的速度指令持續運轉。請設定時間，使匯流排無通訊時能煞車停止。</translation>
-    </message>
-    <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="189"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="192"/>
         <source>Takes effect now, lost at power-off until stored (%1).</source>
         <translation>立即生效，保存 (%1) 前斷電即遺失。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="250"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="253"/>
+        <source>Set it anyway?</source>
+        <translation>仍要設定嗎？</translation>
+    </message>
+    <message>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="269"/>
         <source>Forward and reverse speed in this mode (%1): %2</source>
         <translation>此模式 (%1) 下的正轉與反轉速度：%2</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="252"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="271"/>
         <source>The unit and range of the speeds follow the preset speed mode (not read yet).</source>
         <translation>速度的單位與範圍取決於預設速度模式 (尚未讀取)。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="286"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="313"/>
         <source>&lt;b&gt;Written but not stored:&lt;/b&gt; %1. These values act now and are lost when the controller is switched off.</source>
         <translation>&lt;b&gt;已寫入但未保存：&lt;/b&gt;%1。這些值目前有效，控制器關閉電源後即遺失。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="308"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="335"/>
         <source>%1: the controller writes the values now in effect to its memory and uses them from the next power-up on.
 
 Stored: %2.</source>
@@ -3467,17 +3655,17 @@ Stored: %2.</source>
 保存項目：%2。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="319"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="346"/>
         <source>Not written yet, so not stored: %1.</source>
         <translation>尚未寫入，因此不會保存：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="322"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="349"/>
         <source>%1: done, kept over power-off.</source>
         <translation>%1：完成，斷電後仍保留。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="330"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="357"/>
         <source>The controller replaces its configuration (%1) with the one stored in its memory.
 
 Configuration changes written but not stored are discarded.</source>
@@ -3486,52 +3674,70 @@ Configuration changes written but not stored are discarded.</source>
 已寫入但未保存的組態變更將被捨棄。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="336"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="363"/>
         <source>Stored configuration reloaded.</source>
         <translation>已重新載入保存的組態。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="344"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="371"/>
         <source>Writing %1 = %2…</source>
         <translation>正在寫入 %1 = %2…</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="354"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="381"/>
         <source>%1 = %2 failed: %3</source>
         <translation>%1 = %2 失敗：%3</translation>
     </message>
 </context>
 <context>
+    <name>opentop::DcMotor</name>
+    <message>
+        <location filename="../sim/DcMotor.cpp" line="64"/>
+        <source>unknown motor setting &apos;%1&apos;; settings: %2</source>
+        <translation>未知的馬達設定 &apos;%1&apos;；可用設定：%2</translation>
+    </message>
+    <message>
+        <location filename="../sim/DcMotor.cpp" line="71"/>
+        <source>motor setting %1 must be a number %2..%3, got &apos;%4&apos;</source>
+        <translation>馬達設定 %1 必須是 %2..%3 的數字，收到 &apos;%4&apos;</translation>
+    </message>
+</context>
+<context>
     <name>opentop::DcPidSimDevice</name>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="341"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="366"/>
         <source>%1 %2%3, output %4 %, command %5, line %6 %7</source>
         <translation>%1 %2%3，輸出 %4 %，指令 %5，線路 %6 %7</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="343"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="368"/>
         <source> (stall stop)</source>
         <translation> (堵轉停止)</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="359"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="384"/>
         <source>usage: %1 ID VALUE with VALUE %2..%3 %4</source>
         <translation>用法：%1 ID VALUE，VALUE 為 %2..%3 %4</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="363"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="388"/>
         <source>(bit0 SQ1, bit1 SQ2, bit2 DE)</source>
         <translation>(bit0 SQ1, bit1 SQ2, bit2 DE)</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="363"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="388"/>
         <source>(% current)</source>
         <translation>(電流 %)</translation>
     </message>
     <message>
-        <location filename="../sim/DcPidSimDevice.cpp" line="365"/>
+        <location filename="../sim/DcPidSimDevice.cpp" line="390"/>
         <source>%1 = %2</source>
         <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <location filename="../sim/DcPidSimDevice.cpp" line="407"/>
+        <source>motor %1, speed %2 1/s, current %3 A</source>
+        <translation>馬達 %1，速度 %2 1/s，電流 %3 A</translation>
     </message>
 </context>
 <context>
@@ -3682,7 +3888,7 @@ Configuration changes written but not stored are discarded.</source>
         <translation>%1 是指令而非設定；指令只會依要求逐一送出</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="211"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="227"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -3716,27 +3922,37 @@ Configuration changes written but not stored are discarded.</source>
         <translation>%1 是 %2 指令；僅在明確要求時才會送出</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="254"/>
+        <location filename="../model/session/DeviceSession.cpp" line="255"/>
         <source>%1 cannot be checked: %2</source>
         <translation>無法檢查 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="276"/>
+        <location filename="../model/session/DeviceSession.cpp" line="277"/>
         <source>reading %1 failed: %2</source>
         <translation>讀取 %1 失敗：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="327"/>
+        <location filename="../model/session/DeviceSession.cpp" line="305"/>
+        <source>not written: %1 is written together with 0x%2–0x%3, and reading those first failed: %4</source>
+        <translation>未寫入：%1 需與 0x%2–0x%3 一起寫入，而事先讀取這些暫存器失敗：%4</translation>
+    </message>
+    <message>
+        <location filename="../model/session/DeviceSession.cpp" line="310"/>
+        <source>short reply</source>
+        <translation>回應過短</translation>
+    </message>
+    <message>
+        <location filename="../model/session/DeviceSession.cpp" line="365"/>
         <source>written, but reading it back failed: %1</source>
         <translation>已寫入，但回讀失敗：%1</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="336"/>
+        <location filename="../model/session/DeviceSession.cpp" line="374"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>驗證失敗：寫入 %1，裝置中為 %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="372"/>
+        <location filename="../model/session/DeviceSession.cpp" line="410"/>
         <source>error code %1</source>
         <translation>錯誤碼 %1</translation>
     </message>
@@ -3744,22 +3960,32 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DrivePages</name>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="97"/>
+        <location filename="../ui/main/DrivePages.cpp" line="101"/>
         <source>Monitor</source>
         <translation>監視</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="110"/>
+        <location filename="../ui/main/DrivePages.cpp" line="114"/>
         <source>Test run</source>
         <translation>試運轉</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="112"/>
+        <location filename="../ui/main/DrivePages.cpp" line="121"/>
+        <source>drive %1 (%2)</source>
+        <translation>驅動器 %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/DrivePages.cpp" line="122"/>
+        <source>Speed loop tuning</source>
+        <translation>速度迴路調諧</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/DrivePages.cpp" line="128"/>
         <source>Alarms</source>
         <translation>警報</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="121"/>
+        <location filename="../ui/main/DrivePages.cpp" line="137"/>
         <source>Machine number %1 (%2, %3) — %4, firmware V%5</source>
         <translation>機號 %1 (%2，%3) — %4，韌體 V%5</translation>
     </message>
@@ -3874,6 +4100,11 @@ Configuration changes written but not stored are discarded.</source>
         <location filename="../model/bus/DriveStatusPoller.cpp" line="81"/>
         <source>blue</source>
         <translation>藍色</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="118"/>
+        <source>%1; %2</source>
+        <translation>%1；%2</translation>
     </message>
 </context>
 <context>
@@ -5167,7 +5398,7 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <location filename="../model/eol/EolStepRunner.cpp" line="428"/>
         <location filename="../model/eol/EolStepRunner.cpp" line="449"/>
         <location filename="../model/eol/EolStepRunner.cpp" line="475"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="517"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="526"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -5259,47 +5490,47 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>%1：%2 s 後停止，最多允許 %3 s</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="508"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="517"/>
         <source>%1: nothing to read</source>
         <translation>%1：無可讀取的項目</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="525"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="534"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="528"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="537"/>
         <source>%1: %2 reads &quot;%3&quot;, expected &quot;%4&quot;</source>
         <translation>%1：%2 讀取為 &quot;%3&quot;，預期為 &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="539"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="548"/>
         <source>%1: %2 reads %3 %4, %5</source>
         <translation>%1：%2 讀取為 %3 %4，%5</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="561"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="570"/>
         <source>the stop command failed: %1</source>
         <translation>停止指令失敗：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="576"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="585"/>
         <source>stopped after %1 s</source>
         <translation>%1 s 後停止</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="577"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="586"/>
         <source>not confirmed stopped: %1</source>
         <translation>未確認停止：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="599"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="608"/>
         <source>communication priority could not be given back: %1</source>
         <translation>無法恢復原本的控制優先權：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="639"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="648"/>
         <source>the steps ended with the motor running</source>
         <translation>步驟結束時馬達仍在運轉</translation>
     </message>
@@ -5708,6 +5939,19 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <location filename="../cli/FileCommandSupport.cpp" line="41"/>
         <source>error: %1 refused: %2</source>
         <translation>錯誤：%1 被拒絕：%2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::FixedLineHint</name>
+    <message>
+        <location filename="../model/bus/FixedLineHint.cpp" line="41"/>
+        <source>A DC controller in potentiometer/analog control mode talks only at %1 bit/s, 8%2%3, address %4.</source>
+        <translation>處於可變電阻/類比控制模式的 DC 控制器只以 %1 bit/s、8%2%3、位址 %4 通訊。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/FixedLineHint.cpp" line="60"/>
+        <source>%1 8%2%3, address %4</source>
+        <translation>%1 8%2%3，位址 %4</translation>
     </message>
 </context>
 <context>
@@ -6591,33 +6835,33 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="50"/>
+        <location filename="../ui/main/MainWindow.cpp" line="52"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="126"/>
+        <location filename="../ui/main/MainWindow.cpp" line="134"/>
         <source>connect elsewhere</source>
         <translation>連線至其他匯流排</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="149"/>
+        <location filename="../ui/main/MainWindow.cpp" line="157"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>正在連線至 %1… (仍連線於 %2)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="188"/>
+        <location filename="../ui/main/MainWindow.cpp" line="196"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>已連線：%1 (新連線失敗：%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="191"/>
-        <location filename="../ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="199"/>
+        <location filename="../ui/main/MainWindow.cpp" line="212"/>
         <source>Cannot connect</source>
         <translation>無法連線</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="192"/>
+        <location filename="../ui/main/MainWindow.cpp" line="200"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -6626,82 +6870,82 @@ Still connected to %2; nothing was changed.</source>
 仍連線於 %2；未做任何變更。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="195"/>
-        <location filename="../ui/main/MainWindow.cpp" line="306"/>
+        <location filename="../ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="324"/>
         <source>Not connected: %1</source>
         <translation>未連線：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="252"/>
+        <location filename="../ui/main/MainWindow.cpp" line="261"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>通訊群組：%1 (匯流排 › 通訊群組)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="274"/>
-        <location filename="../ui/main/MainWindow.cpp" line="276"/>
+        <location filename="../ui/main/MainWindow.cpp" line="292"/>
+        <location filename="../ui/main/MainWindow.cpp" line="294"/>
         <source>Connection lost: %1</source>
         <translation>連線中斷：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="277"/>
+        <location filename="../ui/main/MainWindow.cpp" line="295"/>
         <source>Connection lost</source>
         <translation>連線中斷</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="285"/>
+        <location filename="../ui/main/MainWindow.cpp" line="303"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 模擬匯流排 (無實體硬體) — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="286"/>
+        <location filename="../ui/main/MainWindow.cpp" line="304"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="287"/>
+        <location filename="../ui/main/MainWindow.cpp" line="305"/>
         <source>Connecting to %1…</source>
         <translation>正在連線至 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="305"/>
-        <location filename="../ui/main/MainWindow.cpp" line="313"/>
+        <location filename="../ui/main/MainWindow.cpp" line="323"/>
+        <location filename="../ui/main/MainWindow.cpp" line="331"/>
         <source>Connected: %1</source>
         <translation>已連線：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="312"/>
+        <location filename="../ui/main/MainWindow.cpp" line="330"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>已連線：%1 (模擬，無實體硬體)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="333"/>
+        <location filename="../ui/main/MainWindow.cpp" line="356"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>此驅動器不回報機型；%1 為設定的機型。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="363"/>
-        <location filename="../ui/main/MainWindow.cpp" line="374"/>
+        <location filename="../ui/main/MainWindow.cpp" line="386"/>
+        <location filename="../ui/main/MainWindow.cpp" line="397"/>
         <source>disconnect</source>
         <translation>中斷連線</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="370"/>
+        <location filename="../ui/main/MainWindow.cpp" line="393"/>
         <source>Not connected (disconnected)</source>
         <translation>未連線 (已中斷連線)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="381"/>
-        <location filename="../ui/main/MainWindow.cpp" line="406"/>
+        <location filename="../ui/main/MainWindow.cpp" line="404"/>
+        <location filename="../ui/main/MainWindow.cpp" line="429"/>
         <source>quit</source>
         <translation>結束</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="392"/>
+        <location filename="../ui/main/MainWindow.cpp" line="415"/>
         <source>Unwritten changes</source>
         <translation>未寫入的變更</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="393"/>
+        <location filename="../ui/main/MainWindow.cpp" line="416"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>有 %n 項變更尚未寫入驅動器。要結束並捨棄這些變更嗎？</numerusform>
@@ -6803,42 +7047,42 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorOutput</name>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="114"/>
+        <location filename="../cli/MonitorOutput.cpp" line="117"/>
         <source>Target shown</source>
         <translation>目標顯示值</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="114"/>
+        <location filename="../cli/MonitorOutput.cpp" line="117"/>
         <source>Speed shown</source>
         <translation>速度顯示值</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="123"/>
+        <location filename="../cli/MonitorOutput.cpp" line="127"/>
         <source>Active alarm</source>
         <translation>發生中的警報</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="165"/>
+        <location filename="../cli/MonitorOutput.cpp" line="169"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="168"/>
+        <location filename="../cli/MonitorOutput.cpp" line="172"/>
         <source>code %1</source>
         <translation>代碼 %1</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="168"/>
+        <location filename="../cli/MonitorOutput.cpp" line="172"/>
         <source>active</source>
         <translation>發生中</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="175"/>
+        <location filename="../cli/MonitorOutput.cpp" line="179"/>
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="175"/>
+        <location filename="../cli/MonitorOutput.cpp" line="180"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -7360,27 +7604,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="170"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="183"/>
         <source>%1 (not valid now)</source>
         <translation>%1 (目前無效)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="188"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="202"/>
         <source>not read</source>
         <translation>未讀取</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="197"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="211"/>
         <source>Allowed: %1</source>
         <translation>允許值：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="200"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="214"/>
         <source>On the drive: %1</source>
         <translation>驅動器中：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="228"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="244"/>
         <source>Not accepted: %1</source>
         <translation>不接受：%1</translation>
     </message>
@@ -7388,160 +7632,195 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitBox</name>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="23"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="38"/>
         <source>Parameter initialisation</source>
         <translation>參數初始化</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="32"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="48"/>
         <source>Returns every setting of drive %1 to its factory default, including the communication settings: afterwards the drive may answer only at the default rate, and control priority goes back to its input terminals. The motor must be stopped. The consequences for this drive are listed before anything is sent.</source>
         <translation>將驅動器 %1 的所有設定恢復為出廠預設值，包括通訊設定：之後驅動器可能只以預設鮑率回應，且控制優先權會回到輸入端子。馬達必須停止。送出任何資料前，會先列出對此驅動器的影響。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="40"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="56"/>
         <source>&amp;Initialise all parameters of drive %1…</source>
         <translation>初始化驅動器 %1 的所有參數(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="42"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="58"/>
         <source>Asks first, naming the drive and what changes</source>
         <translation>會先詢問，並列出驅動器及變更內容</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="66"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="86"/>
         <source>Reading what the initialisation would change…</source>
         <translation>正在讀取初始化將變更的內容…</translation>
     </message>
+    <message>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="110"/>
+        <source>Afterwards:</source>
+        <translation>之後：</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="90"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="115"/>
         <source>Your %n unwritten edit(s) of this drive are discarded.</source>
         <translation>
             <numerusform>此驅動器 %n 項未寫入的變更將被捨棄。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="94"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="119"/>
         <source>Sent: %1 to machine %2 only.</source>
         <translation>已送出：%1，僅送往機號 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="95"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="120"/>
         <source>Sent: %1 to machine %2.</source>
         <translation>已送出：%1 至機號 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="99"/>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="104"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="124"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="129"/>
         <source>Initialise drive %1</source>
         <translation>初始化驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="100"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="125"/>
         <source>Reset every setting of drive %1 (%2) to its factory defaults?</source>
         <translation>要將驅動器 %1 (%2) 的所有設定恢復為出廠預設值嗎？</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="114"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="139"/>
         <source>Cancelled; nothing was sent.</source>
         <translation>已取消；未送出任何資料。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="122"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="147"/>
         <source>Initialising drive %1…</source>
         <translation>正在初始化驅動器 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="131"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="156"/>
         <source>Drive %1 did not confirm the initialisation: %2</source>
         <translation>驅動器 %1 未確認初始化：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="132"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="157"/>
         <source>Nothing was sent: %1</source>
         <translation>未送出任何資料：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="170"/>
+        <source>&amp;Reconnect at %1 bit/s after the power-up</source>
+        <translation>上電後以 %1 bit/s 重新連線(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="174"/>
         <source>Drive %1 initialised; reading its values again…</source>
         <translation>驅動器 %1 已初始化；正在重新讀取其值…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="145"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="180"/>
         <source>Drive %1 initialised; %n value(s) could not be read back (it may answer only at the default communication settings now).</source>
         <translation>
             <numerusform>驅動器 %1 已初始化；%n 個值無法回讀 (驅動器現在可能只以預設通訊設定回應)。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="149"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="184"/>
         <source>Drive %1 initialised to its factory defaults; values read again.</source>
         <translation>驅動器 %1 已初始化為出廠預設值；已重新讀取數值。</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="210"/>
+        <source>Reconnecting at %1 bit/s in %2 s…</source>
+        <translation>%2 s 後以 %1 bit/s 重新連線…</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="223"/>
+        <source>Reconnect at %1 bit/s from the Bus menu.</source>
+        <translation>請從「匯流排」選單以 %1 bit/s 重新連線。</translation>
     </message>
 </context>
 <context>
     <name>opentop::ParameterInitialiser</name>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="64"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="65"/>
         <source>%1 drives have no parameter initialisation.</source>
         <translation>%1 驅動器沒有參數初始化功能。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="67"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="68"/>
         <source>%1 = %2 (register %3)</source>
         <translation>%1 = %2 (暫存器 %3)</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="75"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="76"/>
         <source>Drive %1 is running. Stop the motor first: parameter initialisation is only sent to a drive at standstill.</source>
         <translation>驅動器 %1 正在運轉。請先停止馬達：參數初始化只會送往靜止中的驅動器。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="79"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="80"/>
         <source>Whether drive %1 is running could not be read (%2), so nothing was sent.</source>
         <translation>無法讀取驅動器 %1 是否運轉 (%2)，因此未送出任何資料。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="93"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="94"/>
         <source>Every setting of drive %1 returns to its factory default: %2. Values set for this machine are lost; save a backup first to keep them.</source>
         <translation>驅動器 %1 的所有設定將恢復為出廠預設值：%2。為此機台設定的值將遺失；若要保留，請先儲存備份。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="110"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="111"/>
         <source>%1 could not be read; it returns to %2. %3</source>
         <translation>無法讀取 %1；將恢復為 %2。%3</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="113"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="114"/>
         <source>%1 goes from %2 back to %3. %4</source>
         <translation>%1 由 %2 恢復為 %3。%4</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="118"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="119"/>
         <source>%1 stays %2 (already the default).</source>
         <translation>%1 維持 %2 (已是預設值)。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="124"/>
-        <source>The drive may then stop answering this connection (from its next power-up): reconnect at the default setting to reach it.</source>
-        <translation>之後驅動器可能不再回應此連線 (自下次上電起)：請以預設設定重新連線。</translation>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="123"/>
+        <source>%1 bit/s, parity %2, %3 stop bit(s)</source>
+        <translation>%1 bit/s，同位元 %2，%3 個停止位元</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="128"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="131"/>
+        <source>The link to the drive is lost from its next power-up: it answers only at the factory line settings, %1.</source>
+        <translation>自下次上電起將失去與驅動器的連線：驅動器只以出廠通訊設定 %1 回應。</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="142"/>
+        <source>To reach drive %1 again: switch it off and on, wait %2 s after power-on, then reconnect at %3.</source>
+        <translation>若要再次連上驅動器 %1：請將其斷電再上電，上電後等待 %2 s，然後以 %3 重新連線。</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="159"/>
+        <source>Bus control is lost: the drive follows its input terminals again and refuses start, stop and speed commands over the bus; an input that is on may start the motor, with the factory input functions.</source>
+        <translation>將失去匯流排控制：驅動器將再次由輸入端子控制，並拒絕經由匯流排的啟動、停止與速度指令；依出廠輸入功能，處於 ON 的輸入可能使馬達啟動。</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="168"/>
+        <source>To control the motor over the bus again, set %1 to %2.</source>
+        <translation>若要再次透過匯流排控制馬達，請將 %1 設為 %2。</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="150"/>
         <source>The drive no longer follows writes sent to its group&apos;s parent, and drives that followed it no longer do.</source>
         <translation>此驅動器將不再跟隨送往其群組母站的寫入，原本跟隨它的驅動器也不再跟隨。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="134"/>
-        <source>The drive follows its input terminals again: an input that is on may start the motor, with the factory input functions.</source>
-        <translation>驅動器將再次由輸入端子控制：依出廠輸入功能，處於 ON 的輸入可能使馬達啟動。</translation>
-    </message>
-    <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="136"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="173"/>
         <source>The machine number %1 is not a setting and does not change.</source>
         <translation>機號 %1 不屬於設定，不會變更。</translation>
     </message>
     <message>
-        <location filename="../model/session/ParameterInitialiser.cpp" line="138"/>
+        <location filename="../model/session/ParameterInitialiser.cpp" line="175"/>
         <source>The motor must stand still: drive %1 reports it stopped now, and this is read again just before the command is sent.</source>
         <translation>馬達必須靜止：驅動器 %1 目前回報已停止，送出指令前會再讀取一次。</translation>
     </message>
@@ -7604,33 +7883,34 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
         <source>Write %n value(s) of the page %1 to machine number %2</source>
         <translation>
             <numerusform>將頁面「%1」的 %n 個值寫入機號 %2</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="138"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="147"/>
         <source>Nothing was written.</source>
         <translation>未寫入任何資料。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="148"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="152"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>正在寫入 %n 個值…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="152"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="156"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>%n 項寫入失敗；請查看標示的欄位</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="153"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="157"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>已寫入並驗證 %n 個值</numerusform>
@@ -7640,212 +7920,252 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterReader</name>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="52"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="55"/>
         <source>entry</source>
         <translation>項目</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="60"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="63"/>
         <source>name must be lower-case dotted words: [a-z0-9_] separated by dots</source>
         <translation>name 必須是以點分隔的小寫字詞：[a-z0-9_] 以點分隔</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="69"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="72"/>
         <source>&quot;label&quot; is empty</source>
         <translation>&quot;label&quot; 為空</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="71"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="74"/>
         <source>group &quot;%1&quot; is not declared in &quot;groups&quot;</source>
         <translation>group &quot;%1&quot; 未在 &quot;groups&quot; 中宣告</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="73"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="76"/>
         <source>kind must be one of %1</source>
         <translation>kind 必須是 %1 其中之一</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="79"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="82"/>
         <source>address must be 0x0000–0xFFFF</source>
         <translation>address 必須為 0x0000–0xFFFF</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="86"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="89"/>
         <source>read must be 3 (holding) or 4 (input)</source>
         <translation>read 必須為 3 (holding) 或 4 (input)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="88"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="91"/>
         <source>write must be 6 or 16</source>
         <translation>write 必須為 6 或 16</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="92"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="95"/>
         <source>input registers (read 4) cannot be written</source>
         <translation>input 暫存器 (read 4) 無法寫入</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="94"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="97"/>
         <source>neither readable nor writable</source>
         <translation>既不可讀取也不可寫入</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="102"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="105"/>
         <source>type must be u16, s16, u32, s32, f32, string or bits</source>
         <translation>type 必須為 u16、s16、u32、s32、f32、string 或 bits</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="111"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="114"/>
         <source>string parameters need &quot;count&quot; 1–125 registers</source>
         <translation>string 參數需要 &quot;count&quot; 為 1–125 個暫存器</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="116"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="119"/>
         <source>bits parameters have &quot;count&quot; 1 or 2</source>
         <translation>bits 參數的 &quot;count&quot; 為 1 或 2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="121"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="124"/>
         <source>%1 takes %2 register(s), not %3</source>
         <translation>%1 佔用 %2 個暫存器，而非 %3 個</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="124"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="129"/>
+        <source>&quot;wordOrder&quot; is for 2-register numbers and bit fields only</source>
+        <translation>&quot;wordOrder&quot; 僅適用於 2 暫存器數值與位元欄位</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="133"/>
+        <source>&quot;wordOrder&quot; must be &quot;high-first&quot; or &quot;low-first&quot;</source>
+        <translation>&quot;wordOrder&quot; 必須為 &quot;high-first&quot; 或 &quot;low-first&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="136"/>
         <source>a %1-register value cannot be written with function 06; use 16</source>
         <translation>%1 個暫存器的值無法以功能碼 06 寫入；請使用 16</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="129"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="141"/>
         <source>safety must be one of %1</source>
         <translation>safety 必須是 %1 其中之一</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="131"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="143"/>
         <source>commands need a &quot;safety&quot; class</source>
         <translation>指令需要 &quot;safety&quot; 類別</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="134"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="146"/>
         <source>code table &quot;%1&quot; is not declared</source>
         <translation>代碼表 &quot;%1&quot; 未宣告</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="141"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="157"/>
         <source>a setting needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>設定需要 &quot;allowed&quot; 或 &quot;enum&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="144"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="160"/>
         <source>a writable parameter needs &quot;allowed&quot; or &quot;enum&quot;</source>
         <translation>可寫入的參數需要 &quot;allowed&quot; 或 &quot;enum&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="149"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="165"/>
         <source>bits parameters need &quot;bits&quot;</source>
         <translation>bits 參數需要 &quot;bits&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="157"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="173"/>
         <source>&quot;backup&quot; must be true or false</source>
         <translation>&quot;backup&quot; 必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="162"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="178"/>
         <source>only readable and writable parameters can be backed up</source>
         <translation>只有可讀寫的參數能夠備份</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="170"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="191"/>
+        <source>%1 needs &quot;address&quot; and &quot;count&quot;</source>
+        <translation>%1 需要 &quot;address&quot; 與 &quot;count&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="193"/>
+        <source>%1: the parameter is not writable</source>
+        <translation>%1：此參數不可寫入</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="196"/>
+        <source>%1: address 0x0000–0xFFFF and count 1–%2 (limits.maxWriteRegisters)</source>
+        <translation>%1：address 須為 0x0000–0xFFFF，count 須為 1–%2 (limits.maxWriteRegisters)</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="205"/>
+        <source>%1: tail values are registers, 0–65535</source>
+        <translation>%1：tail 的值為暫存器值，0–65535</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="213"/>
+        <source>%1: the parameter&apos;s registers must lie in the block, before its tail</source>
+        <translation>%1：參數的暫存器必須位於區塊內、tail 之前</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="221"/>
         <source>scale must be positive</source>
         <translation>scale 必須為正數</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="182"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="233"/>
         <source>decimals must be 0–9</source>
         <translation>decimals 必須為 0–9</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="208"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="257"/>
+        <source>recommended[%1] is not inside one of the &quot;allowed&quot; intervals</source>
+        <translation>recommended[%1] 不在任何 &quot;allowed&quot; 區間內</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ParameterReader.cpp" line="275"/>
         <source>default %1 is not a whole number of steps of %2</source>
         <translation>預設值 %1 不是 %2 的整數倍</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="217"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="284"/>
         <source>default must be a number (or &quot;0x...&quot; code)</source>
         <translation>預設值必須是數字 (或 &quot;0x...&quot; 代碼)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="220"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="287"/>
         <source>default must be a number or a string</source>
         <translation>預設值必須是數字或字串</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="231"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="298"/>
         <source>%1 must be an object {&quot;min&quot;:…, &quot;max&quot;:…}</source>
         <translation>%1 必須是物件 {&quot;min&quot;:…, &quot;max&quot;:…}</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="238"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="305"/>
         <source>%1 needs numeric min and max</source>
         <translation>%1 需要數值型的 min 與 max</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="244"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="311"/>
         <source>%1: %2 is not a whole number of steps of %3</source>
         <translation>%1：%2 不是 %3 的整數倍</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="252"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="319"/>
         <source>%1: min is greater than max</source>
         <translation>%1：min 大於 max</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="266"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="333"/>
         <source>%1 must be an object {&quot;value&quot;:…, &quot;label&quot;:…}</source>
         <translation>%1 必須是物件 {&quot;value&quot;:…, &quot;label&quot;:…}</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="282"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="349"/>
         <source>%1 has no label</source>
         <translation>%1 沒有 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="284"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="351"/>
         <source>%1 repeats a code or label</source>
         <translation>%1 有重複的代碼或 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="295"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="362"/>
         <source>&quot;bits&quot; only belongs to type bits</source>
         <translation>&quot;bits&quot; 只適用於 type bits</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="319"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="386"/>
         <source>%1.appliesWhen needs &quot;param&quot; and &quot;equals&quot;</source>
         <translation>%1.appliesWhen 需要 &quot;param&quot; 與 &quot;equals&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="324"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="391"/>
         <source>%1 lies outside the %2-bit register</source>
         <translation>%1 超出 %2 位元暫存器的範圍</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="326"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="393"/>
         <source>%1 needs a unique name</source>
         <translation>%1 需要唯一的名稱</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="340"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="407"/>
         <source>%1 must be an object</source>
         <translation>%1 必須是物件</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="352"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="419"/>
         <source>%1 needs either &quot;variant&quot; or &quot;param&quot;</source>
         <translation>%1 需要 &quot;variant&quot; 或 &quot;param&quot; 其中之一</translation>
     </message>
     <message>
-        <location filename="../model/profile/ParameterReader.cpp" line="355"/>
+        <location filename="../model/profile/ParameterReader.cpp" line="422"/>
         <source>%1: variant &quot;%2&quot; is not declared</source>
         <translation>%1：variant &quot;%2&quot; 未宣告</translation>
     </message>
@@ -7916,6 +8236,22 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <location filename="../cli/ParamsCommand.cpp" line="193"/>
         <source>Group</source>
         <translation>群組</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::PidGains</name>
+    <message>
+        <location filename="../model/tuning/PidGains.cpp" line="9"/>
+        <source>P %1, I %2, D %3, D period %4 ms</source>
+        <translation>P %1，I %2，D %3，D 週期 %4 ms</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::PlantModel</name>
+    <message>
+        <location filename="../model/tuning/PlantModel.cpp" line="18"/>
+        <source>the relay test gives no usable model (K·Ku = %1, Tu = %2 ms)</source>
+        <translation>繼電器測試無法得出可用的模型 (K·Ku = %1，Tu = %2 ms)</translation>
     </message>
 </context>
 <context>
@@ -8286,32 +8622,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="336"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="417"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>位移 %1 處不是有效的 JSON：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="340"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="421"/>
         <source>the top level must be a JSON object</source>
         <translation>最上層必須是 JSON 物件</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="351"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="432"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot; 為空</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="362"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="443"/>
         <source>must be an object</source>
         <translation>必須是物件</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="445"/>
         <source>name repeated</source>
         <translation>名稱重複</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="379"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="461"/>
         <source>%1: cannot open: %2</source>
         <translation>%1：無法開啟：%2</translation>
     </message>
@@ -8392,12 +8728,12 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Progress</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="74"/>
+        <location filename="../cli/ScanCommand.cpp" line="75"/>
         <source>scanning %1/%2 (%3 %), machine number %4, %5 found</source>
         <translation>掃描中 %1/%2 (%3 %)，機號 %4，已找到 %5 台</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="89"/>
+        <location filename="../cli/ScanCommand.cpp" line="90"/>
         <source>scan: %1 % (%2 of %3 machine numbers), %4 found</source>
         <translation>掃描：%1 % (%3 個機號中的第 %2 個)，已找到 %4 台</translation>
     </message>
@@ -8602,7 +8938,7 @@ No unit can be tested until results can be recorded.</source>
     </message>
     <message>
         <location filename="../model/eol/RecipeChecker.cpp" line="264"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="364"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="366"/>
         <source>%1: per-unit value %2</source>
         <translation>%1：單台數值 %2</translation>
     </message>
@@ -8627,32 +8963,32 @@ No unit can be tested until results can be recorded.</source>
         <translation>%1 不是數值；單台數值需要數值型設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="314"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="315"/>
         <source>%1: range %2–%3%4</source>
         <translation>%1：範圍 %2–%3%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="320"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="321"/>
         <source>%1 is outside what the drive allows: %2%3</source>
         <translation>%1 超出驅動器的允許範圍：%2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="332"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="333"/>
         <source>%1 includes values the drive does not allow; allowed: %2%3</source>
         <translation>%1 包含驅動器不允許的值；允許：%2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="357"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="359"/>
         <source>%1: per-unit value %2: %3%4 is outside the recipe&apos;s range %5–%6%4</source>
         <translation>%1：單台數值 %2：%3%4 超出配方範圍 %5–%6%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="368"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="370"/>
         <source>%1: the recipe has no per-unit value %2</source>
         <translation>%1：配方中沒有單台數值 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="371"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="373"/>
         <source>the recipe has no drive at machine number %1</source>
         <translation>配方中沒有機號 %1 的驅動器</translation>
     </message>
@@ -9337,6 +9673,24 @@ No unit can be tested until results can be recorded.</source>
         <location filename="../model/eol/RecipeStepChecker.cpp" line="283"/>
         <source>%1 is a number; compare it with lower and upper limits</source>
         <translation>%1 是數值；請以下限與上限比較</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RelayAnalysis</name>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="27"/>
+        <source>no steady oscillation: %1 full cycles around %2, %3 needed</source>
+        <translation>無穩定振盪：在 %2 附近只有 %1 個完整週期，需要 %3 個</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="59"/>
+        <source>the oscillation (±%1) is no larger than the hysteresis (%2)</source>
+        <translation>振盪 (±%1) 未大於遲滯 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="65"/>
+        <source>the oscillation is not steady: periods or amplitudes differ by %1 %</source>
+        <translation>振盪不穩定：週期或振幅相差 %1 %</translation>
     </message>
 </context>
 <context>
@@ -10639,83 +10993,83 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="110"/>
+        <location filename="../cli/ScanCommand.cpp" line="111"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>尋找並識別匯流排上的驅動器 (機號 1–247)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="116"/>
+        <location filename="../cli/ScanCommand.cpp" line="117"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>起始詢問機號，1–247 (預設 1)。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="116"/>
         <location filename="../cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="118"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="118"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>最後詢問機號，1–247 (預設 247)。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="119"/>
+        <location filename="../cli/ScanCommand.cpp" line="120"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>每個機號的等待時間，單位 ms，10–5000 (預設：依鮑率計算；轉接器或閘道器較慢時請加大)。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="121"/>
+        <location filename="../cli/ScanCommand.cpp" line="122"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="134"/>
+        <location filename="../cli/ScanCommand.cpp" line="135"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>錯誤：--%1 必須是 %2–%3 的數字，而非 &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="146"/>
+        <location filename="../cli/ScanCommand.cpp" line="147"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>錯誤：scan 不接受引數；請使用 --from N --to N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="155"/>
+        <location filename="../cli/ScanCommand.cpp" line="156"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>錯誤：--from %1 大於 --to %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="173"/>
+        <location filename="../cli/ScanCommand.cpp" line="174"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>正在 %3 上掃描機號 %1–%2，每個 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="209"/>
+        <location filename="../cli/ScanCommand.cpp" line="210"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>在掃描任何機號前中斷。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="211"/>
+        <location filename="../cli/ScanCommand.cpp" line="212"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>已中斷：已掃描機號 %1–%2 (%4 個中的 %3 個)；%5–%6 未詢問。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="225"/>
+        <location filename="../cli/ScanCommand.cpp" line="226"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>錯誤：掃描在機號 %1 停止：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="235"/>
+        <location filename="../cli/ScanCommand.cpp" line="236"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="237"/>
+        <location filename="../cli/ScanCommand.cpp" line="238"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>注意：%1 台驅動器在 %2 ms 等待時間後才回應，已重新詢問；若掃描遺漏驅動器，請加長 --wait。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="243"/>
+        <location filename="../cli/ScanCommand.cpp" line="244"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -10726,258 +11080,293 @@ This moves or stops a motor: add --yes to send it.</source>
   - 終端電阻 (匯流排兩端各 120 Ω) 以及驅動器是否已通電。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="280"/>
+        <location filename="../cli/ScanCommand.cpp" line="257"/>
+        <source>hint: %1 Retry with the same connection and: %2</source>
+        <translation>提示：%1 請以相同連線加上以下選項重試：%2</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="287"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 機型未知</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="281"/>
+        <location filename="../cli/ScanCommand.cpp" line="288"/>
         <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
         <translation>驅動器不回報機型；請以 --variant %1=VARIANT 指定 (%2)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>hex</source>
         <translation>十六進位</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>switches</source>
         <translation>開關</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="297"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="305"/>
         <source>model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="305"/>
         <source>firmware</source>
         <translation>韌體</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="298"/>
+        <location filename="../cli/ScanCommand.cpp" line="305"/>
         <source>state</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="311"/>
         <source>comm. group</source>
         <translation>通訊群組</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="372"/>
+        <location filename="../cli/ScanCommand.cpp" line="379"/>
         <source>1 drive found in %1 s</source>
         <translation>於 %1 s 內找到 1 台驅動器</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="373"/>
+        <location filename="../cli/ScanCommand.cpp" line="380"/>
         <source>%1 drives found in %2 s</source>
         <translation>於 %2 s 內找到 %1 台驅動器</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="375"/>
+        <location filename="../cli/ScanCommand.cpp" line="382"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>；1 個可能重複的機號：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="377"/>
+        <location filename="../cli/ScanCommand.cpp" line="384"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>；%1 個可能重複的機號：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="388"/>
+        <location filename="../cli/ScanCommand.cpp" line="395"/>
         <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>警告：機號 %1 (%2，%3) 的回應錯亂：可能有兩台驅動器使用相同機號。請檢查此匯流排上驅動器的 SW1/SW2 開關，讓每台使用不同的機號，斷電重新上電後再次掃描。</translation>
     </message>
 </context>
 <context>
+    <name>opentop::SerialLock</name>
+    <message>
+        <location filename="../model/session/SerialLock.cpp" line="39"/>
+        <source>%1 = %2 prohibits configuration over the serial interface: OpenTOP may then no longer be able to change this drive&apos;s settings over the serial line it talks on. To undo it: write %1 = %3 again if the drive still accepts it; while it is not stored, switch the drive off and on; otherwise switch the controller to potentiometer/analog control, connect at 9600 bit/s, 8E1, address 1 and write %1 = %3 there.</source>
+        <translation>%1 = %2 會禁止透過序列介面進行組態設定：之後 OpenTOP 可能無法再透過目前通訊的序列線路變更此驅動器的設定。復原方式：若驅動器仍接受，再次寫入 %1 = %3；尚未保存時，將驅動器斷電再上電；否則將控制器切換為可變電阻/類比控制，以 9600 bit/s、8E1、位址 1 連線，並在該連線下寫入 %1 = %3。</translation>
+    </message>
+</context>
+<context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="39"/>
+        <location filename="../cli/SetCommand.cpp" line="43"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>依名稱寫入參數，經檢查、回讀並驗證</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="46"/>
-        <source>Confirm commands that move a motor, reset, erase, initialise or store.</source>
-        <translation>確認會使馬達運轉、重置、清除、初始化或保存的指令。</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="48"/>
+        <location filename="../cli/SetCommand.cpp" line="53"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>依位址寫入暫存器：ADDR=VALUE (可重複指定；搭配 --fc 16 時可寫 VALUE,VALUE...)。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="49"/>
+        <location filename="../cli/SetCommand.cpp" line="54"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="55"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 寫入使用的功能碼：6 (預設) 或 16。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="55"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="59"/>
+        <location filename="../cli/SetCommand.cpp" line="64"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>錯誤：用法：set ID NAME=VALUE... (例如 set 1 spno2.accel=2.5)，或 set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="71"/>
+        <location filename="../cli/SetCommand.cpp" line="76"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>錯誤：&quot;%1&quot; 不是 NAME=VALUE 格式</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="78"/>
+        <location filename="../cli/SetCommand.cpp" line="83"/>
         <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
         <translation>錯誤：%1 重複指定 (%2=%3 與 %4)；每項設定只能指定一次；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="89"/>
-        <location filename="../cli/SetCommand.cpp" line="186"/>
+        <location filename="../cli/SetCommand.cpp" line="94"/>
+        <location filename="../cli/SetCommand.cpp" line="227"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="99"/>
+        <location filename="../cli/SetCommand.cpp" line="104"/>
         <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>%1 沒有參數 &quot;%2&quot;；請參閱 &quot;opentop-cli params --family %1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="102"/>
+        <location filename="../cli/SetCommand.cpp" line="107"/>
         <source>%1 is read-only</source>
         <translation>%1 為唯讀</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="104"/>
+        <location filename="../cli/SetCommand.cpp" line="109"/>
         <source>%1 is a %2 command; add --yes to send it</source>
         <translation>%1 是 %2 指令；加上 --yes 才會送出</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="136"/>
+        <location filename="../cli/SetCommand.cpp" line="164"/>
         <source>error: cannot read %1 to check the values; nothing written</source>
         <translation>錯誤：無法讀取 %1 以檢查數值；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="180"/>
+        <location filename="../cli/SetCommand.cpp" line="148"/>
+        <location filename="../cli/SetCommand.cpp" line="210"/>
+        <location filename="../cli/SetCommand.cpp" line="221"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="187"/>
+        <location filename="../cli/SetCommand.cpp" line="50"/>
+        <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
+        <translation>確認會使馬達運轉、重置、清除、初始化或保存的指令，以及序列組態鎖定的設定。</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="198"/>
+        <source>Add --yes to set it.</source>
+        <translation>加上 --yes 才會設定。</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="228"/>
         <source>nothing was written</source>
         <translation>未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="210"/>
+        <location filename="../cli/SetCommand.cpp" line="251"/>
         <source>not written (interrupted)</source>
         <translation>未寫入 (已中斷)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="264"/>
+        <source>next: %1</source>
+        <translation>下一步：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="266"/>
+        <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
+        <translation>下一步：opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (出廠通訊設定)</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="304"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="245"/>
+        <location filename="../cli/SetCommand.cpp" line="304"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="245"/>
-        <location filename="../cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="304"/>
+        <location filename="../cli/SetCommand.cpp" line="422"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="251"/>
-        <location filename="../cli/SetCommand.cpp" line="387"/>
+        <location filename="../cli/SetCommand.cpp" line="310"/>
+        <location filename="../cli/SetCommand.cpp" line="457"/>
         <source>written, verified</source>
         <translation>已寫入，已驗證</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="252"/>
+        <location filename="../cli/SetCommand.cpp" line="311"/>
         <source>written (command, not readable)</source>
         <translation>已寫入 (指令，不可讀取)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="254"/>
+        <location filename="../cli/SetCommand.cpp" line="313"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>未確認 (%1)：驅動器可能已保有此值，也可能沒有；可用 &quot;get&quot; 回讀</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="272"/>
+        <location filename="../cli/SetCommand.cpp" line="327"/>
+        <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
+        <translation>注意：驅動器自下次上電起使用 %1：請將驅動器斷電再上電，然後以新設定 (--baud、--parity) 連線</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="342"/>
         <source>error: --fc for raw writes is 6 or 16</source>
         <translation>錯誤：raw 寫入的 --fc 為 6 或 16</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="298"/>
+        <location filename="../cli/SetCommand.cpp" line="368"/>
         <source>error: &quot;%1&quot; is not ADDR=VALUE (0x.. or decimal, 0–65535; several values, comma separated, only with --fc 16)</source>
         <translation>錯誤：&quot;%1&quot; 不是 ADDR=VALUE 格式 (0x.. 或十進位，0–65535；多個值以逗號分隔，僅限 --fc 16)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="315"/>
+        <location filename="../cli/SetCommand.cpp" line="385"/>
         <source>error: 0x%1 is not a register the profile knows; add --yes to write it anyway; nothing was written</source>
         <translation>錯誤：0x%1 不是定義檔中的暫存器；若仍要寫入請加上 --yes；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="325"/>
+        <location filename="../cli/SetCommand.cpp" line="395"/>
         <source>error: %1; nothing was written</source>
         <translation>錯誤：%1；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="326"/>
+        <location filename="../cli/SetCommand.cpp" line="396"/>
         <source>%1 is a %2 command; add --yes</source>
         <translation>%1 是 %2 指令；請加上 --yes</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="333"/>
+        <location filename="../cli/SetCommand.cpp" line="403"/>
         <source>error: the write covers part of %1; add --yes to write it anyway; nothing was written</source>
         <translation>錯誤：此寫入只涵蓋 %1 的一部分；若仍要寫入請加上 --yes；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="422"/>
         <source>Address</source>
         <translation>位址</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="352"/>
+        <location filename="../cli/SetCommand.cpp" line="422"/>
         <source>Written</source>
         <translation>寫入值</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="385"/>
+        <location filename="../cli/SetCommand.cpp" line="455"/>
         <source>written</source>
         <translation>已寫入</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="389"/>
+        <location filename="../cli/SetCommand.cpp" line="459"/>
         <source>written, but reads back differently</source>
         <translation>已寫入，但回讀值不同</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="392"/>
+        <location filename="../cli/SetCommand.cpp" line="462"/>
         <source>written (not readable back: %1)</source>
         <translation>已寫入 (無法回讀：%1)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="400"/>
+        <location filename="../cli/SetCommand.cpp" line="470"/>
         <source>Also written to %1 (communication group); not read back: no parameter of the profile</source>
         <translation>也已寫入 %1 (通訊群組)；未回讀：不是定義檔中的參數</translation>
     </message>
@@ -11051,32 +11440,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimApp</name>
     <message>
-        <location filename="../sim/SimApp.cpp" line="108"/>
+        <location filename="../sim/SimApp.cpp" line="110"/>
         <source>opentop-sim: warning: %1@%2 cannot use %3 %4 and will not answer</source>
         <translation>opentop-sim：警告：%1@%2 無法使用 %3 %4，將不會回應</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="118"/>
+        <location filename="../sim/SimApp.cpp" line="124"/>
         <source>opentop-sim: --defect %1:%2: no drive with machine number %1 on the bus %3</source>
         <translation>opentop-sim：--defect %1:%2：匯流排 %3 上沒有機號 %1 的驅動器</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="125"/>
+        <location filename="../sim/SimApp.cpp" line="131"/>
         <source>opentop-sim: --defect %1 (%2@%1): %3</source>
         <translation>opentop-sim：--defect %1 (%2@%1)：%3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="162"/>
+        <location filename="../sim/SimApp.cpp" line="168"/>
         <source>the port is unplugged already</source>
         <translation>連接埠已拔除</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="164"/>
+        <location filename="../sim/SimApp.cpp" line="170"/>
         <source>unplugged</source>
         <translation>已拔除</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="197"/>
+        <location filename="../sim/SimApp.cpp" line="203"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
@@ -11168,7 +11557,7 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimConsole</name>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="31"/>
+        <location filename="../sim/SimConsole.cpp" line="32"/>
         <source>commands:
   help                      this text
   list                      the devices and their state
@@ -11185,6 +11574,8 @@ This moves or stops a motor: add --yes to send it.</source>
                             defect 3 max_speed=800 or defect 4 alarm=0x07@2s
   defect ID clear           the drive has no defects again
   defects                   the drives&apos; defects
+  motor ID [KEY=VALUE ...]  show or change a DC controller&apos;s motor and load,
+                            e.g. motor 7 load=0.05 inertia=3e-4 (see --motor)
   unplug                    close the pty under its client (adapter pulled out)
   replug                    a new pty behind the same symlink
   quit                      stop the simulator</source>
@@ -11204,42 +11595,44 @@ This moves or stops a motor: add --yes to send it.</source>
                             defect 3 max_speed=800 或 defect 4 alarm=0x07@2s
   defect ID clear           清除驅動器的所有缺陷
   defects                   各驅動器的缺陷
+  motor ID [KEY=VALUE ...]  顯示或變更 DC 控制器的馬達與負載，
+                            例如 motor 7 load=0.05 inertia=3e-4 (參閱 --motor)
   unplug                    在用戶端仍連接時關閉 pty (模擬拔除轉接器)
   replug                    在同一符號連結後建立新的 pty
   quit                      停止模擬器</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="63"/>
+        <location filename="../sim/SimConsole.cpp" line="66"/>
         <source>bye</source>
         <translation>再見</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="68"/>
+        <location filename="../sim/SimConsole.cpp" line="71"/>
         <source>%1 needs the pty server (--pty)</source>
         <translation>%1 需要 pty 伺服器 (--pty)</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="79"/>
+        <location filename="../sim/SimConsole.cpp" line="82"/>
         <source>, defects: %1</source>
         <translation>，缺陷：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="92"/>
+        <location filename="../sim/SimConsole.cpp" line="95"/>
         <source>no drive has defects</source>
         <translation>沒有驅動器有缺陷</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="98"/>
+        <location filename="../sim/SimConsole.cpp" line="101"/>
         <source>unknown command &apos;%1&apos;; type help for the list</source>
         <translation>未知指令 &apos;%1&apos;；輸入 help 查看清單</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="102"/>
+        <location filename="../sim/SimConsole.cpp" line="105"/>
         <source>usage: %1 ID ...; ID is a machine number on the bus (%2)</source>
         <translation>用法：%1 ID ...；ID 為匯流排上的機號 (%2)</translation>
     </message>
     <message>
-        <location filename="../sim/SimConsole.cpp" line="108"/>
+        <location filename="../sim/SimConsole.cpp" line="111"/>
         <source>&apos;%1&apos; is not a machine number; the bus has %2</source>
         <translation>&apos;%1&apos; 不是機號；匯流排上有 %2</translation>
     </message>
@@ -11405,6 +11798,10 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
                        nostick=PARAM         writes acknowledged, old value stays
                        nostore=PARAM         value lost at the next power cycle
                      e.g. --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
+  --motor LIST       the DC controllers&apos; motor and load, e.g. inertia=2e-4,load=0.05;
+                     supply (V), resistance (ohm), no_load (1/s at full duty),
+                     commutations (per revolution), inertia (kg m2), viscous
+                     (N m s/rad), coulomb (N m), load (N m), gate (ms), tacho (V s)
   --quiet            no frame trace on stderr
   --lang CODE        language of messages: en, zh_TW, zh_CN, ko, ja
   --help             this text
@@ -11436,6 +11833,10 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
                        nostick=PARAM         寫入有回應確認，但保留舊值
                        nostore=PARAM         下次斷電重新上電後值遺失
                      例如 --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
+  --motor LIST       DC 控制器的馬達與負載，例如 inertia=2e-4,load=0.05；
+                     supply (V)、resistance (ohm)、no_load (全責任週期時的 1/s)、
+                     commutations (每轉換相次數)、inertia (kg m2)、viscous
+                     (N m s/rad)、coulomb (N m)、load (N m)、gate (ms)、tacho (V s)
   --quiet            不在 stderr 輸出訊框追蹤
   --lang CODE        訊息的語言：en, zh_TW, zh_CN, ko, ja
   --help             本說明
@@ -11446,72 +11847,82 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="81"/>
+        <location filename="../sim/SimOptions.cpp" line="85"/>
         <source>--lang needs a language code such as ko</source>
         <translation>--lang 需要語言代碼，例如 ko</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="84"/>
+        <location filename="../sim/SimOptions.cpp" line="88"/>
         <source>--devices needs a device list such as dbu200@1,dcpid@7</source>
         <translation>--devices 需要裝置清單，例如 dbu200@1,dcpid@7</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="93"/>
+        <location filename="../sim/SimOptions.cpp" line="97"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:5020</source>
         <translation>--tcp 需要 HOST:PORT，例如 127.0.0.1:5020</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="99"/>
+        <location filename="../sim/SimOptions.cpp" line="103"/>
         <source>--tcp needs HOST:PORT with PORT 0..65535, got &apos;%1&apos;</source>
         <translation>--tcp 需要 HOST:PORT，PORT 為 0..65535，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="111"/>
+        <location filename="../sim/SimOptions.cpp" line="115"/>
         <source>--baud must be one of %1, got &apos;%2&apos;</source>
         <translation>--baud 必須是 %1 其中之一，收到 &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="118"/>
+        <location filename="../sim/SimOptions.cpp" line="122"/>
         <source>--parity must be N, E or O, got &apos;%1&apos;</source>
         <translation>--parity 必須為 N、E 或 O，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="126"/>
+        <location filename="../sim/SimOptions.cpp" line="130"/>
         <source>--turnaround must be 0..1000 ms, got &apos;%1&apos;</source>
         <translation>--turnaround 必須為 0..1000 ms，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="130"/>
+        <location filename="../sim/SimOptions.cpp" line="134"/>
         <source>--faults needs a list such as drop=0.02,crc=0.01</source>
         <translation>--faults 需要清單，例如 drop=0.02,crc=0.01</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="134"/>
+        <location filename="../sim/SimOptions.cpp" line="138"/>
         <source>--faults: %1</source>
         <translation>--faults：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="140"/>
+        <location filename="../sim/SimOptions.cpp" line="144"/>
         <source>--seed must be a whole number 0..4294967295, got &apos;%1&apos;</source>
         <translation>--seed 必須是 0..4294967295 的整數，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="144"/>
+        <location filename="../sim/SimOptions.cpp" line="148"/>
         <source>--defect needs ID:DEFECT[,DEFECT...], e.g. 3:firmware=1.4; DEFECT: %1</source>
         <translation>--defect 需要 ID:DEFECT[,DEFECT...]，例如 3:firmware=1.4；DEFECT：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="151"/>
+        <location filename="../sim/SimOptions.cpp" line="155"/>
         <source>--defect: %1</source>
         <translation>--defect：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="157"/>
-        <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --quiet, --help, --version</source>
-        <translation>未知引數 &apos;%1&apos;；選項：--devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --quiet, --help, --version</translation>
+        <location filename="../sim/SimOptions.cpp" line="159"/>
+        <source>--motor needs a list such as inertia=2e-4,load=0.05</source>
+        <translation>--motor 需要清單，例如 inertia=2e-4,load=0.05</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="164"/>
+        <location filename="../sim/SimOptions.cpp" line="163"/>
+        <source>--motor: %1</source>
+        <translation>--motor：%1</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimOptions.cpp" line="169"/>
+        <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
+        <translation>未知引數 &apos;%1&apos;；選項：--devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimOptions.cpp" line="177"/>
         <source>--devices SPEC is required, e.g. --devices dbu200@1,dcpid@7</source>
         <translation>必須指定 --devices SPEC，例如 --devices dbu200@1,dcpid@7</translation>
     </message>
@@ -11829,9 +12240,65 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>狀態尚未得知</translation>
     </message>
     <message>
-        <location filename="../ui/widgets/StatusLight.cpp" line="42"/>
+        <location filename="../ui/widgets/StatusLight.cpp" line="44"/>
         <source>Status light %1: %2</source>
         <translation>狀態燈 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/widgets/StatusLight.cpp" line="48"/>
+        <source>The drive&apos;s manual: %1</source>
+        <translation>驅動器手冊：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StepMetrics</name>
+    <message>
+        <location filename="../model/tuning/StepMetrics.cpp" line="18"/>
+        <source>the step has no height (from = to)</source>
+        <translation>步階幅度為零 (from = to)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/StepMetrics.cpp" line="19"/>
+        <source>too few samples after the step (%1)</source>
+        <translation>步階後的取樣點過少 (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StepTestPanel</name>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="22"/>
+        <source>Run step test…</source>
+        <translation>執行步階測試…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="29"/>
+        <source>From:</source>
+        <translation>從：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="30"/>
+        <source>To:</source>
+        <translation>到：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="31"/>
+        <source>Record time:</source>
+        <translation>記錄時間：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="32"/>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="75"/>
+        <source>Enter two different speeds of 0 %1 or more.</source>
+        <translation>請輸入兩個不同且不小於 0 %1 的速度。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/StepTestPanel.cpp" line="79"/>
+        <source>Enter a record time of 100–60000 ms.</source>
+        <translation>請輸入 100–60000 ms 的記錄時間。</translation>
     </message>
 </context>
 <context>
@@ -11989,22 +12456,22 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StopConfirmer</name>
     <message>
-        <location filename="../model/run/StopConfirmer.cpp" line="56"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="80"/>
         <source>%1 drives report neither running state nor speed</source>
         <translation>%1 驅動器不回報運轉狀態或速度</translation>
     </message>
     <message>
-        <location filename="../model/run/StopConfirmer.cpp" line="86"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="111"/>
         <source>%1 is %2: the drive does not take motion commands over the bus (it follows its input terminals)</source>
         <translation>%1 為 %2：驅動器不接受來自匯流排的運轉指令 (由輸入端子控制)</translation>
     </message>
     <message>
-        <location filename="../model/run/StopConfirmer.cpp" line="140"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="185"/>
         <source>still at %1 after %2 s</source>
         <translation>%2 s 後仍為 %1</translation>
     </message>
     <message>
-        <location filename="../model/run/StopConfirmer.cpp" line="142"/>
+        <location filename="../model/run/StopConfirmer.cpp" line="187"/>
         <source>still running after %1 s</source>
         <translation>%1 s 後仍在運轉</translation>
     </message>
@@ -12542,7 +13009,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     </message>
     <message>
         <location filename="../transport/LibmodbusBackend.cpp" line="281"/>
-        <location filename="../transport/RtuBackend.cpp" line="145"/>
+        <location filename="../transport/RtuBackend.cpp" line="146"/>
         <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>回應不完整</translation>
@@ -12555,7 +13022,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     </message>
     <message>
         <location filename="../transport/LibmodbusBackend.cpp" line="293"/>
-        <location filename="../transport/RtuBackend.cpp" line="152"/>
+        <location filename="../transport/RtuBackend.cpp" line="153"/>
         <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>接收失敗</translation>
@@ -12632,77 +13099,72 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>不允許重試 %1 次：請使用 0–10，或以 -1 使用預設值。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="163"/>
+        <location filename="../transport/ModbusRequest.cpp" line="164"/>
+        <source>Function 0x%1 cannot be broadcast: only functions 06h and 10h (writes) may be sent to machine number 0; use slave address 1–247.</source>
+        <translation>功能碼 0x%1 無法廣播：只有功能碼 06h 與 10h (寫入) 可送往機號 0；請使用從站位址 1–247。</translation>
+    </message>
+    <message>
+        <location filename="../transport/ModbusRequest.cpp" line="171"/>
         <source>Function code 0x%1 must be sent as a raw request.</source>
         <translation>功能碼 0x%1 必須以原始請求送出。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="167"/>
+        <location filename="../transport/ModbusRequest.cpp" line="175"/>
         <source>Raw request data of %1 bytes is too long: at most %2 bytes.</source>
         <translation>原始請求資料 %1 位元組過長：最多 %2 位元組。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="173"/>
-        <source>Device identification cannot be broadcast.</source>
-        <translation>裝置識別無法廣播。</translation>
-    </message>
-    <message>
-        <location filename="../transport/ModbusRequest.cpp" line="183"/>
-        <source>A read cannot be broadcast: use slave address 1–247.</source>
-        <translation>讀取無法廣播：請使用從站位址 1–247。</translation>
-    </message>
-    <message>
-        <location filename="../transport/ModbusRequest.cpp" line="186"/>
+        <location filename="../transport/ModbusRequest.cpp" line="188"/>
         <source>Cannot read %1 registers at once: use 1–125 registers.</source>
         <translation>無法一次讀取 %1 個暫存器：請使用 1–125 個暫存器。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="193"/>
+        <location filename="../transport/ModbusRequest.cpp" line="195"/>
         <source>Write single register needs exactly 1 value, not %1.</source>
         <translation>寫入單一暫存器需要恰好 1 個值，而非 %1 個。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="199"/>
+        <location filename="../transport/ModbusRequest.cpp" line="201"/>
         <source>Cannot write %1 registers at once: use 1–123 registers.</source>
         <translation>無法一次寫入 %1 個暫存器：請使用 1–123 個暫存器。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="204"/>
+        <location filename="../transport/ModbusRequest.cpp" line="206"/>
         <source>%1 values given for %2 registers.</source>
         <translation>為 %2 個暫存器指定了 %1 個值。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="213"/>
+        <location filename="../transport/ModbusRequest.cpp" line="215"/>
         <source>Registers %1 ×%2 run past the last address 0xFFFF.</source>
         <translation>暫存器 %1 ×%2 超出最後位址 0xFFFF。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="224"/>
+        <location filename="../transport/ModbusRequest.cpp" line="226"/>
         <source>device identification code %1 object %2</source>
         <translation>裝置識別 代碼 %1 物件 %2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="232"/>
+        <location filename="../transport/ModbusRequest.cpp" line="234"/>
         <source>raw %1 %2</source>
         <translation>原始 %1 %2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="236"/>
+        <location filename="../transport/ModbusRequest.cpp" line="238"/>
         <source>read %1 %2 ×%3</source>
         <translation>讀取 %1 %2 ×%3</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="240"/>
+        <location filename="../transport/ModbusRequest.cpp" line="242"/>
         <source>write %1 %2 = %3</source>
         <translation>寫入 %1 %2 = %3</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="243"/>
+        <location filename="../transport/ModbusRequest.cpp" line="245"/>
         <source>write %1 %2 ×%3 = %4</source>
         <translation>寫入 %1 %2 ×%3 = %4</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="249"/>
+        <location filename="../transport/ModbusRequest.cpp" line="251"/>
         <source>broadcast %1</source>
         <translation>廣播 %1</translation>
     </message>
@@ -12857,7 +13319,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>%1 正被 %2 (PID %3) 使用；請先關閉該程式。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="82"/>
+        <location filename="../transport/RtuBackend.cpp" line="83"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -12866,17 +13328,17 @@ then log out and in again (the group applies to new sessions only).</source>
 然後登出再重新登入 (群組設定僅對新的登入工作階段生效)。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="88"/>
+        <location filename="../transport/RtuBackend.cpp" line="89"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> (裝置可能不支援此同位元；pty 需使用 N)</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="123"/>
+        <location filename="../transport/RtuBackend.cpp" line="124"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>回應宣告 %1 位元組，超過 RTU 訊框的容量</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="144"/>
+        <location filename="../transport/RtuBackend.cpp" line="145"/>
         <source>no reply</source>
         <translation>無回應</translation>
     </message>
@@ -13169,6 +13631,820 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::TuneCommand</name>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="80"/>
+        <source>Speed-loop step test and relay autotune of a DC controller (needs --yes)</source>
+        <translation>DC 控制器的速度迴路步階測試與繼電器自動調諧 (需要 --yes)</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="86"/>
+        <source>Run the test (it moves the motor).</source>
+        <translation>執行測試 (會使馬達運轉)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="87"/>
+        <source>step: speed before the step (default 0).</source>
+        <translation>step：步階前的速度 (預設 0)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="87"/>
+        <location filename="../cli/TuneCommand.cpp" line="88"/>
+        <location filename="../cli/TuneCommand.cpp" line="91"/>
+        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <source>SPEED</source>
+        <translation>SPEED</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="88"/>
+        <source>step: speed after the step.</source>
+        <translation>step：步階後的速度。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="89"/>
+        <source>step: record this long after the step (default 1500).</source>
+        <translation>step：步階後記錄的時間長度 (預設 1500)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="90"/>
+        <source>MS</source>
+        <translation>MS</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="91"/>
+        <source>autotune: operating speed of the relay test.</source>
+        <translation>autotune：繼電器測試的運轉速度。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="92"/>
+        <source>autotune: output swing, % of full output (default 10).</source>
+        <translation>autotune：輸出擺幅，以滿輸出的 % 表示 (預設 10)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="93"/>
+        <source>PERCENT</source>
+        <translation>PERCENT</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="95"/>
+        <source>autotune: soft, medium (default), stiff, tyreus-luyben or zn-pi.</source>
+        <translation>autotune：soft、medium (預設)、stiff、tyreus-luyben 或 zn-pi。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="95"/>
+        <source>RULE</source>
+        <translation>RULE</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="96"/>
+        <source>autotune: write the proposed gains, then run a step test from half the operating speed to it.</source>
+        <translation>autotune：寫入建議增益，然後執行從運轉速度的一半到運轉速度的步階測試。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="98"/>
+        <source>autotune: with --accept, store the gains in the drive.</source>
+        <translation>autotune：搭配 --accept 時，將增益保存至驅動器。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <source>Stop at once beyond this speed (default 120 % of the test&apos;s highest).</source>
+        <translation>速度超過此值時立即停止 (預設為測試最高速度的 120 %)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="101"/>
+        <source>Stop at once beyond this current in A (default 20).</source>
+        <translation>電流超過此值 (A) 時立即停止 (預設 20)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="102"/>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <source>Write the samples to FILE.</source>
+        <translation>將取樣資料寫入 FILE。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <source>FILE</source>
+        <translation>FILE</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="117"/>
+        <source>error: usage: %1</source>
+        <translation>錯誤：用法：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="127"/>
+        <source>error: --%1 must be a number 0 or more, got &apos;%2&apos;</source>
+        <translation>錯誤：--%1 必須是 0 以上的數字，收到 &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="149"/>
+        <location filename="../cli/TuneCommand.cpp" line="160"/>
+        <location filename="../cli/TuneCommand.cpp" line="165"/>
+        <location filename="../cli/TuneCommand.cpp" line="319"/>
+        <source>error: %1</source>
+        <translation>錯誤：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="150"/>
+        <source>step needs --to SPEED</source>
+        <translation>step 需要 --to SPEED</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="151"/>
+        <source>--rule must be one of %1</source>
+        <translation>--rule 必須是 %1 其中之一</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="153"/>
+        <source>autotune needs --speed SPEED</source>
+        <translation>autotune 需要 --speed SPEED</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="169"/>
+        <source>Would run the motor of machine number %1 from %2 to %3 and record the step response.</source>
+        <translation>將使機號 %1 的馬達從 %2 運轉到 %3，並記錄步階響應。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="174"/>
+        <source>Would run the motor of machine number %1 in a relay test around %2 (output ±%3 %).</source>
+        <translation>將使機號 %1 的馬達在 %2 附近進行繼電器測試 (輸出 ±%3 %)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="180"/>
+        <source>This moves the motor: add --yes to run it.</source>
+        <translation>此操作會使馬達運轉：加上 --yes 才會執行。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="229"/>
+        <source>Machine number %1, gains %2</source>
+        <translation>機號 %1，增益 %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="231"/>
+        <source>  rise time (10–90 %): %1</source>
+        <translation>  上升時間 (10–90 %)：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="232"/>
+        <source>  overshoot: %1 %</source>
+        <translation>  超調：%1 %</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="233"/>
+        <source>  settling time (2 %): %1</source>
+        <translation>  安定時間 (2 %)：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="234"/>
+        <source>  steady-state error: %1 %2</source>
+        <translation>  穩態誤差：%1 %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="235"/>
+        <source>  peak current: %1 A</source>
+        <translation>  峰值電流：%1 A</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="249"/>
+        <source>Step %1 → %2 %3:</source>
+        <translation>步階 %1 → %2 %3：</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="253"/>
+        <source>Relay test: Ku %1, Tu %2 ms (amplitude ±%3 %4, %5 cycles)</source>
+        <translation>繼電器測試：Ku %1，Tu %2 ms (振幅 ±%3 %4，%5 個週期)</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="259"/>
+        <source>Model: gain %1, time constant %2 ms, dead time %3 ms (the bus&apos;s %4 ms left out)</source>
+        <translation>模型：增益 %1，時間常數 %2 ms，延遲時間 %3 ms (已扣除匯流排的 %4 ms)</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="265"/>
+        <source>Proposed (%1): %2</source>
+        <translation>建議值 (%1)：%2</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="281"/>
+        <source>Writing the proposed gains failed: %1</source>
+        <translation>寫入建議增益失敗：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="284"/>
+        <source>Proposed gains written (not stored).</source>
+        <translation>已寫入建議增益 (未保存)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="287"/>
+        <source>Measured step %1 → %2 %3 with them:</source>
+        <translation>以此增益量測的步階 %1 → %2 %3：</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="303"/>
+        <source>Gains stored in the drive.</source>
+        <translation>增益已保存至驅動器。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="304"/>
+        <source>Storing the gains failed: %1</source>
+        <translation>保存增益失敗：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="311"/>
+        <source>Test ended: %1</source>
+        <translation>測試已結束：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningChart</name>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="40"/>
+        <source>Time (ms)</source>
+        <translation>時間 (ms)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="44"/>
+        <source>Current (A)</source>
+        <translation>電流 (A)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="61"/>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="61"/>
+        <source>Speed (%1)</source>
+        <translation>速度 (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningGains</name>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="43"/>
+        <source>Writing the gains failed: %1</source>
+        <translation>寫入增益失敗：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="62"/>
+        <source>Proposal written (temporary until stored).</source>
+        <translation>已寫入建議值 (保存前僅暫時有效)。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="83"/>
+        <source>%1: the gains before were written back (%2).</source>
+        <translation>%1：已寫回原先的增益 (%2)。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="102"/>
+        <source>Gains stored in the drive.</source>
+        <translation>增益已保存至驅動器。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningGains.cpp" line="104"/>
+        <source>Storing the gains failed: %1</source>
+        <translation>保存增益失敗：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningLimitsBox</name>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="12"/>
+        <source>Limits</source>
+        <translation>限值</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="17"/>
+        <source>Beyond it the motor is stopped at once. Empty: 125 % of the step test&apos;s highest speed, 150 % of the autotune&apos;s speed</source>
+        <translation>超過此值時馬達會立即停止。留空：步階測試最高速度的 125 %，自動調諧速度的 150 %</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="19"/>
+        <source>Beyond it the motor is stopped at once. Empty: 1.2 × the drive&apos;s maximum current</source>
+        <translation>超過此值時馬達會立即停止。留空：1.2 × 驅動器最大電流</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="22"/>
+        <source>Max. speed:</source>
+        <translation>最高速度：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="23"/>
+        <source>Max. current:</source>
+        <translation>最大電流：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="24"/>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="37"/>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="39"/>
+        <source>auto: %1</source>
+        <translation>自動：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="39"/>
+        <source>none</source>
+        <translation>無</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="48"/>
+        <source>Enter a speed limit above 0 %1, or leave it empty.</source>
+        <translation>請輸入大於 0 %1 的速度限值，或留空。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningLimitsBox.cpp" line="52"/>
+        <source>Enter a current limit above 0 A, or leave it empty.</source>
+        <translation>請輸入大於 0 A 的電流限值，或留空。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningMetricsView</name>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="25"/>
+        <source>Rise time (10–90 %):</source>
+        <translation>上升時間 (10–90 %)：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="26"/>
+        <source>Overshoot:</source>
+        <translation>超調：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="27"/>
+        <source>Settling time (2 %):</source>
+        <translation>安定時間 (2 %)：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="28"/>
+        <source>Steady-state error:</source>
+        <translation>穩態誤差：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="29"/>
+        <source>Peak current:</source>
+        <translation>峰值電流：</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="40"/>
+        <source>No run yet</source>
+        <translation>尚未執行測試</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="41"/>
+        <source>%1: recording</source>
+        <translation>%1：記錄中</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="44"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="52"/>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="55"/>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="53"/>
+        <source>not reached</source>
+        <translation>未達到</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="54"/>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="56"/>
+        <source>not settled</source>
+        <translation>未安定</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="57"/>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="58"/>
+        <source>%1 A</source>
+        <translation>%1 A</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningMetricsView.cpp" line="63"/>
+        <source>Rise time %1; overshoot %2; settling time %3; steady-state error %4; peak current %5</source>
+        <translation>上升時間 %1；超調 %2；安定時間 %3；穩態誤差 %4；峰值電流 %5</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningPage</name>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="41"/>
+        <source>STOP</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="52"/>
+        <source>Cancels the running test: the motor is stopped and the stop confirmed</source>
+        <translation>取消進行中的測試：停止馬達並確認已停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="68"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="245"/>
+        <source>Step test</source>
+        <translation>步階測試</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="69"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <source>Relay autotune</source>
+        <translation>繼電器自動調諧</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="107"/>
+        <source>Ready. Nothing moves until you confirm a test.</source>
+        <translation>就緒。確認測試之前，馬達不會運轉。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="198"/>
+        <source>Could not read the speed mode: %1</source>
+        <translation>無法讀取速度模式：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="201"/>
+        <source>The drive is not in a closed-loop speed mode (now: %1). Choose one on its settings page first.</source>
+        <translation>驅動器不在閉迴路速度模式 (目前：%1)。請先在其設定頁面中選擇閉迴路模式。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="224"/>
+        <source>Limits: %1 %2, %3.</source>
+        <translation>限值：%1 %2，%3。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="226"/>
+        <source>%1 A</source>
+        <translation>%1 A</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="226"/>
+        <source>no current limit</source>
+        <translation>無電流限值</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="241"/>
+        <source>The motor of %1 will run from %2 to %3 %4 in its present speed mode, for about %5 s, and then stop.</source>
+        <translation>%1 的馬達將以目前的速度模式從 %2 運轉到 %3 %4，持續約 %5 s，然後停止。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="245"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <source>Run</source>
+        <translation>執行</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="261"/>
+        <source>The motor of %1 will run in open loop (the speed loop off) around %2 %3, its output switching by ±%4 %, for up to %5 s, and then stop.</source>
+        <translation>%1 的馬達將以開迴路 (速度迴路關閉) 在 %2 %3 附近運轉，輸出以 ±%4 % 切換，最長 %5 s，然後停止。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="283"/>
+        <source>Stop command sent.</source>
+        <translation>已送出停止指令。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="284"/>
+        <source>Stop command failed: %1</source>
+        <translation>停止指令失敗：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="294"/>
+        <source>Stopping…</source>
+        <translation>正在停止…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="308"/>
+        <source>Run %1: %2 → %3 %4</source>
+        <translation>測試 %1：%2 → %3 %4</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="343"/>
+        <source>Step test done.</source>
+        <translation>步階測試完成。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="343"/>
+        <source>Step test ended: %1</source>
+        <translation>步階測試已結束：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="347"/>
+        <source>The test was stopped</source>
+        <translation>測試已停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="380"/>
+        <source>Autotune ended: %1</source>
+        <translation>自動調諧已結束：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="382"/>
+        <source>The autotune was stopped</source>
+        <translation>自動調諧已停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="392"/>
+        <source>Predicted: %1 → %2 %3</source>
+        <translation>預測：%1 → %2 %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="400"/>
+        <source>Autotune done: proposal %1. Accept writes it to the drive.</source>
+        <translation>自動調諧完成：建議值 %1。接受後即寫入驅動器。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="434"/>
+        <source>Proposal rejected; the drive&apos;s gains were not changed.</source>
+        <translation>已拒絕建議值；驅動器的增益未變更。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningPage.cpp" line="438"/>
+        <source>Proposal rejected</source>
+        <translation>已拒絕建議值</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRules</name>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="60"/>
+        <source>Soft (no overshoot)</source>
+        <translation>柔和 (無超調)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="62"/>
+        <source>Medium (some overshoot)</source>
+        <translation>適中 (少量超調)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="64"/>
+        <source>Stiff (Ziegler–Nichols)</source>
+        <translation>高剛性 (Ziegler–Nichols)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="66"/>
+        <source>Tyreus–Luyben (robust)</source>
+        <translation>Tyreus–Luyben (強健)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRules.cpp" line="68"/>
+        <source>PI only (Ziegler–Nichols)</source>
+        <translation>僅 PI (Ziegler–Nichols)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRunCsv</name>
+    <message>
+        <location filename="../ui/tuning/TuningRunCsv.cpp" line="66"/>
+        <source>could not write %1: %2</source>
+        <translation>無法寫入 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRunList</name>
+    <message>
+        <location filename="../ui/tuning/TuningRunList.cpp" line="14"/>
+        <source>Run</source>
+        <translation>測試</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunList.cpp" line="14"/>
+        <source>Gains</source>
+        <translation>增益</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunList.cpp" line="43"/>
+        <source>%1 (recording)</source>
+        <translation>%1 (記錄中)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunList.cpp" line="45"/>
+        <source>P %1 · I %2 · D %3</source>
+        <translation>P %1 · I %2 · D %3</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRunner</name>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="183"/>
+        <source>a tuning test is already running</source>
+        <translation>已有調諧測試正在進行</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="191"/>
+        <source>Reading the drive&apos;s settings</source>
+        <translation>正在讀取驅動器設定</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="199"/>
+        <source>could not read the drive&apos;s settings: %1</source>
+        <translation>無法讀取驅動器設定：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="224"/>
+        <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
+        <translation>驅動器不在閉迴路速度模式：請先將 %1 (%2) 設為 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="226"/>
+        <source> or </source>
+        <translation> 或 </translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="241"/>
+        <source>Setting the communication-loss braking time to %1 s</source>
+        <translation>正在將通訊中斷停止時間設為 %1 s</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="265"/>
+        <source>the drive stopped answering: %1</source>
+        <translation>驅動器停止回應：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="283"/>
+        <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
+        <translation>速度 %1 %2 超過測試限值 %3 %2：已立即停止</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="290"/>
+        <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
+        <translation>電流 %1 A 超過測試限值 %2 A：已立即停止</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="296"/>
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="356"/>
+        <source>Stopping the motor</source>
+        <translation>正在停止馬達</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="362"/>
+        <source>motor stopped (confirmed)</source>
+        <translation>馬達已停止 (已確認)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="363"/>
+        <source>the motor could not be confirmed stopped: check it</source>
+        <translation>無法確認馬達已停止：請檢查馬達</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="398"/>
+        <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
+        <translation>步階測試是從一個速度正轉到另一個速度：起始與目標速度必須不同，且須為 0 以上</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="405"/>
+        <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
+        <translation>%1 %2 超過測試的速度限值 %3 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="413"/>
+        <source>Running to %1 %2</source>
+        <translation>正在運轉至 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="449"/>
+        <source>Step to %1 %2</source>
+        <translation>步階至 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="477"/>
+        <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
+        <translation>運轉速度必須大於 0 且小於測試的速度限值 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="484"/>
+        <source>the relay amplitude must be 0–50 % of full output</source>
+        <translation>繼電器振幅必須為最大輸出的 0–50 %</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="487"/>
+        <source>Open loop: finding the output for %1 %2</source>
+        <translation>開迴路：正在尋找 %1 %2 所需的輸出</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="536"/>
+        <source>the motor did not turn at %1 % output</source>
+        <translation>輸出 %1 % 時馬達未轉動</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="572"/>
+        <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
+        <translation>運轉速度需要 %1 % 的輸出：上下沒有 ±%2 % 的裕度</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="577"/>
+        <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
+        <translation>正在 %1 %2 附近進行繼電器測試 (輸出 %3 % ± %4 %)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="611"/>
+        <source>no steady oscillation within %1 s: %2</source>
+        <translation>%1 s 內未出現穩定振盪：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="613"/>
+        <source>try a larger amplitude</source>
+        <translation>請嘗試加大振幅</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningRunsView</name>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="36"/>
+        <source>Save CSV…</source>
+        <translation>儲存 CSV…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="37"/>
+        <source>Save PNG…</source>
+        <translation>儲存 PNG…</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="42"/>
+        <source>Saves the selected run: its samples, gains and metrics</source>
+        <translation>儲存選取的測試：其取樣資料、增益與指標</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="43"/>
+        <source>Saves the chart as it is shown</source>
+        <translation>依目前的顯示儲存圖表</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
+        <source>solid: speed · dotted: command · dash-dot: current (right axis) · dashed: predicted speed</source>
+        <translation>實線：速度 · 點線：指令 · 一點鏈線：電流 (右軸) · 虛線：預測速度</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="161"/>
+        <source>no run to save</source>
+        <translation>沒有可儲存的測試</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="174"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="178"/>
+        <source>Save run as CSV</source>
+        <translation>將測試儲存為 CSV</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="175"/>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 檔 (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="183"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <source>Save chart as PNG</source>
+        <translation>將圖表儲存為 PNG</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="184"/>
+        <source>PNG images (*.png)</source>
+        <translation>PNG 圖片 (*.png)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <source>Could not write %1.</source>
+        <translation>無法寫入 %1。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningSpec</name>
+    <message>
+        <location filename="../model/tuning/TuningSpec.cpp" line="23"/>
+        <source>%1 has no speed loop to tune</source>
+        <translation>%1 沒有可調諧的速度迴路</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningSpec.cpp" line="51"/>
+        <source>%1: the profile&apos;s tuning needs the roles pidP, pidI, pidD, pidDPeriod, pidStore, speedMode, speedCommand, commLossTime, loadCurrent and output</source>
+        <translation>%1：定義檔的調諧需要以下角色：pidP、pidI、pidD、pidDPeriod、pidStore、speedMode、speedCommand、commLossTime、loadCurrent 與 output</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningSpec.cpp" line="60"/>
+        <source>%1: the profile&apos;s tuning section needs periodMs ≥ 1, outputFullScale &gt; 0, openLoopMode and closedLoopModes with known feedback parameters</source>
+        <translation>%1：定義檔的調諧區段需要 periodMs ≥ 1、outputFullScale &gt; 0、openLoopMode，以及回授參數已知的 closedLoopModes</translation>
+    </message>
+</context>
+<context>
     <name>opentop::UnitRecordJson</name>
     <message>
         <location filename="../model/eol/UnitRecordJson.cpp" line="105"/>
@@ -13320,98 +14596,104 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ValueCodec</name>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="130"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="202"/>
         <source>depends on %1, which is not known yet</source>
         <translation>取決於尚未得知的 %1</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="132"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="204"/>
         <source>text of up to %1 characters</source>
         <translation>最多 %1 個字元的文字</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="142"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="178"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="214"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="150"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="193"/>
+        <source>%1: %2 is outside the recommended range %3; it is allowed and will be written</source>
+        <translation>%1：%2 超出建議範圍 %3；此值仍允許，將會寫入</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueCodec.cpp" line="222"/>
         <source>, or </source>
         <translation>，或 </translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="151"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="223"/>
         <source>any value</source>
         <translation>任意值</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="167"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="239"/>
         <source> (the variant is not known, so the value must suit %1; name the variant to use its own range)</source>
         <translation> (機型未知，因此值必須適用於 %1；指定機型即可使用其範圍)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="177"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="249"/>
         <source>%1: the allowed values depend on %2, which has not been read</source>
         <translation>%1：允許值取決於尚未讀取的 %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="182"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="254"/>
         <source>%1: value out of the register&apos;s range; allowed: %2</source>
         <translation>%1：值超出暫存器範圍；允許：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="194"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="266"/>
         <source>%1: %2 is not allowed; allowed: %3</source>
         <translation>%1：不允許 %2；允許：%3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="206"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="278"/>
         <source>%1: expected %2 registers, got %3</source>
         <translation>%1：預期 %2 個暫存器，收到 %3 個</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="244"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="316"/>
         <source>%1 is text, not a number</source>
         <translation>%1 是文字，不是數字</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="257"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="329"/>
         <source>%1: %2 is finer than the step of %3 %4; allowed: %5</source>
         <translation>%1：%2 比最小單位 %3 %4 更細；允許：%5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="288"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="362"/>
         <source>%1: at most %2 characters</source>
         <translation>%1：最多 %2 個字元</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="294"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="368"/>
         <source>%1: only printable ASCII characters are allowed</source>
         <translation>%1：只允許可列印的 ASCII 字元</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="306"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="380"/>
         <source>%1: no value given; allowed: %2</source>
         <translation>%1：未指定值；允許：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="346"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="420"/>
         <source>%1: &quot;%2&quot; is only available when %3 is %4; allowed now: %5</source>
         <translation>%1：&quot;%2&quot; 僅在 %3 為 %4 時可用；目前允許：%5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="359"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="379"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="433"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="453"/>
         <source>%1: &quot;%2&quot; is not a valid value; allowed: %3</source>
         <translation>%1：&quot;%2&quot; 不是有效值；允許：%3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="405"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="479"/>
         <source>(invalid)</source>
         <translation>(無效)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="416"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="490"/>
         <source>unknown code %1</source>
         <translation>未知代碼 %1</translation>
     </message>

@@ -104,12 +104,15 @@ AlarmsPage::AlarmsPage(DeviceSession* session, QWidget* parent)
         tables->addLayout(box);
     }
     layout->addLayout(tables, 1);
+    // Side by side: stacked, the two boxes made the page too tall for a laptop with docks open.
+    auto* explanations = new QHBoxLayout;
     for (auto [title, label] : {std::pair(tr("Cause and remedy"), m_detail),
                                 std::pair(tr("Communication error register"), m_commError)}) {
         auto* box = new QGroupBox(title);
         (new QVBoxLayout(box))->addWidget(label);
-        layout->addWidget(box);
+        explanations->addWidget(box, 1);
     }
+    layout->addLayout(explanations);
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(m_reread);
     buttons->addStretch();

@@ -10,6 +10,7 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSplitter>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -63,8 +64,14 @@ TuningRunsView::TuningRunsView(const QString& drive, QWidget* parent)
     metricsColumn->addStretch();
     bottom->addLayout(metricsColumn, 2);
     auto* split = new QSplitter(Qt::Vertical, this);
+    // The runs and figures scroll when the window is short (a laptop with docks open, CJK rows).
+    auto* bottomScroll = new QScrollArea(this);
+    bottomScroll->setWidget(bottomBox);
+    bottomScroll->setWidgetResizable(true);
+    bottomScroll->setFrameShape(QFrame::NoFrame);
+    bottomScroll->setMinimumHeight(90);
     split->addWidget(chartBox);
-    split->addWidget(bottomBox);
+    split->addWidget(bottomScroll);
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 1);
     split->setChildrenCollapsible(false);

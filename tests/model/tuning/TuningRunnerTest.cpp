@@ -1,7 +1,9 @@
 // Speed-loop tests on a simulated DC controller: step responses with poor and good gains, the
 // relay autotune's proposal, the test's limits, and what a test leaves behind in the drive.
 #include "tuning/TuningRunner.h"
+
 #include "DriveSimFixture.h"
+#include <QMutexLocker>
 
 using namespace opentop;
 using namespace opentop::test;
@@ -61,6 +63,7 @@ protected:
     }
     double raw(const char* name)
     {
+        QMutexLocker lock(&bus->mutex()); // the client's worker thread serves frames meanwhile
         bus->device(7)->advance(bus->nowMs());
         return bus->device(7)->raw(QString::fromLatin1(name)).value_or(-1);
     }

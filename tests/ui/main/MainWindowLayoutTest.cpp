@@ -253,6 +253,46 @@ void MainWindowLayoutTest::inspectEverything()
     window->findChild<QDockWidget*>(QStringLiteral("trafficDock"))->show();
     settle(300);
     inspect(window.get(), QStringLiteral("all docks open"));
+    if (window->height() > screen.height()) {
+        // What holds the window up: the central area (as tall as its tallest page) and docks.
+        problems << QStringLiteral("  bus panel needs %1 px, workspace %2 px, central %3 px")
+                        .arg(window->busPanel()->minimumSizeHint().height())
+                        .arg(window->workspace()->minimumSizeHint().height())
+                        .arg(window->centralWidget()->minimumSizeHint().height());
+        problems << QStringLiteral("  window needs %1 px, menu bar %2, status bar %3")
+                        .arg(window->minimumSizeHint().height())
+                        .arg(window->menuBar()->sizeHint().height())
+                        .arg(window->statusBar()->minimumSizeHint().height());
+        for (QToolBar* bar : window->findChildren<QToolBar*>())
+            problems << QStringLiteral("  tool bar %1 needs %2 px")
+                            .arg(bar->windowTitle())
+                            .arg(bar->minimumSizeHint().height());
+        for (QDockWidget* dock : docks)
+            problems << QStringLiteral("  dock %1 needs %2 px")
+                            .arg(dock->windowTitle())
+                            .arg(dock->minimumSizeHint().height());
+        problems << QStringLiteral("  bus panel needs %1 px, workspace %2 px, central %3 px")
+                        .arg(window->busPanel()->minimumSizeHint().height())
+                        .arg(window->workspace()->minimumSizeHint().height())
+                        .arg(window->centralWidget()->minimumSizeHint().height());
+        problems << QStringLiteral("  window needs %1 px, menu bar %2, status bar %3")
+                        .arg(window->minimumSizeHint().height())
+                        .arg(window->menuBar()->sizeHint().height())
+                        .arg(window->statusBar()->minimumSizeHint().height());
+        for (QToolBar* bar : window->findChildren<QToolBar*>())
+            problems << QStringLiteral("  tool bar %1 needs %2 px")
+                            .arg(bar->windowTitle())
+                            .arg(bar->minimumSizeHint().height());
+        for (QDockWidget* dock : docks)
+            problems << QStringLiteral("  dock %1 needs %2 px")
+                            .arg(dock->windowTitle())
+                            .arg(dock->minimumSizeHint().height());
+        QTabWidget* tabs = window->workspace()->tabs();
+        for (int i = 0; i < tabs->count(); ++i)
+            problems << QStringLiteral("  page %1 needs %2 px")
+                            .arg(tabs->tabText(i))
+                            .arg(tabs->widget(i)->minimumSizeHint().height());
+    }
     for (QDockWidget* dock : docks)
         dock->hide();
     settle();
