@@ -72,8 +72,9 @@ TuningRunsView::TuningRunsView(const QString& drive, QWidget* parent)
     bottomScroll->setMinimumHeight(90);
     split->addWidget(chartBox);
     split->addWidget(bottomScroll);
-    split->setStretchFactor(0, 3);
-    split->setStretchFactor(1, 1);
+    // The chart takes what the runs and figures leave.
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 0);
     split->setChildrenCollapsible(false);
     m_runList->setMinimumHeight(60);
     auto* layout = new QVBoxLayout(this);
