@@ -99,10 +99,9 @@ bool ValueCodec::wordsSwapped(const ParameterMeta& meta, quint32 wide)
 double ValueCodec::registersToRaw(const ParameterMeta& meta, const QVector<quint16>& regs)
 {
     const bool lowFirst = meta.wordOrder == WordOrder::LowFirst;
-    const quint32 wide = regs.size() >= 2
-                             ? lowFirst ? (quint32(regs[1]) << 16) | regs[0]
-                                        : (quint32(regs[0]) << 16) | regs[1]
-                             : (regs.isEmpty() ? 0u : regs[0]);
+    const quint32 wide = regs.size() >= 2 ? lowFirst ? (quint32(regs[1]) << 16) | regs[0]
+                                                     : (quint32(regs[0]) << 16) | regs[1]
+                                          : (regs.isEmpty() ? 0u : regs[0]);
     switch (meta.type) {
     case DataType::U16:
         return regs.isEmpty() ? 0 : regs[0];

@@ -172,7 +172,7 @@ TEST_F(DcPid, SpeedCommandDrivesTheMotorAndBrakes)
     sim.advance(20);
     EXPECT_LT(pwm(), 500); // the 10 A current limit holds the duty back while starting
     EXPECT_EQ(sim.readOne(7, "status.current"), sim.readOne(7, "config.max_current"));
-    EXPECT_LT(speed(), 200);                           // the shaft is still accelerating
+    EXPECT_LT(speed(), 200); // the shaft is still accelerating
     sim.advance(400);
     EXPECT_EQ(pwm(), 500);
     EXPECT_NEAR(speed(), 490, 10); // no-load speed at half duty, less friction

@@ -117,7 +117,8 @@ TEST(RecommendedRange, TheLoaderReadsItAndRefusesOneOutsideTheAllowedRange)
 
     loaded = loadEdited(
         QStringLiteral("pid.p"),
-        [](QJsonObject& edited) { edited[QStringLiteral("recommended")] = interval(0, 2); }, &error);
+        [](QJsonObject& edited) { edited[QStringLiteral("recommended")] = interval(0, 2); },
+        &error);
     EXPECT_FALSE(loaded);
     EXPECT_TRUE(error.contains(QStringLiteral("recommended[0] is not inside one of the "
                                               "\"allowed\" intervals")))
