@@ -77,7 +77,21 @@ TEST(CliTuneE2e, StepTestAutotuneAndLimits)
     ASSERT_EQ(r.code, 0) << (r.out + r.err).toStdString();
     const QJsonObject accepted = QJsonDocument::fromJson(r.out.toUtf8()).object();
     EXPECT_TRUE(accepted.contains(QStringLiteral("measured"))) << r.out.toStdString();
-    EXPECT_NE(sim.get(7, 0x0090, 3), 0x4120);
+    const int acceptedP = sim.get(7, 0x0090, 3);
+    EXPECT_NE(acceptedP, 0x4120);
+    // Accepted but not stored: a power cycle brings the stored gains back (P = 0.1).
+    sim.command(QStringLiteral("power-cycle 7"));
+    EXPECT_EQ(sim.get(7, 0x0090, 3), 0x3DCC);
+    // With --store they survive it.
+    sim.command(QStringLiteral("set 7 0x0080 2"));
+    r = runCliOn(
+        sim.pty,
+        tune(autotune + QStringList{QStringLiteral("--accept"), QStringLiteral("--store")}), 30000);
+    ASSERT_EQ(r.code, 0) << (r.out + r.err).toStdString();
+    const int storedP = sim.get(7, 0x0090, 3);
+    EXPECT_NE(storedP, 0x3DCC);
+    sim.command(QStringLiteral("power-cycle 7"));
+    EXPECT_EQ(sim.get(7, 0x0090, 3), storedP);
     EXPECT_EQ(sim.terminate(), 0);
 }
 
