@@ -52,6 +52,9 @@ struct TuningRunner::Context
     int polls = 0;
     bool high = false;
     double u0 = 0;
+    // The step that repeats (a poll and what follows it). It holds the context, so it is
+    // cleared when the test ends or the runner goes, which frees both.
+    std::function<void()> loop;
 };
 
 TuningRunner::TuningRunner(DeviceSession* session, const TuningSpec& spec, QObject* parent)
@@ -72,6 +75,8 @@ TuningRunner::~TuningRunner()
         m_session->write(m_spec.command, QStringLiteral("0"), options,
                          [](const DeviceSession::Outcome&) {});
     }
+    if (m_ctx)
+        m_ctx->loop = nullptr;
 }
 
 double TuningRunner::modeOf() const
@@ -109,29 +114,31 @@ void TuningRunner::readGains(GainsDone done)
 
 void TuningRunner::writeGains(const PidGains& gains, GainsDone done)
 {
+    writeGainsFrom(gains, 0, std::move(done));
+}
+
+void TuningRunner::writeGainsFrom(const PidGains& gains, int k, GainsDone done)
+{
     const QVector<QPair<QString, double>> values = {{m_spec.gainP, gains.p},
                                                     {m_spec.gainI, gains.i},
                                                     {m_spec.gainD, gains.d},
                                                     {m_spec.dPeriod, double(gains.dPeriodMs)}};
-    auto next = std::make_shared<std::function<void(int)>>();
-    *next = [self = QPointer(this), this, values, gains, done, next](int k) {
-        if (!self)
-            return;
-        if (k == values.size()) {
-            readGains(done);
-            return;
-        }
-        DeviceSession::WriteOptions options;
-        m_session->write(values[k].first, QString::number(values[k].second, 'g', 7), options,
-                         [k, next, done, gains](const DeviceSession::Outcome& o) {
-                             if (!o.ok) {
-                                 done(false, gains, o.error);
-                                 return;
-                             }
-                             (*next)(k + 1);
-                         });
-    };
-    (*next)(0);
+    if (k == values.size()) {
+        readGains(done);
+        return;
+    }
+    DeviceSession::WriteOptions options;
+    m_session->write(
+        values[k].first, QString::number(values[k].second, 'g', 7), options,
+        [self = QPointer(this), this, k, done, gains](const DeviceSession::Outcome& o) {
+            if (!self)
+                return;
+            if (!o.ok) {
+                done(false, gains, o.error);
+                return;
+            }
+            writeGainsFrom(gains, k + 1, done);
+        });
 }
 
 void TuningRunner::storeGains(std::function<void(bool, const QString&)> done)
@@ -331,6 +338,7 @@ void TuningRunner::finish()
         Done done = std::move(m_done);
         m_done = nullptr;
         m_ctx.reset();
+        ctx->loop = nullptr;
         if (done)
             done(ctx->result);
     };
@@ -447,15 +455,14 @@ void TuningRunner::stepRecord(const StepPlan& plan)
         s.tMs -= now - ctx->t0; // the approach before the step: negative times
     ctx->t0 = now;
     emit phase(tr("Step to %1 %2").arg(plan.to).arg(ctx->result.speedUnit));
-    auto record = std::make_shared<std::function<void()>>();
-    *record = [this, ctx, plan, record] {
-        poll([this, ctx, plan, record](const TuningSample& sample) {
+    ctx->loop = [this, ctx, plan] {
+        poll([this, ctx, plan](const TuningSample& sample) {
             TuningSample s = sample;
             s.command = plan.to;
             ctx->result.samples << s;
             emit sampled(s);
             if (s.tMs < plan.recordMs) {
-                (*record)();
+                ctx->loop();
                 return;
             }
             ctx->result.metrics = StepMetrics::measure(ctx->result.samples, plan.from, plan.to);
@@ -464,7 +471,7 @@ void TuningRunner::stepRecord(const StepPlan& plan)
             finish();
         });
     };
-    command(plan.to, [record] { (*record)(); });
+    command(plan.to, [ctx] { ctx->loop(); });
 }
 
 // --- relay autotune --------------------------------------------------------------------------
@@ -518,15 +525,14 @@ void TuningRunner::relayEstimate(const RelayPlan& plan, int stage, double u, dou
     const auto ctx = m_ctx;
     ctx->t0 = ctx->clock.nsecsElapsed() / 1e6;
     ctx->result.samples.clear();
-    auto hold = std::make_shared<std::function<void()>>();
-    *hold = [this, ctx, plan, stage, u, y1, hold] {
-        poll([this, ctx, plan, stage, u, y1, hold](const TuningSample& sample) {
+    ctx->loop = [this, ctx, plan, stage, u, y1] {
+        poll([this, ctx, plan, stage, u, y1](const TuningSample& sample) {
             TuningSample s = sample;
             s.command = u * ctx->openScale;
             ctx->result.samples << s;
             emit sampled(s);
             if (s.tMs < kHoldMs) {
-                (*hold)();
+                ctx->loop();
                 return;
             }
             const double y = mean(ctx->result.samples, kHoldMs - kAverageMs);
@@ -560,7 +566,7 @@ void TuningRunner::relayEstimate(const RelayPlan& plan, int stage, double u, dou
             relayRun(plan, u0, plan.speed > y);
         });
     };
-    command(u * ctx->openScale, [hold] { (*hold)(); });
+    command(u * ctx->openScale, [ctx] { ctx->loop(); });
 }
 
 void TuningRunner::relayRun(const RelayPlan& plan, double u0, bool high)
@@ -584,9 +590,8 @@ void TuningRunner::relayRun(const RelayPlan& plan, double u0, bool high)
     ctx->polls = 0;
     ctx->high = high;
     const double h = plan.hysteresis > 0 ? plan.hysteresis : 0.01 * plan.speed;
-    auto loop = std::make_shared<std::function<void()>>();
-    *loop = [this, ctx, plan, u0, d, h, loop] {
-        poll([this, ctx, plan, u0, d, h, loop](const TuningSample& sample) {
+    ctx->loop = [this, ctx, plan, u0, d, h] {
+        poll([this, ctx, plan, u0, d, h](const TuningSample& sample) {
             TuningSample s = sample;
             s.command = (ctx->high ? u0 + d : u0 - d) * ctx->openScale;
             ctx->result.samples << s;
@@ -614,14 +619,14 @@ void TuningRunner::relayRun(const RelayPlan& plan, double u0, bool high)
                 return;
             }
             if (next == ctx->high) {
-                (*loop)();
+                ctx->loop();
                 return;
             }
             ctx->high = next;
-            command((next ? u0 + d : u0 - d) * ctx->openScale, [loop] { (*loop)(); });
+            command((next ? u0 + d : u0 - d) * ctx->openScale, [ctx] { ctx->loop(); });
         });
     };
-    command((high ? u0 + d : u0 - d) * ctx->openScale, [loop] { (*loop)(); });
+    command((high ? u0 + d : u0 - d) * ctx->openScale, [ctx] { ctx->loop(); });
 }
 
 void TuningRunner::relayConclude(const RelayPlan& plan)

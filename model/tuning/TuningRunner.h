@@ -123,6 +123,7 @@ private:
     double feedbackScale() const;
     double modeOf() const;
     void writeNumber(const QString& parameter, double value, std::function<void(bool)> then);
+    void writeGainsFrom(const PidGains& gains, int k, GainsDone done);
 
     DeviceSession* m_session;
     TuningSpec m_spec;
