@@ -50,7 +50,11 @@ TuningChart::TuningChart(QWidget* parent)
     m_time->setRange(0, 1500);
     m_speed->setRange(0, 100);
     m_current->setRange(0, 1);
+    // QChartView made a chart of its own and only releases it (Qt: "To avoid memory leaks
+    // users need to make sure the previous chart is deleted"): LeakSanitizer found it.
+    QChart* unused = this->chart();
     setChart(chart);
+    delete unused;
     setRenderHint(QPainter::Antialiasing);
     setMinimumSize(360, 160);
     setSpeedUnit(QString());
