@@ -30,6 +30,7 @@ PtySimServer::PtySimServer(std::shared_ptr<SimBus> bus, const WireTiming& timing
     , m_bus(std::move(bus))
     , m_timing(timing)
     , m_wireTiming(wireTiming)
+    , m_replies(new ReplyScheduler([this](const QByteArray& reply) { send(reply); }, this))
 {
     m_silence.setSingleShot(true);
     m_silence.setInterval(kSilenceMs);
@@ -95,7 +96,7 @@ void PtySimServer::close()
     if (m_slave >= 0)
         ::close(m_slave);
     m_master = m_slave = -1;
-    ++m_generation;
+    m_replies->clear(); // a reply delayed past an unplug never reaches the next pty
 }
 
 void PtySimServer::unplug()
@@ -179,6 +180,9 @@ void PtySimServer::onSilence()
 
 void PtySimServer::dispatch(const QByteArray& frame)
 {
+    const qint64 arrivedNs = ReplyScheduler::nowNs();
+    if (m_wireTiming && m_halfDuplex && !lineAccepts(frame, arrivedNs))
+        return;
     const SimOutcome outcome = m_bus->handleFrame(frame);
     qCInfo(lcSim).noquote() << "rx" << frame.toHex(' ') << "tx"
                             << (outcome.reply.isEmpty()
@@ -188,24 +192,49 @@ void PtySimServer::dispatch(const QByteArray& frame)
         return;
     double delay = outcome.delayMs;
     if (m_wireTiming)
-        delay += m_timing.replyDelayMs(frame.size(), outcome.reply.size());
-    if (delay < 0.5) {
+        delay += m_timing.replyDelayMs(frame.size(), outcome.reply.size(), outcome.turnaroundMs);
+    if (delay < 0.05) {
         send(outcome.reply);
         return;
     }
-    const QByteArray reply = outcome.reply;
-    // A reply delayed past an unplug never reaches the next pty.
-    const int generation = m_generation;
-    QTimer::singleShot(int(delay + 0.5), Qt::PreciseTimer, this, [this, reply, generation] {
-        if (generation == m_generation)
-            send(reply);
-    });
+    ReplyScheduler::Reply reply;
+    reply.bytes = outcome.reply;
+    reply.dueNs = arrivedNs + qint64(delay * 1e6);
+    reply.startNs = reply.dueNs - qint64(m_timing.frameMs(outcome.reply.size()) * 1e6);
+    m_replies->schedule(reply);
+}
+
+bool PtySimServer::lineAccepts(const QByteArray& frame, qint64 nowNs)
+{
+    // The request is on the wire from now until its last character has gone.
+    const qint64 endNs = nowNs + qint64(m_timing.frameMs(frame.size()) * 1e6);
+    bool collided = false;
+    for (ReplyScheduler::Reply& r : m_replies->pending()) {
+        if (nowNs < r.dueNs && endNs > r.startNs) {
+            collided = true;
+            r.bytes[r.bytes.size() - 1] = char(r.bytes.at(r.bytes.size() - 1) ^ 0xA5);
+        }
+    }
+    if (collided) {
+        ++m_collisions;
+        qCInfo(lcSim) << "rx" << frame.toHex(' ') << "collided with a reply on the line: both lost";
+        return false;
+    }
+    const double gapMs = double(nowNs - m_lastReplyEndNs) / 1e6;
+    if (m_lastReplyEndNs > 0 && gapMs < m_timing.gapMs()) {
+        ++m_gapViolations;
+        qCInfo(lcSim) << "rx" << frame.toHex(' ') << "only" << gapMs
+                      << "ms after the last reply (less than 3.5 characters): not a frame";
+        return false;
+    }
+    return true;
 }
 
 void PtySimServer::send(const QByteArray& reply)
 {
     if (m_master < 0)
         return;
+    m_lastReplyEndNs = ReplyScheduler::nowNs();
     int written = 0;
     while (written < reply.size()) {
         const ssize_t n =

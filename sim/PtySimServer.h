@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ReplyScheduler.h"
 #include "WireTiming.h"
 
 #include <QByteArray>
@@ -37,6 +38,15 @@ public:
     QString slavePath() const { return m_slavePath; }
     QString linkPath() const { return m_linkPath; }
 
+    // With wire timing: the line is one half-duplex pair, as RS-485 is. A request that overlaps
+    // a reply on the wire garbles both (the reply reaches the client with a bad CRC, the
+    // request is not answered), and a request less than 3.5 characters after the last reply
+    // is not taken as a frame of its own (DBU manual 11-1: no reply then).
+    void setHalfDuplex(bool on) { m_halfDuplex = on; }
+    // Requests lost to the half-duplex rules above, for the console's stats.
+    int collisions() const { return m_collisions; }
+    int gapViolations() const { return m_gapViolations; }
+
     // Length of the request at the start of `buffer`: 0 while more bytes are needed, -1 when
     // the function code gives no length (framing by silence).
     static int requestLength(const QByteArray& buffer);
@@ -47,6 +57,8 @@ private:
     void processBuffer();
     void dispatch(const QByteArray& frame);
     void send(const QByteArray& reply);
+    // Half-duplex rules for a request arriving now; false: it is lost.
+    bool lineAccepts(const QByteArray& frame, qint64 nowNs);
 
     std::shared_ptr<SimBus> m_bus;
     WireTiming m_timing;
@@ -55,11 +67,15 @@ private:
     int m_slave = -1;
     QString m_slavePath;
     QString m_linkPath;
-    int m_generation = 0;    // counts closes
     QString m_unpluggedLink; // the symlink to restore on replug
     QSocketNotifier* m_notifier = nullptr;
     QByteArray m_buffer;
     QTimer m_silence;
+    ReplyScheduler* m_replies;
+    bool m_halfDuplex = false;
+    qint64 m_lastReplyEndNs = 0;
+    int m_collisions = 0;
+    int m_gapViolations = 0;
 };
 
 } // namespace opentop

@@ -144,6 +144,7 @@ int SimApp::start(const QStringList& arguments)
     const WireTiming timing(m_options.baud, m_options.parity, m_options.turnaroundMs);
     if (m_options.pty) {
         m_pty = new PtySimServer(m_bus, timing, m_options.wireTiming, this);
+        m_pty->setHalfDuplex(m_options.halfDuplex);
         if (!m_pty->open(m_options.ptyLink, &error)) {
             printErr(QStringLiteral("opentop-sim: ") + error);
             return 1;

@@ -200,8 +200,10 @@ SimOutcome SimBus::handleFrame(const QByteArray& requestAdu, qint64 nowMs)
             }
         }
         const QByteArray reply = device->handle(request, nowMs, direct);
-        if (direct)
+        if (direct) {
             out.reply = reply;
+            out.turnaroundMs = device->defects().turnaroundMs.value_or(-1.0);
+        }
     }
     switch (out.fault) {
     case FaultInjector::Fault::Drop:

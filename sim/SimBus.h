@@ -19,8 +19,9 @@ struct ModbusRequest;
 // What the bus does with one request frame.
 struct SimOutcome
 {
-    QByteArray reply; // reply ADU; empty when nobody answers
-    int delayMs = 0;  // extra delay before the reply is sent (late fault)
+    QByteArray reply;         // reply ADU; empty when nobody answers
+    int delayMs = 0;          // extra delay before the reply is sent (late fault)
+    double turnaroundMs = -1; // the answering drive's own turnaround (a defect); < 0: the bus's
     FaultInjector::Fault fault = FaultInjector::Fault::None;
 };
 

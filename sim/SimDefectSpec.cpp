@@ -46,13 +46,13 @@ QString SimDefectSpec::forms()
               "stall, load=+N, load=-N or load=xF (e.g. load=+40, load=x1.5), "
               "alarm=CODE@TIME (e.g. alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), "
               "nostick=PARAM, nostore=PARAM (a parameter name or register address, e.g. "
-              "nostick=spno2.speed, nostore=0x0081), clear");
+              "nostick=spno2.speed, nostore=0x0081), turnaround=MS (e.g. turnaround=14), clear");
 }
 
 bool SimDefectSpec::isEmpty() const
 {
     return !firmware && !maxSpeed && !stall && !loadOffset && !loadScale && alarm.isEmpty() &&
-           noStick.isEmpty() && noStore.isEmpty();
+           noStick.isEmpty() && noStore.isEmpty() && !turnaroundMs;
 }
 
 QString SimDefectSpec::toString() const
@@ -75,6 +75,8 @@ QString SimDefectSpec::toString() const
         items << QStringLiteral("nostick=%1").arg(p);
     for (const QString& p : noStore)
         items << QStringLiteral("nostore=%1").arg(p);
+    if (turnaroundMs)
+        items << QStringLiteral("turnaround=%1").arg(number(*turnaroundMs));
     return items.join(QLatin1Char(','));
 }
 
@@ -103,6 +105,8 @@ SimDefectSpec SimDefectSpec::merged(const SimDefectSpec& later) const
         if (!m.noStore.contains(p))
             m.noStore << p;
     }
+    if (later.turnaroundMs)
+        m.turnaroundMs = later.turnaroundMs;
     return m;
 }
 
@@ -111,10 +115,10 @@ QString SimDefectSpec::parseItem(const QString& item, SimDefectSpec* spec)
     const int eq = item.indexOf(QLatin1Char('='));
     const QString key = (eq < 0 ? item : item.left(eq)).trimmed().toLower();
     const QString value = eq < 0 ? QString() : item.mid(eq + 1).trimmed();
-    static const QStringList keys = {QStringLiteral("firmware"), QStringLiteral("max_speed"),
-                                     QStringLiteral("stall"),    QStringLiteral("load"),
-                                     QStringLiteral("alarm"),    QStringLiteral("nostick"),
-                                     QStringLiteral("nostore"),  QStringLiteral("clear")};
+    static const QStringList keys = {
+        QStringLiteral("firmware"), QStringLiteral("max_speed"),  QStringLiteral("stall"),
+        QStringLiteral("load"),     QStringLiteral("alarm"),      QStringLiteral("nostick"),
+        QStringLiteral("nostore"),  QStringLiteral("turnaround"), QStringLiteral("clear")};
     if (!keys.contains(key))
         return tr("unknown defect \"%1\"; allowed: %2").arg(item, forms());
     const bool needsValue = key != QLatin1String("stall") && key != QLatin1String("clear");
@@ -178,6 +182,13 @@ QString SimDefectSpec::parseItem(const QString& item, SimDefectSpec* spec)
                 .arg(value);
         spec->alarm = code.toLower();
         spec->alarmAfterMs = *delay;
+    } else if (key == QLatin1String("turnaround")) {
+        bool ok = false;
+        const double ms = value.toDouble(&ok);
+        if (!ok || ms < 0 || ms > 1000)
+            return tr("turnaround=%1: write the answer delay in ms, 0..1000, e.g. turnaround=14")
+                .arg(value);
+        spec->turnaroundMs = ms;
     } else if (key == QLatin1String("nostick") || key == QLatin1String("nostore")) {
         if (!isParameterText(value))
             return tr("%1=%2: name a parameter (e.g. spno2.speed) or a register address (e.g. "

@@ -22,6 +22,8 @@ namespace opentop {
 //   nostick=PARAM           writes are acknowledged but not stored (name or address 0x1102)
 //   nostore=PARAM           the value is taken, but lost at the next power cycle (DC: the
 //                           store command does not store it)
+//   turnaround=MS           with wire timing, the drive answers MS after the 3.5 character
+//                           gap instead of the bus's --turnaround (a slow drive, up to 1000)
 //   clear                   no defects (before the items after it)
 struct SimDefectSpec
 {
@@ -36,6 +38,7 @@ public:
     qint64 alarmAfterMs = 0;
     QStringList noStick; // parameter names or addresses as written
     QStringList noStore;
+    std::optional<double> turnaroundMs;
     bool clear = false; // the list started from no defects
 
     bool isEmpty() const;

@@ -72,6 +72,7 @@ std::optional<SimDefects> SimDefects::resolve(const SimDefectSpec& spec, const P
     if (spec.maxSpeed)
         d.maxSpeed = *spec.maxSpeed;
     d.stall = spec.stall;
+    d.turnaroundMs = spec.turnaroundMs;
     d.loadOffset = spec.loadOffset.value_or(0);
     d.loadScale = spec.loadScale.value_or(1);
     if (!spec.alarm.isEmpty()) {

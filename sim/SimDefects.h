@@ -29,6 +29,7 @@ public:
     qint64 alarmAfterMs = 0;
     QStringList noStick; // parameter names
     QStringList noStore;
+    std::optional<double> turnaroundMs; // with wire timing: this drive's own answer delay
 
     bool any() const { return !spec.isEmpty(); }
     // The speed magnitude the motor reaches when `magnitude` is commanded.

@@ -21,6 +21,8 @@ QString SimOptions::usage()
         "  --parity N|E|O     line parity (N)\n"
         "  --wire-timing      delay replies as a real line at --baud would\n"
         "  --turnaround MS    device turnaround with --wire-timing (2)\n"
+        "  --half-duplex      with --wire-timing: a request overlapping a reply on the line\n"
+        "                     garbles both, one within 3.5 characters of a reply is lost\n"
         "  --faults LIST      e.g. drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000\n"
         "  --seed N           seed of the fault injection (1)\n"
         "  --defect ID:LIST   defects of drive ID (repeatable), LIST of:\n"
@@ -123,6 +125,8 @@ std::optional<SimOptions> SimOptions::parse(const QStringList& arguments, QStrin
             o.parity = p.at(0).toLatin1();
         } else if (arg == QLatin1String("--wire-timing")) {
             o.wireTiming = true;
+        } else if (arg == QLatin1String("--half-duplex")) {
+            o.halfDuplex = true;
         } else if (arg == QLatin1String("--turnaround")) {
             bool ok = false;
             const double ms = value(&v) ? v.toDouble(&ok) : -1;
@@ -165,12 +169,12 @@ std::optional<SimOptions> SimOptions::parse(const QStringList& arguments, QStrin
         } else if (arg == QLatin1String("--quiet") || arg == QLatin1String("-q")) {
             o.quiet = true;
         } else {
-            return failed(
-                tr("unknown argument '%1'; options: --devices, --pty, --tcp, --baud, "
-                   "--parity, --wire-timing, --turnaround, --faults, --seed, --defect, --motor, "
-                   "--quiet, "
-                   "--help, --version")
-                    .arg(arguments.at(i)));
+            return failed(tr("unknown argument '%1'; options: --devices, --pty, --tcp, --baud, "
+                             "--parity, --wire-timing, --half-duplex, --turnaround, --faults, "
+                             "--seed, --defect, --motor, "
+                             "--quiet, "
+                             "--help, --version")
+                              .arg(arguments.at(i)));
         }
     }
     if (!o.help && !o.version && o.devices.isEmpty())

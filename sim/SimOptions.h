@@ -27,6 +27,7 @@ public:
     int baud = 19200;
     char parity = 'N';
     bool wireTiming = false;
+    bool halfDuplex = false; // with wireTiming: PtySimServer::setHalfDuplex
     double turnaroundMs = 2.0;
     FaultInjector::Rates faults;
     quint32 seed = 1;

@@ -29,9 +29,10 @@ double WireTiming::gapMs() const
     return m_baud > 19200 ? 1.75 : 3.5 * charMs();
 }
 
-double WireTiming::replyDelayMs(int requestBytes, int replyBytes) const
+double WireTiming::replyDelayMs(int requestBytes, int replyBytes, double turnaroundMs) const
 {
-    return frameMs(requestBytes) + gapMs() + m_turnaroundMs + frameMs(replyBytes);
+    const double turnaround = turnaroundMs >= 0 ? turnaroundMs : m_turnaroundMs;
+    return frameMs(requestBytes) + gapMs() + turnaround + frameMs(replyBytes);
 }
 
 double WireTiming::broadcastDelayMs(int requestBytes) const

@@ -17,7 +17,8 @@ public:
     double frameMs(int bytes) const;
     double gapMs() const; // 3.5 characters, at least 1.75 ms above 19200 bit/s (Modbus spec)
     // From the end of writing the request to the end of the reply on the wire.
-    double replyDelayMs(int requestBytes, int replyBytes) const;
+    // turnaroundMs < 0: the line's own.
+    double replyDelayMs(int requestBytes, int replyBytes, double turnaroundMs = -1) const;
     // Quiet time after a broadcast before the next request.
     double broadcastDelayMs(int requestBytes) const;
 

@@ -98,6 +98,7 @@ void LibmodbusBackend::close()
     m_open = false;
     m_lateWatch.clear();
     m_suspects.clear();
+    m_checkedSinceOpen.clear();
     qCDebug(lcTransport) << "closed" << describe();
 }
 
@@ -133,6 +134,10 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
     m_discardedReplyFrom = -1;
     awaitLateReplies(request);
     discardStaleInput(request);
+    if (!keepFrameGap()) {
+        result.error = ModbusError::Cancelled;
+        return result;
+    }
     result.lateReplyFrom = m_discardedReplyFrom;
     const QByteArray raw = char(request.slave) + request.pdu();
     const QByteArray sent = txAdu(request);
@@ -159,6 +164,8 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
         return result;
     }
 
+    // Until the request has left the UART the line is ours; a timeout is counted from there.
+    m_lineActiveAtMs = m_sentAtMs + wireTimeMs(int(sent.size()));
     const int ready = waitReadable(timeoutMs);
     if (ready <= 0) {
         result.elapsedMs = elapsedMs();
@@ -183,6 +190,7 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
         receiveStandard(request, timeoutMs, &adu, &result);
     result.reply = adu;
     result.elapsedMs = elapsedMs();
+    m_lineActiveAtMs = nowMs();
 
     if (result.error == ModbusError::PortError || result.error == ModbusError::Cancelled) {
         logEvent(request, QString(), result.errorText());
@@ -202,10 +210,31 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
             "opentop::Transport",
             "another reply followed: this one may have answered an earlier request");
         logEvent(request, result.message, result.errorText());
+    } else if (result.error == ModbusError::Ok || result.error == ModbusError::Exception) {
+        m_checkedSinceOpen.insert(request.slave);
     }
     if (result.error != ModbusError::Ok && result.error != ModbusError::Exception)
         recover(request, timeoutMs);
     return result;
+}
+
+double LibmodbusBackend::nowMs() const
+{
+    return double(m_clock.nsecsElapsed()) / 1e6;
+}
+
+double LibmodbusBackend::frameGapMs() const
+{
+    return m_frameGapMs >= 0 ? m_frameGapMs : defaultFrameGapMs();
+}
+
+bool LibmodbusBackend::keepFrameGap()
+{
+    // Modbus RTU frames are told apart by 3.5 characters of silence, and a DBU does not
+    // answer a request that follows the previous frame more closely. A fast adapter hands
+    // over a reply so quickly that the next request could otherwise follow at once.
+    const double waitMs = m_lineActiveAtMs + frameGapMs() - nowMs();
+    return waitMs <= 0 || sleepInterruptible(waitMs);
 }
 
 void LibmodbusBackend::suspect(quint8 slave, int timeoutMs)
@@ -228,7 +257,10 @@ bool LibmodbusBackend::isSuspect(quint8 slave)
     if (wireTimeMs(1) <= 0)
         return false; // Modbus TCP: transaction ids tell replies apart
     const double nowMs = double(m_clock.nsecsElapsed()) / 1e6;
-    if (nowMs < m_suspectAllUntilMs)
+    // A slave answers its requests in order, so the previous program's unanswered request to
+    // it is answered before ours: once one exchange with it has been checked, none of its
+    // replies can still be on the way. Only the first exchange with each slave is checked.
+    if (nowMs < m_suspectAllUntilMs && !m_checkedSinceOpen.contains(slave))
         return true;
     m_suspects.erase(std::remove_if(m_suspects.begin(), m_suspects.end(),
                                     [nowMs](const LateWatch& w) { return w.untilMs <= nowMs; }),
@@ -307,9 +339,13 @@ int LibmodbusBackend::waitReadable(double timeoutMs) const
         if (interrupted())
             return -1;
         const double left = timeoutMs - double(timer.nsecsElapsed()) / 1e6;
+        // ppoll: a wait of 1.2 ms must not become 2 ms (a whole millisecond per transaction is
+        // 10 % of a fast line's time).
         const double slice = std::clamp(left, 0.0, kSliceMs);
+        const auto ns = static_cast<long long>(slice * 1e6);
+        const timespec ts{time_t(ns / 1000000000), long(ns % 1000000000)};
         pollfd pfd{fd, POLLIN, 0};
-        const int rc = ::poll(&pfd, 1, int(std::ceil(slice)));
+        const int rc = ::ppoll(&pfd, 1, &ts, nullptr);
         if (rc > 0)
             return 1; // data, hangup or error: the read that follows tells which
         if (rc < 0 && errno != EINTR)
@@ -377,6 +413,7 @@ void LibmodbusBackend::discardStaleInput(const ModbusRequest& request)
     }
     if (stale.isEmpty())
         return;
+    m_lineActiveAtMs = nowMs();
     noteDiscarded(toRtuAdu(stale));
     modbus_flush(m_ctx);
     logFrame(
@@ -459,8 +496,10 @@ void LibmodbusBackend::drain(const ModbusRequest& request, double firstWindowMs,
     if (!m_ctx)
         return;
     modbus_flush(m_ctx);
-    if (!late.isEmpty())
+    if (!late.isEmpty()) {
+        m_lineActiveAtMs = nowMs();
         noteDiscarded(toRtuAdu(late));
+    }
     if (!late.isEmpty())
         logFrame(false, late, request, QString(),
                  QCoreApplication::translate("opentop::Transport",

@@ -4,6 +4,7 @@
 #include "ModbusBackend.h"
 
 #include <QElapsedTimer>
+#include <QSet>
 #include <QVector>
 
 struct _modbus; // libmodbus' modbus_t, kept out of this header
@@ -37,6 +38,12 @@ public:
     void setTurnaroundMs(int ms) { m_turnaroundMs = ms; }
     int turnaroundMs() const;
     virtual int defaultTurnaroundMs() const = 0;
+    // Silence kept between the end of the last frame on the line and the next request (the
+    // Modbus RTU inter-frame gap); < 0 restores the default, 0 keeps none (benchmarks that
+    // compare with a plain loop on a pty).
+    void setFrameGapMs(double ms) { m_frameGapMs = ms; }
+    double frameGapMs() const;
+    virtual double defaultFrameGapMs() const { return 0; }
 
 protected:
     explicit LibmodbusBackend(const ConnectionSettings& settings);
@@ -97,6 +104,9 @@ private:
     // have ended, so that the reply taken may have been a late answer to an earlier request.
     bool anotherReplyFollows(const ModbusRequest& request, int frameBytes);
     void setResponseTimeout(double ms);
+    double nowMs() const; // on m_clock
+    // Waits until the line has been silent for the frame gap; false when interrupted.
+    bool keepFrameGap();
     // Discarded bytes that begin with a whole frame with a good CRC: notes its sender for the
     // result of the request about to be sent (ModbusResult::lateReplyFrom).
     void noteDiscarded(const QByteArray& rtu);
@@ -113,11 +123,14 @@ private:
         double untilMs = 0; // on m_clock
         int quietMs = 0;
     };
-    QVector<LateWatch> m_lateWatch; // slaves that timed out silently, quiet time not yet over
-    QVector<LateWatch> m_suspects;  // slaves whose replies are checked for a second reply
-    QElapsedTimer m_clock;          // monotonic time for m_lateWatch
-    int m_discardedReplyFrom = -1;  // see noteDiscarded()
-    double m_suspectAllUntilMs = 0; // on m_clock: every slave is a suspect until then (open())
+    QVector<LateWatch> m_lateWatch;  // slaves that timed out silently, quiet time not yet over
+    QVector<LateWatch> m_suspects;   // slaves whose replies are checked for a second reply
+    QElapsedTimer m_clock;           // monotonic time for m_lateWatch
+    int m_discardedReplyFrom = -1;   // see noteDiscarded()
+    double m_suspectAllUntilMs = 0;  // on m_clock: every slave is a suspect until then (open())
+    QSet<quint8> m_checkedSinceOpen; // slaves whose first exchange was checked (isSuspect())
+    double m_frameGapMs = -1;
+    double m_lineActiveAtMs = -1e9; // on m_clock: the end of the last frame on the line
 };
 
 } // namespace opentop

@@ -69,6 +69,11 @@ int RtuBackend::defaultTurnaroundMs() const
     return std::max(10, int(std::floor(3.5 * settings().charTimeMs() + 5)) + 1);
 }
 
+double RtuBackend::defaultFrameGapMs() const
+{
+    return settings().baud > 19200 ? 1.75 : 3.5 * settings().charTimeMs();
+}
+
 _modbus* RtuBackend::createContext()
 {
     const ConnectionSettings& s = settings();

@@ -23,6 +23,9 @@ public:
     // millisecond above 3.5 character times + 5 ms, at least 10 ms (the manual's C3.5 is 4.0 ms at
     // 9600 bit/s and 2.5 ms at 19200, more than 3.5 character times of 8N1).
     int defaultTurnaroundMs() const override;
+    // The Modbus RTU inter-frame gap: 3.5 character times, 1.75 ms above 19200 bit/s (Modbus
+    // over serial line 2.5.1.1). See erratum DBU-30 for the manual's rounder figures.
+    double defaultFrameGapMs() const override;
 
 protected:
     _modbus* createContext() override;

@@ -5,6 +5,7 @@
 #include "ModbusClient.h"
 #include "MonitorOptions.h"
 #include "ProductionOptions.h"
+#include "StartupProbe.h"
 #include "TrafficLog.h"
 #include "bus/BusSpec.h"
 #include "connection/ConnectionDialog.h"
@@ -14,12 +15,15 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QElapsedTimer>
 #include <QIcon>
 #include <cstdio>
 #include <cstring>
 
 int main(int argc, char* argv[])
 {
+    QElapsedTimer sinceMain; // --startup-probe
+    sinceMain.start();
     // --version and --help only print: they work without a display (an ssh session, a build).
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--version") == 0 || std::strcmp(argv[i], "-v") == 0) {
@@ -63,6 +67,7 @@ int main(int argc, char* argv[])
     opentop::ConnectionOptions::addTo(parser);
     opentop::MonitorOptions::addTo(parser);
     opentop::ProductionOptions::addTo(parser);
+    opentop::StartupProbe::addTo(parser);
     parser.process(app);
     opentop::registerBuiltInEditors();
 
@@ -101,6 +106,7 @@ int main(int argc, char* argv[])
         std::fprintf(stderr, "opentop: %s\n", qPrintable(optionError));
         return 2;
     }
+    opentop::StartupProbe::apply(parser, &window, sinceMain);
     window.show();
     window.connectTo(settings, settings.kind == opentop::ConnectionSettings::Kind::Simulated
                                    ? known

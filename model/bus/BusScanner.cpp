@@ -13,14 +13,9 @@ namespace opentop {
 namespace {
 
 constexpr int kReadRequestBytes = 8; // id, function, address, count, CRC
-constexpr double kMarginMs = 3.0;    // scheduling and poll granularity on the master's side
+constexpr double kMarginMs = 2.0;    // scheduling on the master's side
 // A TCP gateway queues the request and forwards it on its own serial line.
 constexpr double kGatewayMs = 50.0;
-
-int replyBytes(const IdentifyRule& rule)
-{
-    return 5 + 2 * rule.count; // id, function, byte count, data, CRC
-}
 
 } // namespace
 
@@ -34,13 +29,11 @@ BusScanner::BusScanner(ModbusClient* client, const ProfileRegistry& registry, QO
 
 BusScanner::~BusScanner() = default;
 
-int BusScanner::defaultWaitMs(const ConnectionSettings& settings, const ProfileRegistry& registry)
+int BusScanner::defaultWaitMs(const ConnectionSettings& settings, int adapterLatencyMs)
 {
-    int longestReply = 0;
-    for (const Profile& p : registry.profiles())
-        longestReply = std::max(longestReply, replyBytes(p.identify));
     const double c = settings.charTimeMs();
-    double ms = kReadRequestBytes * c + kAnswerBudgetMs + longestReply * c + 3.5 * c + kMarginMs;
+    const double gap = settings.baud > 19200 ? 1.75 : 3.5 * c; // Modbus RTU's, as the drive keeps
+    double ms = kReadRequestBytes * c + gap + kAnswerBudgetMs + kMarginMs + adapterLatencyMs;
     if (settings.kind == ConnectionSettings::Kind::Tcp)
         ms += kGatewayMs;
     return std::clamp(int(std::ceil(ms)), kMinWaitMs, kMaxWaitMs);
@@ -59,7 +52,7 @@ void BusScanner::setWaitMs(int ms)
 
 int BusScanner::waitMs() const
 {
-    return m_waitMs > 0 ? m_waitMs : defaultWaitMs(m_client->settings(), m_registry);
+    return m_waitMs > 0 ? m_waitMs : defaultWaitMs(m_client->settings());
 }
 
 double BusScanner::elapsedMs() const
@@ -137,6 +130,10 @@ void BusScanner::handleReply(int profileIndex, bool confirming, const ModbusResu
         finish();
         return;
     }
+    // On a half-duplex line a late answer from the address before collides with this request:
+    // both frames are garbled and the address before looked silent. Ask it again, with time.
+    if (info.state == DeviceInfo::State::Garbled && !m_reasking)
+        askAgainLater(m_slave - 1);
     // A single corrupt frame may be noise; two drives answering at once garble every reply.
     const bool confirm = info.state == DeviceInfo::State::Garbled && !confirming;
     // A device that refuses this family's read may be of another family.
@@ -174,12 +171,21 @@ void BusScanner::noteLateAnswer(const ModbusResult& result)
         return;
     const bool known = std::any_of(m_devices.begin(), m_devices.end(),
                                    [sender](const DeviceInfo& d) { return d.slave == sender; });
-    if (sender < m_from || sender >= m_cursor || sender == m_slave || known ||
-        m_late.contains(sender))
+    if (sender == m_slave || known)
         return;
     qCDebug(lcModel) << "scan: late answer from" << sender << "while asking" << m_slave;
+    askAgainLater(sender);
+}
+
+void BusScanner::askAgainLater(int slave)
+{
+    // Only an address this pass has already judged silent.
+    const bool known = std::any_of(m_devices.begin(), m_devices.end(),
+                                   [slave](const DeviceInfo& d) { return d.slave == slave; });
+    if (slave < m_from || slave >= m_cursor || slave == m_slave || known || m_late.contains(slave))
+        return;
     ++m_lateAnswers;
-    m_late << sender;
+    m_late << slave;
 }
 
 void BusScanner::addressDone(DeviceInfo info)

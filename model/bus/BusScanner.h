@@ -28,16 +28,19 @@ public:
     // ModbusRequest refuses timeouts below 10 ms; shorter waits are raised to it.
     static constexpr int kMinWaitMs = 10;
     static constexpr int kMaxWaitMs = 5000;
-    // What a present device is allowed for its answer after the request (the T-net drives
-    // answer within a few ms).
+    // What a present device is allowed for its answer after the request and the 3.5 character
+    // gap: the DBU manual's T3 "initial value 10 ms" (11-1). A slower drive is found by the
+    // late-answer rescue, not by making every empty address wait longer.
     static constexpr double kAnswerBudgetMs = 10.0;
 
     BusScanner(ModbusClient* client, const ProfileRegistry& registry, QObject* parent = nullptr);
     ~BusScanner() override;
 
-    // Per-address wait for `settings`: request transmission + answer budget + the longest
-    // identify reply's transmission + 3.5 character gap + a small margin.
-    static int defaultWaitMs(const ConnectionSettings& settings, const ProfileRegistry& registry);
+    // Per-address wait for the first byte of a reply, from sending: the request's transmission
+    // + the 3.5 character gap + the answer budget + a small margin + what the adapter adds
+    // (a USB adapter without low latency holds received bytes up to its latency timer). Only
+    // the first byte has to come within it; the rest of a reply is read by the byte timeout.
+    static int defaultWaitMs(const ConnectionSettings& settings, int adapterLatencyMs = 0);
 
     // Range and wait for the next start(); waitMs 0 uses defaultWaitMs().
     void setRange(int from, int to);
@@ -58,7 +61,8 @@ public:
     int scannedCount() const { return m_done; }
     int total() const { return m_to - m_from + 1; }
     int requestsSent() const { return m_requests; }
-    // Drives that answered only after the wait and were asked again with a longer one.
+    // Addresses asked again with a longer wait: a reply from them came after their wait, or a
+    // garbled frame came while the next address was asked (a late reply colliding with it).
     int lateAnswers() const { return m_lateAnswers; }
     double elapsedMs() const;
     // Every address that answered, in machine number order.
@@ -73,6 +77,7 @@ private:
     void askProfile(int profileIndex, bool confirming);
     void handleReply(int profileIndex, bool confirming, const ModbusResult& result);
     void noteLateAnswer(const ModbusResult& result);
+    void askAgainLater(int slave);
     void addressDone(DeviceInfo info);
     void nextAddress();
     void finish();

@@ -61,6 +61,9 @@ TEST(SimDefectSpec, ParsesEveryForm)
               QStringList{QStringLiteral("config.stall_time")});
     EXPECT_TRUE(parse("clear")->clear);
     EXPECT_TRUE(parse("clear")->isEmpty());
+    EXPECT_DOUBLE_EQ(*parse("turnaround=14")->turnaroundMs, 14);
+    EXPECT_DOUBLE_EQ(*parse("turnaround=0.5")->turnaroundMs, 0.5);
+    EXPECT_EQ(parse("turnaround=14")->toString(), QStringLiteral("turnaround=14"));
 
     // Several at once, spaces allowed around the items.
     s = parse("firmware=1.4, max_speed=800 ,load=+40,nostick=a.b,nostick=0x10");
@@ -121,6 +124,9 @@ TEST(SimDefectSpec, EveryErrorNamesTheAllowedForm)
     EXPECT_NE(why("alarm=7@0.5ms").find("1500ms"), std::string::npos);
     EXPECT_NE(why("nostick=spno2 speed").find("register address"), std::string::npos);
     EXPECT_NE(why("nostore=0x12345").find("register address"), std::string::npos);
+    EXPECT_NE(why("turnaround=-1").find("0..1000"), std::string::npos);
+    EXPECT_NE(why("turnaround=1001").find("0..1000"), std::string::npos);
+    EXPECT_NE(why("turnaround=late").find("0..1000"), std::string::npos);
 }
 
 TEST(SimDefectSpec, OptionFormNeedsAMachineNumber)

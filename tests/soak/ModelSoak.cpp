@@ -53,7 +53,7 @@ bool ModelSoak::start(const QString& pty, QString* error)
     m_scanner->setRange(1, 247);
     // Four times the usual wait: this part measures monitoring, and on a loaded machine the
     // simulator's answers may come later than a real drive's.
-    m_scanner->setWaitMs(4 * BusScanner::defaultWaitMs(settings, registry));
+    m_scanner->setWaitMs(4 * BusScanner::defaultWaitMs(settings));
     connect(m_scanner.get(), &BusScanner::found, this,
             [this](const DeviceInfo& info) { m_drives->update(info); });
     connect(m_scanner.get(), &BusScanner::finished, this, [this] {

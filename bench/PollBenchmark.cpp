@@ -1,0 +1,140 @@
+#include "PollBenchmark.h"
+
+#include "BenchReport.h"
+#include "ModbusClient.h"
+#include "PlainModbusLoop.h"
+#include "RtuBackend.h"
+#include "SimulatorProcess.h"
+#include "StackPoller.h"
+#include "WireTiming.h"
+#include "profile/ProfileRegistry.h"
+
+namespace opentop {
+
+namespace {
+
+constexpr int kBlock = 17; // the DBU's most registers per read
+constexpr int kSlave = 1;
+
+const Profile& dbu()
+{
+    return *ProfileRegistry::builtIn().family(QStringLiteral("dbu"));
+}
+
+ConnectionSettings lineSettings(const QString& port, int baud)
+{
+    ConnectionSettings s;
+    s.kind = ConnectionSettings::Kind::Serial;
+    s.port = port;
+    s.baud = baud;
+    s.parity = 'N'; // ptys refuse E and O
+    return s;
+}
+
+// OpenTOP's stack on `port`; frameGapMs < 0 keeps the protocol's inter-frame gap.
+bool stackPoll(const ConnectionSettings& settings, double frameGapMs, const QStringList& names,
+               double seconds, StackPoller::Result* result, QString* error)
+{
+    auto backend = std::make_unique<RtuBackend>(settings);
+    backend->setFrameGapMs(frameGapMs);
+    ModbusClient client(std::move(backend), settings);
+    *error = client.openBlocking();
+    if (!error->isEmpty())
+        return false;
+    *result = StackPoller::run(&client, dbu(), kSlave, names, seconds);
+    if (result->transactions == 0 || result->failures > 0) {
+        *error = QStringLiteral("%1 of %2 block reads failed")
+                     .arg(result->failures)
+                     .arg(result->transactions + result->failures);
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+QString PollBenchmark::description() const
+{
+    return QStringLiteral("17-register reads: OpenTOP's stack against a plain libmodbus loop, "
+                          "and against the wire's limit at 19200 and 115200 bit/s");
+}
+
+bool PollBenchmark::run(const BenchEnvironment& env, BenchReport& report, QString* error)
+{
+    return stackOverhead(env, report, error) && wireFraction(env, 19200, report, error) &&
+           wireFraction(env, 115200, report, error);
+}
+
+bool PollBenchmark::stackOverhead(const BenchEnvironment& env, BenchReport& report, QString* error)
+{
+    SimulatorProcess sim;
+    if (!sim.start({QStringLiteral("--devices"), QStringLiteral("dbu200@%1").arg(kSlave)}, error))
+        return false;
+    int address = 0;
+    const QStringList names = StackPoller::fullBlock(dbu(), kBlock, &address);
+    if (names.isEmpty()) {
+        *error = QStringLiteral("the DBU profile has no read block of %1 registers").arg(kBlock);
+        return false;
+    }
+    report.note(QStringLiteral("poll: %1 (0x%2, %3 registers, %4 parameters) on a pty, no wire "
+                               "timing")
+                    .arg(names.first())
+                    .arg(address, 4, 16, QLatin1Char('0'))
+                    .arg(kBlock)
+                    .arg(names.size()));
+    PlainModbusLoop::PollResult reference;
+    {
+        PlainModbusLoop plain(sim.pty(), 115200); // closed again before the stack opens it
+        if (!plain.open(error))
+            return false;
+        reference = plain.poll(kSlave, address, kBlock, env.seconds);
+    }
+    if (reference.transactions == 0 || reference.errors > 0) {
+        *error = QStringLiteral("the plain libmodbus loop failed %1 of %2 reads")
+                     .arg(reference.errors)
+                     .arg(reference.transactions + reference.errors);
+        return false;
+    }
+    StackPoller::Result stack;
+    if (!stackPoll(lineSettings(sim.pty(), 115200), 0, names, env.seconds, &stack, error))
+        return false;
+    report.add(BenchFigure::plain(QStringLiteral("poll.plain_libmodbus"), reference.perSecond(),
+                                  QStringLiteral("1/s"), 0, QStringLiteral("reference")));
+    report.add(BenchFigure::plain(QStringLiteral("poll.stack"), stack.perSecond(),
+                                  QStringLiteral("1/s"), 0));
+    report.add(BenchFigure::atMost(
+        QStringLiteral("poll.stack_cost"), reference.perSecond() / stack.perSecond(),
+        QStringLiteral("x"), 1.10, 2, QStringLiteral("time per read against the plain loop")));
+    return true;
+}
+
+bool PollBenchmark::wireFraction(const BenchEnvironment& env, int baud, BenchReport& report,
+                                 QString* error)
+{
+    SimulatorProcess sim;
+    if (!sim.start({QStringLiteral("--devices"), QStringLiteral("dbu200@%1").arg(kSlave),
+                    QStringLiteral("--wire-timing"), QStringLiteral("--half-duplex"),
+                    QStringLiteral("--baud"), QString::number(baud)},
+                   error))
+        return false;
+    int address = 0;
+    const QStringList names = StackPoller::fullBlock(dbu(), kBlock, &address);
+    StackPoller::Result stack;
+    if (!stackPoll(lineSettings(sim.pty(), baud), -1, names, env.seconds, &stack, error))
+        return false;
+    // The simulator's default turnaround; gaps on both sides of the reply.
+    const WireTiming wire(baud, 'N', 2.0);
+    const double limitMs = wire.frameMs(8) + wire.gapMs() + wire.turnaroundMs() +
+                           wire.frameMs(5 + 2 * kBlock) + wire.gapMs();
+    const QString key = QStringLiteral("poll.wire_%1").arg(baud);
+    report.add(BenchFigure::plain(key, stack.perSecond(), QStringLiteral("1/s"), 1));
+    report.add(BenchFigure::plain(
+        key + QStringLiteral(".limit"), 1000.0 / limitMs, QStringLiteral("1/s"), 1,
+        QStringLiteral("%1 ms per read on the wire").arg(limitMs, 0, 'f', 2)));
+    report.add(BenchFigure::atLeast(key + QStringLiteral(".fraction"),
+                                    stack.perSecond() * limitMs / 1000.0, QStringLiteral("x"), 0.95,
+                                    3, QStringLiteral("of the wire's limit")));
+    return true;
+}
+
+} // namespace opentop

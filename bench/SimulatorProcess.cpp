@@ -1,0 +1,48 @@
+#include "SimulatorProcess.h"
+
+#include <QCoreApplication>
+
+namespace opentop {
+
+SimulatorProcess::~SimulatorProcess()
+{
+    stop();
+}
+
+void SimulatorProcess::stop()
+{
+    if (m_process.state() == QProcess::NotRunning)
+        return;
+    m_process.terminate();
+    if (!m_process.waitForFinished(5000))
+        m_process.kill();
+    m_process.waitForFinished(1000);
+}
+
+bool SimulatorProcess::start(const QStringList& arguments, QString* error)
+{
+    m_process.setProgram(QCoreApplication::applicationDirPath() + QStringLiteral("/opentop-sim"));
+    m_process.setArguments(arguments + QStringList{QStringLiteral("--quiet")});
+    m_process.start();
+    if (!m_process.waitForStarted(5000)) {
+        *error =
+            QStringLiteral("cannot start %1: %2").arg(m_process.program(), m_process.errorString());
+        return false;
+    }
+    for (;;) {
+        while (!m_process.canReadLine()) {
+            if (!m_process.waitForReadyRead(10000)) {
+                *error = QStringLiteral("opentop-sim did not get ready: %1")
+                             .arg(QString::fromLocal8Bit(m_process.readAllStandardError()));
+                return false;
+            }
+        }
+        const QString line = QString::fromLocal8Bit(m_process.readLine()).trimmed();
+        if (line.startsWith(QLatin1String("pty: ")))
+            m_pty = line.mid(5);
+        else if (line == QLatin1String("ready"))
+            return !m_pty.isEmpty();
+    }
+}
+
+} // namespace opentop
