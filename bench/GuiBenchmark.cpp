@@ -36,9 +36,10 @@ bool GuiBenchmark::runCase(const BenchEnvironment& env, int drives, int pollMs, 
                            BenchReport& report, QString* error)
 {
     SimulatorProcess sim;
+    // No wire timing: 16 drives at 10 Hz is more than a 115200 bit/s line carries (a sample is
+    // several block reads), and this measures the GUI, not the line.
     if (!sim.start({QStringLiteral("--devices"), QStringLiteral("dbu200@1-%1").arg(drives),
-                    QStringLiteral("--wire-timing"), QStringLiteral("--baud"),
-                    QStringLiteral("115200")},
+                    QStringLiteral("--baud"), QStringLiteral("115200")},
                    error))
         return false;
     QTemporaryDir config; // the user's settings are neither read nor changed
@@ -119,9 +120,10 @@ bool GuiBenchmark::runCase(const BenchEnvironment& env, int drives, int pollMs, 
     }
     report.add(BenchFigure::plain(key + QStringLiteral(".rss_mean"), rssSum / rssCount,
                                   QStringLiteral("MiB"), 0));
-    report.add(BenchFigure::plain(key + QStringLiteral(".slowest_drive"), slowest,
-                                  QStringLiteral("samples/s"), 2,
-                                  QStringLiteral("%1 errors over the run").arg(errors)));
+    // The load is only what it claims when every drive is sampled at the rate asked for.
+    report.add(BenchFigure::atLeast(key + QStringLiteral(".slowest_drive"), slowest,
+                                    QStringLiteral("samples/s"), 0.95 * 1000 / pollMs, 2,
+                                    QStringLiteral("%1 errors over the run").arg(errors)));
     return true;
 }
 

@@ -11,6 +11,7 @@
 #include <modbus.h>
 #include <poll.h>
 #include <unistd.h>
+#include <utility>
 
 namespace opentop {
 
@@ -131,14 +132,15 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
     if (timeoutMs <= 0)
         timeoutMs = m_settings.timeoutMs;
 
-    m_discardedReplyFrom = -1;
     awaitLateReplies(request);
     discardStaleInput(request);
     if (!keepFrameGap()) {
         result.error = ModbusError::Cancelled;
         return result;
     }
-    result.lateReplyFrom = m_discardedReplyFrom;
+    // Also a reply swallowed by the previous request's recovery: whoever asked that drive
+    // (a scan) hears of it with the next result.
+    result.lateReplyFrom = std::exchange(m_discardedReplyFrom, -1);
     const QByteArray raw = char(request.slave) + request.pdu();
     const QByteArray sent = txAdu(request);
     logFrame(true, sent, request, request.describe(), QString());
@@ -213,8 +215,11 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
     } else if (result.error == ModbusError::Ok || result.error == ModbusError::Exception) {
         m_checkedSinceOpen.insert(request.slave);
     }
-    if (result.error != ModbusError::Ok && result.error != ModbusError::Exception)
+    if (result.error != ModbusError::Ok && result.error != ModbusError::Exception) {
         recover(request, timeoutMs);
+        if (result.lateReplyFrom < 0)
+            result.lateReplyFrom = std::exchange(m_discardedReplyFrom, -1);
+    }
     return result;
 }
 

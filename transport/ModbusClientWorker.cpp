@@ -316,9 +316,16 @@ ModbusResult ModbusClientWorker::execute(State& s, const Item& item)
     const int retries =
         request.isBroadcast() ? 0 : s.retryPolicy.retriesFor(request.retries, s.settings.retries);
     ModbusResult result;
+    int lateFrom = -1; // a reply to an earlier request seen by any attempt (see below)
     for (int attempt = 1;; ++attempt) {
         result = s.backend->transact(request, timeoutMs);
         result.attempts = attempt;
+        // The frame taken in place of the answer names its sender; the drain after it may
+        // also have swallowed this request's own answer, which is no news.
+        if (result.error == ModbusError::WrongSlave && !result.reply.isEmpty())
+            lateFrom = quint8(result.reply.at(0));
+        else if (result.lateReplyFrom >= 0 && result.lateReplyFrom != request.slave)
+            lateFrom = result.lateReplyFrom;
         if (result.error == ModbusError::PortError && !s.backend->isOpen()) {
             s.open = false;
             if (!s.lostReported) {
@@ -346,6 +353,10 @@ ModbusResult ModbusClientWorker::execute(State& s, const Item& item)
     }
     if (!request.isBroadcast())
         s.retryPolicy.record(result);
+    // A retry that succeeded must not hide that another drive's late reply came meanwhile: a
+    // scan still running asks that drive again (BusScanner listens to every result).
+    if (result.lateReplyFrom < 0 && lateFrom != request.slave)
+        result.lateReplyFrom = lateFrom;
     return result;
 }
 

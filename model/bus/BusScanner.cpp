@@ -25,6 +25,12 @@ BusScanner::BusScanner(ModbusClient* client, const ProfileRegistry& registry, QO
     , m_registry(registry)
     , m_identifier(new DeviceIdentifier(client, registry, this))
 {
+    // A late reply can be taken by any request on the bus, not only the scan's: the program
+    // polls the drives it has found meanwhile. Every result is looked at.
+    connect(client, &ModbusClient::finished, this, [this](quint64 id, const ModbusResult& r) {
+        if (m_running && id != m_pendingId)
+            noteLateAnswer(r);
+    });
 }
 
 BusScanner::~BusScanner() = default;
