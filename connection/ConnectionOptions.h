@@ -15,6 +15,9 @@ class ConnectionOptions
 public:
     static void addTo(QCommandLineParser& parser);
     static QStringList names(); // the option names addTo() adds
+    // True when --rs485, --rts-polarity, --rts-delay or --low-latency is given: they apply to
+    // --port only, and fromParser() refuses them with anything else.
+    static bool hasSerialLineOptions(const QCommandLineParser& parser);
     // `fallbackSim`: the simulated bus to use when no connection is named (the GUI's default);
     // empty means a connection must be named.
     // The first wrong value among the connection options given (a range, a family, a SPEC),
