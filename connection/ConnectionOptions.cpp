@@ -18,8 +18,9 @@ QString tr(const char* text)
 const QStringList kSerialLineOptions = {QStringLiteral("rs485"), QStringLiteral("rts-polarity"),
                                         QStringLiteral("rts-delay"), QStringLiteral("low-latency")};
 
-// The serial line's RS-485 and low-latency options into `s`; the first wrong value's message.
-QString readSerialLine(const QCommandLineParser& parser, ConnectionSettings* s)
+} // namespace
+
+QString ConnectionOptions::readSerialLine(const QCommandLineParser& parser, ConnectionSettings* s)
 {
     auto value = [&](const char* name) {
         return parser.value(QString::fromLatin1(name)).trimmed().toLower();
@@ -66,8 +67,6 @@ QString readSerialLine(const QCommandLineParser& parser, ConnectionSettings* s)
     }
     return QString();
 }
-
-} // namespace
 
 void ConnectionOptions::addTo(QCommandLineParser& parser)
 {

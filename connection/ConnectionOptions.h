@@ -25,6 +25,11 @@ public:
     static QString valueError(const QCommandLineParser& parser);
     static std::optional<ConnectionSettings> fromParser(const QCommandLineParser& parser,
                                                         const QString& fallbackSim, QString* error);
+
+private:
+    // The serial line's RS-485 and low-latency options into `s`; the first wrong value's
+    // message, empty when they are right (and given with --port).
+    static QString readSerialLine(const QCommandLineParser& parser, ConnectionSettings* s);
 };
 
 } // namespace opentop
