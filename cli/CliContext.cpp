@@ -98,6 +98,8 @@ bool CliContext::connectBus()
         m_client.reset();
         return false;
     }
+    if (m_parser.isSet(QStringLiteral("trace")) && !m_client->lineReport().isEmpty())
+        m_err << tr("serial line: %1").arg(m_client->lineReport().text()) << Qt::endl;
     if (m_settings.kind == ConnectionSettings::Kind::Simulated) {
         for (const BusSpecEntry& e :
              BusSpec::parse(m_settings.simSpec, nullptr).value_or(QVector<BusSpecEntry>())) {

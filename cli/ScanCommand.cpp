@@ -177,6 +177,7 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
                          .arg(context.client()->describe())
                          .arg(scanner.waitMs())
                   << Qt::endl;
+    printLineReport(context);
     Progress progress{context.err(), isTerminal(context.err())};
     QObject::connect(&scanner, &BusScanner::found, &scanner, [&progress](const DeviceInfo& info) {
         progress.found += info.state == DeviceInfo::State::Absent ? 0 : 1;
@@ -260,6 +261,21 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
         return ExitCommunication;
     }
     return ExitOk;
+}
+
+void ScanCommand::printLineReport(CliContext& context)
+{
+    const SerialLineReport report = context.client()->lineReport();
+    if (report.isEmpty())
+        return;
+    context.err() << tr("Serial line: %1").arg(report.text()) << Qt::endl;
+    const QString warning = report.latencyWarning();
+    if (!warning.isEmpty())
+        context.err() << tr("warning: %1 The scan waits up to %2 ms longer per machine number "
+                            "because of it.")
+                             .arg(warning)
+                             .arg(report.adapterLatencyMs())
+                      << Qt::endl;
 }
 
 void ScanCommand::completeVariants(CliContext& context, QVector<DeviceInfo>* devices)

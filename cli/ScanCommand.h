@@ -35,6 +35,9 @@ private:
         int waitMs = 0; // 0: derived from the baud rate
     };
     static bool parseRange(CliContext& context, const QStringList& args, Range* range);
+    // What the serial driver accepted (RS-485 direction, low latency), and a warning when the
+    // adapter holds replies back.
+    static void printLineReport(CliContext& context);
     // Fills in variants the drives do not report (--variant, the simulated bus list).
     static void completeVariants(CliContext& context, QVector<DeviceInfo>* devices);
     static void printTable(CliContext& context, const QVector<DeviceInfo>& devices,

@@ -14,7 +14,59 @@ QString tr(const char* text)
 {
     return QCoreApplication::translate("opentop::ConnectionOptions", text);
 }
+
+const QStringList kSerialLineOptions = {QStringLiteral("rs485"), QStringLiteral("rts-polarity"),
+                                        QStringLiteral("rts-delay"), QStringLiteral("low-latency")};
+
 } // namespace
+
+QString ConnectionOptions::readSerialLine(const QCommandLineParser& parser, ConnectionSettings* s)
+{
+    auto value = [&](const char* name) {
+        return parser.value(QString::fromLatin1(name)).trimmed().toLower();
+    };
+    if (parser.isSet(QStringLiteral("rs485")) &&
+        !ConnectionSettings::rs485FromName(value("rs485"), &s->rs485))
+        return tr("--rs485 %1: use off (the adapter switches direction itself), auto, kernel "
+                  "or rts")
+            .arg(parser.value(QStringLiteral("rs485")));
+    if (parser.isSet(QStringLiteral("rts-polarity"))) {
+        const QString polarity = value("rts-polarity");
+        if (polarity != QLatin1String("high") && polarity != QLatin1String("low"))
+            return tr("--rts-polarity %1: use high or low (the RTS level while sending)")
+                .arg(parser.value(QStringLiteral("rts-polarity")));
+        s->rtsHighWhileSending = polarity == QLatin1String("high");
+    }
+    if (parser.isSet(QStringLiteral("rts-delay"))) {
+        bool ok = false;
+        s->rtsDelayUs = value("rts-delay").toInt(&ok);
+        if (!ok || s->rtsDelayUs < 0 || s->rtsDelayUs > ConnectionSettings::kMaxRtsDelayUs)
+            return tr("--rts-delay %1: use 0–%2 µs (0: the driver's or libmodbus' own delay)")
+                .arg(parser.value(QStringLiteral("rts-delay")))
+                .arg(ConnectionSettings::kMaxRtsDelayUs);
+    }
+    if (parser.isSet(QStringLiteral("low-latency"))) {
+        const QString on = value("low-latency");
+        if (on != QLatin1String("on") && on != QLatin1String("off"))
+            return tr("--low-latency %1: use on or off")
+                .arg(parser.value(QStringLiteral("low-latency")));
+        s->lowLatency = on == QLatin1String("on");
+    }
+    if (s->kind == ConnectionSettings::Kind::Serial)
+        return QString();
+    for (const QString& name : kSerialLineOptions) {
+        if (!parser.isSet(name))
+            continue;
+        if (parser.isSet(QStringLiteral("tcp")))
+            return tr("--%1 applies to a serial port (--port), not to a Modbus TCP gateway "
+                      "(--tcp)")
+                .arg(name);
+        if (parser.isSet(QStringLiteral("sim")))
+            return tr("--%1 applies to a serial port (--port), not to a simulated bus").arg(name);
+        return tr("--%1 applies to a serial port only: give it with --port PATH").arg(name);
+    }
+    return QString();
+}
 
 void ConnectionOptions::addTo(QCommandLineParser& parser)
 {
@@ -37,14 +89,40 @@ void ConnectionOptions::addTo(QCommandLineParser& parser)
          tr("Extra attempts after no reply or a garbled one, 0–10 (default 3; 2 more while "
             "the line is noisy)."),
          tr("N")},
+        {QStringLiteral("rs485"),
+         tr("Who switches the RS-485 direction (serial port only): off (default: the adapter "
+            "itself, as USB–RS-485 adapters do), kernel (the driver's RS-485 mode), rts (RTS "
+            "from the program) or auto (kernel where the driver has it, else rts)."),
+         tr("MODE")},
+        {QStringLiteral("rts-polarity"),
+         tr("RTS level while sending with --rs485 kernel, rts or auto: high (default) or low."),
+         tr("high|low")},
+        {QStringLiteral("rts-delay"),
+         tr("RTS delay before and after sending in µs, 0–100000 (default 0: the driver's, or "
+            "libmodbus' one character time; the kernel rounds up to whole ms)."),
+         tr("US")},
+        {QStringLiteral("low-latency"),
+         tr("Ask the serial driver to pass received bytes on at once (USB adapters otherwise "
+            "hold them up to 16 ms): on (default) or off."),
+         tr("on|off")},
     });
+}
+
+bool ConnectionOptions::hasSerialLineOptions(const QCommandLineParser& parser)
+{
+    for (const QString& name : kSerialLineOptions)
+        if (parser.isSet(name))
+            return true;
+    return false;
 }
 
 QStringList ConnectionOptions::names()
 {
-    return {QStringLiteral("port"),      QStringLiteral("tcp"),     QStringLiteral("sim"),
-            QStringLiteral("family"),    QStringLiteral("baud"),    QStringLiteral("parity"),
-            QStringLiteral("stop-bits"), QStringLiteral("timeout"), QStringLiteral("retries")};
+    return QStringList{
+               QStringLiteral("port"),      QStringLiteral("tcp"),     QStringLiteral("sim"),
+               QStringLiteral("family"),    QStringLiteral("baud"),    QStringLiteral("parity"),
+               QStringLiteral("stop-bits"), QStringLiteral("timeout"), QStringLiteral("retries")} +
+           kSerialLineOptions;
 }
 
 QString ConnectionOptions::valueError(const QCommandLineParser& parser)
@@ -140,6 +218,9 @@ std::optional<ConnectionSettings> ConnectionOptions::fromParser(const QCommandLi
                             .arg(parser.value(QStringLiteral("parity"))));
         s.parity = p.at(0).toLatin1();
     }
+    const QString line = readSerialLine(parser, &s);
+    if (!line.isEmpty())
+        return fail(line);
     const QString invalid = s.validate();
     if (!invalid.isEmpty())
         return fail(invalid);

@@ -15,6 +15,9 @@ class ConnectionOptions
 public:
     static void addTo(QCommandLineParser& parser);
     static QStringList names(); // the option names addTo() adds
+    // True when --rs485, --rts-polarity, --rts-delay or --low-latency is given: they apply to
+    // --port only, and fromParser() refuses them with anything else.
+    static bool hasSerialLineOptions(const QCommandLineParser& parser);
     // `fallbackSim`: the simulated bus to use when no connection is named (the GUI's default);
     // empty means a connection must be named.
     // The first wrong value among the connection options given (a range, a family, a SPEC),
@@ -22,6 +25,11 @@ public:
     static QString valueError(const QCommandLineParser& parser);
     static std::optional<ConnectionSettings> fromParser(const QCommandLineParser& parser,
                                                         const QString& fallbackSim, QString* error);
+
+private:
+    // The serial line's RS-485 and low-latency options into `s`; the first wrong value's
+    // message, empty when they are right (and given with --port).
+    static QString readSerialLine(const QCommandLineParser& parser, ConnectionSettings* s);
 };
 
 } // namespace opentop

@@ -41,6 +41,18 @@ QString ConnectionSettings::validate() const
                             "Byte timeout %1 ms is not allowed: use 1–10000 ms, or 0 to "
                             "derive it from the baud rate.")
                             .arg(byteTimeoutMs);
+        if (rs485Name(rs485).isEmpty())
+            problems << QCoreApplication::translate(
+                            "opentop::Transport",
+                            "RS-485 mode %1 is not supported: use off, auto, kernel or rts.")
+                            .arg(int(rs485));
+        if (rtsDelayUs < 0 || rtsDelayUs > kMaxRtsDelayUs)
+            problems << QCoreApplication::translate(
+                            "opentop::Transport",
+                            "RTS delay %1 µs is not allowed: use 0–%2 µs (0: the driver's or "
+                            "libmodbus' own).")
+                            .arg(rtsDelayUs)
+                            .arg(kMaxRtsDelayUs);
         break;
     case Kind::Tcp:
         if (host.trimmed().isEmpty())
@@ -74,19 +86,56 @@ QString ConnectionSettings::validate() const
 QString ConnectionSettings::describe() const
 {
     switch (kind) {
-    case Kind::Serial:
-        return QStringLiteral("%1 %2 %3%4%5")
-            .arg(port)
-            .arg(baud)
-            .arg(dataBits)
-            .arg(QLatin1Char(parity))
-            .arg(stopBits);
+    case Kind::Serial: {
+        QString text = QStringLiteral("%1 %2 %3%4%5")
+                           .arg(port)
+                           .arg(baud)
+                           .arg(dataBits)
+                           .arg(QLatin1Char(parity))
+                           .arg(stopBits);
+        const ConnectionSettings defaults;
+        if (rs485 != defaults.rs485)
+            text += QStringLiteral(" rs485=") + rs485Name(rs485);
+        if (rtsHighWhileSending != defaults.rtsHighWhileSending)
+            text += QStringLiteral(" rts=low");
+        if (rtsDelayUs != defaults.rtsDelayUs)
+            text += QStringLiteral(" rts-delay=%1us").arg(rtsDelayUs);
+        if (lowLatency != defaults.lowLatency)
+            text += QStringLiteral(" low-latency=off");
+        return text;
+    }
     case Kind::Tcp:
         return QStringLiteral("tcp %1:%2").arg(host).arg(tcpPort);
     case Kind::Simulated:
         return QStringLiteral("sim %1").arg(simSpec);
     }
     return QString();
+}
+
+QString ConnectionSettings::rs485Name(Rs485 mode)
+{
+    switch (mode) {
+    case Rs485::Off:
+        return QStringLiteral("off");
+    case Rs485::Auto:
+        return QStringLiteral("auto");
+    case Rs485::Kernel:
+        return QStringLiteral("kernel");
+    case Rs485::Rts:
+        return QStringLiteral("rts");
+    }
+    return QString();
+}
+
+bool ConnectionSettings::rs485FromName(const QString& name, Rs485* mode)
+{
+    for (Rs485 m : {Rs485::Off, Rs485::Auto, Rs485::Kernel, Rs485::Rts}) {
+        if (name.trimmed().compare(rs485Name(m), Qt::CaseInsensitive) == 0) {
+            *mode = m;
+            return true;
+        }
+    }
+    return false;
 }
 
 double ConnectionSettings::charTimeMs() const

@@ -14,6 +14,15 @@ struct ConnectionSettings
         Simulated
     };
 
+    // Who switches an RS-485 transceiver between sending and receiving.
+    enum class Rs485
+    {
+        Off,    // the adapter itself (USB–RS-485 adapters do): the driver's state is left alone
+        Auto,   // the kernel's RS-485 mode if the driver has it, else RTS from the program
+        Kernel, // the kernel's RS-485 mode (TIOCSRS485), for on-board RS-485 UARTs
+        Rts     // RTS toggled by libmodbus around each request
+    };
+
     Kind kind = Kind::Serial;
     // Serial (libmodbus RTU).
     QString port;      // /dev/ttyUSB0, a pty path, COM3 ...
@@ -21,6 +30,10 @@ struct ConnectionSettings
     char parity = 'N'; // 'N', 'E', 'O'
     int dataBits = 8;
     int stopBits = 1;
+    Rs485 rs485 = Rs485::Off;
+    bool rtsHighWhileSending = true; // RTS level while sending (Kernel, Rts, Auto)
+    int rtsDelayUs = 0;              // before and after sending; 0: libmodbus' or the driver's own
+    bool lowLatency = true;          // ask the driver to pass received bytes on at once
     // Modbus TCP gateway.
     QString host = QStringLiteral("127.0.0.1");
     int tcpPort = 502;
@@ -35,7 +48,15 @@ struct ConnectionSettings
 
     // Empty when the settings are usable; otherwise what is wrong and what is allowed.
     QString validate() const;
-    QString describe() const; // "/dev/ttyUSB0 19200 8N1", "tcp 10.0.0.5:502", "sim dbu200@1"
+    // "/dev/ttyUSB0 19200 8N1", "tcp 10.0.0.5:502", "sim dbu200@1"; the serial line's RS-485
+    // and low-latency settings only where they differ from the defaults
+    // ("/dev/ttyS1 19200 8N1 rs485=kernel rts=low rts-delay=500us low-latency=off").
+    QString describe() const;
+    // The command line's names: "off", "auto", "kernel", "rts"; fromName() is false when
+    // `name` is none of them.
+    static QString rs485Name(Rs485 mode);
+    static bool rs485FromName(const QString& name, Rs485* mode);
+    static constexpr int kMaxRtsDelayUs = 100000; // the kernel's limit too (100 ms)
     // Time one character takes on the wire (start + data + parity + stop bits), in ms.
     double charTimeMs() const;
     int effectiveByteTimeoutMs() const;

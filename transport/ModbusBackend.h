@@ -2,6 +2,7 @@
 
 #include "ModbusRequest.h"
 #include "ModbusResult.h"
+#include "SerialLineReport.h"
 #include "TrafficEntry.h"
 
 #include <QString>
@@ -26,6 +27,9 @@ public:
     // returns Ok without waiting for a reply, after keeping the bus quiet for the turnaround.
     virtual ModbusResult transact(const ModbusRequest& request, int timeoutMs) = 0;
     virtual QString describe() const = 0;
+    // What the serial driver accepted when the port was opened (RS-485 direction, low
+    // latency); empty for a backend without a serial line. Worker thread only.
+    virtual SerialLineReport lineReport() const { return {}; }
 
     // May be called from any thread (the pointer is atomic).
     void setTrafficLog(TrafficLog* log) { m_log = log; }

@@ -47,6 +47,16 @@ bool ModbusClient::isOpen() const
     return m_worker->isOpen();
 }
 
+SerialLineReport ModbusClient::lineReport() const
+{
+    return m_worker->lineReport();
+}
+
+int ModbusClient::adapterLatencyMs() const
+{
+    return m_worker->lineReport().adapterLatencyMs();
+}
+
 ModbusClient::RequestId ModbusClient::submit(const ModbusRequest& request, QObject* context,
                                              Callback callback)
 {

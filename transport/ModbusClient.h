@@ -3,6 +3,7 @@
 #include "ConnectionSettings.h"
 #include "ModbusRequest.h"
 #include "ModbusResult.h"
+#include "SerialLineReport.h"
 
 #include <QObject>
 #include <QPointer>
@@ -40,6 +41,15 @@ public:
     QString openBlocking();
     void close();
     bool isOpen() const;
+    // What the serial driver accepted at the last successful open (RS-485 direction, low
+    // latency), read back; empty before that and for TCP or simulated buses. Any thread.
+    SerialLineReport lineReport() const;
+    // How long the adapter may hold a reply's bytes before passing them on, in ms, to add to
+    // per-request waits (a scan's wait per machine number): 0 when there is nothing to allow
+    // for (not open yet, not a serial line, not a UART, low latency on); the adapter's latency
+    // timer when sysfs has one above 1 ms; 16 ms for a USB adapter that refused low latency.
+    // Same rules as SerialLineReport::adapterLatencyMs(). Any thread.
+    int adapterLatencyMs() const;
 
     // Queues a request. `callback` runs on `context`'s thread (this client's when null);
     // finished() is emitted as well. Invalid requests are answered with InvalidRequest, never

@@ -45,6 +45,8 @@ struct ModbusClientWorker::State
     std::unique_ptr<ModbusBackend> backend;
     ConnectionSettings settings;
     QString description;
+    mutable std::mutex reportMutex;
+    SerialLineReport lineReport; // copied from the backend after each open
 
     std::mutex deliveryMutex; // held while posting to the client, so it can be cut off
     ModbusClient* client = nullptr;
@@ -137,6 +139,12 @@ void ModbusClientWorker::close()
 bool ModbusClientWorker::isOpen() const
 {
     return m_state->open;
+}
+
+SerialLineReport ModbusClientWorker::lineReport() const
+{
+    std::lock_guard<std::mutex> lock(m_state->reportMutex);
+    return m_state->lineReport;
 }
 
 QString ModbusClientWorker::describe() const
@@ -245,6 +253,10 @@ void ModbusClientWorker::run(std::shared_ptr<State> state)
                 if (!ok && error.isEmpty())
                     error = QCoreApplication::translate("opentop::Transport", "cannot open %1")
                                 .arg(s.description);
+                if (ok) {
+                    std::lock_guard<std::mutex> reportLock(s.reportMutex);
+                    s.lineReport = s.backend->lineReport();
+                }
                 s.open = ok;
                 s.lostReported = false;
                 if (control.done)

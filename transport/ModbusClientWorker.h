@@ -33,6 +33,8 @@ public:
     void close();
     bool isOpen() const;
     QString describe() const;
+    // The backend's line report as of the last successful open; any thread.
+    SerialLineReport lineReport() const;
 
     // Returns the request's id. Its result goes to `promise` (on this thread) and to
     // ModbusClient::deliver (on the client's).

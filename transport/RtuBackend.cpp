@@ -1,6 +1,8 @@
 #include "RtuBackend.h"
 
+#include "IoctlSerialDriver.h"
 #include "RtuFrame.h"
+#include "SerialSysfs.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -49,11 +51,18 @@ bool RtuBackend::open(QString* error)
         return false;
     }
     m_lock.makeExclusive(descriptor());
+    IoctlSerialDriver driver(descriptor(), context());
+    m_lineReport = m_line.apply(driver, settings(), SerialSysfs(settings().port));
     return true;
 }
 
 void RtuBackend::close()
 {
+    if (descriptor() >= 0) {
+        IoctlSerialDriver driver(descriptor(), context());
+        m_line.restore(driver);
+    }
+    m_lineReport = SerialLineReport();
     LibmodbusBackend::close();
     m_lock.release();
 }

@@ -2,6 +2,7 @@
 
 #include "LibmodbusBackend.h"
 #include "PortLock.h"
+#include "SerialLineSetup.h"
 
 namespace opentop {
 
@@ -15,10 +16,14 @@ public:
 
     // Locks the port first (PortLock: flock, UUCP lock file, then exclusive mode), so that a
     // second OpenTOP or another program on the same port is refused, naming the holder, before
-    // anything touches the line; the lock goes with the port (and with the process).
+    // anything touches the line; the lock goes with the port (and with the process). Then sets
+    // the line's RS-485 direction control and low latency (SerialLineSetup): what the driver
+    // took is lineReport(); what it refused does not fail the open.
     bool open(QString* error) override;
+    // Puts the driver's RS-485 and low-latency settings back as they were found.
     void close() override;
     QString describe() const override;
+    SerialLineReport lineReport() const override { return m_lineReport; }
     // The T-net manual's broadcast gap T2 > C3.5 + 5 ms (DBU manual 11-1): the next whole
     // millisecond above 3.5 character times + 5 ms, at least 10 ms (the manual's C3.5 is 4.0 ms at
     // 9600 bit/s and 2.5 ms at 19200, more than 3.5 character times of 8N1).
@@ -40,6 +45,8 @@ protected:
 
 private:
     PortLock m_lock;
+    SerialLineSetup m_line;
+    SerialLineReport m_lineReport;
 };
 
 } // namespace opentop

@@ -75,8 +75,11 @@ int main(int argc, char* argv[])
     // simulated bus, so that the program can be tried without hardware.
     bool remembered = false;
     opentop::ConnectionSettings settings = opentop::ConnectionDialog::remembered(&remembered);
+    // Serial-line options without --port are refused by fromParser(), never silently dropped.
     const bool named = parser.isSet(QStringLiteral("sim")) ||
-                       parser.isSet(QStringLiteral("port")) || parser.isSet(QStringLiteral("tcp"));
+                       parser.isSet(QStringLiteral("port")) ||
+                       parser.isSet(QStringLiteral("tcp")) ||
+                       opentop::ConnectionOptions::hasSerialLineOptions(parser);
     QString error;
     if (named || !remembered) {
         const auto parsed = opentop::ConnectionOptions::fromParser(

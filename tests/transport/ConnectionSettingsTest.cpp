@@ -93,3 +93,48 @@ TEST(ConnectionSettingsTest, DescribeAndTiming)
     tcp.host = QStringLiteral("10.0.0.5");
     EXPECT_EQ(tcp.describe(), QStringLiteral("tcp 10.0.0.5:502"));
 }
+
+TEST(ConnectionSettingsTest, SerialLineSettingsAreCheckedAndNamed)
+{
+    ConnectionSettings s = serial();
+    EXPECT_EQ(s.rs485, ConnectionSettings::Rs485::Off);
+    EXPECT_TRUE(s.rtsHighWhileSending);
+    EXPECT_EQ(s.rtsDelayUs, 0);
+    EXPECT_TRUE(s.lowLatency);
+    s.rtsDelayUs = ConnectionSettings::kMaxRtsDelayUs;
+    EXPECT_EQ(s.validate(), QString());
+    s.rtsDelayUs = -1;
+    EXPECT_TRUE(s.validate().contains(QStringLiteral("0–100000 µs"))) << qPrintable(s.validate());
+    s.rtsDelayUs = 100001;
+    EXPECT_TRUE(s.validate().contains(QStringLiteral("0–100000 µs"))) << qPrintable(s.validate());
+    s = serial();
+    s.rs485 = ConnectionSettings::Rs485(7); // e.g. from a damaged settings file
+    EXPECT_TRUE(s.validate().contains(QStringLiteral("use off, auto, kernel or rts")))
+        << qPrintable(s.validate());
+
+    ConnectionSettings::Rs485 mode = ConnectionSettings::Rs485::Off;
+    for (const char* name : {"off", "auto", "kernel", "rts"}) {
+        ASSERT_TRUE(ConnectionSettings::rs485FromName(QString::fromLatin1(name), &mode)) << name;
+        EXPECT_EQ(ConnectionSettings::rs485Name(mode), QString::fromLatin1(name));
+    }
+    EXPECT_TRUE(ConnectionSettings::rs485FromName(QStringLiteral(" Kernel "), &mode));
+    EXPECT_EQ(mode, ConnectionSettings::Rs485::Kernel);
+    EXPECT_FALSE(ConnectionSettings::rs485FromName(QStringLiteral("on"), &mode));
+    EXPECT_EQ(mode, ConnectionSettings::Rs485::Kernel); // unchanged
+}
+
+TEST(ConnectionSettingsTest, DescribeNamesTheSerialLineSettingsOnlyWhenNotDefault)
+{
+    ConnectionSettings s = serial();
+    EXPECT_EQ(s.describe(), QStringLiteral("/dev/ttyUSB0 19200 8N1"));
+    s.rs485 = ConnectionSettings::Rs485::Kernel;
+    EXPECT_EQ(s.describe(), QStringLiteral("/dev/ttyUSB0 19200 8N1 rs485=kernel"));
+    s.rtsHighWhileSending = false;
+    s.rtsDelayUs = 500;
+    s.lowLatency = false;
+    EXPECT_EQ(s.describe(), QStringLiteral("/dev/ttyUSB0 19200 8N1 rs485=kernel rts=low "
+                                           "rts-delay=500us low-latency=off"));
+    // Not part of a TCP or simulated connection.
+    s.kind = ConnectionSettings::Kind::Tcp;
+    EXPECT_EQ(s.describe(), QStringLiteral("tcp 127.0.0.1:502"));
+}

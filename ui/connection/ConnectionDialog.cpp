@@ -2,6 +2,7 @@
 
 #include "SerialPortList.h"
 #include "bus/BusSpec.h"
+#include "connection/SerialLineFields.h"
 #include "profile/ProfileRegistry.h"
 
 #include <QButtonGroup>
@@ -170,6 +171,7 @@ QWidget* ConnectionDialog::makeSerialPage()
     for (QComboBox* c : {m_baud, m_parity, m_stopBits})
         connect(c, qOverload<int>(&QComboBox::activated), this,
                 [this] { m_family->setCurrentIndex(0); });
+    m_line = new SerialLineFields(page, form);
     return page;
 }
 
@@ -263,6 +265,7 @@ ConnectionSettings ConnectionDialog::settings() const
     s.baud = m_baud->currentData().toInt();
     s.parity = m_parity->currentData().toString().at(0).toLatin1();
     s.stopBits = m_stopBits->currentData().toInt();
+    m_line->applyTo(&s);
     s.host = m_host->text().trimmed();
     s.tcpPort = m_tcpPort->value();
     s.simSpec = m_simSpec->text().trimmed();
@@ -287,6 +290,7 @@ void ConnectionDialog::setSettings(const ConnectionSettings& s)
     selectData(m_baud, s.baud);
     selectData(m_parity, QString(QLatin1Char(s.parity)));
     selectData(m_stopBits, s.stopBits);
+    m_line->setSettings(s);
     m_host->setText(s.host);
     m_tcpPort->setValue(s.tcpPort);
     m_simSpec->setText(s.simSpec);
@@ -361,6 +365,7 @@ ConnectionSettings ConnectionDialog::remembered(bool* found)
     const QString parity = q.value(key("parity"), QString(QLatin1Char(s.parity))).toString();
     s.parity = parity.isEmpty() ? 'N' : parity.at(0).toLatin1();
     s.stopBits = q.value(key("stopBits"), s.stopBits).toInt();
+    SerialLineFields::recall(q, &s);
     s.host = q.value(key("host"), s.host).toString();
     s.tcpPort = q.value(key("tcpPort"), s.tcpPort).toInt();
     s.simSpec = q.value(key("simSpec"), QStringLiteral("dbu200@1,dbu400@150,dcpid@7")).toString();
@@ -377,6 +382,7 @@ void ConnectionDialog::remember(const ConnectionSettings& s)
     q.setValue(key("baud"), s.baud);
     q.setValue(key("parity"), QString(QLatin1Char(s.parity)));
     q.setValue(key("stopBits"), s.stopBits);
+    SerialLineFields::remember(q, s);
     q.setValue(key("host"), s.host);
     q.setValue(key("tcpPort"), s.tcpPort);
     q.setValue(key("simSpec"), s.simSpec);

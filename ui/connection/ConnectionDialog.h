@@ -14,6 +14,8 @@ class QToolButton;
 
 namespace opentop {
 
+class SerialLineFields;
+
 // Chooses how to reach the bus: a serial port (USB–RS-485 adapter or a typed pty path), a
 // Modbus TCP gateway, or a simulated bus. Starts with the settings used last time (QSettings,
 // keys under "connection/") and remembers the accepted ones. Input is checked on OK; invalid
@@ -61,6 +63,7 @@ private:
     QComboBox* m_baud = nullptr;
     QComboBox* m_parity = nullptr;
     QComboBox* m_stopBits = nullptr;
+    SerialLineFields* m_line = nullptr; // RS-485 direction control and low latency
     QLineEdit* m_host = nullptr;
     QSpinBox* m_tcpPort = nullptr;
     QLineEdit* m_simSpec = nullptr;

@@ -1,5 +1,6 @@
 #include "main/ConnectionStatus.h"
 
+#include "SerialLineReport.h"
 #include "widgets/StatusLight.h"
 
 #include <QLabel>
@@ -38,11 +39,25 @@ void ConnectionStatus::setText(const QString& text, bool problem)
     // A port error can be several long lines: the status bar shows the first, shortened, so
     // that it never widens the window; the whole text is in the tooltip.
     const QString first = text.section(QLatin1Char('\n'), 0, 0);
-    m_label->setText(m_label->fontMetrics().elidedText(first, Qt::ElideRight, 520));
+    // Measured in the font it will have: a problem is shown bold (the style sheet below).
+    QFont font = m_label->font();
+    font.setBold(problem);
+    m_label->setText(QFontMetrics(font).elidedText(first, Qt::ElideRight, 520));
     m_label->setToolTip(text);
     m_label->setStyleSheet(problem ? QStringLiteral("color: white; background: #b01c1c; "
                                                     "font-weight: bold; padding: 0 6px;")
                                    : QString());
+}
+
+void ConnectionStatus::setConnected(const QString& description, const SerialLineReport& report)
+{
+    QString text = tr("Connected: %1").arg(description);
+    if (!report.isEmpty())
+        text += tr(" — %1").arg(report.text());
+    const QString warning = report.latencyWarning();
+    if (!warning.isEmpty())
+        text += QLatin1Char('\n') + warning;
+    setText(text, report.direction == SerialLineReport::Direction::Unavailable);
 }
 
 void ConnectionStatus::setLinkUp(bool up, const QString& why)

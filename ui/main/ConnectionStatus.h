@@ -9,6 +9,7 @@ class QStatusBar;
 namespace opentop {
 
 class StatusLight;
+struct SerialLineReport;
 
 // The connection in the window's status bar: the marker of a simulated bus, the link's light
 // and the connection's state in one line.
@@ -22,6 +23,9 @@ public:
     void showIn(QStatusBar* bar);
     // One shortened line, red when something is wrong; the whole text in the tooltip.
     void setText(const QString& text, bool problem);
+    // "Connected: DESCRIPTION — what the serial driver accepted", and the adapter's latency
+    // warning in the tooltip; red when the RS-485 direction control asked for is not available.
+    void setConnected(const QString& description, const SerialLineReport& report);
     // Green only while the link is up.
     void setLinkUp(bool up, const QString& why);
     void setSimulated(bool simulated);

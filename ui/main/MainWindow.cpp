@@ -326,10 +326,11 @@ void MainWindow::onOpened(bool ok, const QString& error)
         refuseConnection(m_settings, error);
         return;
     }
-    setConnectionText(m_settings.kind == ConnectionSettings::Kind::Simulated
-                          ? tr("Connected: %1 (simulated, no hardware)").arg(m_client->describe())
-                          : tr("Connected: %1").arg(m_client->describe()),
-                      false);
+    if (m_settings.kind == ConnectionSettings::Kind::Simulated)
+        setConnectionText(tr("Connected: %1 (simulated, no hardware)").arg(m_client->describe()),
+                          false);
+    else // with what the serial driver accepted
+        m_status->setConnected(m_client->describe(), m_client->lineReport());
     m_poller->start();
     identifyKnown();
     if (m_fixedLineScanPending && m_panel) {

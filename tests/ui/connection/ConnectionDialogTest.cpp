@@ -186,3 +186,42 @@ TEST_F(ConnectionDialogTest, EveryLabelWithAMnemonicHasABuddySoNoAmpersandShows)
     ASSERT_NE(port, nullptr);
     EXPECT_EQ(port->buddy(), dialog.findChild<QComboBox*>(QStringLiteral("port")));
 }
+
+TEST_F(ConnectionDialogTest, Rs485AndLowLatencyRoundTripAndApplyOnlyWhereTheyMatter)
+{
+    ConnectionSettings serial;
+    serial.port = QStringLiteral("/dev/ttyS1");
+    serial.rs485 = ConnectionSettings::Rs485::Rts;
+    serial.rtsHighWhileSending = false;
+    serial.rtsDelayUs = 700;
+    serial.lowLatency = false;
+    {
+        ConnectionDialog dialog;
+        dialog.setSettings(serial);
+        auto* polarity = dialog.findChild<QComboBox*>(QStringLiteral("rtsPolarity"));
+        ASSERT_NE(polarity, nullptr);
+        EXPECT_TRUE(polarity->isEnabled());
+        const ConnectionSettings s = dialog.settings();
+        EXPECT_EQ(s.rs485, ConnectionSettings::Rs485::Rts);
+        EXPECT_FALSE(s.rtsHighWhileSending);
+        EXPECT_EQ(s.rtsDelayUs, 700);
+        EXPECT_FALSE(s.lowLatency);
+        dialog.accept();
+        ASSERT_EQ(dialog.result(), QDialog::Accepted) << qPrintable(dialog.errorText());
+    }
+    EXPECT_EQ(QSettings().value(QStringLiteral("connection/rs485")).toString(),
+              QStringLiteral("rts"));
+    const ConnectionSettings s = ConnectionDialog::remembered();
+    EXPECT_EQ(s.rs485, ConnectionSettings::Rs485::Rts);
+    EXPECT_FALSE(s.rtsHighWhileSending);
+    EXPECT_EQ(s.rtsDelayUs, 700);
+    EXPECT_FALSE(s.lowLatency);
+
+    // Defaults: the adapter switches itself, so level and delay are off; low latency on.
+    ConnectionDialog fresh;
+    fresh.setSettings(ConnectionSettings());
+    EXPECT_FALSE(fresh.findChild<QComboBox*>(QStringLiteral("rtsPolarity"))->isEnabled());
+    EXPECT_FALSE(fresh.findChild<QWidget*>(QStringLiteral("rtsDelay"))->isEnabled());
+    EXPECT_EQ(fresh.settings().rs485, ConnectionSettings::Rs485::Off);
+    EXPECT_TRUE(fresh.settings().lowLatency);
+}

@@ -1,0 +1,176 @@
+#include "SerialLineSetup.h"
+
+#include "SerialSysfs.h"
+#include "TransportLog.h"
+
+#include <QCoreApplication>
+#include <cerrno>
+#include <linux/serial.h>
+
+namespace opentop {
+
+namespace {
+
+using Rs485 = ConnectionSettings::Rs485;
+using Direction = SerialLineReport::Direction;
+using LowLatency = SerialLineReport::LowLatency;
+
+QString errorText(int err)
+{
+    return qt_error_string(err);
+}
+
+bool highWhileSending(const SerialDriver::Rs485& state)
+{
+    // The kernel keeps exactly one of the two; RTS_ON_SEND is its default.
+    return (state.flags & SER_RS485_RTS_ON_SEND) != 0 ||
+           (state.flags & SER_RS485_RTS_AFTER_SEND) == 0;
+}
+
+} // namespace
+
+SerialLineReport SerialLineSetup::apply(SerialDriver& driver, const ConnectionSettings& settings,
+                                        const SerialSysfs& sysfs)
+{
+    m_savedRs485.reset();
+    m_savedLowLatency.reset();
+    SerialLineReport report;
+    applyDirection(driver, settings, &report);
+    applyLowLatency(driver, settings, sysfs, &report);
+    qCDebug(lcTransport) << settings.port << report.text();
+    return report;
+}
+
+void SerialLineSetup::applyDirection(SerialDriver& driver, const ConnectionSettings& settings,
+                                     SerialLineReport* report)
+{
+    switch (settings.rs485) {
+    case Rs485::Off: {
+        SerialDriver::Rs485 state;
+        if (driver.getRs485(&state) == 0 && (state.flags & SER_RS485_ENABLED)) {
+            // Switched on by a device tree or an earlier program: both it and the adapter would
+            // switch direction. Not ours to undo, but worth saying.
+            report->direction = Direction::KernelLeftOn;
+            report->rtsHighWhileSending = highWhileSending(state);
+            report->rtsDelayBeforeUs = int(state.delayBeforeMs) * 1000;
+            report->rtsDelayAfterUs = int(state.delayAfterMs) * 1000;
+        } else {
+            report->direction = Direction::Adapter;
+        }
+        return;
+    }
+    case Rs485::Kernel:
+        if (!tryKernel(driver, settings, report))
+            report->direction = Direction::Unavailable;
+        return;
+    case Rs485::Rts:
+        if (!tryRts(driver, settings, report))
+            report->direction = Direction::Unavailable;
+        return;
+    case Rs485::Auto:
+        if (!tryKernel(driver, settings, report) && !tryRts(driver, settings, report))
+            report->direction = Direction::Unavailable;
+        return;
+    }
+}
+
+bool SerialLineSetup::tryKernel(SerialDriver& driver, const ConnectionSettings& settings,
+                                SerialLineReport* report)
+{
+    SerialDriver::Rs485 found;
+    const bool known = driver.getRs485(&found) == 0;
+    SerialDriver::Rs485 want = known ? found : SerialDriver::Rs485();
+    want.flags |= SER_RS485_ENABLED;
+    // Half duplex: no echo of our own request.
+    want.flags &=
+        ~quint32(SER_RS485_RTS_ON_SEND | SER_RS485_RTS_AFTER_SEND | SER_RS485_RX_DURING_TX);
+    want.flags |= settings.rtsHighWhileSending ? SER_RS485_RTS_ON_SEND : SER_RS485_RTS_AFTER_SEND;
+    if (settings.rtsDelayUs > 0) {
+        // The driver counts whole milliseconds: never shorter than asked.
+        const quint32 ms = quint32((settings.rtsDelayUs + 999) / 1000);
+        want.delayBeforeMs = ms;
+        want.delayAfterMs = ms;
+    }
+    SerialDriver::Rs485 got = want;
+    if (const int err = driver.setRs485(&got)) {
+        report->kernelRefusal = errorText(err);
+        return false;
+    }
+    if (known)
+        m_savedRs485 = found;
+    SerialDriver::Rs485 back;
+    if (driver.getRs485(&back) == 0)
+        got = back;
+    if (!(got.flags & SER_RS485_ENABLED)) {
+        report->kernelRefusal =
+            QCoreApplication::translate("opentop::Transport", "the driver left it off");
+        return false;
+    }
+    report->direction = Direction::Kernel;
+    report->rtsHighWhileSending = highWhileSending(got);
+    report->rtsDelayBeforeUs = int(got.delayBeforeMs) * 1000;
+    report->rtsDelayAfterUs = int(got.delayAfterMs) * 1000;
+    return true;
+}
+
+bool SerialLineSetup::tryRts(SerialDriver& driver, const ConnectionSettings& settings,
+                             SerialLineReport* report)
+{
+    SerialDriver::Rts rts;
+    if (const int err = driver.useRts(settings.rtsHighWhileSending, settings.rtsDelayUs, &rts)) {
+        report->rtsRefusal = errorText(err);
+        return false;
+    }
+    report->direction = Direction::Rts;
+    report->rtsHighWhileSending = rts.highWhileSending;
+    report->rtsDelayBeforeUs = rts.delayUs;
+    report->rtsDelayAfterUs = rts.delayUs;
+    return true;
+}
+
+void SerialLineSetup::applyLowLatency(SerialDriver& driver, const ConnectionSettings& settings,
+                                      const SerialSysfs& sysfs, SerialLineReport* report)
+{
+    report->usbAdapter = sysfs.isUsb();
+    bool on = false;
+    const int err = driver.getLowLatency(&on);
+    if (err != 0 && !report->usbAdapter && (err == ENOTTY || err == EINVAL)) {
+        // A pty, a USB CDC modem without UART settings...: nothing holds bytes back.
+        report->lowLatency = LowLatency::NotUart;
+        return;
+    }
+    if (err != 0) {
+        report->lowLatency = settings.lowLatency ? LowLatency::Unavailable : LowLatency::Off;
+        report->lowLatencyRefusal = errorText(err);
+    } else if (on) {
+        report->lowLatency = LowLatency::On;
+    } else if (!settings.lowLatency) {
+        report->lowLatency = LowLatency::Off;
+    } else if (const int setErr = driver.setLowLatency(true)) {
+        report->lowLatency = LowLatency::Unavailable;
+        report->lowLatencyRefusal = errorText(setErr);
+    } else {
+        m_savedLowLatency = false;
+        bool back = false;
+        const bool took = driver.getLowLatency(&back) == 0 && back;
+        report->lowLatency = took ? LowLatency::On : LowLatency::Unavailable;
+    }
+    // Read after setting: FTDI's driver sets its latency timer to 1 ms with the flag.
+    report->latencyTimerPath = sysfs.latencyTimerPath();
+    report->latencyTimerMs = sysfs.latencyTimerMs();
+}
+
+void SerialLineSetup::restore(SerialDriver& driver)
+{
+    // On an unplugged adapter these fail; the port is going anyway.
+    if (m_savedRs485) {
+        SerialDriver::Rs485 state = *m_savedRs485;
+        driver.setRs485(&state);
+    }
+    if (m_savedLowLatency)
+        driver.setLowLatency(*m_savedLowLatency);
+    m_savedRs485.reset();
+    m_savedLowLatency.reset();
+}
+
+} // namespace opentop

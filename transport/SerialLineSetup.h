@@ -1,0 +1,40 @@
+#pragma once
+
+#include "ConnectionSettings.h"
+#include "SerialDriver.h"
+#include "SerialLineReport.h"
+
+#include <optional>
+
+namespace opentop {
+
+class SerialSysfs;
+
+// Sets a serial port's RS-485 direction control and low-latency mode as the settings ask and
+// reports what the driver accepted, read back. Kernel: the driver's RS-485 mode (TIOCSRS485).
+// Rts: libmodbus raises and drops RTS around each request (modbus_rtu_set_rts; not
+// modbus_rtu_set_serial_mode, which is TIOCSRS485 again). Auto: kernel where the driver takes
+// it, else RTS. Off leaves the driver's RS-485 state alone (and reports it when it is on).
+// Applied by RtuBackend right after opening; restore() puts back what was changed, so the next
+// program finds the port as we did.
+class SerialLineSetup
+{
+public:
+    SerialLineReport apply(SerialDriver& driver, const ConnectionSettings& settings,
+                           const SerialSysfs& sysfs);
+    void restore(SerialDriver& driver);
+
+private:
+    void applyDirection(SerialDriver& driver, const ConnectionSettings& settings,
+                        SerialLineReport* report);
+    bool tryKernel(SerialDriver& driver, const ConnectionSettings& settings,
+                   SerialLineReport* report);
+    bool tryRts(SerialDriver& driver, const ConnectionSettings& settings, SerialLineReport* report);
+    void applyLowLatency(SerialDriver& driver, const ConnectionSettings& settings,
+                         const SerialSysfs& sysfs, SerialLineReport* report);
+
+    std::optional<SerialDriver::Rs485> m_savedRs485; // as found, when we changed it
+    std::optional<bool> m_savedLowLatency;
+};
+
+} // namespace opentop
