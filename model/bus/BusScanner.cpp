@@ -58,7 +58,8 @@ void BusScanner::setWaitMs(int ms)
 
 int BusScanner::waitMs() const
 {
-    return m_waitMs > 0 ? m_waitMs : defaultWaitMs(m_client->settings());
+    return m_waitMs > 0 ? m_waitMs
+                        : defaultWaitMs(m_client->settings(), m_client->adapterLatencyMs());
 }
 
 double BusScanner::elapsedMs() const
