@@ -34,19 +34,26 @@ bool PlainModbusLoop::open(QString* error)
     return true;
 }
 
-PlainModbusLoop::PollResult PlainModbusLoop::poll(int slave, int address, int count, double seconds)
+PlainModbusLoop::PollResult PlainModbusLoop::poll(int slave, const QVector<Block>& blocks,
+                                                  double seconds)
 {
     PollResult result;
     uint16_t registers[125];
     modbus_set_slave(m_ctx, slave);
+    auto read = [this, &registers](const Block& b) {
+        const int n = b.function == 4
+                          ? modbus_read_input_registers(m_ctx, b.address, b.count, registers)
+                          : modbus_read_registers(m_ctx, b.address, b.count, registers);
+        return n == b.count;
+    };
     QElapsedTimer warmUp;
     warmUp.start();
-    while (warmUp.elapsed() < 300)
-        modbus_read_registers(m_ctx, address, count, registers);
+    for (int i = 0; warmUp.elapsed() < 300; ++i)
+        read(blocks.at(i % blocks.size()));
     QElapsedTimer timer;
     timer.start();
-    while (double(timer.nsecsElapsed()) / 1e9 < seconds) {
-        if (modbus_read_registers(m_ctx, address, count, registers) == count)
+    for (int i = 0; double(timer.nsecsElapsed()) / 1e9 < seconds; ++i) {
+        if (read(blocks.at(i % blocks.size())))
             ++result.transactions;
         else
             ++result.errors;

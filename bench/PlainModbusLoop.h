@@ -31,9 +31,15 @@ public:
     PlainModbusLoop& operator=(const PlainModbusLoop&) = delete;
     bool open(QString* error);
 
-    // modbus_read_registers(slave, address, count) again and again for `seconds` (after a
-    // short warm-up that is not counted).
-    PollResult poll(int slave, int address, int count, double seconds);
+    struct Block
+    {
+        int function = 3; // 3 holding, 4 input registers
+        int address = 0;
+        int count = 1;
+    };
+    // The blocks read one after the other, again and again, for `seconds` (after a short
+    // warm-up that is not counted).
+    PollResult poll(int slave, const QVector<Block>& blocks, double seconds);
     // One read of `address` per machine number in [from, to], each waiting `waitMs` for a
     // reply, as a simple scanner does.
     ScanResult scan(int from, int to, int address, int count, int waitMs);

@@ -13,7 +13,6 @@ namespace opentop {
 
 namespace {
 
-constexpr int kBlock = 17; // the DBU's most registers per read
 constexpr int kSlave = 1;
 
 const Profile& dbu()
@@ -51,12 +50,20 @@ bool stackPoll(const ConnectionSettings& settings, double frameGapMs, const QStr
     return true;
 }
 
+QVector<PlainModbusLoop::Block> plainBlocks(const QVector<ReadBlockPlan>& plan)
+{
+    QVector<PlainModbusLoop::Block> blocks;
+    for (const ReadBlockPlan& b : plan)
+        blocks << PlainModbusLoop::Block{b.function, b.address, b.count};
+    return blocks;
+}
+
 } // namespace
 
 QString PollBenchmark::description() const
 {
-    return QStringLiteral("17-register reads: OpenTOP's stack against a plain libmodbus loop, "
-                          "and against the wire's limit at 19200 and 115200 bit/s");
+    return QStringLiteral("a backup's block reads: OpenTOP's stack against a plain libmodbus "
+                          "loop, and against the wire's limit at 19200 and 115200 bit/s");
 }
 
 bool PollBenchmark::run(const BenchEnvironment& env, BenchReport& report, QString* error)
@@ -70,24 +77,22 @@ bool PollBenchmark::stackOverhead(const BenchEnvironment& env, BenchReport& repo
     SimulatorProcess sim;
     if (!sim.start({QStringLiteral("--devices"), QStringLiteral("dbu200@%1").arg(kSlave)}, error))
         return false;
-    int address = 0;
-    const QStringList names = StackPoller::fullBlock(dbu(), kBlock, &address);
-    if (names.isEmpty()) {
-        *error = QStringLiteral("the DBU profile has no read block of %1 registers").arg(kBlock);
-        return false;
-    }
-    report.note(QStringLiteral("poll: %1 (0x%2, %3 registers, %4 parameters) on a pty, no wire "
-                               "timing")
-                    .arg(names.first())
-                    .arg(address, 4, 16, QLatin1Char('0'))
-                    .arg(kBlock)
-                    .arg(names.size()));
+    QVector<ReadBlockPlan> plan;
+    const QStringList names = StackPoller::backupSettings(dbu(), &plan);
+    int registers = 0;
+    for (const ReadBlockPlan& b : plan)
+        registers += b.count;
+    report.note(QStringLiteral("poll: a DBU200's backup reads (%1 settings in %2 blocks, %3 "
+                               "registers) again and again; on a pty, no wire timing")
+                    .arg(names.size())
+                    .arg(plan.size())
+                    .arg(registers));
     PlainModbusLoop::PollResult reference;
     {
         PlainModbusLoop plain(sim.pty(), 115200); // closed again before the stack opens it
         if (!plain.open(error))
             return false;
-        reference = plain.poll(kSlave, address, kBlock, env.seconds);
+        reference = plain.poll(kSlave, plainBlocks(plan), env.seconds);
     }
     if (reference.transactions == 0 || reference.errors > 0) {
         *error = QStringLiteral("the plain libmodbus loop failed %1 of %2 reads")
@@ -117,15 +122,18 @@ bool PollBenchmark::wireFraction(const BenchEnvironment& env, int baud, BenchRep
                     QStringLiteral("--baud"), QString::number(baud)},
                    error))
         return false;
-    int address = 0;
-    const QStringList names = StackPoller::fullBlock(dbu(), kBlock, &address);
+    QVector<ReadBlockPlan> plan;
+    const QStringList names = StackPoller::backupSettings(dbu(), &plan);
     StackPoller::Result stack;
     if (!stackPoll(lineSettings(sim.pty(), baud), -1, names, env.seconds, &stack, error))
         return false;
-    // The simulator's default turnaround; gaps on both sides of the reply.
+    // Each read on the wire: request, gap, the simulator's default turnaround, reply, gap.
     const WireTiming wire(baud, 'N', 2.0);
-    const double limitMs = wire.frameMs(8) + wire.gapMs() + wire.turnaroundMs() +
-                           wire.frameMs(5 + 2 * kBlock) + wire.gapMs();
+    double planMs = 0;
+    for (const ReadBlockPlan& b : plan)
+        planMs += wire.frameMs(8) + wire.gapMs() + wire.turnaroundMs() +
+                  wire.frameMs(5 + 2 * b.count) + wire.gapMs();
+    const double limitMs = planMs / plan.size();
     const QString key = QStringLiteral("poll.wire_%1").arg(baud);
     report.add(BenchFigure::plain(key, stack.perSecond(), QStringLiteral("1/s"), 1));
     report.add(BenchFigure::plain(

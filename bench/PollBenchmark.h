@@ -5,8 +5,8 @@
 namespace opentop {
 
 // Transactions per second through OpenTOP's whole stack (ModbusClient's worker thread, the
-// RTU backend, DeviceSession::readMany and the codec), reading one full DBU block of
-// 17 registers:
+// RTU backend, DeviceSession::readMany and the codec), reading what a DBU200's backup reads
+// (its settings, in the blocks the profile allows, up to 17 registers each), again and again:
 // - on a pty without wire timing, against a plain libmodbus loop doing the same reads: the
 //   stack's own cost as a ratio (both without the inter-frame gap, which only a line needs);
 // - with wire timing at 19200 and 115200 bit/s on a half-duplex simulated line, against what

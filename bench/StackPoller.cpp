@@ -1,9 +1,9 @@
 #include "StackPoller.h"
 
 #include "ModbusClient.h"
+#include "files/BackupReader.h"
 #include "profile/Profile.h"
 #include "session/DeviceSession.h"
-#include "session/ReadPlanner.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -12,23 +12,14 @@
 
 namespace opentop {
 
-QStringList StackPoller::fullBlock(const Profile& profile, int registers, int* address)
+QStringList StackPoller::backupSettings(const Profile& profile, QVector<ReadBlockPlan>* blocks)
 {
-    QVector<const ParameterMeta*> readable;
-    for (const ParameterMeta& p : profile.parameters) {
-        if (p.isReadable())
-            readable << &p;
-    }
-    for (const ReadBlockPlan& block : ReadPlanner::plan(profile, readable)) {
-        if (block.count != registers)
-            continue;
-        QStringList names;
-        for (const ParameterMeta* p : block.parameters)
-            names << p->name;
-        *address = block.address;
-        return names;
-    }
-    return {};
+    const QStringList names = BackupReader::settingNames(profile);
+    QVector<const ParameterMeta*> metas;
+    for (const QString& name : names)
+        metas << profile.parameter(name);
+    *blocks = ReadPlanner::plan(profile, metas);
+    return names;
 }
 
 StackPoller::Result StackPoller::run(ModbusClient* client, const Profile& profile, int slave,

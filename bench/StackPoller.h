@@ -1,14 +1,17 @@
 #pragma once
 
+#include "session/ReadPlanner.h"
+
 #include <QStringList>
+#include <QVector>
 
 namespace opentop {
 
 class ModbusClient;
 class Profile;
 
-// Reads the same parameters again and again through DeviceSession::readMany, one request
-// after another, as fast as the stack goes: what the monitor and a backup do per block.
+// Reads the same parameters again and again through DeviceSession::readMany, as fast as the
+// stack goes: what a backup does, drive after drive.
 class StackPoller
 {
 public:
@@ -20,8 +23,8 @@ public:
         double perSecond() const { return seconds > 0 ? transactions / seconds : 0; }
     };
 
-    // The parameters of the profile's first read block that holds `registers` registers.
-    static QStringList fullBlock(const Profile& profile, int registers, int* address);
+    // What a backup of a drive of `profile` reads: its settings, and the blocks they take.
+    static QStringList backupSettings(const Profile& profile, QVector<ReadBlockPlan>* blocks);
     static Result run(ModbusClient* client, const Profile& profile, int slave,
                       const QStringList& names, double seconds);
 };

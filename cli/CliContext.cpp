@@ -201,6 +201,7 @@ DeviceSession* CliContext::session(int slave, QString* error)
     }
     const Profile* profile = ProfileRegistry::builtIn().family(info.family);
     auto* s = new DeviceSession(m_client.get(), *profile, slave, info.variant);
+    s->acceptIdentification(info.identifyRegisters);
     m_sessions.insert(slave, s);
     return s;
 }

@@ -29,8 +29,9 @@ void BackupReader::read(Done done)
 {
     const QStringList settings = settingNames(m_session->profile());
     QStringList names = settings;
+    // Name and firmware: identification has usually just read them into the session.
     for (const ParameterMeta& p : m_session->profile().parameters) {
-        if (p.kind == QLatin1String("info") && p.isReadable())
+        if (p.kind == QLatin1String("info") && p.isReadable() && !m_session->hasCached(p.name))
             names << p.name;
     }
     auto timer = std::make_shared<QElapsedTimer>();

@@ -103,6 +103,7 @@ DeviceInfo DeviceIdentifier::interpret(int slave, int profileIndex,
     }
     info.state = DeviceInfo::State::Present;
     info.family = profile.family;
+    info.identifyRegisters = result.registers;
     // A family of one model: the device's own name says which ("DCPID-20A").
     info.model = profile.variants.isEmpty() && !info.name.isEmpty() ? info.name : profile.name;
     for (const ProfileVariant& variant : profile.variants) {

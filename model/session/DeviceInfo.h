@@ -2,6 +2,7 @@
 
 #include <QMetaType>
 #include <QString>
+#include <QVector>
 
 namespace opentop {
 
@@ -25,6 +26,10 @@ struct DeviceInfo
     QString name;     // device name register
     QString firmware; // "1.5"
     QString detail;   // the error or remark behind the state
+    // The identify read's registers (the profile's IdentifyRule block) when Present: a session
+    // made for the drive starts with them (DeviceSession::acceptIdentification), so nothing
+    // asks the drive again for what identification has just read.
+    QVector<quint16> identifyRegisters;
 
     // Machine number as the DBU's rotary switches show it: 150 -> "96h", "SW1=9 SW2=6".
     // Present, of a family with variants, and the drive did not say which (nor did anyone).

@@ -6,6 +6,8 @@
 #include "profile/ValueCodec.h"
 #include "session/ReadPlanner.h"
 
+#include <utility>
+
 namespace opentop {
 
 namespace {
@@ -116,13 +118,37 @@ void DeviceSession::read(const QString& name, Done done)
                      });
 }
 
+namespace {
+
+// Blocks of one readMany queued on the bus at a time: the next is waiting when one completes,
+// so the worker goes on at once instead of waiting for this thread to hand it over. Two keep
+// that true and leave room for user requests to overtake.
+constexpr int kBlocksInFlight = 2;
+
+} // namespace
+
 struct DeviceSession::ManyState
 {
     QVector<ReadBlockPlan> queue;
+    int inFlight = 0;
+    bool finished = false;
     ReadManyOutcome outcome;
     ManyDone done;
     ModbusRequest::Priority priority = ModbusRequest::Priority::Normal;
 };
+
+void DeviceSession::acceptIdentification(const QVector<quint16>& identifyRegisters)
+{
+    const IdentifyRule& rule = m_profile.identify;
+    if (identifyRegisters.size() != rule.count)
+        return;
+    for (const ParameterMeta& p : m_profile.parameters) {
+        if (p.readFunction != rule.function || p.address < rule.address ||
+            p.address + p.registerCount > rule.address + rule.count)
+            continue;
+        acceptRegisters(p.name, identifyRegisters.mid(p.address - rule.address, p.registerCount));
+    }
+}
 
 void DeviceSession::readMany(const QStringList& names, ManyDone done,
                              ModbusRequest::Priority priority)
@@ -150,17 +176,25 @@ void DeviceSession::readMany(const QStringList& names, ManyDone done,
 
 void DeviceSession::nextBlock(std::shared_ptr<ManyState> state)
 {
-    if (state->queue.isEmpty()) {
-        state->done(state->outcome);
+    if (state->queue.isEmpty() && state->inFlight == 0) {
+        if (!std::exchange(state->finished, true))
+            state->done(state->outcome);
         return;
     }
-    const ReadBlockPlan plan = state->queue.takeFirst();
+    while (state->inFlight < kBlocksInFlight && !state->queue.isEmpty())
+        submitBlock(state, state->queue.takeFirst());
+}
+
+void DeviceSession::submitBlock(std::shared_ptr<ManyState> state, const ReadBlockPlan& plan)
+{
     ModbusRequest request =
         plan.function == 4 ? ModbusRequest::readInput(quint8(m_slave), plan.address, plan.count)
                            : ModbusRequest::readHolding(quint8(m_slave), plan.address, plan.count);
     request.priority = state->priority;
     ++state->outcome.requests;
+    ++state->inFlight;
     m_client->submit(request, this, [this, plan, state](const ModbusResult& r) {
+        --state->inFlight;
         if (!r.ok() && r.error == ModbusError::Exception && plan.parameters.size() > 1) {
             // The device refuses the block: ask for each parameter on its own.
             const QVector<ReadBlockPlan> singles = ReadPlanner::singles(plan.parameters);

@@ -13,6 +13,8 @@
 
 namespace opentop {
 
+struct ReadBlockPlan;
+
 class ModbusClient;
 struct ModbusResult;
 
@@ -96,6 +98,9 @@ public:
     void write(const QString& name, const QString& text, const WriteOptions& options, Done done);
     // Stores registers obtained elsewhere (a block read) as device values.
     void acceptRegisters(const QString& name, const QVector<quint16>& registers);
+    // Stores what the identify read returned (DeviceInfo::identifyRegisters): the parameters of
+    // the profile's identify block, read moments ago.
+    void acceptIdentification(const QVector<quint16>& identifyRegisters);
 
 signals:
     // A value read from the device (never an echo of a user edit).
@@ -108,6 +113,7 @@ private:
     const ParameterMeta* lookup(const QString& name, Outcome* outcome) const;
     struct ManyState;
     void nextBlock(std::shared_ptr<ManyState> state);
+    void submitBlock(std::shared_ptr<ManyState> state, const ReadBlockPlan& plan);
     void ensureControllingValues(const ParameterMeta& meta, std::function<void(QString)> then);
     // Reads those of `names` not cached yet; `then` gets the first failure, or nothing.
     void ensureCached(QStringList names, std::function<void(QString)> then);

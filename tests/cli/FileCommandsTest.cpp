@@ -75,9 +75,23 @@ TEST_F(FileCommands, BackupChangeCompareRestoreCompare)
     CliRun r = cli({QStringLiteral("backup"), QStringLiteral("1"), QStringLiteral("7"),
                     QStringLiteral("-o"), file});
     ASSERT_EQ(r.code, ExitOk) << qPrintable(r.err);
+    // 12 blocks of settings; name and firmware came with the identification.
     EXPECT_TRUE(
-        r.out.contains(QStringLiteral("drive 1 (DBU200-D): 69 settings read in 13 requests")))
+        r.out.contains(QStringLiteral("drive 1 (DBU200-D): 69 settings read in 12 requests")))
         << qPrintable(r.out);
+    {
+        // ... and are in the file all the same.
+        QFile saved(file);
+        ASSERT_TRUE(saved.open(QIODevice::ReadOnly));
+        const QJsonObject drive = QJsonDocument::fromJson(saved.readAll())
+                                      .object()
+                                      .value(QStringLiteral("devices"))
+                                      .toArray()
+                                      .at(0)
+                                      .toObject();
+        EXPECT_EQ(drive.value(QStringLiteral("firmware")).toString(), QStringLiteral("1.5"));
+        EXPECT_EQ(drive.value(QStringLiteral("name")).toString(), QStringLiteral("DBU"));
+    }
     EXPECT_TRUE(r.out.contains(QStringLiteral("wrote %1: 2 drive(s)").arg(file)))
         << qPrintable(r.out);
 
@@ -140,7 +154,7 @@ TEST_F(FileCommands, JsonForAllThreeCommands)
                   .toObject()
                   .value(QStringLiteral("requests"))
                   .toInt(),
-              13);
+              12);
 
     set(1, "0x1305", 25); // spno3.accel 2.5 s
     r = cli({QStringLiteral("compare"), file, QStringLiteral("1"), QStringLiteral("--json")});
