@@ -9,11 +9,14 @@
 #include "WireTiming.h"
 #include "profile/ProfileRegistry.h"
 
+#include <algorithm>
+
 namespace opentop {
 
 namespace {
 
 constexpr int kSlave = 1;
+constexpr int kRounds = 5;
 
 const Profile& dbu()
 {
@@ -87,29 +90,46 @@ bool PollBenchmark::stackOverhead(const BenchEnvironment& env, BenchReport& repo
                     .arg(names.size())
                     .arg(plan.size())
                     .arg(registers));
+    // Rounds alternate between the two, so a machine busy with something else for a while
+    // weighs on both alike; the median round's ratio is judged.
+    const double roundSeconds = std::max(0.5, env.seconds / kRounds);
+    QVector<double> ratios;
     PlainModbusLoop::PollResult reference;
-    {
-        PlainModbusLoop plain(sim.pty(), 115200); // closed again before the stack opens it
-        if (!plain.open(error))
-            return false;
-        reference = plain.poll(kSlave, plainBlocks(plan), env.seconds);
-    }
-    if (reference.transactions == 0 || reference.errors > 0) {
-        *error = QStringLiteral("the plain libmodbus loop failed %1 of %2 reads")
-                     .arg(reference.errors)
-                     .arg(reference.transactions + reference.errors);
-        return false;
-    }
     StackPoller::Result stack;
-    if (!stackPoll(lineSettings(sim.pty(), 115200), 0, names, env.seconds, &stack, error))
-        return false;
+    for (int round = 0; round < kRounds; ++round) {
+        PlainModbusLoop::PollResult plainRound;
+        {
+            PlainModbusLoop plain(sim.pty(), 115200); // closed again before the stack opens it
+            if (!plain.open(error))
+                return false;
+            plainRound = plain.poll(kSlave, plainBlocks(plan), roundSeconds);
+        }
+        if (plainRound.transactions == 0 || plainRound.errors > 0) {
+            *error = QStringLiteral("the plain libmodbus loop failed %1 of %2 reads")
+                         .arg(plainRound.errors)
+                         .arg(plainRound.transactions + plainRound.errors);
+            return false;
+        }
+        StackPoller::Result stackRound;
+        if (!stackPoll(lineSettings(sim.pty(), 115200), 0, names, roundSeconds, &stackRound, error))
+            return false;
+        ratios << plainRound.perSecond() / stackRound.perSecond();
+        reference.transactions += plainRound.transactions;
+        reference.seconds += plainRound.seconds;
+        stack.transactions += stackRound.transactions;
+        stack.seconds += stackRound.seconds;
+    }
+    std::sort(ratios.begin(), ratios.end());
     report.add(BenchFigure::plain(QStringLiteral("poll.plain_libmodbus"), reference.perSecond(),
                                   QStringLiteral("1/s"), 0, QStringLiteral("reference")));
     report.add(BenchFigure::plain(QStringLiteral("poll.stack"), stack.perSecond(),
                                   QStringLiteral("1/s"), 0));
     report.add(BenchFigure::atMost(
-        QStringLiteral("poll.stack_cost"), reference.perSecond() / stack.perSecond(),
-        QStringLiteral("x"), 1.10, 2, QStringLiteral("time per read against the plain loop")));
+        QStringLiteral("poll.stack_cost"), ratios.at(kRounds / 2), QStringLiteral("x"), 1.10, 2,
+        QStringLiteral("time per read against the plain loop; median of %1 rounds, %2 to %3")
+            .arg(kRounds)
+            .arg(ratios.first(), 0, 'f', 2)
+            .arg(ratios.last(), 0, 'f', 2)));
     return true;
 }
 
