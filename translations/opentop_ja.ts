@@ -33,12 +33,12 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="54"/>
+        <location filename="../app/gui/main.cpp" line="58"/>
         <source>Commissioning tool for RS-485 Modbus-RTU motor drives.</source>
         <translation>RS-485 Modbus-RTU モータドライバ用立上げツール。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="58"/>
+        <location filename="../app/gui/main.cpp" line="62"/>
         <source>Language of the program: %1 (default: the language menu&apos;s choice, else the system&apos;s).</source>
         <translation>プログラムの言語: %1 (既定: 言語メニューでの選択、なければシステムの言語)。</translation>
     </message>
@@ -76,6 +76,11 @@
         <location filename="../app/gui/MonitorOptions.cpp" line="103"/>
         <source>--stats-every needs a number of seconds</source>
         <translation>--stats-every には秒数を指定してください</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/StartupProbe.cpp" line="23"/>
+        <source>Print how long the start took once the window shows the bus&apos;s drives, then quit (for measurements).</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -801,98 +806,98 @@
         <translation>解除方法</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="107"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="109"/>
         <source>Cause and remedy</source>
         <translation>原因と対策</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="108"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="110"/>
         <source>Communication error register</source>
         <translation>通信エラーレジスタ</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="120"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="123"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>アラームリセットコマンドを送信し、アラームが解除されたか、電源再投入でのみ解除できるかを表示します</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="122"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>ドライバが保持しているアラーム履歴・警告履歴を消去します</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="127"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="298"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="130"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="301"/>
         <source>Select a record to see its cause and remedy.</source>
         <translation>履歴を選択すると原因と対策を表示します。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="128"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="131"/>
         <source>Not read yet.</source>
         <translation>未読出しです。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="130"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="133"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>このドライバはアラーム・警告履歴を保持しません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="160"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="163"/>
         <source>Alarm state: %1</source>
         <translation>アラーム状態: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="252"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="255"/>
         <source>Reading the records…</source>
         <translation>履歴を読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="268"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="271"/>
         <source>No alarm is active.</source>
         <translation>アラームは発生していません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="270"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="273"/>
         <source>Alarm active: %1 %2.</source>
         <translation>アラーム発生中: %1 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="272"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
         <source>An alarm is active.</source>
         <translation>アラームが発生しています。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="278"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>このドライバはアラームを電源再投入でのみ解除する設定です (%1)。Alarm-Reset では解除できません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="279"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="282"/>
         <source>Could not be read: %1</source>
         <translation>読み出せません: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="305"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="308"/>
         <source>This drive has no communication error register.</source>
         <translation>このドライバには通信エラーレジスタがありません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="307"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="310"/>
         <source>%1: could not be read.</source>
         <translation>%1: 読み出せません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="309"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
         <source>%1: no error (0).</source>
         <translation>%1: エラーなし (0)。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="315"/>
         <source>%1: %2, not a known code.</source>
         <translation>%1: %2（既知のコードではありません）。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="317"/>
         <source>%1: %2 %3
 Cause: %4
 Remedy: %5</source>
@@ -901,153 +906,153 @@ Remedy: %5</source>
 対策: %5</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="326"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="329"/>
         <source>No alarm records</source>
         <translation>アラーム履歴なし</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="326"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="329"/>
         <source>No warning records</source>
         <translation>警告履歴なし</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="332"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="335"/>
         <source>%1: could not be read: %2</source>
         <translation>%1: 読み出せません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="335"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="338"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1: %3 件中 %2 件（新しい順）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="346"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="349"/>
         <source>unknown code</source>
         <translation>不明なコード</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="375"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="378"/>
         <source>Record %1: code %2 is not in the %3 table.</source>
         <translation>履歴 %1: コード %2 は %3 表にありません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="380"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="383"/>
         <source>%1 %2 (record %3)</source>
         <translation>%1 %2（履歴 %3）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="382"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="385"/>
         <source>Cause: %1</source>
         <translation>原因: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="384"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="387"/>
         <source>Remedy: %1</source>
         <translation>対策: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="386"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="389"/>
         <source>To clear: %1</source>
         <translation>解除方法: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="415"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="418"/>
         <source>Writes: %1</source>
         <translation>書込み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="416"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="419"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>原因が取り除かれていれば、発生中のアラームを解除します。電源再投入でのみ解除できるアラームもあります。結果に表示されます。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="419"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="422"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>このドライバはアラームを電源再投入でのみ解除する設定です (%1)。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="421"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="423"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="424"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="426"/>
         <source>Reset alarm</source>
         <translation>アラームリセット</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="422"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="425"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>局番 %1 にアラームリセットコマンドを送信しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="430"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="433"/>
         <source>Sending the alarm reset…</source>
         <translation>アラームリセットを送信中…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="436"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="439"/>
         <source>Alarm reset: %1</source>
         <translation>アラームリセット: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="439"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="442"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>ドライバの電源を切り、5 s 待ってから再投入してください。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="450"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="453"/>
         <source>%1 (%2 records)</source>
         <translation>%1（%2 件）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="452"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
         <source>the alarm and warning records</source>
         <translation>アラーム履歴と警告履歴</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="453"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="456"/>
         <source>Clear records</source>
         <translation>履歴消去</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="454"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
         <source>Erase %1 of machine %2?</source>
         <translation>局番 %2 の%1を消去しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="454"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
         <source> and </source>
         <translation> と </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="458"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>履歴は復元できません。書込み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
         <source>Erase</source>
         <translation>消去</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="464"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="467"/>
         <source>Erasing the records…</source>
         <translation>履歴を消去中…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="472"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="475"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>消去: %1（%2 件）。%3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="475"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
         <source>read back empty.</source>
         <translation>読み戻し結果は空です。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="476"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="479"/>
         <source>NOT empty when read back.</source>
         <translation>読み戻し結果が空ではありません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="481"/>
         <source>Erasing failed: %1</source>
         <translation>消去に失敗しました: %1</translation>
     </message>
@@ -2161,17 +2166,17 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="156"/>
+        <location filename="../model/bus/BusScanner.cpp" line="160"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
         <translation>応答が 2 回化けました (%1): 2 台のドライバが局番 %2 を共有している可能性があります。SW1/SW2 スイッチを確認してください</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="161"/>
+        <location filename="../model/bus/BusScanner.cpp" line="165"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>応答はありますが、一致するデバイスプロファイルがありません (%1)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="191"/>
+        <location filename="../model/bus/BusScanner.cpp" line="204"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>最初は応答が遅れました（%1 ms の待ち時間の後）。待ち時間を長くすると、このバスのスキャンが確実になります</translation>
     </message>
@@ -2463,6 +2468,9 @@ Connection (every command that talks to drives):
   --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
   Defaults follow the family: dbu 19200 8N1, dcpid 9600 8E1; --timeout 200,
   --retries 3 (2 more while the line is noisy: a request needed a retry lately).
+  Serial port only: --rs485 off|auto|kernel|rts (who switches the RS-485
+  direction; off: the adapter), --rts-polarity high|low, --rts-delay US,
+  --low-latency on|off (default on). scan says what the driver accepted.
 Output: --json  --trace  --variant VARIANT  --lang CODE
 Groups: --bus-drives LIST (or OPENTOP_BUS_DRIVES): the drives whose communication
 group is checked before a write or command
@@ -2473,36 +2481,21 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
 </source>
-        <translation>
-接続（ドライバと通信するすべてのコマンド）:
-  --port PATH | --tcp HOST:PORT | --sim SPEC
-  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
-  既定値はファミリによります: dbu 19200 8N1、dcpid 9600 8E1。--timeout 200、
-  --retries 3（回線にノイズが多い間は 2 回追加: 最近の要求で再送が必要だった場合）。
-出力: --json  --trace  --variant VARIANT  --lang CODE
-グループ: --bus-drives LIST（または OPENTOP_BUS_DRIVES）: 書込みやコマンドの前に
-通信グループを確認するドライバ
-
-終了コード: 0 成功、1 通信失敗、2 使い方の誤り、3 不正な値またはファイル
-（何も書き込まない）、4 照合不一致または停止しなかったドライバあり、
-130 Ctrl-C、SIGTERM、SIGHUP による中断（実行済みの内容を報告）。
-
-&quot;%1 help COMMAND&quot; でコマンドのオプションを表示します。
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="164"/>
-        <location filename="../cli/CliApp.cpp" line="218"/>
+        <location filename="../cli/CliApp.cpp" line="167"/>
+        <location filename="../cli/CliApp.cpp" line="221"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>&quot;%1 --help&quot; を実行してください。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="184"/>
+        <location filename="../cli/CliApp.cpp" line="187"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1: 不明なコマンド &quot;%2&quot;。コマンド: </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="192"/>
+        <location filename="../cli/CliApp.cpp" line="195"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2511,12 +2504,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="206"/>
+        <location filename="../cli/CliApp.cpp" line="209"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2: --%3 はこのコマンドのオプションではありません。&quot;%1 help %2&quot; を参照してください</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="217"/>
+        <location filename="../cli/CliApp.cpp" line="220"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2531,37 +2524,42 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="124"/>
+        <location filename="../cli/CliContext.cpp" line="102"/>
+        <source>serial line: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/CliContext.cpp" line="126"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="187"/>
+        <location filename="../cli/CliContext.cpp" line="189"/>
         <source>machine number %1: no connection</source>
         <translation>局番 %1: 接続なし</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="192"/>
+        <location filename="../cli/CliContext.cpp" line="194"/>
         <source>machine number %1: %2%3</source>
         <translation>局番 %1: %2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="245"/>
+        <location filename="../cli/CliContext.cpp" line="248"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1: &quot;%2&quot; は局番 1–247 ではありません</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="249"/>
+        <location filename="../cli/CliContext.cpp" line="252"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1: &quot;%2&quot; はドライバの機種ではありません。%3 のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="267"/>
+        <location filename="../cli/CliContext.cpp" line="270"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; は局番 1–247 でも 3-8 のような範囲でもありません</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="277"/>
+        <location filename="../cli/CliContext.cpp" line="280"/>
         <source>no machine number given</source>
         <translation>局番が指定されていません</translation>
     </message>
@@ -2937,173 +2935,173 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::ConnectionDialog</name>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="61"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="62"/>
         <source>Connect to a bus</source>
         <translation>バスに接続</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
         <source>&amp;Serial port</source>
         <translation>シリアルポート(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
         <source>Modbus &amp;TCP gateway</source>
         <translation>Modbus TCP ゲートウェイ(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="68"/>
         <source>Si&amp;mulated bus</source>
         <translation>シミュレーションバス(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="83"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="84"/>
         <source>&amp;Advanced</source>
         <translation>詳細設定(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="106"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="107"/>
         <source>&amp;Connect</source>
         <translation>接続(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="127"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="128"/>
         <source>&amp;Refresh</source>
         <translation>更新(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="128"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="129"/>
         <source>List the serial ports again (after plugging in an adapter)</source>
         <translation>シリアルポートを再検索します（アダプタ接続後）</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="133"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="134"/>
         <source>&amp;Port:</source>
         <translation>ポート(&amp;P):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="142"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="143"/>
         <source>Custom</source>
         <translation>カスタム</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="144"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="145"/>
         <source>%1 (%2 %3%4%5)</source>
         <translation>%1 (%2 %3%4%5)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="151"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="152"/>
         <source>Fills in the factory line settings of a drive family</source>
         <translation>ドライバファミリの工場出荷時の通信設定を入力します</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="154"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="155"/>
         <source>&amp;Family defaults:</source>
         <translation>ファミリ既定値(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="158"/>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="286"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="159"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="289"/>
         <source>%1 bit/s</source>
         <translation>%1 bit/s</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="159"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="160"/>
         <source>&amp;Baud rate:</source>
         <translation>ボーレート(&amp;B):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="161"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="162"/>
         <source>None (N)</source>
         <translation>なし (N)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="162"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
         <source>Even (E)</source>
         <translation>偶数 (E)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
         <source>Odd (O)</source>
         <translation>奇数 (O)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="165"/>
         <source>P&amp;arity:</source>
         <translation>パリティ(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="166"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="167"/>
         <source>1 bit</source>
         <translation>1 ビット</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="167"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
         <source>2 bits</source>
         <translation>2 ビット</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="169"/>
         <source>S&amp;top bits:</source>
         <translation>ストップビット(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="182"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="184"/>
         <source>e.g. 192.168.1.10</source>
         <translation>例: 192.168.1.10</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="183"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="185"/>
         <source>&amp;Host:</source>
         <translation>ホスト(&amp;H):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="186"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="188"/>
         <source>Modbus TCP uses port 502</source>
         <translation>Modbus TCP はポート 502 を使用します</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="187"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="189"/>
         <source>TCP p&amp;ort:</source>
         <translation>TCP ポート(&amp;O):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="199"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="201"/>
         <source>Device types and machine numbers: TYPE@NUMBER, comma separated. Types: %1</source>
         <translation>デバイスタイプと局番: TYPE@NUMBER をカンマ区切りで指定。タイプ: %1</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="202"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="204"/>
         <source>&amp;Devices:</source>
         <translation>デバイス(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="216"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="218"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="217"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="219"/>
         <source>How long to wait for each reply</source>
         <translation>各応答の待ち時間</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="218"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="220"/>
         <source>Response &amp;timeout:</source>
         <translation>応答タイムアウト(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="221"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="223"/>
         <source>Extra attempts after a request got no valid reply</source>
         <translation>有効な応答がなかった要求の再試行回数</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="222"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="224"/>
         <source>R&amp;etries:</source>
         <translation>リトライ(&amp;E):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="322"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="326"/>
         <source>The device list is not valid.</source>
         <translation>デバイスリストが正しくありません。</translation>
     </message>
@@ -3165,138 +3163,213 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ConnectionOptions</name>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="22"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="30"/>
+        <source>--rs485 %1: use off (the adapter switches direction itself), auto, kernel or rts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="36"/>
+        <source>--rts-polarity %1: use high or low (the RTS level while sending)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="44"/>
+        <source>--rts-delay %1: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own delay)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="51"/>
+        <source>--low-latency %1: use on or off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="61"/>
+        <source>--%1 applies to a serial port (--port), not to a Modbus TCP gateway (--tcp)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="65"/>
+        <source>--%1 applies to a serial port (--port), not to a simulated bus</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="66"/>
+        <source>--%1 applies to a serial port only: give it with --port PATH</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="74"/>
         <source>Serial device (e.g. /dev/ttyUSB0 or a pty path).</source>
         <translation>シリアルデバイス（例: /dev/ttyUSB0 または pty のパス）。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="23"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="75"/>
         <source>PATH</source>
         <translation>PATH</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="24"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="76"/>
         <source>Modbus TCP gateway, HOST:PORT (port defaults to 502).</source>
         <translation>Modbus TCP ゲートウェイ、HOST:PORT（ポートの既定値は 502）。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="25"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="77"/>
         <source>HOST:PORT</source>
         <translation>HOST:PORT</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="26"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="78"/>
         <source>In-process simulated bus, e.g. dbu200@1,dbu400@150,dcpid@7.</source>
         <translation>プロセス内のシミュレーションバス。例: dbu200@1,dbu400@150,dcpid@7。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="27"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="79"/>
         <source>SPEC</source>
         <translation>SPEC</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="29"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="81"/>
         <source>Device family whose serial defaults apply (dbu: 19200 8N1, dcpid: 9600 8E1).</source>
         <translation>シリアル既定値を適用するデバイスファミリ（dbu: 19200 8N1、dcpid: 9600 8E1）。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="30"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="82"/>
         <source>FAMILY</source>
         <translation>FAMILY</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="31"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="83"/>
         <source>Baud rate, 1200–115200.</source>
         <translation>ボーレート、1200–115200。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="31"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="83"/>
         <source>BAUD</source>
         <translation>BAUD</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="32"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="84"/>
         <source>Parity: N, E or O.</source>
         <translation>パリティ: N、E、O。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="32"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="84"/>
         <source>N|E|O</source>
         <translation>N|E|O</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="33"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="85"/>
         <source>Stop bits: 1 or 2.</source>
         <translation>ストップビット: 1 または 2。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="33"/>
-        <location filename="../connection/ConnectionOptions.cpp" line="39"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="85"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="91"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="35"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="87"/>
         <source>Response timeout per attempt in ms, 10–10000 (default 200).</source>
         <translation>1 回あたりの応答タイムアウト (ms)、10–10000（既定値 200）。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="35"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="87"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="37"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="89"/>
         <source>Extra attempts after no reply or a garbled one, 0–10 (default 3; 2 more while the line is noisy).</source>
         <translation>無応答または応答化けの後の再試行回数、0–10（既定値 3。回線にノイズが多い間は 2 回追加）。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="73"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="93"/>
+        <source>Who switches the RS-485 direction (serial port only): off (default: the adapter itself, as USB–RS-485 adapters do), kernel (the driver&apos;s RS-485 mode), rts (RTS from the program) or auto (kernel where the driver has it, else rts).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="96"/>
+        <source>MODE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="98"/>
+        <source>RTS level while sending with --rs485 kernel, rts or auto: high (default) or low.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="99"/>
+        <source>high|low</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="101"/>
+        <source>RTS delay before and after sending in µs, 0–100000 (default 0: the driver&apos;s, or libmodbus&apos; one character time; the kernel rounds up to whole ms).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
+        <source>US</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="105"/>
+        <source>Ask the serial driver to pass received bytes on at once (USB adapters otherwise hold them up to 16 ms): on (default) or off.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="107"/>
+        <source>on|off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="151"/>
         <source>give only one of --port, --tcp and --sim</source>
         <translation>--port、--tcp、--sim のいずれか 1 つだけを指定してください</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="75"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="153"/>
         <source>no bus given: use --port PATH, --tcp HOST:PORT or --sim SPEC</source>
         <translation>バスが指定されていません: --port PATH、--tcp HOST:PORT、--sim SPEC のいずれかを使用してください</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="84"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="162"/>
         <source>--family %1: unknown family; use one of %2</source>
         <translation>--family %1: 不明なファミリです。%2 のいずれかを使用してください</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="181"/>
         <source>--tcp: &quot;%1&quot; is not HOST:PORT</source>
         <translation>--tcp: &quot;%1&quot; は HOST:PORT ではありません</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="112"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="190"/>
         <source>--sim: %1</source>
         <translation>--sim: %1</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="125"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="203"/>
         <source>--baud %1: use a baud rate 1200–115200 (e.g. 9600, 19200, 38400)</source>
         <translation>--baud %1: ボーレートは 1200–115200 を指定してください（例: 9600、19200、38400）</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="129"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="207"/>
         <source>--stop-bits %1: use 1 or 2</source>
         <translation>--stop-bits %1: 1 または 2 を指定してください</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="131"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="209"/>
         <source>--timeout %1: use a response timeout of 10–10000 ms</source>
         <translation>--timeout %1: 応答タイムアウトは 10–10000 ms を指定してください</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="134"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="212"/>
         <source>--retries %1: use 0–10 extra attempts</source>
         <translation>--retries %1: 再試行回数は 0–10 を指定してください</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="139"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="217"/>
         <source>--parity %1: use N (none), E (even) or O (odd)</source>
         <translation>--parity %1: N（なし）、E（偶数）、O（奇数）を指定してください</translation>
     </message>
@@ -3304,20 +3377,30 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ConnectionStatus</name>
     <message>
-        <location filename="../ui/main/ConnectionStatus.cpp" line="20"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="21"/>
         <source>SIMULATED BUS — no hardware</source>
         <translation>シミュレーションバス — ハードウェアなし</translation>
     </message>
     <message>
-        <location filename="../ui/main/ConnectionStatus.cpp" line="21"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="22"/>
         <source>These drives exist only in this program; nothing moves.</source>
         <translation>これらのドライバはこのプログラム内にのみ存在します。何も動きません。</translation>
     </message>
     <message>
-        <location filename="../ui/main/ConnectionStatus.cpp" line="26"/>
-        <location filename="../ui/main/ConnectionStatus.cpp" line="61"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="27"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="76"/>
         <source>Not connected</source>
         <translation>未接続</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="54"/>
+        <source>Connected: %1</source>
+        <translation type="unfinished">接続済み: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="56"/>
+        <source> — %1</source>
+        <translation type="unfinished"> — %1</translation>
     </message>
 </context>
 <context>
@@ -3809,7 +3892,7 @@ Configuration changes written but not stored are discarded.</source>
         <translation>デバイス名 &quot;%1&quot; は %2 ではありません</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceIdentifier.cpp" line="115"/>
+        <location filename="../model/session/DeviceIdentifier.cpp" line="116"/>
         <source>the variant cannot be read from the device; choose it</source>
         <translation>デバイスから機種を読み出せません。選択してください</translation>
     </message>
@@ -3896,63 +3979,63 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceSession</name>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="90"/>
+        <location filename="../model/session/DeviceSession.cpp" line="92"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 にはパラメータ &quot;%2&quot; がありません</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="99"/>
-        <location filename="../model/session/DeviceSession.cpp" line="139"/>
+        <location filename="../model/session/DeviceSession.cpp" line="101"/>
+        <location filename="../model/session/DeviceSession.cpp" line="165"/>
         <source>%1 cannot be read (it is a write-only command)</source>
         <translation>%1 は読み出せません（書込み専用コマンド）</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="202"/>
+        <location filename="../model/session/DeviceSession.cpp" line="236"/>
         <source>cannot check the value: reading %1 failed: %2</source>
         <translation>値をチェックできません: %1 の読出しに失敗しました: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="219"/>
+        <location filename="../model/session/DeviceSession.cpp" line="253"/>
         <source>%1 is read-only</source>
         <translation>%1 は読出し専用です</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="225"/>
+        <location filename="../model/session/DeviceSession.cpp" line="259"/>
         <source>%1 is a %2 command; it is only sent when explicitly requested</source>
         <translation>%1 は %2 コマンドです。明示的に要求した場合にのみ送信します</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="255"/>
+        <location filename="../model/session/DeviceSession.cpp" line="289"/>
         <source>%1 cannot be checked: %2</source>
         <translation>%1 はチェックできません: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="277"/>
+        <location filename="../model/session/DeviceSession.cpp" line="311"/>
         <source>reading %1 failed: %2</source>
         <translation>%1 の読出しに失敗しました: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="305"/>
+        <location filename="../model/session/DeviceSession.cpp" line="339"/>
         <source>not written: %1 is written together with 0x%2–0x%3, and reading those first failed: %4</source>
         <translation>未書込み: %1 は 0x%2–0x%3 と一緒に書き込まれますが、それらの事前読出しに失敗しました: %4</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="310"/>
+        <location filename="../model/session/DeviceSession.cpp" line="344"/>
         <source>short reply</source>
         <translation>応答が短すぎます</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="365"/>
+        <location filename="../model/session/DeviceSession.cpp" line="399"/>
         <source>written, but reading it back failed: %1</source>
         <translation>書き込みましたが、読み戻しに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="374"/>
+        <location filename="../model/session/DeviceSession.cpp" line="408"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>照合失敗: %1 を書き込みましたが、デバイスの値は %2 です</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="410"/>
+        <location filename="../model/session/DeviceSession.cpp" line="444"/>
         <source>error code %1</source>
         <translation>エラーコード %1</translation>
     </message>
@@ -6908,7 +6991,6 @@ Still connected to %2; nothing was changed.</source>
     </message>
     <message>
         <location filename="../ui/main/MainWindow.cpp" line="323"/>
-        <location filename="../ui/main/MainWindow.cpp" line="331"/>
         <source>Connected: %1</source>
         <translation>接続済み: %1</translation>
     </message>
@@ -6918,34 +7000,34 @@ Still connected to %2; nothing was changed.</source>
         <translation>接続済み: %1（シミュレーション、ハードウェアなし）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="356"/>
+        <location filename="../ui/main/MainWindow.cpp" line="357"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>ドライバが機種を通知しません。%1 は設定された機種です。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="386"/>
-        <location filename="../ui/main/MainWindow.cpp" line="397"/>
+        <location filename="../ui/main/MainWindow.cpp" line="387"/>
+        <location filename="../ui/main/MainWindow.cpp" line="398"/>
         <source>disconnect</source>
         <translation>切断</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="393"/>
+        <location filename="../ui/main/MainWindow.cpp" line="394"/>
         <source>Not connected (disconnected)</source>
         <translation>未接続（切断済み）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="404"/>
-        <location filename="../ui/main/MainWindow.cpp" line="429"/>
+        <location filename="../ui/main/MainWindow.cpp" line="405"/>
+        <location filename="../ui/main/MainWindow.cpp" line="430"/>
         <source>quit</source>
         <translation>終了</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="415"/>
+        <location filename="../ui/main/MainWindow.cpp" line="416"/>
         <source>Unwritten changes</source>
         <translation>未書込みの変更</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="416"/>
+        <location filename="../ui/main/MainWindow.cpp" line="417"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>%n 件の編集がドライバに書き込まれていません。破棄して終了しますか？</numerusform>
@@ -8741,22 +8823,22 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::PtySimServer</name>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="49"/>
+        <location filename="../sim/PtySimServer.cpp" line="50"/>
         <source>cannot open a pseudo-terminal: %1</source>
         <translation>疑似端末を開けません: %1</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="66"/>
+        <location filename="../sim/PtySimServer.cpp" line="67"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1 は既に存在し、シンボリックリンクではありません。置き換えません</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="72"/>
+        <location filename="../sim/PtySimServer.cpp" line="73"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>シンボリックリンク %1 -&gt; %2 を作成できません</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="114"/>
+        <location filename="../sim/PtySimServer.cpp" line="115"/>
         <source>the port is plugged in: %1</source>
         <translation>ポートを接続しました: %1</translation>
     </message>
@@ -11044,32 +11126,32 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>%3 で局番 %1–%2 をスキャン中（各 %4 ms）…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="210"/>
+        <location filename="../cli/ScanCommand.cpp" line="211"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>局番をスキャンする前に中断しました。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="212"/>
+        <location filename="../cli/ScanCommand.cpp" line="213"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>中断: 局番 %1–%2 をスキャンしました（%4 中 %3）。%5–%6 は未問い合わせです。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="226"/>
+        <location filename="../cli/ScanCommand.cpp" line="227"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>エラー: 局番 %1 でスキャンが停止しました: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="236"/>
+        <location filename="../cli/ScanCommand.cpp" line="237"/>
         <source>warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="238"/>
+        <location filename="../cli/ScanCommand.cpp" line="239"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>注: %1 台のドライバが %2 ms の待ち時間の後に応答したため、再度問い合わせました。スキャンでドライバが見つからない場合は、--wait を長くしてください。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="244"/>
+        <location filename="../cli/ScanCommand.cpp" line="245"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -11080,84 +11162,177 @@ This moves or stops a motor: add --yes to send it.</source>
   - 終端抵抗（バスの両端に 120 Ω）とドライバの電源</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="257"/>
+        <location filename="../cli/ScanCommand.cpp" line="258"/>
         <source>hint: %1 Retry with the same connection and: %2</source>
         <translation>ヒント: %1 同じ接続に次を加えて再試行してください: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="287"/>
+        <location filename="../cli/ScanCommand.cpp" line="271"/>
+        <source>Serial line: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="274"/>
+        <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="303"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 機種不明</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="288"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
         <translation>ドライバが機種を通知しません。--variant %1=VARIANT で指定してください (%2)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="320"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="320"/>
         <source>hex</source>
         <translation>16 進</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="320"/>
         <source>switches</source>
         <translation>スイッチ</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="320"/>
         <source>family</source>
         <translation>ファミリ</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="305"/>
+        <location filename="../cli/ScanCommand.cpp" line="321"/>
         <source>model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="305"/>
+        <location filename="../cli/ScanCommand.cpp" line="321"/>
         <source>firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="305"/>
+        <location filename="../cli/ScanCommand.cpp" line="321"/>
         <source>state</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="311"/>
+        <location filename="../cli/ScanCommand.cpp" line="327"/>
         <source>comm. group</source>
         <translation>通信グループ</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="379"/>
+        <location filename="../cli/ScanCommand.cpp" line="395"/>
         <source>1 drive found in %1 s</source>
         <translation>1 台のドライバを検出（%1 s）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="380"/>
+        <location filename="../cli/ScanCommand.cpp" line="396"/>
         <source>%1 drives found in %2 s</source>
         <translation>%1 台のドライバを検出（%2 s）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="382"/>
+        <location filename="../cli/ScanCommand.cpp" line="398"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>。局番重複の可能性 1 件: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="384"/>
+        <location filename="../cli/ScanCommand.cpp" line="400"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>。局番重複の可能性 %1 件: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="395"/>
+        <location filename="../cli/ScanCommand.cpp" line="411"/>
         <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>警告: 局番 %1 (%2, %3) の応答が化けています: 2 台のドライバが同じ局番になっている可能性があります。このバス上のドライバの SW1/SW2 スイッチを確認し、各ドライバに固有の局番を設定して電源を入れ直し、再度スキャンしてください。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::SerialLineFields</name>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="29"/>
+        <source>Adapter switches itself</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="30"/>
+        <source>Auto (kernel, else RTS)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="31"/>
+        <source>Kernel RS-485 mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="32"/>
+        <source>RTS from the program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="34"/>
+        <source>Who switches the RS-485 transceiver between sending and receiving. USB–RS-485 adapters do it themselves; on-board RS-485 ports need the driver&apos;s RS-485 mode (kernel) or RTS switched by the program. The status bar says what the driver accepted.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="38"/>
+        <source>RS-485 d&amp;irection:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="43"/>
+        <source>high while sending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="44"/>
+        <source>low while sending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="45"/>
+        <source>The RTS level that enables the transceiver&apos;s driver</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="50"/>
+        <source>delay </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="51"/>
+        <source> µs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="52"/>
+        <source>default delay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="53"/>
+        <source>Before and after sending. Default: the driver&apos;s own, or one character time from the program; the kernel rounds up to whole ms.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="58"/>
+        <source>RTS le&amp;vel:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="62"/>
+        <source>&amp;Low latency (no 16 ms hold-back in USB adapters)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="65"/>
+        <source>Asks the driver to pass received bytes on at once. Many USB–serial chips otherwise hold them for up to 16 ms, which slows scans and polling.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -11455,17 +11630,17 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>opentop-sim: --defect %1 (%2@%1): %3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="168"/>
+        <location filename="../sim/SimApp.cpp" line="169"/>
         <source>the port is unplugged already</source>
         <translation>ポートはすでに切断されています</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="170"/>
+        <location filename="../sim/SimApp.cpp" line="171"/>
         <source>unplugged</source>
         <translation>切断しました</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="203"/>
+        <location filename="../sim/SimApp.cpp" line="204"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
@@ -11549,7 +11724,7 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>局番 %1 が 2 回使用されています</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="231"/>
+        <location filename="../sim/SimBus.cpp" line="233"/>
         <source>no device with machine number %1 (bus: %2)</source>
         <translation>局番 %1 のデバイスがありません（バス: %2）</translation>
     </message>
@@ -11641,76 +11816,81 @@ This moves or stops a motor: add --yes to send it.</source>
     <name>opentop::SimDefectSpec</name>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="45"/>
-        <source>firmware=MAJOR.MINOR (e.g. firmware=1.4), max_speed=N (e.g. max_speed=800), stall, load=+N, load=-N or load=xF (e.g. load=+40, load=x1.5), alarm=CODE@TIME (e.g. alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (a parameter name or register address, e.g. nostick=spno2.speed, nostore=0x0081), clear</source>
-        <translation>firmware=MAJOR.MINOR（例: firmware=1.4）、max_speed=N（例: max_speed=800）、stall、load=+N、load=-N または load=xF（例: load=+40、load=x1.5）、alarm=CODE@TIME（例: alarm=0x07@1500ms、alarm=overload@2s。DC: alarm=stall@1s）、nostick=PARAM、nostore=PARAM（パラメータ名またはレジスタアドレス。例: nostick=spno2.speed、nostore=0x0081）、clear</translation>
+        <source>firmware=MAJOR.MINOR (e.g. firmware=1.4), max_speed=N (e.g. max_speed=800), stall, load=+N, load=-N or load=xF (e.g. load=+40, load=x1.5), alarm=CODE@TIME (e.g. alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (a parameter name or register address, e.g. nostick=spno2.speed, nostore=0x0081), turnaround=MS (e.g. turnaround=14), clear</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="119"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="123"/>
         <source>unknown defect &quot;%1&quot;; allowed: %2</source>
         <translation>不明な不具合 &quot;%1&quot;。使用可能: %2</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="122"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="126"/>
         <source>&quot;%1&quot; needs a value: %2=...</source>
         <translation>&quot;%1&quot; には値が必要です: %2=...</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="124"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="128"/>
         <source>&quot;%1&quot; takes no value; write %2</source>
         <translation>&quot;%1&quot; は値を取りません。%2 と記述してください</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="137"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="141"/>
         <source>firmware=%1: write MAJOR.MINOR with each 0..255, e.g. firmware=1.4</source>
         <translation>firmware=%1: MAJOR.MINOR（各 0..255）の形式で記述してください。例: firmware=1.4</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="144"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="148"/>
         <source>max_speed=%1: write a whole number 0..%2, e.g. max_speed=800</source>
         <translation>max_speed=%1: 0..%2 の整数を記述してください。例: max_speed=800</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="154"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="158"/>
         <source>load=%1: a factor is x0.1..x10, e.g. load=x1.5</source>
         <translation>load=%1: 係数は x0.1..x10 です。例: load=x1.5</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="159"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="163"/>
         <source>load=%1: an offset is -200..+200, e.g. load=+40</source>
         <translation>load=%1: オフセットは -200..+200 です。例: load=+40</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="162"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="166"/>
         <source>load=%1: write load=+N, load=-N (an offset) or load=xF (a factor), e.g. load=+40 or load=x1.5</source>
         <translation>load=%1: load=+N、load=-N（オフセット）または load=xF（係数）の形式で記述してください。例: load=+40 または load=x1.5</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="171"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="175"/>
         <source>alarm=%1: write alarm=CODE@TIME, e.g. alarm=0x07@1500ms or alarm=overload@2s</source>
         <translation>alarm=%1: alarm=CODE@TIME の形式で記述してください。例: alarm=0x07@1500ms または alarm=overload@2s</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="176"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="180"/>
         <source>alarm=%1: the time after the start is 0..3600 s, written 1500ms, 1.5s or 1500 (ms)</source>
         <translation>alarm=%1: 運転開始後の時間は 0..3600 s です。1500ms、1.5s または 1500 (ms) の形式で記述してください</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="183"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="189"/>
+        <source>turnaround=%1: write the answer delay in ms, 0..1000, e.g. turnaround=14</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../sim/SimDefectSpec.cpp" line="194"/>
         <source>%1=%2: name a parameter (e.g. spno2.speed) or a register address (e.g. 0x1102)</source>
         <translation>%1=%2: パラメータ名（例: spno2.speed）またはレジスタアドレス（例: 0x1102）を指定してください</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="199"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="210"/>
         <source>no defect given; allowed: %1</source>
         <translation>不具合が指定されていません。使用可能: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="205"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="216"/>
         <source>empty item in &quot;%1&quot;</source>
         <translation>&quot;%1&quot; に空の項目があります</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="223"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="234"/>
         <source>&quot;%1&quot;: write ID:DEFECT[,DEFECT...] with ID the machine number 1..247, e.g. 3:firmware=1.4 or 5:max_speed=800,load=+40</source>
         <translation>&quot;%1&quot;: ID:DEFECT[,DEFECT...] の形式で記述してください（ID は局番 1..247）。例: 3:firmware=1.4 または 5:max_speed=800,load=+40</translation>
     </message>
@@ -11723,17 +11903,17 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>%1 はファームウェアバージョンを通知しません</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefects.cpp" line="82"/>
+        <location filename="../sim/SimDefects.cpp" line="83"/>
         <source>alarm=%1: a %2 has no alarm codes; its protection is the stall stop: write alarm=stall@TIME</source>
         <translation>alarm=%1: %2 にはアラームコードがありません。保護機能はストール停止です: alarm=stall@TIME と記述してください</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefects.cpp" line="98"/>
+        <location filename="../sim/SimDefects.cpp" line="99"/>
         <source>alarm=%1: not an alarm of a %2; allowed: %3</source>
         <translation>alarm=%1: %2 のアラームではありません。使用可能: %3</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefects.cpp" line="109"/>
+        <location filename="../sim/SimDefects.cpp" line="110"/>
         <source>%1=%2: no writable parameter of a %3 has this name or address; e.g. %4</source>
         <translation>%1=%2: %3 にこの名前またはアドレスの書込み可能なパラメータはありません。例: %4</translation>
     </message>
@@ -11785,6 +11965,8 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
   --parity N|E|O     line parity (N)
   --wire-timing      delay replies as a real line at --baud would
   --turnaround MS    device turnaround with --wire-timing (2)
+  --half-duplex      with --wire-timing: a request overlapping a reply on the line
+                     garbles both, one within 3.5 characters of a reply is lost
   --faults LIST      e.g. drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
   --seed N           seed of the fault injection (1)
   --defect ID:LIST   defects of drive ID (repeatable), LIST of:
@@ -11810,119 +11992,85 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 Prints &quot;pty: PATH&quot; (and &quot;tcp: HOST:PORT&quot;), then &quot;ready&quot;. Reads console commands
 from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </source>
-        <translation>使い方: opentop-sim --devices SPEC [options]
-疑似端末上、または Modbus TCP ゲートウェイとして Modbus RTU ドライバをシミュレートします。
-
-  --devices SPEC     デバイスと局番。例: dbu200@1,dbu400@150,dcpid@7
-  --pty [PATH]       pty で提供（既定）。PATH: このシンボリックリンクも作成
-  --tcp HOST:PORT    Modbus TCP で提供（HOST の既定は 127.0.0.1、PORT 0: 任意）
-  --baud N           回線タイミングとデバイス設定の通信速度 (19200)
-  --parity N|E|O     回線のパリティ (N)
-  --wire-timing      --baud の実回線と同様に応答を遅延させる
-  --turnaround MS    --wire-timing 時のデバイスのターンアラウンド (2)
-  --faults LIST      例: drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
-  --seed N           フォールト注入のシード (1)
-  --defect ID:LIST   ドライバ ID の不具合（複数指定可）。LIST の要素:
-                       firmware=MAJOR.MINOR  識別時にこのバージョンを通知
-                       max_speed=N           モータは N で飽和 (DBU r/min、
-                                             DC 転流回数/s)、負荷大
-                       stall                 モータが回転しない、負荷大
-                       load=+N|-N|xF         負荷率 (DC: 電流 %) にオフセットまたは倍率
-                       alarm=CODE@TIME       運転して TIME 後にアラーム。例:
-                                             0x07@1500ms、overload@2s (DC: stall@1s)
-                       nostick=PARAM         書込みに応答するが、旧値のまま
-                       nostore=PARAM         次の電源再投入で値が消える
-                     例: --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
-  --motor LIST       DC コントローラのモータと負荷。例: inertia=2e-4,load=0.05。
-                     supply (V)、resistance (ohm)、no_load（フルデューティ時の 1/s）、
-                     commutations（1 回転あたりの転流回数）、inertia (kg m2)、viscous
-                     (N m s/rad)、coulomb (N m)、load (N m)、gate (ms)、tacho (V s)
-  --quiet            stderr にフレームトレースを出力しない
-  --lang CODE        メッセージの言語: en, zh_TW, zh_CN, ko, ja
-  --help             このテキスト
-  --version          プログラムのバージョン
-
-&quot;pty: PATH&quot;（および &quot;tcp: HOST:PORT&quot;）を出力した後、&quot;ready&quot; を出力します。コンソールコマンドを
-標準入力から読み取ります (help と入力)。SIGINT、SIGTERM、quit で停止します。
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="85"/>
+        <location filename="../sim/SimOptions.cpp" line="87"/>
         <source>--lang needs a language code such as ko</source>
         <translation>--lang には ko などの言語コードが必要です</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="88"/>
+        <location filename="../sim/SimOptions.cpp" line="90"/>
         <source>--devices needs a device list such as dbu200@1,dcpid@7</source>
         <translation>--devices には dbu200@1,dcpid@7 のようなデバイスリストが必要です</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="97"/>
+        <location filename="../sim/SimOptions.cpp" line="99"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:5020</source>
         <translation>--tcp には HOST:PORT が必要です。例: 127.0.0.1:5020</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="103"/>
+        <location filename="../sim/SimOptions.cpp" line="105"/>
         <source>--tcp needs HOST:PORT with PORT 0..65535, got &apos;%1&apos;</source>
         <translation>--tcp には PORT が 0..65535 の HOST:PORT が必要です（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="115"/>
+        <location filename="../sim/SimOptions.cpp" line="117"/>
         <source>--baud must be one of %1, got &apos;%2&apos;</source>
         <translation>--baud は %1 のいずれかでなければなりません（指定値 &apos;%2&apos;）</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="122"/>
+        <location filename="../sim/SimOptions.cpp" line="124"/>
         <source>--parity must be N, E or O, got &apos;%1&apos;</source>
         <translation>--parity は N、E、O のいずれかでなければなりません（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="130"/>
+        <location filename="../sim/SimOptions.cpp" line="134"/>
         <source>--turnaround must be 0..1000 ms, got &apos;%1&apos;</source>
         <translation>--turnaround は 0..1000 ms でなければなりません（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="134"/>
+        <location filename="../sim/SimOptions.cpp" line="138"/>
         <source>--faults needs a list such as drop=0.02,crc=0.01</source>
         <translation>--faults には drop=0.02,crc=0.01 のようなリストが必要です</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="138"/>
+        <location filename="../sim/SimOptions.cpp" line="142"/>
         <source>--faults: %1</source>
         <translation>--faults: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="144"/>
+        <location filename="../sim/SimOptions.cpp" line="148"/>
         <source>--seed must be a whole number 0..4294967295, got &apos;%1&apos;</source>
         <translation>--seed は 0..4294967295 の整数でなければなりません（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="148"/>
+        <location filename="../sim/SimOptions.cpp" line="152"/>
         <source>--defect needs ID:DEFECT[,DEFECT...], e.g. 3:firmware=1.4; DEFECT: %1</source>
         <translation>--defect には ID:DEFECT[,DEFECT...] が必要です。例: 3:firmware=1.4。DEFECT: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="155"/>
+        <location filename="../sim/SimOptions.cpp" line="159"/>
         <source>--defect: %1</source>
         <translation>--defect: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="159"/>
+        <location filename="../sim/SimOptions.cpp" line="163"/>
         <source>--motor needs a list such as inertia=2e-4,load=0.05</source>
         <translation>--motor には inertia=2e-4,load=0.05 のようなリストが必要です</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="163"/>
+        <location filename="../sim/SimOptions.cpp" line="167"/>
         <source>--motor: %1</source>
         <translation>--motor: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="169"/>
-        <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
-        <translation>不明な引数 &apos;%1&apos;。オプション: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</translation>
+        <location filename="../sim/SimOptions.cpp" line="172"/>
+        <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="177"/>
+        <location filename="../sim/SimOptions.cpp" line="181"/>
         <source>--devices SPEC is required, e.g. --devices dbu200@1,dcpid@7</source>
         <translation>--devices SPEC は必須です。例: --devices dbu200@1,dcpid@7</translation>
     </message>
@@ -12905,27 +13053,37 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>バイトタイムアウト %1 ms は使用できません: 1–10000 ms、またはボーレートから算出する場合は 0 を使用してください。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="47"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="45"/>
+        <source>RS-485 mode %1 is not supported: use off, auto, kernel or rts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/ConnectionSettings.cpp" line="50"/>
+        <source>RTS delay %1 µs is not allowed: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/ConnectionSettings.cpp" line="59"/>
         <source>No host given: enter the gateway&apos;s address, e.g. 192.168.1.10.</source>
         <translation>ホストが指定されていません: ゲートウェイのアドレスを入力してください。例: 192.168.1.10。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="51"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="63"/>
         <source>TCP port %1 is not allowed: use 1–65535 (Modbus TCP uses 502).</source>
         <translation>TCP ポート %1 は使用できません: 1–65535 を使用してください（Modbus TCP は 502）。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="58"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="70"/>
         <source>No simulated devices given: use a list such as dbu200@1,dcpid@7.</source>
         <translation>シミュレーションデバイスが指定されていません: dbu200@1,dcpid@7 のようなリストを使用してください。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="64"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="76"/>
         <source>Timeout %1 ms is not allowed: use 10–10000 ms.</source>
         <translation>タイムアウト %1 ms は使用できません: 10–10000 ms を使用してください。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="68"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="80"/>
         <source>%1 retries are not allowed: use 0–10.</source>
         <translation>リトライ %1 回は使用できません: 0–10 を使用してください。</translation>
     </message>
@@ -12970,75 +13128,75 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>オブジェクト 0x%1</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="51"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="52"/>
         <source>Cannot open %1: %2</source>
         <translation>%1 を開けません: %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="127"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="309"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="129"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="325"/>
         <source>%1 is not open</source>
         <translation>%1 が開いていません</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="144"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="151"/>
         <source>send failed</source>
         <translation>送信失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="168"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="177"/>
         <source>interrupted while waiting</source>
         <translation>待機中に中断しました</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="172"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="181"/>
         <location filename="../transport/MockBackend.cpp" line="100"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 以内に応答がありません</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="201"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="211"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>別の応答が続きました: この応答は以前の要求に対するものの可能性があります</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="270"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="307"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>局番 %1 からの応答（期待値 %2）</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="281"/>
-        <location filename="../transport/RtuBackend.cpp" line="146"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="318"/>
+        <location filename="../transport/RtuBackend.cpp" line="160"/>
         <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>応答が不完全です</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="286"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="323"/>
         <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 不一致</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="293"/>
-        <location filename="../transport/RtuBackend.cpp" line="153"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="330"/>
+        <location filename="../transport/RtuBackend.cpp" line="167"/>
         <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>受信失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="363"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="404"/>
         <source> (connection closed)</source>
         <translation> (接続切断)</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="384"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="426"/>
         <source>stale bytes discarded before sending</source>
         <translation>送信前に残留バイトを破棄しました</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="466"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="510"/>
         <source>late bytes discarded after an error</source>
         <translation>エラー後に遅延バイトを破棄しました</translation>
     </message>
@@ -13063,18 +13221,18 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>エコー %1 ×%2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="192"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="211"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="201"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="220"/>
         <source>cancelled before sending</source>
         <translation>送信前にキャンセルしました</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="242"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="254"/>
         <source>cannot open %1</source>
         <translation>%1 を開けません</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="285"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="301"/>
         <source>client closed</source>
         <translation>クライアントが切断しました</translation>
     </message>
@@ -13319,7 +13477,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>%1 は %2 (PID %3) が使用中です。先に終了してください。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="83"/>
+        <location filename="../transport/RtuBackend.cpp" line="97"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -13328,17 +13486,17 @@ then log out and in again (the group applies to new sessions only).</source>
 ログアウトして再ログインしてください（グループは新しいセッションにのみ適用されます）。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="89"/>
+        <location filename="../transport/RtuBackend.cpp" line="103"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> (デバイスがこのパリティに対応していない可能性があります。pty は N が必要です)</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="124"/>
+        <location filename="../transport/RtuBackend.cpp" line="138"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>応答が %1 バイトを示していますが、RTU フレームの最大長を超えています</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="145"/>
+        <location filename="../transport/RtuBackend.cpp" line="159"/>
         <source>no reply</source>
         <translation>応答なし</translation>
     </message>
@@ -13416,6 +13574,156 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../transport/TrafficEntry.cpp" line="37"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="13"/>
+        <source>%1 ms</source>
+        <translation type="unfinished">%1 ms</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="14"/>
+        <source>%1 µs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="31"/>
+        <source>RTS high while sending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="32"/>
+        <source>RTS low while sending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="35"/>
+        <source>, %1 before and after</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="37"/>
+        <source>, %1 before, %2 after</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="43"/>
+        <source>RS-485: switched by the adapter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="45"/>
+        <source>RS-485: kernel mode left on by the driver (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="49"/>
+        <source>RS-485: kernel (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="52"/>
+        <source>RS-485: RTS from the program (%1; kernel mode refused: %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="56"/>
+        <source>RS-485: RTS from the program (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="61"/>
+        <source>RS-485: not available (kernel mode refused: %1; RTS not switchable: %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="66"/>
+        <source>RS-485: RTS not switchable on this port (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="69"/>
+        <source>RS-485: kernel mode refused by the driver (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="78"/>
+        <source>latency timer %1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="86"/>
+        <source>low latency: not a UART, no adapter latency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="90"/>
+        <source>low latency: on (but %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="92"/>
+        <source>low latency: on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="95"/>
+        <source>low latency: not offered by the driver (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="99"/>
+        <source>low latency: not offered by the driver (USB adapter: up to %1 ms assumed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="103"/>
+        <source>low latency: not offered by the driver</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="107"/>
+        <source>low latency: off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="108"/>
+        <source>low latency: off (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="132"/>
+        <source>low latency is off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="134"/>
+        <source>the driver took low latency but kept its latency timer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="137"/>
+        <source>the driver did not take low latency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="140"/>
+        <source>see docs/hardware.md, or use an adapter whose driver offers low latency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="144"/>
+        <source>as root: echo 1 &gt; %1, or the udev rule in docs/hardware.md</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="148"/>
+        <source>The adapter holds received bytes for up to %1 ms before passing them on (%2). Fix: %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineSetup.cpp" line="106"/>
+        <source>the driver left it off</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -13872,12 +14180,12 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>電流 (A)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="61"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="65"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="61"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="65"/>
         <source>Speed (%1)</source>
         <translation>速度 (%1)</translation>
     </message>
@@ -14241,127 +14549,127 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningRunner</name>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="183"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="190"/>
         <source>a tuning test is already running</source>
         <translation>チューニング試験がすでに実行中です</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="191"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="198"/>
         <source>Reading the drive&apos;s settings</source>
         <translation>ドライバの設定を読出し中</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="199"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="206"/>
         <source>could not read the drive&apos;s settings: %1</source>
         <translation>ドライバの設定を読み出せませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="224"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="231"/>
         <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
         <translation>ドライバが閉ループ速度モードではありません: 先に %1 (%2) を %3 に設定してください</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="226"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="233"/>
         <source> or </source>
         <translation> または </translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="241"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="248"/>
         <source>Setting the communication-loss braking time to %1 s</source>
         <translation>通信断停止時間を %1 s に設定中</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="265"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="272"/>
         <source>the drive stopped answering: %1</source>
         <translation>ドライバが応答しなくなりました: %1</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="283"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="290"/>
         <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
         <translation>速度 %1 %2 が試験の制限値 %3 %2 を超えました: 即時停止</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="290"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="297"/>
         <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
         <translation>電流 %1 A が試験の制限値 %2 A を超えました: 即時停止</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="296"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="303"/>
         <source>cancelled</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="356"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="364"/>
         <source>Stopping the motor</source>
         <translation>モータを停止中</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="362"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="370"/>
         <source>motor stopped (confirmed)</source>
         <translation>モータ停止（確認済み）</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="363"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="371"/>
         <source>the motor could not be confirmed stopped: check it</source>
         <translation>モータの停止を確認できません: モータを点検してください</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="398"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="406"/>
         <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
         <translation>ステップ試験はある速度から別の速度へ正転で行います: 開始速度と目標速度は異なる値で、0 以上でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="405"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="413"/>
         <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
         <translation>%1 %2 は試験の速度制限値 %3 %2 を超えています</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="413"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="421"/>
         <source>Running to %1 %2</source>
         <translation>%1 %2 まで運転中</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="449"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="457"/>
         <source>Step to %1 %2</source>
         <translation>%1 %2 へステップ</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="477"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="484"/>
         <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
         <translation>運転速度は 0 より大きく、試験の速度制限値 %1 %2 より小さくなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="484"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="491"/>
         <source>the relay amplitude must be 0–50 % of full output</source>
         <translation>リレー振幅は最大出力の 0–50 % でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="487"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="494"/>
         <source>Open loop: finding the output for %1 %2</source>
         <translation>開ループ: %1 %2 に必要な出力を探索中</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="536"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="542"/>
         <source>the motor did not turn at %1 % output</source>
         <translation>出力 %1 % でモータが回転しませんでした</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="572"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="578"/>
         <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
         <translation>運転速度には出力 %1 % が必要です: その上下に ±%2 % の余裕がありません</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="577"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="583"/>
         <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
         <translation>%1 %2 付近でリレー試験中 (出力 %3 % ± %4 %)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="611"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="616"/>
         <source>no steady oscillation within %1 s: %2</source>
         <translation>%1 s 以内に安定した振動が得られませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="613"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="618"/>
         <source>try a larger amplitude</source>
         <translation>振幅を大きくしてみてください</translation>
     </message>
@@ -14369,59 +14677,59 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningRunsView</name>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="36"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="37"/>
         <source>Save CSV…</source>
         <translation>CSV を保存…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="37"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="38"/>
         <source>Save PNG…</source>
         <translation>PNG を保存…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="42"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="43"/>
         <source>Saves the selected run: its samples, gains and metrics</source>
         <translation>選択した実行結果を保存します: サンプル、ゲイン、指標</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="43"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
         <source>Saves the chart as it is shown</source>
         <translation>表示どおりにグラフを保存します</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="45"/>
         <source>solid: speed · dotted: command · dash-dot: current (right axis) · dashed: predicted speed</source>
         <translation>実線: 速度 · 点線: 指令 · 一点鎖線: 電流（右軸） · 破線: 予測速度</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="161"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="169"/>
         <source>no run to save</source>
         <translation>保存する実行結果がありません</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="174"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="178"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="182"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
         <source>Save run as CSV</source>
         <translation>実行結果を CSV で保存</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="175"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="183"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="183"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="191"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="194"/>
         <source>Save chart as PNG</source>
         <translation>グラフを PNG で保存</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="184"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="192"/>
         <source>PNG images (*.png)</source>
         <translation>PNG 画像 (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="194"/>
         <source>Could not write %1.</source>
         <translation>%1 に書き込めませんでした。</translation>
     </message>
@@ -14596,104 +14904,104 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ValueCodec</name>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="202"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="201"/>
         <source>depends on %1, which is not known yet</source>
         <translation>%1 に依存しますが、まだ不明です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="204"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="203"/>
         <source>text of up to %1 characters</source>
         <translation>最大 %1 文字のテキスト</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="178"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="214"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="177"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="213"/>
         <source> or </source>
         <translation> または </translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="193"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="192"/>
         <source>%1: %2 is outside the recommended range %3; it is allowed and will be written</source>
         <translation>%1: %2 は推奨範囲 %3 外です。許容される値のため書き込みます</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="222"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="221"/>
         <source>, or </source>
         <translation>、または </translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="223"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="222"/>
         <source>any value</source>
         <translation>任意の値</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="239"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="238"/>
         <source> (the variant is not known, so the value must suit %1; name the variant to use its own range)</source>
         <translation> (機種が不明なため、値は %1 に適合する必要があります。機種を指定するとその機種の範囲を使用します)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="249"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="248"/>
         <source>%1: the allowed values depend on %2, which has not been read</source>
         <translation>%1: 許容値が依存する %2 をまだ読み出していません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="254"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="253"/>
         <source>%1: value out of the register&apos;s range; allowed: %2</source>
         <translation>%1: 値がレジスタの範囲外です。許容値: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="266"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="265"/>
         <source>%1: %2 is not allowed; allowed: %3</source>
         <translation>%1: %2 は許可されていません。許容値: %3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="278"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="277"/>
         <source>%1: expected %2 registers, got %3</source>
         <translation>%1: %2 レジスタが必要ですが、%3 レジスタでした</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="316"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="315"/>
         <source>%1 is text, not a number</source>
         <translation>%1 はテキストで、数値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="329"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="328"/>
         <source>%1: %2 is finer than the step of %3 %4; allowed: %5</source>
         <translation>%1: %2 は %3 %4 の刻みより細かい値です。許容値: %5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="362"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="361"/>
         <source>%1: at most %2 characters</source>
         <translation>%1: 最大 %2 文字</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="368"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="367"/>
         <source>%1: only printable ASCII characters are allowed</source>
         <translation>%1: 印字可能な ASCII 文字のみ使用できます</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="380"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="379"/>
         <source>%1: no value given; allowed: %2</source>
         <translation>%1: 値が指定されていません。許容値: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="420"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="419"/>
         <source>%1: &quot;%2&quot; is only available when %3 is %4; allowed now: %5</source>
         <translation>%1: &quot;%2&quot; は %3 が %4 の場合のみ使用できます。現在の許容値: %5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="433"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="453"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="432"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="452"/>
         <source>%1: &quot;%2&quot; is not a valid value; allowed: %3</source>
         <translation>%1: &quot;%2&quot; は有効な値ではありません。許容値: %3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="479"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="478"/>
         <source>(invalid)</source>
         <translation>（無効）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="490"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="489"/>
         <source>unknown code %1</source>
         <translation>不明なコード %1</translation>
     </message>

@@ -33,12 +33,12 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="54"/>
+        <location filename="../app/gui/main.cpp" line="58"/>
         <source>Commissioning tool for RS-485 Modbus-RTU motor drives.</source>
         <translation>RS-485 Modbus-RTU 모터 드라이버용 커미셔닝 도구.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="58"/>
+        <location filename="../app/gui/main.cpp" line="62"/>
         <source>Language of the program: %1 (default: the language menu&apos;s choice, else the system&apos;s).</source>
         <translation>프로그램 언어: %1 (기본값: 언어 메뉴에서 고른 언어, 없으면 시스템 언어).</translation>
     </message>
@@ -76,6 +76,11 @@
         <location filename="../app/gui/MonitorOptions.cpp" line="103"/>
         <source>--stats-every needs a number of seconds</source>
         <translation>--stats-every에는 초 값이 필요합니다</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/StartupProbe.cpp" line="23"/>
+        <source>Print how long the start took once the window shows the bus&apos;s drives, then quit (for measurements).</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -801,98 +806,98 @@
         <translation>해제 방법</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="107"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="109"/>
         <source>Cause and remedy</source>
         <translation>원인 및 조치</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="108"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="110"/>
         <source>Communication error register</source>
         <translation>통신 오류 레지스터</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="120"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="123"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>알람 리셋 명령을 보냅니다. 알람이 해제되었는지, 전원 재투입으로만 해제되는지 알려줍니다</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="122"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>드라이버에 보관된 알람·경고 기록을 삭제합니다</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="127"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="298"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="130"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="301"/>
         <source>Select a record to see its cause and remedy.</source>
         <translation>원인과 조치를 보려면 기록을 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="128"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="131"/>
         <source>Not read yet.</source>
         <translation>아직 읽지 않음.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="130"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="133"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>이 드라이버는 알람·경고 기록을 보관하지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="160"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="163"/>
         <source>Alarm state: %1</source>
         <translation>알람 상태: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="252"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="255"/>
         <source>Reading the records…</source>
         <translation>기록을 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="268"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="271"/>
         <source>No alarm is active.</source>
         <translation>발생 중인 알람이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="270"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="273"/>
         <source>Alarm active: %1 %2.</source>
         <translation>알람 발생 중: %1 %2.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="272"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
         <source>An alarm is active.</source>
         <translation>알람이 발생 중입니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="278"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>이 드라이버는 전원 재투입으로만 알람이 해제되도록 설정되어 있습니다(%1): Alarm-Reset으로는 어떤 알람도 해제되지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="279"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="282"/>
         <source>Could not be read: %1</source>
         <translation>읽을 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="305"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="308"/>
         <source>This drive has no communication error register.</source>
         <translation>이 드라이버에는 통신 오류 레지스터가 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="307"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="310"/>
         <source>%1: could not be read.</source>
         <translation>%1: 읽을 수 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="309"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
         <source>%1: no error (0).</source>
         <translation>%1: 오류 없음(0).</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="315"/>
         <source>%1: %2, not a known code.</source>
         <translation>%1: %2, 알 수 없는 코드.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="317"/>
         <source>%1: %2 %3
 Cause: %4
 Remedy: %5</source>
@@ -901,153 +906,153 @@ Remedy: %5</source>
 조치: %5</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="326"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="329"/>
         <source>No alarm records</source>
         <translation>알람 기록 없음</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="326"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="329"/>
         <source>No warning records</source>
         <translation>경고 기록 없음</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="332"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="335"/>
         <source>%1: could not be read: %2</source>
         <translation>%1: 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="335"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="338"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1: 기록 %3개 중 %2개, 최신순</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="346"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="349"/>
         <source>unknown code</source>
         <translation>알 수 없는 코드</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="375"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="378"/>
         <source>Record %1: code %2 is not in the %3 table.</source>
         <translation>기록 %1: 코드 %2이(가) %3 표에 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="380"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="383"/>
         <source>%1 %2 (record %3)</source>
         <translation>%1 %2 (기록 %3)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="382"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="385"/>
         <source>Cause: %1</source>
         <translation>원인: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="384"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="387"/>
         <source>Remedy: %1</source>
         <translation>조치: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="386"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="389"/>
         <source>To clear: %1</source>
         <translation>해제 방법: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="415"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="418"/>
         <source>Writes: %1</source>
         <translation>쓰기: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="416"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="419"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>원인이 제거되었으면 발생 중인 알람을 해제합니다. 일부 알람은 전원 재투입으로만 해제되며, 결과에 표시됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="419"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="422"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>이 드라이버는 전원 재투입으로만 알람이 해제되도록 설정되어 있습니다(%1).</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="421"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="423"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="424"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="426"/>
         <source>Reset alarm</source>
         <translation>알람 리셋</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="422"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="425"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>국번 %1에 알람 리셋 명령을 보내시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="430"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="433"/>
         <source>Sending the alarm reset…</source>
         <translation>알람 리셋을 보내는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="436"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="439"/>
         <source>Alarm reset: %1</source>
         <translation>알람 리셋: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="439"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="442"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>드라이버 전원을 끄고 5 s 기다린 뒤 다시 켜십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="450"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="453"/>
         <source>%1 (%2 records)</source>
         <translation>%1 (기록 %2건)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="452"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
         <source>the alarm and warning records</source>
         <translation>알람·경고 기록</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="453"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="456"/>
         <source>Clear records</source>
         <translation>기록 삭제</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="454"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
         <source>Erase %1 of machine %2?</source>
         <translation>국번 %2의 %1을(를) 삭제하시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="454"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
         <source> and </source>
         <translation> 및 </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="458"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>삭제한 기록은 복원할 수 없습니다. 쓰기: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
         <source>Erase</source>
         <translation>삭제</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="464"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="467"/>
         <source>Erasing the records…</source>
         <translation>기록을 삭제하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="472"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="475"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>삭제됨: %1 (기록 %2건); %3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="475"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
         <source>read back empty.</source>
         <translation>다시 읽기 결과 비어 있음.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="476"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="479"/>
         <source>NOT empty when read back.</source>
         <translation>다시 읽기 결과 비어 있지 않음.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="481"/>
         <source>Erasing failed: %1</source>
         <translation>삭제 실패: %1</translation>
     </message>
@@ -2161,17 +2166,17 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="156"/>
+        <location filename="../model/bus/BusScanner.cpp" line="160"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
         <translation>응답이 두 번 깨짐(%1): 두 드라이버가 국번 %2을(를) 함께 쓰고 있을 가능성이 큽니다. SW1/SW2 스위치를 확인하십시오</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="161"/>
+        <location filename="../model/bus/BusScanner.cpp" line="165"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>응답은 있지만 일치하는 장치 프로파일이 없습니다(%1)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="191"/>
+        <location filename="../model/bus/BusScanner.cpp" line="204"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>처음에 늦게 응답했습니다(%1 ms 대기 후). 대기 시간을 늘리면 이 버스의 스캔이 안정됩니다</translation>
     </message>
@@ -2463,6 +2468,9 @@ Connection (every command that talks to drives):
   --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
   Defaults follow the family: dbu 19200 8N1, dcpid 9600 8E1; --timeout 200,
   --retries 3 (2 more while the line is noisy: a request needed a retry lately).
+  Serial port only: --rs485 off|auto|kernel|rts (who switches the RS-485
+  direction; off: the adapter), --rts-polarity high|low, --rts-delay US,
+  --low-latency on|off (default on). scan says what the driver accepted.
 Output: --json  --trace  --variant VARIANT  --lang CODE
 Groups: --bus-drives LIST (or OPENTOP_BUS_DRIVES): the drives whose communication
 group is checked before a write or command
@@ -2473,36 +2481,21 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
 </source>
-        <translation>
-연결 (드라이버와 통신하는 모든 명령):
-  --port PATH | --tcp HOST:PORT | --sim SPEC
-  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
-  기본값은 제품군에 따름: dbu 19200 8N1, dcpid 9600 8E1; --timeout 200,
-  --retries 3 (라인에 노이즈가 있으면(최근 재시도가 필요했던 요청이 있으면) 2회 추가).
-출력: --json  --trace  --variant VARIANT  --lang CODE
-그룹: --bus-drives LIST (또는 OPENTOP_BUS_DRIVES): 쓰기나 명령 전에 통신 그룹을
-확인할 드라이버
-
-종료 코드: 0 성공, 1 통신 실패, 2 사용법 오류, 3 잘못된 값 또는 파일
-(아무것도 쓰지 않음), 4 검증 불일치 또는 정지하지 않은 드라이버 있음,
-130 Ctrl-C, SIGTERM 또는 SIGHUP으로 중단됨(수행한 작업은 보고함).
-
-&quot;%1 help COMMAND&quot;로 명령의 옵션을 볼 수 있습니다.
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="164"/>
-        <location filename="../cli/CliApp.cpp" line="218"/>
+        <location filename="../cli/CliApp.cpp" line="167"/>
+        <location filename="../cli/CliApp.cpp" line="221"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>&quot;%1 --help&quot;를 실행해 보십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="184"/>
+        <location filename="../cli/CliApp.cpp" line="187"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1: 알 수 없는 명령 &quot;%2&quot;; 명령: </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="192"/>
+        <location filename="../cli/CliApp.cpp" line="195"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2511,12 +2504,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="206"/>
+        <location filename="../cli/CliApp.cpp" line="209"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2: --%3은(는) 이 명령의 옵션이 아닙니다. &quot;%1 help %2&quot;를 참조하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="217"/>
+        <location filename="../cli/CliApp.cpp" line="220"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2531,37 +2524,42 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="124"/>
+        <location filename="../cli/CliContext.cpp" line="102"/>
+        <source>serial line: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/CliContext.cpp" line="126"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="187"/>
+        <location filename="../cli/CliContext.cpp" line="189"/>
         <source>machine number %1: no connection</source>
         <translation>국번 %1: 연결 없음</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="192"/>
+        <location filename="../cli/CliContext.cpp" line="194"/>
         <source>machine number %1: %2%3</source>
         <translation>국번 %1: %2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="245"/>
+        <location filename="../cli/CliContext.cpp" line="248"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1: &quot;%2&quot;은(는) 국번 1–247이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="249"/>
+        <location filename="../cli/CliContext.cpp" line="252"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1: &quot;%2&quot;은(는) 드라이버 기종이 아닙니다. 다음 중 하나를 사용하십시오: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="267"/>
+        <location filename="../cli/CliContext.cpp" line="270"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot;은(는) 국번 1–247 또는 3-8 같은 범위가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="277"/>
+        <location filename="../cli/CliContext.cpp" line="280"/>
         <source>no machine number given</source>
         <translation>국번이 지정되지 않았습니다</translation>
     </message>
@@ -2937,173 +2935,173 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::ConnectionDialog</name>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="61"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="62"/>
         <source>Connect to a bus</source>
         <translation>버스에 연결</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
         <source>&amp;Serial port</source>
         <translation>시리얼 포트(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
         <source>Modbus &amp;TCP gateway</source>
         <translation>Modbus TCP 게이트웨이(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="68"/>
         <source>Si&amp;mulated bus</source>
         <translation>시뮬레이션 버스(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="83"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="84"/>
         <source>&amp;Advanced</source>
         <translation>고급(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="106"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="107"/>
         <source>&amp;Connect</source>
         <translation>연결(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="127"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="128"/>
         <source>&amp;Refresh</source>
         <translation>새로 고침(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="128"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="129"/>
         <source>List the serial ports again (after plugging in an adapter)</source>
         <translation>시리얼 포트 목록을 다시 불러옵니다(어댑터를 꽂은 후)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="133"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="134"/>
         <source>&amp;Port:</source>
         <translation>포트(&amp;P):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="142"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="143"/>
         <source>Custom</source>
         <translation>사용자 지정</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="144"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="145"/>
         <source>%1 (%2 %3%4%5)</source>
         <translation>%1 (%2 %3%4%5)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="151"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="152"/>
         <source>Fills in the factory line settings of a drive family</source>
         <translation>드라이버 제품군의 공장 출하 통신 설정을 채웁니다</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="154"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="155"/>
         <source>&amp;Family defaults:</source>
         <translation>제품군 기본값(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="158"/>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="286"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="159"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="289"/>
         <source>%1 bit/s</source>
         <translation>%1 bit/s</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="159"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="160"/>
         <source>&amp;Baud rate:</source>
         <translation>통신 속도(&amp;B):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="161"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="162"/>
         <source>None (N)</source>
         <translation>없음 (N)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="162"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
         <source>Even (E)</source>
         <translation>짝수 (E)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
         <source>Odd (O)</source>
         <translation>홀수 (O)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="165"/>
         <source>P&amp;arity:</source>
         <translation>패리티(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="166"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="167"/>
         <source>1 bit</source>
         <translation>1 비트</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="167"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
         <source>2 bits</source>
         <translation>2 비트</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="169"/>
         <source>S&amp;top bits:</source>
         <translation>스톱 비트(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="182"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="184"/>
         <source>e.g. 192.168.1.10</source>
         <translation>예: 192.168.1.10</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="183"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="185"/>
         <source>&amp;Host:</source>
         <translation>호스트(&amp;H):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="186"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="188"/>
         <source>Modbus TCP uses port 502</source>
         <translation>Modbus TCP는 포트 502를 사용합니다</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="187"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="189"/>
         <source>TCP p&amp;ort:</source>
         <translation>TCP 포트(&amp;O):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="199"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="201"/>
         <source>Device types and machine numbers: TYPE@NUMBER, comma separated. Types: %1</source>
         <translation>장치 유형과 국번: TYPE@NUMBER, 쉼표로 구분. 유형: %1</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="202"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="204"/>
         <source>&amp;Devices:</source>
         <translation>장치(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="216"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="218"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="217"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="219"/>
         <source>How long to wait for each reply</source>
         <translation>각 응답을 기다리는 시간</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="218"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="220"/>
         <source>Response &amp;timeout:</source>
         <translation>응답 타임아웃(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="221"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="223"/>
         <source>Extra attempts after a request got no valid reply</source>
         <translation>요청에 올바른 응답이 없을 때 추가로 시도하는 횟수</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="222"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="224"/>
         <source>R&amp;etries:</source>
         <translation>재시도(&amp;E):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="322"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="326"/>
         <source>The device list is not valid.</source>
         <translation>장치 목록이 올바르지 않습니다.</translation>
     </message>
@@ -3165,138 +3163,213 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ConnectionOptions</name>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="22"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="30"/>
+        <source>--rs485 %1: use off (the adapter switches direction itself), auto, kernel or rts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="36"/>
+        <source>--rts-polarity %1: use high or low (the RTS level while sending)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="44"/>
+        <source>--rts-delay %1: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own delay)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="51"/>
+        <source>--low-latency %1: use on or off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="61"/>
+        <source>--%1 applies to a serial port (--port), not to a Modbus TCP gateway (--tcp)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="65"/>
+        <source>--%1 applies to a serial port (--port), not to a simulated bus</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="66"/>
+        <source>--%1 applies to a serial port only: give it with --port PATH</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="74"/>
         <source>Serial device (e.g. /dev/ttyUSB0 or a pty path).</source>
         <translation>시리얼 장치(예: /dev/ttyUSB0 또는 pty 경로).</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="23"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="75"/>
         <source>PATH</source>
         <translation>PATH</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="24"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="76"/>
         <source>Modbus TCP gateway, HOST:PORT (port defaults to 502).</source>
         <translation>Modbus TCP 게이트웨이, HOST:PORT (포트 기본값 502).</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="25"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="77"/>
         <source>HOST:PORT</source>
         <translation>HOST:PORT</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="26"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="78"/>
         <source>In-process simulated bus, e.g. dbu200@1,dbu400@150,dcpid@7.</source>
         <translation>프로세스 내부 시뮬레이션 버스, 예: dbu200@1,dbu400@150,dcpid@7.</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="27"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="79"/>
         <source>SPEC</source>
         <translation>SPEC</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="29"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="81"/>
         <source>Device family whose serial defaults apply (dbu: 19200 8N1, dcpid: 9600 8E1).</source>
         <translation>시리얼 기본값을 적용할 장치 제품군(dbu: 19200 8N1, dcpid: 9600 8E1).</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="30"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="82"/>
         <source>FAMILY</source>
         <translation>FAMILY</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="31"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="83"/>
         <source>Baud rate, 1200–115200.</source>
         <translation>통신 속도, 1200–115200.</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="31"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="83"/>
         <source>BAUD</source>
         <translation>BAUD</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="32"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="84"/>
         <source>Parity: N, E or O.</source>
         <translation>패리티: N, E 또는 O.</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="32"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="84"/>
         <source>N|E|O</source>
         <translation>N|E|O</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="33"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="85"/>
         <source>Stop bits: 1 or 2.</source>
         <translation>스톱 비트: 1 또는 2.</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="33"/>
-        <location filename="../connection/ConnectionOptions.cpp" line="39"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="85"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="91"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="35"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="87"/>
         <source>Response timeout per attempt in ms, 10–10000 (default 200).</source>
         <translation>시도당 응답 타임아웃(ms), 10–10000 (기본값 200).</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="35"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="87"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="37"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="89"/>
         <source>Extra attempts after no reply or a garbled one, 0–10 (default 3; 2 more while the line is noisy).</source>
         <translation>응답이 없거나 깨졌을 때 추가 시도 횟수, 0–10 (기본값 3; 라인에 노이즈가 있으면 2회 추가).</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="73"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="93"/>
+        <source>Who switches the RS-485 direction (serial port only): off (default: the adapter itself, as USB–RS-485 adapters do), kernel (the driver&apos;s RS-485 mode), rts (RTS from the program) or auto (kernel where the driver has it, else rts).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="96"/>
+        <source>MODE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="98"/>
+        <source>RTS level while sending with --rs485 kernel, rts or auto: high (default) or low.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="99"/>
+        <source>high|low</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="101"/>
+        <source>RTS delay before and after sending in µs, 0–100000 (default 0: the driver&apos;s, or libmodbus&apos; one character time; the kernel rounds up to whole ms).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
+        <source>US</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="105"/>
+        <source>Ask the serial driver to pass received bytes on at once (USB adapters otherwise hold them up to 16 ms): on (default) or off.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="107"/>
+        <source>on|off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="151"/>
         <source>give only one of --port, --tcp and --sim</source>
         <translation>--port, --tcp, --sim 중 하나만 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="75"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="153"/>
         <source>no bus given: use --port PATH, --tcp HOST:PORT or --sim SPEC</source>
         <translation>버스가 지정되지 않았습니다: --port PATH, --tcp HOST:PORT 또는 --sim SPEC을 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="84"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="162"/>
         <source>--family %1: unknown family; use one of %2</source>
         <translation>--family %1: 알 수 없는 제품군입니다. 다음 중 하나를 사용하십시오: %2</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="181"/>
         <source>--tcp: &quot;%1&quot; is not HOST:PORT</source>
         <translation>--tcp: &quot;%1&quot;은(는) HOST:PORT 형식이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="112"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="190"/>
         <source>--sim: %1</source>
         <translation>--sim: %1</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="125"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="203"/>
         <source>--baud %1: use a baud rate 1200–115200 (e.g. 9600, 19200, 38400)</source>
         <translation>--baud %1: 통신 속도는 1200–115200을 사용하십시오(예: 9600, 19200, 38400)</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="129"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="207"/>
         <source>--stop-bits %1: use 1 or 2</source>
         <translation>--stop-bits %1: 1 또는 2를 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="131"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="209"/>
         <source>--timeout %1: use a response timeout of 10–10000 ms</source>
         <translation>--timeout %1: 응답 타임아웃은 10–10000 ms를 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="134"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="212"/>
         <source>--retries %1: use 0–10 extra attempts</source>
         <translation>--retries %1: 추가 시도는 0–10회를 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="139"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="217"/>
         <source>--parity %1: use N (none), E (even) or O (odd)</source>
         <translation>--parity %1: N(없음), E(짝수) 또는 O(홀수)를 사용하십시오</translation>
     </message>
@@ -3304,20 +3377,30 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ConnectionStatus</name>
     <message>
-        <location filename="../ui/main/ConnectionStatus.cpp" line="20"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="21"/>
         <source>SIMULATED BUS — no hardware</source>
         <translation>시뮬레이션 버스 — 실제 하드웨어 없음</translation>
     </message>
     <message>
-        <location filename="../ui/main/ConnectionStatus.cpp" line="21"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="22"/>
         <source>These drives exist only in this program; nothing moves.</source>
         <translation>이 드라이버들은 이 프로그램 안에만 있습니다. 실제로 움직이는 것은 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/main/ConnectionStatus.cpp" line="26"/>
-        <location filename="../ui/main/ConnectionStatus.cpp" line="61"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="27"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="76"/>
         <source>Not connected</source>
         <translation>연결 안 됨</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="54"/>
+        <source>Connected: %1</source>
+        <translation type="unfinished">연결됨: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="56"/>
+        <source> — %1</source>
+        <translation type="unfinished"> — %1</translation>
     </message>
 </context>
 <context>
@@ -3809,7 +3892,7 @@ Configuration changes written but not stored are discarded.</source>
         <translation>장치 이름 &quot;%1&quot;은(는) %2이(가) 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceIdentifier.cpp" line="115"/>
+        <location filename="../model/session/DeviceIdentifier.cpp" line="116"/>
         <source>the variant cannot be read from the device; choose it</source>
         <translation>장치에서 기종을 읽을 수 없습니다. 기종을 선택하십시오</translation>
     </message>
@@ -3896,63 +3979,63 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceSession</name>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="90"/>
+        <location filename="../model/session/DeviceSession.cpp" line="92"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1에 파라미터 &quot;%2&quot;이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="99"/>
-        <location filename="../model/session/DeviceSession.cpp" line="139"/>
+        <location filename="../model/session/DeviceSession.cpp" line="101"/>
+        <location filename="../model/session/DeviceSession.cpp" line="165"/>
         <source>%1 cannot be read (it is a write-only command)</source>
         <translation>%1은(는) 읽을 수 없습니다(쓰기 전용 명령)</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="202"/>
+        <location filename="../model/session/DeviceSession.cpp" line="236"/>
         <source>cannot check the value: reading %1 failed: %2</source>
         <translation>값을 검사할 수 없습니다: %1 읽기 실패: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="219"/>
+        <location filename="../model/session/DeviceSession.cpp" line="253"/>
         <source>%1 is read-only</source>
         <translation>%1은(는) 읽기 전용입니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="225"/>
+        <location filename="../model/session/DeviceSession.cpp" line="259"/>
         <source>%1 is a %2 command; it is only sent when explicitly requested</source>
         <translation>%1은(는) %2 명령입니다. 명시적으로 요청할 때만 보냅니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="255"/>
+        <location filename="../model/session/DeviceSession.cpp" line="289"/>
         <source>%1 cannot be checked: %2</source>
         <translation>%1을(를) 검사할 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="277"/>
+        <location filename="../model/session/DeviceSession.cpp" line="311"/>
         <source>reading %1 failed: %2</source>
         <translation>%1 읽기 실패: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="305"/>
+        <location filename="../model/session/DeviceSession.cpp" line="339"/>
         <source>not written: %1 is written together with 0x%2–0x%3, and reading those first failed: %4</source>
         <translation>쓰지 않음: %1은(는) 0x%2–0x%3과(와) 함께 쓰는데, 이 레지스터를 먼저 읽지 못했습니다: %4</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="310"/>
+        <location filename="../model/session/DeviceSession.cpp" line="344"/>
         <source>short reply</source>
         <translation>응답이 너무 짧음</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="365"/>
+        <location filename="../model/session/DeviceSession.cpp" line="399"/>
         <source>written, but reading it back failed: %1</source>
         <translation>썼지만 다시 읽기에 실패했습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="374"/>
+        <location filename="../model/session/DeviceSession.cpp" line="408"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>검증 실패: %1을(를) 썼지만 장치 값은 %2입니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="410"/>
+        <location filename="../model/session/DeviceSession.cpp" line="444"/>
         <source>error code %1</source>
         <translation>오류 코드 %1</translation>
     </message>
@@ -6908,7 +6991,6 @@ Still connected to %2; nothing was changed.</source>
     </message>
     <message>
         <location filename="../ui/main/MainWindow.cpp" line="323"/>
-        <location filename="../ui/main/MainWindow.cpp" line="331"/>
         <source>Connected: %1</source>
         <translation>연결됨: %1</translation>
     </message>
@@ -6918,34 +7000,34 @@ Still connected to %2; nothing was changed.</source>
         <translation>연결됨: %1 (시뮬레이션, 실제 하드웨어 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="356"/>
+        <location filename="../ui/main/MainWindow.cpp" line="357"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>드라이버가 기종을 알려주지 않습니다. %1은(는) 설정된 기종입니다.</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="386"/>
-        <location filename="../ui/main/MainWindow.cpp" line="397"/>
+        <location filename="../ui/main/MainWindow.cpp" line="387"/>
+        <location filename="../ui/main/MainWindow.cpp" line="398"/>
         <source>disconnect</source>
         <translation>연결 해제</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="393"/>
+        <location filename="../ui/main/MainWindow.cpp" line="394"/>
         <source>Not connected (disconnected)</source>
         <translation>연결 안 됨(연결 해제함)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="404"/>
-        <location filename="../ui/main/MainWindow.cpp" line="429"/>
+        <location filename="../ui/main/MainWindow.cpp" line="405"/>
+        <location filename="../ui/main/MainWindow.cpp" line="430"/>
         <source>quit</source>
         <translation>종료</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="415"/>
+        <location filename="../ui/main/MainWindow.cpp" line="416"/>
         <source>Unwritten changes</source>
         <translation>쓰지 않은 변경 사항</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="416"/>
+        <location filename="../ui/main/MainWindow.cpp" line="417"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>드라이버에 쓰지 않은 편집이 %n개 있습니다. 버리고 종료하시겠습니까?</numerusform>
@@ -8741,22 +8823,22 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::PtySimServer</name>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="49"/>
+        <location filename="../sim/PtySimServer.cpp" line="50"/>
         <source>cannot open a pseudo-terminal: %1</source>
         <translation>가상 터미널을 열 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="66"/>
+        <location filename="../sim/PtySimServer.cpp" line="67"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1이(가) 이미 있고 심볼릭 링크가 아닙니다. 교체하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="72"/>
+        <location filename="../sim/PtySimServer.cpp" line="73"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>심볼릭 링크 %1 -&gt; %2을(를) 만들 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="114"/>
+        <location filename="../sim/PtySimServer.cpp" line="115"/>
         <source>the port is plugged in: %1</source>
         <translation>포트가 연결되었습니다: %1</translation>
     </message>
@@ -11044,32 +11126,32 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>%3에서 국번 %1–%2 스캔 중, 국번당 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="210"/>
+        <location filename="../cli/ScanCommand.cpp" line="211"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>국번을 하나도 스캔하기 전에 중단되었습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="212"/>
+        <location filename="../cli/ScanCommand.cpp" line="213"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>중단됨: 국번 %1–%2을(를) 스캔했습니다(%4개 중 %3개). %5–%6은(는) 조회하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="226"/>
+        <location filename="../cli/ScanCommand.cpp" line="227"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>오류: 국번 %1에서 스캔이 멈췄습니다: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="236"/>
+        <location filename="../cli/ScanCommand.cpp" line="237"/>
         <source>warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="238"/>
+        <location filename="../cli/ScanCommand.cpp" line="239"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>참고: 드라이버 %1대가 %2 ms 대기 후에야 응답하여 다시 조회했습니다. 스캔에서 드라이버가 누락되면 --wait를 늘리십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="244"/>
+        <location filename="../cli/ScanCommand.cpp" line="245"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -11080,84 +11162,177 @@ This moves or stops a motor: add --yes to send it.</source>
   - 종단 저항 (버스 양 끝에 120 Ω)과 드라이버 전원.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="257"/>
+        <location filename="../cli/ScanCommand.cpp" line="258"/>
         <source>hint: %1 Retry with the same connection and: %2</source>
         <translation>힌트: %1 같은 연결에 다음을 추가하여 다시 시도하십시오: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="287"/>
+        <location filename="../cli/ScanCommand.cpp" line="271"/>
+        <source>Serial line: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="274"/>
+        <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="303"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 기종 알 수 없음</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="288"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
         <translation>드라이버가 기종을 알려주지 않습니다. --variant %1=VARIANT로 지정하십시오(%2)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="320"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="320"/>
         <source>hex</source>
         <translation>16진수</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="320"/>
         <source>switches</source>
         <translation>스위치</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="320"/>
         <source>family</source>
         <translation>제품군</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="305"/>
+        <location filename="../cli/ScanCommand.cpp" line="321"/>
         <source>model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="305"/>
+        <location filename="../cli/ScanCommand.cpp" line="321"/>
         <source>firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="305"/>
+        <location filename="../cli/ScanCommand.cpp" line="321"/>
         <source>state</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="311"/>
+        <location filename="../cli/ScanCommand.cpp" line="327"/>
         <source>comm. group</source>
         <translation>통신 그룹</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="379"/>
+        <location filename="../cli/ScanCommand.cpp" line="395"/>
         <source>1 drive found in %1 s</source>
         <translation>드라이버 1대 발견(%1 s)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="380"/>
+        <location filename="../cli/ScanCommand.cpp" line="396"/>
         <source>%1 drives found in %2 s</source>
         <translation>드라이버 %1대 발견(%2 s)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="382"/>
+        <location filename="../cli/ScanCommand.cpp" line="398"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>; 중복 가능성이 있는 국번 1개: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="384"/>
+        <location filename="../cli/ScanCommand.cpp" line="400"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>; 중복 가능성이 있는 국번 %1개: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="395"/>
+        <location filename="../cli/ScanCommand.cpp" line="411"/>
         <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>경고: 국번 %1(%2, %3)의 응답이 깨져 있습니다: 두 드라이버가 같은 국번을 쓰고 있을 가능성이 큽니다. 이 버스에 있는 드라이버의 SW1/SW2 스위치를 확인하고 드라이버마다 다른 국번을 준 뒤, 전원을 껐다 켜고 다시 스캔하십시오.</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::SerialLineFields</name>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="29"/>
+        <source>Adapter switches itself</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="30"/>
+        <source>Auto (kernel, else RTS)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="31"/>
+        <source>Kernel RS-485 mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="32"/>
+        <source>RTS from the program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="34"/>
+        <source>Who switches the RS-485 transceiver between sending and receiving. USB–RS-485 adapters do it themselves; on-board RS-485 ports need the driver&apos;s RS-485 mode (kernel) or RTS switched by the program. The status bar says what the driver accepted.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="38"/>
+        <source>RS-485 d&amp;irection:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="43"/>
+        <source>high while sending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="44"/>
+        <source>low while sending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="45"/>
+        <source>The RTS level that enables the transceiver&apos;s driver</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="50"/>
+        <source>delay </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="51"/>
+        <source> µs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="52"/>
+        <source>default delay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="53"/>
+        <source>Before and after sending. Default: the driver&apos;s own, or one character time from the program; the kernel rounds up to whole ms.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="58"/>
+        <source>RTS le&amp;vel:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="62"/>
+        <source>&amp;Low latency (no 16 ms hold-back in USB adapters)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="65"/>
+        <source>Asks the driver to pass received bytes on at once. Many USB–serial chips otherwise hold them for up to 16 ms, which slows scans and polling.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -11455,17 +11630,17 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>opentop-sim: --defect %1 (%2@%1): %3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="168"/>
+        <location filename="../sim/SimApp.cpp" line="169"/>
         <source>the port is unplugged already</source>
         <translation>포트가 이미 분리되어 있습니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="170"/>
+        <location filename="../sim/SimApp.cpp" line="171"/>
         <source>unplugged</source>
         <translation>분리됨</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="203"/>
+        <location filename="../sim/SimApp.cpp" line="204"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
@@ -11549,7 +11724,7 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>국번 %1이(가) 두 번 사용되었습니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="231"/>
+        <location filename="../sim/SimBus.cpp" line="233"/>
         <source>no device with machine number %1 (bus: %2)</source>
         <translation>국번 %1인 장치가 없습니다(버스: %2)</translation>
     </message>
@@ -11641,76 +11816,81 @@ This moves or stops a motor: add --yes to send it.</source>
     <name>opentop::SimDefectSpec</name>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="45"/>
-        <source>firmware=MAJOR.MINOR (e.g. firmware=1.4), max_speed=N (e.g. max_speed=800), stall, load=+N, load=-N or load=xF (e.g. load=+40, load=x1.5), alarm=CODE@TIME (e.g. alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (a parameter name or register address, e.g. nostick=spno2.speed, nostore=0x0081), clear</source>
-        <translation>firmware=MAJOR.MINOR (예: firmware=1.4), max_speed=N (예: max_speed=800), stall, load=+N, load=-N 또는 load=xF (예: load=+40, load=x1.5), alarm=CODE@TIME (예: alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (파라미터 이름 또는 레지스터 주소, 예: nostick=spno2.speed, nostore=0x0081), clear</translation>
+        <source>firmware=MAJOR.MINOR (e.g. firmware=1.4), max_speed=N (e.g. max_speed=800), stall, load=+N, load=-N or load=xF (e.g. load=+40, load=x1.5), alarm=CODE@TIME (e.g. alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (a parameter name or register address, e.g. nostick=spno2.speed, nostore=0x0081), turnaround=MS (e.g. turnaround=14), clear</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="119"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="123"/>
         <source>unknown defect &quot;%1&quot;; allowed: %2</source>
         <translation>알 수 없는 결함 &quot;%1&quot;; 허용: %2</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="122"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="126"/>
         <source>&quot;%1&quot; needs a value: %2=...</source>
         <translation>&quot;%1&quot;에는 값이 필요합니다: %2=...</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="124"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="128"/>
         <source>&quot;%1&quot; takes no value; write %2</source>
         <translation>&quot;%1&quot;은(는) 값을 받지 않습니다. %2(으)로 쓰십시오</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="137"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="141"/>
         <source>firmware=%1: write MAJOR.MINOR with each 0..255, e.g. firmware=1.4</source>
         <translation>firmware=%1: 각각 0..255인 MAJOR.MINOR로 쓰십시오. 예: firmware=1.4</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="144"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="148"/>
         <source>max_speed=%1: write a whole number 0..%2, e.g. max_speed=800</source>
         <translation>max_speed=%1: 0..%2의 정수로 쓰십시오. 예: max_speed=800</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="154"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="158"/>
         <source>load=%1: a factor is x0.1..x10, e.g. load=x1.5</source>
         <translation>load=%1: 배율은 x0.1..x10입니다. 예: load=x1.5</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="159"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="163"/>
         <source>load=%1: an offset is -200..+200, e.g. load=+40</source>
         <translation>load=%1: 오프셋은 -200..+200입니다. 예: load=+40</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="162"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="166"/>
         <source>load=%1: write load=+N, load=-N (an offset) or load=xF (a factor), e.g. load=+40 or load=x1.5</source>
         <translation>load=%1: load=+N, load=-N (오프셋) 또는 load=xF (배율)로 쓰십시오. 예: load=+40 또는 load=x1.5</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="171"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="175"/>
         <source>alarm=%1: write alarm=CODE@TIME, e.g. alarm=0x07@1500ms or alarm=overload@2s</source>
         <translation>alarm=%1: alarm=CODE@TIME으로 쓰십시오. 예: alarm=0x07@1500ms 또는 alarm=overload@2s</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="176"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="180"/>
         <source>alarm=%1: the time after the start is 0..3600 s, written 1500ms, 1.5s or 1500 (ms)</source>
         <translation>alarm=%1: 기동 후 시간은 0..3600 s이며, 1500ms, 1.5s 또는 1500(ms)으로 씁니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="183"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="189"/>
+        <source>turnaround=%1: write the answer delay in ms, 0..1000, e.g. turnaround=14</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../sim/SimDefectSpec.cpp" line="194"/>
         <source>%1=%2: name a parameter (e.g. spno2.speed) or a register address (e.g. 0x1102)</source>
         <translation>%1=%2: 파라미터 이름(예: spno2.speed) 또는 레지스터 주소(예: 0x1102)를 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="199"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="210"/>
         <source>no defect given; allowed: %1</source>
         <translation>결함이 지정되지 않았습니다. 허용: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="205"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="216"/>
         <source>empty item in &quot;%1&quot;</source>
         <translation>&quot;%1&quot;에 빈 항목이 있습니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="223"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="234"/>
         <source>&quot;%1&quot;: write ID:DEFECT[,DEFECT...] with ID the machine number 1..247, e.g. 3:firmware=1.4 or 5:max_speed=800,load=+40</source>
         <translation>&quot;%1&quot;: ID:DEFECT[,DEFECT...] 형식으로 쓰십시오. ID는 국번 1..247. 예: 3:firmware=1.4 또는 5:max_speed=800,load=+40</translation>
     </message>
@@ -11723,17 +11903,17 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>%1은(는) 펌웨어 버전을 알려주지 않습니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefects.cpp" line="82"/>
+        <location filename="../sim/SimDefects.cpp" line="83"/>
         <source>alarm=%1: a %2 has no alarm codes; its protection is the stall stop: write alarm=stall@TIME</source>
         <translation>alarm=%1: %2에는 알람 코드가 없습니다. 보호 기능은 구속 정지입니다: alarm=stall@TIME으로 쓰십시오</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefects.cpp" line="98"/>
+        <location filename="../sim/SimDefects.cpp" line="99"/>
         <source>alarm=%1: not an alarm of a %2; allowed: %3</source>
         <translation>alarm=%1: %2의 알람이 아닙니다. 허용: %3</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefects.cpp" line="109"/>
+        <location filename="../sim/SimDefects.cpp" line="110"/>
         <source>%1=%2: no writable parameter of a %3 has this name or address; e.g. %4</source>
         <translation>%1=%2: %3에는 이 이름 또는 주소의 쓰기 가능한 파라미터가 없습니다. 예: %4</translation>
     </message>
@@ -11785,6 +11965,8 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
   --parity N|E|O     line parity (N)
   --wire-timing      delay replies as a real line at --baud would
   --turnaround MS    device turnaround with --wire-timing (2)
+  --half-duplex      with --wire-timing: a request overlapping a reply on the line
+                     garbles both, one within 3.5 characters of a reply is lost
   --faults LIST      e.g. drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
   --seed N           seed of the fault injection (1)
   --defect ID:LIST   defects of drive ID (repeatable), LIST of:
@@ -11810,119 +11992,85 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 Prints &quot;pty: PATH&quot; (and &quot;tcp: HOST:PORT&quot;), then &quot;ready&quot;. Reads console commands
 from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </source>
-        <translation>사용법: opentop-sim --devices SPEC [옵션]
-Modbus RTU 드라이버를 가상 터미널 또는 Modbus TCP 게이트웨이로 시뮬레이션합니다.
-
-  --devices SPEC     장치와 국번, 예: dbu200@1,dbu400@150,dcpid@7
-  --pty [PATH]       pty로 서비스 (기본값); PATH: 이 심볼릭 링크도 생성
-  --tcp HOST:PORT    Modbus TCP로 서비스 (HOST 기본값 127.0.0.1, PORT 0: 임의)
-  --baud N           전송 타이밍과 장치 설정에 쓰는 통신 속도 (19200)
-  --parity N|E|O     라인 패리티 (N)
-  --wire-timing      --baud의 실제 라인처럼 응답을 지연
-  --turnaround MS    --wire-timing 사용 시 장치 응답 전환 시간 (2)
-  --faults LIST      예: drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
-  --seed N           결함 주입의 시드 (1)
-  --defect ID:LIST   드라이버 ID의 결함 (반복 가능), LIST 항목:
-                       firmware=MAJOR.MINOR  식별 시 이 버전을 알려줌
-                       max_speed=N           모터가 N에서 포화 (DBU r/min,
-                                             DC 정류 횟수/s), 부하 높음
-                       stall                 모터가 회전하지 않음, 부하 높음
-                       load=+N|-N|xF         부하율(DC: 전류 %)에 오프셋 또는 배율
-                       alarm=CODE@TIME       TIME 동안 운전 후 알람, 예:
-                                             0x07@1500ms, overload@2s (DC: stall@1s)
-                       nostick=PARAM         쓰기는 수신 확인하지만 이전 값 유지
-                       nostore=PARAM         다음 전원 재투입 시 값 손실
-                     예: --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
-  --motor LIST       DC 컨트롤러의 모터와 부하, 예: inertia=2e-4,load=0.05;
-                     supply (V), resistance (ohm), no_load (최대 듀티에서의 1/s),
-                     commutations (1회전당 정류 횟수), inertia (kg m2), viscous
-                     (N m s/rad), coulomb (N m), load (N m), gate (ms), tacho (V s)
-  --quiet            stderr에 프레임 추적을 출력하지 않음
-  --lang CODE        메시지 언어: en, zh_TW, zh_CN, ko, ja
-  --help             이 도움말
-  --version          프로그램 버전
-
-&quot;pty: PATH&quot;(및 &quot;tcp: HOST:PORT&quot;)를 출력한 뒤 &quot;ready&quot;를 출력합니다. 콘솔 명령을
-stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료합니다.
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="85"/>
+        <location filename="../sim/SimOptions.cpp" line="87"/>
         <source>--lang needs a language code such as ko</source>
         <translation>--lang에는 ko 같은 언어 코드가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="88"/>
+        <location filename="../sim/SimOptions.cpp" line="90"/>
         <source>--devices needs a device list such as dbu200@1,dcpid@7</source>
         <translation>--devices에는 dbu200@1,dcpid@7 같은 장치 목록이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="97"/>
+        <location filename="../sim/SimOptions.cpp" line="99"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:5020</source>
         <translation>--tcp에는 HOST:PORT가 필요합니다. 예: 127.0.0.1:5020</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="103"/>
+        <location filename="../sim/SimOptions.cpp" line="105"/>
         <source>--tcp needs HOST:PORT with PORT 0..65535, got &apos;%1&apos;</source>
         <translation>--tcp에는 PORT가 0..65535인 HOST:PORT가 필요합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="115"/>
+        <location filename="../sim/SimOptions.cpp" line="117"/>
         <source>--baud must be one of %1, got &apos;%2&apos;</source>
         <translation>--baud는 %1 중 하나여야 합니다. 입력값: &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="122"/>
+        <location filename="../sim/SimOptions.cpp" line="124"/>
         <source>--parity must be N, E or O, got &apos;%1&apos;</source>
         <translation>--parity는 N, E 또는 O여야 합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="130"/>
+        <location filename="../sim/SimOptions.cpp" line="134"/>
         <source>--turnaround must be 0..1000 ms, got &apos;%1&apos;</source>
         <translation>--turnaround는 0..1000 ms여야 합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="134"/>
+        <location filename="../sim/SimOptions.cpp" line="138"/>
         <source>--faults needs a list such as drop=0.02,crc=0.01</source>
         <translation>--faults에는 drop=0.02,crc=0.01 같은 목록이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="138"/>
+        <location filename="../sim/SimOptions.cpp" line="142"/>
         <source>--faults: %1</source>
         <translation>--faults: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="144"/>
+        <location filename="../sim/SimOptions.cpp" line="148"/>
         <source>--seed must be a whole number 0..4294967295, got &apos;%1&apos;</source>
         <translation>--seed는 0..4294967295의 정수여야 합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="148"/>
+        <location filename="../sim/SimOptions.cpp" line="152"/>
         <source>--defect needs ID:DEFECT[,DEFECT...], e.g. 3:firmware=1.4; DEFECT: %1</source>
         <translation>--defect에는 ID:DEFECT[,DEFECT...]가 필요합니다. 예: 3:firmware=1.4; DEFECT: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="155"/>
+        <location filename="../sim/SimOptions.cpp" line="159"/>
         <source>--defect: %1</source>
         <translation>--defect: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="159"/>
+        <location filename="../sim/SimOptions.cpp" line="163"/>
         <source>--motor needs a list such as inertia=2e-4,load=0.05</source>
         <translation>--motor에는 inertia=2e-4,load=0.05 같은 목록이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="163"/>
+        <location filename="../sim/SimOptions.cpp" line="167"/>
         <source>--motor: %1</source>
         <translation>--motor: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="169"/>
-        <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
-        <translation>알 수 없는 인수 &apos;%1&apos;; 옵션: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</translation>
+        <location filename="../sim/SimOptions.cpp" line="172"/>
+        <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="177"/>
+        <location filename="../sim/SimOptions.cpp" line="181"/>
         <source>--devices SPEC is required, e.g. --devices dbu200@1,dcpid@7</source>
         <translation>--devices SPEC이 필요합니다. 예: --devices dbu200@1,dcpid@7</translation>
     </message>
@@ -12905,27 +13053,37 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
         <translation>바이트 타임아웃 %1 ms는 허용되지 않습니다: 1–10000 ms를 사용하거나, 통신 속도에서 산출하려면 0을 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="47"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="45"/>
+        <source>RS-485 mode %1 is not supported: use off, auto, kernel or rts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/ConnectionSettings.cpp" line="50"/>
+        <source>RTS delay %1 µs is not allowed: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/ConnectionSettings.cpp" line="59"/>
         <source>No host given: enter the gateway&apos;s address, e.g. 192.168.1.10.</source>
         <translation>호스트가 지정되지 않았습니다: 게이트웨이 주소를 입력하십시오. 예: 192.168.1.10.</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="51"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="63"/>
         <source>TCP port %1 is not allowed: use 1–65535 (Modbus TCP uses 502).</source>
         <translation>TCP 포트 %1은(는) 허용되지 않습니다: 1–65535를 사용하십시오(Modbus TCP는 502 사용).</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="58"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="70"/>
         <source>No simulated devices given: use a list such as dbu200@1,dcpid@7.</source>
         <translation>시뮬레이션 장치가 지정되지 않았습니다: dbu200@1,dcpid@7 같은 목록을 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="64"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="76"/>
         <source>Timeout %1 ms is not allowed: use 10–10000 ms.</source>
         <translation>타임아웃 %1 ms는 허용되지 않습니다: 10–10000 ms를 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="68"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="80"/>
         <source>%1 retries are not allowed: use 0–10.</source>
         <translation>재시도 %1회는 허용되지 않습니다: 0–10을 사용하십시오.</translation>
     </message>
@@ -12970,75 +13128,75 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
         <translation>오브젝트 0x%1</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="51"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="52"/>
         <source>Cannot open %1: %2</source>
         <translation>%1을(를) 열 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="127"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="309"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="129"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="325"/>
         <source>%1 is not open</source>
         <translation>%1이(가) 열려 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="144"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="151"/>
         <source>send failed</source>
         <translation>송신 실패</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="168"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="177"/>
         <source>interrupted while waiting</source>
         <translation>대기 중 중단됨</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="172"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="181"/>
         <location filename="../transport/MockBackend.cpp" line="100"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 이내에 응답 없음</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="201"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="211"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>다른 응답이 이어졌습니다: 이 응답은 이전 요청에 대한 것일 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="270"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="307"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>슬레이브 %1의 응답, 기대값 %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="281"/>
-        <location filename="../transport/RtuBackend.cpp" line="146"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="318"/>
+        <location filename="../transport/RtuBackend.cpp" line="160"/>
         <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>응답 불완전</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="286"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="323"/>
         <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 불일치</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="293"/>
-        <location filename="../transport/RtuBackend.cpp" line="153"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="330"/>
+        <location filename="../transport/RtuBackend.cpp" line="167"/>
         <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>수신 실패</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="363"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="404"/>
         <source> (connection closed)</source>
         <translation> (연결 끊김)</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="384"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="426"/>
         <source>stale bytes discarded before sending</source>
         <translation>송신 전 남아 있던 바이트 버림</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="466"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="510"/>
         <source>late bytes discarded after an error</source>
         <translation>오류 후 늦게 온 바이트 버림</translation>
     </message>
@@ -13063,18 +13221,18 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
         <translation>에코 %1 ×%2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="192"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="211"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="201"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="220"/>
         <source>cancelled before sending</source>
         <translation>송신 전 취소됨</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="242"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="254"/>
         <source>cannot open %1</source>
         <translation>%1을(를) 열 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="285"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="301"/>
         <source>client closed</source>
         <translation>클라이언트 닫힘</translation>
     </message>
@@ -13319,7 +13477,7 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
         <translation>%2(PID %3)이(가) %1을(를) 사용 중입니다. 먼저 닫으십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="83"/>
+        <location filename="../transport/RtuBackend.cpp" line="97"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -13328,17 +13486,17 @@ then log out and in again (the group applies to new sessions only).</source>
 로그아웃했다가 다시 로그인하십시오(그룹은 새 세션에만 적용됨).</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="89"/>
+        <location filename="../transport/RtuBackend.cpp" line="103"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> (장치가 이 패리티를 지원하지 않을 수 있습니다. pty는 N이 필요합니다)</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="124"/>
+        <location filename="../transport/RtuBackend.cpp" line="138"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>응답이 %1바이트라고 알리지만 RTU 프레임에 들어갈 수 있는 크기보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="145"/>
+        <location filename="../transport/RtuBackend.cpp" line="159"/>
         <source>no reply</source>
         <translation>응답 없음</translation>
     </message>
@@ -13416,6 +13574,156 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../transport/TrafficEntry.cpp" line="37"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="13"/>
+        <source>%1 ms</source>
+        <translation type="unfinished">%1 ms</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="14"/>
+        <source>%1 µs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="31"/>
+        <source>RTS high while sending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="32"/>
+        <source>RTS low while sending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="35"/>
+        <source>, %1 before and after</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="37"/>
+        <source>, %1 before, %2 after</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="43"/>
+        <source>RS-485: switched by the adapter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="45"/>
+        <source>RS-485: kernel mode left on by the driver (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="49"/>
+        <source>RS-485: kernel (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="52"/>
+        <source>RS-485: RTS from the program (%1; kernel mode refused: %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="56"/>
+        <source>RS-485: RTS from the program (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="61"/>
+        <source>RS-485: not available (kernel mode refused: %1; RTS not switchable: %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="66"/>
+        <source>RS-485: RTS not switchable on this port (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="69"/>
+        <source>RS-485: kernel mode refused by the driver (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="78"/>
+        <source>latency timer %1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="86"/>
+        <source>low latency: not a UART, no adapter latency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="90"/>
+        <source>low latency: on (but %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="92"/>
+        <source>low latency: on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="95"/>
+        <source>low latency: not offered by the driver (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="99"/>
+        <source>low latency: not offered by the driver (USB adapter: up to %1 ms assumed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="103"/>
+        <source>low latency: not offered by the driver</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="107"/>
+        <source>low latency: off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="108"/>
+        <source>low latency: off (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="132"/>
+        <source>low latency is off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="134"/>
+        <source>the driver took low latency but kept its latency timer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="137"/>
+        <source>the driver did not take low latency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="140"/>
+        <source>see docs/hardware.md, or use an adapter whose driver offers low latency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="144"/>
+        <source>as root: echo 1 &gt; %1, or the udev rule in docs/hardware.md</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="148"/>
+        <source>The adapter holds received bytes for up to %1 ms before passing them on (%2). Fix: %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineSetup.cpp" line="106"/>
+        <source>the driver left it off</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -13872,12 +14180,12 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>전류 (A)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="61"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="65"/>
         <source>Speed</source>
         <translation>속도</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="61"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="65"/>
         <source>Speed (%1)</source>
         <translation>속도 (%1)</translation>
     </message>
@@ -14241,127 +14549,127 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningRunner</name>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="183"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="190"/>
         <source>a tuning test is already running</source>
         <translation>튜닝 시험이 이미 실행 중입니다</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="191"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="198"/>
         <source>Reading the drive&apos;s settings</source>
         <translation>드라이버 설정을 읽는 중</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="199"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="206"/>
         <source>could not read the drive&apos;s settings: %1</source>
         <translation>드라이버 설정을 읽을 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="224"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="231"/>
         <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
         <translation>드라이버가 폐루프 속도 모드가 아닙니다: 먼저 %1(%2)을(를) %3(으)로 설정하십시오</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="226"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="233"/>
         <source> or </source>
         <translation> 또는 </translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="241"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="248"/>
         <source>Setting the communication-loss braking time to %1 s</source>
         <translation>통신 두절 정지 시간을 %1 s로 설정하는 중</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="265"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="272"/>
         <source>the drive stopped answering: %1</source>
         <translation>드라이버가 응답하지 않습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="283"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="290"/>
         <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
         <translation>속도 %1 %2이(가) 시험 한계값 %3 %2을(를) 넘었습니다: 즉시 정지함</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="290"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="297"/>
         <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
         <translation>전류 %1 A가 시험 한계값 %2 A를 넘었습니다: 즉시 정지함</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="296"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="303"/>
         <source>cancelled</source>
         <translation>취소됨</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="356"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="364"/>
         <source>Stopping the motor</source>
         <translation>모터를 정지하는 중</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="362"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="370"/>
         <source>motor stopped (confirmed)</source>
         <translation>모터 정지됨(확인됨)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="363"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="371"/>
         <source>the motor could not be confirmed stopped: check it</source>
         <translation>모터 정지를 확인할 수 없습니다: 모터를 점검하십시오</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="398"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="406"/>
         <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
         <translation>스텝 시험은 한 속도에서 다른 속도로 정회전합니다: 시작 속도와 목표 속도는 서로 달라야 하며 0 이상이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="405"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="413"/>
         <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
         <translation>%1 %2이(가) 시험 속도 한계값 %3 %2을(를) 넘습니다</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="413"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="421"/>
         <source>Running to %1 %2</source>
         <translation>%1 %2까지 운전하는 중</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="449"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="457"/>
         <source>Step to %1 %2</source>
         <translation>%1 %2(으)로 스텝</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="477"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="484"/>
         <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
         <translation>운전 속도는 0보다 크고 시험 속도 한계값 %1 %2보다 작아야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="484"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="491"/>
         <source>the relay amplitude must be 0–50 % of full output</source>
         <translation>릴레이 진폭은 최대 출력의 0–50 %여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="487"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="494"/>
         <source>Open loop: finding the output for %1 %2</source>
         <translation>개루프: %1 %2에 필요한 출력을 찾는 중</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="536"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="542"/>
         <source>the motor did not turn at %1 % output</source>
         <translation>출력 %1 %에서 모터가 돌지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="572"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="578"/>
         <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
         <translation>운전 속도에 출력 %1 %가 필요합니다: 그 위아래로 ±%2 %의 여유가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="577"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="583"/>
         <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
         <translation>%1 %2 부근에서 릴레이 시험 중 (출력 %3 % ± %4 %)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="611"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="616"/>
         <source>no steady oscillation within %1 s: %2</source>
         <translation>%1 s 이내에 안정된 진동이 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="613"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="618"/>
         <source>try a larger amplitude</source>
         <translation>진폭을 크게 해 보십시오</translation>
     </message>
@@ -14369,59 +14677,59 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningRunsView</name>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="36"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="37"/>
         <source>Save CSV…</source>
         <translation>CSV 저장…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="37"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="38"/>
         <source>Save PNG…</source>
         <translation>PNG 저장…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="42"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="43"/>
         <source>Saves the selected run: its samples, gains and metrics</source>
         <translation>선택한 실행 기록을 저장합니다: 샘플, 게인, 지표</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="43"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
         <source>Saves the chart as it is shown</source>
         <translation>표시된 그대로 차트를 저장합니다</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="45"/>
         <source>solid: speed · dotted: command · dash-dot: current (right axis) · dashed: predicted speed</source>
         <translation>실선: 속도 · 점선: 명령 · 일점쇄선: 전류(오른쪽 축) · 파선: 예측 속도</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="161"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="169"/>
         <source>no run to save</source>
         <translation>저장할 실행 기록이 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="174"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="178"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="182"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
         <source>Save run as CSV</source>
         <translation>실행 기록을 CSV로 저장</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="175"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="183"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="183"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="191"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="194"/>
         <source>Save chart as PNG</source>
         <translation>차트를 PNG로 저장</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="184"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="192"/>
         <source>PNG images (*.png)</source>
         <translation>PNG 이미지 (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="194"/>
         <source>Could not write %1.</source>
         <translation>%1에 쓸 수 없습니다.</translation>
     </message>
@@ -14596,104 +14904,104 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ValueCodec</name>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="202"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="201"/>
         <source>depends on %1, which is not known yet</source>
         <translation>아직 알 수 없는 %1에 따라 달라집니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="204"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="203"/>
         <source>text of up to %1 characters</source>
         <translation>최대 %1자의 텍스트</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="178"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="214"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="177"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="213"/>
         <source> or </source>
         <translation> 또는 </translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="193"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="192"/>
         <source>%1: %2 is outside the recommended range %3; it is allowed and will be written</source>
         <translation>%1: %2은(는) 권장 범위 %3을(를) 벗어납니다. 허용되는 값이므로 씁니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="222"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="221"/>
         <source>, or </source>
         <translation>, 또는 </translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="223"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="222"/>
         <source>any value</source>
         <translation>모든 값</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="239"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="238"/>
         <source> (the variant is not known, so the value must suit %1; name the variant to use its own range)</source>
         <translation> (기종을 알 수 없으므로 값이 %1에 맞아야 합니다. 해당 기종의 범위를 쓰려면 기종을 지정하십시오)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="249"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="248"/>
         <source>%1: the allowed values depend on %2, which has not been read</source>
         <translation>%1: 허용 값이 아직 읽지 않은 %2에 따라 달라집니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="254"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="253"/>
         <source>%1: value out of the register&apos;s range; allowed: %2</source>
         <translation>%1: 값이 레지스터 범위를 벗어났습니다. 허용: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="266"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="265"/>
         <source>%1: %2 is not allowed; allowed: %3</source>
         <translation>%1: %2은(는) 허용되지 않습니다. 허용: %3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="278"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="277"/>
         <source>%1: expected %2 registers, got %3</source>
         <translation>%1: 레지스터 %2개가 필요하지만 %3개입니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="316"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="315"/>
         <source>%1 is text, not a number</source>
         <translation>%1은(는) 숫자가 아니라 텍스트입니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="329"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="328"/>
         <source>%1: %2 is finer than the step of %3 %4; allowed: %5</source>
         <translation>%1: %2이(가) 단위 %3 %4보다 세밀합니다. 허용: %5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="362"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="361"/>
         <source>%1: at most %2 characters</source>
         <translation>%1: 최대 %2자</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="368"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="367"/>
         <source>%1: only printable ASCII characters are allowed</source>
         <translation>%1: 출력 가능한 ASCII 문자만 허용됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="380"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="379"/>
         <source>%1: no value given; allowed: %2</source>
         <translation>%1: 값이 없습니다. 허용: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="420"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="419"/>
         <source>%1: &quot;%2&quot; is only available when %3 is %4; allowed now: %5</source>
         <translation>%1: &quot;%2&quot;은(는) %3이(가) %4일 때만 사용할 수 있습니다. 현재 허용: %5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="433"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="453"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="432"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="452"/>
         <source>%1: &quot;%2&quot; is not a valid value; allowed: %3</source>
         <translation>%1: &quot;%2&quot;은(는) 올바른 값이 아닙니다. 허용: %3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="479"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="478"/>
         <source>(invalid)</source>
         <translation>(무효)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="490"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="489"/>
         <source>unknown code %1</source>
         <translation>알 수 없는 코드 %1</translation>
     </message>

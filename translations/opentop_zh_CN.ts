@@ -33,12 +33,12 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="54"/>
+        <location filename="../app/gui/main.cpp" line="58"/>
         <source>Commissioning tool for RS-485 Modbus-RTU motor drives.</source>
         <translation>RS-485 Modbus-RTU 电机驱动器调试工具。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="58"/>
+        <location filename="../app/gui/main.cpp" line="62"/>
         <source>Language of the program: %1 (default: the language menu&apos;s choice, else the system&apos;s).</source>
         <translation>程序的语言：%1（默认：语言菜单的选择，否则为系统语言）。</translation>
     </message>
@@ -76,6 +76,11 @@
         <location filename="../app/gui/MonitorOptions.cpp" line="103"/>
         <source>--stats-every needs a number of seconds</source>
         <translation>--stats-every 需要一个秒数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/StartupProbe.cpp" line="23"/>
+        <source>Print how long the start took once the window shows the bus&apos;s drives, then quit (for measurements).</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -801,98 +806,98 @@
         <translation>清除方式</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="107"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="109"/>
         <source>Cause and remedy</source>
         <translation>原因和处理方法</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="108"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="110"/>
         <source>Communication error register</source>
         <translation>通信错误寄存器</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="120"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="123"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>发送报警复位命令；显示报警是否已清除或只能重新上电清除</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="122"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>清除驱动器保存的报警和警告记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="127"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="298"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="130"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="301"/>
         <source>Select a record to see its cause and remedy.</source>
         <translation>选择一条记录查看其原因和处理方法。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="128"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="131"/>
         <source>Not read yet.</source>
         <translation>尚未读取。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="130"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="133"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>该驱动器不保存报警或警告记录。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="160"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="163"/>
         <source>Alarm state: %1</source>
         <translation>报警状态：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="252"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="255"/>
         <source>Reading the records…</source>
         <translation>正在读取记录…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="268"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="271"/>
         <source>No alarm is active.</source>
         <translation>当前无报警。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="270"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="273"/>
         <source>Alarm active: %1 %2.</source>
         <translation>报警中：%1 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="272"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
         <source>An alarm is active.</source>
         <translation>有报警发生。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="278"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>该驱动器设定为仅通过重新上电清除报警（%1）：报警复位无法清除任何报警。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="279"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="282"/>
         <source>Could not be read: %1</source>
         <translation>无法读取：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="305"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="308"/>
         <source>This drive has no communication error register.</source>
         <translation>该驱动器没有通信错误寄存器。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="307"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="310"/>
         <source>%1: could not be read.</source>
         <translation>%1：无法读取。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="309"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
         <source>%1: no error (0).</source>
         <translation>%1：无错误（0）。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="315"/>
         <source>%1: %2, not a known code.</source>
         <translation>%1：%2，不是已知代码。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="317"/>
         <source>%1: %2 %3
 Cause: %4
 Remedy: %5</source>
@@ -901,153 +906,153 @@ Remedy: %5</source>
 处理方法：%5</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="326"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="329"/>
         <source>No alarm records</source>
         <translation>无报警记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="326"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="329"/>
         <source>No warning records</source>
         <translation>无警告记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="332"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="335"/>
         <source>%1: could not be read: %2</source>
         <translation>%1：无法读取：%2</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="335"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="338"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1：%3 条记录中的 %2 条，最新在前</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="346"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="349"/>
         <source>unknown code</source>
         <translation>未知代码</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="375"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="378"/>
         <source>Record %1: code %2 is not in the %3 table.</source>
         <translation>记录 %1：代码 %2 不在 %3 表中。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="380"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="383"/>
         <source>%1 %2 (record %3)</source>
         <translation>%1 %2（记录 %3）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="382"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="385"/>
         <source>Cause: %1</source>
         <translation>原因：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="384"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="387"/>
         <source>Remedy: %1</source>
         <translation>处理方法：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="386"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="389"/>
         <source>To clear: %1</source>
         <translation>清除方法：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="415"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="418"/>
         <source>Writes: %1</source>
         <translation>写入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="416"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="419"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>若原因已排除，将清除当前报警。部分报警只能通过重新上电清除；结果会给出提示。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="419"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="422"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>该驱动器设定为仅通过重新上电清除报警（%1）。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="421"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="423"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="424"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="426"/>
         <source>Reset alarm</source>
         <translation>报警复位</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="422"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="425"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>向站号 %1 发送报警复位命令？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="430"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="433"/>
         <source>Sending the alarm reset…</source>
         <translation>正在发送报警复位…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="436"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="439"/>
         <source>Alarm reset: %1</source>
         <translation>报警复位：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="439"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="442"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>请关闭驱动器电源，等待 5 s 后再接通。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="450"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="453"/>
         <source>%1 (%2 records)</source>
         <translation>%1（%2 条记录）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="452"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
         <source>the alarm and warning records</source>
         <translation>报警和警告记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="453"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="456"/>
         <source>Clear records</source>
         <translation>清除记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="454"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
         <source>Erase %1 of machine %2?</source>
         <translation>清除站号 %2 的%1？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="454"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
         <source> and </source>
         <translation> 和 </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="458"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>记录清除后无法恢复。写入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
         <source>Erase</source>
         <translation>清除</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="464"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="467"/>
         <source>Erasing the records…</source>
         <translation>正在清除记录…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="472"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="475"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>已清除：%1（%2 条记录）；%3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="475"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
         <source>read back empty.</source>
         <translation>回读为空。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="476"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="479"/>
         <source>NOT empty when read back.</source>
         <translation>回读时不为空。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="481"/>
         <source>Erasing failed: %1</source>
         <translation>清除失败：%1</translation>
     </message>
@@ -2161,17 +2166,17 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="156"/>
+        <location filename="../model/bus/BusScanner.cpp" line="160"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
         <translation>两次应答报文损坏（%1）：可能有两台驱动器共用站号 %2；请检查它们的 SW1/SW2 开关</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="161"/>
+        <location filename="../model/bus/BusScanner.cpp" line="165"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>有应答，但没有匹配的设备描述（%1）</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="191"/>
+        <location filename="../model/bus/BusScanner.cpp" line="204"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>首次应答较迟（超过 %1 ms 等待时间）；加长等待时间可使该总线的扫描更可靠</translation>
     </message>
@@ -2463,6 +2468,9 @@ Connection (every command that talks to drives):
   --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
   Defaults follow the family: dbu 19200 8N1, dcpid 9600 8E1; --timeout 200,
   --retries 3 (2 more while the line is noisy: a request needed a retry lately).
+  Serial port only: --rs485 off|auto|kernel|rts (who switches the RS-485
+  direction; off: the adapter), --rts-polarity high|low, --rts-delay US,
+  --low-latency on|off (default on). scan says what the driver accepted.
 Output: --json  --trace  --variant VARIANT  --lang CODE
 Groups: --bus-drives LIST (or OPENTOP_BUS_DRIVES): the drives whose communication
 group is checked before a write or command
@@ -2473,36 +2481,21 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
 </source>
-        <translation>
-连接（所有与驱动器通信的命令）：
-  --port PATH | --tcp HOST:PORT | --sim SPEC
-  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
-  默认值随系列而定：dbu 19200 8N1，dcpid 9600 8E1；--timeout 200，
-  --retries 3（线路有干扰时再加 2 次：即最近有请求需要重试）。
-输出：--json  --trace  --variant VARIANT  --lang CODE
-通信组：--bus-drives LIST（或 OPENTOP_BUS_DRIVES）：写入或执行命令前
-检查其通信组的驱动器
-
-退出码：0 成功，1 通信失败，2 用法错误，3 值或文件无效
-（未写入任何内容），4 校验不一致或驱动器未停止，
-130 被 Ctrl-C、SIGTERM 或 SIGHUP 中断（会报告已完成的操作）。
-
-&quot;%1 help COMMAND&quot; 显示命令的选项。
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="164"/>
-        <location filename="../cli/CliApp.cpp" line="218"/>
+        <location filename="../cli/CliApp.cpp" line="167"/>
+        <location filename="../cli/CliApp.cpp" line="221"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>请尝试 &quot;%1 --help&quot;。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="184"/>
+        <location filename="../cli/CliApp.cpp" line="187"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1：未知命令 &quot;%2&quot;；可用命令： </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="192"/>
+        <location filename="../cli/CliApp.cpp" line="195"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2511,12 +2504,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="206"/>
+        <location filename="../cli/CliApp.cpp" line="209"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2：--%3 不是该命令的选项；请参阅 &quot;%1 help %2&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="217"/>
+        <location filename="../cli/CliApp.cpp" line="220"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -2531,37 +2524,42 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="124"/>
+        <location filename="../cli/CliContext.cpp" line="102"/>
+        <source>serial line: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/CliContext.cpp" line="126"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="187"/>
+        <location filename="../cli/CliContext.cpp" line="189"/>
         <source>machine number %1: no connection</source>
         <translation>站号 %1：无连接</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="192"/>
+        <location filename="../cli/CliContext.cpp" line="194"/>
         <source>machine number %1: %2%3</source>
         <translation>站号 %1：%2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="245"/>
+        <location filename="../cli/CliContext.cpp" line="248"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1：&quot;%2&quot; 不是站号 1–247</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="249"/>
+        <location filename="../cli/CliContext.cpp" line="252"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1：&quot;%2&quot; 不是驱动器机型；请使用 %3 之一</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="267"/>
+        <location filename="../cli/CliContext.cpp" line="270"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; 不是站号 1–247，也不是 3-8 这样的范围</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="277"/>
+        <location filename="../cli/CliContext.cpp" line="280"/>
         <source>no machine number given</source>
         <translation>未指定站号</translation>
     </message>
@@ -2937,173 +2935,173 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::ConnectionDialog</name>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="61"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="62"/>
         <source>Connect to a bus</source>
         <translation>连接总线</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
         <source>&amp;Serial port</source>
         <translation>串口(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
         <source>Modbus &amp;TCP gateway</source>
         <translation>Modbus TCP 网关(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="68"/>
         <source>Si&amp;mulated bus</source>
         <translation>模拟总线(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="83"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="84"/>
         <source>&amp;Advanced</source>
         <translation>高级(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="106"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="107"/>
         <source>&amp;Connect</source>
         <translation>连接(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="127"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="128"/>
         <source>&amp;Refresh</source>
         <translation>刷新(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="128"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="129"/>
         <source>List the serial ports again (after plugging in an adapter)</source>
         <translation>重新列出串口（插入适配器后）</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="133"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="134"/>
         <source>&amp;Port:</source>
         <translation>端口(&amp;P)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="142"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="143"/>
         <source>Custom</source>
         <translation>自定义</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="144"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="145"/>
         <source>%1 (%2 %3%4%5)</source>
         <translation>%1（%2 %3%4%5）</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="151"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="152"/>
         <source>Fills in the factory line settings of a drive family</source>
         <translation>填入该驱动器系列的出厂通信设定</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="154"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="155"/>
         <source>&amp;Family defaults:</source>
         <translation>系列默认值(&amp;F)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="158"/>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="286"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="159"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="289"/>
         <source>%1 bit/s</source>
         <translation>%1 bit/s</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="159"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="160"/>
         <source>&amp;Baud rate:</source>
         <translation>波特率(&amp;B)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="161"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="162"/>
         <source>None (N)</source>
         <translation>无 (N)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="162"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
         <source>Even (E)</source>
         <translation>偶校验 (E)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
         <source>Odd (O)</source>
         <translation>奇校验 (O)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="165"/>
         <source>P&amp;arity:</source>
         <translation>校验位(&amp;A)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="166"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="167"/>
         <source>1 bit</source>
         <translation>1 位</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="167"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
         <source>2 bits</source>
         <translation>2 位</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="169"/>
         <source>S&amp;top bits:</source>
         <translation>停止位(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="182"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="184"/>
         <source>e.g. 192.168.1.10</source>
         <translation>例如 192.168.1.10</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="183"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="185"/>
         <source>&amp;Host:</source>
         <translation>主机(&amp;H)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="186"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="188"/>
         <source>Modbus TCP uses port 502</source>
         <translation>Modbus TCP 使用端口 502</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="187"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="189"/>
         <source>TCP p&amp;ort:</source>
         <translation>TCP 端口(&amp;O)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="199"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="201"/>
         <source>Device types and machine numbers: TYPE@NUMBER, comma separated. Types: %1</source>
         <translation>设备类型和站号：TYPE@NUMBER，以逗号分隔。类型：%1</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="202"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="204"/>
         <source>&amp;Devices:</source>
         <translation>设备(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="216"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="218"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="217"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="219"/>
         <source>How long to wait for each reply</source>
         <translation>等待每个应答的时间</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="218"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="220"/>
         <source>Response &amp;timeout:</source>
         <translation>应答超时(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="221"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="223"/>
         <source>Extra attempts after a request got no valid reply</source>
         <translation>请求未获得有效应答后的额外尝试次数</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="222"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="224"/>
         <source>R&amp;etries:</source>
         <translation>重试次数(&amp;E)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="322"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="326"/>
         <source>The device list is not valid.</source>
         <translation>设备列表无效。</translation>
     </message>
@@ -3165,138 +3163,213 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ConnectionOptions</name>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="22"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="30"/>
+        <source>--rs485 %1: use off (the adapter switches direction itself), auto, kernel or rts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="36"/>
+        <source>--rts-polarity %1: use high or low (the RTS level while sending)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="44"/>
+        <source>--rts-delay %1: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own delay)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="51"/>
+        <source>--low-latency %1: use on or off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="61"/>
+        <source>--%1 applies to a serial port (--port), not to a Modbus TCP gateway (--tcp)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="65"/>
+        <source>--%1 applies to a serial port (--port), not to a simulated bus</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="66"/>
+        <source>--%1 applies to a serial port only: give it with --port PATH</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="74"/>
         <source>Serial device (e.g. /dev/ttyUSB0 or a pty path).</source>
         <translation>串口设备（例如 /dev/ttyUSB0 或 pty 路径）。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="23"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="75"/>
         <source>PATH</source>
         <translation>PATH</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="24"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="76"/>
         <source>Modbus TCP gateway, HOST:PORT (port defaults to 502).</source>
         <translation>Modbus TCP 网关，HOST:PORT（端口默认为 502）。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="25"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="77"/>
         <source>HOST:PORT</source>
         <translation>HOST:PORT</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="26"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="78"/>
         <source>In-process simulated bus, e.g. dbu200@1,dbu400@150,dcpid@7.</source>
         <translation>进程内模拟总线，例如 dbu200@1,dbu400@150,dcpid@7。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="27"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="79"/>
         <source>SPEC</source>
         <translation>SPEC</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="29"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="81"/>
         <source>Device family whose serial defaults apply (dbu: 19200 8N1, dcpid: 9600 8E1).</source>
         <translation>采用其串口默认值的设备系列（dbu：19200 8N1，dcpid：9600 8E1）。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="30"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="82"/>
         <source>FAMILY</source>
         <translation>FAMILY</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="31"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="83"/>
         <source>Baud rate, 1200–115200.</source>
         <translation>波特率，1200–115200。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="31"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="83"/>
         <source>BAUD</source>
         <translation>BAUD</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="32"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="84"/>
         <source>Parity: N, E or O.</source>
         <translation>校验位：N、E 或 O。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="32"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="84"/>
         <source>N|E|O</source>
         <translation>N|E|O</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="33"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="85"/>
         <source>Stop bits: 1 or 2.</source>
         <translation>停止位：1 或 2。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="33"/>
-        <location filename="../connection/ConnectionOptions.cpp" line="39"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="85"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="91"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="35"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="87"/>
         <source>Response timeout per attempt in ms, 10–10000 (default 200).</source>
         <translation>每次尝试的应答超时（ms），10–10000（默认 200）。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="35"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="87"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="37"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="89"/>
         <source>Extra attempts after no reply or a garbled one, 0–10 (default 3; 2 more while the line is noisy).</source>
         <translation>无应答或应答损坏后的额外尝试次数，0–10（默认 3；线路有干扰时再加 2 次）。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="73"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="93"/>
+        <source>Who switches the RS-485 direction (serial port only): off (default: the adapter itself, as USB–RS-485 adapters do), kernel (the driver&apos;s RS-485 mode), rts (RTS from the program) or auto (kernel where the driver has it, else rts).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="96"/>
+        <source>MODE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="98"/>
+        <source>RTS level while sending with --rs485 kernel, rts or auto: high (default) or low.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="99"/>
+        <source>high|low</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="101"/>
+        <source>RTS delay before and after sending in µs, 0–100000 (default 0: the driver&apos;s, or libmodbus&apos; one character time; the kernel rounds up to whole ms).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
+        <source>US</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="105"/>
+        <source>Ask the serial driver to pass received bytes on at once (USB adapters otherwise hold them up to 16 ms): on (default) or off.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="107"/>
+        <source>on|off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="151"/>
         <source>give only one of --port, --tcp and --sim</source>
         <translation>--port、--tcp 和 --sim 只能指定其中一个</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="75"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="153"/>
         <source>no bus given: use --port PATH, --tcp HOST:PORT or --sim SPEC</source>
         <translation>未指定总线：请使用 --port PATH、--tcp HOST:PORT 或 --sim SPEC</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="84"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="162"/>
         <source>--family %1: unknown family; use one of %2</source>
         <translation>--family %1：未知系列；请使用 %2 之一</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="181"/>
         <source>--tcp: &quot;%1&quot; is not HOST:PORT</source>
         <translation>--tcp：&quot;%1&quot; 不是 HOST:PORT</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="112"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="190"/>
         <source>--sim: %1</source>
         <translation>--sim：%1</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="125"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="203"/>
         <source>--baud %1: use a baud rate 1200–115200 (e.g. 9600, 19200, 38400)</source>
         <translation>--baud %1：请使用 1200–115200 的波特率（例如 9600、19200、38400）</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="129"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="207"/>
         <source>--stop-bits %1: use 1 or 2</source>
         <translation>--stop-bits %1：请使用 1 或 2</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="131"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="209"/>
         <source>--timeout %1: use a response timeout of 10–10000 ms</source>
         <translation>--timeout %1：请使用 10–10000 ms 的应答超时</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="134"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="212"/>
         <source>--retries %1: use 0–10 extra attempts</source>
         <translation>--retries %1：请使用 0–10 次额外尝试</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="139"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="217"/>
         <source>--parity %1: use N (none), E (even) or O (odd)</source>
         <translation>--parity %1：请使用 N（无）、E（偶）或 O（奇）</translation>
     </message>
@@ -3304,20 +3377,30 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ConnectionStatus</name>
     <message>
-        <location filename="../ui/main/ConnectionStatus.cpp" line="20"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="21"/>
         <source>SIMULATED BUS — no hardware</source>
         <translation>模拟总线 — 无硬件</translation>
     </message>
     <message>
-        <location filename="../ui/main/ConnectionStatus.cpp" line="21"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="22"/>
         <source>These drives exist only in this program; nothing moves.</source>
         <translation>这些驱动器仅存在于本程序中；不会有任何动作。</translation>
     </message>
     <message>
-        <location filename="../ui/main/ConnectionStatus.cpp" line="26"/>
-        <location filename="../ui/main/ConnectionStatus.cpp" line="61"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="27"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="76"/>
         <source>Not connected</source>
         <translation>未连接</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="54"/>
+        <source>Connected: %1</source>
+        <translation type="unfinished">已连接：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="56"/>
+        <source> — %1</source>
+        <translation type="unfinished"> — %1</translation>
     </message>
 </context>
 <context>
@@ -3809,7 +3892,7 @@ Configuration changes written but not stored are discarded.</source>
         <translation>设备名 &quot;%1&quot; 不是 %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceIdentifier.cpp" line="115"/>
+        <location filename="../model/session/DeviceIdentifier.cpp" line="116"/>
         <source>the variant cannot be read from the device; choose it</source>
         <translation>无法从设备读取机型；请选择</translation>
     </message>
@@ -3896,63 +3979,63 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceSession</name>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="90"/>
+        <location filename="../model/session/DeviceSession.cpp" line="92"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 没有参数 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="99"/>
-        <location filename="../model/session/DeviceSession.cpp" line="139"/>
+        <location filename="../model/session/DeviceSession.cpp" line="101"/>
+        <location filename="../model/session/DeviceSession.cpp" line="165"/>
         <source>%1 cannot be read (it is a write-only command)</source>
         <translation>无法读取 %1（它是只写命令）</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="202"/>
+        <location filename="../model/session/DeviceSession.cpp" line="236"/>
         <source>cannot check the value: reading %1 failed: %2</source>
         <translation>无法检查该值：读取 %1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="219"/>
+        <location filename="../model/session/DeviceSession.cpp" line="253"/>
         <source>%1 is read-only</source>
         <translation>%1 为只读</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="225"/>
+        <location filename="../model/session/DeviceSession.cpp" line="259"/>
         <source>%1 is a %2 command; it is only sent when explicitly requested</source>
         <translation>%1 是%2命令；仅在明确请求时才发送</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="255"/>
+        <location filename="../model/session/DeviceSession.cpp" line="289"/>
         <source>%1 cannot be checked: %2</source>
         <translation>无法检查 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="277"/>
+        <location filename="../model/session/DeviceSession.cpp" line="311"/>
         <source>reading %1 failed: %2</source>
         <translation>读取 %1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="305"/>
+        <location filename="../model/session/DeviceSession.cpp" line="339"/>
         <source>not written: %1 is written together with 0x%2–0x%3, and reading those first failed: %4</source>
         <translation>未写入：%1 需与 0x%2–0x%3 一起写入，而预先读取这些寄存器失败：%4</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="310"/>
+        <location filename="../model/session/DeviceSession.cpp" line="344"/>
         <source>short reply</source>
         <translation>应答过短</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="365"/>
+        <location filename="../model/session/DeviceSession.cpp" line="399"/>
         <source>written, but reading it back failed: %1</source>
         <translation>已写入，但回读失败：%1</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="374"/>
+        <location filename="../model/session/DeviceSession.cpp" line="408"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>校验失败：写入 %1，设备中为 %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="410"/>
+        <location filename="../model/session/DeviceSession.cpp" line="444"/>
         <source>error code %1</source>
         <translation>错误代码 %1</translation>
     </message>
@@ -6908,7 +6991,6 @@ Still connected to %2; nothing was changed.</source>
     </message>
     <message>
         <location filename="../ui/main/MainWindow.cpp" line="323"/>
-        <location filename="../ui/main/MainWindow.cpp" line="331"/>
         <source>Connected: %1</source>
         <translation>已连接：%1</translation>
     </message>
@@ -6918,34 +7000,34 @@ Still connected to %2; nothing was changed.</source>
         <translation>已连接：%1（模拟，无硬件）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="356"/>
+        <location filename="../ui/main/MainWindow.cpp" line="357"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>驱动器未报告其机型；%1 为所设定的机型。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="386"/>
-        <location filename="../ui/main/MainWindow.cpp" line="397"/>
+        <location filename="../ui/main/MainWindow.cpp" line="387"/>
+        <location filename="../ui/main/MainWindow.cpp" line="398"/>
         <source>disconnect</source>
         <translation>断开连接</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="393"/>
+        <location filename="../ui/main/MainWindow.cpp" line="394"/>
         <source>Not connected (disconnected)</source>
         <translation>未连接（已断开）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="404"/>
-        <location filename="../ui/main/MainWindow.cpp" line="429"/>
+        <location filename="../ui/main/MainWindow.cpp" line="405"/>
+        <location filename="../ui/main/MainWindow.cpp" line="430"/>
         <source>quit</source>
         <translation>退出</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="415"/>
+        <location filename="../ui/main/MainWindow.cpp" line="416"/>
         <source>Unwritten changes</source>
         <translation>未写入的修改</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="416"/>
+        <location filename="../ui/main/MainWindow.cpp" line="417"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>有 %n 项修改尚未写入驱动器。退出并放弃这些修改？</numerusform>
@@ -8741,22 +8823,22 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::PtySimServer</name>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="49"/>
+        <location filename="../sim/PtySimServer.cpp" line="50"/>
         <source>cannot open a pseudo-terminal: %1</source>
         <translation>无法打开伪终端：%1</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="66"/>
+        <location filename="../sim/PtySimServer.cpp" line="67"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1 已存在且不是符号链接；拒绝替换</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="72"/>
+        <location filename="../sim/PtySimServer.cpp" line="73"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>无法创建符号链接 %1 -&gt; %2</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="114"/>
+        <location filename="../sim/PtySimServer.cpp" line="115"/>
         <source>the port is plugged in: %1</source>
         <translation>端口已插入：%1</translation>
     </message>
@@ -11044,32 +11126,32 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>正在扫描 %3 上的站号 %1–%2，每个 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="210"/>
+        <location filename="../cli/ScanCommand.cpp" line="211"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>在扫描任何站号之前已中断。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="212"/>
+        <location filename="../cli/ScanCommand.cpp" line="213"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>已中断：已扫描站号 %1–%2（%4 个中的 %3 个）；%5–%6 未询问。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="226"/>
+        <location filename="../cli/ScanCommand.cpp" line="227"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>错误：扫描在站号 %1 处停止：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="236"/>
+        <location filename="../cli/ScanCommand.cpp" line="237"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="238"/>
+        <location filename="../cli/ScanCommand.cpp" line="239"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>注意：%1 台驱动器在 %2 ms 等待时间之后才应答，已重新询问；如果扫描漏掉驱动器，请加大 --wait。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="244"/>
+        <location filename="../cli/ScanCommand.cpp" line="245"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -11080,84 +11162,177 @@ This moves or stops a motor: add --yes to send it.</source>
   - 终端电阻（总线两端各 120 Ω），以及驱动器是否已通电。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="257"/>
+        <location filename="../cli/ScanCommand.cpp" line="258"/>
         <source>hint: %1 Retry with the same connection and: %2</source>
         <translation>提示：%1 请使用相同连接并加上以下选项重试：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="287"/>
+        <location filename="../cli/ScanCommand.cpp" line="271"/>
+        <source>Serial line: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="274"/>
+        <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="303"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 机型未知</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="288"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
         <translation>驱动器未报告其机型；请用 --variant %1=VARIANT 指定（%2）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="320"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="320"/>
         <source>hex</source>
         <translation>十六进制</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="320"/>
         <source>switches</source>
         <translation>开关</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="320"/>
         <source>family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="305"/>
+        <location filename="../cli/ScanCommand.cpp" line="321"/>
         <source>model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="305"/>
+        <location filename="../cli/ScanCommand.cpp" line="321"/>
         <source>firmware</source>
         <translation>固件</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="305"/>
+        <location filename="../cli/ScanCommand.cpp" line="321"/>
         <source>state</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="311"/>
+        <location filename="../cli/ScanCommand.cpp" line="327"/>
         <source>comm. group</source>
         <translation>通信组</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="379"/>
+        <location filename="../cli/ScanCommand.cpp" line="395"/>
         <source>1 drive found in %1 s</source>
         <translation>在 %1 s 内找到 1 台驱动器</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="380"/>
+        <location filename="../cli/ScanCommand.cpp" line="396"/>
         <source>%1 drives found in %2 s</source>
         <translation>在 %2 s 内找到 %1 台驱动器</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="382"/>
+        <location filename="../cli/ScanCommand.cpp" line="398"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>；1 个可能重复的站号：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="384"/>
+        <location filename="../cli/ScanCommand.cpp" line="400"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>；%1 个可能重复的站号：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="395"/>
+        <location filename="../cli/ScanCommand.cpp" line="411"/>
         <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>警告：站号 %1（%2，%3）的应答报文损坏：可能有两台驱动器设为同一站号。请检查该总线上各驱动器的 SW1/SW2 开关，为每台驱动器设定不同的站号，断电后重新上电，再次扫描。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::SerialLineFields</name>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="29"/>
+        <source>Adapter switches itself</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="30"/>
+        <source>Auto (kernel, else RTS)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="31"/>
+        <source>Kernel RS-485 mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="32"/>
+        <source>RTS from the program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="34"/>
+        <source>Who switches the RS-485 transceiver between sending and receiving. USB–RS-485 adapters do it themselves; on-board RS-485 ports need the driver&apos;s RS-485 mode (kernel) or RTS switched by the program. The status bar says what the driver accepted.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="38"/>
+        <source>RS-485 d&amp;irection:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="43"/>
+        <source>high while sending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="44"/>
+        <source>low while sending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="45"/>
+        <source>The RTS level that enables the transceiver&apos;s driver</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="50"/>
+        <source>delay </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="51"/>
+        <source> µs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="52"/>
+        <source>default delay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="53"/>
+        <source>Before and after sending. Default: the driver&apos;s own, or one character time from the program; the kernel rounds up to whole ms.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="58"/>
+        <source>RTS le&amp;vel:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="62"/>
+        <source>&amp;Low latency (no 16 ms hold-back in USB adapters)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="65"/>
+        <source>Asks the driver to pass received bytes on at once. Many USB–serial chips otherwise hold them for up to 16 ms, which slows scans and polling.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -11455,17 +11630,17 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>opentop-sim：--defect %1（%2@%1）：%3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="168"/>
+        <location filename="../sim/SimApp.cpp" line="169"/>
         <source>the port is unplugged already</source>
         <translation>端口已拔出</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="170"/>
+        <location filename="../sim/SimApp.cpp" line="171"/>
         <source>unplugged</source>
         <translation>已拔出</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="203"/>
+        <location filename="../sim/SimApp.cpp" line="204"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
@@ -11549,7 +11724,7 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>站号 %1 重复使用</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="231"/>
+        <location filename="../sim/SimBus.cpp" line="233"/>
         <source>no device with machine number %1 (bus: %2)</source>
         <translation>没有站号为 %1 的设备（总线：%2）</translation>
     </message>
@@ -11641,76 +11816,81 @@ This moves or stops a motor: add --yes to send it.</source>
     <name>opentop::SimDefectSpec</name>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="45"/>
-        <source>firmware=MAJOR.MINOR (e.g. firmware=1.4), max_speed=N (e.g. max_speed=800), stall, load=+N, load=-N or load=xF (e.g. load=+40, load=x1.5), alarm=CODE@TIME (e.g. alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (a parameter name or register address, e.g. nostick=spno2.speed, nostore=0x0081), clear</source>
-        <translation>firmware=MAJOR.MINOR（例如 firmware=1.4），max_speed=N（例如 max_speed=800），stall，load=+N、load=-N 或 load=xF（例如 load=+40、load=x1.5），alarm=CODE@TIME（例如 alarm=0x07@1500ms、alarm=overload@2s；DC：alarm=stall@1s），nostick=PARAM，nostore=PARAM（参数名或寄存器地址，例如 nostick=spno2.speed、nostore=0x0081），clear</translation>
+        <source>firmware=MAJOR.MINOR (e.g. firmware=1.4), max_speed=N (e.g. max_speed=800), stall, load=+N, load=-N or load=xF (e.g. load=+40, load=x1.5), alarm=CODE@TIME (e.g. alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (a parameter name or register address, e.g. nostick=spno2.speed, nostore=0x0081), turnaround=MS (e.g. turnaround=14), clear</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="119"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="123"/>
         <source>unknown defect &quot;%1&quot;; allowed: %2</source>
         <translation>未知缺陷 &quot;%1&quot;；允许：%2</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="122"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="126"/>
         <source>&quot;%1&quot; needs a value: %2=...</source>
         <translation>&quot;%1&quot; 需要一个值：%2=...</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="124"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="128"/>
         <source>&quot;%1&quot; takes no value; write %2</source>
         <translation>&quot;%1&quot; 不接受值；请写成 %2</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="137"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="141"/>
         <source>firmware=%1: write MAJOR.MINOR with each 0..255, e.g. firmware=1.4</source>
         <translation>firmware=%1：请写成 MAJOR.MINOR，各为 0..255，例如 firmware=1.4</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="144"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="148"/>
         <source>max_speed=%1: write a whole number 0..%2, e.g. max_speed=800</source>
         <translation>max_speed=%1：请写成 0..%2 的整数，例如 max_speed=800</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="154"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="158"/>
         <source>load=%1: a factor is x0.1..x10, e.g. load=x1.5</source>
         <translation>load=%1：倍数为 x0.1..x10，例如 load=x1.5</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="159"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="163"/>
         <source>load=%1: an offset is -200..+200, e.g. load=+40</source>
         <translation>load=%1：偏移量为 -200..+200，例如 load=+40</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="162"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="166"/>
         <source>load=%1: write load=+N, load=-N (an offset) or load=xF (a factor), e.g. load=+40 or load=x1.5</source>
         <translation>load=%1：请写成 load=+N、load=-N（偏移量）或 load=xF（倍数），例如 load=+40 或 load=x1.5</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="171"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="175"/>
         <source>alarm=%1: write alarm=CODE@TIME, e.g. alarm=0x07@1500ms or alarm=overload@2s</source>
         <translation>alarm=%1：请写成 alarm=CODE@TIME，例如 alarm=0x07@1500ms 或 alarm=overload@2s</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="176"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="180"/>
         <source>alarm=%1: the time after the start is 0..3600 s, written 1500ms, 1.5s or 1500 (ms)</source>
         <translation>alarm=%1：启动后的时间为 0..3600 s，写成 1500ms、1.5s 或 1500（ms）</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="183"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="189"/>
+        <source>turnaround=%1: write the answer delay in ms, 0..1000, e.g. turnaround=14</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../sim/SimDefectSpec.cpp" line="194"/>
         <source>%1=%2: name a parameter (e.g. spno2.speed) or a register address (e.g. 0x1102)</source>
         <translation>%1=%2：请指定参数名（例如 spno2.speed）或寄存器地址（例如 0x1102）</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="199"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="210"/>
         <source>no defect given; allowed: %1</source>
         <translation>未指定缺陷；允许：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="205"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="216"/>
         <source>empty item in &quot;%1&quot;</source>
         <translation>&quot;%1&quot; 中有空项</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="223"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="234"/>
         <source>&quot;%1&quot;: write ID:DEFECT[,DEFECT...] with ID the machine number 1..247, e.g. 3:firmware=1.4 or 5:max_speed=800,load=+40</source>
         <translation>&quot;%1&quot;：请写成 ID:DEFECT[,DEFECT...]，ID 为站号 1..247，例如 3:firmware=1.4 或 5:max_speed=800,load=+40</translation>
     </message>
@@ -11723,17 +11903,17 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>%1 不报告固件版本</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefects.cpp" line="82"/>
+        <location filename="../sim/SimDefects.cpp" line="83"/>
         <source>alarm=%1: a %2 has no alarm codes; its protection is the stall stop: write alarm=stall@TIME</source>
         <translation>alarm=%1：%2 没有报警代码；其保护功能为堵转停止：请写成 alarm=stall@TIME</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefects.cpp" line="98"/>
+        <location filename="../sim/SimDefects.cpp" line="99"/>
         <source>alarm=%1: not an alarm of a %2; allowed: %3</source>
         <translation>alarm=%1：不是 %2 的报警；允许：%3</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefects.cpp" line="109"/>
+        <location filename="../sim/SimDefects.cpp" line="110"/>
         <source>%1=%2: no writable parameter of a %3 has this name or address; e.g. %4</source>
         <translation>%1=%2：%3 没有该名称或地址的可写参数；例如 %4</translation>
     </message>
@@ -11785,6 +11965,8 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
   --parity N|E|O     line parity (N)
   --wire-timing      delay replies as a real line at --baud would
   --turnaround MS    device turnaround with --wire-timing (2)
+  --half-duplex      with --wire-timing: a request overlapping a reply on the line
+                     garbles both, one within 3.5 characters of a reply is lost
   --faults LIST      e.g. drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
   --seed N           seed of the fault injection (1)
   --defect ID:LIST   defects of drive ID (repeatable), LIST of:
@@ -11810,119 +11992,85 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 Prints &quot;pty: PATH&quot; (and &quot;tcp: HOST:PORT&quot;), then &quot;ready&quot;. Reads console commands
 from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </source>
-        <translation>用法：opentop-sim --devices SPEC [选项]
-在伪终端上或作为 Modbus TCP 网关模拟 Modbus RTU 驱动器。
-
-  --devices SPEC     设备和站号，例如 dbu200@1,dbu400@150,dcpid@7
-  --pty [PATH]       在 pty 上提供服务（默认）；PATH：同时创建该符号链接
-  --tcp HOST:PORT    提供 Modbus TCP 服务（HOST 默认为 127.0.0.1，PORT 0：任意）
-  --baud N           用于线路时序和设备设定的线路速率（19200）
-  --parity N|E|O     线路校验位（N）
-  --wire-timing      按 --baud 下真实线路的时序延迟应答
-  --turnaround MS    使用 --wire-timing 时设备的转换时间（2）
-  --faults LIST      例如 drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
-  --seed N           故障注入的随机种子（1）
-  --defect ID:LIST   驱动器 ID 的缺陷（可重复），LIST 取值：
-                       firmware=MAJOR.MINOR  识别时报告该版本
-                       max_speed=N           电机在 N 处饱和（DBU r/min，
-                                             DC 换相次数/s），负载高
-                       stall                 电机不转，负载高
-                       load=+N|-N|xF         负载率（DC：电流 %）偏移或缩放
-                       alarm=CODE@TIME       运行 TIME 后报警，例如
-                                             0x07@1500ms、overload@2s（DC：stall@1s）
-                       nostick=PARAM         写入被应答，但旧值保持不变
-                       nostore=PARAM         下次重新上电时值丢失
-                     例如 --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
-  --motor LIST       直流控制器的电机和负载，例如 inertia=2e-4,load=0.05；
-                     supply（V）、resistance（ohm）、no_load（满占空比时的 1/s）、
-                     commutations（每转换相次数）、inertia（kg m2）、viscous
-                     （N m s/rad）、coulomb（N m）、load（N m）、gate（ms）、tacho（V s）
-  --quiet            不在 stderr 上输出报文跟踪
-  --lang CODE        消息的语言：en, zh_TW, zh_CN, ko, ja
-  --help             本说明
-  --version          程序版本
-
-输出 &quot;pty: PATH&quot;（以及 &quot;tcp: HOST:PORT&quot;），然后输出 &quot;ready&quot;。从 stdin 读取控制台命令
-（输入 help）。收到 SIGINT、SIGTERM 或 quit 时停止。
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="85"/>
+        <location filename="../sim/SimOptions.cpp" line="87"/>
         <source>--lang needs a language code such as ko</source>
         <translation>--lang 需要语言代码，例如 ko</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="88"/>
+        <location filename="../sim/SimOptions.cpp" line="90"/>
         <source>--devices needs a device list such as dbu200@1,dcpid@7</source>
         <translation>--devices 需要设备列表，例如 dbu200@1,dcpid@7</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="97"/>
+        <location filename="../sim/SimOptions.cpp" line="99"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:5020</source>
         <translation>--tcp 需要 HOST:PORT，例如 127.0.0.1:5020</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="103"/>
+        <location filename="../sim/SimOptions.cpp" line="105"/>
         <source>--tcp needs HOST:PORT with PORT 0..65535, got &apos;%1&apos;</source>
         <translation>--tcp 需要 HOST:PORT，PORT 为 0..65535，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="115"/>
+        <location filename="../sim/SimOptions.cpp" line="117"/>
         <source>--baud must be one of %1, got &apos;%2&apos;</source>
         <translation>--baud 必须是 %1 之一，实际为 &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="122"/>
+        <location filename="../sim/SimOptions.cpp" line="124"/>
         <source>--parity must be N, E or O, got &apos;%1&apos;</source>
         <translation>--parity 必须为 N、E 或 O，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="130"/>
+        <location filename="../sim/SimOptions.cpp" line="134"/>
         <source>--turnaround must be 0..1000 ms, got &apos;%1&apos;</source>
         <translation>--turnaround 必须为 0..1000 ms，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="134"/>
+        <location filename="../sim/SimOptions.cpp" line="138"/>
         <source>--faults needs a list such as drop=0.02,crc=0.01</source>
         <translation>--faults 需要列表，例如 drop=0.02,crc=0.01</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="138"/>
+        <location filename="../sim/SimOptions.cpp" line="142"/>
         <source>--faults: %1</source>
         <translation>--faults：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="144"/>
+        <location filename="../sim/SimOptions.cpp" line="148"/>
         <source>--seed must be a whole number 0..4294967295, got &apos;%1&apos;</source>
         <translation>--seed 必须是 0..4294967295 的整数，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="148"/>
+        <location filename="../sim/SimOptions.cpp" line="152"/>
         <source>--defect needs ID:DEFECT[,DEFECT...], e.g. 3:firmware=1.4; DEFECT: %1</source>
         <translation>--defect 需要 ID:DEFECT[,DEFECT...]，例如 3:firmware=1.4；DEFECT：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="155"/>
+        <location filename="../sim/SimOptions.cpp" line="159"/>
         <source>--defect: %1</source>
         <translation>--defect：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="159"/>
+        <location filename="../sim/SimOptions.cpp" line="163"/>
         <source>--motor needs a list such as inertia=2e-4,load=0.05</source>
         <translation>--motor 需要列表，例如 inertia=2e-4,load=0.05</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="163"/>
+        <location filename="../sim/SimOptions.cpp" line="167"/>
         <source>--motor: %1</source>
         <translation>--motor：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="169"/>
-        <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
-        <translation>未知参数 &apos;%1&apos;；选项：--devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</translation>
+        <location filename="../sim/SimOptions.cpp" line="172"/>
+        <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="177"/>
+        <location filename="../sim/SimOptions.cpp" line="181"/>
         <source>--devices SPEC is required, e.g. --devices dbu200@1,dcpid@7</source>
         <translation>必须指定 --devices SPEC，例如 --devices dbu200@1,dcpid@7</translation>
     </message>
@@ -12905,27 +13053,37 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>不允许字节超时 %1 ms：请使用 1–10000 ms，或 0 表示根据波特率推算。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="47"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="45"/>
+        <source>RS-485 mode %1 is not supported: use off, auto, kernel or rts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/ConnectionSettings.cpp" line="50"/>
+        <source>RTS delay %1 µs is not allowed: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/ConnectionSettings.cpp" line="59"/>
         <source>No host given: enter the gateway&apos;s address, e.g. 192.168.1.10.</source>
         <translation>未指定主机：请输入网关地址，例如 192.168.1.10。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="51"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="63"/>
         <source>TCP port %1 is not allowed: use 1–65535 (Modbus TCP uses 502).</source>
         <translation>不允许 TCP 端口 %1：请使用 1–65535（Modbus TCP 使用 502）。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="58"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="70"/>
         <source>No simulated devices given: use a list such as dbu200@1,dcpid@7.</source>
         <translation>未指定模拟设备：请使用 dbu200@1,dcpid@7 这样的列表。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="64"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="76"/>
         <source>Timeout %1 ms is not allowed: use 10–10000 ms.</source>
         <translation>不允许超时 %1 ms：请使用 10–10000 ms。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="68"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="80"/>
         <source>%1 retries are not allowed: use 0–10.</source>
         <translation>不允许重试 %1 次：请使用 0–10。</translation>
     </message>
@@ -12970,75 +13128,75 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>对象 0x%1</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="51"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="52"/>
         <source>Cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="127"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="309"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="129"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="325"/>
         <source>%1 is not open</source>
         <translation>%1 未打开</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="144"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="151"/>
         <source>send failed</source>
         <translation>发送失败</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="168"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="177"/>
         <source>interrupted while waiting</source>
         <translation>等待时被中断</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="172"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="181"/>
         <location filename="../transport/MockBackend.cpp" line="100"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 内无应答</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="201"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="211"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>之后又收到一个应答：这个应答可能是对之前请求的应答</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="270"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="307"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>来自从站 %1 的应答，预期为 %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="281"/>
-        <location filename="../transport/RtuBackend.cpp" line="146"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="318"/>
+        <location filename="../transport/RtuBackend.cpp" line="160"/>
         <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>应答不完整</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="286"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="323"/>
         <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 不一致</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="293"/>
-        <location filename="../transport/RtuBackend.cpp" line="153"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="330"/>
+        <location filename="../transport/RtuBackend.cpp" line="167"/>
         <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>接收失败</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="363"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="404"/>
         <source> (connection closed)</source>
         <translation> （连接已关闭）</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="384"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="426"/>
         <source>stale bytes discarded before sending</source>
         <translation>发送前丢弃了残留字节</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="466"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="510"/>
         <source>late bytes discarded after an error</source>
         <translation>出错后丢弃了迟到的字节</translation>
     </message>
@@ -13063,18 +13221,18 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>回显 %1 ×%2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="192"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="211"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="201"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="220"/>
         <source>cancelled before sending</source>
         <translation>发送前已取消</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="242"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="254"/>
         <source>cannot open %1</source>
         <translation>无法打开 %1</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="285"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="301"/>
         <source>client closed</source>
         <translation>客户端已关闭</translation>
     </message>
@@ -13319,7 +13477,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>%1 正被 %2（PID %3）占用；请先将其关闭。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="83"/>
+        <location filename="../transport/RtuBackend.cpp" line="97"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -13328,17 +13486,17 @@ then log out and in again (the group applies to new sessions only).</source>
 然后注销并重新登录（该组仅对新会话生效）。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="89"/>
+        <location filename="../transport/RtuBackend.cpp" line="103"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> （设备可能不支持该校验位；pty 需要 N）</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="124"/>
+        <location filename="../transport/RtuBackend.cpp" line="138"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>应答声明 %1 字节，超过 RTU 帧的容量</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="145"/>
+        <location filename="../transport/RtuBackend.cpp" line="159"/>
         <source>no reply</source>
         <translation>无应答</translation>
     </message>
@@ -13416,6 +13574,156 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../transport/TrafficEntry.cpp" line="37"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="13"/>
+        <source>%1 ms</source>
+        <translation type="unfinished">%1 ms</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="14"/>
+        <source>%1 µs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="31"/>
+        <source>RTS high while sending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="32"/>
+        <source>RTS low while sending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="35"/>
+        <source>, %1 before and after</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="37"/>
+        <source>, %1 before, %2 after</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="43"/>
+        <source>RS-485: switched by the adapter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="45"/>
+        <source>RS-485: kernel mode left on by the driver (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="49"/>
+        <source>RS-485: kernel (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="52"/>
+        <source>RS-485: RTS from the program (%1; kernel mode refused: %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="56"/>
+        <source>RS-485: RTS from the program (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="61"/>
+        <source>RS-485: not available (kernel mode refused: %1; RTS not switchable: %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="66"/>
+        <source>RS-485: RTS not switchable on this port (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="69"/>
+        <source>RS-485: kernel mode refused by the driver (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="78"/>
+        <source>latency timer %1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="86"/>
+        <source>low latency: not a UART, no adapter latency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="90"/>
+        <source>low latency: on (but %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="92"/>
+        <source>low latency: on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="95"/>
+        <source>low latency: not offered by the driver (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="99"/>
+        <source>low latency: not offered by the driver (USB adapter: up to %1 ms assumed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="103"/>
+        <source>low latency: not offered by the driver</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="107"/>
+        <source>low latency: off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="108"/>
+        <source>low latency: off (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="132"/>
+        <source>low latency is off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="134"/>
+        <source>the driver took low latency but kept its latency timer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="137"/>
+        <source>the driver did not take low latency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="140"/>
+        <source>see docs/hardware.md, or use an adapter whose driver offers low latency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="144"/>
+        <source>as root: echo 1 &gt; %1, or the udev rule in docs/hardware.md</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="148"/>
+        <source>The adapter holds received bytes for up to %1 ms before passing them on (%2). Fix: %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineSetup.cpp" line="106"/>
+        <source>the driver left it off</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -13872,12 +14180,12 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>电流 (A)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="61"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="65"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="61"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="65"/>
         <source>Speed (%1)</source>
         <translation>速度 (%1)</translation>
     </message>
@@ -14241,127 +14549,127 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningRunner</name>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="183"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="190"/>
         <source>a tuning test is already running</source>
         <translation>已有整定测试正在进行</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="191"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="198"/>
         <source>Reading the drive&apos;s settings</source>
         <translation>正在读取驱动器设定</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="199"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="206"/>
         <source>could not read the drive&apos;s settings: %1</source>
         <translation>无法读取驱动器设定：%1</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="224"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="231"/>
         <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
         <translation>驱动器不处于闭环速度模式：请先将 %1（%2）设为 %3</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="226"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="233"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="241"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="248"/>
         <source>Setting the communication-loss braking time to %1 s</source>
         <translation>正在将通信中断停止时间设为 %1 s</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="265"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="272"/>
         <source>the drive stopped answering: %1</source>
         <translation>驱动器停止应答：%1</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="283"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="290"/>
         <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
         <translation>速度 %1 %2 超出测试限值 %3 %2：已立即停止</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="290"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="297"/>
         <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
         <translation>电流 %1 A 超出测试限值 %2 A：已立即停止</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="296"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="303"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="356"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="364"/>
         <source>Stopping the motor</source>
         <translation>正在停止电机</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="362"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="370"/>
         <source>motor stopped (confirmed)</source>
         <translation>电机已停止（已确认）</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="363"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="371"/>
         <source>the motor could not be confirmed stopped: check it</source>
         <translation>无法确认电机已停止：请检查电机</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="398"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="406"/>
         <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
         <translation>阶跃测试以正转从一个速度变到另一个速度：起始速度和目标速度必须不同，且不小于 0</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="405"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="413"/>
         <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
         <translation>%1 %2 超出测试的速度限值 %3 %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="413"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="421"/>
         <source>Running to %1 %2</source>
         <translation>正在运行至 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="449"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="457"/>
         <source>Step to %1 %2</source>
         <translation>阶跃至 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="477"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="484"/>
         <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
         <translation>运行速度必须大于 0 且小于测试的速度限值 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="484"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="491"/>
         <source>the relay amplitude must be 0–50 % of full output</source>
         <translation>继电器幅值必须为最大输出的 0–50 %</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="487"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="494"/>
         <source>Open loop: finding the output for %1 %2</source>
         <translation>开环：正在寻找 %1 %2 所需的输出</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="536"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="542"/>
         <source>the motor did not turn at %1 % output</source>
         <translation>输出 %1 % 时电机未转动</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="572"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="578"/>
         <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
         <translation>运行速度需要 %1 % 的输出：上下没有 ±%2 % 的余量</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="577"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="583"/>
         <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
         <translation>正在 %1 %2 附近进行继电器测试（输出 %3 % ± %4 %）</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="611"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="616"/>
         <source>no steady oscillation within %1 s: %2</source>
         <translation>%1 s 内未出现稳定振荡：%2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="613"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="618"/>
         <source>try a larger amplitude</source>
         <translation>请尝试加大幅值</translation>
     </message>
@@ -14369,59 +14677,59 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningRunsView</name>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="36"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="37"/>
         <source>Save CSV…</source>
         <translation>保存 CSV…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="37"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="38"/>
         <source>Save PNG…</source>
         <translation>保存 PNG…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="42"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="43"/>
         <source>Saves the selected run: its samples, gains and metrics</source>
         <translation>保存所选测试：其采样数据、增益和指标</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="43"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
         <source>Saves the chart as it is shown</source>
         <translation>按当前显示保存图表</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="45"/>
         <source>solid: speed · dotted: command · dash-dot: current (right axis) · dashed: predicted speed</source>
         <translation>实线：速度 · 点线：命令 · 点划线：电流（右轴） · 虚线：预测速度</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="161"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="169"/>
         <source>no run to save</source>
         <translation>没有可保存的测试</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="174"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="178"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="182"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
         <source>Save run as CSV</source>
         <translation>将测试保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="175"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="183"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="183"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="191"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="194"/>
         <source>Save chart as PNG</source>
         <translation>将图表保存为 PNG</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="184"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="192"/>
         <source>PNG images (*.png)</source>
         <translation>PNG 图片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="194"/>
         <source>Could not write %1.</source>
         <translation>无法写入 %1。</translation>
     </message>
@@ -14596,104 +14904,104 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ValueCodec</name>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="202"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="201"/>
         <source>depends on %1, which is not known yet</source>
         <translation>取决于 %1，但该项尚未知</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="204"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="203"/>
         <source>text of up to %1 characters</source>
         <translation>最多 %1 个字符的文本</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="178"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="214"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="177"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="213"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="193"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="192"/>
         <source>%1: %2 is outside the recommended range %3; it is allowed and will be written</source>
         <translation>%1：%2 超出建议范围 %3；该值仍允许，将会写入</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="222"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="221"/>
         <source>, or </source>
         <translation>，或 </translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="223"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="222"/>
         <source>any value</source>
         <translation>任意值</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="239"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="238"/>
         <source> (the variant is not known, so the value must suit %1; name the variant to use its own range)</source>
         <translation> （机型未知，因此该值必须适用于 %1；指定机型以使用其自身范围）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="249"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="248"/>
         <source>%1: the allowed values depend on %2, which has not been read</source>
         <translation>%1：允许值取决于 %2，但该项尚未读取</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="254"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="253"/>
         <source>%1: value out of the register&apos;s range; allowed: %2</source>
         <translation>%1：值超出寄存器范围；允许：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="266"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="265"/>
         <source>%1: %2 is not allowed; allowed: %3</source>
         <translation>%1：不允许 %2；允许：%3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="278"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="277"/>
         <source>%1: expected %2 registers, got %3</source>
         <translation>%1：预期 %2 个寄存器，实际为 %3 个</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="316"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="315"/>
         <source>%1 is text, not a number</source>
         <translation>%1 是文本，不是数字</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="329"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="328"/>
         <source>%1: %2 is finer than the step of %3 %4; allowed: %5</source>
         <translation>%1：%2 比步长 %3 %4 更精细；允许：%5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="362"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="361"/>
         <source>%1: at most %2 characters</source>
         <translation>%1：最多 %2 个字符</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="368"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="367"/>
         <source>%1: only printable ASCII characters are allowed</source>
         <translation>%1：只允许可打印的 ASCII 字符</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="380"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="379"/>
         <source>%1: no value given; allowed: %2</source>
         <translation>%1：未给出值；允许：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="420"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="419"/>
         <source>%1: &quot;%2&quot; is only available when %3 is %4; allowed now: %5</source>
         <translation>%1：&quot;%2&quot; 仅在 %3 为 %4 时可用；当前允许：%5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="433"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="453"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="432"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="452"/>
         <source>%1: &quot;%2&quot; is not a valid value; allowed: %3</source>
         <translation>%1：&quot;%2&quot; 不是有效值；允许：%3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="479"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="478"/>
         <source>(invalid)</source>
         <translation>（无效）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="490"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="489"/>
         <source>unknown code %1</source>
         <translation>未知代码 %1</translation>
     </message>

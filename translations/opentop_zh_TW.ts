@@ -33,12 +33,12 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="54"/>
+        <location filename="../app/gui/main.cpp" line="58"/>
         <source>Commissioning tool for RS-485 Modbus-RTU motor drives.</source>
         <translation>RS-485 Modbus-RTU 馬達驅動器試車調機工具。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="58"/>
+        <location filename="../app/gui/main.cpp" line="62"/>
         <source>Language of the program: %1 (default: the language menu&apos;s choice, else the system&apos;s).</source>
         <translation>程式的語言：%1（預設：語言選單的選擇，否則為系統語言）。</translation>
     </message>
@@ -76,6 +76,11 @@
         <location filename="../app/gui/MonitorOptions.cpp" line="103"/>
         <source>--stats-every needs a number of seconds</source>
         <translation>--stats-every 需要秒數</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/StartupProbe.cpp" line="23"/>
+        <source>Print how long the start took once the window shows the bus&apos;s drives, then quit (for measurements).</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -801,98 +806,98 @@
         <translation>解除方式</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="107"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="109"/>
         <source>Cause and remedy</source>
         <translation>原因與對策</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="108"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="110"/>
         <source>Communication error register</source>
         <translation>通訊錯誤暫存器</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="120"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="123"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>送出警報重置指令，並告知警報是否已解除或只能斷電重新上電解除</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="122"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>清除驅動器保存的警報與警告記錄</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="127"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="298"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="130"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="301"/>
         <source>Select a record to see its cause and remedy.</source>
         <translation>選擇一筆記錄以查看其原因與對策。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="128"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="131"/>
         <source>Not read yet.</source>
         <translation>尚未讀取。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="130"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="133"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>此驅動器不保存警報或警告記錄。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="160"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="163"/>
         <source>Alarm state: %1</source>
         <translation>警報狀態：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="252"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="255"/>
         <source>Reading the records…</source>
         <translation>正在讀取記錄…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="268"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="271"/>
         <source>No alarm is active.</source>
         <translation>目前無警報。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="270"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="273"/>
         <source>Alarm active: %1 %2.</source>
         <translation>警報發生中：%1 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="272"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
         <source>An alarm is active.</source>
         <translation>有警報發生中。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="278"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>此驅動器設定為僅能斷電重新上電解除警報 (%1)：Alarm-Reset 無法解除任何警報。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="279"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="282"/>
         <source>Could not be read: %1</source>
         <translation>無法讀取：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="305"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="308"/>
         <source>This drive has no communication error register.</source>
         <translation>此驅動器沒有通訊錯誤暫存器。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="307"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="310"/>
         <source>%1: could not be read.</source>
         <translation>%1：無法讀取。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="309"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
         <source>%1: no error (0).</source>
         <translation>%1：無錯誤 (0)。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="315"/>
         <source>%1: %2, not a known code.</source>
         <translation>%1：%2，非已知代碼。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="317"/>
         <source>%1: %2 %3
 Cause: %4
 Remedy: %5</source>
@@ -901,153 +906,153 @@ Remedy: %5</source>
 對策：%5</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="326"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="329"/>
         <source>No alarm records</source>
         <translation>無警報記錄</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="326"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="329"/>
         <source>No warning records</source>
         <translation>無警告記錄</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="332"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="335"/>
         <source>%1: could not be read: %2</source>
         <translation>%1：無法讀取：%2</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="335"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="338"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1：共 %3 筆記錄中的 %2 筆，最新的在前</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="346"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="349"/>
         <source>unknown code</source>
         <translation>未知代碼</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="375"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="378"/>
         <source>Record %1: code %2 is not in the %3 table.</source>
         <translation>記錄 %1：代碼 %2 不在%3表中。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="380"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="383"/>
         <source>%1 %2 (record %3)</source>
         <translation>%1 %2 (記錄 %3)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="382"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="385"/>
         <source>Cause: %1</source>
         <translation>原因：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="384"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="387"/>
         <source>Remedy: %1</source>
         <translation>對策：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="386"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="389"/>
         <source>To clear: %1</source>
         <translation>解除方法：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="415"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="418"/>
         <source>Writes: %1</source>
         <translation>寫入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="416"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="419"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>若原因已排除，即可解除發生中的警報。部分警報只能斷電重新上電解除；結果會顯示是哪一種。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="419"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="422"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>此驅動器設定為僅能斷電重新上電解除警報 (%1)。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="421"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="423"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="424"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="426"/>
         <source>Reset alarm</source>
         <translation>警報重置</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="422"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="425"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>要對機號 %1 送出警報重置指令嗎？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="430"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="433"/>
         <source>Sending the alarm reset…</source>
         <translation>正在送出警報重置…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="436"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="439"/>
         <source>Alarm reset: %1</source>
         <translation>警報重置：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="439"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="442"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>請關閉驅動器電源，等待 5 s 後再開啟。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="450"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="453"/>
         <source>%1 (%2 records)</source>
         <translation>%1 (%2 筆記錄)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="452"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
         <source>the alarm and warning records</source>
         <translation>警報與警告記錄</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="453"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="456"/>
         <source>Clear records</source>
         <translation>清除記錄</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="454"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
         <source>Erase %1 of machine %2?</source>
         <translation>要清除機號 %2 的%1嗎？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="454"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
         <source> and </source>
         <translation> 與 </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="458"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>記錄清除後無法復原。寫入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
         <source>Erase</source>
         <translation>清除</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="464"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="467"/>
         <source>Erasing the records…</source>
         <translation>正在清除記錄…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="472"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="475"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>已清除：%1 (%2 筆記錄)；%3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="475"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
         <source>read back empty.</source>
         <translation>回讀為空。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="476"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="479"/>
         <source>NOT empty when read back.</source>
         <translation>回讀結果「不是」空的。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="481"/>
         <source>Erasing failed: %1</source>
         <translation>清除失敗：%1</translation>
     </message>
@@ -2161,17 +2166,17 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="156"/>
+        <location filename="../model/bus/BusScanner.cpp" line="160"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
         <translation>兩次收到錯亂的回應 (%1)：可能有兩台驅動器使用相同機號 %2；請檢查其 SW1/SW2 開關</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="161"/>
+        <location filename="../model/bus/BusScanner.cpp" line="165"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>有回應，但沒有符合的定義檔 (%1)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="191"/>
+        <location filename="../model/bus/BusScanner.cpp" line="204"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>第一次回應過慢 (超過 %1 ms 等待時間)；加長等待時間可使此匯流排的掃描更可靠</translation>
     </message>
@@ -2463,6 +2468,9 @@ Connection (every command that talks to drives):
   --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
   Defaults follow the family: dbu 19200 8N1, dcpid 9600 8E1; --timeout 200,
   --retries 3 (2 more while the line is noisy: a request needed a retry lately).
+  Serial port only: --rs485 off|auto|kernel|rts (who switches the RS-485
+  direction; off: the adapter), --rts-polarity high|low, --rts-delay US,
+  --low-latency on|off (default on). scan says what the driver accepted.
 Output: --json  --trace  --variant VARIANT  --lang CODE
 Groups: --bus-drives LIST (or OPENTOP_BUS_DRIVES): the drives whose communication
 group is checked before a write or command
@@ -2473,36 +2481,21 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
 </source>
-        <translation>
-連線 (所有與驅動器通訊的指令)：
-  --port PATH | --tcp HOST:PORT | --sim SPEC
-  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
-  預設值依系列而定：dbu 19200 8N1，dcpid 9600 8E1；--timeout 200，
-  --retries 3 (線路雜訊多時再加 2 次：即最近有請求需要重試時)。
-輸出：--json  --trace  --variant VARIANT  --lang CODE
-群組：--bus-drives LIST (或 OPENTOP_BUS_DRIVES)：寫入或下指令前
-要檢查其通訊群組的驅動器
-
-結束碼：0 成功，1 通訊失敗，2 用法錯誤，3 值或檔案無效
-(未寫入任何資料)，4 驗證不符或驅動器未停止，
-130 被 Ctrl-C、SIGTERM 或 SIGHUP 中斷 (會回報已完成的操作)。
-
-&quot;%1 help COMMAND&quot; 顯示指令的選項。
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="164"/>
-        <location filename="../cli/CliApp.cpp" line="218"/>
+        <location filename="../cli/CliApp.cpp" line="167"/>
+        <location filename="../cli/CliApp.cpp" line="221"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>請執行 &quot;%1 --help&quot;。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="184"/>
+        <location filename="../cli/CliApp.cpp" line="187"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1：未知指令 &quot;%2&quot;；可用指令： </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="192"/>
+        <location filename="../cli/CliApp.cpp" line="195"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2511,12 +2504,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="206"/>
+        <location filename="../cli/CliApp.cpp" line="209"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2：--%3 不是此指令的選項；請參閱 &quot;%1 help %2&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="217"/>
+        <location filename="../cli/CliApp.cpp" line="220"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -2531,37 +2524,42 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="124"/>
+        <location filename="../cli/CliContext.cpp" line="102"/>
+        <source>serial line: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/CliContext.cpp" line="126"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="187"/>
+        <location filename="../cli/CliContext.cpp" line="189"/>
         <source>machine number %1: no connection</source>
         <translation>機號 %1：未連線</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="192"/>
+        <location filename="../cli/CliContext.cpp" line="194"/>
         <source>machine number %1: %2%3</source>
         <translation>機號 %1：%2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="245"/>
+        <location filename="../cli/CliContext.cpp" line="248"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1：&quot;%2&quot; 不是 1–247 的機號</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="249"/>
+        <location filename="../cli/CliContext.cpp" line="252"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1：&quot;%2&quot; 不是驅動器機型；請使用下列其中之一：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="267"/>
+        <location filename="../cli/CliContext.cpp" line="270"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; 不是 1–247 的機號，也不是 3-8 這樣的範圍</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="277"/>
+        <location filename="../cli/CliContext.cpp" line="280"/>
         <source>no machine number given</source>
         <translation>未指定機號</translation>
     </message>
@@ -2937,173 +2935,173 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::ConnectionDialog</name>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="61"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="62"/>
         <source>Connect to a bus</source>
         <translation>連線至匯流排</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
         <source>&amp;Serial port</source>
         <translation>序列埠(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="66"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
         <source>Modbus &amp;TCP gateway</source>
         <translation>Modbus TCP 閘道器(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="68"/>
         <source>Si&amp;mulated bus</source>
         <translation>模擬匯流排(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="83"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="84"/>
         <source>&amp;Advanced</source>
         <translation>進階(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="106"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="107"/>
         <source>&amp;Connect</source>
         <translation>連線(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="127"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="128"/>
         <source>&amp;Refresh</source>
         <translation>重新整理(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="128"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="129"/>
         <source>List the serial ports again (after plugging in an adapter)</source>
         <translation>重新列出序列埠 (插入轉接器後使用)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="133"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="134"/>
         <source>&amp;Port:</source>
         <translation>連接埠(&amp;P)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="142"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="143"/>
         <source>Custom</source>
         <translation>自訂</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="144"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="145"/>
         <source>%1 (%2 %3%4%5)</source>
         <translation>%1 (%2 %3%4%5)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="151"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="152"/>
         <source>Fills in the factory line settings of a drive family</source>
         <translation>填入驅動器系列的出廠通訊設定</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="154"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="155"/>
         <source>&amp;Family defaults:</source>
         <translation>系列預設值(&amp;F)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="158"/>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="286"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="159"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="289"/>
         <source>%1 bit/s</source>
         <translation>%1 bit/s</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="159"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="160"/>
         <source>&amp;Baud rate:</source>
         <translation>鮑率(&amp;B)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="161"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="162"/>
         <source>None (N)</source>
         <translation>無 (N)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="162"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
         <source>Even (E)</source>
         <translation>偶同位 (E)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
         <source>Odd (O)</source>
         <translation>奇同位 (O)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="165"/>
         <source>P&amp;arity:</source>
         <translation>同位元(&amp;A)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="166"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="167"/>
         <source>1 bit</source>
         <translation>1 位元</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="167"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
         <source>2 bits</source>
         <translation>2 位元</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="169"/>
         <source>S&amp;top bits:</source>
         <translation>停止位元(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="182"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="184"/>
         <source>e.g. 192.168.1.10</source>
         <translation>例如 192.168.1.10</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="183"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="185"/>
         <source>&amp;Host:</source>
         <translation>主機(&amp;H)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="186"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="188"/>
         <source>Modbus TCP uses port 502</source>
         <translation>Modbus TCP 使用連接埠 502</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="187"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="189"/>
         <source>TCP p&amp;ort:</source>
         <translation>TCP 連接埠(&amp;O)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="199"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="201"/>
         <source>Device types and machine numbers: TYPE@NUMBER, comma separated. Types: %1</source>
         <translation>裝置類型與機號：TYPE@NUMBER，以逗號分隔。類型：%1</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="202"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="204"/>
         <source>&amp;Devices:</source>
         <translation>裝置(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="216"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="218"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="217"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="219"/>
         <source>How long to wait for each reply</source>
         <translation>每次等待回應的時間</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="218"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="220"/>
         <source>Response &amp;timeout:</source>
         <translation>回應逾時(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="221"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="223"/>
         <source>Extra attempts after a request got no valid reply</source>
         <translation>請求未收到有效回應時的額外重試次數</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="222"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="224"/>
         <source>R&amp;etries:</source>
         <translation>重試次數(&amp;E)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="322"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="326"/>
         <source>The device list is not valid.</source>
         <translation>裝置清單無效。</translation>
     </message>
@@ -3165,138 +3163,213 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ConnectionOptions</name>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="22"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="30"/>
+        <source>--rs485 %1: use off (the adapter switches direction itself), auto, kernel or rts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="36"/>
+        <source>--rts-polarity %1: use high or low (the RTS level while sending)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="44"/>
+        <source>--rts-delay %1: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own delay)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="51"/>
+        <source>--low-latency %1: use on or off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="61"/>
+        <source>--%1 applies to a serial port (--port), not to a Modbus TCP gateway (--tcp)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="65"/>
+        <source>--%1 applies to a serial port (--port), not to a simulated bus</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="66"/>
+        <source>--%1 applies to a serial port only: give it with --port PATH</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="74"/>
         <source>Serial device (e.g. /dev/ttyUSB0 or a pty path).</source>
         <translation>序列裝置 (例如 /dev/ttyUSB0 或 pty 路徑)。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="23"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="75"/>
         <source>PATH</source>
         <translation>PATH</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="24"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="76"/>
         <source>Modbus TCP gateway, HOST:PORT (port defaults to 502).</source>
         <translation>Modbus TCP 閘道器，HOST:PORT (連接埠預設為 502)。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="25"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="77"/>
         <source>HOST:PORT</source>
         <translation>HOST:PORT</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="26"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="78"/>
         <source>In-process simulated bus, e.g. dbu200@1,dbu400@150,dcpid@7.</source>
         <translation>程式內建的模擬匯流排，例如 dbu200@1,dbu400@150,dcpid@7。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="27"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="79"/>
         <source>SPEC</source>
         <translation>SPEC</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="29"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="81"/>
         <source>Device family whose serial defaults apply (dbu: 19200 8N1, dcpid: 9600 8E1).</source>
         <translation>套用其序列埠預設值的裝置系列 (dbu：19200 8N1，dcpid：9600 8E1)。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="30"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="82"/>
         <source>FAMILY</source>
         <translation>FAMILY</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="31"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="83"/>
         <source>Baud rate, 1200–115200.</source>
         <translation>鮑率，1200–115200。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="31"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="83"/>
         <source>BAUD</source>
         <translation>BAUD</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="32"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="84"/>
         <source>Parity: N, E or O.</source>
         <translation>同位元：N、E 或 O。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="32"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="84"/>
         <source>N|E|O</source>
         <translation>N|E|O</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="33"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="85"/>
         <source>Stop bits: 1 or 2.</source>
         <translation>停止位元：1 或 2。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="33"/>
-        <location filename="../connection/ConnectionOptions.cpp" line="39"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="85"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="91"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="35"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="87"/>
         <source>Response timeout per attempt in ms, 10–10000 (default 200).</source>
         <translation>每次嘗試的回應逾時，單位 ms，10–10000 (預設 200)。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="35"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="87"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="37"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="89"/>
         <source>Extra attempts after no reply or a garbled one, 0–10 (default 3; 2 more while the line is noisy).</source>
         <translation>無回應或回應錯亂時的額外重試次數，0–10 (預設 3；線路雜訊多時再加 2 次)。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="73"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="93"/>
+        <source>Who switches the RS-485 direction (serial port only): off (default: the adapter itself, as USB–RS-485 adapters do), kernel (the driver&apos;s RS-485 mode), rts (RTS from the program) or auto (kernel where the driver has it, else rts).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="96"/>
+        <source>MODE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="98"/>
+        <source>RTS level while sending with --rs485 kernel, rts or auto: high (default) or low.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="99"/>
+        <source>high|low</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="101"/>
+        <source>RTS delay before and after sending in µs, 0–100000 (default 0: the driver&apos;s, or libmodbus&apos; one character time; the kernel rounds up to whole ms).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
+        <source>US</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="105"/>
+        <source>Ask the serial driver to pass received bytes on at once (USB adapters otherwise hold them up to 16 ms): on (default) or off.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="107"/>
+        <source>on|off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="151"/>
         <source>give only one of --port, --tcp and --sim</source>
         <translation>--port、--tcp 與 --sim 只能指定其中一個</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="75"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="153"/>
         <source>no bus given: use --port PATH, --tcp HOST:PORT or --sim SPEC</source>
         <translation>未指定匯流排：請使用 --port PATH、--tcp HOST:PORT 或 --sim SPEC</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="84"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="162"/>
         <source>--family %1: unknown family; use one of %2</source>
         <translation>--family %1：未知系列；請使用下列其中之一：%2</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="181"/>
         <source>--tcp: &quot;%1&quot; is not HOST:PORT</source>
         <translation>--tcp：&quot;%1&quot; 不是 HOST:PORT 格式</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="112"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="190"/>
         <source>--sim: %1</source>
         <translation>--sim：%1</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="125"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="203"/>
         <source>--baud %1: use a baud rate 1200–115200 (e.g. 9600, 19200, 38400)</source>
         <translation>--baud %1：請使用 1200–115200 的鮑率 (例如 9600、19200、38400)</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="129"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="207"/>
         <source>--stop-bits %1: use 1 or 2</source>
         <translation>--stop-bits %1：請使用 1 或 2</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="131"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="209"/>
         <source>--timeout %1: use a response timeout of 10–10000 ms</source>
         <translation>--timeout %1：回應逾時請使用 10–10000 ms</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="134"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="212"/>
         <source>--retries %1: use 0–10 extra attempts</source>
         <translation>--retries %1：額外重試次數請使用 0–10</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="139"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="217"/>
         <source>--parity %1: use N (none), E (even) or O (odd)</source>
         <translation>--parity %1：請使用 N (無)、E (偶同位) 或 O (奇同位)</translation>
     </message>
@@ -3304,20 +3377,30 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ConnectionStatus</name>
     <message>
-        <location filename="../ui/main/ConnectionStatus.cpp" line="20"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="21"/>
         <source>SIMULATED BUS — no hardware</source>
         <translation>模擬匯流排 — 無實體硬體</translation>
     </message>
     <message>
-        <location filename="../ui/main/ConnectionStatus.cpp" line="21"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="22"/>
         <source>These drives exist only in this program; nothing moves.</source>
         <translation>這些驅動器只存在於本程式中；沒有任何馬達會轉動。</translation>
     </message>
     <message>
-        <location filename="../ui/main/ConnectionStatus.cpp" line="26"/>
-        <location filename="../ui/main/ConnectionStatus.cpp" line="61"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="27"/>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="76"/>
         <source>Not connected</source>
         <translation>未連線</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="54"/>
+        <source>Connected: %1</source>
+        <translation type="unfinished">已連線：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/ConnectionStatus.cpp" line="56"/>
+        <source> — %1</source>
+        <translation type="unfinished"> — %1</translation>
     </message>
 </context>
 <context>
@@ -3809,7 +3892,7 @@ Configuration changes written but not stored are discarded.</source>
         <translation>裝置名稱 &quot;%1&quot; 不是 %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceIdentifier.cpp" line="115"/>
+        <location filename="../model/session/DeviceIdentifier.cpp" line="116"/>
         <source>the variant cannot be read from the device; choose it</source>
         <translation>無法從裝置讀取機型；請自行選擇</translation>
     </message>
@@ -3896,63 +3979,63 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceSession</name>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="90"/>
+        <location filename="../model/session/DeviceSession.cpp" line="92"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 沒有參數 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="99"/>
-        <location filename="../model/session/DeviceSession.cpp" line="139"/>
+        <location filename="../model/session/DeviceSession.cpp" line="101"/>
+        <location filename="../model/session/DeviceSession.cpp" line="165"/>
         <source>%1 cannot be read (it is a write-only command)</source>
         <translation>%1 無法讀取 (為僅可寫入的指令)</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="202"/>
+        <location filename="../model/session/DeviceSession.cpp" line="236"/>
         <source>cannot check the value: reading %1 failed: %2</source>
         <translation>無法檢查此值：讀取 %1 失敗：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="219"/>
+        <location filename="../model/session/DeviceSession.cpp" line="253"/>
         <source>%1 is read-only</source>
         <translation>%1 為唯讀</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="225"/>
+        <location filename="../model/session/DeviceSession.cpp" line="259"/>
         <source>%1 is a %2 command; it is only sent when explicitly requested</source>
         <translation>%1 是 %2 指令；僅在明確要求時才會送出</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="255"/>
+        <location filename="../model/session/DeviceSession.cpp" line="289"/>
         <source>%1 cannot be checked: %2</source>
         <translation>無法檢查 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="277"/>
+        <location filename="../model/session/DeviceSession.cpp" line="311"/>
         <source>reading %1 failed: %2</source>
         <translation>讀取 %1 失敗：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="305"/>
+        <location filename="../model/session/DeviceSession.cpp" line="339"/>
         <source>not written: %1 is written together with 0x%2–0x%3, and reading those first failed: %4</source>
         <translation>未寫入：%1 需與 0x%2–0x%3 一起寫入，而事先讀取這些暫存器失敗：%4</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="310"/>
+        <location filename="../model/session/DeviceSession.cpp" line="344"/>
         <source>short reply</source>
         <translation>回應過短</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="365"/>
+        <location filename="../model/session/DeviceSession.cpp" line="399"/>
         <source>written, but reading it back failed: %1</source>
         <translation>已寫入，但回讀失敗：%1</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="374"/>
+        <location filename="../model/session/DeviceSession.cpp" line="408"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>驗證失敗：寫入 %1，裝置中為 %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="410"/>
+        <location filename="../model/session/DeviceSession.cpp" line="444"/>
         <source>error code %1</source>
         <translation>錯誤碼 %1</translation>
     </message>
@@ -6908,7 +6991,6 @@ Still connected to %2; nothing was changed.</source>
     </message>
     <message>
         <location filename="../ui/main/MainWindow.cpp" line="323"/>
-        <location filename="../ui/main/MainWindow.cpp" line="331"/>
         <source>Connected: %1</source>
         <translation>已連線：%1</translation>
     </message>
@@ -6918,34 +7000,34 @@ Still connected to %2; nothing was changed.</source>
         <translation>已連線：%1 (模擬，無實體硬體)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="356"/>
+        <location filename="../ui/main/MainWindow.cpp" line="357"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>此驅動器不回報機型；%1 為設定的機型。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="386"/>
-        <location filename="../ui/main/MainWindow.cpp" line="397"/>
+        <location filename="../ui/main/MainWindow.cpp" line="387"/>
+        <location filename="../ui/main/MainWindow.cpp" line="398"/>
         <source>disconnect</source>
         <translation>中斷連線</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="393"/>
+        <location filename="../ui/main/MainWindow.cpp" line="394"/>
         <source>Not connected (disconnected)</source>
         <translation>未連線 (已中斷連線)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="404"/>
-        <location filename="../ui/main/MainWindow.cpp" line="429"/>
+        <location filename="../ui/main/MainWindow.cpp" line="405"/>
+        <location filename="../ui/main/MainWindow.cpp" line="430"/>
         <source>quit</source>
         <translation>結束</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="415"/>
+        <location filename="../ui/main/MainWindow.cpp" line="416"/>
         <source>Unwritten changes</source>
         <translation>未寫入的變更</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="416"/>
+        <location filename="../ui/main/MainWindow.cpp" line="417"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>有 %n 項變更尚未寫入驅動器。要結束並捨棄這些變更嗎？</numerusform>
@@ -8741,22 +8823,22 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::PtySimServer</name>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="49"/>
+        <location filename="../sim/PtySimServer.cpp" line="50"/>
         <source>cannot open a pseudo-terminal: %1</source>
         <translation>無法開啟虛擬終端機：%1</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="66"/>
+        <location filename="../sim/PtySimServer.cpp" line="67"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1 已存在且不是符號連結；拒絕取代</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="72"/>
+        <location filename="../sim/PtySimServer.cpp" line="73"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>無法建立符號連結 %1 -&gt; %2</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="114"/>
+        <location filename="../sim/PtySimServer.cpp" line="115"/>
         <source>the port is plugged in: %1</source>
         <translation>連接埠已接上：%1</translation>
     </message>
@@ -11044,32 +11126,32 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>正在 %3 上掃描機號 %1–%2，每個 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="210"/>
+        <location filename="../cli/ScanCommand.cpp" line="211"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>在掃描任何機號前中斷。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="212"/>
+        <location filename="../cli/ScanCommand.cpp" line="213"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>已中斷：已掃描機號 %1–%2 (%4 個中的 %3 個)；%5–%6 未詢問。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="226"/>
+        <location filename="../cli/ScanCommand.cpp" line="227"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>錯誤：掃描在機號 %1 停止：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="236"/>
+        <location filename="../cli/ScanCommand.cpp" line="237"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="238"/>
+        <location filename="../cli/ScanCommand.cpp" line="239"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>注意：%1 台驅動器在 %2 ms 等待時間後才回應，已重新詢問；若掃描遺漏驅動器，請加長 --wait。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="244"/>
+        <location filename="../cli/ScanCommand.cpp" line="245"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -11080,84 +11162,177 @@ This moves or stops a motor: add --yes to send it.</source>
   - 終端電阻 (匯流排兩端各 120 Ω) 以及驅動器是否已通電。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="257"/>
+        <location filename="../cli/ScanCommand.cpp" line="258"/>
         <source>hint: %1 Retry with the same connection and: %2</source>
         <translation>提示：%1 請以相同連線加上以下選項重試：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="287"/>
+        <location filename="../cli/ScanCommand.cpp" line="271"/>
+        <source>Serial line: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="274"/>
+        <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="303"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 機型未知</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="288"/>
+        <location filename="../cli/ScanCommand.cpp" line="304"/>
         <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
         <translation>驅動器不回報機型；請以 --variant %1=VARIANT 指定 (%2)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="320"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="320"/>
         <source>hex</source>
         <translation>十六進位</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="320"/>
         <source>switches</source>
         <translation>開關</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="320"/>
         <source>family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="305"/>
+        <location filename="../cli/ScanCommand.cpp" line="321"/>
         <source>model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="305"/>
+        <location filename="../cli/ScanCommand.cpp" line="321"/>
         <source>firmware</source>
         <translation>韌體</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="305"/>
+        <location filename="../cli/ScanCommand.cpp" line="321"/>
         <source>state</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="311"/>
+        <location filename="../cli/ScanCommand.cpp" line="327"/>
         <source>comm. group</source>
         <translation>通訊群組</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="379"/>
+        <location filename="../cli/ScanCommand.cpp" line="395"/>
         <source>1 drive found in %1 s</source>
         <translation>於 %1 s 內找到 1 台驅動器</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="380"/>
+        <location filename="../cli/ScanCommand.cpp" line="396"/>
         <source>%1 drives found in %2 s</source>
         <translation>於 %2 s 內找到 %1 台驅動器</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="382"/>
+        <location filename="../cli/ScanCommand.cpp" line="398"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>；1 個可能重複的機號：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="384"/>
+        <location filename="../cli/ScanCommand.cpp" line="400"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>；%1 個可能重複的機號：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="395"/>
+        <location filename="../cli/ScanCommand.cpp" line="411"/>
         <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>警告：機號 %1 (%2，%3) 的回應錯亂：可能有兩台驅動器使用相同機號。請檢查此匯流排上驅動器的 SW1/SW2 開關，讓每台使用不同的機號，斷電重新上電後再次掃描。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::SerialLineFields</name>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="29"/>
+        <source>Adapter switches itself</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="30"/>
+        <source>Auto (kernel, else RTS)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="31"/>
+        <source>Kernel RS-485 mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="32"/>
+        <source>RTS from the program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="34"/>
+        <source>Who switches the RS-485 transceiver between sending and receiving. USB–RS-485 adapters do it themselves; on-board RS-485 ports need the driver&apos;s RS-485 mode (kernel) or RTS switched by the program. The status bar says what the driver accepted.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="38"/>
+        <source>RS-485 d&amp;irection:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="43"/>
+        <source>high while sending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="44"/>
+        <source>low while sending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="45"/>
+        <source>The RTS level that enables the transceiver&apos;s driver</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="50"/>
+        <source>delay </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="51"/>
+        <source> µs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="52"/>
+        <source>default delay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="53"/>
+        <source>Before and after sending. Default: the driver&apos;s own, or one character time from the program; the kernel rounds up to whole ms.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="58"/>
+        <source>RTS le&amp;vel:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="62"/>
+        <source>&amp;Low latency (no 16 ms hold-back in USB adapters)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/SerialLineFields.cpp" line="65"/>
+        <source>Asks the driver to pass received bytes on at once. Many USB–serial chips otherwise hold them for up to 16 ms, which slows scans and polling.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -11455,17 +11630,17 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>opentop-sim：--defect %1 (%2@%1)：%3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="168"/>
+        <location filename="../sim/SimApp.cpp" line="169"/>
         <source>the port is unplugged already</source>
         <translation>連接埠已拔除</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="170"/>
+        <location filename="../sim/SimApp.cpp" line="171"/>
         <source>unplugged</source>
         <translation>已拔除</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="203"/>
+        <location filename="../sim/SimApp.cpp" line="204"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
@@ -11549,7 +11724,7 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>機號 %1 重複使用</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="231"/>
+        <location filename="../sim/SimBus.cpp" line="233"/>
         <source>no device with machine number %1 (bus: %2)</source>
         <translation>沒有機號 %1 的裝置 (匯流排：%2)</translation>
     </message>
@@ -11641,76 +11816,81 @@ This moves or stops a motor: add --yes to send it.</source>
     <name>opentop::SimDefectSpec</name>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="45"/>
-        <source>firmware=MAJOR.MINOR (e.g. firmware=1.4), max_speed=N (e.g. max_speed=800), stall, load=+N, load=-N or load=xF (e.g. load=+40, load=x1.5), alarm=CODE@TIME (e.g. alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (a parameter name or register address, e.g. nostick=spno2.speed, nostore=0x0081), clear</source>
-        <translation>firmware=MAJOR.MINOR (例如 firmware=1.4)、max_speed=N (例如 max_speed=800)、stall、load=+N、load=-N 或 load=xF (例如 load=+40、load=x1.5)、alarm=CODE@TIME (例如 alarm=0x07@1500ms、alarm=overload@2s；DC：alarm=stall@1s)、nostick=PARAM、nostore=PARAM (參數名稱或暫存器位址，例如 nostick=spno2.speed、nostore=0x0081)、clear</translation>
+        <source>firmware=MAJOR.MINOR (e.g. firmware=1.4), max_speed=N (e.g. max_speed=800), stall, load=+N, load=-N or load=xF (e.g. load=+40, load=x1.5), alarm=CODE@TIME (e.g. alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (a parameter name or register address, e.g. nostick=spno2.speed, nostore=0x0081), turnaround=MS (e.g. turnaround=14), clear</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="119"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="123"/>
         <source>unknown defect &quot;%1&quot;; allowed: %2</source>
         <translation>未知的缺陷 &quot;%1&quot;；允許：%2</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="122"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="126"/>
         <source>&quot;%1&quot; needs a value: %2=...</source>
         <translation>&quot;%1&quot; 需要值：%2=...</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="124"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="128"/>
         <source>&quot;%1&quot; takes no value; write %2</source>
         <translation>&quot;%1&quot; 不接受值；請寫成 %2</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="137"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="141"/>
         <source>firmware=%1: write MAJOR.MINOR with each 0..255, e.g. firmware=1.4</source>
         <translation>firmware=%1：請寫成 MAJOR.MINOR，各為 0..255，例如 firmware=1.4</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="144"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="148"/>
         <source>max_speed=%1: write a whole number 0..%2, e.g. max_speed=800</source>
         <translation>max_speed=%1：請寫 0..%2 的整數，例如 max_speed=800</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="154"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="158"/>
         <source>load=%1: a factor is x0.1..x10, e.g. load=x1.5</source>
         <translation>load=%1：倍率為 x0.1..x10，例如 load=x1.5</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="159"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="163"/>
         <source>load=%1: an offset is -200..+200, e.g. load=+40</source>
         <translation>load=%1：偏移量為 -200..+200，例如 load=+40</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="162"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="166"/>
         <source>load=%1: write load=+N, load=-N (an offset) or load=xF (a factor), e.g. load=+40 or load=x1.5</source>
         <translation>load=%1：請寫成 load=+N、load=-N (偏移量) 或 load=xF (倍率)，例如 load=+40 或 load=x1.5</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="171"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="175"/>
         <source>alarm=%1: write alarm=CODE@TIME, e.g. alarm=0x07@1500ms or alarm=overload@2s</source>
         <translation>alarm=%1：請寫成 alarm=CODE@TIME，例如 alarm=0x07@1500ms 或 alarm=overload@2s</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="176"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="180"/>
         <source>alarm=%1: the time after the start is 0..3600 s, written 1500ms, 1.5s or 1500 (ms)</source>
         <translation>alarm=%1：啟動後的時間為 0..3600 s，可寫成 1500ms、1.5s 或 1500 (ms)</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="183"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="189"/>
+        <source>turnaround=%1: write the answer delay in ms, 0..1000, e.g. turnaround=14</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../sim/SimDefectSpec.cpp" line="194"/>
         <source>%1=%2: name a parameter (e.g. spno2.speed) or a register address (e.g. 0x1102)</source>
         <translation>%1=%2：請指定參數 (例如 spno2.speed) 或暫存器位址 (例如 0x1102)</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="199"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="210"/>
         <source>no defect given; allowed: %1</source>
         <translation>未指定缺陷；允許：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="205"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="216"/>
         <source>empty item in &quot;%1&quot;</source>
         <translation>&quot;%1&quot; 中有空項目</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefectSpec.cpp" line="223"/>
+        <location filename="../sim/SimDefectSpec.cpp" line="234"/>
         <source>&quot;%1&quot;: write ID:DEFECT[,DEFECT...] with ID the machine number 1..247, e.g. 3:firmware=1.4 or 5:max_speed=800,load=+40</source>
         <translation>&quot;%1&quot;：請寫成 ID:DEFECT[,DEFECT...]，ID 為機號 1..247，例如 3:firmware=1.4 或 5:max_speed=800,load=+40</translation>
     </message>
@@ -11723,17 +11903,17 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>%1 不回報韌體版本</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefects.cpp" line="82"/>
+        <location filename="../sim/SimDefects.cpp" line="83"/>
         <source>alarm=%1: a %2 has no alarm codes; its protection is the stall stop: write alarm=stall@TIME</source>
         <translation>alarm=%1：%2 沒有警報代碼；其保護功能為堵轉停止：請寫成 alarm=stall@TIME</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefects.cpp" line="98"/>
+        <location filename="../sim/SimDefects.cpp" line="99"/>
         <source>alarm=%1: not an alarm of a %2; allowed: %3</source>
         <translation>alarm=%1：不是 %2 的警報；允許：%3</translation>
     </message>
     <message>
-        <location filename="../sim/SimDefects.cpp" line="109"/>
+        <location filename="../sim/SimDefects.cpp" line="110"/>
         <source>%1=%2: no writable parameter of a %3 has this name or address; e.g. %4</source>
         <translation>%1=%2：%3 沒有此名稱或位址的可寫入參數；例如 %4</translation>
     </message>
@@ -11785,6 +11965,8 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
   --parity N|E|O     line parity (N)
   --wire-timing      delay replies as a real line at --baud would
   --turnaround MS    device turnaround with --wire-timing (2)
+  --half-duplex      with --wire-timing: a request overlapping a reply on the line
+                     garbles both, one within 3.5 characters of a reply is lost
   --faults LIST      e.g. drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
   --seed N           seed of the fault injection (1)
   --defect ID:LIST   defects of drive ID (repeatable), LIST of:
@@ -11810,119 +11992,85 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 Prints &quot;pty: PATH&quot; (and &quot;tcp: HOST:PORT&quot;), then &quot;ready&quot;. Reads console commands
 from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </source>
-        <translation>用法：opentop-sim --devices SPEC [選項]
-在虛擬終端機上或以 Modbus TCP 閘道器形式模擬 Modbus RTU 驅動器。
-
-  --devices SPEC     裝置與機號，例如 dbu200@1,dbu400@150,dcpid@7
-  --pty [PATH]       在 pty 上提供服務 (預設)；PATH：同時建立此符號連結
-  --tcp HOST:PORT    提供 Modbus TCP 服務 (HOST 預設為 127.0.0.1，PORT 0：任意)
-  --baud N           用於線路時序與裝置設定的鮑率 (19200)
-  --parity N|E|O     線路同位元 (N)
-  --wire-timing      依實際線路在 --baud 下的速度延遲回應
-  --turnaround MS    搭配 --wire-timing 的裝置回轉時間 (2)
-  --faults LIST      例如 drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
-  --seed N           故障注入的亂數種子 (1)
-  --defect ID:LIST   驅動器 ID 的缺陷 (可重複指定)，LIST 可包含：
-                       firmware=MAJOR.MINOR  識別時回報此版本
-                       max_speed=N           馬達在 N 飽和 (DBU 為 r/min，
-                                             DC 為換相次數/s)，負載偏高
-                       stall                 馬達不轉動，負載偏高
-                       load=+N|-N|xF         負載率 (DC：電流 %) 偏移或縮放
-                       alarm=CODE@TIME       運轉 TIME 後發生警報，例如
-                                             0x07@1500ms、overload@2s (DC：stall@1s)
-                       nostick=PARAM         寫入有回應確認，但保留舊值
-                       nostore=PARAM         下次斷電重新上電後值遺失
-                     例如 --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
-  --motor LIST       DC 控制器的馬達與負載，例如 inertia=2e-4,load=0.05；
-                     supply (V)、resistance (ohm)、no_load (全責任週期時的 1/s)、
-                     commutations (每轉換相次數)、inertia (kg m2)、viscous
-                     (N m s/rad)、coulomb (N m)、load (N m)、gate (ms)、tacho (V s)
-  --quiet            不在 stderr 輸出訊框追蹤
-  --lang CODE        訊息的語言：en, zh_TW, zh_CN, ko, ja
-  --help             本說明
-  --version          程式版本
-
-輸出 &quot;pty: PATH&quot; (以及 &quot;tcp: HOST:PORT&quot;)，然後輸出 &quot;ready&quot;。從 stdin 讀取主控台
-指令 (輸入 help)。收到 SIGINT、SIGTERM 或 quit 時停止。
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="85"/>
+        <location filename="../sim/SimOptions.cpp" line="87"/>
         <source>--lang needs a language code such as ko</source>
         <translation>--lang 需要語言代碼，例如 ko</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="88"/>
+        <location filename="../sim/SimOptions.cpp" line="90"/>
         <source>--devices needs a device list such as dbu200@1,dcpid@7</source>
         <translation>--devices 需要裝置清單，例如 dbu200@1,dcpid@7</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="97"/>
+        <location filename="../sim/SimOptions.cpp" line="99"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:5020</source>
         <translation>--tcp 需要 HOST:PORT，例如 127.0.0.1:5020</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="103"/>
+        <location filename="../sim/SimOptions.cpp" line="105"/>
         <source>--tcp needs HOST:PORT with PORT 0..65535, got &apos;%1&apos;</source>
         <translation>--tcp 需要 HOST:PORT，PORT 為 0..65535，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="115"/>
+        <location filename="../sim/SimOptions.cpp" line="117"/>
         <source>--baud must be one of %1, got &apos;%2&apos;</source>
         <translation>--baud 必須是 %1 其中之一，收到 &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="122"/>
+        <location filename="../sim/SimOptions.cpp" line="124"/>
         <source>--parity must be N, E or O, got &apos;%1&apos;</source>
         <translation>--parity 必須為 N、E 或 O，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="130"/>
+        <location filename="../sim/SimOptions.cpp" line="134"/>
         <source>--turnaround must be 0..1000 ms, got &apos;%1&apos;</source>
         <translation>--turnaround 必須為 0..1000 ms，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="134"/>
+        <location filename="../sim/SimOptions.cpp" line="138"/>
         <source>--faults needs a list such as drop=0.02,crc=0.01</source>
         <translation>--faults 需要清單，例如 drop=0.02,crc=0.01</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="138"/>
+        <location filename="../sim/SimOptions.cpp" line="142"/>
         <source>--faults: %1</source>
         <translation>--faults：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="144"/>
+        <location filename="../sim/SimOptions.cpp" line="148"/>
         <source>--seed must be a whole number 0..4294967295, got &apos;%1&apos;</source>
         <translation>--seed 必須是 0..4294967295 的整數，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="148"/>
+        <location filename="../sim/SimOptions.cpp" line="152"/>
         <source>--defect needs ID:DEFECT[,DEFECT...], e.g. 3:firmware=1.4; DEFECT: %1</source>
         <translation>--defect 需要 ID:DEFECT[,DEFECT...]，例如 3:firmware=1.4；DEFECT：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="155"/>
+        <location filename="../sim/SimOptions.cpp" line="159"/>
         <source>--defect: %1</source>
         <translation>--defect：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="159"/>
+        <location filename="../sim/SimOptions.cpp" line="163"/>
         <source>--motor needs a list such as inertia=2e-4,load=0.05</source>
         <translation>--motor 需要清單，例如 inertia=2e-4,load=0.05</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="163"/>
+        <location filename="../sim/SimOptions.cpp" line="167"/>
         <source>--motor: %1</source>
         <translation>--motor：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="169"/>
-        <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
-        <translation>未知引數 &apos;%1&apos;；選項：--devices, --pty, --tcp, --baud, --parity, --wire-timing, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</translation>
+        <location filename="../sim/SimOptions.cpp" line="172"/>
+        <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="177"/>
+        <location filename="../sim/SimOptions.cpp" line="181"/>
         <source>--devices SPEC is required, e.g. --devices dbu200@1,dcpid@7</source>
         <translation>必須指定 --devices SPEC，例如 --devices dbu200@1,dcpid@7</translation>
     </message>
@@ -12905,27 +13053,37 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>不允許位元組逾時 %1 ms：請使用 1–10000 ms，或設為 0 依鮑率計算。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="47"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="45"/>
+        <source>RS-485 mode %1 is not supported: use off, auto, kernel or rts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/ConnectionSettings.cpp" line="50"/>
+        <source>RTS delay %1 µs is not allowed: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/ConnectionSettings.cpp" line="59"/>
         <source>No host given: enter the gateway&apos;s address, e.g. 192.168.1.10.</source>
         <translation>未指定主機：請輸入閘道器位址，例如 192.168.1.10。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="51"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="63"/>
         <source>TCP port %1 is not allowed: use 1–65535 (Modbus TCP uses 502).</source>
         <translation>不允許 TCP 連接埠 %1：請使用 1–65535 (Modbus TCP 使用 502)。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="58"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="70"/>
         <source>No simulated devices given: use a list such as dbu200@1,dcpid@7.</source>
         <translation>未指定模擬裝置：請使用清單，例如 dbu200@1,dcpid@7。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="64"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="76"/>
         <source>Timeout %1 ms is not allowed: use 10–10000 ms.</source>
         <translation>不允許逾時 %1 ms：請使用 10–10000 ms。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="68"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="80"/>
         <source>%1 retries are not allowed: use 0–10.</source>
         <translation>不允許重試 %1 次：請使用 0–10。</translation>
     </message>
@@ -12970,75 +13128,75 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>物件 0x%1</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="51"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="52"/>
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="127"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="309"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="129"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="325"/>
         <source>%1 is not open</source>
         <translation>%1 未開啟</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="144"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="151"/>
         <source>send failed</source>
         <translation>傳送失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="168"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="177"/>
         <source>interrupted while waiting</source>
         <translation>等待中被中斷</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="172"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="181"/>
         <location filename="../transport/MockBackend.cpp" line="100"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 內無回應</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="201"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="211"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>之後又收到另一個回應：此回應可能是對先前請求的回應</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="270"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="307"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>回應來自從站 %1，預期為 %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="281"/>
-        <location filename="../transport/RtuBackend.cpp" line="146"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="318"/>
+        <location filename="../transport/RtuBackend.cpp" line="160"/>
         <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>回應不完整</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="286"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="323"/>
         <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 不符</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="293"/>
-        <location filename="../transport/RtuBackend.cpp" line="153"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="330"/>
+        <location filename="../transport/RtuBackend.cpp" line="167"/>
         <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>接收失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="363"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="404"/>
         <source> (connection closed)</source>
         <translation> (連線已關閉)</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="384"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="426"/>
         <source>stale bytes discarded before sending</source>
         <translation>傳送前已捨棄殘留位元組</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="466"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="510"/>
         <source>late bytes discarded after an error</source>
         <translation>錯誤後已捨棄延遲到達的位元組</translation>
     </message>
@@ -13063,18 +13221,18 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>回傳 %1 ×%2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="192"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="211"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="201"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="220"/>
         <source>cancelled before sending</source>
         <translation>傳送前已取消</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="242"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="254"/>
         <source>cannot open %1</source>
         <translation>無法開啟 %1</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="285"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="301"/>
         <source>client closed</source>
         <translation>用戶端已關閉</translation>
     </message>
@@ -13319,7 +13477,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>%1 正被 %2 (PID %3) 使用；請先關閉該程式。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="83"/>
+        <location filename="../transport/RtuBackend.cpp" line="97"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -13328,17 +13486,17 @@ then log out and in again (the group applies to new sessions only).</source>
 然後登出再重新登入 (群組設定僅對新的登入工作階段生效)。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="89"/>
+        <location filename="../transport/RtuBackend.cpp" line="103"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> (裝置可能不支援此同位元；pty 需使用 N)</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="124"/>
+        <location filename="../transport/RtuBackend.cpp" line="138"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>回應宣告 %1 位元組，超過 RTU 訊框的容量</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="145"/>
+        <location filename="../transport/RtuBackend.cpp" line="159"/>
         <source>no reply</source>
         <translation>無回應</translation>
     </message>
@@ -13416,6 +13574,156 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../transport/TrafficEntry.cpp" line="37"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="13"/>
+        <source>%1 ms</source>
+        <translation type="unfinished">%1 ms</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="14"/>
+        <source>%1 µs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="31"/>
+        <source>RTS high while sending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="32"/>
+        <source>RTS low while sending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="35"/>
+        <source>, %1 before and after</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="37"/>
+        <source>, %1 before, %2 after</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="43"/>
+        <source>RS-485: switched by the adapter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="45"/>
+        <source>RS-485: kernel mode left on by the driver (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="49"/>
+        <source>RS-485: kernel (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="52"/>
+        <source>RS-485: RTS from the program (%1; kernel mode refused: %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="56"/>
+        <source>RS-485: RTS from the program (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="61"/>
+        <source>RS-485: not available (kernel mode refused: %1; RTS not switchable: %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="66"/>
+        <source>RS-485: RTS not switchable on this port (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="69"/>
+        <source>RS-485: kernel mode refused by the driver (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="78"/>
+        <source>latency timer %1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="86"/>
+        <source>low latency: not a UART, no adapter latency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="90"/>
+        <source>low latency: on (but %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="92"/>
+        <source>low latency: on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="95"/>
+        <source>low latency: not offered by the driver (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="99"/>
+        <source>low latency: not offered by the driver (USB adapter: up to %1 ms assumed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="103"/>
+        <source>low latency: not offered by the driver</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="107"/>
+        <source>low latency: off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="108"/>
+        <source>low latency: off (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="132"/>
+        <source>low latency is off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="134"/>
+        <source>the driver took low latency but kept its latency timer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="137"/>
+        <source>the driver did not take low latency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="140"/>
+        <source>see docs/hardware.md, or use an adapter whose driver offers low latency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="144"/>
+        <source>as root: echo 1 &gt; %1, or the udev rule in docs/hardware.md</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="148"/>
+        <source>The adapter holds received bytes for up to %1 ms before passing them on (%2). Fix: %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineSetup.cpp" line="106"/>
+        <source>the driver left it off</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -13872,12 +14180,12 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>電流 (A)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="61"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="65"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="61"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="65"/>
         <source>Speed (%1)</source>
         <translation>速度 (%1)</translation>
     </message>
@@ -14241,127 +14549,127 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningRunner</name>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="183"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="190"/>
         <source>a tuning test is already running</source>
         <translation>已有調諧測試正在進行</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="191"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="198"/>
         <source>Reading the drive&apos;s settings</source>
         <translation>正在讀取驅動器設定</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="199"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="206"/>
         <source>could not read the drive&apos;s settings: %1</source>
         <translation>無法讀取驅動器設定：%1</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="224"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="231"/>
         <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
         <translation>驅動器不在閉迴路速度模式：請先將 %1 (%2) 設為 %3</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="226"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="233"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="241"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="248"/>
         <source>Setting the communication-loss braking time to %1 s</source>
         <translation>正在將通訊中斷停止時間設為 %1 s</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="265"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="272"/>
         <source>the drive stopped answering: %1</source>
         <translation>驅動器停止回應：%1</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="283"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="290"/>
         <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
         <translation>速度 %1 %2 超過測試限值 %3 %2：已立即停止</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="290"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="297"/>
         <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
         <translation>電流 %1 A 超過測試限值 %2 A：已立即停止</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="296"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="303"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="356"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="364"/>
         <source>Stopping the motor</source>
         <translation>正在停止馬達</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="362"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="370"/>
         <source>motor stopped (confirmed)</source>
         <translation>馬達已停止 (已確認)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="363"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="371"/>
         <source>the motor could not be confirmed stopped: check it</source>
         <translation>無法確認馬達已停止：請檢查馬達</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="398"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="406"/>
         <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
         <translation>步階測試是從一個速度正轉到另一個速度：起始與目標速度必須不同，且須為 0 以上</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="405"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="413"/>
         <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
         <translation>%1 %2 超過測試的速度限值 %3 %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="413"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="421"/>
         <source>Running to %1 %2</source>
         <translation>正在運轉至 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="449"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="457"/>
         <source>Step to %1 %2</source>
         <translation>步階至 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="477"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="484"/>
         <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
         <translation>運轉速度必須大於 0 且小於測試的速度限值 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="484"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="491"/>
         <source>the relay amplitude must be 0–50 % of full output</source>
         <translation>繼電器振幅必須為最大輸出的 0–50 %</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="487"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="494"/>
         <source>Open loop: finding the output for %1 %2</source>
         <translation>開迴路：正在尋找 %1 %2 所需的輸出</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="536"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="542"/>
         <source>the motor did not turn at %1 % output</source>
         <translation>輸出 %1 % 時馬達未轉動</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="572"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="578"/>
         <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
         <translation>運轉速度需要 %1 % 的輸出：上下沒有 ±%2 % 的裕度</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="577"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="583"/>
         <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
         <translation>正在 %1 %2 附近進行繼電器測試 (輸出 %3 % ± %4 %)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="611"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="616"/>
         <source>no steady oscillation within %1 s: %2</source>
         <translation>%1 s 內未出現穩定振盪：%2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="613"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="618"/>
         <source>try a larger amplitude</source>
         <translation>請嘗試加大振幅</translation>
     </message>
@@ -14369,59 +14677,59 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningRunsView</name>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="36"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="37"/>
         <source>Save CSV…</source>
         <translation>儲存 CSV…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="37"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="38"/>
         <source>Save PNG…</source>
         <translation>儲存 PNG…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="42"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="43"/>
         <source>Saves the selected run: its samples, gains and metrics</source>
         <translation>儲存選取的測試：其取樣資料、增益與指標</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="43"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
         <source>Saves the chart as it is shown</source>
         <translation>依目前的顯示儲存圖表</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="45"/>
         <source>solid: speed · dotted: command · dash-dot: current (right axis) · dashed: predicted speed</source>
         <translation>實線：速度 · 點線：指令 · 一點鏈線：電流 (右軸) · 虛線：預測速度</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="161"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="169"/>
         <source>no run to save</source>
         <translation>沒有可儲存的測試</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="174"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="178"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="182"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
         <source>Save run as CSV</source>
         <translation>將測試儲存為 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="175"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="183"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="183"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="191"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="194"/>
         <source>Save chart as PNG</source>
         <translation>將圖表儲存為 PNG</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="184"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="192"/>
         <source>PNG images (*.png)</source>
         <translation>PNG 圖片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="194"/>
         <source>Could not write %1.</source>
         <translation>無法寫入 %1。</translation>
     </message>
@@ -14596,104 +14904,104 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ValueCodec</name>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="202"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="201"/>
         <source>depends on %1, which is not known yet</source>
         <translation>取決於尚未得知的 %1</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="204"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="203"/>
         <source>text of up to %1 characters</source>
         <translation>最多 %1 個字元的文字</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="178"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="214"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="177"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="213"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="193"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="192"/>
         <source>%1: %2 is outside the recommended range %3; it is allowed and will be written</source>
         <translation>%1：%2 超出建議範圍 %3；此值仍允許，將會寫入</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="222"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="221"/>
         <source>, or </source>
         <translation>，或 </translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="223"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="222"/>
         <source>any value</source>
         <translation>任意值</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="239"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="238"/>
         <source> (the variant is not known, so the value must suit %1; name the variant to use its own range)</source>
         <translation> (機型未知，因此值必須適用於 %1；指定機型即可使用其範圍)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="249"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="248"/>
         <source>%1: the allowed values depend on %2, which has not been read</source>
         <translation>%1：允許值取決於尚未讀取的 %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="254"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="253"/>
         <source>%1: value out of the register&apos;s range; allowed: %2</source>
         <translation>%1：值超出暫存器範圍；允許：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="266"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="265"/>
         <source>%1: %2 is not allowed; allowed: %3</source>
         <translation>%1：不允許 %2；允許：%3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="278"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="277"/>
         <source>%1: expected %2 registers, got %3</source>
         <translation>%1：預期 %2 個暫存器，收到 %3 個</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="316"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="315"/>
         <source>%1 is text, not a number</source>
         <translation>%1 是文字，不是數字</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="329"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="328"/>
         <source>%1: %2 is finer than the step of %3 %4; allowed: %5</source>
         <translation>%1：%2 比最小單位 %3 %4 更細；允許：%5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="362"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="361"/>
         <source>%1: at most %2 characters</source>
         <translation>%1：最多 %2 個字元</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="368"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="367"/>
         <source>%1: only printable ASCII characters are allowed</source>
         <translation>%1：只允許可列印的 ASCII 字元</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="380"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="379"/>
         <source>%1: no value given; allowed: %2</source>
         <translation>%1：未指定值；允許：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="420"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="419"/>
         <source>%1: &quot;%2&quot; is only available when %3 is %4; allowed now: %5</source>
         <translation>%1：&quot;%2&quot; 僅在 %3 為 %4 時可用；目前允許：%5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="433"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="453"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="432"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="452"/>
         <source>%1: &quot;%2&quot; is not a valid value; allowed: %3</source>
         <translation>%1：&quot;%2&quot; 不是有效值；允許：%3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="479"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="478"/>
         <source>(invalid)</source>
         <translation>(無效)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="490"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="489"/>
         <source>unknown code %1</source>
         <translation>未知代碼 %1</translation>
     </message>
