@@ -80,7 +80,7 @@
     <message>
         <location filename="../app/gui/StartupProbe.cpp" line="23"/>
         <source>Print how long the start took once the window shows the bus&apos;s drives, then quit (for measurements).</source>
-        <translation type="unfinished"></translation>
+        <translation>ウィンドウにバスのドライバが表示された時点で起動にかかった時間を出力し、終了します（測定用）。</translation>
     </message>
 </context>
 <context>
@@ -2481,7 +2481,25 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>
+接続（ドライバと通信するすべてのコマンド）:
+  --port PATH | --tcp HOST:PORT | --sim SPEC
+  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
+  既定値はファミリによります: dbu 19200 8N1、dcpid 9600 8E1。--timeout 200、
+  --retries 3（回線にノイズが多い間は 2 回追加: 最近の要求で再送が必要だった場合）。
+  シリアルポートのみ: --rs485 off|auto|kernel|rts（RS-485 の送受信方向を
+  切り替えるもの。off: アダプタ）、--rts-polarity high|low、--rts-delay US、
+  --low-latency on|off（既定 on）。scan でシリアルドライバが受け付けた設定を表示します。
+出力: --json  --trace  --variant VARIANT  --lang CODE
+グループ: --bus-drives LIST（または OPENTOP_BUS_DRIVES）: 書込みやコマンドの前に
+通信グループを確認するドライバ
+
+終了コード: 0 成功、1 通信失敗、2 使い方の誤り、3 不正な値またはファイル
+（何も書き込まない）、4 照合不一致または停止しなかったドライバあり、
+130 Ctrl-C、SIGTERM、SIGHUP による中断（実行済みの内容を報告）。
+
+&quot;%1 help COMMAND&quot; でコマンドのオプションを表示します。
+</translation>
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="167"/>
@@ -2526,7 +2544,7 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
     <message>
         <location filename="../cli/CliContext.cpp" line="102"/>
         <source>serial line: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>シリアル回線: %1</translation>
     </message>
     <message>
         <location filename="../cli/CliContext.cpp" line="126"/>
@@ -3165,37 +3183,37 @@ then log out and in again (the group applies to new sessions only).</source>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="30"/>
         <source>--rs485 %1: use off (the adapter switches direction itself), auto, kernel or rts</source>
-        <translation type="unfinished"></translation>
+        <translation>--rs485 %1: off（アダプタ自身が方向を切替）、auto、kernel、rts のいずれかを指定してください</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="36"/>
         <source>--rts-polarity %1: use high or low (the RTS level while sending)</source>
-        <translation type="unfinished"></translation>
+        <translation>--rts-polarity %1: high または low を指定してください（送信中の RTS レベル）</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="44"/>
         <source>--rts-delay %1: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own delay)</source>
-        <translation type="unfinished"></translation>
+        <translation>--rts-delay %1: 0–%2 µs を指定してください（0: シリアルドライバまたは libmodbus 自身の遅延）</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="51"/>
         <source>--low-latency %1: use on or off</source>
-        <translation type="unfinished"></translation>
+        <translation>--low-latency %1: on または off を指定してください</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="61"/>
         <source>--%1 applies to a serial port (--port), not to a Modbus TCP gateway (--tcp)</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 はシリアルポート (--port) 用です。Modbus TCP ゲートウェイ (--tcp) には適用されません</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="65"/>
         <source>--%1 applies to a serial port (--port), not to a simulated bus</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 はシリアルポート (--port) 用です。シミュレーションバスには適用されません</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="66"/>
         <source>--%1 applies to a serial port only: give it with --port PATH</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 はシリアルポート専用です: --port PATH と一緒に指定してください</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="74"/>
@@ -3286,42 +3304,42 @@ then log out and in again (the group applies to new sessions only).</source>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="93"/>
         <source>Who switches the RS-485 direction (serial port only): off (default: the adapter itself, as USB–RS-485 adapters do), kernel (the driver&apos;s RS-485 mode), rts (RTS from the program) or auto (kernel where the driver has it, else rts).</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485 の送受信方向を切り替えるもの（シリアルポートのみ）: off（既定: USB–RS-485 アダプタのようにアダプタ自身が切替）、kernel（シリアルドライバの RS-485 モード）、rts（プログラムによる RTS 制御）、auto（シリアルドライバが対応していれば kernel、なければ rts）。</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="96"/>
         <source>MODE</source>
-        <translation type="unfinished"></translation>
+        <translation>MODE</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="98"/>
         <source>RTS level while sending with --rs485 kernel, rts or auto: high (default) or low.</source>
-        <translation type="unfinished"></translation>
+        <translation>--rs485 kernel、rts、auto 使用時の送信中の RTS レベル: high（既定）または low。</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="99"/>
         <source>high|low</source>
-        <translation type="unfinished"></translation>
+        <translation>high|low</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="101"/>
         <source>RTS delay before and after sending in µs, 0–100000 (default 0: the driver&apos;s, or libmodbus&apos; one character time; the kernel rounds up to whole ms).</source>
-        <translation type="unfinished"></translation>
+        <translation>送信前後の RTS 遅延 (µs)、0–100000（既定 0: シリアルドライバの遅延、または libmodbus の 1 文字時間。カーネルは ms 単位に切り上げます）。</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="103"/>
         <source>US</source>
-        <translation type="unfinished"></translation>
+        <translation>US</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="105"/>
         <source>Ask the serial driver to pass received bytes on at once (USB adapters otherwise hold them up to 16 ms): on (default) or off.</source>
-        <translation type="unfinished"></translation>
+        <translation>受信したバイトをすぐに渡すようシリアルドライバに要求します（要求しないと USB アダプタは最大 16 ms 保持）: on（既定）または off。</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="107"/>
         <source>on|off</source>
-        <translation type="unfinished"></translation>
+        <translation>on|off</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="151"/>
@@ -3395,12 +3413,12 @@ then log out and in again (the group applies to new sessions only).</source>
     <message>
         <location filename="../ui/main/ConnectionStatus.cpp" line="54"/>
         <source>Connected: %1</source>
-        <translation type="unfinished">接続済み: %1</translation>
+        <translation>接続済み: %1</translation>
     </message>
     <message>
         <location filename="../ui/main/ConnectionStatus.cpp" line="56"/>
         <source> — %1</source>
-        <translation type="unfinished"> — %1</translation>
+        <translation> — %1</translation>
     </message>
 </context>
 <context>
@@ -11169,12 +11187,12 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../cli/ScanCommand.cpp" line="271"/>
         <source>Serial line: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>シリアル回線: %1</translation>
     </message>
     <message>
         <location filename="../cli/ScanCommand.cpp" line="274"/>
         <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
-        <translation type="unfinished"></translation>
+        <translation>警告: %1 このため、スキャンは局番ごとに最大 %2 ms 長く待ちます。</translation>
     </message>
     <message>
         <location filename="../cli/ScanCommand.cpp" line="303"/>
@@ -11257,82 +11275,82 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="29"/>
         <source>Adapter switches itself</source>
-        <translation type="unfinished"></translation>
+        <translation>アダプタが自動切替</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="30"/>
         <source>Auto (kernel, else RTS)</source>
-        <translation type="unfinished"></translation>
+        <translation>自動（カーネル、不可なら RTS）</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="31"/>
         <source>Kernel RS-485 mode</source>
-        <translation type="unfinished"></translation>
+        <translation>カーネル RS-485 モード</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="32"/>
         <source>RTS from the program</source>
-        <translation type="unfinished"></translation>
+        <translation>プログラムによる RTS 制御</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="34"/>
         <source>Who switches the RS-485 transceiver between sending and receiving. USB–RS-485 adapters do it themselves; on-board RS-485 ports need the driver&apos;s RS-485 mode (kernel) or RTS switched by the program. The status bar says what the driver accepted.</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485 トランシーバの送信と受信を切り替えるもの。USB–RS-485 アダプタは自身で切り替えます。オンボードの RS-485 ポートでは、シリアルドライバの RS-485 モード（カーネル）か、プログラムによる RTS 切替が必要です。シリアルドライバが受け付けた設定はステータスバーに表示されます。</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="38"/>
         <source>RS-485 d&amp;irection:</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485 送受信切替(&amp;I):</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="43"/>
         <source>high while sending</source>
-        <translation type="unfinished"></translation>
+        <translation>送信中は High</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="44"/>
         <source>low while sending</source>
-        <translation type="unfinished"></translation>
+        <translation>送信中は Low</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="45"/>
         <source>The RTS level that enables the transceiver&apos;s driver</source>
-        <translation type="unfinished"></translation>
+        <translation>トランシーバの送信部を有効にする RTS レベル</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="50"/>
         <source>delay </source>
-        <translation type="unfinished"></translation>
+        <translation>遅延 </translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="51"/>
         <source> µs</source>
-        <translation type="unfinished"></translation>
+        <translation> µs</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="52"/>
         <source>default delay</source>
-        <translation type="unfinished"></translation>
+        <translation>既定の遅延</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="53"/>
         <source>Before and after sending. Default: the driver&apos;s own, or one character time from the program; the kernel rounds up to whole ms.</source>
-        <translation type="unfinished"></translation>
+        <translation>送信の前後に入れる遅延。既定: シリアルドライバ自身の遅延、またはプログラムによる 1 文字時間。カーネルは ms 単位に切り上げます。</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="58"/>
         <source>RTS le&amp;vel:</source>
-        <translation type="unfinished"></translation>
+        <translation>RTS レベル(&amp;V):</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="62"/>
         <source>&amp;Low latency (no 16 ms hold-back in USB adapters)</source>
-        <translation type="unfinished"></translation>
+        <translation>低レイテンシ（USB アダプタの 16 ms 保持なし）(&amp;L)</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="65"/>
         <source>Asks the driver to pass received bytes on at once. Many USB–serial chips otherwise hold them for up to 16 ms, which slows scans and polling.</source>
-        <translation type="unfinished"></translation>
+        <translation>受信したバイトをすぐに渡すようシリアルドライバに要求します。要求しないと、多くの USB–シリアル変換チップは最大 16 ms 保持するため、スキャンとポーリングが遅くなります。</translation>
     </message>
 </context>
 <context>
@@ -11817,7 +11835,7 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="45"/>
         <source>firmware=MAJOR.MINOR (e.g. firmware=1.4), max_speed=N (e.g. max_speed=800), stall, load=+N, load=-N or load=xF (e.g. load=+40, load=x1.5), alarm=CODE@TIME (e.g. alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (a parameter name or register address, e.g. nostick=spno2.speed, nostore=0x0081), turnaround=MS (e.g. turnaround=14), clear</source>
-        <translation type="unfinished"></translation>
+        <translation>firmware=MAJOR.MINOR（例: firmware=1.4）、max_speed=N（例: max_speed=800）、stall、load=+N、load=-N または load=xF（例: load=+40、load=x1.5）、alarm=CODE@TIME（例: alarm=0x07@1500ms、alarm=overload@2s。DC: alarm=stall@1s）、nostick=PARAM、nostore=PARAM（パラメータ名またはレジスタアドレス。例: nostick=spno2.speed、nostore=0x0081）、turnaround=MS（例: turnaround=14）、clear</translation>
     </message>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="123"/>
@@ -11872,7 +11890,7 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="189"/>
         <source>turnaround=%1: write the answer delay in ms, 0..1000, e.g. turnaround=14</source>
-        <translation type="unfinished"></translation>
+        <translation>turnaround=%1: 応答遅延を ms で 0..1000 の範囲で記述してください。例: turnaround=14</translation>
     </message>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="194"/>
@@ -11992,7 +12010,43 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 Prints &quot;pty: PATH&quot; (and &quot;tcp: HOST:PORT&quot;), then &quot;ready&quot;. Reads console commands
 from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>使い方: opentop-sim --devices SPEC [options]
+疑似端末上、または Modbus TCP ゲートウェイとして Modbus RTU ドライバをシミュレートします。
+
+  --devices SPEC     デバイスと局番。例: dbu200@1,dbu400@150,dcpid@7
+  --pty [PATH]       pty で提供（既定）。PATH: このシンボリックリンクも作成
+  --tcp HOST:PORT    Modbus TCP で提供（HOST の既定は 127.0.0.1、PORT 0: 任意）
+  --baud N           回線タイミングとデバイス設定の通信速度 (19200)
+  --parity N|E|O     回線のパリティ (N)
+  --wire-timing      --baud の実回線と同様に応答を遅延させる
+  --turnaround MS    --wire-timing 時のデバイスのターンアラウンド (2)
+  --half-duplex      --wire-timing と併用: 回線上で要求が応答と重なると
+                     両方が化け、応答から 3.5 文字以内の要求は失われる
+  --faults LIST      例: drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
+  --seed N           フォールト注入のシード (1)
+  --defect ID:LIST   ドライバ ID の不具合（複数指定可）。LIST の要素:
+                       firmware=MAJOR.MINOR  識別時にこのバージョンを通知
+                       max_speed=N           モータは N で飽和 (DBU r/min、
+                                             DC 転流回数/s)、負荷大
+                       stall                 モータが回転しない、負荷大
+                       load=+N|-N|xF         負荷率 (DC: 電流 %) にオフセットまたは倍率
+                       alarm=CODE@TIME       運転して TIME 後にアラーム。例:
+                                             0x07@1500ms、overload@2s (DC: stall@1s)
+                       nostick=PARAM         書込みに応答するが、旧値のまま
+                       nostore=PARAM         次の電源再投入で値が消える
+                     例: --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
+  --motor LIST       DC コントローラのモータと負荷。例: inertia=2e-4,load=0.05。
+                     supply (V)、resistance (ohm)、no_load（フルデューティ時の 1/s）、
+                     commutations（1 回転あたりの転流回数）、inertia (kg m2)、viscous
+                     (N m s/rad)、coulomb (N m)、load (N m)、gate (ms)、tacho (V s)
+  --quiet            stderr にフレームトレースを出力しない
+  --lang CODE        メッセージの言語: en, zh_TW, zh_CN, ko, ja
+  --help             このテキスト
+  --version          プログラムのバージョン
+
+&quot;pty: PATH&quot;（および &quot;tcp: HOST:PORT&quot;）を出力した後、&quot;ready&quot; を出力します。コンソールコマンドを
+標準入力から読み取ります (help と入力)。SIGINT、SIGTERM、quit で停止します。
+</translation>
     </message>
     <message>
         <location filename="../sim/SimOptions.cpp" line="87"/>
@@ -12067,7 +12121,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     <message>
         <location filename="../sim/SimOptions.cpp" line="172"/>
         <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
-        <translation type="unfinished"></translation>
+        <translation>不明な引数 &apos;%1&apos;。オプション: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</translation>
     </message>
     <message>
         <location filename="../sim/SimOptions.cpp" line="181"/>
@@ -13055,12 +13109,12 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     <message>
         <location filename="../transport/ConnectionSettings.cpp" line="45"/>
         <source>RS-485 mode %1 is not supported: use off, auto, kernel or rts.</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485 モード %1 はサポートされていません: off、auto、kernel、rts のいずれかを使用してください。</translation>
     </message>
     <message>
         <location filename="../transport/ConnectionSettings.cpp" line="50"/>
         <source>RTS delay %1 µs is not allowed: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own).</source>
-        <translation type="unfinished"></translation>
+        <translation>RTS 遅延 %1 µs は使用できません: 0–%2 µs を使用してください（0: シリアルドライバまたは libmodbus 自身の遅延）。</translation>
     </message>
     <message>
         <location filename="../transport/ConnectionSettings.cpp" line="59"/>
@@ -13578,152 +13632,152 @@ then log out and in again (the group applies to new sessions only).</source>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="13"/>
         <source>%1 ms</source>
-        <translation type="unfinished">%1 ms</translation>
+        <translation>%1 ms</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="14"/>
         <source>%1 µs</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 µs</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="31"/>
         <source>RTS high while sending</source>
-        <translation type="unfinished"></translation>
+        <translation>送信中 RTS High</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="32"/>
         <source>RTS low while sending</source>
-        <translation type="unfinished"></translation>
+        <translation>送信中 RTS Low</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="35"/>
         <source>, %1 before and after</source>
-        <translation type="unfinished"></translation>
+        <translation>、送信前後 %1</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="37"/>
         <source>, %1 before, %2 after</source>
-        <translation type="unfinished"></translation>
+        <translation>、送信前 %1、送信後 %2</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="43"/>
         <source>RS-485: switched by the adapter</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485: アダプタが切替</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="45"/>
         <source>RS-485: kernel mode left on by the driver (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485: シリアルドライバがカーネルモードをオンのまま維持（%1）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="49"/>
         <source>RS-485: kernel (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485: カーネル（%1）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="52"/>
         <source>RS-485: RTS from the program (%1; kernel mode refused: %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485: プログラムによる RTS 制御（%1。カーネルモードは拒否: %2）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="56"/>
         <source>RS-485: RTS from the program (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485: プログラムによる RTS 制御（%1）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="61"/>
         <source>RS-485: not available (kernel mode refused: %1; RTS not switchable: %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485: 使用不可（カーネルモードは拒否: %1。RTS は切替不可: %2）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="66"/>
         <source>RS-485: RTS not switchable on this port (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485: このポートでは RTS を切替不可（%1）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="69"/>
         <source>RS-485: kernel mode refused by the driver (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485: シリアルドライバがカーネルモードを拒否（%1）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="78"/>
         <source>latency timer %1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>レイテンシタイマ %1 ms</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="86"/>
         <source>low latency: not a UART, no adapter latency</source>
-        <translation type="unfinished"></translation>
+        <translation>低レイテンシ: UART ではない、アダプタ遅延なし</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="90"/>
         <source>low latency: on (but %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>低レイテンシ: オン（ただし %1）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="92"/>
         <source>low latency: on</source>
-        <translation type="unfinished"></translation>
+        <translation>低レイテンシ: オン</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="95"/>
         <source>low latency: not offered by the driver (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>低レイテンシ: シリアルドライバが非対応（%1）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="99"/>
         <source>low latency: not offered by the driver (USB adapter: up to %1 ms assumed)</source>
-        <translation type="unfinished"></translation>
+        <translation>低レイテンシ: シリアルドライバが非対応（USB アダプタ: 最大 %1 ms と想定）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="103"/>
         <source>low latency: not offered by the driver</source>
-        <translation type="unfinished"></translation>
+        <translation>低レイテンシ: シリアルドライバが非対応</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="107"/>
         <source>low latency: off</source>
-        <translation type="unfinished"></translation>
+        <translation>低レイテンシ: オフ</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="108"/>
         <source>low latency: off (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>低レイテンシ: オフ（%1）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="132"/>
         <source>low latency is off</source>
-        <translation type="unfinished"></translation>
+        <translation>低レイテンシがオフ</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="134"/>
         <source>the driver took low latency but kept its latency timer</source>
-        <translation type="unfinished"></translation>
+        <translation>シリアルドライバは低レイテンシを受け付けたが、レイテンシタイマはそのまま</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="137"/>
         <source>the driver did not take low latency</source>
-        <translation type="unfinished"></translation>
+        <translation>シリアルドライバが低レイテンシを受け付けなかった</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="140"/>
         <source>see docs/hardware.md, or use an adapter whose driver offers low latency</source>
-        <translation type="unfinished"></translation>
+        <translation>docs/hardware.md を参照するか、シリアルドライバが低レイテンシに対応したアダプタを使用してください</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="144"/>
         <source>as root: echo 1 &gt; %1, or the udev rule in docs/hardware.md</source>
-        <translation type="unfinished"></translation>
+        <translation>root で実行: echo 1 &gt; %1、または docs/hardware.md の udev ルールを使用</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="148"/>
         <source>The adapter holds received bytes for up to %1 ms before passing them on (%2). Fix: %3.</source>
-        <translation type="unfinished"></translation>
+        <translation>アダプタは受信したバイトを最大 %1 ms 保持してから渡します（%2）。対処: %3。</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineSetup.cpp" line="106"/>
         <source>the driver left it off</source>
-        <translation type="unfinished"></translation>
+        <translation>シリアルドライバがオフのままにした</translation>
     </message>
 </context>
 <context>

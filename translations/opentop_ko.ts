@@ -80,7 +80,7 @@
     <message>
         <location filename="../app/gui/StartupProbe.cpp" line="23"/>
         <source>Print how long the start took once the window shows the bus&apos;s drives, then quit (for measurements).</source>
-        <translation type="unfinished"></translation>
+        <translation>창에 버스의 드라이버가 표시되면 시작에 걸린 시간을 출력하고 종료합니다(측정용).</translation>
     </message>
 </context>
 <context>
@@ -2481,7 +2481,25 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>
+연결 (드라이버와 통신하는 모든 명령):
+  --port PATH | --tcp HOST:PORT | --sim SPEC
+  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
+  기본값은 제품군에 따름: dbu 19200 8N1, dcpid 9600 8E1; --timeout 200,
+  --retries 3 (라인에 노이즈가 있으면(최근 재시도가 필요했던 요청이 있으면) 2회 추가).
+  시리얼 포트 전용: --rs485 off|auto|kernel|rts (RS-485 송수신 방향을
+  누가 전환하는지; off: 어댑터), --rts-polarity high|low, --rts-delay US,
+  --low-latency on|off (기본값 on). scan이 시리얼 드라이버가 받아들인 설정을 표시합니다.
+출력: --json  --trace  --variant VARIANT  --lang CODE
+그룹: --bus-drives LIST (또는 OPENTOP_BUS_DRIVES): 쓰기나 명령 전에 통신 그룹을
+확인할 드라이버
+
+종료 코드: 0 성공, 1 통신 실패, 2 사용법 오류, 3 잘못된 값 또는 파일
+(아무것도 쓰지 않음), 4 검증 불일치 또는 정지하지 않은 드라이버 있음,
+130 Ctrl-C, SIGTERM 또는 SIGHUP으로 중단됨(수행한 작업은 보고함).
+
+&quot;%1 help COMMAND&quot;로 명령의 옵션을 볼 수 있습니다.
+</translation>
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="167"/>
@@ -2526,7 +2544,7 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
     <message>
         <location filename="../cli/CliContext.cpp" line="102"/>
         <source>serial line: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>시리얼 라인: %1</translation>
     </message>
     <message>
         <location filename="../cli/CliContext.cpp" line="126"/>
@@ -3165,37 +3183,37 @@ then log out and in again (the group applies to new sessions only).</source>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="30"/>
         <source>--rs485 %1: use off (the adapter switches direction itself), auto, kernel or rts</source>
-        <translation type="unfinished"></translation>
+        <translation>--rs485 %1: off(어댑터가 직접 방향 전환), auto, kernel 또는 rts를 사용하십시오</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="36"/>
         <source>--rts-polarity %1: use high or low (the RTS level while sending)</source>
-        <translation type="unfinished"></translation>
+        <translation>--rts-polarity %1: high 또는 low를 사용하십시오(송신 중 RTS 레벨)</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="44"/>
         <source>--rts-delay %1: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own delay)</source>
-        <translation type="unfinished"></translation>
+        <translation>--rts-delay %1: 0–%2 µs를 사용하십시오(0: 시리얼 드라이버 또는 libmodbus 자체 지연)</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="51"/>
         <source>--low-latency %1: use on or off</source>
-        <translation type="unfinished"></translation>
+        <translation>--low-latency %1: on 또는 off를 사용하십시오</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="61"/>
         <source>--%1 applies to a serial port (--port), not to a Modbus TCP gateway (--tcp)</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1은(는) 시리얼 포트(--port)에 적용되며, Modbus TCP 게이트웨이(--tcp)에는 적용되지 않습니다</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="65"/>
         <source>--%1 applies to a serial port (--port), not to a simulated bus</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1은(는) 시리얼 포트(--port)에 적용되며, 시뮬레이션 버스에는 적용되지 않습니다</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="66"/>
         <source>--%1 applies to a serial port only: give it with --port PATH</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1은(는) 시리얼 포트에만 적용됩니다: --port PATH와 함께 지정하십시오</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="74"/>
@@ -3286,42 +3304,42 @@ then log out and in again (the group applies to new sessions only).</source>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="93"/>
         <source>Who switches the RS-485 direction (serial port only): off (default: the adapter itself, as USB–RS-485 adapters do), kernel (the driver&apos;s RS-485 mode), rts (RTS from the program) or auto (kernel where the driver has it, else rts).</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485 송수신 방향을 누가 전환하는지 지정합니다(시리얼 포트 전용): off (기본값: USB–RS-485 어댑터처럼 어댑터가 직접 전환), kernel (시리얼 드라이버의 RS-485 모드), rts (프로그램이 RTS 제어) 또는 auto (시리얼 드라이버가 지원하면 kernel, 아니면 rts).</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="96"/>
         <source>MODE</source>
-        <translation type="unfinished"></translation>
+        <translation>MODE</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="98"/>
         <source>RTS level while sending with --rs485 kernel, rts or auto: high (default) or low.</source>
-        <translation type="unfinished"></translation>
+        <translation>--rs485 kernel, rts 또는 auto 사용 시 송신 중 RTS 레벨: high (기본값) 또는 low.</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="99"/>
         <source>high|low</source>
-        <translation type="unfinished"></translation>
+        <translation>high|low</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="101"/>
         <source>RTS delay before and after sending in µs, 0–100000 (default 0: the driver&apos;s, or libmodbus&apos; one character time; the kernel rounds up to whole ms).</source>
-        <translation type="unfinished"></translation>
+        <translation>송신 전후의 RTS 지연(µs), 0–100000 (기본값 0: 시리얼 드라이버의 지연 또는 libmodbus의 1문자 시간; 커널은 ms 단위로 올림합니다).</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="103"/>
         <source>US</source>
-        <translation type="unfinished"></translation>
+        <translation>US</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="105"/>
         <source>Ask the serial driver to pass received bytes on at once (USB adapters otherwise hold them up to 16 ms): on (default) or off.</source>
-        <translation type="unfinished"></translation>
+        <translation>시리얼 드라이버가 수신한 바이트를 즉시 넘기도록 요청합니다(그렇지 않으면 USB 어댑터가 최대 16 ms 동안 보류): on (기본값) 또는 off.</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="107"/>
         <source>on|off</source>
-        <translation type="unfinished"></translation>
+        <translation>on|off</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="151"/>
@@ -3395,12 +3413,12 @@ then log out and in again (the group applies to new sessions only).</source>
     <message>
         <location filename="../ui/main/ConnectionStatus.cpp" line="54"/>
         <source>Connected: %1</source>
-        <translation type="unfinished">연결됨: %1</translation>
+        <translation>연결됨: %1</translation>
     </message>
     <message>
         <location filename="../ui/main/ConnectionStatus.cpp" line="56"/>
         <source> — %1</source>
-        <translation type="unfinished"> — %1</translation>
+        <translation> — %1</translation>
     </message>
 </context>
 <context>
@@ -11169,12 +11187,12 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../cli/ScanCommand.cpp" line="271"/>
         <source>Serial line: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>시리얼 라인: %1</translation>
     </message>
     <message>
         <location filename="../cli/ScanCommand.cpp" line="274"/>
         <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
-        <translation type="unfinished"></translation>
+        <translation>경고: %1 이 때문에 스캔 시 국번마다 최대 %2 ms를 더 기다립니다.</translation>
     </message>
     <message>
         <location filename="../cli/ScanCommand.cpp" line="303"/>
@@ -11257,82 +11275,82 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="29"/>
         <source>Adapter switches itself</source>
-        <translation type="unfinished"></translation>
+        <translation>어댑터가 직접 전환</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="30"/>
         <source>Auto (kernel, else RTS)</source>
-        <translation type="unfinished"></translation>
+        <translation>자동 (커널, 안 되면 RTS)</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="31"/>
         <source>Kernel RS-485 mode</source>
-        <translation type="unfinished"></translation>
+        <translation>커널 RS-485 모드</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="32"/>
         <source>RTS from the program</source>
-        <translation type="unfinished"></translation>
+        <translation>프로그램이 RTS 제어</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="34"/>
         <source>Who switches the RS-485 transceiver between sending and receiving. USB–RS-485 adapters do it themselves; on-board RS-485 ports need the driver&apos;s RS-485 mode (kernel) or RTS switched by the program. The status bar says what the driver accepted.</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485 트랜시버의 송신/수신 전환을 누가 하는지 지정합니다. USB–RS-485 어댑터는 직접 전환합니다. 보드 내장 RS-485 포트는 시리얼 드라이버의 RS-485 모드(커널)나 프로그램의 RTS 전환이 필요합니다. 시리얼 드라이버가 받아들인 설정은 상태 표시줄에 표시됩니다.</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="38"/>
         <source>RS-485 d&amp;irection:</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485 방향 전환(&amp;I):</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="43"/>
         <source>high while sending</source>
-        <translation type="unfinished"></translation>
+        <translation>송신 중 High</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="44"/>
         <source>low while sending</source>
-        <translation type="unfinished"></translation>
+        <translation>송신 중 Low</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="45"/>
         <source>The RTS level that enables the transceiver&apos;s driver</source>
-        <translation type="unfinished"></translation>
+        <translation>트랜시버의 송신부를 활성화하는 RTS 레벨</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="50"/>
         <source>delay </source>
-        <translation type="unfinished"></translation>
+        <translation>지연 </translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="51"/>
         <source> µs</source>
-        <translation type="unfinished"></translation>
+        <translation> µs</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="52"/>
         <source>default delay</source>
-        <translation type="unfinished"></translation>
+        <translation>기본 지연</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="53"/>
         <source>Before and after sending. Default: the driver&apos;s own, or one character time from the program; the kernel rounds up to whole ms.</source>
-        <translation type="unfinished"></translation>
+        <translation>송신 전후의 지연입니다. 기본값: 시리얼 드라이버 자체 지연, 또는 프로그램의 1문자 시간. 커널은 ms 단위로 올림합니다.</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="58"/>
         <source>RTS le&amp;vel:</source>
-        <translation type="unfinished"></translation>
+        <translation>RTS 레벨(&amp;V):</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="62"/>
         <source>&amp;Low latency (no 16 ms hold-back in USB adapters)</source>
-        <translation type="unfinished"></translation>
+        <translation>저지연 (USB 어댑터의 16 ms 보류 없음)(&amp;L)</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="65"/>
         <source>Asks the driver to pass received bytes on at once. Many USB–serial chips otherwise hold them for up to 16 ms, which slows scans and polling.</source>
-        <translation type="unfinished"></translation>
+        <translation>수신한 바이트를 즉시 넘기도록 시리얼 드라이버에 요청합니다. 그렇지 않으면 많은 USB–시리얼 칩이 최대 16 ms 동안 보류하여 스캔과 폴링이 느려집니다.</translation>
     </message>
 </context>
 <context>
@@ -11817,7 +11835,7 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="45"/>
         <source>firmware=MAJOR.MINOR (e.g. firmware=1.4), max_speed=N (e.g. max_speed=800), stall, load=+N, load=-N or load=xF (e.g. load=+40, load=x1.5), alarm=CODE@TIME (e.g. alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (a parameter name or register address, e.g. nostick=spno2.speed, nostore=0x0081), turnaround=MS (e.g. turnaround=14), clear</source>
-        <translation type="unfinished"></translation>
+        <translation>firmware=MAJOR.MINOR (예: firmware=1.4), max_speed=N (예: max_speed=800), stall, load=+N, load=-N 또는 load=xF (예: load=+40, load=x1.5), alarm=CODE@TIME (예: alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (파라미터 이름 또는 레지스터 주소, 예: nostick=spno2.speed, nostore=0x0081), turnaround=MS (예: turnaround=14), clear</translation>
     </message>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="123"/>
@@ -11872,7 +11890,7 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="189"/>
         <source>turnaround=%1: write the answer delay in ms, 0..1000, e.g. turnaround=14</source>
-        <translation type="unfinished"></translation>
+        <translation>turnaround=%1: 응답 지연을 ms로 0..1000 범위에서 쓰십시오. 예: turnaround=14</translation>
     </message>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="194"/>
@@ -11992,7 +12010,43 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 Prints &quot;pty: PATH&quot; (and &quot;tcp: HOST:PORT&quot;), then &quot;ready&quot;. Reads console commands
 from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>사용법: opentop-sim --devices SPEC [옵션]
+Modbus RTU 드라이버를 가상 터미널 또는 Modbus TCP 게이트웨이로 시뮬레이션합니다.
+
+  --devices SPEC     장치와 국번, 예: dbu200@1,dbu400@150,dcpid@7
+  --pty [PATH]       pty로 서비스 (기본값); PATH: 이 심볼릭 링크도 생성
+  --tcp HOST:PORT    Modbus TCP로 서비스 (HOST 기본값 127.0.0.1, PORT 0: 임의)
+  --baud N           전송 타이밍과 장치 설정에 쓰는 통신 속도 (19200)
+  --parity N|E|O     라인 패리티 (N)
+  --wire-timing      --baud의 실제 라인처럼 응답을 지연
+  --turnaround MS    --wire-timing 사용 시 장치 응답 전환 시간 (2)
+  --half-duplex      --wire-timing과 함께: 라인에서 요청이 응답과 겹치면
+                     둘 다 깨지고, 응답과 3.5문자 이내인 요청은 손실됨
+  --faults LIST      예: drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
+  --seed N           결함 주입의 시드 (1)
+  --defect ID:LIST   드라이버 ID의 결함 (반복 가능), LIST 항목:
+                       firmware=MAJOR.MINOR  식별 시 이 버전을 알려줌
+                       max_speed=N           모터가 N에서 포화 (DBU r/min,
+                                             DC 정류 횟수/s), 부하 높음
+                       stall                 모터가 회전하지 않음, 부하 높음
+                       load=+N|-N|xF         부하율(DC: 전류 %)에 오프셋 또는 배율
+                       alarm=CODE@TIME       TIME 동안 운전 후 알람, 예:
+                                             0x07@1500ms, overload@2s (DC: stall@1s)
+                       nostick=PARAM         쓰기는 수신 확인하지만 이전 값 유지
+                       nostore=PARAM         다음 전원 재투입 시 값 손실
+                     예: --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
+  --motor LIST       DC 컨트롤러의 모터와 부하, 예: inertia=2e-4,load=0.05;
+                     supply (V), resistance (ohm), no_load (최대 듀티에서의 1/s),
+                     commutations (1회전당 정류 횟수), inertia (kg m2), viscous
+                     (N m s/rad), coulomb (N m), load (N m), gate (ms), tacho (V s)
+  --quiet            stderr에 프레임 추적을 출력하지 않음
+  --lang CODE        메시지 언어: en, zh_TW, zh_CN, ko, ja
+  --help             이 도움말
+  --version          프로그램 버전
+
+&quot;pty: PATH&quot;(및 &quot;tcp: HOST:PORT&quot;)를 출력한 뒤 &quot;ready&quot;를 출력합니다. 콘솔 명령을
+stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료합니다.
+</translation>
     </message>
     <message>
         <location filename="../sim/SimOptions.cpp" line="87"/>
@@ -12067,7 +12121,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     <message>
         <location filename="../sim/SimOptions.cpp" line="172"/>
         <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
-        <translation type="unfinished"></translation>
+        <translation>알 수 없는 인수 &apos;%1&apos;; 옵션: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</translation>
     </message>
     <message>
         <location filename="../sim/SimOptions.cpp" line="181"/>
@@ -13055,12 +13109,12 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     <message>
         <location filename="../transport/ConnectionSettings.cpp" line="45"/>
         <source>RS-485 mode %1 is not supported: use off, auto, kernel or rts.</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485 모드 %1은(는) 지원하지 않습니다: off, auto, kernel 또는 rts를 사용하십시오.</translation>
     </message>
     <message>
         <location filename="../transport/ConnectionSettings.cpp" line="50"/>
         <source>RTS delay %1 µs is not allowed: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own).</source>
-        <translation type="unfinished"></translation>
+        <translation>RTS 지연 %1 µs는 허용되지 않습니다: 0–%2 µs를 사용하십시오(0: 시리얼 드라이버 또는 libmodbus 자체 지연).</translation>
     </message>
     <message>
         <location filename="../transport/ConnectionSettings.cpp" line="59"/>
@@ -13578,152 +13632,152 @@ then log out and in again (the group applies to new sessions only).</source>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="13"/>
         <source>%1 ms</source>
-        <translation type="unfinished">%1 ms</translation>
+        <translation>%1 ms</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="14"/>
         <source>%1 µs</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 µs</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="31"/>
         <source>RTS high while sending</source>
-        <translation type="unfinished"></translation>
+        <translation>송신 중 RTS High</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="32"/>
         <source>RTS low while sending</source>
-        <translation type="unfinished"></translation>
+        <translation>송신 중 RTS Low</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="35"/>
         <source>, %1 before and after</source>
-        <translation type="unfinished"></translation>
+        <translation>, 송신 전후 %1</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="37"/>
         <source>, %1 before, %2 after</source>
-        <translation type="unfinished"></translation>
+        <translation>, 송신 전 %1, 송신 후 %2</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="43"/>
         <source>RS-485: switched by the adapter</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485: 어댑터가 전환</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="45"/>
         <source>RS-485: kernel mode left on by the driver (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485: 시리얼 드라이버가 커널 모드를 켠 상태로 유지 (%1)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="49"/>
         <source>RS-485: kernel (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485: 커널 (%1)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="52"/>
         <source>RS-485: RTS from the program (%1; kernel mode refused: %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485: 프로그램이 RTS 제어 (%1; 커널 모드 거부됨: %2)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="56"/>
         <source>RS-485: RTS from the program (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485: 프로그램이 RTS 제어 (%1)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="61"/>
         <source>RS-485: not available (kernel mode refused: %1; RTS not switchable: %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485: 사용할 수 없음 (커널 모드 거부됨: %1; RTS 전환 불가: %2)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="66"/>
         <source>RS-485: RTS not switchable on this port (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485: 이 포트에서는 RTS 전환 불가 (%1)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="69"/>
         <source>RS-485: kernel mode refused by the driver (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485: 시리얼 드라이버가 커널 모드를 거부함 (%1)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="78"/>
         <source>latency timer %1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>지연 타이머 %1 ms</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="86"/>
         <source>low latency: not a UART, no adapter latency</source>
-        <translation type="unfinished"></translation>
+        <translation>저지연: UART 아님, 어댑터 지연 없음</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="90"/>
         <source>low latency: on (but %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>저지연: 켜짐 (단, %1)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="92"/>
         <source>low latency: on</source>
-        <translation type="unfinished"></translation>
+        <translation>저지연: 켜짐</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="95"/>
         <source>low latency: not offered by the driver (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>저지연: 시리얼 드라이버가 지원하지 않음 (%1)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="99"/>
         <source>low latency: not offered by the driver (USB adapter: up to %1 ms assumed)</source>
-        <translation type="unfinished"></translation>
+        <translation>저지연: 시리얼 드라이버가 지원하지 않음 (USB 어댑터: 최대 %1 ms로 가정)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="103"/>
         <source>low latency: not offered by the driver</source>
-        <translation type="unfinished"></translation>
+        <translation>저지연: 시리얼 드라이버가 지원하지 않음</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="107"/>
         <source>low latency: off</source>
-        <translation type="unfinished"></translation>
+        <translation>저지연: 꺼짐</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="108"/>
         <source>low latency: off (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>저지연: 꺼짐 (%1)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="132"/>
         <source>low latency is off</source>
-        <translation type="unfinished"></translation>
+        <translation>저지연이 꺼져 있음</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="134"/>
         <source>the driver took low latency but kept its latency timer</source>
-        <translation type="unfinished"></translation>
+        <translation>시리얼 드라이버가 저지연을 받아들였지만 지연 타이머는 그대로임</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="137"/>
         <source>the driver did not take low latency</source>
-        <translation type="unfinished"></translation>
+        <translation>시리얼 드라이버가 저지연을 받아들이지 않음</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="140"/>
         <source>see docs/hardware.md, or use an adapter whose driver offers low latency</source>
-        <translation type="unfinished"></translation>
+        <translation>docs/hardware.md를 참조하거나, 시리얼 드라이버가 저지연을 지원하는 어댑터를 사용하십시오</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="144"/>
         <source>as root: echo 1 &gt; %1, or the udev rule in docs/hardware.md</source>
-        <translation type="unfinished"></translation>
+        <translation>root로 실행: echo 1 &gt; %1, 또는 docs/hardware.md의 udev 규칙 사용</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="148"/>
         <source>The adapter holds received bytes for up to %1 ms before passing them on (%2). Fix: %3.</source>
-        <translation type="unfinished"></translation>
+        <translation>어댑터가 수신한 바이트를 최대 %1 ms 동안 보류한 뒤 넘깁니다(%2). 해결 방법: %3.</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineSetup.cpp" line="106"/>
         <source>the driver left it off</source>
-        <translation type="unfinished"></translation>
+        <translation>시리얼 드라이버가 꺼진 상태로 둠</translation>
     </message>
 </context>
 <context>

@@ -80,7 +80,7 @@
     <message>
         <location filename="../app/gui/StartupProbe.cpp" line="23"/>
         <source>Print how long the start took once the window shows the bus&apos;s drives, then quit (for measurements).</source>
-        <translation type="unfinished"></translation>
+        <translation>在窗口显示总线上的驱动器后，输出启动所用的时间，然后退出（用于测量）。</translation>
     </message>
 </context>
 <context>
@@ -2481,7 +2481,25 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>
+连接（所有与驱动器通信的命令）：
+  --port PATH | --tcp HOST:PORT | --sim SPEC
+  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
+  默认值随系列而定：dbu 19200 8N1，dcpid 9600 8E1；--timeout 200，
+  --retries 3（线路有干扰时再加 2 次：即最近有请求需要重试）。
+  仅限串口：--rs485 off|auto|kernel|rts（由谁切换 RS-485
+  收发方向；off：适配器），--rts-polarity high|low，--rts-delay US，
+  --low-latency on|off（默认 on）。scan 会显示驱动程序接受的设置。
+输出：--json  --trace  --variant VARIANT  --lang CODE
+通信组：--bus-drives LIST（或 OPENTOP_BUS_DRIVES）：写入或执行命令前
+检查其通信组的驱动器
+
+退出码：0 成功，1 通信失败，2 用法错误，3 值或文件无效
+（未写入任何内容），4 校验不一致或驱动器未停止，
+130 被 Ctrl-C、SIGTERM 或 SIGHUP 中断（会报告已完成的操作）。
+
+&quot;%1 help COMMAND&quot; 显示命令的选项。
+</translation>
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="167"/>
@@ -2526,7 +2544,7 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
     <message>
         <location filename="../cli/CliContext.cpp" line="102"/>
         <source>serial line: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>串行线路：%1</translation>
     </message>
     <message>
         <location filename="../cli/CliContext.cpp" line="126"/>
@@ -3165,37 +3183,37 @@ then log out and in again (the group applies to new sessions only).</source>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="30"/>
         <source>--rs485 %1: use off (the adapter switches direction itself), auto, kernel or rts</source>
-        <translation type="unfinished"></translation>
+        <translation>--rs485 %1：请使用 off（由适配器自行切换方向）、auto、kernel 或 rts</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="36"/>
         <source>--rts-polarity %1: use high or low (the RTS level while sending)</source>
-        <translation type="unfinished"></translation>
+        <translation>--rts-polarity %1：请使用 high 或 low（发送时的 RTS 电平）</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="44"/>
         <source>--rts-delay %1: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own delay)</source>
-        <translation type="unfinished"></translation>
+        <translation>--rts-delay %1：请使用 0–%2 µs（0：使用驱动程序或 libmodbus 自身的延时）</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="51"/>
         <source>--low-latency %1: use on or off</source>
-        <translation type="unfinished"></translation>
+        <translation>--low-latency %1：请使用 on 或 off</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="61"/>
         <source>--%1 applies to a serial port (--port), not to a Modbus TCP gateway (--tcp)</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 适用于串口（--port），不适用于 Modbus TCP 网关（--tcp）</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="65"/>
         <source>--%1 applies to a serial port (--port), not to a simulated bus</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 适用于串口（--port），不适用于模拟总线</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="66"/>
         <source>--%1 applies to a serial port only: give it with --port PATH</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 仅适用于串口：请与 --port PATH 一起指定</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="74"/>
@@ -3286,42 +3304,42 @@ then log out and in again (the group applies to new sessions only).</source>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="93"/>
         <source>Who switches the RS-485 direction (serial port only): off (default: the adapter itself, as USB–RS-485 adapters do), kernel (the driver&apos;s RS-485 mode), rts (RTS from the program) or auto (kernel where the driver has it, else rts).</source>
-        <translation type="unfinished"></translation>
+        <translation>由谁切换 RS-485 收发方向（仅限串口）：off（默认：由适配器自行切换，USB–RS-485 适配器即如此）、kernel（驱动程序的 RS-485 模式）、rts（由程序控制 RTS）或 auto（驱动程序支持时用 kernel，否则用 rts）。</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="96"/>
         <source>MODE</source>
-        <translation type="unfinished"></translation>
+        <translation>MODE</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="98"/>
         <source>RTS level while sending with --rs485 kernel, rts or auto: high (default) or low.</source>
-        <translation type="unfinished"></translation>
+        <translation>使用 --rs485 kernel、rts 或 auto 时发送期间的 RTS 电平：high（默认）或 low。</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="99"/>
         <source>high|low</source>
-        <translation type="unfinished"></translation>
+        <translation>high|low</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="101"/>
         <source>RTS delay before and after sending in µs, 0–100000 (default 0: the driver&apos;s, or libmodbus&apos; one character time; the kernel rounds up to whole ms).</source>
-        <translation type="unfinished"></translation>
+        <translation>发送前后的 RTS 延时（µs），0–100000（默认 0：使用驱动程序的延时，或 libmodbus 的 1 个字符时间；内核会向上取整到整 ms）。</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="103"/>
         <source>US</source>
-        <translation type="unfinished"></translation>
+        <translation>US</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="105"/>
         <source>Ask the serial driver to pass received bytes on at once (USB adapters otherwise hold them up to 16 ms): on (default) or off.</source>
-        <translation type="unfinished"></translation>
+        <translation>要求串口驱动程序立即转交收到的字节（否则 USB 适配器最多会缓存 16 ms）：on（默认）或 off。</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="107"/>
         <source>on|off</source>
-        <translation type="unfinished"></translation>
+        <translation>on|off</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="151"/>
@@ -3395,12 +3413,12 @@ then log out and in again (the group applies to new sessions only).</source>
     <message>
         <location filename="../ui/main/ConnectionStatus.cpp" line="54"/>
         <source>Connected: %1</source>
-        <translation type="unfinished">已连接：%1</translation>
+        <translation>已连接：%1</translation>
     </message>
     <message>
         <location filename="../ui/main/ConnectionStatus.cpp" line="56"/>
         <source> — %1</source>
-        <translation type="unfinished"> — %1</translation>
+        <translation> — %1</translation>
     </message>
 </context>
 <context>
@@ -11169,12 +11187,12 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../cli/ScanCommand.cpp" line="271"/>
         <source>Serial line: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>串行线路：%1</translation>
     </message>
     <message>
         <location filename="../cli/ScanCommand.cpp" line="274"/>
         <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
-        <translation type="unfinished"></translation>
+        <translation>警告：%1 因此扫描时每个站号最多会多等待 %2 ms。</translation>
     </message>
     <message>
         <location filename="../cli/ScanCommand.cpp" line="303"/>
@@ -11257,82 +11275,82 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="29"/>
         <source>Adapter switches itself</source>
-        <translation type="unfinished"></translation>
+        <translation>适配器自行切换</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="30"/>
         <source>Auto (kernel, else RTS)</source>
-        <translation type="unfinished"></translation>
+        <translation>自动（内核，否则 RTS）</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="31"/>
         <source>Kernel RS-485 mode</source>
-        <translation type="unfinished"></translation>
+        <translation>内核 RS-485 模式</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="32"/>
         <source>RTS from the program</source>
-        <translation type="unfinished"></translation>
+        <translation>由程序控制 RTS</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="34"/>
         <source>Who switches the RS-485 transceiver between sending and receiving. USB–RS-485 adapters do it themselves; on-board RS-485 ports need the driver&apos;s RS-485 mode (kernel) or RTS switched by the program. The status bar says what the driver accepted.</source>
-        <translation type="unfinished"></translation>
+        <translation>由谁切换 RS-485 收发器的发送与接收。USB–RS-485 适配器会自行切换；板载 RS-485 端口需要驱动程序的 RS-485 模式（内核）或由程序切换 RTS。状态栏会显示驱动程序接受的设置。</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="38"/>
         <source>RS-485 d&amp;irection:</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485 收发方向(&amp;I)：</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="43"/>
         <source>high while sending</source>
-        <translation type="unfinished"></translation>
+        <translation>发送时为高电平</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="44"/>
         <source>low while sending</source>
-        <translation type="unfinished"></translation>
+        <translation>发送时为低电平</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="45"/>
         <source>The RTS level that enables the transceiver&apos;s driver</source>
-        <translation type="unfinished"></translation>
+        <translation>使能收发器发送端的 RTS 电平</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="50"/>
         <source>delay </source>
-        <translation type="unfinished"></translation>
+        <translation>延时 </translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="51"/>
         <source> µs</source>
-        <translation type="unfinished"></translation>
+        <translation> µs</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="52"/>
         <source>default delay</source>
-        <translation type="unfinished"></translation>
+        <translation>默认延时</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="53"/>
         <source>Before and after sending. Default: the driver&apos;s own, or one character time from the program; the kernel rounds up to whole ms.</source>
-        <translation type="unfinished"></translation>
+        <translation>发送前后的延时。默认：使用驱动程序自身的延时，或由程序使用 1 个字符时间；内核会向上取整到整 ms。</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="58"/>
         <source>RTS le&amp;vel:</source>
-        <translation type="unfinished"></translation>
+        <translation>RTS 电平(&amp;V)：</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="62"/>
         <source>&amp;Low latency (no 16 ms hold-back in USB adapters)</source>
-        <translation type="unfinished"></translation>
+        <translation>低延迟（USB 适配器不再缓存 16 ms）(&amp;L)</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="65"/>
         <source>Asks the driver to pass received bytes on at once. Many USB–serial chips otherwise hold them for up to 16 ms, which slows scans and polling.</source>
-        <translation type="unfinished"></translation>
+        <translation>要求驱动程序立即转交收到的字节。否则许多 USB 转串口芯片最多会缓存 16 ms，使扫描和轮询变慢。</translation>
     </message>
 </context>
 <context>
@@ -11817,7 +11835,7 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="45"/>
         <source>firmware=MAJOR.MINOR (e.g. firmware=1.4), max_speed=N (e.g. max_speed=800), stall, load=+N, load=-N or load=xF (e.g. load=+40, load=x1.5), alarm=CODE@TIME (e.g. alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (a parameter name or register address, e.g. nostick=spno2.speed, nostore=0x0081), turnaround=MS (e.g. turnaround=14), clear</source>
-        <translation type="unfinished"></translation>
+        <translation>firmware=MAJOR.MINOR（例如 firmware=1.4），max_speed=N（例如 max_speed=800），stall，load=+N、load=-N 或 load=xF（例如 load=+40、load=x1.5），alarm=CODE@TIME（例如 alarm=0x07@1500ms、alarm=overload@2s；DC：alarm=stall@1s），nostick=PARAM，nostore=PARAM（参数名或寄存器地址，例如 nostick=spno2.speed、nostore=0x0081），turnaround=MS（例如 turnaround=14），clear</translation>
     </message>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="123"/>
@@ -11872,7 +11890,7 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="189"/>
         <source>turnaround=%1: write the answer delay in ms, 0..1000, e.g. turnaround=14</source>
-        <translation type="unfinished"></translation>
+        <translation>turnaround=%1：请写出应答延时（ms），范围 0..1000，例如 turnaround=14</translation>
     </message>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="194"/>
@@ -11992,7 +12010,43 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 Prints &quot;pty: PATH&quot; (and &quot;tcp: HOST:PORT&quot;), then &quot;ready&quot;. Reads console commands
 from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>用法：opentop-sim --devices SPEC [选项]
+在伪终端上或作为 Modbus TCP 网关模拟 Modbus RTU 驱动器。
+
+  --devices SPEC     设备和站号，例如 dbu200@1,dbu400@150,dcpid@7
+  --pty [PATH]       在 pty 上提供服务（默认）；PATH：同时创建该符号链接
+  --tcp HOST:PORT    提供 Modbus TCP 服务（HOST 默认为 127.0.0.1，PORT 0：任意）
+  --baud N           用于线路时序和设备设定的线路速率（19200）
+  --parity N|E|O     线路校验位（N）
+  --wire-timing      按 --baud 下真实线路的时序延迟应答
+  --turnaround MS    使用 --wire-timing 时设备的转换时间（2）
+  --half-duplex      配合 --wire-timing：请求与线路上的应答重叠时
+                     两者都会损坏，距应答 3.5 个字符以内的请求会丢失
+  --faults LIST      例如 drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
+  --seed N           故障注入的随机种子（1）
+  --defect ID:LIST   驱动器 ID 的缺陷（可重复），LIST 取值：
+                       firmware=MAJOR.MINOR  识别时报告该版本
+                       max_speed=N           电机在 N 处饱和（DBU r/min，
+                                             DC 换相次数/s），负载高
+                       stall                 电机不转，负载高
+                       load=+N|-N|xF         负载率（DC：电流 %）偏移或缩放
+                       alarm=CODE@TIME       运行 TIME 后报警，例如
+                                             0x07@1500ms、overload@2s（DC：stall@1s）
+                       nostick=PARAM         写入被应答，但旧值保持不变
+                       nostore=PARAM         下次重新上电时值丢失
+                     例如 --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
+  --motor LIST       直流控制器的电机和负载，例如 inertia=2e-4,load=0.05；
+                     supply（V）、resistance（ohm）、no_load（满占空比时的 1/s）、
+                     commutations（每转换相次数）、inertia（kg m2）、viscous
+                     （N m s/rad）、coulomb（N m）、load（N m）、gate（ms）、tacho（V s）
+  --quiet            不在 stderr 上输出报文跟踪
+  --lang CODE        消息的语言：en, zh_TW, zh_CN, ko, ja
+  --help             本说明
+  --version          程序版本
+
+输出 &quot;pty: PATH&quot;（以及 &quot;tcp: HOST:PORT&quot;），然后输出 &quot;ready&quot;。从 stdin 读取控制台命令
+（输入 help）。收到 SIGINT、SIGTERM 或 quit 时停止。
+</translation>
     </message>
     <message>
         <location filename="../sim/SimOptions.cpp" line="87"/>
@@ -12067,7 +12121,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     <message>
         <location filename="../sim/SimOptions.cpp" line="172"/>
         <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
-        <translation type="unfinished"></translation>
+        <translation>未知参数 &apos;%1&apos;；选项：--devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</translation>
     </message>
     <message>
         <location filename="../sim/SimOptions.cpp" line="181"/>
@@ -13055,12 +13109,12 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     <message>
         <location filename="../transport/ConnectionSettings.cpp" line="45"/>
         <source>RS-485 mode %1 is not supported: use off, auto, kernel or rts.</source>
-        <translation type="unfinished"></translation>
+        <translation>不支持 RS-485 模式 %1：请使用 off、auto、kernel 或 rts。</translation>
     </message>
     <message>
         <location filename="../transport/ConnectionSettings.cpp" line="50"/>
         <source>RTS delay %1 µs is not allowed: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own).</source>
-        <translation type="unfinished"></translation>
+        <translation>不允许 RTS 延时 %1 µs：请使用 0–%2 µs（0：使用驱动程序或 libmodbus 自身的延时）。</translation>
     </message>
     <message>
         <location filename="../transport/ConnectionSettings.cpp" line="59"/>
@@ -13578,152 +13632,152 @@ then log out and in again (the group applies to new sessions only).</source>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="13"/>
         <source>%1 ms</source>
-        <translation type="unfinished">%1 ms</translation>
+        <translation>%1 ms</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="14"/>
         <source>%1 µs</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 µs</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="31"/>
         <source>RTS high while sending</source>
-        <translation type="unfinished"></translation>
+        <translation>发送时 RTS 为高电平</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="32"/>
         <source>RTS low while sending</source>
-        <translation type="unfinished"></translation>
+        <translation>发送时 RTS 为低电平</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="35"/>
         <source>, %1 before and after</source>
-        <translation type="unfinished"></translation>
+        <translation>，发送前后各 %1</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="37"/>
         <source>, %1 before, %2 after</source>
-        <translation type="unfinished"></translation>
+        <translation>，发送前 %1，发送后 %2</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="43"/>
         <source>RS-485: switched by the adapter</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485：由适配器切换</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="45"/>
         <source>RS-485: kernel mode left on by the driver (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485：驱动程序保持内核模式开启（%1）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="49"/>
         <source>RS-485: kernel (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485：内核（%1）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="52"/>
         <source>RS-485: RTS from the program (%1; kernel mode refused: %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485：由程序控制 RTS（%1；内核模式被拒绝：%2）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="56"/>
         <source>RS-485: RTS from the program (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485：由程序控制 RTS（%1）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="61"/>
         <source>RS-485: not available (kernel mode refused: %1; RTS not switchable: %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485：不可用（内核模式被拒绝：%1；RTS 无法切换：%2）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="66"/>
         <source>RS-485: RTS not switchable on this port (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485：此端口无法切换 RTS（%1）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="69"/>
         <source>RS-485: kernel mode refused by the driver (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485：驱动程序拒绝内核模式（%1）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="78"/>
         <source>latency timer %1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>延迟定时器 %1 ms</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="86"/>
         <source>low latency: not a UART, no adapter latency</source>
-        <translation type="unfinished"></translation>
+        <translation>低延迟：非 UART，无适配器延迟</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="90"/>
         <source>low latency: on (but %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>低延迟：开启（但 %1）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="92"/>
         <source>low latency: on</source>
-        <translation type="unfinished"></translation>
+        <translation>低延迟：开启</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="95"/>
         <source>low latency: not offered by the driver (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>低延迟：驱动程序不支持（%1）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="99"/>
         <source>low latency: not offered by the driver (USB adapter: up to %1 ms assumed)</source>
-        <translation type="unfinished"></translation>
+        <translation>低延迟：驱动程序不支持（USB 适配器：按最多 %1 ms 估计）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="103"/>
         <source>low latency: not offered by the driver</source>
-        <translation type="unfinished"></translation>
+        <translation>低延迟：驱动程序不支持</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="107"/>
         <source>low latency: off</source>
-        <translation type="unfinished"></translation>
+        <translation>低延迟：关闭</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="108"/>
         <source>low latency: off (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>低延迟：关闭（%1）</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="132"/>
         <source>low latency is off</source>
-        <translation type="unfinished"></translation>
+        <translation>低延迟已关闭</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="134"/>
         <source>the driver took low latency but kept its latency timer</source>
-        <translation type="unfinished"></translation>
+        <translation>驱动程序接受了低延迟，但保留了其延迟定时器</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="137"/>
         <source>the driver did not take low latency</source>
-        <translation type="unfinished"></translation>
+        <translation>驱动程序未接受低延迟</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="140"/>
         <source>see docs/hardware.md, or use an adapter whose driver offers low latency</source>
-        <translation type="unfinished"></translation>
+        <translation>请参阅 docs/hardware.md，或改用驱动程序支持低延迟的适配器</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="144"/>
         <source>as root: echo 1 &gt; %1, or the udev rule in docs/hardware.md</source>
-        <translation type="unfinished"></translation>
+        <translation>以 root 身份执行：echo 1 &gt; %1，或使用 docs/hardware.md 中的 udev 规则</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="148"/>
         <source>The adapter holds received bytes for up to %1 ms before passing them on (%2). Fix: %3.</source>
-        <translation type="unfinished"></translation>
+        <translation>适配器会将收到的字节缓存最多 %1 ms 后才转交（%2）。解决方法：%3。</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineSetup.cpp" line="106"/>
         <source>the driver left it off</source>
-        <translation type="unfinished"></translation>
+        <translation>驱动程序仍保持关闭</translation>
     </message>
 </context>
 <context>

@@ -80,7 +80,7 @@
     <message>
         <location filename="../app/gui/StartupProbe.cpp" line="23"/>
         <source>Print how long the start took once the window shows the bus&apos;s drives, then quit (for measurements).</source>
-        <translation type="unfinished"></translation>
+        <translation>在視窗顯示匯流排上的驅動器後，輸出啟動所花的時間，然後結束 (供量測用)。</translation>
     </message>
 </context>
 <context>
@@ -2481,7 +2481,25 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>
+連線 (所有與驅動器通訊的指令)：
+  --port PATH | --tcp HOST:PORT | --sim SPEC
+  --family F  --baud N  --parity N|E|O  --stop-bits N  --timeout MS  --retries N
+  預設值依系列而定：dbu 19200 8N1，dcpid 9600 8E1；--timeout 200，
+  --retries 3 (線路雜訊多時再加 2 次：即最近有請求需要重試時)。
+  僅限序列埠：--rs485 off|auto|kernel|rts (由誰切換 RS-485
+  收發方向；off：轉接器)，--rts-polarity high|low，--rts-delay US，
+  --low-latency on|off (預設 on)。scan 會顯示驅動程式接受的設定。
+輸出：--json  --trace  --variant VARIANT  --lang CODE
+群組：--bus-drives LIST (或 OPENTOP_BUS_DRIVES)：寫入或下指令前
+要檢查其通訊群組的驅動器
+
+結束碼：0 成功，1 通訊失敗，2 用法錯誤，3 值或檔案無效
+(未寫入任何資料)，4 驗證不符或驅動器未停止，
+130 被 Ctrl-C、SIGTERM 或 SIGHUP 中斷 (會回報已完成的操作)。
+
+&quot;%1 help COMMAND&quot; 顯示指令的選項。
+</translation>
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="167"/>
@@ -2526,7 +2544,7 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
     <message>
         <location filename="../cli/CliContext.cpp" line="102"/>
         <source>serial line: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>序列線路：%1</translation>
     </message>
     <message>
         <location filename="../cli/CliContext.cpp" line="126"/>
@@ -3165,37 +3183,37 @@ then log out and in again (the group applies to new sessions only).</source>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="30"/>
         <source>--rs485 %1: use off (the adapter switches direction itself), auto, kernel or rts</source>
-        <translation type="unfinished"></translation>
+        <translation>--rs485 %1：請使用 off (由轉接器自行切換方向)、auto、kernel 或 rts</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="36"/>
         <source>--rts-polarity %1: use high or low (the RTS level while sending)</source>
-        <translation type="unfinished"></translation>
+        <translation>--rts-polarity %1：請使用 high 或 low (傳送時的 RTS 準位)</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="44"/>
         <source>--rts-delay %1: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own delay)</source>
-        <translation type="unfinished"></translation>
+        <translation>--rts-delay %1：請使用 0–%2 µs (0：使用驅動程式或 libmodbus 本身的延遲)</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="51"/>
         <source>--low-latency %1: use on or off</source>
-        <translation type="unfinished"></translation>
+        <translation>--low-latency %1：請使用 on 或 off</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="61"/>
         <source>--%1 applies to a serial port (--port), not to a Modbus TCP gateway (--tcp)</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 僅適用於序列埠 (--port)，不適用於 Modbus TCP 閘道器 (--tcp)</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="65"/>
         <source>--%1 applies to a serial port (--port), not to a simulated bus</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 僅適用於序列埠 (--port)，不適用於模擬匯流排</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="66"/>
         <source>--%1 applies to a serial port only: give it with --port PATH</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 僅適用於序列埠：請搭配 --port PATH 指定</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="74"/>
@@ -3286,42 +3304,42 @@ then log out and in again (the group applies to new sessions only).</source>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="93"/>
         <source>Who switches the RS-485 direction (serial port only): off (default: the adapter itself, as USB–RS-485 adapters do), kernel (the driver&apos;s RS-485 mode), rts (RTS from the program) or auto (kernel where the driver has it, else rts).</source>
-        <translation type="unfinished"></translation>
+        <translation>由誰切換 RS-485 收發方向 (僅限序列埠)：off (預設：由轉接器自行切換，USB–RS-485 轉接器即是如此)、kernel (驅動程式的 RS-485 模式)、rts (由程式控制 RTS) 或 auto (驅動程式支援時用 kernel，否則用 rts)。</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="96"/>
         <source>MODE</source>
-        <translation type="unfinished"></translation>
+        <translation>MODE</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="98"/>
         <source>RTS level while sending with --rs485 kernel, rts or auto: high (default) or low.</source>
-        <translation type="unfinished"></translation>
+        <translation>使用 --rs485 kernel、rts 或 auto 時，傳送期間的 RTS 準位：high (預設) 或 low。</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="99"/>
         <source>high|low</source>
-        <translation type="unfinished"></translation>
+        <translation>high|low</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="101"/>
         <source>RTS delay before and after sending in µs, 0–100000 (default 0: the driver&apos;s, or libmodbus&apos; one character time; the kernel rounds up to whole ms).</source>
-        <translation type="unfinished"></translation>
+        <translation>傳送前後的 RTS 延遲，單位 µs，0–100000 (預設 0：使用驅動程式的延遲，或 libmodbus 的 1 個字元時間；核心會進位到整數 ms)。</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="103"/>
         <source>US</source>
-        <translation type="unfinished"></translation>
+        <translation>US</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="105"/>
         <source>Ask the serial driver to pass received bytes on at once (USB adapters otherwise hold them up to 16 ms): on (default) or off.</source>
-        <translation type="unfinished"></translation>
+        <translation>要求序列埠驅動程式立即轉交收到的位元組 (否則 USB 轉接器最多會保留 16 ms)：on (預設) 或 off。</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="107"/>
         <source>on|off</source>
-        <translation type="unfinished"></translation>
+        <translation>on|off</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="151"/>
@@ -3395,12 +3413,12 @@ then log out and in again (the group applies to new sessions only).</source>
     <message>
         <location filename="../ui/main/ConnectionStatus.cpp" line="54"/>
         <source>Connected: %1</source>
-        <translation type="unfinished">已連線：%1</translation>
+        <translation>已連線：%1</translation>
     </message>
     <message>
         <location filename="../ui/main/ConnectionStatus.cpp" line="56"/>
         <source> — %1</source>
-        <translation type="unfinished"> — %1</translation>
+        <translation> — %1</translation>
     </message>
 </context>
 <context>
@@ -11169,12 +11187,12 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../cli/ScanCommand.cpp" line="271"/>
         <source>Serial line: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>序列線路：%1</translation>
     </message>
     <message>
         <location filename="../cli/ScanCommand.cpp" line="274"/>
         <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
-        <translation type="unfinished"></translation>
+        <translation>警告：%1 因此掃描時每個機號最多會多等待 %2 ms。</translation>
     </message>
     <message>
         <location filename="../cli/ScanCommand.cpp" line="303"/>
@@ -11257,82 +11275,82 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="29"/>
         <source>Adapter switches itself</source>
-        <translation type="unfinished"></translation>
+        <translation>轉接器自行切換</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="30"/>
         <source>Auto (kernel, else RTS)</source>
-        <translation type="unfinished"></translation>
+        <translation>自動 (核心，否則 RTS)</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="31"/>
         <source>Kernel RS-485 mode</source>
-        <translation type="unfinished"></translation>
+        <translation>核心 RS-485 模式</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="32"/>
         <source>RTS from the program</source>
-        <translation type="unfinished"></translation>
+        <translation>由程式控制 RTS</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="34"/>
         <source>Who switches the RS-485 transceiver between sending and receiving. USB–RS-485 adapters do it themselves; on-board RS-485 ports need the driver&apos;s RS-485 mode (kernel) or RTS switched by the program. The status bar says what the driver accepted.</source>
-        <translation type="unfinished"></translation>
+        <translation>由誰切換 RS-485 收發器的傳送與接收。USB–RS-485 轉接器會自行切換；主機板內建的 RS-485 埠需要驅動程式的 RS-485 模式 (核心) 或由程式切換 RTS。狀態列會顯示驅動程式接受的設定。</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="38"/>
         <source>RS-485 d&amp;irection:</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485 收發方向(&amp;I)：</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="43"/>
         <source>high while sending</source>
-        <translation type="unfinished"></translation>
+        <translation>傳送時為高準位</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="44"/>
         <source>low while sending</source>
-        <translation type="unfinished"></translation>
+        <translation>傳送時為低準位</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="45"/>
         <source>The RTS level that enables the transceiver&apos;s driver</source>
-        <translation type="unfinished"></translation>
+        <translation>使收發器發送端致能的 RTS 準位</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="50"/>
         <source>delay </source>
-        <translation type="unfinished"></translation>
+        <translation>延遲 </translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="51"/>
         <source> µs</source>
-        <translation type="unfinished"></translation>
+        <translation> µs</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="52"/>
         <source>default delay</source>
-        <translation type="unfinished"></translation>
+        <translation>預設延遲</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="53"/>
         <source>Before and after sending. Default: the driver&apos;s own, or one character time from the program; the kernel rounds up to whole ms.</source>
-        <translation type="unfinished"></translation>
+        <translation>傳送前後的延遲。預設：使用驅動程式本身的延遲，或由程式使用 1 個字元時間；核心會進位到整數 ms。</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="58"/>
         <source>RTS le&amp;vel:</source>
-        <translation type="unfinished"></translation>
+        <translation>RTS 準位(&amp;V)：</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="62"/>
         <source>&amp;Low latency (no 16 ms hold-back in USB adapters)</source>
-        <translation type="unfinished"></translation>
+        <translation>低延遲 (USB 轉接器不再保留 16 ms)(&amp;L)</translation>
     </message>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="65"/>
         <source>Asks the driver to pass received bytes on at once. Many USB–serial chips otherwise hold them for up to 16 ms, which slows scans and polling.</source>
-        <translation type="unfinished"></translation>
+        <translation>要求驅動程式立即轉交收到的位元組。否則許多 USB 轉序列晶片最多會保留 16 ms，使掃描與輪詢變慢。</translation>
     </message>
 </context>
 <context>
@@ -11817,7 +11835,7 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="45"/>
         <source>firmware=MAJOR.MINOR (e.g. firmware=1.4), max_speed=N (e.g. max_speed=800), stall, load=+N, load=-N or load=xF (e.g. load=+40, load=x1.5), alarm=CODE@TIME (e.g. alarm=0x07@1500ms, alarm=overload@2s; DC: alarm=stall@1s), nostick=PARAM, nostore=PARAM (a parameter name or register address, e.g. nostick=spno2.speed, nostore=0x0081), turnaround=MS (e.g. turnaround=14), clear</source>
-        <translation type="unfinished"></translation>
+        <translation>firmware=MAJOR.MINOR (例如 firmware=1.4)、max_speed=N (例如 max_speed=800)、stall、load=+N、load=-N 或 load=xF (例如 load=+40、load=x1.5)、alarm=CODE@TIME (例如 alarm=0x07@1500ms、alarm=overload@2s；DC：alarm=stall@1s)、nostick=PARAM、nostore=PARAM (參數名稱或暫存器位址，例如 nostick=spno2.speed、nostore=0x0081)、turnaround=MS (例如 turnaround=14)、clear</translation>
     </message>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="123"/>
@@ -11872,7 +11890,7 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="189"/>
         <source>turnaround=%1: write the answer delay in ms, 0..1000, e.g. turnaround=14</source>
-        <translation type="unfinished"></translation>
+        <translation>turnaround=%1：請寫入回應延遲 (ms)，範圍 0..1000，例如 turnaround=14</translation>
     </message>
     <message>
         <location filename="../sim/SimDefectSpec.cpp" line="194"/>
@@ -11992,7 +12010,43 @@ Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 Prints &quot;pty: PATH&quot; (and &quot;tcp: HOST:PORT&quot;), then &quot;ready&quot;. Reads console commands
 from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>用法：opentop-sim --devices SPEC [選項]
+在虛擬終端機上或以 Modbus TCP 閘道器形式模擬 Modbus RTU 驅動器。
+
+  --devices SPEC     裝置與機號，例如 dbu200@1,dbu400@150,dcpid@7
+  --pty [PATH]       在 pty 上提供服務 (預設)；PATH：同時建立此符號連結
+  --tcp HOST:PORT    提供 Modbus TCP 服務 (HOST 預設為 127.0.0.1，PORT 0：任意)
+  --baud N           用於線路時序與裝置設定的鮑率 (19200)
+  --parity N|E|O     線路同位元 (N)
+  --wire-timing      依實際線路在 --baud 下的速度延遲回應
+  --turnaround MS    搭配 --wire-timing 的裝置回轉時間 (2)
+  --half-duplex      搭配 --wire-timing：請求與線路上的回應重疊時
+                     兩者皆會錯亂，距回應 3.5 個字元以內的請求會遺失
+  --faults LIST      例如 drop=0.02,crc=0.01,late=0.01,busy=0.01,late_ms=1000
+  --seed N           故障注入的亂數種子 (1)
+  --defect ID:LIST   驅動器 ID 的缺陷 (可重複指定)，LIST 可包含：
+                       firmware=MAJOR.MINOR  識別時回報此版本
+                       max_speed=N           馬達在 N 飽和 (DBU 為 r/min，
+                                             DC 為換相次數/s)，負載偏高
+                       stall                 馬達不轉動，負載偏高
+                       load=+N|-N|xF         負載率 (DC：電流 %) 偏移或縮放
+                       alarm=CODE@TIME       運轉 TIME 後發生警報，例如
+                                             0x07@1500ms、overload@2s (DC：stall@1s)
+                       nostick=PARAM         寫入有回應確認，但保留舊值
+                       nostore=PARAM         下次斷電重新上電後值遺失
+                     例如 --defect 3:firmware=1.4 --defect 5:max_speed=800,load=+40
+  --motor LIST       DC 控制器的馬達與負載，例如 inertia=2e-4,load=0.05；
+                     supply (V)、resistance (ohm)、no_load (全責任週期時的 1/s)、
+                     commutations (每轉換相次數)、inertia (kg m2)、viscous
+                     (N m s/rad)、coulomb (N m)、load (N m)、gate (ms)、tacho (V s)
+  --quiet            不在 stderr 輸出訊框追蹤
+  --lang CODE        訊息的語言：en, zh_TW, zh_CN, ko, ja
+  --help             本說明
+  --version          程式版本
+
+輸出 &quot;pty: PATH&quot; (以及 &quot;tcp: HOST:PORT&quot;)，然後輸出 &quot;ready&quot;。從 stdin 讀取主控台
+指令 (輸入 help)。收到 SIGINT、SIGTERM 或 quit 時停止。
+</translation>
     </message>
     <message>
         <location filename="../sim/SimOptions.cpp" line="87"/>
@@ -12067,7 +12121,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     <message>
         <location filename="../sim/SimOptions.cpp" line="172"/>
         <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
-        <translation type="unfinished"></translation>
+        <translation>未知引數 &apos;%1&apos;；選項：--devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</translation>
     </message>
     <message>
         <location filename="../sim/SimOptions.cpp" line="181"/>
@@ -13055,12 +13109,12 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     <message>
         <location filename="../transport/ConnectionSettings.cpp" line="45"/>
         <source>RS-485 mode %1 is not supported: use off, auto, kernel or rts.</source>
-        <translation type="unfinished"></translation>
+        <translation>不支援 RS-485 模式 %1：請使用 off、auto、kernel 或 rts。</translation>
     </message>
     <message>
         <location filename="../transport/ConnectionSettings.cpp" line="50"/>
         <source>RTS delay %1 µs is not allowed: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own).</source>
-        <translation type="unfinished"></translation>
+        <translation>不允許 RTS 延遲 %1 µs：請使用 0–%2 µs (0：使用驅動程式或 libmodbus 本身的延遲)。</translation>
     </message>
     <message>
         <location filename="../transport/ConnectionSettings.cpp" line="59"/>
@@ -13578,152 +13632,152 @@ then log out and in again (the group applies to new sessions only).</source>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="13"/>
         <source>%1 ms</source>
-        <translation type="unfinished">%1 ms</translation>
+        <translation>%1 ms</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="14"/>
         <source>%1 µs</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 µs</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="31"/>
         <source>RTS high while sending</source>
-        <translation type="unfinished"></translation>
+        <translation>傳送時 RTS 為高準位</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="32"/>
         <source>RTS low while sending</source>
-        <translation type="unfinished"></translation>
+        <translation>傳送時 RTS 為低準位</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="35"/>
         <source>, %1 before and after</source>
-        <translation type="unfinished"></translation>
+        <translation>，傳送前後各 %1</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="37"/>
         <source>, %1 before, %2 after</source>
-        <translation type="unfinished"></translation>
+        <translation>，傳送前 %1，傳送後 %2</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="43"/>
         <source>RS-485: switched by the adapter</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485：由轉接器切換</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="45"/>
         <source>RS-485: kernel mode left on by the driver (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485：驅動程式保持核心模式開啟 (%1)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="49"/>
         <source>RS-485: kernel (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485：核心 (%1)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="52"/>
         <source>RS-485: RTS from the program (%1; kernel mode refused: %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485：由程式控制 RTS (%1；核心模式被拒絕：%2)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="56"/>
         <source>RS-485: RTS from the program (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485：由程式控制 RTS (%1)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="61"/>
         <source>RS-485: not available (kernel mode refused: %1; RTS not switchable: %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485：無法使用 (核心模式被拒絕：%1；RTS 無法切換：%2)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="66"/>
         <source>RS-485: RTS not switchable on this port (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485：此連接埠無法切換 RTS (%1)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="69"/>
         <source>RS-485: kernel mode refused by the driver (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-485：驅動程式拒絕核心模式 (%1)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="78"/>
         <source>latency timer %1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>延遲計時器 %1 ms</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="86"/>
         <source>low latency: not a UART, no adapter latency</source>
-        <translation type="unfinished"></translation>
+        <translation>低延遲：非 UART，無轉接器延遲</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="90"/>
         <source>low latency: on (but %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>低延遲：開啟 (但 %1)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="92"/>
         <source>low latency: on</source>
-        <translation type="unfinished"></translation>
+        <translation>低延遲：開啟</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="95"/>
         <source>low latency: not offered by the driver (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>低延遲：驅動程式不支援 (%1)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="99"/>
         <source>low latency: not offered by the driver (USB adapter: up to %1 ms assumed)</source>
-        <translation type="unfinished"></translation>
+        <translation>低延遲：驅動程式不支援 (USB 轉接器：假設最多 %1 ms)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="103"/>
         <source>low latency: not offered by the driver</source>
-        <translation type="unfinished"></translation>
+        <translation>低延遲：驅動程式不支援</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="107"/>
         <source>low latency: off</source>
-        <translation type="unfinished"></translation>
+        <translation>低延遲：關閉</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="108"/>
         <source>low latency: off (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>低延遲：關閉 (%1)</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="132"/>
         <source>low latency is off</source>
-        <translation type="unfinished"></translation>
+        <translation>低延遲已關閉</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="134"/>
         <source>the driver took low latency but kept its latency timer</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動程式接受了低延遲，但保留了其延遲計時器</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="137"/>
         <source>the driver did not take low latency</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動程式未接受低延遲</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="140"/>
         <source>see docs/hardware.md, or use an adapter whose driver offers low latency</source>
-        <translation type="unfinished"></translation>
+        <translation>請參閱 docs/hardware.md，或改用驅動程式支援低延遲的轉接器</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="144"/>
         <source>as root: echo 1 &gt; %1, or the udev rule in docs/hardware.md</source>
-        <translation type="unfinished"></translation>
+        <translation>以 root 執行：echo 1 &gt; %1，或使用 docs/hardware.md 中的 udev 規則</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="148"/>
         <source>The adapter holds received bytes for up to %1 ms before passing them on (%2). Fix: %3.</source>
-        <translation type="unfinished"></translation>
+        <translation>轉接器會將收到的位元組保留最多 %1 ms 才轉交 (%2)。解決方法：%3。</translation>
     </message>
     <message>
         <location filename="../transport/SerialLineSetup.cpp" line="106"/>
         <source>the driver left it off</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動程式仍維持關閉</translation>
     </message>
 </context>
 <context>
