@@ -11,6 +11,8 @@
 #include "profile/RoleEvaluator.h"
 
 #include <QTemporaryDir>
+#include <cctype>
+#include <string>
 
 using namespace opentop;
 using namespace opentop::test;
@@ -214,6 +216,11 @@ struct DefectCase
     bool wrote;         // whether settings were written before the failure
 };
 
+void PrintTo(const DefectCase& c, std::ostream* os)
+{
+    *os << c.defect;
+}
+
 class EolRunDefectTest : public EolRunTest, public ::testing::WithParamInterface<DefectCase>
 {
 };
@@ -243,7 +250,16 @@ INSTANTIATE_TEST_SUITE_P(
                       DefectCase{"alarm=overload@700ms", "raised an alarm while running: AL007",
                                  true},
                       // A stalled motor trips the overload alarm (3 s) before the wait ends.
-                      DefectCase{"stall", "AL007", true}));
+                      DefectCase{"stall", "AL007", true}),
+    // Named by the defect ("max_speed_800"), not by the bytes of the case.
+    [](const ::testing::TestParamInfo<DefectCase>& param) {
+        std::string name = param.param.defect;
+        for (char& c : name) {
+            if (!std::isalnum(static_cast<unsigned char>(c)))
+                c = '_';
+        }
+        return name;
+    });
 
 TEST_F(EolRunTest, AMissingDriveFailsWithoutSendingAnythingElse)
 {
