@@ -23,16 +23,6 @@ const Profile& dbu()
     return *ProfileRegistry::builtIn().family(QStringLiteral("dbu"));
 }
 
-ConnectionSettings lineSettings(const QString& port, int baud)
-{
-    ConnectionSettings s;
-    s.kind = ConnectionSettings::Kind::Serial;
-    s.port = port;
-    s.baud = baud;
-    s.parity = 'N'; // ptys refuse E and O
-    return s;
-}
-
 // OpenTOP's stack on `port`; frameGapMs < 0 keeps the protocol's inter-frame gap.
 bool stackPoll(const ConnectionSettings& settings, double frameGapMs, const QStringList& names,
                double seconds, StackPoller::Result* result, QString* error)
@@ -111,7 +101,7 @@ bool PollBenchmark::stackOverhead(const BenchEnvironment& env, BenchReport& repo
             return false;
         }
         StackPoller::Result stackRound;
-        if (!stackPoll(lineSettings(sim.pty(), 115200), 0, names, roundSeconds, &stackRound, error))
+        if (!stackPoll(sim.lineSettings(115200), 0, names, roundSeconds, &stackRound, error))
             return false;
         ratios << plainRound.perSecond() / stackRound.perSecond();
         reference.transactions += plainRound.transactions;
@@ -145,7 +135,7 @@ bool PollBenchmark::wireFraction(const BenchEnvironment& env, int baud, BenchRep
     QVector<ReadBlockPlan> plan;
     const QStringList names = StackPoller::backupSettings(dbu(), &plan);
     StackPoller::Result stack;
-    if (!stackPoll(lineSettings(sim.pty(), baud), -1, names, env.seconds, &stack, error))
+    if (!stackPoll(sim.lineSettings(baud), -1, names, env.seconds, &stack, error))
         return false;
     // Each read on the wire: request, gap, the simulator's default turnaround, reply, gap.
     const WireTiming wire(baud, 'N', 2.0);

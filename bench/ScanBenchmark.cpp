@@ -25,16 +25,6 @@ const QString kBus = QStringLiteral("dbu200@1,dcpid@7,dbu200@60{turnaround=14},d
 const QVector<int> kExpected = {1, 7, 60, 150};
 constexpr int kLateDrive = 60;
 
-ConnectionSettings lineSettings(const QString& port, int baud)
-{
-    ConnectionSettings s;
-    s.kind = ConnectionSettings::Kind::Serial;
-    s.port = port;
-    s.baud = baud;
-    s.parity = 'N';
-    return s;
-}
-
 QString list(const QVector<int>& ids)
 {
     QStringList parts;
@@ -122,7 +112,7 @@ bool ScanBenchmark::runCase(int baud, double turnaroundMs, bool peers, BenchRepo
     Scan full;
     Scan absent;
     {
-        const ConnectionSettings settings = lineSettings(sim.pty(), baud);
+        const ConnectionSettings settings = sim.lineSettings(baud);
         ModbusClient client(std::make_unique<RtuBackend>(settings), settings);
         *error = client.openBlocking();
         if (!error->isEmpty())

@@ -9,6 +9,16 @@ SimulatorProcess::~SimulatorProcess()
     stop();
 }
 
+ConnectionSettings SimulatorProcess::lineSettings(int baud) const
+{
+    ConnectionSettings s;
+    s.kind = ConnectionSettings::Kind::Serial;
+    s.port = m_pty;
+    s.baud = baud;
+    s.parity = 'N';
+    return s;
+}
+
 void SimulatorProcess::stop()
 {
     if (m_process.state() == QProcess::NotRunning)

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ConnectionSettings.h"
+
 #include <QProcess>
 #include <QString>
 #include <QStringList>
@@ -16,6 +18,8 @@ public:
     // Starts it with `arguments` (plus --quiet); false with *error when it does not get ready.
     bool start(const QStringList& arguments, QString* error);
     QString pty() const { return m_pty; }
+    // Its pty as a serial line at `baud`, 8N1 (ptys refuse even and odd parity).
+    ConnectionSettings lineSettings(int baud) const;
     void stop();
 
 private:
