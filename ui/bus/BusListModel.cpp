@@ -24,8 +24,8 @@ BusListModel::BusListModel(QObject* parent)
     // A drive that stops answering greys out by the clock, not only when a poll ends.
     m_age.setInterval(500);
     connect(&m_age, &QTimer::timeout, this, [this] {
-        if (!m_devices.isEmpty())
-            emit dataChanged(index(0, Light), index(rowCount() - 1, State));
+        for (int row = 0; row < m_devices.size(); ++row)
+            reportIfChanged(row);
     });
     m_age.start();
 }
@@ -49,6 +49,7 @@ void BusListModel::setPoller(DriveStatusPoller* poller)
     m_poller = poller;
     if (poller)
         connect(poller, &DriveStatusPoller::statusChanged, this, &BusListModel::statusChanged);
+    m_reported.clear();
     if (!m_devices.isEmpty())
         emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1));
 }
@@ -256,6 +257,7 @@ QVariant BusListModel::data(const QModelIndex& index, int role) const
 void BusListModel::upsert(const DeviceInfo& info)
 {
     const int existing = rowOf(info.slave);
+    m_reported.insert(info.slave, lookOf(info));
     if (existing >= 0) {
         m_devices[existing] = info;
         emit dataChanged(index(existing, 0), index(existing, ColumnCount - 1));
@@ -277,6 +279,7 @@ void BusListModel::remove(int slave)
         return;
     beginRemoveRows({}, row, row);
     m_devices.remove(row);
+    m_reported.remove(slave);
     endRemoveRows();
 }
 
@@ -284,6 +287,7 @@ void BusListModel::clear()
 {
     beginResetModel();
     m_devices.clear();
+    m_reported.clear();
     endResetModel();
 }
 
@@ -311,7 +315,30 @@ void BusListModel::statusChanged(int slave)
 {
     const int row = rowOf(slave);
     if (row >= 0)
-        emit dataChanged(index(row, 0), index(row, ColumnCount - 1));
+        reportIfChanged(row);
+}
+
+BusListModel::Look BusListModel::lookOf(const DeviceInfo& d) const
+{
+    const DriveStatus s = status(d.slave);
+    Look look;
+    look.state = display(d, State).toString();
+    look.priority = display(d, Priority).toString();
+    look.light = StatusLight::color(s, shownLed(d.slave)).rgba();
+    look.stale = isStale(d.slave);
+    look.failing = s.consecutiveFailures > 0;
+    return look;
+}
+
+void BusListModel::reportIfChanged(int row)
+{
+    const DeviceInfo& d = m_devices[row];
+    Look look = lookOf(d);
+    const auto it = m_reported.find(d.slave);
+    if (it != m_reported.end() && *it == look)
+        return;
+    m_reported.insert(d.slave, std::move(look));
+    emit dataChanged(index(row, 0), index(row, ColumnCount - 1));
 }
 
 } // namespace opentop

@@ -66,7 +66,26 @@ public:
     static QString duplicateHint(int slave);
 
 private:
+    // What a row's status columns showed when they were last reported.
+    struct Look
+    {
+        QString state;
+        QString priority;
+        QRgb light = 0;
+        bool stale = false;
+        bool failing = false;
+        bool operator==(const Look& o) const
+        {
+            return state == o.state && priority == o.priority && light == o.light &&
+                   stale == o.stale && failing == o.failing;
+        }
+    };
+
     void statusChanged(int slave);
+    Look lookOf(const DeviceInfo& d) const;
+    // Reports row `row` changed when its look did: a poll that changes nothing repaints
+    // nothing, nor makes the view measure every row again for its column widths.
+    void reportIfChanged(int row);
     QVariant display(const DeviceInfo& d, int column) const;
     QString toolTip(const DeviceInfo& d, int column) const;
     QIcon ledIcon(const QColor& color) const; // cached by colour
@@ -74,7 +93,8 @@ private:
     QVector<DeviceInfo> m_devices;
     DriveStatusPoller* m_poller = nullptr;
     mutable QHash<QRgb, QIcon> m_icons;
-    QTimer m_age; // lights and ages follow the clock between polls
+    QHash<int, Look> m_reported; // by machine number
+    QTimer m_age;                // lights and ages follow the clock between polls
 };
 
 } // namespace opentop

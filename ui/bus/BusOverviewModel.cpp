@@ -19,38 +19,34 @@ BusOverviewModel::BusOverviewModel(BusDrives* drives, MonitorHub* hub, QObject* 
     connect(drives, &BusDrives::driveAdded, this, &BusOverviewModel::rebuild);
     connect(drives, &BusDrives::driveRemoved, this, &BusOverviewModel::rebuild);
     connect(drives, &BusDrives::driveChanged, this, &BusOverviewModel::rebuild);
-    // Sixteen drives at 10 Hz are 160 samples a second; the grid is repainted five times a
-    // second instead, which people cannot tell apart and costs a fraction.
+    // Sixteen drives at 10 Hz are 160 samples a second; the grid follows five times a second
+    // instead, which people cannot tell apart and costs a fraction. The same tick moves the
+    // ages on and greys a drive that stops answering.
     m_refresh.setInterval(200);
-    m_refresh.setSingleShot(true);
-    connect(&m_refresh, &QTimer::timeout, this, [this] {
-        if (!m_slaves.isEmpty())
-            emit dataChanged(index(0, 0), index(m_slaves.size() - 1, ColumnCount - 1));
-    });
+    connect(&m_refresh, &QTimer::timeout, this, &BusOverviewModel::refresh);
     connect(hub, &MonitorHub::sample, this, [this](int slave, const MonitorSample&) {
         m_errors.remove(slave);
-        if (!m_refresh.isActive())
-            m_refresh.start();
+        markDue(slave);
     });
     connect(hub, &MonitorHub::error, this, [this](int slave, const QString& text) {
         m_errors.insert(slave, text);
-        if (!m_refresh.isActive())
-            m_refresh.start();
+        markDue(slave);
     });
-    // A drive that stops answering, or a lost link, greys its row within a tick.
-    m_age.setInterval(250);
-    connect(&m_age, &QTimer::timeout, &m_refresh, [this] {
-        if (!m_refresh.isActive())
-            m_refresh.start(0);
-    });
-    m_age.start();
-    connect(hub, &MonitorHub::linkChanged, this, [this] { m_refresh.start(0); });
+    // A lost link greys every row at once.
+    connect(hub, &MonitorHub::linkChanged, this, &BusOverviewModel::refresh);
     rebuild();
 }
 
 bool BusOverviewModel::isStale(int slave) const
 {
     return m_hub->freshness(slave, QDateTime::currentDateTimeUtc()) != Freshness::State::Live;
+}
+
+void BusOverviewModel::markDue(int slave)
+{
+    const int row = rowOf(slave);
+    if (row >= 0)
+        m_rows[row].valuesDue = true;
 }
 
 void BusOverviewModel::rebuild()
@@ -60,14 +56,61 @@ void BusOverviewModel::rebuild()
         if (m_drives->session(s))
             slaves << s;
     }
-    if (slaves == m_slaves) {
-        if (!m_slaves.isEmpty())
-            emit dataChanged(index(0, 0), index(m_slaves.size() - 1, ColumnCount - 1));
-        return;
+    if (slaves != m_slaves) {
+        beginResetModel();
+        m_slaves = slaves;
+        m_rows = QVector<Row>(slaves.size());
+        const QDateTime now = QDateTime::currentDateTimeUtc();
+        for (int r = 0; r < m_slaves.size(); ++r)
+            evaluate(r, now);
+        endResetModel();
+    } else {
+        for (Row& row : m_rows)
+            row.valuesDue = true; // identified again: another model, other values
+        refresh();
     }
-    beginResetModel();
-    m_slaves = slaves;
-    endResetModel();
+    if (m_slaves.isEmpty())
+        m_refresh.stop();
+    else if (!m_refresh.isActive())
+        m_refresh.start();
+}
+
+void BusOverviewModel::refresh()
+{
+    const QDateTime now = QDateTime::currentDateTimeUtc();
+    for (int r = 0; r < m_slaves.size(); ++r) {
+        // One cell at a time: a view repaints that cell only, not the whole grid.
+        for (int c : evaluate(r, now))
+            emit dataChanged(index(r, c), index(r, c));
+    }
+}
+
+QVector<int> BusOverviewModel::evaluate(int r, const QDateTime& now)
+{
+    const int slave = m_slaves[r];
+    const Freshness::State state = m_hub->freshness(slave, now);
+    Row next = m_rows[r];
+    next.stale = state != Freshness::State::Live;
+    next.error = m_errors.contains(slave);
+    if (next.valuesDue) {
+        next.valuesDue = false;
+        const std::optional<MonitorSample> s = m_hub->latest(slave);
+        next.alarm = s && s->alarmActive.value_or(false);
+        for (int c = 0; c < ColumnCount; ++c) {
+            if (c != Communication)
+                next.text[c] = valueCell(slave, c, s);
+        }
+    }
+    next.text[Communication] = communicationCell(slave, state, now);
+    const Row& was = m_rows[r];
+    const bool look = next.stale != was.stale || next.alarm != was.alarm || next.error != was.error;
+    QVector<int> changed;
+    for (int c = 0; c < ColumnCount; ++c) {
+        if (look || next.text[c] != was.text[c])
+            changed << c;
+    }
+    m_rows[r] = std::move(next);
+    return changed;
 }
 
 int BusOverviewModel::rowCount(const QModelIndex& parent) const
@@ -108,25 +151,26 @@ QVariant BusOverviewModel::headerData(int section, Qt::Orientation orientation, 
 
 QString BusOverviewModel::text(int slave, Column column) const
 {
-    return cell(slave, column);
+    const int row = rowOf(slave);
+    return row >= 0 ? m_rows[row].text[column] : QString();
 }
 
-QString BusOverviewModel::cell(int slave, int column) const
+QString BusOverviewModel::communicationCell(int slave, Freshness::State state,
+                                            const QDateTime& now) const
 {
-    const DeviceInfo info = m_drives->info(slave);
+    const QString age = StaleLook::ageText(state, m_hub->lastAnswer(slave), now);
+    if (!m_drives->linkUp())
+        return tr("connection lost; %1").arg(age);
+    if (m_errors.contains(slave))
+        return tr("no answer: %1; %2").arg(m_errors.value(slave), age);
+    return age;
+}
+
+QString BusOverviewModel::valueCell(int slave, int column,
+                                    const std::optional<MonitorSample>& s) const
+{
     if (column == Drive)
-        return tr("%1 %2").arg(slave).arg(info.shortModel());
-    const std::optional<MonitorSample> s = m_hub->latest(slave);
-    if (column == Communication) {
-        const QDateTime now = QDateTime::currentDateTimeUtc();
-        const QString age =
-            StaleLook::ageText(m_hub->freshness(slave, now), m_hub->lastAnswer(slave), now);
-        if (!m_drives->linkUp())
-            return tr("connection lost; %1").arg(age);
-        if (m_errors.contains(slave))
-            return tr("no answer: %1; %2").arg(m_errors.value(slave), age);
-        return age;
-    }
+        return tr("%1 %2").arg(slave).arg(m_drives->info(slave).shortModel());
     if (!s)
         return QString();
     const DeviceSession* session = m_drives->session(slave);
@@ -168,29 +212,27 @@ QVariant BusOverviewModel::data(const QModelIndex& index, int role) const
 {
     if (!index.isValid() || index.row() >= m_slaves.size())
         return {};
-    const int slave = m_slaves[index.row()];
+    const Row& row = m_rows[index.row()];
+    const int column = index.column();
     if (role == Qt::DisplayRole || role == Qt::ToolTipRole)
-        return cell(slave, index.column());
-    if (role == Qt::TextAlignmentRole && index.column() >= Speed && index.column() <= Load)
+        return row.text[column];
+    if (role == Qt::TextAlignmentRole && column >= Speed && column <= Load)
         return int(Qt::AlignRight | Qt::AlignVCenter);
-    const std::optional<MonitorSample> s = m_hub->latest(slave);
-    const bool stale = isStale(slave);
     if (role == StaleRole)
-        return stale;
+        return row.stale;
     // Not live: every value grey, an alarm no longer red (it may have cleared meanwhile).
-    if (role == Qt::ForegroundRole && stale && index.column() != Drive)
+    if (role == Qt::ForegroundRole && row.stale && column != Drive)
         return QBrush(StaleLook::grey());
     if (role == Qt::BackgroundRole) {
-        if (stale)
-            return index.column() == Communication ? QVariant(QBrush(QColor(0xff, 0xe0, 0x82)))
-                                                   : QVariant();
-        if (index.column() == Alarm && s && s->alarmActive.value_or(false))
+        if (row.stale)
+            return column == Communication ? QVariant(QBrush(QColor(0xff, 0xe0, 0x82)))
+                                           : QVariant();
+        if (column == Alarm && row.alarm)
             return QBrush(QColor(0xe5, 0x1c, 0x23));
-        if (index.column() == Communication && m_errors.contains(slave))
+        if (column == Communication && row.error)
             return QBrush(QColor(0xff, 0xe0, 0x82));
     }
-    if (role == Qt::ForegroundRole && index.column() == Alarm && s &&
-        s->alarmActive.value_or(false))
+    if (role == Qt::ForegroundRole && column == Alarm && row.alarm)
         return QBrush(Qt::white);
     return {};
 }

@@ -1,11 +1,13 @@
 #pragma once
 
 #include "monitor/DeviceMonitor.h"
+#include "monitor/Freshness.h"
 
 #include <QAbstractTableModel>
 #include <QHash>
 #include <QTimer>
 #include <QVector>
+#include <optional>
 
 namespace opentop {
 
@@ -14,7 +16,9 @@ class MonitorHub;
 
 // Every drive on the bus in one table, live from the MonitorHub: state and direction, speed
 // (r/min and the drive's display unit), target, load, the active alarm and when the drive
-// last answered. Rows are the drives with a profile, by machine number.
+// last answered. Rows are the drives with a profile, by machine number. The cells are worked
+// out a few times a second into a cache, and only those whose text or look changed are
+// reported: views repaint what changed, at that rate, however many samples arrive.
 class BusOverviewModel : public QAbstractTableModel
 {
     Q_OBJECT
@@ -46,18 +50,35 @@ public:
     QVector<int> slaves() const { return m_slaves; }
     bool isStale(int slave) const;
     int rowOf(int slave) const { return m_slaves.indexOf(slave); }
+    // What the grid shows (worked out at the last refresh).
     QString text(int slave, Column column) const;
 
 private:
+    // What a row shows, as last worked out.
+    struct Row
+    {
+        QString text[ColumnCount];
+        bool stale = false;
+        bool alarm = false;    // active alarm
+        bool error = false;    // the last poll failed
+        bool valuesDue = true; // a sample or error came since the values were worked out
+    };
+
     void rebuild();
-    QString cell(int slave, int column) const;
+    // Works out the due rows' values and every row's age and look; reports what changed.
+    void refresh();
+    // Works out row `r` again; the columns whose text or look changed.
+    QVector<int> evaluate(int r, const QDateTime& now);
+    QString valueCell(int slave, int column, const std::optional<MonitorSample>& s) const;
+    QString communicationCell(int slave, Freshness::State state, const QDateTime& now) const;
+    void markDue(int slave);
 
     BusDrives* m_drives;
     MonitorHub* m_hub;
     QVector<int> m_slaves;
+    QVector<Row> m_rows;          // one per slave, in m_slaves' order
     QHash<int, QString> m_errors; // the last poll failed: why
-    QTimer m_refresh;
-    QTimer m_age; // the ages follow the clock, also when no sample comes
+    QTimer m_refresh; // the values, the ages and the looks follow, also when no sample comes
 };
 
 } // namespace opentop

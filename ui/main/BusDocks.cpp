@@ -12,7 +12,9 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QMainWindow>
+#include <QScreen>
 #include <QTableView>
+#include <algorithm>
 
 namespace opentop {
 
@@ -80,8 +82,18 @@ void BusDocks::replace(const QString& name, QWidget* widget)
 
 void BusDocks::monitorAll(const QVector<int>& slaves)
 {
-    dock(QStringLiteral("overviewDock"))->show();
-    dock(QStringLiteral("trendDock"))->show();
+    QDockWidget* overview = dock(QStringLiteral("overviewDock"));
+    overview->show();
+    overview->raise();
+    // A window of its own: as a tab behind the overview it would be neither seen nor drawn,
+    // and beside it the window would no longer fit a laptop's screen.
+    QDockWidget* trends = dock(QStringLiteral("trendDock"));
+    trends->setFloating(true);
+    trends->show();
+    const QRect screen = m_window->screen()->availableGeometry();
+    trends->resize(std::min(900, screen.width()), std::min(480, screen.height()));
+    trends->move(screen.right() - trends->frameGeometry().width() + 1,
+                 screen.bottom() - trends->frameGeometry().height() + 1);
     m_trends->showDrives(slaves);
 }
 

@@ -32,7 +32,7 @@ public:
     void fill(BusDrives* drives, MonitorHub* hub, BusGroupTracker* groups, BusPanel* panel);
     // Back to "Not connected" (the views are deleted).
     void clear();
-    // Shows the bus overview and the trends of `slaves`.
+    // Shows the bus overview and, in a window of its own, the trends of `slaves`.
     void monitorAll(const QVector<int>& slaves);
 
     BusOverview* overview() const { return m_overview; }

@@ -208,16 +208,13 @@ void TrendChart::refresh()
         m_to = QDateTime::currentMSecsSinceEpoch();
         m_from = m_to - m_windowMs;
     }
-    m_timeAxis->setRange(QDateTime::fromMSecsSinceEpoch(m_from),
-                         QDateTime::fromMSecsSinceEpoch(m_to));
     // Lines whose history had no unit yet when they were added get their axis now.
     if (m_lines.describeAgain())
         rebuild();
     // At most about two points per pixel column are worth drawing.
     const int buckets = std::max(100, int(m_chart->plotArea().width()));
-    m_lines.draw(m_from, m_to, buckets);
     m_axes.fitTitles(m_chart->plotArea().height());
-    m_lines.fitValueAxes(m_from, m_to);
+    m_lines.draw(m_from, m_to, buckets);
     if (m_markers[0] || m_markers[1])
         updateReadout();
 }

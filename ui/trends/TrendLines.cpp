@@ -122,28 +122,51 @@ void TrendLines::rebuild(const NameOf& nameOf)
 
 void TrendLines::draw(qint64 fromMs, qint64 toMs, int buckets)
 {
-    for (Line& line : m_lines)
-        drawLine(line, fromMs, toMs, buckets);
+    // The visible points of the lines whose history or window changed since they were drawn.
+    QVector<std::optional<Segments>> next(m_lines.size());
+    for (int i = 0; i < m_lines.size(); ++i)
+        next[i] = pointsToDraw(m_lines[i], fromMs, toMs, buckets);
+    // The charts lay every series out again whenever an axis' range changes, and again when
+    // its points are replaced: the lines about to be replaced are emptied before the axes
+    // move, so that each is laid out once, with its new points.
+    for (int i = 0; i < m_lines.size(); ++i) {
+        if (next[i]) {
+            for (QLineSeries* series : m_lines[i].allSeries())
+                series->replace(QList<QPointF>());
+        }
+    }
+    m_timeAxis->setRange(QDateTime::fromMSecsSinceEpoch(fromMs),
+                         QDateTime::fromMSecsSinceEpoch(toMs));
+    fitValueAxes(next, fromMs, toMs);
+    for (int i = 0; i < m_lines.size(); ++i) {
+        if (next[i])
+            replacePoints(m_lines[i], *next[i]);
+    }
 }
 
-void TrendLines::drawLine(Line& line, qint64 fromMs, qint64 toMs, int buckets)
+std::optional<TrendLines::Segments> TrendLines::pointsToDraw(Line& line, qint64 fromMs, qint64 toMs,
+                                                             int buckets) const
 {
     const TrendHistory::Series* s = historyOf(line.source);
     const int count = s ? int(s->points.size()) : 0;
     const qint64 last = count ? s->points.last().ms : -1;
     if (line.drawnFrom == fromMs && line.drawnTo == toMs && line.drawnCount == count &&
         line.drawnLast == last)
-        return;
+        return std::nullopt;
     line.drawnFrom = fromMs;
     line.drawnTo = toMs;
     line.drawnCount = count;
     line.drawnLast = last;
     // A gap in the history (polling stopped, no answer) is longer than a value stays live.
     const qint64 gapMs = Freshness::staleAfterMs(m_hub ? m_hub->interval() : 200);
-    QVector<QList<QPointF>> parts =
-        s ? TrendPoints::segments(*s, fromMs, toMs, buckets, gapMs) : QVector<QList<QPointF>>();
+    Segments parts = s ? TrendPoints::segments(*s, fromMs, toMs, buckets, gapMs) : Segments();
     if (parts.isEmpty())
         parts << QList<QPointF>();
+    return parts;
+}
+
+void TrendLines::replacePoints(Line& line, const Segments& parts)
+{
     line.series->replace(parts.first());
     // Every further segment in a series of its own with the same pen and no legend entry.
     while (line.extra.size() < parts.size() - 1) {
@@ -171,21 +194,30 @@ QList<QLineSeries*> TrendLines::Line::allSeries() const
     return list;
 }
 
-void TrendLines::fitValueAxes(qint64 fromMs, qint64 toMs)
+void TrendLines::fitValueAxes(const QVector<std::optional<Segments>>& next, qint64 fromMs,
+                              qint64 toMs)
 {
     for (int side : {0, 1}) {
         double lo = std::numeric_limits<double>::max();
         double hi = std::numeric_limits<double>::lowest();
-        for (const Line& line : m_lines) {
+        const auto include = [&](const QList<QPointF>& points) {
+            for (const QPointF& p : points) {
+                if (p.x() >= double(fromMs) && p.x() <= double(toMs)) {
+                    lo = std::min(lo, p.y());
+                    hi = std::max(hi, p.y());
+                }
+            }
+        };
+        for (int i = 0; i < m_lines.size(); ++i) {
+            const Line& line = m_lines[i];
             if (m_axes->sideOf(line.unit) != side)
                 continue;
-            for (const QLineSeries* series : line.allSeries()) {
-                for (const QPointF& p : series->points()) {
-                    if (p.x() >= double(fromMs) && p.x() <= double(toMs)) {
-                        lo = std::min(lo, p.y());
-                        hi = std::max(hi, p.y());
-                    }
-                }
+            if (next[i]) {
+                for (const QList<QPointF>& part : *next[i])
+                    include(part);
+            } else {
+                for (const QLineSeries* series : line.allSeries())
+                    include(series->points());
             }
         }
         m_axes->setRange(side, lo, hi);

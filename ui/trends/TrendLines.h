@@ -4,10 +4,12 @@
 #include "monitor/TrendHistory.h"
 
 #include <QList>
+#include <QPointF>
 #include <QPointer>
 #include <QString>
 #include <QVector>
 #include <functional>
+#include <optional>
 
 class QChart;
 class QDateTimeAxis;
@@ -65,14 +67,20 @@ public:
     void rebuild(const NameOf& nameOf);
     // Describes every line again; true when a label or unit changed (rebuild() then).
     bool describeAgain();
-    // The points of [fromMs, toMs], thinned to `buckets`.
+    // The points of [fromMs, toMs], thinned to `buckets`, on the time axis set to that range
+    // and the value axes fitted to the points in it.
     void draw(qint64 fromMs, qint64 toMs, int buckets);
-    // Each value axis fitted to the points of its lines in [fromMs, toMs].
-    void fitValueAxes(qint64 fromMs, qint64 toMs);
 
 private:
+    using Segments = QVector<QList<QPointF>>;
+
     void describe(Line& line) const;
-    void drawLine(Line& line, qint64 fromMs, qint64 toMs, int buckets);
+    // The points `line` is to show; none when it shows them already.
+    std::optional<Segments> pointsToDraw(Line& line, qint64 fromMs, qint64 toMs, int buckets) const;
+    void replacePoints(Line& line, const Segments& parts);
+    // Each value axis fitted to the points in [fromMs, toMs] its lines are to show (`next`)
+    // or show.
+    void fitValueAxes(const QVector<std::optional<Segments>>& next, qint64 fromMs, qint64 toMs);
 
     QPointer<MonitorHub> m_hub; // the chart may outlive it while a window closes
     QChart* m_chart;

@@ -2,6 +2,8 @@
 
 #include <QTabWidget>
 
+class QStackedWidget;
+
 namespace opentop {
 
 // A page stack with its titles listed on the left (SideTabBar): a drive's ten pages all in
@@ -11,6 +13,12 @@ class SideTabWidget : public QTabWidget
     Q_OBJECT
 public:
     explicit SideTabWidget(QWidget* parent = nullptr);
+
+protected:
+    bool event(QEvent* event) override;
+
+private:
+    QStackedWidget* m_stack;
 };
 
 } // namespace opentop

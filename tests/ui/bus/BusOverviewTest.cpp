@@ -7,6 +7,7 @@
 #include "monitor/MonitorHub.h"
 
 #include <QBrush>
+#include <QSignalSpy>
 #include <QTableView>
 
 using namespace opentop;
@@ -93,4 +94,22 @@ TEST_F(BusOverviewTest, HiddenItPollsNothing)
     const int frames = framesSent();
     waitUntil([] { return false; }, 300);
     EXPECT_EQ(framesSent(), frames);
+}
+
+TEST_F(BusOverviewTest, ReportsTheCellsThatChangedOnlyOneAtATime)
+{
+    overview->show();
+    ASSERT_TRUE(waitUntil([&] {
+        return cell(1, BusOverviewModel::State) == QStringLiteral("Stopped") &&
+               cell(7, BusOverviewModel::Speed) == QStringLiteral("0 1/s");
+    }));
+    // A dozen samples of each drive and a few refreshes: the stopped drives' values stay; at
+    // most their ages move on. A view repaints those cells, not the grid.
+    QSignalSpy spy(overview->model(), &QAbstractItemModel::dataChanged);
+    waitUntil([] { return false; }, 700);
+    for (const QList<QVariant>& args : spy) {
+        const QModelIndex from = args.at(0).value<QModelIndex>();
+        EXPECT_EQ(from, args.at(1).value<QModelIndex>());
+        EXPECT_EQ(from.column(), BusOverviewModel::Communication);
+    }
 }

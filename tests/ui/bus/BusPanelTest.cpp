@@ -16,6 +16,7 @@
 #include <QItemSelectionModel>
 #include <QMenu>
 #include <QProgressBar>
+#include <QSignalSpy>
 #include <QTableView>
 #include <functional>
 #include <gtest/gtest.h>
@@ -203,6 +204,22 @@ TEST_F(BusPanelTest, StatusLightsFollowAStartedDrive)
     EXPECT_TRUE(tip.contains(QStringLiteral("Status light Red: "))) << qPrintable(tip);
     EXPECT_TRUE(tip.contains(QStringLiteral("The drive's manual: Alarm; Flashes")))
         << qPrintable(tip);
+}
+
+TEST_F(BusPanelTest, APollThatChangesNothingRepaintsNothing)
+{
+    open(QStringLiteral("dbu200@1"));
+    scan(1, 2);
+    poller->start();
+    ASSERT_TRUE(waitFor([&] { return led(1) == Led::Green; }));
+    // A dozen polls that find the drive as it was: the row is not reported changed, so the
+    // list neither repaints it nor measures every row again for its column widths.
+    QSignalSpy spy(model(), &QAbstractItemModel::dataChanged);
+    waitFor([] { return false; }, 400);
+    EXPECT_EQ(spy.count(), 0);
+    ASSERT_TRUE(write(1, "core.control_priority", QStringLiteral("2")).ok);
+    ASSERT_TRUE(waitFor([&] { return !spy.isEmpty(); }));
+    EXPECT_EQ(text(1, BusListModel::Priority), QStringLiteral("Communication priority"));
 }
 
 TEST_F(BusPanelTest, AScanPausesThePollerAndResumesIt)
