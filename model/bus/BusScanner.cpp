@@ -107,9 +107,12 @@ void BusScanner::askProfile(int profileIndex, bool confirming)
         rule.function == 4 ? ModbusRequest::readInput(quint8(m_slave), rule.address, rule.count)
                            : ModbusRequest::readHolding(quint8(m_slave), rule.address, rule.count);
     // A drive asked again because it answered late: four waits, or the connection's timeout.
+    // The last address of the pass has no next request to catch its late reply: four waits.
+    const bool last = !m_reasking && m_slave == m_to;
     request.timeoutMs =
         m_reasking ? std::clamp(std::max(4 * m_effectiveWaitMs, m_client->settings().timeoutMs),
                                 kMinWaitMs, kMaxWaitMs)
+        : last     ? std::clamp(4 * m_effectiveWaitMs, kMinWaitMs, kMaxWaitMs)
                    : m_effectiveWaitMs;
     // Silence is the normal answer in a scan: retrying it would only double the scan time.
     request.retries = 0;

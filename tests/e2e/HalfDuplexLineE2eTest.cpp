@@ -110,3 +110,34 @@ TEST(HalfDuplexLineE2e, AScanFindsADriveWhoseLateReplyCollidedWithTheNextRequest
     EXPECT_TRUE(devices[1].detail.contains(QStringLiteral("answered late")))
         << devices[1].detail.toStdString();
 }
+
+TEST(HalfDuplexLineE2e, TheLastAddressOfAScanWaitsLongEnoughForALateAnswer)
+{
+    // Nothing follows the last address for its late reply to turn up in: a drive there that
+    // answers 30 ms after the gap (after the 18 ms wait) is found all the same.
+    SimProcess sim;
+    QString error;
+    ASSERT_TRUE(sim.start({QStringLiteral("--devices"), QStringLiteral("dbu200@9{turnaround=30}"),
+                           QStringLiteral("--wire-timing"), QStringLiteral("--half-duplex"),
+                           QStringLiteral("--baud"), QStringLiteral("19200")},
+                          &error))
+        << error.toStdString();
+    const ConnectionSettings settings = line(sim.pty, 19200);
+    ModbusClient client(std::make_unique<RtuBackend>(settings), settings);
+    ASSERT_TRUE(client.openBlocking().isEmpty());
+    BusScanner scanner(&client, ProfileRegistry::builtIn());
+    scanner.setRange(9, 9);
+    QVector<DeviceInfo> devices;
+    QEventLoop loop;
+    QObject::connect(&scanner, &BusScanner::finished, [&](const QVector<DeviceInfo>& found) {
+        devices = found;
+        loop.quit();
+    });
+    QTimer::singleShot(30000, &loop, &QEventLoop::quit);
+    scanner.start();
+    loop.exec();
+
+    ASSERT_EQ(devices.size(), 1);
+    EXPECT_EQ(devices[0].slave, 9);
+    EXPECT_EQ(devices[0].state, DeviceInfo::State::Present);
+}
