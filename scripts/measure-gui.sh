@@ -90,7 +90,7 @@ motors 0
 for _ in $(seq $((margin + 30))); do kill -0 "$pid" 2>/dev/null && sleep 1; done
 kill -0 "$pid" 2>/dev/null && { echo "measure-gui: opentop did not quit" >&2; exit 1; }
 wait "$pid" || { echo "measure-gui: opentop failed:" >&2; cat "$work/err" >&2; exit 1; }
-(( n > 0 )) || { echo "measure-gui: nothing measured ($monitoring s to start monitoring); make DURATION longer" >&2; tail -5 "$work/err" >&2; exit 1; }
+(( n > 0 )) || { echo "measure-gui: nothing measured ($monitoring s to start monitoring); make DURATION longer" >&2; tail -5 "$work/err" >&2; grep "^monitor:" "$work/out" | tail -2 >&2; exit 1; }
 
 grep -v '^drive \|^monitor: ' "$work/out" || true
 awk '/^drive / {n++; s += $(NF-1); if (min == "" || $(NF-1) < min) min = $(NF-1)}

@@ -66,8 +66,11 @@ void PanelMirrorView::setShown(const PanelMirror::Shown& shown, const QString& c
     m_content->setText(contentName.isEmpty()
                            ? QString()
                            : tr("Panel set to show the %1 while running.").arg(contentName));
-    m_panel->setAccessibleName(tr("Drive panel shows %1").arg(shown.text));
-    m_panel->setToolTip(m_panel->accessibleName());
+    const QString name = tr("Drive panel shows %1").arg(shown.text);
+    if (name != m_panel->accessibleName()) { // every sample: announced only when it changes
+        m_panel->setAccessibleName(name);
+        m_panel->setToolTip(name);
+    }
     paintPanel();
 }
 

@@ -207,8 +207,10 @@ void TrafficLogView::catchUp()
 
 void TrafficLogView::addDriveChoice(int slave)
 {
-    if (m_drive->findData(slave) >= 0)
+    // Asked for every frame (a thousand a second): a set, not a search through the list.
+    if (m_driveChoices.contains(slave))
         return;
+    m_driveChoices.insert(slave);
     int index = 1;
     while (index < m_drive->count() && m_drive->itemData(index).toInt() < slave)
         ++index;
@@ -275,8 +277,22 @@ void TrafficLogView::refresh()
                                    QString::number(s.meanMs(), 'f', 1),
                                    QString::number(s.maxMs, 'f', 1)};
         for (int column = 0; column < texts.size(); ++column)
-            m_stats->setItem(row, column, cell(texts[column]));
+            setStatsCell(row, column, texts[column]);
     }
+}
+
+void TrafficLogView::setStatsCell(int row, int column, const QString& text)
+{
+    // Five times a second: the items stay, and only a count that changed is repainted.
+    QTableWidgetItem* item = m_stats->item(row, column);
+    if (item && m_stats->columnSpan(row, column) == 1 &&
+        item->textAlignment() == int(Qt::AlignRight | Qt::AlignVCenter) &&
+        item->toolTip().isEmpty()) {
+        if (item->text() != text)
+            item->setText(text);
+        return;
+    }
+    m_stats->setItem(row, column, cell(text));
 }
 
 void TrafficLogView::save()

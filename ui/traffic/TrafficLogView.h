@@ -2,6 +2,7 @@
 
 #include "traffic/TrafficStatistics.h"
 
+#include <QSet>
 #include <QVector>
 #include <QWidget>
 
@@ -43,6 +44,7 @@ private:
     void addEntry(const TrafficEntry& entry);
     void catchUp();
     void addDriveChoice(int slave);
+    void setStatsCell(int row, int column, const QString& text);
     void applyFilters();
     void refreshSoon();
     void refresh();
@@ -62,6 +64,7 @@ private:
     QPushButton* m_pause;
     QTableView* m_table;
     QTableWidget* m_stats;
+    QSet<int> m_driveChoices; // the drives m_drive offers
     QTimer* m_refresh;
 };
 

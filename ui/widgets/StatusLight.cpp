@@ -39,7 +39,7 @@ void StatusLight::setLed(DriveStatus::Led led, const QString& meaning, const Sta
 {
     m_led = led;
     m_meaning = meaning;
-    m_color = entry ? QColor(entry->colour) : color(led);
+    const QColor colour = entry ? QColor(entry->colour) : color(led);
     QString text =
         tr("Status light %1: %2").arg(entry ? entry->label : DriveStatus::ledName(led), meaning);
     if (entry) {
@@ -47,6 +47,10 @@ void StatusLight::setLed(DriveStatus::Led led, const QString& meaning, const Sta
         manual.ledEntry = *entry;
         text += QLatin1Char('\n') + tr("The drive's manual: %1").arg(manual.ledManualText());
     }
+    // Every sample sets the light: repainted and announced only when it changes.
+    if (colour == m_color && text == toolTip())
+        return;
+    m_color = colour;
     setToolTip(text);
     setAccessibleName(text);
     update();

@@ -123,7 +123,9 @@ ParameterPage* DriveWorkspace::page(const QString& title) const
 
 void DriveWorkspace::updateButtons()
 {
-    const int pending = m_parameters ? m_parameters->pendingNames().size() : 0;
+    // Once: every value read (a monitor's, many a second) comes here.
+    const QStringList pendingNames = m_parameters ? m_parameters->pendingNames() : QStringList();
+    const int pending = int(pendingNames.size());
     m_writeAll->setEnabled(pending > 0);
     m_revertAll->setEnabled(pending > 0);
     m_rereadAll->setEnabled(m_parameters != nullptr);
@@ -135,7 +137,7 @@ void DriveWorkspace::updateButtons()
         if (!page || !m_parameters)
             continue;
         int onPage = 0;
-        for (const QString& n : m_parameters->pendingNames())
+        for (const QString& n : pendingNames)
             onPage += page->parameterNames().contains(n) ? 1 : 0;
         // Only on a change: every monitor sample updates entries, and a new tab text makes the
         // tab bar lay itself out again.

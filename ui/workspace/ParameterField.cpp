@@ -171,19 +171,30 @@ void ParameterField::sync()
                          (e->state == DeviceParameters::State::Failed && !e->pendingText.isEmpty());
     if (m_combo) {
         // The options follow the context (the I/O functions of the current control mode).
-        m_combo->clear();
+        QVector<QPair<QString, QString>> items;
         for (const EnumOption& o : spec.options)
-            m_combo->addItem(o.label, QString::number(o.value));
+            items << qMakePair(o.label, QString::number(o.value));
         const QVector<quint16> shown = pending ? e->pendingRegisters : e->device.registers;
         int index = -1;
         if (!shown.isEmpty()) {
-            const double raw = ValueCodec::registersToRaw(meta, shown);
-            index = m_combo->findData(QString::number(qint64(raw)));
+            const QString code = QString::number(qint64(ValueCodec::registersToRaw(meta, shown)));
+            for (int i = 0; i < items.size() && index < 0; ++i)
+                index = items[i].second == code ? i : -1;
             if (index < 0) { // a code this context does not offer: show it, marked
-                m_combo->addItem(tr("%1 (not valid now)").arg(anyLabel(meta, qint64(raw))),
-                                 QString::number(qint64(raw)));
-                index = m_combo->count() - 1;
+                items << qMakePair(tr("%1 (not valid now)").arg(anyLabel(meta, code.toLongLong())),
+                                   code);
+                index = int(items.size()) - 1;
             }
+        }
+        // A value the monitor reads many times a second keeps its list: rebuilt on a change.
+        bool same = m_combo->count() == items.size();
+        for (int i = 0; same && i < items.size(); ++i)
+            same = m_combo->itemText(i) == items[i].first &&
+                   m_combo->itemData(i).toString() == items[i].second;
+        if (!same) {
+            m_combo->clear();
+            for (const auto& [label, code] : items)
+                m_combo->addItem(label, code);
         }
         m_combo->setCurrentIndex(index);
     } else if (!m_edit->hasFocus() || !m_edit->isModified()) {
@@ -216,7 +227,8 @@ void ParameterField::sync()
     if (!e->message.isEmpty())
         tip += QStringLiteral("<br><span style='color:#b01c1c'>%1</span>")
                    .arg(m_parameters->problemText(m_name).toHtmlEscaped());
-    editor()->setToolTip(tip);
+    if (editor()->toolTip() != tip)
+        editor()->setToolTip(tip);
     applyStyle();
 }
 

@@ -51,8 +51,11 @@ ParameterPage::ParameterPage(DeviceParameters* parameters, const QString& title,
     connect(parameters, &DeviceParameters::entryChanged, this, [this](const QString& name) {
         if (parameterNames().contains(name)) {
             parameterChanged(name);
+            // Mostly a value read again (a monitor's, many a second): the edits stay.
+            const int pending = m_pending;
             updateButtons();
-            emit pendingChanged();
+            if (m_pending != pending)
+                emit pendingChanged();
         }
     });
     // parameterNames() is the subclass's: ask it once construction is complete.
@@ -77,6 +80,7 @@ void ParameterPage::updateButtons()
         if (parameterNames().contains(n))
             pending << n;
     }
+    m_pending = int(pending.size());
     m_write->setEnabled(!m_busy && !pending.isEmpty());
     m_revert->setEnabled(!m_busy && !pending.isEmpty());
     m_reread->setEnabled(!m_busy);

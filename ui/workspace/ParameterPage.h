@@ -64,6 +64,7 @@ private:
     QPushButton* m_revert;
     QPushButton* m_reread;
     bool m_busy = false;
+    int m_pending = 0; // edits pending on this page, as the buttons show
 };
 
 } // namespace opentop
