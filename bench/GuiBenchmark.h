@@ -4,8 +4,8 @@
 
 namespace opentop {
 
-// The `opentop` program monitoring simulated drives over a pty (opentop-sim in its own
-// process, so the figures are the GUI's alone), with the bus overview and every
+// The `opentop` program monitoring drives simulated in its own process (--sim; the figures
+// include the simulation), with the bus overview and every
 // drive's trend open (--monitor-all): 16 drives at 10 Hz and 64 drives at 2 Hz. CPU time over
 // wall time after a warm-up, and resident memory, read from /proc.
 class GuiBenchmark : public Benchmark
