@@ -3,8 +3,11 @@
 #include <QApplication>
 #include <gtest/gtest.h>
 
+#include "PrivateUserDirs.h"
+
 int main(int argc, char** argv)
 {
+    const opentop::test::PrivateUserDirs dirs;
     qputenv("QT_QPA_PLATFORM", QByteArrayLiteral("offscreen:configfile=" OPENTOP_SOURCE_DIR
                                                  "/tests/support/offscreen-laptop.json"));
     QApplication app(argc, argv);

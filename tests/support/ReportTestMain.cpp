@@ -3,8 +3,11 @@
 #include <QGuiApplication>
 #include <gtest/gtest.h>
 
+#include "PrivateUserDirs.h"
+
 int main(int argc, char** argv)
 {
+    const opentop::test::PrivateUserDirs dirs;
     qputenv("QT_QPA_PLATFORM", QByteArrayLiteral("offscreen"));
     QGuiApplication app(argc, argv);
     ::testing::InitGoogleTest(&argc, argv);

@@ -3,8 +3,11 @@
 #include <QCoreApplication>
 #include <gtest/gtest.h>
 
+#include "PrivateUserDirs.h"
+
 int main(int argc, char** argv)
 {
+    const opentop::test::PrivateUserDirs dirs;
     QCoreApplication app(argc, argv);
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();

@@ -1,0 +1,33 @@
+// Gives a test process its own settings, data and cache folders. ctest runs two test processes
+// at once, and QSettings is one file per user: a test clearing the settings in its set-up
+// erased what a test running beside it had just remembered (CI failed so, once).
+#pragma once
+#include <QByteArray>
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+
+namespace opentop::test {
+
+class PrivateUserDirs
+{
+public:
+    // Before the application object exists, so Qt reads the folders from the environment;
+    // programs the test starts inherit them.
+    PrivateUserDirs()
+    {
+        if (!m_dir.isValid())
+            return;
+        for (const char* name : {"config", "data", "cache"}) {
+            const QString path = m_dir.filePath(QString::fromLatin1(name));
+            QDir().mkpath(path);
+            const QByteArray var = QByteArray("XDG_") + QByteArray(name).toUpper() + "_HOME";
+            qputenv(var.constData(), QFile::encodeName(path));
+        }
+    }
+
+private:
+    QTemporaryDir m_dir;
+};
+
+} // namespace opentop::test
