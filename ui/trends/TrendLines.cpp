@@ -160,6 +160,8 @@ std::optional<TrendLines::Segments> TrendLines::pointsToDraw(Line& line, qint64 
     // A gap in the history (polling stopped, no answer) is longer than a value stays live.
     const qint64 gapMs = Freshness::staleAfterMs(m_hub ? m_hub->interval() : 200);
     Segments parts = s ? TrendPoints::segments(*s, fromMs, toMs, buckets, gapMs) : Segments();
+    for (QList<QPointF>& part : parts)
+        TrendPoints::dropRepeats(&part, fromMs, toMs, gapMs);
     if (parts.isEmpty())
         parts << QList<QPointF>();
     return parts;
