@@ -116,6 +116,7 @@ void TrendLines::rebuild(const NameOf& nameOf)
         m_chart->addSeries(line.series);
         line.series->attachAxis(m_timeAxis);
         line.series->attachAxis(m_axes->axis(m_axes->sideOf(line.unit)));
+        line.series->setOpacity(0); // in the legend; TrendCanvas draws the line
         line.drawnCount = -1;
     }
 }
@@ -175,6 +176,7 @@ void TrendLines::replacePoints(Line& line, const Segments& parts)
         auto* segment = new QLineSeries(m_chart);
         segment->setName(line.series->name());
         segment->setPen(line.series->pen());
+        segment->setOpacity(0);
         m_chart->addSeries(segment);
         for (QAbstractAxis* axis : line.series->attachedAxes())
             segment->attachAxis(axis);
