@@ -3,12 +3,13 @@
 # trends of every drive open side by side, measured from /proc while it runs.
 #
 #   scripts/measure-gui.sh [BUILD_DIR]
-#   environment: DRIVES=16 POLL_MS=100 DURATION=60 SIM=inprocess|pty RUN=1
+#   environment: DRIVES=16 POLL_MS=100 DURATION=130 WARMUP=60 SIM=inprocess|pty RUN=1
 #   e.g. SIM=pty scripts/measure-gui.sh build                       (16 drives at 10 Hz)
 #        SIM=pty DRIVES=64 POLL_MS=500 scripts/measure-gui.sh build (64 drives at 2 Hz)
 #
 # The measurement starts once every drive is monitored (a real line is scanned first) and
-# a warm-up has passed, and ends shortly before the GUI quits after DURATION seconds. Prints
+# a warm-up has passed (by default the trends' one-minute window, so that they show as much
+# as they ever do), and ends shortly before the GUI quits after DURATION seconds. Prints
 # the samples per second the monitor reached per drive, the average CPU use of the whole
 # process over the measured time (CPU time over wall time: on a busy machine, repeat it), and
 # its resident memory.
@@ -17,8 +18,8 @@ build=${1:-build}
 bin="$build/app/opentop"
 drives=${DRIVES:-16}
 poll=${POLL_MS:-100}
-duration=${DURATION:-60}
-warmup=10
+duration=${DURATION:-130}
+warmup=${WARMUP:-60}
 [[ -x "$bin" ]] || { echo "measure-gui: $bin not found; build first" >&2; exit 2; }
 (( duration > warmup + 5 )) || { echo "measure-gui: DURATION must exceed $((warmup + 5)) s" >&2; exit 2; }
 
@@ -71,9 +72,12 @@ margin=2
 $console && margin=$((10 + drives / 8)) # for the motors to stop and the GUI to see it
 end=$(( started + duration - margin ))
 
-# Until every drive is watched and has been sampled (after a scan on a real line).
-until grep -q "^monitor: $drives drives, [1-9]" "$work/out" 2>/dev/null; do
+# Until the drives are watched and sampled (on a real line after a scan, which on a busy
+# machine may miss a drive whose answer came late: then the figures say how many).
+watched() { awk '/^monitor: / && $4 > 0 {n = $2} END {print n + 0}' "$work/out" 2>/dev/null; }
+until (( $(watched) >= drives )); do
     kill -0 "$pid" 2>/dev/null && (( $(date +%s) < end )) || break
+    (( $(watched) > 0 && $(date +%s) - started > 30 )) && break
     sleep 0.5
 done
 monitoring=$(( $(date +%s) - started ))
@@ -97,4 +101,5 @@ awk '/^drive / {n++; s += $(NF-1); if (min == "" || $(NF-1) < min) min = $(NF-1)
      END {if (n) printf "per drive: %.2f samples/s on average, %.2f at least\n", s / n, min}' "$work/out"
 echo "$c0 $c1 $t0 $t1 $ticks" | awk '{printf "CPU: %.1f %% of one core (average over %.0f s after %d s to start monitoring and a %d s warm-up)\n", \
     ($2 - $1) / $5 / ($4 - $3) * 100, $4 - $3, '"$monitoring"', '"$warmup"'}'
+(( $(watched) == drives )) || echo "measure-gui: only $(watched) of $drives drives were monitored"
 echo "memory: resident $((sum / n / 1024)) MiB on average, $((max / 1024)) MiB at most"

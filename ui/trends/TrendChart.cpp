@@ -3,6 +3,7 @@
 #include "bus/BusDrives.h"
 #include "monitor/MonitorHub.h"
 #include "monitor/TrendCsv.h"
+#include "trends/TrendCanvas.h"
 #include "trends/TrendChartView.h"
 #include "trends/TrendReadout.h"
 
@@ -35,6 +36,7 @@ TrendChart::TrendChart(MonitorHub* hub, QWidget* parent)
     , m_timeAxis(new QDateTimeAxis(m_chart))
     , m_axes(m_chart)
     , m_lines(hub, m_chart, m_timeAxis, &m_axes)
+    , m_canvas(new TrendCanvas(&m_lines, m_chart))
 {
     // Line samples in the legend: colour and dash pattern as drawn.
     m_chart->legend()->setMarkerShape(QLegend::MarkerShapeFromSeries);
@@ -60,6 +62,7 @@ TrendChart::TrendChart(MonitorHub* hub, QWidget* parent)
     connect(m_view, &TrendChartView::rangeSelected, this, &TrendChart::zoomTo);
     connect(m_view, &TrendChartView::wheelZoom, this, &TrendChart::zoomAround);
     connect(&m_timer, &QTimer::timeout, this, &TrendChart::refresh);
+    connect(m_chart, &QChart::plotAreaChanged, this, [this] { m_canvas->plotAreaChanged(); });
     // Identified again (another model at the number): the names must say so.
     connect(hub->drives(), &BusDrives::driveChanged, this, [this](int slave) {
         for (const TrendLines::Line& line : m_lines.lines()) {
@@ -116,6 +119,7 @@ QVector<TrendSource> TrendChart::sources() const
 void TrendChart::rebuild()
 {
     m_lines.rebuild([this](const TrendSource& source) { return seriesName(source); });
+    m_canvas->update();
 }
 
 void TrendChart::watch(bool on)
@@ -215,6 +219,7 @@ void TrendChart::refresh()
     const int buckets = std::max(100, int(m_chart->plotArea().width()));
     m_axes.fitTitles(m_chart->plotArea().height());
     m_lines.draw(m_from, m_to, buckets);
+    m_canvas->update();
     if (m_markers[0] || m_markers[1])
         updateReadout();
 }

@@ -18,6 +18,7 @@ class QLabel;
 namespace opentop {
 
 class BusDrives;
+class TrendCanvas;
 class TrendChartView;
 
 // A live trend chart of monitor quantities from a MonitorHub: a scrolling time axis, one value
@@ -91,6 +92,7 @@ private:
     QDateTimeAxis* m_timeAxis;
     TrendAxes m_axes;
     TrendLines m_lines;
+    TrendCanvas* m_canvas; // owned by m_chart
     QTimer m_timer;
     int m_windowMs = 60000;
     bool m_paused = false;

@@ -116,6 +116,7 @@ void TrendLines::rebuild(const NameOf& nameOf)
         m_chart->addSeries(line.series);
         line.series->attachAxis(m_timeAxis);
         line.series->attachAxis(m_axes->axis(m_axes->sideOf(line.unit)));
+        line.series->setOpacity(0); // in the legend; TrendCanvas draws the line
         line.drawnCount = -1;
     }
 }
@@ -160,6 +161,8 @@ std::optional<TrendLines::Segments> TrendLines::pointsToDraw(Line& line, qint64 
     // A gap in the history (polling stopped, no answer) is longer than a value stays live.
     const qint64 gapMs = Freshness::staleAfterMs(m_hub ? m_hub->interval() : 200);
     Segments parts = s ? TrendPoints::segments(*s, fromMs, toMs, buckets, gapMs) : Segments();
+    for (QList<QPointF>& part : parts)
+        TrendPoints::dropRepeats(&part, fromMs, toMs, gapMs);
     if (parts.isEmpty())
         parts << QList<QPointF>();
     return parts;
@@ -173,6 +176,7 @@ void TrendLines::replacePoints(Line& line, const Segments& parts)
         auto* segment = new QLineSeries(m_chart);
         segment->setName(line.series->name());
         segment->setPen(line.series->pen());
+        segment->setOpacity(0);
         m_chart->addSeries(segment);
         for (QAbstractAxis* axis : line.series->attachedAxes())
             segment->attachAxis(axis);

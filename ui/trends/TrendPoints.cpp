@@ -83,6 +83,32 @@ QVector<QList<QPointF>> TrendPoints::segments(const TrendHistory::Series& series
     return out;
 }
 
+void TrendPoints::dropRepeats(QList<QPointF>* points, qint64 fromMs, qint64 toMs, qint64 maxStepMs)
+{
+    QList<QPointF>& p = *points;
+    if (p.size() < 3)
+        return;
+    int firstIn = -1;
+    int lastIn = -1;
+    for (int i = 0; i < p.size(); ++i) {
+        if (p[i].x() >= double(fromMs) && p[i].x() <= double(toMs)) {
+            firstIn = firstIn < 0 ? i : firstIn;
+            lastIn = i;
+        }
+    }
+    QList<QPointF> kept;
+    kept.reserve(p.size());
+    kept << p.first();
+    for (int i = 1; i + 1 < p.size(); ++i) {
+        const bool repeat = p[i].y() == kept.last().y() && p[i].y() == p[i + 1].y() &&
+                            p[i + 1].x() - kept.last().x() <= double(maxStepMs);
+        if (!repeat || i == firstIn || i == lastIn)
+            kept << p[i];
+    }
+    kept << p.last();
+    p = std::move(kept);
+}
+
 void TrendPoints::pad(double* lo, double* hi)
 {
     if (*lo > *hi) {

@@ -268,3 +268,21 @@ TEST_F(TrendChartTest, ExportsTheVisibleRangeAsCsvAndPng)
     EXPECT_GT(image.height(), 100);
     EXPECT_FALSE(chart->exportPng(dir.filePath(QStringLiteral("missing/dir/x.png")), &error));
 }
+
+TEST_F(TrendChartTest, TheLinesAreDrawnInTheirPensColoursInThePlotArea)
+{
+    auto chart = makeChart({{1, kSpeed}});
+    startMotor(1);
+    ASSERT_TRUE(waitUntil([&] { return lastValue(1, "status.current_speed") >= 2900; }, 8000));
+    chart->refresh();
+    const QColor colour = line(*chart, 0)->pen().color();
+    const QImage picture = chart->grab().toImage();
+    const QRectF plot = chart->chart()->plotArea();
+    int drawn = 0;
+    for (int y = int(plot.top()); y < int(plot.bottom()); ++y) {
+        for (int x = int(plot.left()); x < int(plot.right()); ++x)
+            drawn += picture.pixelColor(x, y) == colour ? 1 : 0;
+    }
+    // The ramp and the held speed: a line tens of pixels long, two wide.
+    EXPECT_GT(drawn, 40);
+}

@@ -1,6 +1,7 @@
 // What a trend chart draws: thinning out long series and round axis ranges.
 #include "trends/TrendPoints.h"
 
+#include <algorithm>
 #include <gtest/gtest.h>
 
 using namespace opentop;
@@ -79,4 +80,37 @@ TEST(TrendPointsTest, AGapSplitsTheLineIntoSegmentsThatNeverJoinAcrossIt)
     ASSERT_EQ(one.size(), 1);
     EXPECT_EQ(one.first(), TrendPoints::visible(s, 0, 20000, 800));
     EXPECT_TRUE(TrendPoints::segments(TrendHistory::Series(), 0, 10, 10, 100).isEmpty());
+}
+
+TEST(TrendPointsTest, ARunOfEqualValuesKeepsItsEndsAPointPerGapAndTheWindowsEdges)
+{
+    // 10 Hz: standstill for 10 s, a ramp over 1 s, then the speed held for 10 s.
+    QList<QPointF> p;
+    for (int i = 0; i < 100; ++i)
+        p << QPointF(i * 100, 0);
+    for (int i = 0; i < 10; ++i)
+        p << QPointF(10000 + i * 100, 150.0 * (i + 1));
+    for (int i = 0; i < 100; ++i)
+        p << QPointF(11000 + i * 100, 1500);
+    QList<QPointF> drawn = p;
+    TrendPoints::dropRepeats(&drawn, 500, 20000, 1500);
+    EXPECT_LT(drawn.size(), 50);
+    // Every point of the ramp and the ends of both runs stay; so does the first point in the
+    // window (at 500 ms) and the last (at 20 s).
+    for (const QPointF& kept : {QPointF(0, 0), QPointF(500, 0), QPointF(9900, 0),
+                                QPointF(10500, 900), QPointF(20000, 1500), QPointF(20900, 1500)})
+        EXPECT_TRUE(drawn.contains(kept)) << kept.x();
+    for (int i = 1; i < drawn.size(); ++i)
+        EXPECT_LE(drawn[i].x() - drawn[i - 1].x(), 1500.0); // a gap still shows as one
+    // Nothing dropped changes the line: each dropped point lies on it.
+    for (const QPointF& q : p) {
+        if (drawn.contains(q))
+            continue;
+        const auto next = std::upper_bound(drawn.cbegin(), drawn.cend(), q.x(),
+                                           [](double x, const QPointF& d) { return x < d.x(); });
+        ASSERT_NE(next, drawn.cbegin());
+        ASSERT_NE(next, drawn.cend());
+        EXPECT_EQ(std::prev(next)->y(), q.y());
+        EXPECT_EQ(next->y(), q.y());
+    }
 }
