@@ -4,10 +4,10 @@
 
 namespace opentop {
 
-// The `opentop` program monitoring drives simulated in its own process (--sim; the figures
-// include the simulation), with the bus overview and every
-// drive's trend open (--monitor-all): 16 drives at 10 Hz and 64 drives at 2 Hz. CPU time over
-// wall time after a warm-up, and resident memory, read from /proc.
+// The `opentop` program monitoring drives that opentop-sim simulates behind a Modbus TCP
+// gateway, motors turning, with the bus overview and every drive's trend open
+// (--monitor-all): 16 drives at 10 Hz and 64 drives at 2 Hz. CPU time over wall time at steady
+// state (the trends' window full), and resident memory, read from /proc.
 class GuiBenchmark : public Benchmark
 {
 public:

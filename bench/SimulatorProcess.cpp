@@ -29,6 +29,12 @@ void SimulatorProcess::stop()
     m_process.waitForFinished(1000);
 }
 
+void SimulatorProcess::command(const QString& line)
+{
+    m_process.write((line + QLatin1Char('\n')).toLocal8Bit());
+    m_process.waitForBytesWritten(1000);
+}
+
 bool SimulatorProcess::start(const QStringList& arguments, QString* error)
 {
     m_process.setProgram(QCoreApplication::applicationDirPath() + QStringLiteral("/opentop-sim"));
@@ -50,8 +56,10 @@ bool SimulatorProcess::start(const QStringList& arguments, QString* error)
         const QString line = QString::fromLocal8Bit(m_process.readLine()).trimmed();
         if (line.startsWith(QLatin1String("pty: ")))
             m_pty = line.mid(5);
+        else if (line.startsWith(QLatin1String("tcp: ")))
+            m_tcp = line.mid(5);
         else if (line == QLatin1String("ready"))
-            return !m_pty.isEmpty();
+            return !m_pty.isEmpty() || !m_tcp.isEmpty();
     }
 }
 

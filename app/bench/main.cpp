@@ -50,7 +50,8 @@ int main(int argc, char* argv[])
          QStringLiteral("Measuring time per throughput figure (default 3)."), QStringLiteral("S"),
          QStringLiteral("3")},
         {QStringLiteral("gui-seconds"),
-         QStringLiteral("Measuring time per GUI load case after a 10 s warm-up (default 30)."),
+         QStringLiteral("Measuring time per GUI load case after a 65 s warm-up that fills the "
+                        "trends (default 30)."),
          QStringLiteral("S"), QStringLiteral("30")},
     });
     parser.addPositionalArgument(QStringLiteral("NAME"),

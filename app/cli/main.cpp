@@ -2,6 +2,7 @@
 #include "CliApp.h"
 #include "CliContext.h"
 #include "i18n/Language.h"
+#include "monitor/LocalTimeZone.h"
 #include "profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
@@ -13,6 +14,7 @@
 
 int main(int argc, char* argv[])
 {
+    opentop::LocalTimeZone::readOnce();
     QStringList arguments;
     for (int i = 0; i < argc; ++i)
         arguments << QString::fromLocal8Bit(argv[i]);

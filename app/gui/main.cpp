@@ -11,6 +11,7 @@
 #include "connection/ConnectionDialog.h"
 #include "i18n/Language.h"
 #include "main/MainWindow.h"
+#include "monitor/LocalTimeZone.h"
 #include "pages/EditorRegistry.h"
 
 #include <QApplication>
@@ -24,6 +25,7 @@ int main(int argc, char* argv[])
 {
     QElapsedTimer sinceMain; // --startup-probe
     sinceMain.start();
+    opentop::LocalTimeZone::readOnce();
     // --version and --help only print: they work without a display (an ssh session, a build).
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--version") == 0 || std::strcmp(argv[i], "-v") == 0) {

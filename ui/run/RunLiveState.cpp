@@ -87,6 +87,7 @@ void RunLiveState::addRow(const QString& key, const QString& label)
     r.value->setTextInteractionFlags(Qt::TextSelectableByMouse);
     r.age = new QLabel(this);
     r.age->setObjectName(QStringLiteral("age_") + key);
+    r.age->setStyleSheet(QStringLiteral("color: #808080;"));
     m_rows << r;
 }
 
@@ -157,13 +158,16 @@ void RunLiveState::updateAges()
     else
         age = Freshness::ageText(m_last, now);
     const QString style = m_stale ? QStringLiteral("color: #808080;") : QString();
+    const QString tip = m_stale ? tr("Not live: %1").arg(age) : age;
     for (Row& r : m_rows) {
         if (state == Freshness::State::None)
             r.value->setText(QString());
-        r.value->setStyleSheet(style);
+        // Every sample comes here: a style sheet is applied (costly) only when it changes.
+        if (r.value->styleSheet() != style)
+            r.value->setStyleSheet(style);
         r.age->setText(age);
-        r.age->setStyleSheet(QStringLiteral("color: #808080;"));
-        r.value->setToolTip(m_stale ? tr("Not live: %1").arg(age) : age);
+        if (r.value->toolTip() != tip)
+            r.value->setToolTip(tip);
     }
     emit updated();
 }

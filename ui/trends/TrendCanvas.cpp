@@ -134,8 +134,7 @@ void TrendCanvas::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWid
         QPen solid = pen;
         solid.setStyle(Qt::SolidLine);
         painter->setPen(solid);
-        for (const QLineSeries* series : line.allSeries()) {
-            QList<QPointF> points = series->points();
+        for (QList<QPointF> points : line.drawn) {
             for (QPointF& p : points)
                 p = map(p);
             painter->drawLines(pieces(points, pen));

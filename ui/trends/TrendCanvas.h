@@ -13,11 +13,11 @@ namespace opentop {
 
 class TrendLines;
 
-// Draws the lines of a trend chart over its plot area, from the points its series hold. The
-// series themselves stay on the chart for the legend and the axes but are not drawn by it:
-// QtCharts strokes a dashed line as one path, which costs about six times as much as the
-// straight pieces this item draws (48 lines of 16 drives, five times a second, were most of
-// the GUI's time).
+// Draws the lines of a trend chart over its plot area, from the points TrendLines keeps. The
+// series stay on the chart for the legend and the axes, without points: QtCharts lays out
+// and strokes every point of a series again on each change (a dashed line as one path, about
+// six times the cost of the straight pieces this item draws), and at 48 to 192 lines five
+// times a second that was most of the program's time.
 class TrendCanvas : public QGraphicsItem
 {
 public:

@@ -66,9 +66,8 @@ TrendChart::TrendChart(MonitorHub* hub, QWidget* parent)
     // Identified again (another model at the number): the names must say so.
     connect(hub->drives(), &BusDrives::driveChanged, this, [this](int slave) {
         for (const TrendLines::Line& line : m_lines.lines()) {
-            if (line.source.slave == slave)
-                for (QLineSeries* series : line.allSeries())
-                    series->setName(seriesName(line.source));
+            if (line.source.slave == slave && line.series)
+                line.series->setName(seriesName(line.source));
         }
     });
     m_timer.setInterval(kRedrawMs);

@@ -64,6 +64,8 @@ public:
     static QString driveTitle(const BusDrives* drives, int slave);
     QString seriesName(const TrendSource& source) const;
     QChart* chart() const { return m_chart; }
+    // The lines and the points each shows (TrendCanvas draws them; the series hold none).
+    const TrendLines& lines() const { return m_lines; }
     // Redraws now; a timer calls it a few times a second.
     void refresh();
 

@@ -9,7 +9,6 @@
 #include <QChart>
 #include <QDateTimeAxis>
 #include <QLegend>
-#include <QLegendMarker>
 #include <QLineSeries>
 #include <QValueAxis>
 #include <limits>
@@ -109,14 +108,13 @@ void TrendLines::rebuild(const NameOf& nameOf)
     for (Line& line : m_lines) {
         if (!slaves.contains(line.source.slave))
             slaves << line.source.slave;
-        line.extra.clear(); // removeAllSeries() deleted them
+        line.drawn.clear();
         line.series = new QLineSeries(m_chart);
         line.series->setName(nameOf(line.source));
         line.series->setPen(penFor(index++, int(slaves.indexOf(line.source.slave))));
         m_chart->addSeries(line.series);
         line.series->attachAxis(m_timeAxis);
         line.series->attachAxis(m_axes->axis(m_axes->sideOf(line.unit)));
-        line.series->setOpacity(0); // in the legend; TrendCanvas draws the line
         line.drawnCount = -1;
     }
 }
@@ -127,21 +125,12 @@ void TrendLines::draw(qint64 fromMs, qint64 toMs, int buckets)
     QVector<std::optional<Segments>> next(m_lines.size());
     for (int i = 0; i < m_lines.size(); ++i)
         next[i] = pointsToDraw(m_lines[i], fromMs, toMs, buckets);
-    // The charts lay every series out again whenever an axis' range changes, and again when
-    // its points are replaced: the lines about to be replaced are emptied before the axes
-    // move, so that each is laid out once, with its new points.
-    for (int i = 0; i < m_lines.size(); ++i) {
-        if (next[i]) {
-            for (QLineSeries* series : m_lines[i].allSeries())
-                series->replace(QList<QPointF>());
-        }
-    }
     m_timeAxis->setRange(QDateTime::fromMSecsSinceEpoch(fromMs),
                          QDateTime::fromMSecsSinceEpoch(toMs));
     fitValueAxes(next, fromMs, toMs);
     for (int i = 0; i < m_lines.size(); ++i) {
         if (next[i])
-            replacePoints(m_lines[i], *next[i]);
+            m_lines[i].drawn = std::move(*next[i]);
     }
 }
 
@@ -163,39 +152,7 @@ std::optional<TrendLines::Segments> TrendLines::pointsToDraw(Line& line, qint64 
     Segments parts = s ? TrendPoints::segments(*s, fromMs, toMs, buckets, gapMs) : Segments();
     for (QList<QPointF>& part : parts)
         TrendPoints::dropRepeats(&part, fromMs, toMs, gapMs);
-    if (parts.isEmpty())
-        parts << QList<QPointF>();
     return parts;
-}
-
-void TrendLines::replacePoints(Line& line, const Segments& parts)
-{
-    line.series->replace(parts.first());
-    // Every further segment in a series of its own with the same pen and no legend entry.
-    while (line.extra.size() < parts.size() - 1) {
-        auto* segment = new QLineSeries(m_chart);
-        segment->setName(line.series->name());
-        segment->setPen(line.series->pen());
-        segment->setOpacity(0);
-        m_chart->addSeries(segment);
-        for (QAbstractAxis* axis : line.series->attachedAxes())
-            segment->attachAxis(axis);
-        for (QLegendMarker* marker : m_chart->legend()->markers(segment))
-            marker->setVisible(false);
-        line.extra << segment;
-    }
-    for (int i = 0; i < line.extra.size(); ++i)
-        line.extra[i]->replace(i + 1 < parts.size() ? parts[i + 1] : QList<QPointF>());
-}
-
-QList<QLineSeries*> TrendLines::Line::allSeries() const
-{
-    QList<QLineSeries*> list;
-    if (series)
-        list << series;
-    for (QLineSeries* s : extra)
-        list << s;
-    return list;
 }
 
 void TrendLines::fitValueAxes(const QVector<std::optional<Segments>>& next, qint64 fromMs,
@@ -220,8 +177,8 @@ void TrendLines::fitValueAxes(const QVector<std::optional<Segments>>& next, qint
                 for (const QList<QPointF>& part : *next[i])
                     include(part);
             } else {
-                for (const QLineSeries* series : line.allSeries())
-                    include(series->points());
+                for (const QList<QPointF>& part : line.drawn)
+                    include(part);
             }
         }
         m_axes->setRange(side, lo, hi);

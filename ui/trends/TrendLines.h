@@ -33,9 +33,11 @@ inline bool operator==(const TrendSource& a, const TrendSource& b)
 
 // The lines of a trend chart: each source's label and unit (from the hub's history, or from
 // the profile before the first sample), its series on the chart with a pen per drive and
-// quantity and the value axis of its unit, and the visible points drawn into it, split into
-// segments where the history has a gap (a gap is never drawn as a line). Remembers
-// what each line drew last, so that an unchanged frozen view is not drawn again.
+// quantity and the value axis of its unit, and the visible points it shows, split into
+// segments where the history has a gap (a gap is never drawn as a line). TrendCanvas draws
+// the points; the series holds none, as QtCharts lays out and strokes every point of a series
+// again on each change (at 64 drives that was most of the program's time). Remembers what
+// each line drew last, so that an unchanged frozen view is not drawn again.
 class TrendLines
 {
 public:
@@ -44,9 +46,8 @@ public:
         TrendSource source;
         QString label;
         QString unit;
-        QLineSeries* series = nullptr; // the first segment, named in the legend
-        QVector<QLineSeries*> extra;   // the segments after a gap in the history
-        QList<QLineSeries*> allSeries() const;
+        QLineSeries* series = nullptr; // in the legend, with the pen and the axes; no points
+        QVector<QList<QPointF>> drawn; // the segments shown, split where the history has a gap
         qint64 drawnFrom = -1;
         qint64 drawnTo = -1;
         qint64 drawnLast = -1;
@@ -77,7 +78,6 @@ private:
     void describe(Line& line) const;
     // The points `line` is to show; none when it shows them already.
     std::optional<Segments> pointsToDraw(Line& line, qint64 fromMs, qint64 toMs, int buckets) const;
-    void replacePoints(Line& line, const Segments& parts);
     // Each value axis fitted to the points in [fromMs, toMs] its lines are to show (`next`)
     // or show.
     void fitValueAxes(const QVector<std::optional<Segments>>& next, qint64 fromMs, qint64 toMs);
