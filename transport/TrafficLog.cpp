@@ -3,6 +3,7 @@
 #include "ModbusRequest.h"
 
 #include <QMutexLocker>
+#include <iterator>
 
 namespace opentop {
 
@@ -46,6 +47,15 @@ QVector<TrafficEntry> TrafficLog::entries() const
 {
     QMutexLocker lock(&m_mutex);
     return QVector<TrafficEntry>(m_entries.begin(), m_entries.end());
+}
+
+QVector<TrafficEntry> TrafficLog::entriesAfter(quint64 sequence) const
+{
+    QMutexLocker lock(&m_mutex);
+    auto first = m_entries.end();
+    while (first != m_entries.begin() && std::prev(first)->sequence > sequence)
+        --first;
+    return QVector<TrafficEntry>(first, m_entries.end());
 }
 
 void TrafficLog::clear()

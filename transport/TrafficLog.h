@@ -13,7 +13,8 @@ namespace opentop {
 struct ModbusRequest;
 
 // Thread-safe record of every frame sent and received. Backends append from the worker thread;
-// the GUI listens to entryAdded (queued), the command line prints with a sink.
+// the GUI takes what is new with entriesAfter() a few times a second (a queued signal per frame
+// woke the GUI thread a thousand times a second), the command line prints with a sink.
 class TrafficLog : public QObject
 {
     Q_OBJECT
@@ -28,6 +29,8 @@ public:
 
     void append(TrafficEntry entry, const ModbusRequest* request = nullptr);
     QVector<TrafficEntry> entries() const;
+    // The entries with a sequence number above `sequence`, oldest first (those still held).
+    QVector<TrafficEntry> entriesAfter(quint64 sequence) const;
     void clear();
     int capacity() const { return m_capacity; }
     void setDescriber(Describer describer);

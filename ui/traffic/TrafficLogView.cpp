@@ -45,6 +45,7 @@ TrafficLogView::TrafficLogView(TrafficLog* log, QWidget* parent)
     , m_table(new QTableView(this))
     , m_stats(new QTableWidget(this))
     , m_refresh(new QTimer(this))
+    , m_take(new QTimer(this))
 {
     m_filter->setSourceModel(m_model);
 
@@ -142,8 +143,14 @@ TrafficLogView::TrafficLogView(TrafficLog* log, QWidget* parent)
     connect(clearButton, &QPushButton::clicked, this, &TrafficLogView::clear);
     connect(saveButton, &QPushButton::clicked, this, &TrafficLogView::save);
     if (m_log) {
-        connect(m_log, &TrafficLog::entryAdded, this, &TrafficLogView::addEntry,
-                Qt::QueuedConnection);
+        // New frames are taken from the log ten times a second rather than signalled one by
+        // one: the bus thread then never wakes this one for a frame.
+        m_take->setInterval(100);
+        connect(m_take, &QTimer::timeout, this, [this] {
+            if (!m_paused)
+                takeNew();
+        });
+        m_take->start();
         catchUp();
     }
     refresh();
@@ -173,6 +180,8 @@ void TrafficLogView::clear()
 
 bool TrafficLogView::saveTo(const QString& path, QString* error)
 {
+    if (!m_paused)
+        takeNew();
     flush();
     QByteArray text;
     for (int row = 0; row < m_filter->rowCount(); ++row) {
@@ -189,18 +198,29 @@ void TrafficLogView::addEntry(const TrafficEntry& entry)
     m_lastSequence = entry.sequence;
     // Rows are added in batches by refresh(): hundreds of frames a second, one re-layout.
     m_pending.append(entry);
+    // Hidden, the rows wait here: no more than the log itself keeps (trimmed now and then, so
+    // that a frame does not move all the others).
+    if (m_log && m_pending.size() > 2 * qsizetype(m_log->capacity()))
+        m_pending.remove(0, m_pending.size() - m_log->capacity());
     m_statistics.add(entry);
     addDriveChoice(entry.slave);
     refreshSoon();
+}
+
+void TrafficLogView::takeNew()
+{
+    if (!m_log)
+        return;
+    const QVector<TrafficEntry> entries = m_log->entriesAfter(m_lastSequence);
+    for (const TrafficEntry& entry : entries)
+        addEntry(entry);
 }
 
 void TrafficLogView::catchUp()
 {
     if (!m_log)
         return;
-    const QVector<TrafficEntry> entries = m_log->entries();
-    for (const TrafficEntry& entry : entries)
-        addEntry(entry);
+    takeNew();
     flush();
     m_table->scrollToBottom();
 }
@@ -236,8 +256,18 @@ void TrafficLogView::flush()
     m_pending.clear();
 }
 
+void TrafficLogView::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    refresh();
+}
+
 void TrafficLogView::refresh()
 {
+    // Behind another dock's tab, or closed, in a shown window: the rows and statistics are
+    // laid out when the view comes into view (showEvent), not five times a second.
+    if (window()->isVisible() && !isVisible())
+        return;
     flush();
     if (!m_paused)
         m_table->scrollToBottom();

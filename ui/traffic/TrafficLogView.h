@@ -20,8 +20,8 @@ class TrafficLogFilter;
 class TrafficLogModel;
 struct TrafficEntry;
 
-// The frames on the bus as a table, with filters, pause, save and per-drive statistics. Follows
-// TrafficLog::entryAdded (queued: the log appends from the bus thread).
+// The frames on the bus as a table, with filters, pause, save and per-drive statistics. Takes
+// the log's new frames ten times a second (the log appends from the bus thread).
 class TrafficLogView : public QWidget
 {
     Q_OBJECT
@@ -40,8 +40,12 @@ public:
     TrafficLogFilter* filter() const { return m_filter; }
     const TrafficStatistics& statistics() const { return m_statistics; }
 
+protected:
+    void showEvent(QShowEvent* event) override;
+
 private:
     void addEntry(const TrafficEntry& entry);
+    void takeNew(); // the log's frames after the last one taken
     void catchUp();
     void addDriveChoice(int slave);
     void setStatsCell(int row, int column, const QString& text);
@@ -66,6 +70,7 @@ private:
     QTableWidget* m_stats;
     QSet<int> m_driveChoices; // the drives m_drive offers
     QTimer* m_refresh;
+    QTimer* m_take; // takes the log's new frames
 };
 
 } // namespace opentop

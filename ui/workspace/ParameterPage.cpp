@@ -11,6 +11,7 @@
 #include <QScrollArea>
 #include <QTimer>
 #include <QVBoxLayout>
+#include <utility>
 
 namespace opentop {
 
@@ -50,7 +51,12 @@ ParameterPage::ParameterPage(DeviceParameters* parameters, const QString& title,
     connect(m_reread, &QPushButton::clicked, this, &ParameterPage::refresh);
     connect(parameters, &DeviceParameters::entryChanged, this, [this](const QString& name) {
         if (parameterNames().contains(name)) {
-            parameterChanged(name);
+            // A page behind another tab of a shown window shows the value when it comes into
+            // view: the monitor's values arrive many times a second for every page.
+            if (window()->isVisible() && !isVisible())
+                m_unseen.insert(name);
+            else
+                parameterChanged(name);
             // Mostly a value read again (a monitor's, many a second): the edits stay.
             const int pending = m_pending;
             updateButtons();
@@ -60,6 +66,19 @@ ParameterPage::ParameterPage(DeviceParameters* parameters, const QString& title,
     });
     // parameterNames() is the subclass's: ask it once construction is complete.
     QTimer::singleShot(0, this, [this] { updateButtons(); });
+}
+
+void ParameterPage::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    if (m_unseen.isEmpty())
+        return;
+    // In the page's own order: a value other fields depend on (a mode) comes first.
+    const QSet<QString> unseen = std::exchange(m_unseen, {});
+    for (const QString& name : parameterNames()) {
+        if (unseen.contains(name))
+            parameterChanged(name);
+    }
 }
 
 void ParameterPage::setStatus(const QString& text, bool error)

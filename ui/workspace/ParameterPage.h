@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QSet>
 #include <QStringList>
 #include <QWidget>
 
@@ -52,6 +53,7 @@ protected:
     void setStatus(const QString& text, bool error = false);
     // Called when a parameter's device value, edit or state changed.
     virtual void parameterChanged(const QString& name) = 0;
+    void showEvent(QShowEvent* event) override;
 
 private:
     void updateButtons();
@@ -64,7 +66,8 @@ private:
     QPushButton* m_revert;
     QPushButton* m_reread;
     bool m_busy = false;
-    int m_pending = 0; // edits pending on this page, as the buttons show
+    int m_pending = 0;      // edits pending on this page, as the buttons show
+    QSet<QString> m_unseen; // changed while the page was behind another tab
 };
 
 } // namespace opentop

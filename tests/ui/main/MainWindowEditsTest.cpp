@@ -362,3 +362,38 @@ TEST_F(MainWindowEditsTest, ParameterInitialisationIsRefusedWhileTheMotorRuns)
     EXPECT_EQ(writeFramesTo(window->trafficLog(), 1), writesBefore);
     EXPECT_GT(speedOf(1), 0);
 }
+
+// A page behind another tab does not follow the monitor's values as they come (it would cost
+// the program a tenth of a core at 16 drives): a value read while it is hidden is shown the
+// moment the page comes into view, and its Write button still counts its edits meanwhile.
+TEST_F(MainWindowEditsTest, AValueReadWhileThePageIsBehindAnotherTabShowsWhenItComesIntoView)
+{
+    select({1});
+    DriveWorkspace* workspace = window->workspace();
+    DeviceParameters* params = window->drives()->parameters(1);
+    ASSERT_TRUE(waitFor([&] { return workspace->drive() == params; }));
+    const QString name = QStringLiteral("spno2.speed");
+    ASSERT_TRUE(waitFor([&] { return params->entry(name)->device.valid; }));
+    ParameterPage* page = pageWith(workspace, name);
+    ASSERT_NE(page, nullptr);
+    ParameterField* field = fieldOf(page, name);
+    auto* edit = qobject_cast<QLineEdit*>(field->editor());
+    ASSERT_NE(edit, nullptr);
+    workspace->tabs()->setCurrentWidget(page);
+    ASSERT_TRUE(waitFor([&] { return page->isVisible(); }));
+    const int before = simRegister(1, 0xCA03);
+    const int changed = before == 1234 ? 1500 : 1234;
+
+    // Behind another tab: the drive's value changes and is read.
+    workspace->tabs()->setCurrentIndex(workspace->tabs()->indexOf(page) == 0 ? 1 : 0);
+    ASSERT_TRUE(waitFor([&] { return !page->isVisible(); }));
+    bus->control(1, {QStringLiteral("set"), QStringLiteral("0xCA03"), QString::number(changed)});
+    bool read = false;
+    params->refresh({name}, [&](int) { read = true; });
+    ASSERT_TRUE(waitFor([&] { return read; }));
+    EXPECT_EQ(edit->text(), QString::number(before)); // not followed while hidden
+
+    workspace->tabs()->setCurrentWidget(page);
+    ASSERT_TRUE(waitFor([&] { return page->isVisible(); }));
+    EXPECT_EQ(edit->text(), QString::number(changed));
+}
