@@ -5,6 +5,7 @@
 // late as the manual allows.
 #include "ModbusClient.h"
 #include "RtuBackend.h"
+#include "ScanToEnd.h"
 #include "SimProcess.h"
 #include "bus/BusScanner.h"
 #include "profile/ProfileRegistry.h"
@@ -25,6 +26,27 @@ ConnectionSettings line(const QString& pty, int baud)
     s.baud = baud;
     s.retries = 0; // every lost request counts
     return s;
+}
+
+// Scans `from`..`to` with the real RTU backend against opentop-sim simulating `devices` on a
+// half-duplex line at 19200 bit/s with wire timing; *error says why it could not.
+QVector<DeviceInfo> scanAt19200(const QString& devices, int from, int to, QString* error)
+{
+    SimProcess sim;
+    if (!sim.start({QStringLiteral("--devices"), devices, QStringLiteral("--wire-timing"),
+                    QStringLiteral("--half-duplex"), QStringLiteral("--baud"),
+                    QStringLiteral("19200")},
+                   error))
+        return {};
+    const ConnectionSettings settings = line(sim.pty, 19200);
+    ModbusClient client(std::make_unique<RtuBackend>(settings), settings);
+    if (const QString failed = client.openBlocking(); !failed.isEmpty()) {
+        *error = failed;
+        return {};
+    }
+    BusScanner scanner(&client, ProfileRegistry::builtIn());
+    scanner.setRange(from, to);
+    return scanToEnd(scanner);
 }
 
 // Reads a 17-register block `count` times, one after the other; returns the failures.
@@ -79,28 +101,10 @@ TEST(HalfDuplexLineE2e, AScanFindsADriveWhoseLateReplyCollidedWithTheNextRequest
 {
     // 60 answers 14 ms after the gap (T3 10 ms + C1 4 ms), after the scan's 10 ms budget: its
     // reply meets the request to 61 on the line and both are lost.
-    SimProcess sim;
     QString error;
-    ASSERT_TRUE(sim.start({QStringLiteral("--devices"),
-                           QStringLiteral("dbu200@59,dbu200@60{turnaround=14}"),
-                           QStringLiteral("--wire-timing"), QStringLiteral("--half-duplex"),
-                           QStringLiteral("--baud"), QStringLiteral("19200")},
-                          &error))
-        << error.toStdString();
-    const ConnectionSettings settings = line(sim.pty, 19200);
-    ModbusClient client(std::make_unique<RtuBackend>(settings), settings);
-    ASSERT_TRUE(client.openBlocking().isEmpty());
-    BusScanner scanner(&client, ProfileRegistry::builtIn());
-    scanner.setRange(55, 66);
-    QVector<DeviceInfo> devices;
-    QEventLoop loop;
-    QObject::connect(&scanner, &BusScanner::finished, [&](const QVector<DeviceInfo>& found) {
-        devices = found;
-        loop.quit();
-    });
-    QTimer::singleShot(30000, &loop, &QEventLoop::quit);
-    scanner.start();
-    loop.exec();
+    const QVector<DeviceInfo> devices =
+        scanAt19200(QStringLiteral("dbu200@59,dbu200@60{turnaround=14}"), 55, 66, &error);
+    ASSERT_TRUE(error.isEmpty()) << error.toStdString();
 
     ASSERT_EQ(devices.size(), 2);
     EXPECT_EQ(devices[0].slave, 59);
@@ -115,27 +119,10 @@ TEST(HalfDuplexLineE2e, TheLastAddressOfAScanWaitsLongEnoughForALateAnswer)
 {
     // Nothing follows the last address for its late reply to turn up in: a drive there that
     // answers 30 ms after the gap (after the 18 ms wait) is found all the same.
-    SimProcess sim;
     QString error;
-    ASSERT_TRUE(sim.start({QStringLiteral("--devices"), QStringLiteral("dbu200@9{turnaround=30}"),
-                           QStringLiteral("--wire-timing"), QStringLiteral("--half-duplex"),
-                           QStringLiteral("--baud"), QStringLiteral("19200")},
-                          &error))
-        << error.toStdString();
-    const ConnectionSettings settings = line(sim.pty, 19200);
-    ModbusClient client(std::make_unique<RtuBackend>(settings), settings);
-    ASSERT_TRUE(client.openBlocking().isEmpty());
-    BusScanner scanner(&client, ProfileRegistry::builtIn());
-    scanner.setRange(9, 9);
-    QVector<DeviceInfo> devices;
-    QEventLoop loop;
-    QObject::connect(&scanner, &BusScanner::finished, [&](const QVector<DeviceInfo>& found) {
-        devices = found;
-        loop.quit();
-    });
-    QTimer::singleShot(30000, &loop, &QEventLoop::quit);
-    scanner.start();
-    loop.exec();
+    const QVector<DeviceInfo> devices =
+        scanAt19200(QStringLiteral("dbu200@9{turnaround=30}"), 9, 9, &error);
+    ASSERT_TRUE(error.isEmpty()) << error.toStdString();
 
     ASSERT_EQ(devices.size(), 1);
     EXPECT_EQ(devices[0].slave, 9);

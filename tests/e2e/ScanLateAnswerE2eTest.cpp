@@ -5,13 +5,12 @@
 // program's scan of 247 drives missing 2–23 of them this way.
 #include "ModbusClient.h"
 #include "RtuBackend.h"
+#include "ScanToEnd.h"
 #include "SimProcess.h"
 #include "bus/BusScanner.h"
 #include "profile/ProfileRegistry.h"
 
-#include <QEventLoop>
 #include <QThread>
-#include <QTimer>
 #include <gtest/gtest.h>
 
 using namespace opentop;
@@ -39,15 +38,7 @@ TEST(ScanLateAnswerE2e, ADriveWhoseLateReplyWasDiscardedIsAskedAgainAndFound)
     scanner.setWaitMs(17);
     // A busy master: every step's views take 100 ms, longer than the reply is late.
     QObject::connect(&scanner, &BusScanner::progress, [] { QThread::msleep(100); });
-    QVector<DeviceInfo> devices;
-    QEventLoop loop;
-    QObject::connect(&scanner, &BusScanner::finished, [&](const QVector<DeviceInfo>& found) {
-        devices = found;
-        loop.quit();
-    });
-    QTimer::singleShot(30000, &loop, &QEventLoop::quit);
-    scanner.start();
-    loop.exec();
+    const QVector<DeviceInfo> devices = scanToEnd(scanner);
 
     ASSERT_EQ(devices.size(), 2);
     EXPECT_EQ(devices[0].slave, 3);
