@@ -58,6 +58,12 @@ QVector<TrafficEntry> TrafficLog::entriesAfter(quint64 sequence) const
     return QVector<TrafficEntry>(first, m_entries.end());
 }
 
+int TrafficLog::size() const
+{
+    QMutexLocker lock(&m_mutex);
+    return int(m_entries.size());
+}
+
 void TrafficLog::clear()
 {
     QMutexLocker lock(&m_mutex);

@@ -33,6 +33,7 @@ public:
     QVector<TrafficEntry> entriesAfter(quint64 sequence) const;
     void clear();
     int capacity() const { return m_capacity; }
+    int size() const; // entries held now
     void setDescriber(Describer describer);
     // Called for every entry on the appending thread (e.g. --trace to stderr).
     void setSink(std::function<void(const TrafficEntry&)> sink);

@@ -1,5 +1,6 @@
 #include "MonitorOptions.h"
 
+#include "TrafficLog.h"
 #include "bus/BusDrives.h"
 #include "bus/BusPanel.h"
 #include "main/MainWindow.h"
@@ -21,9 +22,10 @@ const QString kQuitAfter = QStringLiteral("quit-after");
 const QString kStatsEvery = QStringLiteral("stats-every");
 
 // One line of running totals (tests/soak reads it): the samples and errors since monitoring
-// began, how many watched drives' values are not live now (monitor/Freshness), and the points
-// their trend histories hold.
-void printRunningTotals(const MonitorHub& hub)
+// began, how many watched drives' values are not live now (monitor/Freshness), the points
+// their trend histories hold, and how full the traffic log is (it grows to its capacity, then
+// stays there: the soak judges memory once it is full).
+void printRunningTotals(const MonitorHub& hub, const TrafficLog* log)
 {
     const QDateTime now = QDateTime::currentDateTime();
     qint64 samples = 0;
@@ -40,9 +42,11 @@ void printRunningTotals(const MonitorHub& hub)
         if (hub.freshness(slave, now) != Freshness::State::Live)
             ++notLive;
     }
-    std::printf("monitor: %d drives, %lld samples, %lld errors, %d stale, %lld trend points\n",
+    std::printf("monitor: %d drives, %lld samples, %lld errors, %d stale, %lld trend points, "
+                "%d of %d traffic frames\n",
                 int(slaves.size()), static_cast<long long>(samples), static_cast<long long>(errors),
-                notLive, static_cast<long long>(points));
+                notLive, static_cast<long long>(points), log ? log->size() : 0,
+                log ? log->capacity() : 0);
     std::fflush(stdout);
 }
 
@@ -128,7 +132,7 @@ bool MonitorOptions::apply(const QCommandLineParser& parser, MainWindow* window,
         auto* timer = new QTimer(window);
         QObject::connect(timer, &QTimer::timeout, window, [window] {
             if (window->monitorHub())
-                printRunningTotals(*window->monitorHub());
+                printRunningTotals(*window->monitorHub(), window->trafficLog());
         });
         timer->start(int(every * 1000));
     }

@@ -71,7 +71,7 @@ bool GuiSoak::parseTotals(const QString& line, Totals* totals)
 {
     static const QRegularExpression re(
         QStringLiteral("^monitor: (\\d+) drives, (\\d+) samples, (\\d+) errors, (\\d+) stale, "
-                       "(\\d+) trend points$"));
+                       "(\\d+) trend points, (\\d+) of (\\d+) traffic frames$"));
     const QRegularExpressionMatch m = re.match(line.trimmed());
     if (!m.hasMatch())
         return false;
@@ -80,6 +80,8 @@ bool GuiSoak::parseTotals(const QString& line, Totals* totals)
     totals->errors = m.captured(3).toLongLong();
     totals->stale = m.captured(4).toInt();
     totals->trendPoints = m.captured(5).toLongLong();
+    totals->trafficFrames = m.captured(6).toInt();
+    totals->trafficCapacity = m.captured(7).toInt();
     return true;
 }
 

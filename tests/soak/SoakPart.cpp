@@ -12,6 +12,12 @@ bool SoakPart::isReady(int drives) const
     return t.drives >= kReadyShare * drives && t.stale == 0 && t.samples >= t.drives;
 }
 
+bool SoakPart::buffersFull() const
+{
+    const Totals t = totals();
+    return t.trafficFrames >= t.trafficCapacity;
+}
+
 qint64 SoakPart::nowMs()
 {
     return QDeadlineTimer::current().deadline();

@@ -14,12 +14,14 @@ public:
     // Running totals since monitoring began.
     struct Totals
     {
-        int drives = 0;         // watched
-        qint64 samples = 0;     // sample signals of the monitor hub
-        qint64 errors = 0;      // failed polls (lost samples)
-        int stale = 0;          // watched drives whose values are not live now (monitor/Freshness)
-        qint64 trendPoints = 0; // held by the watched drives' trend histories
-        qint64 atMs = 0;        // when counted (steady clock, QDeadlineTimer::current)
+        int drives = 0;          // watched
+        qint64 samples = 0;      // sample signals of the monitor hub
+        qint64 errors = 0;       // failed polls (lost samples)
+        int stale = 0;           // watched drives whose values are not live now (monitor/Freshness)
+        qint64 trendPoints = 0;  // held by the watched drives' trend histories
+        int trafficFrames = 0;   // held by the traffic log
+        int trafficCapacity = 0; // the most it holds (0: the part keeps none)
+        qint64 atMs = 0;         // when counted (steady clock, QDeadlineTimer::current)
     };
 
     using QObject::QObject;
@@ -37,6 +39,9 @@ public:
     // many), each has answered, and none is stale.
     bool isReady(int drives) const;
     static constexpr double kReadyShare = 0.9;
+    // The bounded buffers have reached their bound (the traffic log holds its last frames):
+    // memory grows while they fill, by design, and is judged after.
+    bool buffersFull() const;
 
     static qint64 nowMs();
 

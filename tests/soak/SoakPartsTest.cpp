@@ -14,13 +14,16 @@ TEST(SoakPartsTest, ReadsTheGuiTotalsLine)
     SoakPart::Totals t;
     ASSERT_TRUE(GuiSoak::parseTotals(
         QStringLiteral(
-            "monitor: 247 drives, 12345 samples, 7 errors, 2 stale, 5000 trend points\n"),
+            "monitor: 247 drives, 12345 samples, 7 errors, 2 stale, 5000 trend points, 19998 "
+            "of 20000 traffic frames\n"),
         &t));
     EXPECT_EQ(t.drives, 247);
     EXPECT_EQ(t.samples, 12345);
     EXPECT_EQ(t.errors, 7);
     EXPECT_EQ(t.stale, 2);
     EXPECT_EQ(t.trendPoints, 5000);
+    EXPECT_EQ(t.trafficFrames, 19998);
+    EXPECT_EQ(t.trafficCapacity, 20000);
     EXPECT_FALSE(GuiSoak::parseTotals(QStringLiteral("drive 1: 5 samples, 0 errors"), &t));
 }
 

@@ -18,6 +18,9 @@ namespace {
 
 // How long the scans and the first samples of every drive may take.
 constexpr qint64 kReadyTimeoutMs = 180000;
+// How long the traffic logs may take to fill after that (20,000 frames: about two minutes at
+// the soak's 87 transactions a second).
+constexpr qint64 kFillTimeoutMs = 300000;
 
 QString clockText(double seconds)
 {
@@ -117,7 +120,11 @@ void SoakRun::waitUntilReady()
         ready = ready && m.part->isReady(m_drives);
     const qint64 now = SoakPart::nowMs();
     if (!ready) {
-        if (now - m_startMs > kReadyTimeoutMs) {
+        // Once every drive was live, a moment without (a drive briefly stale) waits for the
+        // traffic logs' time limit below.
+        const bool late =
+            m_liveMs == 0 ? now - m_startMs > kReadyTimeoutMs : now - m_liveMs > kFillTimeoutMs;
+        if (late) {
             QStringList states;
             for (const Measured& m : m_measured) {
                 const SoakPart::Totals t = m.part->totals();
@@ -128,20 +135,39 @@ void SoakRun::waitUntilReady()
                               .arg(t.stale);
             }
             abort(QStringLiteral("not every drive was monitored and live after %1 s (%2)")
-                      .arg(kReadyTimeoutMs / 1000)
+                      .arg((now - m_startMs) / 1000)
                       .arg(states.join(QStringLiteral("; "))));
         }
         return;
     }
+    if (m_liveMs == 0) {
+        m_liveMs = now;
+        for (const Measured& m : m_measured) {
+            const SoakPart::Totals t = m.part->totals();
+            m_out << m.part->name() << ": " << t.drives << " of " << m_drives << " drives monitored"
+                  << (t.drives < m_drives ? " (its scan did not find the others)" : "") << Qt::endl;
+            if (t.trafficCapacity > 0)
+                m_out << m.part->name() << ": its traffic log holds " << t.trafficFrames
+                      << " frames and keeps the last " << t.trafficCapacity
+                      << "; the figures start when it is full" << Qt::endl;
+        }
+    }
+    // The traffic log grows to its capacity by design: judged while filling, memory would
+    // count it as growth (a soak once failed on it).
+    bool full = true;
+    for (const Measured& m : m_measured)
+        full = full && m.part->buffersFull();
+    if (!full) {
+        if (now - m_liveMs > kFillTimeoutMs)
+            abort(QStringLiteral("the traffic log was not full %1 s after every drive was live")
+                      .arg(kFillTimeoutMs / 1000));
+        return;
+    }
     m_readyTimer.stop();
     m_readyMs = now;
-    for (const Measured& m : m_measured) {
-        const int found = m.part->totals().drives;
-        m_out << m.part->name() << ": " << found << " of " << m_drives << " drives monitored"
-              << (found < m_drives ? " (its scan did not find the others)" : "") << Qt::endl;
-    }
     m_out << "monitoring settled after " << (now - m_startMs) / 1000.0
-          << " s; figures from now on (samples/s: per interval; lost: failed polls in it; "
+          << " s (every drive live after " << (m_liveMs - m_startMs) / 1000.0
+          << " s); figures from now on (samples/s: per interval; lost: failed polls in it; "
              "stale: drives not live at that moment)"
           << Qt::endl;
     QString header = QStringLiteral("elapsed");

@@ -59,7 +59,8 @@ private:
     std::vector<Measured> m_measured;
     int m_drives = 0;
     qint64 m_startMs = 0; // when the parts were started
-    qint64 m_readyMs = 0; // when every drive was live in every part: elapsed 0
+    qint64 m_liveMs = 0;  // when every drive was first live in every part
+    qint64 m_readyMs = 0; // when, moreover, every traffic log was full: elapsed 0
     QTimer m_readyTimer;
     QTimer m_lineTimer;
     int m_started = 0; // parts started so far, in m_measured's order

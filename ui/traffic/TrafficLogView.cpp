@@ -173,6 +173,8 @@ void TrafficLogView::setPaused(bool paused)
 void TrafficLogView::clear()
 {
     m_pending.clear();
+    m_rowsInLog = false;
+    m_shownUpTo = m_lastSequence;
     m_model->clear();
     m_statistics.clear();
     refresh();
@@ -196,12 +198,12 @@ void TrafficLogView::addEntry(const TrafficEntry& entry)
     if (m_paused || entry.sequence <= m_lastSequence)
         return; // paused: catchUp() takes it from the log; older: already shown
     m_lastSequence = entry.sequence;
-    // Rows are added in batches by refresh(): hundreds of frames a second, one re-layout.
-    m_pending.append(entry);
-    // Hidden, the rows wait here: no more than the log itself keeps (trimmed now and then, so
-    // that a frame does not move all the others).
-    if (m_log && m_pending.size() > 2 * qsizetype(m_log->capacity()))
-        m_pending.remove(0, m_pending.size() - m_log->capacity());
+    // Out of view the frames are not copied a second time: the log keeps as many as the
+    // table shows, and flush() reads them from it when the view is seen again.
+    if (m_log && outOfView())
+        m_rowsInLog = true;
+    else
+        m_pending.append(entry); // rows are added in batches by refresh(): one re-layout
     m_statistics.add(entry);
     addDriveChoice(entry.slave);
     refreshSoon();
@@ -250,8 +252,23 @@ void TrafficLogView::refreshSoon()
         m_refresh->start();
 }
 
+bool TrafficLogView::outOfView() const
+{
+    return window()->isVisible() && !isVisible();
+}
+
 void TrafficLogView::flush()
 {
+    if (m_rowsInLog) {
+        // Those still in the log, up to the last one the statistics counted (later ones are
+        // taken with the next batch).
+        m_rowsInLog = false;
+        m_pending = m_log->entriesAfter(m_shownUpTo);
+        while (!m_pending.isEmpty() && m_pending.last().sequence > m_lastSequence)
+            m_pending.removeLast();
+    }
+    if (!m_pending.isEmpty())
+        m_shownUpTo = m_pending.last().sequence;
     m_model->append(m_pending);
     m_pending.clear();
 }
@@ -264,9 +281,9 @@ void TrafficLogView::showEvent(QShowEvent* event)
 
 void TrafficLogView::refresh()
 {
-    // Behind another dock's tab, or closed, in a shown window: the rows and statistics are
-    // laid out when the view comes into view (showEvent), not five times a second.
-    if (window()->isVisible() && !isVisible())
+    // Out of view the rows and statistics are laid out when the view is seen (showEvent),
+    // not five times a second.
+    if (outOfView())
         return;
     flush();
     if (!m_paused)

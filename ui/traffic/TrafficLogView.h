@@ -52,6 +52,8 @@ private:
     void applyFilters();
     void refreshSoon();
     void refresh();
+    // Behind another dock's tab, or closed, in a shown window: rows wait until it is seen.
+    bool outOfView() const;
     void flush(); // pending entries into the model
     void save();
 
@@ -59,8 +61,10 @@ private:
     TrafficLogModel* m_model;
     TrafficLogFilter* m_filter;
     TrafficStatistics m_statistics;
-    quint64 m_lastSequence = 0;
+    quint64 m_lastSequence = 0; // the last frame taken (statistics, pending or in the log)
+    quint64 m_shownUpTo = 0;    // the last frame given to the model, or cleared
     QVector<TrafficEntry> m_pending;
+    bool m_rowsInLog = false; // frames taken out of view: their rows are read from the log
     bool m_paused = false;
     QComboBox* m_drive;
     QComboBox* m_direction;

@@ -10,6 +10,7 @@
 #include <QCheckBox>
 #include <QFile>
 #include <QPushButton>
+#include <QTabWidget>
 #include <QTemporaryDir>
 
 using namespace opentop;
@@ -164,6 +165,53 @@ TEST_F(TrafficLogViewTest, KeepsAtMostTheLogCapacity)
     ASSERT_TRUE(waitUntil([&] { return smallView.statistics().total().requests == 5; }));
     ASSERT_TRUE(waitUntil([&] { return smallView.model()->entry(2).slave == 11; }));
     EXPECT_EQ(smallView.model()->rowCount(), 3);
+}
+
+TEST_F(TrafficLogViewTest, OutOfViewTheRowsComeFromTheLogWhenSeenAgain)
+{
+    // The program's traffic dock is usually closed or behind another tab: the view then keeps
+    // no copy of the frames (the log holds them) and shows the log's last ones when seen.
+    TrafficLog small(50);
+    QTabWidget window;
+    window.addTab(new QWidget, QStringLiteral("other"));
+    auto* tabView = new TrafficLogView(&small);
+    window.addTab(tabView, QStringLiteral("traffic"));
+    window.show();
+    ASSERT_FALSE(tabView->isVisible());
+    auto append = [&small](int first, int count) {
+        for (int i = first; i < first + count; ++i) {
+            TrafficEntry e;
+            e.slave = quint8(i);
+            small.append(e);
+        }
+    };
+    for (int batch = 0; batch < 12; ++batch) {
+        append(1 + 10 * batch, 10);
+        ASSERT_TRUE(
+            waitUntil([&] { return tabView->statistics().total().requests == 10 * (batch + 1); }));
+    }
+    EXPECT_EQ(tabView->model()->rowCount(), 0);
+    window.setCurrentIndex(1);
+    ASSERT_TRUE(tabView->isVisible());
+    ASSERT_EQ(tabView->model()->rowCount(), 50);
+    for (int row = 0; row < 50; ++row)
+        EXPECT_EQ(tabView->model()->entry(row).slave, 71 + row) << row;
+
+    // Cleared out of view: frames from before the clear do not come back.
+    window.setCurrentIndex(0);
+    append(200, 5);
+    ASSERT_TRUE(waitUntil([&] { return tabView->statistics().total().requests == 125; }));
+    tabView->clear();
+    append(210, 3);
+    ASSERT_TRUE(waitUntil([&] { return tabView->statistics().total().requests == 3; }));
+    window.setCurrentIndex(1);
+    ASSERT_EQ(tabView->model()->rowCount(), 3);
+    EXPECT_EQ(tabView->model()->entry(0).slave, 210);
+    EXPECT_EQ(tabView->model()->entry(2).slave, 212);
+    // In view again, new frames are rows as they come.
+    append(220, 2);
+    ASSERT_TRUE(waitUntil([&] { return tabView->model()->rowCount() == 5; }));
+    EXPECT_EQ(tabView->model()->entry(4).slave, 221);
 }
 
 TEST_F(TrafficLogViewTest, SaveToAFifoWritesThroughAndAFailedSaveIsAnError)
