@@ -7,8 +7,7 @@
 #include "eol/EolRun.h"
 #include "eol/RecipeChecker.h"
 #include "eol/RecipeFile.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultStore.h"
+#include "eol/ResultWriter.h"
 #include "eol/UnitValuesCsv.h"
 #include "profile/ProfileRegistry.h"
 
@@ -180,19 +179,19 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
         url = EolSupport::defaultDatabase();
         QDir().mkpath(QFileInfo(url).absolutePath());
     }
-    const std::unique_ptr<ResultDatabase> db = ResultDatabase::open(url, &error);
-    if (!db) {
-        err << tr("results database: %1; nothing was sent").arg(error) << Qt::endl;
-        return ExitCommunication;
-    }
-    ResultStore store(*db);
     const QString station =
         parser.isSet(kStation) ? parser.value(kStation) : QHostInfo::localHostName();
-    // What this station left running when it was killed is never a pass.
-    const int leftovers = store.markInterrupted(station, QDateTime::currentDateTimeUtc(), &error);
-    if (leftovers > 0)
+    // The station's writer, as the operator screen's; what this station left running when it
+    // was killed is never a pass: marked interrupted as it opens.
+    ResultWriter writer;
+    const ResultWriter::Opened opened = writer.openAndWait(url, station);
+    if (!opened.ok) {
+        err << tr("results database: %1; nothing was sent").arg(opened.error) << Qt::endl;
+        return ExitCommunication;
+    }
+    if (opened.interrupted > 0)
         err << tr("note: %1 unit(s) this station left unfinished are now recorded as interrupted")
-                   .arg(leftovers)
+                   .arg(opened.interrupted)
             << Qt::endl;
 
     if (!context.connectBus())
@@ -208,7 +207,7 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
     }
     options.recipeChecksum = checksum;
     options.unitValues = *values;
-    options.store = &store;
+    options.writer = &writer;
     options.traffic = context.trafficLog();
     EolRun eol(context.client(), ProfileRegistry::builtIn(), *recipe, options);
 

@@ -57,7 +57,7 @@ bool ProductionOptions::apply(const QCommandLineParser& parser, MainWindow* wind
     }
     if (parser.isSet(kUnits) && !station->loadUnitValues(parser.value(kUnits), error))
         return false;
-    if (!station->openDatabase(parser.value(kResultsDb), error))
+    if (!station->openDatabaseAndWait(parser.value(kResultsDb), error))
         return false;
     window->production()->setActive(true);
     return true;

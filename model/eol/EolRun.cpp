@@ -3,7 +3,7 @@
 #include "ModelLog.h"
 #include "TrafficLog.h"
 #include "eol/RecipeChecker.h"
-#include "eol/ResultStore.h"
+#include "eol/ResultWriter.h"
 #include "profile/ProfileRegistry.h"
 #include "run/RunControl.h"
 
@@ -50,12 +50,30 @@ void EolRun::start(Done done)
     }
     // Recorded as running before anything is sent: a station killed from here on leaves a row
     // that is visibly not a pass. A unit that cannot be recorded is not tested.
-    if (m_options.store && !m_options.store->beginUnit(m_record, &m_storeError)) {
-        m_firstFailure = tr("the results database cannot record the unit: %1").arg(m_storeError);
-        m_cancelled = true;
-        QTimer::singleShot(0, this, [this] { finish(); });
+    if (!m_options.writer) {
+        startDrives();
         return;
     }
+    m_options.writer->beginUnit(
+        m_record, this, [this](const UnitRecord& begun, const QString& error) {
+            if (!error.isEmpty()) {
+                m_storeError = error;
+                m_firstFailure = tr("the results database cannot record the unit: %1").arg(error);
+                m_cancelled = true;
+                finish();
+                return;
+            }
+            m_record.id = begun.id;
+            m_record.started = begun.started;
+            if (m_cancelled) // while it was being recorded: nothing was sent
+                finish();
+            else
+                startDrives();
+        });
+}
+
+void EolRun::startDrives()
+{
     for (int i = 0; i < m_recipe.positions.size(); ++i) {
         const RecipePosition& position = m_recipe.positions[i];
         auto* drive = new EolDriveRun(m_client, m_registry, m_run, position, i,
@@ -101,7 +119,7 @@ QString EolRun::problemOf() const
 
 void EolRun::cancel(const QString& reason)
 {
-    if (!m_done || m_cancelled)
+    if (!m_done || m_cancelled || m_recording)
         return;
     m_cancelled = true;
     const QString why = reason.isEmpty() ? tr("cancelled by the operator") : reason;
@@ -146,7 +164,7 @@ QStringList EolRun::trafficLines() const
 
 void EolRun::finish()
 {
-    if (!m_done)
+    if (!m_done || m_recording)
         return;
     for (EolDriveRun* drive : m_drives) {
         m_record.drives.append(drive->drive());
@@ -165,9 +183,23 @@ void EolRun::finish()
         m_record.traffic = trafficLines();
     }
     m_record.ended = QDateTime::currentDateTimeUtc();
-    if (m_options.store && !m_record.id.isEmpty() &&
-        !m_options.store->finishUnit(m_record, &m_storeError))
-        qCWarning(lcModel) << "unit record not completed" << m_storeError;
+    if (!m_options.writer || m_record.id.isEmpty()) {
+        complete();
+        return;
+    }
+    m_recording = true;
+    m_options.writer->finishUnit(m_record, this, [this](const QString& error) {
+        if (!error.isEmpty()) {
+            m_storeError = error;
+            qCWarning(lcModel) << "unit record not completed" << error;
+        }
+        complete();
+    });
+}
+
+void EolRun::complete()
+{
+    m_recording = false;
     qCDebug(lcModel) << "unit" << m_record.serial << unitStatusName(m_record.status) << "in"
                      << m_elapsed.elapsed() << "ms" << m_record.failureReason;
     Done done = std::move(m_done);

@@ -15,15 +15,16 @@ namespace opentop {
 
 class ModbusClient;
 class ProfileRegistry;
-class ResultStore;
+class ResultWriter;
 class RunControl;
 class TrafficLog;
 
 // One unit through the end-of-line station: every drive of the recipe at once (EolDriveRun),
 // so one drive ramps while the next is written and the bus is shared between them; the first
-// failure ends the others (their motors stopped) and is the unit's reason. With a ResultStore,
+// failure ends the others (their motors stopped) and is the unit's reason. With a ResultWriter,
 // the unit's record is committed as running before anything is sent and completed in one
-// transaction at the end, so a station killed mid-unit never leaves a partial pass.
+// transaction at the end, so a station killed mid-unit never leaves a partial pass; the run
+// waits for each answer without making its thread wait.
 class EolRun : public QObject
 {
     Q_OBJECT
@@ -37,8 +38,8 @@ public:
         // This unit's per-unit values: machine number → parameter → engineering value.
         QHash<int, QHash<QString, double>> unitValues;
         EolStepRunner::Timing timing;
-        ResultStore* store = nullptr;  // none: nothing recorded
-        TrafficLog* traffic = nullptr; // decoded traffic around a failure goes into the record
+        ResultWriter* writer = nullptr; // none: nothing recorded
+        TrafficLog* traffic = nullptr;  // decoded traffic around a failure goes into the record
         int trafficLines = 60;
     };
     using Done = std::function<void(const UnitRecord&)>;
@@ -47,8 +48,8 @@ public:
            const Options& options, QObject* parent = nullptr);
     ~EolRun() override;
 
-    // `done` runs once with the unit's record, never before start() returns. A record that
-    // could not be stored says so in storeError().
+    // `done` runs once with the unit's record, never before start() returns, and after the
+    // record is stored. A record that could not be stored says so in storeError().
     void start(Done done);
     // Cancels the unit: every motor that may be turning is stopped first.
     void cancel(const QString& reason = QString());
@@ -70,8 +71,10 @@ signals:
 private:
     // Why the recipe or this unit's values may not be run; empty when they may.
     QString problemOf() const;
+    void startDrives();
     void driveDone(EolDriveRun* drive);
     void finish();
+    void complete(); // the record is stored (or could not be): the run ends
     QStringList trafficLines() const;
 
     ModbusClient* m_client;
@@ -83,6 +86,7 @@ private:
     int m_remaining = 0;
     QString m_firstFailure;
     bool m_cancelled = false;
+    bool m_recording = false; // the record is being completed: the unit's work is over
     QStringList m_unconfirmed;
     UnitRecord m_record;
     QString m_storeError;

@@ -3,9 +3,8 @@
 #include "ModbusClient.h"
 #include "eol/RecipeChecker.h"
 #include "eol/RecipeFile.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultStore.h"
 #include "eol/ResultUrl.h"
+#include "eol/ResultWriter.h"
 #include "eol/UnitValuesCsv.h"
 #include "profile/ProfileRegistry.h"
 
@@ -22,6 +21,7 @@ constexpr int kLastUnits = 50;
 
 EolStation::EolStation(QObject* parent)
     : QObject(parent)
+    , m_writer(std::make_unique<ResultWriter>())
     , m_station(QSysInfo::machineHostName())
 {
 }
@@ -76,7 +76,9 @@ QVector<QPair<int, RecipeUnitValue>> EolStation::operatorValues() const
     return values;
 }
 
-bool EolStation::openDatabase(const QString& url, QString* error)
+namespace {
+
+QString databaseLocation(const QString& url)
 {
     QString where = url;
     if (where.isEmpty())
@@ -85,19 +87,40 @@ bool EolStation::openDatabase(const QString& url, QString* error)
         where = ResultUrl::defaultLocation();
         QDir().mkpath(QFileInfo(where).absolutePath());
     }
-    std::unique_ptr<ResultDatabase> db = ResultDatabase::open(where, error);
-    if (!db)
-        return false;
-    m_store.reset();
-    m_db = std::move(db);
-    m_store = std::make_unique<ResultStore>(*m_db);
-    m_store->markInterrupted(m_station, QDateTime::currentDateTimeUtc(), error);
-    return true;
+    return where;
+}
+
+} // namespace
+
+void EolStation::openDatabase(const QString& url)
+{
+    m_writer->open(databaseLocation(url), m_station, this,
+                   [this](const ResultWriter::Opened& o) { emit databaseOpened(o.ok, o.error); });
+}
+
+bool EolStation::openDatabaseAndWait(const QString& url, QString* error)
+{
+    const ResultWriter::Opened o = m_writer->openAndWait(databaseLocation(url), m_station);
+    if (!o.ok && error)
+        *error = o.error;
+    return o.ok;
+}
+
+bool EolStation::hasDatabase() const
+{
+    return m_writer->isOpen();
+}
+
+bool EolStation::isOpeningDatabase() const
+{
+    return m_writer->isOpening();
 }
 
 QString EolStation::databaseText() const
 {
-    return m_db ? m_db->url().displayText() : tr("no results database");
+    if (m_writer->isOpen())
+        return m_writer->displayText();
+    return m_writer->isOpening() ? tr("opening the results database") : tr("no results database");
 }
 
 bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString& serial,
@@ -111,8 +134,11 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
         *error = tr("open a recipe first");
         return false;
     }
-    if (!m_store) {
-        *error = tr("the results database is not open; nothing is tested unless it is recorded");
+    if (!m_writer->isOpen()) {
+        *error = m_writer->isOpening()
+                     ? tr("the results database is being opened; try again in a moment")
+                     : tr("the results database is not open; nothing is tested unless it is "
+                          "recorded");
         return false;
     }
     if (!client) {
@@ -130,7 +156,7 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
     options.recipeChecksum = m_checksum;
     options.unitValues = typed;
     options.timing = m_timing;
-    options.store = m_store.get();
+    options.writer = m_writer.get();
     options.traffic = traffic;
     bool needsCsv = false;
     for (const RecipePosition& p : m_recipe.positions)

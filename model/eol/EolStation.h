@@ -13,8 +13,7 @@
 namespace opentop {
 
 class ModbusClient;
-class ResultDatabase;
-class ResultStore;
+class ResultWriter;
 class TrafficLog;
 class UnitValuesCsv;
 
@@ -52,11 +51,16 @@ public:
     // Per-unit values the operator types (the recipe's "operator" ones) for the next unit.
     QVector<QPair<int, RecipeUnitValue>> operatorValues() const;
 
-    // Opens the results database (`url` empty: OPENTOP_EOL_DB, else the default file, made when
-    // missing); the station's leftovers from a crash become interrupted.
-    bool openDatabase(const QString& url, QString* error);
+    // Opens the results database on its own thread (`url` empty: OPENTOP_EOL_DB, else the
+    // default file, made when missing); the station's leftovers from a crash become
+    // interrupted. databaseOpened() answers.
+    void openDatabase(const QString& url);
+    // The same, waiting for the answer in a local event loop (start-up, before the window
+    // shows); no databaseOpened().
+    bool openDatabaseAndWait(const QString& url, QString* error);
     QString databaseText() const;
-    bool hasDatabase() const { return bool(m_db); }
+    bool hasDatabase() const;
+    bool isOpeningDatabase() const;
     void setStation(const QString& station) { m_station = station; }
     QString station() const { return m_station; }
     void setOperatorName(const QString& name) { m_operator = name; }
@@ -82,6 +86,8 @@ signals:
     void measured(const opentop::Measurement& measurement);
     void speedSampled(int machineNumber, double speed, const QString& unit);
     void unitFinished(const opentop::UnitRecord& record);
+    // The answer to openDatabase(): `error` names the database and why not.
+    void databaseOpened(bool ok, const QString& error);
 
 private:
     void finished(const UnitRecord& record);
@@ -91,8 +97,7 @@ private:
     QString m_recipePath;
     QString m_checksum;
     std::unique_ptr<UnitValuesCsv> m_csv;
-    std::unique_ptr<ResultDatabase> m_db;
-    std::unique_ptr<ResultStore> m_store;
+    std::unique_ptr<ResultWriter> m_writer;
     QString m_station;
     QString m_operator;
     EolStepRunner::Timing m_timing;

@@ -35,6 +35,12 @@ ProductionMode::ProductionMode(QMainWindow* window, QWidget* engineering, QBoxLa
     m_fullScreen->setShortcut(QKeySequence(Qt::Key_F11));
     connect(m_fullScreen, &QAction::toggled, this,
             [this](bool on) { on ? m_window->showFullScreen() : m_window->showNormal(); });
+    connect(m_station, &EolStation::databaseOpened, this, [this](bool ok, const QString& error) {
+        if (!ok && isActive())
+            QMessageBox::warning(
+                m_window, tr("Results database"),
+                tr("%1\n\nNo unit can be tested until results can be recorded.").arg(error));
+    });
 }
 
 bool ProductionMode::isActive() const
@@ -73,11 +79,9 @@ void ProductionMode::setActive(bool active)
                 dock->hide();
             }
         }
-        QString error;
-        if (!m_station->hasDatabase() && !m_station->openDatabase(QString(), &error))
-            QMessageBox::warning(
-                m_window, tr("Results database"),
-                tr("%1\n\nNo unit can be tested until results can be recorded.").arg(error));
+        // On the results thread: a database across the network may take seconds to answer.
+        if (!m_station->hasDatabase() && !m_station->isOpeningDatabase())
+            m_station->openDatabase(QString());
         m_view->refresh();
         m_view->focusSerial();
     } else {

@@ -143,6 +143,7 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
                 m_chart->add(n, m_clock.elapsed() / 1000.0, speed, unit);
             });
     connect(m_station, &EolStation::unitFinished, this, &ProductionView::unitFinished);
+    connect(m_station, &EolStation::databaseOpened, this, [this] { refresh(); });
     showVerdict(tr("READY"), QStringLiteral("#5f6b76"), QString());
     refreshRecipe();
     refreshCounters();

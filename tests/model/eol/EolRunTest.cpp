@@ -7,7 +7,7 @@
 #include "RecipeTestSupport.h"
 #include "eol/ResultDatabase.h"
 #include "eol/ResultQueries.h"
-#include "eol/ResultStore.h"
+#include "eol/ResultWriter.h"
 #include "profile/RoleEvaluator.h"
 
 #include <QTemporaryDir>
@@ -51,7 +51,7 @@ Recipe quickDbuRecipe(const QVector<int>& machineNumbers)
 class EolRunTest : public DriveSimFixture
 {
 protected:
-    UnitRecord run(const Recipe& recipe, ResultStore* store = nullptr,
+    UnitRecord run(const Recipe& recipe, ResultWriter* writer = nullptr,
                    std::function<void(EolRun&)> during = {})
     {
         EXPECT_EQ(textOf(problemsOf(recipe)), QString());
@@ -64,7 +64,7 @@ protected:
             for (const RecipeUnitValue& u : p.unitValues)
                 options.unitValues[p.machineNumber][u.name] = (u.min + u.max) / 2;
         options.timing.pollMs = 50;
-        options.store = store;
+        options.writer = writer;
         options.traffic = &log;
         EolRun eol(client.get(), ProfileRegistry::builtIn(), recipe, options);
         lastRun = &eol;
@@ -299,13 +299,16 @@ TEST_F(EolRunTest, TheStoredRecordIsTheOneTheRunReturns)
     startBus(QStringLiteral("dbu200@1{load=+60}"));
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("results.sqlite"));
+    ResultWriter writer;
+    const ResultWriter::Opened opened = writer.openAndWait(path, QStringLiteral("line 1"));
+    ASSERT_TRUE(opened.ok) << qPrintable(opened.error);
+    const UnitRecord r = run(quickDbuRecipe({1}), &writer);
+    ASSERT_EQ(r.status, UnitStatus::Fail);
+    ASSERT_FALSE(r.id.isEmpty());
+    EXPECT_EQ(writer.pending(), 0); // the run ends once its record is stored
     QString error;
     const std::unique_ptr<ResultDatabase> db = ResultDatabase::open(path, &error);
     ASSERT_TRUE(db) << qPrintable(error);
-    ResultStore store(*db);
-    const UnitRecord r = run(quickDbuRecipe({1}), &store);
-    ASSERT_EQ(r.status, UnitStatus::Fail);
-    ASSERT_FALSE(r.id.isEmpty());
     ResultQueries queries(*db);
     const std::optional<UnitRecord> stored = queries.load(r.id, &error);
     ASSERT_TRUE(stored) << qPrintable(error);

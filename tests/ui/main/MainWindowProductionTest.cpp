@@ -3,6 +3,7 @@
 // and counted; nothing that edits a parameter is offered meanwhile; quitting while a unit runs
 // asks, cancels it, stops its motor and records it as aborted.
 #include "MainWindowFixture.h"
+#include "TrafficLog.h"
 #include "eol/EolSpeedChart.h"
 #include "eol/EolStation.h"
 #include "eol/ProductionMode.h"
@@ -12,6 +13,7 @@
 #include "eol/ResultQueries.h"
 #include "workspace/DriveWorkspace.h"
 
+#include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -75,6 +77,7 @@ TEST_F(MainWindowProductionTest, AScannedSerialRunsTheUnitToPassAndNothingEditsM
     production->toggleAction()->trigger();
     qunsetenv("OPENTOP_EOL_DB");
     ASSERT_TRUE(production->isActive());
+    ASSERT_TRUE(waitFor([&] { return production->station()->hasDatabase(); }));
     EXPECT_FALSE(window->workspace()->isVisible()) << "no parameter pages in production mode";
     EXPECT_FALSE(actionVisible(window.get(), QStringLiteral("&Write all pending")));
     EXPECT_TRUE(window->stopAllButton()->isVisible()) << "STOP ALL stays";
@@ -119,6 +122,7 @@ TEST_F(MainWindowProductionTest, QuittingWhileAUnitRunsCancelsItStopsTheMotorAnd
     qputenv("OPENTOP_EOL_DB", db.toLocal8Bit());
     window->production()->toggleAction()->trigger();
     qunsetenv("OPENTOP_EOL_DB");
+    ASSERT_TRUE(waitFor([&] { return window->production()->station()->hasDatabase(); }));
     ProductionView* view = window->production()->view();
     ASSERT_TRUE(view->openRecipe(recipeFile(dir, 60)));
     QTest::keyClicks(view->serialField(), QStringLiteral("SN-Q1"));
@@ -148,4 +152,62 @@ TEST_F(MainWindowProductionTest, QuittingWhileAUnitRunsCancelsItStopsTheMotorAnd
     const auto history = ResultQueries(*database).history(QStringLiteral("SN-Q1"), &error);
     ASSERT_TRUE(history && history->size() == 1) << qPrintable(error);
     EXPECT_EQ(history->first().status, UnitStatus::Aborted);
+}
+
+TEST_F(MainWindowProductionTest, TheScreenAnswersWhileTheResultsDatabaseIsBusy)
+{
+    // Another station holds the shared SQLite file's write lock (a PostgreSQL server across the
+    // factory may be as slow): the unit waits to be recorded before anything is sent, and the
+    // window goes on answering meanwhile; once the lock goes, the unit runs to its verdict.
+    QTemporaryDir dir;
+    const QString db = dir.filePath(QStringLiteral("results.db"));
+    qputenv("OPENTOP_EOL_DB", db.toLocal8Bit());
+    ProductionMode* production = window->production();
+    production->toggleAction()->trigger();
+    qunsetenv("OPENTOP_EOL_DB");
+    ASSERT_TRUE(waitFor([&] { return production->station()->hasDatabase(); }));
+    ProductionView* view = production->view();
+    ASSERT_TRUE(view->openRecipe(recipeFile(dir, 1)));
+
+    QString error;
+    const auto other = ResultDatabase::open(db, &error);
+    ASSERT_TRUE(other) << qPrintable(error);
+    ASSERT_TRUE(other->begin(&error)) << qPrintable(error);
+    const auto writesSent = [&] {
+        int n = 0;
+        for (const TrafficEntry& e : window->trafficLog()->entries())
+            n +=
+                e.direction == TrafficEntry::Direction::Tx && (e.function == 6 || e.function == 16);
+        return n;
+    };
+    const int writesBefore = writesSent();
+    QTest::keyClicks(view->serialField(), QStringLiteral("SN-BUSY"));
+    QTest::keyClick(view->serialField(), Qt::Key_Return);
+    EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("TESTING"));
+
+    QElapsedTimer clock;
+    clock.start();
+    qint64 last = 0;
+    qint64 longest = 0;
+    QTimer tick;
+    QObject::connect(&tick, &QTimer::timeout, [&] {
+        longest = std::max(longest, clock.elapsed() - last);
+        last = clock.elapsed();
+    });
+    tick.start(10);
+    waitFor([] { return false; }, 800);
+    tick.stop();
+    EXPECT_LT(longest, 250) << "the window stood still while the database was busy";
+    EXPECT_TRUE(production->station()->isRunning());
+    EXPECT_EQ(writesSent(), writesBefore) << "nothing written before the unit is recorded";
+    EXPECT_EQ(speedOf(1), 0);
+
+    other->rollback();
+    ASSERT_TRUE(
+        waitFor([&] { return view->verdictLabel()->text() != QLatin1String("TESTING"); }, 30000));
+    EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("PASS"))
+        << qPrintable(view->reasonLabel()->text());
+    const auto history = ResultQueries(*other).history(QStringLiteral("SN-BUSY"), &error);
+    ASSERT_TRUE(history && history->size() == 1) << qPrintable(error);
+    EXPECT_EQ(history->first().status, UnitStatus::Pass);
 }

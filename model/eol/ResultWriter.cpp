@@ -1,0 +1,149 @@
+#include "eol/ResultWriter.h"
+
+#include "ModelLog.h"
+#include "eol/ResultDatabase.h"
+#include "eol/ResultStore.h"
+#include "eol/ResultUrl.h"
+
+#include <QDateTime>
+#include <QEventLoop>
+#include <QPointer>
+
+namespace opentop {
+
+// Touched only on the writer's thread.
+struct ResultWriter::State
+{
+    std::unique_ptr<ResultDatabase> db;
+    std::unique_ptr<ResultStore> store;
+};
+
+ResultWriter::ResultWriter(QObject* parent)
+    : QObject(parent)
+    , m_worker(new QObject)
+    , m_state(std::make_shared<State>())
+{
+    m_thread.setObjectName(QStringLiteral("results"));
+    m_worker->moveToThread(&m_thread);
+    m_thread.start();
+}
+
+ResultWriter::~ResultWriter()
+{
+    // Queued after every job already given: they run first, then the database closes on the
+    // thread that opened it.
+    QMetaObject::invokeMethod(
+        m_worker,
+        [state = m_state] {
+            state->store.reset();
+            state->db.reset();
+            QThread::currentThread()->quit();
+        },
+        Qt::QueuedConnection);
+    m_thread.wait();
+    delete m_worker;
+}
+
+template <typename Result>
+void ResultWriter::post(QObject* context, std::function<Result(State&)> job,
+                        std::function<void(const Result&)> answer,
+                        std::function<void(const Result&)> here)
+{
+    ++m_pending;
+    QPointer<QObject> to(context);
+    QMetaObject::invokeMethod(
+        m_worker,
+        [this, state = m_state, job = std::move(job), answer = std::move(answer),
+         here = std::move(here), to] {
+            const Result result = job(*state);
+            QMetaObject::invokeMethod(
+                this,
+                [this, result, answer, here, to] {
+                    --m_pending;
+                    if (here)
+                        here(result);
+                    if (!to)
+                        return;
+                    if (to->thread() == thread())
+                        answer(result);
+                    else
+                        QMetaObject::invokeMethod(
+                            to, [result, answer] { answer(result); }, Qt::QueuedConnection);
+                },
+                Qt::QueuedConnection);
+        },
+        Qt::QueuedConnection);
+}
+
+void ResultWriter::open(const QString& url, const QString& station, QObject* context, OpenDone done)
+{
+    ++m_opening;
+    std::function<Opened(State&)> job = [url, station](State& state) {
+        Opened opened;
+        std::unique_ptr<ResultDatabase> db = ResultDatabase::open(url, &opened.error);
+        if (!db)
+            return opened;
+        opened.displayText = db->url().displayText();
+        state.store.reset();
+        state.db = std::move(db);
+        state.store = std::make_unique<ResultStore>(*state.db);
+        opened.ok = true;
+        if (!station.isEmpty()) {
+            QString why;
+            const int marked =
+                state.store->markInterrupted(station, QDateTime::currentDateTimeUtc(), &why);
+            if (marked < 0)
+                qCWarning(lcModel) << "results database: leftovers not marked" << why;
+            opened.interrupted = std::max(0, marked);
+        }
+        return opened;
+    };
+    post<Opened>(context, std::move(job), std::move(done), [this](const Opened& o) {
+        --m_opening;
+        if (o.ok) {
+            m_open = true;
+            m_displayText = o.displayText;
+        }
+    });
+}
+
+ResultWriter::Opened ResultWriter::openAndWait(const QString& url, const QString& station)
+{
+    Opened result;
+    QEventLoop loop;
+    open(url, station, &loop, [&](const Opened& o) {
+        result = o;
+        loop.quit();
+    });
+    loop.exec();
+    return result;
+}
+
+void ResultWriter::beginUnit(const UnitRecord& record, QObject* context, BeginDone done)
+{
+    using Begun = std::pair<UnitRecord, QString>;
+    std::function<Begun(State&)> job = [record](State& state) {
+        Begun begun{record, QString()};
+        if (!state.store)
+            begun.second = tr("the results database is not open");
+        else
+            state.store->beginUnit(begun.first, &begun.second);
+        return begun;
+    };
+    post<Begun>(context, std::move(job), [done](const Begun& b) { done(b.first, b.second); });
+}
+
+void ResultWriter::finishUnit(const UnitRecord& record, QObject* context, FinishDone done)
+{
+    std::function<QString(State&)> job = [record](State& state) {
+        QString error;
+        if (!state.store)
+            return tr("the results database is not open");
+        UnitRecord finished = record;
+        state.store->finishUnit(finished, &error);
+        return error;
+    };
+    post<QString>(context, std::move(job), std::move(done));
+}
+
+} // namespace opentop
