@@ -33,47 +33,47 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="58"/>
+        <location filename="../app/gui/main.cpp" line="60"/>
         <source>Commissioning tool for RS-485 Modbus-RTU motor drives.</source>
         <translation>RS-485 Modbus-RTU モータドライバ用立上げツール。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="62"/>
+        <location filename="../app/gui/main.cpp" line="64"/>
         <source>Language of the program: %1 (default: the language menu&apos;s choice, else the system&apos;s).</source>
         <translation>プログラムの言語: %1 (既定: 言語メニューでの選択、なければシステムの言語)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="75"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="79"/>
         <source>Open the bus overview and the trends of every drive.</source>
         <translation>バス一覧と全ドライバのトレンドを開きます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="76"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="80"/>
         <source>Monitoring poll interval in milliseconds.</source>
         <translation>モニタのポーリング周期（ミリ秒）。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="79"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="83"/>
         <source>Quit after this many seconds and print the monitoring statistics (for measurements).</source>
         <translation>指定した秒数の後に終了し、モニタ統計を出力します（測定用）。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="83"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="87"/>
         <source>Print the monitoring totals every this many seconds (for measurements).</source>
         <translation>指定した秒数ごとにモニタの合計を出力します（測定用）。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="93"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="97"/>
         <source>--poll-ms needs a number of milliseconds</source>
         <translation>--poll-ms にはミリ秒数を指定してください</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="98"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="102"/>
         <source>--quit-after needs a number of seconds</source>
         <translation>--quit-after には秒数を指定してください</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="103"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="107"/>
         <source>--stats-every needs a number of seconds</source>
         <translation>--stats-every には秒数を指定してください</translation>
     </message>
@@ -1718,28 +1718,28 @@ Drives: %5</source>
 <context>
     <name>opentop::BusDocks</name>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="24"/>
+        <location filename="../ui/main/BusDocks.cpp" line="26"/>
         <source>Traffic log</source>
         <translation>通信ログ</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="31"/>
+        <location filename="../ui/main/BusDocks.cpp" line="33"/>
         <source>Bus overview</source>
         <translation>バス一覧</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="32"/>
+        <location filename="../ui/main/BusDocks.cpp" line="34"/>
         <source>Trends</source>
         <translation>トレンド</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="33"/>
+        <location filename="../ui/main/BusDocks.cpp" line="35"/>
         <source>Communication groups</source>
         <translation>通信グループ</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="36"/>
-        <location filename="../ui/main/BusDocks.cpp" line="68"/>
+        <location filename="../ui/main/BusDocks.cpp" line="38"/>
+        <location filename="../ui/main/BusDocks.cpp" line="70"/>
         <source>Not connected</source>
         <translation>未接続</translation>
     </message>
@@ -1790,100 +1790,100 @@ Drives: %5</source>
 <context>
     <name>opentop::BusListModel</name>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="71"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="72"/>
         <source>The machine number in hexadecimal, as the drive&apos;s rotary switches SW1 (high digit) and SW2 (low digit) are set</source>
         <translation>局番（16 進）。ドライバのロータリスイッチ SW1（上位桁）と SW2（下位桁）の設定値です</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="74"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="75"/>
         <source>The drive&apos;s MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, purple external interrupt, blue memory or communication error, grey no answer</source>
         <translation>ドライバの MONITOR LED: 赤 アラーム、緑 準備完了、橙 CW、水色 CCW、紫 外部停止、青 メモリまたは通信異常、灰 応答なし</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="81"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="82"/>
         <source>LED</source>
         <translation>LED</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="83"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="84"/>
         <source>Machine no.</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="85"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="86"/>
         <source>Hex / switches</source>
         <translation>16 進 / スイッチ</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="87"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="88"/>
         <source>Family</source>
         <translation>ファミリ</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="90"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="92"/>
         <source>Firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="94"/>
         <source>State</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="96"/>
         <source>Control priority</source>
         <translation>制御優先</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="107"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="108"/>
         <source>Two drives may share machine number %1 (%2, %3): check the SW1/SW2 switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
         <translation>2 台のドライバが局番 %1 を共有している可能性があります (%2, %3): ライン上の全ドライバの SW1/SW2 スイッチを確認し、各ドライバに固有の局番を設定して電源を再投入してください。終端抵抗の不良や A/B 線の入れ違いでも応答が化けます。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="126"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="130"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="138"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="127"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="131"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="129"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="130"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 機種不明</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="159"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="160"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>ステータスランプ %1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="163"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="164"/>
         <source>The drive&apos;s manual: %1</source>
         <translation>ドライバのマニュアル: %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="166"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="167"/>
         <source>Status light grey: not live — %1</source>
         <translation>ステータスランプ 灰: 更新停止 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="171"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="172"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>ドライバが機種を通知しません。値が正しい範囲でチェックされるよう、コンテキストメニュー（機種）から選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="180"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="181"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>ドライバは I/O 端子から運転指令を受け付けています。バス経由の試運転には通信優先が必要です。</translation>
     </message>
@@ -1907,67 +1907,67 @@ Drives: %5</source>
 <context>
     <name>opentop::BusOverviewModel</name>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="89"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="132"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="134"/>
         <source>State</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="136"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="138"/>
         <source>Display</source>
         <translation>表示値</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="97"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="140"/>
         <source>Target</source>
         <translation>目標</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="99"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="142"/>
         <source>Load</source>
         <translation>負荷</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="101"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="144"/>
         <source>Alarm</source>
         <translation>アラーム</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="103"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="146"/>
         <source>Last answer</source>
         <translation>最終応答</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="118"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="173"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="125"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="163"/>
         <source>connection lost; %1</source>
         <translation>接続断。%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="127"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="165"/>
         <source>no answer: %1; %2</source>
         <translation>応答なし: %1。%2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="158"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="202"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="161"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="205"/>
         <source>active</source>
         <translation>発生中</translation>
     </message>
@@ -2166,17 +2166,17 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="160"/>
+        <location filename="../model/bus/BusScanner.cpp" line="163"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
         <translation>応答が 2 回化けました (%1): 2 台のドライバが局番 %2 を共有している可能性があります。SW1/SW2 スイッチを確認してください</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="165"/>
+        <location filename="../model/bus/BusScanner.cpp" line="168"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>応答はありますが、一致するデバイスプロファイルがありません (%1)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="204"/>
+        <location filename="../model/bus/BusScanner.cpp" line="207"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>最初は応答が遅れました（%1 ms の待ち時間の後）。待ち時間を長くすると、このバスのスキャンが確実になります</translation>
     </message>
@@ -4212,7 +4212,7 @@ Configuration changes written but not stored are discarded.</source>
     <name>opentop::DriveWorkspace</name>
     <message>
         <location filename="../ui/workspace/DriveWorkspace.cpp" line="33"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="131"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="133"/>
         <source>Write &amp;all pending</source>
         <translation>未書込みをすべて書込み(&amp;A)</translation>
     </message>
@@ -4237,60 +4237,60 @@ Configuration changes written but not stored are discarded.</source>
         <translation>設定するドライバをバスリストで選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="130"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="132"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>未書込みをすべて書込み(&amp;A) (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="152"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="154"/>
         <source>Reading the drive…</source>
         <translation>ドライバを読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="154"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="156"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 個の値を読み出せませんでした</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="166"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="168"/>
         <source>Nothing was written: %1</source>
         <translation>何も書き込んでいません: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="179"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="181"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1: %2 何も書き込んでいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="187"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="189"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>未書込みの %n 個の値を局番 %1 に書込み</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="189"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="191"/>
         <source>Nothing was written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="192"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="194"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>%n 個の値を書込み中…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="194"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="196"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>%n 個の書込みに失敗しました。マークされた項目を確認してください</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="195"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="197"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n 個の値を書込み・照合しました</numerusform>
@@ -5227,48 +5227,48 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRun</name>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="54"/>
+        <location filename="../model/eol/EolRun.cpp" line="61"/>
         <source>the results database cannot record the unit: %1</source>
         <translation>結果データベースに製品を記録できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="71"/>
+        <location filename="../model/eol/EolRun.cpp" line="89"/>
         <source>the recipe has no drives</source>
         <translation>レシピにドライバがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="84"/>
+        <location filename="../model/eol/EolRun.cpp" line="102"/>
         <source>the recipe is not valid: %1</source>
         <translation>レシピが無効です: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="89"/>
+        <location filename="../model/eol/EolRun.cpp" line="107"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1: この製品の %2 の値がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="107"/>
+        <location filename="../model/eol/EolRun.cpp" line="125"/>
         <source>cancelled by the operator</source>
         <translation>作業者によるキャンセル</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="116"/>
+        <location filename="../model/eol/EolRun.cpp" line="134"/>
         <source>the connection was lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="122"/>
-        <location filename="../model/eol/EolRun.cpp" line="129"/>
+        <location filename="../model/eol/EolRun.cpp" line="140"/>
+        <location filename="../model/eol/EolRun.cpp" line="147"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="126"/>
+        <location filename="../model/eol/EolRun.cpp" line="144"/>
         <source>%1 failed</source>
         <translation>%1 失敗</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="164"/>
+        <location filename="../model/eol/EolRun.cpp" line="182"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>停止未確認: %1</translation>
     </message>
@@ -5276,129 +5276,129 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="86"/>
+        <location filename="../cli/EolRunCommand.cpp" line="85"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>出荷検査で製品を 1 台設定・試験し、結果を記録します</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="91"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>製品のシリアル番号（バーコードの読取り値）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="91"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <source>Who tests it (default: the login name).</source>
         <translation>試験者（既定: ログイン名）。</translation>
     </message>
     <message>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <location filename="../cli/EolRunCommand.cpp" line="93"/>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="93"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>このステーションの名前（既定: ホスト名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果データベース: SQLite ファイルまたは postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>個別値の CSV ファイル（シリアル番号別）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>作業者が入力する個別値。例: 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="131"/>
+        <location filename="../cli/EolRunCommand.cpp" line="130"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1: MACHINE:NAME=VALUE の形式で指定してください。例: 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="136"/>
+        <location filename="../cli/EolRunCommand.cpp" line="135"/>
         <source>--value %1: %2</source>
         <translation>--value %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="148"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>使い方: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="164"/>
+        <location filename="../cli/EolRunCommand.cpp" line="163"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1: レシピが無効です。何も送信していません:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="185"/>
+        <location filename="../cli/EolRunCommand.cpp" line="189"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果データベース: %1。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="194"/>
+        <location filename="../cli/EolRunCommand.cpp" line="193"/>
         <source>note: %1 unit(s) this station left unfinished are now recorded as interrupted</source>
         <translation>注: このステーションで未完了だった製品 %1 台を中断として記録しました</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="230"/>
-        <location filename="../cli/EolRunCommand.cpp" line="251"/>
+        <location filename="../cli/EolRunCommand.cpp" line="229"/>
+        <location filename="../cli/EolRunCommand.cpp" line="250"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="255"/>
         <source>ok</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="255"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="274"/>
+        <location filename="../cli/EolRunCommand.cpp" line="273"/>
         <source>interrupted at the station</source>
         <translation>ステーションで中断</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="303"/>
+        <location filename="../cli/EolRunCommand.cpp" line="302"/>
         <source>rev. %1</source>
         <translation>rev. %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="309"/>
+        <location filename="../cli/EolRunCommand.cpp" line="308"/>
         <source>the result was NOT recorded: %1</source>
         <translation>結果は記録されていません: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="311"/>
+        <location filename="../cli/EolRunCommand.cpp" line="310"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告: モータの停止が確認できません: %1</translation>
     </message>
@@ -5430,37 +5430,47 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="100"/>
+        <location filename="../model/eol/EolStation.cpp" line="123"/>
         <source>no results database</source>
         <translation>結果データベースがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="107"/>
+        <location filename="../model/eol/EolStation.cpp" line="123"/>
+        <source>opening the results database</source>
+        <translation>結果データベースを開いています</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="130"/>
         <source>a unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="111"/>
+        <location filename="../model/eol/EolStation.cpp" line="134"/>
         <source>open a recipe first</source>
         <translation>先にレシピを開いてください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="115"/>
+        <location filename="../model/eol/EolStation.cpp" line="139"/>
+        <source>the results database is being opened; try again in a moment</source>
+        <translation>結果データベースを開いています。しばらくしてからもう一度お試しください</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="140"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果データベースが開いていません。記録できない状態では試験しません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="119"/>
+        <location filename="../model/eol/EolStation.cpp" line="145"/>
         <source>not connected to a bus</source>
         <translation>バスに接続されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="123"/>
+        <location filename="../model/eol/EolStation.cpp" line="149"/>
         <source>no serial number</source>
         <translation>シリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="141"/>
+        <location filename="../model/eol/EolStation.cpp" line="167"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>このレシピは個別値を CSV ファイルから取得します: 先に CSV ファイルを開いてください</translation>
     </message>
@@ -7696,7 +7706,7 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>ドライバパネル表示: %1</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/PanelMirrorView.cpp" line="77"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="80"/>
         <source>not live</source>
         <translation>更新停止</translation>
     </message>
@@ -7704,27 +7714,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="183"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="184"/>
         <source>%1 (not valid now)</source>
         <translation>%1（現在は無効）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="202"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="213"/>
         <source>not read</source>
         <translation>未読出し</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="211"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="222"/>
         <source>Allowed: %1</source>
         <translation>許容: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="214"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="225"/>
         <source>On the drive: %1</source>
         <translation>ドライバの値: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="244"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="256"/>
         <source>Not accepted: %1</source>
         <translation>受け付けられません: %1</translation>
     </message>
@@ -7928,89 +7938,89 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterPage</name>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="23"/>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="83"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="24"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="106"/>
         <source>&amp;Write page</source>
         <translation>ページ書込み(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="24"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="25"/>
         <source>Re&amp;vert</source>
         <translation>元に戻す(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="25"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="26"/>
         <source>Re-&amp;read</source>
         <translation>再読出し(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="45"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="46"/>
         <source>Write this page&apos;s pending edits to the drive and verify them by reading back</source>
         <translation>このページの未書込みの編集をドライバに書き込み、読み戻して照合します</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="46"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="47"/>
         <source>Discard this page&apos;s pending edits</source>
         <translation>このページの未書込みの編集を破棄します</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="47"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="48"/>
         <source>Read this page&apos;s values from the drive again (edits stay)</source>
         <translation>このページの値をドライバから再読出しします（編集は保持）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="84"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="107"/>
         <source>&amp;Write page (%1)</source>
         <translation>ページ書込み(&amp;W) (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="97"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="120"/>
         <source>Reading…</source>
         <translation>読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="101"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="124"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 個の値を読み出せませんでした</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="120"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
         <source>Nothing was written: %n field(s) not accepted. %1</source>
         <translation>
             <numerusform>何も書き込んでいません: %n 項目が受け付けられません。%1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="166"/>
         <source>Write %n value(s) of the page %1 to machine number %2</source>
         <translation>
             <numerusform>ページ %1 の %n 個の値を局番 %2 に書込み</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="138"/>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="147"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="161"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="170"/>
         <source>Nothing was written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="152"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="175"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>%n 個の値を書込み中…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="156"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="179"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>%n 個の書込みに失敗しました。マークされた項目を確認してください</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="157"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="180"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n 個の値を書込み・照合しました</numerusform>
@@ -8415,22 +8425,22 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>全画面表示(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="49"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="55"/>
         <source>Production mode</source>
         <translation>生産モード</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="50"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="56"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>製品を試験中です。エンジニアリングモードに戻る前に、キャンセル (Esc) するか試験の終了を待ってください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="79"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="41"/>
         <source>Results database</source>
         <translation>結果データベース</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="42"/>
         <source>%1
 
 No unit can be tested until results can be recorded.</source>
@@ -8439,17 +8449,17 @@ No unit can be tested until results can be recorded.</source>
 結果を記録できるようになるまで、製品を試験できません。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="95"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="99"/>
         <source>A unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="96"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="100"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>製品 %1 を試験中です。キャンセルして「%2」を実行しますか？ 先にモータを停止し、製品は中止として記録します。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="108"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="112"/>
         <source>cancelled to %1</source>
         <translation>「%1」のためキャンセル</translation>
     </message>
@@ -8572,17 +8582,17 @@ No unit can be tested until results can be recorded.</source>
         <translation>理由</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="146"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="147"/>
         <source>READY</source>
         <translation>準備完了</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="174"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="175"/>
         <source>Recipe not usable</source>
         <translation>レシピを使用できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="175"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="176"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -8591,126 +8601,126 @@ No unit can be tested until results can be recorded.</source>
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="187"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="188"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="187"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="188"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="194"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="200"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="201"/>
         <source>Per-unit values</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="196"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="207"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="208"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — ドライバ %n 台</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="211"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="212"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;なし: 製品のレシピを開いてください&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="212"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="213"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>ステーション %1 · 結果: %2 · 個別値: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="215"/>
         <source>loaded</source>
         <translation>読込み済み</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="215"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="221"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>試験 %1 · 合格 %2 · 不合格 %3 · 直行率 %4 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
         <source>Per-unit value</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="253"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>ドライバ %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="266"/>
         <source>NOT STARTED</source>
         <translation>未開始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="281"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="282"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="282"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="283"/>
         <source>drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="283"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="284"/>
         <source>waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
         <source>TESTING</source>
         <translation>試験中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="308"/>
         <source>Unit %1</source>
         <translation>製品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="303"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="304"/>
         <source>NOT RECORDED: %1</source>
         <translation>未記録: %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="306"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="311"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
         <source>ABORTED</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="317"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="318"/>
         <source>Motor not confirmed stopped</source>
         <translation>モータの停止が確認できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="318"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="319"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10501,6 +10511,15 @@ No unit can be tested until results can be recorded.</source>
     </message>
 </context>
 <context>
+    <name>opentop::ResultWriter</name>
+    <message>
+        <location filename="../model/eol/ResultWriter.cpp" line="128"/>
+        <location filename="../model/eol/ResultWriter.cpp" line="141"/>
+        <source>the results database is not open</source>
+        <translation>結果データベースが開いていません</translation>
+    </message>
+</context>
+<context>
     <name>opentop::ResultsBrowser</name>
     <message>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
@@ -10877,48 +10896,48 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>%1:</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="123"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="124"/>
         <source>%1 (%2 %3)</source>
         <translation>%1 (%2 %3)</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="125"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="126"/>
         <source>not reported</source>
         <translation>通知なし</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="128"/>
-        <location filename="../ui/run/RunLiveState.cpp" line="138"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="129"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="139"/>
         <source>not read</source>
         <translation>未読出し</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="130"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="131"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="133"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="134"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="135"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="136"/>
         <source>active</source>
         <translation>発生中</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="154"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="155"/>
         <source>waiting for the first answer…</source>
         <translation>最初の応答を待機中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="154"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="155"/>
         <source>not watched</source>
         <translation>監視対象外</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="166"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="161"/>
         <source>Not live: %1</source>
         <translation>更新停止: %1</translation>
     </message>
@@ -12927,149 +12946,149 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     </message>
     <message>
         <location filename="../ui/traffic/TrafficLogView.cpp" line="44"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="161"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="168"/>
         <source>&amp;Pause</source>
         <translation>一時停止(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="52"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="53"/>
         <source>All drives</source>
         <translation>全ドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="54"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="55"/>
         <source>All</source>
         <translation>すべて</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="55"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="56"/>
         <source>Tx (requests)</source>
         <translation>Tx（要求）</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="56"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="57"/>
         <source>Rx (replies)</source>
         <translation>Rx（応答）</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="57"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="58"/>
         <source>Events (no reply)</source>
         <translation>イベント（応答なし）</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="61"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="62"/>
         <source>&amp;Clear</source>
         <translation>クリア(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="63"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="64"/>
         <source>&amp;Save…</source>
         <translation>保存(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="66"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="67"/>
         <source>&amp;Drive:</source>
         <translation>ドライバ(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="68"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="69"/>
         <source>Di&amp;rection:</source>
         <translation>方向(&amp;R):</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="82"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="83"/>
         <source>Frames</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Requests</source>
         <translation>要求</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Replies</source>
         <translation>応答</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Timeouts</source>
         <translation>タイムアウト</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>CRC errors</source>
         <translation>CRC エラー</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Exceptions</source>
         <translation>例外</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Wrong/garbled</source>
         <translation>不正/化け</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Mean ms</source>
         <translation>平均 ms</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Max ms</source>
         <translation>最大 ms</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="114"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="115"/>
         <source>Statistics per drive</source>
         <translation>ドライバ別統計</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="161"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="168"/>
         <source>&amp;Resume</source>
         <translation>再開(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="215"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="268"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="239"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="317"/>
         <source>Broadcast</source>
         <translation>ブロードキャスト</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="215"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="239"/>
         <source>Drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="257"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="306"/>
         <source>%1 addresses did not answer: %2</source>
         <translation>%1 個のアドレスが応答しませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="259"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="308"/>
         <source>No reply from machine numbers %1</source>
         <translation>局番 %1 から応答なし</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="285"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="290"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="348"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="353"/>
         <source>Save traffic log</source>
         <translation>通信ログを保存</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="285"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="348"/>
         <source>Text files (*.txt)</source>
         <translation>テキストファイル (*.txt)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="291"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="354"/>
         <source>Could not save %1: %2</source>
         <translation>%1 を保存できませんでした: %2</translation>
     </message>
@@ -13797,22 +13816,22 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendChart</name>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="43"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="45"/>
         <source>Time (hh:mm:ss)</source>
         <translation>時刻 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="86"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="88"/>
         <source>Drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="278"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="279"/>
         <source>There is no trend data to export yet.</source>
         <translation>エクスポートするトレンドデータがまだありません。</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="291"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="292"/>
         <source>Cannot write the picture %1.</source>
         <translation>画像 %1 を書き込めません。</translation>
     </message>

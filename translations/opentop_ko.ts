@@ -33,47 +33,47 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="58"/>
+        <location filename="../app/gui/main.cpp" line="60"/>
         <source>Commissioning tool for RS-485 Modbus-RTU motor drives.</source>
         <translation>RS-485 Modbus-RTU 모터 드라이버용 커미셔닝 도구.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="62"/>
+        <location filename="../app/gui/main.cpp" line="64"/>
         <source>Language of the program: %1 (default: the language menu&apos;s choice, else the system&apos;s).</source>
         <translation>프로그램 언어: %1 (기본값: 언어 메뉴에서 고른 언어, 없으면 시스템 언어).</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="75"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="79"/>
         <source>Open the bus overview and the trends of every drive.</source>
         <translation>버스 개요와 모든 드라이버의 트렌드를 엽니다.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="76"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="80"/>
         <source>Monitoring poll interval in milliseconds.</source>
         <translation>모니터링 폴링 주기(밀리초).</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="79"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="83"/>
         <source>Quit after this many seconds and print the monitoring statistics (for measurements).</source>
         <translation>지정한 초가 지나면 종료하고 모니터링 통계를 출력합니다(측정용).</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="83"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="87"/>
         <source>Print the monitoring totals every this many seconds (for measurements).</source>
         <translation>지정한 초마다 모니터링 합계를 출력합니다(측정용).</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="93"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="97"/>
         <source>--poll-ms needs a number of milliseconds</source>
         <translation>--poll-ms에는 밀리초 값이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="98"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="102"/>
         <source>--quit-after needs a number of seconds</source>
         <translation>--quit-after에는 초 값이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="103"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="107"/>
         <source>--stats-every needs a number of seconds</source>
         <translation>--stats-every에는 초 값이 필요합니다</translation>
     </message>
@@ -1718,28 +1718,28 @@ Drives: %5</source>
 <context>
     <name>opentop::BusDocks</name>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="24"/>
+        <location filename="../ui/main/BusDocks.cpp" line="26"/>
         <source>Traffic log</source>
         <translation>통신 로그</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="31"/>
+        <location filename="../ui/main/BusDocks.cpp" line="33"/>
         <source>Bus overview</source>
         <translation>버스 개요</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="32"/>
+        <location filename="../ui/main/BusDocks.cpp" line="34"/>
         <source>Trends</source>
         <translation>트렌드</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="33"/>
+        <location filename="../ui/main/BusDocks.cpp" line="35"/>
         <source>Communication groups</source>
         <translation>통신 그룹</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="36"/>
-        <location filename="../ui/main/BusDocks.cpp" line="68"/>
+        <location filename="../ui/main/BusDocks.cpp" line="38"/>
+        <location filename="../ui/main/BusDocks.cpp" line="70"/>
         <source>Not connected</source>
         <translation>연결 안 됨</translation>
     </message>
@@ -1790,100 +1790,100 @@ Drives: %5</source>
 <context>
     <name>opentop::BusListModel</name>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="71"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="72"/>
         <source>The machine number in hexadecimal, as the drive&apos;s rotary switches SW1 (high digit) and SW2 (low digit) are set</source>
         <translation>드라이버의 로터리 스위치 SW1(상위 자리)과 SW2(하위 자리)에 설정된 16진수 국번</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="74"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="75"/>
         <source>The drive&apos;s MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, purple external interrupt, blue memory or communication error, grey no answer</source>
         <translation>드라이버의 MONITOR LED: 빨강 알람, 초록 준비, 주황 CW, 하늘색 CCW, 보라 외부 인터럽트, 파랑 메모리 또는 통신 오류, 회색 응답 없음</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="81"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="82"/>
         <source>LED</source>
         <translation>LED</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="83"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="84"/>
         <source>Machine no.</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="85"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="86"/>
         <source>Hex / switches</source>
         <translation>16진수 / 스위치</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="87"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="88"/>
         <source>Family</source>
         <translation>제품군</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="90"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="92"/>
         <source>Firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="94"/>
         <source>State</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="96"/>
         <source>Control priority</source>
         <translation>제어 우선순위</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="107"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="108"/>
         <source>Two drives may share machine number %1 (%2, %3): check the SW1/SW2 switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
         <translation>두 드라이버가 국번 %1을(를) 함께 쓰고 있을 수 있습니다(%2, %3): 라인의 모든 드라이버의 SW1/SW2 스위치를 확인하고, 드라이버마다 다른 국번을 준 뒤 전원을 재투입하십시오. 종단 저항 불량이나 A/B 선이 바뀐 경우에도 응답이 깨집니다.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="126"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="130"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="138"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="127"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="131"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="129"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="130"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 기종 알 수 없음</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="159"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="160"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>상태등 %1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="163"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="164"/>
         <source>The drive&apos;s manual: %1</source>
         <translation>드라이버 매뉴얼: %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="166"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="167"/>
         <source>Status light grey: not live — %1</source>
         <translation>상태등 회색: 실시간 아님 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="171"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="172"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>드라이버가 기종을 알려주지 않습니다. 올바른 한계값으로 값을 검사하도록 컨텍스트 메뉴(기종)에서 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="180"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="181"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>드라이버가 I/O 단자로 운전 명령을 받고 있습니다. 버스를 통한 시운전에는 통신 우선이 필요합니다.</translation>
     </message>
@@ -1907,67 +1907,67 @@ Drives: %5</source>
 <context>
     <name>opentop::BusOverviewModel</name>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="89"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="132"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="134"/>
         <source>State</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="136"/>
         <source>Speed</source>
         <translation>속도</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="138"/>
         <source>Display</source>
         <translation>표시</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="97"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="140"/>
         <source>Target</source>
         <translation>목표</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="99"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="142"/>
         <source>Load</source>
         <translation>부하</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="101"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="144"/>
         <source>Alarm</source>
         <translation>알람</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="103"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="146"/>
         <source>Last answer</source>
         <translation>마지막 응답</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="118"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="173"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="125"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="163"/>
         <source>connection lost; %1</source>
         <translation>연결 끊김; %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="127"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="165"/>
         <source>no answer: %1; %2</source>
         <translation>응답 없음: %1; %2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="158"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="202"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="161"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="205"/>
         <source>active</source>
         <translation>발생 중</translation>
     </message>
@@ -2166,17 +2166,17 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="160"/>
+        <location filename="../model/bus/BusScanner.cpp" line="163"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
         <translation>응답이 두 번 깨짐(%1): 두 드라이버가 국번 %2을(를) 함께 쓰고 있을 가능성이 큽니다. SW1/SW2 스위치를 확인하십시오</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="165"/>
+        <location filename="../model/bus/BusScanner.cpp" line="168"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>응답은 있지만 일치하는 장치 프로파일이 없습니다(%1)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="204"/>
+        <location filename="../model/bus/BusScanner.cpp" line="207"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>처음에 늦게 응답했습니다(%1 ms 대기 후). 대기 시간을 늘리면 이 버스의 스캔이 안정됩니다</translation>
     </message>
@@ -4212,7 +4212,7 @@ Configuration changes written but not stored are discarded.</source>
     <name>opentop::DriveWorkspace</name>
     <message>
         <location filename="../ui/workspace/DriveWorkspace.cpp" line="33"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="131"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="133"/>
         <source>Write &amp;all pending</source>
         <translation>쓰기 대기 모두 쓰기(&amp;A)</translation>
     </message>
@@ -4237,60 +4237,60 @@ Configuration changes written but not stored are discarded.</source>
         <translation>설정할 드라이버를 버스 목록에서 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="130"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="132"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>쓰기 대기 모두 쓰기(&amp;A) (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="152"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="154"/>
         <source>Reading the drive…</source>
         <translation>드라이버를 읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="154"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="156"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>값 %n개를 읽을 수 없습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="166"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="168"/>
         <source>Nothing was written: %1</source>
         <translation>아무것도 쓰지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="179"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="181"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1: %2 아무것도 쓰지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="187"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="189"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>쓰기 대기 값 %n개를 국번 %1에 쓰기</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="189"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="191"/>
         <source>Nothing was written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="192"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="194"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>값 %n개 쓰는 중…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="194"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="196"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>쓰기 %n건 실패. 표시된 항목을 확인하십시오</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="195"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="197"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>값 %n개 쓰기 및 검증 완료</numerusform>
@@ -5227,48 +5227,48 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRun</name>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="54"/>
+        <location filename="../model/eol/EolRun.cpp" line="61"/>
         <source>the results database cannot record the unit: %1</source>
         <translation>결과 데이터베이스에 제품을 기록할 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="71"/>
+        <location filename="../model/eol/EolRun.cpp" line="89"/>
         <source>the recipe has no drives</source>
         <translation>레시피에 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="84"/>
+        <location filename="../model/eol/EolRun.cpp" line="102"/>
         <source>the recipe is not valid: %1</source>
         <translation>레시피가 올바르지 않습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="89"/>
+        <location filename="../model/eol/EolRun.cpp" line="107"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1: 이 제품의 %2 값이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="107"/>
+        <location filename="../model/eol/EolRun.cpp" line="125"/>
         <source>cancelled by the operator</source>
         <translation>작업자가 취소함</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="116"/>
+        <location filename="../model/eol/EolRun.cpp" line="134"/>
         <source>the connection was lost: %1</source>
         <translation>연결이 끊겼습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="122"/>
-        <location filename="../model/eol/EolRun.cpp" line="129"/>
+        <location filename="../model/eol/EolRun.cpp" line="140"/>
+        <location filename="../model/eol/EolRun.cpp" line="147"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="126"/>
+        <location filename="../model/eol/EolRun.cpp" line="144"/>
         <source>%1 failed</source>
         <translation>%1 실패</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="164"/>
+        <location filename="../model/eol/EolRun.cpp" line="182"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>정지 확인 안 됨: %1</translation>
     </message>
@@ -5276,129 +5276,129 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="86"/>
+        <location filename="../cli/EolRunCommand.cpp" line="85"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>라인 끝에서 제품 하나를 설정·검사하고 결과를 기록합니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="91"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>제품의 시리얼 번호(바코드에 읽히는 그대로).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="91"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <source>Who tests it (default: the login name).</source>
         <translation>검사하는 사람(기본값: 로그인 이름).</translation>
     </message>
     <message>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <location filename="../cli/EolRunCommand.cpp" line="93"/>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="93"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>이 스테이션의 이름(기본값: 호스트 이름).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>결과 데이터베이스: SQLite 파일 또는 postgresql://user@host/db.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>시리얼 번호별 제품별 값이 들어 있는 CSV 파일.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>작업자가 입력하는 제품별 값, 예: 1:spno3.speed=1500.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="131"/>
+        <location filename="../cli/EolRunCommand.cpp" line="130"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1: MACHINE:NAME=VALUE 형식으로 쓰십시오. 예: 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="136"/>
+        <location filename="../cli/EolRunCommand.cpp" line="135"/>
         <source>--value %1: %2</source>
         <translation>--value %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="148"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>사용법: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="164"/>
+        <location filename="../cli/EolRunCommand.cpp" line="163"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1: 레시피가 올바르지 않습니다. 아무것도 보내지 않았습니다:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="185"/>
+        <location filename="../cli/EolRunCommand.cpp" line="189"/>
         <source>results database: %1; nothing was sent</source>
         <translation>결과 데이터베이스: %1; 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="194"/>
+        <location filename="../cli/EolRunCommand.cpp" line="193"/>
         <source>note: %1 unit(s) this station left unfinished are now recorded as interrupted</source>
         <translation>참고: 이 스테이션에서 끝나지 않은 제품 %1대를 중단됨으로 기록했습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="230"/>
-        <location filename="../cli/EolRunCommand.cpp" line="251"/>
+        <location filename="../cli/EolRunCommand.cpp" line="229"/>
+        <location filename="../cli/EolRunCommand.cpp" line="250"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="255"/>
         <source>ok</source>
         <translation>정상</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="255"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="274"/>
+        <location filename="../cli/EolRunCommand.cpp" line="273"/>
         <source>interrupted at the station</source>
         <translation>스테이션에서 중단됨</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="303"/>
+        <location filename="../cli/EolRunCommand.cpp" line="302"/>
         <source>rev. %1</source>
         <translation>개정 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="309"/>
+        <location filename="../cli/EolRunCommand.cpp" line="308"/>
         <source>the result was NOT recorded: %1</source>
         <translation>결과가 기록되지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="311"/>
+        <location filename="../cli/EolRunCommand.cpp" line="310"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>경고: 모터 정지가 확인되지 않았습니다: %1</translation>
     </message>
@@ -5430,37 +5430,47 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="100"/>
+        <location filename="../model/eol/EolStation.cpp" line="123"/>
         <source>no results database</source>
         <translation>결과 데이터베이스 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="107"/>
+        <location filename="../model/eol/EolStation.cpp" line="123"/>
+        <source>opening the results database</source>
+        <translation>결과 데이터베이스를 여는 중</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="130"/>
         <source>a unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="111"/>
+        <location filename="../model/eol/EolStation.cpp" line="134"/>
         <source>open a recipe first</source>
         <translation>먼저 레시피를 여십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="115"/>
+        <location filename="../model/eol/EolStation.cpp" line="139"/>
+        <source>the results database is being opened; try again in a moment</source>
+        <translation>결과 데이터베이스를 여는 중입니다. 잠시 후 다시 시도하십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="140"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다. 기록할 수 없으면 검사하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="119"/>
+        <location filename="../model/eol/EolStation.cpp" line="145"/>
         <source>not connected to a bus</source>
         <translation>버스에 연결되어 있지 않음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="123"/>
+        <location filename="../model/eol/EolStation.cpp" line="149"/>
         <source>no serial number</source>
         <translation>시리얼 번호 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="141"/>
+        <location filename="../model/eol/EolStation.cpp" line="167"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>이 레시피는 제품별 값을 CSV 파일에서 가져옵니다: 먼저 그 파일을 여십시오</translation>
     </message>
@@ -7696,7 +7706,7 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>드라이버 패널 표시: %1</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/PanelMirrorView.cpp" line="77"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="80"/>
         <source>not live</source>
         <translation>실시간 아님</translation>
     </message>
@@ -7704,27 +7714,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="183"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="184"/>
         <source>%1 (not valid now)</source>
         <translation>%1 (현재 무효)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="202"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="213"/>
         <source>not read</source>
         <translation>읽지 않음</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="211"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="222"/>
         <source>Allowed: %1</source>
         <translation>허용: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="214"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="225"/>
         <source>On the drive: %1</source>
         <translation>드라이버 값: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="244"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="256"/>
         <source>Not accepted: %1</source>
         <translation>받아들일 수 없음: %1</translation>
     </message>
@@ -7928,89 +7938,89 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterPage</name>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="23"/>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="83"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="24"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="106"/>
         <source>&amp;Write page</source>
         <translation>페이지 쓰기(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="24"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="25"/>
         <source>Re&amp;vert</source>
         <translation>되돌리기(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="25"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="26"/>
         <source>Re-&amp;read</source>
         <translation>다시 읽기(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="45"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="46"/>
         <source>Write this page&apos;s pending edits to the drive and verify them by reading back</source>
         <translation>이 페이지의 쓰기 대기 편집을 드라이버에 쓰고 다시 읽어 검증합니다</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="46"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="47"/>
         <source>Discard this page&apos;s pending edits</source>
         <translation>이 페이지의 쓰기 대기 편집을 버립니다</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="47"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="48"/>
         <source>Read this page&apos;s values from the drive again (edits stay)</source>
         <translation>이 페이지의 값을 드라이버에서 다시 읽습니다(편집 내용은 유지)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="84"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="107"/>
         <source>&amp;Write page (%1)</source>
         <translation>페이지 쓰기(&amp;W) (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="97"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="120"/>
         <source>Reading…</source>
         <translation>읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="101"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="124"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>값 %n개를 읽을 수 없습니다</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="120"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
         <source>Nothing was written: %n field(s) not accepted. %1</source>
         <translation>
             <numerusform>아무것도 쓰지 않았습니다: 받아들일 수 없는 항목 %n개. %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="166"/>
         <source>Write %n value(s) of the page %1 to machine number %2</source>
         <translation>
             <numerusform>페이지 %1의 값 %n개를 국번 %2에 쓰기</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="138"/>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="147"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="161"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="170"/>
         <source>Nothing was written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="152"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="175"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>값 %n개 쓰는 중…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="156"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="179"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>쓰기 %n건 실패. 표시된 항목을 확인하십시오</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="157"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="180"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>값 %n개 쓰기 및 검증 완료</numerusform>
@@ -8415,22 +8425,22 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>전체 화면(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="49"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="55"/>
         <source>Production mode</source>
         <translation>생산 모드</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="50"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="56"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>제품 검사 중입니다. 엔지니어링 모드로 돌아가기 전에 검사를 취소(Esc)하거나 끝날 때까지 기다리십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="79"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="41"/>
         <source>Results database</source>
         <translation>결과 데이터베이스</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="42"/>
         <source>%1
 
 No unit can be tested until results can be recorded.</source>
@@ -8439,17 +8449,17 @@ No unit can be tested until results can be recorded.</source>
 결과를 기록할 수 있을 때까지 제품을 검사할 수 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="95"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="99"/>
         <source>A unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="96"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="100"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>제품 %1을(를) 검사 중입니다. 검사를 취소하고 %2하시겠습니까? 먼저 모터를 정지하며, 제품은 중지됨으로 기록됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="108"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="112"/>
         <source>cancelled to %1</source>
         <translation>%1하기 위해 취소함</translation>
     </message>
@@ -8572,17 +8582,17 @@ No unit can be tested until results can be recorded.</source>
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="146"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="147"/>
         <source>READY</source>
         <translation>준비 완료</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="174"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="175"/>
         <source>Recipe not usable</source>
         <translation>레시피 사용 불가</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="175"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="176"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -8591,126 +8601,126 @@ No unit can be tested until results can be recorded.</source>
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="187"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="188"/>
         <source>Open recipe</source>
         <translation>레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="187"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="188"/>
         <source>Recipes (*.json)</source>
         <translation>레시피 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="194"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="200"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="201"/>
         <source>Per-unit values</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="196"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="207"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="208"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 개정 %2 — 드라이버 %n대</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="211"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="212"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;없음: 제품의 레시피를 여십시오&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="212"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="213"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>스테이션 %1 · 결과: %2 · 제품별 값: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="215"/>
         <source>loaded</source>
         <translation>불러옴</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="215"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="221"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>검사 %1 · 합격 %2 · 불합격 %3 · 직행률 %4 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
         <source>Per-unit value</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="253"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>드라이버 %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="266"/>
         <source>NOT STARTED</source>
         <translation>시작 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="281"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="282"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="282"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="283"/>
         <source>drive %1 (%2)</source>
         <translation>드라이버 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="283"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="284"/>
         <source>waiting</source>
         <translation>대기 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
         <source>TESTING</source>
         <translation>검사 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="308"/>
         <source>Unit %1</source>
         <translation>제품 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="303"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="304"/>
         <source>NOT RECORDED: %1</source>
         <translation>기록 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="306"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
         <source>PASS</source>
         <translation>합격</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="311"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
         <source>ABORTED</source>
         <translation>중지됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="317"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="318"/>
         <source>Motor not confirmed stopped</source>
         <translation>모터 정지 확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="318"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="319"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10501,6 +10511,15 @@ No unit can be tested until results can be recorded.</source>
     </message>
 </context>
 <context>
+    <name>opentop::ResultWriter</name>
+    <message>
+        <location filename="../model/eol/ResultWriter.cpp" line="128"/>
+        <location filename="../model/eol/ResultWriter.cpp" line="141"/>
+        <source>the results database is not open</source>
+        <translation>결과 데이터베이스가 열려 있지 않습니다</translation>
+    </message>
+</context>
+<context>
     <name>opentop::ResultsBrowser</name>
     <message>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
@@ -10877,48 +10896,48 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>%1:</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="123"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="124"/>
         <source>%1 (%2 %3)</source>
         <translation>%1 (%2 %3)</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="125"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="126"/>
         <source>not reported</source>
         <translation>알려주지 않음</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="128"/>
-        <location filename="../ui/run/RunLiveState.cpp" line="138"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="129"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="139"/>
         <source>not read</source>
         <translation>읽지 않음</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="130"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="131"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="133"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="134"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="135"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="136"/>
         <source>active</source>
         <translation>발생 중</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="154"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="155"/>
         <source>waiting for the first answer…</source>
         <translation>첫 응답 대기 중…</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="154"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="155"/>
         <source>not watched</source>
         <translation>감시 안 함</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="166"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="161"/>
         <source>Not live: %1</source>
         <translation>실시간 아님: %1</translation>
     </message>
@@ -12927,149 +12946,149 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
     </message>
     <message>
         <location filename="../ui/traffic/TrafficLogView.cpp" line="44"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="161"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="168"/>
         <source>&amp;Pause</source>
         <translation>일시 정지(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="52"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="53"/>
         <source>All drives</source>
         <translation>모든 드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="54"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="55"/>
         <source>All</source>
         <translation>전체</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="55"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="56"/>
         <source>Tx (requests)</source>
         <translation>Tx (요청)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="56"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="57"/>
         <source>Rx (replies)</source>
         <translation>Rx (응답)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="57"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="58"/>
         <source>Events (no reply)</source>
         <translation>이벤트 (응답 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="61"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="62"/>
         <source>&amp;Clear</source>
         <translation>지우기(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="63"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="64"/>
         <source>&amp;Save…</source>
         <translation>저장(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="66"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="67"/>
         <source>&amp;Drive:</source>
         <translation>드라이버(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="68"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="69"/>
         <source>Di&amp;rection:</source>
         <translation>방향(&amp;R):</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="82"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="83"/>
         <source>Frames</source>
         <translation>프레임</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Requests</source>
         <translation>요청</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Replies</source>
         <translation>응답</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Timeouts</source>
         <translation>타임아웃</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>CRC errors</source>
         <translation>CRC 오류</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Exceptions</source>
         <translation>예외</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Wrong/garbled</source>
         <translation>잘못됨/깨짐</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Mean ms</source>
         <translation>평균 ms</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Max ms</source>
         <translation>최대 ms</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="114"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="115"/>
         <source>Statistics per drive</source>
         <translation>드라이버별 통계</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="161"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="168"/>
         <source>&amp;Resume</source>
         <translation>재개(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="215"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="268"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="239"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="317"/>
         <source>Broadcast</source>
         <translation>브로드캐스트</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="215"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="239"/>
         <source>Drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="257"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="306"/>
         <source>%1 addresses did not answer: %2</source>
         <translation>응답하지 않은 주소 %1개: %2</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="259"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="308"/>
         <source>No reply from machine numbers %1</source>
         <translation>응답 없는 국번: %1</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="285"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="290"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="348"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="353"/>
         <source>Save traffic log</source>
         <translation>통신 로그 저장</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="285"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="348"/>
         <source>Text files (*.txt)</source>
         <translation>텍스트 파일 (*.txt)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="291"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="354"/>
         <source>Could not save %1: %2</source>
         <translation>%1을(를) 저장할 수 없습니다: %2</translation>
     </message>
@@ -13797,22 +13816,22 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendChart</name>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="43"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="45"/>
         <source>Time (hh:mm:ss)</source>
         <translation>시간 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="86"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="88"/>
         <source>Drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="278"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="279"/>
         <source>There is no trend data to export yet.</source>
         <translation>아직 내보낼 트렌드 데이터가 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="291"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="292"/>
         <source>Cannot write the picture %1.</source>
         <translation>이미지 %1을(를) 저장할 수 없습니다.</translation>
     </message>

@@ -33,47 +33,47 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="58"/>
+        <location filename="../app/gui/main.cpp" line="60"/>
         <source>Commissioning tool for RS-485 Modbus-RTU motor drives.</source>
         <translation>RS-485 Modbus-RTU 电机驱动器调试工具。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="62"/>
+        <location filename="../app/gui/main.cpp" line="64"/>
         <source>Language of the program: %1 (default: the language menu&apos;s choice, else the system&apos;s).</source>
         <translation>程序的语言：%1（默认：语言菜单的选择，否则为系统语言）。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="75"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="79"/>
         <source>Open the bus overview and the trends of every drive.</source>
         <translation>打开总线总览和所有驱动器的趋势。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="76"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="80"/>
         <source>Monitoring poll interval in milliseconds.</source>
         <translation>监视轮询周期（毫秒）。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="79"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="83"/>
         <source>Quit after this many seconds and print the monitoring statistics (for measurements).</source>
         <translation>运行指定秒数后退出并输出监视统计（用于测量）。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="83"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="87"/>
         <source>Print the monitoring totals every this many seconds (for measurements).</source>
         <translation>每隔指定秒数输出一次监视统计汇总（用于测量）。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="93"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="97"/>
         <source>--poll-ms needs a number of milliseconds</source>
         <translation>--poll-ms 需要一个毫秒数</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="98"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="102"/>
         <source>--quit-after needs a number of seconds</source>
         <translation>--quit-after 需要一个秒数</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="103"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="107"/>
         <source>--stats-every needs a number of seconds</source>
         <translation>--stats-every 需要一个秒数</translation>
     </message>
@@ -1718,28 +1718,28 @@ Drives: %5</source>
 <context>
     <name>opentop::BusDocks</name>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="24"/>
+        <location filename="../ui/main/BusDocks.cpp" line="26"/>
         <source>Traffic log</source>
         <translation>报文日志</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="31"/>
+        <location filename="../ui/main/BusDocks.cpp" line="33"/>
         <source>Bus overview</source>
         <translation>总线总览</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="32"/>
+        <location filename="../ui/main/BusDocks.cpp" line="34"/>
         <source>Trends</source>
         <translation>趋势</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="33"/>
+        <location filename="../ui/main/BusDocks.cpp" line="35"/>
         <source>Communication groups</source>
         <translation>通信组</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="36"/>
-        <location filename="../ui/main/BusDocks.cpp" line="68"/>
+        <location filename="../ui/main/BusDocks.cpp" line="38"/>
+        <location filename="../ui/main/BusDocks.cpp" line="70"/>
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
@@ -1790,100 +1790,100 @@ Drives: %5</source>
 <context>
     <name>opentop::BusListModel</name>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="71"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="72"/>
         <source>The machine number in hexadecimal, as the drive&apos;s rotary switches SW1 (high digit) and SW2 (low digit) are set</source>
         <translation>十六进制站号，对应驱动器旋转开关 SW1（高位）和 SW2（低位）的设定</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="74"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="75"/>
         <source>The drive&apos;s MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, purple external interrupt, blue memory or communication error, grey no answer</source>
         <translation>驱动器的 MONITOR 指示灯：红色报警，绿色就绪，橙色 CW，天蓝色 CCW，紫色外部中断，蓝色存储器或通信错误，灰色无应答</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="81"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="82"/>
         <source>LED</source>
         <translation>LED</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="83"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="84"/>
         <source>Machine no.</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="85"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="86"/>
         <source>Hex / switches</source>
         <translation>十六进制 / 开关</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="87"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="88"/>
         <source>Family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="90"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="92"/>
         <source>Firmware</source>
         <translation>固件</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="94"/>
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="96"/>
         <source>Control priority</source>
         <translation>控制优先级</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="107"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="108"/>
         <source>Two drives may share machine number %1 (%2, %3): check the SW1/SW2 switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
         <translation>可能有两台驱动器共用站号 %1（%2、%3）：请检查线路上每台驱动器的 SW1/SW2 开关，为每台驱动器设定不同的站号并重新上电；终端电阻不当或 A/B 线接反也会导致应答出错。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="126"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="130"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="138"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="127"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="131"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="129"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="130"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 机型未知</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="159"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="160"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>状态灯 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="163"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="164"/>
         <source>The drive&apos;s manual: %1</source>
         <translation>驱动器手册：%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="166"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="167"/>
         <source>Status light grey: not live — %1</source>
         <translation>状态灯灰色：非实时 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="171"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="172"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>该驱动器未报告其机型。请在右键菜单（机型）中选择，以便按正确的限值检查数值。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="180"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="181"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>该驱动器通过 I/O 端子接收运行命令；通过总线试运行需要通信优先级。</translation>
     </message>
@@ -1907,67 +1907,67 @@ Drives: %5</source>
 <context>
     <name>opentop::BusOverviewModel</name>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="89"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="132"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="134"/>
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="136"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="138"/>
         <source>Display</source>
         <translation>显示</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="97"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="140"/>
         <source>Target</source>
         <translation>目标</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="99"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="142"/>
         <source>Load</source>
         <translation>负载</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="101"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="144"/>
         <source>Alarm</source>
         <translation>报警</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="103"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="146"/>
         <source>Last answer</source>
         <translation>最后应答</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="118"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="173"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="125"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="163"/>
         <source>connection lost; %1</source>
         <translation>连接丢失；%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="127"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="165"/>
         <source>no answer: %1; %2</source>
         <translation>无应答：%1；%2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="158"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="202"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="161"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="205"/>
         <source>active</source>
         <translation>发生中</translation>
     </message>
@@ -2166,17 +2166,17 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="160"/>
+        <location filename="../model/bus/BusScanner.cpp" line="163"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
         <translation>两次应答报文损坏（%1）：可能有两台驱动器共用站号 %2；请检查它们的 SW1/SW2 开关</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="165"/>
+        <location filename="../model/bus/BusScanner.cpp" line="168"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>有应答，但没有匹配的设备描述（%1）</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="204"/>
+        <location filename="../model/bus/BusScanner.cpp" line="207"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>首次应答较迟（超过 %1 ms 等待时间）；加长等待时间可使该总线的扫描更可靠</translation>
     </message>
@@ -4212,7 +4212,7 @@ Configuration changes written but not stored are discarded.</source>
     <name>opentop::DriveWorkspace</name>
     <message>
         <location filename="../ui/workspace/DriveWorkspace.cpp" line="33"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="131"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="133"/>
         <source>Write &amp;all pending</source>
         <translation>写入全部待写入项(&amp;A)</translation>
     </message>
@@ -4237,60 +4237,60 @@ Configuration changes written but not stored are discarded.</source>
         <translation>在总线列表中选择一台驱动器进行设定。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="130"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="132"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>写入全部待写入项(&amp;A)（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="152"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="154"/>
         <source>Reading the drive…</source>
         <translation>正在读取驱动器…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="154"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="156"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 个值无法读取</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="166"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="168"/>
         <source>Nothing was written: %1</source>
         <translation>未写入任何内容：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="179"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="181"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1：%2 未写入任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="187"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="189"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>向站号 %1 写入 %n 个待写入值</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="189"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="191"/>
         <source>Nothing was written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="192"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="194"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>正在写入 %n 个值…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="194"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="196"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>%n 项写入失败；请查看标记的字段</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="195"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="197"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n 个值已写入并校验</numerusform>
@@ -5227,48 +5227,48 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRun</name>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="54"/>
+        <location filename="../model/eol/EolRun.cpp" line="61"/>
         <source>the results database cannot record the unit: %1</source>
         <translation>结果数据库无法记录该产品：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="71"/>
+        <location filename="../model/eol/EolRun.cpp" line="89"/>
         <source>the recipe has no drives</source>
         <translation>配方中没有驱动器</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="84"/>
+        <location filename="../model/eol/EolRun.cpp" line="102"/>
         <source>the recipe is not valid: %1</source>
         <translation>配方无效：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="89"/>
+        <location filename="../model/eol/EolRun.cpp" line="107"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1：该产品没有 %2 的值</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="107"/>
+        <location filename="../model/eol/EolRun.cpp" line="125"/>
         <source>cancelled by the operator</source>
         <translation>已被操作员取消</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="116"/>
+        <location filename="../model/eol/EolRun.cpp" line="134"/>
         <source>the connection was lost: %1</source>
         <translation>连接丢失：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="122"/>
-        <location filename="../model/eol/EolRun.cpp" line="129"/>
+        <location filename="../model/eol/EolRun.cpp" line="140"/>
+        <location filename="../model/eol/EolRun.cpp" line="147"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="126"/>
+        <location filename="../model/eol/EolRun.cpp" line="144"/>
         <source>%1 failed</source>
         <translation>%1 失败</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="164"/>
+        <location filename="../model/eol/EolRun.cpp" line="182"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>未确认已停止：%1</translation>
     </message>
@@ -5276,129 +5276,129 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="86"/>
+        <location filename="../cli/EolRunCommand.cpp" line="85"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>在下线工位设定并测试一台产品；记录结果</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="91"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>产品序列号（按条码读取）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="91"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <source>Who tests it (default: the login name).</source>
         <translation>测试人员（默认：登录名）。</translation>
     </message>
     <message>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <location filename="../cli/EolRunCommand.cpp" line="93"/>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="93"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>本工位名称（默认：主机名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>结果数据库：SQLite 文件或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>含单台数值的 CSV 文件，按序列号对应。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>由操作员输入的单台数值，例如 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="131"/>
+        <location filename="../cli/EolRunCommand.cpp" line="130"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1：请写成 MACHINE:NAME=VALUE，例如 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="136"/>
+        <location filename="../cli/EolRunCommand.cpp" line="135"/>
         <source>--value %1: %2</source>
         <translation>--value %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="148"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="164"/>
+        <location filename="../cli/EolRunCommand.cpp" line="163"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1：配方无效；未发送任何内容：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="185"/>
+        <location filename="../cli/EolRunCommand.cpp" line="189"/>
         <source>results database: %1; nothing was sent</source>
         <translation>结果数据库：%1；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="194"/>
+        <location filename="../cli/EolRunCommand.cpp" line="193"/>
         <source>note: %1 unit(s) this station left unfinished are now recorded as interrupted</source>
         <translation>注意：本工位遗留的 %1 台未完成产品现已记录为已中断</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="230"/>
-        <location filename="../cli/EolRunCommand.cpp" line="251"/>
+        <location filename="../cli/EolRunCommand.cpp" line="229"/>
+        <location filename="../cli/EolRunCommand.cpp" line="250"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="255"/>
         <source>ok</source>
         <translation>正常</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="255"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="274"/>
+        <location filename="../cli/EolRunCommand.cpp" line="273"/>
         <source>interrupted at the station</source>
         <translation>在工位上中断</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="303"/>
+        <location filename="../cli/EolRunCommand.cpp" line="302"/>
         <source>rev. %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="309"/>
+        <location filename="../cli/EolRunCommand.cpp" line="308"/>
         <source>the result was NOT recorded: %1</source>
         <translation>结果未记录：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="311"/>
+        <location filename="../cli/EolRunCommand.cpp" line="310"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告：未确认电机已停止：%1</translation>
     </message>
@@ -5430,37 +5430,47 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="100"/>
+        <location filename="../model/eol/EolStation.cpp" line="123"/>
         <source>no results database</source>
         <translation>无结果数据库</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="107"/>
+        <location filename="../model/eol/EolStation.cpp" line="123"/>
+        <source>opening the results database</source>
+        <translation>正在打开结果数据库</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="130"/>
         <source>a unit is being tested</source>
         <translation>正在测试一台产品</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="111"/>
+        <location filename="../model/eol/EolStation.cpp" line="134"/>
         <source>open a recipe first</source>
         <translation>请先打开配方</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="115"/>
+        <location filename="../model/eol/EolStation.cpp" line="139"/>
+        <source>the results database is being opened; try again in a moment</source>
+        <translation>正在打开结果数据库；请稍后再试</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="140"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>结果数据库未打开；不记录就不进行测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="119"/>
+        <location filename="../model/eol/EolStation.cpp" line="145"/>
         <source>not connected to a bus</source>
         <translation>未连接总线</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="123"/>
+        <location filename="../model/eol/EolStation.cpp" line="149"/>
         <source>no serial number</source>
         <translation>无序列号</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="141"/>
+        <location filename="../model/eol/EolStation.cpp" line="167"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>该配方从 CSV 文件获取单台数值：请先打开该文件</translation>
     </message>
@@ -7696,7 +7706,7 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>驱动器面板显示 %1</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/PanelMirrorView.cpp" line="77"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="80"/>
         <source>not live</source>
         <translation>非实时</translation>
     </message>
@@ -7704,27 +7714,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="183"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="184"/>
         <source>%1 (not valid now)</source>
         <translation>%1（当前无效）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="202"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="213"/>
         <source>not read</source>
         <translation>未读取</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="211"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="222"/>
         <source>Allowed: %1</source>
         <translation>允许：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="214"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="225"/>
         <source>On the drive: %1</source>
         <translation>驱动器中：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="244"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="256"/>
         <source>Not accepted: %1</source>
         <translation>未接受：%1</translation>
     </message>
@@ -7928,89 +7938,89 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterPage</name>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="23"/>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="83"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="24"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="106"/>
         <source>&amp;Write page</source>
         <translation>写入本页(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="24"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="25"/>
         <source>Re&amp;vert</source>
         <translation>还原(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="25"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="26"/>
         <source>Re-&amp;read</source>
         <translation>重新读取(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="45"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="46"/>
         <source>Write this page&apos;s pending edits to the drive and verify them by reading back</source>
         <translation>将本页的待写入修改写入驱动器，并通过回读校验</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="46"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="47"/>
         <source>Discard this page&apos;s pending edits</source>
         <translation>放弃本页的待写入修改</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="47"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="48"/>
         <source>Read this page&apos;s values from the drive again (edits stay)</source>
         <translation>重新从驱动器读取本页的值（修改保留）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="84"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="107"/>
         <source>&amp;Write page (%1)</source>
         <translation>写入本页(&amp;W)（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="97"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="120"/>
         <source>Reading…</source>
         <translation>正在读取…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="101"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="124"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 个值无法读取</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="120"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
         <source>Nothing was written: %n field(s) not accepted. %1</source>
         <translation>
             <numerusform>未写入任何内容：%n 个字段未被接受。%1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="166"/>
         <source>Write %n value(s) of the page %1 to machine number %2</source>
         <translation>
             <numerusform>将页面 %1 的 %n 个值写入站号 %2</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="138"/>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="147"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="161"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="170"/>
         <source>Nothing was written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="152"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="175"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>正在写入 %n 个值…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="156"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="179"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>%n 项写入失败；请查看标记的字段</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="157"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="180"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n 个值已写入并校验</numerusform>
@@ -8415,22 +8425,22 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>全屏(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="49"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="55"/>
         <source>Production mode</source>
         <translation>生产模式</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="50"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="56"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>正在测试一台产品。请先取消测试（Esc）或等待测试完成，再切换回工程模式。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="79"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="41"/>
         <source>Results database</source>
         <translation>结果数据库</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="42"/>
         <source>%1
 
 No unit can be tested until results can be recorded.</source>
@@ -8439,17 +8449,17 @@ No unit can be tested until results can be recorded.</source>
 在能够记录结果之前，无法测试任何产品。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="95"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="99"/>
         <source>A unit is being tested</source>
         <translation>正在测试一台产品</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="96"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="100"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>正在测试产品 %1。取消测试并%2？会先停止其电机；该产品将记录为已中止。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="108"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="112"/>
         <source>cancelled to %1</source>
         <translation>因%1而取消</translation>
     </message>
@@ -8572,17 +8582,17 @@ No unit can be tested until results can be recorded.</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="146"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="147"/>
         <source>READY</source>
         <translation>就绪</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="174"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="175"/>
         <source>Recipe not usable</source>
         <translation>配方不可用</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="175"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="176"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -8591,126 +8601,126 @@ No unit can be tested until results can be recorded.</source>
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="187"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="188"/>
         <source>Open recipe</source>
         <translation>打开配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="187"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="188"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="194"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="200"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="201"/>
         <source>Per-unit values</source>
         <translation>单台数值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="196"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="207"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="208"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 版本 %2 — %n 台驱动器</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="211"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="212"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;无：请打开该产品的配方&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="212"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="213"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>工位 %1 · 结果：%2 · 单台数值：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="215"/>
         <source>loaded</source>
         <translation>已载入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="215"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="221"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>已测 %1 · 合格 %2 · 不合格 %3 · 直通率 %4 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
         <source>Per-unit value</source>
         <translation>单台数值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="253"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>驱动器 %1：%2（%3–%4 %5）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="266"/>
         <source>NOT STARTED</source>
         <translation>未开始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="281"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="282"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="282"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="283"/>
         <source>drive %1 (%2)</source>
         <translation>驱动器 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="283"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="284"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
         <source>TESTING</source>
         <translation>测试中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="308"/>
         <source>Unit %1</source>
         <translation>产品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="303"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="304"/>
         <source>NOT RECORDED: %1</source>
         <translation>未记录：%1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="306"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="311"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="317"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="318"/>
         <source>Motor not confirmed stopped</source>
         <translation>未确认电机已停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="318"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="319"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10501,6 +10511,15 @@ No unit can be tested until results can be recorded.</source>
     </message>
 </context>
 <context>
+    <name>opentop::ResultWriter</name>
+    <message>
+        <location filename="../model/eol/ResultWriter.cpp" line="128"/>
+        <location filename="../model/eol/ResultWriter.cpp" line="141"/>
+        <source>the results database is not open</source>
+        <translation>结果数据库未打开</translation>
+    </message>
+</context>
+<context>
     <name>opentop::ResultsBrowser</name>
     <message>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
@@ -10877,48 +10896,48 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>%1：</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="123"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="124"/>
         <source>%1 (%2 %3)</source>
         <translation>%1（%2 %3）</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="125"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="126"/>
         <source>not reported</source>
         <translation>未报告</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="128"/>
-        <location filename="../ui/run/RunLiveState.cpp" line="138"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="129"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="139"/>
         <source>not read</source>
         <translation>未读取</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="130"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="131"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="133"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="134"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="135"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="136"/>
         <source>active</source>
         <translation>发生中</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="154"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="155"/>
         <source>waiting for the first answer…</source>
         <translation>正在等待首次应答…</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="154"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="155"/>
         <source>not watched</source>
         <translation>未监视</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="166"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="161"/>
         <source>Not live: %1</source>
         <translation>非实时：%1</translation>
     </message>
@@ -12927,149 +12946,149 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     </message>
     <message>
         <location filename="../ui/traffic/TrafficLogView.cpp" line="44"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="161"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="168"/>
         <source>&amp;Pause</source>
         <translation>暂停(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="52"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="53"/>
         <source>All drives</source>
         <translation>所有驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="54"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="55"/>
         <source>All</source>
         <translation>全部</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="55"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="56"/>
         <source>Tx (requests)</source>
         <translation>Tx（请求）</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="56"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="57"/>
         <source>Rx (replies)</source>
         <translation>Rx（应答）</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="57"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="58"/>
         <source>Events (no reply)</source>
         <translation>事件（无应答）</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="61"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="62"/>
         <source>&amp;Clear</source>
         <translation>清除(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="63"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="64"/>
         <source>&amp;Save…</source>
         <translation>保存(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="66"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="67"/>
         <source>&amp;Drive:</source>
         <translation>驱动器(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="68"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="69"/>
         <source>Di&amp;rection:</source>
         <translation>方向(&amp;R)：</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="82"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="83"/>
         <source>Frames</source>
         <translation>帧数</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Requests</source>
         <translation>请求</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Replies</source>
         <translation>应答</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Timeouts</source>
         <translation>超时</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>CRC errors</source>
         <translation>CRC 错误</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Exceptions</source>
         <translation>异常</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Wrong/garbled</source>
         <translation>错误/损坏</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Mean ms</source>
         <translation>平均 ms</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Max ms</source>
         <translation>最大 ms</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="114"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="115"/>
         <source>Statistics per drive</source>
         <translation>各驱动器统计</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="161"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="168"/>
         <source>&amp;Resume</source>
         <translation>继续(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="215"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="268"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="239"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="317"/>
         <source>Broadcast</source>
         <translation>广播</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="215"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="239"/>
         <source>Drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="257"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="306"/>
         <source>%1 addresses did not answer: %2</source>
         <translation>%1 个地址未应答：%2</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="259"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="308"/>
         <source>No reply from machine numbers %1</source>
         <translation>站号 %1 无应答</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="285"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="290"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="348"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="353"/>
         <source>Save traffic log</source>
         <translation>保存报文日志</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="285"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="348"/>
         <source>Text files (*.txt)</source>
         <translation>文本文件 (*.txt)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="291"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="354"/>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
     </message>
@@ -13797,22 +13816,22 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendChart</name>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="43"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="45"/>
         <source>Time (hh:mm:ss)</source>
         <translation>时间 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="86"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="88"/>
         <source>Drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="278"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="279"/>
         <source>There is no trend data to export yet.</source>
         <translation>尚无可导出的趋势数据。</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="291"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="292"/>
         <source>Cannot write the picture %1.</source>
         <translation>无法写入图片 %1。</translation>
     </message>

@@ -33,47 +33,47 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="58"/>
+        <location filename="../app/gui/main.cpp" line="60"/>
         <source>Commissioning tool for RS-485 Modbus-RTU motor drives.</source>
         <translation>RS-485 Modbus-RTU 馬達驅動器試車調機工具。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="62"/>
+        <location filename="../app/gui/main.cpp" line="64"/>
         <source>Language of the program: %1 (default: the language menu&apos;s choice, else the system&apos;s).</source>
         <translation>程式的語言：%1（預設：語言選單的選擇，否則為系統語言）。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="75"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="79"/>
         <source>Open the bus overview and the trends of every drive.</source>
         <translation>開啟匯流排總覽及每台驅動器的趨勢圖。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="76"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="80"/>
         <source>Monitoring poll interval in milliseconds.</source>
         <translation>監視輪詢間隔，單位 ms。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="79"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="83"/>
         <source>Quit after this many seconds and print the monitoring statistics (for measurements).</source>
         <translation>經過此秒數後結束，並輸出監視統計 (供量測用)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="83"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="87"/>
         <source>Print the monitoring totals every this many seconds (for measurements).</source>
         <translation>每隔此秒數輸出一次監視累計 (供量測用)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="93"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="97"/>
         <source>--poll-ms needs a number of milliseconds</source>
         <translation>--poll-ms 需要毫秒數</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="98"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="102"/>
         <source>--quit-after needs a number of seconds</source>
         <translation>--quit-after 需要秒數</translation>
     </message>
     <message>
-        <location filename="../app/gui/MonitorOptions.cpp" line="103"/>
+        <location filename="../app/gui/MonitorOptions.cpp" line="107"/>
         <source>--stats-every needs a number of seconds</source>
         <translation>--stats-every 需要秒數</translation>
     </message>
@@ -1718,28 +1718,28 @@ Drives: %5</source>
 <context>
     <name>opentop::BusDocks</name>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="24"/>
+        <location filename="../ui/main/BusDocks.cpp" line="26"/>
         <source>Traffic log</source>
         <translation>通訊記錄</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="31"/>
+        <location filename="../ui/main/BusDocks.cpp" line="33"/>
         <source>Bus overview</source>
         <translation>匯流排總覽</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="32"/>
+        <location filename="../ui/main/BusDocks.cpp" line="34"/>
         <source>Trends</source>
         <translation>趨勢圖</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="33"/>
+        <location filename="../ui/main/BusDocks.cpp" line="35"/>
         <source>Communication groups</source>
         <translation>通訊群組</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="36"/>
-        <location filename="../ui/main/BusDocks.cpp" line="68"/>
+        <location filename="../ui/main/BusDocks.cpp" line="38"/>
+        <location filename="../ui/main/BusDocks.cpp" line="70"/>
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -1790,100 +1790,100 @@ Drives: %5</source>
 <context>
     <name>opentop::BusListModel</name>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="71"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="72"/>
         <source>The machine number in hexadecimal, as the drive&apos;s rotary switches SW1 (high digit) and SW2 (low digit) are set</source>
         <translation>以十六進位表示的機號，即驅動器旋轉開關 SW1 (高位) 與 SW2 (低位) 的設定</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="74"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="75"/>
         <source>The drive&apos;s MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, purple external interrupt, blue memory or communication error, grey no answer</source>
         <translation>驅動器的 MONITOR LED：紅色為警報、綠色為就緒、橘色為 CW、天藍色為 CCW、紫色為外部中斷、藍色為記憶體或通訊錯誤、灰色為無回應</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="81"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="82"/>
         <source>LED</source>
         <translation>LED</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="83"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="84"/>
         <source>Machine no.</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="85"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="86"/>
         <source>Hex / switches</source>
         <translation>十六進位 / 開關</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="87"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="88"/>
         <source>Family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="90"/>
         <source>Model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="92"/>
         <source>Firmware</source>
         <translation>韌體</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="94"/>
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="96"/>
         <source>Control priority</source>
         <translation>控制優先權</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="107"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="108"/>
         <source>Two drives may share machine number %1 (%2, %3): check the SW1/SW2 switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
         <translation>可能有兩台驅動器使用相同機號 %1 (%2、%3)：請檢查線上每台驅動器的 SW1/SW2 開關，讓每台使用不同的機號並重新上電；終端電阻設定不良或 A/B 線對調也會使回應資料損壞。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="126"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="130"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="138"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="127"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="131"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="129"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="130"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 機型未知</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="159"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="160"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>狀態燈 %1：%2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="163"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="164"/>
         <source>The drive&apos;s manual: %1</source>
         <translation>驅動器手冊：%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="166"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="167"/>
         <source>Status light grey: not live — %1</source>
         <translation>狀態燈灰色：非即時 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="171"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="172"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>此驅動器不回報機型。請從右鍵選單 (機型) 中選擇，以便依正確的範圍檢查數值。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="180"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="181"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>此驅動器由 I/O 端子接收運轉指令；要透過匯流排試運轉，需設為通訊優先。</translation>
     </message>
@@ -1907,67 +1907,67 @@ Drives: %5</source>
 <context>
     <name>opentop::BusOverviewModel</name>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="89"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="132"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="134"/>
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="136"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="138"/>
         <source>Display</source>
         <translation>顯示</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="97"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="140"/>
         <source>Target</source>
         <translation>目標</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="99"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="142"/>
         <source>Load</source>
         <translation>負載</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="101"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="144"/>
         <source>Alarm</source>
         <translation>警報</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="103"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="146"/>
         <source>Last answer</source>
         <translation>最後回應</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="118"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="173"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="125"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="163"/>
         <source>connection lost; %1</source>
         <translation>連線中斷；%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="127"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="165"/>
         <source>no answer: %1; %2</source>
         <translation>無回應：%1；%2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="158"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="202"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="161"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="205"/>
         <source>active</source>
         <translation>發生中</translation>
     </message>
@@ -2166,17 +2166,17 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="160"/>
+        <location filename="../model/bus/BusScanner.cpp" line="163"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
         <translation>兩次收到錯亂的回應 (%1)：可能有兩台驅動器使用相同機號 %2；請檢查其 SW1/SW2 開關</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="165"/>
+        <location filename="../model/bus/BusScanner.cpp" line="168"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>有回應，但沒有符合的定義檔 (%1)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="204"/>
+        <location filename="../model/bus/BusScanner.cpp" line="207"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>第一次回應過慢 (超過 %1 ms 等待時間)；加長等待時間可使此匯流排的掃描更可靠</translation>
     </message>
@@ -4212,7 +4212,7 @@ Configuration changes written but not stored are discarded.</source>
     <name>opentop::DriveWorkspace</name>
     <message>
         <location filename="../ui/workspace/DriveWorkspace.cpp" line="33"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="131"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="133"/>
         <source>Write &amp;all pending</source>
         <translation>寫入所有待寫入項目(&amp;A)</translation>
     </message>
@@ -4237,60 +4237,60 @@ Configuration changes written but not stored are discarded.</source>
         <translation>請在匯流排清單中選擇要設定的驅動器。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="130"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="132"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>寫入所有待寫入項目 (%1)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="152"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="154"/>
         <source>Reading the drive…</source>
         <translation>正在讀取驅動器…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="154"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="156"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 個值無法讀取</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="166"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="168"/>
         <source>Nothing was written: %1</source>
         <translation>未寫入任何資料：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="179"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="181"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1：%2 未寫入任何資料。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="187"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="189"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>將 %n 個待寫入的值寫入機號 %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="189"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="191"/>
         <source>Nothing was written.</source>
         <translation>未寫入任何資料。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="192"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="194"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>正在寫入 %n 個值…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="194"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="196"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>%n 項寫入失敗；請查看標示的欄位</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="195"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="197"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>已寫入並驗證 %n 個值</numerusform>
@@ -5227,48 +5227,48 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRun</name>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="54"/>
+        <location filename="../model/eol/EolRun.cpp" line="61"/>
         <source>the results database cannot record the unit: %1</source>
         <translation>結果資料庫無法記錄此產品：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="71"/>
+        <location filename="../model/eol/EolRun.cpp" line="89"/>
         <source>the recipe has no drives</source>
         <translation>配方中沒有驅動器</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="84"/>
+        <location filename="../model/eol/EolRun.cpp" line="102"/>
         <source>the recipe is not valid: %1</source>
         <translation>配方無效：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="89"/>
+        <location filename="../model/eol/EolRun.cpp" line="107"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1：此產品沒有 %2 的值</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="107"/>
+        <location filename="../model/eol/EolRun.cpp" line="125"/>
         <source>cancelled by the operator</source>
         <translation>已由作業員取消</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="116"/>
+        <location filename="../model/eol/EolRun.cpp" line="134"/>
         <source>the connection was lost: %1</source>
         <translation>連線中斷：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="122"/>
-        <location filename="../model/eol/EolRun.cpp" line="129"/>
+        <location filename="../model/eol/EolRun.cpp" line="140"/>
+        <location filename="../model/eol/EolRun.cpp" line="147"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="126"/>
+        <location filename="../model/eol/EolRun.cpp" line="144"/>
         <source>%1 failed</source>
         <translation>%1 失敗</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="164"/>
+        <location filename="../model/eol/EolRun.cpp" line="182"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>未確認停止：%1</translation>
     </message>
@@ -5276,129 +5276,129 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="86"/>
+        <location filename="../cli/EolRunCommand.cpp" line="85"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>於終檢工站設定並測試一台產品，並記錄結果</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="91"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>產品序號 (依條碼讀取值)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="91"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <source>Who tests it (default: the login name).</source>
         <translation>測試人員 (預設：登入名稱)。</translation>
     </message>
     <message>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <location filename="../cli/EolRunCommand.cpp" line="93"/>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="93"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>此工站名稱 (預設：主機名稱)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果資料庫：SQLite 檔或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>含單台數值的 CSV 檔，依序號對應。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>由作業員輸入的單台數值，例如 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="131"/>
+        <location filename="../cli/EolRunCommand.cpp" line="130"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1：請寫成 MACHINE:NAME=VALUE，例如 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="136"/>
+        <location filename="../cli/EolRunCommand.cpp" line="135"/>
         <source>--value %1: %2</source>
         <translation>--value %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="148"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="164"/>
+        <location filename="../cli/EolRunCommand.cpp" line="163"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1：配方無效；未送出任何資料：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="185"/>
+        <location filename="../cli/EolRunCommand.cpp" line="189"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果資料庫：%1；未送出任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="194"/>
+        <location filename="../cli/EolRunCommand.cpp" line="193"/>
         <source>note: %1 unit(s) this station left unfinished are now recorded as interrupted</source>
         <translation>注意：此工站有 %1 台未完成的產品，現已記錄為已中斷</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="230"/>
-        <location filename="../cli/EolRunCommand.cpp" line="251"/>
+        <location filename="../cli/EolRunCommand.cpp" line="229"/>
+        <location filename="../cli/EolRunCommand.cpp" line="250"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="255"/>
         <source>ok</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="255"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="274"/>
+        <location filename="../cli/EolRunCommand.cpp" line="273"/>
         <source>interrupted at the station</source>
         <translation>在工站上中斷</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="303"/>
+        <location filename="../cli/EolRunCommand.cpp" line="302"/>
         <source>rev. %1</source>
         <translation>版次 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="309"/>
+        <location filename="../cli/EolRunCommand.cpp" line="308"/>
         <source>the result was NOT recorded: %1</source>
         <translation>結果「未」記錄：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="311"/>
+        <location filename="../cli/EolRunCommand.cpp" line="310"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告：未確認馬達已停止：%1</translation>
     </message>
@@ -5430,37 +5430,47 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="100"/>
+        <location filename="../model/eol/EolStation.cpp" line="123"/>
         <source>no results database</source>
         <translation>無結果資料庫</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="107"/>
+        <location filename="../model/eol/EolStation.cpp" line="123"/>
+        <source>opening the results database</source>
+        <translation>正在開啟結果資料庫</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="130"/>
         <source>a unit is being tested</source>
         <translation>有產品正在測試中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="111"/>
+        <location filename="../model/eol/EolStation.cpp" line="134"/>
         <source>open a recipe first</source>
         <translation>請先開啟配方</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="115"/>
+        <location filename="../model/eol/EolStation.cpp" line="139"/>
+        <source>the results database is being opened; try again in a moment</source>
+        <translation>正在開啟結果資料庫；請稍後再試</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="140"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果資料庫未開啟；無法記錄結果時不會進行測試</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="119"/>
+        <location filename="../model/eol/EolStation.cpp" line="145"/>
         <source>not connected to a bus</source>
         <translation>未連線至匯流排</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="123"/>
+        <location filename="../model/eol/EolStation.cpp" line="149"/>
         <source>no serial number</source>
         <translation>無序號</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="141"/>
+        <location filename="../model/eol/EolStation.cpp" line="167"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>此配方的單台數值取自 CSV 檔：請先開啟該檔</translation>
     </message>
@@ -7696,7 +7706,7 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>驅動器面板顯示 %1</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/PanelMirrorView.cpp" line="77"/>
+        <location filename="../ui/monitor/PanelMirrorView.cpp" line="80"/>
         <source>not live</source>
         <translation>非即時</translation>
     </message>
@@ -7704,27 +7714,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="183"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="184"/>
         <source>%1 (not valid now)</source>
         <translation>%1 (目前無效)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="202"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="213"/>
         <source>not read</source>
         <translation>未讀取</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="211"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="222"/>
         <source>Allowed: %1</source>
         <translation>允許值：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="214"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="225"/>
         <source>On the drive: %1</source>
         <translation>驅動器中：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="244"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="256"/>
         <source>Not accepted: %1</source>
         <translation>不接受：%1</translation>
     </message>
@@ -7928,89 +7938,89 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterPage</name>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="23"/>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="83"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="24"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="106"/>
         <source>&amp;Write page</source>
         <translation>寫入本頁(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="24"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="25"/>
         <source>Re&amp;vert</source>
         <translation>復原(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="25"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="26"/>
         <source>Re-&amp;read</source>
         <translation>重新讀取(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="45"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="46"/>
         <source>Write this page&apos;s pending edits to the drive and verify them by reading back</source>
         <translation>將本頁的待寫入變更寫入驅動器，並以回讀驗證</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="46"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="47"/>
         <source>Discard this page&apos;s pending edits</source>
         <translation>捨棄本頁的待寫入變更</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="47"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="48"/>
         <source>Read this page&apos;s values from the drive again (edits stay)</source>
         <translation>從驅動器重新讀取本頁的值 (變更會保留)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="84"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="107"/>
         <source>&amp;Write page (%1)</source>
         <translation>寫入本頁 (%1)(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="97"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="120"/>
         <source>Reading…</source>
         <translation>讀取中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="101"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="124"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 個值無法讀取</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="120"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
         <source>Nothing was written: %n field(s) not accepted. %1</source>
         <translation>
             <numerusform>未寫入任何資料：%n 個欄位不接受。%1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="166"/>
         <source>Write %n value(s) of the page %1 to machine number %2</source>
         <translation>
             <numerusform>將頁面「%1」的 %n 個值寫入機號 %2</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="138"/>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="147"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="161"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="170"/>
         <source>Nothing was written.</source>
         <translation>未寫入任何資料。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="152"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="175"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>正在寫入 %n 個值…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="156"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="179"/>
         <source>%n write(s) failed; see the marked fields</source>
         <translation>
             <numerusform>%n 項寫入失敗；請查看標示的欄位</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="157"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="180"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>已寫入並驗證 %n 個值</numerusform>
@@ -8415,22 +8425,22 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>全螢幕(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="49"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="55"/>
         <source>Production mode</source>
         <translation>生產模式</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="50"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="56"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>有產品正在測試中。請先取消 (Esc) 或等待測試完成，再切換回工程模式。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="79"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="41"/>
         <source>Results database</source>
         <translation>結果資料庫</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="42"/>
         <source>%1
 
 No unit can be tested until results can be recorded.</source>
@@ -8439,17 +8449,17 @@ No unit can be tested until results can be recorded.</source>
 在能夠記錄結果之前，無法測試任何產品。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="95"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="99"/>
         <source>A unit is being tested</source>
         <translation>有產品正在測試中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="96"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="100"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>產品 %1 正在測試中。要取消測試並%2嗎？會先停止其馬達，並將此產品記錄為已中止。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="108"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="112"/>
         <source>cancelled to %1</source>
         <translation>因%1而取消</translation>
     </message>
@@ -8572,17 +8582,17 @@ No unit can be tested until results can be recorded.</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="146"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="147"/>
         <source>READY</source>
         <translation>就緒</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="174"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="175"/>
         <source>Recipe not usable</source>
         <translation>配方無法使用</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="175"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="176"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -8591,126 +8601,126 @@ No unit can be tested until results can be recorded.</source>
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="187"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="188"/>
         <source>Open recipe</source>
         <translation>開啟配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="187"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="188"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="194"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="200"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="201"/>
         <source>Per-unit values</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="196"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="207"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="208"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 版次 %2 — %n 台驅動器</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="211"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="212"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;無：請開啟產品的配方&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="212"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="213"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>工站 %1 · 結果：%2 · 單台數值：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="215"/>
         <source>loaded</source>
         <translation>已載入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="215"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="221"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>已測試 %1 · 合格 %2 · 不合格 %3 · 一次良率 %4 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
         <source>Per-unit value</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="253"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>驅動器 %1：%2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="266"/>
         <source>NOT STARTED</source>
         <translation>未開始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="281"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="282"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="282"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="283"/>
         <source>drive %1 (%2)</source>
         <translation>驅動器 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="283"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="284"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
         <source>TESTING</source>
         <translation>測試中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="308"/>
         <source>Unit %1</source>
         <translation>產品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="303"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="304"/>
         <source>NOT RECORDED: %1</source>
         <translation>未記錄：%1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="306"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="311"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="317"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="318"/>
         <source>Motor not confirmed stopped</source>
         <translation>未確認馬達已停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="318"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="319"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10501,6 +10511,15 @@ No unit can be tested until results can be recorded.</source>
     </message>
 </context>
 <context>
+    <name>opentop::ResultWriter</name>
+    <message>
+        <location filename="../model/eol/ResultWriter.cpp" line="128"/>
+        <location filename="../model/eol/ResultWriter.cpp" line="141"/>
+        <source>the results database is not open</source>
+        <translation>結果資料庫未開啟</translation>
+    </message>
+</context>
+<context>
     <name>opentop::ResultsBrowser</name>
     <message>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
@@ -10877,48 +10896,48 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>%1：</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="123"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="124"/>
         <source>%1 (%2 %3)</source>
         <translation>%1 (%2 %3)</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="125"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="126"/>
         <source>not reported</source>
         <translation>未回報</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="128"/>
-        <location filename="../ui/run/RunLiveState.cpp" line="138"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="129"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="139"/>
         <source>not read</source>
         <translation>未讀取</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="130"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="131"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="133"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="134"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="135"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="136"/>
         <source>active</source>
         <translation>發生中</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="154"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="155"/>
         <source>waiting for the first answer…</source>
         <translation>等待第一次回應…</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="154"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="155"/>
         <source>not watched</source>
         <translation>未監視</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="166"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="161"/>
         <source>Not live: %1</source>
         <translation>非即時：%1</translation>
     </message>
@@ -12927,149 +12946,149 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     </message>
     <message>
         <location filename="../ui/traffic/TrafficLogView.cpp" line="44"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="161"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="168"/>
         <source>&amp;Pause</source>
         <translation>暫停(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="52"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="53"/>
         <source>All drives</source>
         <translation>所有驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="54"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="55"/>
         <source>All</source>
         <translation>全部</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="55"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="56"/>
         <source>Tx (requests)</source>
         <translation>Tx (請求)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="56"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="57"/>
         <source>Rx (replies)</source>
         <translation>Rx (回應)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="57"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="58"/>
         <source>Events (no reply)</source>
         <translation>事件 (無回應)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="61"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="62"/>
         <source>&amp;Clear</source>
         <translation>清除(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="63"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="64"/>
         <source>&amp;Save…</source>
         <translation>儲存(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="66"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="67"/>
         <source>&amp;Drive:</source>
         <translation>驅動器(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="68"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="69"/>
         <source>Di&amp;rection:</source>
         <translation>方向(&amp;R)：</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="82"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="83"/>
         <source>Frames</source>
         <translation>訊框數</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Requests</source>
         <translation>請求數</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="110"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
         <source>Replies</source>
         <translation>回應數</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Timeouts</source>
         <translation>逾時數</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>CRC errors</source>
         <translation>CRC 錯誤</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Exceptions</source>
         <translation>例外</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Wrong/garbled</source>
         <translation>錯誤/錯亂</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Mean ms</source>
         <translation>平均 ms</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Max ms</source>
         <translation>最大 ms</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="114"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="115"/>
         <source>Statistics per drive</source>
         <translation>各驅動器統計</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="161"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="168"/>
         <source>&amp;Resume</source>
         <translation>繼續(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="215"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="268"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="239"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="317"/>
         <source>Broadcast</source>
         <translation>廣播</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="215"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="239"/>
         <source>Drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="257"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="306"/>
         <source>%1 addresses did not answer: %2</source>
         <translation>%1 個位址未回應：%2</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="259"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="308"/>
         <source>No reply from machine numbers %1</source>
         <translation>機號 %1 無回應</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="285"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="290"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="348"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="353"/>
         <source>Save traffic log</source>
         <translation>儲存通訊記錄</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="285"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="348"/>
         <source>Text files (*.txt)</source>
         <translation>文字檔 (*.txt)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="291"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="354"/>
         <source>Could not save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
@@ -13797,22 +13816,22 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendChart</name>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="43"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="45"/>
         <source>Time (hh:mm:ss)</source>
         <translation>時間 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="86"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="88"/>
         <source>Drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="278"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="279"/>
         <source>There is no trend data to export yet.</source>
         <translation>尚無可匯出的趨勢資料。</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="291"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="292"/>
         <source>Cannot write the picture %1.</source>
         <translation>無法寫入圖片 %1。</translation>
     </message>
