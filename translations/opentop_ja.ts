@@ -5227,50 +5227,60 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRun</name>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="61"/>
+        <location filename="../model/eol/EolRun.cpp" line="57"/>
+        <source>recording the unit before anything is sent</source>
+        <translation>送信前に製品を記録しています</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolRun.cpp" line="62"/>
         <source>the results database cannot record the unit: %1</source>
         <translation>結果データベースに製品を記録できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="89"/>
+        <location filename="../model/eol/EolRun.cpp" line="91"/>
         <source>the recipe has no drives</source>
         <translation>レシピにドライバがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="102"/>
+        <location filename="../model/eol/EolRun.cpp" line="104"/>
         <source>the recipe is not valid: %1</source>
         <translation>レシピが無効です: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="107"/>
+        <location filename="../model/eol/EolRun.cpp" line="109"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1: この製品の %2 の値がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="125"/>
+        <location filename="../model/eol/EolRun.cpp" line="127"/>
         <source>cancelled by the operator</source>
         <translation>作業者によるキャンセル</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="134"/>
+        <location filename="../model/eol/EolRun.cpp" line="136"/>
         <source>the connection was lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="140"/>
-        <location filename="../model/eol/EolRun.cpp" line="147"/>
+        <location filename="../model/eol/EolRun.cpp" line="142"/>
+        <location filename="../model/eol/EolRun.cpp" line="149"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="144"/>
+        <location filename="../model/eol/EolRun.cpp" line="146"/>
         <source>%1 failed</source>
         <translation>%1 失敗</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="182"/>
+        <location filename="../model/eol/EolRun.cpp" line="184"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>停止未確認: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolRun.cpp" line="193"/>
+        <source>recording the result</source>
+        <translation>結果を記録しています</translation>
     </message>
 </context>
 <context>
@@ -8582,17 +8592,22 @@ No unit can be tested until results can be recorded.</source>
         <translation>理由</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="147"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="152"/>
+        <source>Unit %1: %2…</source>
+        <translation>製品 %1：%2…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="154"/>
         <source>READY</source>
         <translation>準備完了</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="175"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="182"/>
         <source>Recipe not usable</source>
         <translation>レシピを使用できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="176"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="183"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -8601,126 +8616,127 @@ No unit can be tested until results can be recorded.</source>
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="188"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="188"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="201"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="202"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="208"/>
         <source>Per-unit values</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="196"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="203"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="208"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="215"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — ドライバ %n 台</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="212"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="219"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;なし: 製品のレシピを開いてください&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="213"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>ステーション %1 · 結果: %2 · 個別値: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="215"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
         <source>loaded</source>
         <translation>読込み済み</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="215"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="229"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>試験 %1 · 合格 %2 · 不合格 %3 · 直行率 %4 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="259"/>
         <source>Per-unit value</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="253"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="260"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>ドライバ %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="266"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="273"/>
         <source>NOT STARTED</source>
         <translation>未開始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="282"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="289"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="283"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="290"/>
         <source>drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="284"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="291"/>
         <source>waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
         <source>TESTING</source>
         <translation>試験中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="308"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="151"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="315"/>
         <source>Unit %1</source>
         <translation>製品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="304"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="311"/>
         <source>NOT RECORDED: %1</source>
         <translation>未記録: %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="311"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="318"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="321"/>
         <source>ABORTED</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="318"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="325"/>
         <source>Motor not confirmed stopped</source>
         <translation>モータの停止が確認できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="319"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="326"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>

@@ -54,6 +54,7 @@ void EolRun::start(Done done)
         startDrives();
         return;
     }
+    emit recording(tr("recording the unit before anything is sent"));
     m_options.writer->beginUnit(
         m_record, this, [this](const UnitRecord& begun, const QString& error) {
             if (!error.isEmpty()) {
@@ -65,6 +66,7 @@ void EolRun::start(Done done)
             }
             m_record.id = begun.id;
             m_record.started = begun.started;
+            emit recording(QString());
             if (m_cancelled) // while it was being recorded: nothing was sent
                 finish();
             else
@@ -188,6 +190,7 @@ void EolRun::finish()
         return;
     }
     m_recording = true;
+    emit recording(tr("recording the result"));
     m_options.writer->finishUnit(m_record, this, [this](const QString& error) {
         if (!error.isEmpty()) {
             m_storeError = error;

@@ -66,6 +66,9 @@ signals:
     void phaseChanged(int machineNumber, opentop::EolDriveRun::Phase phase, const QString& text);
     void measured(const opentop::Measurement& measurement);
     void speedSampled(int machineNumber, double speed, const QString& unit);
+    // The run waits for the results database (what for, in words; empty: no longer), so that
+    // a slow one shows.
+    void recording(const QString& what);
     void finished(const opentop::UnitRecord& record);
 
 private:

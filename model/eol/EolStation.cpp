@@ -179,6 +179,7 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
     connect(m_run, &EolRun::phaseChanged, this, &EolStation::phaseChanged);
     connect(m_run, &EolRun::measured, this, &EolStation::measured);
     connect(m_run, &EolRun::speedSampled, this, &EolStation::speedSampled);
+    connect(m_run, &EolRun::recording, this, &EolStation::recording);
     // A vanished port ends the unit at once (whatever can still be stopped is).
     connect(client, &ModbusClient::connectionLost, m_run,
             [run = m_run.data()](const QString& why) { run->connectionLost(why); });

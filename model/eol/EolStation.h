@@ -85,6 +85,7 @@ signals:
     void phaseChanged(int machineNumber, opentop::EolDriveRun::Phase phase, const QString& text);
     void measured(const opentop::Measurement& measurement);
     void speedSampled(int machineNumber, double speed, const QString& unit);
+    void recording(const QString& what); // EolRun::recording
     void unitFinished(const opentop::UnitRecord& record);
     // The answer to openDatabase(): `error` names the database and why not.
     void databaseOpened(bool ok, const QString& error);

@@ -144,6 +144,13 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
             });
     connect(m_station, &EolStation::unitFinished, this, &ProductionView::unitFinished);
     connect(m_station, &EolStation::databaseOpened, this, [this] { refresh(); });
+    connect(m_station, &EolStation::recording, this, [this](const QString& what) {
+        if (!m_station->run())
+            return;
+        const QString serial = m_station->run()->record().serial;
+        m_reason->setText(what.isEmpty() ? tr("Unit %1").arg(serial)
+                                         : tr("Unit %1: %2…").arg(serial, what));
+    });
     showVerdict(tr("READY"), QStringLiteral("#5f6b76"), QString());
     refreshRecipe();
     refreshCounters();

@@ -201,6 +201,8 @@ TEST_F(MainWindowProductionTest, TheScreenAnswersWhileTheResultsDatabaseIsBusy)
     EXPECT_TRUE(production->station()->isRunning());
     EXPECT_EQ(writesSent(), writesBefore) << "nothing written before the unit is recorded";
     EXPECT_EQ(speedOf(1), 0);
+    EXPECT_TRUE(view->reasonLabel()->text().contains(QStringLiteral("recording")))
+        << qPrintable(view->reasonLabel()->text());
 
     other->rollback();
     ASSERT_TRUE(
