@@ -9128,7 +9128,7 @@ No unit can be tested until results can be recorded.</source>
     </message>
     <message>
         <location filename="../ui/eol/RecipeEditor.cpp" line="66"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="403"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="402"/>
         <source>Revision:</source>
         <translation>リビジョン:</translation>
     </message>
@@ -9183,157 +9183,157 @@ No unit can be tested until results can be recorded.</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="224"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="226"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>マスター品のバス上のドライバまたはバックアップファイルからレシピを作成するか、既存のレシピを開いてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="228"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="230"/>
         <source>the recipe is empty</source>
         <translation>レシピが空です</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="242"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="241"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="246"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="245"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>レシピはチェックに合格しました: 保存して実行できます。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 件の問題: 修正するまでレシピを保存できません。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="261"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="260"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>レシピがチェックに合格しません（%n 件の問題）。何も保存していません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="277"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="276"/>
         <source>cannot read %1: %2</source>
         <translation>%1 を読み込めません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="289"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="288"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 は OpenTOP のレシピファイルではありません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
         <source>Opened %1</source>
         <translation>%1 を開きました</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="297"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>%1 を開きましたが、そのままでは読み込めません (%2)。保存時にチェックし、再度署名します。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="317"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="316"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>%1 から新規レシピ: 設定と試験ステップの規格値を確認してから保存してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="329"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="328"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>局番 %1 はバス上の既知のドライバではありません。先にバスをスキャンしてください</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="333"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>マスター品の設定を読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="333"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="349"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="348"/>
         <source>cancelled: no recipe was made</source>
         <translation>キャンセル: レシピは作成していません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="375"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="374"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="388"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="387"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="389"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="388"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>レシピ (*.json);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="398"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="403"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="397"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="402"/>
         <source>New recipe</source>
         <translation>新規レシピ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="398"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="397"/>
         <source>Product name:</source>
         <translation>製品名:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="411"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="410"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>マスター品のバックアップファイル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="412"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="411"/>
         <source>Backups (*.json)</source>
         <translation>バックアップ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="424"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="423"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>バス上にドライバがありません: 先に接続してスキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="432"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="431"/>
         <source>New recipe from drives</source>
         <translation>ドライバから新規レシピ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="433"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="432"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>マスター品のドライバの局番（検出: %1）:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="443"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="442"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot; は局番 (1–247) ではありません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="452"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="451"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>バス上のドライバから新規レシピ: 設定と試験ステップの規格値を確認してから保存してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="463"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="462"/>
         <source>Save recipe</source>
         <translation>レシピを保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="465"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="464"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="470"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="469"/>
         <source>Saved and signed: %1</source>
         <translation>保存・署名しました: %1</translation>
     </message>
@@ -9508,151 +9508,141 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipePositionForm</name>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="125"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="124"/>
         <source>every variant of the family, e.g. dbu200, dbu400</source>
         <translation>ファミリの全機種（例: dbu200, dbu400）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="127"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="126"/>
         <source>any firmware, e.g. 1.5, 1.6</source>
         <translation>任意のファームウェア（例: 1.5, 1.6）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Unit</source>
         <translation>単位</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Min</source>
         <translation>最小</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Max</source>
         <translation>最大</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Source</source>
         <translation>入力元</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="139"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="136"/>
         <source>Add per-unit value…</source>
         <translation>個別値を追加…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="139"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="136"/>
         <source>Add setting…</source>
         <translation>設定を追加…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="140"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="137"/>
         <source>Remove</source>
         <translation>削除</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="153"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="150"/>
         <source>Settings</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="154"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="151"/>
         <source>Per-unit values</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="155"/>
-        <source>Test steps (JSON)</source>
-        <translation>試験ステップ (JSON)</translation>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="152"/>
+        <source>Test steps</source>
+        <translation>試験ステップ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="155"/>
         <source>Machine number:</source>
         <translation>局番:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="156"/>
         <source>Name:</source>
         <translation>名称:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="160"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="157"/>
         <source>Family:</source>
         <translation>ファミリ:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="161"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
         <source>Allowed variants:</source>
         <translation>許可する機種:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="162"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
         <source>Allowed firmware:</source>
         <translation>許可するファームウェア:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="188"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="352"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="185"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="336"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="232"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="227"/>
         <source>CSV file</source>
         <translation>CSV ファイル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="233"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="228"/>
         <source>typed by the operator</source>
         <translation>作業者が入力</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="281"/>
-        <source>test steps: %1 at character %2</source>
-        <translation>試験ステップ: %2 文字目で %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="283"/>
-        <source>test steps: must be a JSON array of steps: [ {...}, ... ]</source>
-        <translation>試験ステップ: ステップの JSON 配列でなければなりません: [ {...}, ... ]</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="294"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="278"/>
         <source>(unknown: %1)</source>
         <translation>（不明: %1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="357"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="341"/>
         <source>Add a per-unit value</source>
         <translation>個別値を追加</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="357"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="341"/>
         <source>Add a setting</source>
         <translation>設定を追加</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="358"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="342"/>
         <source>Setting:</source>
         <translation>設定:</translation>
     </message>
@@ -9799,6 +9789,344 @@ No unit can be tested until results can be recorded.</source>
         <location filename="../model/eol/RecipeStepChecker.cpp" line="283"/>
         <source>%1 is a number; compare it with lower and upper limits</source>
         <translation>%1 は数値です。下限・上限の規格値と比較してください</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RecipeStepsEditor</name>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="73"/>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="73"/>
+        <source>Step</source>
+        <translation>ステップ</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="73"/>
+        <source>What it does</source>
+        <translation>内容</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="81"/>
+        <source>Add step</source>
+        <translation>ステップを追加</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="86"/>
+        <source>Remove</source>
+        <translation>削除</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="87"/>
+        <source>Move up</source>
+        <translation>上へ</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="88"/>
+        <source>Move down</source>
+        <translation>下へ</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="119"/>
+        <source>Take communication priority</source>
+        <translation>通信優先にする</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="120"/>
+        <source>Select running data</source>
+        <translation>運転データを選択</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="121"/>
+        <source>Set the speed command</source>
+        <translation>速度指令を設定</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="122"/>
+        <source>Start</source>
+        <translation>起動</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="123"/>
+        <source>Wait for the speed</source>
+        <translation>速度到達を待つ</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="124"/>
+        <source>Hold and measure</source>
+        <translation>保持して測定</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="125"/>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="126"/>
+        <source>No alarm or warning</source>
+        <translation>アラーム・警告なし</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="127"/>
+        <source>Read and compare</source>
+        <translation>読み出して比較</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="129"/>
+        <source>(unknown step: %1)</source>
+        <translation>（不明なステップ：%1）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="138"/>
+        <source>running data SPno%1</source>
+        <translation>運転データ SPno%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="140"/>
+        <source>speed command %1 %2</source>
+        <translation>速度指令 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="144"/>
+        <source>%1 ± %2 %3 within %4 s</source>
+        <translation>%4 s 以内に %1 ± %2 %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="146"/>
+        <source>the drive&apos;s target speed</source>
+        <translation>ドライバの目標速度</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="149"/>
+        <source>%1 s, %n limit(s)</source>
+        <translation>
+            <numerusform>%1 s、規格値 %n 件</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="153"/>
+        <source>stopped within %1 s + %2 s</source>
+        <translation>%1 s + %2 s 以内に停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="155"/>
+        <source>stopped within the deceleration time + %1 s</source>
+        <translation>減速時間 + %1 s 以内に停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="160"/>
+        <source>%1 is &quot;%2&quot;</source>
+        <translation>%1 が「%2」</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="161"/>
+        <source>%1 between %2 and %3 %4</source>
+        <translation>%1 が %2～%3 %4</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="162"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="163"/>
+        <source>any</source>
+        <translation>制限なし</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="285"/>
+        <source>No step selected</source>
+        <translation>ステップが選択されていません</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="286"/>
+        <source>Add a step, or select one to edit it.</source>
+        <translation>ステップを追加するか、編集するステップを選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="292"/>
+        <source>Step %1: %2</source>
+        <translation>ステップ %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
+        <source>Running data:</source>
+        <translation>運転データ：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="303"/>
+        <source>Speed command:</source>
+        <translation>速度指令：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="304"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="319"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="334"/>
+        <source>Unit:</source>
+        <translation>単位：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="304"/>
+        <source>the speed command&apos;s unit</source>
+        <translation>速度指令の単位</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="307"/>
+        <source>CW</source>
+        <translation>CW</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="308"/>
+        <source>CCW</source>
+        <translation>CCW</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="314"/>
+        <source>Direction:</source>
+        <translation>回転方向：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="316"/>
+        <source>Target speed:</source>
+        <translation>目標速度：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="317"/>
+        <source>empty: the drive&apos;s own target speed</source>
+        <translation>空欄：ドライバ自身の目標速度</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="318"/>
+        <source>Tolerance (±):</source>
+        <translation>許容差（±）：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="319"/>
+        <source>the speed&apos;s unit</source>
+        <translation>速度の単位</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="320"/>
+        <source>Within:</source>
+        <translation>制限時間：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="320"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="322"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="325"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="327"/>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="322"/>
+        <source>Duration:</source>
+        <translation>保持時間：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="325"/>
+        <source>Deceleration time:</source>
+        <translation>減速時間：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="326"/>
+        <source>empty: the drive&apos;s setting</source>
+        <translation>空欄：ドライバの設定値</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="327"/>
+        <source>Margin:</source>
+        <translation>余裕時間：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="330"/>
+        <source>Lower limit:</source>
+        <translation>下限：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="331"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="333"/>
+        <source>empty: none</source>
+        <translation>空欄：なし</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="332"/>
+        <source>Upper limit:</source>
+        <translation>上限：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="334"/>
+        <source>the value&apos;s unit</source>
+        <translation>値の単位</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="335"/>
+        <source>Or equals:</source>
+        <translation>または一致：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="336"/>
+        <source>the expected text, instead of limits</source>
+        <translation>規格値の代わりに期待する文字列</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="338"/>
+        <source>This step has no settings.</source>
+        <translation>このステップに設定項目はありません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="380"/>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="382"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="430"/>
+        <source>(unknown: %1)</source>
+        <translation>（不明：%1）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="392"/>
+        <source>Parameter:</source>
+        <translation>パラメータ：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Parameter</source>
+        <translation>パラメータ</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Statistic</source>
+        <translation>統計量</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Lower</source>
+        <translation>下限</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Upper</source>
+        <translation>上限</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Unit</source>
+        <translation>単位</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="457"/>
+        <source>Add limit</source>
+        <translation>規格値を追加</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="458"/>
+        <source>Remove limit</source>
+        <translation>規格値を削除</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="485"/>
+        <source>Limits (measured over the hold):</source>
+        <translation>規格値（保持中に測定）：</translation>
     </message>
 </context>
 <context>

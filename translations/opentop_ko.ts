@@ -9128,7 +9128,7 @@ No unit can be tested until results can be recorded.</source>
     </message>
     <message>
         <location filename="../ui/eol/RecipeEditor.cpp" line="66"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="403"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="402"/>
         <source>Revision:</source>
         <translation>개정:</translation>
     </message>
@@ -9183,157 +9183,157 @@ No unit can be tested until results can be recorded.</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="224"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="226"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>버스에 있는 기준 제품의 드라이버나 그 백업 파일로 레시피를 만들거나, 레시피를 여십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="228"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="230"/>
         <source>the recipe is empty</source>
         <translation>레시피가 비어 있습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="242"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="241"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="246"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="245"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>레시피가 검사를 통과했습니다: 저장하고 실행할 수 있습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>문제 %n건: 수정할 때까지 레시피를 저장할 수 없습니다.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="261"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="260"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>레시피가 검사를 통과하지 못했습니다(문제 %n건). 아무것도 저장하지 않았습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="277"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="276"/>
         <source>cannot read %1: %2</source>
         <translation>%1을(를) 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="289"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="288"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1은(는) OpenTOP 레시피 파일이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
         <source>Opened %1</source>
         <translation>%1 열림</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="297"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>%1을(를) 열었지만 그대로는 불러올 수 없습니다(%2). 저장하면 검사 후 다시 서명합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="317"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="316"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>%1에서 새 레시피를 만들었습니다: 설정과 검사 단계의 한계값을 확인한 뒤 저장하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="329"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="328"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>국번 %1은(는) 버스에 알려진 드라이버가 아닙니다. 먼저 버스를 스캔하십시오</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="333"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>기준 제품의 설정을 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="333"/>
         <source>Cancel</source>
         <translation>취소</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="349"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="348"/>
         <source>cancelled: no recipe was made</source>
         <translation>취소됨: 레시피를 만들지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="375"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="374"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="388"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="387"/>
         <source>Open recipe</source>
         <translation>레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="389"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="388"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>레시피 (*.json);;모든 파일 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="398"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="403"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="397"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="402"/>
         <source>New recipe</source>
         <translation>새 레시피</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="398"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="397"/>
         <source>Product name:</source>
         <translation>제품 이름:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="411"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="410"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>기준 제품의 백업 파일</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="412"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="411"/>
         <source>Backups (*.json)</source>
         <translation>백업 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="424"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="423"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>버스에 드라이버가 없습니다: 먼저 연결하고 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="432"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="431"/>
         <source>New recipe from drives</source>
         <translation>드라이버로 새 레시피 만들기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="433"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="432"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>기준 제품 드라이버의 국번 (발견: %1):</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="443"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="442"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot;은(는) 국번(1–247)이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="452"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="451"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>버스의 드라이버로 새 레시피를 만들었습니다: 설정과 검사 단계의 한계값을 확인한 뒤 저장하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="463"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="462"/>
         <source>Save recipe</source>
         <translation>레시피 저장</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="465"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="464"/>
         <source>Recipes (*.json)</source>
         <translation>레시피 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="470"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="469"/>
         <source>Saved and signed: %1</source>
         <translation>저장 및 서명 완료: %1</translation>
     </message>
@@ -9508,151 +9508,141 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipePositionForm</name>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="125"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="124"/>
         <source>every variant of the family, e.g. dbu200, dbu400</source>
         <translation>제품군의 모든 기종, 예: dbu200, dbu400</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="127"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="126"/>
         <source>any firmware, e.g. 1.5, 1.6</source>
         <translation>모든 펌웨어, 예: 1.5, 1.6</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Setting</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Unit</source>
         <translation>단위</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Min</source>
         <translation>최소</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Max</source>
         <translation>최대</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Source</source>
         <translation>출처</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="139"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="136"/>
         <source>Add per-unit value…</source>
         <translation>제품별 값 추가…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="139"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="136"/>
         <source>Add setting…</source>
         <translation>설정 추가…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="140"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="137"/>
         <source>Remove</source>
         <translation>제거</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="153"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="150"/>
         <source>Settings</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="154"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="151"/>
         <source>Per-unit values</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="155"/>
-        <source>Test steps (JSON)</source>
-        <translation>검사 단계 (JSON)</translation>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="152"/>
+        <source>Test steps</source>
+        <translation>테스트 단계</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="155"/>
         <source>Machine number:</source>
         <translation>국번:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="156"/>
         <source>Name:</source>
         <translation>이름:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="160"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="157"/>
         <source>Family:</source>
         <translation>제품군:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="161"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
         <source>Allowed variants:</source>
         <translation>허용 기종:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="162"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
         <source>Allowed firmware:</source>
         <translation>허용 펌웨어:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="188"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="352"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="185"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="336"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="232"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="227"/>
         <source>CSV file</source>
         <translation>CSV 파일</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="233"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="228"/>
         <source>typed by the operator</source>
         <translation>작업자 입력</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="281"/>
-        <source>test steps: %1 at character %2</source>
-        <translation>검사 단계: 문자 %2에서 %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="283"/>
-        <source>test steps: must be a JSON array of steps: [ {...}, ... ]</source>
-        <translation>검사 단계: 단계의 JSON 배열이어야 합니다: [ {...}, ... ]</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="294"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="278"/>
         <source>(unknown: %1)</source>
         <translation>(알 수 없음: %1)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="357"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="341"/>
         <source>Add a per-unit value</source>
         <translation>제품별 값 추가</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="357"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="341"/>
         <source>Add a setting</source>
         <translation>설정 추가</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="358"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="342"/>
         <source>Setting:</source>
         <translation>설정:</translation>
     </message>
@@ -9799,6 +9789,344 @@ No unit can be tested until results can be recorded.</source>
         <location filename="../model/eol/RecipeStepChecker.cpp" line="283"/>
         <source>%1 is a number; compare it with lower and upper limits</source>
         <translation>%1은(는) 숫자입니다. 하한값·상한값과 비교하십시오</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RecipeStepsEditor</name>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="73"/>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="73"/>
+        <source>Step</source>
+        <translation>단계</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="73"/>
+        <source>What it does</source>
+        <translation>동작</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="81"/>
+        <source>Add step</source>
+        <translation>단계 추가</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="86"/>
+        <source>Remove</source>
+        <translation>삭제</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="87"/>
+        <source>Move up</source>
+        <translation>위로</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="88"/>
+        <source>Move down</source>
+        <translation>아래로</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="119"/>
+        <source>Take communication priority</source>
+        <translation>통신 우선으로 전환</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="120"/>
+        <source>Select running data</source>
+        <translation>운전 데이터 선택</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="121"/>
+        <source>Set the speed command</source>
+        <translation>속도 지령 설정</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="122"/>
+        <source>Start</source>
+        <translation>기동</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="123"/>
+        <source>Wait for the speed</source>
+        <translation>속도 도달 대기</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="124"/>
+        <source>Hold and measure</source>
+        <translation>유지하며 측정</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="125"/>
+        <source>Stop</source>
+        <translation>정지</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="126"/>
+        <source>No alarm or warning</source>
+        <translation>알람·경고 없음</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="127"/>
+        <source>Read and compare</source>
+        <translation>읽어서 비교</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="129"/>
+        <source>(unknown step: %1)</source>
+        <translation>(알 수 없는 단계: %1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="138"/>
+        <source>running data SPno%1</source>
+        <translation>운전 데이터 SPno%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="140"/>
+        <source>speed command %1 %2</source>
+        <translation>속도 지령 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="144"/>
+        <source>%1 ± %2 %3 within %4 s</source>
+        <translation>%4 s 이내에 %1 ± %2 %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="146"/>
+        <source>the drive&apos;s target speed</source>
+        <translation>드라이버의 목표 속도</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="149"/>
+        <source>%1 s, %n limit(s)</source>
+        <translation>
+            <numerusform>%1 s, 한계값 %n개</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="153"/>
+        <source>stopped within %1 s + %2 s</source>
+        <translation>%1 s + %2 s 이내 정지</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="155"/>
+        <source>stopped within the deceleration time + %1 s</source>
+        <translation>감속 시간 + %1 s 이내 정지</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="160"/>
+        <source>%1 is &quot;%2&quot;</source>
+        <translation>%1 = &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="161"/>
+        <source>%1 between %2 and %3 %4</source>
+        <translation>%1: %2~%3 %4</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="162"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="163"/>
+        <source>any</source>
+        <translation>제한 없음</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="285"/>
+        <source>No step selected</source>
+        <translation>선택된 단계 없음</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="286"/>
+        <source>Add a step, or select one to edit it.</source>
+        <translation>단계를 추가하거나 편집할 단계를 선택하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="292"/>
+        <source>Step %1: %2</source>
+        <translation>단계 %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
+        <source>Running data:</source>
+        <translation>운전 데이터:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="303"/>
+        <source>Speed command:</source>
+        <translation>속도 지령:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="304"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="319"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="334"/>
+        <source>Unit:</source>
+        <translation>단위:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="304"/>
+        <source>the speed command&apos;s unit</source>
+        <translation>속도 지령의 단위</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="307"/>
+        <source>CW</source>
+        <translation>CW</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="308"/>
+        <source>CCW</source>
+        <translation>CCW</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="314"/>
+        <source>Direction:</source>
+        <translation>회전 방향:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="316"/>
+        <source>Target speed:</source>
+        <translation>목표 속도:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="317"/>
+        <source>empty: the drive&apos;s own target speed</source>
+        <translation>비워 두면: 드라이버 자체의 목표 속도</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="318"/>
+        <source>Tolerance (±):</source>
+        <translation>허용 오차(±):</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="319"/>
+        <source>the speed&apos;s unit</source>
+        <translation>속도의 단위</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="320"/>
+        <source>Within:</source>
+        <translation>제한 시간:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="320"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="322"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="325"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="327"/>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="322"/>
+        <source>Duration:</source>
+        <translation>유지 시간:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="325"/>
+        <source>Deceleration time:</source>
+        <translation>감속 시간:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="326"/>
+        <source>empty: the drive&apos;s setting</source>
+        <translation>비워 두면: 드라이버의 설정값</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="327"/>
+        <source>Margin:</source>
+        <translation>여유 시간:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="330"/>
+        <source>Lower limit:</source>
+        <translation>하한:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="331"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="333"/>
+        <source>empty: none</source>
+        <translation>비워 두면: 없음</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="332"/>
+        <source>Upper limit:</source>
+        <translation>상한:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="334"/>
+        <source>the value&apos;s unit</source>
+        <translation>값의 단위</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="335"/>
+        <source>Or equals:</source>
+        <translation>또는 일치:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="336"/>
+        <source>the expected text, instead of limits</source>
+        <translation>한계값 대신 기대하는 텍스트</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="338"/>
+        <source>This step has no settings.</source>
+        <translation>이 단계에는 설정 항목이 없습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="380"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="382"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="430"/>
+        <source>(unknown: %1)</source>
+        <translation>(알 수 없음: %1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="392"/>
+        <source>Parameter:</source>
+        <translation>파라미터:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Parameter</source>
+        <translation>파라미터</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Statistic</source>
+        <translation>통계</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Lower</source>
+        <translation>하한</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Upper</source>
+        <translation>상한</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Unit</source>
+        <translation>단위</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="457"/>
+        <source>Add limit</source>
+        <translation>한계값 추가</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="458"/>
+        <source>Remove limit</source>
+        <translation>한계값 삭제</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="485"/>
+        <source>Limits (measured over the hold):</source>
+        <translation>한계값(유지 중 측정):</translation>
     </message>
 </context>
 <context>

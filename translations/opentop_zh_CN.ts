@@ -9128,7 +9128,7 @@ No unit can be tested until results can be recorded.</source>
     </message>
     <message>
         <location filename="../ui/eol/RecipeEditor.cpp" line="66"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="403"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="402"/>
         <source>Revision:</source>
         <translation>版本：</translation>
     </message>
@@ -9183,157 +9183,157 @@ No unit can be tested until results can be recorded.</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="224"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="226"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>从标准样机在总线上的驱动器或其备份文件生成配方，或打开已有配方。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="228"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="230"/>
         <source>the recipe is empty</source>
         <translation>配方为空</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="242"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="241"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="246"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="245"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>配方通过检查：可以保存和运行。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 个问题：修正之前无法保存配方。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="261"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="260"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>配方未通过检查（%n 个问题）；未保存任何内容</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="277"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="276"/>
         <source>cannot read %1: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="289"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="288"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 不是 OpenTOP 配方文件</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
         <source>Opened %1</source>
         <translation>已打开 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="297"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>已打开 %1，但它无法按原样载入（%2）。保存时会进行检查并重新签名。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="317"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="316"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>已从 %1 新建配方：请检查设定和测试步骤的限值，然后保存。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="329"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="328"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>站号 %1 不是总线上的已知驱动器；请先扫描总线</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="333"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>正在读取标准样机的设定…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="333"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="349"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="348"/>
         <source>cancelled: no recipe was made</source>
         <translation>已取消：未生成配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="375"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="374"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="388"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="387"/>
         <source>Open recipe</source>
         <translation>打开配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="389"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="388"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>配方 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="398"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="403"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="397"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="402"/>
         <source>New recipe</source>
         <translation>新建配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="398"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="397"/>
         <source>Product name:</source>
         <translation>产品名称：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="411"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="410"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>标准样机的备份文件</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="412"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="411"/>
         <source>Backups (*.json)</source>
         <translation>备份 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="424"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="423"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>总线上没有驱动器：请先连接并扫描。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="432"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="431"/>
         <source>New recipe from drives</source>
         <translation>从驱动器新建配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="433"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="432"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>标准样机各驱动器的站号（已找到：%1）：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="443"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="442"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot; 不是站号（1–247）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="452"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="451"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>已从总线上的驱动器新建配方：请检查设定和测试步骤的限值，然后保存。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="463"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="462"/>
         <source>Save recipe</source>
         <translation>保存配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="465"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="464"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="470"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="469"/>
         <source>Saved and signed: %1</source>
         <translation>已保存并签名：%1</translation>
     </message>
@@ -9508,151 +9508,141 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipePositionForm</name>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="125"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="124"/>
         <source>every variant of the family, e.g. dbu200, dbu400</source>
         <translation>该系列的所有机型，例如 dbu200, dbu400</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="127"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="126"/>
         <source>any firmware, e.g. 1.5, 1.6</source>
         <translation>任意固件，例如 1.5, 1.6</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Setting</source>
         <translation>设定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Min</source>
         <translation>最小值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Max</source>
         <translation>最大值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Source</source>
         <translation>来源</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="139"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="136"/>
         <source>Add per-unit value…</source>
         <translation>添加单台数值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="139"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="136"/>
         <source>Add setting…</source>
         <translation>添加设定…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="140"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="137"/>
         <source>Remove</source>
         <translation>移除</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="153"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="150"/>
         <source>Settings</source>
         <translation>设定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="154"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="151"/>
         <source>Per-unit values</source>
         <translation>单台数值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="155"/>
-        <source>Test steps (JSON)</source>
-        <translation>测试步骤（JSON）</translation>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="152"/>
+        <source>Test steps</source>
+        <translation>测试步骤</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="155"/>
         <source>Machine number:</source>
         <translation>站号：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="156"/>
         <source>Name:</source>
         <translation>名称：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="160"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="157"/>
         <source>Family:</source>
         <translation>系列：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="161"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
         <source>Allowed variants:</source>
         <translation>允许的机型：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="162"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
         <source>Allowed firmware:</source>
         <translation>允许的固件：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="188"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="352"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="185"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="336"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="232"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="227"/>
         <source>CSV file</source>
         <translation>CSV 文件</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="233"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="228"/>
         <source>typed by the operator</source>
         <translation>由操作员输入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="281"/>
-        <source>test steps: %1 at character %2</source>
-        <translation>测试步骤：%1，位于字符 %2</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="283"/>
-        <source>test steps: must be a JSON array of steps: [ {...}, ... ]</source>
-        <translation>测试步骤：必须是步骤的 JSON 数组：[ {...}, ... ]</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="294"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="278"/>
         <source>(unknown: %1)</source>
         <translation>（未知：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="357"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="341"/>
         <source>Add a per-unit value</source>
         <translation>添加单台数值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="357"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="341"/>
         <source>Add a setting</source>
         <translation>添加设定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="358"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="342"/>
         <source>Setting:</source>
         <translation>设定：</translation>
     </message>
@@ -9799,6 +9789,344 @@ No unit can be tested until results can be recorded.</source>
         <location filename="../model/eol/RecipeStepChecker.cpp" line="283"/>
         <source>%1 is a number; compare it with lower and upper limits</source>
         <translation>%1 是数字；请用下限和上限进行比较</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RecipeStepsEditor</name>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="73"/>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="73"/>
+        <source>Step</source>
+        <translation>步骤</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="73"/>
+        <source>What it does</source>
+        <translation>内容</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="81"/>
+        <source>Add step</source>
+        <translation>添加步骤</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="86"/>
+        <source>Remove</source>
+        <translation>删除</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="87"/>
+        <source>Move up</source>
+        <translation>上移</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="88"/>
+        <source>Move down</source>
+        <translation>下移</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="119"/>
+        <source>Take communication priority</source>
+        <translation>切换为通信优先级</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="120"/>
+        <source>Select running data</source>
+        <translation>选择运行数据</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="121"/>
+        <source>Set the speed command</source>
+        <translation>设置速度指令</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="122"/>
+        <source>Start</source>
+        <translation>启动</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="123"/>
+        <source>Wait for the speed</source>
+        <translation>等待达到速度</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="124"/>
+        <source>Hold and measure</source>
+        <translation>保持并测量</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="125"/>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="126"/>
+        <source>No alarm or warning</source>
+        <translation>无报警或警告</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="127"/>
+        <source>Read and compare</source>
+        <translation>读取并比较</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="129"/>
+        <source>(unknown step: %1)</source>
+        <translation>（未知步骤：%1）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="138"/>
+        <source>running data SPno%1</source>
+        <translation>运行数据 SPno%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="140"/>
+        <source>speed command %1 %2</source>
+        <translation>速度指令 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="144"/>
+        <source>%1 ± %2 %3 within %4 s</source>
+        <translation>%4 s 内达到 %1 ± %2 %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="146"/>
+        <source>the drive&apos;s target speed</source>
+        <translation>驱动器的目标速度</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="149"/>
+        <source>%1 s, %n limit(s)</source>
+        <translation>
+            <numerusform>%1 s，%n 个限值</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="153"/>
+        <source>stopped within %1 s + %2 s</source>
+        <translation>%1 s + %2 s 内停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="155"/>
+        <source>stopped within the deceleration time + %1 s</source>
+        <translation>减速时间 + %1 s 内停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="160"/>
+        <source>%1 is &quot;%2&quot;</source>
+        <translation>%1 为“%2”</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="161"/>
+        <source>%1 between %2 and %3 %4</source>
+        <translation>%1 在 %2 至 %3 %4 之间</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="162"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="163"/>
+        <source>any</source>
+        <translation>不限</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="285"/>
+        <source>No step selected</source>
+        <translation>未选择步骤</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="286"/>
+        <source>Add a step, or select one to edit it.</source>
+        <translation>添加步骤，或选择一个步骤进行编辑。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="292"/>
+        <source>Step %1: %2</source>
+        <translation>步骤 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
+        <source>Running data:</source>
+        <translation>运行数据：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="303"/>
+        <source>Speed command:</source>
+        <translation>速度指令：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="304"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="319"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="334"/>
+        <source>Unit:</source>
+        <translation>单位：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="304"/>
+        <source>the speed command&apos;s unit</source>
+        <translation>速度指令的单位</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="307"/>
+        <source>CW</source>
+        <translation>CW</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="308"/>
+        <source>CCW</source>
+        <translation>CCW</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="314"/>
+        <source>Direction:</source>
+        <translation>旋转方向：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="316"/>
+        <source>Target speed:</source>
+        <translation>目标速度：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="317"/>
+        <source>empty: the drive&apos;s own target speed</source>
+        <translation>留空：驱动器自身的目标速度</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="318"/>
+        <source>Tolerance (±):</source>
+        <translation>允差（±）：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="319"/>
+        <source>the speed&apos;s unit</source>
+        <translation>速度的单位</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="320"/>
+        <source>Within:</source>
+        <translation>时限：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="320"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="322"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="325"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="327"/>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="322"/>
+        <source>Duration:</source>
+        <translation>保持时间：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="325"/>
+        <source>Deceleration time:</source>
+        <translation>减速时间：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="326"/>
+        <source>empty: the drive&apos;s setting</source>
+        <translation>留空：驱动器的设定值</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="327"/>
+        <source>Margin:</source>
+        <translation>余量：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="330"/>
+        <source>Lower limit:</source>
+        <translation>下限：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="331"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="333"/>
+        <source>empty: none</source>
+        <translation>留空：无</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="332"/>
+        <source>Upper limit:</source>
+        <translation>上限：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="334"/>
+        <source>the value&apos;s unit</source>
+        <translation>数值的单位</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="335"/>
+        <source>Or equals:</source>
+        <translation>或等于：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="336"/>
+        <source>the expected text, instead of limits</source>
+        <translation>期望的文本，代替限值</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="338"/>
+        <source>This step has no settings.</source>
+        <translation>此步骤没有设置项。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="380"/>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="382"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="430"/>
+        <source>(unknown: %1)</source>
+        <translation>（未知：%1）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="392"/>
+        <source>Parameter:</source>
+        <translation>参数：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Statistic</source>
+        <translation>统计量</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Lower</source>
+        <translation>下限</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Upper</source>
+        <translation>上限</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="457"/>
+        <source>Add limit</source>
+        <translation>添加限值</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="458"/>
+        <source>Remove limit</source>
+        <translation>删除限值</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="485"/>
+        <source>Limits (measured over the hold):</source>
+        <translation>限值（在保持期间测量）：</translation>
     </message>
 </context>
 <context>

@@ -9128,7 +9128,7 @@ No unit can be tested until results can be recorded.</source>
     </message>
     <message>
         <location filename="../ui/eol/RecipeEditor.cpp" line="66"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="403"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="402"/>
         <source>Revision:</source>
         <translation>版次：</translation>
     </message>
@@ -9183,157 +9183,157 @@ No unit can be tested until results can be recorded.</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="224"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="226"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>由標準樣品在匯流排上的驅動器或其備份檔建立配方，或開啟既有配方。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="228"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="230"/>
         <source>the recipe is empty</source>
         <translation>配方為空</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="242"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="241"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="246"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="245"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>配方通過檢查：可儲存並執行。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 個問題：修正之前無法儲存配方。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="261"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="260"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>配方未通過檢查 (%n 個問題)；未儲存任何資料</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="277"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="276"/>
         <source>cannot read %1: %2</source>
         <translation>無法讀取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="289"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="288"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 不是 OpenTOP 配方檔</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="297"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>已開啟 %1，但無法直接載入 (%2)。儲存時會檢查並重新簽署。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="317"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="316"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>由 %1 建立的新配方：請檢查設定與測試步驟的限值後儲存。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="329"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="328"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>機號 %1 不是匯流排上已知的驅動器；請先掃描匯流排</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="333"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>正在讀取標準樣品的設定…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="333"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="349"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="348"/>
         <source>cancelled: no recipe was made</source>
         <translation>已取消：未建立配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="375"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="374"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="388"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="387"/>
         <source>Open recipe</source>
         <translation>開啟配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="389"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="388"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>配方 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="398"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="403"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="397"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="402"/>
         <source>New recipe</source>
         <translation>新配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="398"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="397"/>
         <source>Product name:</source>
         <translation>產品名稱：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="411"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="410"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>標準樣品的備份檔</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="412"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="411"/>
         <source>Backups (*.json)</source>
         <translation>備份檔 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="424"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="423"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>匯流排上沒有驅動器：請先連線並掃描。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="432"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="431"/>
         <source>New recipe from drives</source>
         <translation>從驅動器新建配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="433"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="432"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>標準樣品驅動器的機號 (已找到：%1)：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="443"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="442"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot; 不是機號 (1–247)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="452"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="451"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>由匯流排上的驅動器建立的新配方：請檢查設定與測試步驟的限值後儲存。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="463"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="462"/>
         <source>Save recipe</source>
         <translation>儲存配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="465"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="464"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="470"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="469"/>
         <source>Saved and signed: %1</source>
         <translation>已儲存並簽署：%1</translation>
     </message>
@@ -9508,151 +9508,141 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipePositionForm</name>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="125"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="124"/>
         <source>every variant of the family, e.g. dbu200, dbu400</source>
         <translation>此系列的所有機型，例如 dbu200, dbu400</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="127"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="126"/>
         <source>any firmware, e.g. 1.5, 1.6</source>
         <translation>任何韌體，例如 1.5, 1.6</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Name</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Unit</source>
         <translation>單位</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Min</source>
         <translation>最小值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Max</source>
         <translation>最大值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
         <source>Source</source>
         <translation>來源</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="139"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="136"/>
         <source>Add per-unit value…</source>
         <translation>新增單台數值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="139"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="136"/>
         <source>Add setting…</source>
         <translation>新增設定…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="140"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="137"/>
         <source>Remove</source>
         <translation>移除</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="153"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="150"/>
         <source>Settings</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="154"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="151"/>
         <source>Per-unit values</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="155"/>
-        <source>Test steps (JSON)</source>
-        <translation>測試步驟 (JSON)</translation>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="152"/>
+        <source>Test steps</source>
+        <translation>測試步驟</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="155"/>
         <source>Machine number:</source>
         <translation>機號：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="156"/>
         <source>Name:</source>
         <translation>名稱：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="160"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="157"/>
         <source>Family:</source>
         <translation>系列：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="161"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
         <source>Allowed variants:</source>
         <translation>允許的機型：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="162"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
         <source>Allowed firmware:</source>
         <translation>允許的韌體：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="188"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="352"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="185"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="336"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="232"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="227"/>
         <source>CSV file</source>
         <translation>CSV 檔</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="233"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="228"/>
         <source>typed by the operator</source>
         <translation>由作業員輸入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="281"/>
-        <source>test steps: %1 at character %2</source>
-        <translation>測試步驟：第 %2 個字元處 %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="283"/>
-        <source>test steps: must be a JSON array of steps: [ {...}, ... ]</source>
-        <translation>測試步驟：必須是步驟的 JSON 陣列：[ {...}, ... ]</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="294"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="278"/>
         <source>(unknown: %1)</source>
         <translation>(未知：%1)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="357"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="341"/>
         <source>Add a per-unit value</source>
         <translation>新增單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="357"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="341"/>
         <source>Add a setting</source>
         <translation>新增設定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="358"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="342"/>
         <source>Setting:</source>
         <translation>設定：</translation>
     </message>
@@ -9799,6 +9789,344 @@ No unit can be tested until results can be recorded.</source>
         <location filename="../model/eol/RecipeStepChecker.cpp" line="283"/>
         <source>%1 is a number; compare it with lower and upper limits</source>
         <translation>%1 是數值；請以下限與上限比較</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RecipeStepsEditor</name>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="73"/>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="73"/>
+        <source>Step</source>
+        <translation>步驟</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="73"/>
+        <source>What it does</source>
+        <translation>內容</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="81"/>
+        <source>Add step</source>
+        <translation>新增步驟</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="86"/>
+        <source>Remove</source>
+        <translation>刪除</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="87"/>
+        <source>Move up</source>
+        <translation>上移</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="88"/>
+        <source>Move down</source>
+        <translation>下移</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="119"/>
+        <source>Take communication priority</source>
+        <translation>切換為通訊優先</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="120"/>
+        <source>Select running data</source>
+        <translation>選擇運轉資料</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="121"/>
+        <source>Set the speed command</source>
+        <translation>設定速度指令</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="122"/>
+        <source>Start</source>
+        <translation>啟動</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="123"/>
+        <source>Wait for the speed</source>
+        <translation>等待達到速度</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="124"/>
+        <source>Hold and measure</source>
+        <translation>保持並量測</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="125"/>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="126"/>
+        <source>No alarm or warning</source>
+        <translation>無警報或警告</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="127"/>
+        <source>Read and compare</source>
+        <translation>讀取並比較</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="129"/>
+        <source>(unknown step: %1)</source>
+        <translation>（未知步驟：%1）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="138"/>
+        <source>running data SPno%1</source>
+        <translation>運轉資料 SPno%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="140"/>
+        <source>speed command %1 %2</source>
+        <translation>速度指令 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="144"/>
+        <source>%1 ± %2 %3 within %4 s</source>
+        <translation>%4 s 內達到 %1 ± %2 %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="146"/>
+        <source>the drive&apos;s target speed</source>
+        <translation>驅動器的目標速度</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="149"/>
+        <source>%1 s, %n limit(s)</source>
+        <translation>
+            <numerusform>%1 s，%n 個限值</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="153"/>
+        <source>stopped within %1 s + %2 s</source>
+        <translation>%1 s + %2 s 內停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="155"/>
+        <source>stopped within the deceleration time + %1 s</source>
+        <translation>減速時間 + %1 s 內停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="160"/>
+        <source>%1 is &quot;%2&quot;</source>
+        <translation>%1 為「%2」</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="161"/>
+        <source>%1 between %2 and %3 %4</source>
+        <translation>%1 介於 %2 至 %3 %4</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="162"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="163"/>
+        <source>any</source>
+        <translation>不限</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="285"/>
+        <source>No step selected</source>
+        <translation>未選擇步驟</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="286"/>
+        <source>Add a step, or select one to edit it.</source>
+        <translation>新增步驟，或選擇一個步驟進行編輯。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="292"/>
+        <source>Step %1: %2</source>
+        <translation>步驟 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
+        <source>Running data:</source>
+        <translation>運轉資料：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="303"/>
+        <source>Speed command:</source>
+        <translation>速度指令：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="304"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="319"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="334"/>
+        <source>Unit:</source>
+        <translation>單位：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="304"/>
+        <source>the speed command&apos;s unit</source>
+        <translation>速度指令的單位</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="307"/>
+        <source>CW</source>
+        <translation>CW</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="308"/>
+        <source>CCW</source>
+        <translation>CCW</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="314"/>
+        <source>Direction:</source>
+        <translation>旋轉方向：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="316"/>
+        <source>Target speed:</source>
+        <translation>目標速度：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="317"/>
+        <source>empty: the drive&apos;s own target speed</source>
+        <translation>留空：驅動器本身的目標速度</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="318"/>
+        <source>Tolerance (±):</source>
+        <translation>容許誤差（±）：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="319"/>
+        <source>the speed&apos;s unit</source>
+        <translation>速度的單位</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="320"/>
+        <source>Within:</source>
+        <translation>時限：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="320"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="322"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="325"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="327"/>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="322"/>
+        <source>Duration:</source>
+        <translation>保持時間：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="325"/>
+        <source>Deceleration time:</source>
+        <translation>減速時間：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="326"/>
+        <source>empty: the drive&apos;s setting</source>
+        <translation>留空：驅動器的設定值</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="327"/>
+        <source>Margin:</source>
+        <translation>裕度：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="330"/>
+        <source>Lower limit:</source>
+        <translation>下限：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="331"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="333"/>
+        <source>empty: none</source>
+        <translation>留空：無</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="332"/>
+        <source>Upper limit:</source>
+        <translation>上限：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="334"/>
+        <source>the value&apos;s unit</source>
+        <translation>數值的單位</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="335"/>
+        <source>Or equals:</source>
+        <translation>或等於：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="336"/>
+        <source>the expected text, instead of limits</source>
+        <translation>期望的文字，取代限值</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="338"/>
+        <source>This step has no settings.</source>
+        <translation>此步驟沒有設定項目。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="380"/>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="382"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="430"/>
+        <source>(unknown: %1)</source>
+        <translation>（未知：%1）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="392"/>
+        <source>Parameter:</source>
+        <translation>參數：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Parameter</source>
+        <translation>參數</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Statistic</source>
+        <translation>統計量</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Lower</source>
+        <translation>下限</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Upper</source>
+        <translation>上限</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
+        <source>Unit</source>
+        <translation>單位</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="457"/>
+        <source>Add limit</source>
+        <translation>新增限值</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="458"/>
+        <source>Remove limit</source>
+        <translation>刪除限值</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="485"/>
+        <source>Limits (measured over the hold):</source>
+        <translation>限值（於保持期間量測）：</translation>
     </message>
 </context>
 <context>

@@ -38,10 +38,15 @@ def main():
             if not entry or lang not in entry:
                 left += 1
                 continue
+            # A %n message (numerus) takes one form: these languages have no plural forms.
+            def translated(found):
+                if '<numerusform' in found.group(0):
+                    return ('<translation>\n            <numerusform>' + escape(entry[lang]) +
+                            '</numerusform>\n        </translation>')
+                return '<translation>' + escape(entry[lang]) + '</translation>'
             new_body = re.sub(r'<translation type="unfinished">.*?</translation>|'
                               r'<translation type="unfinished"/>',
-                              lambda _: '<translation>' + escape(entry[lang]) + '</translation>',
-                              body, count=1, flags=re.S)
+                              translated, body, count=1, flags=re.S)
             out.append(text[pos:m.start(2)] + new_body)
             pos = m.end(2)
             filled += 1

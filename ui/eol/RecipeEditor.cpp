@@ -197,7 +197,7 @@ void RecipeEditor::showProblem(const QString& path)
 {
     // "positions[1].settings[3].value": the position, then the row of its table.
     static const QRegularExpression at(
-        QStringLiteral(R"(^positions\[(\d+)\](?:\.(settings|unitValues)\[(\d+)\])?)"));
+        QStringLiteral(R"(^positions\[(\d+)\](?:\.(settings|unitValues|steps)\[(\d+)\])?)"));
     const QRegularExpressionMatch m = at.match(path);
     if (!m.hasMatch())
         return;
@@ -206,6 +206,8 @@ void RecipeEditor::showProblem(const QString& path)
         m_form->showRow(m_form->settingsTable(), m.captured(3).toInt());
     else if (m.captured(2) == QLatin1String("unitValues"))
         m_form->showRow(m_form->unitValuesTable(), m.captured(3).toInt());
+    else if (m.captured(2) == QLatin1String("steps"))
+        m_form->showStep(m.captured(3).toInt());
 }
 
 void RecipeEditor::scheduleCheck()
@@ -228,9 +230,6 @@ QVector<RecipeProblem> RecipeEditor::check()
         return {RecipeProblem{QString(), tr("the recipe is empty")}};
     }
     QVector<RecipeProblem> problems;
-    if (!m_form->stepsError().isEmpty())
-        problems << RecipeProblem{QStringLiteral("positions[%1].steps").arg(m_current),
-                                  m_form->stepsError()};
     QString error;
     const std::optional<Recipe> recipe = RecipeFile::fromEdited(edited, &error);
     if (!recipe)

@@ -1,5 +1,7 @@
 #include "eol/RecipePositionForm.h"
 
+#include "eol/RecipeStepsEditor.h"
+
 #include "files/BackupReader.h"
 #include "profile/Profile.h"
 #include "profile/ProfileRegistry.h"
@@ -7,16 +9,13 @@
 #include "profile/ValueContext.h"
 
 #include <QComboBox>
-#include <QFontDatabase>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QInputDialog>
 #include <QJsonArray>
-#include <QJsonDocument>
 #include <QLabel>
 #include <QLineEdit>
-#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTabWidget>
@@ -129,9 +128,7 @@ RecipePositionForm::RecipePositionForm(QWidget* parent)
     m_settings = makeTable({tr("Setting"), tr("Name"), tr("Value"), tr("Unit")}, this);
     m_unitValues = makeTable(
         {tr("Setting"), tr("Name"), tr("Min"), tr("Max"), tr("Unit"), tr("Source")}, this);
-    m_steps = new QPlainTextEdit(this);
-    m_steps->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
-    m_steps->setLineWrapMode(QPlainTextEdit::NoWrap);
+    m_steps = new RecipeStepsEditor(this);
 
     auto withButtons = [this](QTableWidget* table, bool unitValue) {
         auto* page = new QWidget(this);
@@ -152,7 +149,7 @@ RecipePositionForm::RecipePositionForm(QWidget* parent)
     auto* tabs = m_tabs = new QTabWidget(this);
     tabs->addTab(withButtons(m_settings, false), tr("Settings"));
     tabs->addTab(withButtons(m_unitValues, true), tr("Per-unit values"));
-    tabs->addTab(m_steps, tr("Test steps (JSON)"));
+    tabs->addTab(m_steps, tr("Test steps"));
 
     auto* form = new QFormLayout;
     form->addRow(tr("Machine number:"), m_machineNumber);
@@ -174,7 +171,7 @@ RecipePositionForm::RecipePositionForm(QWidget* parent)
         connect(e, &QLineEdit::textEdited, this, emitChanged);
     connect(m_settings, &QTableWidget::itemChanged, this, emitChanged);
     connect(m_unitValues, &QTableWidget::itemChanged, this, emitChanged);
-    connect(m_steps, &QPlainTextEdit::textChanged, this, emitChanged);
+    connect(m_steps, &RecipeStepsEditor::changed, this, emitChanged);
 }
 
 void RecipePositionForm::setPosition(const QJsonObject& position)
@@ -192,10 +189,8 @@ void RecipePositionForm::setPosition(const QJsonObject& position)
         listOf(position.value(QStringLiteral("firmware"))).join(QStringLiteral(", ")));
     fillSettings(position.value(QStringLiteral("settings")).toArray());
     fillUnitValues(position.value(QStringLiteral("unitValues")).toArray());
-    m_steps->setPlainText(
-        QString::fromUtf8(QJsonDocument(position.value(QStringLiteral("steps")).toArray())
-                              .toJson(QJsonDocument::Indented)));
-    m_stepsError.clear();
+    m_steps->setProfile(m_profile);
+    m_steps->setSteps(position.value(QStringLiteral("steps")).toArray());
     m_filling = false;
 }
 
@@ -273,18 +268,7 @@ QJsonObject RecipePositionForm::position() const
         values << u;
     }
     p.insert(QStringLiteral("unitValues"), values);
-    QJsonParseError error;
-    const QJsonDocument steps = QJsonDocument::fromJson(m_steps->toPlainText().toUtf8(), &error);
-    auto* self = const_cast<RecipePositionForm*>(this);
-    if (error.error != QJsonParseError::NoError)
-        self->m_stepsError =
-            tr("test steps: %1 at character %2").arg(error.errorString()).arg(error.offset);
-    else if (!steps.isArray())
-        self->m_stepsError = tr("test steps: must be a JSON array of steps: [ {...}, ... ]");
-    else {
-        self->m_stepsError.clear();
-        p.insert(QStringLiteral("steps"), steps.array());
-    }
+    p.insert(QStringLiteral("steps"), m_steps->steps());
     return p;
 }
 
@@ -373,6 +357,12 @@ void RecipePositionForm::showRow(QTableWidget* table, int row)
     table->setCurrentCell(row, 2);
     table->selectRow(row);
     table->scrollToItem(table->item(row, 0));
+}
+
+void RecipePositionForm::showStep(int index)
+{
+    m_tabs->setCurrentWidget(m_steps);
+    m_steps->select(index);
 }
 
 void RecipePositionForm::removeRow(QTableWidget* table)

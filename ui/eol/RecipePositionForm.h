@@ -5,7 +5,6 @@
 
 class QLabel;
 class QLineEdit;
-class QPlainTextEdit;
 class QSpinBox;
 class QTabWidget;
 class QTableWidget;
@@ -13,11 +12,12 @@ class QTableWidget;
 namespace opentop {
 
 class Profile;
+class RecipeStepsEditor;
 
 // One position of a recipe as the editor shows it: machine number, name, allowed variants and
 // firmware, the settings and per-unit values as tables with labels and units from the profile,
-// and the test steps as their JSON (docs/recipe-format.md). It only edits the position's JSON;
-// whether it is valid is the recipe checker's word (RecipeEditor).
+// and the test steps (RecipeStepsEditor). It only edits the position's JSON (docs/
+// recipe-format.md); whether it is valid is the recipe checker's word (RecipeEditor).
 class RecipePositionForm : public QWidget
 {
     Q_OBJECT
@@ -25,14 +25,14 @@ public:
     explicit RecipePositionForm(QWidget* parent = nullptr);
 
     void setPosition(const QJsonObject& position);
-    // The position as edited; steps whose text is not a JSON array are kept as they were and
-    // stepsError() says why.
+    // The position as edited.
     QJsonObject position() const;
-    QString stepsError() const { return m_stepsError; }
 
     QTableWidget* settingsTable() const { return m_settings; }
     QTableWidget* unitValuesTable() const { return m_unitValues; }
-    QPlainTextEdit* stepsText() const { return m_steps; }
+    RecipeStepsEditor* stepsEditor() const { return m_steps; }
+    // Brings step `index` into view, selected, on its tab.
+    void showStep(int index);
     // Adds a setting of the position's profile (its default value) or a per-unit value (its
     // widest allowed range; a setting of that name becomes per-unit); false when the name is not
     // a setting of the profile or is already there.
@@ -53,7 +53,6 @@ private:
 
     QJsonObject m_position; // as last set: the keys the form does not show are kept
     const Profile* m_profile = nullptr;
-    QString m_stepsError;
     QSpinBox* m_machineNumber = nullptr;
     QLineEdit* m_name = nullptr;
     QLabel* m_family = nullptr;
@@ -61,7 +60,7 @@ private:
     QLineEdit* m_firmware = nullptr;
     QTableWidget* m_settings = nullptr;
     QTableWidget* m_unitValues = nullptr;
-    QPlainTextEdit* m_steps = nullptr;
+    RecipeStepsEditor* m_steps = nullptr;
     QTabWidget* m_tabs = nullptr;
     bool m_filling = false;
 };

@@ -9,15 +9,18 @@
 #include "eol/RecipeEditor.h"
 #include "eol/RecipeFile.h"
 #include "eol/RecipePositionForm.h"
+#include "eol/RecipeStepsEditor.h"
 #include "eol/ResultDatabase.h"
 #include "eol/ResultStore.h"
 #include "eol/ResultsBrowser.h"
 
 #include <QComboBox>
 #include <QFile>
+#include <QGroupBox>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPlainTextEdit>
+#include <QPushButton>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTextBrowser>
@@ -160,17 +163,73 @@ TEST_F(MainWindowEolToolsTest, RecipeEditorChecksEveryEditAndSavesOnlyARecipeTha
     EXPECT_FALSE(editor->saveTo(saved, &error));
     EXPECT_FALSE(QFile::exists(saved));
 
-    // Steps that are not JSON are a problem too, named as such.
-    const QString steps = editor->positionForm()->stepsText()->toPlainText();
-    editor->positionForm()->stepsText()->setPlainText(steps + QStringLiteral(" ]"));
-    EXPECT_TRUE(editor->check().first().message.contains(QStringLiteral("test steps")));
-    editor->positionForm()->stepsText()->setPlainText(steps);
+    // The steps as a table and a form per step, as an engineer edits them. A tolerance wider
+    // than the target: the checker names it and its problem selects the step.
+    RecipeStepsEditor* steps = editor->positionForm()->stepsEditor();
+    ASSERT_EQ(steps->table()->rowCount(), 8);
+    EXPECT_EQ(steps->table()->item(3, 1)->text(), QStringLiteral("Wait for the speed"));
+    EXPECT_EQ(steps->table()->item(3, 2)->text(), QStringLiteral("1500 ± 50 r/min within 5 s"));
+    steps->select(3);
+    auto* tolerance = steps->detail()->findChild<QLineEdit*>(QStringLiteral("step_tolerance"));
+    ASSERT_TRUE(tolerance);
+    tolerance->selectAll();
+    QTest::keyClicks(tolerance, QStringLiteral("2000"));
+    EXPECT_EQ(steps->table()->item(3, 2)->text(), QStringLiteral("1500 ± 2000 r/min within 5 s"));
+    QVector<RecipeProblem> stepProblems = editor->check();
+    ASSERT_EQ(stepProblems.size(), 2); // and the speed setting above
+    EXPECT_TRUE(stepProblems.last().message.contains(QStringLiteral("olerance")))
+        << qPrintable(stepProblems.last().message);
+    steps->select(0);
+    emit editor->problemsList()->itemActivated(editor->problemsList()->item(1));
+    EXPECT_EQ(steps->table()->currentRow(), 3);
+    tolerance = steps->detail()->findChild<QLineEdit*>(QStringLiteral("step_tolerance"));
+    ASSERT_TRUE(tolerance);
+    tolerance->selectAll();
+    QTest::keyClicks(tolerance, QStringLiteral("50"));
+    EXPECT_EQ(editor->check().size(), 1);
+    // Start moved before communication priority: a DBU would refuse it, and the checker says so.
+    steps->select(2);
+    QPushButton* up = nullptr;
+    for (auto* b : steps->findChildren<QPushButton*>())
+        if (b->text() == QLatin1String("Move up"))
+            up = b;
+    ASSERT_TRUE(up);
+    up->click();
+    up->click();
+    EXPECT_EQ(steps->table()->item(0, 1)->text(), QStringLiteral("Start"));
+    EXPECT_EQ(editor->check().size(), 2);
+    for (auto* b : steps->findChildren<QPushButton*>())
+        if (b->text() == QLatin1String("Move down")) {
+            b->click();
+            b->click();
+        }
+    EXPECT_EQ(steps->table()->item(2, 1)->text(), QStringLiteral("Start"));
+    EXPECT_EQ(editor->check().size(), 1);
+    // A hold's limit is chosen from the family's live values, with the value's own unit.
+    steps->select(4);
+    auto* limits = steps->detail()->findChild<QTableWidget*>(QStringLiteral("stepLimits"));
+    ASSERT_TRUE(limits);
+    ASSERT_EQ(limits->rowCount(), 4);
+    auto* parameter = qobject_cast<QComboBox*>(limits->cellWidget(3, 0));
+    ASSERT_TRUE(parameter);
+    EXPECT_EQ(parameter->currentData().toString(), QStringLiteral("status.load"));
+    EXPECT_EQ(limits->item(3, 4)->text(), QStringLiteral("%"));
+    parameter->setCurrentIndex(parameter->findData(QStringLiteral("status.current_speed")));
+    EXPECT_EQ(limits->item(3, 4)->text(), QStringLiteral("r/min"));
+    EXPECT_EQ(editor->check().size(), 1) << "a speed's max of 80 r/min is a valid limit";
+    parameter->setCurrentIndex(parameter->findData(QStringLiteral("status.load")));
+    EXPECT_EQ(limits->item(3, 4)->text(), QStringLiteral("%"));
 
     // Fixed: saved, signed, and it loads as a recipe with the new value.
     settings->item(row, 2)->setText(QStringLiteral("1400"));
     ASSERT_TRUE(editor->saveTo(saved, &error)) << qPrintable(error);
     const std::optional<Recipe> recipe = RecipeFile::load(saved, &error);
     ASSERT_TRUE(recipe) << qPrintable(error);
+    ASSERT_EQ(recipe->positions.first().steps.size(), 8);
+    EXPECT_EQ(recipe->positions.first().steps[3].tolerance, 50);
+    EXPECT_EQ(recipe->positions.first().steps[2].type, RecipeStep::Type::Start);
+    EXPECT_EQ(recipe->positions.first().steps[4].limits[3].parameter,
+              QStringLiteral("status.load"));
     bool found = false;
     for (const RecipeSetting& s : recipe->positions.first().settings)
         if (s.name == QLatin1String("spno2.speed")) {

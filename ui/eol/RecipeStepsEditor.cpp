@@ -1,0 +1,512 @@
+#include "eol/RecipeStepsEditor.h"
+
+#include "profile/Profile.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QLocale>
+#include <QMenu>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace opentop {
+
+namespace {
+
+const QString kType = QStringLiteral("type");
+const QString kLimits = QStringLiteral("limits");
+const QString kParameter = QStringLiteral("parameter");
+const QString kUnit = QStringLiteral("unit");
+
+enum LimitColumn
+{
+    LimitParameter,
+    LimitStatistic,
+    LimitLower,
+    LimitUpper,
+    LimitUnit
+};
+
+QString numberText(const QJsonValue& v)
+{
+    if (v.isDouble())
+        return QString::number(v.toDouble(), 'g', 10);
+    return v.isString() ? v.toString() : QString();
+}
+
+// Empty: left out. A number in the user's notation or in the file's. Anything else is kept as
+// text, so that the checker names it rather than the field dropping it silently.
+QJsonValue numberValue(const QString& text)
+{
+    const QString t = text.trimmed();
+    if (t.isEmpty())
+        return QJsonValue(QJsonValue::Undefined);
+    bool ok = false;
+    double v = QLocale::c().toDouble(t, &ok);
+    if (!ok)
+        v = QLocale().toDouble(t, &ok);
+    return ok ? QJsonValue(v) : QJsonValue(t);
+}
+
+QTableWidgetItem* fixedItem(const QString& text)
+{
+    auto* item = new QTableWidgetItem(text);
+    item->setFlags(item->flags() & ~Qt::ItemIsEditable);
+    return item;
+}
+
+} // namespace
+
+RecipeStepsEditor::RecipeStepsEditor(QWidget* parent)
+    : QWidget(parent)
+    , m_table(new QTableWidget(0, 3, this))
+    , m_detail(new QGroupBox(this))
+{
+    m_table->setObjectName(QStringLiteral("recipeSteps"));
+    m_table->setHorizontalHeaderLabels({tr("#"), tr("Step"), tr("What it does")});
+    m_table->verticalHeader()->hide();
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 8);
+
+    auto* add = new QPushButton(tr("Add step"), this);
+    auto* menu = new QMenu(add);
+    for (const QString& type : types())
+        menu->addAction(typeText(type), this, [this, type] { addStep(type); });
+    add->setMenu(menu);
+    m_remove = new QPushButton(tr("Remove"), this);
+    m_up = new QPushButton(tr("Move up"), this);
+    m_down = new QPushButton(tr("Move down"), this);
+    connect(m_remove, &QPushButton::clicked, this, &RecipeStepsEditor::removeSelected);
+    connect(m_up, &QPushButton::clicked, this, [this] { moveSelected(-1); });
+    connect(m_down, &QPushButton::clicked, this, [this] { moveSelected(1); });
+    auto* buttons = new QHBoxLayout;
+    for (QPushButton* b : {add, m_remove, m_up, m_down})
+        buttons->addWidget(b);
+    buttons->addStretch(1);
+
+    new QVBoxLayout(m_detail);
+    auto* list = new QVBoxLayout;
+    list->addWidget(m_table, 1);
+    list->addLayout(buttons);
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addLayout(list, 2);
+    layout->addWidget(m_detail, 3); // a hold's limits need the room
+    connect(m_table, &QTableWidget::itemSelectionChanged, this, &RecipeStepsEditor::showDetail);
+    showDetail();
+}
+
+QStringList RecipeStepsEditor::types()
+{
+    return {QStringLiteral("priority"), QStringLiteral("select"),    QStringLiteral("speed"),
+            QStringLiteral("start"),    QStringLiteral("waitSpeed"), QStringLiteral("hold"),
+            QStringLiteral("stop"),     QStringLiteral("noAlarm"),   QStringLiteral("read")};
+}
+
+QString RecipeStepsEditor::typeText(const QString& type)
+{
+    static const QHash<QString, const char*> texts{
+        {QStringLiteral("priority"), QT_TR_NOOP("Take communication priority")},
+        {QStringLiteral("select"), QT_TR_NOOP("Select running data")},
+        {QStringLiteral("speed"), QT_TR_NOOP("Set the speed command")},
+        {QStringLiteral("start"), QT_TR_NOOP("Start")},
+        {QStringLiteral("waitSpeed"), QT_TR_NOOP("Wait for the speed")},
+        {QStringLiteral("hold"), QT_TR_NOOP("Hold and measure")},
+        {QStringLiteral("stop"), QT_TR_NOOP("Stop")},
+        {QStringLiteral("noAlarm"), QT_TR_NOOP("No alarm or warning")},
+        {QStringLiteral("read"), QT_TR_NOOP("Read and compare")}};
+    const auto it = texts.constFind(type);
+    return it == texts.cend() ? tr("(unknown step: %1)").arg(type) : tr(it.value());
+}
+
+QString RecipeStepsEditor::summary(const QJsonObject& s)
+{
+    const QString type = s.value(kType).toString();
+    const QString unit = s.value(kUnit).toString();
+    auto n = [&s](const QString& key) { return numberText(s.value(key)); };
+    if (type == QLatin1String("select"))
+        return tr("running data SPno%1").arg(n(QStringLiteral("spno")));
+    if (type == QLatin1String("speed"))
+        return tr("speed command %1 %2").arg(n(QStringLiteral("speed")), unit).trimmed();
+    if (type == QLatin1String("start"))
+        return s.value(QStringLiteral("direction")).toString().toUpper();
+    if (type == QLatin1String("waitSpeed"))
+        return tr("%1 ± %2 %3 within %4 s")
+            .arg(s.contains(QStringLiteral("target")) ? n(QStringLiteral("target"))
+                                                      : tr("the drive's target speed"),
+                 n(QStringLiteral("tolerance")), unit, n(QStringLiteral("timeout")));
+    if (type == QLatin1String("hold"))
+        return tr("%1 s, %n limit(s)", nullptr, int(s.value(kLimits).toArray().size()))
+            .arg(n(QStringLiteral("duration")));
+    if (type == QLatin1String("stop"))
+        return s.contains(QStringLiteral("deceleration"))
+                   ? tr("stopped within %1 s + %2 s")
+                         .arg(n(QStringLiteral("deceleration")), n(QStringLiteral("margin")))
+                   : tr("stopped within the deceleration time + %1 s")
+                         .arg(n(QStringLiteral("margin")));
+    if (type == QLatin1String("read")) {
+        const QString p = s.value(kParameter).toString();
+        if (s.contains(QStringLiteral("equals")))
+            return tr("%1 is \"%2\"").arg(p, s.value(QStringLiteral("equals")).toString());
+        return tr("%1 between %2 and %3 %4")
+            .arg(p, s.contains(QStringLiteral("lower")) ? n(QStringLiteral("lower")) : tr("any"),
+                 s.contains(QStringLiteral("upper")) ? n(QStringLiteral("upper")) : tr("any"), unit)
+            .trimmed();
+    }
+    return QString();
+}
+
+void RecipeStepsEditor::setSteps(const QJsonArray& steps)
+{
+    m_steps = steps;
+    fillTable();
+    select(steps.isEmpty() ? -1 : 0);
+}
+
+void RecipeStepsEditor::fillTable()
+{
+    const QSignalBlocker block(m_table);
+    m_table->setRowCount(int(m_steps.size()));
+    for (int row = 0; row < m_steps.size(); ++row)
+        fillRow(row);
+    m_table->resizeColumnToContents(0);
+    m_table->resizeColumnToContents(1);
+}
+
+void RecipeStepsEditor::fillRow(int row)
+{
+    const QJsonObject step = m_steps.at(row).toObject();
+    m_table->setItem(row, 0, fixedItem(QString::number(row + 1)));
+    m_table->setItem(row, 1, fixedItem(typeText(step.value(kType).toString())));
+    QTableWidgetItem* what = fixedItem(summary(step));
+    what->setToolTip(what->text()); // whole, when the column is narrower
+    m_table->setItem(row, 2, what);
+}
+
+int RecipeStepsEditor::selected() const
+{
+    const QList<QTableWidgetItem*> items = m_table->selectedItems();
+    return items.isEmpty() ? -1 : items.first()->row();
+}
+
+void RecipeStepsEditor::select(int index)
+{
+    if (index < 0 || index >= m_table->rowCount()) {
+        m_table->clearSelection();
+        showDetail();
+        return;
+    }
+    m_table->selectRow(index);
+    m_table->scrollToItem(m_table->item(index, 0));
+    showDetail(); // also when it was selected already: the fields are the step's as it is
+}
+
+void RecipeStepsEditor::addStep(const QString& type)
+{
+    const int at = selected() < 0 ? int(m_steps.size()) : selected() + 1;
+    QJsonObject step{{kType, type}};
+    if (type == QLatin1String("start"))
+        step.insert(QStringLiteral("direction"), QStringLiteral("cw"));
+    if (type == QLatin1String("select"))
+        step.insert(QStringLiteral("spno"), 1);
+    if (type == QLatin1String("hold"))
+        step.insert(kLimits, QJsonArray());
+    m_steps.insert(at, step);
+    fillTable();
+    select(at);
+    emit changed();
+}
+
+void RecipeStepsEditor::removeSelected()
+{
+    const int row = selected();
+    if (row < 0)
+        return;
+    m_steps.removeAt(row);
+    fillTable();
+    select(std::min(row, int(m_steps.size()) - 1));
+    emit changed();
+}
+
+void RecipeStepsEditor::moveSelected(int by)
+{
+    const int row = selected();
+    const int to = row + by;
+    if (row < 0 || to < 0 || to >= m_steps.size())
+        return;
+    const QJsonValue step = m_steps.at(row);
+    m_steps.removeAt(row);
+    m_steps.insert(to, step);
+    fillTable();
+    select(to);
+    emit changed();
+}
+
+void RecipeStepsEditor::setField(const QString& key, const QJsonValue& value)
+{
+    const int row = selected();
+    if (row < 0 || m_filling)
+        return;
+    QJsonObject step = m_steps.at(row).toObject();
+    if (value.isUndefined())
+        step.remove(key);
+    else
+        step.insert(key, value);
+    m_steps.replace(row, step);
+    fillRow(row);
+    emit changed();
+}
+
+void RecipeStepsEditor::showDetail()
+{
+    const int row = selected();
+    m_remove->setEnabled(row >= 0);
+    m_up->setEnabled(row > 0);
+    m_down->setEnabled(row >= 0 && row + 1 < m_steps.size());
+    if (m_fields) {
+        // Later: this may run inside a signal of one of its fields.
+        m_fields->setParent(nullptr);
+        m_fields->deleteLater();
+    }
+    m_fields = new QWidget(m_detail);
+    m_detail->layout()->addWidget(m_fields);
+    auto* form = new QFormLayout(m_fields);
+    if (row < 0) {
+        m_detail->setTitle(tr("No step selected"));
+        form->addRow(new QLabel(tr("Add a step, or select one to edit it."), m_fields));
+        return;
+    }
+    m_filling = true;
+    const QJsonObject step = m_steps.at(row).toObject();
+    const QString type = step.value(kType).toString();
+    m_detail->setTitle(tr("Step %1: %2").arg(row + 1).arg(typeText(type)));
+    const QString speedUnit = step.value(kUnit).toString();
+    if (type == QLatin1String("select")) {
+        auto* spno = new QSpinBox(m_fields);
+        spno->setRange(1, 8);
+        spno->setPrefix(QStringLiteral("SPno"));
+        spno->setValue(step.value(QStringLiteral("spno")).toInt(1));
+        connect(spno, &QSpinBox::valueChanged, this,
+                [this](int v) { setField(QStringLiteral("spno"), v); });
+        form->addRow(tr("Running data:"), spno);
+    } else if (type == QLatin1String("speed")) {
+        addNumberField(form, tr("Speed command:"), QStringLiteral("speed"), speedUnit);
+        addTextField(form, tr("Unit:"), kUnit, tr("the speed command's unit"));
+    } else if (type == QLatin1String("start")) {
+        auto* direction = new QComboBox(m_fields);
+        direction->addItem(tr("CW"), QStringLiteral("cw"));
+        direction->addItem(tr("CCW"), QStringLiteral("ccw"));
+        direction->setCurrentIndex(
+            std::max(0, direction->findData(step.value(QStringLiteral("direction")).toString())));
+        connect(direction, &QComboBox::currentIndexChanged, this, [this, direction] {
+            setField(QStringLiteral("direction"), direction->currentData().toString());
+        });
+        form->addRow(tr("Direction:"), direction);
+    } else if (type == QLatin1String("waitSpeed")) {
+        addNumberField(form, tr("Target speed:"), QStringLiteral("target"), speedUnit,
+                       tr("empty: the drive's own target speed"));
+        addNumberField(form, tr("Tolerance (±):"), QStringLiteral("tolerance"), speedUnit);
+        addTextField(form, tr("Unit:"), kUnit, tr("the speed's unit"));
+        addNumberField(form, tr("Within:"), QStringLiteral("timeout"), tr("s"));
+    } else if (type == QLatin1String("hold")) {
+        addNumberField(form, tr("Duration:"), QStringLiteral("duration"), tr("s"));
+        form->addRow(limitsTable(step.value(kLimits).toArray()));
+    } else if (type == QLatin1String("stop")) {
+        addNumberField(form, tr("Deceleration time:"), QStringLiteral("deceleration"), tr("s"),
+                       tr("empty: the drive's setting"));
+        addNumberField(form, tr("Margin:"), QStringLiteral("margin"), tr("s"));
+    } else if (type == QLatin1String("read")) {
+        addParameterField(form, kParameter);
+        addNumberField(form, tr("Lower limit:"), QStringLiteral("lower"), QString(),
+                       tr("empty: none"));
+        addNumberField(form, tr("Upper limit:"), QStringLiteral("upper"), QString(),
+                       tr("empty: none"));
+        addTextField(form, tr("Unit:"), kUnit, tr("the value's unit"));
+        addTextField(form, tr("Or equals:"), QStringLiteral("equals"),
+                     tr("the expected text, instead of limits"));
+    } else {
+        form->addRow(new QLabel(tr("This step has no settings."), m_fields));
+    }
+    m_filling = false;
+}
+
+void RecipeStepsEditor::addNumberField(QFormLayout* form, const QString& label, const QString& key,
+                                       const QString& unit, const QString& empty)
+{
+    const int row = selected();
+    auto* edit = new QLineEdit(numberText(m_steps.at(row).toObject().value(key)), m_fields);
+    edit->setObjectName(QStringLiteral("step_") + key);
+    edit->setPlaceholderText(empty);
+    connect(edit, &QLineEdit::textEdited, this,
+            [this, key](const QString& text) { setField(key, numberValue(text)); });
+    auto* line = new QHBoxLayout;
+    line->addWidget(edit, 1);
+    if (!unit.isEmpty())
+        line->addWidget(new QLabel(unit, m_fields));
+    form->addRow(label, line);
+}
+
+void RecipeStepsEditor::addTextField(QFormLayout* form, const QString& label, const QString& key,
+                                     const QString& placeholder)
+{
+    const int row = selected();
+    auto* edit = new QLineEdit(m_steps.at(row).toObject().value(key).toString(), m_fields);
+    edit->setObjectName(QStringLiteral("step_") + key);
+    edit->setPlaceholderText(placeholder);
+    connect(edit, &QLineEdit::textEdited, this, [this, key](const QString& text) {
+        setField(key, text.isEmpty() ? QJsonValue(QJsonValue::Undefined) : QJsonValue(text));
+    });
+    form->addRow(label, edit);
+}
+
+void RecipeStepsEditor::addParameterField(QFormLayout* form, const QString& key)
+{
+    const QString current = m_steps.at(selected()).toObject().value(key).toString();
+    auto* choice = new QComboBox(m_fields);
+    choice->setObjectName(QStringLiteral("step_") + key);
+    if (m_profile)
+        for (const ParameterMeta& p : m_profile->parameters)
+            if (p.isReadable() && p.kind != QLatin1String("reserved"))
+                choice->addItem(tr("%1 (%2)").arg(p.label, p.name), p.name);
+    if (!current.isEmpty() && choice->findData(current) < 0)
+        choice->addItem(tr("(unknown: %1)").arg(current), current);
+    choice->setCurrentIndex(current.isEmpty() ? -1 : choice->findData(current));
+    connect(choice, &QComboBox::currentIndexChanged, this, [this, choice, key] {
+        const QString name = choice->currentData().toString();
+        setField(key, name);
+        // The unit a limit must be given in is the parameter's own.
+        if (!m_steps.at(selected()).toObject().contains(QStringLiteral("equals")))
+            setField(kUnit, unitOf(name));
+        showDetail();
+    });
+    form->addRow(tr("Parameter:"), choice);
+}
+
+QString RecipeStepsEditor::unitOf(const QString& parameter) const
+{
+    const ParameterMeta* meta = m_profile ? m_profile->parameter(parameter) : nullptr;
+    return meta ? meta->spec.canonicalUnit : QString(); // as recipe files give units
+}
+
+QWidget* RecipeStepsEditor::limitsTable(const QJsonArray& limits)
+{
+    auto* box = new QWidget(m_fields);
+    auto* table = new QTableWidget(int(limits.size()), 5, box);
+    table->setObjectName(QStringLiteral("stepLimits"));
+    table->setHorizontalHeaderLabels(
+        {tr("Parameter"), tr("Statistic"), tr("Lower"), tr("Upper"), tr("Unit")});
+    table->verticalHeader()->hide();
+    table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    // The parameter takes what is left; a limit's digits and the unit are short.
+    QHeaderView* header = table->horizontalHeader();
+    header->setSectionResizeMode(LimitParameter, QHeaderView::Stretch);
+    header->setSectionResizeMode(LimitStatistic, QHeaderView::ResizeToContents);
+    header->setSectionResizeMode(LimitUnit, QHeaderView::ResizeToContents);
+    const int digits = table->fontMetrics().horizontalAdvance(QStringLiteral("-00000.00")) + 12;
+    table->setColumnWidth(LimitLower, digits);
+    table->setColumnWidth(LimitUpper, digits);
+    auto store = [this, table] {
+        if (!m_filling)
+            setField(kLimits, limitsOf(table));
+    };
+    auto fillRowOf = [this, table, store](int row, const QJsonObject& limit) {
+        auto* parameter = new QComboBox(table);
+        const QString name = limit.value(kParameter).toString();
+        if (m_profile)
+            for (const ParameterMeta& p : m_profile->parameters)
+                if (p.isReadable() && p.isNumeric() && p.kind == QLatin1String("status"))
+                    parameter->addItem(p.label, p.name);
+        if (!name.isEmpty() && parameter->findData(name) < 0)
+            parameter->addItem(tr("(unknown: %1)").arg(name), name);
+        parameter->setCurrentIndex(name.isEmpty() ? -1 : parameter->findData(name));
+        table->setCellWidget(row, LimitParameter, parameter);
+        auto* statistic = new QComboBox(table);
+        for (const QString& s :
+             {QStringLiteral("min"), QStringLiteral("mean"), QStringLiteral("max")})
+            statistic->addItem(s, s);
+        statistic->setCurrentIndex(
+            std::max(0, statistic->findData(limit.value(QStringLiteral("statistic")).toString())));
+        table->setCellWidget(row, LimitStatistic, statistic);
+        table->setItem(row, LimitLower,
+                       new QTableWidgetItem(numberText(limit.value(QStringLiteral("lower")))));
+        table->setItem(row, LimitUpper,
+                       new QTableWidgetItem(numberText(limit.value(QStringLiteral("upper")))));
+        table->setItem(row, LimitUnit, fixedItem(limit.value(kUnit).toString()));
+        connect(
+            parameter, &QComboBox::currentIndexChanged, this, [this, table, row, parameter, store] {
+                // The unit is the parameter's own: the checker refuses any other.
+                table->item(row, LimitUnit)->setText(unitOf(parameter->currentData().toString()));
+                store();
+            });
+        connect(statistic, &QComboBox::currentIndexChanged, this, store);
+    };
+    for (int row = 0; row < limits.size(); ++row)
+        fillRowOf(row, limits.at(row).toObject());
+    connect(table, &QTableWidget::itemChanged, this, store);
+
+    auto* add = new QPushButton(tr("Add limit"), box);
+    auto* remove = new QPushButton(tr("Remove limit"), box);
+    connect(add, &QPushButton::clicked, this, [this, table, fillRowOf, store] {
+        const int row = table->rowCount();
+        m_filling = true;
+        table->insertRow(row);
+        fillRowOf(row, QJsonObject{{QStringLiteral("statistic"), QStringLiteral("max")}});
+        m_filling = false;
+        store();
+    });
+    connect(remove, &QPushButton::clicked, this, [this, table] {
+        const QList<QTableWidgetItem*> items = table->selectedItems();
+        const int row = items.isEmpty() ? table->currentRow() : items.first()->row();
+        if (row < 0)
+            return;
+        setField(kLimits, [&] {
+            QJsonArray all = limitsOf(table);
+            all.removeAt(row);
+            return all;
+        }());
+        showDetail();
+    });
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(add);
+    buttons->addWidget(remove);
+    buttons->addStretch(1);
+    auto* layout = new QVBoxLayout(box);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(new QLabel(tr("Limits (measured over the hold):"), box));
+    layout->addWidget(table, 1);
+    layout->addLayout(buttons);
+    return box;
+}
+
+QJsonArray RecipeStepsEditor::limitsOf(QTableWidget* table) const
+{
+    QJsonArray limits;
+    for (int row = 0; row < table->rowCount(); ++row) {
+        auto* parameter = qobject_cast<QComboBox*>(table->cellWidget(row, LimitParameter));
+        auto* statistic = qobject_cast<QComboBox*>(table->cellWidget(row, LimitStatistic));
+        QJsonObject limit{{kParameter, parameter ? parameter->currentData().toString() : QString()},
+                          {QStringLiteral("statistic"),
+                           statistic ? statistic->currentData().toString() : QString()}};
+        const QJsonValue lower = numberValue(table->item(row, LimitLower)->text());
+        const QJsonValue upper = numberValue(table->item(row, LimitUpper)->text());
+        if (!lower.isUndefined())
+            limit.insert(QStringLiteral("lower"), lower);
+        if (!upper.isUndefined())
+            limit.insert(QStringLiteral("upper"), upper);
+        limit.insert(kUnit, table->item(row, LimitUnit)->text());
+        limits << limit;
+    }
+    return limits;
+}
+
+} // namespace opentop
