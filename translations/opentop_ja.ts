@@ -7418,161 +7418,174 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="35"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
         <source>&amp;Write to all</source>
         <translation>すべてに書込み(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="39"/>
         <source>Write one setting to several drives</source>
         <translation>1 つの設定を複数のドライバに書込み</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
         <source>Machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
         <source>Current value</source>
         <translation>現在値</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="55"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="74"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="76"/>
         <source>Not written: another family (%1)</source>
         <translation>未書込み: 別ファミリ (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="75"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="77"/>
         <source>Not written: not identified (%1)</source>
         <translation>未書込み: 未識別 (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="80"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="82"/>
         <source>&amp;Setting:</source>
         <translation>設定(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="86"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="88"/>
         <source>New &amp;value:</source>
         <translation>新しい値(&amp;V):</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="158"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="160"/>
         <source>cannot be read</source>
         <translation>読出し不可</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="161"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="163"/>
         <source>reading…</source>
         <translation>読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="189"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="191"/>
         <source>read failed: %1</source>
         <translation>読出し失敗: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="214"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="216"/>
         <source>Drive %1: %2 is not known yet, and the allowed values depend on it.</source>
         <translation>ドライバ %1: %2 がまだ不明で、許容値はそれに依存します。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="218"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="220"/>
         <source>drive %1: %2</source>
         <translation>ドライバ %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="222"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="224"/>
         <source>The unit differs between the drives (%1); write them one at a time.</source>
         <translation>ドライバ間で単位が異なります (%1)。1 台ずつ書き込んでください。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="230"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="232"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>ドライバ %1 では許可されていません (%2): %3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="237"/>
         <source>None of the selected drives is identified.</source>
         <translation>選択したドライバはいずれも識別されていません。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="252"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="301"/>
         <source>Drive %1: %2</source>
         <translation>ドライバ %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="249"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="255"/>
         <source>Allowed on %1</source>
         <translation>%1 で許可</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="257"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="263"/>
         <source>Warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="258"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="264"/>
         <source>Allowed on %1.</source>
         <translation>%1 で許可。</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="310"/>
+        <source>Set it on %n drive(s) anyway?</source>
+        <translation>
+            <numerusform>それでも %n 台のドライバに設定しますか？</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="290"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="311"/>
+        <source>&amp;Set it</source>
+        <translation>設定する(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="325"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>%1 を局番 %2 に書込み</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="292"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="327"/>
         <source>Nothing was written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="297"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="332"/>
         <source>waiting…</source>
         <translation>待機中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="299"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>%1 を %n 台のドライバに書込み中…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="311"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="346"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>%n 台中 %1 台のドライバで書込み・照合完了。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="320"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="355"/>
         <source>writing…</source>
         <translation>書込み中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="333"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="368"/>
         <source>Written and verified</source>
         <translation>書込み・照合済み</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="369"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>書込み済み、未照合（読み戻し不可）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="335"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="370"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
@@ -10447,6 +10460,7 @@ No unit can be tested until results can be recorded.</source>
     <message>
         <location filename="../ui/files/RestoreDialog.cpp" line="282"/>
         <location filename="../ui/files/RestoreDialog.cpp" line="373"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="378"/>
         <source>Drive %1: %2</source>
         <translation>ドライバ %1: %2</translation>
     </message>
@@ -10483,34 +10497,34 @@ No unit can be tested until results can be recorded.</source>
         <translation>OpenTOP バックアップ (*.json);;すべてのファイル (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="381"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>ドライバ %1 に %n 個の設定を書き込み、それぞれ読み戻して照合しますか？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
         <source>Write to drives</source>
         <translation>ドライバに書込み</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
         <source>&amp;Write</source>
         <translation>書込み(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="385"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="391"/>
         <source>Save restore report</source>
         <translation>復元レポートを保存</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="392"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>テキスト (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="391"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="397"/>
         <source>Could not save %1: %2</source>
         <translation>%1 を保存できませんでした: %2</translation>
     </message>
@@ -10518,109 +10532,109 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestorePlan</name>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="69"/>
+        <location filename="../model/files/RestorePlan.cpp" line="70"/>
         <source>the file holds a %1 drive (%2), but machine number %3 is a %4 drive; nothing written</source>
         <translation>ファイルには %1 ドライバ (%2) が含まれていますが、局番 %3 は %4 ドライバです。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="76"/>
+        <location filename="../model/files/RestorePlan.cpp" line="77"/>
         <source>the file is from a %1 (%2), but machine number %3 is a %4 (%5); their allowed values differ, nothing written</source>
         <translation>ファイルは %1 (%2) のものですが、局番 %3 は %4 (%5) です。許容値が異なるため、何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="83"/>
+        <location filename="../model/files/RestorePlan.cpp" line="84"/>
         <source>the drive does not tell its variant: every value must suit all variants (name it with --variant to use its own ranges)</source>
         <translation>ドライバが機種を通知しません: すべての値が全機種に適合する必要があります（--variant で機種を指定すると、その機種の範囲を使用します）</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="152"/>
+        <location filename="../model/files/RestorePlan.cpp" line="153"/>
         <source>%1: the value cannot be written exactly</source>
         <translation>%1: 値を正確に書き込めません</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="165"/>
+        <location filename="../model/files/RestorePlan.cpp" line="166"/>
         <source>store commands are always written: what the drive has stored cannot be read back, only what it uses now</source>
         <translation>保存コマンドは常に書き込みます: ドライバが保存した値は読み戻せず、読み出せるのは現在使用中の値のみです</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/files/RestorePlan.cpp" line="176"/>
+        <location filename="../model/files/RestorePlan.cpp" line="177"/>
         <source>%n value(s) of the file may not be written to this drive; nothing written</source>
         <translation>
             <numerusform>ファイルの %n 個の値はこのドライバに書き込めません。何も書き込んでいません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="238"/>
+        <location filename="../model/files/RestorePlan.cpp" line="255"/>
         <source>keep</source>
         <translation>維持</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="240"/>
+        <location filename="../model/files/RestorePlan.cpp" line="257"/>
         <source>write</source>
         <translation>書込み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="242"/>
+        <location filename="../model/files/RestorePlan.cpp" line="259"/>
         <source>store</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="253"/>
+        <location filename="../model/files/RestorePlan.cpp" line="270"/>
         <source>unchanged</source>
         <translation>変更なし</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="272"/>
         <source>written</source>
         <translation>書込み済み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="272"/>
         <source>written and verified</source>
         <translation>書込み・照合済み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="257"/>
+        <location filename="../model/files/RestorePlan.cpp" line="274"/>
         <source>failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="259"/>
+        <location filename="../model/files/RestorePlan.cpp" line="276"/>
         <source>not attempted</source>
         <translation>未実行</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="261"/>
+        <location filename="../model/files/RestorePlan.cpp" line="278"/>
         <source>not confirmed (%1): the drive may or may not hold it; run the restore again to read it back</source>
         <translation>未確認 (%1): ドライバがその値を保持しているかどうか不明です。復元を再実行して読み戻してください</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="286"/>
+        <location filename="../model/files/RestorePlan.cpp" line="303"/>
         <source>planned</source>
         <translation>計画済み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="288"/>
+        <location filename="../model/files/RestorePlan.cpp" line="305"/>
         <source>restored</source>
         <translation>復元済み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="290"/>
+        <location filename="../model/files/RestorePlan.cpp" line="307"/>
         <source>refused</source>
         <translation>拒否</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="292"/>
+        <location filename="../model/files/RestorePlan.cpp" line="309"/>
         <source>communication failure</source>
         <translation>通信失敗</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="294"/>
+        <location filename="../model/files/RestorePlan.cpp" line="311"/>
         <source>verification mismatch</source>
         <translation>照合不一致</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="296"/>
+        <location filename="../model/files/RestorePlan.cpp" line="313"/>
         <source>interrupted</source>
         <translation>中断</translation>
     </message>

@@ -7418,161 +7418,174 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="35"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
         <source>&amp;Write to all</source>
         <translation>모두에 쓰기(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="39"/>
         <source>Write one setting to several drives</source>
         <translation>설정 하나를 여러 드라이버에 쓰기</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
         <source>Machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
         <source>Current value</source>
         <translation>현재 값</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="55"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
         <source>Result</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="74"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="76"/>
         <source>Not written: another family (%1)</source>
         <translation>쓰지 않음: 다른 제품군(%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="75"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="77"/>
         <source>Not written: not identified (%1)</source>
         <translation>쓰지 않음: 식별 안 됨(%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="80"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="82"/>
         <source>&amp;Setting:</source>
         <translation>설정(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="86"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="88"/>
         <source>New &amp;value:</source>
         <translation>새 값(&amp;V):</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="158"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="160"/>
         <source>cannot be read</source>
         <translation>읽을 수 없음</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="161"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="163"/>
         <source>reading…</source>
         <translation>읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="189"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="191"/>
         <source>read failed: %1</source>
         <translation>읽기 실패: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="214"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="216"/>
         <source>Drive %1: %2 is not known yet, and the allowed values depend on it.</source>
         <translation>드라이버 %1: %2을(를) 아직 알 수 없는데, 허용 값이 이 값에 따라 달라집니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="218"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="220"/>
         <source>drive %1: %2</source>
         <translation>드라이버 %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="222"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="224"/>
         <source>The unit differs between the drives (%1); write them one at a time.</source>
         <translation>드라이버마다 단위가 다릅니다(%1). 하나씩 쓰십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="230"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="232"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>드라이버 %1에서 허용되지 않음(%2): %3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="237"/>
         <source>None of the selected drives is identified.</source>
         <translation>선택한 드라이버 중 식별된 것이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="252"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="301"/>
         <source>Drive %1: %2</source>
         <translation>드라이버 %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="249"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="255"/>
         <source>Allowed on %1</source>
         <translation>%1에서 허용</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="257"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="263"/>
         <source>Warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="258"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="264"/>
         <source>Allowed on %1.</source>
         <translation>%1에서 허용.</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="310"/>
+        <source>Set it on %n drive(s) anyway?</source>
+        <translation>
+            <numerusform>그래도 드라이버 %n대에 설정하시겠습니까?</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="290"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="311"/>
+        <source>&amp;Set it</source>
+        <translation>설정(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="325"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>%1을(를) 국번 %2에 쓰기</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="292"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="327"/>
         <source>Nothing was written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="297"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="332"/>
         <source>waiting…</source>
         <translation>대기 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="299"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>%1을(를) 드라이버 %n대에 쓰는 중…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="311"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="346"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>드라이버 %n대 중 %1대에 쓰기 및 검증 완료.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="320"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="355"/>
         <source>writing…</source>
         <translation>쓰는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="333"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="368"/>
         <source>Written and verified</source>
         <translation>쓰기 및 검증 완료</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="369"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>쓰기 완료, 검증 안 됨(다시 읽을 수 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="335"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="370"/>
         <source>Failed: %1</source>
         <translation>실패: %1</translation>
     </message>
@@ -10447,6 +10460,7 @@ No unit can be tested until results can be recorded.</source>
     <message>
         <location filename="../ui/files/RestoreDialog.cpp" line="282"/>
         <location filename="../ui/files/RestoreDialog.cpp" line="373"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="378"/>
         <source>Drive %1: %2</source>
         <translation>드라이버 %1: %2</translation>
     </message>
@@ -10483,34 +10497,34 @@ No unit can be tested until results can be recorded.</source>
         <translation>OpenTOP 백업 (*.json);;모든 파일 (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="381"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>설정 %n개를 드라이버 %1에 쓰고 각각 다시 읽어 검증하시겠습니까?</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
         <source>Write to drives</source>
         <translation>드라이버에 쓰기</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
         <source>&amp;Write</source>
         <translation>쓰기(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="385"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="391"/>
         <source>Save restore report</source>
         <translation>복원 보고서 저장</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="392"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>텍스트 (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="391"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="397"/>
         <source>Could not save %1: %2</source>
         <translation>%1을(를) 저장할 수 없습니다: %2</translation>
     </message>
@@ -10518,109 +10532,109 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestorePlan</name>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="69"/>
+        <location filename="../model/files/RestorePlan.cpp" line="70"/>
         <source>the file holds a %1 drive (%2), but machine number %3 is a %4 drive; nothing written</source>
         <translation>파일에는 %1 드라이버(%2)가 있지만 국번 %3은(는) %4 드라이버입니다. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="76"/>
+        <location filename="../model/files/RestorePlan.cpp" line="77"/>
         <source>the file is from a %1 (%2), but machine number %3 is a %4 (%5); their allowed values differ, nothing written</source>
         <translation>파일은 %1(%2)의 것이지만 국번 %3은(는) %4(%5)입니다. 허용 값이 다르므로 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="83"/>
+        <location filename="../model/files/RestorePlan.cpp" line="84"/>
         <source>the drive does not tell its variant: every value must suit all variants (name it with --variant to use its own ranges)</source>
         <translation>드라이버가 기종을 알려주지 않습니다: 모든 값이 모든 기종에 맞아야 합니다(해당 기종의 범위를 쓰려면 --variant로 지정)</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="152"/>
+        <location filename="../model/files/RestorePlan.cpp" line="153"/>
         <source>%1: the value cannot be written exactly</source>
         <translation>%1: 값을 정확하게 쓸 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="165"/>
+        <location filename="../model/files/RestorePlan.cpp" line="166"/>
         <source>store commands are always written: what the drive has stored cannot be read back, only what it uses now</source>
         <translation>저장 명령은 항상 씁니다: 드라이버가 저장한 값은 다시 읽을 수 없고, 현재 사용 중인 값만 읽을 수 있습니다</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/files/RestorePlan.cpp" line="176"/>
+        <location filename="../model/files/RestorePlan.cpp" line="177"/>
         <source>%n value(s) of the file may not be written to this drive; nothing written</source>
         <translation>
             <numerusform>파일의 값 %n개는 이 드라이버에 쓸 수 없습니다. 아무것도 쓰지 않았습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="238"/>
+        <location filename="../model/files/RestorePlan.cpp" line="255"/>
         <source>keep</source>
         <translation>유지</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="240"/>
+        <location filename="../model/files/RestorePlan.cpp" line="257"/>
         <source>write</source>
         <translation>쓰기</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="242"/>
+        <location filename="../model/files/RestorePlan.cpp" line="259"/>
         <source>store</source>
         <translation>저장</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="253"/>
+        <location filename="../model/files/RestorePlan.cpp" line="270"/>
         <source>unchanged</source>
         <translation>변경 없음</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="272"/>
         <source>written</source>
         <translation>쓰기 완료</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="272"/>
         <source>written and verified</source>
         <translation>쓰기 및 검증 완료</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="257"/>
+        <location filename="../model/files/RestorePlan.cpp" line="274"/>
         <source>failed: %1</source>
         <translation>실패: %1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="259"/>
+        <location filename="../model/files/RestorePlan.cpp" line="276"/>
         <source>not attempted</source>
         <translation>시도 안 함</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="261"/>
+        <location filename="../model/files/RestorePlan.cpp" line="278"/>
         <source>not confirmed (%1): the drive may or may not hold it; run the restore again to read it back</source>
         <translation>확인 안 됨(%1): 드라이버에 값이 들어갔는지 알 수 없습니다. 복원을 다시 실행하여 다시 읽으십시오</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="286"/>
+        <location filename="../model/files/RestorePlan.cpp" line="303"/>
         <source>planned</source>
         <translation>계획됨</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="288"/>
+        <location filename="../model/files/RestorePlan.cpp" line="305"/>
         <source>restored</source>
         <translation>복원됨</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="290"/>
+        <location filename="../model/files/RestorePlan.cpp" line="307"/>
         <source>refused</source>
         <translation>거부됨</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="292"/>
+        <location filename="../model/files/RestorePlan.cpp" line="309"/>
         <source>communication failure</source>
         <translation>통신 실패</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="294"/>
+        <location filename="../model/files/RestorePlan.cpp" line="311"/>
         <source>verification mismatch</source>
         <translation>검증 불일치</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="296"/>
+        <location filename="../model/files/RestorePlan.cpp" line="313"/>
         <source>interrupted</source>
         <translation>중단됨</translation>
     </message>

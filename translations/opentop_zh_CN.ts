@@ -7418,161 +7418,174 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="35"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
         <source>&amp;Write to all</source>
         <translation>全部写入(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="39"/>
         <source>Write one setting to several drives</source>
         <translation>向多台驱动器写入一项设定</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
         <source>Machine number</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
         <source>Current value</source>
         <translation>当前值</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="55"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="74"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="76"/>
         <source>Not written: another family (%1)</source>
         <translation>未写入：其他系列（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="75"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="77"/>
         <source>Not written: not identified (%1)</source>
         <translation>未写入：未识别（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="80"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="82"/>
         <source>&amp;Setting:</source>
         <translation>设定(&amp;S)：</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="86"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="88"/>
         <source>New &amp;value:</source>
         <translation>新值(&amp;V)：</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="158"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="160"/>
         <source>cannot be read</source>
         <translation>无法读取</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="161"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="163"/>
         <source>reading…</source>
         <translation>正在读取…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="189"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="191"/>
         <source>read failed: %1</source>
         <translation>读取失败：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="214"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="216"/>
         <source>Drive %1: %2 is not known yet, and the allowed values depend on it.</source>
         <translation>驱动器 %1：%2 尚未知，而允许值取决于该项。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="218"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="220"/>
         <source>drive %1: %2</source>
         <translation>驱动器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="222"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="224"/>
         <source>The unit differs between the drives (%1); write them one at a time.</source>
         <translation>各驱动器的单位不同（%1）；请逐台写入。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="230"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="232"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>驱动器 %1（%2）不允许：%3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="237"/>
         <source>None of the selected drives is identified.</source>
         <translation>所选驱动器均未识别。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="252"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="301"/>
         <source>Drive %1: %2</source>
         <translation>驱动器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="249"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="255"/>
         <source>Allowed on %1</source>
         <translation>%1 上允许</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="257"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="263"/>
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="258"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="264"/>
         <source>Allowed on %1.</source>
         <translation>%1 上允许。</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="310"/>
+        <source>Set it on %n drive(s) anyway?</source>
+        <translation>
+            <numerusform>仍要在 %n 台驱动器上设置吗？</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="290"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="311"/>
+        <source>&amp;Set it</source>
+        <translation>设置(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="325"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>将 %1 写入站号 %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="292"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="327"/>
         <source>Nothing was written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="297"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="332"/>
         <source>waiting…</source>
         <translation>等待中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="299"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>正在将 %1 写入 %n 台驱动器…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="311"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="346"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>已在 %n 台驱动器中的 %1 台上写入并校验。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="320"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="355"/>
         <source>writing…</source>
         <translation>正在写入…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="333"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="368"/>
         <source>Written and verified</source>
         <translation>已写入并校验</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="369"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>已写入，未校验（无法回读）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="335"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="370"/>
         <source>Failed: %1</source>
         <translation>失败：%1</translation>
     </message>
@@ -10447,6 +10460,7 @@ No unit can be tested until results can be recorded.</source>
     <message>
         <location filename="../ui/files/RestoreDialog.cpp" line="282"/>
         <location filename="../ui/files/RestoreDialog.cpp" line="373"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="378"/>
         <source>Drive %1: %2</source>
         <translation>驱动器 %1：%2</translation>
     </message>
@@ -10483,34 +10497,34 @@ No unit can be tested until results can be recorded.</source>
         <translation>OpenTOP 备份 (*.json);;所有文件 (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="381"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>将 %n 项设定写入驱动器 %1，每项都通过回读校验？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
         <source>Write to drives</source>
         <translation>写入驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
         <source>&amp;Write</source>
         <translation>写入(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="385"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="391"/>
         <source>Save restore report</source>
         <translation>保存恢复报告</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="392"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>文本 (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="391"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="397"/>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
     </message>
@@ -10518,109 +10532,109 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestorePlan</name>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="69"/>
+        <location filename="../model/files/RestorePlan.cpp" line="70"/>
         <source>the file holds a %1 drive (%2), but machine number %3 is a %4 drive; nothing written</source>
         <translation>文件中是 %1 驱动器（%2），但站号 %3 是 %4 驱动器；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="76"/>
+        <location filename="../model/files/RestorePlan.cpp" line="77"/>
         <source>the file is from a %1 (%2), but machine number %3 is a %4 (%5); their allowed values differ, nothing written</source>
         <translation>文件来自 %1（%2），但站号 %3 是 %4（%5）；两者的允许值不同，未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="83"/>
+        <location filename="../model/files/RestorePlan.cpp" line="84"/>
         <source>the drive does not tell its variant: every value must suit all variants (name it with --variant to use its own ranges)</source>
         <translation>驱动器不报告其机型：每个值都必须适用于所有机型（用 --variant 指定机型以使用其自身范围）</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="152"/>
+        <location filename="../model/files/RestorePlan.cpp" line="153"/>
         <source>%1: the value cannot be written exactly</source>
         <translation>%1：无法精确写入该值</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="165"/>
+        <location filename="../model/files/RestorePlan.cpp" line="166"/>
         <source>store commands are always written: what the drive has stored cannot be read back, only what it uses now</source>
         <translation>保存命令总是会写入：驱动器已保存的内容无法回读，只能读取其当前使用的值</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/files/RestorePlan.cpp" line="176"/>
+        <location filename="../model/files/RestorePlan.cpp" line="177"/>
         <source>%n value(s) of the file may not be written to this drive; nothing written</source>
         <translation>
             <numerusform>文件中有 %n 个值不能写入该驱动器；未写入任何内容</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="238"/>
+        <location filename="../model/files/RestorePlan.cpp" line="255"/>
         <source>keep</source>
         <translation>保留</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="240"/>
+        <location filename="../model/files/RestorePlan.cpp" line="257"/>
         <source>write</source>
         <translation>写入</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="242"/>
+        <location filename="../model/files/RestorePlan.cpp" line="259"/>
         <source>store</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="253"/>
+        <location filename="../model/files/RestorePlan.cpp" line="270"/>
         <source>unchanged</source>
         <translation>未变</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="272"/>
         <source>written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="272"/>
         <source>written and verified</source>
         <translation>已写入并校验</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="257"/>
+        <location filename="../model/files/RestorePlan.cpp" line="274"/>
         <source>failed: %1</source>
         <translation>失败：%1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="259"/>
+        <location filename="../model/files/RestorePlan.cpp" line="276"/>
         <source>not attempted</source>
         <translation>未尝试</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="261"/>
+        <location filename="../model/files/RestorePlan.cpp" line="278"/>
         <source>not confirmed (%1): the drive may or may not hold it; run the restore again to read it back</source>
         <translation>未确认（%1）：驱动器可能保存了该值，也可能没有；请再次执行恢复以回读</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="286"/>
+        <location filename="../model/files/RestorePlan.cpp" line="303"/>
         <source>planned</source>
         <translation>已计划</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="288"/>
+        <location filename="../model/files/RestorePlan.cpp" line="305"/>
         <source>restored</source>
         <translation>已恢复</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="290"/>
+        <location filename="../model/files/RestorePlan.cpp" line="307"/>
         <source>refused</source>
         <translation>已拒绝</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="292"/>
+        <location filename="../model/files/RestorePlan.cpp" line="309"/>
         <source>communication failure</source>
         <translation>通信失败</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="294"/>
+        <location filename="../model/files/RestorePlan.cpp" line="311"/>
         <source>verification mismatch</source>
         <translation>校验不一致</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="296"/>
+        <location filename="../model/files/RestorePlan.cpp" line="313"/>
         <source>interrupted</source>
         <translation>已中断</translation>
     </message>

@@ -7418,161 +7418,174 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="35"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
         <source>&amp;Write to all</source>
         <translation>全部寫入(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="39"/>
         <source>Write one setting to several drives</source>
         <translation>將一項設定寫入多台驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
         <source>Machine number</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
         <source>Model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="54"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
         <source>Current value</source>
         <translation>目前值</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="55"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="74"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="76"/>
         <source>Not written: another family (%1)</source>
         <translation>未寫入：不同系列 (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="75"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="77"/>
         <source>Not written: not identified (%1)</source>
         <translation>未寫入：無法識別 (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="80"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="82"/>
         <source>&amp;Setting:</source>
         <translation>設定(&amp;S)：</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="86"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="88"/>
         <source>New &amp;value:</source>
         <translation>新值(&amp;V)：</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="158"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="160"/>
         <source>cannot be read</source>
         <translation>無法讀取</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="161"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="163"/>
         <source>reading…</source>
         <translation>讀取中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="189"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="191"/>
         <source>read failed: %1</source>
         <translation>讀取失敗：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="214"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="216"/>
         <source>Drive %1: %2 is not known yet, and the allowed values depend on it.</source>
         <translation>驅動器 %1：%2 尚未得知，而允許值取決於此項。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="218"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="220"/>
         <source>drive %1: %2</source>
         <translation>驅動器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="222"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="224"/>
         <source>The unit differs between the drives (%1); write them one at a time.</source>
         <translation>各驅動器的單位不同 (%1)；請逐台寫入。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="230"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="232"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>驅動器 %1 (%2) 不允許：%3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="237"/>
         <source>None of the selected drives is identified.</source>
         <translation>所選驅動器均未識別。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="252"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="301"/>
         <source>Drive %1: %2</source>
         <translation>驅動器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="249"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="255"/>
         <source>Allowed on %1</source>
         <translation>%1 的允許值</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="257"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="263"/>
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="258"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="264"/>
         <source>Allowed on %1.</source>
         <translation>%1 的允許值。</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="310"/>
+        <source>Set it on %n drive(s) anyway?</source>
+        <translation>
+            <numerusform>仍要在 %n 台驅動器上設定嗎？</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="290"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="311"/>
+        <source>&amp;Set it</source>
+        <translation>設定(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="325"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>將 %1 寫入機號 %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="292"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="327"/>
         <source>Nothing was written.</source>
         <translation>未寫入任何資料。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="297"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="332"/>
         <source>waiting…</source>
         <translation>等待中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="299"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>正在將 %1 寫入 %n 台驅動器…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="311"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="346"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>已於 %n 台驅動器中的 %1 台寫入並驗證。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="320"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="355"/>
         <source>writing…</source>
         <translation>寫入中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="333"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="368"/>
         <source>Written and verified</source>
         <translation>已寫入並驗證</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="369"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>已寫入，未驗證 (無法回讀)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="335"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="370"/>
         <source>Failed: %1</source>
         <translation>失敗：%1</translation>
     </message>
@@ -10447,6 +10460,7 @@ No unit can be tested until results can be recorded.</source>
     <message>
         <location filename="../ui/files/RestoreDialog.cpp" line="282"/>
         <location filename="../ui/files/RestoreDialog.cpp" line="373"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="378"/>
         <source>Drive %1: %2</source>
         <translation>驅動器 %1：%2</translation>
     </message>
@@ -10483,34 +10497,34 @@ No unit can be tested until results can be recorded.</source>
         <translation>OpenTOP 備份檔 (*.json);;所有檔案 (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="381"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>要將 %n 項設定寫入驅動器 %1，並逐項以回讀驗證嗎？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
         <source>Write to drives</source>
         <translation>寫入驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
         <source>&amp;Write</source>
         <translation>寫入(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="385"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="391"/>
         <source>Save restore report</source>
         <translation>儲存還原報告</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="392"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>文字檔 (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="391"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="397"/>
         <source>Could not save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
@@ -10518,109 +10532,109 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestorePlan</name>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="69"/>
+        <location filename="../model/files/RestorePlan.cpp" line="70"/>
         <source>the file holds a %1 drive (%2), but machine number %3 is a %4 drive; nothing written</source>
         <translation>檔案中為 %1 驅動器 (%2)，但機號 %3 是 %4 驅動器；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="76"/>
+        <location filename="../model/files/RestorePlan.cpp" line="77"/>
         <source>the file is from a %1 (%2), but machine number %3 is a %4 (%5); their allowed values differ, nothing written</source>
         <translation>檔案來自 %1 (%2)，但機號 %3 是 %4 (%5)；兩者的允許值不同，未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="83"/>
+        <location filename="../model/files/RestorePlan.cpp" line="84"/>
         <source>the drive does not tell its variant: every value must suit all variants (name it with --variant to use its own ranges)</source>
         <translation>驅動器不回報機型：每個值都必須適用於所有機型 (以 --variant 指定機型即可使用其範圍)</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="152"/>
+        <location filename="../model/files/RestorePlan.cpp" line="153"/>
         <source>%1: the value cannot be written exactly</source>
         <translation>%1：無法精確寫入此值</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="165"/>
+        <location filename="../model/files/RestorePlan.cpp" line="166"/>
         <source>store commands are always written: what the drive has stored cannot be read back, only what it uses now</source>
         <translation>保存指令一律會寫入：驅動器已保存的內容無法回讀，只能讀取目前使用中的值</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/files/RestorePlan.cpp" line="176"/>
+        <location filename="../model/files/RestorePlan.cpp" line="177"/>
         <source>%n value(s) of the file may not be written to this drive; nothing written</source>
         <translation>
             <numerusform>檔案中有 %n 個值不可寫入此驅動器；未寫入任何資料</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="238"/>
+        <location filename="../model/files/RestorePlan.cpp" line="255"/>
         <source>keep</source>
         <translation>保留</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="240"/>
+        <location filename="../model/files/RestorePlan.cpp" line="257"/>
         <source>write</source>
         <translation>寫入</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="242"/>
+        <location filename="../model/files/RestorePlan.cpp" line="259"/>
         <source>store</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="253"/>
+        <location filename="../model/files/RestorePlan.cpp" line="270"/>
         <source>unchanged</source>
         <translation>未變更</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="272"/>
         <source>written</source>
         <translation>已寫入</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="272"/>
         <source>written and verified</source>
         <translation>已寫入並驗證</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="257"/>
+        <location filename="../model/files/RestorePlan.cpp" line="274"/>
         <source>failed: %1</source>
         <translation>失敗：%1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="259"/>
+        <location filename="../model/files/RestorePlan.cpp" line="276"/>
         <source>not attempted</source>
         <translation>未執行</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="261"/>
+        <location filename="../model/files/RestorePlan.cpp" line="278"/>
         <source>not confirmed (%1): the drive may or may not hold it; run the restore again to read it back</source>
         <translation>未確認 (%1)：驅動器可能已保有此值，也可能沒有；請再次執行還原以回讀</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="286"/>
+        <location filename="../model/files/RestorePlan.cpp" line="303"/>
         <source>planned</source>
         <translation>已規劃</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="288"/>
+        <location filename="../model/files/RestorePlan.cpp" line="305"/>
         <source>restored</source>
         <translation>已還原</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="290"/>
+        <location filename="../model/files/RestorePlan.cpp" line="307"/>
         <source>refused</source>
         <translation>已拒絕</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="292"/>
+        <location filename="../model/files/RestorePlan.cpp" line="309"/>
         <source>communication failure</source>
         <translation>通訊失敗</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="294"/>
+        <location filename="../model/files/RestorePlan.cpp" line="311"/>
         <source>verification mismatch</source>
         <translation>驗證不符</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="296"/>
+        <location filename="../model/files/RestorePlan.cpp" line="313"/>
         <source>interrupted</source>
         <translation>已中斷</translation>
     </message>

@@ -2,6 +2,7 @@
 
 #include "files/BackupValidator.h"
 #include "profile/ValueCodec.h"
+#include "session/SerialLock.h"
 
 #include <QSet>
 #include <algorithm>
@@ -217,6 +218,22 @@ void RestorePlan::build(const Profile& profile, const QString& liveVariant,
             break;
         }
     }
+    // A lock being set can shut this program out of the drive: said before anything is written.
+    const QString lock = lockWarning(profile);
+    if (!lock.isEmpty())
+        notes << lock;
+}
+
+QString RestorePlan::lockWarning(const Profile& profile, const ValueContext& naming) const
+{
+    for (const Item& item : items) {
+        const ParameterMeta* meta = profile.parameter(item.parameter);
+        if (item.action == Item::Action::Write && meta && item.parameter == serialLock(profile))
+            return SerialLock::warning(
+                profile, *meta, qint64(ValueCodec::registersToRaw(*meta, item.fileRegisters)),
+                naming);
+    }
+    return QString();
 }
 
 int RestorePlan::count(Item::Status status) const

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "files/BackupDevice.h"
+#include "profile/ValueContext.h"
 
 #include <QCoreApplication>
 #include <QHash>
@@ -68,6 +69,11 @@ public:
     QStringList problems;    // every value that may not be written (a refusal)
     QStringList notes;
     QVector<Item> items; // in write order
+
+    // When the plan writes the family's serial lock on: SerialLock::warning (what it does and how
+    // to undo it, naming parameters as `naming` does), for the question before writing; build()
+    // also adds it to the notes. Empty when it does not.
+    QString lockWarning(const Profile& profile, const ValueContext& naming = {}) const;
 
     static RestorePlan check(const Profile& liveProfile, const QString& liveVariant,
                              const BackupDevice& file);

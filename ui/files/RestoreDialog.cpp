@@ -371,6 +371,12 @@ void RestoreDialog::confirmAndWrite()
             GroupWriteCheck::reachText(m_drives ? m_drives->session(plan.slave) : nullptr);
         if (!reach.isEmpty() && plan.count(Item::Action::Write) > 0)
             reached << tr("Drive %1: %2").arg(plan.slave).arg(reach);
+        // It can shut this program out of the drive's configuration: said before it is asked.
+        if (const DeviceSession* s = m_drives ? m_drives->session(plan.slave) : nullptr) {
+            const QString lock = plan.lockWarning(s->profile(), s->context());
+            if (!lock.isEmpty())
+                reached << tr("Drive %1: %2").arg(plan.slave).arg(lock);
+        }
     }
     QString question = tr("Write %n setting(s) to drive(s) %1, each verified by reading it back?",
                           nullptr, settings)

@@ -1,4 +1,6 @@
 #include "workspace/MultiDriveWriteDialog.h"
+#include "session/SerialLock.h"
+#include "widgets/ConfirmBox.h"
 
 #include "bus/BusDrives.h"
 #include "bus/BusGroupTracker.h"
@@ -240,10 +242,14 @@ void MultiDriveWriteDialog::check()
             break;
         const ValueContext context = m_drives->session(slave)->context();
         const ValueCodec::Encoded e = ValueCodec::encodeText(*meta(slave), text, context);
-        const QString w = RunningData::warningFor(m_drives->session(slave)->profile(),
-                                                  meta(slave)->name, qint64(e.raw), context);
-        if (!w.isEmpty())
-            advice << tr("Drive %1: %2").arg(slave).arg(w);
+        const Profile& profile = m_drives->session(slave)->profile();
+        // Outside the recommended range, a short deceleration, the serial lock: each said.
+        for (const QString& w :
+             {e.warning,
+              RunningData::warningFor(profile, meta(slave)->name, qint64(e.raw), context),
+              SerialLock::warning(profile, *meta(slave), qint64(e.raw), context)})
+            if (!w.isEmpty())
+                advice << tr("Drive %1: %2").arg(slave).arg(w);
     }
     m_unit->setText(units.size() == 1 ? *units.cbegin() : QString());
     m_value->setToolTip(tr("Allowed on %1").arg(allowed.join(QStringLiteral("; "))));
@@ -284,6 +290,35 @@ void MultiDriveWriteDialog::writeToAll()
     const QString text = m_value->text().trimmed();
     if (!m_problem.isEmpty() || text.isEmpty())
         return; // nothing is sent
+    // It can shut this program out of the drives' configuration: asked, as on a page.
+    QStringList locks;
+    for (int slave : m_writable) {
+        const ValueContext context = m_drives->session(slave)->context();
+        const ValueCodec::Encoded e = ValueCodec::encodeText(*meta(slave), text, context);
+        const QString w = SerialLock::warning(m_drives->session(slave)->profile(), *meta(slave),
+                                              qint64(e.raw), context);
+        if (!w.isEmpty())
+            locks << tr("Drive %1: %2").arg(slave).arg(w);
+    }
+    if (locks.isEmpty()) {
+        writeConfirmed(text);
+        return;
+    }
+    QPointer<MultiDriveWriteDialog> self(this);
+    ConfirmBox::ask(this, meta(m_writable.first())->label,
+                    locks.join(QStringLiteral("\n\n")) + QStringLiteral("\n\n") +
+                        tr("Set it on %n drive(s) anyway?", nullptr, int(locks.size())),
+                    tr("&Set it"), [self, text] {
+                        if (self && !self->busy() && self->m_value->text().trimmed() == text)
+                            self->writeConfirmed(text);
+                    });
+}
+
+void MultiDriveWriteDialog::writeConfirmed(const QString& text)
+{
+    check();
+    if (!m_problem.isEmpty())
+        return;
     // A group parent among them: its children execute the write too (even unselected ones).
     if (!GroupWriteCheck::confirm(
             this, BusGroupTracker::of(m_drives->session(m_writable.first())), m_writable,

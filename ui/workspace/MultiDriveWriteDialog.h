@@ -44,6 +44,8 @@ public:
     QString messageText() const;
     bool busy() const { return m_reading > 0 || m_writing; }
     QString cellText(int slave, Column column) const;
+    // Writes the value to every drive (asking first when it sets a serial lock, and when a
+    // group parent's children would execute it too).
     void writeToAll();
 
 signals:
@@ -54,6 +56,7 @@ private:
     const ParameterMeta* meta(int slave) const;
     void readValues();
     void check();
+    void writeConfirmed(const QString& text);
     void writeNext(QVector<int> queue, const QString& text, int failed);
     void setCell(int slave, Column column, const QString& text, bool error = false);
     void updateButtons();

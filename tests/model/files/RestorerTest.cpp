@@ -168,6 +168,7 @@ TEST_F(RestorerTest, ASerialLockIsReleasedFirstAndSetLast)
     plan.build(dc, QString(), live);
     EXPECT_LT(indexOf(plan, QStringLiteral("config.serial_lock")),
               indexOf(plan, QStringLiteral("config.baud")));
+    EXPECT_TRUE(plan.lockWarning(dc).isEmpty()) << "releasing the lock is no warning";
     // The file locks: the lock goes after the baud rate it freezes.
     for (BackupParameter& p : file.parameters) {
         if (p.name == QLatin1String("config.serial_lock"))
@@ -180,6 +181,12 @@ TEST_F(RestorerTest, ASerialLockIsReleasedFirstAndSetLast)
               indexOf(plan, QStringLiteral("config.baud")));
     EXPECT_GT(indexOf(plan, QStringLiteral("config.baud")),
               indexOf(plan, QStringLiteral("preset.reverse_speed")));
+    // Setting it is said before anything is written, with how to undo it.
+    const QString lock = plan.lockWarning(dc);
+    EXPECT_TRUE(lock.startsWith(QStringLiteral("config.serial_lock = Disabled")))
+        << qPrintable(lock);
+    EXPECT_TRUE(lock.contains(QStringLiteral("9600"))) << qPrintable(lock);
+    EXPECT_TRUE(plan.notes.contains(lock));
 }
 
 TEST_F(RestorerTest, StoresDcSettingsSoThatTheySurviveAPowerCycle)

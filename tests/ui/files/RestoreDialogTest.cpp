@@ -1,6 +1,11 @@
 #include "files/RestoreDialog.h"
 #include "FileDialogsFixture.h"
 
+#include <QAbstractButton>
+#include <QApplication>
+#include <QMessageBox>
+#include <QPushButton>
+
 using namespace opentop;
 
 namespace {
@@ -215,4 +220,40 @@ TEST_F(RestoreDialogTest, ClosingWhileWritingCancelsAndReportsWhatWasWritten)
     EXPECT_TRUE(dialog.reportText().contains(QStringLiteral("not attempted")));
     // Exactly one of the two settings is back.
     EXPECT_EQ((simRegister(1, accel) == 25) + (simRegister(1, decel) == 30), 1);
+}
+
+TEST_F(RestoreDialogTest, AFileThatSetsTheSerialLockSaysSoInTheQuestion)
+{
+    // A DC controller backed up with its serial configuration lock on, restored to one without:
+    // the question before writing says what the lock does and how to undo it; Cancel sends
+    // nothing.
+    start(QStringLiteral("dcpid@5"), {5});
+    const quint16 lock = address(QStringLiteral("dcpid"), QStringLiteral("config.serial_lock"));
+    setRegister(5, lock, 1);
+    const QString file = path(QStringLiteral("locked.json"));
+    ASSERT_TRUE(backUp({5}, file));
+    setRegister(5, lock, 0);
+    RestoreDialog dialog(drives.get());
+    ASSERT_TRUE(dialog.setPath(file)) << qPrintable(dialog.errorText());
+    ASSERT_TRUE(preview(dialog));
+    ASSERT_TRUE(toWrite(dialog).contains(QStringLiteral("config.serial_lock")));
+    QPushButton* writeButton = nullptr;
+    for (auto* b : dialog.findChildren<QPushButton*>())
+        if (b->text() == QStringLiteral("&Write to drives…"))
+            writeButton = b;
+    ASSERT_TRUE(writeButton);
+    EXPECT_TRUE(dialog.canWrite());
+    ASSERT_TRUE(writeButton->isEnabled()) << qPrintable(dialog.outcomeText());
+    const int writes = writesSent();
+    writeButton->click();
+    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+    ASSERT_TRUE(box);
+    EXPECT_TRUE(box->text().contains(QStringLiteral(
+        "Drive 5: Serial configuration lock = Disabled (1) prohibits configuration")))
+        << qPrintable(box->text());
+    EXPECT_TRUE(box->text().contains(QStringLiteral("9600"))) << qPrintable(box->text());
+    box->button(QMessageBox::Cancel)->click();
+    QCoreApplication::processEvents();
+    EXPECT_EQ(writesSent(), writes);
+    EXPECT_EQ(simRegister(5, lock), 0);
 }

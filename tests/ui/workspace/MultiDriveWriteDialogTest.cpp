@@ -2,7 +2,11 @@
 #include "UiSimFixture.h"
 #include "bus/BusDrives.h"
 
+#include <QAbstractButton>
+#include <QApplication>
 #include <QComboBox>
+#include <QMessageBox>
+#include <QPushButton>
 
 using namespace opentop;
 
@@ -11,7 +15,8 @@ namespace {
 class MultiDriveWriteDialogTest : public test::UiSimFixture
 {
 protected:
-    void start(const QString& spec, const QVector<QPair<int, QString>>& drives)
+    void start(const QString& spec, const QVector<QPair<int, QString>>& drives,
+               const QString& family = QStringLiteral("dbu"))
     {
         startBus(spec);
         busDrives = std::make_unique<BusDrives>(client.get(), ProfileRegistry::builtIn());
@@ -19,7 +24,7 @@ protected:
             DeviceInfo info;
             info.slave = d.first;
             info.state = DeviceInfo::State::Present;
-            info.family = QStringLiteral("dbu");
+            info.family = family;
             info.variant = d.second;
             info.model = d.second.toUpper();
             busDrives->update(info);
@@ -118,4 +123,57 @@ TEST_F(MultiDriveWriteDialogTest, WarnsOfAShortDecelerationFromHighSpeedButAllow
     EXPECT_FALSE(dialog.messageText().contains(QStringLiteral("Drive 1:")));
     dialog.setValueText(QStringLiteral("1000"));
     EXPECT_FALSE(dialog.messageText().contains(QStringLiteral("Warning")));
+}
+
+TEST_F(MultiDriveWriteDialogTest, SaysWhatIsOutsideTheRecommendedRangeAndAsksBeforeASerialLock)
+{
+    start(QStringLiteral("dcpid@7,dcpid@8"), {{7, QString()}, {8, QString()}},
+          QStringLiteral("dcpid"));
+    MultiDriveWriteDialog dialog(busDrives.get(), {7, 8}, QStringLiteral("pid.p"));
+    ASSERT_TRUE(waitUntil([&] { return !dialog.busy(); }));
+    // Allowed 0-100, recommended 0-1: written with a warning, as a page or the command line say.
+    dialog.setValueText(QStringLiteral("5"));
+    EXPECT_TRUE(dialog.problem().isEmpty()) << qPrintable(dialog.problem());
+    EXPECT_TRUE(dialog.messageText().contains(QStringLiteral("Drive 7:")) &&
+                dialog.messageText().contains(QStringLiteral("Drive 8:")) &&
+                dialog.messageText().contains(QStringLiteral("recommended")))
+        << qPrintable(dialog.messageText());
+    dialog.setValueText(QStringLiteral("0.5"));
+    EXPECT_FALSE(dialog.messageText().contains(QStringLiteral("Warning")))
+        << qPrintable(dialog.messageText());
+
+    // The serial lock can shut the program out of both drives: said, then asked.
+    dialog.setParameter(QStringLiteral("config.serial_lock"));
+    ASSERT_TRUE(waitUntil([&] { return !dialog.busy(); }));
+    dialog.setValueText(QStringLiteral("Disabled"));
+    EXPECT_TRUE(dialog.messageText().contains(QStringLiteral("prohibits configuration")))
+        << qPrintable(dialog.messageText());
+    const int writes = framesSent(6) + framesSent(16);
+    dialog.writeToAll();
+    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+    ASSERT_TRUE(box);
+    EXPECT_TRUE(box->text().contains(QStringLiteral("Drive 7:")) &&
+                box->text().contains(QStringLiteral("Drive 8:")) &&
+                box->text().contains(QStringLiteral("9600")))
+        << qPrintable(box->text());
+    EXPECT_EQ(static_cast<QAbstractButton*>(box->defaultButton()),
+              box->button(QMessageBox::Cancel));
+    box->button(QMessageBox::Cancel)->click();
+    QCoreApplication::processEvents();
+    EXPECT_FALSE(dialog.busy());
+    EXPECT_EQ(framesSent(6) + framesSent(16), writes) << "nothing sent after Cancel";
+
+    bool finished = false;
+    QObject::connect(&dialog, &MultiDriveWriteDialog::writeFinished, [&] { finished = true; });
+    dialog.writeToAll();
+    box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+    ASSERT_TRUE(box);
+    box->button(QMessageBox::Yes)->click();
+    ASSERT_TRUE(waitUntil([&] { return finished; }));
+    const quint16 lock = ProfileRegistry::builtIn()
+                             .family(QStringLiteral("dcpid"))
+                             ->parameter(QStringLiteral("config.serial_lock"))
+                             ->address;
+    EXPECT_EQ(simRegister(7, lock), 1);
+    EXPECT_EQ(simRegister(8, lock), 1);
 }
