@@ -10871,8 +10871,8 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultWriter</name>
     <message>
-        <location filename="../model/eol/ResultWriter.cpp" line="128"/>
-        <location filename="../model/eol/ResultWriter.cpp" line="141"/>
+        <location filename="../model/eol/ResultWriter.cpp" line="138"/>
+        <location filename="../model/eol/ResultWriter.cpp" line="151"/>
         <source>the results database is not open</source>
         <translation>結果データベースが開いていません</translation>
     </message>
@@ -10880,144 +10880,144 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="62"/>
         <source>End-of-line results</source>
         <translation>出荷検査結果</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Started</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Serial</source>
         <translation>シリアル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Recipe</source>
         <translation>レシピ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Station</source>
         <translation>ステーション</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Time (s)</source>
         <translation>時間 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
         <source>First failure</source>
         <translation>最初の不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="82"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="84"/>
         <source>Export CSV…</source>
         <translation>CSV エクスポート…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="83"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
         <source>Certificate PDF…</source>
         <translation>検査成績書 PDF…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="118"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="119"/>
         <source>SQLite file or postgresql://user@host/database</source>
         <translation>SQLite ファイルまたは postgresql://user@host/database</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="119"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="120"/>
         <source>Open</source>
         <translation>開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="120"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="121"/>
         <source>File…</source>
         <translation>ファイル…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="127"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="129"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="131"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="128"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="130"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="132"/>
         <source>any</source>
         <translation>指定なし</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="133"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
         <source>Today</source>
         <translation>今日</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="135"/>
         <source>Last 24 hours</source>
         <translation>過去 24 時間</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="135"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
         <source>Last 7 days</source>
         <translation>過去 7 日間</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
         <source>Last 30 days</source>
         <translation>過去 30 日間</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="138"/>
         <source>All</source>
         <translation>すべて</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="141"/>
         <source>Any</source>
         <translation>指定なし</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="144"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="145"/>
         <source>Search</source>
         <translation>検索</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="148"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="149"/>
         <source>Serial:</source>
         <translation>シリアル:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="149"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="150"/>
         <source>Recipe:</source>
         <translation>レシピ:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="150"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
         <source>Station:</source>
         <translation>ステーション:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
         <source>Period:</source>
         <translation>期間:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="153"/>
         <source>Verdict:</source>
         <translation>判定:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="160"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="161"/>
         <source>Database:</source>
         <translation>データベース:</translation>
     </message>
@@ -11027,77 +11027,104 @@ No unit can be tested until results can be recorded.</source>
         <translation>%1 にはまだ結果データベースがありません: ステーションが最初の製品を記録するときに作成されます。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="203"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="198"/>
+        <source>Opening the results database %1…</source>
+        <translation>結果データベース %1 を開いています…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="210"/>
         <source>Results database %1</source>
         <translation>結果データベース %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="249"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="244"/>
+        <source>Searching…</source>
+        <translation>検索しています…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="256"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="350"/>
+        <source>the results database is not open</source>
+        <translation>結果データベースが開いていません</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="291"/>
         <source>%1 rev. %2</source>
         <translation>%1 rev. %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="253"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="279"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="295"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="276"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="317"/>
         <source>%n unit(s), %1 passed · first-pass yield %2 (%3 of %4 serials)</source>
         <translation>
             <numerusform>製品 %n 台、合格 %1 台 · 直行率 %2（%4 シリアル中 %3）</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="279"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="288"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="331"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="377"/>
         <source>no unit is selected</source>
         <translation>製品が選択されていません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="335"/>
+        <source>Reading unit %1…</source>
+        <translation>製品 %1 を読み出しています…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="378"/>
+        <source>the unit&apos;s record is still being read</source>
+        <translation>製品の記録をまだ読み出しています</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="387"/>
         <source>Open results database</source>
         <translation>結果データベースを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="321"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="388"/>
         <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
         <translation>SQLite データベース (*.db *.sqlite);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="332"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
         <source>Export units as CSV</source>
         <translation>製品を CSV でエクスポート</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="332"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="337"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="403"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>製品 %n 台を %1 に書き込みました</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="348"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="414"/>
         <source>Save certificate</source>
         <translation>検査成績書を保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="349"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="415"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF ファイル (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="354"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="420"/>
         <source>Certificate written to %1</source>
         <translation>検査成績書を %1 に書き込みました</translation>
     </message>

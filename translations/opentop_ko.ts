@@ -10871,8 +10871,8 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultWriter</name>
     <message>
-        <location filename="../model/eol/ResultWriter.cpp" line="128"/>
-        <location filename="../model/eol/ResultWriter.cpp" line="141"/>
+        <location filename="../model/eol/ResultWriter.cpp" line="138"/>
+        <location filename="../model/eol/ResultWriter.cpp" line="151"/>
         <source>the results database is not open</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다</translation>
     </message>
@@ -10880,144 +10880,144 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="62"/>
         <source>End-of-line results</source>
         <translation>출하 검사 결과</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Started</source>
         <translation>시작</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Serial</source>
         <translation>시리얼</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Recipe</source>
         <translation>레시피</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Station</source>
         <translation>스테이션</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Time (s)</source>
         <translation>시간 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
         <source>First failure</source>
         <translation>첫 불합격 항목</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="82"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="84"/>
         <source>Export CSV…</source>
         <translation>CSV 내보내기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="83"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
         <source>Certificate PDF…</source>
         <translation>성적서 PDF…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="118"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="119"/>
         <source>SQLite file or postgresql://user@host/database</source>
         <translation>SQLite 파일 또는 postgresql://user@host/database</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="119"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="120"/>
         <source>Open</source>
         <translation>열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="120"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="121"/>
         <source>File…</source>
         <translation>파일…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="127"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="129"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="131"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="128"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="130"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="132"/>
         <source>any</source>
         <translation>모두</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="133"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
         <source>Today</source>
         <translation>오늘</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="135"/>
         <source>Last 24 hours</source>
         <translation>최근 24시간</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="135"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
         <source>Last 7 days</source>
         <translation>최근 7일</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
         <source>Last 30 days</source>
         <translation>최근 30일</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="138"/>
         <source>All</source>
         <translation>전체</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="141"/>
         <source>Any</source>
         <translation>모두</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="144"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="145"/>
         <source>Search</source>
         <translation>검색</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="148"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="149"/>
         <source>Serial:</source>
         <translation>시리얼:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="149"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="150"/>
         <source>Recipe:</source>
         <translation>레시피:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="150"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
         <source>Station:</source>
         <translation>스테이션:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
         <source>Period:</source>
         <translation>기간:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="153"/>
         <source>Verdict:</source>
         <translation>판정:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="160"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="161"/>
         <source>Database:</source>
         <translation>데이터베이스:</translation>
     </message>
@@ -11027,77 +11027,104 @@ No unit can be tested until results can be recorded.</source>
         <translation>%1에 아직 결과 데이터베이스가 없습니다: 스테이션이 첫 제품을 기록할 때 만들어집니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="203"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="198"/>
+        <source>Opening the results database %1…</source>
+        <translation>결과 데이터베이스 %1을(를) 여는 중…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="210"/>
         <source>Results database %1</source>
         <translation>결과 데이터베이스 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="249"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="244"/>
+        <source>Searching…</source>
+        <translation>검색하는 중…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="256"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="350"/>
+        <source>the results database is not open</source>
+        <translation>결과 데이터베이스가 열려 있지 않습니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="291"/>
         <source>%1 rev. %2</source>
         <translation>%1 개정 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="253"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="279"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="295"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="276"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="317"/>
         <source>%n unit(s), %1 passed · first-pass yield %2 (%3 of %4 serials)</source>
         <translation>
             <numerusform>제품 %n대, 합격 %1 · 직행률 %2 (시리얼 %4개 중 %3개)</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="279"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="288"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="331"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="377"/>
         <source>no unit is selected</source>
         <translation>선택한 제품이 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="335"/>
+        <source>Reading unit %1…</source>
+        <translation>제품 %1을(를) 읽는 중…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="378"/>
+        <source>the unit&apos;s record is still being read</source>
+        <translation>제품 기록을 아직 읽는 중입니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="387"/>
         <source>Open results database</source>
         <translation>결과 데이터베이스 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="321"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="388"/>
         <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
         <translation>SQLite 데이터베이스 (*.db *.sqlite);;모든 파일 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="332"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
         <source>Export units as CSV</source>
         <translation>제품을 CSV로 내보내기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="332"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="337"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="403"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>제품 %n대를 %1에 저장했습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="348"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="414"/>
         <source>Save certificate</source>
         <translation>성적서 저장</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="349"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="415"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF 파일 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="354"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="420"/>
         <source>Certificate written to %1</source>
         <translation>성적서를 %1에 저장했습니다</translation>
     </message>

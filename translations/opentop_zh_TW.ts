@@ -10871,8 +10871,8 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultWriter</name>
     <message>
-        <location filename="../model/eol/ResultWriter.cpp" line="128"/>
-        <location filename="../model/eol/ResultWriter.cpp" line="141"/>
+        <location filename="../model/eol/ResultWriter.cpp" line="138"/>
+        <location filename="../model/eol/ResultWriter.cpp" line="151"/>
         <source>the results database is not open</source>
         <translation>結果資料庫未開啟</translation>
     </message>
@@ -10880,144 +10880,144 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="62"/>
         <source>End-of-line results</source>
         <translation>終檢結果</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Started</source>
         <translation>開始時間</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Serial</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Station</source>
         <translation>工站</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Operator</source>
         <translation>作業員</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Time (s)</source>
         <translation>時間 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
         <source>First failure</source>
         <translation>首個不合格項目</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="82"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="84"/>
         <source>Export CSV…</source>
         <translation>匯出 CSV…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="83"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
         <source>Certificate PDF…</source>
         <translation>測試證書 PDF…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="118"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="119"/>
         <source>SQLite file or postgresql://user@host/database</source>
         <translation>SQLite 檔或 postgresql://user@host/database</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="119"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="120"/>
         <source>Open</source>
         <translation>開啟</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="120"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="121"/>
         <source>File…</source>
         <translation>檔案…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="127"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="129"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="131"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="128"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="130"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="132"/>
         <source>any</source>
         <translation>不限</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="133"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
         <source>Today</source>
         <translation>今天</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="135"/>
         <source>Last 24 hours</source>
         <translation>最近 24 小時</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="135"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
         <source>Last 7 days</source>
         <translation>最近 7 天</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
         <source>Last 30 days</source>
         <translation>最近 30 天</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="138"/>
         <source>All</source>
         <translation>全部</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="141"/>
         <source>Any</source>
         <translation>不限</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="144"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="145"/>
         <source>Search</source>
         <translation>搜尋</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="148"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="149"/>
         <source>Serial:</source>
         <translation>序號：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="149"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="150"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="150"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
         <source>Station:</source>
         <translation>工站：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
         <source>Period:</source>
         <translation>期間：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="153"/>
         <source>Verdict:</source>
         <translation>判定：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="160"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="161"/>
         <source>Database:</source>
         <translation>資料庫：</translation>
     </message>
@@ -11027,77 +11027,104 @@ No unit can be tested until results can be recorded.</source>
         <translation>%1 尚無結果資料庫：工站記錄第一台產品時會建立。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="203"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="198"/>
+        <source>Opening the results database %1…</source>
+        <translation>正在開啟結果資料庫 %1…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="210"/>
         <source>Results database %1</source>
         <translation>結果資料庫 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="249"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="244"/>
+        <source>Searching…</source>
+        <translation>正在搜尋…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="256"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="350"/>
+        <source>the results database is not open</source>
+        <translation>結果資料庫未開啟</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="291"/>
         <source>%1 rev. %2</source>
         <translation>%1 版次 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="253"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="279"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="295"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="276"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="317"/>
         <source>%n unit(s), %1 passed · first-pass yield %2 (%3 of %4 serials)</source>
         <translation>
             <numerusform>%n 台產品，%1 台合格 · 一次良率 %2 (%4 個序號中的 %3 個)</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="279"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="288"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="331"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="377"/>
         <source>no unit is selected</source>
         <translation>未選擇產品</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="335"/>
+        <source>Reading unit %1…</source>
+        <translation>正在讀取產品 %1…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="378"/>
+        <source>the unit&apos;s record is still being read</source>
+        <translation>仍在讀取該產品的記錄</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="387"/>
         <source>Open results database</source>
         <translation>開啟結果資料庫</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="321"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="388"/>
         <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
         <translation>SQLite 資料庫 (*.db *.sqlite);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="332"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
         <source>Export units as CSV</source>
         <translation>將產品匯出為 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="332"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="337"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="403"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>已將 %n 台產品寫入 %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="348"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="414"/>
         <source>Save certificate</source>
         <translation>儲存測試證書</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="349"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="415"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF 檔 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="354"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="420"/>
         <source>Certificate written to %1</source>
         <translation>測試證書已寫入 %1</translation>
     </message>

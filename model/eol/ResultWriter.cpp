@@ -119,6 +119,16 @@ ResultWriter::Opened ResultWriter::openAndWait(const QString& url, const QString
     return result;
 }
 
+void ResultWriter::run(QObject* context, std::function<void(ResultDatabase* db)> job,
+                       std::function<void()> done)
+{
+    std::function<bool(State&)> work = [job = std::move(job)](State& state) {
+        job(state.db.get());
+        return true;
+    };
+    post<bool>(context, std::move(work), [done = std::move(done)](const bool&) { done(); });
+}
+
 void ResultWriter::beginUnit(const UnitRecord& record, QObject* context, BeginDone done)
 {
     using Begun = std::pair<UnitRecord, QString>;

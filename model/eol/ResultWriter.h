@@ -10,10 +10,13 @@
 
 namespace opentop {
 
-// The results database on a thread of its own, for a station: opening it, beginning and
-// finishing unit records never make the caller's thread wait. A PostgreSQL server across the
-// factory, or a SQLite file another station is writing, can take seconds (SQLite's busy timeout
-// is 10 s); the operator screen and its STOP keys must not freeze meanwhile.
+class ResultDatabase;
+
+// The results database on a thread of its own, for a station and the results browser: opening
+// it, beginning and finishing unit records, queries never make the caller's thread wait. A
+// PostgreSQL server across the factory, or a SQLite file another station is writing, can take
+// seconds (SQLite's busy timeout is 10 s); the operator screen and its STOP keys must not freeze
+// meanwhile.
 //
 // Jobs run in the order they are given, with a ResultDatabase and ResultStore that live on the
 // writer's thread (a QSqlDatabase connection belongs to its thread). Each answer comes back on
@@ -52,6 +55,11 @@ public:
     void beginUnit(const UnitRecord& record, QObject* context, BeginDone done);
     // ResultStore::finishUnit: the whole record in one transaction.
     void finishUnit(const UnitRecord& record, QObject* context, FinishDone done);
+
+    // Runs `job` on the writer's thread with the open database (null when none), then `done` on
+    // `context`'s thread: a query (what it finds travels in what both capture).
+    void run(QObject* context, std::function<void(ResultDatabase* db)> job,
+             std::function<void()> done);
 
     // Jobs given and not yet answered (tests, and the screen's "recording" state).
     int pending() const { return m_pending; }

@@ -6,6 +6,7 @@
 #include "eol/ResultDatabase.h"
 #include "eol/ResultQueries.h"
 #include "eol/ResultUrl.h"
+#include "eol/ResultWriter.h"
 #include "eol/YieldReport.h"
 
 #include <QComboBox>
@@ -56,6 +57,7 @@ QColor verdictColour(UnitStatus status)
 
 ResultsBrowser::ResultsBrowser(const QString& url, QWidget* parent)
     : QDialog(parent)
+    , m_results(std::make_unique<ResultWriter>())
 {
     setWindowTitle(tr("End-of-line results"));
     setObjectName(QStringLiteral("resultsBrowser"));
@@ -105,8 +107,7 @@ ResultsBrowser::ResultsBrowser(const QString& url, QWidget* parent)
     if (text.trimmed().isEmpty())
         text = ResultUrl::defaultLocation();
     m_url->setText(text);
-    if (openDatabase(text))
-        search();
+    openDatabase(text);
 }
 
 ResultsBrowser::~ResultsBrowser() = default;
@@ -160,10 +161,7 @@ QWidget* ResultsBrowser::makeFilters()
     layout->addRow(tr("Database:"), urlRow);
     layout->addRow(filters);
 
-    connect(open, &QPushButton::clicked, this, [this] {
-        if (openDatabase(m_url->text()))
-            search();
-    });
+    connect(open, &QPushButton::clicked, this, [this] { openDatabase(m_url->text()); });
     connect(m_url, &QLineEdit::returnPressed, open, &QPushButton::click);
     connect(browse, &QPushButton::clicked, this, &ResultsBrowser::chooseDatabase);
     connect(find, &QPushButton::clicked, this, &ResultsBrowser::search);
@@ -176,8 +174,10 @@ QWidget* ResultsBrowser::makeFilters()
 
 bool ResultsBrowser::openDatabase(const QString& text)
 {
-    m_db.reset();
+    ++m_generation;
+    m_open = false;
     m_units.clear();
+    m_selected.reset();
     m_table->setRowCount(0);
     m_details->clear();
     m_summary->clear();
@@ -195,22 +195,38 @@ bool ResultsBrowser::openDatabase(const QString& text)
             true);
         return false;
     }
-    m_db = ResultDatabase::open(*url, &error);
-    if (!m_db) {
-        say(error, true);
-        return false;
-    }
-    say(tr("Results database %1").arg(url->displayText()), false);
+    say(tr("Opening the results database %1…").arg(url->displayText()), false);
+    const int generation = m_generation;
+    m_results->open(text.trimmed(), QString(), this,
+                    [this, generation](const ResultWriter::Opened& o) {
+                        if (generation != m_generation)
+                            return;
+                        if (!o.ok) {
+                            say(o.error, true);
+                            emit searched(false);
+                            return;
+                        }
+                        m_open = true;
+                        say(tr("Results database %1").arg(o.displayText), false);
+                        search();
+                    });
     return true;
+}
+
+bool ResultsBrowser::isBusy() const
+{
+    return m_results->pending() > 0;
 }
 
 bool ResultsBrowser::search()
 {
+    const int generation = ++m_generation;
     m_units.clear();
+    m_selected.reset();
     m_table->setRowCount(0);
     m_details->clear();
     m_certificate->setEnabled(false);
-    if (!m_db) {
+    if (!m_open) {
         m_summary->clear();
         return false;
     }
@@ -225,20 +241,46 @@ bool ResultsBrowser::search()
         filter.from = now.date().startOfDay().toUTC();
     else if (days > 0)
         filter.from = now.addDays(-days).toUTC();
-    QString error;
-    ResultQueries queries(*m_db);
-    const auto found = queries.find(filter, &error);
-    if (!found) {
-        say(error, true);
-        return false;
-    }
-    m_units = *found;
-    const auto earlier = queries.testedBefore(filter, &error);
-    if (!earlier) {
-        say(error, true);
-        return false;
-    }
-    m_earlier = *earlier;
+    m_summary->setText(tr("Searching…"));
+    struct Found
+    {
+        std::optional<QVector<UnitRecord>> units;
+        std::optional<YieldReport::Earlier> earlier;
+        QString error;
+    };
+    auto found = std::make_shared<Found>();
+    m_results->run(
+        this,
+        [filter, found](ResultDatabase* db) {
+            if (!db) {
+                found->error = tr("the results database is not open");
+                return;
+            }
+            ResultQueries queries(*db);
+            found->units = queries.find(filter, &found->error);
+            if (found->units)
+                found->earlier = queries.testedBefore(filter, &found->error);
+        },
+        [this, found, generation] {
+            if (generation != m_generation)
+                return;
+            if (!found->units || !found->earlier) {
+                m_summary->clear();
+                say(found->error, true);
+                emit searched(false);
+                return;
+            }
+            showFound(*found->units, *found->earlier);
+            emit searched(true);
+        });
+    return true;
+}
+
+void ResultsBrowser::showFound(const QVector<UnitRecord>& units,
+                               const YieldReport::Earlier& earlier)
+{
+    m_units = units;
+    m_earlier = earlier;
     m_table->setRowCount(int(m_units.size()));
     for (int row = 0; row < m_units.size(); ++row) {
         const UnitRecord& u = m_units.at(row);
@@ -258,7 +300,6 @@ bool ResultsBrowser::search()
     }
     m_table->resizeColumnsToContents();
     m_summary->setText(summary());
-    return true;
 }
 
 QString ResultsBrowser::summary() const
@@ -281,26 +322,48 @@ QString ResultsBrowser::summary() const
         .arg(serials);
 }
 
-std::optional<UnitRecord> ResultsBrowser::selectedRecord(QString* error)
-{
-    const int row = m_table->currentRow();
-    if (!m_db || row < 0 || row >= m_units.size()) {
-        *error = tr("no unit is selected");
-        return std::nullopt;
-    }
-    return ResultQueries(*m_db).load(m_units.at(row).id, error);
-}
-
 void ResultsBrowser::showSelected()
 {
-    QString error;
-    const std::optional<UnitRecord> record = selectedRecord(&error);
-    m_certificate->setEnabled(bool(record));
-    if (!record) {
-        m_details->setPlainText(error);
+    m_selected.reset();
+    m_certificate->setEnabled(false);
+    const int row = m_table->currentRow();
+    if (!m_open || row < 0 || row >= m_units.size()) {
+        m_details->setPlainText(tr("no unit is selected"));
+        emit detailsShown();
         return;
     }
-    m_details->setHtml(CertificateHtml::html(*record));
+    m_details->setPlainText(tr("Reading unit %1…").arg(m_units.at(row).serial));
+    const QString id = m_units.at(row).id;
+    const int generation = m_generation;
+    struct Loaded
+    {
+        std::optional<UnitRecord> record;
+        QString error;
+    };
+    auto loaded = std::make_shared<Loaded>();
+    m_results->run(
+        this,
+        [id, loaded](ResultDatabase* db) {
+            if (db)
+                loaded->record = ResultQueries(*db).load(id, &loaded->error);
+            else
+                loaded->error = tr("the results database is not open");
+        },
+        [this, id, loaded, generation] {
+            const int current = m_table->currentRow();
+            // Another unit or search since: its own answer shows.
+            if (generation != m_generation || current < 0 || current >= m_units.size() ||
+                m_units.at(current).id != id)
+                return;
+            if (!loaded->record) {
+                m_details->setPlainText(loaded->error);
+            } else {
+                m_selected = loaded->record;
+                m_details->setHtml(CertificateHtml::html(*m_selected));
+                m_certificate->setEnabled(true);
+            }
+            emit detailsShown();
+        });
 }
 
 bool ResultsBrowser::exportCsv(const QString& path, QString* error) const
@@ -310,8 +373,12 @@ bool ResultsBrowser::exportCsv(const QString& path, QString* error) const
 
 bool ResultsBrowser::saveCertificate(const QString& path, QString* error)
 {
-    const std::optional<UnitRecord> record = selectedRecord(error);
-    return record && CertificatePdf::save(*record, path, error);
+    if (!m_selected) {
+        *error = m_table->currentRow() < 0 ? tr("no unit is selected")
+                                           : tr("the unit's record is still being read");
+        return false;
+    }
+    return CertificatePdf::save(*m_selected, path, error);
 }
 
 void ResultsBrowser::chooseDatabase()
@@ -322,8 +389,7 @@ void ResultsBrowser::chooseDatabase()
     if (path.isEmpty())
         return;
     m_url->setText(path);
-    if (openDatabase(path))
-        search();
+    openDatabase(path);
 }
 
 void ResultsBrowser::chooseCsv()

@@ -16,12 +16,13 @@ class QTextBrowser;
 
 namespace opentop {
 
-class ResultDatabase;
+class ResultWriter;
 
 // The engineers' view of the results database: units found by serial, period, recipe, station
 // and verdict, the first-pass yield of what was found, one unit's whole record (what its
-// certificate says), CSV export and the unit's certificate as PDF. Queries run on the UI thread:
-// they read indexed rows of one database and take milliseconds (docs/eol-results.md).
+// certificate says), CSV export and the unit's certificate as PDF. The database is opened and
+// queried on a thread of its own (ResultWriter): a factory's PostgreSQL server may be slow to
+// answer, and the window must not stand still meanwhile.
 class ResultsBrowser : public QDialog
 {
     Q_OBJECT
@@ -30,15 +31,19 @@ public:
     explicit ResultsBrowser(const QString& url, QWidget* parent = nullptr);
     ~ResultsBrowser() override;
 
-    // Opens a database; false, said in the window, when it cannot be opened or a SQLite file
-    // does not exist (the browser never creates one).
+    // Opens a database, then searches with the filters; false, said in the window, when the
+    // address is not usable or a SQLite file does not exist (the browser never creates one);
+    // one that cannot be opened is said when its answer comes (searched(false)).
     bool openDatabase(const QString& url);
-    // Runs the filters; false (said in the window) on a database error.
+    // Runs the filters; false when no database is open. searched() answers.
     bool search();
+    // A database is being opened or queried.
+    bool isBusy() const;
     const QVector<UnitRecord>& units() const { return m_units; }
     QString summary() const;
     bool exportCsv(const QString& path, QString* error) const;
-    // The selected unit's certificate; false with *error when none is selected or on an error.
+    // The selected unit's certificate; false with *error when none is selected, its record is
+    // still being read, or on an error.
     bool saveCertificate(const QString& path, QString* error);
 
     QLineEdit* serialFilter() const { return m_serial; }
@@ -47,18 +52,27 @@ public:
     QTableWidget* table() const { return m_table; }
     QTextBrowser* details() const { return m_details; }
 
+signals:
+    // A search (or the open before it) has answered; false: said in the window.
+    void searched(bool ok);
+    // The selected unit's record is shown (or why not).
+    void detailsShown();
+
 private:
     QWidget* makeFilters();
+    void showFound(const QVector<UnitRecord>& units, const YieldReport::Earlier& earlier);
     void showSelected();
     void chooseDatabase();
     void chooseCsv();
     void chooseCertificate();
     void say(const QString& text, bool error);
-    std::optional<UnitRecord> selectedRecord(QString* error);
 
-    std::unique_ptr<ResultDatabase> m_db;
+    std::unique_ptr<ResultWriter> m_results;
+    bool m_open = false;
+    int m_generation = 0; // answers for an earlier database or search are dropped
     QVector<UnitRecord> m_units;
-    YieldReport::Earlier m_earlier; // serials of the period tested before it
+    std::optional<UnitRecord> m_selected; // the selected unit's whole record, once read
+    YieldReport::Earlier m_earlier;       // serials of the period tested before it
     QLineEdit* m_url = nullptr;
     QLineEdit* m_serial = nullptr;
     QLineEdit* m_recipe = nullptr;

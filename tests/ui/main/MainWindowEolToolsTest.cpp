@@ -85,6 +85,8 @@ TEST_F(MainWindowEolToolsTest, ResultsShowsFiltersAndExportsWhatTheDatabaseHolds
     auto* browser = window->findChild<ResultsBrowser*>();
     ASSERT_TRUE(browser);
     ASSERT_TRUE(browser->isVisible());
+    // Opened and searched on the results thread: the window answers meanwhile.
+    ASSERT_TRUE(waitFor([&] { return !browser->isBusy(); }));
     EXPECT_EQ(browser->table()->rowCount(), 3);
     EXPECT_TRUE(browser->summary().contains(QStringLiteral("first-pass yield 50.0 %")))
         << qPrintable(browser->summary());
@@ -92,14 +94,19 @@ TEST_F(MainWindowEolToolsTest, ResultsShowsFiltersAndExportsWhatTheDatabaseHolds
     browser->verdictFilter()->setCurrentIndex(
         browser->verdictFilter()->findData(QStringLiteral("fail")));
     ASSERT_TRUE(browser->search());
+    EXPECT_EQ(browser->table()->rowCount(), 0) << "the rows of the last search are gone";
+    ASSERT_TRUE(waitFor([&] { return !browser->isBusy(); }));
     ASSERT_EQ(browser->table()->rowCount(), 1);
     EXPECT_EQ(browser->table()->item(0, 1)->text(), QStringLiteral("SN-B"));
     browser->table()->selectRow(0);
+    QString error;
+    EXPECT_FALSE(browser->saveCertificate(dir.filePath(QStringLiteral("early.pdf")), &error));
+    EXPECT_EQ(error, QStringLiteral("the unit's record is still being read"));
+    ASSERT_TRUE(waitFor([&] { return !browser->isBusy(); }));
     const QString details = browser->details()->toPlainText();
     EXPECT_TRUE(details.contains(QStringLiteral("SN-B"))) << qPrintable(details);
     EXPECT_TRUE(details.contains(QStringLiteral("FAIL"))) << qPrintable(details);
 
-    QString error;
     const QString pdf = dir.filePath(QStringLiteral("SN-B.pdf"));
     ASSERT_TRUE(browser->saveCertificate(pdf, &error)) << qPrintable(error);
     QFile certificate(pdf);
@@ -109,6 +116,7 @@ TEST_F(MainWindowEolToolsTest, ResultsShowsFiltersAndExportsWhatTheDatabaseHolds
     browser->verdictFilter()->setCurrentIndex(0);
     browser->serialFilter()->setText(QStringLiteral("SN-A"));
     ASSERT_TRUE(browser->search());
+    ASSERT_TRUE(waitFor([&] { return !browser->isBusy(); }));
     ASSERT_EQ(browser->table()->rowCount(), 1);
     const QString csv = dir.filePath(QStringLiteral("units.csv"));
     ASSERT_TRUE(browser->exportCsv(csv, &error)) << qPrintable(error);
