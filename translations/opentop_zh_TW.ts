@@ -9365,6 +9365,54 @@ No unit can be tested until results can be recorded.</source>
     </message>
 </context>
 <context>
+    <name>opentop::RecipeLimitsTable</name>
+    <message>
+        <location filename="../ui/eol/RecipeLimitsTable.cpp" line="33"/>
+        <source>Parameter</source>
+        <translation>參數</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeLimitsTable.cpp" line="33"/>
+        <source>Statistic</source>
+        <translation>統計量</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeLimitsTable.cpp" line="33"/>
+        <source>Lower</source>
+        <translation>下限</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeLimitsTable.cpp" line="33"/>
+        <source>Upper</source>
+        <translation>上限</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeLimitsTable.cpp" line="33"/>
+        <source>Unit</source>
+        <translation>單位</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeLimitsTable.cpp" line="54"/>
+        <source>Add limit</source>
+        <translation>新增限值</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeLimitsTable.cpp" line="55"/>
+        <source>Remove limit</source>
+        <translation>刪除限值</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeLimitsTable.cpp" line="64"/>
+        <source>Limits (measured over the hold):</source>
+        <translation>限值（於保持期間量測）：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeLimitsTable.cpp" line="78"/>
+        <source>(unknown: %1)</source>
+        <translation>（未知：%1）</translation>
+    </message>
+</context>
+<context>
     <name>opentop::RecipeParser</name>
     <message>
         <location filename="../model/eol/RecipeParser.cpp" line="45"/>
@@ -9807,339 +9855,298 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeStepsEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="73"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="44"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="73"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="44"/>
         <source>Step</source>
         <translation>步驟</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="73"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="44"/>
         <source>What it does</source>
         <translation>內容</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="81"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="52"/>
         <source>Add step</source>
         <translation>新增步驟</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="86"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="57"/>
         <source>Remove</source>
         <translation>刪除</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="87"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="58"/>
         <source>Move up</source>
         <translation>上移</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="88"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="59"/>
         <source>Move down</source>
         <translation>下移</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="119"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="90"/>
         <source>Take communication priority</source>
         <translation>切換為通訊優先</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="120"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="91"/>
         <source>Select running data</source>
         <translation>選擇運轉資料</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="121"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="92"/>
         <source>Set the speed command</source>
         <translation>設定速度指令</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="122"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="93"/>
         <source>Start</source>
         <translation>啟動</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="123"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="94"/>
         <source>Wait for the speed</source>
         <translation>等待達到速度</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="124"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="95"/>
         <source>Hold and measure</source>
         <translation>保持並量測</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="125"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="96"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="126"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="97"/>
         <source>No alarm or warning</source>
         <translation>無警報或警告</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="127"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="98"/>
         <source>Read and compare</source>
         <translation>讀取並比較</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="129"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="100"/>
         <source>(unknown step: %1)</source>
         <translation>（未知步驟：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="138"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="109"/>
         <source>running data SPno%1</source>
         <translation>運轉資料 SPno%1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="140"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="111"/>
         <source>speed command %1 %2</source>
         <translation>速度指令 %1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="144"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="115"/>
         <source>%1 ± %2 %3 within %4 s</source>
         <translation>%4 s 內達到 %1 ± %2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="146"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="117"/>
         <source>the drive&apos;s target speed</source>
         <translation>驅動器的目標速度</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="149"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="120"/>
         <source>%1 s, %n limit(s)</source>
         <translation>
             <numerusform>%1 s，%n 個限值</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="153"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="124"/>
         <source>stopped within %1 s + %2 s</source>
         <translation>%1 s + %2 s 內停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="155"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="126"/>
         <source>stopped within the deceleration time + %1 s</source>
         <translation>減速時間 + %1 s 內停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="160"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="131"/>
         <source>%1 is &quot;%2&quot;</source>
         <translation>%1 為「%2」</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="161"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="132"/>
         <source>%1 between %2 and %3 %4</source>
         <translation>%1 介於 %2 至 %3 %4</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="162"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="163"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="133"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="134"/>
         <source>any</source>
         <translation>不限</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="285"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="256"/>
         <source>No step selected</source>
         <translation>未選擇步驟</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="286"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="257"/>
         <source>Add a step, or select one to edit it.</source>
         <translation>新增步驟，或選擇一個步驟進行編輯。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="292"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="263"/>
         <source>Step %1: %2</source>
         <translation>步驟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="272"/>
         <source>Running data:</source>
         <translation>運轉資料：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="303"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="274"/>
         <source>Speed command:</source>
         <translation>速度指令：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="304"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="319"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="275"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="290"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="308"/>
         <source>Unit:</source>
         <translation>單位：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="304"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="275"/>
         <source>the speed command&apos;s unit</source>
         <translation>速度指令的單位</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="307"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="278"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="308"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="279"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="314"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="285"/>
         <source>Direction:</source>
         <translation>旋轉方向：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="316"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="287"/>
         <source>Target speed:</source>
         <translation>目標速度：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="317"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="288"/>
         <source>empty: the drive&apos;s own target speed</source>
         <translation>留空：驅動器本身的目標速度</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="318"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="289"/>
         <source>Tolerance (±):</source>
         <translation>容許誤差（±）：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="319"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="290"/>
         <source>the speed&apos;s unit</source>
         <translation>速度的單位</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="320"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="291"/>
         <source>Within:</source>
         <translation>時限：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="320"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="322"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="325"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="327"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="291"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="299"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="322"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
         <source>Duration:</source>
         <translation>保持時間：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="325"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="299"/>
         <source>Deceleration time:</source>
         <translation>減速時間：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="326"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="300"/>
         <source>empty: the drive&apos;s setting</source>
         <translation>留空：驅動器的設定值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="327"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
         <source>Margin:</source>
         <translation>裕度：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="330"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="304"/>
         <source>Lower limit:</source>
         <translation>下限：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="331"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="333"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="305"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="307"/>
         <source>empty: none</source>
         <translation>留空：無</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="332"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="306"/>
         <source>Upper limit:</source>
         <translation>上限：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="308"/>
         <source>the value&apos;s unit</source>
         <translation>數值的單位</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="335"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="309"/>
         <source>Or equals:</source>
         <translation>或等於：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="336"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="310"/>
         <source>the expected text, instead of limits</source>
         <translation>期望的文字，取代限值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="338"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="312"/>
         <source>This step has no settings.</source>
         <translation>此步驟沒有設定項目。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="380"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="355"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="382"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="430"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="357"/>
         <source>(unknown: %1)</source>
         <translation>（未知：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="392"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="367"/>
         <source>Parameter:</source>
         <translation>參數：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
-        <source>Parameter</source>
-        <translation>參數</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
-        <source>Statistic</source>
-        <translation>統計量</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
-        <source>Lower</source>
-        <translation>下限</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
-        <source>Upper</source>
-        <translation>上限</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="407"/>
-        <source>Unit</source>
-        <translation>單位</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="457"/>
-        <source>Add limit</source>
-        <translation>新增限值</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="458"/>
-        <source>Remove limit</source>
-        <translation>刪除限值</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="485"/>
-        <source>Limits (measured over the hold):</source>
-        <translation>限值（於保持期間量測）：</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,7 @@
 #include "eol/RecipeStepsEditor.h"
 
+#include "eol/RecipeLimitsTable.h"
+#include "eol/RecipeNumberText.h"
 #include "profile/Profile.h"
 
 #include <QComboBox>
@@ -9,7 +11,6 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
-#include <QLocale>
 #include <QMenu>
 #include <QPushButton>
 #include <QSpinBox>
@@ -24,36 +25,6 @@ const QString kType = QStringLiteral("type");
 const QString kLimits = QStringLiteral("limits");
 const QString kParameter = QStringLiteral("parameter");
 const QString kUnit = QStringLiteral("unit");
-
-enum LimitColumn
-{
-    LimitParameter,
-    LimitStatistic,
-    LimitLower,
-    LimitUpper,
-    LimitUnit
-};
-
-QString numberText(const QJsonValue& v)
-{
-    if (v.isDouble())
-        return QString::number(v.toDouble(), 'g', 10);
-    return v.isString() ? v.toString() : QString();
-}
-
-// Empty: left out. A number in the user's notation or in the file's. Anything else is kept as
-// text, so that the checker names it rather than the field dropping it silently.
-QJsonValue numberValue(const QString& text)
-{
-    const QString t = text.trimmed();
-    if (t.isEmpty())
-        return QJsonValue(QJsonValue::Undefined);
-    bool ok = false;
-    double v = QLocale::c().toDouble(t, &ok);
-    if (!ok)
-        v = QLocale().toDouble(t, &ok);
-    return ok ? QJsonValue(v) : QJsonValue(t);
-}
 
 QTableWidgetItem* fixedItem(const QString& text)
 {
@@ -133,7 +104,7 @@ QString RecipeStepsEditor::summary(const QJsonObject& s)
 {
     const QString type = s.value(kType).toString();
     const QString unit = s.value(kUnit).toString();
-    auto n = [&s](const QString& key) { return numberText(s.value(key)); };
+    auto n = [&s](const QString& key) { return RecipeNumberText::text(s.value(key)); };
     if (type == QLatin1String("select"))
         return tr("running data SPno%1").arg(n(QStringLiteral("spno")));
     if (type == QLatin1String("speed"))
@@ -320,7 +291,10 @@ void RecipeStepsEditor::showDetail()
         addNumberField(form, tr("Within:"), QStringLiteral("timeout"), tr("s"));
     } else if (type == QLatin1String("hold")) {
         addNumberField(form, tr("Duration:"), QStringLiteral("duration"), tr("s"));
-        form->addRow(limitsTable(step.value(kLimits).toArray()));
+        auto* limits = new RecipeLimitsTable(m_profile, step.value(kLimits).toArray(), m_fields);
+        connect(limits, &RecipeLimitsTable::changed, this,
+                [this, limits] { setField(kLimits, limits->limits()); });
+        form->addRow(limits);
     } else if (type == QLatin1String("stop")) {
         addNumberField(form, tr("Deceleration time:"), QStringLiteral("deceleration"), tr("s"),
                        tr("empty: the drive's setting"));
@@ -344,11 +318,12 @@ void RecipeStepsEditor::addNumberField(QFormLayout* form, const QString& label, 
                                        const QString& unit, const QString& empty)
 {
     const int row = selected();
-    auto* edit = new QLineEdit(numberText(m_steps.at(row).toObject().value(key)), m_fields);
+    auto* edit =
+        new QLineEdit(RecipeNumberText::text(m_steps.at(row).toObject().value(key)), m_fields);
     edit->setObjectName(QStringLiteral("step_") + key);
     edit->setPlaceholderText(empty);
     connect(edit, &QLineEdit::textEdited, this,
-            [this, key](const QString& text) { setField(key, numberValue(text)); });
+            [this, key](const QString& text) { setField(key, RecipeNumberText::value(text)); });
     auto* line = new QHBoxLayout;
     line->addWidget(edit, 1);
     if (!unit.isEmpty())
@@ -396,117 +371,6 @@ QString RecipeStepsEditor::unitOf(const QString& parameter) const
 {
     const ParameterMeta* meta = m_profile ? m_profile->parameter(parameter) : nullptr;
     return meta ? meta->spec.canonicalUnit : QString(); // as recipe files give units
-}
-
-QWidget* RecipeStepsEditor::limitsTable(const QJsonArray& limits)
-{
-    auto* box = new QWidget(m_fields);
-    auto* table = new QTableWidget(int(limits.size()), 5, box);
-    table->setObjectName(QStringLiteral("stepLimits"));
-    table->setHorizontalHeaderLabels(
-        {tr("Parameter"), tr("Statistic"), tr("Lower"), tr("Upper"), tr("Unit")});
-    table->verticalHeader()->hide();
-    table->setSelectionBehavior(QAbstractItemView::SelectRows);
-    // The parameter takes what is left; a limit's digits and the unit are short.
-    QHeaderView* header = table->horizontalHeader();
-    header->setSectionResizeMode(LimitParameter, QHeaderView::Stretch);
-    header->setSectionResizeMode(LimitStatistic, QHeaderView::ResizeToContents);
-    header->setSectionResizeMode(LimitUnit, QHeaderView::ResizeToContents);
-    const int digits = table->fontMetrics().horizontalAdvance(QStringLiteral("-00000.00")) + 12;
-    table->setColumnWidth(LimitLower, digits);
-    table->setColumnWidth(LimitUpper, digits);
-    auto store = [this, table] {
-        if (!m_filling)
-            setField(kLimits, limitsOf(table));
-    };
-    auto fillRowOf = [this, table, store](int row, const QJsonObject& limit) {
-        auto* parameter = new QComboBox(table);
-        const QString name = limit.value(kParameter).toString();
-        if (m_profile)
-            for (const ParameterMeta& p : m_profile->parameters)
-                if (p.isReadable() && p.isNumeric() && p.kind == QLatin1String("status"))
-                    parameter->addItem(p.label, p.name);
-        if (!name.isEmpty() && parameter->findData(name) < 0)
-            parameter->addItem(tr("(unknown: %1)").arg(name), name);
-        parameter->setCurrentIndex(name.isEmpty() ? -1 : parameter->findData(name));
-        table->setCellWidget(row, LimitParameter, parameter);
-        auto* statistic = new QComboBox(table);
-        for (const QString& s :
-             {QStringLiteral("min"), QStringLiteral("mean"), QStringLiteral("max")})
-            statistic->addItem(s, s);
-        statistic->setCurrentIndex(
-            std::max(0, statistic->findData(limit.value(QStringLiteral("statistic")).toString())));
-        table->setCellWidget(row, LimitStatistic, statistic);
-        table->setItem(row, LimitLower,
-                       new QTableWidgetItem(numberText(limit.value(QStringLiteral("lower")))));
-        table->setItem(row, LimitUpper,
-                       new QTableWidgetItem(numberText(limit.value(QStringLiteral("upper")))));
-        table->setItem(row, LimitUnit, fixedItem(limit.value(kUnit).toString()));
-        connect(
-            parameter, &QComboBox::currentIndexChanged, this, [this, table, row, parameter, store] {
-                // The unit is the parameter's own: the checker refuses any other.
-                table->item(row, LimitUnit)->setText(unitOf(parameter->currentData().toString()));
-                store();
-            });
-        connect(statistic, &QComboBox::currentIndexChanged, this, store);
-    };
-    for (int row = 0; row < limits.size(); ++row)
-        fillRowOf(row, limits.at(row).toObject());
-    connect(table, &QTableWidget::itemChanged, this, store);
-
-    auto* add = new QPushButton(tr("Add limit"), box);
-    auto* remove = new QPushButton(tr("Remove limit"), box);
-    connect(add, &QPushButton::clicked, this, [this, table, fillRowOf, store] {
-        const int row = table->rowCount();
-        m_filling = true;
-        table->insertRow(row);
-        fillRowOf(row, QJsonObject{{QStringLiteral("statistic"), QStringLiteral("max")}});
-        m_filling = false;
-        store();
-    });
-    connect(remove, &QPushButton::clicked, this, [this, table] {
-        const QList<QTableWidgetItem*> items = table->selectedItems();
-        const int row = items.isEmpty() ? table->currentRow() : items.first()->row();
-        if (row < 0)
-            return;
-        setField(kLimits, [&] {
-            QJsonArray all = limitsOf(table);
-            all.removeAt(row);
-            return all;
-        }());
-        showDetail();
-    });
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(add);
-    buttons->addWidget(remove);
-    buttons->addStretch(1);
-    auto* layout = new QVBoxLayout(box);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(new QLabel(tr("Limits (measured over the hold):"), box));
-    layout->addWidget(table, 1);
-    layout->addLayout(buttons);
-    return box;
-}
-
-QJsonArray RecipeStepsEditor::limitsOf(QTableWidget* table) const
-{
-    QJsonArray limits;
-    for (int row = 0; row < table->rowCount(); ++row) {
-        auto* parameter = qobject_cast<QComboBox*>(table->cellWidget(row, LimitParameter));
-        auto* statistic = qobject_cast<QComboBox*>(table->cellWidget(row, LimitStatistic));
-        QJsonObject limit{{kParameter, parameter ? parameter->currentData().toString() : QString()},
-                          {QStringLiteral("statistic"),
-                           statistic ? statistic->currentData().toString() : QString()}};
-        const QJsonValue lower = numberValue(table->item(row, LimitLower)->text());
-        const QJsonValue upper = numberValue(table->item(row, LimitUpper)->text());
-        if (!lower.isUndefined())
-            limit.insert(QStringLiteral("lower"), lower);
-        if (!upper.isUndefined())
-            limit.insert(QStringLiteral("upper"), upper);
-        limit.insert(kUnit, table->item(row, LimitUnit)->text());
-        limits << limit;
-    }
-    return limits;
 }
 
 } // namespace opentop

@@ -60,8 +60,6 @@ private:
     void addTextField(QFormLayout* form, const QString& label, const QString& key,
                       const QString& placeholder = QString());
     void addParameterField(QFormLayout* form, const QString& key);
-    QWidget* limitsTable(const QJsonArray& limits);
-    QJsonArray limitsOf(QTableWidget* table) const;
     QString unitOf(const QString& parameter) const;
 
     const Profile* m_profile = nullptr;

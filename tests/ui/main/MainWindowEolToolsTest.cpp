@@ -227,6 +227,28 @@ TEST_F(MainWindowEolToolsTest, RecipeEditorChecksEveryEditAndSavesOnlyARecipeTha
     EXPECT_EQ(editor->check().size(), 1) << "a speed's max of 80 r/min is a valid limit";
     parameter->setCurrentIndex(parameter->findData(QStringLiteral("status.load")));
     EXPECT_EQ(limits->item(3, 4)->text(), QStringLiteral("%"));
+    // A limit added without a value to measure is refused, naming the step and the limit (the
+    // file cannot be read, so it is the one problem); removed, only the speed is left.
+    QPushButton* addLimit = nullptr;
+    QPushButton* removeLimit = nullptr;
+    for (auto* b : steps->detail()->findChildren<QPushButton*>()) {
+        if (b->text() == QLatin1String("Add limit"))
+            addLimit = b;
+        if (b->text() == QLatin1String("Remove limit"))
+            removeLimit = b;
+    }
+    ASSERT_TRUE(addLimit && removeLimit);
+    addLimit->click();
+    EXPECT_EQ(steps->table()->item(4, 2)->text(), QStringLiteral("5 s, 5 limit(s)"));
+    stepProblems = editor->check();
+    ASSERT_EQ(stepProblems.size(), 1);
+    EXPECT_TRUE(stepProblems.first().message.contains(
+        QStringLiteral("steps[4] (hold and measure) limits[4]: \"parameter\"")))
+        << qPrintable(stepProblems.first().message);
+    removeLimit->click(); // the new one is selected
+    EXPECT_EQ(limits->rowCount(), 4);
+    EXPECT_EQ(steps->table()->item(4, 2)->text(), QStringLiteral("5 s, 4 limit(s)"));
+    EXPECT_EQ(editor->check().size(), 1);
 
     // Fixed: saved, signed, and it loads as a recipe with the new value.
     settings->item(row, 2)->setText(QStringLiteral("1400"));
