@@ -20,7 +20,6 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 
-using MainWindowProductionTest = opentop::test::MainWindowFixture;
 using namespace opentop;
 using namespace opentop::test;
 
@@ -66,18 +65,30 @@ bool actionVisible(MainWindow* window, const QString& text)
     return false;
 }
 
+class MainWindowProductionTest : public MainWindowFixture
+{
+protected:
+    // Production mode on, its results database `db` (a file in `dir`) opened on the results
+    // thread; true once it is.
+    bool enterProduction(const QTemporaryDir& dir, QString* db)
+    {
+        *db = dir.filePath(QStringLiteral("results.db"));
+        qputenv("OPENTOP_EOL_DB", db->toLocal8Bit());
+        window->production()->toggleAction()->trigger();
+        qunsetenv("OPENTOP_EOL_DB");
+        return window->production()->isActive() &&
+               waitFor([&] { return window->production()->station()->hasDatabase(); });
+    }
+};
+
 } // namespace
 
 TEST_F(MainWindowProductionTest, AScannedSerialRunsTheUnitToPassAndNothingEditsMeanwhile)
 {
     QTemporaryDir dir;
-    const QString db = dir.filePath(QStringLiteral("results.db"));
-    qputenv("OPENTOP_EOL_DB", db.toLocal8Bit());
+    QString db;
+    ASSERT_TRUE(enterProduction(dir, &db));
     ProductionMode* production = window->production();
-    production->toggleAction()->trigger();
-    qunsetenv("OPENTOP_EOL_DB");
-    ASSERT_TRUE(production->isActive());
-    ASSERT_TRUE(waitFor([&] { return production->station()->hasDatabase(); }));
     EXPECT_FALSE(window->workspace()->isVisible()) << "no parameter pages in production mode";
     EXPECT_FALSE(actionVisible(window.get(), QStringLiteral("&Write all pending")));
     EXPECT_TRUE(window->stopAllButton()->isVisible()) << "STOP ALL stays";
@@ -118,11 +129,8 @@ TEST_F(MainWindowProductionTest, AScannedSerialRunsTheUnitToPassAndNothingEditsM
 TEST_F(MainWindowProductionTest, QuittingWhileAUnitRunsCancelsItStopsTheMotorAndRecordsIt)
 {
     QTemporaryDir dir;
-    const QString db = dir.filePath(QStringLiteral("results.db"));
-    qputenv("OPENTOP_EOL_DB", db.toLocal8Bit());
-    window->production()->toggleAction()->trigger();
-    qunsetenv("OPENTOP_EOL_DB");
-    ASSERT_TRUE(waitFor([&] { return window->production()->station()->hasDatabase(); }));
+    QString db;
+    ASSERT_TRUE(enterProduction(dir, &db));
     ProductionView* view = window->production()->view();
     ASSERT_TRUE(view->openRecipe(recipeFile(dir, 60)));
     QTest::keyClicks(view->serialField(), QStringLiteral("SN-Q1"));
@@ -160,12 +168,9 @@ TEST_F(MainWindowProductionTest, TheScreenAnswersWhileTheResultsDatabaseIsBusy)
     // factory may be as slow): the unit waits to be recorded before anything is sent, and the
     // window goes on answering meanwhile; once the lock goes, the unit runs to its verdict.
     QTemporaryDir dir;
-    const QString db = dir.filePath(QStringLiteral("results.db"));
-    qputenv("OPENTOP_EOL_DB", db.toLocal8Bit());
+    QString db;
+    ASSERT_TRUE(enterProduction(dir, &db));
     ProductionMode* production = window->production();
-    production->toggleAction()->trigger();
-    qunsetenv("OPENTOP_EOL_DB");
-    ASSERT_TRUE(waitFor([&] { return production->station()->hasDatabase(); }));
     ProductionView* view = production->view();
     ASSERT_TRUE(view->openRecipe(recipeFile(dir, 1)));
 
