@@ -6792,7 +6792,7 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>不明な言語 &apos;%1&apos;。使用可能: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/Language.cpp" line="157"/>
+        <location filename="../model/i18n/Language.cpp" line="167"/>
         <source>the %1 translation is missing from this build</source>
         <translation>このビルドには %1 の翻訳がありません</translation>
     </message>

@@ -6792,7 +6792,7 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>알 수 없는 언어 &apos;%1&apos;; 사용 가능: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/Language.cpp" line="157"/>
+        <location filename="../model/i18n/Language.cpp" line="167"/>
         <source>the %1 translation is missing from this build</source>
         <translation>이 빌드에 %1 번역이 없습니다</translation>
     </message>

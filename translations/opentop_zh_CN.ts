@@ -6792,7 +6792,7 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <translation>未知的语言“%1”；可用：%2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/Language.cpp" line="157"/>
+        <location filename="../model/i18n/Language.cpp" line="167"/>
         <source>the %1 translation is missing from this build</source>
         <translation>此版本缺少 %1 翻译</translation>
     </message>

@@ -146,10 +146,20 @@ bool Language::install(const QString& code, QString* error)
     g_current = *wanted;
     // The device texts too, if the profiles are not loaded yet (then they stay as loaded).
     ProfileRegistry::setLanguage(*wanted);
-    if (*wanted == kEnglish)
-        return true;
     auto* app = QCoreApplication::instance();
     auto* own = new NamespaceTranslator(app);
+    // English is the source, but its plural forms come from a file: "1 setting", "3 settings"
+    // rather than "1 setting(s)".
+    if (*wanted == kEnglish) {
+        if (own->load(QStringLiteral(":/i18n/opentop_en.qm"))) {
+            QCoreApplication::installTranslator(own);
+            g_installed << own;
+        } else {
+            qCWarning(lcModel) << "the English plural forms are missing from this build";
+            delete own;
+        }
+        return true;
+    }
     if (!own->load(QStringLiteral(":/i18n/opentop_%1.qm").arg(*wanted))) {
         // Compiled in by the build: missing means a broken build, said plainly.
         delete own;

@@ -236,3 +236,23 @@ TEST_F(EolRunE2e, AStationKilledMidUnitLeavesNoPassAndTheNextRunSaysSo)
     EXPECT_EQ(history->last().status, UnitStatus::Fail);
     EXPECT_TRUE(turning(1));
 }
+
+// The program as delivered says "1 position, 5 settings" in English, not "1 position(s)": its
+// plural forms are compiled in and installed for English too (translations/plurals).
+TEST(EolRecipeCheckE2e, EnglishCountsReadAsEnglish)
+{
+    QProcess cli;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.remove(QStringLiteral("LC_ALL"));
+    env.remove(QStringLiteral("LANGUAGE"));
+    env.insert(QStringLiteral("LANG"), QStringLiteral("C.UTF-8"));
+    cli.setProcessEnvironment(env);
+    cli.start(cliProgram(),
+              {QStringLiteral("eol"), QStringLiteral("recipe"), QStringLiteral("check"),
+               QStringLiteral(OPENTOP_SOURCE_DIR "/docs/examples/recipe-dbu200.json")});
+    ASSERT_TRUE(cli.waitForStarted(5000));
+    const CliResult r = finishCli(cli);
+    EXPECT_EQ(r.code, 0) << qPrintable(r.err);
+    EXPECT_TRUE(r.out.contains(QStringLiteral("1 position, 5 settings, 1 per-unit value, 8 steps")))
+        << qPrintable(r.out);
+}

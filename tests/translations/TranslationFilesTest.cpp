@@ -212,3 +212,67 @@ TEST(TranslationFilesTest, TheFilesAreInStepWithTheSource)
         << "translate:\n"
         << qPrintable(problems.mid(0, 40).join(u'\n'));
 }
+
+// English is the source; only its plural forms come from a file (translations/plurals): every
+// %n message of the code there, finished, "1 setting" and "3 settings" with the source's
+// placeholders, and no "word(s)" left for the counted noun.
+TEST(TranslationFilesTest, EveryEnglishPluralHasItsTwoFormsAndIsInStepWithTheSource)
+{
+    const QString file = QStringLiteral(OPENTOP_SOURCE_DIR "/translations/plurals/opentop_en.ts");
+    QString error;
+    const std::vector<Message> messages = readTs(file, &error);
+    ASSERT_TRUE(error.isEmpty()) << qPrintable(error);
+    ASSERT_GT(messages.size(), 40u);
+    QStringList problems;
+    for (const Message& m : messages) {
+        if (!m.type.isEmpty() || m.translations.size() != 2) {
+            problems << where(file, m) + QStringLiteral(": not two finished forms");
+            continue;
+        }
+        for (const QString& t : m.translations)
+            if (matches(kPlaceholder, m.source) != matches(kPlaceholder, t))
+                problems << where(file, m) + QStringLiteral(": placeholders differ in ") + t;
+        // The noun %n counts has lost its "(s)" in both forms.
+        static const QRegularExpression counted(QStringLiteral("%n (?:[\\w-]+ )?[\\w-]+\\(s\\)"));
+        for (const QString& t : m.translations)
+            if (counted.match(t).hasMatch())
+                problems << where(file, m) + QStringLiteral(": \"(s)\" left in ") + t;
+        if (m.translations.first() == m.translations.last())
+            problems << where(file, m) + QStringLiteral(": one and many read the same");
+    }
+    EXPECT_TRUE(problems.isEmpty()) << qPrintable(problems.mid(0, 40).join(u'\n'));
+
+    // In step: lupdate -pluralonly into a copy finds nothing new and nothing gone.
+    QTemporaryDir dir;
+    const QString copy = dir.filePath(QStringLiteral("opentop_en.ts"));
+    ASSERT_TRUE(QFile::copy(file, copy));
+    QProcess p;
+    p.setWorkingDirectory(QStringLiteral(OPENTOP_SOURCE_DIR));
+    p.start(QStringLiteral(OPENTOP_LUPDATE),
+            QStringList{QStringLiteral("-silent"), QStringLiteral("-pluralonly")}
+                << QStringLiteral(OPENTOP_LUPDATE_DIRS).split(u' ') << QStringLiteral("-ts")
+                << copy);
+    ASSERT_TRUE(p.waitForFinished(120000));
+    ASSERT_EQ(p.exitCode(), 0) << p.readAllStandardError().constData();
+    QStringList stale;
+    for (const Message& m : readTs(copy, &error))
+        if (!m.type.isEmpty())
+            stale << where(copy, m) + QLatin1Char(' ') + m.type;
+    EXPECT_TRUE(stale.isEmpty()) << "run the update_translations target:\n"
+                                 << qPrintable(stale.mid(0, 20).join(u'\n'));
+}
+
+TEST(TranslationFilesTest, EnglishSaysOneSettingAndThreeSettings)
+{
+    QString error;
+    ASSERT_TRUE(opentop::Language::install(QStringLiteral("en"), &error)) << qPrintable(error);
+    const char* source = "Write %n setting(s) to drive(s) %1, each verified by reading it back?";
+    EXPECT_EQ(QCoreApplication::translate("opentop::RestoreDialog", source, nullptr, 1),
+              QStringLiteral("Write 1 setting to drive(s) %1, each verified by reading it back?"));
+    EXPECT_EQ(QCoreApplication::translate("opentop::RestoreDialog", source, nullptr, 3),
+              QStringLiteral("Write 3 settings to drive(s) %1, each verified by reading it back?"));
+    opentop::Language::uninstall();
+    EXPECT_EQ(
+        QCoreApplication::translate("opentop::RestoreDialog", source, nullptr, 1),
+        QStringLiteral("Write 1 setting(s) to drive(s) %1, each verified by reading it back?"));
+}
