@@ -7509,7 +7509,7 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
     </message>
     <message>
         <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="252"/>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="301"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="297"/>
         <source>Drive %1: %2</source>
         <translation>드라이버 %1: %2</translation>
     </message>
@@ -7529,63 +7529,63 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>%1에서 허용.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="310"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="305"/>
         <source>Set it on %n drive(s) anyway?</source>
         <translation>
             <numerusform>그래도 드라이버 %n대에 설정하시겠습니까?</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="311"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="306"/>
         <source>&amp;Set it</source>
         <translation>설정(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="325"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="329"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>%1을(를) 국번 %2에 쓰기</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="327"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="331"/>
         <source>Nothing was written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="332"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="336"/>
         <source>waiting…</source>
         <translation>대기 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="338"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>%1을(를) 드라이버 %n대에 쓰는 중…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="346"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="350"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>드라이버 %n대 중 %1대에 쓰기 및 검증 완료.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="355"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="359"/>
         <source>writing…</source>
         <translation>쓰는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="368"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="372"/>
         <source>Written and verified</source>
         <translation>쓰기 및 검증 완료</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="369"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="373"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>쓰기 완료, 검증 안 됨(다시 읽을 수 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="370"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="374"/>
         <source>Failed: %1</source>
         <translation>실패: %1</translation>
     </message>
@@ -9978,173 +9978,178 @@ No unit can be tested until results can be recorded.</source>
     </message>
     <message>
         <location filename="../ui/eol/RecipeStepsEditor.cpp" line="131"/>
+        <source>no value chosen to read yet</source>
+        <translation>읽을 값이 아직 선택되지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="133"/>
         <source>%1 is &quot;%2&quot;</source>
         <translation>%1 = &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="132"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="134"/>
         <source>%1 between %2 and %3 %4</source>
         <translation>%1: %2~%3 %4</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="133"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="134"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="135"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="136"/>
         <source>any</source>
         <translation>제한 없음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="256"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="258"/>
         <source>No step selected</source>
         <translation>선택된 단계 없음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="257"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="259"/>
         <source>Add a step, or select one to edit it.</source>
         <translation>단계를 추가하거나 편집할 단계를 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="263"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="265"/>
         <source>Step %1: %2</source>
         <translation>단계 %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="272"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="274"/>
         <source>Running data:</source>
         <translation>운전 데이터:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="274"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="276"/>
         <source>Speed command:</source>
         <translation>속도 지령:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="275"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="290"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="308"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="277"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="292"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="310"/>
         <source>Unit:</source>
         <translation>단위:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="275"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="277"/>
         <source>the speed command&apos;s unit</source>
         <translation>속도 지령의 단위</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="278"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="280"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="279"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="281"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="285"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="287"/>
         <source>Direction:</source>
         <translation>회전 방향:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="287"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="289"/>
         <source>Target speed:</source>
         <translation>목표 속도:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="288"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="290"/>
         <source>empty: the drive&apos;s own target speed</source>
         <translation>비워 두면: 드라이버 자체의 목표 속도</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="289"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="291"/>
         <source>Tolerance (±):</source>
         <translation>허용 오차(±):</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="290"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="292"/>
         <source>the speed&apos;s unit</source>
         <translation>속도의 단위</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="291"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
         <source>Within:</source>
         <translation>제한 시간:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="291"/>
         <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="299"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="295"/>
         <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="303"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="295"/>
         <source>Duration:</source>
         <translation>유지 시간:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="299"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
         <source>Deceleration time:</source>
         <translation>감속 시간:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="300"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="302"/>
         <source>empty: the drive&apos;s setting</source>
         <translation>비워 두면: 드라이버의 설정값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="303"/>
         <source>Margin:</source>
         <translation>여유 시간:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="304"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="306"/>
         <source>Lower limit:</source>
         <translation>하한:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="305"/>
         <location filename="../ui/eol/RecipeStepsEditor.cpp" line="307"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="309"/>
         <source>empty: none</source>
         <translation>비워 두면: 없음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="306"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="308"/>
         <source>Upper limit:</source>
         <translation>상한:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="308"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="310"/>
         <source>the value&apos;s unit</source>
         <translation>값의 단위</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="309"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="311"/>
         <source>Or equals:</source>
         <translation>또는 일치:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="310"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="312"/>
         <source>the expected text, instead of limits</source>
         <translation>한계값 대신 기대하는 텍스트</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="312"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="314"/>
         <source>This step has no settings.</source>
         <translation>이 단계에는 설정 항목이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="355"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="357"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="357"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="359"/>
         <source>(unknown: %1)</source>
         <translation>(알 수 없음: %1)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="367"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="369"/>
         <source>Parameter:</source>
         <translation>파라미터:</translation>
     </message>

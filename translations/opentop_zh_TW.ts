@@ -7509,7 +7509,7 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
     </message>
     <message>
         <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="252"/>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="301"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="297"/>
         <source>Drive %1: %2</source>
         <translation>驅動器 %1：%2</translation>
     </message>
@@ -7529,63 +7529,63 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>%1 的允許值。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="310"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="305"/>
         <source>Set it on %n drive(s) anyway?</source>
         <translation>
             <numerusform>仍要在 %n 台驅動器上設定嗎？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="311"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="306"/>
         <source>&amp;Set it</source>
         <translation>設定(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="325"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="329"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>將 %1 寫入機號 %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="327"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="331"/>
         <source>Nothing was written.</source>
         <translation>未寫入任何資料。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="332"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="336"/>
         <source>waiting…</source>
         <translation>等待中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="338"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>正在將 %1 寫入 %n 台驅動器…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="346"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="350"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>已於 %n 台驅動器中的 %1 台寫入並驗證。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="355"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="359"/>
         <source>writing…</source>
         <translation>寫入中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="368"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="372"/>
         <source>Written and verified</source>
         <translation>已寫入並驗證</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="369"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="373"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>已寫入，未驗證 (無法回讀)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="370"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="374"/>
         <source>Failed: %1</source>
         <translation>失敗：%1</translation>
     </message>
@@ -9978,173 +9978,178 @@ No unit can be tested until results can be recorded.</source>
     </message>
     <message>
         <location filename="../ui/eol/RecipeStepsEditor.cpp" line="131"/>
+        <source>no value chosen to read yet</source>
+        <translation>尚未選擇要讀取的值</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="133"/>
         <source>%1 is &quot;%2&quot;</source>
         <translation>%1 為「%2」</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="132"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="134"/>
         <source>%1 between %2 and %3 %4</source>
         <translation>%1 介於 %2 至 %3 %4</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="133"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="134"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="135"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="136"/>
         <source>any</source>
         <translation>不限</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="256"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="258"/>
         <source>No step selected</source>
         <translation>未選擇步驟</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="257"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="259"/>
         <source>Add a step, or select one to edit it.</source>
         <translation>新增步驟，或選擇一個步驟進行編輯。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="263"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="265"/>
         <source>Step %1: %2</source>
         <translation>步驟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="272"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="274"/>
         <source>Running data:</source>
         <translation>運轉資料：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="274"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="276"/>
         <source>Speed command:</source>
         <translation>速度指令：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="275"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="290"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="308"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="277"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="292"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="310"/>
         <source>Unit:</source>
         <translation>單位：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="275"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="277"/>
         <source>the speed command&apos;s unit</source>
         <translation>速度指令的單位</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="278"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="280"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="279"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="281"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="285"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="287"/>
         <source>Direction:</source>
         <translation>旋轉方向：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="287"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="289"/>
         <source>Target speed:</source>
         <translation>目標速度：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="288"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="290"/>
         <source>empty: the drive&apos;s own target speed</source>
         <translation>留空：驅動器本身的目標速度</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="289"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="291"/>
         <source>Tolerance (±):</source>
         <translation>容許誤差（±）：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="290"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="292"/>
         <source>the speed&apos;s unit</source>
         <translation>速度的單位</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="291"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
         <source>Within:</source>
         <translation>時限：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="291"/>
         <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="299"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="295"/>
         <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="303"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="295"/>
         <source>Duration:</source>
         <translation>保持時間：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="299"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
         <source>Deceleration time:</source>
         <translation>減速時間：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="300"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="302"/>
         <source>empty: the drive&apos;s setting</source>
         <translation>留空：驅動器的設定值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="303"/>
         <source>Margin:</source>
         <translation>裕度：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="304"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="306"/>
         <source>Lower limit:</source>
         <translation>下限：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="305"/>
         <location filename="../ui/eol/RecipeStepsEditor.cpp" line="307"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="309"/>
         <source>empty: none</source>
         <translation>留空：無</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="306"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="308"/>
         <source>Upper limit:</source>
         <translation>上限：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="308"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="310"/>
         <source>the value&apos;s unit</source>
         <translation>數值的單位</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="309"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="311"/>
         <source>Or equals:</source>
         <translation>或等於：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="310"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="312"/>
         <source>the expected text, instead of limits</source>
         <translation>期望的文字，取代限值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="312"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="314"/>
         <source>This step has no settings.</source>
         <translation>此步驟沒有設定項目。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="355"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="357"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="357"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="359"/>
         <source>(unknown: %1)</source>
         <translation>（未知：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="367"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="369"/>
         <source>Parameter:</source>
         <translation>參數：</translation>
     </message>

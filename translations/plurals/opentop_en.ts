@@ -278,7 +278,7 @@
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message numerus="yes">
-        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="310"/>
+        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="305"/>
         <source>Set it on %n drive(s) anyway?</source>
         <translation>
             <numerusform>Set it on %n drive anyway?</numerusform>
@@ -286,7 +286,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="334"/>
+        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="338"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>Writing %1 to %n drive…</numerusform>
@@ -294,7 +294,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="346"/>
+        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="350"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>Written and verified on %1 of %n drive.</numerusform>

@@ -127,6 +127,8 @@ QString RecipeStepsEditor::summary(const QJsonObject& s)
                          .arg(n(QStringLiteral("margin")));
     if (type == QLatin1String("read")) {
         const QString p = s.value(kParameter).toString();
+        if (p.isEmpty())
+            return tr("no value chosen to read yet");
         if (s.contains(QStringLiteral("equals")))
             return tr("%1 is \"%2\"").arg(p, s.value(QStringLiteral("equals")).toString());
         return tr("%1 between %2 and %3 %4")

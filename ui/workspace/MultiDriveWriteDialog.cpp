@@ -1,6 +1,4 @@
 #include "workspace/MultiDriveWriteDialog.h"
-#include "session/SerialLock.h"
-#include "widgets/ConfirmBox.h"
 
 #include "bus/BusDrives.h"
 #include "bus/BusGroupTracker.h"
@@ -8,6 +6,8 @@
 #include "profile/ValueCodec.h"
 #include "run/RunningData.h"
 #include "session/DeviceSession.h"
+#include "session/SerialLock.h"
+#include "widgets/ConfirmBox.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -247,7 +247,7 @@ void MultiDriveWriteDialog::check()
         for (const QString& w :
              {e.warning,
               RunningData::warningFor(profile, meta(slave)->name, qint64(e.raw), context),
-              SerialLock::warning(profile, *meta(slave), qint64(e.raw), context)})
+              lockWarning(slave, text)})
             if (!w.isEmpty())
                 advice << tr("Drive %1: %2").arg(slave).arg(w);
     }
@@ -292,14 +292,9 @@ void MultiDriveWriteDialog::writeToAll()
         return; // nothing is sent
     // It can shut this program out of the drives' configuration: asked, as on a page.
     QStringList locks;
-    for (int slave : m_writable) {
-        const ValueContext context = m_drives->session(slave)->context();
-        const ValueCodec::Encoded e = ValueCodec::encodeText(*meta(slave), text, context);
-        const QString w = SerialLock::warning(m_drives->session(slave)->profile(), *meta(slave),
-                                              qint64(e.raw), context);
-        if (!w.isEmpty())
+    for (int slave : m_writable)
+        if (const QString w = lockWarning(slave, text); !w.isEmpty())
             locks << tr("Drive %1: %2").arg(slave).arg(w);
-    }
     if (locks.isEmpty()) {
         writeConfirmed(text);
         return;
@@ -312,6 +307,15 @@ void MultiDriveWriteDialog::writeToAll()
                         if (self && !self->busy() && self->m_value->text().trimmed() == text)
                             self->writeConfirmed(text);
                     });
+}
+
+QString MultiDriveWriteDialog::lockWarning(int slave, const QString& text) const
+{
+    const ValueContext context = m_drives->session(slave)->context();
+    const ValueCodec::Encoded e = ValueCodec::encodeText(*meta(slave), text, context);
+    return e.ok ? SerialLock::warning(m_drives->session(slave)->profile(), *meta(slave),
+                                      qint64(e.raw), context)
+                : QString();
 }
 
 void MultiDriveWriteDialog::writeConfirmed(const QString& text)

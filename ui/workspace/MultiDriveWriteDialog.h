@@ -56,6 +56,8 @@ private:
     const ParameterMeta* meta(int slave) const;
     void readValues();
     void check();
+    // SerialLock::warning for writing `text` to `slave`; empty when it does not lock.
+    QString lockWarning(int slave, const QString& text) const;
     void writeConfirmed(const QString& text);
     void writeNext(QVector<int> queue, const QString& text, int failed);
     void setCell(int slave, Column column, const QString& text, bool error = false);

@@ -227,6 +227,24 @@ TEST_F(MainWindowEolToolsTest, RecipeEditorChecksEveryEditAndSavesOnlyARecipeTha
     EXPECT_EQ(editor->check().size(), 1) << "a speed's max of 80 r/min is a valid limit";
     parameter->setCurrentIndex(parameter->findData(QStringLiteral("status.load")));
     EXPECT_EQ(limits->item(3, 4)->text(), QStringLiteral("%"));
+    // A read step added after the hold asks for its value; removed, the steps are as they were.
+    steps->addStep(QStringLiteral("read"));
+    ASSERT_EQ(steps->table()->rowCount(), 9);
+    EXPECT_EQ(steps->table()->item(5, 1)->text(), QStringLiteral("Read and compare"));
+    EXPECT_EQ(steps->table()->item(5, 2)->text(), QStringLiteral("no value chosen to read yet"));
+    stepProblems = editor->check();
+    ASSERT_EQ(stepProblems.size(), 1); // the file cannot be read: the one problem
+    EXPECT_TRUE(
+        stepProblems.first().message.contains(QStringLiteral("steps[5] (read and compare)")))
+        << qPrintable(stepProblems.first().message);
+    for (auto* b : steps->findChildren<QPushButton*>())
+        if (b->text() == QLatin1String("Remove"))
+            b->click();
+    ASSERT_EQ(steps->table()->rowCount(), 8);
+    EXPECT_EQ(editor->check().size(), 1);
+    steps->select(4);
+    limits = steps->detail()->findChild<QTableWidget*>(QStringLiteral("stepLimits"));
+    ASSERT_TRUE(limits);
     // A limit added without a value to measure is refused, naming the step and the limit (the
     // file cannot be read, so it is the one problem); removed, only the speed is left.
     QPushButton* addLimit = nullptr;
