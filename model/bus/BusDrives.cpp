@@ -1,8 +1,10 @@
 #include "bus/BusDrives.h"
 
+#include "bus/DriveName.h"
 #include "profile/ProfileRegistry.h"
 #include "session/DeviceParameters.h"
 #include "session/DeviceSession.h"
+#include "session/StoreTracker.h"
 
 #include <algorithm>
 
@@ -18,6 +20,11 @@ BusDrives::BusDrives(ModbusClient* client, const ProfileRegistry& registry, QObj
 BusDrives::~BusDrives()
 {
     clear();
+}
+
+BusDrives* BusDrives::of(const QObject* sessionOrParameters)
+{
+    return sessionOrParameters ? qobject_cast<BusDrives*>(sessionOrParameters->parent()) : nullptr;
 }
 
 void BusDrives::update(const DeviceInfo& info)
@@ -37,6 +44,8 @@ void BusDrives::update(const DeviceInfo& info)
     if (!d.session && info.state == DeviceInfo::State::Present && profile) {
         d.session = new DeviceSession(m_client, *profile, info.slave, info.variant, this);
         d.session->setLabelsInMessages(true); // the program's windows name parameters by label
+        StoreTracker::of(d.session);          // from the first write on: what a restore must store
+        d.session->setMachineName(m_names.value(info.slave));
         d.parameters = new DeviceParameters(d.session, this);
     } else if (d.session && !info.variant.isEmpty()) {
         d.session->setVariant(info.variant);
@@ -49,6 +58,7 @@ void BusDrives::remove(int slave)
     const auto it = m_drives.find(slave);
     if (it == m_drives.end())
         return;
+    m_variantDeclined.remove(slave); // another drive may answer there later
     delete it->parameters;
     delete it->session;
     m_drives.erase(it);
@@ -72,7 +82,59 @@ QVector<int> BusDrives::slaves() const
 
 DeviceInfo BusDrives::info(int slave) const
 {
-    return m_drives.value(slave).info;
+    DeviceInfo info = m_drives.value(slave).info;
+    info.machineName = m_names.value(slave);
+    return info;
+}
+
+QString BusDrives::setName(int slave, const QString& name)
+{
+    const QString problem = DriveName::problem(name);
+    if (!problem.isEmpty())
+        return problem;
+    const QString kept = DriveName::cleaned(name);
+    if (kept == m_names.value(slave))
+        return QString();
+    if (kept.isEmpty())
+        m_names.remove(slave);
+    else
+        m_names.insert(slave, kept);
+    if (DeviceSession* s = session(slave))
+        s->setMachineName(kept);
+    emit nameChanged(slave, kept);
+    if (m_drives.contains(slave))
+        emit driveChanged(slave);
+    return QString();
+}
+
+void BusDrives::setNames(const QHash<int, QString>& names)
+{
+    for (auto it = names.cbegin(); it != names.cend(); ++it) {
+        // A remembered name was checked when it was set; one edited by hand is checked again.
+        if (DriveName::problem(it.value()).isEmpty() && !it.value().trimmed().isEmpty() &&
+            m_names.value(it.key()) != DriveName::cleaned(it.value())) {
+            m_names.insert(it.key(), DriveName::cleaned(it.value()));
+            if (DeviceSession* s = session(it.key()))
+                s->setMachineName(m_names.value(it.key()));
+            if (m_drives.contains(it.key()))
+                emit driveChanged(it.key());
+        }
+    }
+}
+
+QString BusDrives::label(int slave) const
+{
+    return DriveName::text(slave, m_names.value(slave));
+}
+
+QString BusDrives::listed(int slave) const
+{
+    return DriveName::listed(slave, m_names.value(slave));
+}
+
+QString BusDrives::title(int slave) const
+{
+    return DriveName::title(slave, m_names.value(slave));
 }
 
 DeviceSession* BusDrives::session(int slave) const
@@ -97,6 +159,9 @@ void BusDrives::setVariant(int slave, const QString& variant)
     }
     if (it->session)
         it->session->setVariant(variant);
+    // What is allowed changed with the variant: the edits are checked against it.
+    if (it->parameters)
+        it->parameters->recheck();
     emit driveChanged(slave);
 }
 

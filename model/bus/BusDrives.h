@@ -4,6 +4,7 @@
 
 #include <QHash>
 #include <QObject>
+#include <QSet>
 #include <QVector>
 
 namespace opentop {
@@ -24,6 +25,8 @@ public:
     ~BusDrives() override;
 
     ModbusClient* client() const { return m_client; }
+    // The BusDrives a session or parameters of it belong to (their parent), or nullptr.
+    static BusDrives* of(const QObject* sessionOrParameters);
     // Adds or updates a drive. A drive that is present gets a session (kept on later updates).
     void update(const DeviceInfo& info);
     void remove(int slave);
@@ -37,6 +40,27 @@ public:
     // The variant where the drive does not report it (chosen by the user, or the simulated
     // bus's list); changes the allowed values used for its validation.
     void setVariant(int slave, const QString& variant);
+    // The user said the variant is not known: it is not asked again while connected (values
+    // are then checked against every variant, VariantNeed).
+    void declineVariant(int slave) { m_variantDeclined.insert(slave); }
+    bool variantDeclined(int slave) const { return m_variantDeclined.contains(slave); }
+    // The variants set on this bus last time (BusMemory): offered when the variant is asked,
+    // never applied without the user (the drive at a number may have been replaced).
+    void setRememberedVariants(const QHash<int, QString>& variants) { m_remembered = variants; }
+    QString rememberedVariant(int slave) const { return m_remembered.value(slave); }
+
+    // The user's name for the machine at `slave` ("Infeed conveyor 3"), kept per machine
+    // number also while no drive answers there; empty removes it. Returns why a name is
+    // refused (DriveName::problem), empty when it is taken.
+    QString setName(int slave, const QString& name);
+    QString name(int slave) const { return m_names.value(slave); }
+    // The names remembered for this bus (BusMemory), at connection time.
+    void setNames(const QHash<int, QString>& names);
+    const QHash<int, QString>& names() const { return m_names; }
+    // How messages name the drive: "machine number 1 (Infeed conveyor 3)" (DriveName).
+    QString label(int slave) const;
+    QString title(int slave) const;  // "Machine number 1 (Infeed conveyor 3)"
+    QString listed(int slave) const; // "1 (Infeed conveyor 3)", "1"
 
     // Whether the connection is open: false once it is lost (or could not be opened). Nothing
     // read before counts as live while the link is down (monitor/Freshness).
@@ -48,6 +72,8 @@ signals:
     void driveChanged(int slave);
     void driveRemoved(int slave);
     void linkChanged(bool up);
+    // A machine's name was set, changed or removed (driveChanged follows for a listed drive).
+    void nameChanged(int slave, const QString& name);
 
 private:
     struct Drive
@@ -60,6 +86,9 @@ private:
     ModbusClient* m_client;
     const ProfileRegistry& m_registry;
     QHash<int, Drive> m_drives;
+    QHash<int, QString> m_names;
+    QSet<int> m_variantDeclined;
+    QHash<int, QString> m_remembered;
     bool m_linkUp = true;
 };
 

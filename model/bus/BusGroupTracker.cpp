@@ -20,6 +20,12 @@ BusGroupTracker::BusGroupTracker(BusDrives* drives)
         m_unread.remove(slave);
         emit groupsChanged();
     });
+    // Questions name the drives a frame reaches by their machines' names too.
+    m_groups.setNames(drives->names());
+    connect(drives, &BusDrives::nameChanged, this, [this] {
+        m_groups.setNames(m_drives->names());
+        emit groupsChanged();
+    });
     for (int slave : drives->slaves())
         track(slave);
 }

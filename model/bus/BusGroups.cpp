@@ -1,5 +1,6 @@
 #include "BusGroups.h"
 
+#include "bus/DriveName.h"
 #include "profile/Profile.h"
 
 #include <QCoreApplication>
@@ -108,7 +109,24 @@ QString BusGroups::reachText(int slave) const
     return tr("machine number %1 is the parent of communication group %1: what is sent to it is "
               "also executed by %2 (children do not reply)")
         .arg(slave)
-        .arg(listText(children));
+        .arg(namedList(children));
+}
+
+QString BusGroups::namedList(const QVector<int>& slaves) const
+{
+    QStringList parts;
+    for (int s : slaves)
+        parts << DriveName::listed(s, m_names.value(s));
+    return parts.join(QStringLiteral(", "));
+}
+
+QString BusGroups::namedAndList(const QVector<int>& slaves) const
+{
+    if (slaves.size() < 2)
+        return namedList(slaves);
+    return tr("%1 and %2")
+        .arg(namedList(slaves.mid(0, slaves.size() - 1)))
+        .arg(namedList({slaves.last()}));
 }
 
 QString BusGroups::andListText(const QVector<int>& slaves)
@@ -126,11 +144,11 @@ QString BusGroups::alsoReachesText(int slave) const
     return children.size() == 1
                ? tr("This also reaches machine number %1 (the child of communication group %2; "
                     "it executes it without replying).")
-                     .arg(children.first())
+                     .arg(namedList(children))
                      .arg(slave)
                : tr("This also reaches machine numbers %1 (the children of communication group "
                     "%2; they execute it without replying).")
-                     .arg(andListText(children))
+                     .arg(namedAndList(children))
                      .arg(slave);
 }
 

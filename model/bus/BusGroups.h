@@ -69,8 +69,16 @@ public:
     QString roleText(int slave) const;
     static QString describe(const Problem& problem);
 
+    // The users' names of the machines (BusDrives::names): the texts above that name the drives
+    // a frame reaches name them with it, "2 (Infeed conveyor 3)" (DriveName::listed).
+    void setNames(const QHash<int, QString>& names) { m_names = names; }
+
 private:
+    QString namedList(const QVector<int>& slaves) const;
+    QString namedAndList(const QVector<int>& slaves) const;
+
     QHash<int, std::optional<int>> m_groups;
+    QHash<int, QString> m_names;
 };
 
 } // namespace opentop

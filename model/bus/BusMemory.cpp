@@ -1,21 +1,50 @@
 #include "bus/BusMemory.h"
 
 #include "bus/BusDrives.h"
+#include "bus/DriveName.h"
+#include "session/DeviceSession.h"
+#include "session/StoreTracker.h"
 
 #include <QCoreApplication>
 #include <QSettings>
 #include <QStringList>
+#include <memory>
 
 namespace opentop {
 
 namespace {
 
-QString settingsGroup(const QString& key)
+QString encoded(const QString& key)
 {
     // Slashes separate QSettings groups: the key is stored encoded.
-    return QStringLiteral("busMemory/") +
-           QString::fromLatin1(key.toUtf8().toBase64(QByteArray::Base64UrlEncoding |
-                                                     QByteArray::OmitTrailingEquals));
+    return QString::fromLatin1(
+        key.toUtf8().toBase64(QByteArray::Base64UrlEncoding | QByteArray::OmitTrailingEquals));
+}
+
+QString settingsGroup(const QString& key)
+{
+    return QStringLiteral("busMemory/") + encoded(key);
+}
+
+QString namesGroup(const QString& key)
+{
+    return QStringLiteral("busNames/") + encoded(key);
+}
+
+QString unstoredEntry(const QString& key, int slave)
+{
+    return QStringLiteral("busUnstored/") + encoded(key) + QLatin1Char('/') +
+           QString::number(slave);
+}
+
+// The window's settings ("OpenTOP", "OpenTOP"), also from the command line, which names no
+// organisation of its own: both programs remember one bus. A program that names its
+// organisation (the window, the tests) uses its own settings.
+std::unique_ptr<QSettings> store()
+{
+    if (QCoreApplication::organizationName().isEmpty())
+        return std::make_unique<QSettings>(QStringLiteral("OpenTOP"), QStringLiteral("OpenTOP"));
+    return std::make_unique<QSettings>();
 }
 
 } // namespace
@@ -48,7 +77,8 @@ QString BusMemory::placeText(const ConnectionSettings& settings)
 
 void BusMemory::save(const QString& key, const BusDrives& drives)
 {
-    QSettings settings;
+    const std::unique_ptr<QSettings> kept = store();
+    QSettings& settings = *kept;
     settings.remove(settingsGroup(key));
     settings.beginWriteArray(settingsGroup(key));
     int index = 0;
@@ -67,7 +97,9 @@ void BusMemory::save(const QString& key, const BusDrives& drives)
 
 QVector<BusMemory::Drive> BusMemory::load(const QString& key)
 {
-    QSettings settings;
+    const std::unique_ptr<QSettings> kept = store();
+    QSettings& settings = *kept;
+    const QHash<int, QString> named = names(key);
     QVector<Drive> out;
     const int count = settings.beginReadArray(settingsGroup(key));
     for (int i = 0; i < count; ++i) {
@@ -76,6 +108,7 @@ QVector<BusMemory::Drive> BusMemory::load(const QString& key)
         d.slave = settings.value(QStringLiteral("slave")).toInt();
         d.type = settings.value(QStringLiteral("type")).toString();
         d.model = settings.value(QStringLiteral("model")).toString();
+        d.name = named.value(d.slave);
         if (d.slave >= 1 && d.slave <= 247 && !d.type.isEmpty())
             out << d;
     }
@@ -85,7 +118,62 @@ QVector<BusMemory::Drive> BusMemory::load(const QString& key)
 
 void BusMemory::forget(const QString& key)
 {
-    QSettings().remove(settingsGroup(key));
+    store()->remove(settingsGroup(key));
+}
+
+QHash<int, QString> BusMemory::names(const QString& key)
+{
+    const std::unique_ptr<QSettings> settings = store();
+    settings->beginGroup(namesGroup(key));
+    QHash<int, QString> out;
+    for (const QString& k : settings->childKeys()) {
+        bool ok = false;
+        const int slave = k.toInt(&ok);
+        const QString name = settings->value(k).toString();
+        if (ok && slave >= 1 && slave <= 247 && !name.trimmed().isEmpty() &&
+            DriveName::problem(name).isEmpty())
+            out.insert(slave, DriveName::cleaned(name));
+    }
+    settings->endGroup();
+    return out;
+}
+
+QStringList BusMemory::unstored(const QString& key, int slave)
+{
+    return store()->value(unstoredEntry(key, slave)).toStringList();
+}
+
+void BusMemory::keep(const QString& key, DeviceSession* session)
+{
+    StoreTracker* tracker = StoreTracker::of(session);
+    if (!tracker || tracker->property("keptFor").toString() == key)
+        return;
+    tracker->setProperty("keptFor", key);
+    const int slave = session->slave();
+    // Only store commands the drive's profile has (a settings file edited by hand).
+    QStringList known;
+    for (const QString& c : unstored(key, slave)) {
+        if (session->profile().parameter(c))
+            known << c;
+    }
+    tracker->seed(known);
+    QObject::connect(tracker, &StoreTracker::changed, tracker, [key, slave, tracker] {
+        const std::unique_ptr<QSettings> settings = store();
+        if (tracker->unstored().isEmpty())
+            settings->remove(unstoredEntry(key, slave));
+        else
+            settings->setValue(unstoredEntry(key, slave), tracker->unstored());
+    });
+}
+
+void BusMemory::setName(const QString& key, int slave, const QString& name)
+{
+    const std::unique_ptr<QSettings> settings = store();
+    const QString entry = namesGroup(key) + QLatin1Char('/') + QString::number(slave);
+    if (DriveName::cleaned(name).isEmpty())
+        settings->remove(entry);
+    else
+        settings->setValue(entry, DriveName::cleaned(name));
 }
 
 QHash<int, QString> BusMemory::types(const QVector<Drive>& drives)
@@ -99,9 +187,13 @@ QHash<int, QString> BusMemory::types(const QVector<Drive>& drives)
 QString BusMemory::listText(const QVector<Drive>& drives)
 {
     QStringList parts;
-    for (const Drive& d : drives)
-        parts << (d.model.isEmpty() ? QString::number(d.slave)
-                                    : QStringLiteral("%1 (%2)").arg(d.slave).arg(d.model));
+    for (const Drive& d : drives) {
+        QString what = d.model;
+        if (!d.name.isEmpty())
+            what = d.model.isEmpty() ? d.name : QStringLiteral("%1, %2").arg(d.name, d.model);
+        parts << (what.isEmpty() ? QString::number(d.slave)
+                                 : QStringLiteral("%1 (%2)").arg(d.slave).arg(what));
+    }
     return parts.join(QStringLiteral(", "));
 }
 

@@ -161,9 +161,10 @@ void BusScanner::handleReply(int profileIndex, bool confirming, const ModbusResu
     }
     if (info.state == DeviceInfo::State::Garbled)
         info.detail = tr("garbled replies twice (%1): two drives probably share machine number "
-                         "%2; check their SW1/SW2 switches")
+                         "%2; check their address switches (%3)")
                           .arg(result.errorText())
-                          .arg(m_slave);
+                          .arg(m_slave)
+                          .arg(DeviceInfo::switchText(m_slave));
     else if (info.state == DeviceInfo::State::Unidentified)
         info.detail = tr("answers, but none of the device profiles matches (%1)").arg(info.detail);
     addressDone(info);

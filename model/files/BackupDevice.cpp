@@ -1,5 +1,6 @@
 #include "files/BackupDevice.h"
 
+#include "bus/DriveName.h"
 #include "profile/ValueCodec.h"
 
 #include <QCoreApplication>
@@ -72,9 +73,7 @@ QString BackupDevice::title() const
     const QString what = model.isEmpty() ? family : model;
     if (slave <= 0)
         return what;
-    return QCoreApplication::translate("opentop::BackupDevice", "drive %1 (%2)")
-        .arg(slave)
-        .arg(what);
+    return DriveName::withModel(slave, machineName, what);
 }
 
 } // namespace opentop

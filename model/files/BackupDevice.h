@@ -26,7 +26,8 @@ public:
     QString variant; // empty when the drive does not tell and nobody named it
     QString model;
     QString firmware;
-    QString name;
+    QString name;        // the device name register ("DBU")
+    QString machineName; // the user's name for the machine ("Infeed conveyor 3"), empty: none
     QVector<BackupParameter> parameters; // profile order
 
     const BackupParameter* parameter(const QString& parameterName) const;
@@ -38,7 +39,7 @@ public:
     // "2.5 s", "CW/STOP"; empty when the device does not hold the parameter.
     QString text(const Profile& profile, const QString& parameterName) const;
     QString unit(const Profile& profile, const QString& parameterName) const;
-    // "drive 1 (DBU200-D)".
+    // "drive 1 (DBU200-D)", "drive 1 (Infeed conveyor 3, DBU200-D)" (DriveName::withModel).
     QString title() const;
 };
 

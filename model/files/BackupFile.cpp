@@ -84,7 +84,7 @@ QByteArray pretty(const QJsonObject& root)
             device,
             {QStringLiteral("slave"), QStringLiteral("family"), QStringLiteral("variant"),
              QStringLiteral("model"), QStringLiteral("firmware"), QStringLiteral("name"),
-             QStringLiteral("parameters")},
+             QStringLiteral("machineName"), QStringLiteral("parameters")},
             "      ", [](const QString& key, const QJsonValue& v) {
                 if (key != QLatin1String("parameters") || !v.isArray())
                     return QByteArray();
@@ -170,6 +170,21 @@ const BackupDevice* BackupFile::device(int slave) const
     return nullptr;
 }
 
+int BackupFile::counterpartOf(int slave, const QString& family) const
+{
+    // The same drive when the file has it; else the file's first drive of the family (a backup
+    // of another machine of the same kind); else the first: something comparable is shown.
+    for (const BackupDevice& d : devices) {
+        if (d.slave == slave && (family.isEmpty() || d.family == family))
+            return d.slave;
+    }
+    for (const BackupDevice& d : devices) {
+        if (!family.isEmpty() && d.family == family)
+            return d.slave;
+    }
+    return devices.isEmpty() ? 0 : devices.first().slave;
+}
+
 QVector<int> BackupFile::slaves() const
 {
     QVector<int> ids;
@@ -233,7 +248,7 @@ QJsonObject BackupFile::toObject(const ProfileRegistry& registry) const
             }
             parameters << o;
         }
-        deviceArray << QJsonObject{
+        QJsonObject device{
             {QStringLiteral("slave"), d.slave},
             {QStringLiteral("family"), d.family},
             {QStringLiteral("variant"), d.variant.isEmpty() ? QJsonValue() : QJsonValue(d.variant)},
@@ -241,6 +256,10 @@ QJsonObject BackupFile::toObject(const ProfileRegistry& registry) const
             {QStringLiteral("firmware"), d.firmware},
             {QStringLiteral("name"), d.name},
             {QStringLiteral("parameters"), parameters}};
+        // Only when the machine has one: files of unnamed machines stay as they were.
+        if (!d.machineName.isEmpty())
+            device.insert(QStringLiteral("machineName"), d.machineName);
+        deviceArray << device;
     }
     return QJsonObject{
         {QStringLiteral("format"), formatName()},

@@ -47,6 +47,10 @@ public:
     static QString toolName(); // "OpenTOP <version>"
     const BackupDevice* device(int slave) const;
     QVector<int> slaves() const;
+    // The machine number of the file's drive to set beside drive `slave` of `family` (the
+    // other side of a comparison): that drive, else the first of the family, else the first;
+    // 0 when the file is empty.
+    int counterpartOf(int slave, const QString& family) const;
 
     // The file's text: pretty-printed, keys in a fixed order, one parameter per line.
     QByteArray toJson(const ProfileRegistry& registry) const;

@@ -1,5 +1,6 @@
 #include "files/BackupFileParser.h"
 
+#include "bus/DriveName.h"
 #include "files/BackupValidator.h"
 #include "profile/ProfileRegistry.h"
 #include "profile/ValueCodec.h"
@@ -146,6 +147,14 @@ bool BackupFileParser::readDevice(const QJsonObject& object, const QString& wher
     device->model = object.value(QStringLiteral("model")).toString();
     device->firmware = object.value(QStringLiteral("firmware")).toString();
     device->name = object.value(QStringLiteral("name")).toString();
+    const QJsonValue machineName = object.value(QStringLiteral("machineName"));
+    if (!machineName.isUndefined()) {
+        if (!machineName.isString())
+            return fail(tr("%1: \"machineName\" must be text").arg(at));
+        if (const QString problem = DriveName::problem(machineName.toString()); !problem.isEmpty())
+            return fail(tr("%1: \"machineName\": %2").arg(at, problem));
+        device->machineName = DriveName::cleaned(machineName.toString());
+    }
     const QJsonValue parameters = object.value(QStringLiteral("parameters"));
     if (!parameters.isArray())
         return fail(tr("%1: \"parameters\" must be a list").arg(at));

@@ -58,6 +58,7 @@ void BackupReader::read(Done done)
         const ProfileVariant* variant = profile.variant(device.variant);
         device.model = variant ? variant->model : profile.name;
         device.name = session->cachedValue(profile.identify.nameParameter).text;
+        device.machineName = session->machineName();
         if (session->hasCached(profile.identify.versionParameter)) {
             const quint16 v = session->cachedRegisters(profile.identify.versionParameter).value(0);
             device.firmware = QStringLiteral("%1.%2").arg(v >> 8).arg(v & 0xFF);

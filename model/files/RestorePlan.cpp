@@ -156,15 +156,11 @@ RestorePlan RestorePlan::check(const Profile& profile, const QString& liveVarian
             stores << meta.storeWith;
         plan.items << item;
     }
-    // Store commands in profile order; always written, because what a drive has stored cannot
-    // be read: an earlier restore that was interrupted before storing, or a temporary change,
-    // would otherwise be lost at the next power-off although the values look right.
+    // Store commands in profile order, after the writes; build() keeps those that something
+    // written needs (RestorePlan::build).
     std::sort(stores.begin(), stores.end(), [&profile](const QString& a, const QString& b) {
         return profile.parameter(a) < profile.parameter(b); // into the list: profile order
     });
-    if (!stores.isEmpty())
-        plan.notes << tr("store commands are always written: what the drive has stored cannot be "
-                         "read back, only what it uses now");
     for (const QString& name : stores) {
         Item item;
         item.parameter = name;
@@ -181,7 +177,7 @@ RestorePlan RestorePlan::check(const Profile& profile, const QString& liveVarian
 }
 
 void RestorePlan::build(const Profile& profile, const QString& liveVariant,
-                        const QHash<QString, QVector<quint16>>& live)
+                        const QHash<QString, QVector<quint16>>& live, const QStringList& unstored)
 {
     deviceRead = true;
     BackupDevice drive;
@@ -218,10 +214,55 @@ void RestorePlan::build(const Profile& profile, const QString& liveVariant,
             break;
         }
     }
+    keepNeededStores(profile, unstored);
     // A lock being set can shut this program out of the drive: said before anything is written.
     const QString lock = lockWarning(profile);
     if (!lock.isEmpty())
         notes << lock;
+}
+
+void RestorePlan::keepNeededStores(const Profile& profile, const QStringList& unstored)
+{
+    // A store command is sent when this restore writes a setting it stores, or when one was
+    // written earlier and not stored since (an interrupted restore, kept by StoreTracker and
+    // BusMemory). What a drive has stored cannot be read back; a store for nothing would only
+    // wear its memory and say that something changed.
+    QStringList written;
+    for (const Item& item : items) {
+        const ParameterMeta* meta = profile.parameter(item.parameter);
+        if (item.action == Item::Action::Write && meta && !meta->storeWith.isEmpty() &&
+            !meta->writeBlock.isSet()) // the configuration frame stores itself
+            written << meta->storeWith;
+    }
+    QStringList sent, earlier, dropped;
+    for (int i = int(items.size()) - 1; i >= 0; --i) {
+        if (items.at(i).action != Item::Action::Store)
+            continue;
+        const QString name = items.at(i).parameter;
+        const ParameterMeta* meta = profile.parameter(name);
+        const QString label = meta ? meta->label : name;
+        if (written.contains(name)) {
+            sent.prepend(label);
+        } else if (unstored.contains(name)) {
+            earlier.prepend(label);
+        } else {
+            dropped.prepend(label);
+            items.removeAt(i);
+        }
+    }
+    const QString list = QStringLiteral(", ");
+    if (!sent.isEmpty())
+        notes << tr("%1 sent after the writes, so that the settings written survive power-off")
+                     .arg(sent.join(list));
+    if (!earlier.isEmpty())
+        notes << tr("%1 sent: settings written to this drive earlier (by an interrupted restore, "
+                    "a page or the command line) are not stored yet")
+                     .arg(earlier.join(list));
+    if (!dropped.isEmpty())
+        notes << tr("%1 not sent: nothing it stores is written. What a drive has stored cannot "
+                    "be read back: if it loses settings at power-off, switch it off and on and "
+                    "restore again")
+                     .arg(dropped.join(list));
 }
 
 QString RestorePlan::lockWarning(const Profile& profile, const ValueContext& naming) const

@@ -17,7 +17,8 @@ namespace opentop {
 // Write order: parameters others depend on first (the control mode before the input
 // functions), then the rest in profile order, communication settings last (a serial lock that
 // is released goes before the settings it locks, one that is set after them), then one store
-// command per store group, so that settings of the DC controller survive power-off.
+// command per store group that something written needs, so that settings of the DC controller
+// survive power-off (none when nothing it stores was written).
 class RestorePlan
 {
     Q_DECLARE_TR_FUNCTIONS(opentop::RestorePlan)
@@ -62,7 +63,8 @@ public:
     };
 
     int slave = 0;
-    QString title; // "drive 1 (DBU200-D)"
+    QString title;       // the file's drive: "drive 1 (DBU200-D)"
+    QString machineName; // the name of the machine restored to (DriveName), empty: none
     Outcome outcome = Outcome::Planned;
     QString reason;          // for a refusal or failure, for people
     bool deviceRead = false; // build() ran: the drive's values are known and compared
@@ -77,19 +79,25 @@ public:
 
     static RestorePlan check(const Profile& liveProfile, const QString& liveVariant,
                              const BackupDevice& file);
-    // `live`: the drive's registers of every parameter of the file.
+    // `live`: the drive's registers of every parameter of the file; `unstored`: store commands
+    // the drive needs for writes made earlier (StoreTracker). Keeps the store commands that a
+    // write of the plan or `unstored` needs, drops the others and says which and why.
     void build(const Profile& profile, const QString& liveVariant,
-               const QHash<QString, QVector<quint16>>& live);
+               const QHash<QString, QVector<quint16>>& live, const QStringList& unstored = {});
 
     int count(Item::Status status) const;
     int count(Item::Action action) const;
     bool refused() const { return outcome == Outcome::Refused; }
     static bool isCommunicationSetting(const Profile& profile, const ParameterMeta& meta);
+
     static QString actionText(Item::Action action);
     static QString statusText(const Item& item);
     static QString outcomeText(Outcome outcome);
     static QString outcomeKey(Outcome outcome); // stable ids for JSON: "done", "refused", ...
     static QString statusKey(Item::Status status);
+
+private:
+    void keepNeededStores(const Profile& profile, const QStringList& unstored);
 };
 
 } // namespace opentop

@@ -2,6 +2,7 @@
 
 #include "profile/ValueCodec.h"
 #include "session/DeviceSession.h"
+#include "session/StoreTracker.h"
 
 #include <algorithm>
 
@@ -34,6 +35,7 @@ void Restorer::start(const BackupDevice& file, const Options& options, Done done
     // Everything that can refuse the file is decided here, before a single frame is sent.
     m_plan = RestorePlan::check(m_session->profile(), m_session->variant(), file);
     m_plan.slave = m_session->slave();
+    m_plan.machineName = m_session->machineName();
     QTimer::singleShot(0, this, [this] {
         if (m_plan.refused())
             finish(RestorePlan::Outcome::Refused);
@@ -67,7 +69,8 @@ void Restorer::readDrive()
         QHash<QString, QVector<quint16>> live;
         for (const QString& name : r.order)
             live.insert(name, self->m_session->cachedRegisters(name));
-        self->m_plan.build(self->m_session->profile(), self->m_session->variant(), live);
+        self->m_plan.build(self->m_session->profile(), self->m_session->variant(), live,
+                           StoreTracker::of(self->m_session)->unstored());
         if (self->m_options.dryRun)
             self->finish(RestorePlan::Outcome::Planned);
         else

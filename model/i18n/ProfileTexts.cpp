@@ -26,6 +26,11 @@ QMap<QString, QString> ProfileTexts::of(const Profile& profile)
         if (!text.trimmed().isEmpty()) // extract.py leaves out blank texts
             texts.insert(key, text);
     });
+    // A text that names settings is keyed as written ({setting:…}), not as resolved for people.
+    for (auto it = profile.referencedTexts.cbegin(); it != profile.referencedTexts.cend(); ++it) {
+        if (texts.contains(it.key()))
+            texts.insert(it.key(), it.value());
+    }
     return texts;
 }
 
@@ -37,6 +42,7 @@ void ProfileTexts::forEachText(Profile& profile, const Visit& visit)
 void ProfileTexts::visitTexts(Profile& profile, bool inherited, const Visit& visit)
 {
     visit(QStringLiteral("name"), profile.name);
+    visit(QStringLiteral("address.help"), profile.addressSwitches.help);
     for (ProfileVariant& v : profile.variants)
         visit(QStringLiteral("variants.%1.label").arg(v.id), v.label);
     for (ProfileGroup& g : profile.groups) {

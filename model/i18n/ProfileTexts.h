@@ -13,7 +13,8 @@ namespace opentop {
 class ProfileTexts
 {
 public:
-    // Key → text of every non-blank text, as extract.py gives it for the profile's JSON.
+    // Key → text of every non-blank text, as extract.py gives it for the profile's JSON (a text
+    // that names settings as written, with its {setting:…} references).
     static QMap<QString, QString> of(const Profile& profile);
 
     // Calls `visit(key, text)` for every text field of `profile`, so that a translation can

@@ -2,6 +2,7 @@
 #include "files/InputFile.h"
 
 #include "i18n/ProfileTexts.h"
+#include "profile/SettingReference.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -161,6 +162,14 @@ ProfileTranslation::loadJson(const QByteArray& json, const QString& sourceName,
                            "found (%3)")
                             .arg(it.key(), placeholders(it.value()).join(QStringLiteral(", ")),
                                  placeholders(translated).join(QStringLiteral(", "))));
+        // A setting named by reference is shown by its label in the language: the reference
+        // itself must stay (SettingReference).
+        if (SettingReference::names(translated) != SettingReference::names(it.value()))
+            return fail(tr("texts \"%1\": the settings named ({setting:…}) must stay as in the "
+                           "English (%2), found (%3)")
+                            .arg(it.key(),
+                                 SettingReference::names(it.value()).join(QStringLiteral(", ")),
+                                 SettingReference::names(translated).join(QStringLiteral(", "))));
     }
     return t;
 }

@@ -26,6 +26,12 @@ const MonitorValue* MonitorSample::find(const QString& parameter) const
     return nullptr;
 }
 
+std::optional<double> MonitorSample::rawOf(const QString& parameter) const
+{
+    const MonitorValue* v = find(parameter);
+    return v && v->value.valid ? std::optional<double>(v->value.raw) : std::nullopt;
+}
+
 std::optional<double> MonitorSample::signedSpeed(const QString& parameter) const
 {
     const MonitorValue* speed = find(parameter);
@@ -211,6 +217,17 @@ void DeviceMonitor::finish(const std::shared_ptr<Poll>& p)
         emit sample(s.timestamp, s);
     }
     scheduleNext();
+}
+
+void DeviceMonitor::setInterval(int ms)
+{
+    if (ms == m_intervalMs)
+        return;
+    m_intervalMs = ms;
+    // Waiting for the next poll: it is due by the new interval (a view coming into sight wants
+    // its values now, not at the end of a recording drive's slow second).
+    if (m_active && !m_busy && m_timer.isActive())
+        scheduleNext();
 }
 
 void DeviceMonitor::scheduleNext()

@@ -45,6 +45,8 @@ struct MonitorSample
     std::optional<SpeedDisplay::Shown> targetShown;
 
     const MonitorValue* find(const QString& parameter) const;
+    // The raw value of `parameter` when it was read (for RoleEvaluator and RunningData).
+    std::optional<double> rawOf(const QString& parameter) const;
     // A speed parameter's value made signed: negative when the "reverse" role holds, for
     // registers that hold the magnitude only.
     std::optional<double> signedSpeed(const QString& parameter) const;
@@ -69,7 +71,8 @@ public:
     // The parameters polled: the "monitor" role, plus the "running" and "alarmActive" roles'
     // parameters when the list lacks them.
     QStringList parameters() const { return m_names; }
-    void setInterval(int ms) { m_intervalMs = ms; }
+    // A new interval counts from the start of the poll under way or last made.
+    void setInterval(int ms);
     int interval() const { return m_intervalMs; }
 
     // Reads the speed display settings (when the profile has them) so that samples carry

@@ -79,19 +79,55 @@ void MonitorHub::shareHistory()
     }
 }
 
+void MonitorHub::follow(QObject* watcher)
+{
+    // A view that goes away stops watching by itself.
+    if (!m_watchers.contains(watcher)) {
+        m_watchers.insert(watcher);
+        connect(watcher, &QObject::destroyed, this, [this, watcher] { release(watcher); });
+    }
+}
+
 void MonitorHub::watch(int slave, QObject* watcher)
 {
     Drive* d = driveFor(slave);
     if (d->watchers.contains(watcher))
         return;
     d->watchers.insert(watcher);
-    // A view that goes away stops watching by itself.
-    if (!m_watchers.contains(watcher)) {
-        m_watchers.insert(watcher);
-        connect(watcher, &QObject::destroyed, this, [this, watcher] { release(watcher); });
-    }
+    follow(watcher);
     startOrStop(slave);
     emit watchedChanged();
+}
+
+void MonitorHub::record(int slave, QObject* recorder)
+{
+    Drive* d = driveFor(slave);
+    if (d->recorders.contains(recorder))
+        return;
+    d->recorders.insert(recorder);
+    follow(recorder);
+    startOrStop(slave);
+}
+
+void MonitorHub::stopRecording(int slave, QObject* recorder)
+{
+    const auto it = m_list.find(slave);
+    if (it == m_list.end() || !it->second->recorders.remove(recorder))
+        return;
+    startOrStop(slave);
+}
+
+bool MonitorHub::isRecordingOnly(int slave) const
+{
+    const auto it = m_list.find(slave);
+    return it != m_list.end() && it->second->watchers.isEmpty() &&
+           !it->second->recorders.isEmpty() && it->second->monitor &&
+           it->second->monitor->isActive();
+}
+
+int MonitorHub::intervalOf(const Drive& drive) const
+{
+    return drive.watchers.isEmpty() ? std::max(m_intervalMs, kRecordIntervalMs) : m_intervalMs;
 }
 
 void MonitorHub::unwatch(int slave, QObject* watcher)
@@ -106,13 +142,17 @@ void MonitorHub::unwatch(int slave, QObject* watcher)
 void MonitorHub::release(QObject* watcher)
 {
     m_watchers.remove(watcher);
-    QVector<int> slaves;
+    QVector<int> slaves, recorded;
     for (const auto& [slave, d] : m_list) {
         if (d->watchers.contains(watcher))
             slaves << slave;
+        if (d->recorders.contains(watcher))
+            recorded << slave;
     }
     for (int slave : slaves)
         unwatch(slave, watcher);
+    for (int slave : recorded)
+        stopRecording(slave, watcher);
 }
 
 bool MonitorHub::isWatched(int slave) const
@@ -135,7 +175,7 @@ QVector<int> MonitorHub::watched() const
 void MonitorHub::startOrStop(int slave)
 {
     Drive* d = driveFor(slave);
-    const bool wanted = !d->watchers.isEmpty() && !m_paused;
+    const bool wanted = (!d->watchers.isEmpty() || !d->recorders.isEmpty()) && !m_paused;
     if (!wanted) {
         if (d->monitor)
             d->monitor->stop();
@@ -146,7 +186,6 @@ void MonitorHub::startOrStop(int slave)
         return; // not identified (yet): driveChanged starts it
     if (!d->monitor) {
         d->monitor = std::make_unique<DeviceMonitor>(session);
-        d->monitor->setInterval(m_intervalMs);
         connect(d->monitor.get(), &DeviceMonitor::sample, this,
                 [this, slave](const QDateTime&, const MonitorSample& s) {
                     Drive* drive = driveFor(slave);
@@ -164,8 +203,16 @@ void MonitorHub::startOrStop(int slave)
             emit error(slave, text);
         });
     }
-    if (d->monitor->isActive())
+    const int interval = intervalOf(*d);
+    if (d->monitor->isActive()) {
+        if (d->monitor->interval() != interval) {
+            // From recording to watching or back: the rate shown is that of the new run.
+            d->monitor->setInterval(interval);
+            d->stats.recentMs.clear();
+        }
         return;
+    }
+    d->monitor->setInterval(interval);
     d->stats.recentMs.clear(); // the rate is that of this polling run
     if (d->prepared) {
         d->monitor->start();
@@ -179,7 +226,8 @@ void MonitorHub::startOrStop(int slave)
         drive->prepared = true;
         if (!problem.isEmpty())
             qCWarning(lcModel) << "speed display of" << slave << ":" << problem;
-        if (drive->monitor && !drive->watchers.isEmpty() && !m_paused)
+        if (drive->monitor && (!drive->watchers.isEmpty() || !drive->recorders.isEmpty()) &&
+            !m_paused)
             drive->monitor->start();
     });
 }
@@ -192,7 +240,7 @@ void MonitorHub::setInterval(int ms)
     m_intervalMs = ms;
     for (auto& [slave, d] : m_list) {
         if (d->monitor)
-            d->monitor->setInterval(ms);
+            d->monitor->setInterval(intervalOf(*d));
     }
     emit intervalChanged(ms);
 }

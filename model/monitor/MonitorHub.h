@@ -19,7 +19,9 @@ class BusDrives;
 // Live monitoring of the drives of a bus, shared by every view that shows it (a drive's
 // monitor page, the trend charts, the bus overview): one DeviceMonitor per drive, polling
 // while at least one view watches it, all at one selectable interval and at Poll priority, so
-// that user commands always go first and the drives share the bus in turn. Keeps each drive's
+// that user commands always go first and the drives share the bus in turn; a drive whose pages
+// are open is recorded (polled once a second) while none of its views is in sight, so that its
+// trend has no gap when the user comes back. Keeps each drive's
 // latest sample and a bounded history for trends, also after the last view has closed: an
 // hour at 10 Hz per series for up to kFullHistoryDrives drives, and for more drives a share of
 // the same budget each (247 drives: 2331 points per series, over 6 hours at one sample every
@@ -59,6 +61,14 @@ public:
     void unwatch(int slave, QObject* watcher);
     bool isWatched(int slave) const;
     QVector<int> watched() const;
+    // Keeps `slave` polled at kRecordIntervalMs (or the interval, when that is longer) while
+    // `recorder` exists and no view watches it, so that its trend goes on without a gap while
+    // its Monitor page is behind another page; stopRecording() or the recorder's end ends it.
+    void record(int slave, QObject* recorder);
+    void stopRecording(int slave, QObject* recorder);
+    // Polled now only to keep its trend: no view watches it.
+    bool isRecordingOnly(int slave) const;
+    static constexpr int kRecordIntervalMs = 1000;
 
     // Milliseconds from the start of one poll of a drive to the start of its next.
     void setInterval(int ms);
@@ -94,6 +104,7 @@ private:
     {
         std::unique_ptr<DeviceMonitor> monitor;
         QSet<QObject*> watchers;
+        QSet<QObject*> recorders; // keep the trend going at kRecordIntervalMs
         std::optional<MonitorSample> latest;
         TrendHistory history;
         Statistics stats;
@@ -106,6 +117,8 @@ private:
     void forget(int slave);
     void identified(int slave);
     void release(QObject* watcher);
+    void follow(QObject* watcher); // release() when it is destroyed
+    int intervalOf(const Drive& drive) const;
     void shareHistory();
 
     BusDrives* m_drives;

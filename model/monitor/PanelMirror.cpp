@@ -4,6 +4,7 @@
 #include "profile/Profile.h"
 #include "profile/RoleEvaluator.h"
 #include "profile/SpeedDisplay.h"
+#include "run/RunningData.h"
 
 namespace opentop {
 
@@ -75,15 +76,11 @@ PanelMirror::Shown PanelMirror::show(const Profile& profile, const MonitorSample
         shown.meaning = tr("Machine number %1").arg(sample.slave);
         break;
     case Content::RunningData: {
-        const ProfileRole* role = profile.role(QStringLiteral("selected"));
-        const ParameterMeta* meta = RoleEvaluator::parameter(profile, QStringLiteral("selected"));
-        const MonitorValue* v = meta ? sample.find(meta->name) : nullptr;
-        const BitField* field =
-            meta && role ? RoleEvaluator::bitField(*meta, role->field) : nullptr;
-        if (v && v->value.valid && field) {
-            const qint64 index = RoleEvaluator::fieldValue(*field, v->value.raw);
-            shown.text = QStringLiteral("SPno%1").arg(index + 1);
-            shown.meaning = tr("Running data SPno%1").arg(index + 1);
+        const std::optional<int> spno = RunningData::selected(
+            profile, [&sample](const QString& name) { return sample.rawOf(name); });
+        if (spno) {
+            shown.text = QStringLiteral("SPno%1").arg(*spno);
+            shown.meaning = tr("Running data SPno%1").arg(*spno);
         } else {
             shown.text = QStringLiteral("SPno-");
             shown.meaning = tr("Running data not read");

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "profile/AddressSwitches.h"
 #include "profile/CodeTable.h"
 #include "profile/ParameterMeta.h"
 
@@ -102,6 +103,7 @@ public:
     int maxWriteRegisters = 123;
     int minSlave = 1;
     int maxSlave = 247;
+    AddressSwitches addressSwitches; // how the machine number is set on the device
     bool supportsBroadcast = true;
     bool supportsGroups = false;
     QVector<ProfileVariant> variants;
@@ -116,6 +118,9 @@ public:
     QJsonObject tuning;
     QVector<DecelerationKnob> decelerationKnobs;
     QVector<StatusLedEntry> statusLed;
+    // Texts whose setting references were resolved (SettingReference), as written, by their
+    // ProfileTexts key: what a translation is checked against and keyed by.
+    QHash<QString, QString> referencedTexts;
 
     // The knob's deceleration for running data `selected` (the "selected" role's raw value).
     std::optional<double> knobDeceleration(qint64 selected) const;

@@ -2,6 +2,7 @@
 
 #include "profile/JsonReader.h"
 #include "profile/ParameterReader.h"
+#include "profile/SettingReference.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -44,7 +45,8 @@ bool readHeader(const QJsonObject& root, JsonReader& json, Profile* p)
              QStringLiteral("limits"), QStringLiteral("variants"), QStringLiteral("identify"),
              QStringLiteral("readBlocks"), QStringLiteral("groups"), QStringLiteral("codeTables"),
              QStringLiteral("parameters"), QStringLiteral("roles"), QStringLiteral("tuning"),
-             QStringLiteral("decelerationKnobs"), QStringLiteral("statusLed")},
+             QStringLiteral("decelerationKnobs"), QStringLiteral("statusLed"),
+             QStringLiteral("address")},
             tr("top level")))
         return false;
     if (json.integer(root, QStringLiteral("schema")).value_or(0) != 1)
@@ -95,7 +97,7 @@ bool readHeader(const QJsonObject& root, JsonReader& json, Profile* p)
         return json.fail(tr("limits: maxReadRegisters 1–125, maxWriteRegisters 1–123"));
     if (p->minSlave < 1 || p->maxSlave > 247 || p->minSlave > p->maxSlave)
         return json.fail(tr("limits: slaves must lie in 1–247"));
-    return true;
+    return AddressSwitches::read(root, json, p->maxSlave, &p->addressSwitches);
 }
 
 bool readVariantsGroupsBlocks(const QJsonObject& root, JsonReader& json, Profile* p)
@@ -450,6 +452,9 @@ std::optional<Profile> ProfileLoader::loadJson(const QByteArray& data, const QSt
     if (!crossCheck(root, json, &profile) || !readRoles(root, json, &profile) ||
         !readDecelerationKnobs(root, json, &profile) || !readStatusLed(root, json, &profile))
         return failWith(detail);
+    // A text that names a setting must name one the profile has.
+    if (const QString unknown = SettingReference::firstUnknown(profile); !unknown.isEmpty())
+        return failWith(tr("texts: {setting:…} names no parameter (%1)").arg(unknown));
     return profile;
 }
 

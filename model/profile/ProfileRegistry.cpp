@@ -3,6 +3,7 @@
 #include "ModelLog.h"
 #include "i18n/ProfileTranslation.h"
 #include "profile/ProfileLoader.h"
+#include "profile/SettingReference.h"
 
 #include <QDir>
 #include <QFile>
@@ -80,6 +81,8 @@ std::optional<ProfileRegistry> ProfileRegistry::load(const QString& language, QS
                 t->apply(*p);
             }
         }
+        // Settings named in texts, by their labels in the language shown.
+        SettingReference::resolveAll(*p);
         profiles << *p;
     }
     return ProfileRegistry(profiles);

@@ -1,6 +1,7 @@
 #include "run/ExitCheck.h"
 
 #include "bus/BusDrives.h"
+#include "bus/DriveName.h"
 #include "bus/DriveStatusPoller.h"
 #include "session/DeviceSession.h"
 
@@ -19,7 +20,7 @@ QString DriveLeftBehind::text() const
         what << ExitCheck::tr("in communication priority (its own inputs cannot start or stop it)");
     return ExitCheck::tr("Machine number %1 (%2): %3")
         .arg(slave)
-        .arg(model, what.join(QStringLiteral(", ")));
+        .arg(DriveName::nameAndModel(name, model), what.join(QStringLiteral(", ")));
 }
 
 QVector<DriveLeftBehind> ExitCheck::collect(const BusDrives& drives,
@@ -31,6 +32,7 @@ QVector<DriveLeftBehind> ExitCheck::collect(const BusDrives& drives,
         DriveLeftBehind d;
         d.slave = slave;
         d.model = drives.info(slave).shortModel();
+        d.name = drives.name(slave);
         d.running = status.running.value_or(false);
         d.busPriority = status.motionPriority.value_or(false);
         if (!d.running && !d.busPriority)

@@ -14,12 +14,13 @@ struct DriveLeftBehind
 {
     int slave = 0;
     QString model;            // "DBU200-D"
+    QString name;             // the user's name for the machine, empty: none
     bool running = false;     // by the last status poll
     bool busPriority = false; // holds the setting motion over the bus needs ("motionPriority")
     bool canReturn = false;   // the profile names the value that gives control back ("ioPriority")
     QString state;            // "Running CW", as the bus list says it
 
-    // "Machine number 1 (DBU200-D): Running CW, in Communication priority"
+    // "Machine number 1 (Infeed conveyor 3, DBU200-D): Running CW, in Communication priority"
     QString text() const;
 };
 

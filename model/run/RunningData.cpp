@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "profile/Profile.h"
+#include "profile/RoleEvaluator.h"
 #include "profile/ValueCodec.h"
 
 #include <QRegularExpression>
@@ -45,6 +46,25 @@ int RunningData::spnoOf(const QString& name, QString* field)
     if (field)
         *field = m.captured(2);
     return m.captured(1).toInt();
+}
+
+std::optional<int>
+RunningData::selected(const Profile& profile,
+                      const std::function<std::optional<double>(const QString&)>& raw)
+{
+    const ProfileRole* role = profile.role(QStringLiteral("selected"));
+    const ParameterMeta* meta = RoleEvaluator::parameter(profile, QStringLiteral("selected"));
+    const std::optional<double> value = meta ? raw(meta->name) : std::nullopt;
+    if (!role || !value)
+        return std::nullopt;
+    qint64 code = qint64(*value);
+    if (!role->field.isEmpty()) {
+        const BitField* field = RoleEvaluator::bitField(*meta, role->field);
+        if (!field)
+            return std::nullopt;
+        code = RoleEvaluator::fieldValue(*field, *value);
+    }
+    return int(code) + 1; // running data N is code N-1
 }
 
 QString RunningData::decelerationWarning(int spno, std::optional<double> speedRpm,

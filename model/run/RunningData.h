@@ -4,6 +4,7 @@
 
 #include <QCoreApplication>
 #include <QString>
+#include <functional>
 #include <optional>
 
 namespace opentop {
@@ -31,6 +32,12 @@ public:
     static int count(const Profile& profile);
     // The SPno a parameter belongs to (3 for "spno3.decel"), 0 for none; `field`: "decel".
     static int spnoOf(const QString& name, QString* field = nullptr);
+    // The running data the drive runs (or runs when started), 1-based, from the raw value of
+    // its "selected" role's parameter (a status field on a DBU, which follows the inputs M0–M2
+    // in I/O priority as well as the selection command); nothing when not read or not known.
+    static std::optional<int>
+    selected(const Profile& profile,
+             const std::function<std::optional<double>(const QString&)>& raw);
 
     // The warning for SPno `spno` with this speed (r/min) and deceleration (s); empty when
     // there is none or a value is unknown.

@@ -2,6 +2,7 @@
 
 #include "bus/BusDrives.h"
 #include "bus/BusGroups.h"
+#include "bus/DriveName.h"
 #include "profile/RoleEvaluator.h"
 #include "profile/ValueCodec.h"
 #include "run/RunningData.h"
@@ -30,6 +31,8 @@ void StartPreview::read(int slave, std::optional<bool> commandedCcw, Done done)
 {
     auto job = std::make_shared<Job>();
     job->result.slave = slave;
+    job->result.drive = DriveName::listed(slave, m_drives->name(slave));
+    job->groups.setNames(m_drives->names());
     job->commandedCcw = commandedCcw;
     job->done = std::move(done);
     readSelection(job);
@@ -127,6 +130,8 @@ void StartPreview::readGroups(const std::shared_ptr<Job>& job)
     }
     if (job->groupQueue.isEmpty()) {
         job->result.alsoReaches = job->groups.childrenOf(job->result.slave);
+        for (int child : job->result.alsoReaches)
+            job->result.alsoReachesNames << DriveName::listed(child, m_drives->name(child));
         job->result.reach = job->groups.reachText(job->result.slave);
         job->done(job->result);
         return;
@@ -170,7 +175,9 @@ QString StartPreview::Result::text() const
         lines << tr("Warning: %1").arg(warning);
     if (!alsoReaches.isEmpty())
         lines << tr("The start also reaches machine number(s) %1: %2.")
-                     .arg(BusGroups::listText(alsoReaches), reach);
+                     .arg(alsoReachesNames.isEmpty() ? BusGroups::listText(alsoReaches)
+                                                     : alsoReachesNames.join(QStringLiteral(", ")),
+                          reach);
     if (!unread.isEmpty())
         lines << tr("Not read: %1.").arg(unread.join(QStringLiteral(", ")));
     return lines.join(QLatin1Char('\n'));
@@ -180,14 +187,19 @@ QString StartPreview::Result::text() const
 
 namespace opentop {
 
+QString StartPreview::Result::named() const
+{
+    return drive.isEmpty() ? QString::number(slave) : drive;
+}
+
 QString StartPreview::Result::question(const QString& speedCommand) const
 {
     QString text =
         speedCommand.isEmpty()
-            ? tr("This starts the motor of machine number %1.").arg(slave) + QLatin1Char('\n') +
+            ? tr("This starts the motor of machine number %1.").arg(named()) + QLatin1Char('\n') +
                   this->text()
             : tr("This sets the speed command of machine number %1 to %2: its motor runs.")
-                  .arg(slave)
+                  .arg(named())
                   .arg(speedCommand);
     text += QStringLiteral("\n\n") +
             tr("Make sure that nobody is near the machine and that it may move. STOP ALL stops "

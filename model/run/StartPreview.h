@@ -26,14 +26,17 @@ public:
         QString direction; // "CW"
         bool directionFromCommand = false;
         QString warning; // the deceleration advice, or empty
+        QString drive;   // "1 (Infeed conveyor 3)": the number and the machine's name
         QVector<int> alsoReaches;
-        QString reach;      // BusGroups::reachText
-        QStringList unread; // labels of what could not be read
+        QStringList alsoReachesNames; // the same, named as `drive`
+        QString reach;                // BusGroups::reachText
+        QStringList unread;           // labels of what could not be read
         // The lines of the start confirmation.
         QString text() const;
         // The whole start question; `speedCommand`: a speed set point that starts the motor
         // (a DC controller), empty for a start command.
         QString question(const QString& speedCommand = QString()) const;
+        QString named() const; // `drive`, or the number alone
     };
     using Done = std::function<void(const Result&)>;
 

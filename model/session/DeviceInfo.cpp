@@ -14,11 +14,42 @@ QString DeviceInfo::hexText(int slave)
         .replace(QLatin1Char('H'), QLatin1Char('h'));
 }
 
-QString DeviceInfo::switchText(int slave)
+QString DeviceInfo::switchText(int slave, const QString& family)
 {
-    return QStringLiteral("SW1=%1 SW2=%2")
-        .arg(QString::number((slave >> 4) & 0xF, 16).toUpper(),
-             QString::number(slave & 0xF, 16).toUpper());
+    const ProfileRegistry& registry = ProfileRegistry::builtIn();
+    if (const Profile* p = registry.family(family))
+        return p->addressSwitches.positions(slave);
+    QStringList each;
+    QVector<const Profile*> possible;
+    for (const Profile& p : registry.profiles()) {
+        if (p.addressSwitches.notation != AddressSwitches::Notation::None && slave >= p.minSlave &&
+            slave <= p.maxSlave)
+            possible << &p;
+    }
+    for (const Profile* p : possible)
+        each << (possible.size() == 1
+                     ? p->addressSwitches.positions(slave)
+                     : QStringLiteral("%1 %2").arg(p->family.toUpper(),
+                                                   p->addressSwitches.positions(slave)));
+    return each.join(QStringLiteral(" / "));
+}
+
+QString DeviceInfo::addressText(int slave, const QString& family)
+{
+    const Profile* p = ProfileRegistry::builtIn().family(family);
+    if (p && !p->addressSwitches.showsHex())
+        return switchText(slave, family);
+    return hexText(slave) + QStringLiteral("  ") + switchText(slave, family);
+}
+
+QString DeviceInfo::switchHelp(const QString& family)
+{
+    QStringList lines;
+    for (const Profile& p : ProfileRegistry::builtIn().profiles()) {
+        if ((family.isEmpty() || p.family == family) && !p.addressSwitches.help.isEmpty())
+            lines << QStringLiteral("%1: %2").arg(p.family.toUpper(), p.addressSwitches.help);
+    }
+    return lines.join(QLatin1Char('\n'));
 }
 
 QString DeviceInfo::stateText(State state)

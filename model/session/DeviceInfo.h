@@ -20,24 +20,34 @@ struct DeviceInfo
 
     int slave = 0;
     State state = State::Unknown;
-    QString family;   // profile family, empty when not identified
-    QString variant;  // empty when the device does not tell its variant
-    QString model;    // variant model, or the profile's name
-    QString name;     // device name register
-    QString firmware; // "1.5"
-    QString detail;   // the error or remark behind the state
+    QString family;      // profile family, empty when not identified
+    QString variant;     // empty when the device does not tell its variant
+    QString model;       // variant model, or the profile's name
+    QString name;        // device name register
+    QString firmware;    // "1.5"
+    QString machineName; // the user's name for the machine (BusDrives::setName), empty: none
+    QString detail;      // the error or remark behind the state
     // The identify read's registers (the profile's IdentifyRule block) when Present: a session
     // made for the drive starts with them (DeviceSession::acceptIdentification), so nothing
     // asks the drive again for what identification has just read.
     QVector<quint16> identifyRegisters;
 
-    // Machine number as the DBU's rotary switches show it: 150 -> "96h", "SW1=9 SW2=6".
     // Present, of a family with variants, and the drive did not say which (nor did anyone).
     bool variantUnknown() const;
     // The model for short labels: "DBU200-D", or the family ("DBU") while the variant is unknown.
     QString shortModel() const;
     static QString hexText(int slave);
-    static QString switchText(int slave);
+    // The switch positions that set `slave` on a device of `family`, in the family's own
+    // notation (its profile's AddressSwitches): 150 -> "SW1=9 SW2=6" (DBU), 7 -> "DIP ON: 1,2,3"
+    // (DC controller). Without a family, each family's that can have the number, named:
+    // "DBU SW1=0 SW2=7 / DCPID DIP ON: 1,2,3".
+    static QString switchText(int slave, const QString& family = QString());
+    // What a list shows for the number's switches: "96h  SW1=9 SW2=6" where the switches are
+    // hexadecimal, "DIP ON: 1,2,3" where they are binary.
+    static QString addressText(int slave, const QString& family);
+    // How the machine number is set, per family ("DBU: Set on the rotary switches…"), one line
+    // each; only `family`'s when given.
+    static QString switchHelp(const QString& family = QString());
     static QString stateText(State state);
 };
 

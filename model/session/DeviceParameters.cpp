@@ -74,6 +74,15 @@ void DeviceParameters::refresh(const QStringList& names, std::function<void(int 
     });
 }
 
+void DeviceParameters::recheck()
+{
+    for (const QString& name : pendingNames()) {
+        const Entry& e = m_entries[name];
+        if (e.state == State::Pending || e.state == State::Invalid)
+            setPending(name, e.pendingText);
+    }
+}
+
 QString DeviceParameters::setPending(const QString& name, const QString& text)
 {
     auto it = m_entries.find(name);

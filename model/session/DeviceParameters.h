@@ -56,6 +56,8 @@ public:
     QString setPending(const QString& name, const QString& text);
     void revert(const QString& name);
     void revertAll();
+    // Checks every edit again against what is allowed now (after the variant became known).
+    void recheck();
     // Edits not yet written: pending, failed with an edit kept, or invalid.
     QStringList pendingNames(const QString& group = QString()) const;
     // Edits not yet confirmed on the drive: pending, being written, failed or invalid.

@@ -75,6 +75,9 @@ public:
     int slave() const { return m_slave; }
     QString variant() const { return m_variant; }
     void setVariant(const QString& variant) { m_variant = variant; }
+    // The name the user gave the machine ("Infeed conveyor 3", DriveName); empty: none.
+    QString machineName() const { return m_machineName; }
+    void setMachineName(const QString& name) { m_machineName = name; }
     // Whether messages name parameters by the profile's label (the program's windows) or by the
     // internal name the command line types (the default).
     void setLabelsInMessages(bool labels) { m_labelsInMessages = labels; }
@@ -136,6 +139,7 @@ private:
     const Profile& m_profile;
     int m_slave;
     QString m_variant;
+    QString m_machineName;
     bool m_labelsInMessages = false;
     QHash<QString, QVector<quint16>> m_cache;
 };

@@ -195,7 +195,9 @@ TEST(BusScannerTest, GarbledRepliesAreConfirmedAndFlagged)
     EXPECT_EQ(crc.state, DeviceInfo::State::Garbled);
     EXPECT_TRUE(crc.detail.contains(QStringLiteral("share machine number 3")))
         << qPrintable(crc.detail);
-    EXPECT_TRUE(crc.detail.contains(QStringLiteral("SW1/SW2")));
+    // The switches of each family that can have number 3 (which one answers is not known).
+    EXPECT_TRUE(crc.detail.contains(QStringLiteral("DBU SW1=0 SW2=3 / DCPID DIP ON: 1,2")))
+        << qPrintable(crc.detail);
     EXPECT_EQ(record.finished[1].state, DeviceInfo::State::Present); // the second attempt was clean
     EXPECT_EQ(repliesFrom4, 2);
     EXPECT_EQ(record.finished[2].state, DeviceInfo::State::Garbled); // wrong slave

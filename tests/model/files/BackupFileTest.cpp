@@ -300,3 +300,38 @@ TEST_F(BackupFileTest, DbuBackupNeedsFewRequests)
     std::cout << "[          ] DBU backup: " << r.parameters << " settings, " << r.requests
               << " requests, " << r.elapsedMs << " ms in process" << std::endl;
 }
+
+// Issue 24: the name given to a machine travels in its backup; a broken one is refused.
+TEST_F(BackupFileTest, AMachinesNameIsKeptAndCheckedAndTheCounterpartOfADriveIsFound)
+{
+    file.devices[0].machineName = QStringLiteral("Infeed conveyor 3");
+    QString error;
+    std::optional<BackupFile> back =
+        BackupFile::fromJson(file.toJson(registry()), registry(), &error);
+    ASSERT_TRUE(back) << qPrintable(error);
+    EXPECT_EQ(back->devices[0].machineName, QStringLiteral("Infeed conveyor 3"));
+    EXPECT_TRUE(back->devices[1].machineName.isEmpty());
+    EXPECT_EQ(back->devices[0].title(), QStringLiteral("drive 1 (Infeed conveyor 3, DBU200-D)"));
+    // Only a named machine has the key: files of unnamed ones stay as they were.
+    EXPECT_FALSE(root()
+                     .value(QStringLiteral("devices"))
+                     .toArray()
+                     .at(1)
+                     .toObject()
+                     .contains(QStringLiteral("machineName")));
+    QJsonObject document = root();
+    QJsonArray devices = document.value(QStringLiteral("devices")).toArray();
+    QJsonObject first = devices.at(0).toObject();
+    first.insert(QStringLiteral("machineName"), QStringLiteral("two\nlines"));
+    devices[0] = first;
+    document.insert(QStringLiteral("devices"), devices);
+    EXPECT_TRUE(refusal(resigned(document)).contains(QStringLiteral("machineName")));
+
+    // Beside drive 7 of the bus, the file's drive 7; beside a DC controller at another number,
+    // the file's DC controller; beside a family the file lacks, its first drive.
+    EXPECT_EQ(file.counterpartOf(7, QStringLiteral("dcpid")), 7);
+    EXPECT_EQ(file.counterpartOf(9, QStringLiteral("dcpid")), 7);
+    EXPECT_EQ(file.counterpartOf(1, QStringLiteral("dbu")), 1);
+    EXPECT_EQ(file.counterpartOf(3, QStringLiteral("other")), 1);
+    EXPECT_EQ(BackupFile().counterpartOf(1, QStringLiteral("dbu")), 0);
+}

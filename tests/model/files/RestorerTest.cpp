@@ -429,3 +429,37 @@ TEST_F(RestorerTest, AFailedReadIsMarkedAsNotRead)
     ASSERT_TRUE(client->openBlocking().isEmpty());
     EXPECT_TRUE(restore(1, file).deviceRead);
 }
+
+// Issue 24: a store command is sent only when something written needs it, and the plan says so.
+TEST_F(RestorerTest, NothingDifferentNothingStoredAndSaidSo)
+{
+    const BackupDevice file = factory(7);
+    const int from = logSize();
+    const RestorePlan plan = restore(7, file);
+    ASSERT_EQ(plan.outcome, RestorePlan::Outcome::Done) << qPrintable(plan.reason);
+    EXPECT_EQ(plan.count(Item::Action::Write), 0);
+    EXPECT_EQ(plan.count(Item::Action::Store), 0);
+    EXPECT_TRUE(writesSince(from).isEmpty()) << "no store command for nothing";
+    const QString notes = plan.notes.join(QLatin1Char('\n'));
+    EXPECT_TRUE(notes.contains(QStringLiteral("not sent: nothing it stores is written")))
+        << qPrintable(notes);
+}
+
+TEST_F(RestorerTest, OnlyTheGroupWrittenIsStored)
+{
+    const BackupDevice file = factory(7);
+    writeAndStore(7, "pid.p", "0.5", "store.pid"); // stored: differs from the file now
+    const int from = logSize();
+    const RestorePlan plan = restore(7, file);
+    ASSERT_EQ(plan.outcome, RestorePlan::Outcome::Done) << qPrintable(plan.reason);
+    EXPECT_EQ(plan.count(Item::Action::Write), 1);
+    // The PID settings are stored; the configuration and the preset speeds were not touched.
+    const QVector<quint16> writes = writesSince(from);
+    ASSERT_EQ(writes.size(), 2);
+    EXPECT_EQ(writes.last(), 0x0190);
+    EXPECT_EQ(item(plan, "store.pid").status, Item::Status::Verified);
+    const QString notes = plan.notes.join(QLatin1Char('\n'));
+    EXPECT_TRUE(notes.contains(QStringLiteral("sent after the writes"))) << qPrintable(notes);
+    powerCycle(7);
+    EXPECT_EQ(held(7, 0x0090), 15820); // 0.1 as a float, high word: kept over power-off
+}

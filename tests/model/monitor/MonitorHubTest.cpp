@@ -173,3 +173,41 @@ TEST_F(MonitorHubTest, EachDrivesHistoryIsBoundedByTheNumberOfDrives)
         drives->remove(s);
     EXPECT_EQ(hub->history(1)->capacity(), 36000);
 }
+
+// Issue 24: a drive whose pages are open keeps its trend while its monitor is out of sight,
+// polled once a second; in sight again, at the chosen rate.
+TEST_F(MonitorHubTest, ARecordedDriveKeepsItsTrendWhileNoViewWatchesIt)
+{
+    start(QStringLiteral("dbu200@1"), {1});
+    QObject pages;
+    QObject view;
+    hub->record(1, &pages);
+    hub->watch(1, &view);
+    ASSERT_TRUE(waitUntil([&] { return hub->statistics(1).samples >= 3; }));
+    EXPECT_FALSE(hub->isRecordingOnly(1));
+    hub->unwatch(1, &view);
+    EXPECT_FALSE(hub->isWatched(1));
+    EXPECT_TRUE(hub->isRecordingOnly(1));
+    const qint64 before = hub->statistics(1).samples;
+    idle(2600);
+    const qint64 recorded = hub->statistics(1).samples - before;
+    // Once a second, not at the 50 ms the views use.
+    EXPECT_GE(recorded, 2);
+    EXPECT_LE(recorded, 4);
+    // No gap in the trend: consecutive points closer than a value stays live.
+    const auto& points = hub->history(1)->find(QStringLiteral("status.current_speed"))->points;
+    for (int i = 1; i < points.size(); ++i)
+        EXPECT_LE(points[i].ms - points[i - 1].ms, Freshness::staleAfterMs(hub->interval()));
+    // Watched again: the chosen rate at once.
+    hub->watch(1, &view);
+    const qint64 again = hub->statistics(1).samples;
+    idle(500);
+    EXPECT_GE(hub->statistics(1).samples - again, 4);
+    // The pages closed: nothing polls it any more.
+    hub->unwatch(1, &view);
+    hub->stopRecording(1, &pages);
+    idle(100);
+    const int frames = framesSent();
+    idle(1500);
+    EXPECT_EQ(framesSent(), frames);
+}

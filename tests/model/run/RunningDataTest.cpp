@@ -85,3 +85,21 @@ TEST(RunningData, TheSummaryNamesEverySpnoWithAShortDecelerationFromHighSpeedInO
                                                     {QStringLiteral("spno2.decel"), 20}}))
                     .isEmpty());
 }
+
+// Issue 24: what the drive runs is read from its status (the "selected" role), not assumed.
+TEST(RunningDataTest, TheRunningDataTheDriveRunsComesFromItsStatusBits)
+{
+    // status.driver bits 8–10 hold the selected running data (code N-1).
+    auto raw = [](double value) {
+        return [value](const QString& name) -> std::optional<double> {
+            return name == QLatin1String("status.driver") ? std::optional(value) : std::nullopt;
+        };
+    };
+    EXPECT_EQ(RunningData::selected(dbu(), raw(3 << 8)), 4);
+    EXPECT_EQ(RunningData::selected(dbu(), raw((7 << 8) | 0x2)), 8); // running bits beside it
+    EXPECT_EQ(RunningData::selected(dbu(), raw(0)), 1);
+    EXPECT_FALSE(RunningData::selected(dbu(), [](const QString&) { return std::nullopt; }));
+    // A family without running data tells none.
+    EXPECT_FALSE(RunningData::selected(*ProfileRegistry::builtIn().family(QStringLiteral("dcpid")),
+                                       raw(3 << 8)));
+}

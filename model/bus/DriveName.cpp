@@ -1,0 +1,78 @@
+#include "bus/DriveName.h"
+
+#include "session/DeviceSession.h"
+
+namespace opentop {
+
+QString DriveName::cleaned(const QString& name)
+{
+    return name.trimmed();
+}
+
+QString DriveName::problem(const QString& name)
+{
+    const QString kept = cleaned(name);
+    if (kept.size() > kMaxLength)
+        return tr("A machine's name has at most %1 characters; \"%2\" has %3.")
+            .arg(kMaxLength)
+            .arg(kept.left(kMaxLength) + QChar(0x2026))
+            .arg(kept.size());
+    for (const QChar c : kept) {
+        // Control characters and line or paragraph breaks would break a question, a list, a
+        // file's line or a CSV row.
+        const QChar::Category category = c.category();
+        if (category == QChar::Other_Control || category == QChar::Other_Format ||
+            category == QChar::Separator_Line || category == QChar::Separator_Paragraph ||
+            category == QChar::Other_Surrogate || category == QChar::Other_NotAssigned)
+            return tr("A machine's name may not hold control characters or line breaks "
+                      "(U+%1).")
+                .arg(c.unicode(), 4, 16, QLatin1Char('0'));
+    }
+    return QString();
+}
+
+QString DriveName::text(int slave, const QString& name)
+{
+    return name.isEmpty() ? tr("machine number %1").arg(slave)
+                          : tr("machine number %1 (%2)").arg(slave).arg(name);
+}
+
+QString DriveName::title(int slave, const QString& name)
+{
+    return name.isEmpty() ? tr("Machine number %1").arg(slave)
+                          : tr("Machine number %1 (%2)").arg(slave).arg(name);
+}
+
+QString DriveName::listed(int slave, const QString& name)
+{
+    return name.isEmpty() ? QString::number(slave) : QStringLiteral("%1 (%2)").arg(slave).arg(name);
+}
+
+QString DriveName::nameAndModel(const QString& name, const QString& model)
+{
+    if (name.isEmpty() || model.isEmpty())
+        return name.isEmpty() ? model : name;
+    return QStringLiteral("%1, %2").arg(name, model);
+}
+
+QString DriveName::withModel(int slave, const QString& name, const QString& model)
+{
+    return tr("drive %1 (%2)").arg(slave).arg(nameAndModel(name, model));
+}
+
+QString DriveName::text(const DeviceSession* session)
+{
+    return session ? text(session->slave(), session->machineName()) : QString();
+}
+
+QString DriveName::title(const DeviceSession* session)
+{
+    return session ? title(session->slave(), session->machineName()) : QString();
+}
+
+QString DriveName::listed(const DeviceSession* session)
+{
+    return session ? listed(session->slave(), session->machineName()) : QString();
+}
+
+} // namespace opentop
