@@ -4,6 +4,7 @@
 #include "GroupCheck.h"
 #include "TextTable.h"
 #include "alarms/AlarmHistory.h"
+#include "bus/DriveName.h"
 #include "session/DeviceSession.h"
 
 #include <QCoreApplication>
@@ -243,7 +244,10 @@ int AlarmsCommand::run(CliContext& context, const QStringList& args)
     json.insert(QStringLiteral("family"), family);
     if (!context.json()) {
         const ProfileVariant* variant = session->profile().variant(session->variant());
-        out << tr("Machine number %1 (%2)").arg(slave).arg(variant ? variant->model : family)
+        const QString model = variant ? variant->model : family;
+        out << tr("Machine number %1 (%2)")
+                   .arg(slave)
+                   .arg(DriveName::nameAndModel(session->machineName(), model))
             << '\n';
         printReport(out, report);
     }

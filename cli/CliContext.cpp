@@ -6,6 +6,7 @@
 #include "ModbusClient.h"
 #include "SimBus.h"
 #include "TrafficLog.h"
+#include "bus/BusMemory.h"
 #include "bus/BusSpec.h"
 #include "profile/ProfileRegistry.h"
 #include "session/DeviceIdentifier.h"
@@ -130,6 +131,24 @@ std::optional<QVector<int>> CliContext::busDrives(QString* error)
     return ids;
 }
 
+QString CliContext::busKey(QString* error) const
+{
+    if (m_client)
+        return BusMemory::key(m_settings);
+    const auto settings = ConnectionOptions::fromParser(m_parser, QString(), error);
+    return settings ? BusMemory::key(*settings) : QString();
+}
+
+QHash<int, QString> CliContext::machineNames()
+{
+    if (!m_machineNames) {
+        QString error;
+        const QString key = busKey(&error);
+        m_machineNames = key.isEmpty() ? QHash<int, QString>() : BusMemory::names(key);
+    }
+    return *m_machineNames;
+}
+
 QString CliContext::assignedVariant(int slave, const QString& family) const
 {
     const ProfileRegistry& registry = ProfileRegistry::builtIn();
@@ -174,6 +193,7 @@ DeviceInfo CliContext::identify(int slave)
         if (p && p->variant(info.variant))
             info.model = p->variant(info.variant)->model;
     }
+    info.machineName = machineNames().value(slave);
     m_identified.insert(slave, info);
     return info;
 }
@@ -201,6 +221,9 @@ DeviceSession* CliContext::session(int slave, QString* error)
     }
     const Profile* profile = ProfileRegistry::builtIn().family(info.family);
     auto* s = new DeviceSession(m_client.get(), *profile, slave, info.variant);
+    // What an earlier run wrote and did not store is stored by a restore of this one.
+    BusMemory::keep(BusMemory::key(m_settings), s);
+    s->setMachineName(machineNames().value(slave)); // how messages and files name it
     s->acceptIdentification(info.identifyRegisters);
     m_sessions.insert(slave, s);
     return s;

@@ -61,6 +61,12 @@ public:
     // The variant given for `slave` (--variant VARIANT or --variant ID=VARIANT,...).
     QString assignedVariant(int slave, const QString& family) const;
 
+    // The bus the connection options name, as BusMemory keeps it ("serial:/dev/ttyUSB0"),
+    // without opening it; empty with *error when the options are wrong or missing.
+    QString busKey(QString* error) const;
+    // The names given to this bus's machines (`name`, or the window), read once.
+    QHash<int, QString> machineNames();
+
     // Runs `start`, which must eventually call the `finish` it is given, and processes events
     // until then. Returns false when Ctrl-C arrived first (queued requests are cancelled).
     // Callbacks must capture `finish` by value: `start` returns before they run.
@@ -89,6 +95,7 @@ private:
     QHash<int, QString> m_simTypes;
     QHash<int, DeviceSession*> m_sessions;
     QHash<int, DeviceInfo> m_identified;
+    std::optional<QHash<int, QString>> m_machineNames;
     bool m_usageError = false;
 };
 

@@ -4,6 +4,7 @@
 #include "ExitCode.h"
 #include "FileCommandSupport.h"
 #include "TextTable.h"
+#include "bus/DriveName.h"
 #include "files/BackupReader.h"
 #include "files/Comparer.h"
 #include "profile/ProfileRegistry.h"
@@ -73,7 +74,8 @@ std::optional<CompareCommand::Side> CompareCommand::readDrive(CliContext& contex
                           << Qt::endl;
         return std::nullopt;
     }
-    return Side{tr("drive %1").arg(slave), result.device};
+    return Side{tr("drive %1").arg(DriveName::listed(slave, context.machineNames().value(slave))),
+                result.device};
 }
 
 std::optional<CompareCommand::Side> CompareCommand::resolve(CliContext& context,

@@ -14,6 +14,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <algorithm>
 #include <unistd.h>
 
 namespace opentop {
@@ -196,6 +197,10 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
 
     QVector<DeviceInfo> devices = scanner.devices();
     completeVariants(context, &devices);
+    // The names given to this bus's machines (`name`, or the window).
+    const QHash<int, QString> names = context.machineNames();
+    for (DeviceInfo& info : devices)
+        info.machineName = names.value(info.slave);
     BusGroups groups;
     QHash<int, bool> hasGroups;
     if (!interrupted)
@@ -319,6 +324,12 @@ void ScanCommand::printTable(CliContext& context, const QVector<DeviceInfo>& dev
 {
     QStringList headers{tr("ID"),    tr("hex"),      tr("switches"), tr("family"),
                         tr("model"), tr("firmware"), tr("state")};
+    // Only where a machine has a name: a column of blanks would say nothing.
+    const bool showNames = std::any_of(devices.begin(), devices.end(), [](const DeviceInfo& d) {
+        return !d.machineName.isEmpty();
+    });
+    if (showNames)
+        headers.insert(1, tr("name"));
     // Only where a group is in use: a column of "off" would say nothing.
     bool showGroups = false;
     for (int slave : groups.drives())
@@ -327,15 +338,17 @@ void ScanCommand::printTable(CliContext& context, const QVector<DeviceInfo>& dev
         headers << tr("comm. group");
     TextTable table(headers);
     table.setRightAligned(0);
-    table.setRightAligned(1);
+    table.setRightAligned(showNames ? 2 : 1); // hex
     for (const DeviceInfo& info : devices) {
         QStringList row{QString::number(info.slave),
                         DeviceInfo::hexText(info.slave),
-                        DeviceInfo::switchText(info.slave),
+                        DeviceInfo::switchText(info.slave, info.family),
                         info.family,
                         info.model,
                         info.firmware.isEmpty() ? QString() : QStringLiteral("V") + info.firmware,
                         DeviceInfo::stateText(info.state)};
+        if (showNames)
+            row.insert(1, info.machineName);
         if (showGroups)
             row << GroupCheck::groupText(groups, hasGroups, info.slave);
         table.addRow(row);
@@ -352,13 +365,14 @@ void ScanCommand::printJson(CliContext& context, const BusScanner& scanner,
         QJsonObject device{
             {QStringLiteral("slave"), info.slave},
             {QStringLiteral("hex"), DeviceInfo::hexText(info.slave)},
-            {QStringLiteral("switches"), DeviceInfo::switchText(info.slave)},
+            {QStringLiteral("switches"), DeviceInfo::switchText(info.slave, info.family)},
             {QStringLiteral("family"), info.family},
             {QStringLiteral("variant"), info.variant},
             {QStringLiteral("model"), info.model},
             {QStringLiteral("firmware"), info.firmware},
             {QStringLiteral("state"), stateId(info.state)},
             {QStringLiteral("detail"), info.detail},
+            {QStringLiteral("name"), info.machineName},
         };
         GroupCheck::addJson(groups, hasGroups, info.slave, &device);
         list.append(device);
@@ -408,13 +422,12 @@ void ScanCommand::warnDuplicates(CliContext& context, const QVector<DeviceInfo>&
     for (const DeviceInfo& info : devices) {
         if (info.state != DeviceInfo::State::Garbled)
             continue;
-        context.err() << tr("warning: machine number %1 (%2, %3) answers with garbled replies: "
-                            "two drives probably have the same machine number. Check the SW1/SW2 "
+        context.err() << tr("warning: machine number %1 (%2) answers with garbled replies: "
+                            "two drives probably have the same machine number. Check the address "
                             "switches of the drives on this bus, give each drive its own machine "
                             "number, power them off and on, and scan again.")
                              .arg(info.slave)
-                             .arg(DeviceInfo::hexText(info.slave),
-                                  DeviceInfo::switchText(info.slave))
+                             .arg(DeviceInfo::addressText(info.slave, QString()))
                       << Qt::endl;
     }
 }

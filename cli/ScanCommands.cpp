@@ -1,4 +1,5 @@
 #include "CliCommands.h"
+#include "NameCommand.h"
 #include "ScanCommand.h"
 
 namespace opentop {
@@ -6,6 +7,7 @@ namespace opentop {
 void addScanCommands(CliCommandList& list)
 {
     list.push_back(std::make_unique<ScanCommand>());
+    list.push_back(std::make_unique<NameCommand>());
 }
 
 } // namespace opentop

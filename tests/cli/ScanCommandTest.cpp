@@ -45,8 +45,9 @@ TEST(ScanCommand, PrintsATableOfTheDrivesFound)
                            QStringLiteral("firmware"), QStringLiteral("state")}));
     EXPECT_EQ(row(r.out, 1).simplified(),
               QStringLiteral("1 01h SW1=0 SW2=1 dbu DBU200-D V1.5 online"));
+    // Each family's own switches: the DC controller's DIP switches 1–7 in binary.
     EXPECT_EQ(row(r.out, 7).simplified(),
-              QStringLiteral("7 07h SW1=0 SW2=7 dcpid DCPID-20A V1.0 online"));
+              QStringLiteral("7 07h DIP ON: 1,2,3 dcpid DCPID-20A V1.0 online"));
     EXPECT_TRUE(row(r.out, 150).isEmpty()) << "150 is outside --to 10";
     EXPECT_TRUE(r.out.contains(QStringLiteral("2 drives found in "))) << qPrintable(r.out);
     // Progress goes to standard error, one line per 10 % when it is not a terminal.
@@ -94,8 +95,8 @@ TEST(ScanCommand, JsonDescribesTheScanAndEveryDevice)
         QStringList(dbu.keys()),
         (QStringList{QStringLiteral("detail"), QStringLiteral("family"), QStringLiteral("firmware"),
                      QStringLiteral("group"), QStringLiteral("hex"), QStringLiteral("model"),
-                     QStringLiteral("slave"), QStringLiteral("state"), QStringLiteral("switches"),
-                     QStringLiteral("variant")}));
+                     QStringLiteral("name"), QStringLiteral("slave"), QStringLiteral("state"),
+                     QStringLiteral("switches"), QStringLiteral("variant")}));
     // A DBU's communication group, null when disabled.
     EXPECT_TRUE(dbu.value(QStringLiteral("group")).isNull());
     EXPECT_EQ(dbu.value(QStringLiteral("slave")).toInt(), 2);
