@@ -42,8 +42,9 @@ AlarmExport::AlarmExport(BusDrives* drives, QObject* parent)
 
 QString AlarmExport::csv(const QVector<DriveReport>& reports)
 {
-    QString text = row({tr("Machine"), tr("Model"), tr("Kind"), tr("Record"), tr("Code"),
-                        tr("Panel code"), tr("Name"), tr("Cleared by"), tr("Cause"), tr("Remedy")});
+    QString text =
+        row({tr("Machine"), tr("Machine name"), tr("Model"), tr("Kind"), tr("Record"), tr("Code"),
+             tr("Panel code"), tr("Name"), tr("Cleared by"), tr("Cause"), tr("Remedy")});
     for (const DriveReport& d : reports) {
         for (const AlarmHistory::History& h : d.report.histories) {
             const QString kind = h.table == QLatin1String("alarm")     ? tr("alarm")
@@ -53,9 +54,9 @@ QString AlarmExport::csv(const QVector<DriveReport>& reports)
                 if (r.empty)
                     continue;
                 const std::optional<CodeEntry>& e = r.entry;
-                text += row({QString::number(d.slave), d.model, kind, QString::number(r.index),
-                             AlarmsPage::codeText(r.code), e ? e->panel : QString(),
-                             e ? e->name : tr("unknown code"),
+                text += row({QString::number(d.slave), d.name, d.model, kind,
+                             QString::number(r.index), AlarmsPage::codeText(r.code),
+                             e ? e->panel : QString(), e ? e->name : tr("unknown code"),
                              e ? AlarmsPage::clearedByText(e->reset) : QString(),
                              e ? e->cause : QString(), e ? e->remedy : QString()});
             }
@@ -93,6 +94,7 @@ void AlarmExport::readNext()
         DriveReport d;
         d.slave = slave;
         d.model = m_drives->info(slave).model;
+        d.name = m_drives->name(slave);
         QPointer<AlarmExport> self(this);
         history->read([self, history, d](const AlarmHistory::Report& report) mutable {
             history->deleteLater();

@@ -21,6 +21,7 @@ public:
     {
         int slave = 0;
         QString model;
+        QString name; // the user's name for the machine
         AlarmHistory::Report report;
     };
 

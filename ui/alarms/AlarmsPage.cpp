@@ -1,6 +1,7 @@
 #include "alarms/AlarmsPage.h"
 
 #include "alarms/AlarmFollower.h"
+#include "bus/DriveName.h"
 #include "groups/GroupWriteCheck.h"
 #include "session/DeviceSession.h"
 #include "widgets/StaleLook.h"
@@ -61,8 +62,9 @@ AlarmsPage::AlarmsPage(DeviceSession* session, QWidget* parent)
     , m_clear(new QPushButton(tr("&Clear records…")))
     , m_age(new QLabel)
 {
-    m_title->setText(
-        tr("Alarms and warnings of machine %1 (%2)").arg(session->slave()).arg(modelOf(session)));
+    m_title->setText(tr("Alarms and warnings of machine %1 (%2)")
+                         .arg(DriveName::listed(session))
+                         .arg(modelOf(session)));
     QFont bold = m_title->font();
     bold.setBold(true);
     m_title->setFont(bold);
@@ -422,7 +424,7 @@ void AlarmsPage::resetAlarm()
         details << tr("This drive is set to clear alarms by a power restart only (%1).")
                        .arg(m_report.eraseMethod);
     confirm(tr("Reset alarm"),
-            tr("Send the alarm reset command to machine %1?").arg(m_session->slave()),
+            tr("Send the alarm reset command to machine %1?").arg(DriveName::listed(m_session)),
             details.join(QStringLiteral("\n\n")), tr("Reset alarm"), &AlarmsPage::startReset);
 }
 
@@ -454,7 +456,9 @@ void AlarmsPage::clearRecords()
     if (erased.isEmpty())
         erased << tr("the alarm and warning records");
     confirm(tr("Clear records"),
-            tr("Erase %1 of machine %2?").arg(erased.join(tr(" and "))).arg(m_session->slave()),
+            tr("Erase %1 of machine %2?")
+                .arg(erased.join(tr(" and ")))
+                .arg(DriveName::listed(m_session)),
             tr("The records cannot be restored. Writes: %1")
                 .arg(m_history->clearPlan().join(QStringLiteral(", "))),
             tr("Erase"), &AlarmsPage::startClear);

@@ -69,8 +69,8 @@ QVariant BusListModel::headerData(int section, Qt::Orientation orientation, int 
     if (orientation != Qt::Horizontal)
         return {};
     if (role == Qt::ToolTipRole && section == Switches)
-        return tr("The machine number in hexadecimal, as the drive's rotary switches SW1 (high "
-                  "digit) and SW2 (low digit) are set");
+        return tr("How each drive's machine number is set on its switches:\n%1")
+            .arg(DeviceInfo::switchHelp());
     if (role == Qt::ToolTipRole && section == Light)
         return tr("The drive's MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, "
                   "purple external interrupt, blue memory or communication error, grey no "
@@ -83,7 +83,7 @@ QVariant BusListModel::headerData(int section, Qt::Orientation orientation, int 
     case MachineNumber:
         return tr("Machine no.");
     case Switches:
-        return tr("Hex / switches");
+        return tr("Address switches");
     case Family:
         return tr("Family");
     case Model:
@@ -94,6 +94,8 @@ QVariant BusListModel::headerData(int section, Qt::Orientation orientation, int 
         return tr("State");
     case Priority:
         return tr("Control priority");
+    case Name:
+        return tr("Name");
     }
     return {};
 }
@@ -105,11 +107,11 @@ DriveStatus BusListModel::status(int slave) const
 
 QString BusListModel::duplicateHint(int slave)
 {
-    return tr("Two drives may share machine number %1 (%2, %3): check the SW1/SW2 switches of "
+    return tr("Two drives may share machine number %1 (%2): check the address switches of "
               "every drive on the line, give each drive its own number and restart its power; "
               "a bad termination or a swapped A/B pair also corrupts replies.")
         .arg(slave)
-        .arg(DeviceInfo::hexText(slave), DeviceInfo::switchText(slave));
+        .arg(DeviceInfo::addressText(slave, QString()));
 }
 
 QVariant BusListModel::display(const DeviceInfo& d, int column) const
@@ -121,8 +123,7 @@ QVariant BusListModel::display(const DeviceInfo& d, int column) const
     case MachineNumber:
         return d.slave;
     case Switches:
-        return DeviceInfo::hexText(d.slave) + QStringLiteral("  ") +
-               DeviceInfo::switchText(d.slave);
+        return DeviceInfo::addressText(d.slave, d.family);
     case Family:
         return d.family.isEmpty() ? tr("—") : d.family.toUpper();
     case Model:
@@ -137,6 +138,8 @@ QVariant BusListModel::display(const DeviceInfo& d, int column) const
         return DeviceInfo::stateText(d.state);
     case Priority:
         return s.priorityText.isEmpty() ? tr("—") : s.priorityText;
+    case Name:
+        return d.machineName;
     }
     return {};
 }
@@ -167,6 +170,12 @@ QString BusListModel::toolTip(const DeviceInfo& d, int column) const
         return tr("Status light grey: not live — %1")
             .arg(StaleLook::ageText(state, s.lastAnswer, now));
     }
+    case Switches:
+        return DeviceInfo::switchHelp(d.family);
+    case Name:
+        return d.machineName.isEmpty()
+                   ? tr("No name yet: Name… in the context menu (F2) names this machine")
+                   : tr("%1: the name given to this machine (F2 changes it)").arg(d.machineName);
     case Model:
         if (d.variantUnknown())
             return tr("The drive does not report its variant. Choose it from the context menu "

@@ -24,12 +24,13 @@ public:
     {
         Light,
         MachineNumber,
-        Switches, // hex and SW1/SW2 positions
+        Switches, // the number's switch positions, in the family's notation
         Family,
         Model,
         Firmware,
         State, // identification, then communication state once polled
         Priority,
+        Name, // the user's name for the machine (shown beside the machine number)
         ColumnCount
     };
     enum Role

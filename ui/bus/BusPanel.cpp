@@ -2,6 +2,7 @@
 
 #include "ModbusClient.h"
 #include "bus/BusDrives.h"
+#include "bus/BusListMenu.h"
 #include "bus/BusListModel.h"
 #include "bus/BusScanner.h"
 #include "bus/DriveStatusPoller.h"
@@ -9,7 +10,7 @@
 #include "profile/ProfileRegistry.h"
 #include "session/DeviceIdentifier.h"
 
-#include <QActionGroup>
+#include <QAction>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QInputDialog>
@@ -38,6 +39,7 @@ BusPanel::BusPanel(BusDrives* drives, DriveStatusPoller* poller, QWidget* parent
     , m_cancel(new QPushButton(tr("Ca&ncel"), this))
     , m_message(new QLabel(this))
     , m_view(new QTableView(this))
+    , m_menu(new BusListMenu(this, drives))
 {
     m_model->setPoller(poller);
     auto* layout = new QVBoxLayout(this);
@@ -53,7 +55,8 @@ BusPanel::BusPanel(BusDrives* drives, DriveStatusPoller* poller, QWidget* parent
     for (QSpinBox* s : {m_from, m_to}) {
         s->setRange(1, 247);
         s->setAccelerated(true);
-        s->setToolTip(tr("Machine numbers 1–247 (the DBU's SW1/SW2 switches in hex)"));
+        s->setToolTip(tr("Machine numbers 1–247, as set on each drive's switches:\n%1")
+                          .arg(DeviceInfo::switchHelp()));
     }
     m_from->setValue(1);
     m_to->setValue(247);
@@ -110,8 +113,13 @@ BusPanel::BusPanel(BusDrives* drives, DriveStatusPoller* poller, QWidget* parent
     // that a narrow list on a laptop still shows it; the rest is a scroll away.
     QHeaderView* header = m_view->horizontalHeader();
     int to = BusListModel::MachineNumber + 1;
-    for (int column : {BusListModel::Model, BusListModel::State, BusListModel::Priority})
+    for (int column :
+         {BusListModel::Name, BusListModel::Model, BusListModel::State, BusListModel::Priority})
         header->moveSection(header->visualIndex(column), to++);
+    // A long name is shortened (the tooltip has it whole), not the state beside it.
+    header->setSectionResizeMode(BusListModel::Name, QHeaderView::Interactive);
+    header->resizeSection(BusListModel::Name,
+                          m_view->fontMetrics().horizontalAdvance(QStringLiteral("Infeed 3")) + 20);
     // A model name is short; "DBU — variant unknown" is shortened (the tooltip says why), so
     // that the state and the priority stay in sight.
     header->setSectionResizeMode(BusListModel::Model, QHeaderView::Interactive);
@@ -134,6 +142,17 @@ BusPanel::BusPanel(BusDrives* drives, DriveStatusPoller* poller, QWidget* parent
     connect(m_add, &QPushButton::clicked, this, &BusPanel::addClicked);
     connect(m_cancel, &QPushButton::clicked, this, &BusPanel::cancelScan);
     connect(m_view, &QWidget::customContextMenuRequested, this, &BusPanel::showContextMenu);
+    connect(m_menu, &BusListMenu::message, this,
+            [this](const QString& text) { showMessage(text); });
+    // F2 names the machine of the current row, as it renames elsewhere.
+    auto* name = new QAction(tr("Name this machine…"), m_view);
+    name->setShortcut(QKeySequence(Qt::Key_F2));
+    name->setShortcutContext(Qt::WidgetShortcut);
+    m_view->addAction(name);
+    connect(name, &QAction::triggered, this, [this] {
+        if (m_view->currentIndex().isValid())
+            m_menu->askName(m_model->slaveAt(m_view->currentIndex().row()));
+    });
     connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
             [this] { emit selectionChanged(selectedSlaves()); });
 
@@ -271,9 +290,12 @@ void BusPanel::onScanFinished()
 void BusPanel::addClicked()
 {
     bool ok = false;
-    const int slave = QInputDialog::getInt(
-        this, tr("Add drive"), tr("Machine number (1–247; the DBU shows it in hex on SW1/SW2):"),
-        m_from->value(), 1, 247, 1, &ok);
+    // The switches' notation of every family, so that the number can be read off the device.
+    const int slave =
+        QInputDialog::getInt(this, tr("Add drive"),
+                             tr("Machine number (1–247), as set on the drive's switches:\n%1")
+                                 .arg(DeviceInfo::switchHelp()),
+                             m_from->value(), 1, 247, 1, &ok);
     if (ok)
         addDrive(slave);
 }
@@ -334,48 +356,7 @@ void BusPanel::updateButtons()
 
 QMenu* BusPanel::contextMenuFor(const QVector<int>& slaves, QWidget* parent)
 {
-    auto* menu = new QMenu(parent);
-    if (slaves.isEmpty())
-        return menu;
-    const DeviceInfo first = m_drives->info(slaves.first());
-    const Profile* profile = ProfileRegistry::builtIn().family(first.family);
-    // A variant applies to the selected drives of the same family.
-    QVector<int> sameFamily;
-    for (int s : slaves) {
-        if (m_drives->info(s).family == first.family &&
-            m_drives->info(s).state == DeviceInfo::State::Present)
-            sameFamily << s;
-    }
-    if (profile && profile->variants.size() > 1 && !sameFamily.isEmpty()) {
-        QMenu* variants = menu->addMenu(tr("&Variant"));
-        variants->setToolTipsVisible(true);
-        auto* group = new QActionGroup(variants);
-        for (const ProfileVariant& v : profile->variants) {
-            QAction* a = variants->addAction(v.model);
-            a->setObjectName(v.id);
-            a->setToolTip(v.label);
-            a->setCheckable(true);
-            a->setChecked(first.variant == v.id);
-            group->addAction(a);
-            connect(a, &QAction::triggered, this, [this, sameFamily, id = v.id] {
-                for (int s : sameFamily)
-                    m_drives->setVariant(s, id);
-            });
-        }
-    }
-    QAction* identify = menu->addAction(tr("&Identify again"));
-    connect(identify, &QAction::triggered, this, [this, slaves] {
-        for (int s : slaves)
-            addDrive(s);
-    });
-    identify->setEnabled(!isScanning());
-    QAction* remove = menu->addAction(tr("&Remove from list"));
-    connect(remove, &QAction::triggered, this, [this, slaves] {
-        for (int s : slaves)
-            m_drives->remove(s);
-    });
-    remove->setEnabled(!isScanning());
-    return menu;
+    return m_menu->menuFor(slaves, parent);
 }
 
 void BusPanel::showContextMenu(const QPoint& pos)

@@ -15,6 +15,7 @@ class QTableView;
 namespace opentop {
 
 class BusDrives;
+class BusListMenu;
 class BusListModel;
 class BusScanner;
 class DeviceIdentifier;
@@ -24,7 +25,7 @@ class DriveStatusPoller;
 // range, or Add drive by number) and lists them with their status light, machine number and
 // switch positions, identity, communication state and control priority. Everything found goes
 // into BusDrives; the list follows BusDrives and the poller. Drives whose variant the bus does
-// not tell get a Variant choice in the context menu.
+// not tell get a Variant choice in the context menu; every machine can be named (F2).
 class BusPanel : public QWidget
 {
     Q_OBJECT
@@ -50,7 +51,7 @@ public:
     // Shown after a scan that found nothing, when the line is not at the DC controller's fixed
     // potentiometer-mode settings (FixedLineHint): asks for a rescan at them.
     QPushButton* fixedLineButton() const { return m_fixedLine; }
-    // The context menu for `slaves` (the caller owns it); public for tests.
+    // The context menu for `slaves` (BusListMenu; the caller owns it); public for tests.
     QMenu* contextMenuFor(const QVector<int>& slaves, QWidget* parent);
 
 signals:
@@ -84,6 +85,7 @@ private:
     QPushButton* m_cancel;
     QLabel* m_message;
     QTableView* m_view;
+    BusListMenu* m_menu;
     bool m_resumePoller = false;
     int m_adding = 0;
 };

@@ -2,6 +2,7 @@
 
 #include "bus/BusDrives.h"
 #include "bus/BusMemory.h"
+#include "session/DeviceSession.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
@@ -69,6 +70,23 @@ BusRecallBar::BusRecallBar(BusDrives* drives, const ConnectionSettings& settings
         connect(drives, &BusDrives::driveChanged, this, hideOnceOneAnswers);
     }
     setVisible(offer);
+    // The names given to this bus's machines, in the window or by `opentop-cli name`, and a
+    // name given now is kept for next time (and for the command line) at once.
+    drives->setNames(BusMemory::names(m_key));
+    // The variants set here last time: offered when a variant is asked, not assumed.
+    drives->setRememberedVariants(BusMemory::types(BusMemory::load(m_key)));
+    connect(drives, &BusDrives::nameChanged, this, [key = m_key](int slave, const QString& name) {
+        BusMemory::setName(key, slave, name);
+    });
+    // Writes not stored yet are kept for the bus too: a restore after a crash still stores them.
+    auto keep = [drives, key = m_key](int slave) {
+        if (DeviceSession* s = drives->session(slave))
+            BusMemory::keep(key, s);
+    };
+    for (int slave : drives->slaves())
+        keep(slave);
+    connect(drives, &BusDrives::driveAdded, this, keep);
+    connect(drives, &BusDrives::driveChanged, this, keep);
     // From now on, what is on this bus is what will be offered next time.
     connect(drives, &BusDrives::driveAdded, this, &BusRecallBar::save);
     connect(drives, &BusDrives::driveChanged, this, &BusRecallBar::save);

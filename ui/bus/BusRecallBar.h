@@ -15,7 +15,8 @@ class BusDrives;
 // A bar above the drive's pages after connecting: remembers the drives (machine numbers,
 // hand-set variants) seen on this connection and, on the next connection to it (also after a
 // restart), offers them back — "Restore the 4 drives last seen on /dev/ttyUSB0" — or a scan.
-// Nothing is sent until the user chooses.
+// Nothing is sent until the user chooses. It also keeps the machines' names of this bus:
+// given them at connection, stores a new one at once.
 class BusRecallBar : public QFrame
 {
     Q_OBJECT

@@ -1,6 +1,7 @@
 #include "files/BackupDialog.h"
 
 #include "bus/BusDrives.h"
+#include "bus/VariantQuestion.h"
 #include "files/BackupFile.h"
 #include "files/BackupReader.h"
 #include "profile/ProfileRegistry.h"
@@ -62,6 +63,13 @@ void BackupDialog::startBackup(const QVector<int>& slaves, const QString& path)
 {
     if (m_running)
         return;
+    // The file records each drive's variant: a drive that does not report it is asked now.
+    if (const QString stop =
+            VariantQuestion::ensureEach(this, m_drives, slaves, VariantNeed::Purpose::Backup);
+        !stop.isEmpty()) {
+        showMessage(tr("Nothing was read: %1.").arg(stop), true);
+        return;
+    }
     m_slaves = slaves;
     m_path = path;
     m_next = 0;

@@ -43,7 +43,15 @@ CompareDialog::CompareDialog(BusDrives* drives, QWidget* parent)
         sides->addWidget(m_sides[side]);
         connect(m_sides[side], &CompareSide::fileChosen, this,
                 [this, side](const QString& path) { setFileSide(side, path); });
+        // A file's drive follows the drive on the other side: drive 7 beside the file's drive 1
+        // compares two different machines.
+        CompareSide* other = m_sides[side == A ? B : A];
+        connect(m_sides[side], &CompareSide::driveChanged, other, [this, side, other] {
+            other->follow(m_sides[side]->shownSlave(), m_sides[side]->shownFamily());
+        });
     }
+    m_sides[B]->follow(m_sides[A]->shownSlave(), m_sides[A]->shownFamily());
+    m_sides[A]->follow(m_sides[B]->shownSlave(), m_sides[B]->shownFamily());
 
     m_table->setHorizontalHeaderLabels({tr("Setting"), tr("Parameter"), tr("A"), tr("B")});
     m_table->verticalHeader()->hide();

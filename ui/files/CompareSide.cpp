@@ -1,6 +1,7 @@
 #include "files/CompareSide.h"
 
 #include "bus/BusDrives.h"
+#include "bus/DriveName.h"
 #include "profile/ProfileRegistry.h"
 
 #include <QComboBox>
@@ -21,6 +22,7 @@ CompareSide::CompareSide(const QString& title, bool offerDefaults, BusDrives* dr
     , m_path(new QLineEdit)
     , m_browse(new QPushButton(tr("Browse…")))
     , m_fileDrive(new QComboBox)
+    , m_drives(drives)
 {
     m_source->addItem(tr("Drive on the bus"), BusDrive);
     m_source->addItem(tr("Drive in a backup file"), FileDrive);
@@ -29,7 +31,10 @@ CompareSide::CompareSide(const QString& title, bool offerDefaults, BusDrives* dr
     if (drives) {
         for (int slave : drives->slaves()) {
             if (drives->session(slave))
-                m_drive->addItem(tr("Drive %1 (%2)").arg(slave).arg(drives->info(slave).model),
+                m_drive->addItem(tr("Drive %1 (%2)")
+                                     .arg(slave)
+                                     .arg(DriveName::nameAndModel(drives->name(slave),
+                                                                  drives->info(slave).model)),
                                  slave);
         }
     }
@@ -47,7 +52,13 @@ CompareSide::CompareSide(const QString& title, bool offerDefaults, BusDrives* dr
         m_source->setCurrentIndex(1);
     else if (offerDefaults && m_drive->count() < 2)
         m_source->setCurrentIndex(2);
-    connect(m_source, &QComboBox::currentIndexChanged, this, &CompareSide::updateEnabled);
+    connect(m_source, &QComboBox::currentIndexChanged, this, [this] {
+        updateEnabled();
+        emit driveChanged();
+    });
+    connect(m_drive, &QComboBox::currentIndexChanged, this, &CompareSide::driveChanged);
+    connect(m_fileDrive, &QComboBox::currentIndexChanged, this, &CompareSide::driveChanged);
+    connect(m_fileDrive, &QComboBox::activated, this, [this] { m_filePicked = true; });
     connect(m_browse, &QPushButton::clicked, this, &CompareSide::browse);
     connect(m_path, &QLineEdit::editingFinished, this, [this] {
         if (m_path->text() != QString())
@@ -91,14 +102,50 @@ bool CompareSide::loadFile(const QString& path, int slave, QString* error)
     m_source->setCurrentIndex(m_source->findData(FileDrive));
     m_path->setText(path);
     m_fileDrive->clear();
+    m_filePicked = slave > 0;
     m_file = BackupFile::load(path, ProfileRegistry::builtIn(), error);
     if (!m_file)
         return false;
     for (const BackupDevice& d : m_file->devices)
         m_fileDrive->addItem(d.title(), d.slave);
+    if (slave <= 0 && m_otherSlave > 0)
+        slave = m_file->counterpartOf(m_otherSlave, m_otherFamily);
     if (slave > 0)
         m_fileDrive->setCurrentIndex(std::max(0, m_fileDrive->findData(slave)));
     return true;
+}
+
+void CompareSide::follow(int slave, const QString& family)
+{
+    m_otherSlave = slave;
+    m_otherFamily = family;
+    if (!m_file || m_filePicked || slave <= 0)
+        return;
+    const int index = m_fileDrive->findData(m_file->counterpartOf(slave, family));
+    if (index >= 0)
+        m_fileDrive->setCurrentIndex(index);
+}
+
+int CompareSide::shownSlave() const
+{
+    switch (source()) {
+    case BusDrive:
+        return busSlave();
+    case FileDrive:
+        return fileDevice() ? fileDevice()->slave : 0;
+    case Defaults:
+        break;
+    }
+    return 0;
+}
+
+QString CompareSide::shownFamily() const
+{
+    if (source() == BusDrive)
+        return m_drives && busSlave() > 0 ? m_drives->info(busSlave()).family : QString();
+    if (source() == FileDrive && fileDevice())
+        return fileDevice()->family;
+    return QString();
 }
 
 const BackupDevice* CompareSide::fileDevice() const

@@ -17,7 +17,8 @@ class BusDrives;
 
 // One side of a comparison as the user picks it: a drive on the bus, a drive in a backup file
 // (refused files never get here), or, on side B only, the profile's factory defaults. What was
-// read for the last comparison is kept with it.
+// read for the last comparison is kept with it. A file's drive follows the other side's drive
+// until the user picks one.
 class CompareSide : public QGroupBox
 {
     Q_OBJECT
@@ -36,8 +37,15 @@ public:
     int busSlave() const; // the chosen drive on the bus; 0 when there is none
     void chooseBusDrive(int slave);
     void chooseDefaults();
-    // Loads the file; `slave` 0 takes its first drive. False with *error when refused.
+    // Loads the file; `slave` 0 takes the drive that goes with the other side's (follow()),
+    // else its first. False with *error when refused.
     bool loadFile(const QString& path, int slave, QString* error);
+    // The other side now shows drive `slave` of `family`: the drive in this side's file follows
+    // it (the same machine number, else the same family) until the user picks one.
+    void follow(int slave, const QString& family);
+    // The drive this side shows: machine number and family (0 and empty when none).
+    int shownSlave() const;
+    QString shownFamily() const;
     const BackupDevice* fileDevice() const; // the chosen drive of the loaded file, if any
     QString fileName() const;               // of the path typed or browsed
 
@@ -49,6 +57,8 @@ public:
 signals:
     // A file was typed or browsed; the dialog loads it and reports a refusal.
     void fileChosen(const QString& path);
+    // Another drive is shown (chosen on the bus or in the file, or another source).
+    void driveChanged();
 
 private:
     void updateEnabled();
@@ -60,6 +70,10 @@ private:
     QPushButton* m_browse;
     QComboBox* m_fileDrive;
     std::optional<BackupFile> m_file;
+    BusDrives* m_drives;
+    int m_otherSlave = 0; // the other side's drive, which the file's drive follows
+    QString m_otherFamily;
+    bool m_filePicked = false; // the user chose the drive in the file
     BackupDevice m_device;
     QString m_title;
 };

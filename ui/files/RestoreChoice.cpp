@@ -1,6 +1,7 @@
 #include "files/RestoreChoice.h"
 
 #include "bus/BusDrives.h"
+#include "bus/DriveName.h"
 #include "profile/ProfileRegistry.h"
 #include "session/DeviceSession.h"
 
@@ -55,7 +56,10 @@ void RestoreChoice::setFile(const BackupFile& file, BusDrives* drives)
         if (drives) {
             for (int slave : drives->slaves()) {
                 if (drives->session(slave))
-                    combo->addItem(tr("Drive %1 (%2)").arg(slave).arg(drives->info(slave).model),
+                    combo->addItem(tr("Drive %1 (%2)")
+                                       .arg(slave)
+                                       .arg(DriveName::nameAndModel(drives->name(slave),
+                                                                    drives->info(slave).model)),
                                    slave);
             }
         }

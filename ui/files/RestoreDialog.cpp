@@ -1,6 +1,7 @@
 #include "files/RestoreDialog.h"
 
 #include "bus/BusDrives.h"
+#include "bus/VariantQuestion.h"
 #include "files/RestoreChoice.h"
 #include "files/RestorePlanTable.h"
 #include "files/RestoreReport.h"
@@ -48,7 +49,7 @@ RestoreDialog::RestoreDialog(BusDrives* drives, QWidget* parent)
 
     auto* splitter = new QSplitter(Qt::Vertical);
     splitter->addWidget(m_choice);
-    splitter->addWidget(m_table);
+    splitter->addWidget(m_table->withFilter()); // "Differences only" above the plan
 
     m_message->setWordWrap(true);
     m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -116,21 +117,6 @@ QVector<int> RestoreDialog::fileSlaves() const
     return m_file ? m_file->slaves() : QVector<int>();
 }
 
-void RestoreDialog::setTarget(int fileSlave, int busSlave)
-{
-    m_choice->setTarget(fileSlave, busSlave);
-}
-
-int RestoreDialog::target(int fileSlave) const
-{
-    return m_choice->target(fileSlave);
-}
-
-void RestoreDialog::setParameters(int fileSlave, const QStringList& names)
-{
-    m_choice->setParameters(fileSlave, names);
-}
-
 bool RestoreDialog::refuse(const QVector<Job>& jobs)
 {
     // Every drive is checked before any is touched: a refusal writes nothing at all.
@@ -138,6 +124,7 @@ bool RestoreDialog::refuse(const QVector<Job>& jobs)
     for (const Job& job : jobs) {
         DeviceSession* session = m_drives->session(job.busSlave);
         RestorePlan check = RestorePlan::check(session->profile(), session->variant(), job.device);
+        check.machineName = session->machineName();
         check.slave = job.busSlave;
         if (check.refused())
             refusals << check;
@@ -163,11 +150,6 @@ void RestoreDialog::preview()
     start(true);
 }
 
-bool RestoreDialog::canWrite() const
-{
-    return m_previewed && !isBusy();
-}
-
 bool RestoreDialog::write()
 {
     // Only what the user has just seen in a preview is written.
@@ -188,9 +170,18 @@ void RestoreDialog::start(bool dryRun)
     m_written = false;
     m_previewed = false;
     m_table->setRowCount(0);
-    if (chosen.isEmpty() || refuse(chosen)) {
-        if (chosen.isEmpty())
-            showMessage(error, true);
+    // The file's values are checked against each drive's variant: asked before the preview.
+    QVector<int> targets;
+    for (const Job& job : chosen)
+        targets << job.busSlave;
+    const QString stop =
+        dryRun ? VariantQuestion::ensureEach(this, m_drives, targets, VariantNeed::Purpose::Write,
+                                             chosen.value(0).device.parameterNames())
+               : QString();
+    if (chosen.isEmpty() || !stop.isEmpty() || refuse(chosen)) {
+        if (chosen.isEmpty() || !stop.isEmpty())
+            showMessage(stop.isEmpty() ? error : tr("Nothing was read or written: %1.").arg(stop),
+                        true);
         updateButtons();
         if (dryRun)
             emit previewFinished();
@@ -302,16 +293,6 @@ void RestoreDialog::finish(bool dryRun)
         emit writeFinished();
 }
 
-QString RestoreDialog::cellText(int slave, const QString& parameter, Column column) const
-{
-    return m_table->cellText(slave, parameter, column);
-}
-
-bool RestoreDialog::isMismatchHighlighted(int slave, const QString& parameter) const
-{
-    return m_table->isFailureHighlighted(slave, parameter);
-}
-
 QString RestoreDialog::outcomeText() const
 {
     return m_message->text();
@@ -366,16 +347,16 @@ void RestoreDialog::confirmAndWrite()
     QStringList reached; // group parents' children execute the writes too
     for (const RestorePlan& plan : m_plans) {
         settings += plan.count(Item::Action::Write);
-        drives << QString::number(plan.slave);
+        drives << (m_drives ? m_drives->listed(plan.slave) : QString::number(plan.slave));
         const QString reach =
             GroupWriteCheck::reachText(m_drives ? m_drives->session(plan.slave) : nullptr);
         if (!reach.isEmpty() && plan.count(Item::Action::Write) > 0)
-            reached << tr("Drive %1: %2").arg(plan.slave).arg(reach);
+            reached << tr("Drive %1: %2").arg(m_drives->listed(plan.slave)).arg(reach);
         // It can shut this program out of the drive's configuration: said before it is asked.
         if (const DeviceSession* s = m_drives ? m_drives->session(plan.slave) : nullptr) {
             const QString lock = plan.lockWarning(s->profile(), s->context());
             if (!lock.isEmpty())
-                reached << tr("Drive %1: %2").arg(plan.slave).arg(lock);
+                reached << tr("Drive %1: %2").arg(m_drives->listed(plan.slave)).arg(lock);
         }
     }
     QString question = tr("Write %n setting(s) to drive(s) %1, each verified by reading it back?",

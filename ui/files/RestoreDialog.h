@@ -11,6 +11,7 @@
 #include <QPointer>
 #include <optional>
 
+class QCheckBox;
 class QLabel;
 class QLineEdit;
 class QProgressBar;
@@ -34,21 +35,34 @@ public:
     bool setPath(const QString& path); // false: refused, errorText() says why
     QString errorText() const { return m_error; }
     QVector<int> fileSlaves() const;
-    void setTarget(int fileSlave, int busSlave); // 0: do not restore this drive of the file
-    int target(int fileSlave) const;
-    void setParameters(int fileSlave, const QStringList& names); // the others are left out
+    // 0: do not restore this drive of the file.
+    void setTarget(int fileSlave, int busSlave) { m_choice->setTarget(fileSlave, busSlave); }
+    int target(int fileSlave) const { return m_choice->target(fileSlave); }
+    // The others are left out.
+    void setParameters(int fileSlave, const QStringList& names)
+    {
+        m_choice->setParameters(fileSlave, names);
+    }
 
     void preview(); // dry run; previewFinished() follows
     bool write();   // false when there is no current preview to write
     void cancel();  // after the write in progress has been read back
     bool isBusy() const { return m_restorer != nullptr; }
-    bool canWrite() const;
+    bool canWrite() const { return m_previewed && !isBusy(); }
 
     const QVector<RestorePlan>& plans() const { return m_plans; }
     bool written() const { return m_written; }
     QString outcomeText() const; // the text under the table
-    QString cellText(int slave, const QString& parameter, Column column) const;
-    bool isMismatchHighlighted(int slave, const QString& parameter) const;
+    QString cellText(int slave, const QString& parameter, Column column) const
+    {
+        return m_table->cellText(slave, parameter, column);
+    }
+    bool isMismatchHighlighted(int slave, const QString& parameter) const
+    {
+        return m_table->isFailureHighlighted(slave, parameter);
+    }
+    QCheckBox* differencesOnlyBox() const { return m_table->filterBox(); }
+    RestorePlanTable* table() const { return m_table; }
     QString reportText() const;
     bool saveReport(const QString& path, QString* error) const;
     // While writing, closing only cancels: the dialog stays to show what was written.

@@ -1,6 +1,8 @@
 #include "files/RestorePlanTable.h"
 
+#include <QCheckBox>
 #include <QHeaderView>
+#include <QVBoxLayout>
 
 namespace opentop {
 
@@ -49,8 +51,14 @@ void RestorePlanTable::showPlans(const QVector<RestorePlan>& plans, bool written
                 background = failureColor();
             else if (item.action == Item::Action::Write)
                 background = changeColor();
+            // What the filter keeps: anything sent or to send, and anything that went wrong.
+            const bool difference =
+                item.action != Item::Action::Keep || item.mismatch ||
+                (item.status != Item::Status::Unchanged && item.status != Item::Status::Pending);
             for (int c = 0; c < ColumnCount; ++c) {
                 auto* cell = new QTableWidgetItem(cells.at(c));
+                if (c == 0)
+                    cell->setData(Qt::UserRole, difference);
                 if (background.isValid()) {
                     cell->setBackground(background);
                     cell->setForeground(QColor(Qt::black));
@@ -59,7 +67,44 @@ void RestorePlanTable::showPlans(const QVector<RestorePlan>& plans, bool written
             }
         }
     }
+    applyFilter();
     resizeColumnsToContents();
+}
+
+void RestorePlanTable::setDifferencesOnly(bool only)
+{
+    m_differencesOnly = only;
+    applyFilter();
+}
+
+void RestorePlanTable::applyFilter()
+{
+    for (int row = 0; row < rowCount(); ++row)
+        setRowHidden(row, m_differencesOnly && !item(row, Drive)->data(Qt::UserRole).toBool());
+}
+
+QWidget* RestorePlanTable::withFilter()
+{
+    // A drive holds most of a file's settings already; the few that change are what one checks
+    // before writing.
+    auto* box = new QWidget;
+    auto* layout = new QVBoxLayout(box);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_filterBox = new QCheckBox(tr("&Differences only"), box);
+    m_filterBox->setToolTip(
+        tr("Show only the settings that would be written (or were), and what went wrong"));
+    connect(m_filterBox, &QCheckBox::toggled, this, &RestorePlanTable::setDifferencesOnly);
+    layout->addWidget(m_filterBox);
+    layout->addWidget(this, 1);
+    return box;
+}
+
+int RestorePlanTable::shownRows() const
+{
+    int shown = 0;
+    for (int row = 0; row < rowCount(); ++row)
+        shown += isRowHidden(row) ? 0 : 1;
+    return shown;
 }
 
 int RestorePlanTable::rowOf(int slave, const QString& parameter) const

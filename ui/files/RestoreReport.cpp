@@ -1,5 +1,6 @@
 #include "files/RestoreReport.h"
 
+#include "bus/DriveName.h"
 #include "files/OutputFile.h"
 
 #include <QDateTime>
@@ -38,7 +39,7 @@ QString RestoreReport::text(const QString& file, const QVector<RestorePlan>& pla
     for (const RestorePlan& plan : plans) {
         lines << QString()
               << tr("Machine number %1 from %2: %3")
-                     .arg(plan.slave)
+                     .arg(DriveName::listed(plan.slave, plan.machineName))
                      .arg(plan.title, RestorePlan::outcomeText(plan.outcome));
         if (!plan.reason.isEmpty())
             lines << QStringLiteral("  ") + plan.reason;
@@ -67,20 +68,25 @@ QString RestoreReport::csv(const QVector<RestorePlan>& plans)
         s.replace(QLatin1Char('"'), QStringLiteral("\"\""));
         return QLatin1Char('"') + s + QLatin1Char('"');
     };
+    // The machine's name last: the columns before it stay where readers of older reports find
+    // them.
     QStringList lines{QStringLiteral("slave,drive,outcome,parameter,action,status,file,device,"
-                                     "mismatch,error")};
+                                     "mismatch,error,name")};
     for (const RestorePlan& plan : plans) {
         const QString head = QStringLiteral("%1,%2,%3")
                                  .arg(plan.slave)
                                  .arg(quote(plan.title), RestorePlan::outcomeKey(plan.outcome));
+        const QString name = QLatin1Char(',') + quote(plan.machineName);
         if (plan.items.isEmpty())
-            lines << head + QStringLiteral(",,,,,,,") + quote(plan.reason);
+            lines << head + QStringLiteral(",,,,,,,") + quote(plan.reason) + name;
         for (const Item& item : plan.items)
             lines << QStringLiteral("%1,%2,%3,%4,%5,%6,%7,%8")
-                         .arg(head, item.parameter, RestorePlan::actionText(item.action),
-                              RestorePlan::statusKey(item.status), quote(item.fileText),
-                              quote(item.deviceText),
-                              item.mismatch ? QStringLiteral("yes") : QString(), quote(item.error));
+                             .arg(head, item.parameter, RestorePlan::actionText(item.action),
+                                  RestorePlan::statusKey(item.status), quote(item.fileText),
+                                  quote(item.deviceText),
+                                  item.mismatch ? QStringLiteral("yes") : QString(),
+                                  quote(item.error)) +
+                         name;
     }
     return lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
 }

@@ -32,7 +32,10 @@ QString plain(QString text)
 
 QVector<ShortcutsDialog::Entry> ShortcutsDialog::collect(QMainWindow* window)
 {
-    QVector<Entry> entries;
+    // STOP ALL first: the one to find at once.
+    QVector<Entry> entries{{tr("Everywhere, dialogs included"),
+                            tr("STOP ALL (stop every drive on the bus)"),
+                            StopAllButton::shortcuts()}};
     QList<QAction*> listed;
     const std::function<void(QMenu*, const QString&)> addMenu = [&](QMenu* menu,
                                                                     const QString& where) {
@@ -59,8 +62,6 @@ QVector<ShortcutsDialog::Entry> ShortcutsDialog::collect(QMainWindow* window)
         listed << a;
         entries.append({tr("Main window"), plain(a->text()), a->shortcuts()});
     }
-    entries.append({tr("Everywhere, dialogs included"),
-                    tr("STOP ALL (stop every drive on the bus)"), StopAllButton::shortcuts()});
     return entries;
 }
 

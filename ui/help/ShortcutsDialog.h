@@ -23,8 +23,8 @@ public:
     };
     explicit ShortcutsDialog(QMainWindow* window, QWidget* parent = nullptr);
 
-    // Every action of `window` with a shortcut: its menu's actions first, in menu order, then
-    // actions outside the menus, then STOP ALL.
+    // STOP ALL first, then every action of `window` with a shortcut: its menus' actions in
+    // menu order, each under its own menu, then actions outside the menus.
     static QVector<Entry> collect(QMainWindow* window);
     QTableWidget* table() const { return m_table; }
 

@@ -4,6 +4,7 @@
 #include "bus/BusDrives.h"
 #include "bus/BusListModel.h"
 #include "bus/BusPanel.h"
+#include "bus/DriveName.h"
 #include "bus/DriveStatusPoller.h"
 #include "main/MainWindow.h"
 #include "monitor/MonitorPage.h"
@@ -116,9 +117,9 @@ void DrivePages::showDrive(const QVector<int>& slaves)
     QString why;
     if (const std::optional<TuningSpec> spec =
             TuningSpec::of(drives->session(info.slave)->profile(), &why)) {
-        auto* tuning =
-            new TuningPage(drives->session(info.slave), *spec,
-                           tr("drive %1 (%2)").arg(info.slave).arg(info.model), workspace->tabs());
+        auto* tuning = new TuningPage(
+            drives->session(info.slave), *spec,
+            DriveName::withModel(info.slave, info.machineName, info.model), workspace->tabs());
         workspace->tabs()->addTab(tuning, tr("Speed loop tuning"));
         // STOP ALL ends a tuning test too (the test would otherwise command the motor again).
         if (StopAllButton* stopAll = m_window->stopAllButton())
@@ -134,10 +135,10 @@ void DrivePages::showDrive(const QVector<int>& slaves)
 QString DrivePages::driveTitle(int slave) const
 {
     const DeviceInfo info = m_window->drives()->info(slave);
-    return tr("Machine number %1 (%2, %3) — %4, firmware V%5")
-        .arg(info.slave)
-        .arg(DeviceInfo::hexText(info.slave), DeviceInfo::switchText(info.slave), info.model,
-             info.firmware);
+    // The machine's name first: it is what people call the machine.
+    return tr("%1 — %2, firmware V%3, switches %4")
+        .arg(DriveName::title(info.slave, info.machineName), info.model, info.firmware,
+             DeviceInfo::addressText(info.slave, info.family));
 }
 
 } // namespace opentop

@@ -50,10 +50,13 @@ MainMenus::MainMenus(MainWindow* window, BusDocks* docks, std::function<QVector<
     m_disconnect->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_K));
     m_disconnect->setEnabled(false);
     connect(window, &MainWindow::connectionChanged, m_disconnect, &QAction::setEnabled);
-    file->addAction(tr("Communication &groups…"), window, [docks] {
+    // The groups are the bus's: their key is listed here, where the command is (View only
+    // toggles the dock).
+    QAction* groups = file->addAction(tr("Communication &groups…"), window, [docks] {
         docks->dock(QStringLiteral("groupsDock"))->show();
         docks->dock(QStringLiteral("groupsDock"))->raise();
     });
+    groups->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_G));
     file->addAction(tr("&Export alarm histories…"), this, &MainMenus::exportAlarms);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, window, &QWidget::close);
@@ -107,8 +110,7 @@ MainMenus::MainMenus(MainWindow* window, BusDocks* docks, std::function<QVector<
         {QStringLiteral("overviewDock"), tr("Bus &overview"),
          QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O)},
         {QStringLiteral("trendDock"), tr("T&rends"), QKeySequence(Qt::CTRL | Qt::Key_G)},
-        {QStringLiteral("groupsDock"), tr("Communication &groups"),
-         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_G)}};
+        {QStringLiteral("groupsDock"), tr("Communication &groups"), QKeySequence()}};
     for (const auto& [name, text, key] : docksActions) {
         QAction* a = docks->dock(name)->toggleViewAction();
         a->setText(text);

@@ -91,6 +91,9 @@ MonitorPage::MonitorPage(MonitorHub* hub, DeviceParameters* parameters, QWidget*
     layout->addWidget(splitter, 1);
 
     m_chart->setSources(TrendDefaults::forDrive(parameters->profile(), m_slave));
+    // While the drive's pages are open its trend goes on, also behind another page (once a
+    // second then): coming back shows what happened meanwhile, not a gap.
+    hub->record(m_slave, this);
 
     connect(hub, &MonitorHub::sample, this, [this](int slave, const MonitorSample& s) {
         if (slave == m_slave)
@@ -141,7 +144,7 @@ MonitorPage::MonitorPage(MonitorHub* hub, DeviceParameters* parameters, QWidget*
     m_look->update();
 }
 
-// Polls while shown: a drive whose monitor tab is in the background costs no traffic.
+// Polls at the chosen rate while shown; behind another page only the recording's once a second.
 void MonitorPage::showEvent(QShowEvent* event)
 {
     QWidget::showEvent(event);

@@ -27,7 +27,8 @@ class TrendChart;
 // out from the profile. Beside them the drive's own panel and LED mirrored (when the profile
 // has a "panelDisplay" role), for a DC controller the motor speed worked out from the
 // commutation frequency; below, a trend of the speeds and the load. Polls through the
-// MonitorHub while the page is shown.
+// MonitorHub while the page is shown, and records the drive's trend once a second while the
+// page exists but is out of sight.
 class MonitorPage : public QWidget
 {
     Q_OBJECT

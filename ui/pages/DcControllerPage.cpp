@@ -4,6 +4,7 @@
 #include "run/RunLiveState.h"
 #include "session/DeviceSession.h"
 #include "session/SerialLock.h"
+#include "session/StoreTracker.h"
 #include "workspace/ParameterField.h"
 #include "workspace/PendingValues.h"
 
@@ -143,12 +144,10 @@ DcControllerPage::DcControllerPage(DeviceParameters* parameters, QWidget* parent
     layout->addWidget(m_commLossNote);
     layout->addWidget(scroll, 1);
 
-    // Writes from anywhere (this page, a parameter table) leave settings unstored.
-    for (const ParameterMeta& m : parameters->profile().parameters) {
-        if (const DeviceParameters::Entry* e = parameters->entry(m.name))
-            m_states.insert(m.name, e->state);
-    }
-    connect(parameters, &DeviceParameters::entryChanged, this, &DcControllerPage::trackWrite);
+    // Writes from anywhere (this page, a parameter table, a restore, the command line's earlier
+    // run) leave settings unstored: the model keeps count (StoreTracker).
+    m_tracker = StoreTracker::of(parameters->session());
+    connect(m_tracker, &StoreTracker::changed, this, &DcControllerPage::updateBanner);
     updatePresetRange();
     updateBanner();
     updateCommLossNote();
@@ -271,27 +270,9 @@ void DcControllerPage::updatePresetRange()
             : tr("The unit and range of the speeds follow the preset speed mode (not read yet)."));
 }
 
-void DcControllerPage::trackWrite(const QString& name)
+QStringList DcControllerPage::unstored() const
 {
-    const DeviceParameters::Entry* e = parameters()->entry(name);
-    if (!e)
-        return;
-    const DeviceParameters::State before = m_states.value(name, DeviceParameters::State::Unread);
-    m_states.insert(name, e->state);
-    const QString command = e->meta->storeWith;
-    if (command.isEmpty() || before != DeviceParameters::State::Writing ||
-        e->state != DeviceParameters::State::Clean)
-        return;
-    if (e->meta->writeBlock.isSet()) {
-        // The block write (15 registers from 0x0080) stored the whole configuration.
-        m_unstored.removeAll(command);
-        updateBanner();
-        return;
-    }
-    if (m_unstored.contains(command))
-        return;
-    m_unstored << command;
-    updateBanner();
+    return m_tracker->unstored();
 }
 
 bool DcControllerPage::bannerShown() const
@@ -303,18 +284,18 @@ void DcControllerPage::updateBanner()
 {
     QStringList what;
     for (auto it = m_storeButtons.cbegin(); it != m_storeButtons.cend(); ++it) {
-        it.value()->setVisible(m_unstored.contains(it.key()));
+        it.value()->setVisible(m_tracker->isUnstored(it.key()));
         it.value()->setEnabled(!m_storing);
     }
-    for (const QString& c : m_unstored)
+    for (const QString& c : m_tracker->unstored())
         what << withoutMnemonic(m_storeButtons.contains(c) ? m_storeButtons.value(c)->text() : c);
-    m_reload->setVisible(m_unstored.contains(kConfig));
+    m_reload->setVisible(m_tracker->isUnstored(kConfig));
     m_reload->setEnabled(!m_storing);
     m_bannerText->setText(tr("<b>Written but not stored:</b> %1. These values act now and are "
                              "lost when the controller is switched off.")
                               .arg(what.join(QStringLiteral(" / ")).toHtmlEscaped()));
     m_banner->setAccessibleName(withoutMnemonic(m_bannerText->text()));
-    m_banner->setVisible(!m_unstored.isEmpty());
+    m_banner->setVisible(!m_tracker->unstored().isEmpty());
 }
 
 QString DcControllerPage::storedWhat(const QString& command) const
@@ -383,8 +364,7 @@ void DcControllerPage::sendStore(const QString& command, const QString& value,
                 emit self->storeFinished(false);
                 return;
             }
-            self->m_unstored.removeAll(command);
-            self->updateBanner();
+            self->updateBanner(); // the tracker saw the store (or reload) go through
             self->setStatus(doneText);
             if (command != kConfig || value != QLatin1String("0")) {
                 emit self->storeFinished(true);

@@ -16,6 +16,7 @@ namespace opentop {
 class MonitorHub;
 class ParameterField;
 class RunLiveState;
+class StoreTracker;
 
 // The DC controller's settings (manual 1.3.4–1.3.8): speed mode, currents, limits, stop times,
 // speed loop PID, preset speed and AI1/AI2 as digital ports. Written settings act at once but
@@ -36,7 +37,7 @@ public:
     void setConfirm(Confirm confirm) { m_confirm = std::move(confirm); }
 
     // Store commands owed for settings written since ("store.config", "store.pid", ...).
-    QStringList unstored() const { return m_unstored; }
+    QStringList unstored() const;
     bool bannerShown() const;
     // The note shown while the controller's communication loss stop is off; empty otherwise.
     QString commLossNote() const;
@@ -67,7 +68,6 @@ private:
     };
     void addGroup(QGridLayout* grid, int row, int column, const QString& title,
                   const QVector<Row>& rows, const QString& note);
-    void trackWrite(const QString& name);
     void updateBanner();
     void updateCommLossNote();
     void updatePresetRange();
@@ -77,8 +77,7 @@ private:
 
     QStringList m_names;
     QHash<QString, ParameterField*> m_fields;
-    QHash<QString, DeviceParameters::State> m_states;
-    QStringList m_unstored;
+    StoreTracker* m_tracker = nullptr;
     QFrame* m_banner;
     QLabel* m_bannerText;
     QHash<QString, QPushButton*> m_storeButtons;

@@ -1,5 +1,6 @@
 #include "pages/RunningDataPage.h"
 
+#include "bus/DriveName.h"
 #include "groups/GroupWriteCheck.h"
 #include "profile/ValueCodec.h"
 #include "run/RunningData.h"
@@ -78,6 +79,11 @@ RunningDataPage::RunningDataPage(DeviceParameters* parameters, QWidget* parent)
             const QString name = nameOf(spno, kColumns[c]);
             if (parameters->entry(name)) {
                 auto* f = new ParameterField(parameters, name, contentArea());
+                // Its message goes to the line under the grid: shown under the field, it made
+                // the rows below jump away from the mouse.
+                f->setMessageOutside(true);
+                connect(f, &ParameterField::messageChanged, this,
+                        &RunningDataPage::updateFieldMessages);
                 m_fields.insert(name, f);
                 grid->addWidget(f, spno, c + 1);
                 chain(f->editor());
@@ -118,6 +124,15 @@ RunningDataPage::RunningDataPage(DeviceParameters* parameters, QWidget* parent)
     grid->setColumnStretch(3, 1);
     grid->setColumnStretch(4, 1);
     layout->addLayout(grid);
+    // The fields' messages, in a place of their own with room for two lines kept free: a
+    // message that comes or goes never moves the grid.
+    m_fieldMessages = new QLabel(contentArea());
+    m_fieldMessages->setObjectName(QStringLiteral("fieldMessages"));
+    m_fieldMessages->setWordWrap(true);
+    m_fieldMessages->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_fieldMessages->setMinimumHeight(2 * m_fieldMessages->fontMetrics().lineSpacing());
+    m_fieldMessages->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    layout->addWidget(m_fieldMessages);
     // The manual's advice on deceleration from high speed, for the values as they will be.
     m_decelWarning = new QLabel(contentArea());
     m_decelWarning->setObjectName(QStringLiteral("decelerationWarning"));
@@ -137,6 +152,32 @@ RunningDataPage::RunningDataPage(DeviceParameters* parameters, QWidget* parent)
     layout->addStretch(1);
     updateRange();
     updateDecelerationWarning();
+    updateFieldMessages();
+}
+
+void RunningDataPage::updateFieldMessages()
+{
+    // In grid order, each named by its setting's label.
+    QStringList lines;
+    bool problem = false;
+    for (int spno = 1; spno <= kRows; ++spno) {
+        for (const char* column : kColumns) {
+            const ParameterField* f = m_fields.value(nameOf(spno, column));
+            if (!f || f->messageText().isEmpty())
+                continue;
+            lines << tr("%1: %2").arg(parameters()->entry(f->parameterName())->meta->label,
+                                      f->messageText());
+            problem = problem || f->messageIsProblem();
+        }
+    }
+    m_fieldMessages->setText(lines.join(QLatin1Char('\n')));
+    m_fieldMessages->setStyleSheet(problem ? QStringLiteral("color: #b01c1c;")
+                                           : QStringLiteral("color: #a05000;"));
+}
+
+QString RunningDataPage::fieldMessages() const
+{
+    return m_fieldMessages->text();
 }
 
 QString RunningDataPage::nameOf(int spno, const char* column)
@@ -274,7 +315,7 @@ void RunningDataPage::initializeRow(int spno)
     QMessageBox box(QMessageBox::Warning, tr("Initialize SPno%1").arg(spno),
                     tr("Reset running data SPno%1 of drive %2 to these factory defaults?")
                         .arg(spno)
-                        .arg(session->slave()),
+                        .arg(DriveName::listed(session)),
                     QMessageBox::Yes | QMessageBox::Cancel, this);
     box.setInformativeText(details);
     box.button(QMessageBox::Yes)->setText(tr("Initialize SPno%1").arg(spno));

@@ -15,7 +15,8 @@ class ParameterField;
 // Running data SPno1–SPno8 as one grid: a row per SPno, columns speed, acceleration,
 // deceleration, direction and an Initialize button. SPno1's speed comes from the external VR
 // and its times from the SS/SD trimmers, so that row shows the speed read-only and has no
-// time registers. The allowed speed range of the drive's variant is shown above the grid.
+// time registers. The allowed speed range of the drive's variant is shown above the grid, the
+// fields' messages below it (in room kept for them, so that the rows never move).
 class RunningDataPage : public ParameterPage
 {
     Q_OBJECT
@@ -30,6 +31,8 @@ public:
     QString rangeText() const;
     // The manual's deceleration advice for the values as they will be written; empty if none.
     QString decelerationWarning() const;
+    // The fields' messages, one line each with the setting's label, as shown under the grid.
+    QString fieldMessages() const;
 
     // Asks for confirmation (naming what is reset to which defaults), sends spnoN.init as an
     // explicit command and reads the row again. Emits operationFinished when done.
@@ -41,6 +44,7 @@ protected:
 
 private:
     void updateDecelerationWarning();
+    void updateFieldMessages();
 
     static QString nameOf(int spno, const char* column);
     QStringList rowSettings(int spno) const;
@@ -54,6 +58,7 @@ private:
     QVector<QPushButton*> m_init; // index spno - 1; null when the profile has no init command
     QLabel* m_range;
     QLabel* m_decelWarning = nullptr;
+    QLabel* m_fieldMessages = nullptr;
     bool m_initializing = false;
 };
 

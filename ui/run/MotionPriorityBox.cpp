@@ -1,4 +1,5 @@
 #include "run/MotionPriorityBox.h"
+#include "bus/DriveName.h"
 #include "groups/GroupWriteCheck.h"
 
 #include "profile/RoleEvaluator.h"
@@ -59,7 +60,7 @@ void MotionPriorityBox::setCurrent(const QString& current)
            "test run is disabled.\n\nSwitching to \"%4\" hands these commands to the bus: the "
            "input terminals no longer start or stop the motor, and the machine's own controls "
            "stay without effect until you switch back to \"%2\".")
-            .arg(m_session->slave())
+            .arg(DriveName::listed(m_session))
             .arg(current, priority->label, wantedLabel()));
 }
 
@@ -84,7 +85,7 @@ void MotionPriorityBox::askToSwitch()
                     tr("Machine number %1 will take run, stop, direction and speed selection "
                        "from the bus (%2 = \"%3\"). Its input terminals then no longer start or "
                        "stop the motor.")
-                            .arg(m_session->slave())
+                            .arg(DriveName::listed(m_session))
                             .arg(priority->label, wantedLabel()) +
                         alsoReaches(),
                     tr("Switch"), [this] { sendSwitch(); });
@@ -105,7 +106,7 @@ void MotionPriorityBox::sendSwitch()
                 return;
             emit self->switched(
                 o.ok, o.ok ? tr("Machine number %1 takes motion commands over the bus now.")
-                                 .arg(self->m_session->slave())
+                                 .arg(DriveName::listed(self->m_session))
                            : tr("Cannot switch the control priority: %1").arg(o.error));
         });
 }
@@ -113,27 +114,28 @@ void MotionPriorityBox::sendSwitch()
 void MotionPriorityBox::askToReturn(QWidget* parent)
 {
     const int slave = m_session->slave();
+    const QString named = DriveName::listed(m_session);
     QPointer<MotionPriorityBox> self(this);
     ConfirmBox::ask(
         parent, tr("Return to I/O priority"),
         tr("Machine number %1 will take run, stop, direction and speed selection from its input "
            "terminals again, and refuse motion commands over the bus. If an input says run, the "
            "motor runs.")
-                .arg(slave) +
+                .arg(named) +
             alsoReaches(),
-        tr("Return to I/O priority"), [self, slave] {
+        tr("Return to I/O priority"), [self, slave, named] {
             if (!self)
                 return;
             emit self->switching(tr("Returning to I/O priority…"));
             auto* actions = new ExitActions(self->m_drives, self);
-            actions->returnToIoPriority({slave}, [self, actions, slave](const QStringList& failed) {
+            actions->returnToIoPriority({slave}, [self, actions, named](const QStringList& failed) {
                 actions->deleteLater();
                 if (!self)
                     return;
                 emit self->switched(
                     failed.isEmpty(),
                     failed.isEmpty()
-                        ? tr("Machine number %1 follows its input terminals again.").arg(slave)
+                        ? tr("Machine number %1 follows its input terminals again.").arg(named)
                         : failed.join(QLatin1Char('\n')));
             });
         });

@@ -5,6 +5,7 @@
 #include "monitor/Freshness.h"
 #include "monitor/MonitorHub.h"
 #include "profile/RoleEvaluator.h"
+#include "run/RunningData.h"
 #include "session/DeviceSession.h"
 
 #include <QGridLayout>
@@ -16,6 +17,7 @@ namespace {
 
 const QString kState = QStringLiteral("state");
 const QString kAlarm = QStringLiteral("alarm");
+const QString kSpno = QStringLiteral("spno");
 constexpr int kAgeTickMs = 250;
 
 } // namespace
@@ -47,6 +49,13 @@ RunLiveState::RunLiveState(MonitorHub* hub, int slave, QWidget* parent)
             addRow(kState, tr("State"));
         if (profile.role(QStringLiteral("alarmActive")))
             addRow(kAlarm, tr("Alarm"));
+        // The running data the drive runs, as it reports it: what the selector below offers to
+        // send is the user's choice, not this.
+        const ParameterMeta* selected =
+            RoleEvaluator::parameter(profile, QStringLiteral("selected"));
+        const ProfileRole* monitored = profile.role(QStringLiteral("monitor"));
+        if (selected && monitored && monitored->parameters.contains(selected->name))
+            addRow(kSpno, tr("Running data"));
     }
     for (int i = 0; i < m_rows.size(); ++i) {
         auto* label = new QLabel(m_rows[i].value->property("label").toString(), this);
@@ -124,6 +133,14 @@ void RunLiveState::showSample(const MonitorSample& sample)
                     text = tr("%1 (%2 %3)").arg(text, v->meta->label, v->text);
             }
             r.value->setText(text.isEmpty() ? tr("not reported") : text);
+        } else if (r.key == kSpno) {
+            const DeviceSession* session = m_hub ? m_hub->drives()->session(m_slave) : nullptr;
+            const std::optional<int> spno =
+                session ? RunningData::selected(
+                              session->profile(),
+                              [&sample](const QString& name) { return sample.rawOf(name); })
+                        : std::nullopt;
+            r.value->setText(spno ? tr("SPno%1").arg(*spno) : tr("not read"));
         } else if (r.key == kAlarm) {
             if (!sample.alarmActive)
                 r.value->setText(tr("not read"));

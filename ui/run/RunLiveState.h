@@ -15,7 +15,8 @@ namespace opentop {
 class MonitorHub;
 
 // What a drive is doing now, on its Test run page: speed, target, load (or a DC controller's
-// output duty), the running state with its direction and the alarm state, from the hub's
+// output duty), the running state with its direction, the alarm state and the running data it
+// runs, from the hub's
 // samples, each with its age. The drive is watched (polled) while this box is visible, so a run
 // started from the page is also in the drive's trend. An old value or a lost link shows grey
 // with the time of the last answer (Freshness), never as live.
@@ -30,6 +31,8 @@ public:
     QString valueText(const QString& row) const;
     QString speedText() const { return valueText(m_speedRow); }
     QString stateText() const { return valueText(QStringLiteral("state")); }
+    // The running data the drive reports it runs ("SPno4"), live like the other rows.
+    QString runningDataText() const { return valueText(QStringLiteral("spno")); }
     QString alarmText() const { return valueText(QStringLiteral("alarm")); }
     // The age column of a row: "0.3 s old" or "last answer 10:31:05 (12 s old)".
     QString ageText(const QString& row) const;

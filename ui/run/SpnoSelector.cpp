@@ -5,6 +5,8 @@
 #include "run/RunningData.h"
 #include "session/DeviceSession.h"
 
+#include <QDateTime>
+#include <QLocale>
 #include <QPointer>
 
 namespace opentop {
@@ -23,6 +25,9 @@ SpnoSelector::SpnoSelector(DeviceSession* session, QWidget* parent)
         addItem(o.label, int(o.value + 1)); // running data N is code N-1
         setItemData(count() - 1, o.label, Qt::UserRole + 1);
     }
+    connect(this, qOverload<int>(&QComboBox::activated), this, [this] { m_userChose = true; });
+    setToolTip(tr("The running data that Select running data sends; \"The drive now\" shows the "
+                  "running data the drive runs"));
 }
 
 void SpnoSelector::refreshLabels()
@@ -37,6 +42,9 @@ void SpnoSelector::refreshLabels()
                 names << n;
         }
     }
+    const ParameterMeta* selected = RoleEvaluator::parameter(profile, QStringLiteral("selected"));
+    if (selected && selected->isReadable())
+        names << selected->name;
     if (names.isEmpty())
         return;
     QPointer<SpnoSelector> self(this);
@@ -60,6 +68,23 @@ void SpnoSelector::refreshLabels()
                 self->setItemText(
                     i, parts.isEmpty() ? base
                                        : tr("%1 — %2").arg(base, parts.join(QStringLiteral(", "))));
+            }
+            const std::optional<int> running =
+                RunningData::selected(prof, [&o](const QString& name) {
+                    const DeviceSession::Outcome r = o.results.value(name);
+                    return r.value.valid ? std::optional<double>(r.value.raw) : std::nullopt;
+                });
+            self->m_driveSpno = running;
+            if (running) {
+                // Until the user picks one, the entry shown is the one the drive runs: SPno1
+                // beside a drive running SPno4 reads as a contradiction.
+                if (!self->m_userChose && self->findData(*running) >= 0)
+                    self->setCurrentIndex(self->findData(*running));
+                self->setToolTip(
+                    tr("The running data that Select running data sends. The drive reported "
+                       "SPno%1 at %2; \"The drive now\" shows what it runs now.")
+                        .arg(*running)
+                        .arg(QLocale().toString(QTime::currentTime(), QStringLiteral("HH:mm:ss"))));
             }
             emit self->labelsRefreshed();
         },

@@ -78,7 +78,7 @@ void StopAllButton::stopAll()
     });
 }
 
-QString StopAllButton::describe(const StopReport& report)
+QString StopAllButton::describe(const StopReport& report, const BusDrives* drives)
 {
     QStringList lines;
     for (const StopBroadcast& b : report.broadcasts) {
@@ -90,16 +90,17 @@ QString StopAllButton::describe(const StopReport& report)
                     "checked; scan the bus to have them checked.");
     for (const StopResult& r : report.drives) {
         const QString after = ValueCodec::formatNumber(r.elapsedMs / 1000.0, 1);
+        const QString slave = drives ? drives->listed(r.slave) : QString::number(r.slave);
         QString line;
         switch (r.state) {
         case StopResult::State::Stopped:
-            line = tr("Machine number %1: stopped after %2 s").arg(r.slave).arg(after);
+            line = tr("Machine number %1: stopped after %2 s").arg(slave).arg(after);
             break;
         case StopResult::State::StillRunning:
-            line = tr("Machine number %1: STILL RUNNING (%2)").arg(r.slave).arg(r.speedText);
+            line = tr("Machine number %1: STILL RUNNING (%2)").arg(slave).arg(r.speedText);
             break;
         case StopResult::State::NoAnswer:
-            line = tr("Machine number %1: NO ANSWER, not confirmed stopped").arg(r.slave);
+            line = tr("Machine number %1: NO ANSWER, not confirmed stopped").arg(slave);
             break;
         }
         if (!r.detail.isEmpty() && r.state != StopResult::State::Stopped)
@@ -111,7 +112,7 @@ QString StopAllButton::describe(const StopReport& report)
 
 void StopAllButton::showReport(const StopReport& report)
 {
-    m_reportText = describe(report);
+    m_reportText = describe(report, m_drives);
     const bool ok = report.broadcastOk() && report.allStopped();
     // With no drive known nothing was checked: the title must not claim they stopped.
     const QString title = !report.broadcastOk()     ? tr("STOP ALL: the stop broadcast FAILED")

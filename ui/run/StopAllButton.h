@@ -45,7 +45,8 @@ signals:
 
 private:
     void showReport(const StopReport& report);
-    static QString describe(const StopReport& report);
+    // `drives` names the machines by their names too ("Machine number 1 (Infeed conveyor 3)").
+    static QString describe(const StopReport& report, const BusDrives* drives = nullptr);
 
     BusDrives* m_drives;
     StopConfirmer::Timing m_timing;

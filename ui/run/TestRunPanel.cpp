@@ -1,6 +1,7 @@
 #include "run/TestRunPanel.h"
 
 #include "bus/BusDrives.h"
+#include "bus/VariantQuestion.h"
 #include "profile/ProfileRegistry.h"
 #include "profile/RoleEvaluator.h"
 #include "profile/ValueCodec.h"
@@ -11,6 +12,7 @@
 #include "run/StartPreview.h"
 #include "session/DeviceSession.h"
 #include "widgets/ConfirmBox.h"
+#include "widgets/DriveHeading.h"
 
 #include <QDateTime>
 #include <QGridLayout>
@@ -42,7 +44,9 @@ TestRunPanel::TestRunPanel(BusDrives* drives, int slave, QWidget* parent)
     , m_control(drives->client(), ProfileRegistry::builtIn(), this)
 {
     auto* layout = new QVBoxLayout(this);
-    layout->addWidget(new QLabel(tr("<b>Test run of machine number %1</b>").arg(slave), this));
+    // The machine's name as it is now, also when it is given while the page is open.
+    layout->addWidget(
+        new DriveHeading(drives, slave, tr("<b>Test run of machine number %1</b>"), this));
     m_message = new QLabel(this);
     m_message->setWordWrap(true);
     m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -221,6 +225,13 @@ void TestRunPanel::run(const RunControl::Command& command, bool starts)
 
 void TestRunPanel::askToStart(const RunControl::Command& command)
 {
+    // Its allowed speeds depend on the variant: a drive that does not report it is asked once.
+    if (!VariantQuestion::ensure(this, m_drives, m_slave, VariantNeed::Purpose::Start)) {
+        setMessage(
+            tr("Not started: the variant of %1 was not given.").arg(m_drives->label(m_slave)),
+            true);
+        return;
+    }
     // What will run, and which other drives the start reaches, read from the drives now.
     m_busy = true;
     updateEnabled();

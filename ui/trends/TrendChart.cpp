@@ -1,6 +1,7 @@
 #include "trends/TrendChart.h"
 
 #include "bus/BusDrives.h"
+#include "bus/DriveName.h"
 #include "monitor/MonitorHub.h"
 #include "monitor/TrendCsv.h"
 #include "trends/TrendCanvas.h"
@@ -84,6 +85,9 @@ TrendChart::~TrendChart()
 QString TrendChart::driveTitle(const BusDrives* drives, int slave)
 {
     const DeviceInfo info = drives ? drives->info(slave) : DeviceInfo();
+    // The machine's name where it has one: "1 (Infeed conveyor 3)", in the legend and the CSV.
+    if (!info.machineName.isEmpty())
+        return DriveName::listed(slave, info.machineName);
     const QString name = info.shortModel(); // "DBU" while the variant is unknown
     return name.isEmpty() ? tr("Drive %1").arg(slave)
                           : QStringLiteral("%1 %2").arg(slave).arg(name);

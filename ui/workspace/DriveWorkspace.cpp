@@ -1,5 +1,7 @@
 #include "workspace/DriveWorkspace.h"
 
+#include "bus/DriveName.h"
+#include "bus/VariantQuestion.h"
 #include "groups/GroupWriteCheck.h"
 #include "session/DeviceParameters.h"
 #include "session/DeviceSession.h"
@@ -83,7 +85,7 @@ void DriveWorkspace::setDrive(DeviceParameters* parameters, const QString& title
     m_parameters = parameters;
     m_title->setText(parameters ? title : tr("Select a drive in the bus list to set it up."));
     if (!parameters)
-        m_status->clear(); // nothing of another drive's last operation
+        setStatus(QString()); // nothing of another drive's last operation
     if (parameters) {
         QStringList editorsDone;
         for (const ProfileGroup& group : parameters->profile().groups) {
@@ -121,8 +123,39 @@ ParameterPage* DriveWorkspace::page(const QString& title) const
     return nullptr;
 }
 
+void DriveWorkspace::setStatus(const QString& text)
+{
+    m_refused = false;
+    m_status->setText(text);
+}
+
+void DriveWorkspace::updateRefusal()
+{
+    if (!m_refused || !m_parameters)
+        return;
+    const QStringList invalid = m_parameters->invalidNames();
+    QString blocker;
+    for (int i = 0; i < m_tabs->count() && invalid.isEmpty() && blocker.isEmpty(); ++i) {
+        auto* page = qobject_cast<ParameterPage*>(m_tabs->widget(i));
+        if (page && !page->writeBlocker().isEmpty())
+            blocker = tr("%1: %2 Nothing was written.").arg(page->title(), page->writeBlocker());
+    }
+    if (!invalid.isEmpty())
+        m_status->setText(tr("Nothing was written: %1")
+                              .arg(m_parameters->invalidSummary(invalid).join(QLatin1Char(' '))));
+    else if (!blocker.isEmpty())
+        m_status->setText(blocker);
+    else if (const int pending = int(m_parameters->pendingNames().size()); pending > 0)
+        setStatus(tr("Every edit is accepted now. Nothing has been written yet: Write all "
+                     "pending sends %n value(s).",
+                     nullptr, pending));
+    else
+        setStatus(QString());
+}
+
 void DriveWorkspace::updateButtons()
 {
+    updateRefusal();
     // Once: every value read (a monitor's, many a second) comes here.
     const QStringList pendingNames = m_parameters ? m_parameters->pendingNames() : QStringList();
     const int pending = int(pendingNames.size());
@@ -151,10 +184,9 @@ void DriveWorkspace::refreshAll()
 {
     if (!m_parameters)
         return;
-    m_status->setText(tr("Reading the drive…"));
+    setStatus(tr("Reading the drive…"));
     m_parameters->refresh({}, [this](int failed) {
-        m_status->setText(failed ? tr("%n value(s) could not be read", nullptr, failed)
-                                 : QString());
+        setStatus(failed ? tr("%n value(s) could not be read", nullptr, failed) : QString());
         emit operationFinished();
     });
 }
@@ -163,10 +195,18 @@ void DriveWorkspace::writeAll()
 {
     if (!m_parameters || !m_parameters->hasPending())
         return;
+    // The variant first (asked once, when the model says the edits depend on it): the edits
+    // are judged against it.
+    if (!VariantQuestion::ensure(this, m_parameters->session(), VariantNeed::Purpose::Write,
+                                 m_parameters->pendingNames())) {
+        setStatus(tr("Nothing was written."));
+        return;
+    }
     const QStringList invalid = m_parameters->invalidNames();
     if (!invalid.isEmpty()) { // the model writes nothing then; say which and show the first
-        m_status->setText(tr("Nothing was written: %1")
-                              .arg(m_parameters->invalidSummary(invalid).join(QLatin1Char(' '))));
+        setStatus(tr("Nothing was written: %1")
+                      .arg(m_parameters->invalidSummary(invalid).join(QLatin1Char(' '))));
+        m_refused = true;
         for (int i = 0; i < m_tabs->count(); ++i) {
             auto* page = qobject_cast<ParameterPage*>(m_tabs->widget(i));
             if (page && page->parameterNames().contains(invalid.first()))
@@ -178,7 +218,8 @@ void DriveWorkspace::writeAll()
         auto* page = qobject_cast<ParameterPage*>(m_tabs->widget(i));
         const QString blocker = page ? page->writeBlocker() : QString();
         if (!blocker.isEmpty()) {
-            m_status->setText(tr("%1: %2 Nothing was written.").arg(page->title(), blocker));
+            setStatus(tr("%1: %2 Nothing was written.").arg(page->title(), blocker));
+            m_refused = true;
             m_tabs->setCurrentIndex(i);
             return;
         }
@@ -187,14 +228,14 @@ void DriveWorkspace::writeAll()
     if (!GroupWriteCheck::confirm(
             this, m_parameters->session(),
             tr("Write %n pending value(s) to machine number %1", nullptr, count)
-                .arg(m_parameters->session()->slave()))) {
-        m_status->setText(tr("Nothing was written."));
+                .arg(DriveName::listed(m_parameters->session())))) {
+        setStatus(tr("Nothing was written."));
         return;
     }
-    m_status->setText(tr("Writing %n value(s)…", nullptr, count));
+    setStatus(tr("Writing %n value(s)…", nullptr, count));
     m_parameters->write({}, [this, count](int failed) {
-        m_status->setText(failed ? tr("%n write(s) failed; see the marked fields", nullptr, failed)
-                                 : tr("%n value(s) written and verified", nullptr, count));
+        setStatus(failed ? tr("%n write(s) failed; see the marked fields", nullptr, failed)
+                         : tr("%n value(s) written and verified", nullptr, count));
         updateButtons();
         emit operationFinished();
     });

@@ -43,6 +43,11 @@ signals:
 
 private:
     void updateButtons();
+    // "Nothing was written" for edits not accepted or a page's blocker follows the edits: it
+    // goes (or says what is left) once its cause is gone.
+    void updateRefusal();
+    void setStatus(const QString& text);
+    bool m_refused = false;
 
     static QHash<QString, EditorFactory>& editors();
 

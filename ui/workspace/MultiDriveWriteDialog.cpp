@@ -2,6 +2,7 @@
 
 #include "bus/BusDrives.h"
 #include "bus/BusGroupTracker.h"
+#include "bus/VariantQuestion.h"
 #include "groups/GroupWriteCheck.h"
 #include "profile/ValueCodec.h"
 #include "run/RunningData.h"
@@ -66,8 +67,7 @@ MultiDriveWriteDialog::MultiDriveWriteDialog(BusDrives* drives, QVector<int> sla
         const DeviceInfo info = m_drives->info(slave);
         for (int c = 0; c < ColumnCount; ++c)
             m_table->setItem(row, c, new QTableWidgetItem);
-        setCell(slave, MachineNumber,
-                QStringLiteral("%1 (%2)").arg(slave).arg(DeviceInfo::hexText(slave)));
+        setCell(slave, MachineNumber, m_drives->listed(slave)); // with the machine's name
         setCell(slave, Model, info.model);
         if (!m_writable.contains(slave))
             setCell(
@@ -214,10 +214,12 @@ void MultiDriveWriteDialog::check()
         const ValueSpec& spec = m->specFor(context, &unresolved);
         if (!unresolved.isEmpty() && m_problem.isEmpty())
             m_problem = tr("Drive %1: %2 is not known yet, and the allowed values depend on it.")
-                            .arg(slave)
+                            .arg(m_drives->listed(slave))
                             .arg(unresolved);
         units.insert(spec.unit);
-        allowed << tr("drive %1: %2").arg(slave).arg(ValueCodec::allowedText(*m, context));
+        allowed << tr("drive %1: %2")
+                       .arg(m_drives->listed(slave))
+                       .arg(ValueCodec::allowedText(*m, context));
     }
     // The same number would mean different things on drives whose unit differs.
     if (m_problem.isEmpty() && units.size() > 1)
@@ -230,7 +232,7 @@ void MultiDriveWriteDialog::check()
             ValueCodec::encodeText(*meta(slave), text, m_drives->session(slave)->context());
         if (!e.ok)
             m_problem = tr("Not allowed on drive %1 (%2): %3")
-                            .arg(slave)
+                            .arg(m_drives->listed(slave))
                             .arg(m_drives->info(slave).model, e.error);
     }
     if (m_writable.isEmpty())
@@ -249,7 +251,7 @@ void MultiDriveWriteDialog::check()
               RunningData::warningFor(profile, meta(slave)->name, qint64(e.raw), context),
               lockWarning(slave, text)})
             if (!w.isEmpty())
-                advice << tr("Drive %1: %2").arg(slave).arg(w);
+                advice << tr("Drive %1: %2").arg(m_drives->listed(slave)).arg(w);
     }
     m_unit->setText(units.size() == 1 ? *units.cbegin() : QString());
     m_value->setToolTip(tr("Allowed on %1").arg(allowed.join(QStringLiteral("; "))));
@@ -286,6 +288,13 @@ void MultiDriveWriteDialog::writeToAll()
 {
     if (busy())
         return;
+    // Drives that do not report their variant, where the setting's allowed values depend on it:
+    // asked once each, before the value is judged against them.
+    for (int slave : m_writable) {
+        if (!VariantQuestion::ensure(this, m_drives, slave, VariantNeed::Purpose::Write,
+                                     {meta(slave)->name}))
+            return; // nothing is sent
+    }
     check(); // against the drives' state now, not when the text was typed
     const QString text = m_value->text().trimmed();
     if (!m_problem.isEmpty() || text.isEmpty())
@@ -294,7 +303,7 @@ void MultiDriveWriteDialog::writeToAll()
     QStringList locks;
     for (int slave : m_writable)
         if (const QString w = lockWarning(slave, text); !w.isEmpty())
-            locks << tr("Drive %1: %2").arg(slave).arg(w);
+            locks << tr("Drive %1: %2").arg(m_drives->listed(slave)).arg(w);
     if (locks.isEmpty()) {
         writeConfirmed(text);
         return;

@@ -1,5 +1,7 @@
 #include "workspace/ParameterField.h"
 
+#include "bus/BusDrives.h"
+#include "bus/VariantQuestion.h"
 #include "profile/ValueCodec.h"
 #include "session/DeviceParameters.h"
 #include "session/DeviceSession.h"
@@ -8,6 +10,8 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPointer>
+#include <QTimer>
 #include <QVBoxLayout>
 
 namespace opentop {
@@ -132,8 +136,34 @@ void ParameterField::check(const QString& text)
 
 void ParameterField::commit(const QString& text)
 {
-    if (m_syncing || text.trimmed().isEmpty())
+    if (m_syncing || text.trimmed().isEmpty() || m_askingVariant)
         return;
+    // Its allowed values depend on the variant of a drive that does not report it: the variant
+    // is asked first (once), so that the edit is judged against the drive's own limits. Later,
+    // not inside the line edit's own focus change (the question takes the focus).
+    const BusDrives* drives = BusDrives::of(m_parameters->session());
+    if (drives && VariantNeed::needed(*drives, m_parameters->session()->slave(),
+                                      VariantNeed::Purpose::Write, {m_name})) {
+        m_askingVariant = true;
+        QPointer<ParameterField> self(this);
+        QTimer::singleShot(0, this, [self, text] {
+            if (!self)
+                return;
+            const bool go = VariantQuestion::ensure(self, self->m_parameters->session(),
+                                                    VariantNeed::Purpose::Write, {self->m_name});
+            self->m_askingVariant = false;
+            if (go)
+                self->commitNow(text);
+            else
+                self->sync(); // cancelled: the edit is dropped, the drive's value shown again
+        });
+        return;
+    }
+    commitNow(text);
+}
+
+void ParameterField::commitNow(const QString& text)
+{
     m_problem.clear(); // the model has the edit now, accepted or refused (kept as invalid)
     m_typingWarning.clear();
     m_parameters->setPending(m_name, text);
@@ -262,11 +292,25 @@ void ParameterField::applyStyle()
         m_message->setStyleSheet(messageStyle);
     if (problem.isEmpty() && !warning.isEmpty())
         editor()->setAccessibleDescription(warning);
-    if (m_message->text() != message)
+    const bool changed = m_message->text() != message;
+    if (changed)
         m_message->setText(message);
-    m_message->setVisible(!message.isEmpty());
+    m_message->setVisible(!message.isEmpty() && !m_messageOutside);
     if (!m_problem.isEmpty())
         editor()->setToolTip(m_problem);
+    if (changed)
+        emit messageChanged();
+}
+
+QString ParameterField::messageText() const
+{
+    return m_message->text();
+}
+
+void ParameterField::setMessageOutside(bool outside)
+{
+    m_messageOutside = outside;
+    m_message->setVisible(!m_message->text().isEmpty() && !outside);
 }
 
 } // namespace opentop

@@ -37,6 +37,12 @@ public:
     // warning shown at the field, naming the recommended range; empty otherwise.
     QString warning() const;
     QLabel* messageLabel() const { return m_message; }
+    // The message shown for the field now (under it, or by the page when outside).
+    QString messageText() const;
+    bool messageIsProblem() const { return !problem().isEmpty(); }
+    // In a grid the message goes to the page's own line (messageChanged) instead of under the
+    // field, so that a message never moves the rows below under the mouse.
+    void setMessageOutside(bool outside);
     // Programmatic input, as if typed and confirmed (tests, multi-field editors).
     void enter(const QString& text);
     // Where allowed values and drop-down options come from; by default the session's context
@@ -44,8 +50,12 @@ public:
     // I/O functions of a pending control mode) supplies its own. Re-syncs the field.
     void setContextProvider(std::function<ValueContext()> provider);
 
+signals:
+    void messageChanged();
+
 private:
     void commit(const QString& text);
+    void commitNow(const QString& text);
     void check(const QString& text);
     void applyStyle();
     ValueContext context() const;
@@ -59,6 +69,8 @@ private:
     QString m_problem;       // refusal of text being typed, before it is confirmed
     QString m_typingWarning; // the recommendation warning of text being typed
     bool m_syncing = false;
+    bool m_askingVariant = false; // the variant question is open for an edit of this field
+    bool m_messageOutside = false;
     std::function<ValueContext()> m_contextProvider;
 };
 

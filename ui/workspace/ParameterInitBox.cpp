@@ -1,6 +1,7 @@
 #include "workspace/ParameterInitBox.h"
 
 #include "ModbusClient.h"
+#include "bus/DriveName.h"
 #include "groups/GroupWriteCheck.h"
 #include "session/DeviceParameters.h"
 #include "session/DeviceSession.h"
@@ -115,21 +116,23 @@ void ParameterInitBox::ask(const ParameterInitialiser::Plan& plan)
                    tr("Your %n unwritten edit(s) of this drive are discarded.", nullptr, edits);
     // A group parent's children execute the initialisation too.
     const QString reach = GroupWriteCheck::reachText(session);
-    details += QStringLiteral("\n\n") +
-               (reach.isEmpty() ? tr("Sent: %1 to machine %2 only.").arg(command).arg(slave)
-                                : tr("Sent: %1 to machine %2.").arg(command).arg(slave) +
-                                      QLatin1Char(' ') + reach);
+    details +=
+        QStringLiteral("\n\n") +
+        (reach.isEmpty()
+             ? tr("Sent: %1 to machine %2 only.").arg(command).arg(DriveName::listed(session))
+             : tr("Sent: %1 to machine %2.").arg(command).arg(DriveName::listed(session)) +
+                   QLatin1Char(' ') + reach);
     m_confirmed = false;
-    QMessageBox* box =
-        ConfirmBox::ask(this, tr("Initialise drive %1").arg(slave),
-                        tr("Reset every setting of drive %1 (%2) to its factory defaults?")
-                            .arg(slave)
-                            .arg(session->variant().isEmpty() ? session->profile().name
-                                                              : session->variant().toUpper()),
-                        tr("Initialise drive %1").arg(slave), [this] {
-                            m_confirmed = true;
-                            send();
-                        });
+    QMessageBox* box = ConfirmBox::ask(
+        this, tr("Initialise drive %1").arg(DriveName::listed(session)),
+        tr("Reset every setting of %1 to its factory defaults?")
+            .arg(DriveName::withModel(slave, session->machineName(),
+                                      session->variant().isEmpty() ? session->profile().name
+                                                                   : session->variant().toUpper())),
+        tr("Initialise drive %1").arg(slave), [this] {
+            m_confirmed = true;
+            send();
+        });
     box->setInformativeText(details);
     // Cancel, Escape or closing the box: nothing is sent.
     connect(box, &QDialog::finished, this, [this] {

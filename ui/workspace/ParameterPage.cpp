@@ -1,5 +1,7 @@
 #include "workspace/ParameterPage.h"
 
+#include "bus/DriveName.h"
+#include "bus/VariantQuestion.h"
 #include "groups/GroupWriteCheck.h"
 #include "session/DeviceParameters.h"
 #include "session/DeviceSession.h"
@@ -62,6 +64,8 @@ ParameterPage::ParameterPage(DeviceParameters* parameters, const QString& title,
             updateButtons();
             if (m_pending != pending)
                 emit pendingChanged();
+            if (m_refusal != Refusal::None)
+                updateRefusal();
         }
     });
     // parameterNames() is the subclass's: ask it once construction is complete.
@@ -83,6 +87,7 @@ void ParameterPage::showEvent(QShowEvent* event)
 
 void ParameterPage::setStatus(const QString& text, bool error)
 {
+    m_refusal = Refusal::None;
     m_status->setText(text);
     m_status->setStyleSheet(error ? QStringLiteral("color: #b01c1c;") : QString());
 }
@@ -92,13 +97,51 @@ QString ParameterPage::statusText() const
     return m_status->text();
 }
 
-void ParameterPage::updateButtons()
+QStringList ParameterPage::pendingOnPage() const
 {
     QStringList pending;
     for (const QString& n : m_parameters->pendingNames()) {
         if (parameterNames().contains(n))
             pending << n;
     }
+    return pending;
+}
+
+void ParameterPage::showRefusal(Refusal refusal)
+{
+    const QStringList pending = pendingOnPage();
+    if (refusal == Refusal::Invalid) {
+        const QStringList invalid = m_parameters->invalidNames(pending);
+        setStatus(
+            tr("Nothing was written: %n field(s) not accepted. %1", nullptr, int(invalid.size()))
+                .arg(m_parameters->invalidSummary(invalid).join(QLatin1Char(' '))),
+            true);
+    } else {
+        setStatus(writeBlocker(), true); // nothing is sent
+    }
+    m_refusal = refusal;
+}
+
+void ParameterPage::updateRefusal()
+{
+    const QStringList pending = pendingOnPage();
+    const bool gone = m_refusal == Refusal::Invalid ? m_parameters->invalidNames(pending).isEmpty()
+                                                    : writeBlocker().isEmpty();
+    if (!gone) {
+        showRefusal(m_refusal); // the fields still refused, as they are now
+        return;
+    }
+    // The cause is gone: say where things stand, not what stopped an earlier click.
+    setStatus(pending.isEmpty()
+                  ? QString()
+                  : tr("Every field is accepted now. Nothing has been written yet: Write page "
+                       "sends %n value(s).",
+                       nullptr, int(pending.size())));
+}
+
+void ParameterPage::updateButtons()
+{
+    const QStringList pending = pendingOnPage();
     m_pending = int(pending.size());
     m_write->setEnabled(!m_busy && !pending.isEmpty());
     m_revert->setEnabled(!m_busy && !pending.isEmpty());
@@ -129,20 +172,20 @@ void ParameterPage::refresh()
 
 void ParameterPage::writePage()
 {
-    QStringList pending;
-    for (const QString& n : m_parameters->pendingNames()) {
-        if (parameterNames().contains(n))
-            pending << n;
-    }
+    const QStringList pending = pendingOnPage();
     if (pending.isEmpty())
         return;
+    // Values whose allowed set depends on the variant: a drive that does not report it is
+    // asked once (the model decides when), before the edits are judged against it.
+    if (!VariantQuestion::ensure(this, m_parameters->session(), VariantNeed::Purpose::Write,
+                                 pending)) {
+        setStatus(tr("Nothing was written."));
+        return;
+    }
     // All or nothing: with a field not accepted, no field of the page is written.
     const QStringList invalid = m_parameters->invalidNames(pending);
     if (!invalid.isEmpty()) {
-        setStatus(
-            tr("Nothing was written: %n field(s) not accepted. %1", nullptr, int(invalid.size()))
-                .arg(m_parameters->invalidSummary(invalid).join(QLatin1Char(' '))),
-            true);
+        showRefusal(Refusal::Invalid);
         for (ParameterField* f : findChildren<ParameterField*>()) {
             if (f->parameterName() == invalid.first() && f->isEnabled()) {
                 f->setFocus();
@@ -152,9 +195,8 @@ void ParameterPage::writePage()
         emit operationFinished();
         return;
     }
-    const QString blocker = writeBlocker();
-    if (!blocker.isEmpty()) {
-        setStatus(blocker, true); // nothing is sent
+    if (!writeBlocker().isEmpty()) {
+        showRefusal(Refusal::Blocker); // nothing is sent
         return;
     }
     if (!confirmWrite(pending)) {
@@ -166,7 +208,7 @@ void ParameterPage::writePage()
                                   tr("Write %n value(s) of the page %1 to machine number %2",
                                      nullptr, int(pending.size()))
                                       .arg(m_title)
-                                      .arg(m_parameters->session()->slave()))) {
+                                      .arg(DriveName::listed(m_parameters->session())))) {
         setStatus(tr("Nothing was written."));
         return;
     }

@@ -56,7 +56,20 @@ protected:
     void showEvent(QShowEvent* event) override;
 
 private:
+    // Why the status says nothing was written, while that lasts: it follows the fields (a field
+    // corrected, reverted, or the page's blocker gone), so that a refusal never outlives its
+    // cause.
+    enum class Refusal
+    {
+        None,
+        Invalid, // fields not accepted
+        Blocker, // writeBlocker()
+    };
     void updateButtons();
+    QStringList pendingOnPage() const;
+    void showRefusal(Refusal refusal);
+    void updateRefusal();
+    Refusal m_refusal = Refusal::None;
 
     DeviceParameters* m_parameters;
     QString m_title;

@@ -253,20 +253,27 @@ TEST_F(AlarmBusTest, CsvTextHoldsEveryRecordWithItsRemedy)
     AlarmExport::DriveReport d;
     d.slave = 1;
     d.model = QStringLiteral("DBU200-D");
+    d.name = QStringLiteral("Infeed, conveyor 3"); // the comma is quoted
     d.report = await<AlarmHistory::Report>([&](auto done) { history.read(done); });
     ASSERT_TRUE(d.report.ok);
     const CodeEntry overload = *d.report.histories[0].records[0].entry;
     const QString text = AlarmExport::csv({d});
     const QStringList lines = text.split(QStringLiteral("\r\n"), Qt::SkipEmptyParts);
     ASSERT_EQ(lines.size(), 3) << qPrintable(text);
-    EXPECT_EQ(lines[0], QStringLiteral("Machine,Model,Kind,Record,Code,Panel code,Name,Cleared "
-                                       "by,Cause,Remedy"));
-    EXPECT_TRUE(
-        lines[1].startsWith(QStringLiteral("1,DBU200-D,alarm,1,07h,AL007,Overload,Alarm-Reset,")))
+    EXPECT_EQ(lines[0], QStringLiteral("Machine,Machine name,Model,Kind,Record,Code,Panel code,"
+                                       "Name,Cleared by,Cause,Remedy"));
+    EXPECT_TRUE(lines[1].startsWith(QStringLiteral(
+        "1,\"Infeed, conveyor 3\",DBU200-D,alarm,1,07h,AL007,Overload,Alarm-Reset,")))
         << qPrintable(lines[1]);
     EXPECT_TRUE(text.contains(overload.remedy) ||
                 text.contains(QLatin1Char('"') + overload.remedy + QLatin1Char('"')));
-    EXPECT_TRUE(lines[2].startsWith(QStringLiteral("1,DBU200-D,warning,1,17h,WR017,")));
+    // The remedy names the setting as the program shows it, not its register address.
+    EXPECT_FALSE(overload.remedy.contains(QStringLiteral("0x1011"))) << qPrintable(overload.remedy);
+    EXPECT_TRUE(overload.remedy.contains(
+        QStringLiteral("Overload alarm output time (Alarm/warning parameters)")))
+        << qPrintable(overload.remedy);
+    EXPECT_TRUE(lines[2].startsWith(
+        QStringLiteral("1,\"Infeed, conveyor 3\",DBU200-D,warning,1,17h,WR017,")));
 }
 
 TEST_F(AlarmBusTest, ExportWritesTheFileOfAllDrives)

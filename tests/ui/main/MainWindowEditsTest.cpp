@@ -5,6 +5,7 @@
 
 #include "monitor/DeviceMonitor.h"
 #include "monitor/PanelMirror.h"
+#include "pages/RunningDataPage.h"
 #include "pages/SpeedUnitsPage.h"
 #include "profile/SpeedDisplay.h"
 #include "workspace/ParameterInitBox.h"
@@ -107,13 +108,19 @@ TEST_F(MainWindowEditsTest, APageWithAFieldNotAcceptedWritesNothingAndSaysWhyAtT
     speed->enter(QStringLiteral("5000")); // above the 3000 r/min the drive takes
     EXPECT_TRUE(accel->problem().isEmpty()) << qPrintable(accel->problem());
     EXPECT_FALSE(speed->problem().isEmpty());
-    // In words at the field, not only in its tooltip: the allowed range with its unit.
-    QLabel* message = speed->messageLabel();
-    EXPECT_TRUE(message->isVisible());
-    EXPECT_TRUE(message->text().contains(QStringLiteral("250–3000 r/min")))
-        << qPrintable(message->text());
-    EXPECT_FALSE(message->text().contains(QStringLiteral("spno2"))) << qPrintable(message->text());
-    EXPECT_FALSE(accel->messageLabel()->isVisible());
+    // In words, not only in its tooltip: the allowed range with its unit. The running data grid
+    // says it on its message line under the grid (issue 24: under the field it moved the rows).
+    auto* grid = qobject_cast<RunningDataPage*>(page);
+    ASSERT_NE(grid, nullptr);
+    const QString speedLabel = params->entry(QStringLiteral("spno2.speed"))->meta->label;
+    EXPECT_TRUE(speed->messageText().contains(QStringLiteral("250–3000 r/min")))
+        << qPrintable(speed->messageText());
+    EXPECT_FALSE(speed->messageText().contains(QStringLiteral("spno2")));
+    EXPECT_FALSE(speed->messageLabel()->isVisible());
+    EXPECT_TRUE(grid->fieldMessages().startsWith(speedLabel + QStringLiteral(": Not accepted")))
+        << qPrintable(grid->fieldMessages());
+    EXPECT_FALSE(
+        grid->fieldMessages().contains(params->entry(QStringLiteral("spno2.accel"))->meta->label));
     // The refused text stays in the field, as an edit that can be reverted.
     auto* speedEdit = qobject_cast<QLineEdit*>(speed->editor());
     ASSERT_NE(speedEdit, nullptr);
@@ -143,7 +150,7 @@ TEST_F(MainWindowEditsTest, APageWithAFieldNotAcceptedWritesNothingAndSaysWhyAtT
     EXPECT_FALSE(params->hasPending());
     EXPECT_EQ(speedEdit->text(), QString::number(speedBefore));
     EXPECT_TRUE(speed->problem().isEmpty());
-    EXPECT_FALSE(message->isVisible());
+    EXPECT_TRUE(grid->fieldMessages().isEmpty()) << qPrintable(grid->fieldMessages());
     EXPECT_TRUE(speedEdit->styleSheet().isEmpty()) << qPrintable(speedEdit->styleSheet());
 
     // Typed but not confirmed, then Re-read: the valid value read has no red frame.
@@ -157,7 +164,7 @@ TEST_F(MainWindowEditsTest, APageWithAFieldNotAcceptedWritesNothingAndSaysWhyAtT
     ASSERT_TRUE(waitFor([&] { return reread; }));
     EXPECT_EQ(speedEdit->text(), QString::number(speedBefore));
     EXPECT_TRUE(speedEdit->styleSheet().isEmpty()) << qPrintable(speedEdit->styleSheet());
-    EXPECT_FALSE(message->isVisible());
+    EXPECT_TRUE(grid->fieldMessages().isEmpty()) << qPrintable(grid->fieldMessages());
 
     // Corrected, the page is written.
     speed->enter(QStringLiteral("2200"));

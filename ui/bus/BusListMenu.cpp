@@ -1,0 +1,108 @@
+#include "bus/BusListMenu.h"
+
+#include "bus/BusDrives.h"
+#include "bus/BusPanel.h"
+#include "bus/DriveName.h"
+#include "profile/ProfileRegistry.h"
+
+#include <QActionGroup>
+#include <QInputDialog>
+#include <QLineEdit>
+#include <QMenu>
+
+namespace opentop {
+
+BusListMenu::BusListMenu(BusPanel* panel, BusDrives* drives)
+    : QObject(panel)
+    , m_panel(panel)
+    , m_drives(drives)
+{
+}
+
+QMenu* BusListMenu::menuFor(const QVector<int>& slaves, QWidget* parent)
+{
+    auto* menu = new QMenu(parent);
+    if (slaves.isEmpty())
+        return menu;
+    addVariants(menu, slaves);
+    if (slaves.size() == 1) {
+        QAction* name = menu->addAction(tr("&Name this machine…"));
+        name->setObjectName(QStringLiteral("nameMachine"));
+        name->setShortcut(QKeySequence(Qt::Key_F2));
+        connect(name, &QAction::triggered, this,
+                [this, slave = slaves.first()] { askName(slave); });
+    }
+    QAction* identify = menu->addAction(tr("&Identify again"));
+    connect(identify, &QAction::triggered, this, [this, slaves] {
+        for (int s : slaves)
+            m_panel->addDrive(s);
+    });
+    identify->setEnabled(!m_panel->isScanning());
+    QAction* remove = menu->addAction(tr("&Remove from list"));
+    connect(remove, &QAction::triggered, this, [this, slaves] {
+        for (int s : slaves)
+            m_drives->remove(s);
+    });
+    remove->setEnabled(!m_panel->isScanning());
+    return menu;
+}
+
+void BusListMenu::addVariants(QMenu* menu, const QVector<int>& slaves)
+{
+    const DeviceInfo first = m_drives->info(slaves.first());
+    const Profile* profile = ProfileRegistry::builtIn().family(first.family);
+    // A variant applies to the selected drives of the same family.
+    QVector<int> sameFamily;
+    for (int s : slaves) {
+        if (m_drives->info(s).family == first.family &&
+            m_drives->info(s).state == DeviceInfo::State::Present)
+            sameFamily << s;
+    }
+    if (!profile || profile->variants.size() < 2 || sameFamily.isEmpty())
+        return;
+    QMenu* variants = menu->addMenu(tr("&Variant"));
+    variants->setToolTipsVisible(true);
+    auto* group = new QActionGroup(variants);
+    for (const ProfileVariant& v : profile->variants) {
+        QAction* a = variants->addAction(v.model);
+        a->setObjectName(v.id);
+        a->setToolTip(v.label);
+        a->setCheckable(true);
+        a->setChecked(first.variant == v.id);
+        group->addAction(a);
+        connect(a, &QAction::triggered, this, [this, sameFamily, id = v.id] {
+            for (int s : sameFamily)
+                m_drives->setVariant(s, id);
+        });
+    }
+}
+
+void BusListMenu::askName(int slave)
+{
+    // Asked again with the text as typed until the model takes it or the user cancels.
+    QString text = m_drives->name(slave);
+    QString problem;
+    for (;;) {
+        QString label = tr("Name of %1 (up to %2 characters; empty removes the name):")
+                            .arg(m_drives->label(slave))
+                            .arg(DriveName::kMaxLength);
+        if (!problem.isEmpty())
+            label = problem + QStringLiteral("\n\n") + label;
+        bool ok = false;
+        text = QInputDialog::getText(m_panel, tr("Name this machine"), label, QLineEdit::Normal,
+                                     text, &ok);
+        if (!ok)
+            return;
+        problem = m_drives->setName(slave, text);
+        if (problem.isEmpty()) {
+            emit message(m_drives->name(slave).isEmpty()
+                             ? tr("Machine number %1 has no name now.").arg(slave)
+                             : tr("Machine number %1 is now named %2.")
+                                   .arg(slave)
+                                   .arg(m_drives->name(slave)));
+            return;
+        }
+    }
+}
+
+} // namespace opentop
