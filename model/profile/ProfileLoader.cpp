@@ -1,5 +1,7 @@
 #include "profile/ProfileLoader.h"
 
+#include "LineFormat.h"
+
 #include "profile/JsonReader.h"
 #include "profile/ParameterReader.h"
 
@@ -77,6 +79,21 @@ bool readHeader(const QJsonObject& root, JsonReader& json, Profile* p)
         p->serial.bauds << b.toInt();
     p->serial.powerOnDelayMs =
         int(json.integer(serial, QStringLiteral("powerOnDelayMs"), false).value_or(0));
+    const QString defaultFrame =
+        LineFormat{p->serial.baud, p->serial.parity, 8, p->serial.stopBits}.frameText();
+    for (const QJsonValue& f : serial.value(QStringLiteral("formats")).toArray()) {
+        const std::optional<LineFormat> format = LineFormat::parse(f.toString(), p->serial.baud);
+        if (!format || format->baud != p->serial.baud)
+            return json.fail(
+                tr("serial.formats: \"%1\" is not a format such as 8N1 or 8E1").arg(f.toString()));
+        p->serial.formats << format->frameText();
+    }
+    if (p->serial.formats.isEmpty())
+        p->serial.formats << defaultFrame;
+    if (!p->serial.formats.contains(defaultFrame))
+        return json.fail(tr("serial.formats must hold the default format %1").arg(defaultFrame));
+    p->serial.formatHelp =
+        json.string(serial, QStringLiteral("formatHelp"), false).value_or(QString());
     if (p->serial.powerOnDelayMs < 0 || p->serial.powerOnDelayMs > 60000)
         return json.fail(tr("serial.powerOnDelayMs must be 0–60000"));
 

@@ -50,8 +50,12 @@ BusRecallBar::BusRecallBar(BusDrives* drives, const ConnectionSettings& settings
         m_restore->setToolTip(tr("Identify the drives at these machine numbers again, with the "
                                  "variants set last time"));
         const QHash<int, QString> types = BusMemory::types(remembered);
-        connect(m_restore, &QPushButton::clicked, this, [this, types] {
+        const QMap<int, LineFormat> lines = BusMemory::lines(remembered);
+        connect(m_restore, &QPushButton::clicked, this, [this, types, lines] {
             hide();
+            // Drives of another format than the port's are asked in theirs, as last time.
+            for (auto it = lines.begin(); it != lines.end(); ++it)
+                m_drives->setLine(it.key(), *it);
             emit restoreRequested(types);
         });
     } else {
