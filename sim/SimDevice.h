@@ -1,7 +1,6 @@
 #pragma once
 
 #include "LineFormat.h"
-
 #include "SimDefects.h"
 #include "SimRegisters.h"
 #include "profile/Profile.h"

@@ -1,7 +1,6 @@
 #include "bus/BusDrives.h"
 
 #include "ModbusClient.h"
-
 #include "profile/ProfileRegistry.h"
 #include "session/DeviceParameters.h"
 #include "session/DeviceSession.h"

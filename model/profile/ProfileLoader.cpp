@@ -1,7 +1,6 @@
 #include "profile/ProfileLoader.h"
 
 #include "LineFormat.h"
-
 #include "profile/JsonReader.h"
 #include "profile/ParameterReader.h"
 

@@ -45,17 +45,17 @@ protected:
     CliResult run(const QStringList& command)
     {
         QProcess cli;
-        cli.start(cliProgram(), QStringList{QStringLiteral("--port"), sim.pty,
-                                            QStringLiteral("--variant"), QStringLiteral("1=dbu200")} +
-                                    command);
+        cli.start(cliProgram(),
+                  QStringList{QStringLiteral("--port"), sim.pty, QStringLiteral("--variant"),
+                              QStringLiteral("1=dbu200")} +
+                      command);
         EXPECT_TRUE(cli.waitForStarted(5000));
         return finishCli(cli, 60000);
     }
 
     QStringList driveFormat() const
     {
-        return {QStringLiteral("--drive-format"),
-                QStringLiteral("7=") + GetParam().token()};
+        return {QStringLiteral("--drive-format"), QStringLiteral("7=") + GetParam().token()};
     }
 
     SimProcess sim;

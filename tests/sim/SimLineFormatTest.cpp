@@ -23,8 +23,8 @@ const LineFormat k8E1{19200, 'E', 8, 1};
 
 bool answers(SimBus& bus, int slave, const LineFormat& line)
 {
-    const QByteArray adu = RtuFrame::encodeRequest(ModbusRequest::readHolding(quint8(slave),
-                                                                              0x0000, 1));
+    const QByteArray adu =
+        RtuFrame::encodeRequest(ModbusRequest::readHolding(quint8(slave), 0x0000, 1));
     return !bus.handleFrame(adu, bus.nowMs(), line).reply.isEmpty();
 }
 
@@ -131,4 +131,33 @@ TEST(SimLineFormat, OnAPtyTheSimulatorReadsTheClientsFormat)
     // A broadcast goes out in both formats: each drive executes it.
     ASSERT_TRUE(run(client, ModbusRequest::writeSingle(0, 0x0081, 7)).ok()); // DC stall time
     EXPECT_EQ(bus->device(7)->raw(QStringLiteral("config.stall_time")).value_or(-1), 7);
+}
+
+TEST(SimLineFormat, ADcControllerJoinsTheDbuBusAsTheProfileSays)
+{
+    // Factory format 9600 8E1 on a DBU bus at 19200 8N1.
+    auto bus = mixedBus("dbu200@1,dcpid@7{format=8E1}");
+    ASSERT_TRUE(bus);
+    const LineFormat own{9600, 'E', 8, 1};
+    SimDevice* dc = bus->device(7);
+    // Step 2: parity "None, 2 stop bits" and 19200 bit/s as the one-frame configuration write
+    // (0x10, the 15 registers from 0x0080), the others kept.
+    QVector<quint16> block;
+    for (quint16 a = 0x0080; a < 0x0080 + 15; ++a)
+        block << dc->reg(3, a);
+    block[0x8A - 0x80] = 0;
+    block[0x8B - 0x80] = 19200;
+    block[0x8C - 0x80] = 0;
+    const QByteArray write =
+        RtuFrame::encodeRequest(ModbusRequest::writeMultiple(7, 0x0080, block));
+    EXPECT_TRUE(bus->handleFrame(write, bus->nowMs(), k8N1).reply.isEmpty()); // not heard
+    ASSERT_FALSE(bus->handleFrame(write, bus->nowMs(), own).reply.isEmpty());
+    // Step 3: still the old format until the next power-up.
+    EXPECT_TRUE(answers(*bus, 7, own));
+    EXPECT_FALSE(answers(*bus, 7, k8N1));
+    dc->powerCycle(bus->nowMs());
+    // Step 4: it answers with the DBUs at 19200 8N1 (its 8N2 is heard there), no longer at 8E1.
+    EXPECT_EQ(dc->lineFormat(), (LineFormat{19200, 'N', 8, 2}));
+    EXPECT_TRUE(answers(*bus, 7, k8N1));
+    EXPECT_FALSE(answers(*bus, 7, own));
 }

@@ -89,7 +89,8 @@ TEST_F(MainWindowMixedFormatsTest, ADriveAddedWithItsFormatIsLiveBesideTheDbu)
     EXPECT_EQ(window->drives()->slaves(), QVector<int>{1});
     EXPECT_TRUE(panel->message().contains(QStringLiteral("another line format than 19200 8N1")))
         << qPrintable(panel->message());
-    EXPECT_TRUE(panel->message().contains(QStringLiteral("Add drive"))) << qPrintable(panel->message());
+    EXPECT_TRUE(panel->message().contains(QStringLiteral("Add drive")))
+        << qPrintable(panel->message());
 
     // Add drive…: machine number 7 at 19200 8E1.
     QPushButton* add = nullptr;
@@ -171,8 +172,7 @@ TEST_F(MainWindowMixedFormatsTest, TheContextMenuSetsTheFormatAndTheBusIsRemembe
     ASSERT_TRUE(bar->isVisible());
     EXPECT_TRUE(bar->text().contains(QStringLiteral("19200 8E1"))) << qPrintable(bar->text());
     bar->restoreButton()->click();
-    ASSERT_TRUE(waitFor([&] {
-        return window->drives()->info(7).state == DeviceInfo::State::Present && live(7);
-    }));
+    ASSERT_TRUE(waitFor(
+        [&] { return window->drives()->info(7).state == DeviceInfo::State::Present && live(7); }));
     EXPECT_EQ(window->client()->driveLine(7), (LineFormat{19200, 'E', 8, 1}));
 }
