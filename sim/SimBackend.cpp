@@ -59,8 +59,11 @@ ModbusResult SimBackend::transact(const ModbusRequest& request, int timeoutMs)
     timer.start();
     auto elapsed = [&timer] { return double(timer.nsecsElapsed()) / 1e6; };
     const QByteArray adu = RtuFrame::encodeRequest(request);
-    logFrame(true, adu, request, request.describe(), QString());
     const LineFormat line = request.line.isSet() ? request.line : m_port;
+    logFrame(true, adu, request,
+             line == m_port ? request.describe()
+                            : QStringLiteral("%1 [%2]").arg(request.describe(), line.text()),
+             QString());
     const WireTiming timing = m_timing.at(line);
     const SimOutcome outcome = m_bus->handleFrame(adu, m_bus->nowMs(), line);
 

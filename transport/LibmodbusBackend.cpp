@@ -150,7 +150,12 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
     result.lateReplyFrom = std::exchange(m_discardedReplyFrom, -1);
     const QByteArray raw = char(request.slave) + request.pdu();
     const QByteArray sent = txAdu(request);
-    logFrame(true, sent, request, request.describe(), QString());
+    // A frame in a drive's own format says so: the traffic log shows where the line switched.
+    logFrame(true, sent, request,
+             format == m_settings.line()
+                 ? request.describe()
+                 : QStringLiteral("%1 [%2]").arg(request.describe(), format.text()),
+             QString());
     m_timer.start();
     m_sentAtMs = double(m_clock.nsecsElapsed()) / 1e6;
     if (modbus_send_raw_request(m_ctx, reinterpret_cast<const uint8_t*>(raw.constData()),

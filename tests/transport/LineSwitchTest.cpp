@@ -7,6 +7,7 @@
 #include "ModbusClient.h"
 #include "RtuBackend.h"
 #include "RtuFrame.h"
+#include "TrafficLog.h"
 #include "TransportTestSupport.h"
 
 #include <QElapsedTimer>
@@ -263,6 +264,8 @@ TEST(LineSwitchRtu, TheFormatARequestCarriesReachesThePort)
 {
     FormatDevice device;
     RtuBackend backend(portAt(device.path()));
+    TrafficLog log;
+    backend.setTrafficLog(&log);
     QString error;
     ASSERT_TRUE(backend.open(&error)) << error.toStdString();
     EXPECT_TRUE(backend.transact(readAt(1), 300).ok());
@@ -272,6 +275,16 @@ TEST(LineSwitchRtu, TheFormatARequestCarriesReachesThePort)
     EXPECT_TRUE(backend.transact(readAt(1), 300).ok());
     EXPECT_EQ(backend.lineSwitches(), 4);
     backend.close();
+    // The traffic log names the format of every frame sent in another than the port's.
+    QStringList sent;
+    for (const TrafficEntry& e : log.entries())
+        if (e.direction == TrafficEntry::Direction::Tx)
+            sent << e.summary;
+    ASSERT_EQ(sent.size(), 5);
+    EXPECT_FALSE(sent[0].contains(QLatin1Char('[')));
+    EXPECT_TRUE(sent[1].endsWith(QStringLiteral("[9600 8E1]"))) << sent[1].toStdString();
+    EXPECT_TRUE(sent[3].endsWith(QStringLiteral("[38400 8N2]"))) << sent[3].toStdString();
+    EXPECT_FALSE(sent[4].contains(QLatin1Char('[')));
 
     const auto seen = device.seen();
     ASSERT_EQ(seen.size(), 5u);
