@@ -2,7 +2,9 @@
 // opentop-sim with wire timing on a half-duplex line, a DBU at 8N1 (the port's 19200 8N1) and a
 // DC controller at its own format. At the port's format only the DBU answers and the scan says
 // why a drive may be missing; with the DC controller's format given, scan, backup and monitor
-// reach both, the port switched between transactions.
+// reach both, the port switched between transactions. Scans wait 60 ms per machine number: on
+// a loaded machine the simulator answers late (the scan's rescue of late answers is
+// CliScanE2e's and ScanLateAnswerE2e's subject, not this test's).
 #include "CliProcess.h"
 #include "SimProcess.h"
 
@@ -79,8 +81,9 @@ QList<int> slavesIn(const QString& json)
 
 TEST_P(MixedFormatsE2e, AtThePortsFormatOnlyTheDbuAnswersAndTheScanSaysWhy)
 {
-    const CliResult r = run({QStringLiteral("scan"), QStringLiteral("--to"), QStringLiteral("10"),
-                             QStringLiteral("--json")});
+    const CliResult r =
+        run({QStringLiteral("scan"), QStringLiteral("--wait"), QStringLiteral("60"),
+             QStringLiteral("--to"), QStringLiteral("10"), QStringLiteral("--json")});
     ASSERT_EQ(r.code, 0) << r.err.toStdString();
     EXPECT_EQ(slavesIn(r.out), QList<int>{1}) << r.out.toStdString();
     EXPECT_TRUE(r.err.contains(QStringLiteral("another line format than 19200 8N1")))
@@ -91,7 +94,8 @@ TEST_P(MixedFormatsE2e, AtThePortsFormatOnlyTheDbuAnswersAndTheScanSaysWhy)
 
 TEST_P(MixedFormatsE2e, WithTheDrivesFormatScanBackupAndMonitorReachBoth)
 {
-    CliResult r = run(driveFormat() + QStringList{QStringLiteral("scan"), QStringLiteral("--to"),
+    CliResult r = run(driveFormat() + QStringList{QStringLiteral("scan"), QStringLiteral("--wait"),
+                                                  QStringLiteral("60"), QStringLiteral("--to"),
                                                   QStringLiteral("10")});
     ASSERT_EQ(r.code, 0) << r.err.toStdString();
     EXPECT_TRUE(r.out.contains(QStringLiteral("2 drives found"))) << r.out.toStdString();
@@ -117,8 +121,9 @@ TEST_P(MixedFormatsE2e, WithTheDrivesFormatScanBackupAndMonitorReachBoth)
 
 TEST_P(MixedFormatsE2e, AScanToldToTryOtherFormatsFindsTheDcController)
 {
-    const CliResult r = run({QStringLiteral("scan"), QStringLiteral("--to"), QStringLiteral("8"),
-                             QStringLiteral("--try-formats")});
+    const CliResult r =
+        run({QStringLiteral("scan"), QStringLiteral("--wait"), QStringLiteral("60"),
+             QStringLiteral("--to"), QStringLiteral("8"), QStringLiteral("--try-formats")});
     ASSERT_EQ(r.code, 0) << r.err.toStdString();
     EXPECT_TRUE(r.out.contains(QStringLiteral("2 drives found"))) << r.out.toStdString();
     EXPECT_TRUE(r.err.contains(QStringLiteral("Machine number 7 answered at ") + GetParam().text()))
