@@ -4,6 +4,7 @@
 #include "session/DeviceInfo.h"
 
 #include <QCoreApplication>
+#include <QRegularExpression>
 #include <algorithm>
 
 namespace opentop {
@@ -75,6 +76,13 @@ QString LineFormatHint::missedText(const ProfileRegistry& registry, const Connec
         return QString();
     return tr("Drives set to another line format than %1 do not answer it. %2")
         .arg(port.line().text(), missed.join(QLatin1Char(' ')));
+}
+
+QString LineFormatHint::asSteps(const QString& help)
+{
+    // After a sentence's full stop (also the CJK one), before "N. ".
+    static const QRegularExpression step(QStringLiteral("(?<=[.。])\\s?(?=[1-9]\\. )"));
+    return QString(help).replace(step, QStringLiteral("\n"));
 }
 
 int LineFormatHint::requestsFor(const QVector<Candidate>& candidates, int from, int to)

@@ -34,6 +34,8 @@ public:
     // do about it is the caller's to say (an option, a button).
     static QString missedText(const ProfileRegistry& registry, const ConnectionSettings& port,
                               const QVector<DeviceInfo>& found);
+    // A profile's formatHelp with each numbered step ("2. Set …") on a line of its own.
+    static QString asSteps(const QString& help);
     // The machine numbers the passes of `candidates` ask over `from`–`to`, for their cost.
     static int requestsFor(const QVector<Candidate>& candidates, int from, int to);
 };

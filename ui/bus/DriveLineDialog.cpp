@@ -63,8 +63,8 @@ DriveLineDialog::DriveLineDialog(const ConnectionSettings& port, int slave,
     for (const Profile& p : ProfileRegistry::builtIn().profiles()) {
         if (p.serial.formatHelp.isEmpty() || (!family.isEmpty() && p.family != family))
             continue;
-        help << (family.isEmpty() ? tr("%1: %2").arg(p.name, p.serial.formatHelp)
-                                  : p.serial.formatHelp);
+        const QString steps = LineFormatHint::asSteps(p.serial.formatHelp);
+        help << (family.isEmpty() ? tr("%1: %2").arg(p.name, steps) : steps);
     }
     if (!help.isEmpty()) {
         auto* text = new QLabel(help.join(QStringLiteral("\n\n")), this);

@@ -1,5 +1,6 @@
 #include "connection/DriveFormatsField.h"
 
+#include "bus/LineFormatHint.h"
 #include "profile/ProfileRegistry.h"
 
 #include <QFormLayout>
@@ -78,7 +79,7 @@ QString DriveFormatsField::guidance()
            "transactions. To put all drives at one format for good, change the drives:");
     for (const Profile& p : ProfileRegistry::builtIn().profiles())
         if (!p.serial.formatHelp.isEmpty())
-            text += QStringLiteral("\n\n") + p.serial.formatHelp;
+            text += QStringLiteral("\n\n") + LineFormatHint::asSteps(p.serial.formatHelp);
     return text;
 }
 
