@@ -334,18 +334,14 @@ QVector<LineFormat> ModbusClientWorker::formatsFor(State& s, const ModbusRequest
     std::lock_guard<std::mutex> lock(s.mutex);
     if (!request.isBroadcast())
         return {s.driveLines.value(request.slave)};
-    // A broadcast reaches every drive only if it goes out in each format they hear: the
-    // port's first, then every other one of the table that the port's would not reach.
-    const LineFormat port = s.settings.line();
-    QVector<LineFormat> formats{LineFormat()};
-    QVector<LineFormat> reached{port};
-    for (const LineFormat& f : s.driveLines) {
-        if (std::none_of(reached.begin(), reached.end(),
-                         [&f](const LineFormat& r) { return f.hears(r); })) {
+    // A broadcast reaches every drive only in a format it hears: the port's first (unset),
+    // then each of the table's that none before reaches.
+    QVector<LineFormat> formats{s.settings.line()};
+    for (const LineFormat& f : s.driveLines)
+        if (std::none_of(formats.begin(), formats.end(),
+                         [&f](const LineFormat& r) { return f.hears(r); }))
             formats << f;
-            reached << f;
-        }
-    }
+    formats.first() = LineFormat();
     return formats;
 }
 
