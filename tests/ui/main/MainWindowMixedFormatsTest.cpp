@@ -166,7 +166,9 @@ TEST_F(MainWindowMixedFormatsTest, TheContextMenuSetsTheFormatAndTheBusIsRemembe
     dialog->reject();
     EXPECT_EQ(window->client()->driveLine(7), (LineFormat{19200, 'E', 8, 1}));
 
-    // Reconnected later: the bus is offered back with drive 7's format.
+    // Reconnected later: the bus is offered back with drive 7's format. The menu goes first: a
+    // new connection makes a new bus list, and the menu is the old one's child.
+    menu.reset();
     connectMixed();
     BusRecallBar* bar = window->recallBar();
     ASSERT_TRUE(bar->isVisible());
