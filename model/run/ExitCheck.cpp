@@ -35,7 +35,8 @@ QVector<DriveLeftBehind> ExitCheck::collect(const BusDrives& drives,
         d.busPriority = status.motionPriority.value_or(false);
         if (!d.running && !d.busPriority)
             continue;
-        d.state = status.ledText();
+        d.state = status.lastStateText();
+        d.lastAnswer = status.lastAnswer;
         if (const DeviceSession* session = drives.session(slave))
             d.canReturn = session->profile().role(kIoPriority) != nullptr;
         left << d;
