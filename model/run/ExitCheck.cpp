@@ -33,6 +33,7 @@ QVector<DriveLeftBehind> ExitCheck::collect(const BusDrives& drives,
         d.model = drives.info(slave).shortModel();
         d.running = status.running.value_or(false);
         d.busPriority = status.motionPriority.value_or(false);
+        d.inputsControl = status.motionPriority.has_value() && !*status.motionPriority;
         if (!d.running && !d.busPriority)
             continue;
         d.state = status.lastStateText();

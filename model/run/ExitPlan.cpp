@@ -1,5 +1,7 @@
 #include "run/ExitPlan.h"
 
+#include <algorithm>
+
 namespace opentop {
 
 ExitPlan::ExitPlan(QVector<DriveLeftBehind> drives)
@@ -11,9 +13,15 @@ QVector<int> ExitPlan::running() const
 {
     QVector<int> out;
     for (const DriveLeftBehind& d : m_drives)
-        if (d.running)
+        if (d.running && !d.inputsControl)
             out << d.slave;
     return out;
+}
+
+bool ExitPlan::anyRunning() const
+{
+    return std::any_of(m_drives.begin(), m_drives.end(),
+                       [](const DriveLeftBehind& d) { return d.running; });
 }
 
 QVector<int> ExitPlan::returnable() const
@@ -49,7 +57,7 @@ QString ExitPlan::label(Choice choice) const
     case Choice::GiveBackOnly:
         return tr("Give control back only");
     case Choice::Leave:
-        return stop ? tr("Leave them running") : tr("Leave them so");
+        return anyRunning() ? tr("Leave them running") : tr("Leave them so");
     }
     return {};
 }
@@ -71,13 +79,12 @@ QString ExitPlan::actionText(Choice choice) const
 
 QString ExitPlan::title() const
 {
-    return running().isEmpty() ? tr("Drives left in communication priority")
-                               : tr("Drives are running");
+    return anyRunning() ? tr("Drives are running") : tr("Drives left in communication priority");
 }
 
 QString ExitPlan::question(const QString& leaving) const
 {
-    return running().isEmpty()
+    return !anyRunning()
                ? tr("Before you %1: these drives are left in communication priority.").arg(leaving)
                : tr("Before you %1: these drives are running or left in communication "
                     "priority.")
@@ -90,7 +97,10 @@ QStringList ExitPlan::lines() const
     for (const DriveLeftBehind& d : m_drives) {
         const bool giveBack = d.busPriority && d.canReturn;
         QString what;
-        if (d.running && giveBack)
+        if (d.running && d.inputsControl)
+            what = tr("left as it is: it runs from its own inputs (I/O priority), which a stop "
+                      "over the bus does not override");
+        else if (d.running && giveBack)
             what = tr("stopped (confirmed by reading it), then given back to its own inputs (I/O "
                       "priority, read back)");
         else if (d.running && !d.canReturn)

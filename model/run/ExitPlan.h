@@ -30,8 +30,11 @@ public:
 
     bool isEmpty() const { return m_drives.isEmpty(); }
     const QVector<DriveLeftBehind>& drives() const { return m_drives; }
-    // The drives to stop (running by the last status).
+    // The drives to stop: running by the last status, and not from their own inputs (a drive
+    // in I/O priority refuses a stop over the bus; it is named, and left to its inputs).
     QVector<int> running() const;
+    // Whether any drive runs, from the bus or from its inputs.
+    bool anyRunning() const;
     // The drives in communication priority that can be given back to their inputs.
     QVector<int> returnable() const;
     // The choices that differ from each other, the default first.

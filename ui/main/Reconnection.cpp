@@ -177,8 +177,14 @@ void Reconnection::readAgain()
         m_bar->say(reconnected + QLatin1Char(' ') + text, LinkBar::Look::Attention);
     else
         m_bar->hide();
-    m_window->statusBar()->showMessage(
-        reconnected + QLatin1Char(' ') + text.section(QLatin1Char('\n'), 0, 0), 15000);
+    // The status bar has one line: the drives after the heading, one after the other.
+    QStringList lines = text.split(QLatin1Char('\n'));
+    QString line = reconnected + QLatin1Char(' ') + lines.takeFirst();
+    for (QString& drive : lines)
+        drive.remove(0, drive.indexOf(QLatin1Char(' ')) + 1); // the bullet
+    if (!lines.isEmpty())
+        line += QLatin1Char(' ') + lines.join(QStringLiteral("; "));
+    m_window->statusBar()->showMessage(line, 15000);
 }
 
 void Reconnection::refused(const QString& why)

@@ -80,3 +80,17 @@ TEST(ExitPlanTest, NothingLeftBehindAsksNothing)
     EXPECT_TRUE(plan.isEmpty());
     EXPECT_EQ(plan.choices(), QVector<Choice>{Choice::Leave});
 }
+
+TEST(ExitPlanTest, ADriveRunningFromItsInputsIsNamedAndLeftToThem)
+{
+    DriveLeftBehind fromInputs = drive(3, QStringLiteral("DBU400-D4"), true, false, true);
+    fromInputs.inputsControl = true;
+    const ExitPlan plan({fromInputs});
+    EXPECT_TRUE(plan.running().isEmpty()); // a stop over the bus would be refused
+    EXPECT_TRUE(plan.anyRunning());
+    EXPECT_EQ(plan.title(), QStringLiteral("Drives are running"));
+    EXPECT_EQ(plan.choices(), QVector<Choice>{Choice::Leave});
+    EXPECT_EQ(plan.label(Choice::Leave), QStringLiteral("Leave them running"));
+    EXPECT_TRUE(plan.lines().first().contains(QStringLiteral("runs from its own inputs")))
+        << qPrintable(plan.lines().first());
+}

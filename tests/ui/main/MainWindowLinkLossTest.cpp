@@ -12,6 +12,7 @@
 
 #include <QComboBox>
 #include <QProgressDialog>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QToolButton>
 
@@ -335,6 +336,40 @@ TEST_F(MainWindowLinkLossTest, NothingIsSentOverTheDeadPortAndNoWindowSitsOverTh
     ASSERT_TRUE(waitFor([&] { return !window->isVisible(); }, 5000));
     EXPECT_EQ(sentAfter(window->trafficLog(), lostAt), 0)
         << "a request went out over the dead port";
+}
+
+TEST_F(MainWindowLinkLossTest, ConnectingToTheSamePortAfterTheLossComesBackWithoutAQuestion)
+{
+    startDrive(1);
+    ASSERT_TRUE(waitFor([&] { return leftBehind(1, true); }, 10000));
+    killSimulator();
+    ASSERT_TRUE(waitFor([&] { return lostBox() != nullptr; }, 10000));
+    lostBox()->button(QMessageBox::Close)->click();
+    startSimulator();
+    // Bus > Connect..., as it opens (at the lost connection), then Connect.
+    bool asked = false;
+    QObject::connect(window->reconnection(), &Reconnection::asking, window.get(),
+                     [&] { asked = true; });
+    QObject::connect(window->exitGuard(), &ExitGuard::asking, window.get(), [&] { asked = true; });
+    QString port;
+    QTimer::singleShot(200, [&] {
+        auto* dialog = qobject_cast<ConnectionDialog*>(QApplication::activeModalWidget());
+        ASSERT_NE(dialog, nullptr);
+        port = dialog->findChild<QComboBox*>(QStringLiteral("port"))->currentText();
+        dialog->accept();
+    });
+    actionNamed(window.get(), QStringLiteral("&Connect…"))->trigger();
+    EXPECT_EQ(port, link);
+    ASSERT_TRUE(waitFor([&] { return window->isConnected() && present() == 3; }, 20000))
+        << qPrintable(window->connectionLabel()->text());
+    EXPECT_FALSE(asked) << "nothing could be sent to the drives meanwhile: nothing to ask";
+    EXPECT_EQ(window->drives()->slaves(), (QVector<int>{1, 2, 7}));
+    // The new simulator's drives are stopped: once read again, nothing needs a look.
+    LinkBar* bar = window->reconnection()->bar();
+    EXPECT_TRUE(waitFor([&] { return !bar->isVisible(); }, 15000)) << qPrintable(bar->text());
+    EXPECT_TRUE(window->statusBar()->currentMessage().contains(
+        QStringLiteral("Every drive read again: none is running")))
+        << qPrintable(window->statusBar()->currentMessage());
 }
 
 TEST_F(MainWindowLinkLossTest, QuittingStopsEachDriveReadsItBackAndGivesControlBackToItsInputs)
