@@ -1,5 +1,7 @@
 #include "main/LinkBar.h"
 
+#include "widgets/BarHideButton.h"
+
 #include <QAction>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -20,16 +22,12 @@ LinkBar::LinkBar(QAction* reconnect, QWidget* parent)
     m_reconnect->setObjectName(QStringLiteral("linkBarReconnect"));
     m_reconnect->setDefaultAction(reconnect);
     m_reconnect->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    auto* close = new QToolButton(this);
-    close->setText(QStringLiteral("×"));
-    close->setToolTip(tr("Hide this bar"));
-    close->setAccessibleName(tr("Hide"));
+    auto* close = new BarHideButton(this);
     auto* row = new QHBoxLayout(this);
     row->setContentsMargins(8, 4, 4, 4);
     row->addWidget(m_text, 1);
     row->addWidget(m_reconnect);
     row->addWidget(close);
-    connect(close, &QToolButton::clicked, this, &QWidget::hide);
     hide();
 }
 
