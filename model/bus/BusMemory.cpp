@@ -46,23 +46,31 @@ QString BusMemory::placeText(const ConnectionSettings& settings)
     return {};
 }
 
+QVector<BusMemory::Drive> BusMemory::present(const BusDrives& drives)
+{
+    QVector<Drive> out;
+    for (int slave : drives.slaves()) {
+        const DeviceInfo info = drives.info(slave);
+        if (info.state != DeviceInfo::State::Present || info.family.isEmpty())
+            continue;
+        out << Drive{slave, info.variant.isEmpty() ? info.family : info.variant, info.model, info.line};
+    }
+    return out;
+}
+
 void BusMemory::save(const QString& key, const BusDrives& drives)
 {
     QSettings settings;
     settings.remove(settingsGroup(key));
     settings.beginWriteArray(settingsGroup(key));
     int index = 0;
-    for (int slave : drives.slaves()) {
-        const DeviceInfo info = drives.info(slave);
-        if (info.state != DeviceInfo::State::Present || info.family.isEmpty())
-            continue;
+    for (const Drive& d : present(drives)) {
         settings.setArrayIndex(index++);
-        settings.setValue(QStringLiteral("slave"), slave);
-        settings.setValue(QStringLiteral("type"),
-                          info.variant.isEmpty() ? info.family : info.variant);
-        settings.setValue(QStringLiteral("model"), info.model);
-        if (info.line.isSet())
-            settings.setValue(QStringLiteral("line"), info.line.token());
+        settings.setValue(QStringLiteral("slave"), d.slave);
+        settings.setValue(QStringLiteral("type"), d.type);
+        settings.setValue(QStringLiteral("model"), d.model);
+        if (d.line.isSet())
+            settings.setValue(QStringLiteral("line"), d.line.token());
     }
     settings.endArray();
 }

@@ -30,6 +30,8 @@ public:
     // The connection as the user knows it: "/dev/ttyUSB0", "10.0.0.5:502", "the simulated bus".
     static QString placeText(const ConnectionSettings& settings);
 
+    // The drives present in `drives`, as they would be remembered.
+    static QVector<Drive> present(const BusDrives& drives);
     // Remembers the drives present in `drives` (replacing what was remembered for `key`).
     static void save(const QString& key, const BusDrives& drives);
     static QVector<Drive> load(const QString& key);

@@ -2,11 +2,11 @@
 
 #include "bus/BusDrives.h"
 #include "bus/BusMemory.h"
+#include "widgets/BarHideButton.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
-#include <QToolButton>
 
 namespace opentop {
 
@@ -23,17 +23,13 @@ BusRecallBar::BusRecallBar(BusDrives* drives, const ConnectionSettings& settings
     setFrameShape(QFrame::StyledPanel);
     setStyleSheet(QStringLiteral("#busRecallBar { background: #e8f0fe; }"));
     m_text->setWordWrap(true);
-    auto* close = new QToolButton(this);
-    close->setText(QStringLiteral("×"));
-    close->setToolTip(tr("Hide this bar"));
-    close->setAccessibleName(tr("Hide"));
+    auto* close = new BarHideButton(this);
     auto* row = new QHBoxLayout(this);
     row->setContentsMargins(8, 4, 4, 4);
     row->addWidget(m_text, 1);
     row->addWidget(m_restore);
     row->addWidget(m_scan);
     row->addWidget(close);
-    connect(close, &QToolButton::clicked, this, &QWidget::hide);
     connect(m_scan, &QPushButton::clicked, this, [this] {
         hide();
         emit scanRequested();
