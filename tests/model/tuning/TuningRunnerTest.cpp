@@ -254,6 +254,8 @@ TEST_F(TuningRunnerSlowLineTest, ARelayPacedByTheBusIsRefused)
         await<TuningRunner::Result>([&](auto done) { runner->startAutotune(relay, done); }, 60000);
     EXPECT_FALSE(r.ok) << qPrintable(r.proposal.toString());
     EXPECT_TRUE(r.error.contains(QStringLiteral("readings"))) << qPrintable(r.error);
+    EXPECT_TRUE(r.advice.contains(QStringLiteral("line rate"))) << qPrintable(r.advice);
+    EXPECT_LT(r.relay.readingsPerPeriod, RelayAnalysis::kMinReadingsPerPeriod);
     EXPECT_TRUE(r.stopConfirmed) << qPrintable(r.stopDetail);
     polling = false;
     EXPECT_EQ(raw("config.speed_mode"), 2);
