@@ -1,6 +1,7 @@
 // opentop-cli tune against an opentop-sim process over a pty: nothing moves without --yes or
-// outside a closed-loop mode, a step test's report, a limit that stops the motor mid-test, and
-// the autotune writing its gains only with --accept.
+// outside a closed-loop mode, a step test's report, a limit that stops the motor mid-test, the
+// autotune writing its gains only with --accept, a relay on a 19200 bit/s line refused with what
+// to change, and a failed check after --accept writing the gains back unless --override-check.
 #include "CliProcess.h"
 #include "SimProcess.h"
 
