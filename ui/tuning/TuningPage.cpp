@@ -15,6 +15,7 @@
 #include <QPointer>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QStyle>
 #include <QTabWidget>
 #include <QVBoxLayout>
 
@@ -80,8 +81,12 @@ TuningPage::TuningPage(DeviceSession* session, const TuningSpec& spec, const QSt
     leftScroll->setWidgetResizable(true);
     leftScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     leftScroll->setWidget(leftBox);
-    leftScroll->setMaximumWidth(300);
-    leftScroll->setMinimumWidth(260);
+    // Room for the vertical scroll bar beside the fields: a long result must not push them
+    // under it.
+    const int fields =
+        leftBox->minimumSizeHint().width() + style()->pixelMetric(QStyle::PM_ScrollBarExtent);
+    leftScroll->setMaximumWidth(std::max(300, fields));
+    leftScroll->setMinimumWidth(std::max(260, fields));
 
     auto* columns = new QHBoxLayout;
     columns->addWidget(leftScroll);
