@@ -52,7 +52,8 @@ RelayAnalysis RelayAnalysis::analyse(const TuningSamples& samples, double setpoi
                       "output room on both sides.");
         return r;
     }
-    const int first = int(ups.size()) - 1 - std::min(usable, 2 * minCycles);
+    // The last `minCycles` cycles: a host that stalls now and then spoils fewer windows.
+    const int first = int(ups.size()) - 1 - minCycles;
     QVector<double> periods;
     QVector<double> amplitudes;
     QVector<double> asymmetries;

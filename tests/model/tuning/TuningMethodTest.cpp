@@ -289,13 +289,11 @@ TEST_F(TuningMethodTest, UnsteadyCyclesAreRefusedWithWhatToChange)
     });
     auto simBus = line.bus;
     double next = 0;
-    unsigned seed = 7;
     bool coupled = false;
-    line.backend->beforeTransaction = [relay, simBus, next, seed, coupled](double now) mutable {
+    line.backend->beforeTransaction = [relay, simBus, next, coupled](double now) mutable {
         if (!*relay || now < next)
             return;
-        seed = seed * 1103515245u + 12345u; // on and off at random, 30–90 ms each
-        next = now + 30 + (seed >> 16) % 61;
+        next = now + 110; // on and off every 110 ms, out of step with the relay's 70 ms cycles
         coupled = !coupled;
         simBus->control(
             7, {QStringLiteral("motor"), QStringLiteral("load=%1").arg(coupled ? 0.2 : 0.0)});
