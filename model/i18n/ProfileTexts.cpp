@@ -43,6 +43,7 @@ void ProfileTexts::visitTexts(Profile& profile, bool inherited, const Visit& vis
 {
     visit(QStringLiteral("name"), profile.name);
     visit(QStringLiteral("address.help"), profile.addressSwitches.help);
+    visit(QStringLiteral("serial.formatHelp"), profile.serial.formatHelp);
     for (ProfileVariant& v : profile.variants)
         visit(QStringLiteral("variants.%1.label").arg(v.id), v.label);
     for (ProfileGroup& g : profile.groups) {

@@ -35,9 +35,11 @@ QVector<DriveLeftBehind> ExitCheck::collect(const BusDrives& drives,
         d.name = drives.name(slave);
         d.running = status.running.value_or(false);
         d.busPriority = status.motionPriority.value_or(false);
+        d.inputsControl = status.motionPriority.has_value() && !*status.motionPriority;
         if (!d.running && !d.busPriority)
             continue;
-        d.state = status.ledText();
+        d.state = status.lastStateText();
+        d.lastAnswer = status.lastAnswer;
         if (const DeviceSession* session = drives.session(slave))
             d.canReturn = session->profile().role(kIoPriority) != nullptr;
         left << d;

@@ -10,6 +10,7 @@ def texts(profile):
             out[key] = value
     put('name', profile.get('name'))
     put('address.help', profile.get('address', {}).get('help'))
+    put('serial.formatHelp', profile.get('serial', {}).get('formatHelp'))
     for v in profile.get('variants', []):
         put(f"variants.{v['id']}.label", v.get('label'))
     for g in profile.get('groups', []):

@@ -2,6 +2,7 @@
 
 #include "bus/BusDrives.h"
 #include "bus/BusPanel.h"
+#include "bus/DriveLineDialog.h"
 #include "bus/DriveName.h"
 #include "profile/ProfileRegistry.h"
 
@@ -38,6 +39,11 @@ QMenu* BusListMenu::menuFor(const QVector<int>& slaves, QWidget* parent)
             m_panel->addDrive(s);
     });
     identify->setEnabled(!m_panel->isScanning());
+    if (slaves.size() == 1) {
+        QAction* line = DriveLineDialog::addMenuAction(
+            menu, m_drives, slaves.first(), [this](int slave) { m_panel->addDrive(slave); });
+        line->setEnabled(line->isEnabled() && !m_panel->isScanning());
+    }
     QAction* remove = menu->addAction(tr("&Remove from list"));
     connect(remove, &QAction::triggered, this, [this, slaves] {
         for (int s : slaves)

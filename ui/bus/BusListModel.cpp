@@ -125,6 +125,9 @@ QVariant BusListModel::display(const DeviceInfo& d, int column) const
     case Switches:
         return DeviceInfo::addressText(d.slave, d.family);
     case Family:
+        if (d.line.isSet()) // a drive of its own format: the list says which
+            return tr("%1 at %2")
+                .arg(d.family.isEmpty() ? tr("—") : d.family.toUpper(), d.line.text());
         return d.family.isEmpty() ? tr("—") : d.family.toUpper();
     case Model:
         if (d.variantUnknown())
@@ -176,6 +179,13 @@ QString BusListModel::toolTip(const DeviceInfo& d, int column) const
         return d.machineName.isEmpty()
                    ? tr("No name yet: Name… in the context menu (F2) names this machine")
                    : tr("%1: the name given to this machine (F2 changes it)").arg(d.machineName);
+    case Family:
+        if (d.line.isSet())
+            return tr("Requests to this drive go out at %1, its own line format, not the "
+                      "port's: the line is switched to it and back between transactions. "
+                      "Change it with Line format… in the context menu.")
+                .arg(d.line.text());
+        break;
     case Model:
         if (d.variantUnknown())
             return tr("The drive does not report its variant. Choose it from the context menu "

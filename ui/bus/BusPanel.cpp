@@ -5,15 +5,16 @@
 #include "bus/BusListMenu.h"
 #include "bus/BusListModel.h"
 #include "bus/BusScanner.h"
+#include "bus/DriveLineDialog.h"
 #include "bus/DriveStatusPoller.h"
 #include "bus/FixedLineHint.h"
+#include "bus/LineFormatHint.h"
 #include "profile/ProfileRegistry.h"
 #include "session/DeviceIdentifier.h"
 
 #include <QAction>
 #include <QHBoxLayout>
 #include <QHeaderView>
-#include <QInputDialog>
 #include <QLabel>
 #include <QMenu>
 #include <QProgressBar>
@@ -275,8 +276,13 @@ void BusPanel::onScanFinished()
         const FixedLineHint fixed = FixedLineHint::dcPotentiometer();
         const bool offer = found == 0 && fixed.worthRetrying(m_drives->client()->settings(), from,
                                                              m_scanner->to());
+        const QString missed = LineFormatHint::missedText(
+            ProfileRegistry::builtIn(), m_drives->client()->settings(), m_scanner->devices());
         if (offer)
             text += QLatin1Char(' ') + fixed.explanation();
+        else if (!missed.isEmpty()) // a drive of its own format is added with it
+            text += QLatin1Char(' ') + missed + QLatin1Char(' ') +
+                    tr("If one is on this bus, add it with Add drive and its line format.");
         showMessage(text, found == 0);
         m_fixedLine->setVisible(offer);
     }
@@ -289,15 +295,8 @@ void BusPanel::onScanFinished()
 
 void BusPanel::addClicked()
 {
-    bool ok = false;
-    // The switches' notation of every family, so that the number can be read off the device.
-    const int slave =
-        QInputDialog::getInt(this, tr("Add drive"),
-                             tr("Machine number (1–247), as set on the drive's switches:\n%1")
-                                 .arg(DeviceInfo::switchHelp()),
-                             m_from->value(), 1, 247, 1, &ok);
-    if (ok)
-        addDrive(slave);
+    DriveLineDialog::askToAdd(this, m_drives, m_from->value(),
+                              [this](int slave) { addDrive(slave); });
 }
 
 void BusPanel::addDrive(int slave)
