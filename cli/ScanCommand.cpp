@@ -3,6 +3,7 @@
 #include "CliContext.h"
 #include "GroupCheck.h"
 #include "ModbusClient.h"
+#include "ScanDrives.h"
 #include "ScanFormats.h"
 #include "TextTable.h"
 #include "bus/BusGroups.h"
@@ -206,11 +207,7 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
     if (!interrupted && scanner.error().isEmpty() && tryFormats &&
         !ScanFormats::run(context, range.from, range.to, range.waitMs, &devices, &elapsedMs))
         interrupted = true;
-    completeVariants(context, &devices);
-    // The names given to this bus's machines (`name`, or the window).
-    const QHash<int, QString> names = context.machineNames();
-    for (DeviceInfo& info : devices)
-        info.machineName = names.value(info.slave);
+    ScanDrives::complete(context, &devices);
     BusGroups groups;
     QHash<int, bool> hasGroups;
     if (!interrupted)
@@ -293,42 +290,6 @@ void ScanCommand::printLineReport(CliContext& context)
                              .arg(warning)
                              .arg(report.adapterLatencyMs())
                       << Qt::endl;
-}
-
-void ScanCommand::completeVariants(CliContext& context, QVector<DeviceInfo>* devices)
-{
-    const ProfileRegistry& registry = ProfileRegistry::builtIn();
-    for (DeviceInfo& info : *devices) {
-        const Profile* profile = registry.family(info.family);
-        if (info.state != DeviceInfo::State::Present || !profile)
-            continue;
-        if (profile->variants.isEmpty()) {
-            // One model per family: the device's own name says more than the family's title.
-            if (!info.name.trimmed().isEmpty())
-                info.model = info.name.trimmed();
-            continue;
-        }
-        if (!info.variant.isEmpty())
-            continue;
-        info.variant = context.assignedVariant(info.slave, info.family);
-        if (const ProfileVariant* v = profile->variant(info.variant)) {
-            info.model = v->model;
-            info.detail.clear();
-        } else {
-            const QString name =
-                info.name.trimmed().isEmpty() ? profile->family.toUpper() : info.name.trimmed();
-            info.model = tr("%1 — variant unknown").arg(name);
-            info.detail = tr("the drive does not report its variant; give it with --variant "
-                             "%1=VARIANT (%2)")
-                              .arg(info.slave)
-                              .arg([&] {
-                                  QStringList ids;
-                                  for (const ProfileVariant& pv : profile->variants)
-                                      ids << pv.id;
-                                  return ids.join(QStringLiteral(", "));
-                              }());
-        }
-    }
 }
 
 void ScanCommand::printTable(CliContext& context, const QVector<DeviceInfo>& devices,

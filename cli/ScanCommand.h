@@ -38,8 +38,6 @@ private:
     // What the serial driver accepted (RS-485 direction, low latency), and a warning when the
     // adapter holds replies back.
     static void printLineReport(CliContext& context);
-    // Fills in variants the drives do not report (--variant, the simulated bus list).
-    static void completeVariants(CliContext& context, QVector<DeviceInfo>* devices);
     static void printTable(CliContext& context, const QVector<DeviceInfo>& devices,
                            const BusGroups& groups, const QHash<int, bool>& hasGroups);
     static void printJson(CliContext& context, const BusScanner& scanner,

@@ -204,10 +204,6 @@ bool readCodeTables(const QJsonObject& root, JsonReader& json, Profile* p)
     return true;
 }
 
-} // namespace
-
-namespace {
-
 // Checks that need every parameter: references, defaults, overlaps, the identify read.
 bool crossCheck(const QJsonObject& root, JsonReader& json, Profile* p)
 {
@@ -464,7 +460,6 @@ std::optional<Profile> ProfileLoader::loadJson(const QByteArray& data, const QSt
     if (!crossCheck(root, json, &profile) || !readRoles(root, json, &profile) ||
         !readDecelerationKnobs(root, json, &profile) || !readStatusLed(root, json, &profile))
         return failWith(detail);
-    // A text that names a setting must name one the profile has.
     if (const QString unknown = SettingReference::firstUnknown(profile); !unknown.isEmpty())
         return failWith(tr("texts: {setting:…} names no parameter (%1)").arg(unknown));
     return profile;

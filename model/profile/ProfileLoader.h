@@ -8,8 +8,7 @@
 
 namespace opentop {
 
-// Reads a profile from JSON and validates it completely; a malformed profile is refused with a
-// message naming the file and the entry.
+// Reads a profile from JSON and validates it all; a bad one is refused naming file and entry.
 class ProfileLoader
 {
 public:
