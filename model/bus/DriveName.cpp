@@ -2,6 +2,8 @@
 
 #include "session/DeviceSession.h"
 
+#include <QRegularExpression>
+
 namespace opentop {
 
 QString DriveName::cleaned(const QString& name)
@@ -28,6 +30,12 @@ QString DriveName::problem(const QString& name)
                       "(U+%1).")
                 .arg(c.unicode(), 4, 16, QLatin1Char('0'));
     }
+    // Messages put the name into translated sentences with arg(): "%2" in a name would be
+    // taken for the sentence's own place-holder and replaced.
+    static const QRegularExpression placeHolder(QStringLiteral("%\\d"));
+    if (const QRegularExpressionMatch m = placeHolder.match(kept); m.hasMatch())
+        return tr("A machine's name may not hold %1 (a percent sign directly before a digit).")
+            .arg(m.captured());
     return QString();
 }
 

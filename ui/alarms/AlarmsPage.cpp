@@ -62,9 +62,9 @@ AlarmsPage::AlarmsPage(DeviceSession* session, QWidget* parent)
     , m_clear(new QPushButton(tr("&Clear records…")))
     , m_age(new QLabel)
 {
+    // One arg(): a name is text, never a place for the model.
     m_title->setText(tr("Alarms and warnings of machine %1 (%2)")
-                         .arg(DriveName::listed(session))
-                         .arg(modelOf(session)));
+                         .arg(DriveName::listed(session), modelOf(session)));
     QFont bold = m_title->font();
     bold.setBold(true);
     m_title->setFont(bold);
@@ -455,13 +455,12 @@ void AlarmsPage::clearRecords()
         erased << (h.ok ? tr("%1 (%2 records)").arg(h.label).arg(h.used()) : h.label);
     if (erased.isEmpty())
         erased << tr("the alarm and warning records");
-    confirm(tr("Clear records"),
-            tr("Erase %1 of machine %2?")
-                .arg(erased.join(tr(" and ")))
-                .arg(DriveName::listed(m_session)),
-            tr("The records cannot be restored. Writes: %1")
-                .arg(m_history->clearPlan().join(QStringLiteral(", "))),
-            tr("Erase"), &AlarmsPage::startClear);
+    confirm(
+        tr("Clear records"),
+        tr("Erase %1 of machine %2?").arg(erased.join(tr(" and ")), DriveName::listed(m_session)),
+        tr("The records cannot be restored. Writes: %1")
+            .arg(m_history->clearPlan().join(QStringLiteral(", "))),
+        tr("Erase"), &AlarmsPage::startClear);
 }
 
 void AlarmsPage::startClear()

@@ -36,6 +36,9 @@ TEST(DriveName, ANameIsCheckedForLengthAndControlCharacters)
           QStringLiteral("a") + QChar(0x200E)})
         EXPECT_TRUE(DriveName::problem(bad).contains(QStringLiteral("control characters")))
             << qPrintable(bad);
+    // "%2" in a name would be replaced in a sentence that names the drive; "50 %" is a name.
+    EXPECT_TRUE(DriveName::problem(QStringLiteral("Line %2")).contains(QStringLiteral("%2")));
+    EXPECT_TRUE(DriveName::problem(QStringLiteral("Mixer at 50 %")).isEmpty());
 }
 
 TEST(DriveName, MessagesNameADriveByItsNumberAndName)
