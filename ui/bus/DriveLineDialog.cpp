@@ -4,6 +4,7 @@
 #include "bus/BusDrives.h"
 #include "bus/LineFormatHint.h"
 #include "profile/ProfileRegistry.h"
+#include "session/DeviceInfo.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -32,10 +33,16 @@ DriveLineDialog::DriveLineDialog(const ConnectionSettings& port, int slave,
     m_slave = new QSpinBox(this);
     m_slave->setRange(1, 247);
     m_slave->setValue(slave > 0 ? slave : 1);
-    if (slave <= 0)
+    if (slave <= 0) {
         form->addRow(tr("&Machine number:"), m_slave);
-    else
+        // The number as each family sets it on the device, to read it off the switches.
+        auto* switches = new QLabel(DeviceInfo::switchHelp(), this);
+        switches->setObjectName(QStringLiteral("switchHelp"));
+        switches->setWordWrap(true);
+        form->addRow(QString(), switches);
+    } else {
         m_slave->hide();
+    }
 
     m_format = new QComboBox(this);
     m_format->setObjectName(QStringLiteral("lineFormat"));

@@ -6,12 +6,14 @@
 #include "bus/BusMemory.h"
 #include "files/BackupDialog.h"
 
+#include <QDialog>
 #include <QFile>
 #include <QHeaderView>
 #include <QInputDialog>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QLabel>
 #include <QMenu>
 #include <QTemporaryDir>
 
@@ -206,11 +208,11 @@ TEST_F(MainWindowMachinesTest, EachFamilyShowsItsOwnAddressSwitches)
     })) << qPrintable(window->workspace()->titleText());
     // Add drive says how each family sets the number.
     QString label;
-    whenModal([](QWidget* w) { return qobject_cast<QInputDialog*>(w) != nullptr; },
+    whenModal([](QWidget* w) { return w->objectName() == QLatin1String("driveLineDialog"); },
               [&label](QWidget* w) {
-                  auto* dialog = qobject_cast<QInputDialog*>(w);
-                  label = dialog->labelText();
-                  dialog->reject();
+                  if (auto* help = w->findChild<QLabel*>(QStringLiteral("switchHelp")))
+                      label = help->text();
+                  qobject_cast<QDialog*>(w)->reject();
               });
     for (QPushButton* b : window->busPanel()->findChildren<QPushButton*>()) {
         if (b->text() == QLatin1String("A&dd drive…"))
