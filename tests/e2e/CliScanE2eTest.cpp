@@ -156,6 +156,6 @@ TEST(CliScanE2e, AnEmptyScanNamesTheOptionsThatFindADcControllerInPotentiometerM
     ASSERT_TRUE(cli.waitForStarted(5000));
     const CliResult found = finishCli(cli);
     ASSERT_EQ(found.code, 0) << found.err.toStdString();
-    EXPECT_EQ(row(found.out, 1), QStringLiteral("1 01h SW1=0 SW2=1 dcpid DCPID-20A V1.0 online"))
+    EXPECT_EQ(row(found.out, 1), QStringLiteral("1 01h DIP ON: 1 dcpid DCPID-20A V1.0 online"))
         << found.out.toStdString();
 }
