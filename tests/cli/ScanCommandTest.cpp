@@ -91,12 +91,12 @@ TEST(ScanCommand, JsonDescribesTheScanAndEveryDevice)
     const QJsonArray devices = scanObject.value(QStringLiteral("devices")).toArray();
     ASSERT_EQ(devices.size(), 2);
     const QJsonObject dbu = devices.at(0).toObject();
-    EXPECT_EQ(
-        QStringList(dbu.keys()),
-        (QStringList{QStringLiteral("detail"), QStringLiteral("family"), QStringLiteral("firmware"),
-                     QStringLiteral("group"), QStringLiteral("hex"), QStringLiteral("model"),
-                     QStringLiteral("name"), QStringLiteral("slave"), QStringLiteral("state"),
-                     QStringLiteral("switches"), QStringLiteral("variant")}));
+    EXPECT_EQ(QStringList(dbu.keys()),
+              (QStringList{QStringLiteral("detail"), QStringLiteral("family"),
+                           QStringLiteral("firmware"), QStringLiteral("group"),
+                           QStringLiteral("hex"), QStringLiteral("line"), QStringLiteral("model"),
+                           QStringLiteral("name"), QStringLiteral("slave"), QStringLiteral("state"),
+                           QStringLiteral("switches"), QStringLiteral("variant")}));
     // A DBU's communication group, null when disabled.
     EXPECT_TRUE(dbu.value(QStringLiteral("group")).isNull());
     EXPECT_EQ(dbu.value(QStringLiteral("slave")).toInt(), 2);
