@@ -96,7 +96,7 @@ void ScanFormats::hint(CliContext& context, int from, int to, const QVector<Devi
                          .arg(missed)
                          .arg(candidates.size())
                          .arg(LineFormatHint::requestsFor(candidates, from, to))
-                         .arg(QString::number(seconds, 'f', 0))
+                         .arg(QString::number(seconds, 'f', seconds < 10 ? 1 : 0))
                   << Qt::endl;
 }
 
