@@ -71,6 +71,8 @@ QVariant BusListModel::headerData(int section, Qt::Orientation orientation, int 
     if (role == Qt::ToolTipRole && section == Switches)
         return tr("The machine number in hexadecimal, as the drive's rotary switches SW1 (high "
                   "digit) and SW2 (low digit) are set");
+    if (role == Qt::ToolTipRole && section == MachineNumber)
+        return tr("Machine number: the drive's address on the bus (1–247)");
     if (role == Qt::ToolTipRole && section == Light)
         return tr("The drive's MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, "
                   "purple external interrupt, blue memory or communication error, grey no "
@@ -81,7 +83,8 @@ QVariant BusListModel::headerData(int section, Qt::Orientation orientation, int 
     case Light:
         return tr("LED");
     case MachineNumber:
-        return tr("Machine no.");
+        return tr("No."); // short: the list shows every column whole beside the pages
+
     case Switches:
         return tr("Hex / switches");
     case Family:

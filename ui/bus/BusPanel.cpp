@@ -107,19 +107,12 @@ BusPanel::BusPanel(BusDrives* drives, DriveStatusPoller* poller, QWidget* parent
     m_view->verticalHeader()->hide();
     m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_view->horizontalHeader()->setStretchLastSection(true);
-    // What one looks at first (which drive, what it is doing, who controls it) comes first, so
-    // that a narrow list on a laptop still shows it; the rest is a scroll away.
+    // What one looks at first (which drive, what it is doing, who controls it) comes first;
+    // the window divides itself so that every column shows whole (WindowGeometry::divide).
     QHeaderView* header = m_view->horizontalHeader();
     int to = BusListModel::MachineNumber + 1;
     for (int column : {BusListModel::Model, BusListModel::State, BusListModel::Priority})
         header->moveSection(header->visualIndex(column), to++);
-    // A model name is short; "DBU — variant unknown" is shortened (the tooltip says why), so
-    // that the state and the priority stay in sight.
-    header->setSectionResizeMode(BusListModel::Model, QHeaderView::Interactive);
-    header->resizeSection(
-        BusListModel::Model,
-        std::max(header->sectionSizeHint(BusListModel::Model),
-                 m_view->fontMetrics().horizontalAdvance(QStringLiteral("DBU400-D4")) + 20));
     m_view->setTextElideMode(Qt::ElideRight);
     m_view->setWordWrap(false); // one line a drive, shortened where narrow
     m_view->setAccessibleName(tr("Drives on the bus"));

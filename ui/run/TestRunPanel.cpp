@@ -14,6 +14,7 @@
 
 #include <QDateTime>
 #include <QGridLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
 #include <QPointer>
@@ -59,6 +60,15 @@ TestRunPanel::TestRunPanel(BusDrives* drives, int slave, QWidget* parent)
     m_isDc =
         RoleEvaluator::parameter(profile, kSpeedCommand) && !profile.role(QStringLiteral("start"));
 
+    // Two columns: the commands first, where a laptop's short window still shows them with a
+    // dock open; why the drive refuses them and its live state beside them.
+    auto* columns = new QHBoxLayout;
+    layout->addLayout(columns, 1);
+    auto* left = new QVBoxLayout;
+    m_side = new QVBoxLayout;
+    columns->addLayout(left, 1);
+    columns->addLayout(m_side, 1);
+
     m_priorityBox = new MotionPriorityBox(drives, m_session, this);
     m_priorityBox->hide();
     connect(m_priorityBox, &MotionPriorityBox::switching, this, [this](const QString& text) {
@@ -72,10 +82,11 @@ TestRunPanel::TestRunPanel(BusDrives* drives, int slave, QWidget* parent)
                 setMessage(message, !ok);
                 refresh();
             });
-    layout->addWidget(m_priorityBox);
+    m_side->addWidget(m_priorityBox);
+    m_side->addStretch();
 
     m_commands = new QWidget(this);
-    layout->addWidget(m_commands);
+    left->addWidget(m_commands);
     if (m_isDc)
         buildDc();
     else
@@ -84,12 +95,12 @@ TestRunPanel::TestRunPanel(BusDrives* drives, int slave, QWidget* parent)
     m_warning->setWordWrap(true);
     m_warning->setStyleSheet(QStringLiteral("color: #a05000;"));
     m_warning->hide();
-    layout->addWidget(m_warning);
-    layout->addWidget(m_message);
+    left->addWidget(m_warning);
+    left->addWidget(m_message);
     m_state = new QLabel(this);
     m_state->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    layout->addWidget(m_state);
-    layout->addStretch();
+    left->addWidget(m_state);
+    left->addStretch();
     updateEnabled();
     refresh();
 }
@@ -343,7 +354,7 @@ void TestRunPanel::setMonitorHub(MonitorHub* hub)
     if (!m_session || m_live || !hub)
         return;
     m_live = new RunLiveState(hub, m_slave, this);
-    static_cast<QVBoxLayout*>(layout())->insertWidget(1, m_live);
+    m_side->insertWidget(1, m_live); // under why the drive refuses commands, if it does
 }
 
 void TestRunPanel::setPollingActive(bool active)

@@ -9,6 +9,7 @@
 
 class QLabel;
 class QPushButton;
+class QVBoxLayout;
 
 namespace opentop {
 
@@ -94,7 +95,8 @@ private:
 
     MotionPriorityBox* m_priorityBox = nullptr;
     QWidget* m_commands = nullptr;
-    QList<QWidget*> m_whileIdle; // disabled while a command is under way (stops never are)
+    QVBoxLayout* m_side = nullptr; // the right-hand column
+    QList<QWidget*> m_whileIdle;   // disabled while a command is under way (stops never are)
     SpnoSelector* m_spno = nullptr;
     RunLiveState* m_live = nullptr;
     StartPreview* m_preview = nullptr;
