@@ -122,8 +122,11 @@ void ParameterField::check(const QString& text)
 {
     const DeviceParameters::Entry* e = m_parameters->entry(m_name);
     const ValueCodec::Encoded encoded = ValueCodec::encodeText(*e->meta, text, context());
-    m_problem =
-        text.trimmed().isEmpty() ? QString() : m_parameters->withoutName(m_name, encoded.error);
+    // A group parent's children execute the write too: their own ranges count as well.
+    const QString error = encoded.ok
+                              ? m_parameters->session()->reachedProblem(m_name, encoded.registers)
+                              : encoded.error;
+    m_problem = text.trimmed().isEmpty() ? QString() : m_parameters->withoutName(m_name, error);
     m_typingWarning = text.trimmed().isEmpty() || !encoded.ok
                           ? QString()
                           : m_parameters->withoutName(m_name, encoded.warning);
