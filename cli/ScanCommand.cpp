@@ -3,6 +3,7 @@
 #include "CliContext.h"
 #include "GroupCheck.h"
 #include "ModbusClient.h"
+#include "ScanFormats.h"
 #include "TextTable.h"
 #include "bus/BusGroups.h"
 #include "bus/BusScanner.h"
@@ -14,6 +15,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <algorithm>
 #include <unistd.h>
 
 namespace opentop {
@@ -120,6 +122,10 @@ QList<QCommandLineOption> ScanCommand::options() const
          tr("Wait per machine number in ms, 10–5000 (default: derived from the baud rate; "
             "raise it for slow adapters or gateways)."),
          tr("MS")},
+        {QStringLiteral("try-formats"),
+         tr("Also ask the machine numbers not found in every other line format a drive can be "
+            "set to (a DC controller at 8E1 on a DBU bus at 8N1): one more pass per format, "
+            "off by default.")},
     };
 }
 
@@ -192,9 +198,14 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
     if (!completed)
         scanner.cancel(); // Ctrl-C: the event loop has stopped, nothing more is asked
     progress.clear();
-    const bool interrupted = !completed || (scanner.wasCancelled() && context.interrupted());
+    bool interrupted = !completed || (scanner.wasCancelled() && context.interrupted());
 
     QVector<DeviceInfo> devices = scanner.devices();
+    double elapsedMs = scanner.elapsedMs();
+    const bool tryFormats = context.parser().isSet(QStringLiteral("try-formats"));
+    if (!interrupted && scanner.error().isEmpty() && tryFormats &&
+        !ScanFormats::run(context, range.from, range.to, range.waitMs, &devices, &elapsedMs))
+        interrupted = true;
     completeVariants(context, &devices);
     BusGroups groups;
     QHash<int, bool> hasGroups;
@@ -220,7 +231,7 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
                                  .arg(range.to)
                           << Qt::endl;
         if (!context.json())
-            context.out() << summaryLine(devices, scanner.elapsedMs()) << Qt::endl;
+            context.out() << summaryLine(devices, elapsedMs) << Qt::endl;
         return ExitInterrupted;
     }
     if (!scanner.error().isEmpty()) {
@@ -231,8 +242,10 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
         return ExitCommunication;
     }
     if (!context.json())
-        context.out() << summaryLine(devices, scanner.elapsedMs()) << Qt::endl;
+        context.out() << summaryLine(devices, elapsedMs) << Qt::endl;
     warnDuplicates(context, devices);
+    if (!tryFormats)
+        ScanFormats::hint(context, range.from, range.to, devices);
     for (const BusGroups::Problem& problem : groups.problems())
         context.err() << tr("warning: %1").arg(BusGroups::describe(problem)) << Qt::endl;
     if (scanner.lateAnswers() > 0)
@@ -325,6 +338,11 @@ void ScanCommand::printTable(CliContext& context, const QVector<DeviceInfo>& dev
         showGroups = showGroups || (hasGroups.value(slave) && groups.groupOf(slave));
     if (showGroups)
         headers << tr("comm. group");
+    // Only where a drive talks another format than the port's.
+    const bool showLine = std::any_of(devices.begin(), devices.end(),
+                                      [](const DeviceInfo& d) { return d.line.isSet(); });
+    if (showLine)
+        headers << tr("line format");
     TextTable table(headers);
     table.setRightAligned(0);
     table.setRightAligned(1);
@@ -338,6 +356,8 @@ void ScanCommand::printTable(CliContext& context, const QVector<DeviceInfo>& dev
                         DeviceInfo::stateText(info.state)};
         if (showGroups)
             row << GroupCheck::groupText(groups, hasGroups, info.slave);
+        if (showLine)
+            row << (info.line.isSet() ? info.line.text() : tr("the port's"));
         table.addRow(row);
     }
     table.print(context.out());
@@ -359,6 +379,7 @@ void ScanCommand::printJson(CliContext& context, const BusScanner& scanner,
             {QStringLiteral("firmware"), info.firmware},
             {QStringLiteral("state"), stateId(info.state)},
             {QStringLiteral("detail"), info.detail},
+            {QStringLiteral("line"), info.line.isSet() ? info.line.token() : QString()},
         };
         GroupCheck::addJson(groups, hasGroups, info.slave, &device);
         list.append(device);

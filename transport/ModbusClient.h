@@ -51,6 +51,14 @@ public:
     // Same rules as SerialLineReport::adapterLatencyMs(). Any thread.
     int adapterLatencyMs() const;
 
+    // Drives that talk another format than the port's (ConnectionSettings::driveLines):
+    // requests to them carry it from the next transaction on; an unset format, or the port's,
+    // removes the entry. Client thread.
+    void setDriveLine(int slave, const LineFormat& format);
+    // The drive's format: its entry, else the port's.
+    LineFormat driveLine(int slave) const;
+    bool hasOwnLine(int slave) const { return m_settings.driveLines.contains(slave); }
+
     // Queues a request. `callback` runs on `context`'s thread (this client's when null);
     // finished() is emitted as well. Invalid requests are answered with InvalidRequest, never
     // synchronously. A context deleted before its result arrives gets no callback; delete it
@@ -72,6 +80,8 @@ signals:
     // The port failed while in use (e.g. USB adapter unplugged): a PortError after which the
     // backend closed itself. Emitted once per open(); later requests get NotConnected.
     void connectionLost(const QString& error);
+    // A drive's line format was set or removed (setDriveLine).
+    void driveLineChanged(int slave);
 
 private:
     friend class ModbusClientWorker;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "LineFormat.h"
+
 #include <QByteArray>
 #include <QString>
 #include <QVector>
@@ -37,6 +39,9 @@ struct ModbusRequest
     int timeoutMs = -1;      // -1: the connection's default
     int retries = -1;        // -1: the connection's default
     Priority priority = Priority::Normal;
+    // The format of the drive it goes to; unset: the client's table for the slave, else the
+    // port's (a broadcast with none goes out in every format the table holds).
+    LineFormat line;
 
     static ModbusRequest readHolding(quint8 slave, quint16 address, quint16 count);
     static ModbusRequest readInput(quint8 slave, quint16 address, quint16 count);

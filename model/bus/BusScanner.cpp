@@ -58,8 +58,19 @@ void BusScanner::setWaitMs(int ms)
 
 int BusScanner::waitMs() const
 {
-    return m_waitMs > 0 ? m_waitMs
-                        : defaultWaitMs(m_client->settings(), m_client->adapterLatencyMs());
+    return waitFor(0);
+}
+
+int BusScanner::waitFor(int slave) const
+{
+    if (m_waitMs > 0)
+        return m_waitMs;
+    ConnectionSettings settings = m_client->settings();
+    if (m_line.isSet())
+        settings.setLine(m_line);
+    else if (slave > 0)
+        settings.setLine(m_client->driveLine(slave));
+    return defaultWaitMs(settings, m_client->adapterLatencyMs());
 }
 
 double BusScanner::elapsedMs() const
@@ -109,11 +120,14 @@ void BusScanner::askProfile(int profileIndex, bool confirming)
     // A drive asked again because it answered late: four waits, or the connection's timeout.
     // The last address of the pass has no next request to catch its late reply: four waits.
     const bool last = !m_reasking && m_slave == m_to;
+    request.line = m_line;
+    // A drive of its own format is asked at its rate: the wait follows it.
+    const int effectiveWaitMs = std::max(m_effectiveWaitMs, waitFor(m_slave));
     request.timeoutMs =
-        m_reasking ? std::clamp(std::max(4 * m_effectiveWaitMs, m_client->settings().timeoutMs),
+        m_reasking ? std::clamp(std::max(4 * effectiveWaitMs, m_client->settings().timeoutMs),
                                 kMinWaitMs, kMaxWaitMs)
-        : last     ? std::clamp(4 * m_effectiveWaitMs, kMinWaitMs, kMaxWaitMs)
-                   : m_effectiveWaitMs;
+        : last     ? std::clamp(4 * effectiveWaitMs, kMinWaitMs, kMaxWaitMs)
+                   : effectiveWaitMs;
     // Silence is the normal answer in a scan: retrying it would only double the scan time.
     request.retries = 0;
     request.priority = ModbusRequest::Priority::User;
@@ -203,6 +217,9 @@ void BusScanner::addressDone(DeviceInfo info)
     if (!m_reasking)
         ++m_done;
     if (info.state != DeviceInfo::State::Absent) {
+        info.line = m_line.isSet() ? m_line : LineFormat();
+        if (!info.line.isSet() && m_client->hasOwnLine(info.slave))
+            info.line = m_client->driveLine(info.slave);
         if (m_reasking) {
             const QString late = tr("answered late at first (after the %1 ms wait); a longer "
                                     "wait makes scans of this bus reliable")

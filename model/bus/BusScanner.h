@@ -1,5 +1,6 @@
 #pragma once
 
+#include "LineFormat.h"
 #include "session/DeviceInfo.h"
 
 #include <QElapsedTimer>
@@ -45,6 +46,10 @@ public:
     // Range and wait for the next start(); waitMs 0 uses defaultWaitMs().
     void setRange(int from, int to);
     void setWaitMs(int ms);
+    // The format every request of the next start() goes out in (a pass for drives of another
+    // format); unset: each drive's own (ModbusClient::driveLine), else the port's.
+    void setLine(const LineFormat& format) { m_line = format; }
+    LineFormat line() const { return m_line; }
     int from() const { return m_from; }
     int to() const { return m_to; }
     int waitMs() const;
@@ -79,6 +84,8 @@ private:
     void noteLateAnswer(const ModbusResult& result);
     void askAgainLater(int slave);
     void addressDone(DeviceInfo info);
+    // The wait for `slave`: the given one, else derived from the format it is asked in.
+    int waitFor(int slave) const;
     void nextAddress();
     void finish();
 
@@ -88,6 +95,7 @@ private:
     int m_from = 1;
     int m_to = 247;
     int m_waitMs = 0;
+    LineFormat m_line;
     int m_effectiveWaitMs = 0;
     int m_cursor = 1; // the next address of the pass through the range
     int m_slave = 0;  // the address being asked
