@@ -137,14 +137,16 @@ namespace {
 
 const QString kMixedBus = QStringLiteral("--bus-drives=1,2,150");
 
-// Drives 1 and 2 (DBU200) and 150 (DBU400) on a line with wire timing; 2 and 150 follow 1.
+// Drives 1 and 2 (DBU200) and 150 (DBU400) on a half-duplex line with wire timing; 2 and 150
+// follow 1.
 void startMixedGroup(SimProcess* sim)
 {
     QString error;
-    ASSERT_TRUE(sim->start(
-        {QStringLiteral("--devices"), QStringLiteral("dbu200@1,dbu200@2,dbu400@150"),
-         QStringLiteral("--wire-timing"), QStringLiteral("--baud"), QStringLiteral("19200")},
-        &error))
+    ASSERT_TRUE(
+        sim->start({QStringLiteral("--devices"), QStringLiteral("dbu200@1,dbu200@2,dbu400@150"),
+                    QStringLiteral("--wire-timing"), QStringLiteral("--half-duplex"),
+                    QStringLiteral("--baud"), QStringLiteral("19200")},
+                   &error))
         << qPrintable(error);
     for (int child : {2, 150})
         sim->command(QStringLiteral("set %1 0x00F5 1").arg(child));
