@@ -33,13 +33,28 @@ extern "C" void onInterrupt(int)
 
 CliContext::CliContext(const QCommandLineParser& parser, QTextStream& out, QTextStream& err,
                        QObject* parent)
-    : QObject(parent)
+    : GroupReach(parent)
     , m_parser(parser)
     , m_out(out)
     , m_err(err)
     , m_log(std::make_unique<TrafficLog>())
 {
     m_log->setDescriber(m_describer.describer());
+}
+
+void CliContext::setGroups(const BusGroups& groups)
+{
+    m_groups = groups;
+    m_describer.setGroups(groups);
+}
+
+QVector<DeviceSession*> CliContext::reachedBy(int slave) const
+{
+    QVector<DeviceSession*> sessions;
+    for (int child : m_groups.childrenOf(slave))
+        if (DeviceSession* s = m_sessions.value(child))
+            sessions << s;
+    return sessions;
 }
 
 CliContext::~CliContext()
@@ -202,6 +217,7 @@ DeviceSession* CliContext::session(int slave, QString* error)
     const Profile* profile = ProfileRegistry::builtIn().family(info.family);
     auto* s = new DeviceSession(m_client.get(), *profile, slave, info.variant);
     s->acceptIdentification(info.identifyRegisters);
+    s->setGroupReach(this);
     m_sessions.insert(slave, s);
     return s;
 }

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "run/GroupFollowers.h"
+
 #include <QObject>
 #include <QStringList>
 #include <QVector>
@@ -13,7 +15,8 @@ class BusDrives;
 // What a start of a drive will do, read from the drives before it is asked for: which running
 // data (SPno) is selected, its speed and direction as the drive holds them, a deceleration the
 // manual advises against (RunningData), and the other drives the start also reaches through
-// their communication group (BusGroups, the groups read now, not assumed).
+// their communication group (BusGroups, the groups read now, not assumed), each with whether it
+// follows the start (GroupFollowers: its control priority and alarm, read now).
 class StartPreview : public QObject
 {
     Q_OBJECT
@@ -27,8 +30,9 @@ public:
         bool directionFromCommand = false;
         QString warning; // the deceleration advice, or empty
         QVector<int> alsoReaches;
-        QString reach;      // BusGroups::reachText
-        QStringList unread; // labels of what could not be read
+        QString reach;                            // BusGroups::reachText
+        QVector<GroupFollowers::Drive> followers; // the drives reached: do they follow?
+        QStringList unread;                       // labels of what could not be read
         // The lines of the start confirmation.
         QString text() const;
         // The whole start question; `speedCommand`: a speed set point that starts the motor
@@ -48,6 +52,7 @@ private:
     void readSelection(const std::shared_ptr<Job>& job);
     void readSpno(const std::shared_ptr<Job>& job);
     void readGroups(const std::shared_ptr<Job>& job);
+    void readFollowers(const std::shared_ptr<Job>& job);
 
     BusDrives* m_drives;
 };

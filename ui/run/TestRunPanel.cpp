@@ -4,6 +4,7 @@
 #include "profile/ProfileRegistry.h"
 #include "profile/RoleEvaluator.h"
 #include "profile/ValueCodec.h"
+#include "run/CommandReadBack.h"
 #include "run/DcRunCommands.h"
 #include "run/MotionPriorityBox.h"
 #include "run/RunLiveState.h"
@@ -12,11 +13,9 @@
 #include "session/DeviceSession.h"
 #include "widgets/ConfirmBox.h"
 
-#include <QDateTime>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QLocale>
 #include <QPointer>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -97,8 +96,7 @@ TestRunPanel::TestRunPanel(BusDrives* drives, int slave, QWidget* parent)
     m_warning->hide();
     left->addWidget(m_warning);
     left->addWidget(m_message);
-    m_state = new QLabel(this);
-    m_state->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_state = new CommandReadBack(this);
     left->addWidget(m_state);
     left->addStretch();
     updateEnabled();
@@ -279,23 +277,34 @@ void TestRunPanel::send(const RunControl::Command& command)
         if (o.failure == RunControl::Failure::Priority)
             self->refresh(); // the drive was switched to I/O priority meanwhile
         if (!o.sent) {
-            self->m_busy = false;
-            self->updateEnabled();
-            emit self->commandFinished(false);
+            self->finishCommand(false);
             return;
         }
-        self->m_control.readState(
-            self->m_session,
-            [self, ok = o.ok](const RunControl::State& state) {
+        // The drives of its communication group executed a motion command too, or ignored
+        // it: what each does is read from it, as is the drive's own state.
+        const bool motion = o.plan.meta && o.plan.meta->safety == QLatin1String("motion");
+        self->m_state->readAfter(
+            &self->m_control, self->m_session,
+            motion ? self->m_session->reachedDrives() : QVector<DeviceSession*>(), kSettleMs,
+            [self, ok = o.ok, start = command.action == RunControl::Action::Start](bool allRun) {
                 if (!self)
                     return;
-                self->showState(state);
-                self->m_busy = false;
-                self->updateEnabled();
-                emit self->commandFinished(ok);
-            },
-            kSettleMs);
+                // A start that left a child standing is said where the user looks first.
+                if (!allRun && start)
+                    self->setMessage(self->m_message->text() + QLatin1Char('\n') +
+                                         tr("Not every drive of its communication group runs: "
+                                            "see below."),
+                                     true);
+                self->finishCommand(ok);
+            });
     });
+}
+
+void TestRunPanel::finishCommand(bool ok)
+{
+    m_busy = false;
+    updateEnabled();
+    emit commandFinished(ok);
 }
 
 void TestRunPanel::showOutcome(const RunControl::Outcome& o)
@@ -304,27 +313,10 @@ void TestRunPanel::showOutcome(const RunControl::Outcome& o)
         setMessage(tr("Sent: %1").arg(o.plan.description), false);
         return;
     }
-    QString text = o.error;
-    if (!o.deviceError.isEmpty() && !text.contains(o.deviceError))
-        text += QStringLiteral(" (%1)").arg(o.deviceError);
+    QString text = o.error; // with the drive's error code, when it gave one
     if (!o.explanation.isEmpty())
         text += QStringLiteral("\n") + o.explanation;
     setMessage(text, true);
-}
-
-void TestRunPanel::showState(const RunControl::State& state)
-{
-    // A snapshot, and says so: what the drive does now is in the live box.
-    QStringList lines{
-        tr("Read back after the command at %1:")
-            .arg(QLocale().toString(QTime::currentTime(), QStringLiteral("HH:mm:ss")))};
-    if (state.running)
-        lines << (*state.running ? tr("The motor is running.") : tr("The motor is stopped."));
-    for (const auto& item : state.items)
-        lines << tr("%1: %2").arg(item.first, item.second);
-    if (!state.error.isEmpty())
-        lines << tr("(not read: %1)").arg(state.error);
-    m_state->setText(lines.join(QLatin1Char('\n')));
 }
 
 QString TestRunPanel::priorityExplanation() const

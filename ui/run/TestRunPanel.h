@@ -14,6 +14,7 @@ class QVBoxLayout;
 namespace opentop {
 
 class BusDrives;
+class CommandReadBack;
 class DcRunCommands;
 class DeviceSession;
 class MonitorHub;
@@ -29,9 +30,10 @@ class StartPreview;
 // explains how to switch and offers to do it after a confirmation, and once switched offers the
 // way back to I/O priority. Starting a motor asks once per drive and program run, and every
 // time the start also reaches other drives (communication group); the question says which
-// running data, speed and direction will run (StartPreview). With a MonitorHub the page shows
-// what the drive does now (RunLiveState, watched while visible); after each command the state
-// read back is shown with its time.
+// running data, speed and direction will run and which drives of its communication group follow
+// (StartPreview); after a motion command each of them is read and reported. With a MonitorHub the
+// page shows what the drive does now (RunLiveState, watched while visible); after each command the
+// state read back is shown with its time.
 class TestRunPanel : public QWidget
 {
     Q_OBJECT
@@ -76,7 +78,7 @@ private:
     void run(const RunControl::Command& command, bool starts);
     void send(const RunControl::Command& command);
     void showOutcome(const RunControl::Outcome& outcome);
-    void showState(const RunControl::State& state);
+    void finishCommand(bool ok);
     void updateEnabled();
     void updateWarning();
     void setMessage(const QString& text, bool error);
@@ -106,7 +108,7 @@ private:
     DcRunCommands* m_dc = nullptr; // the DC controller's commands
     QLabel* m_warning = nullptr;
     QLabel* m_message = nullptr;
-    QLabel* m_state = nullptr;
+    CommandReadBack* m_state = nullptr;
 
     static QSet<int> s_confirmed;
 };

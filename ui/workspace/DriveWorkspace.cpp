@@ -82,8 +82,10 @@ void DriveWorkspace::setDrive(DeviceParameters* parameters, const QString& title
         disconnect(m_parameters, nullptr, this, nullptr);
     m_parameters = parameters;
     m_title->setText(parameters ? title : tr("Select a drive in the bus list to set it up."));
-    if (!parameters)
+    if (!parameters) {
         m_status->clear(); // nothing of another drive's last operation
+        m_status->setStyleSheet(QString());
+    }
     if (parameters) {
         QStringList editorsDone;
         for (const ProfileGroup& group : parameters->profile().groups) {
@@ -192,9 +194,13 @@ void DriveWorkspace::writeAll()
         return;
     }
     m_status->setText(tr("Writing %n value(s)…", nullptr, count));
-    m_parameters->write({}, [this, count](int failed) {
-        m_status->setText(failed ? tr("%n write(s) failed; see the marked fields", nullptr, failed)
-                                 : tr("%n value(s) written and verified", nullptr, count));
+    m_status->setStyleSheet(QString());
+    const QStringList pending = m_parameters->pendingNames();
+    m_parameters->write({}, [this, pending](int failed) {
+        bool problem = false;
+        m_status->setText(m_parameters->writeResultText(pending, failed, &problem));
+        // Red when a write failed or was not verified on every drive it reached.
+        m_status->setStyleSheet(problem ? QStringLiteral("color: #b01c1c;") : QString());
         updateButtons();
         emit operationFinished();
     });
