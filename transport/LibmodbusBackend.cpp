@@ -100,6 +100,7 @@ void LibmodbusBackend::close()
     m_lateWatch.clear();
     m_suspects.clear();
     m_checkedSinceOpen.clear();
+    m_lineHeldUntilMs = 0;
     qCDebug(lcTransport) << "closed" << describe();
 }
 
@@ -133,6 +134,7 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
         timeoutMs = m_settings.timeoutMs;
 
     awaitLateReplies(request);
+    awaitQuietLine(request);
     discardStaleInput(request);
     if (!keepFrameGap()) {
         result.error = ModbusError::Cancelled;
@@ -141,6 +143,7 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
     // Also a reply swallowed by the previous request's recovery: whoever asked that drive
     // (a scan) hears of it with the next result.
     result.lateReplyFrom = std::exchange(m_discardedReplyFrom, -1);
+    result.discardedGarbled = std::exchange(m_discardedGarbled, false);
     const QByteArray raw = char(request.slave) + request.pdu();
     const QByteArray sent = txAdu(request);
     logFrame(true, sent, request, request.describe(), QString());
@@ -182,6 +185,7 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
                              .arg(timeoutMs);
         logEvent(request, result.message, result.errorText());
         deferRecovery(request, timeoutMs);
+        holdLine(request, timeoutMs);
         return result;
     }
 
@@ -219,6 +223,7 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
         recover(request, timeoutMs);
         if (result.lateReplyFrom < 0)
             result.lateReplyFrom = std::exchange(m_discardedReplyFrom, -1);
+        result.discardedGarbled |= std::exchange(m_discardedGarbled, false);
     }
     return result;
 }
@@ -482,6 +487,40 @@ void LibmodbusBackend::awaitLateReplies(const ModbusRequest& request)
     drain(request, untilMs - nowMs, quietMs);
 }
 
+int LibmodbusBackend::longestReplyBytes(const ModbusRequest& request)
+{
+    if (request.raw)
+        return MODBUS_RTU_MAX_ADU_LENGTH; // its length is the device's choice
+    if (request.isRead())
+        return 5 + 2 * request.count; // id, function, byte count, registers, CRC
+    return 8;                         // a write's echo
+}
+
+void LibmodbusBackend::holdLine(const ModbusRequest& request, int timeoutMs)
+{
+    // Nothing came within the wait, yet a reply may have begun just before its end (a drive
+    // slower than the wait, or an adapter or gateway that passes a frame on only once it is
+    // whole): another request now would meet it on a half-duplex line and both would be lost.
+    // Counted from sending, as the timeout is. TCP has no wire time and no gap: nothing held.
+    m_lineHeldUntilMs =
+        m_sentAtMs + timeoutMs + wireTimeMs(longestReplyBytes(request)) + frameGapMs();
+    m_lineHeldByProbe = request.probe;
+}
+
+void LibmodbusBackend::awaitQuietLine(const ModbusRequest& request)
+{
+    const double leftMs = m_lineHeldUntilMs - nowMs();
+    const bool probeAfterProbe = request.probe && m_lineHeldByProbe;
+    m_lineHeldUntilMs = 0;
+    if (leftMs <= 0 || probeAfterProbe)
+        return;
+    // A reply that comes meanwhile ends the wait once the line has been quiet for a frame gap
+    // (and what the adapter may hold back); its sender is noted for the next result.
+    const int quietMs =
+        int(std::ceil(std::max(frameGapMs(), wireTimeMs(4)) + lineReport().adapterLatencyMs()));
+    drain(request, leftMs, std::max(1, quietMs));
+}
+
 void LibmodbusBackend::drain(const ModbusRequest& request, double firstWindowMs, int quietMs)
 {
     // A babbling line must not hold the bus for ever.
@@ -520,6 +559,8 @@ void LibmodbusBackend::noteDiscarded(const QByteArray& rtu)
             return;
         }
     }
+    if (!rtu.isEmpty())
+        m_discardedGarbled = true;
 }
 
 } // namespace opentop

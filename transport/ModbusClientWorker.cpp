@@ -35,6 +35,13 @@ struct ModbusClientWorker::State
     std::deque<Control> controls;
     quint64 inFlight = 0;
     bool stop = false;
+    bool pollingHeld = false; // a scan owns the bus: the Poll queue waits
+
+    // Whether a request can be taken now.
+    bool hasWork() const
+    {
+        return !queues[2].empty() || !queues[1].empty() || (!queues[0].empty() && !pollingHeld);
+    }
 
     std::atomic<bool> interrupt{false};
     std::atomic<bool> open{false};
@@ -220,6 +227,15 @@ void ModbusClientWorker::cancelAll()
                     QCoreApplication::translate("opentop::Transport", "cancelled before sending")));
 }
 
+void ModbusClientWorker::setPollingHeld(bool held)
+{
+    {
+        std::lock_guard<std::mutex> lock(m_state->mutex);
+        m_state->pollingHeld = held;
+    }
+    m_state->wake.notify_all();
+}
+
 int ModbusClientWorker::pendingCount() const
 {
     std::lock_guard<std::mutex> lock(m_state->mutex);
@@ -237,10 +253,7 @@ void ModbusClientWorker::run(std::shared_ptr<State> state)
     State& s = *state;
     for (;;) {
         std::unique_lock<std::mutex> lock(s.mutex);
-        s.wake.wait(lock, [&s] {
-            return s.stop || !s.controls.empty() || !s.queues[0].empty() || !s.queues[1].empty() ||
-                   !s.queues[2].empty();
-        });
+        s.wake.wait(lock, [&s] { return s.stop || !s.controls.empty() || s.hasWork(); });
         if (s.stop)
             break;
         if (!s.controls.empty()) {
@@ -271,7 +284,7 @@ void ModbusClientWorker::run(std::shared_ptr<State> state)
         }
         Item item;
         for (int q = 2; q >= 0; --q) {
-            if (!s.queues[q].empty()) {
+            if (!s.queues[q].empty() && !(q == 0 && s.pollingHeld)) {
                 item = std::move(s.queues[q].front());
                 s.queues[q].pop_front();
                 break;
@@ -329,9 +342,11 @@ ModbusResult ModbusClientWorker::execute(State& s, const Item& item)
         request.isBroadcast() ? 0 : s.retryPolicy.retriesFor(request.retries, s.settings.retries);
     ModbusResult result;
     int lateFrom = -1; // a reply to an earlier request seen by any attempt (see below)
+    bool garbled = false;
     for (int attempt = 1;; ++attempt) {
         result = s.backend->transact(request, timeoutMs);
         result.attempts = attempt;
+        garbled |= result.discardedGarbled;
         // The frame taken in place of the answer names its sender; the drain after it may
         // also have swallowed this request's own answer, which is no news.
         if (result.error == ModbusError::WrongSlave && !result.reply.isEmpty())
@@ -369,6 +384,7 @@ ModbusResult ModbusClientWorker::execute(State& s, const Item& item)
     // scan still running asks that drive again (BusScanner listens to every result).
     if (result.lateReplyFrom < 0 && lateFrom != request.slave)
         result.lateReplyFrom = lateFrom;
+    result.discardedGarbled = garbled;
     return result;
 }
 

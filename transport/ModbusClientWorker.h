@@ -42,6 +42,8 @@ public:
     bool cancel(quint64 id);
     void cancelAll();
     int pendingCount() const;
+    // While held, the Poll queue is not served (ModbusClient::holdPolling).
+    void setPollingHeld(bool held);
 
     static constexpr int kStopWaitMs = 1500;
 

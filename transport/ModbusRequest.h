@@ -37,6 +37,12 @@ struct ModbusRequest
     int timeoutMs = -1;      // -1: the connection's default
     int retries = -1;        // -1: the connection's default
     Priority priority = Priority::Normal;
+    // A scan's question to a machine number that has not answered yet. After a request timed
+    // out, every other request waits until the longest reply to it could have ended (it may
+    // still be on the wire: LibmodbusBackend); a probe after a probe goes at once, because the
+    // scan sees a collision as a garbled frame and asks that address again. This keeps an empty
+    // address at one short wait.
+    bool probe = false;
 
     static ModbusRequest readHolding(quint8 slave, quint16 address, quint16 count);
     static ModbusRequest readInput(quint8 slave, quint16 address, quint16 count);
