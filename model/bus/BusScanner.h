@@ -3,7 +3,10 @@
 #include "session/DeviceInfo.h"
 
 #include <QElapsedTimer>
+#include <QHash>
 #include <QObject>
+#include <QPointer>
+#include <QSet>
 #include <QVector>
 
 namespace opentop {
@@ -16,11 +19,15 @@ struct ModbusResult;
 
 // Finds the drives on a bus: asks every machine number of a range with each profile's identify
 // read (DeviceIdentifier decodes the replies), one transaction at a time, asynchronously.
-// Absent addresses cost one request with a short wait derived from the baud rate; an address
-// that answers with garbled frames is asked once more before it is reported as a likely
-// duplicate machine number, and a drive whose reply turns up late (during the next address's
-// wait) is asked again with a longer wait instead of being lost. Usable from the GUI and the
-// command line alike.
+// While it runs it owns the bus: polling waits (ModbusClient::holdPolling), so that nothing but
+// its own questions meets a reply on the line. Absent addresses cost one request with a short
+// wait for the first byte, derived from the baud rate; once an address has answered anything,
+// its identification waits for the whole reply. An address that answers with garbled frames is
+// asked once more before it is reported as a likely duplicate machine number, and a drive whose
+// reply turns up late (during the next address's wait) is asked again with a longer wait
+// instead of being lost. An address that answered but could not be identified is asked again a
+// few times and then reported as such (State::IdentifyFailed), never dropped. Usable from the
+// GUI and the command line alike.
 class BusScanner : public QObject
 {
     Q_OBJECT
@@ -32,6 +39,9 @@ public:
     // gap: the DBU manual's T3 "initial value 10 ms" (11-1). A slower drive is found by the
     // late-answer rescue, not by making every empty address wait longer.
     static constexpr double kAnswerBudgetMs = 10.0;
+    // How often an address that answered is asked again before the scan gives up on
+    // identifying it.
+    static constexpr int kIdentifyRetries = 3;
 
     BusScanner(ModbusClient* client, const ProfileRegistry& registry, QObject* parent = nullptr);
     ~BusScanner() override;
@@ -41,6 +51,11 @@ public:
     // (a USB adapter without low latency holds received bytes up to its latency timer). Only
     // the first byte has to come within it; the rest of a reply is read by the byte timeout.
     static int defaultWaitMs(const ConnectionSettings& settings, int adapterLatencyMs = 0);
+    // The wait for a whole reply of `replyBytes` after a first-byte wait of `firstByteWaitMs`:
+    // a reply that begins as late as that wait allows has ended by then, also where the adapter
+    // passes it on only whole.
+    static int wholeReplyWaitMs(const ConnectionSettings& settings, int firstByteWaitMs,
+                                int replyBytes);
 
     // Range and wait for the next start(); waitMs 0 uses defaultWaitMs().
     void setRange(int from, int to);
@@ -64,6 +79,8 @@ public:
     // Addresses asked again with a longer wait: a reply from them came after their wait, or a
     // garbled frame came while the next address was asked (a late reply colliding with it).
     int lateAnswers() const { return m_lateAnswers; }
+    // Addresses that answered but could not be identified, so far.
+    QVector<int> unidentifiedAnswers() const;
     double elapsedMs() const;
     // Every address that answered, in machine number order.
     QVector<DeviceInfo> devices() const { return m_devices; }
@@ -71,6 +88,9 @@ public:
 signals:
     void progress(int done, int total, int slave);
     void found(const opentop::DeviceInfo& info);
+    // `slave` answered, but its identification failed: it is asked again (`attempt` of
+    // kIdentifyRetries) before the scan gives up and reports it.
+    void identificationRetry(int slave, int attempt, int attempts);
     void finished(const QVector<opentop::DeviceInfo>& devices);
 
 private:
@@ -78,25 +98,35 @@ private:
     void handleReply(int profileIndex, bool confirming, const ModbusResult& result);
     void noteLateAnswer(const ModbusResult& result);
     void askAgainLater(int slave);
+    int requestTimeoutMs(int profileIndex, bool confirming) const;
+    // The address answered before; its identification has just failed.
+    DeviceInfo identificationFailed(DeviceInfo info);
     void addressDone(DeviceInfo info);
     void nextAddress();
     void finish();
 
     ModbusClient* m_client;
+    QPointer<ModbusClient> m_held; // holding its polling while running
     const ProfileRegistry& m_registry;
     DeviceIdentifier* m_identifier;
     int m_from = 1;
     int m_to = 247;
     int m_waitMs = 0;
     int m_effectiveWaitMs = 0;
-    int m_cursor = 1; // the next address of the pass through the range
-    int m_slave = 0;  // the address being asked
+    int m_cursor = 1;   // the next address of the pass through the range
+    int m_slave = 0;    // the address being asked
+    int m_previous = 0; // the address asked before it: a late reply of its collides with it
+    int m_earlier = 0;  // the one asked before that
     bool m_reasking = false;
-    QVector<int> m_late; // answered after the wait: to be asked again
+    QVector<int> m_late;       // answered after the wait: to be asked again
+    QSet<int> m_answered;      // sent a whole frame of some kind (an exception, a late reply)
+    QHash<int, int> m_reasks;  // times each address was asked again for a late reply
+    QHash<int, int> m_retries; // times each address was asked again after it answered
     int m_lateAnswers = 0;
     int m_done = 0;
     int m_requests = 0;
     quint64 m_pendingId = 0; // the request of ours that is queued or on the wire
+    quint64 m_handledId = 0; // the last of ours handed to handleReply()
     bool m_running = false;
     bool m_cancelled = false;
     bool m_cancelRequested = false;
