@@ -184,15 +184,22 @@ void BusPanel::startScan(int from, int to)
         m_progress->setValue(done);
         m_progress->setFormat(tr("%v of %m (machine number %1)").arg(slave));
     });
+    connect(m_scanner, &BusScanner::identificationRetry, this,
+            [this](int slave, int attempt, int attempts) {
+                showMessage(tr("Machine number %1 answered, identification failed: retrying "
+                               "(%2 of %3)… Polling waits until the scan is over.")
+                                .arg(slave)
+                                .arg(attempt)
+                                .arg(attempts),
+                            true);
+            });
     connect(m_scanner, &BusScanner::finished, this, &BusPanel::onScanFinished);
-    // The scan's short waits assume a quiet line: background polling pauses meanwhile.
-    m_resumePoller = m_poller && m_poller->isActive();
-    if (m_resumePoller)
-        m_poller->stop();
     m_progress->setRange(0, to - from + 1);
     m_progress->setValue(0);
     m_progress->setFormat(tr("%v of %m"));
-    showMessage(tr("Scanning machine numbers %1–%2 on %3, %4 ms each…")
+    // The scanner holds the bus: polling waits, and the values shown age meanwhile.
+    showMessage(tr("Scanning machine numbers %1–%2 on %3, %4 ms each… Polling waits until the "
+                   "scan is over.")
                     .arg(from)
                     .arg(to)
                     .arg(m_drives->client()->describe())
@@ -219,7 +226,8 @@ void BusPanel::onScanFinished()
 {
     const int from = m_scanner->from();
     const int scanned = m_scanner->scannedCount();
-    const int found = int(m_scanner->devices().size());
+    const QVector<int> unidentified = m_scanner->unidentifiedAnswers();
+    const int found = int(m_scanner->devices().size() - unidentified.size());
     // Drives listed earlier that no longer answer in the range asked are shown as such.
     QVector<int> answered;
     for (const DeviceInfo& d : m_scanner->devices())
@@ -258,12 +266,17 @@ void BusPanel::onScanFinished()
                                                              m_scanner->to());
         if (offer)
             text += QLatin1Char(' ') + fixed.explanation();
-        showMessage(text, found == 0);
+        // Something answered there but never said what it is: not a drive of the list, and
+        // not nothing either.
+        for (int slave : unidentified)
+            text += QLatin1Char(' ') +
+                    tr("Machine number %1 answered, but its identification failed, also when "
+                       "asked again: add it by hand with Add drive…, or check its line settings "
+                       "and scan again.")
+                        .arg(slave);
+        showMessage(text, found == 0 || !unidentified.isEmpty());
         m_fixedLine->setVisible(offer);
     }
-    if (m_resumePoller && m_poller)
-        m_poller->start();
-    m_resumePoller = false;
     updateButtons();
     emit scanFinished();
 }
