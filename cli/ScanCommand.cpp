@@ -3,6 +3,7 @@
 #include "CliContext.h"
 #include "GroupCheck.h"
 #include "ModbusClient.h"
+#include "ScanFormats.h"
 #include "ScanProgress.h"
 #include "TextTable.h"
 #include "bus/BusGroups.h"
@@ -15,6 +16,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <algorithm>
 
 namespace opentop {
 
@@ -71,6 +73,10 @@ QList<QCommandLineOption> ScanCommand::options() const
          tr("Wait per machine number in ms, 10–5000 (default: derived from the baud rate; "
             "raise it for slow adapters or gateways)."),
          tr("MS")},
+        {QStringLiteral("try-formats"),
+         tr("Also ask the machine numbers not found in every other line format a drive can be "
+            "set to (a DC controller at 8E1 on a DBU bus at 8N1): one more pass per format, "
+            "off by default.")},
     };
 }
 
@@ -148,9 +154,14 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
     if (!completed)
         scanner.cancel(); // Ctrl-C: the event loop has stopped, nothing more is asked
     progress.clear();
-    const bool interrupted = !completed || (scanner.wasCancelled() && context.interrupted());
+    bool interrupted = !completed || (scanner.wasCancelled() && context.interrupted());
 
     QVector<DeviceInfo> devices = scanner.devices();
+    double elapsedMs = scanner.elapsedMs();
+    const bool tryFormats = context.parser().isSet(QStringLiteral("try-formats"));
+    if (!interrupted && scanner.error().isEmpty() && tryFormats &&
+        !ScanFormats::run(context, range.from, range.to, range.waitMs, &devices, &elapsedMs))
+        interrupted = true;
     completeVariants(context, &devices);
     BusGroups groups;
     QHash<int, bool> hasGroups;
@@ -176,7 +187,7 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
                                  .arg(range.to)
                           << Qt::endl;
         if (!context.json())
-            context.out() << summaryLine(devices, scanner.elapsedMs()) << Qt::endl;
+            context.out() << summaryLine(devices, elapsedMs) << Qt::endl;
         return ExitInterrupted;
     }
     if (!scanner.error().isEmpty()) {
@@ -187,8 +198,10 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
         return ExitCommunication;
     }
     if (!context.json())
-        context.out() << summaryLine(devices, scanner.elapsedMs()) << Qt::endl;
+        context.out() << summaryLine(devices, elapsedMs) << Qt::endl;
     warnDuplicates(context, devices);
+    if (!tryFormats)
+        ScanFormats::hint(context, range.from, range.to, devices);
     for (const BusGroups::Problem& problem : groups.problems())
         context.err() << tr("warning: %1").arg(BusGroups::describe(problem)) << Qt::endl;
     if (scanner.lateAnswers() > 0)
@@ -199,7 +212,10 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
                       << Qt::endl;
     // Something answered there but never said what it is: reported, and the scan did not do
     // all it should (exit 1).
-    const QVector<int> unidentified = scanner.unidentifiedAnswers();
+    QVector<int> unidentified;
+    for (const DeviceInfo& info : devices)
+        if (info.state == DeviceInfo::State::IdentifyFailed)
+            unidentified << info.slave;
     for (int slave : unidentified)
         context.err() << tr("warning: machine number %1 answered, but its identification failed, "
                             "also when asked again %2 more times; it is not counted as a drive. "
@@ -293,6 +309,11 @@ void ScanCommand::printTable(CliContext& context, const QVector<DeviceInfo>& dev
         showGroups = showGroups || (hasGroups.value(slave) && groups.groupOf(slave));
     if (showGroups)
         headers << tr("comm. group");
+    // Only where a drive talks another format than the port's.
+    const bool showLine = std::any_of(devices.begin(), devices.end(),
+                                      [](const DeviceInfo& d) { return d.line.isSet(); });
+    if (showLine)
+        headers << tr("line format");
     TextTable table(headers);
     table.setRightAligned(0);
     table.setRightAligned(1);
@@ -306,6 +327,8 @@ void ScanCommand::printTable(CliContext& context, const QVector<DeviceInfo>& dev
                         DeviceInfo::stateText(info.state)};
         if (showGroups)
             row << GroupCheck::groupText(groups, hasGroups, info.slave);
+        if (showLine)
+            row << (info.line.isSet() ? info.line.text() : tr("the port's"));
         table.addRow(row);
     }
     table.print(context.out());
@@ -327,6 +350,7 @@ void ScanCommand::printJson(CliContext& context, const BusScanner& scanner,
             {QStringLiteral("firmware"), info.firmware},
             {QStringLiteral("state"), stateId(info.state)},
             {QStringLiteral("detail"), info.detail},
+            {QStringLiteral("line"), info.line.isSet() ? info.line.token() : QString()},
         };
         GroupCheck::addJson(groups, hasGroups, info.slave, &device);
         list.append(device);

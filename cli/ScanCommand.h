@@ -22,7 +22,7 @@ public:
     QString name() const override { return QStringLiteral("scan"); }
     QString synopsis() const override
     {
-        return QStringLiteral("scan [--from N] [--to N] [--wait MS]");
+        return QStringLiteral("scan [--from N] [--to N] [--wait MS] [--try-formats]");
     }
     QString summary() const override;
     QList<QCommandLineOption> options() const override;

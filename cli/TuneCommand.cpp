@@ -4,6 +4,7 @@
 #include "files/OutputFile.h"
 #include "session/DeviceSession.h"
 #include "tuning/TuningRunner.h"
+#include "tuning/TuningVerdict.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>
@@ -95,7 +96,12 @@ QList<QCommandLineOption> TuneCommand::options() const
          tr("autotune: soft, medium (default), stiff, tyreus-luyben or zn-pi."), tr("RULE")},
         {QStringLiteral("accept"), tr("autotune: write the proposed gains, then run a step test "
                                       "from half the operating speed to it.")},
-        {QStringLiteral("store"), tr("autotune: with --accept, store the gains in the drive.")},
+        {QStringLiteral("store"),
+         tr("autotune: with --accept, store the gains in the drive if the step measured with "
+            "them passes the check.")},
+        {QStringLiteral("override-check"),
+         tr("autotune: with --accept, keep (and with --store, store) gains whose measured step "
+            "failed the check; without it they are written back to what the drive had.")},
         {QStringLiteral("max-speed"),
          tr("Stop at once beyond this speed (default 120 % of the test's highest)."), tr("SPEED")},
         {QStringLiteral("max-current"), tr("Stop at once beyond this current in A (default 20)."),
@@ -234,6 +240,18 @@ int TuneCommand::run(CliContext& context, const QStringList& args)
               << tr("  steady-state error: %1 %2").arg(m.steadyStateError, 0, 'f', 1).arg(unit)
               << tr("  peak current: %1 A").arg(m.peakCurrent, 0, 'f', 2);
     };
+    const auto writeGains = [&](const PidGains& gains, QString* why) {
+        bool written = false;
+        awaitRunner(context, runner, [&](std::function<void()> finish) {
+            runner.writeGains(
+                gains, [&written, why, finish](bool good, const PidGains&, const QString& e) {
+                    written = good;
+                    *why = e;
+                    finish();
+                });
+        });
+        return written;
+    };
     const auto metricsJson = [](const StepMetrics& m) {
         QJsonObject o{{QStringLiteral("overshoot_pct"), m.overshootPercent},
                       {QStringLiteral("steady_state_error"), m.steadyStateError},
@@ -250,34 +268,42 @@ int TuneCommand::run(CliContext& context, const QStringList& args)
         metricsLines(result.metrics);
         json.insert(QStringLiteral("metrics"), metricsJson(result.metrics));
     } else if (result.ok) {
-        lines << tr("Relay test: Ku %1, Tu %2 ms (amplitude ±%3 %4, %5 cycles)")
+        const StepMetrics& predicted = result.predictedMetrics;
+        lines << tr("Relay test: Ku %1, Tu %2 ms measured (amplitude ±%3 %4, %5 cycles, %6 "
+                    "readings per period, one every %7 ms)")
                      .arg(result.relay.ultimateGain, 0, 'g', 4)
                      .arg(result.relay.periodMs, 0, 'f', 1)
                      .arg(result.relay.amplitude, 0, 'f', 1)
                      .arg(unit)
                      .arg(result.relay.cycles)
+                     .arg(result.relay.readingsPerPeriod, 0, 'f', 1)
+                     .arg(result.relay.readingMs, 0, 'f', 1)
               << tr("Model: gain %1, time constant %2 ms, dead time %3 ms (the bus's %4 ms "
                     "left out)")
                      .arg(result.plant.gain, 0, 'g', 4)
                      .arg(result.plant.tauMs, 0, 'f', 1)
                      .arg(result.plant.deadMs, 0, 'f', 1)
                      .arg(result.busDelayMs, 0, 'f', 1)
-              << tr("Proposed (%1): %2").arg(TuningRules::title(*rule), result.proposal.toString());
+              << tr("The drive's own loop on the model: Ku %1, Tu %2 ms")
+                     .arg(result.ultimateGain, 0, 'g', 4)
+                     .arg(result.ultimatePeriodMs, 0, 'f', 1)
+              << tr("Proposed (%1): %2").arg(TuningRules::title(*rule), result.proposal.toString())
+              << tr("  the rule's P × %1, Ti × %2; predicted step %3 → %4 %5: overshoot %6 %, "
+                    "settling time %7")
+                     .arg(result.kpScale, 0, 'g', 3)
+                     .arg(result.tiScale, 0, 'g', 3)
+                     .arg(speed / 2)
+                     .arg(speed)
+                     .arg(unit)
+                     .arg(predicted.overshootPercent, 0, 'f', 1)
+                     .arg(ms(predicted.settlingMs));
         json.insert(QStringLiteral("ku"), result.relay.ultimateGain);
         json.insert(QStringLiteral("tu_ms"), result.relay.periodMs);
+        json.insert(QStringLiteral("readings_per_period"), result.relay.readingsPerPeriod);
         json.insert(QStringLiteral("proposal"), gainsJson(result.proposal));
+        json.insert(QStringLiteral("predicted"), metricsJson(predicted));
         if (p.isSet(QStringLiteral("accept")) && !interrupted) {
-            bool written = false;
-            awaitRunner(context, runner, [&](std::function<void()> finish) {
-                runner.writeGains(
-                    result.proposal,
-                    [&written, &error, finish](bool good, const PidGains&, const QString& why) {
-                        written = good;
-                        error = why;
-                        finish();
-                    });
-            });
-            if (!written) {
+            if (!writeGains(result.proposal, &error)) {
                 lines << tr("Writing the proposed gains failed: %1").arg(error);
                 code = ExitCommunication;
             } else {
@@ -291,7 +317,32 @@ int TuneCommand::run(CliContext& context, const QStringList& args)
                     metricsLines(check.metrics);
                     json.insert(QStringLiteral("measured"), metricsJson(check.metrics));
                 }
-                if (p.isSet(QStringLiteral("store")) && check.ok && !interrupted) {
+                const TuningVerdict verdict = interrupted
+                                                  ? TuningVerdict::notMeasured(tr("interrupted"))
+                                                  : TuningVerdict::judge(check, predicted);
+                const bool override = p.isSet(QStringLiteral("override-check"));
+                lines << (verdict.passed ? tr("Check after Accept: passed. %1")
+                                         : tr("Check after Accept: FAILED. %1"))
+                             .arg(verdict.text());
+                json.insert(QStringLiteral("check"),
+                            QJsonObject{{QStringLiteral("passed"), verdict.passed},
+                                        {QStringLiteral("findings"),
+                                         QJsonArray::fromStringList(verdict.findings)}});
+                if (!verdict.passed && !override) {
+                    // Reject, as the window offers first: the gains the drive had go back.
+                    const bool restored = writeGains(result.gains, &error);
+                    lines << (restored ? tr("The gains before were written back (%1); nothing "
+                                            "was stored. --override-check keeps the proposal "
+                                            "(and with --store stores it) all the same.")
+                                             .arg(result.gains.toString())
+                                       : tr("Writing back the gains before failed: %1; the "
+                                            "proposal is still in the drive (not stored).")
+                                             .arg(error));
+                    json.insert(QStringLiteral("restored"), restored);
+                    code = restored ? (interrupted ? code : int(ExitFail)) : ExitCommunication;
+                } else if (p.isSet(QStringLiteral("store")) && !interrupted) {
+                    if (!verdict.passed)
+                        lines << tr("Storing although the check failed (--override-check).");
                     bool stored = false;
                     awaitRunner(context, runner, [&](std::function<void()> finish) {
                         runner.storeGains([&stored, &error, finish](bool good, const QString& why) {
@@ -309,6 +360,10 @@ int TuneCommand::run(CliContext& context, const QStringList& args)
     }
     if (!result.ok)
         lines << tr("Test ended: %1").arg(result.error);
+    if (!result.ok && !result.advice.isEmpty()) {
+        lines << tr("What to change: %1").arg(result.advice);
+        json.insert(QStringLiteral("advice"), result.advice);
+    }
     if (!result.stopDetail.isEmpty())
         lines << result.stopDetail;
     if (!result.stopConfirmed || (check.samples.size() && !check.stopConfirmed))

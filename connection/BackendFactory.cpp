@@ -22,12 +22,15 @@ BackendFactory::Made BackendFactory::makeClient(const ConnectionSettings& settin
     case ConnectionSettings::Kind::Tcp:
         backend = std::make_unique<TcpBackend>(settings);
         break;
-    case ConnectionSettings::Kind::Simulated:
+    case ConnectionSettings::Kind::Simulated: {
         made.simBus = SimBus::fromSpec(settings.simSpec, &made.error);
         if (!made.simBus)
             return made;
-        backend = std::make_unique<SimBackend>(made.simBus, false, settings.baud);
+        auto sim = std::make_unique<SimBackend>(made.simBus, false, settings.baud);
+        sim->setPortLine(settings.line());
+        backend = std::move(sim);
         break;
+    }
     }
     backend->setTrafficLog(log);
     made.client = std::make_unique<ModbusClient>(std::move(backend), settings);

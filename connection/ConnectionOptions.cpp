@@ -83,6 +83,11 @@ void ConnectionOptions::addTo(QCommandLineParser& parser)
         {QStringLiteral("baud"), tr("Baud rate, 1200–115200."), tr("BAUD")},
         {QStringLiteral("parity"), tr("Parity: N, E or O."), tr("N|E|O")},
         {QStringLiteral("stop-bits"), tr("Stop bits: 1 or 2."), tr("N")},
+        {QStringLiteral("drive-format"),
+         tr("Drives that talk another line format than the port's, switched to between "
+            "transactions: ID=[BAUD:]FORMAT,... e.g. 7=9600:8E1 or 7=8N2 (BAUD defaults to the "
+            "port's). A DBU works only at 8N1; a DC controller at 8E1, 8O1 or 8N2."),
+         tr("LIST")},
         {QStringLiteral("timeout"),
          tr("Response timeout per attempt in ms, 10–10000 (default 200)."), tr("MS")},
         {QStringLiteral("retries"),
@@ -118,10 +123,11 @@ bool ConnectionOptions::hasSerialLineOptions(const QCommandLineParser& parser)
 
 QStringList ConnectionOptions::names()
 {
-    return QStringList{
-               QStringLiteral("port"),      QStringLiteral("tcp"),     QStringLiteral("sim"),
-               QStringLiteral("family"),    QStringLiteral("baud"),    QStringLiteral("parity"),
-               QStringLiteral("stop-bits"), QStringLiteral("timeout"), QStringLiteral("retries")} +
+    return QStringList{QStringLiteral("port"),      QStringLiteral("tcp"),
+                       QStringLiteral("sim"),       QStringLiteral("family"),
+                       QStringLiteral("baud"),      QStringLiteral("parity"),
+                       QStringLiteral("stop-bits"), QStringLiteral("timeout"),
+                       QStringLiteral("retries"),   QStringLiteral("drive-format")} +
            kSerialLineOptions;
 }
 
@@ -217,6 +223,18 @@ std::optional<ConnectionSettings> ConnectionOptions::fromParser(const QCommandLi
             return fail(tr("--parity %1: use N (none), E (even) or O (odd)")
                             .arg(parser.value(QStringLiteral("parity"))));
         s.parity = p.at(0).toLatin1();
+    }
+    if (parser.isSet(QStringLiteral("drive-format"))) {
+        if (s.kind == ConnectionSettings::Kind::Tcp)
+            return fail(tr("--drive-format applies to a serial port (--port) or a simulated bus, "
+                           "not to a Modbus TCP gateway (--tcp): the gateway sets its line "
+                           "itself"));
+        QString why;
+        const auto table =
+            LineFormat::parseTable(parser.value(QStringLiteral("drive-format")), s.baud, &why);
+        if (!table)
+            return fail(tr("--drive-format: %1").arg(why));
+        s.driveLines = *table;
     }
     const QString line = readSerialLine(parser, &s);
     if (!line.isEmpty())

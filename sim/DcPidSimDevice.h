@@ -29,6 +29,8 @@ public:
     QString stateText() const override;
     int lineBaud() const override { return m_lineBaud; }
     char lineParity() const override { return m_lineParity; }
+    // The manual's check mode 0 is "no parity, 2 stop bits".
+    int lineStopBits() const override { return m_lineParity == 'N' ? 2 : 1; }
     void configureLine(int baud, char parity) override;
 
     Drive drive() const { return m_drive; }

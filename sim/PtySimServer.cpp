@@ -1,5 +1,7 @@
 #include "PtySimServer.h"
 
+#include "IoctlSerialDriver.h"
+
 #include "ModbusCrc.h"
 #include "SimBus.h"
 #include "SimLog.h"
@@ -135,6 +137,10 @@ int PtySimServer::requestLength(const QByteArray& buffer)
 void PtySimServer::onReadable()
 {
     char chunk[512];
+    // The format the client's port is in as the frame begins: TCGETS on a pty master returns
+    // the slave's termios (hardware.md: a pty keeps rate, stop bits and INPCK/PARODD).
+    if (m_buffer.isEmpty())
+        m_frameLine = IoctlSerialDriver::formatOf(m_master);
     for (;;) {
         const ssize_t n = ::read(m_master, chunk, sizeof chunk);
         if (n > 0) {
@@ -183,7 +189,8 @@ void PtySimServer::dispatch(const QByteArray& frame)
     const qint64 arrivedNs = ReplyScheduler::nowNs();
     if (m_wireTiming && m_halfDuplex && !lineAccepts(frame, arrivedNs))
         return;
-    const SimOutcome outcome = m_bus->handleFrame(frame);
+    const WireTiming timing = frameTiming();
+    const SimOutcome outcome = m_bus->handleFrame(frame, m_bus->nowMs(), m_frameLine);
     qCInfo(lcSim).noquote() << "rx" << frame.toHex(' ') << "tx"
                             << (outcome.reply.isEmpty()
                                     ? QStringLiteral("-")
@@ -192,7 +199,7 @@ void PtySimServer::dispatch(const QByteArray& frame)
         return;
     double delay = outcome.delayMs;
     if (m_wireTiming)
-        delay += m_timing.replyDelayMs(frame.size(), outcome.reply.size(), outcome.turnaroundMs);
+        delay += timing.replyDelayMs(frame.size(), outcome.reply.size(), outcome.turnaroundMs);
     if (delay < 0.05) {
         send(outcome.reply);
         return;
@@ -200,14 +207,21 @@ void PtySimServer::dispatch(const QByteArray& frame)
     ReplyScheduler::Reply reply;
     reply.bytes = outcome.reply;
     reply.dueNs = arrivedNs + qint64(delay * 1e6);
-    reply.startNs = reply.dueNs - qint64(m_timing.frameMs(outcome.reply.size()) * 1e6);
+    reply.startNs = reply.dueNs - qint64(timing.frameMs(outcome.reply.size()) * 1e6);
     m_replies->schedule(reply);
+}
+
+WireTiming PtySimServer::frameTiming() const
+{
+    // On a bus with line settings (opentop-sim's --baud), the frame takes the time of the
+    // format the client sent it in; a bare bus keeps the timing it was given.
+    return m_bus->lineBaud() ? m_timing.at(m_frameLine) : m_timing;
 }
 
 bool PtySimServer::lineAccepts(const QByteArray& frame, qint64 nowNs)
 {
     // The request is on the wire from now until its last character has gone.
-    const qint64 endNs = nowNs + qint64(m_timing.frameMs(frame.size()) * 1e6);
+    const qint64 endNs = nowNs + qint64(frameTiming().frameMs(frame.size()) * 1e6);
     bool collided = false;
     for (ReplyScheduler::Reply& r : m_replies->pending()) {
         if (nowNs < r.dueNs && endNs > r.startNs) {
@@ -221,7 +235,7 @@ bool PtySimServer::lineAccepts(const QByteArray& frame, qint64 nowNs)
         return false;
     }
     const double gapMs = double(nowNs - m_lastReplyEndNs) / 1e6;
-    if (m_lastReplyEndNs > 0 && gapMs < m_timing.gapMs()) {
+    if (m_lastReplyEndNs > 0 && gapMs < frameTiming().gapMs()) {
         ++m_gapViolations;
         qCInfo(lcSim) << "rx" << frame.toHex(' ') << "only" << gapMs
                       << "ms after the last reply (less than 3.5 characters): not a frame";

@@ -59,6 +59,7 @@ private:
     void send(const QByteArray& reply);
     // Half-duplex rules for a request arriving now; false: it is lost.
     bool lineAccepts(const QByteArray& frame, qint64 nowNs);
+    WireTiming frameTiming() const;
 
     std::shared_ptr<SimBus> m_bus;
     WireTiming m_timing;
@@ -70,6 +71,7 @@ private:
     QString m_unpluggedLink; // the symlink to restore on replug
     QSocketNotifier* m_notifier = nullptr;
     QByteArray m_buffer;
+    LineFormat m_frameLine; // the client's format as the frame in m_buffer began
     QTimer m_silence;
     ReplyScheduler* m_replies;
     bool m_halfDuplex = false;

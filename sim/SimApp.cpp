@@ -104,9 +104,16 @@ int SimApp::start(const QStringList& arguments)
         return 2;
     }
     m_bus->setLine(m_options.baud, m_options.parity);
+    const LineFormat busLine{m_options.baud, m_options.parity, 8, 1};
     for (SimDevice* d : m_bus->devices()) {
-        if (d->lineBaud() && (d->lineBaud() != m_options.baud ||
-                              (d->lineParity() && d->lineParity() != m_options.parity)))
+        const LineFormat own = d->lineFormat();
+        if (own.isSet() && m_bus->hasOwnLine(d->slave()))
+            printErr(tr("opentop-sim: %1@%2 talks %3 (its own line settings): it answers only "
+                        "frames sent in that format")
+                         .arg(d->type())
+                         .arg(d->slave())
+                         .arg(own.text()));
+        else if (own.isSet() && !own.hears(busLine))
             printErr(tr("opentop-sim: warning: %1@%2 cannot use %3 %4 and will not answer")
                          .arg(d->type())
                          .arg(d->slave())

@@ -59,11 +59,16 @@ ModbusResult SimBackend::transact(const ModbusRequest& request, int timeoutMs)
     timer.start();
     auto elapsed = [&timer] { return double(timer.nsecsElapsed()) / 1e6; };
     const QByteArray adu = RtuFrame::encodeRequest(request);
-    logFrame(true, adu, request, request.describe(), QString());
-    const SimOutcome outcome = m_bus->handleFrame(adu);
+    const LineFormat line = request.line.isSet() ? request.line : m_port;
+    logFrame(true, adu, request,
+             line == m_port ? request.describe()
+                            : QStringLiteral("%1 [%2]").arg(request.describe(), line.text()),
+             QString());
+    const WireTiming timing = m_timing.at(line);
+    const SimOutcome outcome = m_bus->handleFrame(adu, m_bus->nowMs(), line);
 
     if (request.isBroadcast()) {
-        if (m_wireTiming && !sleepInterruptible(m_timing.broadcastDelayMs(int(adu.size())))) {
+        if (m_wireTiming && !sleepInterruptible(timing.broadcastDelayMs(int(adu.size())))) {
             result.error = ModbusError::Cancelled;
             return result;
         }
@@ -73,7 +78,7 @@ ModbusResult SimBackend::transact(const ModbusRequest& request, int timeoutMs)
     }
     double delay = outcome.delayMs;
     if (m_wireTiming && !outcome.reply.isEmpty())
-        delay += m_timing.replyDelayMs(int(adu.size()), int(outcome.reply.size()));
+        delay += timing.replyDelayMs(int(adu.size()), int(outcome.reply.size()));
     const bool lost = outcome.reply.isEmpty() || delay >= timeout;
     if (!sleepInterruptible((lost ? timeout : delay) - elapsed())) {
         result.error = ModbusError::Cancelled;

@@ -28,11 +28,15 @@ public:
     QString describe() const override;
 
     SimBus& bus() const { return *m_bus; }
+    // The port's format (the connection's settings): a request without one of its own goes
+    // out in it, and the bus's devices hear it or not as on a line.
+    void setPortLine(const LineFormat& format) { m_port = format; }
 
 private:
     std::shared_ptr<SimBus> m_bus;
     bool m_wireTiming;
     WireTiming m_timing;
+    LineFormat m_port;
     bool m_open = false;
 };
 

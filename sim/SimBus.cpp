@@ -57,19 +57,83 @@ std::shared_ptr<SimBus> SimBus::fromSpec(const QString& spec, QString* error,
     auto bus = std::make_shared<SimBus>(std::move(clock));
     for (const BusSpecEntry& e : *entries) {
         std::unique_ptr<SimDevice> device = createDevice(e.type, e.slave, error);
-        if (device && !e.defects.isEmpty()) {
-            QString why;
-            const std::optional<SimDefectSpec> defects = SimDefectSpec::parse(e.defects, &why);
-            if (!defects || !device->addDefects(*defects, &why)) {
+        if (!device || !bus->addDevice(std::move(device), error))
+            return nullptr;
+        QString items = e.defects;
+        QString why;
+        if (!takeLineItems(*bus, e.slave, &items, &why)) {
+            if (error)
+                *error = tr("%1@%2{%3}: %4").arg(e.type).arg(e.slave).arg(e.defects, why);
+            return nullptr;
+        }
+        if (!items.isEmpty()) {
+            SimDevice* added = bus->device(e.slave);
+            const std::optional<SimDefectSpec> defects = SimDefectSpec::parse(items, &why);
+            if (!defects || !added->addDefects(*defects, &why)) {
                 if (error)
                     *error = tr("%1@%2{%3}: %4").arg(e.type).arg(e.slave).arg(e.defects, why);
                 return nullptr;
             }
         }
-        if (!device || !bus->addDevice(std::move(device), error))
-            return nullptr;
     }
     return bus;
+}
+
+bool SimBus::takeLineItems(SimBus& bus, int slave, QString* items, QString* error)
+{
+    QString format;
+    QString baud;
+    QStringList rest;
+    for (const QString& raw : items->split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const QString item = raw.trimmed();
+        if (item.startsWith(QLatin1String("format="), Qt::CaseInsensitive))
+            format = item.mid(7).trimmed();
+        else if (item.startsWith(QLatin1String("baud="), Qt::CaseInsensitive))
+            baud = item.mid(5).trimmed();
+        else
+            rest << item;
+    }
+    *items = rest.join(QLatin1Char(','));
+    if (format.isEmpty() && baud.isEmpty())
+        return true;
+    return bus.setOwnLine(slave, format, baud, error);
+}
+
+bool SimBus::setOwnLine(int slave, const QString& format, const QString& baud, QString* error)
+{
+    QMutexLocker lock(&m_mutex);
+    SimDevice* d = device(slave);
+    if (!d) {
+        *error = tr("no device with machine number %1").arg(slave);
+        return false;
+    }
+    const SerialDefaults& serial = d->profile().serial;
+    bool ok = true;
+    const int rate = baud.isEmpty() ? serial.baud : baud.toInt(&ok);
+    if (!ok || (!serial.bauds.isEmpty() && !serial.bauds.contains(rate))) {
+        QStringList rates;
+        for (int b : serial.bauds)
+            rates << QString::number(b);
+        *error =
+            tr("baud=%1: this drive talks at %2 bit/s").arg(baud, rates.join(QStringLiteral(", ")));
+        return false;
+    }
+    const std::optional<LineFormat> wanted =
+        LineFormat::parse(format.isEmpty() ? serial.formats.value(0) : format, rate, error);
+    if (!wanted)
+        return false;
+    if (!serial.formats.contains(wanted->frameText())) {
+        *error = tr("format=%1: this drive offers %2 only")
+                     .arg(format, serial.formats.join(QStringLiteral(", ")));
+        return false;
+    }
+    d->configureLine(wanted->baud, wanted->parity);
+    if (d->lineFormat() != *wanted) {
+        *error = tr("this simulated drive has no line settings of its own");
+        return false;
+    }
+    m_ownLine.insert(slave);
+    return true;
 }
 
 bool SimBus::addDevice(std::unique_ptr<SimDevice> device, QString* error)
@@ -105,8 +169,14 @@ QList<SimDevice*> SimBus::devices() const
 QString SimBus::spec() const
 {
     QVector<BusSpecEntry> entries;
-    for (const auto& [slave, device] : m_devices)
-        entries << BusSpecEntry{device->type(), slave, QString()};
+    for (const auto& [slave, device] : m_devices) {
+        const LineFormat own = device->lineFormat();
+        entries << BusSpecEntry{
+            device->type(), slave,
+            m_ownLine.contains(slave)
+                ? QStringLiteral("format=%1,baud=%2").arg(own.frameText()).arg(own.baud)
+                : QString()};
+    }
     return BusSpec::toString(entries);
 }
 
@@ -122,15 +192,18 @@ void SimBus::setLine(int baud, char parity)
     m_lineBaud = baud;
     m_lineParity = parity;
     for (const auto& [slave, device] : m_devices)
-        device->configureLine(baud, parity);
+        if (!m_ownLine.contains(slave))
+            device->configureLine(baud, parity);
 }
 
-bool SimBus::hears(const SimDevice& device) const
+bool SimBus::hears(const SimDevice& device, const LineFormat& sent) const
 {
-    if (!m_lineBaud || !device.lineBaud())
+    const LineFormat own = device.lineFormat();
+    // On a bus whose line was never set (in process), a device without settings of its own
+    // was configured to whatever the master uses.
+    if (!sent.isSet() || !own.isSet() || (!m_lineBaud && !m_ownLine.contains(device.slave())))
         return true;
-    return device.lineBaud() == m_lineBaud &&
-           (!device.lineParity() || device.lineParity() == m_lineParity);
+    return own.hears(sent);
 }
 
 bool SimBus::decodeRequest(const QByteArray& adu, ModbusRequest* request)
@@ -172,7 +245,7 @@ bool SimBus::decodeRequest(const QByteArray& adu, ModbusRequest* request)
     return true;
 }
 
-SimOutcome SimBus::handleFrame(const QByteArray& requestAdu, qint64 nowMs)
+SimOutcome SimBus::handleFrame(const QByteArray& requestAdu, qint64 nowMs, const LineFormat& line)
 {
     QMutexLocker lock(&m_mutex);
     SimOutcome out;
@@ -182,6 +255,8 @@ SimOutcome SimBus::handleFrame(const QByteArray& requestAdu, qint64 nowMs)
         qCDebug(lcSim) << "ignoring frame with a bad CRC" << requestAdu.toHex(' ');
         return out;
     }
+    const LineFormat sent =
+        line.isSet() || !m_lineBaud ? line : LineFormat{m_lineBaud, m_lineParity, 8, 1};
     const bool write = request.function == ModbusRequest::WriteSingle ||
                        request.function == ModbusRequest::WriteMultiple;
     for (const auto& [slave, device] : m_devices) {
@@ -190,8 +265,17 @@ SimOutcome SimBus::handleFrame(const QByteArray& requestAdu, qint64 nowMs)
         const bool groupCopy = request.slave != 0 && !direct && write &&
                                device->profile().supportsGroups &&
                                device->groupAddress() == int(request.slave);
-        if ((!direct && !broadcast && !groupCopy) || !hears(*device))
+        if (!direct && !broadcast && !groupCopy)
             continue;
+        if (!hears(*device, sent)) {
+            // Framing or parity errors for this device: noise, never an answer.
+            qCInfo(lcSim).noquote()
+                << QStringLiteral("%1@%2 talks %3: a frame at %4 is noise to it")
+                       .arg(device->type())
+                       .arg(slave)
+                       .arg(device->lineFormat().text(), sent.text());
+            continue;
+        }
         if (direct && m_faults.isActive()) {
             out.fault = m_faults.next();
             if (out.fault == FaultInjector::Fault::Busy) {

@@ -8,6 +8,7 @@
 #include <QCoreApplication>
 #include <QList>
 #include <QMutex>
+#include <QSet>
 #include <atomic>
 #include <map>
 #include <memory>
@@ -36,7 +37,8 @@ public:
     explicit SimBus(std::shared_ptr<SimClock> clock = {});
     ~SimBus();
 
-    // "dbu200@1,dbu400@150,dcpid@7".
+    // "dbu200@1,dbu400@150,dcpid@7"; a drive's own line settings go in its braces with its
+    // defects: "dcpid@7{format=8E1,baud=19200}" (defaults: the profile's).
     static std::shared_ptr<SimBus> fromSpec(const QString& spec, QString* error,
                                             std::shared_ptr<SimClock> clock = {});
     // A device of a family or variant id ("dbu", "dbu400", "dcpid", any profiled family).
@@ -47,7 +49,10 @@ public:
     QList<SimDevice*> devices() const;
     QString spec() const;
 
-    SimOutcome handleFrame(const QByteArray& requestAdu, qint64 nowMs);
+    // `line`: the format the master sent the frame in; a device set to another does not hear
+    // it (on a wire: framing or parity errors, so no answer). Unset: the bus's (setLine).
+    SimOutcome handleFrame(const QByteArray& requestAdu, qint64 nowMs,
+                           const LineFormat& line = LineFormat());
     SimOutcome handleFrame(const QByteArray& requestAdu)
     {
         return handleFrame(requestAdu, nowMs());
@@ -64,6 +69,11 @@ public:
     // The devices present are configured to match, as an installer would have done.
     void setLine(int baud, char parity);
     int lineBaud() const { return m_lineBaud; }
+    // Gives device `slave` line settings of its own (validated against its profile's formats
+    // and rates), which setLine() then leaves alone. `format` "8E1", `baud` "19200"; empty
+    // for the profile's default.
+    bool setOwnLine(int slave, const QString& format, const QString& baud, QString* error);
+    bool hasOwnLine(int slave) const { return m_ownLine.contains(slave); }
 
     SimClock& clock() const { return *m_clock; }
     qint64 nowMs() const { return m_clock->nowMs(); }
@@ -74,13 +84,16 @@ public:
     static bool decodeRequest(const QByteArray& adu, ModbusRequest* request);
 
 private:
-    bool hears(const SimDevice& device) const;
+    bool hears(const SimDevice& device, const LineFormat& sent) const;
+    // The braces' items of `entry`: its own line settings applied, the rest (defects) left.
+    static bool takeLineItems(SimBus& bus, int slave, QString* items, QString* error);
 
     std::shared_ptr<SimClock> m_clock;
     std::map<int, std::unique_ptr<SimDevice>> m_devices;
     FaultInjector m_faults;
     int m_lineBaud = 0;
     char m_lineParity = 0;
+    QSet<int> m_ownLine;
     mutable QMutex m_mutex;
     std::atomic<bool> m_unplugged{false};
 };

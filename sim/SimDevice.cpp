@@ -151,6 +151,13 @@ void SimDevice::powerCycle(qint64 nowMs)
 
 void SimDevice::configureLine(int, char) {}
 
+LineFormat SimDevice::lineFormat() const
+{
+    if (!lineBaud())
+        return LineFormat();
+    return LineFormat{lineBaud(), lineParity() ? lineParity() : 'N', 8, lineStopBits()};
+}
+
 QString SimDevice::stateText() const
 {
     return type();

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "LineFormat.h"
 #include "SimDefects.h"
 #include "SimRegisters.h"
 #include "profile/Profile.h"
@@ -73,6 +74,9 @@ public:
     // Serial settings in force since the last power cycle (0 / '\0' when the device has none).
     virtual int lineBaud() const { return 0; }
     virtual char lineParity() const { return 0; }
+    virtual int lineStopBits() const { return 1; }
+    // The three as one format; unset when the device has none (it hears every frame).
+    LineFormat lineFormat() const;
     // Sets the device's stored serial settings to the line's, as an installer would.
     virtual void configureLine(int baud, char parity);
 

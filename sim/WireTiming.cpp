@@ -2,16 +2,24 @@
 
 namespace opentop {
 
-WireTiming::WireTiming(int baud, char parity, double turnaroundMs)
+WireTiming::WireTiming(int baud, char parity, double turnaroundMs, int stopBits)
     : m_baud(baud > 0 ? baud : 19200)
     , m_parity(parity)
     , m_turnaroundMs(turnaroundMs)
+    , m_stopBits(stopBits == 2 ? 2 : 1)
 {
+}
+
+WireTiming WireTiming::at(const LineFormat& format) const
+{
+    if (!format.isSet())
+        return *this;
+    return WireTiming(format.baud, format.parity, m_turnaroundMs, format.stopBits);
 }
 
 int WireTiming::bitsPerChar() const
 {
-    return m_parity == 'E' || m_parity == 'O' ? 11 : 10;
+    return 9 + (m_parity == 'E' || m_parity == 'O' ? 1 : 0) + m_stopBits;
 }
 
 double WireTiming::charMs() const

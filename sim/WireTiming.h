@@ -1,5 +1,7 @@
 #pragma once
 
+#include "LineFormat.h"
+
 #include <QtGlobal>
 
 namespace opentop {
@@ -10,9 +12,11 @@ namespace opentop {
 class WireTiming
 {
 public:
-    WireTiming(int baud = 19200, char parity = 'N', double turnaroundMs = 2.0);
+    WireTiming(int baud = 19200, char parity = 'N', double turnaroundMs = 2.0, int stopBits = 1);
+    // The same line's turnaround at another format (a frame sent in a drive's own format).
+    WireTiming at(const LineFormat& format) const;
 
-    int bitsPerChar() const; // start + 8 data + parity + stop: 10 without parity, 11 with
+    int bitsPerChar() const; // start + 8 data + parity + stop bits: 10 for 8N1, 11 for 8E1, 8N2
     double charMs() const;
     double frameMs(int bytes) const;
     double gapMs() const; // 3.5 characters, at least 1.75 ms above 19200 bit/s (Modbus spec)
@@ -29,6 +33,7 @@ private:
     int m_baud;
     char m_parity;
     double m_turnaroundMs;
+    int m_stopBits;
 };
 
 } // namespace opentop

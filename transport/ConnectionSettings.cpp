@@ -46,6 +46,16 @@ QString ConnectionSettings::validate() const
                             "opentop::Transport",
                             "RS-485 mode %1 is not supported: use off, auto, kernel or rts.")
                             .arg(int(rs485));
+        for (auto it = driveLines.begin(); it != driveLines.end(); ++it) {
+            const QString invalid = it->validate();
+            if (it.key() < 1 || it.key() > 247 || !invalid.isEmpty())
+                problems << QCoreApplication::translate(
+                                "opentop::Transport",
+                                "Line format of machine number %1: %2 Use machine numbers "
+                                "1–247.")
+                                .arg(it.key())
+                                .arg(invalid);
+        }
         if (rtsDelayUs < 0 || rtsDelayUs > kMaxRtsDelayUs)
             problems << QCoreApplication::translate(
                             "opentop::Transport",
@@ -102,6 +112,8 @@ QString ConnectionSettings::describe() const
             text += QStringLiteral(" rts-delay=%1us").arg(rtsDelayUs);
         if (lowLatency != defaults.lowLatency)
             text += QStringLiteral(" low-latency=off");
+        if (!driveLines.isEmpty())
+            text += QStringLiteral(" drive-format=") + LineFormat::tableText(driveLines);
         return text;
     }
     case Kind::Tcp:
@@ -136,6 +148,19 @@ bool ConnectionSettings::rs485FromName(const QString& name, Rs485* mode)
         }
     }
     return false;
+}
+
+LineFormat ConnectionSettings::line() const
+{
+    return LineFormat{baud, parity, dataBits, stopBits};
+}
+
+void ConnectionSettings::setLine(const LineFormat& format)
+{
+    baud = format.baud;
+    parity = format.parity;
+    dataBits = format.dataBits;
+    stopBits = format.stopBits;
 }
 
 double ConnectionSettings::charTimeMs() const

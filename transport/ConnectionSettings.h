@@ -1,5 +1,8 @@
 #pragma once
 
+#include "LineFormat.h"
+
+#include <QMap>
 #include <QString>
 
 namespace opentop {
@@ -34,6 +37,9 @@ struct ConnectionSettings
     bool rtsHighWhileSending = true; // RTS level while sending (Kernel, Rts, Auto)
     int rtsDelayUs = 0;              // before and after sending; 0: libmodbus' or the driver's own
     bool lowLatency = true;          // ask the driver to pass received bytes on at once
+    // Drives that talk another format than the port's (machine number → format): requests to
+    // them carry it, and the port is switched between transactions (LineFormat).
+    QMap<int, LineFormat> driveLines;
     // Modbus TCP gateway.
     QString host = QStringLiteral("127.0.0.1");
     int tcpPort = 502;
@@ -57,6 +63,9 @@ struct ConnectionSettings
     static QString rs485Name(Rs485 mode);
     static bool rs485FromName(const QString& name, Rs485* mode);
     static constexpr int kMaxRtsDelayUs = 100000; // the kernel's limit too (100 ms)
+    // The port's own format, and setting it (the rest kept).
+    LineFormat line() const;
+    void setLine(const LineFormat& format);
     // Time one character takes on the wire (start + data + parity + stop bits), in ms.
     double charTimeMs() const;
     int effectiveByteTimeoutMs() const;

@@ -4,8 +4,24 @@
 #include <linux/serial.h>
 #include <modbus.h>
 #include <sys/ioctl.h>
+#include <termios.h>
+#include <unistd.h>
 
 namespace opentop {
+
+namespace {
+
+struct Rate
+{
+    int baud;
+    speed_t speed;
+};
+// The rates both families offer that termios names (14400 and 28800 have no constant; libmodbus
+// cannot open them either).
+constexpr Rate kRates[] = {{1200, B1200},   {2400, B2400},   {4800, B4800},   {9600, B9600},
+                           {19200, B19200}, {38400, B38400}, {57600, B57600}, {115200, B115200}};
+
+} // namespace
 
 IoctlSerialDriver::IoctlSerialDriver(int fd, _modbus* ctx)
     : m_fd(fd)
@@ -86,6 +102,63 @@ int IoctlSerialDriver::setLowLatency(bool on)
     if (::ioctl(m_fd, TIOCSSERIAL, &serial) < 0)
         return errno;
     return 0;
+}
+
+} // namespace opentop
+
+namespace opentop {
+
+int IoctlSerialDriver::drainOutput()
+{
+    return ::tcdrain(m_fd) < 0 ? errno : 0;
+}
+
+int IoctlSerialDriver::setFormat(const LineFormat& format, LineFormat* readBack)
+{
+    speed_t speed = 0;
+    for (const Rate& r : kRates)
+        if (r.baud == format.baud)
+            speed = r.speed;
+    if (speed == 0)
+        return EINVAL;
+    termios tio{};
+    if (::tcgetattr(m_fd, &tio) < 0)
+        return errno;
+    ::cfsetispeed(&tio, speed);
+    ::cfsetospeed(&tio, speed);
+    tio.c_cflag &= ~(CSIZE | PARENB | PARODD | CSTOPB);
+    tio.c_cflag |= format.dataBits == 7 ? CS7 : CS8;
+    if (format.parity != 'N')
+        tio.c_cflag |= PARENB | (format.parity == 'O' ? PARODD : 0);
+    if (format.stopBits == 2)
+        tio.c_cflag |= CSTOPB;
+    // As libmodbus sets it when it opens a port: parity checked on input only with parity.
+    if (format.parity != 'N')
+        tio.c_iflag |= INPCK;
+    else
+        tio.c_iflag &= ~INPCK;
+    if (::tcsetattr(m_fd, TCSADRAIN, &tio) < 0)
+        return errno;
+    if (readBack)
+        *readBack = formatOf(m_fd);
+    return 0;
+}
+
+LineFormat IoctlSerialDriver::formatOf(int fd)
+{
+    termios tio{};
+    LineFormat f;
+    if (::tcgetattr(fd, &tio) < 0) // TCGETS; on a pty master: its slave's settings
+        return f;
+    const speed_t speed = ::cfgetospeed(&tio);
+    for (const Rate& r : kRates)
+        if (r.speed == speed)
+            f.baud = r.baud;
+    f.dataBits = (tio.c_cflag & CSIZE) == CS7 ? 7 : 8;
+    const bool parity = (tio.c_cflag & PARENB) || (tio.c_iflag & INPCK);
+    f.parity = !parity ? 'N' : (tio.c_cflag & PARODD) ? 'O' : 'E';
+    f.stopBits = (tio.c_cflag & CSTOPB) ? 2 : 1;
+    return f;
 }
 
 } // namespace opentop

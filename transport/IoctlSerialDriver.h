@@ -17,6 +17,12 @@ public:
     int useRts(bool highWhileSending, int delayUs, Rts* readBack) override;
     int getLowLatency(bool* on) override;
     int setLowLatency(bool on) override;
+    int drainOutput() override;
+    int setFormat(const LineFormat& format, LineFormat* readBack) override;
+    // The format a termios describes (parity from PARENB, or from INPCK where a pty dropped
+    // PARENB); baud 0 for a rate outside the standard ones. Also for the simulator, which reads
+    // a pty master's termios (TCGETS on a master returns its slave's).
+    static LineFormat formatOf(int fd);
 
 private:
     int m_fd;

@@ -29,6 +29,7 @@ QString errnoText(int err)
 
 LibmodbusBackend::LibmodbusBackend(const ConnectionSettings& settings)
     : m_settings(settings)
+    , m_line(settings)
 {
     m_clock.start();
 }
@@ -79,6 +80,7 @@ bool LibmodbusBackend::open(QString* error)
         return false;
     }
     modbus_flush(m_ctx);
+    m_line = m_settings;
     m_open = true;
     // The program that used the line before us may have left a request unanswered (a CLI run
     // that gave up, then exited): its late reply can reach our first request of the same
@@ -136,6 +138,11 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
     awaitLateReplies(request);
     awaitQuietLine(request);
     discardStaleInput(request);
+    const LineFormat format = request.line.isSet() ? request.line : m_settings.line();
+    if (format != m_line.line() && !switchLine(format, &result)) {
+        logEvent(request, result.message, result.errorText());
+        return result;
+    }
     if (!keepFrameGap()) {
         result.error = ModbusError::Cancelled;
         return result;
@@ -146,7 +153,12 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
     result.discardedGarbled = std::exchange(m_discardedGarbled, false);
     const QByteArray raw = char(request.slave) + request.pdu();
     const QByteArray sent = txAdu(request);
-    logFrame(true, sent, request, request.describe(), QString());
+    // A frame in a drive's own format says so: the traffic log shows where the line switched.
+    logFrame(true, sent, request,
+             format == m_settings.line()
+                 ? request.describe()
+                 : QStringLiteral("%1 [%2]").arg(request.describe(), format.text()),
+             QString());
     m_timer.start();
     m_sentAtMs = double(m_clock.nsecsElapsed()) / 1e6;
     if (modbus_send_raw_request(m_ctx, reinterpret_cast<const uint8_t*>(raw.constData()),
@@ -245,6 +257,35 @@ bool LibmodbusBackend::keepFrameGap()
     // over a reply so quickly that the next request could otherwise follow at once.
     const double waitMs = m_lineActiveAtMs + frameGapMs() - nowMs();
     return waitMs <= 0 || sleepInterruptible(waitMs);
+}
+
+bool LibmodbusBackend::applyLineFormat(const LineFormat&, QString* error)
+{
+    *error = QCoreApplication::translate("opentop::Transport",
+                                         "a drive's own line format needs a serial port; a "
+                                         "Modbus TCP gateway sets its line itself");
+    return false;
+}
+
+bool LibmodbusBackend::switchLine(const LineFormat& format, ModbusResult* result)
+{
+    if (!keepFrameGap()) {
+        result->error = ModbusError::Cancelled;
+        return false;
+    }
+    QString error;
+    if (!applyLineFormat(format, &error)) {
+        result->error = ModbusError::PortError;
+        result->message =
+            QCoreApplication::translate("opentop::Transport", "cannot switch the line to %1: %2")
+                .arg(format.text(), error);
+        return false;
+    }
+    m_line.setLine(format);
+    const int byteTimeoutMs = m_line.effectiveByteTimeoutMs();
+    modbus_set_byte_timeout(m_ctx, uint32_t(byteTimeoutMs / 1000),
+                            uint32_t((byteTimeoutMs % 1000) * 1000));
+    return true;
 }
 
 void LibmodbusBackend::suspect(quint8 slave, int timeoutMs)

@@ -39,6 +39,9 @@ public:
     ModbusResult transact(const ModbusRequest& request, int timeoutMs) override;
 
     const ConnectionSettings& settings() const { return m_settings; }
+    // The port's settings with the format in force now: the port's own until a request
+    // carries another (ModbusRequest::line). Timings (gaps, byte timeout) follow it.
+    const ConnectionSettings& lineSettings() const { return m_line; }
     // Bus silence after a broadcast; < 0 restores the default.
     void setTurnaroundMs(int ms) { m_turnaroundMs = ms; }
     int turnaroundMs() const;
@@ -71,6 +74,9 @@ protected:
     // itself (a device twice as slow as the wait), and at least the quiet time. A reply later
     // than that is beyond what a master without transaction ids can tell apart.
     virtual int lateReplyWindowMs(const ModbusRequest& request, int timeoutMs) const;
+    // Puts the open port into `format`, between transactions (the line is quiet); false with
+    // *error when it cannot. This one refuses: only a serial line has a format to switch.
+    virtual bool applyLineFormat(const LineFormat& format, QString* error);
 
     // 1 readable, 0 timed out, -1 interrupted; waits in short slices.
     int waitReadable(double timeoutMs) const;
@@ -118,12 +124,17 @@ private:
     double nowMs() const; // on m_clock
     // Waits until the line has been silent for the frame gap; false when interrupted.
     bool keepFrameGap();
+    // Before a request in another format than the line's: the gap after the last frame is
+    // kept at the old rate, then the port is switched (applyLineFormat), and the caller keeps
+    // the gap again at the new rate. False (and `result` filled) when it failed.
+    bool switchLine(const LineFormat& format, ModbusResult* result);
     // Discarded bytes that begin with a whole frame with a good CRC: notes its sender for the
     // result of the request about to be sent (ModbusResult::lateReplyFrom); bytes that hold no
     // such frame: notes that a garbled frame went (ModbusResult::discardedGarbled).
     void noteDiscarded(const QByteArray& rtu);
 
     ConnectionSettings m_settings;
+    ConnectionSettings m_line; // m_settings in the format in force
     _modbus* m_ctx = nullptr;
     bool m_open = false;
     int m_turnaroundMs = -1;

@@ -76,6 +76,7 @@ ModbusResult MockBackend::transact(const ModbusRequest& request, int timeoutMs)
     {
         std::lock_guard<std::mutex> lock(m_mutex);
         m_requests.append(adu);
+        m_lines.append(request.line);
     }
     logFrame(true, adu, request, request.describe(), QString());
     QElapsedTimer timer;
@@ -114,6 +115,12 @@ QVector<QByteArray> MockBackend::requests() const
 {
     std::lock_guard<std::mutex> lock(m_mutex);
     return m_requests;
+}
+
+QVector<LineFormat> MockBackend::lines() const
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_lines;
 }
 
 int MockBackend::requestCount() const

@@ -28,6 +28,8 @@ public:
     // Thread-safe: tests read these while the worker runs.
     QVector<QByteArray> requests() const;
     int requestCount() const;
+    // The format each request carried (ModbusRequest::line), in order.
+    QVector<LineFormat> lines() const;
     void setOpenError(const QString& error);
     // How long "no reply" takes, capped by the request's timeout; 0 (default) returns at once.
     void setNoReplyDelayMs(int ms);
@@ -39,6 +41,7 @@ private:
     Handler m_handler;
     mutable std::mutex m_mutex;
     QVector<QByteArray> m_requests;
+    QVector<LineFormat> m_lines;
     QString m_openError;
     QString m_portFailure;
     int m_noReplyDelayMs = 0;

@@ -57,6 +57,24 @@ int ModbusClient::adapterLatencyMs() const
     return m_worker->lineReport().adapterLatencyMs();
 }
 
+void ModbusClient::setDriveLine(int slave, const LineFormat& format)
+{
+    const bool own = format.isSet() && format != m_settings.line();
+    if (own ? m_settings.driveLines.value(slave) == format : !hasOwnLine(slave))
+        return;
+    if (own)
+        m_settings.driveLines.insert(slave, format);
+    else
+        m_settings.driveLines.remove(slave);
+    m_worker->setDriveLine(slave, format);
+    emit driveLineChanged(slave);
+}
+
+LineFormat ModbusClient::driveLine(int slave) const
+{
+    return m_settings.driveLines.value(slave, m_settings.line());
+}
+
 ModbusClient::RequestId ModbusClient::submit(const ModbusRequest& request, QObject* context,
                                              Callback callback)
 {

@@ -51,6 +51,14 @@ public:
     // Same rules as SerialLineReport::adapterLatencyMs(). Any thread.
     int adapterLatencyMs() const;
 
+    // Drives that talk another format than the port's (ConnectionSettings::driveLines):
+    // requests to them carry it from the next transaction on; an unset format, or the port's,
+    // removes the entry. Client thread.
+    void setDriveLine(int slave, const LineFormat& format);
+    // The drive's format: its entry, else the port's.
+    LineFormat driveLine(int slave) const;
+    bool hasOwnLine(int slave) const { return m_settings.driveLines.contains(slave); }
+
     // Queues a request. `callback` runs on `context`'s thread (this client's when null);
     // finished() is emitted as well. Invalid requests are answered with InvalidRequest, never
     // synchronously. A context deleted before its result arrives gets no callback; delete it
@@ -82,6 +90,8 @@ signals:
     void connectionLost(const QString& error);
     // Polling waits (a scan holds the bus) or goes on again.
     void pollingHeldChanged(bool held);
+    // A drive's line format was set or removed (setDriveLine).
+    void driveLineChanged(int slave);
 
 private:
     friend class ModbusClientWorker;

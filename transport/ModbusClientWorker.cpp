@@ -51,6 +51,7 @@ struct ModbusClientWorker::State
 
     std::unique_ptr<ModbusBackend> backend;
     ConnectionSettings settings;
+    QMap<int, LineFormat> driveLines; // guarded by mutex
     QString description;
     mutable std::mutex reportMutex;
     SerialLineReport lineReport; // copied from the backend after each open
@@ -90,6 +91,7 @@ ModbusClientWorker::ModbusClientWorker(ModbusClient* client, std::unique_ptr<Mod
     Q_ASSERT(backend);
     m_state->client = client;
     m_state->settings = settings;
+    m_state->driveLines = settings.driveLines;
     m_state->description = backend->describe();
     backend->setInterruptFlag(&m_state->interrupt);
     m_state->backend = std::move(backend);
@@ -329,7 +331,48 @@ void ModbusClientWorker::run(std::shared_ptr<State> state)
     s.exited.set_value();
 }
 
+void ModbusClientWorker::setDriveLine(int slave, const LineFormat& format)
+{
+    std::lock_guard<std::mutex> lock(m_state->mutex);
+    if (format.isSet() && format != m_state->settings.line())
+        m_state->driveLines.insert(slave, format);
+    else
+        m_state->driveLines.remove(slave);
+}
+
+QVector<LineFormat> ModbusClientWorker::formatsFor(State& s, const ModbusRequest& request)
+{
+    if (request.line.isSet())
+        return {request.line};
+    std::lock_guard<std::mutex> lock(s.mutex);
+    if (!request.isBroadcast())
+        return {s.driveLines.value(request.slave)};
+    // A broadcast reaches every drive only in a format it hears: the port's first (unset),
+    // then each of the table's that none before reaches.
+    QVector<LineFormat> formats{s.settings.line()};
+    for (const LineFormat& f : s.driveLines)
+        if (std::none_of(formats.begin(), formats.end(),
+                         [&f](const LineFormat& r) { return f.hears(r); }))
+            formats << f;
+    formats.first() = LineFormat();
+    return formats;
+}
+
 ModbusResult ModbusClientWorker::execute(State& s, const Item& item)
+{
+    const QVector<LineFormat> formats = formatsFor(s, item.request);
+    ModbusResult result;
+    for (const LineFormat& format : formats) {
+        Item one = item;
+        one.request.line = format;
+        result = executeOne(s, one);
+        if (!result.ok())
+            break;
+    }
+    return result;
+}
+
+ModbusResult ModbusClientWorker::executeOne(State& s, const Item& item)
 {
     const ModbusRequest& request = item.request;
     if (!s.backend->isOpen())

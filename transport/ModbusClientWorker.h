@@ -40,6 +40,9 @@ public:
     // ModbusClient::deliver (on the client's).
     quint64 submit(const ModbusRequest& request, Promise promise = {});
     bool cancel(quint64 id);
+    // The per-drive format table (ConnectionSettings::driveLines); an unset format, or the
+    // port's, removes the drive's entry. Any thread; used from the next transaction on.
+    void setDriveLine(int slave, const LineFormat& format);
     void cancelAll();
     int pendingCount() const;
     // While held, the Poll queue is not served (ModbusClient::holdPolling).
@@ -51,7 +54,10 @@ private:
     struct State;
     struct Item;
     static void run(std::shared_ptr<State> state);
+    // Each format the request goes out in (a broadcast: every format of the table).
+    static QVector<LineFormat> formatsFor(State& state, const ModbusRequest& request);
     static ModbusResult execute(State& state, const Item& item);
+    static ModbusResult executeOne(State& state, const Item& item);
     static void deliver(State& state, const Item& item, ModbusResult result);
 
     std::shared_ptr<State> m_state;

@@ -158,6 +158,11 @@ QString ModbusRequest::validate() const
                    "%1 retries are not allowed: use 0–10, or -1 for the default.")
             .arg(retries);
 
+    if (line.isSet()) {
+        const QString invalid = line.validate();
+        if (!invalid.isEmpty())
+            return invalid;
+    }
     // A broadcast gets no reply, so only a write means anything; the T-net drives execute only
     // functions 06h and 10h sent to machine number 0 (DBU manual 11-3, function code table).
     if (isBroadcast() && function != WriteSingle && function != WriteMultiple)

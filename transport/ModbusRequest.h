@@ -1,5 +1,7 @@
 #pragma once
 
+#include "LineFormat.h"
+
 #include <QByteArray>
 #include <QString>
 #include <QVector>
@@ -37,6 +39,9 @@ struct ModbusRequest
     int timeoutMs = -1;      // -1: the connection's default
     int retries = -1;        // -1: the connection's default
     Priority priority = Priority::Normal;
+    // The format of the drive it goes to; unset: the client's table for the slave, else the
+    // port's (a broadcast with none goes out in every format the table holds).
+    LineFormat line;
     // A scan's question to a machine number that has not answered yet. After a request timed
     // out, every other request waits until the longest reply to it could have ended (it may
     // still be on the wire: LibmodbusBackend); a probe after a probe goes at once, because the

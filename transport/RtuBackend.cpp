@@ -51,17 +51,15 @@ bool RtuBackend::open(QString* error)
         return false;
     }
     m_lock.makeExclusive(descriptor());
-    IoctlSerialDriver driver(descriptor(), context());
-    m_lineReport = m_line.apply(driver, settings(), SerialSysfs(settings().port));
+    m_line = SerialLineSetup();
+    m_lineReport = m_line.apply(*makeDriver(), settings(), SerialSysfs(settings().port));
     return true;
 }
 
 void RtuBackend::close()
 {
-    if (descriptor() >= 0) {
-        IoctlSerialDriver driver(descriptor(), context());
-        m_line.restore(driver);
-    }
+    if (descriptor() >= 0)
+        m_line.restore(*makeDriver());
     m_lineReport = SerialLineReport();
     LibmodbusBackend::close();
     m_lock.release();
@@ -75,12 +73,12 @@ QString RtuBackend::describe() const
 int RtuBackend::defaultTurnaroundMs() const
 {
     // Strictly more than C3.5 + 5 ms, also where that is a whole number of milliseconds.
-    return std::max(10, int(std::floor(3.5 * settings().charTimeMs() + 5)) + 1);
+    return std::max(10, int(std::floor(3.5 * lineSettings().charTimeMs() + 5)) + 1);
 }
 
 double RtuBackend::defaultFrameGapMs() const
 {
-    return settings().baud > 19200 ? 1.75 : 3.5 * settings().charTimeMs();
+    return lineSettings().baud > 19200 ? 1.75 : 3.5 * lineSettings().charTimeMs();
 }
 
 _modbus* RtuBackend::createContext()
@@ -128,7 +126,7 @@ void RtuBackend::readRawReply(const ModbusRequest& request, int timeoutMs, QByte
 {
     // libmodbus does not know the length of replies to functions it has no API for (0x2B):
     // read by the reply's own length (its object list), or until the line goes silent.
-    const int gapMs = settings().effectiveByteTimeoutMs();
+    const int gapMs = lineSettings().effectiveByteTimeoutMs();
     char chunk[kMaxAdu];
     for (;;) {
         const int need = RtuFrame::expectedReplyLength(request, *adu);
@@ -175,12 +173,31 @@ void RtuBackend::readRawReply(const ModbusRequest& request, int timeoutMs, QByte
 
 double RtuBackend::wireTimeMs(int bytes) const
 {
-    return bytes * settings().charTimeMs();
+    return bytes * lineSettings().charTimeMs();
 }
 
 int RtuBackend::recoveryQuietMs(const ModbusRequest& request) const
 {
-    return int(std::ceil((typicalReplyBytes(request) + 3.5) * settings().charTimeMs())) + 10;
+    return int(std::ceil((typicalReplyBytes(request) + 3.5) * lineSettings().charTimeMs())) + 10;
+}
+
+} // namespace opentop
+
+namespace opentop {
+
+std::unique_ptr<SerialDriver> RtuBackend::makeDriver()
+{
+    return std::make_unique<IoctlSerialDriver>(descriptor(), context());
+}
+
+bool RtuBackend::applyLineFormat(const LineFormat& format, QString* error)
+{
+    return m_line.switchFormat(*makeDriver(), format, error) == 0;
+}
+
+double RtuBackend::meanSwitchMicros() const
+{
+    return m_line.switchCount() > 0 ? double(m_line.switchMicros()) / m_line.switchCount() : 0;
 }
 
 } // namespace opentop

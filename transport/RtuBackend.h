@@ -4,6 +4,8 @@
 #include "PortLock.h"
 #include "SerialLineSetup.h"
 
+#include <memory>
+
 namespace opentop {
 
 // Modbus RTU on a serial device (or a pty) through libmodbus. The libmodbus context is created
@@ -31,6 +33,10 @@ public:
     // The Modbus RTU inter-frame gap: 3.5 character times, 1.75 ms above 19200 bit/s (Modbus
     // over serial line 2.5.1.1). See erratum DBU-30 for the manual's rounder figures.
     double defaultFrameGapMs() const override;
+    // Format switches made since the port was opened, and their mean cost in µs (tcdrain +
+    // tcsetattr; the gap at the new rate is kept on top of it).
+    int lineSwitches() const { return m_line.switchCount(); }
+    double meanSwitchMicros() const;
 
 protected:
     _modbus* createContext() override;
@@ -42,6 +48,9 @@ protected:
                       ModbusResult* result) override;
     double wireTimeMs(int bytes) const override;
     int recoveryQuietMs(const ModbusRequest& request) const override;
+    bool applyLineFormat(const LineFormat& format, QString* error) override;
+    // The driver calls go through this (a test wraps it to see their order and time).
+    virtual std::unique_ptr<SerialDriver> makeDriver();
 
 private:
     PortLock m_lock;

@@ -1,6 +1,9 @@
 #pragma once
 
+#include "LineFormat.h"
+
 #include <QtGlobal>
+#include <cerrno>
 
 namespace opentop {
 
@@ -35,6 +38,17 @@ public:
     virtual int useRts(bool highWhileSending, int delayUs, Rts* readBack) = 0;
     virtual int getLowLatency(bool* on) = 0; // TIOCGSERIAL, ASYNC_LOW_LATENCY
     virtual int setLowLatency(bool on) = 0;  // TIOCSSERIAL
+    // Waits until everything written has left the UART (tcdrain).
+    virtual int drainOutput() { return 0; }
+    // The character format and rate (termios, applied once the output has drained); `readBack`
+    // as the driver has it afterwards. A pty keeps the rate, stop bits, PARODD and INPCK but
+    // drops PARENB and forces 8 data bits: parity shows there as INPCK (see hardware.md).
+    virtual int setFormat(const LineFormat& format, LineFormat* readBack)
+    {
+        Q_UNUSED(format);
+        Q_UNUSED(readBack);
+        return ENOTSUP;
+    }
 };
 
 } // namespace opentop

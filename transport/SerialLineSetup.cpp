@@ -4,6 +4,7 @@
 #include "TransportLog.h"
 
 #include <QCoreApplication>
+#include <QElapsedTimer>
 #include <cerrno>
 #include <linux/serial.h>
 
@@ -158,6 +159,29 @@ void SerialLineSetup::applyLowLatency(SerialDriver& driver, const ConnectionSett
     // Read after setting: FTDI's driver sets its latency timer to 1 ms with the flag.
     report->latencyTimerPath = sysfs.latencyTimerPath();
     report->latencyTimerMs = sysfs.latencyTimerMs();
+}
+
+int SerialLineSetup::switchFormat(SerialDriver& driver, const LineFormat& format, QString* error)
+{
+    QElapsedTimer timer;
+    timer.start();
+    int err = driver.drainOutput();
+    LineFormat readBack;
+    if (err == 0)
+        err = driver.setFormat(format, &readBack);
+    if (err == 0 && readBack.baud != format.baud)
+        err = EINVAL; // the driver took another rate: the drive would not hear us
+    m_switchMicros += timer.nsecsElapsed() / 1000;
+    if (err != 0) {
+        *error = err == EINVAL ? QCoreApplication::translate("opentop::Transport",
+                                                             "the port does not take %1")
+                                     .arg(format.text())
+                               : errorText(err);
+        return err;
+    }
+    ++m_switches;
+    qCDebug(lcTransport) << "line switched to" << format.text();
+    return 0;
 }
 
 void SerialLineSetup::restore(SerialDriver& driver)

@@ -23,6 +23,13 @@ public:
     SerialLineReport apply(SerialDriver& driver, const ConnectionSettings& settings,
                            const SerialSysfs& sysfs);
     void restore(SerialDriver& driver);
+    // Switches the open port to `format` once what was written has left the UART (tcdrain):
+    // 0 or an errno, *error saying what failed. The rate must read back as asked (a pty drops
+    // parity, see SerialDriver::setFormat, so the rest is not compared). Counts the switches
+    // and the time they took (switchCount(), switchMicros()).
+    int switchFormat(SerialDriver& driver, const LineFormat& format, QString* error);
+    int switchCount() const { return m_switches; }
+    qint64 switchMicros() const { return m_switchMicros; }
 
 private:
     void applyDirection(SerialDriver& driver, const ConnectionSettings& settings,
@@ -35,6 +42,8 @@ private:
 
     std::optional<SerialDriver::Rs485> m_savedRs485; // as found, when we changed it
     std::optional<bool> m_savedLowLatency;
+    int m_switches = 0;
+    qint64 m_switchMicros = 0;
 };
 
 } // namespace opentop

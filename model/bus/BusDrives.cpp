@@ -1,5 +1,6 @@
 #include "bus/BusDrives.h"
 
+#include "ModbusClient.h"
 #include "profile/ProfileRegistry.h"
 #include "session/DeviceParameters.h"
 #include "session/DeviceSession.h"
@@ -26,6 +27,12 @@ void BusDrives::update(const DeviceInfo& info)
     Drive& d = m_drives[info.slave];
     const QString family = d.info.family;
     d.info = info;
+    if (m_client) {
+        if (info.line.isSet())
+            m_client->setDriveLine(info.slave, info.line);
+        d.info.line =
+            m_client->hasOwnLine(info.slave) ? m_client->driveLine(info.slave) : LineFormat();
+    }
     if (d.session && family != info.family && info.state == DeviceInfo::State::Present) {
         // Another family now answers at this number: the old session's profile is wrong.
         delete d.parameters;
@@ -42,6 +49,18 @@ void BusDrives::update(const DeviceInfo& info)
         d.session->setVariant(info.variant);
     }
     emit added ? driveAdded(info.slave) : driveChanged(info.slave);
+}
+
+void BusDrives::setLine(int slave, const LineFormat& format)
+{
+    if (!m_client)
+        return;
+    m_client->setDriveLine(slave, format);
+    const auto it = m_drives.find(slave);
+    if (it == m_drives.end())
+        return;
+    it->info.line = m_client->hasOwnLine(slave) ? m_client->driveLine(slave) : LineFormat();
+    emit driveChanged(slave);
 }
 
 void BusDrives::remove(int slave)

@@ -37,6 +37,11 @@ public:
     // The variant where the drive does not report it (chosen by the user, or the simulated
     // bus's list); changes the allowed values used for its validation.
     void setVariant(int slave, const QString& variant);
+    // The drive's own line format (ModbusClient::setDriveLine): requests to it go out in it
+    // from now on; unset, or the port's, talks to it at the port's again. A drive not in the
+    // list yet keeps it for when it is added. The table outlives remove(): a rescan asks the
+    // drive in its format.
+    void setLine(int slave, const LineFormat& format);
 
     // Whether the connection is open: false once it is lost (or could not be opened). Nothing
     // read before counts as live while the link is down (monitor/Freshness).

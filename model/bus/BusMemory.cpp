@@ -46,21 +46,31 @@ QString BusMemory::placeText(const ConnectionSettings& settings)
     return {};
 }
 
+QVector<BusMemory::Drive> BusMemory::present(const BusDrives& drives)
+{
+    QVector<Drive> out;
+    for (int slave : drives.slaves()) {
+        const DeviceInfo info = drives.info(slave);
+        if (info.state != DeviceInfo::State::Present || info.family.isEmpty())
+            continue;
+        out << Drive{slave, info.variant.isEmpty() ? info.family : info.variant, info.model, info.line};
+    }
+    return out;
+}
+
 void BusMemory::save(const QString& key, const BusDrives& drives)
 {
     QSettings settings;
     settings.remove(settingsGroup(key));
     settings.beginWriteArray(settingsGroup(key));
     int index = 0;
-    for (int slave : drives.slaves()) {
-        const DeviceInfo info = drives.info(slave);
-        if (info.state != DeviceInfo::State::Present || info.family.isEmpty())
-            continue;
+    for (const Drive& d : present(drives)) {
         settings.setArrayIndex(index++);
-        settings.setValue(QStringLiteral("slave"), slave);
-        settings.setValue(QStringLiteral("type"),
-                          info.variant.isEmpty() ? info.family : info.variant);
-        settings.setValue(QStringLiteral("model"), info.model);
+        settings.setValue(QStringLiteral("slave"), d.slave);
+        settings.setValue(QStringLiteral("type"), d.type);
+        settings.setValue(QStringLiteral("model"), d.model);
+        if (d.line.isSet())
+            settings.setValue(QStringLiteral("line"), d.line.token());
     }
     settings.endArray();
 }
@@ -76,6 +86,9 @@ QVector<BusMemory::Drive> BusMemory::load(const QString& key)
         d.slave = settings.value(QStringLiteral("slave")).toInt();
         d.type = settings.value(QStringLiteral("type")).toString();
         d.model = settings.value(QStringLiteral("model")).toString();
+        const QString line = settings.value(QStringLiteral("line")).toString();
+        if (!line.isEmpty())
+            d.line = LineFormat::parse(line, 0).value_or(LineFormat());
         if (d.slave >= 1 && d.slave <= 247 && !d.type.isEmpty())
             out << d;
     }
@@ -96,12 +109,22 @@ QHash<int, QString> BusMemory::types(const QVector<Drive>& drives)
     return out;
 }
 
+QMap<int, LineFormat> BusMemory::lines(const QVector<Drive>& drives)
+{
+    QMap<int, LineFormat> out;
+    for (const Drive& d : drives)
+        if (d.line.isSet())
+            out.insert(d.slave, d.line);
+    return out;
+}
+
 QString BusMemory::listText(const QVector<Drive>& drives)
 {
     QStringList parts;
     for (const Drive& d : drives)
         parts << (d.model.isEmpty() ? QString::number(d.slave)
-                                    : QStringLiteral("%1 (%2)").arg(d.slave).arg(d.model));
+                                    : QStringLiteral("%1 (%2)").arg(d.slave).arg(d.model)) +
+                     (d.line.isSet() ? QStringLiteral(" %1").arg(d.line.text()) : QString());
     return parts.join(QStringLiteral(", "));
 }
 

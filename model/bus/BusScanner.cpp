@@ -71,8 +71,23 @@ void BusScanner::setWaitMs(int ms)
 
 int BusScanner::waitMs() const
 {
+    return waitFor(0);
+}
+
+int BusScanner::waitFor(int slave) const
+{
     return m_waitMs > 0 ? m_waitMs
-                        : defaultWaitMs(m_client->settings(), m_client->adapterLatencyMs());
+                        : defaultWaitMs(settingsFor(slave), m_client->adapterLatencyMs());
+}
+
+ConnectionSettings BusScanner::settingsFor(int slave) const
+{
+    ConnectionSettings settings = m_client->settings();
+    if (m_line.isSet())
+        settings.setLine(m_line);
+    else if (slave > 0)
+        settings.setLine(m_client->driveLine(slave));
+    return settings;
 }
 
 double BusScanner::elapsedMs() const
@@ -127,20 +142,22 @@ void BusScanner::cancel()
 int BusScanner::requestTimeoutMs(int profileIndex, bool confirming) const
 {
     const IdentifyRule& rule = m_registry.profiles()[profileIndex].identify;
-    const int whole = wholeReplyWaitMs(m_client->settings(), m_effectiveWaitMs, 5 + 2 * rule.count);
+    // A drive of its own format is asked at its rate: the waits follow it.
+    const int wait = std::max(m_effectiveWaitMs, waitFor(m_slave));
+    const int whole = wholeReplyWaitMs(settingsFor(m_slave), wait, 5 + 2 * rule.count);
     // A drive asked again (it answered late, or its identification failed): four waits, or the
     // connection's timeout. The last address of the pass has no next request to catch its late
     // reply: four waits.
     if (m_reasking)
-        return std::clamp(std::max({4 * m_effectiveWaitMs, m_client->settings().timeoutMs, whole}),
-                          kMinWaitMs, kMaxWaitMs);
+        return std::clamp(std::max({4 * wait, m_client->settings().timeoutMs, whole}), kMinWaitMs,
+                          kMaxWaitMs);
     if (m_slave == m_to)
-        return std::clamp(std::max(4 * m_effectiveWaitMs, whole), kMinWaitMs, kMaxWaitMs);
+        return std::clamp(std::max(4 * wait, whole), kMinWaitMs, kMaxWaitMs);
     // An address that has answered (another family's read, a garbled frame) is there: its
     // identification waits for the whole reply, which may be longer than the first byte's wait.
     if (profileIndex > 0 || confirming)
         return whole;
-    return m_effectiveWaitMs; // empty addresses cost this wait only
+    return wait; // empty addresses cost this wait only
 }
 
 void BusScanner::askProfile(int profileIndex, bool confirming)
@@ -149,6 +166,7 @@ void BusScanner::askProfile(int profileIndex, bool confirming)
     ModbusRequest request =
         rule.function == 4 ? ModbusRequest::readInput(quint8(m_slave), rule.address, rule.count)
                            : ModbusRequest::readHolding(quint8(m_slave), rule.address, rule.count);
+    request.line = m_line;
     request.timeoutMs = requestTimeoutMs(profileIndex, confirming);
     request.probe = !m_reasking && !confirming && profileIndex == 0;
     // Silence is the normal answer in a scan: retrying it would only double the scan time.
@@ -287,6 +305,9 @@ void BusScanner::addressDone(DeviceInfo info)
     if (!m_reasking)
         ++m_done;
     if (info.state != DeviceInfo::State::Absent) {
+        info.line = m_line.isSet() ? m_line : LineFormat();
+        if (!info.line.isSet() && m_client->hasOwnLine(info.slave))
+            info.line = m_client->driveLine(info.slave);
         if (m_reasking && info.state != DeviceInfo::State::IdentifyFailed) {
             const QString late = tr("answered late at first (after the %1 ms wait); a longer "
                                     "wait makes scans of this bus reliable")

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "LineFormat.h"
 #include "session/DeviceInfo.h"
 
 #include <QElapsedTimer>
@@ -60,6 +61,10 @@ public:
     // Range and wait for the next start(); waitMs 0 uses defaultWaitMs().
     void setRange(int from, int to);
     void setWaitMs(int ms);
+    // The format every request of the next start() goes out in (a pass for drives of another
+    // format); unset: each drive's own (ModbusClient::driveLine), else the port's.
+    void setLine(const LineFormat& format) { m_line = format; }
+    LineFormat line() const { return m_line; }
     int from() const { return m_from; }
     int to() const { return m_to; }
     int waitMs() const;
@@ -102,6 +107,10 @@ private:
     // The address answered before; its identification has just failed.
     DeviceInfo identificationFailed(DeviceInfo info);
     void addressDone(DeviceInfo info);
+    // The wait for `slave`: the given one, else derived from the format it is asked in.
+    int waitFor(int slave) const;
+    // The connection's settings in the format `slave` is asked in.
+    ConnectionSettings settingsFor(int slave) const;
     void nextAddress();
     void finish();
 
@@ -112,6 +121,7 @@ private:
     int m_from = 1;
     int m_to = 247;
     int m_waitMs = 0;
+    LineFormat m_line;
     int m_effectiveWaitMs = 0;
     int m_cursor = 1;   // the next address of the pass through the range
     int m_slave = 0;    // the address being asked

@@ -44,6 +44,16 @@ QString DriveStatus::ledText() const
         return DriveStatusPoller::tr("Status not known yet");
     if (led == Led::Grey)
         return DriveStatusPoller::tr("No answer: %1").arg(error);
+    // An alarm outranks a communication error (as the LED shows it).
+    if (consecutiveFailures > 0 && !alarmActive.value_or(false))
+        return DriveStatusPoller::tr("Communication error: %1").arg(error);
+    return lastStateText();
+}
+
+QString DriveStatus::lastStateText() const
+{
+    if (!answered)
+        return DriveStatusPoller::tr("Status not known yet");
     if (alarmActive.value_or(false)) {
         if (alarm)
             return DriveStatusPoller::tr("Alarm %1 %2").arg(alarm->panel, alarm->name);
@@ -52,8 +62,6 @@ QString DriveStatus::ledText() const
                 .arg(QString::number(*alarmCode, 16).toUpper());
         return DriveStatusPoller::tr("Alarm active");
     }
-    if (consecutiveFailures > 0)
-        return DriveStatusPoller::tr("Communication error: %1").arg(error);
     if (running.value_or(false)) {
         if (!reverse)
             return DriveStatusPoller::tr("Running");

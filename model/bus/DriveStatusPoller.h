@@ -58,6 +58,9 @@ struct DriveStatus
     QString communicationText() const;
     // What the LED means for this drive: "Alarm AL007 Overload", "Running CW", ...
     QString ledText() const;
+    // What the drive said at its last answer (alarm, running and which way, stopped), whatever
+    // has happened to the communication since: for what was known when a link dropped.
+    QString lastStateText() const;
     static QString ledName(Led led); // "red", "sky blue"
     // The profile's name of a light (statusLed's "light"): "red", "skyBlue"; empty for grey.
     static QString ledLight(Led led);

@@ -37,6 +37,7 @@ void ProfileTexts::forEachText(Profile& profile, const Visit& visit)
 void ProfileTexts::visitTexts(Profile& profile, bool inherited, const Visit& visit)
 {
     visit(QStringLiteral("name"), profile.name);
+    visit(QStringLiteral("serial.formatHelp"), profile.serial.formatHelp);
     for (ProfileVariant& v : profile.variants)
         visit(QStringLiteral("variants.%1.label").arg(v.id), v.label);
     for (ProfileGroup& g : profile.groups) {

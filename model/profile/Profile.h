@@ -65,6 +65,13 @@ struct SerialDefaults
     int stopBits = 1;
     QVector<int> bauds;
     int powerOnDelayMs = 0; // after power-on, the drive answers only after this long
+    // The character formats the drive can be set to ("8N1"; the DC controller: 8E1, 8O1, 8N2),
+    // the default's first when the profile names none.
+    QStringList formats;
+    // How to change the drive's format and rate over the bus (which setting, how it is stored,
+    // when it takes effect, in which order), for a drive that must join a bus of another
+    // format; empty when the drive cannot be changed.
+    QString formatHelp;
 };
 
 // A deceleration the drive takes from a knob, not from a setting that can be read (the DBU's SD

@@ -1,5 +1,6 @@
 #include "profile/ProfileLoader.h"
 
+#include "LineFormat.h"
 #include "profile/JsonReader.h"
 #include "profile/ParameterReader.h"
 
@@ -59,15 +60,13 @@ bool readHeader(const QJsonObject& root, JsonReader& json, Profile* p)
     static const QRegularExpression idRe(QStringLiteral("^[a-z][a-z0-9_]*$"));
     if (!idRe.match(p->family).hasMatch())
         return json.fail(tr("\"family\" must be a lower-case id"));
-
     const QJsonObject serial = json.object(root, QStringLiteral("serial")).value_or(QJsonObject());
     p->serial.baud = int(json.integer(serial, QStringLiteral("baud")).value_or(0));
     const QString parity = json.string(serial, QStringLiteral("parity")).value_or(QString());
     p->serial.stopBits = int(json.integer(serial, QStringLiteral("stopBits")).value_or(0));
     if (json.failed())
         return false;
-    if (parity != QLatin1String("N") && parity != QLatin1String("E") &&
-        parity != QLatin1String("O"))
+    if (parity.size() != 1 || !QStringLiteral("NEO").contains(parity))
         return json.fail(tr("serial.parity must be N, E or O"));
     p->serial.parity = parity.at(0).toLatin1();
     if (p->serial.baud < 1200 || p->serial.baud > 115200 ||
@@ -77,9 +76,22 @@ bool readHeader(const QJsonObject& root, JsonReader& json, Profile* p)
         p->serial.bauds << b.toInt();
     p->serial.powerOnDelayMs =
         int(json.integer(serial, QStringLiteral("powerOnDelayMs"), false).value_or(0));
+    const QString defaultFrame =
+        LineFormat{p->serial.baud, p->serial.parity, 8, p->serial.stopBits}.frameText();
+    const QJsonArray formats = serial.value(QStringLiteral("formats")).toArray();
+    for (const QJsonValue& f : formats.isEmpty() ? QJsonArray{defaultFrame} : formats) {
+        const std::optional<LineFormat> format = LineFormat::parse(f.toString(), p->serial.baud);
+        if (!format || format->baud != p->serial.baud)
+            return json.fail(
+                tr("serial.formats: \"%1\" is not a format such as 8N1 or 8E1").arg(f.toString()));
+        p->serial.formats << format->frameText();
+    }
+    if (!p->serial.formats.contains(defaultFrame))
+        return json.fail(tr("serial.formats must hold the default format %1").arg(defaultFrame));
+    p->serial.formatHelp =
+        json.string(serial, QStringLiteral("formatHelp"), false).value_or(QString());
     if (p->serial.powerOnDelayMs < 0 || p->serial.powerOnDelayMs > 60000)
         return json.fail(tr("serial.powerOnDelayMs must be 0–60000"));
-
     const QJsonObject limits = json.object(root, QStringLiteral("limits")).value_or(QJsonObject());
     p->maxReadRegisters = int(json.integer(limits, QStringLiteral("maxReadRegisters")).value_or(0));
     p->maxWriteRegisters =

@@ -20,7 +20,47 @@ ExitActions::ExitActions(BusDrives* drives, QObject* parent)
 {
 }
 
-void ExitActions::stop(const QVector<int>& slaves, Done done)
+void ExitActions::leave(const ExitPlan& plan, ExitPlan::Choice choice, Done done)
+{
+    switch (choice) {
+    case ExitPlan::Choice::Leave:
+        done({});
+        return;
+    case ExitPlan::Choice::GiveBackOnly:
+        returnToIoPriority(plan.returnable(), std::move(done));
+        return;
+    case ExitPlan::Choice::StopAndGiveBack:
+        break;
+    }
+    const QVector<int> running = plan.running();
+    const QVector<int> returnable = plan.returnable();
+    if (running.isEmpty()) {
+        returnToIoPriority(returnable, std::move(done));
+        return;
+    }
+    QPointer<ExitActions> self(this);
+    stop(running, [self, running, returnable, done](const QStringList& failures,
+                                                    const QVector<int>& stopped) {
+        QStringList all = failures;
+        QVector<int> giveBack;
+        for (int slave : returnable) {
+            if (!running.contains(slave) || stopped.contains(slave))
+                giveBack << slave;
+            else
+                all << tr("Machine number %1: left in communication priority, as it was not "
+                          "confirmed stopped")
+                           .arg(slave);
+        }
+        if (!self) {
+            done(all);
+            return;
+        }
+        self->returnNext(giveBack, all, done);
+    });
+}
+
+void ExitActions::stop(const QVector<int>& slaves,
+                       std::function<void(const QStringList&, const QVector<int>&)> done)
 {
     auto* stop = new StopAll(m_drives->client(), ProfileRegistry::builtIn(), this);
     BusDrives* drives = m_drives;
@@ -28,24 +68,27 @@ void ExitActions::stop(const QVector<int>& slaves, Done done)
     stop->run(slaves, [stop, done](const StopReport& report) {
         stop->deleteLater();
         QStringList failures;
+        QVector<int> stopped;
         for (const StopBroadcast& b : report.broadcasts) {
             if (!b.sent)
                 failures
                     << tr("The stop broadcast to the %1 drives failed: %2").arg(b.family, b.error);
         }
         for (const StopResult& r : report.drives) {
-            if (r.state == StopResult::State::StillRunning)
+            if (r.state == StopResult::State::Stopped)
+                stopped << r.slave;
+            else if (r.state == StopResult::State::StillRunning)
                 failures << tr("Machine number %1: STILL RUNNING (%2) %3")
                                 .arg(r.slave)
                                 .arg(r.speedText, r.detail)
                                 .trimmed();
-            else if (r.state == StopResult::State::NoAnswer)
+            else
                 failures << tr("Machine number %1: NO ANSWER, not confirmed stopped %2")
                                 .arg(r.slave)
                                 .arg(r.detail)
                                 .trimmed();
         }
-        done(failures);
+        done(failures, stopped);
     });
 }
 

@@ -33,9 +33,11 @@ QVector<DriveLeftBehind> ExitCheck::collect(const BusDrives& drives,
         d.model = drives.info(slave).shortModel();
         d.running = status.running.value_or(false);
         d.busPriority = status.motionPriority.value_or(false);
+        d.inputsControl = status.motionPriority.has_value() && !*status.motionPriority;
         if (!d.running && !d.busPriority)
             continue;
-        d.state = status.ledText();
+        d.state = status.lastStateText();
+        d.lastAnswer = status.lastAnswer;
         if (const DeviceSession* session = drives.session(slave))
             d.canReturn = session->profile().role(kIoPriority) != nullptr;
         left << d;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QCoreApplication>
+#include <QDateTime>
 #include <QVector>
 #include <functional>
 
@@ -17,7 +18,9 @@ struct DriveLeftBehind
     bool running = false;     // by the last status poll
     bool busPriority = false; // holds the setting motion over the bus needs ("motionPriority")
     bool canReturn = false;   // the profile names the value that gives control back ("ioPriority")
-    QString state;            // "Running CW", as the bus list says it
+    bool inputsControl = false; // read to be in I/O priority: it runs from its own inputs
+    QString state;              // "Running CW", as the bus list says it
+    QDateTime lastAnswer;       // when what is said here was read (invalid: never)
 
     // "Machine number 1 (DBU200-D): Running CW, in Communication priority"
     QString text() const;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "LineFormat.h"
+
 #include <QMetaType>
 #include <QString>
 #include <QVector>
@@ -33,6 +35,9 @@ struct DeviceInfo
     // made for the drive starts with them (DeviceSession::acceptIdentification), so nothing
     // asks the drive again for what identification has just read.
     QVector<quint16> identifyRegisters;
+    // The drive's own line format where it is not the port's (unset: the port's). Requests to
+    // it go out in it (ModbusClient::setDriveLine).
+    LineFormat line;
 
     // Machine number as the DBU's rotary switches show it: 150 -> "96h", "SW1=9 SW2=6".
     // Present, of a family with variants, and the drive did not say which (nor did anyone).

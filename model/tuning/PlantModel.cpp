@@ -29,6 +29,38 @@ PlantModel PlantModel::fromRelay(double gain, double ku, double tuMs, double bus
     return m;
 }
 
+double PlantModel::currentPerOutputOf(const TuningSamples& relay, double outputScale, double d,
+                                      double tauMs)
+{
+    if (relay.size() < 3 || !(d > 0) || !(outputScale > 0))
+        return 0;
+    // A plain reading's interval (no switch between): the time a switch's write took is the
+    // rest of the interval around it.
+    QVector<double> plain;
+    for (int k = 1; k < relay.size(); ++k) {
+        if (relay[k].command == relay[k - 1].command)
+            plain << relay[k].tMs - relay[k - 1].tMs;
+    }
+    std::sort(plain.begin(), plain.end());
+    const double reading = plain.isEmpty() ? 0 : plain[plain.size() / 2];
+    QVector<double> estimates;
+    for (int k = 1; k < relay.size(); ++k) {
+        const double before = relay[k - 1].command / outputScale;
+        const double after = relay[k].command / outputScale;
+        if (before == after || std::abs(std::abs(after - before) - 2 * d) > 0.01 * d)
+            continue;
+        const double sinceSwitch =
+            std::max(0.0, relay[k].tMs - relay[k - 1].tMs - reading); // the write's share
+        const double decay = tauMs > 0 ? std::min(3.0, std::exp(sinceSwitch / tauMs)) : 1;
+        estimates << (std::abs(relay[k].current) + std::abs(relay[k - 1].current)) * decay /
+                         (2 * d);
+    }
+    if (estimates.isEmpty())
+        return 0;
+    std::sort(estimates.begin(), estimates.end());
+    return estimates[estimates.size() / 2];
+}
+
 bool PlantModel::ultimate(double* ku, double* tuMs) const
 {
     if (!valid || deadMs <= 0)
@@ -54,13 +86,19 @@ TuningSamples PlantModel::simulateStep(const PidGains& g, const TuningSpec& spec
     const double period = std::max(1, spec.periodMs);
     const double full = spec.outputFullScale;
     const int dead = std::max(0, int(std::lround(deadMs / period)));
+    const bool limited = currentPerOutput > 0 && currentLimit > 0;
+    // How far the output may lead the shaft before the current reaches the limit, either way.
+    const double up = limited ? std::max(0.0, (currentLimit - restCurrent) / currentPerOutput) : 0;
+    const double down =
+        limited ? std::max(0.0, (currentLimit + restCurrent) / currentPerOutput) : 0;
     // At rest on `from`: the output that holds it, carried by the integral where there is one.
     const double u0 = std::clamp(from / gain, -full, full);
-    QVector<double> pipe(dead + 1, u0);
+    QVector<double> pipe(dead + 1, from); // the measurement, `dead` periods behind the shaft
     int head = 0;
-    double y = from;
-    double sum = g.i > 0 ? (u0 - g.p * 0) / g.i : 0;
-    double offset = g.i > 0 ? 0 : u0;
+    double x = from; // the shaft
+    double y = from; // what the controller reads
+    double sum = g.i > 0 ? u0 / g.i : 0;
+    const double offset = g.i > 0 ? 0 : u0;
     double dTerm = 0;
     double dRef = to - y;
     int dCount = 0;
@@ -77,12 +115,17 @@ TuningSamples PlantModel::simulateStep(const PidGains& g, const TuningSpec& spec
         const double u = std::clamp(raw, -full, full);
         if (u == raw || (raw > 0) != (e > 0))
             sum += e;
-        pipe[head] = u;
+        const double needed = x / gain;
+        const double applied = limited ? std::clamp(u, needed - down, needed + up) : u;
+        x += (gain * applied - x) * period / std::max(period, tauMs);
+        pipe[head] = x;
         head = (head + 1) % pipe.size();
-        const double applied = pipe[head]; // `dead` periods old
-        y += (gain * applied - y) * period / std::max(period, tauMs);
+        y = pipe[head]; // `dead` periods old
         if (t >= nextSample) {
-            out.append({t, to, y, 0, u});
+            const double current =
+                currentPerOutput > 0 ? std::abs(restCurrent + currentPerOutput * (applied - needed))
+                                     : 0;
+            out.append({t, to, y, current, u});
             nextSample += sampleMs;
         }
     }

@@ -11,13 +11,14 @@ struct Entry
     TuningRules::Rule rule;
     const char* id;
     double kp, ti, td; // of Ku and Tu
+    double overshoot;  // % the proposal may overshoot on the model (GainDesign)
 };
 const Entry kRules[] = {
-    {TuningRules::Rule::Soft, "soft", 0.2, 0.5, 1.0 / 3},
-    {TuningRules::Rule::Medium, "medium", 0.33, 0.5, 1.0 / 3},
-    {TuningRules::Rule::Stiff, "stiff", 0.6, 0.5, 0.125},
-    {TuningRules::Rule::TyreusLuyben, "tyreus-luyben", 1 / 2.2, 2.2, 1 / 6.3},
-    {TuningRules::Rule::ZieglerNicholsPi, "zn-pi", 0.45, 1 / 1.2, 0},
+    {TuningRules::Rule::Soft, "soft", 0.2, 0.5, 1.0 / 3, 2},
+    {TuningRules::Rule::Medium, "medium", 0.33, 0.5, 1.0 / 3, 15},
+    {TuningRules::Rule::Stiff, "stiff", 0.6, 0.5, 0.125, 30},
+    {TuningRules::Rule::TyreusLuyben, "tyreus-luyben", 1 / 2.2, 2.2, 1 / 6.3, 10},
+    {TuningRules::Rule::ZieglerNicholsPi, "zn-pi", 0.45, 1 / 1.2, 0, 20},
 };
 
 const Entry& entry(TuningRules::Rule rule)
@@ -68,6 +69,11 @@ QString TuningRules::title(Rule rule)
         return tr("PI only (Ziegler–Nichols)");
     }
     return {};
+}
+
+double TuningRules::overshootBound(Rule rule)
+{
+    return entry(rule).overshoot;
 }
 
 TuningRules::Continuous TuningRules::continuous(Rule rule, double ku, double tuMs)

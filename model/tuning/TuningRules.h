@@ -36,6 +36,9 @@ public:
     static std::optional<Rule> fromId(const QString& id);
     static QString id(Rule rule);
     static QString title(Rule rule); // for people
+    // The overshoot (% of a step) the rule promises: the proposal must not exceed it on the
+    // plant's model (GainDesign).
+    static double overshootBound(Rule rule);
 
     static Continuous continuous(Rule rule, double ku, double tuMs);
     static PidGains toController(const Continuous& c, const TuningSpec& spec, int dPeriodMs);

@@ -2,6 +2,7 @@
 
 #include "ModelLog.h"
 #include "session/DeviceSession.h"
+#include "tuning/RelayTuning.h"
 
 #include <QPointer>
 #include <QTimer>
@@ -14,17 +15,19 @@ namespace opentop {
 namespace {
 
 constexpr int kMaxFailedPolls = 5;
-constexpr int kHoldMs = 800;       // each hold of the relay's gain estimate
+constexpr int kHoldMs = 800;       // each hold of the relay's gain estimate, at least
+constexpr int kMaxHoldMs = 4000;   // a heavy load's: the speed has not settled in 800 ms
 constexpr int kAverageMs = 300;    // the end of a hold that is averaged
 constexpr int kSettledForMs = 300; // at `from` this long before the step
 
-double mean(const TuningSamples& s, double sinceMs)
+double mean(const TuningSamples& s, double sinceMs, double TuningSample::*field,
+            double untilMs = 1e300)
 {
     double sum = 0;
     int n = 0;
     for (const TuningSample& x : s) {
-        if (x.tMs >= sinceMs) {
-            sum += x.speed;
+        if (x.tMs >= sinceMs && x.tMs < untilMs) {
+            sum += x.*field;
             ++n;
         }
     }
@@ -37,7 +40,8 @@ struct TuningRunner::Context
 {
     Result result;
     QElapsedTimer clock;
-    double t0 = 0; // reference moment (step, relay start), ms on `clock`
+    double origin = 0; // the runner's clock at the start, when it has one
+    double t0 = 0;     // reference moment (step, relay start), ms since the start
     std::optional<double> originalMode;
     std::optional<double> originalCommLoss;
     bool modeChanged = false;
@@ -45,9 +49,11 @@ struct TuningRunner::Context
     bool finishing = false;
     bool cancelled = false;
     int failedPolls = 0;
-    double closedScale = 1; // engineering per raw of the closed-loop speed command
-    double openScale = 1;   // engineering per raw of the open-loop (duty) command
-    double plantGain = 0;   // feedback engineering per output raw
+    double closedScale = 1;  // engineering per raw of the closed-loop speed command
+    double openScale = 1;    // engineering per raw of the open-loop (duty) command
+    double plantGain = 0;    // feedback engineering per output raw
+    double restCurrent = 0;  // A, at the last hold before the relay
+    double currentLimit = 0; // A, the drive's (0: unknown)
     double settledSince = -1;
     int polls = 0;
     bool high = false;
@@ -55,6 +61,8 @@ struct TuningRunner::Context
     // The step that repeats (a poll and what follows it). It holds the context, so it is
     // cleared when the test ends or the runner goes, which frees both.
     std::function<void()> loop;
+    // While the stop is awaited: what follows when the drive no longer answers.
+    std::function<void()> stopUnconfirmed;
 };
 
 TuningRunner::TuningRunner(DeviceSession* session, const TuningSpec& spec, QObject* parent)
@@ -75,8 +83,15 @@ TuningRunner::~TuningRunner()
         m_session->write(m_spec.command, QStringLiteral("0"), options,
                          [](const DeviceSession::Outcome&) {});
     }
-    if (m_ctx)
+    if (m_ctx) {
         m_ctx->loop = nullptr;
+        m_ctx->stopUnconfirmed = nullptr;
+    }
+}
+
+double TuningRunner::nowMs() const
+{
+    return m_clock ? m_clock() - m_ctx->origin : m_ctx->clock.nsecsElapsed() / 1e6;
 }
 
 double TuningRunner::modeOf() const
@@ -194,10 +209,12 @@ void TuningRunner::begin(Done done, std::function<void()> body)
     m_done = std::move(done);
     m_ctx = std::make_shared<Context>();
     m_ctx->clock.start();
+    m_ctx->origin = m_clock ? m_clock() : 0;
     const auto ctx = m_ctx;
     emit phase(tr("Reading the drive's settings"));
     m_session->readMany(
-        QStringList{m_spec.speedMode, m_spec.commLossTime} + m_spec.gainParameters(),
+        QStringList{m_spec.speedMode, m_spec.commLossTime} + m_spec.gainParameters() +
+            (m_spec.currentLimit.isEmpty() ? QStringList() : QStringList{m_spec.currentLimit}),
         [self = QPointer(this), this, ctx, body](const DeviceSession::ReadManyOutcome& r) {
             if (!self || ctx != m_ctx)
                 return;
@@ -210,6 +227,8 @@ void TuningRunner::begin(Done done, std::function<void()> body)
             }
             ctx->originalMode = r.results.value(m_spec.speedMode).value.raw;
             ctx->originalCommLoss = r.results.value(m_spec.commLossTime).value.number;
+            if (!m_spec.currentLimit.isEmpty())
+                ctx->currentLimit = r.results.value(m_spec.currentLimit).value.number;
             PidGains& g = ctx->result.gains;
             g.p = r.results.value(m_spec.gainP).value.number;
             g.i = r.results.value(m_spec.gainI).value.number;
@@ -272,6 +291,13 @@ void TuningRunner::poll(std::function<void(const TuningSample&)> then)
                         tr("the drive stopped answering: %1").arg(r.results.value(feedback).error));
                     return;
                 }
+                // Waiting for the stop on a line that is gone: it cannot be confirmed.
+                if (ctx->failedPolls >= kMaxFailedPolls && ctx->stopUnconfirmed) {
+                    const auto unconfirmed = std::move(ctx->stopUnconfirmed);
+                    ctx->stopUnconfirmed = nullptr;
+                    unconfirmed();
+                    return;
+                }
                 QTimer::singleShot(10, this, [this, ctx, then] {
                     if (ctx == m_ctx)
                         poll(then);
@@ -281,7 +307,7 @@ void TuningRunner::poll(std::function<void(const TuningSample&)> then)
             ctx->failedPolls = 0;
             ++ctx->polls;
             TuningSample s;
-            s.tMs = ctx->clock.nsecsElapsed() / 1e6 - ctx->t0;
+            s.tMs = nowMs() - ctx->t0;
             s.speed = r.results.value(feedback).value.number;
             s.current = r.results.value(m_spec.loadCurrent).value.number;
             s.output = r.results.value(m_spec.output).value.number;
@@ -339,6 +365,7 @@ void TuningRunner::finish()
         m_done = nullptr;
         m_ctx.reset();
         ctx->loop = nullptr;
+        ctx->stopUnconfirmed = nullptr;
         if (done)
             done(ctx->result);
     };
@@ -363,8 +390,7 @@ void TuningRunner::finish()
     }
     emit phase(tr("Stopping the motor"));
     writeNumber(m_spec.command, 0, [this, ctx, restore](bool sent) {
-        waitStopped(ctx->clock.elapsed() + m_limits.stopTimeoutMs, [this, ctx, restore,
-                                                                    sent](bool stopped) {
+        waitStopped(nowMs() + m_limits.stopTimeoutMs, [this, ctx, restore, sent](bool stopped) {
             ctx->result.stopConfirmed = sent && stopped;
             ctx->result.stopDetail = ctx->result.stopConfirmed
                                          ? tr("motor stopped (confirmed)")
@@ -375,19 +401,22 @@ void TuningRunner::finish()
     });
 }
 
-void TuningRunner::waitStopped(qint64 untilMs, std::function<void(bool)> then)
+void TuningRunner::waitStopped(double untilMs, std::function<void(bool)> then)
 {
     const auto ctx = m_ctx;
+    ctx->stopUnconfirmed = [then] { then(false); };
     poll([this, ctx, untilMs, then](const TuningSample& s) {
+        ctx->stopUnconfirmed = nullptr;
         if (std::abs(s.speed) <= 0.5 * ctx->closedScale || std::abs(s.speed) < 1e-9) {
             then(true);
             return;
         }
-        if (ctx->clock.elapsed() > untilMs) {
+        if (nowMs() > untilMs) {
             then(false);
             return;
         }
-        QTimer::singleShot(20, this, [this, ctx, untilMs, then] {
+        // On a test's clock time moves with the line alone: waiting would only slow the test.
+        QTimer::singleShot(m_clock ? 0 : 20, this, [this, ctx, untilMs, then] {
             if (ctx == m_ctx)
                 waitStopped(untilMs, then);
         });
@@ -450,7 +479,7 @@ void TuningRunner::stepApproach(const StepPlan& plan)
 void TuningRunner::stepRecord(const StepPlan& plan)
 {
     const auto ctx = m_ctx;
-    const double now = ctx->clock.nsecsElapsed() / 1e6;
+    const double now = nowMs();
     for (TuningSample& s : ctx->result.samples)
         s.tMs -= now - ctx->t0; // the approach before the step: negative times
     ctx->t0 = now;
@@ -496,7 +525,9 @@ void TuningRunner::startAutotune(const RelayPlan& plan, Done done)
                        .arg(ctx->result.speedUnit));
         setMode(m_spec.openLoopMode, [this, ctx, plan] {
             ctx->openScale = feedbackScale();
-            // First guess: the closed-loop command's full range maps onto full output.
+            // First guess: half the output that maps the closed-loop command's full range onto
+            // full output, so that a motor up to 3 times as fast as the range stays within the
+            // test's speed limit (1.5 × the speed); the second hold corrects it.
             const ParameterMeta* meta = m_session->profile().parameter(m_spec.command);
             double range = 0;
             if (meta && ctx->originalMode) {
@@ -512,9 +543,9 @@ void TuningRunner::startAutotune(const RelayPlan& plan, Done done)
                     range = std::max(range, r.max * ctx->closedScale);
             }
             const double full = m_spec.outputFullScale;
-            const double u1 = range > 0
-                                  ? std::clamp(full * plan.speed / range, 0.02 * full, 0.9 * full)
-                                  : 0.3 * full;
+            const double u1 =
+                range > 0 ? std::clamp(full * plan.speed / range / 2, 0.02 * full, 0.9 * full)
+                          : 0.3 * full;
             relayEstimate(plan, 0, u1, 0);
         });
     });
@@ -523,7 +554,7 @@ void TuningRunner::startAutotune(const RelayPlan& plan, Done done)
 void TuningRunner::relayEstimate(const RelayPlan& plan, int stage, double u, double y1)
 {
     const auto ctx = m_ctx;
-    ctx->t0 = ctx->clock.nsecsElapsed() / 1e6;
+    ctx->t0 = nowMs();
     ctx->result.samples.clear();
     ctx->loop = [this, ctx, plan, stage, u, y1] {
         poll([this, ctx, plan, stage, u, y1](const TuningSample& sample) {
@@ -531,11 +562,19 @@ void TuningRunner::relayEstimate(const RelayPlan& plan, int stage, double u, dou
             s.command = u * ctx->openScale;
             ctx->result.samples << s;
             emit sampled(s);
-            if (s.tMs < kHoldMs) {
+            // Held until the speed no longer moves: the last 300 ms against the 300 before
+            // (a gain read off a speed still rising makes the model, and u0, wrong).
+            const double since = s.tMs - kAverageMs;
+            const double y = mean(ctx->result.samples, since, &TuningSample::speed);
+            const double before =
+                mean(ctx->result.samples, since - kAverageMs, &TuningSample::speed, since);
+            const bool steady =
+                std::abs(y - before) <= std::max(0.005 * plan.speed, ctx->closedScale);
+            if (s.tMs < kHoldMs || (!steady && s.tMs < kMaxHoldMs)) {
                 ctx->loop();
                 return;
             }
-            const double y = mean(ctx->result.samples, kHoldMs - kAverageMs);
+            ctx->restCurrent = mean(ctx->result.samples, since, &TuningSample::current);
             const double full = m_spec.outputFullScale;
             if (stage == 0) {
                 if (y <= 0) {
@@ -586,7 +625,7 @@ void TuningRunner::relayRun(const RelayPlan& plan, double u0, bool high)
                    .arg(u0 * 100 / full, 0, 'f', 1)
                    .arg(plan.amplitude));
     ctx->result.samples.clear();
-    ctx->t0 = ctx->clock.nsecsElapsed() / 1e6;
+    ctx->t0 = nowMs();
     ctx->polls = 0;
     ctx->high = high;
     const double h = plan.hysteresis > 0 ? plan.hysteresis : 0.01 * plan.speed;
@@ -604,15 +643,17 @@ void TuningRunner::relayRun(const RelayPlan& plan, double u0, bool high)
             if (upCrossing) {
                 const RelayAnalysis a =
                     RelayAnalysis::analyse(ctx->result.samples, plan.speed, d, h, plan.cycles);
-                if (a.ok) {
+                if (a.steady || a.busPaced) { // the rest of its checks: relayConclude
                     ctx->result.relay = a;
-                    relayConclude(plan);
+                    relayConclude(plan, d);
                     return;
                 }
             }
             if (s.tMs > plan.maxMs) {
                 const RelayAnalysis a =
                     RelayAnalysis::analyse(ctx->result.samples, plan.speed, d, h, plan.cycles);
+                ctx->result.relay = a;
+                ctx->result.advice = a.advice;
                 fail(tr("no steady oscillation within %1 s: %2")
                          .arg(plan.maxMs / 1000.0)
                          .arg(a.error.isEmpty() ? tr("try a larger amplitude") : a.error));
@@ -629,48 +670,32 @@ void TuningRunner::relayRun(const RelayPlan& plan, double u0, bool high)
     command((high ? u0 + d : u0 - d) * ctx->openScale, [ctx] { ctx->loop(); });
 }
 
-void TuningRunner::relayConclude(const RelayPlan& plan)
+void TuningRunner::relayConclude(const RelayPlan& plan, double d)
 {
     const auto ctx = m_ctx;
-    Result& r = ctx->result;
-    const TuningSamples& s = r.samples;
-    // The bus's part of the loop's dead time: a reading's age when the output switches on it.
-    r.busDelayMs = s.size() > 1 ? (s.last().tMs - s.first().tMs) / (s.size() - 1) : 0;
-    // Register units: the controller's error is in raw command units.
-    const double scale = ctx->closedScale > 0 ? ctx->closedScale : 1;
-    r.plantGain = ctx->plantGain * scale / scale; // feedback engineering per output raw
-    const double kRaw = ctx->plantGain / scale;
-    const double kuRaw = r.relay.ultimateGain * scale;
-    r.plant = PlantModel::fromRelay(kRaw, kuRaw, r.relay.periodMs, r.busDelayMs, m_spec.periodMs);
-    double ku = kuRaw;
-    double tu = r.relay.periodMs;
-    if (!r.plant.valid || !r.plant.ultimate(&ku, &tu)) {
-        ku = kuRaw; // the bus's loop: conservative
-        tu = r.relay.periodMs;
+    RelayTuning::Input in;
+    in.relay = ctx->result.relay;
+    in.plantGain = ctx->plantGain;
+    in.closedScale = ctx->closedScale;
+    in.openScale = ctx->openScale;
+    in.d = d;
+    in.restCurrent = ctx->restCurrent;
+    in.currentLimit = ctx->currentLimit;
+    in.speed = plan.speed;
+    in.rule = plan.rule;
+    RelayTuning::conclude(m_spec, in, &ctx->result);
+    const Result& r = ctx->result;
+    qCDebug(lcModel) << "autotune: Ku" << r.relay.ultimateGain << "Tu" << r.relay.periodMs
+                     << "readings/period" << r.relay.readingsPerPeriod << "bus delay"
+                     << r.busDelayMs << "model tau" << r.plant.tauMs << "dead" << r.plant.deadMs
+                     << "A per output" << r.plant.currentPerOutput << "own Ku" << r.ultimateGain
+                     << "Tu" << r.ultimatePeriodMs << "proposal" << r.proposal.toString()
+                     << r.error;
+    if (!r.ok) {
+        fail(tr("the relay result was refused: %1").arg(r.error));
+        return;
     }
-    r.ultimateGain = ku;
-    r.ultimatePeriodMs = tu;
-    r.proposal = TuningRules::propose(plan.rule, ku, tu, m_spec, r.gains.dPeriodMs);
-    r.predicted = predictStep(r, r.proposal, m_spec, scale, plan.speed / 2, plan.speed, 1500);
-    r.ok = true;
-    qCDebug(lcModel) << "autotune: K" << kRaw << "Ku" << kuRaw << "Tu" << r.relay.periodMs
-                     << "bus delay" << r.busDelayMs << "model tau" << r.plant.tauMs << "dead"
-                     << r.plant.deadMs << "proposal" << r.proposal.toString();
     finish();
-}
-
-TuningSamples TuningRunner::predictStep(const Result& autotune, const PidGains& gains,
-                                        const TuningSpec& spec, double feedbackScale, double from,
-                                        double to, int durationMs)
-{
-    const double scale = feedbackScale > 0 ? feedbackScale : 1;
-    TuningSamples out =
-        autotune.plant.simulateStep(gains, spec, from / scale, to / scale, durationMs, 5);
-    for (TuningSample& s : out) {
-        s.speed *= scale;
-        s.command = to;
-    }
-    return out;
 }
 
 } // namespace opentop

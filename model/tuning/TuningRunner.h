@@ -1,5 +1,6 @@
 #pragma once
 
+#include "tuning/GainDesign.h"
 #include "tuning/PidGains.h"
 #include "tuning/PlantModel.h"
 #include "tuning/RelayAnalysis.h"
@@ -58,6 +59,7 @@ public:
         bool ok = false;
         bool aborted = false; // stopped by a limit, cancel or a failure
         QString error;
+        QString advice; // what to change when the autotune's result was refused
         bool stopConfirmed = true;
         QString stopDetail;
         TuningSamples samples;
@@ -69,13 +71,20 @@ public:
         // Autotune
         double plantGain = 0; // register units
         double busDelayMs = 0;
+        double readingMs = 0; // a plain reading's interval (no switch between), measured
         RelayAnalysis relay;
         PlantModel plant;
         double ultimateGain = 0; // of the drive's own loop (register units)
         double ultimatePeriodMs = 0;
         PidGains proposal;
+        double kpScale = 1; // GainDesign: of the rule's Kp and Ti
+        double tiScale = 1;
         TuningSamples predicted; // the proposal on the model, from → to as a step test would
+        StepMetrics predictedMetrics;
     };
+    // The drive's own loop must oscillate slower than this many plain readings (2 is Nyquist's
+    // limit), or the step after Accept could not show whether the gains work.
+    static constexpr double kMinReadingsPerLoopPeriod = 2.5;
     using Done = std::function<void(const Result&)>;
     using GainsDone = std::function<void(bool ok, const PidGains& gains, const QString& error)>;
 
@@ -86,10 +95,9 @@ public:
 
     void setLimits(const Limits& limits) { m_limits = limits; }
     const Limits& limits() const { return m_limits; }
-    // The proposal's predicted step: from → to in the closed-loop mode's units.
-    static TuningSamples predictStep(const Result& autotune, const PidGains& gains,
-                                     const TuningSpec& spec, double feedbackScale, double from,
-                                     double to, int durationMs);
+    // The time samples are stamped with, in ms (tests on a simulated clock); a steady clock
+    // by default.
+    void setClock(std::function<double()> nowMs) { m_clock = std::move(nowMs); }
 
     // Only one test at a time; `done` runs once, never before the call returns.
     void startStep(const StepPlan& plan, Done done);
@@ -114,13 +122,14 @@ private:
     void setMode(int mode, std::function<void()> then);
     void fail(const QString& error, bool aborted = true);
     void finish();
-    void waitStopped(qint64 untilMs, std::function<void(bool stopped)> then);
+    void waitStopped(double untilMs, std::function<void(bool stopped)> then);
     void stepApproach(const StepPlan& plan);
     void stepRecord(const StepPlan& plan);
     void relayEstimate(const RelayPlan& plan, int stage, double u1, double y1);
     void relayRun(const RelayPlan& plan, double u0, bool high);
-    void relayConclude(const RelayPlan& plan);
+    void relayConclude(const RelayPlan& plan, double d);
     double feedbackScale() const;
+    double nowMs() const;
     double modeOf() const;
     void writeNumber(const QString& parameter, double value, std::function<void(bool)> then);
     void writeGainsFrom(const PidGains& gains, int k, GainsDone done);
@@ -130,6 +139,7 @@ private:
     Limits m_limits;
     Done m_done;
     std::shared_ptr<Context> m_ctx;
+    std::function<double()> m_clock;
 };
 
 } // namespace opentop

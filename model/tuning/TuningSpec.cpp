@@ -53,6 +53,7 @@ std::optional<TuningSpec> TuningSpec::of(const Profile& profile, QString* error)
                      .arg(profile.name);
         return std::nullopt;
     }
+    role("currentLimit", &s.currentLimit); // optional
     bool feedbackKnown = !s.closedLoopModes.isEmpty();
     for (const ClosedLoopMode& m : s.closedLoopModes)
         feedbackKnown = feedbackKnown && m.mode >= 0 && profile.parameter(m.feedback);

@@ -31,6 +31,7 @@ public:
     QString store;                        // command that stores the gains
     qint64 storeValue = 1;
     QString speedMode, command, commLossTime, loadCurrent, output;
+    QString currentLimit; // the drive's current limit (optional): the plant model's
 
     const ClosedLoopMode* closedLoop(int mode) const;
     QStringList gainParameters() const { return {gainP, gainI, gainD, dPeriod}; }

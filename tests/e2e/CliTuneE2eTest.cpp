@@ -1,6 +1,7 @@
 // opentop-cli tune against an opentop-sim process over a pty: nothing moves without --yes or
-// outside a closed-loop mode, a step test's report, a limit that stops the motor mid-test, and
-// the autotune writing its gains only with --accept.
+// outside a closed-loop mode, a step test's report, a limit that stops the motor mid-test, the
+// autotune writing its gains only with --accept, a relay on a 19200 bit/s line refused with what
+// to change, and a failed check after --accept writing the gains back unless --override-check.
 #include "CliProcess.h"
 #include "SimProcess.h"
 
@@ -123,5 +124,120 @@ TEST(CliTuneE2e, CtrlCStopsTheMotorBeforeTheCommandEnds)
     EXPECT_TRUE(out.contains(QStringLiteral("motor stopped (confirmed)"))) << out.toStdString();
     EXPECT_EQ(sim.get(7, 0x0012, 3), 0);
     EXPECT_EQ(sim.get(7, 0x008E, 3), 0);
+    EXPECT_EQ(sim.terminate(), 0);
+}
+
+// The case over a real pty: 19200 bit/s, wire timing, a half-duplex line; 300 1/s, 10 %,
+// medium. The relay's period holds too few readings: refused with why and what to change, exit
+// 5, the gains untouched, the motor stopped and the closed loop back.
+TEST(CliTuneE2e, ARelayTheBusCannotResolveIsRefusedWithWhatToChange)
+{
+    SimProcess sim;
+    QString error;
+    ASSERT_TRUE(sim.start({QStringLiteral("--devices"), QStringLiteral("dcpid@7"),
+                           QStringLiteral("--baud"), QStringLiteral("19200"),
+                           QStringLiteral("--wire-timing"), QStringLiteral("--half-duplex")},
+                          &error))
+        << error.toStdString();
+    sim.command(QStringLiteral("set 7 0x0080 2"));
+    const QStringList args = {QStringLiteral("--baud"),   QStringLiteral("19200"),
+                              QStringLiteral("tune"),     QStringLiteral("7"),
+                              QStringLiteral("autotune"), QStringLiteral("--speed"),
+                              QStringLiteral("300"),      QStringLiteral("--accept"),
+                              QStringLiteral("--store"),  QStringLiteral("--yes")};
+    CliResult r = runCliOn(sim.pty, args, 60000);
+    EXPECT_EQ(r.code, 5) << (r.out + r.err).toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("readings"))) << r.out.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("What to change: Raise the line rate")))
+        << r.out.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("motor stopped (confirmed)"))) << r.out.toStdString();
+    EXPECT_FALSE(r.out.contains(QStringLiteral("Proposed"))) << r.out.toStdString();
+    EXPECT_EQ(sim.get(7, 0x0090, 3), 0x3DCC); // P 0.1, as it was
+    EXPECT_EQ(sim.get(7, 0x0080, 3), 2);
+    EXPECT_EQ(sim.get(7, 0x0012, 3), 0);
+    r = runCliOn(sim.pty, args + QStringList{QStringLiteral("--json")}, 60000);
+    EXPECT_EQ(r.code, 5);
+    const QJsonObject json = QJsonDocument::fromJson(r.out.toUtf8()).object();
+    EXPECT_FALSE(json.value(QStringLiteral("ok")).toBool());
+    EXPECT_TRUE(
+        json.value(QStringLiteral("advice")).toString().contains(QStringLiteral("line rate")))
+        << r.out.toStdString();
+    EXPECT_EQ(sim.terminate(), 0);
+}
+
+namespace {
+
+// `tune 7 autotune ... --accept --store` on `sim`; once the check's step begins, the motor is
+// coupled to another load (a longer speed gate, a faster motor) that the accepted gains do not
+// suit.
+CliResult acceptOnAChangedPlant(SimProcess& sim, const QStringList& extra)
+{
+    QProcess p;
+    p.start(cliProgram(),
+            QStringList{QStringLiteral("--port"), sim.pty, QStringLiteral("--baud"),
+                        QStringLiteral("115200"), QStringLiteral("tune"), QStringLiteral("7"),
+                        QStringLiteral("autotune"), QStringLiteral("--speed"),
+                        QStringLiteral("300"), QStringLiteral("--max-speed"), QStringLiteral("600"),
+                        QStringLiteral("--accept"), QStringLiteral("--store"),
+                        QStringLiteral("--yes")} +
+                extra);
+    if (!p.waitForStarted(5000))
+        return {};
+    QString err;
+    QElapsedTimer timer;
+    timer.start();
+    while (!err.contains(QStringLiteral("Running to")) && timer.elapsed() < 30000 &&
+           p.state() == QProcess::Running) {
+        p.waitForReadyRead(100);
+        err += QString::fromUtf8(p.readAllStandardError());
+    }
+    EXPECT_TRUE(err.contains(QStringLiteral("Running to"))) << err.toStdString();
+    sim.command(QStringLiteral("motor 7 gate=100 no_load=2000"));
+    CliResult r = finishCli(p, 60000);
+    r.err = err + r.err;
+    return r;
+}
+
+} // namespace
+
+// The check after --accept fails (the plant changed): the gains the drive had are written back
+// and nothing is stored (exit 5), unless --override-check, which stores them all the same.
+TEST(CliTuneE2e, AFailedCheckWritesTheGainsBackUnlessOverridden)
+{
+    SimProcess sim;
+    QString error;
+    ASSERT_TRUE(sim.start({QStringLiteral("--devices"), QStringLiteral("dcpid@7"),
+                           QStringLiteral("--baud"), QStringLiteral("115200"),
+                           QStringLiteral("--wire-timing"), QStringLiteral("--half-duplex")},
+                          &error))
+        << error.toStdString();
+    sim.command(QStringLiteral("set 7 0x0080 2"));
+    CliResult r = acceptOnAChangedPlant(sim, {});
+    EXPECT_EQ(r.code, 5) << (r.out + r.err).toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("Check after Accept: FAILED")))
+        << r.out.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("overshot"))) << r.out.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("The gains before were written back (P 0.1000")))
+        << r.out.toStdString();
+    EXPECT_FALSE(r.out.contains(QStringLiteral("Gains stored"))) << r.out.toStdString();
+    EXPECT_EQ(sim.get(7, 0x0090, 3), 0x3DCC);
+    sim.command(QStringLiteral("power-cycle 7"));
+    EXPECT_EQ(sim.get(7, 0x0090, 3), 0x3DCC); // nothing stored
+
+    // --override-check: stored all the same, and said so.
+    sim.command(QStringLiteral("motor 7 gate=25 no_load=1000"));
+    sim.command(QStringLiteral("set 7 0x0080 2"));
+    r = acceptOnAChangedPlant(sim, {QStringLiteral("--override-check")});
+    EXPECT_EQ(r.code, 0) << (r.out + r.err).toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("Check after Accept: FAILED")))
+        << r.out.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("Storing although the check failed")))
+        << r.out.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("Gains stored in the drive.")))
+        << r.out.toStdString();
+    const int storedP = sim.get(7, 0x0090, 3);
+    EXPECT_NE(storedP, 0x3DCC);
+    sim.command(QStringLiteral("power-cycle 7"));
+    EXPECT_EQ(sim.get(7, 0x0090, 3), storedP);
     EXPECT_EQ(sim.terminate(), 0);
 }

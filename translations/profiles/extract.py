@@ -9,6 +9,7 @@ def texts(profile):
         if isinstance(value, str) and value.strip():
             out[key] = value
     put('name', profile.get('name'))
+    put('serial.formatHelp', profile.get('serial', {}).get('formatHelp'))
     for v in profile.get('variants', []):
         put(f"variants.{v['id']}.label", v.get('label'))
     for g in profile.get('groups', []):

@@ -124,6 +124,9 @@ QVariant BusListModel::display(const DeviceInfo& d, int column) const
         return DeviceInfo::hexText(d.slave) + QStringLiteral("  ") +
                DeviceInfo::switchText(d.slave);
     case Family:
+        if (d.line.isSet()) // a drive of its own format: the list says which
+            return tr("%1 at %2")
+                .arg(d.family.isEmpty() ? tr("—") : d.family.toUpper(), d.line.text());
         return d.family.isEmpty() ? tr("—") : d.family.toUpper();
     case Model:
         if (d.variantUnknown())
@@ -167,6 +170,13 @@ QString BusListModel::toolTip(const DeviceInfo& d, int column) const
         return tr("Status light grey: not live — %1")
             .arg(StaleLook::ageText(state, s.lastAnswer, now));
     }
+    case Family:
+        if (d.line.isSet())
+            return tr("Requests to this drive go out at %1, its own line format, not the "
+                      "port's: the line is switched to it and back between transactions. "
+                      "Change it with Line format… in the context menu.")
+                .arg(d.line.text());
+        break;
     case Model:
         if (d.variantUnknown())
             return tr("The drive does not report its variant. Choose it from the context menu "

@@ -4,15 +4,16 @@
 #include "bus/BusDrives.h"
 #include "bus/BusListModel.h"
 #include "bus/BusScanner.h"
+#include "bus/DriveLineDialog.h"
 #include "bus/DriveStatusPoller.h"
 #include "bus/FixedLineHint.h"
+#include "bus/LineFormatHint.h"
 #include "profile/ProfileRegistry.h"
 #include "session/DeviceIdentifier.h"
 
 #include <QActionGroup>
 #include <QHBoxLayout>
 #include <QHeaderView>
-#include <QInputDialog>
 #include <QLabel>
 #include <QMenu>
 #include <QProgressBar>
@@ -264,8 +265,13 @@ void BusPanel::onScanFinished()
         const FixedLineHint fixed = FixedLineHint::dcPotentiometer();
         const bool offer = found == 0 && fixed.worthRetrying(m_drives->client()->settings(), from,
                                                              m_scanner->to());
+        const QString missed = LineFormatHint::missedText(
+            ProfileRegistry::builtIn(), m_drives->client()->settings(), m_scanner->devices());
         if (offer)
             text += QLatin1Char(' ') + fixed.explanation();
+        else if (!missed.isEmpty()) // a drive of its own format is added with it
+            text += QLatin1Char(' ') + missed + QLatin1Char(' ') +
+                    tr("If one is on this bus, add it with Add drive and its line format.");
         // Something answered there but never said what it is: not a drive of the list, and
         // not nothing either.
         for (int slave : unidentified)
@@ -283,12 +289,8 @@ void BusPanel::onScanFinished()
 
 void BusPanel::addClicked()
 {
-    bool ok = false;
-    const int slave = QInputDialog::getInt(
-        this, tr("Add drive"), tr("Machine number (1–247; the DBU shows it in hex on SW1/SW2):"),
-        m_from->value(), 1, 247, 1, &ok);
-    if (ok)
-        addDrive(slave);
+    DriveLineDialog::askToAdd(this, m_drives, m_from->value(),
+                              [this](int slave) { addDrive(slave); });
 }
 
 void BusPanel::addDrive(int slave)
@@ -382,6 +384,11 @@ QMenu* BusPanel::contextMenuFor(const QVector<int>& slaves, QWidget* parent)
             addDrive(s);
     });
     identify->setEnabled(!isScanning());
+    if (slaves.size() == 1) {
+        QAction* line = DriveLineDialog::addMenuAction(menu, m_drives, slaves.first(),
+                                                       [this](int slave) { addDrive(slave); });
+        line->setEnabled(line->isEnabled() && !isScanning());
+    }
     QAction* remove = menu->addAction(tr("&Remove from list"));
     connect(remove, &QAction::triggered, this, [this, slaves] {
         for (int s : slaves)

@@ -2,11 +2,11 @@
 
 #include "bus/BusDrives.h"
 #include "bus/BusMemory.h"
+#include "widgets/BarHideButton.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
-#include <QToolButton>
 
 namespace opentop {
 
@@ -23,17 +23,13 @@ BusRecallBar::BusRecallBar(BusDrives* drives, const ConnectionSettings& settings
     setFrameShape(QFrame::StyledPanel);
     setStyleSheet(QStringLiteral("#busRecallBar { background: #e8f0fe; }"));
     m_text->setWordWrap(true);
-    auto* close = new QToolButton(this);
-    close->setText(QStringLiteral("×"));
-    close->setToolTip(tr("Hide this bar"));
-    close->setAccessibleName(tr("Hide"));
+    auto* close = new BarHideButton(this);
     auto* row = new QHBoxLayout(this);
     row->setContentsMargins(8, 4, 4, 4);
     row->addWidget(m_text, 1);
     row->addWidget(m_restore);
     row->addWidget(m_scan);
     row->addWidget(close);
-    connect(close, &QToolButton::clicked, this, &QWidget::hide);
     connect(m_scan, &QPushButton::clicked, this, [this] {
         hide();
         emit scanRequested();
@@ -50,8 +46,12 @@ BusRecallBar::BusRecallBar(BusDrives* drives, const ConnectionSettings& settings
         m_restore->setToolTip(tr("Identify the drives at these machine numbers again, with the "
                                  "variants set last time"));
         const QHash<int, QString> types = BusMemory::types(remembered);
-        connect(m_restore, &QPushButton::clicked, this, [this, types] {
+        const QMap<int, LineFormat> lines = BusMemory::lines(remembered);
+        connect(m_restore, &QPushButton::clicked, this, [this, types, lines] {
             hide();
+            // Drives of another format than the port's are asked in theirs, as last time.
+            for (auto it = lines.begin(); it != lines.end(); ++it)
+                m_drives->setLine(it.key(), *it);
             emit restoreRequested(types);
         });
     } else {

@@ -2,6 +2,7 @@
 
 #include "SerialPortList.h"
 #include "bus/BusSpec.h"
+#include "connection/DriveFormatsField.h"
 #include "connection/SerialLineFields.h"
 #include "profile/ProfileRegistry.h"
 
@@ -171,6 +172,7 @@ QWidget* ConnectionDialog::makeSerialPage()
     for (QComboBox* c : {m_baud, m_parity, m_stopBits})
         connect(c, qOverload<int>(&QComboBox::activated), this,
                 [this] { m_family->setCurrentIndex(0); });
+    m_driveFormats = new DriveFormatsField(page, form);
     m_line = new SerialLineFields(page, form);
     return page;
 }
@@ -266,6 +268,8 @@ ConnectionSettings ConnectionDialog::settings() const
     s.parity = m_parity->currentData().toString().at(0).toLatin1();
     s.stopBits = m_stopBits->currentData().toInt();
     m_line->applyTo(&s);
+    if (s.kind == Kind::Serial)
+        m_driveFormats->applyTo(&s);
     s.host = m_host->text().trimmed();
     s.tcpPort = m_tcpPort->value();
     s.simSpec = m_simSpec->text().trimmed();
@@ -291,6 +295,7 @@ void ConnectionDialog::setSettings(const ConnectionSettings& s)
     selectData(m_parity, QString(QLatin1Char(s.parity)));
     selectData(m_stopBits, s.stopBits);
     m_line->setSettings(s);
+    m_driveFormats->setSettings(s);
     m_host->setText(s.host);
     m_tcpPort->setValue(s.tcpPort);
     m_simSpec->setText(s.simSpec);
@@ -321,7 +326,9 @@ void ConnectionDialog::applyFamilyDefaults(const QString& family)
 QString ConnectionDialog::problem() const
 {
     const ConnectionSettings s = settings();
-    QString error = s.validate();
+    QString error = s.kind == Kind::Serial ? m_driveFormats->problem(s.baud) : QString();
+    if (error.isEmpty())
+        error = s.validate();
     if (error.isEmpty() && s.kind == Kind::Simulated && !BusSpec::parse(s.simSpec, &error))
         return error.isEmpty() ? tr("The device list is not valid.") : error;
     return error;
@@ -366,6 +373,8 @@ ConnectionSettings ConnectionDialog::remembered(bool* found)
     s.parity = parity.isEmpty() ? 'N' : parity.at(0).toLatin1();
     s.stopBits = q.value(key("stopBits"), s.stopBits).toInt();
     SerialLineFields::recall(q, &s);
+    if (s.kind == Kind::Serial)
+        DriveFormatsField::recall(q, &s);
     s.host = q.value(key("host"), s.host).toString();
     s.tcpPort = q.value(key("tcpPort"), s.tcpPort).toInt();
     s.simSpec = q.value(key("simSpec"), QStringLiteral("dbu200@1,dbu400@150,dcpid@7")).toString();
@@ -383,6 +392,7 @@ void ConnectionDialog::remember(const ConnectionSettings& s)
     q.setValue(key("parity"), QString(QLatin1Char(s.parity)));
     q.setValue(key("stopBits"), s.stopBits);
     SerialLineFields::remember(q, s);
+    DriveFormatsField::remember(q, s);
     q.setValue(key("host"), s.host);
     q.setValue(key("tcpPort"), s.tcpPort);
     q.setValue(key("simSpec"), s.simSpec);

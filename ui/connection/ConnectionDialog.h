@@ -14,6 +14,7 @@ class QToolButton;
 
 namespace opentop {
 
+class DriveFormatsField;
 class SerialLineFields;
 
 // Chooses how to reach the bus: a serial port (USB–RS-485 adapter or a typed pty path), a
@@ -63,6 +64,7 @@ private:
     QComboBox* m_baud = nullptr;
     QComboBox* m_parity = nullptr;
     QComboBox* m_stopBits = nullptr;
+    DriveFormatsField* m_driveFormats = nullptr;
     SerialLineFields* m_line = nullptr; // RS-485 direction control and low latency
     QLineEdit* m_host = nullptr;
     QSpinBox* m_tcpPort = nullptr;

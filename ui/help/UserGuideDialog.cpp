@@ -62,6 +62,22 @@ UserGuideDialog::UserGuideDialog(QWidget* parent)
            "<p>The command line and the simulator: <code>man opentop</code>, "
            "<code>man opentop-cli</code>, <code>man opentop-sim</code>.</p>")
             .arg(stopKeys.toHtmlEscaped());
+    // Leaving a bus and coming back to one, apart from the steps above.
+    html += tr("<h3>Leaving a bus, and coming back after the link drops</h3>"
+               "<p><b>Leaving.</b> Quitting, Bus ▸ Disconnect or connecting elsewhere while drives "
+               "run or are in communication priority names each of them and what will happen to "
+               "it. The default stops every running drive, reads it back to confirm the stop, and "
+               "then gives each drive back to its own inputs (I/O priority, read back), so that "
+               "the machine works without OpenTOP. You may instead give control back only, leave "
+               "the drives as they are, or stay.</p>"
+               "<p><b>A lost link.</b> When the adapter is pulled out or the gateway goes, every "
+               "live value turns grey and a message says which drives were running or in "
+               "communication priority when the link dropped, with the age of what is known. "
+               "OpenTOP cannot stop them over a lost link: check the drive's STOP input, the "
+               "emergency stop and the power on the machine. Bus ▸ Reconnect (Ctrl+R, also in the "
+               "message and in the red bar) opens the same port again with the same drives, "
+               "selected drive and page, reads every drive again and says at once if one is "
+               "running. While connected, Ctrl+R re-reads the drive's pages.</p>");
     const QString docs = installedDocumentation();
     if (!docs.isEmpty()) {
         // The package installs the README (the whole description of the program) there.

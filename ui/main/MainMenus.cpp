@@ -10,7 +10,7 @@
 #include "i18n/LanguageMenu.h"
 #include "main/BusDocks.h"
 #include "main/MainWindow.h"
-#include "run/ExitGuard.h"
+#include "main/Reconnection.h"
 #include "workspace/DriveWorkspace.h"
 #include "workspace/MultiDriveWriteDialog.h"
 
@@ -40,6 +40,8 @@ MainMenus::MainMenus(MainWindow* window, BusDocks* docks, std::function<QVector<
     connectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
     connectAction->setToolTip(tr("Choose the serial port, gateway or simulated bus (Ctrl+K)"));
     toolbar->addAction(connectAction);
+    // The last connection again, after its link dropped or a disconnect (Ctrl+R).
+    file->addAction(window->reconnection()->action());
     QAction* scan = file->addAction(tr("&Scan bus"), window, [window] {
         if (BusPanel* panel = window->busPanel(); panel && !panel->isScanning())
             panel->startScan(1, 247);
@@ -92,10 +94,12 @@ MainMenus::MainMenus(MainWindow* window, BusDocks* docks, std::function<QVector<
     toolbar->addAction(writeAll);
     toolbar->addAction(m_multiWrite);
     toolbar->addSeparator();
-    // Scanning, writing and reading need a bus; without one they would only fail.
+    // Scanning, writing and reading need a bus whose link is up; without one they would only
+    // fail (and Ctrl+R is Reconnect while the link is down).
     for (QAction* needsBus : {scan, writeAll, reread}) {
         needsBus->setEnabled(window->isConnected());
         connect(window, &MainWindow::connectionChanged, needsBus, &QAction::setEnabled);
+        connect(window, &MainWindow::linkChanged, needsBus, &QAction::setEnabled);
     }
     QMenu* view = bar->addMenu(tr("&View"));
     m_view = view;
@@ -136,15 +140,18 @@ MainMenus::MainMenus(MainWindow* window, BusDocks* docks, std::function<QVector<
 void MainMenus::chooseConnection()
 {
     ConnectionDialog dialog(m_window);
+    Reconnection* reconnection = m_window->reconnection();
+    if (reconnection->hasLast()) // the window's last connection, however it was made
+        dialog.setSettings(reconnection->last());
     if (dialog.exec() != QDialog::Accepted)
         return;
     const ConnectionSettings settings = dialog.settings();
-    if (!m_window->exitGuard()) {
-        m_window->connectTo(settings);
+    // The same port, gateway or simulated bus while not connected: coming back, with its
+    // drives and page, and nothing to ask (nothing could be sent to the drives meanwhile).
+    if (!m_window->isConnected() && reconnection->reconnectWith(settings))
         return;
-    }
-    m_window->exitGuard()->check(tr("connect elsewhere"),
-                                 [window = m_window, settings] { window->connectTo(settings); });
+    m_window->checkLeaving(tr("connect elsewhere"),
+                           [window = m_window, settings] { window->connectTo(settings); });
 }
 
 void MainMenus::exportAlarms()

@@ -13,10 +13,11 @@
 #include "connection/ConnectionDialog.h"
 #include "eol/EolMenu.h"
 #include "eol/ProductionMode.h"
+#include "main/LinkBar.h"
 #include "main/MainMenus.h"
+#include "main/Reconnection.h"
 #include "monitor/MonitorHub.h"
 #include "profile/ProfileRegistry.h"
-#include "run/ExitCheck.h"
 #include "run/ExitGuard.h"
 #include "run/StopAllButton.h"
 #include "run/StopAllKeys.h"
@@ -48,6 +49,7 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     , m_splitter(new QSplitter(this))
     , m_status(new ConnectionStatus(this))
     , m_geometry(this, m_splitter)
+    , m_reconnection(new Reconnection(this))
 {
     setWindowTitle(tr("OpenTOP"));
     m_splitter->setObjectName(QStringLiteral("mainSplitter"));
@@ -56,7 +58,8 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     m_splitter->setStretchFactor(1, 1);
     auto* column = new QVBoxLayout(m_central);
     column->setContentsMargins(0, 0, 0, 0);
-    column->addWidget(m_splitter, 1); // the alarm banner goes above it once connected
+    column->addWidget(m_reconnection->bar()); // hidden until the link drops
+    column->addWidget(m_splitter, 1);         // the alarm banner goes above them once connected
     setCentralWidget(m_central);
     m_docks = new BusDocks(this, m_log.get());
     m_status->showIn(statusBar());
@@ -91,6 +94,7 @@ MainWindow::~MainWindow()
 
 void MainWindow::teardown()
 {
+    m_reconnection->keepView(); // the drives, selection and page a reconnection brings back
     // The pages watch drives through the hub and use their sessions: gone before them.
     m_pages->clear();
     delete m_recall; // before the drives: it remembers what is left of them
@@ -209,6 +213,7 @@ void MainWindow::refuseConnection(const ConnectionSettings& settings, const QStr
                 teardown();
         });
     m_fixedLineScanPending = false;
+    m_reconnection->refused(error);
     QMessageBox::warning(this, tr("Cannot connect"), why);
     emit connectionChanged(false);
 }
@@ -236,6 +241,9 @@ void MainWindow::adopt(std::unique_ptr<ModbusClient> client, const ConnectionSet
     m_stopAllAction = m_menus->toolbar()->addWidget(m_stopAll);
     // No way out of this bus (quit, another connection) leaves a motor running unannounced.
     m_exitGuard = new ExitGuard(m_drives, m_poller, this);
+    m_exitGuard->setLostLinkQuestion([this](const QString& leaving, std::function<void()> proceed) {
+        m_reconnection->askLeaving(leaving, std::move(proceed));
+    });
     m_banner = new AlarmBanner(m_poller, m_central);
     static_cast<QVBoxLayout*>(m_central->layout())->insertWidget(0, m_banner);
     // The drives last seen here, offered back (not when the caller names the drives).
@@ -292,17 +300,14 @@ void MainWindow::adopt(std::unique_ptr<ModbusClient> client, const ConnectionSet
         setConnectionText(tr("Connection lost: %1").arg(lost), true);
         // Every live view greys at once, before the message is read.
         setLinkUp(false, tr("Connection lost: %1").arg(lost));
-        auto* box = new QMessageBox(QMessageBox::Warning, tr("Connection lost"),
-                                    ConnectionDialog::explainOpenError(m_settings, lost),
-                                    QMessageBox::Ok, this);
-        box->setObjectName(QStringLiteral("connectionLostBox"));
-        box->setAttribute(Qt::WA_DeleteOnClose);
-        box->open();
+        // What was known of the drives, said at once, and Reconnect.
+        m_reconnection->lost(ConnectionDialog::explainOpenError(m_settings, lost));
     });
     setWindowTitle(simulated
                        ? tr("OpenTOP — SIMULATED BUS (no hardware) — %1").arg(m_client->describe())
                        : tr("OpenTOP — %1").arg(m_client->describe()));
     setConnectionText(tr("Connecting to %1…").arg(m_client->describe()), false);
+    m_reconnection->adopted(settings);
 }
 
 void MainWindow::setConnectionText(const QString& text, bool problem)
@@ -316,6 +321,7 @@ void MainWindow::setLinkUp(bool up, const QString& why)
     if (m_drives)
         m_drives->setLinkUp(up);
     m_status->setLinkUp(up, why);
+    emit linkChanged(up);
 }
 
 void MainWindow::onOpened(bool ok, const QString& error)
@@ -338,6 +344,7 @@ void MainWindow::onOpened(bool ok, const QString& error)
         m_panel->startScan(slave, slave);
     }
     m_fixedLineScanPending = false;
+    m_reconnection->opened();
     emit connectionChanged(true);
 }
 
@@ -394,10 +401,15 @@ void MainWindow::disconnectBus()
         setConnectionText(tr("Not connected (disconnected)"), false);
         emit connectionChanged(false);
     };
+    checkLeaving(tr("disconnect"), close);
+}
+
+void MainWindow::checkLeaving(const QString& leaving, std::function<void()> proceed)
+{
     if (m_exitGuard)
-        m_exitGuard->check(tr("disconnect"), close);
-    else
-        close();
+        m_exitGuard->check(leaving, std::move(proceed));
+    else // no bus, or one that never came back: only what the lost link left behind is asked
+        m_reconnection->askLeaving(leaving, std::move(proceed));
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)
@@ -421,17 +433,16 @@ void MainWindow::closeEvent(QCloseEvent* event)
         event->ignore();
         return;
     }
-    // Drives running or left in communication priority: ask first (outside this event).
-    if (!m_leavingChecked && m_exitGuard && m_drives && m_poller &&
-        !ExitCheck::collect(*m_drives, *m_poller).isEmpty()) {
+    // Drives running or left in communication priority, or left so when the link dropped: ask
+    // first (outside this event).
+    if (!m_leavingChecked &&
+        ((m_exitGuard && m_exitGuard->wouldAsk()) || m_reconnection->wouldAsk())) {
         event->ignore();
         QTimer::singleShot(0, this, [this] {
-            if (m_exitGuard) {
-                m_exitGuard->check(tr("quit"), [this] {
-                    m_leavingChecked = true;
-                    close();
-                });
-            }
+            checkLeaving(tr("quit"), [this] {
+                m_leavingChecked = true;
+                close();
+            });
         });
         return;
     }

@@ -37,6 +37,7 @@ class StatusLight;
 class AlarmsPage;
 class MainMenus;
 class ProductionMode;
+class Reconnection;
 
 // The main window: the bus on the left (scan, drives, status lights), the selected drive's
 // pages on the right. It owns the connection; all bus work happens on the client's worker
@@ -59,8 +60,13 @@ public:
     // variants used where a drive does not report its own.
     void connectTo(const ConnectionSettings& settings, const QHash<int, QString>& knownTypes = {});
     // Bus > Disconnect: closes the connection after the exit check (running drives and drives
-    // left in communication priority are named first, and stopped by default).
+    // left in communication priority are named first, stopped and given back by default).
     void disconnectBus();
+    // Every way out of this bus asks here first: the exit question over a live link
+    // (ExitGuard), the lost link's over a dead one (Reconnection); `proceed` when answered.
+    void checkLeaving(const QString& leaving, std::function<void()> proceed);
+    // Coming back from a lost link: Bus > Reconnect (Ctrl+R), the link bar, the last connection.
+    Reconnection* reconnection() const { return m_reconnection; }
     bool isConnected() const { return m_connected; }
     ModbusClient* client() const { return m_client.get(); }
     BusDrives* drives() const { return m_drives; }
@@ -94,6 +100,8 @@ public:
 
 signals:
     void connectionChanged(bool connected);
+    // The open link dropped (false) or is up (true).
+    void linkChanged(bool up);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -147,6 +155,7 @@ private:
     MonitorHub* m_hub = nullptr;
     BusGroupTracker* m_groups = nullptr;
     BusRecallBar* m_recall = nullptr;
+    Reconnection* m_reconnection;
 };
 
 } // namespace opentop

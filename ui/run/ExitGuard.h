@@ -1,5 +1,7 @@
 #pragma once
 
+#include "run/ExitPlan.h"
+
 #include <QObject>
 #include <QPointer>
 #include <functional>
@@ -12,11 +14,14 @@ class BusDrives;
 class DriveStatusPoller;
 class ExitActions;
 
-// Stands between the user and every way out of a bus (quit, closing the window, connecting
-// elsewhere) while drives run or are left in communication priority: it names them and asks
-// whether to stop them (the default), give control back to their own inputs, leave them as they
-// are, or stay. The chosen action runs on the bus thread with a progress window; only when it
-// has succeeded, or the user accepts what failed, does `proceed` run.
+// Stands between the user and every way out of a bus (quit, closing the window, disconnecting,
+// connecting elsewhere) while drives run or are left in communication priority: it names each
+// drive and what will happen to it (ExitPlan) and asks whether to stop them and give control
+// back to their inputs (the default), give control back only, leave them as they are, or stay.
+// The choice is carried out by the model (ExitActions) with a progress window, which closes
+// before any question about its result; only when it has succeeded, or the user accepts what
+// failed, does `proceed` run. Over a lost link it attempts nothing: the question is the lost
+// link's (setLostLinkQuestion: the main window's Reconnection).
 class ExitGuard : public QObject
 {
     Q_OBJECT
@@ -27,18 +32,28 @@ public:
     // Calls `proceed` at once when nothing would be left behind.
     void check(const QString& leaving, std::function<void()> proceed);
     bool isBusy() const { return m_busy; }
+    // Whether check() would ask (or first read the drives' state, not read yet on this link);
+    // false while the link is down (the lost link's question is another's).
+    bool wouldAsk() const;
+    // Asks instead of check() while the link is down: nothing can be stopped over it.
+    using Question = std::function<void(const QString& leaving, std::function<void()> proceed)>;
+    void setLostLinkQuestion(Question question) { m_lostLink = std::move(question); }
 
 signals:
     // The question is on screen (tests answer it through QApplication::activeModalWidget()).
     void asking();
 
 private:
+    bool anyUnread() const;
+    void ask(const QString& leaving, std::function<void()> proceed);
+    void carryOut(const ExitPlan& plan, ExitPlan::Choice choice, std::function<void()> proceed);
     void finish(const QString& action, const QStringList& failures, std::function<void()> proceed);
 
     BusDrives* m_drives;
     DriveStatusPoller* m_poller;
     QPointer<QWidget> m_window;
     ExitActions* m_actions;
+    Question m_lostLink;
     bool m_busy = false;
 };
 

@@ -23,6 +23,7 @@ AutotunePanel::AutotunePanel(const TuningSpec& spec, QWidget* parent)
     , m_speedUnit(new QLabel(this))
     , m_autotune(new QPushButton(tr("Autotune…"), this))
     , m_result(new QLabel(this))
+    , m_verdict(new QLabel(this))
     , m_gains(new QGridLayout)
     , m_accept(new QPushButton(tr("Accept"), this))
     , m_reject(new QPushButton(tr("Reject"), this))
@@ -40,10 +41,15 @@ AutotunePanel::AutotunePanel(const TuningSpec& spec, QWidget* parent)
     m_result->setObjectName(QStringLiteral("autotuneResult"));
     m_result->setWordWrap(true);
     m_result->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_verdict->setObjectName(QStringLiteral("acceptCheck"));
+    m_verdict->setWordWrap(true);
+    m_verdict->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_verdict->hide();
     m_accept->setToolTip(tr("Writes the proposed gains to the drive (temporary until stored) "
                             "and offers a step test to compare with the prediction"));
     m_reject->setToolTip(tr("Writes back the gains the drive had before"));
-    m_store->setToolTip(tr("Stores the gains in the drive so that they survive a power cycle"));
+    m_store->setToolTip(tr("Stores the gains in the drive so that they survive a power cycle; "
+                           "asks first unless the step after Accept passed the check"));
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -74,6 +80,7 @@ AutotunePanel::AutotunePanel(const TuningSpec& spec, QWidget* parent)
     buttons->addWidget(m_accept);
     buttons->addWidget(m_reject);
     layout->addLayout(buttons);
+    layout->addWidget(m_verdict);
     layout->addWidget(m_store);
     layout->addStretch();
     connect(m_autotune, &QPushButton::clicked, this, &AutotunePanel::autotuneClicked);
@@ -143,24 +150,38 @@ void AutotunePanel::showResult(const TuningRunner::Result& r)
 {
     if (!r.ok) {
         clearResult();
-        m_result->setText(tr("Autotune failed: %1").arg(r.error));
+        QString text = tr("Autotune failed: %1").arg(r.error);
+        if (!r.advice.isEmpty())
+            text += QLatin1Char('\n') + tr("What to change: %1").arg(r.advice);
+        m_result->setText(text);
         return;
     }
     const QLocale locale;
     // Register units to engineering: output counts to % duty, feedback counts to the unit.
     const double percentPerCount = 100.0 / m_spec.outputFullScale;
-    const double ku = r.ultimateGain * percentPerCount / m_scale;
+    const auto perUnit = [&](double ku) { return ku * percentPerCount / m_scale; };
     const double k = r.plant.gain * m_scale / percentPerCount;
-    QString text =
-        tr("Ku %1 %/%2, Tu %3 ms")
-            .arg(locale.toString(ku, 'g', 3), m_unit, locale.toString(r.ultimatePeriodMs, 'f', 1));
-    if (r.plant.valid)
-        text += QLatin1Char('\n') + tr("Model: K %1 %2/%, τ %3 ms, dead time %4 ms")
-                                        .arg(locale.toString(k, 'g', 3), m_unit,
-                                             locale.toString(r.plant.tauMs, 'f', 1),
-                                             locale.toString(r.plant.deadMs, 'f', 1));
-    else
-        text += QLatin1Char('\n') + tr("No model: %1").arg(r.plant.error);
+    // What the relay measured through the bus, then what the model makes of the drive's loop.
+    QString text = tr("Relay: Ku %1 %/%2, Tu %3 ms measured, %4 readings per period (one every "
+                      "%5 ms)")
+                       .arg(locale.toString(r.relay.ultimateGain * percentPerCount, 'g', 3), m_unit,
+                            locale.toString(r.relay.periodMs, 'f', 1),
+                            locale.toString(r.relay.readingsPerPeriod, 'f', 1),
+                            locale.toString(r.relay.readingMs, 'f', 1));
+    text += QLatin1Char('\n') + tr("Model: K %1 %2/%, τ %3 ms, dead time %4 ms")
+                                    .arg(locale.toString(k, 'g', 3), m_unit,
+                                         locale.toString(r.plant.tauMs, 'f', 1),
+                                         locale.toString(r.plant.deadMs, 'f', 1));
+    text += QLatin1Char('\n') + tr("The drive's own loop (model): Ku %1 %/%2, Tu %3 ms")
+                                    .arg(locale.toString(perUnit(r.ultimateGain), 'g', 3), m_unit,
+                                         locale.toString(r.ultimatePeriodMs, 'f', 1));
+    const StepMetrics& m = r.predictedMetrics;
+    text += QLatin1Char('\n') +
+            tr("Proposal: the rule's P × %1, Ti × %2; predicted overshoot %3 %, settling %4")
+                .arg(locale.toString(r.kpScale, 'g', 3), locale.toString(r.tiScale, 'g', 3),
+                     locale.toString(m.overshootPercent, 'f', 1),
+                     m.settlingMs ? tr("%1 ms").arg(locale.toString(*m.settlingMs, 'f', 0))
+                                  : tr("not within the record"));
     m_result->setText(text);
     m_proposal = r.proposal;
     showGains(2, r.proposal);
@@ -175,6 +196,27 @@ void AutotunePanel::setState(bool busy, bool proposal, bool accepted)
     m_accept->setEnabled(!busy && proposal && !accepted);
     m_reject->setEnabled(!busy && (proposal || accepted));
     m_store->setEnabled(!busy && accepted);
+}
+
+void AutotunePanel::setVerdict(const std::optional<TuningVerdict>& verdict)
+{
+    m_verdict->setVisible(verdict.has_value());
+    if (!verdict) {
+        m_verdict->clear();
+        return;
+    }
+    m_verdict->setText((verdict->passed ? tr("Check after Accept: passed.")
+                                        : tr("Check after Accept: FAILED. Reject writes back "
+                                             "the gains the drive had.")) +
+                       QLatin1Char('\n') + verdict->text());
+    m_verdict->setStyleSheet(verdict->passed
+                                 ? QStringLiteral("color: #1e7e34;")
+                                 : QStringLiteral("color: #c0392b; font-weight: bold;"));
+}
+
+QString AutotunePanel::verdictText() const
+{
+    return m_verdict->text();
 }
 
 QString AutotunePanel::resultText() const

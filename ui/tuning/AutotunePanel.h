@@ -1,6 +1,7 @@
 #pragma once
 
 #include "tuning/TuningRunner.h"
+#include "tuning/TuningVerdict.h"
 
 #include <QWidget>
 #include <optional>
@@ -31,11 +32,14 @@ public:
     void setPresentGains(const std::optional<PidGains>& gains);
     void showResult(const TuningRunner::Result& result);
     void clearResult();
+    // The check after Accept (none: not run yet).
+    void setVerdict(const std::optional<TuningVerdict>& verdict);
     // What may be clicked: nothing while busy; Accept and Reject with a proposal; Store after
     // an accept.
     void setState(bool busy, bool proposal, bool accepted);
     QString resultText() const; // Ku, Tu and the model (tests)
     QString proposalText() const;
+    QString verdictText() const;
 
 signals:
     void autotuneClicked();
@@ -55,6 +59,7 @@ private:
     QLabel* m_speedUnit;
     QPushButton* m_autotune;
     QLabel* m_result;
+    QLabel* m_verdict;
     QGridLayout* m_gains;
     QPushButton* m_accept;
     QPushButton* m_reject;

@@ -3,6 +3,7 @@
 #include "session/DeviceSession.h"
 #include "tuning/AutotunePanel.h"
 #include "tuning/NumberField.h"
+#include "tuning/ProposalFlow.h"
 #include "tuning/StepTestPanel.h"
 #include "tuning/TuningGains.h"
 #include "tuning/TuningLimitsBox.h"
@@ -14,6 +15,7 @@
 #include <QPointer>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QStyle>
 #include <QTabWidget>
 #include <QVBoxLayout>
 
@@ -46,6 +48,7 @@ TuningPage::TuningPage(DeviceSession* session, const TuningSpec& spec, const QSt
     , m_step(new StepTestPanel(this))
     , m_autotune(new AutotunePanel(spec, this))
     , m_runs(new TuningRunsView(drive, this))
+    , m_flow(new ProposalFlow(this, drive, m_gains))
 {
     setObjectName(QStringLiteral("tuningPage"));
     m_stop->setObjectName(QStringLiteral("tuningStop"));
@@ -78,8 +81,12 @@ TuningPage::TuningPage(DeviceSession* session, const TuningSpec& spec, const QSt
     leftScroll->setWidgetResizable(true);
     leftScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     leftScroll->setWidget(leftBox);
-    leftScroll->setMaximumWidth(300);
-    leftScroll->setMinimumWidth(260);
+    // Room for the vertical scroll bar beside the fields: a long result must not push them
+    // under it.
+    const int fields =
+        leftBox->minimumSizeHint().width() + style()->pixelMetric(QStyle::PM_ScrollBarExtent);
+    leftScroll->setMaximumWidth(std::max(300, fields));
+    leftScroll->setMinimumWidth(std::max(260, fields));
 
     auto* columns = new QHBoxLayout;
     columns->addWidget(leftScroll);
@@ -92,9 +99,26 @@ TuningPage::TuningPage(DeviceSession* session, const TuningSpec& spec, const QSt
     connect(m_step, &StepTestPanel::runClicked, this, &TuningPage::runStep);
     connect(m_step, &StepTestPanel::stepChanged, this, &TuningPage::updateAutoLimits);
     connect(m_autotune, &AutotunePanel::autotuneClicked, this, &TuningPage::runAutotune);
-    connect(m_autotune, &AutotunePanel::acceptClicked, this, &TuningPage::accept);
-    connect(m_autotune, &AutotunePanel::rejectClicked, this, &TuningPage::reject);
-    connect(m_autotune, &AutotunePanel::storeClicked, this, [this] { m_gains->store(); });
+    // Accept writes the proposal, then offers the step the prediction shows, to compare.
+    connect(m_autotune, &AutotunePanel::acceptClicked, this, [this] {
+        if (!isBusy())
+            m_flow->accept([this] {
+                showStepTest();
+                runStep(); // asks first
+            });
+    });
+    connect(m_autotune, &AutotunePanel::rejectClicked, this, [this] {
+        if (!isBusy())
+            m_flow->reject();
+    });
+    connect(m_autotune, &AutotunePanel::storeClicked, m_flow, &ProposalFlow::store);
+    connect(m_flow, &ProposalFlow::changed, this, [this] {
+        if (!m_flow->proposal())
+            m_autotune->clearResult();
+        m_autotune->setVerdict(m_flow->verdict());
+        updateState();
+    });
+    connect(m_flow, &ProposalFlow::message, this, &TuningPage::setPhase);
     connect(m_sides, &QTabWidget::currentChanged, this, &TuningPage::updateAutoLimits);
     connect(m_runner, &TuningRunner::phase, this, [this](const QString& text) { setPhase(text); });
     connect(m_runner, &TuningRunner::sampled, this, [this](const TuningSample& s) {
@@ -342,6 +366,7 @@ void TuningPage::stepDone(const TuningRunner::Result& result)
     showStopReport(result);
     setPhase(result.ok ? tr("Step test done.") : tr("Step test ended: %1").arg(result.error),
              !result.ok);
+    m_flow->judge(result); // the check after Accept: says so when it fails
     // Stopped by the user: the gains the page changed go back (a limit leaves them, to see).
     if (result.aborted && m_cancelled && m_gains->isChanged())
         m_gains->restore(tr("The test was stopped"));
@@ -357,9 +382,7 @@ void TuningPage::startAutotune(const TuningRunner::RelayPlan& plan,
     m_cancelled = false;
     m_stopReport->clear();
     m_runner->setLimits(limits);
-    m_autotune->clearResult();
-    m_autotuneResult.reset();
-    updateState();
+    m_flow->clear();
     const QPointer<TuningPage> self(this);
     TuningRunner* runner = m_runner;
     m_runner->startAutotune(plan, [self, runner](const TuningRunner::Result& r) {
@@ -383,10 +406,10 @@ void TuningPage::autotuneDone(const TuningRunner::Result& result)
         updateState();
         return;
     }
-    m_autotuneResult = result;
     // The runner predicts the step from half the operating speed to it.
     const double to = m_autotune->speed();
     const double from = to / 2;
+    m_flow->propose(result, from, to);
     TuningRun& run =
         m_runs->addRun(TuningRun::Kind::Prediction,
                        tr("Predicted: %1 → %2 %3").arg(n(from), n(to), m_unit), result.proposal);
@@ -409,40 +432,11 @@ void TuningPage::showStopReport(const TuningRunner::Result& result)
         result.stopConfirmed ? QString() : QStringLiteral("color: #c0392b; font-weight: bold;"));
 }
 
-// Writes the proposal, then offers the step the prediction shows, to compare.
-void TuningPage::accept()
-{
-    if (!m_autotuneResult || isBusy())
-        return;
-    const PidGains before = m_gains->present().value_or(m_autotuneResult->gains);
-    m_gains->accept(m_autotuneResult->proposal, before, [this](bool ok) {
-        if (!ok)
-            return;
-        showStepTest();
-        runStep(); // asks first
-    });
-}
-
-void TuningPage::reject()
-{
-    if (isBusy())
-        return;
-    m_autotune->clearResult();
-    m_autotuneResult.reset();
-    if (!m_gains->isChanged()) {
-        m_gains->restore(QString());
-        setPhase(tr("Proposal rejected; the drive's gains were not changed."));
-        updateState();
-        return;
-    }
-    m_gains->restore(tr("Proposal rejected"));
-}
-
 void TuningPage::updateState()
 {
     const bool busy = isBusy();
     m_step->setBusy(busy);
-    m_autotune->setState(busy, m_autotuneResult.has_value(), m_gains->isAccepted());
+    m_autotune->setState(busy, m_flow->proposal().has_value(), m_gains->isAccepted());
 }
 
 } // namespace opentop

@@ -15,6 +15,7 @@ namespace opentop {
 
 class AutotunePanel;
 class DeviceSession;
+class ProposalFlow;
 class StepTestPanel;
 class TuningGains;
 class TuningLimitsBox;
@@ -70,8 +71,6 @@ private:
     void stepDone(const TuningRunner::Result& result);
     void autotuneDone(const TuningRunner::Result& result);
     void showStopReport(const TuningRunner::Result& result);
-    void accept();
-    void reject();
     void updateState();
     void setPhase(const QString& text, bool bad = false);
 
@@ -83,7 +82,6 @@ private:
     QString m_unit;
     double m_scale = 1;
     double m_maxCurrentSetting = 0; // A, 0: unknown
-    std::optional<TuningRunner::Result> m_autotuneResult;
     bool m_testing = false;
     bool m_cancelled = false; // the user stopped the running test
     int m_liveId = -1;
@@ -96,6 +94,7 @@ private:
     StepTestPanel* m_step;
     AutotunePanel* m_autotune;
     TuningRunsView* m_runs;
+    ProposalFlow* m_flow;
 };
 
 } // namespace opentop

@@ -191,3 +191,99 @@ TEST_F(TuningRunnerTest, ARunnerDestroyedMidTestStopsTheMotor)
     runner.reset();
     EXPECT_TRUE(waitUntil([&] { return raw("status.commutation") == 0; }, 5000));
 }
+
+namespace {
+
+// Two DC controllers on a 19200 bit/s line with wire timing; drive 8 read without pause while
+// drive 7 is tuned, as the window's status poller does.
+class TuningRunnerSlowLineTest : public DriveSimFixture
+{
+protected:
+    void SetUp() override
+    {
+        startBus(QStringLiteral("dcpid@7,dcpid@8"), 19200);
+        control(7, {QStringLiteral("set"), QStringLiteral("0x0080"), QStringLiteral("2")});
+        QString error;
+        spec = *TuningSpec::of(session(7)->profile(), &error);
+        runner = std::make_unique<TuningRunner>(session(7), spec);
+        TuningRunner::Limits limits;
+        limits.maxSpeed = 450;
+        limits.maxCurrent = 12;
+        runner->setLimits(limits);
+    }
+    void TearDown() override
+    {
+        polling = false;
+        runner.reset();
+        DriveSimFixture::TearDown();
+    }
+    void pollOther()
+    {
+        if (!polling)
+            return;
+        session(8)->readMany({QStringLiteral("status.pwm"), QStringLiteral("status.current"),
+                              QStringLiteral("status.commutation")},
+                             [this](const DeviceSession::ReadManyOutcome&) { pollOther(); });
+    }
+
+    double raw(const char* name)
+    {
+        QMutexLocker lock(&bus->mutex());
+        bus->device(7)->advance(bus->nowMs());
+        return bus->device(7)->raw(QString::fromLatin1(name)).value_or(-1);
+    }
+
+    TuningSpec spec;
+    std::unique_ptr<TuningRunner> runner;
+    bool polling = true;
+};
+
+} // namespace
+
+// The case: 300 1/s, 10 %, medium, at 19200 bit/s with another drive polled. The relay
+// switches on the bus's rhythm; its result is refused, with what to change, and the motor is
+// stopped and the closed-loop mode back.
+TEST_F(TuningRunnerSlowLineTest, ARelayPacedByTheBusIsRefused)
+{
+    pollOther();
+    TuningRunner::RelayPlan relay;
+    relay.speed = 300;
+    relay.amplitude = 10;
+    relay.rule = TuningRules::Rule::Medium;
+    const TuningRunner::Result r =
+        await<TuningRunner::Result>([&](auto done) { runner->startAutotune(relay, done); }, 60000);
+    EXPECT_FALSE(r.ok) << qPrintable(r.proposal.toString());
+    EXPECT_TRUE(r.error.contains(QStringLiteral("readings"))) << qPrintable(r.error);
+    EXPECT_TRUE(r.advice.contains(QStringLiteral("line rate"))) << qPrintable(r.advice);
+    EXPECT_LT(r.relay.readingsPerPeriod, RelayAnalysis::kMinReadingsPerPeriod);
+    EXPECT_TRUE(r.stopConfirmed) << qPrintable(r.stopDetail);
+    polling = false;
+    EXPECT_EQ(raw("config.speed_mode"), 2);
+    EXPECT_EQ(raw("status.commutation"), 0);
+}
+
+// The port goes away mid-test: the runner gives up after its failed polls, says the stop could
+// not be confirmed, and the drive brakes by itself on the communication-loss time set for it.
+TEST_F(TuningRunnerTest, ALostPortEndsTheTestAndTheDriveBrakesByItself)
+{
+    TuningRunner::Result result;
+    bool finished = false;
+    TuningRunner::StepPlan plan;
+    plan.to = 400;
+    plan.recordMs = 5000;
+    runner->startStep(plan, [&](const TuningRunner::Result& r) {
+        result = r;
+        finished = true;
+    });
+    ASSERT_TRUE(waitUntil([&] { return raw("status.commutation") > 100; }, 15000));
+    EXPECT_EQ(raw("config.comm_loss_time"), 5); // 0.5 s while the test runs
+    bus->setUnplugged(true);
+    ASSERT_TRUE(waitUntil([&] { return finished; }, 20000));
+    EXPECT_FALSE(result.ok);
+    EXPECT_TRUE(result.aborted);
+    EXPECT_FALSE(result.stopConfirmed);
+    EXPECT_TRUE(result.stopDetail.contains(QStringLiteral("could not be confirmed")))
+        << qPrintable(result.stopDetail);
+    // No frame reaches the drive any more: it brakes on its own within the 0.5 s.
+    EXPECT_TRUE(waitUntil([&] { return raw("status.commutation") == 0; }, 5000));
+}

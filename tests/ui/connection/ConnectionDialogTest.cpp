@@ -1,8 +1,10 @@
 #include "connection/ConnectionDialog.h"
+#include "connection/DriveFormatsField.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QLabel>
+#include <QLineEdit>
 #include <QSettings>
 #include <QTemporaryDir>
 #include <gtest/gtest.h>
@@ -224,4 +226,41 @@ TEST_F(ConnectionDialogTest, Rs485AndLowLatencyRoundTripAndApplyOnlyWhereTheyMat
     EXPECT_FALSE(fresh.findChild<QWidget*>(QStringLiteral("rtsDelay"))->isEnabled());
     EXPECT_EQ(fresh.settings().rs485, ConnectionSettings::Rs485::Off);
     EXPECT_TRUE(fresh.settings().lowLatency);
+}
+
+TEST_F(ConnectionDialogTest, DriveFormatsRoundTripAreCheckedAndTheGuidanceSaysHowToJoin)
+{
+    ConnectionDialog dialog;
+    ConnectionSettings s;
+    s.kind = ConnectionSettings::Kind::Serial;
+    s.port = QStringLiteral("/dev/ttyUSB0");
+    s.baud = 19200;
+    s.driveLines.insert(7, LineFormat{9600, 'E', 8, 1});
+    dialog.setSettings(s);
+    auto* edit = dialog.findChild<QLineEdit*>(QStringLiteral("driveFormats"));
+    ASSERT_NE(edit, nullptr);
+    EXPECT_EQ(edit->text(), QStringLiteral("7=9600:8E1"));
+    edit->setText(QStringLiteral("7=8N2, 9=9600:8O1"));
+    const ConnectionSettings read = dialog.settings();
+    EXPECT_EQ(read.driveLines.value(7), (LineFormat{19200, 'N', 8, 2}));
+    EXPECT_EQ(read.driveLines.value(9), (LineFormat{9600, 'O', 8, 1}));
+    dialog.accept();
+    EXPECT_EQ(dialog.result(), QDialog::Accepted);
+    EXPECT_EQ(ConnectionDialog::remembered().driveLines, read.driveLines);
+
+    // A typo is named; nothing is accepted.
+    ConnectionDialog again;
+    again.setSettings(s);
+    again.findChild<QLineEdit*>(QStringLiteral("driveFormats"))->setText(QStringLiteral("7=8X1"));
+    again.accept();
+    EXPECT_NE(again.result(), QDialog::Accepted);
+    EXPECT_TRUE(again.errorText().startsWith(QStringLiteral("Drive formats:")))
+        << qPrintable(again.errorText());
+    EXPECT_TRUE(again.errorText().contains(QStringLiteral("8N1, 8E1, 8O1 or 8N2")));
+
+    // The Mixed bus button's text: which register, the storage rule, the order of the steps.
+    const QString guidance = DriveFormatsField::guidance();
+    for (const char* part : {"0x008C", "None, 2 stop bits", "0x10", "15 registers",
+                             "next power-up", "switch it off and on", "1.", "4."})
+        EXPECT_TRUE(guidance.contains(QLatin1String(part))) << part;
 }

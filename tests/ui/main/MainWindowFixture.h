@@ -71,11 +71,7 @@ protected:
         registerBuiltInEditors();
         window = std::make_unique<MainWindow>(
             [this](const ConnectionSettings& s, TrafficLog* log, QString* error) {
-                auto made = BackendFactory::makeClient(s, log);
-                bus = made.simBus;
-                if (error)
-                    *error = made.error;
-                return std::move(made.client);
+                return makeClient(s, log, error);
             });
         ConnectionSettings settings;
         settings.kind = ConnectionSettings::Kind::Simulated;
@@ -88,6 +84,18 @@ protected:
                                      {7, QStringLiteral("dcpid")}});
         ASSERT_TRUE(
             waitFor([this] { return window->drives() && window->drives()->slaves().size() == 4; }));
+    }
+
+    // The client the window connects with (sets `bus`); a derived fixture may give the line
+    // wire timing.
+    virtual std::unique_ptr<ModbusClient> makeClient(const ConnectionSettings& s, TrafficLog* log,
+                                                     QString* error)
+    {
+        auto made = BackendFactory::makeClient(s, log);
+        bus = made.simBus;
+        if (error)
+            *error = made.error;
+        return std::move(made.client);
     }
 
     int simRegister(int slave, quint16 address)

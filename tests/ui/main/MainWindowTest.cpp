@@ -146,7 +146,7 @@ TEST_F(MainWindowTest, PauseAndCtrlShiftSStopEveryDriveFromTheWindowAndFromAModa
     EXPECT_TRUE(waitFor([&] { return speedOf(1) == 0; }, 15000)) << "speed " << speedOf(1);
 }
 
-TEST_F(MainWindowTest, QuittingWithARunningDriveNamesItAndStopsItByDefault)
+TEST_F(MainWindowTest, QuittingWithARunningDriveNamesItStopsItAndGivesItBackByDefault)
 {
     startDrive(1);
     ASSERT_TRUE(waitFor([&] { return speedOf(1) > 0 && leftBehind(1); }));
@@ -156,8 +156,10 @@ TEST_F(MainWindowTest, QuittingWithARunningDriveNamesItAndStopsItByDefault)
     EXPECT_TRUE(question->contains(QStringLiteral("Machine number 1 (DBU200-D): Running CW")))
         << qPrintable(*question);
     EXPECT_TRUE(question->contains(QStringLiteral("communication priority")));
-    EXPECT_TRUE(question->endsWith(QStringLiteral("Stop the drives"))) << qPrintable(*question);
-    EXPECT_EQ(speedOf(1), 0); // stopped before the window closed
+    EXPECT_TRUE(question->endsWith(QStringLiteral("Stop and give control back")))
+        << qPrintable(*question);
+    EXPECT_EQ(speedOf(1), 0);             // stopped before the window closed
+    EXPECT_EQ(simRegister(1, 0x100D), 1); // and its own inputs in charge again
 }
 
 TEST_F(MainWindowTest, DisconnectingWithARunningDriveNamesItAndStopsItFirst)

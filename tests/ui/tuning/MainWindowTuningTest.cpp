@@ -1,7 +1,12 @@
 // The Speed loop tuning page in the real window against the simulated DC controller (dcpid@7):
 // only for drives whose profile can be tuned, a step test with its metrics, the relay autotune's
-// proposal, Accept (writes it, then a step test to compare) and Reject (the old gains back).
+// proposal, Accept (writes it, then the check: a step test compared with the prediction), Reject
+// (the old gains back), Store (asks first, Reject the default, when the check failed), and a
+// relay refused on a 19200 bit/s line with wire timing, saying what to change.
 #include "main/MainWindowFixture.h"
+
+#include "SimBackend.h"
+#include "tuning/ProposalFlow.h"
 
 #include "tuning/AutotunePanel.h"
 #include "tuning/StepTestPanel.h"
@@ -74,6 +79,40 @@ std::optional<PidGains> driveGains(MainWindow& window, int slave, const TuningSp
 class TuningPageTest : public MainWindowFixture
 {
 protected:
+    // Autotune at `speed` 1/s, confirmed; true when it proposed gains.
+    bool autotune(int speed = 300)
+    {
+        page->showAutotune();
+        AutotunePanel* panel = page->autotunePanel();
+        panel->findChild<QLineEdit*>(QStringLiteral("autotuneSpeed"))
+            ->setText(QString::number(speed));
+        panel->findChild<QPushButton*>(QStringLiteral("autotune"))->click();
+        if (answer(QMessageBox::Yes).isEmpty() || !waitFor([&] { return page->isBusy(); }) ||
+            !idle(90000))
+            return false;
+        return !panel->proposalText().isEmpty();
+    }
+    // Accept; while the step test's question shows, the motor is coupled to another load (a
+    // longer speed gate, a faster motor), then the question is answered. True once the check
+    // ran.
+    bool acceptOnAChangedPlant()
+    {
+        button("accept")->click();
+        QMessageBox* question = nullptr;
+        if (!waitFor([&] {
+                return (question = qobject_cast<QMessageBox*>(QApplication::activeModalWidget()));
+            }))
+            return false;
+        bus->control(7, {QStringLiteral("motor"), QStringLiteral("gate=100"),
+                         QStringLiteral("no_load=2000")});
+        question->button(QMessageBox::Yes)->click();
+        return waitFor([&] { return page->runs().size() == 2; }) && idle();
+    }
+    QPushButton* button(const char* name)
+    {
+        return page->autotunePanel()->findChild<QPushButton*>(QLatin1String(name));
+    }
+
     void SetUp() override
     {
         MainWindowFixture::SetUp();
@@ -196,6 +235,9 @@ TEST_F(TuningPageTest, AutotuneProposesGainsAcceptWritesThemAndRejectRestoresThe
     EXPECT_TRUE(measured.result.metrics.valid) << qPrintable(measured.result.error);
     EXPECT_TRUE(near(measured.gains.p, proposal.p));
     EXPECT_TRUE(store->isEnabled());
+    // The check after Accept: the measured step as the prediction said.
+    EXPECT_TRUE(panel->verdictText().contains(QStringLiteral("passed")))
+        << qPrintable(panel->verdictText());
     // Reject: the gains the drive had before.
     panel->findChild<QPushButton*>(QStringLiteral("reject"))->click();
     ASSERT_TRUE(idle());
@@ -222,4 +264,105 @@ TEST_F(TuningPageTest, StopCancelsARunningStepTestAndTheMotorStops)
     EXPECT_TRUE(page->runs().first().result.aborted);
     EXPECT_TRUE(page->runs().first().result.stopConfirmed);
     EXPECT_EQ(simRegister(7, 0x0040), 0);
+}
+
+// The plant changes after the autotune (the motor coupled to another load): the check after
+// Accept fails and says what it measured; Store then asks, with Reject as the default answer,
+// and Reject writes back the gains the drive had.
+TEST_F(TuningPageTest, AFailedCheckMakesStoreAskWithRejectAsTheDefault)
+{
+    const std::optional<PidGains> old = driveGains(*window, 7, spec);
+    ASSERT_TRUE(old);
+    ASSERT_TRUE(autotune()) << qPrintable(page->autotunePanel()->resultText());
+    ASSERT_TRUE(acceptOnAChangedPlant());
+    const QString verdict = page->autotunePanel()->verdictText();
+    EXPECT_TRUE(verdict.contains(QStringLiteral("FAILED"))) << qPrintable(verdict);
+    EXPECT_TRUE(page->phaseText().contains(QStringLiteral("failed the check")))
+        << qPrintable(page->phaseText());
+    ASSERT_TRUE(button("store")->isEnabled());
+    button("store")->click();
+    QMessageBox* box = nullptr;
+    ASSERT_TRUE(waitFor([&] {
+        box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        return box && box->objectName() == QLatin1String("storeQuestion");
+    }));
+    EXPECT_TRUE(box->text().contains(QStringLiteral("drive 7 (DCPID-20A)")))
+        << qPrintable(box->text());
+    EXPECT_TRUE(box->text().contains(QStringLiteral("Check failed"))) << qPrintable(box->text());
+    ASSERT_EQ(box->defaultButton(), box->button(QMessageBox::No));
+    EXPECT_EQ(box->defaultButton()->text(), QStringLiteral("Reject the gains"));
+    QTest::keyClick(box, Qt::Key_Return);
+    ASSERT_TRUE(idle());
+    const std::optional<PidGains> back = driveGains(*window, 7, spec);
+    ASSERT_TRUE(back);
+    EXPECT_TRUE(near(back->p, old->p)) << back->p << " " << old->p;
+    EXPECT_TRUE(near(back->i, old->i));
+    EXPECT_FALSE(button("store")->isEnabled());
+    // Nothing was stored: a power cycle brings back the factory gains.
+    bus->control(7, {QStringLiteral("power-cycle")});
+    const std::optional<PidGains> stored = driveGains(*window, 7, spec);
+    ASSERT_TRUE(stored);
+    EXPECT_TRUE(near(stored->p, 0.1)) << stored->p;
+}
+
+// The same failed check, and the user insists: Store anyway stores the gains, as asked.
+TEST_F(TuningPageTest, StoreAnywayAfterAFailedCheckStoresTheGains)
+{
+    ASSERT_TRUE(autotune());
+    const PidGains proposal = page->runs().first().gains;
+    ASSERT_TRUE(acceptOnAChangedPlant());
+    ASSERT_TRUE(page->autotunePanel()->verdictText().contains(QStringLiteral("FAILED")));
+    button("store")->click();
+    const QString text = answer(QMessageBox::Yes); // "Store anyway"
+    EXPECT_TRUE(text.contains(QStringLiteral("did not pass the check"))) << qPrintable(text);
+    ASSERT_TRUE(idle());
+    EXPECT_TRUE(page->phaseText().contains(QStringLiteral("stored")))
+        << qPrintable(page->phaseText());
+    bus->control(7, {QStringLiteral("power-cycle")});
+    const std::optional<PidGains> stored = driveGains(*window, 7, spec);
+    ASSERT_TRUE(stored);
+    EXPECT_TRUE(near(stored->p, proposal.p)) << stored->p << " " << proposal.p;
+}
+
+namespace opentop::test {
+namespace {
+
+// The window on a 19200 bit/s line whose frames take their wire time, every drive polled.
+class SlowLineTuningTest : public TuningPageTest
+{
+protected:
+    std::unique_ptr<ModbusClient> makeClient(const ConnectionSettings& s, TrafficLog* log,
+                                             QString* error) override
+    {
+        bus = SimBus::fromSpec(s.simSpec, error);
+        if (!bus)
+            return nullptr;
+        auto backend = std::make_unique<SimBackend>(bus, true, 19200);
+        backend->setTrafficLog(log);
+        return std::make_unique<ModbusClient>(std::move(backend), s);
+    }
+};
+
+} // namespace
+} // namespace opentop::test
+
+// The case: 300 1/s, 10 %, medium at 19200 bit/s with the other drives polled. The
+// relay's period holds too few readings: refused, with why and what to change; nothing to
+// accept; the motor stopped and the closed loop back.
+TEST_F(SlowLineTuningTest, ARelayTheBusCannotResolveIsRefusedWithWhatToChange)
+{
+    EXPECT_FALSE(autotune());
+    const QString text = page->autotunePanel()->resultText();
+    EXPECT_TRUE(text.contains(QStringLiteral("Autotune failed"))) << qPrintable(text);
+    EXPECT_TRUE(text.contains(QStringLiteral("readings"))) << qPrintable(text);
+    EXPECT_TRUE(text.contains(QStringLiteral("What to change: Raise the line rate")))
+        << qPrintable(text);
+    EXPECT_TRUE(page->phaseText().contains(QStringLiteral("refused")))
+        << qPrintable(page->phaseText());
+    EXPECT_FALSE(button("accept")->isEnabled());
+    EXPECT_TRUE(page->runs().isEmpty()); // no prediction to compare with
+    EXPECT_TRUE(page->stopReport().contains(QStringLiteral("stopped")))
+        << qPrintable(page->stopReport());
+    EXPECT_EQ(simRegister(7, 0x0080), 2);
+    EXPECT_TRUE(waitFor([&] { return simRegister(7, 0x0012) == 0; }));
 }
