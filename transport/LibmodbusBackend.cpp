@@ -1,6 +1,5 @@
 #include "LibmodbusBackend.h"
 
-#include "ModbusCrc.h"
 #include "RtuFrame.h"
 #include "TransportLog.h"
 
@@ -102,7 +101,7 @@ void LibmodbusBackend::close()
     m_lateWatch.clear();
     m_suspects.clear();
     m_checkedSinceOpen.clear();
-    m_lineHeldUntilMs = 0;
+    m_notes.clear();
     qCDebug(lcTransport) << "closed" << describe();
 }
 
@@ -136,7 +135,12 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
         timeoutMs = m_settings.timeoutMs;
 
     awaitLateReplies(request);
-    awaitQuietLine(request);
+    // Held after a silent timeout (LineNotes): a reply meanwhile ends the wait once the line is
+    // quiet for a gap and what the adapter may hold back; its sender is noted for the result.
+    if (const double heldMs = m_notes.heldFor(request, nowMs()); heldMs > 0)
+        drain(request, heldMs,
+              std::max(1, int(std::ceil(std::max(frameGapMs(), wireTimeMs(4)) +
+                                        lineReport().adapterLatencyMs()))));
     discardStaleInput(request);
     const LineFormat format = request.line.isSet() ? request.line : m_settings.line();
     if (format != m_line.line() && !switchLine(format, &result)) {
@@ -149,8 +153,7 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
     }
     // Also a reply swallowed by the previous request's recovery: whoever asked that drive
     // (a scan) hears of it with the next result.
-    result.lateReplyFrom = std::exchange(m_discardedReplyFrom, -1);
-    result.discardedGarbled = std::exchange(m_discardedGarbled, false);
+    m_notes.passOn(&result);
     const QByteArray raw = char(request.slave) + request.pdu();
     const QByteArray sent = txAdu(request);
     // A frame in a drive's own format says so: the traffic log shows where the line switched.
@@ -197,7 +200,9 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
                              .arg(timeoutMs);
         logEvent(request, result.message, result.errorText());
         deferRecovery(request, timeoutMs);
-        holdLine(request, timeoutMs);
+        // Counted from sending, as the timeout is; TCP has no wire time and no gap.
+        m_notes.hold(request, m_sentAtMs + timeoutMs +
+                                  wireTimeMs(LineNotes::longestReplyBytes(request)) + frameGapMs());
         return result;
     }
 
@@ -233,9 +238,7 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
     }
     if (result.error != ModbusError::Ok && result.error != ModbusError::Exception) {
         recover(request, timeoutMs);
-        if (result.lateReplyFrom < 0)
-            result.lateReplyFrom = std::exchange(m_discardedReplyFrom, -1);
-        result.discardedGarbled |= std::exchange(m_discardedGarbled, false);
+        m_notes.passOn(&result);
     }
     return result;
 }
@@ -465,7 +468,7 @@ void LibmodbusBackend::discardStaleInput(const ModbusRequest& request)
     if (stale.isEmpty())
         return;
     m_lineActiveAtMs = nowMs();
-    noteDiscarded(toRtuAdu(stale));
+    m_notes.noteDiscarded(toRtuAdu(stale));
     modbus_flush(m_ctx);
     logFrame(
         false, stale, request, QString(),
@@ -528,40 +531,6 @@ void LibmodbusBackend::awaitLateReplies(const ModbusRequest& request)
     drain(request, untilMs - nowMs, quietMs);
 }
 
-int LibmodbusBackend::longestReplyBytes(const ModbusRequest& request)
-{
-    if (request.raw)
-        return MODBUS_RTU_MAX_ADU_LENGTH; // its length is the device's choice
-    if (request.isRead())
-        return 5 + 2 * request.count; // id, function, byte count, registers, CRC
-    return 8;                         // a write's echo
-}
-
-void LibmodbusBackend::holdLine(const ModbusRequest& request, int timeoutMs)
-{
-    // Nothing came within the wait, yet a reply may have begun just before its end (a drive
-    // slower than the wait, or an adapter or gateway that passes a frame on only once it is
-    // whole): another request now would meet it on a half-duplex line and both would be lost.
-    // Counted from sending, as the timeout is. TCP has no wire time and no gap: nothing held.
-    m_lineHeldUntilMs =
-        m_sentAtMs + timeoutMs + wireTimeMs(longestReplyBytes(request)) + frameGapMs();
-    m_lineHeldByProbe = request.probe;
-}
-
-void LibmodbusBackend::awaitQuietLine(const ModbusRequest& request)
-{
-    const double leftMs = m_lineHeldUntilMs - nowMs();
-    const bool probeAfterProbe = request.probe && m_lineHeldByProbe;
-    m_lineHeldUntilMs = 0;
-    if (leftMs <= 0 || probeAfterProbe)
-        return;
-    // A reply that comes meanwhile ends the wait once the line has been quiet for a frame gap
-    // (and what the adapter may hold back); its sender is noted for the next result.
-    const int quietMs =
-        int(std::ceil(std::max(frameGapMs(), wireTimeMs(4)) + lineReport().adapterLatencyMs()));
-    drain(request, leftMs, std::max(1, quietMs));
-}
-
 void LibmodbusBackend::drain(const ModbusRequest& request, double firstWindowMs, int quietMs)
 {
     // A babbling line must not hold the bus for ever.
@@ -583,25 +552,12 @@ void LibmodbusBackend::drain(const ModbusRequest& request, double firstWindowMs,
     modbus_flush(m_ctx);
     if (!late.isEmpty()) {
         m_lineActiveAtMs = nowMs();
-        noteDiscarded(toRtuAdu(late));
+        m_notes.noteDiscarded(toRtuAdu(late));
     }
     if (!late.isEmpty())
         logFrame(false, late, request, QString(),
                  QCoreApplication::translate("opentop::Transport",
                                              "late bytes discarded after an error"));
-}
-
-void LibmodbusBackend::noteDiscarded(const QByteArray& rtu)
-{
-    // The shortest reply is an exception: id, function, code, CRC.
-    for (int length = 5; length <= rtu.size() && length <= 256; ++length) {
-        if (ModbusCrc::check(rtu.left(length))) {
-            m_discardedReplyFrom = quint8(rtu.at(0));
-            return;
-        }
-    }
-    if (!rtu.isEmpty())
-        m_discardedGarbled = true;
 }
 
 } // namespace opentop

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ConnectionSettings.h"
+#include "LineNotes.h"
 #include "ModbusBackend.h"
 
 #include <QElapsedTimer>
@@ -23,11 +24,7 @@ namespace opentop {
 // before the next request to the same slave (or a broadcast, or when bytes are arriving), while
 // a request to another slave goes out at once, because a late reply carries its sender's id and
 // is then rejected as a wrong-slave reply. This keeps scans of empty addresses at one wait each.
-// On a half-duplex line that reply would still collide with the next request while it is on the
-// wire, though: after a silent timeout no request of any kind goes out until the longest reply
-// to the request could have ended (a reply may start late, and an adapter may pass it on only
-// whole), plus the frame gap; whatever arrives meanwhile is read and its sender noted. Only a
-// scan's probe after another probe goes at once (ModbusRequest::probe).
+// On a half-duplex line a reply still on the wire collides with any request, though: LineNotes.
 class LibmodbusBackend : public ModbusBackend
 {
 public:
@@ -106,12 +103,6 @@ private:
     void deferRecovery(const ModbusRequest& request, int timeoutMs);
     // Before sending: completes a deferred drain where the id check cannot protect us.
     void awaitLateReplies(const ModbusRequest& request);
-    // After a silent timeout: until when the longest reply to `request` could be on the wire.
-    void holdLine(const ModbusRequest& request, int timeoutMs);
-    // Before sending: reads and discards until the held line is free (see the class comment).
-    void awaitQuietLine(const ModbusRequest& request);
-    // The longest RTU frame a device may answer `request` with (an exception is shorter).
-    static int longestReplyBytes(const ModbusRequest& request);
     // A slave whose request failed may still answer it, later than any window: for a while
     // every reply from it is checked for another reply right behind it (issue 11's fault
     // matrix: a reply 1 s late answered a read of the same length).
@@ -128,10 +119,6 @@ private:
     // kept at the old rate, then the port is switched (applyLineFormat), and the caller keeps
     // the gap again at the new rate. False (and `result` filled) when it failed.
     bool switchLine(const LineFormat& format, ModbusResult* result);
-    // Discarded bytes that begin with a whole frame with a good CRC: notes its sender for the
-    // result of the request about to be sent (ModbusResult::lateReplyFrom); bytes that hold no
-    // such frame: notes that a garbled frame went (ModbusResult::discardedGarbled).
-    void noteDiscarded(const QByteArray& rtu);
 
     ConnectionSettings m_settings;
     ConnectionSettings m_line; // m_settings in the format in force
@@ -149,14 +136,11 @@ private:
     QVector<LateWatch> m_lateWatch;  // slaves that timed out silently, quiet time not yet over
     QVector<LateWatch> m_suspects;   // slaves whose replies are checked for a second reply
     QElapsedTimer m_clock;           // monotonic time for m_lateWatch
-    int m_discardedReplyFrom = -1;   // see noteDiscarded()
-    bool m_discardedGarbled = false; // likewise
+    LineNotes m_notes;               // what was discarded, a held line
     double m_suspectAllUntilMs = 0;  // on m_clock: every slave is a suspect until then (open())
     QSet<quint8> m_checkedSinceOpen; // slaves whose first exchange was checked (isSuspect())
     double m_frameGapMs = -1;
     double m_lineActiveAtMs = -1e9; // on m_clock: the end of the last frame on the line
-    double m_lineHeldUntilMs = 0;   // on m_clock: a timed-out request's reply may end until then
-    bool m_lineHeldByProbe = false; // ... and that request was a scan's probe
 };
 
 } // namespace opentop

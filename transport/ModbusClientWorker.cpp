@@ -1,5 +1,6 @@
 #include "ModbusClientWorker.h"
 
+#include "DriveLineTable.h"
 #include "ModbusBackend.h"
 #include "RetryPolicy.h"
 #include "TransportLog.h"
@@ -37,10 +38,13 @@ struct ModbusClientWorker::State
     bool stop = false;
     bool pollingHeld = false; // a scan owns the bus: the Poll queue waits
 
-    // Whether a request can be taken now.
-    bool hasWork() const
+    // The queue served next (-1: none): the highest priority's, Poll's not while held.
+    int next() const
     {
-        return !queues[2].empty() || !queues[1].empty() || (!queues[0].empty() && !pollingHeld);
+        for (int q = 2; q >= 0; --q)
+            if (!queues[q].empty() && !(q == 0 && pollingHeld))
+                return q;
+        return -1;
     }
 
     std::atomic<bool> interrupt{false};
@@ -51,7 +55,7 @@ struct ModbusClientWorker::State
 
     std::unique_ptr<ModbusBackend> backend;
     ConnectionSettings settings;
-    QMap<int, LineFormat> driveLines; // guarded by mutex
+    DriveLineTable driveLines;
     QString description;
     mutable std::mutex reportMutex;
     SerialLineReport lineReport; // copied from the backend after each open
@@ -91,7 +95,7 @@ ModbusClientWorker::ModbusClientWorker(ModbusClient* client, std::unique_ptr<Mod
     Q_ASSERT(backend);
     m_state->client = client;
     m_state->settings = settings;
-    m_state->driveLines = settings.driveLines;
+    m_state->driveLines.reset(settings.line(), settings.driveLines);
     m_state->description = backend->describe();
     backend->setInterruptFlag(&m_state->interrupt);
     m_state->backend = std::move(backend);
@@ -255,7 +259,7 @@ void ModbusClientWorker::run(std::shared_ptr<State> state)
     State& s = *state;
     for (;;) {
         std::unique_lock<std::mutex> lock(s.mutex);
-        s.wake.wait(lock, [&s] { return s.stop || !s.controls.empty() || s.hasWork(); });
+        s.wake.wait(lock, [&s] { return s.stop || !s.controls.empty() || s.next() >= 0; });
         if (s.stop)
             break;
         if (!s.controls.empty()) {
@@ -284,14 +288,9 @@ void ModbusClientWorker::run(std::shared_ptr<State> state)
             }
             continue;
         }
-        Item item;
-        for (int q = 2; q >= 0; --q) {
-            if (!s.queues[q].empty() && !(q == 0 && s.pollingHeld)) {
-                item = std::move(s.queues[q].front());
-                s.queues[q].pop_front();
-                break;
-            }
-        }
+        const int q = s.next();
+        Item item = std::move(s.queues[q].front());
+        s.queues[q].pop_front();
         s.inFlight = item.id;
         lock.unlock();
         ModbusResult result = execute(s, item);
@@ -333,34 +332,12 @@ void ModbusClientWorker::run(std::shared_ptr<State> state)
 
 void ModbusClientWorker::setDriveLine(int slave, const LineFormat& format)
 {
-    std::lock_guard<std::mutex> lock(m_state->mutex);
-    if (format.isSet() && format != m_state->settings.line())
-        m_state->driveLines.insert(slave, format);
-    else
-        m_state->driveLines.remove(slave);
-}
-
-QVector<LineFormat> ModbusClientWorker::formatsFor(State& s, const ModbusRequest& request)
-{
-    if (request.line.isSet())
-        return {request.line};
-    std::lock_guard<std::mutex> lock(s.mutex);
-    if (!request.isBroadcast())
-        return {s.driveLines.value(request.slave)};
-    // A broadcast reaches every drive only in a format it hears: the port's first (unset),
-    // then each of the table's that none before reaches.
-    QVector<LineFormat> formats{s.settings.line()};
-    for (const LineFormat& f : s.driveLines)
-        if (std::none_of(formats.begin(), formats.end(),
-                         [&f](const LineFormat& r) { return f.hears(r); }))
-            formats << f;
-    formats.first() = LineFormat();
-    return formats;
+    m_state->driveLines.set(slave, format);
 }
 
 ModbusResult ModbusClientWorker::execute(State& s, const Item& item)
 {
-    const QVector<LineFormat> formats = formatsFor(s, item.request);
+    const QVector<LineFormat> formats = s.driveLines.formatsFor(item.request);
     ModbusResult result;
     for (const LineFormat& format : formats) {
         Item one = item;
