@@ -212,10 +212,7 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
                       << Qt::endl;
     // Something answered there but never said what it is: reported, and the scan did not do
     // all it should (exit 1).
-    QVector<int> unidentified;
-    for (const DeviceInfo& info : devices)
-        if (info.state == DeviceInfo::State::IdentifyFailed)
-            unidentified << info.slave;
+    const QVector<int> unidentified = BusScanner::unidentified(devices);
     for (int slave : unidentified)
         context.err() << tr("warning: machine number %1 answered, but its identification failed, "
                             "also when asked again %2 more times; it is not counted as a drive. "

@@ -249,13 +249,12 @@ DeviceInfo BusScanner::identificationFailed(DeviceInfo info)
     return info;
 }
 
-QVector<int> BusScanner::unidentifiedAnswers() const
+QVector<int> BusScanner::unidentified(const QVector<DeviceInfo>& devices)
 {
     QVector<int> slaves;
-    for (const DeviceInfo& d : m_devices) {
+    for (const DeviceInfo& d : devices)
         if (d.state == DeviceInfo::State::IdentifyFailed)
             slaves << d.slave;
-    }
     return slaves;
 }
 

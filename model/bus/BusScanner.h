@@ -19,16 +19,11 @@ struct ConnectionSettings;
 struct ModbusResult;
 
 // Finds the drives on a bus: asks every machine number of a range with each profile's identify
-// read (DeviceIdentifier decodes the replies), one transaction at a time, asynchronously.
-// While it runs it owns the bus: polling waits (ModbusClient::holdPolling), so that nothing but
-// its own questions meets a reply on the line. Absent addresses cost one request with a short
-// wait for the first byte, derived from the baud rate; once an address has answered anything,
-// its identification waits for the whole reply. An address that answers with garbled frames is
-// asked once more before it is reported as a likely duplicate machine number, and a drive whose
-// reply turns up late (during the next address's wait) is asked again with a longer wait
-// instead of being lost. An address that answered but could not be identified is asked again a
-// few times and then reported as such (State::IdentifyFailed), never dropped. Usable from the
-// GUI and the command line alike.
+// read (DeviceIdentifier decodes the replies), one transaction at a time, asynchronously, while
+// it owns the bus (ModbusClient::holdPolling: polls wait). An empty address costs one short wait
+// for the first byte; one that answered gets a whole reply's wait, a second question when its
+// frames are garbled (a duplicate machine number?), more when its reply came late or it could
+// not be identified, and is then reported, never dropped (docs/communication.md, "Scans").
 class BusScanner : public QObject
 {
     Q_OBJECT
@@ -40,8 +35,7 @@ public:
     // gap: the DBU manual's T3 "initial value 10 ms" (11-1). A slower drive is found by the
     // late-answer rescue, not by making every empty address wait longer.
     static constexpr double kAnswerBudgetMs = 10.0;
-    // How often an address that answered is asked again before the scan gives up on
-    // identifying it.
+    // Times an address that answered is asked again before it is reported unidentified.
     static constexpr int kIdentifyRetries = 3;
 
     BusScanner(ModbusClient* client, const ProfileRegistry& registry, QObject* parent = nullptr);
@@ -52,9 +46,8 @@ public:
     // (a USB adapter without low latency holds received bytes up to its latency timer). Only
     // the first byte has to come within it; the rest of a reply is read by the byte timeout.
     static int defaultWaitMs(const ConnectionSettings& settings, int adapterLatencyMs = 0);
-    // The wait for a whole reply of `replyBytes` after a first-byte wait of `firstByteWaitMs`:
-    // a reply that begins as late as that wait allows has ended by then, also where the adapter
-    // passes it on only whole.
+    // The wait for a whole reply of `replyBytes` when its first byte may come as late as
+    // `firstByteWaitMs` (also where the adapter passes it on only whole).
     static int wholeReplyWaitMs(const ConnectionSettings& settings, int firstByteWaitMs,
                                 int replyBytes);
 
@@ -84,8 +77,8 @@ public:
     // Addresses asked again with a longer wait: a reply from them came after their wait, or a
     // garbled frame came while the next address was asked (a late reply colliding with it).
     int lateAnswers() const { return m_lateAnswers; }
-    // Addresses that answered but could not be identified, so far.
-    QVector<int> unidentifiedAnswers() const;
+    // The addresses among `devices` that answered but could not be identified.
+    static QVector<int> unidentified(const QVector<DeviceInfo>& devices);
     double elapsedMs() const;
     // Every address that answered, in machine number order.
     QVector<DeviceInfo> devices() const { return m_devices; }
@@ -123,10 +116,9 @@ private:
     int m_waitMs = 0;
     LineFormat m_line;
     int m_effectiveWaitMs = 0;
-    int m_cursor = 1;   // the next address of the pass through the range
-    int m_slave = 0;    // the address being asked
-    int m_previous = 0; // the address asked before it: a late reply of its collides with it
-    int m_earlier = 0;  // the one asked before that
+    int m_cursor = 1;                  // the next address of the pass through the range
+    int m_slave = 0;                   // the address being asked
+    int m_previous = 0, m_earlier = 0; // asked before it with a short wait (0: none)
     bool m_reasking = false;
     QVector<int> m_late;       // answered after the wait: to be asked again
     QSet<int> m_answered;      // sent a whole frame of some kind (an exception, a late reply)

@@ -8,10 +8,10 @@
 #include "bus/DriveStatusPoller.h"
 #include "bus/FixedLineHint.h"
 #include "bus/LineFormatHint.h"
+#include "bus/VariantMenu.h"
 #include "profile/ProfileRegistry.h"
 #include "session/DeviceIdentifier.h"
 
-#include <QActionGroup>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -227,7 +227,7 @@ void BusPanel::onScanFinished()
 {
     const int from = m_scanner->from();
     const int scanned = m_scanner->scannedCount();
-    const QVector<int> unidentified = m_scanner->unidentifiedAnswers();
+    const QVector<int> unidentified = BusScanner::unidentified(m_scanner->devices());
     const int found = int(m_scanner->devices().size() - unidentified.size());
     // Drives listed earlier that no longer answer in the range asked are shown as such.
     QVector<int> answered;
@@ -352,32 +352,7 @@ QMenu* BusPanel::contextMenuFor(const QVector<int>& slaves, QWidget* parent)
     auto* menu = new QMenu(parent);
     if (slaves.isEmpty())
         return menu;
-    const DeviceInfo first = m_drives->info(slaves.first());
-    const Profile* profile = ProfileRegistry::builtIn().family(first.family);
-    // A variant applies to the selected drives of the same family.
-    QVector<int> sameFamily;
-    for (int s : slaves) {
-        if (m_drives->info(s).family == first.family &&
-            m_drives->info(s).state == DeviceInfo::State::Present)
-            sameFamily << s;
-    }
-    if (profile && profile->variants.size() > 1 && !sameFamily.isEmpty()) {
-        QMenu* variants = menu->addMenu(tr("&Variant"));
-        variants->setToolTipsVisible(true);
-        auto* group = new QActionGroup(variants);
-        for (const ProfileVariant& v : profile->variants) {
-            QAction* a = variants->addAction(v.model);
-            a->setObjectName(v.id);
-            a->setToolTip(v.label);
-            a->setCheckable(true);
-            a->setChecked(first.variant == v.id);
-            group->addAction(a);
-            connect(a, &QAction::triggered, this, [this, sameFamily, id = v.id] {
-                for (int s : sameFamily)
-                    m_drives->setVariant(s, id);
-            });
-        }
-    }
+    VariantMenu::add(menu, m_drives, slaves);
     QAction* identify = menu->addAction(tr("&Identify again"));
     connect(identify, &QAction::triggered, this, [this, slaves] {
         for (int s : slaves)

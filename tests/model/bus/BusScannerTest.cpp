@@ -416,7 +416,7 @@ TEST(BusScannerTest, AnAddressThatAnsweredButWasNotIdentifiedIsAskedAgainAndRepo
         << qPrintable(seven.detail);
     EXPECT_EQ(DeviceInfo::stateText(seven.state),
               QStringLiteral("answered, identification failed"));
-    EXPECT_EQ(scanner.unidentifiedAnswers(), QVector<int>{7});
+    EXPECT_EQ(BusScanner::unidentified(scanner.devices()), QVector<int>{7});
     EXPECT_EQ(slavesOf(record.found), (QVector<int>{5, 7}));
     // 7: both families' reads in the pass and in each of the three retries.
     int toSeven = 0;
