@@ -242,7 +242,8 @@ QVariant BusListModel::data(const QModelIndex& index, int role) const
                 return QBrush(kProblem);
             if (d.state == DeviceInfo::State::Present)
                 return QBrush(isStale(d.slave) ? StaleLook::grey() : kGood);
-            if (d.state == DeviceInfo::State::Absent)
+            if (d.state == DeviceInfo::State::Absent ||
+                d.state == DeviceInfo::State::IdentifyFailed)
                 return QBrush(kProblem);
         }
         return {};

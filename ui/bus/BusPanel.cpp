@@ -8,10 +8,10 @@
 #include "bus/DriveStatusPoller.h"
 #include "bus/FixedLineHint.h"
 #include "bus/LineFormatHint.h"
+#include "bus/VariantMenu.h"
 #include "profile/ProfileRegistry.h"
 #include "session/DeviceIdentifier.h"
 
-#include <QActionGroup>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -178,15 +178,22 @@ void BusPanel::startScan(int from, int to)
         m_progress->setValue(done);
         m_progress->setFormat(tr("%v of %m (machine number %1)").arg(slave));
     });
+    connect(m_scanner, &BusScanner::identificationRetry, this,
+            [this](int slave, int attempt, int attempts) {
+                showMessage(tr("Machine number %1 answered, identification failed: retrying "
+                               "(%2 of %3)… Polling waits until the scan is over.")
+                                .arg(slave)
+                                .arg(attempt)
+                                .arg(attempts),
+                            true);
+            });
     connect(m_scanner, &BusScanner::finished, this, &BusPanel::onScanFinished);
-    // The scan's short waits assume a quiet line: background polling pauses meanwhile.
-    m_resumePoller = m_poller && m_poller->isActive();
-    if (m_resumePoller)
-        m_poller->stop();
     m_progress->setRange(0, to - from + 1);
     m_progress->setValue(0);
     m_progress->setFormat(tr("%v of %m"));
-    showMessage(tr("Scanning machine numbers %1–%2 on %3, %4 ms each…")
+    // The scanner holds the bus: polling waits, and the values shown age meanwhile.
+    showMessage(tr("Scanning machine numbers %1–%2 on %3, %4 ms each… Polling waits until the "
+                   "scan is over.")
                     .arg(from)
                     .arg(to)
                     .arg(m_drives->client()->describe())
@@ -213,7 +220,8 @@ void BusPanel::onScanFinished()
 {
     const int from = m_scanner->from();
     const int scanned = m_scanner->scannedCount();
-    const int found = int(m_scanner->devices().size());
+    const QVector<int> unidentified = BusScanner::unidentified(m_scanner->devices());
+    const int found = int(m_scanner->devices().size() - unidentified.size());
     // Drives listed earlier that no longer answer in the range asked are shown as such.
     QVector<int> answered;
     for (const DeviceInfo& d : m_scanner->devices())
@@ -257,12 +265,17 @@ void BusPanel::onScanFinished()
         else if (!missed.isEmpty()) // a drive of its own format is added with it
             text += QLatin1Char(' ') + missed + QLatin1Char(' ') +
                     tr("If one is on this bus, add it with Add drive and its line format.");
-        showMessage(text, found == 0);
+        // Something answered there but never said what it is: not a drive of the list, and
+        // not nothing either.
+        for (int slave : unidentified)
+            text += QLatin1Char(' ') +
+                    tr("Machine number %1 answered, but its identification failed, also when "
+                       "asked again: add it by hand with Add drive…, or check its line settings "
+                       "and scan again.")
+                        .arg(slave);
+        showMessage(text, found == 0 || !unidentified.isEmpty());
         m_fixedLine->setVisible(offer);
     }
-    if (m_resumePoller && m_poller)
-        m_poller->start();
-    m_resumePoller = false;
     updateButtons();
     emit scanFinished();
 }
@@ -332,32 +345,7 @@ QMenu* BusPanel::contextMenuFor(const QVector<int>& slaves, QWidget* parent)
     auto* menu = new QMenu(parent);
     if (slaves.isEmpty())
         return menu;
-    const DeviceInfo first = m_drives->info(slaves.first());
-    const Profile* profile = ProfileRegistry::builtIn().family(first.family);
-    // A variant applies to the selected drives of the same family.
-    QVector<int> sameFamily;
-    for (int s : slaves) {
-        if (m_drives->info(s).family == first.family &&
-            m_drives->info(s).state == DeviceInfo::State::Present)
-            sameFamily << s;
-    }
-    if (profile && profile->variants.size() > 1 && !sameFamily.isEmpty()) {
-        QMenu* variants = menu->addMenu(tr("&Variant"));
-        variants->setToolTipsVisible(true);
-        auto* group = new QActionGroup(variants);
-        for (const ProfileVariant& v : profile->variants) {
-            QAction* a = variants->addAction(v.model);
-            a->setObjectName(v.id);
-            a->setToolTip(v.label);
-            a->setCheckable(true);
-            a->setChecked(first.variant == v.id);
-            group->addAction(a);
-            connect(a, &QAction::triggered, this, [this, sameFamily, id = v.id] {
-                for (int s : sameFamily)
-                    m_drives->setVariant(s, id);
-            });
-        }
-    }
+    VariantMenu::add(menu, m_drives, slaves);
     QAction* identify = menu->addAction(tr("&Identify again"));
     connect(identify, &QAction::triggered, this, [this, slaves] {
         for (int s : slaves)

@@ -136,6 +136,7 @@ MonitorPage::MonitorPage(MonitorHub* hub, DeviceParameters* parameters, QWidget*
             showFreshness();
     });
     connect(hub, &MonitorHub::linkChanged, m_look, &StaleLook::update);
+    connect(hub, &MonitorHub::heldChanged, m_look, &StaleLook::update);
     if (const auto latest = hub->latest(m_slave))
         showSample(*latest);
     m_look->update();

@@ -65,6 +65,8 @@ void MonitorPollBar::showFreshness(const StaleLook& look, const QString& lastErr
     if (m_hub->isPaused())
         text =
             tr("Polling paused: the values shown are the last ones read (%1).").arg(look.ageText());
+    else if (m_hub->isHeld() && m_hub->drives()->linkUp())
+        text = tr("Polling waits for the bus scan: %1.").arg(look.ageText());
     else if (!m_hub->drives()->linkUp())
         text = tr("Connection lost — not live: %1.").arg(look.ageText());
     else if (stale)
