@@ -80,6 +80,12 @@ QVector<int> BackupCommand::allDrives(CliContext& context, bool* interrupted)
     for (const DeviceInfo& info : scanner.devices()) {
         if (info.state == DeviceInfo::State::Present)
             ids << info.slave;
+        else if (info.state == DeviceInfo::State::IdentifyFailed)
+            context.err() << tr("warning: machine number %1 answered, but its identification "
+                                "failed: it is not backed up; name it to try again (backup %1 "
+                                "-o FILE).")
+                                 .arg(info.slave)
+                          << Qt::endl;
     }
     return ids;
 }

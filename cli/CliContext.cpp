@@ -34,13 +34,28 @@ extern "C" void onInterrupt(int)
 
 CliContext::CliContext(const QCommandLineParser& parser, QTextStream& out, QTextStream& err,
                        QObject* parent)
-    : QObject(parent)
+    : GroupReach(parent)
     , m_parser(parser)
     , m_out(out)
     , m_err(err)
     , m_log(std::make_unique<TrafficLog>())
 {
     m_log->setDescriber(m_describer.describer());
+}
+
+void CliContext::setGroups(const BusGroups& groups)
+{
+    m_groups = groups;
+    m_describer.setGroups(groups);
+}
+
+QVector<DeviceSession*> CliContext::reachedBy(int slave) const
+{
+    QVector<DeviceSession*> sessions;
+    for (int child : m_groups.childrenOf(slave))
+        if (DeviceSession* s = m_sessions.value(child))
+            sessions << s;
+    return sessions;
 }
 
 CliContext::~CliContext()
@@ -225,6 +240,7 @@ DeviceSession* CliContext::session(int slave, QString* error)
     BusMemory::keep(BusMemory::key(m_settings), s);
     s->setMachineName(machineNames().value(slave)); // how messages and files name it
     s->acceptIdentification(info.identifyRegisters);
+    s->setGroupReach(this);
     m_sessions.insert(slave, s);
     return s;
 }

@@ -2,7 +2,9 @@
 
 #include "ConnectionSettings.h"
 #include "ExitCode.h"
+#include "bus/BusGroups.h"
 #include "session/DeviceInfo.h"
+#include "session/GroupReach.h"
 #include "traffic/TrafficDescriber.h"
 
 #include <QCommandLineParser>
@@ -14,7 +16,6 @@
 
 namespace opentop {
 
-class BusGroups;
 class DeviceSession;
 class ModbusClient;
 class SimBus;
@@ -22,8 +23,9 @@ class TrafficLog;
 
 // What every command works with: the parsed command line, the output streams, the bus
 // connection, identified devices, and a synchronous way to wait for asynchronous model work
-// that Ctrl-C can interrupt between transactions.
-class CliContext : public QObject
+// that Ctrl-C can interrupt between transactions. The GroupReach of every session it makes: the
+// groups found before a write (GroupCheck) tell each session which drives execute its writes too.
+class CliContext : public GroupReach
 {
     Q_OBJECT
 public:
@@ -50,8 +52,10 @@ public:
     // the simulated bus's list; empty when none is known; nullopt (with *error) when malformed.
     std::optional<QVector<int>> busDrives(QString* error);
 
-    // The groups found before a write: --trace then shows who else a write to a parent reaches.
-    void setGroups(const BusGroups& groups) { m_describer.setGroups(groups); }
+    // The groups found before a write: --trace then shows who else a write to a parent reaches,
+    // and a session's writes are validated by and read back from its children (GroupReach).
+    void setGroups(const BusGroups& groups);
+    QVector<DeviceSession*> reachedBy(int slave) const override;
 
     // Identifies `slave` (once) and returns its session; nullptr with *error when nobody
     // answers or the device is not a profiled family. Applies --variant and the simulated
@@ -96,6 +100,7 @@ private:
     QHash<int, DeviceSession*> m_sessions;
     QHash<int, DeviceInfo> m_identified;
     std::optional<QHash<int, QString>> m_machineNames;
+    BusGroups m_groups;
     bool m_usageError = false;
 };
 

@@ -47,6 +47,12 @@ GroupCheck::GroupCheck(CliContext& context)
 
 int GroupCheck::before(int target, bool confirmed, int refusalCode)
 {
+    const int code = read(target);
+    return code != ExitOk ? code : confirm(target, confirmed, refusalCode);
+}
+
+int GroupCheck::read(int target)
+{
     QString error;
     DeviceSession* session = m_context.session(target, &error);
     if (!session || BusGroups::groupParameter(session->profile()).isEmpty())
@@ -89,6 +95,11 @@ int GroupCheck::before(int target, bool confirmed, int refusalCode)
                         << Qt::endl;
     m_context.setGroups(m_groups);
     m_children = m_groups.childrenOf(target);
+    return ExitOk;
+}
+
+int GroupCheck::confirm(int target, bool confirmed, int refusalCode)
+{
     if (m_children.isEmpty())
         return ExitOk;
     m_context.err()
@@ -104,7 +115,8 @@ int GroupCheck::before(int target, bool confirmed, int refusalCode)
     return ExitOk;
 }
 
-QVector<GroupCheck::ChildValue> GroupCheck::readChildren(const QStringList& names)
+QVector<GroupCheck::ChildValue>
+GroupCheck::readChildren(const QStringList& names, const QHash<QString, QVector<quint16>>& expected)
 {
     QVector<ChildValue> out;
     for (int child : m_children) {
@@ -122,12 +134,29 @@ QVector<GroupCheck::ChildValue> GroupCheck::readChildren(const QStringList& name
             ChildValue v{child, name, {}, error};
             const DeviceSession::Outcome o = read.results.value(name);
             const ParameterMeta* meta = session ? session->profile().parameter(name) : nullptr;
-            if (meta && o.ok && o.value.valid)
+            if (meta && o.ok && o.value.valid) {
                 v.text = ValueCodec::format(*meta, o.value, session->context());
-            else if (v.error.isEmpty())
+                if (expected.contains(name)) {
+                    v.verified = o.value.registers == expected.value(name);
+                    v.differs = !v.verified;
+                }
+            } else if (v.error.isEmpty())
                 v.error = o.error.isEmpty() ? tr("not readable") : o.error;
             out << v;
         }
+    }
+    return out;
+}
+
+QVector<GroupCheck::ChildValue>
+GroupCheck::fromOutcome(const QString& name, const QVector<ReachedDrives::Result>& reached)
+{
+    QVector<ChildValue> out;
+    for (const ReachedDrives::Result& r : reached) {
+        ChildValue v{r.slave, name, r.held, {}, r.verified, r.mismatch};
+        if (!r.value.valid)
+            v.error = r.text;
+        out << v;
     }
     return out;
 }
@@ -137,10 +166,13 @@ void GroupCheck::print(const QVector<ChildValue>& values)
     if (values.isEmpty())
         return;
     m_context.out() << tr("Read back from the drives of the group:") << '\n';
-    TextTable table({tr("Drive"), tr("Parameter"), tr("Value")});
+    TextTable table({tr("Drive"), tr("Parameter"), tr("Value"), tr("Result")});
     for (const ChildValue& v : values)
         table.addRow({QString::number(v.slave), v.name,
-                      v.error.isEmpty() ? v.text : tr("(not read: %1)").arg(v.error)});
+                      v.error.isEmpty() ? v.text : tr("(not read: %1)").arg(v.error),
+                      v.verified  ? tr("verified")
+                      : v.differs ? tr("DIFFERS from what was written")
+                                  : tr("not verified")});
     table.print(m_context.out());
 }
 
@@ -153,6 +185,9 @@ QJsonArray GroupCheck::toJson(const QVector<ChildValue>& values)
             o.insert(QStringLiteral("text"), v.text);
         else
             o.insert(QStringLiteral("error"), v.error);
+        o.insert(QStringLiteral("verified"), v.verified);
+        if (v.differs)
+            o.insert(QStringLiteral("differs"), true);
         out.append(o);
     }
     return out;

@@ -2,6 +2,7 @@
 
 #include "bus/BusGroups.h"
 #include "session/DeviceInfo.h"
+#include "session/ReachedDrives.h"
 
 #include <QHash>
 #include <QJsonArray>
@@ -26,6 +27,10 @@ public:
     // `target` also reaches. Returns ExitOk to go on; otherwise the code to exit with, after
     // printing why (nothing was sent). Without `confirmed`, a target with children is refused.
     int before(int target, bool confirmed, int refusalCode);
+    // before() in two steps: read the groups (the sessions then know their children), and
+    // the question (a target with children needs `confirmed`).
+    int read(int target);
+    int confirm(int target, bool confirmed, int refusalCode);
     const QVector<int>& children() const { return m_children; }
     const BusGroups& groups() const { return m_groups; }
 
@@ -35,9 +40,17 @@ public:
         QString name;
         QString text;  // the value read back from the child
         QString error; // why it could not be read
+        // Compared with what was written: verified, differs, or (neither) not verified.
+        bool verified = false;
+        bool differs = false;
     };
-    // After the write: reads `names` back from every child (what they hold, not assumed).
-    QVector<ChildValue> readChildren(const QStringList& names);
+    // What the write itself read back from the children (DeviceSession::Outcome::reached).
+    static QVector<ChildValue> fromOutcome(const QString& name,
+                                           const QVector<ReachedDrives::Result>& reached);
+    // After the write: reads `names` back from every child (what they hold, not assumed),
+    // compared with the registers `expected` of a name where given.
+    QVector<ChildValue> readChildren(const QStringList& names,
+                                     const QHash<QString, QVector<quint16>>& expected = {});
     void print(const QVector<ChildValue>& values);
     static QJsonArray toJson(const QVector<ChildValue>& values);
 

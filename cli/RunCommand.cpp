@@ -3,6 +3,7 @@
 #include "CliContext.h"
 #include "GroupCheck.h"
 #include "profile/ProfileRegistry.h"
+#include "run/GroupFollowers.h"
 #include "run/RunControl.h"
 #include "session/DeviceSession.h"
 
@@ -88,9 +89,26 @@ int RunCommand::run(CliContext& context, const QStringList& args)
                    .arg(slave)
                    .arg(plan.description)
             << Qt::endl;
-    // Drives in the target's communication group execute the command too, without replying.
+    // Drives in the target's communication group execute the command too, without replying;
+    // a run command only where the drive takes them over the bus: who follows is said first.
     GroupCheck group(context);
-    const int refused = group.before(slave, confirmed, ExitUsage);
+    int refused = group.read(slave);
+    const bool motion = plan.meta && plan.meta->safety == QLatin1String("motion");
+    if (refused == ExitOk && motion && !group.children().isEmpty()) {
+        QVector<GroupFollowers::Drive> followers;
+        if (!context.wait([&](std::function<void()> finish) {
+                GroupFollowers::readBefore(session->reachedDrives(),
+                                           [&followers, finish](const auto& d) {
+                                               followers = d;
+                                               finish();
+                                           });
+            }))
+            return ExitInterrupted;
+        for (const QString& line : GroupFollowers::beforeLines(followers))
+            err << tr("note: %1").arg(line) << Qt::endl;
+    }
+    if (refused == ExitOk)
+        refused = group.confirm(slave, confirmed, ExitUsage);
     if (!confirmed || refused != ExitOk)
         return confirmed ? refused : ExitUsage;
 
@@ -166,28 +184,35 @@ int RunCommand::run(CliContext& context, const QStringList& args)
             return ExitInterrupted;
         json.insert(QStringLiteral("state"), s);
     }
+    // What each drive of the group does now, read from it (they executed it too, or ignored it).
     if (outcome.sent && !group.children().isEmpty()) {
+        QVector<GroupFollowers::Drive> drives;
+        if (!context.wait([&](std::function<void()> finish) {
+                GroupFollowers::readAfter(session->reachedDrives(),
+                                          [&drives, finish](const auto& d) {
+                                              drives = d;
+                                              finish();
+                                          });
+            }))
+            return ExitInterrupted;
+        if (!context.json()) {
+            out << tr("Communication group of %1, read after the command:").arg(slave) << '\n';
+            for (const QString& line : GroupFollowers::afterLines(drives))
+                out << "  " << line << '\n';
+        }
         QJsonArray children;
-        for (int child : group.children()) {
-            DeviceSession* childSession = context.session(child, &error);
-            QJsonObject s{{QStringLiteral("slave"), child}};
-            if (!childSession) {
-                if (!context.json())
-                    out << tr("State of machine number %1 (communication group of %2): not read: "
-                              "%3")
-                               .arg(child)
-                               .arg(slave)
-                               .arg(error)
-                        << '\n';
-                s.insert(QStringLiteral("error"), error);
-            } else if (!readState(childSession,
-                                  tr("State of machine number %1 (communication group of %2):")
-                                      .arg(child)
-                                      .arg(slave),
-                                  0, &s)) {
-                return ExitInterrupted;
-            }
-            s.insert(QStringLiteral("slave"), child);
+        for (const GroupFollowers::Drive& d : drives) {
+            QJsonObject s{{QStringLiteral("slave"), d.slave},
+                          {QStringLiteral("priority"), d.priority},
+                          {QStringLiteral("alarm"), d.alarm}};
+            if (d.running)
+                s.insert(QStringLiteral("running"), *d.running);
+            if (!d.speed.isEmpty())
+                s.insert(QStringLiteral("speed"), d.speed);
+            if (!d.why.isEmpty())
+                s.insert(QStringLiteral("why"), d.why);
+            if (!d.commError.isEmpty())
+                s.insert(QStringLiteral("commError"), d.commError);
             children.append(s);
         }
         json.insert(QStringLiteral("group"), children);

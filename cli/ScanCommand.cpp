@@ -5,6 +5,7 @@
 #include "ModbusClient.h"
 #include "ScanDrives.h"
 #include "ScanFormats.h"
+#include "ScanProgress.h"
 #include "TextTable.h"
 #include "bus/BusGroups.h"
 #include "bus/BusScanner.h"
@@ -17,7 +18,6 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <algorithm>
-#include <unistd.h>
 
 namespace opentop {
 
@@ -26,12 +26,6 @@ namespace {
 QString tr(const char* text)
 {
     return QCoreApplication::translate("opentop::ScanCommand", text);
-}
-
-bool isTerminal(QTextStream& stream)
-{
-    auto* file = qobject_cast<QFile*>(stream.device());
-    return file && file->handle() >= 0 && ::isatty(file->handle());
 }
 
 QString seconds(double ms)
@@ -50,6 +44,8 @@ QString stateId(DeviceInfo::State state)
         return QStringLiteral("garbled");
     case DeviceInfo::State::Unidentified:
         return QStringLiteral("unidentified");
+    case DeviceInfo::State::IdentifyFailed:
+        return QStringLiteral("identification-failed");
     case DeviceInfo::State::Unknown:
         break;
     }
@@ -61,51 +57,6 @@ bool isDrive(const DeviceInfo& info)
     return info.state == DeviceInfo::State::Present ||
            info.state == DeviceInfo::State::Unidentified;
 }
-
-// Progress on standard error: one updating line on a terminal, a line per 10 % otherwise (a
-// log file or a CI job should not fill up with carriage returns).
-struct Progress
-{
-    QTextStream& err;
-    bool terminal;
-    int lastTenth = 0;
-    int found = 0;
-    int width = 0;
-
-    void update(int done, int total, int slave)
-    {
-        if (terminal) {
-            const QString line = tr("scanning %1/%2 (%3 %), machine number %4, %5 found")
-                                     .arg(done)
-                                     .arg(total)
-                                     .arg(100 * done / total)
-                                     .arg(slave)
-                                     .arg(found);
-            width = std::max(width, int(line.size()));
-            err << '\r' << line.leftJustified(width);
-            err.flush();
-            return;
-        }
-        const int tenth = 10 * done / total;
-        if (tenth <= lastTenth)
-            return;
-        lastTenth = tenth;
-        err << tr("scan: %1 % (%2 of %3 machine numbers), %4 found")
-                   .arg(100 * done / total)
-                   .arg(done)
-                   .arg(total)
-                   .arg(found)
-            << Qt::endl;
-    }
-
-    void clear()
-    {
-        if (terminal && width > 0) {
-            err << '\r' << QString(width, QLatin1Char(' ')) << '\r';
-            err.flush();
-        }
-    }
-};
 
 } // namespace
 
@@ -185,13 +136,18 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
                          .arg(scanner.waitMs())
                   << Qt::endl;
     printLineReport(context);
-    Progress progress{context.err(), isTerminal(context.err())};
+    ScanProgress progress(context.err());
     QObject::connect(&scanner, &BusScanner::found, &scanner, [&progress](const DeviceInfo& info) {
-        progress.found += info.state == DeviceInfo::State::Absent ? 0 : 1;
+        if (isDrive(info))
+            progress.deviceFound();
     });
     QObject::connect(
         &scanner, &BusScanner::progress, &scanner,
         [&progress](int done, int total, int slave) { progress.update(done, total, slave); });
+    QObject::connect(&scanner, &BusScanner::identificationRetry, &scanner,
+                     [&progress](int slave, int attempt, int attempts) {
+                         progress.identificationRetry(slave, attempt, attempts);
+                     });
     const bool completed = context.wait([&scanner](std::function<void()> finish) {
         QObject::connect(&scanner, &BusScanner::finished, &scanner, [finish] { finish(); });
         scanner.start();
@@ -255,6 +211,18 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
                              .arg(scanner.lateAnswers())
                              .arg(scanner.waitMs())
                       << Qt::endl;
+    // Something answered there but never said what it is: reported, and the scan did not do
+    // all it should (exit 1).
+    const QVector<int> unidentified = BusScanner::unidentified(devices);
+    for (int slave : unidentified)
+        context.err() << tr("warning: machine number %1 answered, but its identification failed, "
+                            "also when asked again %2 more times; it is not counted as a drive. "
+                            "Add it by hand: name it in a command (it is identified again then, "
+                            "within --timeout; raise it for a slow device), or check its line "
+                            "settings and scan again with a longer --wait.")
+                             .arg(slave)
+                             .arg(BusScanner::kIdentifyRetries)
+                      << Qt::endl;
     if (devices.isEmpty()) {
         context.err() << tr("No drive answered at machine numbers %1–%2. Check:\n"
                             "  - the wiring, and the A/B polarity (swap A and B if unsure);\n"
@@ -274,7 +242,7 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
                           << Qt::endl;
         return ExitCommunication;
     }
-    return ExitOk;
+    return unidentified.isEmpty() ? ExitOk : ExitCommunication;
 }
 
 void ScanCommand::printLineReport(CliContext& context)
@@ -381,10 +349,13 @@ QString ScanCommand::summaryLine(const QVector<DeviceInfo>& devices, double elap
 {
     int drives = 0;
     QStringList duplicates;
+    QStringList unidentified;
     for (const DeviceInfo& info : devices) {
         drives += isDrive(info) ? 1 : 0;
         if (info.state == DeviceInfo::State::Garbled)
             duplicates << QString::number(info.slave);
+        if (info.state == DeviceInfo::State::IdentifyFailed)
+            unidentified << QString::number(info.slave);
     }
     // Whole sentences per number, so that translators get complete phrases.
     QString line = drives == 1 ? tr("1 drive found in %1 s").arg(seconds(elapsedMs))
@@ -395,6 +366,9 @@ QString ScanCommand::summaryLine(const QVector<DeviceInfo>& devices, double elap
         line += tr("; %1 possible duplicate machine numbers: %2")
                     .arg(duplicates.size())
                     .arg(duplicates.join(QStringLiteral(", ")));
+    if (!unidentified.isEmpty())
+        line += tr("; answered, identification failed: %1 (add by hand)")
+                    .arg(unidentified.join(QStringLiteral(", ")));
     return line;
 }
 

@@ -14,7 +14,8 @@ class CliContext;
 
 // `scan [--from N] [--to N] [--wait MS]`: finds and identifies the drives on the bus, with
 // progress on standard error, a table (or --json) on standard output, and a warning for machine
-// numbers that two drives seem to share.
+// numbers that two drives seem to share and for those that answered but could not be identified
+// (exit 1: the scan did not find out everything it should).
 class ScanCommand : public CliCommand
 {
 public:

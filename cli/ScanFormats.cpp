@@ -21,7 +21,8 @@ QString tr(const char* text)
 bool known(const QVector<DeviceInfo>& devices, int slave)
 {
     return std::any_of(devices.begin(), devices.end(), [slave](const DeviceInfo& d) {
-        return d.slave == slave && d.state != DeviceInfo::State::Absent;
+        return d.slave == slave && d.state != DeviceInfo::State::Absent &&
+               d.state != DeviceInfo::State::IdentifyFailed;
     });
 }
 
@@ -58,6 +59,11 @@ bool ScanFormats::run(CliContext& context, int from, int to, int waitMs,
             if (info.state != DeviceInfo::State::Present || known(*devices, info.slave))
                 continue;
             context.client()->setDriveLine(info.slave, c.format);
+            // One that answered at the port's format but was not identified there is now.
+            devices->erase(
+                std::remove_if(devices->begin(), devices->end(),
+                               [&info](const DeviceInfo& d) { return d.slave == info.slave; }),
+                devices->end());
             const auto at =
                 std::lower_bound(devices->begin(), devices->end(), info.slave,
                                  [](const DeviceInfo& d, int slave) { return d.slave < slave; });
@@ -96,7 +102,7 @@ void ScanFormats::hint(CliContext& context, int from, int to, const QVector<Devi
                          .arg(missed)
                          .arg(candidates.size())
                          .arg(LineFormatHint::requestsFor(candidates, from, to))
-                         .arg(QString::number(seconds, 'f', 0))
+                         .arg(QString::number(seconds, 'f', seconds < 10 ? 1 : 0))
                   << Qt::endl;
 }
 

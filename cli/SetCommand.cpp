@@ -3,6 +3,7 @@
 #include "CliContext.h"
 #include "GroupCheck.h"
 #include "ModbusClient.h"
+#include "SetRaw.h"
 #include "TextTable.h"
 #include "files/RestorePlan.h"
 #include "profile/RoleEvaluator.h"
@@ -11,6 +12,7 @@
 #include "session/DependentValues.h"
 #include "session/DeviceSession.h"
 #include "session/ParameterInitialiser.h"
+#include "session/ReachedDrives.h"
 #include "session/SerialLock.h"
 
 #include <QCoreApplication>
@@ -34,7 +36,49 @@ struct Assignment
     QString text;
     const ParameterMeta* meta = nullptr;
     DeviceSession::Outcome outcome;
+    QVector<quint16> registers; // as validated, before anything is sent
 };
+
+// The drives of the target's communication group execute the writes too: each must allow every
+// value by its own profile, variant and values (ReachedDrives), or nothing is sent.
+int checkChildren(CliContext& context, DeviceSession* session,
+                  const QVector<Assignment>& assignments)
+{
+    const ReachedDrives reached(session, session->reachedDrives());
+    if (reached.isEmpty())
+        return ExitOk;
+    QVector<const ParameterMeta*> metas;
+    QStringList names;
+    for (const Assignment& a : assignments) {
+        metas << a.meta;
+        names << a.name;
+    }
+    QString problem;
+    if (!context.wait([&](std::function<void()> finish) {
+            reached.ensureKnown(metas, names, [&problem, finish](const QString& p) {
+                problem = p;
+                finish();
+            });
+        }))
+        return ExitInterrupted;
+    QStringList problems;
+    if (!problem.isEmpty())
+        problems << problem;
+    for (const Assignment& a : assignments) {
+        const QString refused =
+            problem.isEmpty() ? reached.problem(*a.meta, a.registers, names, true) : QString();
+        if (!refused.isEmpty())
+            problems << refused;
+    }
+    if (problems.isEmpty())
+        return ExitOk;
+    for (const QString& p : problems)
+        context.err() << QCoreApplication::translate("opentop::SetCommand", "error: %1").arg(p)
+                      << Qt::endl;
+    context.err() << QCoreApplication::translate("opentop::SetCommand", "nothing was written")
+                  << Qt::endl;
+    return problem.isEmpty() ? ExitInvalid : ExitCommunication;
+}
 
 } // namespace
 
@@ -68,7 +112,7 @@ int SetCommand::run(CliContext& context, const QStringList& args)
     }
     const int slave = ids->first();
     if (raw)
-        return runRaw(context, slave, context.parser().values(QStringLiteral("raw")));
+        return SetRaw::run(context, slave, context.parser().values(QStringLiteral("raw")));
     QVector<Assignment> assignments;
     for (const QString& arg : args.mid(1)) {
         const int eq = arg.indexOf(QLatin1Char('='));
@@ -87,7 +131,7 @@ int SetCommand::run(CliContext& context, const QStringList& args)
                 return ExitUsage;
             }
         }
-        assignments.append({name, arg.mid(eq + 1).trimmed(), nullptr, {}});
+        assignments.append({name, arg.mid(eq + 1).trimmed(), nullptr, {}, {}});
     }
     DeviceSession* session = context.session(slave, &error);
     if (!session) {
@@ -184,12 +228,13 @@ int SetCommand::run(CliContext& context, const QStringList& args)
         for (const Assignment& a : assignments)
             names << a.name;
         QStringList warnings; // allowed, but outside the recommended range, or a serial lock
-        for (const Assignment& a : assignments) {
+        for (Assignment& a : assignments) {
             const ValueCodec::Encoded e = ValueCodec::encodeText(*a.meta, a.text, overlay);
             if (!e.ok) {
                 problems << e.error;
                 continue;
             }
+            a.registers = e.registers;
             if (!e.warning.isEmpty())
                 warnings << e.warning;
             // It can shut this program out of the drive's configuration: only on request.
@@ -228,9 +273,14 @@ int SetCommand::run(CliContext& context, const QStringList& args)
         context.err() << tr("nothing was written") << Qt::endl;
         return ExitInvalid;
     }
-    // Drives in the target's communication group execute the writes too, silently.
+    // Drives in the target's communication group execute the writes too, silently: each must
+    // allow every value by its own profile and variant before anything is sent.
     GroupCheck group(context);
-    if (const int refused = group.before(slave, confirmed, ExitInvalid); refused != ExitOk)
+    if (const int refused = group.read(slave); refused != ExitOk)
+        return refused;
+    if (const int refused = checkChildren(context, session, assignments); refused != ExitOk)
+        return refused;
+    if (const int refused = group.confirm(slave, confirmed, ExitInvalid); refused != ExitOk)
         return refused;
     int code = ExitOk;
     bool stopped = false;
@@ -276,8 +326,10 @@ int SetCommand::run(CliContext& context, const QStringList& args)
     for (const Assignment& a : assignments)
         if (a.outcome.sent)
             written << a.name;
-    const QVector<GroupCheck::ChildValue> childValues =
-        written.isEmpty() ? QVector<GroupCheck::ChildValue>() : group.readChildren(written);
+    // What the writes themselves read back from the children, compared with what was written.
+    QVector<GroupCheck::ChildValue> childValues;
+    for (const Assignment& a : assignments)
+        childValues += GroupCheck::fromOutcome(a.name, a.outcome.reached);
     if (context.json()) {
         QJsonArray results;
         for (const Assignment& a : assignments) {
@@ -294,6 +346,10 @@ int SetCommand::run(CliContext& context, const QStringList& args)
                 r.insert(QStringLiteral("warning"), a.outcome.warning);
             if (a.outcome.unconfirmed)
                 r.insert(QStringLiteral("notConfirmed"), true);
+            if (!a.outcome.notVerified.isEmpty())
+                r.insert(QStringLiteral("notVerified"), a.outcome.notVerified);
+            if (!a.outcome.explanation.isEmpty())
+                r.insert(QStringLiteral("explanation"), a.outcome.explanation);
             results.append(r);
         }
         QJsonObject json{{QStringLiteral("slave"), slave}, {QStringLiteral("results"), results}};
@@ -308,7 +364,9 @@ int SetCommand::run(CliContext& context, const QStringList& args)
                                       : a.text;
             const QString result =
                 a.outcome.ok ? (a.outcome.verified ? tr("written, verified")
-                                                   : tr("written (command, not readable)"))
+                                : !a.outcome.notVerified.isEmpty()
+                                    ? tr("written, not verified: %1").arg(a.outcome.notVerified)
+                                    : tr("written (command, not readable)"))
                 : a.outcome.unconfirmed
                     ? tr("not confirmed (%1): the drive may or may not hold it; \"get\" reads "
                          "it back")
@@ -318,6 +376,10 @@ int SetCommand::run(CliContext& context, const QStringList& args)
         }
         table.print(context.out());
         group.print(childValues);
+        // What a drive's error code means and what to do, under the table it belongs to.
+        for (const Assignment& a : assignments)
+            if (!a.outcome.explanation.isEmpty())
+                context.err() << tr("%1: %2").arg(a.name, a.outcome.explanation) << Qt::endl;
     }
     // The line settings change at the drive's next power-up (the same answer as the profile's
     // help, the restore and the simulator: errata DC-18).
@@ -330,147 +392,6 @@ int SetCommand::run(CliContext& context, const QStringList& args)
                                  .arg(a.name)
                           << Qt::endl;
     }
-    return code;
-}
-
-int SetCommand::runRaw(CliContext& context, int slave, const QStringList& assignments)
-{
-    const int fc = context.parser().isSet(QStringLiteral("fc"))
-                       ? context.parser().value(QStringLiteral("fc")).toInt()
-                       : 6;
-    if (fc != 6 && fc != 16) {
-        context.err() << tr("error: --fc for raw writes is 6 or 16") << Qt::endl;
-        return ExitUsage;
-    }
-    auto number = [](const QString& text, bool* ok) {
-        const QString t = text.trimmed();
-        return t.startsWith(QLatin1String("0x"), Qt::CaseInsensitive) ? t.mid(2).toUInt(ok, 16)
-                                                                      : t.toUInt(ok);
-    };
-    struct RawWrite
-    {
-        quint16 address;
-        QVector<quint16> values;
-    };
-    QVector<RawWrite> writes;
-    for (const QString& a : assignments) {
-        const int eq = a.indexOf(QLatin1Char('='));
-        bool ok = eq > 0;
-        const uint address = ok ? number(a.left(eq), &ok) : 0;
-        RawWrite w{quint16(address), {}};
-        for (const QString& v : a.mid(eq + 1).split(QLatin1Char(','))) {
-            bool okValue = false;
-            const uint value = number(v, &okValue);
-            ok = ok && okValue && value <= 0xFFFF;
-            w.values << quint16(value);
-        }
-        if (!ok || address > 0xFFFF || (fc == 6 && w.values.size() != 1) || w.values.size() > 123) {
-            context.err() << tr("error: \"%1\" is not ADDR=VALUE (0x.. or decimal, 0–65535; "
-                                "several values, comma separated, only with --fc 16)")
-                                 .arg(a)
-                          << Qt::endl;
-            return ExitUsage;
-        }
-        writes << w;
-    }
-    // Raw writes are for service work, but they still never bypass the profile's checks or the
-    // confirmation that commands need.
-    QString error;
-    DeviceSession* session = context.session(slave, &error);
-    const bool confirmed = context.parser().isSet(QStringLiteral("yes"));
-    for (const RawWrite& w : writes) {
-        const ParameterMeta* meta =
-            session ? session->profile().parameterAt(quint8(fc), w.address) : nullptr;
-        if (!meta && !confirmed) {
-            context.err() << tr("error: 0x%1 is not a register the profile knows; add --yes to "
-                                "write it anyway; nothing was written")
-                                 .arg(w.address, 4, 16, QLatin1Char('0'))
-                          << Qt::endl;
-            return ExitInvalid;
-        }
-        if (meta && w.address == meta->address && w.values.size() == meta->registerCount) {
-            const QString problem = ValueCodec::checkRaw(
-                *meta, ValueCodec::registersToRaw(*meta, w.values), session->context());
-            if (!problem.isEmpty() || (!meta->safety.isEmpty() && !confirmed)) {
-                context.err() << tr("error: %1; nothing was written")
-                                     .arg(problem.isEmpty() ? tr("%1 is a %2 command; add --yes")
-                                                                  .arg(meta->name, meta->safety)
-                                                            : problem)
-                              << Qt::endl;
-                return ExitInvalid;
-            }
-        } else if (meta && !confirmed) {
-            context.err() << tr("error: the write covers part of %1; add --yes to write it anyway; "
-                                "nothing was written")
-                                 .arg(meta->name)
-                          << Qt::endl;
-            return ExitInvalid;
-        }
-    }
-    if (!context.connectBus())
-        return ExitCommunication;
-    GroupCheck group(context);
-    if (const int refused = group.before(slave, confirmed, ExitInvalid); refused != ExitOk)
-        return refused;
-    QStringList known; // what the children are read back as, where the profile names it
-    for (const RawWrite& w : writes)
-        if (const ParameterMeta* meta =
-                session ? session->profile().parameterAt(quint8(fc), w.address) : nullptr)
-            if (meta->isReadable() && !known.contains(meta->name))
-                known << meta->name;
-    int code = ExitOk;
-    TextTable table({tr("Address"), tr("Written"), tr("Result")});
-    for (const RawWrite& w : writes) {
-        const ModbusRequest request =
-            fc == 6 ? ModbusRequest::writeSingle(quint8(slave), w.address, w.values.first())
-                    : ModbusRequest::writeMultiple(quint8(slave), w.address, w.values);
-        ModbusResult result;
-        if (!context.wait([&](std::function<void()> finish) {
-                context.client()->submit(request, &context,
-                                         [&result, finish](const ModbusResult& r) {
-                                             result = r;
-                                             finish();
-                                         });
-            }))
-            return ExitInterrupted;
-        QStringList hex;
-        for (quint16 v : w.values)
-            hex << QStringLiteral("%1").arg(v, 4, 16, QLatin1Char('0')).toUpper();
-        const QString where = QStringLiteral("0x%1").arg(w.address, 4, 16, QLatin1Char('0'));
-        if (!result.ok()) {
-            table.addRow({where, hex.join(QLatin1Char(' ')), result.errorText()});
-            code = ExitCommunication;
-            continue;
-        }
-        // Read back where the address is a readable holding register.
-        const ModbusRequest readBack =
-            ModbusRequest::readHolding(quint8(slave), w.address, quint16(w.values.size()));
-        ModbusResult back;
-        context.wait([&](std::function<void()> finish) {
-            context.client()->submit(readBack, &context, [&back, finish](const ModbusResult& r) {
-                back = r;
-                finish();
-            });
-        });
-        QString verdict = tr("written");
-        if (back.ok() && back.registers == w.values) {
-            verdict = tr("written, verified");
-        } else if (back.ok()) {
-            verdict = tr("written, but reads back differently");
-            code = ExitMismatch;
-        } else {
-            verdict = tr("written (not readable back: %1)").arg(back.errorText());
-        }
-        table.addRow({where, hex.join(QLatin1Char(' ')), verdict});
-    }
-    table.print(context.out());
-    if (!known.isEmpty())
-        group.print(group.readChildren(known));
-    else if (!group.children().isEmpty())
-        context.out() << tr("Also written to %1 (communication group); not read back: no "
-                            "parameter of the profile")
-                             .arg(BusGroups::listText(group.children()))
-                      << Qt::endl;
     return code;
 }
 

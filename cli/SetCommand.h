@@ -14,9 +14,6 @@ public:
     QString summary() const override;
     QList<QCommandLineOption> options() const override;
     int run(CliContext& context, const QStringList& args) override;
-
-private:
-    int runRaw(CliContext& context, int slave, const QStringList& assignments);
 };
 
 } // namespace opentop

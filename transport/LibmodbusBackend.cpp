@@ -1,6 +1,5 @@
 #include "LibmodbusBackend.h"
 
-#include "ModbusCrc.h"
 #include "RtuFrame.h"
 #include "TransportLog.h"
 
@@ -102,6 +101,7 @@ void LibmodbusBackend::close()
     m_lateWatch.clear();
     m_suspects.clear();
     m_checkedSinceOpen.clear();
+    m_notes.clear();
     qCDebug(lcTransport) << "closed" << describe();
 }
 
@@ -135,6 +135,12 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
         timeoutMs = m_settings.timeoutMs;
 
     awaitLateReplies(request);
+    // Held after a silent timeout (LineNotes): a reply meanwhile ends the wait once the line is
+    // quiet for a gap and what the adapter may hold back; its sender is noted for the result.
+    if (const double heldMs = m_notes.heldFor(request, nowMs()); heldMs > 0)
+        drain(request, heldMs,
+              std::max(1, int(std::ceil(std::max(frameGapMs(), wireTimeMs(4)) +
+                                        lineReport().adapterLatencyMs()))));
     discardStaleInput(request);
     const LineFormat format = request.line.isSet() ? request.line : m_settings.line();
     if (format != m_line.line() && !switchLine(format, &result)) {
@@ -147,7 +153,7 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
     }
     // Also a reply swallowed by the previous request's recovery: whoever asked that drive
     // (a scan) hears of it with the next result.
-    result.lateReplyFrom = std::exchange(m_discardedReplyFrom, -1);
+    m_notes.passOn(&result);
     const QByteArray raw = char(request.slave) + request.pdu();
     const QByteArray sent = txAdu(request);
     // A frame in a drive's own format says so: the traffic log shows where the line switched.
@@ -194,6 +200,9 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
                              .arg(timeoutMs);
         logEvent(request, result.message, result.errorText());
         deferRecovery(request, timeoutMs);
+        // Counted from sending, as the timeout is; TCP has no wire time and no gap.
+        m_notes.hold(request, m_sentAtMs + timeoutMs +
+                                  wireTimeMs(LineNotes::longestReplyBytes(request)) + frameGapMs());
         return result;
     }
 
@@ -229,8 +238,7 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
     }
     if (result.error != ModbusError::Ok && result.error != ModbusError::Exception) {
         recover(request, timeoutMs);
-        if (result.lateReplyFrom < 0)
-            result.lateReplyFrom = std::exchange(m_discardedReplyFrom, -1);
+        m_notes.passOn(&result);
     }
     return result;
 }
@@ -460,7 +468,7 @@ void LibmodbusBackend::discardStaleInput(const ModbusRequest& request)
     if (stale.isEmpty())
         return;
     m_lineActiveAtMs = nowMs();
-    noteDiscarded(toRtuAdu(stale));
+    m_notes.noteDiscarded(toRtuAdu(stale));
     modbus_flush(m_ctx);
     logFrame(
         false, stale, request, QString(),
@@ -544,23 +552,12 @@ void LibmodbusBackend::drain(const ModbusRequest& request, double firstWindowMs,
     modbus_flush(m_ctx);
     if (!late.isEmpty()) {
         m_lineActiveAtMs = nowMs();
-        noteDiscarded(toRtuAdu(late));
+        m_notes.noteDiscarded(toRtuAdu(late));
     }
     if (!late.isEmpty())
         logFrame(false, late, request, QString(),
                  QCoreApplication::translate("opentop::Transport",
                                              "late bytes discarded after an error"));
-}
-
-void LibmodbusBackend::noteDiscarded(const QByteArray& rtu)
-{
-    // The shortest reply is an exception: id, function, code, CRC.
-    for (int length = 5; length <= rtu.size() && length <= 256; ++length) {
-        if (ModbusCrc::check(rtu.left(length))) {
-            m_discardedReplyFrom = quint8(rtu.at(0));
-            return;
-        }
-    }
 }
 
 } // namespace opentop

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ConnectionSettings.h"
+#include "LineNotes.h"
 #include "ModbusBackend.h"
 
 #include <QElapsedTimer>
@@ -23,6 +24,7 @@ namespace opentop {
 // before the next request to the same slave (or a broadcast, or when bytes are arriving), while
 // a request to another slave goes out at once, because a late reply carries its sender's id and
 // is then rejected as a wrong-slave reply. This keeps scans of empty addresses at one wait each.
+// On a half-duplex line a reply still on the wire collides with any request, though: LineNotes.
 class LibmodbusBackend : public ModbusBackend
 {
 public:
@@ -117,9 +119,6 @@ private:
     // kept at the old rate, then the port is switched (applyLineFormat), and the caller keeps
     // the gap again at the new rate. False (and `result` filled) when it failed.
     bool switchLine(const LineFormat& format, ModbusResult* result);
-    // Discarded bytes that begin with a whole frame with a good CRC: notes its sender for the
-    // result of the request about to be sent (ModbusResult::lateReplyFrom).
-    void noteDiscarded(const QByteArray& rtu);
 
     ConnectionSettings m_settings;
     ConnectionSettings m_line; // m_settings in the format in force
@@ -137,7 +136,7 @@ private:
     QVector<LateWatch> m_lateWatch;  // slaves that timed out silently, quiet time not yet over
     QVector<LateWatch> m_suspects;   // slaves whose replies are checked for a second reply
     QElapsedTimer m_clock;           // monotonic time for m_lateWatch
-    int m_discardedReplyFrom = -1;   // see noteDiscarded()
+    LineNotes m_notes;               // what was discarded, a held line
     double m_suspectAllUntilMs = 0;  // on m_clock: every slave is a suspect until then (open())
     QSet<quint8> m_checkedSinceOpen; // slaves whose first exchange was checked (isSuspect())
     double m_frameGapMs = -1;

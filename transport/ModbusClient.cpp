@@ -139,4 +139,20 @@ int ModbusClient::pendingCount() const
     return m_worker->pendingCount();
 }
 
+void ModbusClient::holdPolling()
+{
+    if (m_pollHolds++ > 0)
+        return;
+    m_worker->setPollingHeld(true);
+    emit pollingHeldChanged(true);
+}
+
+void ModbusClient::releasePolling()
+{
+    if (m_pollHolds == 0 || --m_pollHolds > 0)
+        return;
+    m_worker->setPollingHeld(false);
+    emit pollingHeldChanged(false);
+}
+
 } // namespace opentop

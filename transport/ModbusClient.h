@@ -73,6 +73,14 @@ public:
     void cancelAll();
     int pendingCount() const;
 
+    // A bus scan owns the line: while a hold is in place, requests of Poll priority stay
+    // queued, in order, and go out once the last hold is released; Normal and User requests
+    // (a write, STOP ALL) still go. Counted, so that holds may nest. Call on this client's
+    // thread; pollingHeldChanged() follows at once.
+    void holdPolling();
+    void releasePolling();
+    bool isPollingHeld() const { return m_pollHolds > 0; }
+
 signals:
     void opened(bool ok, const QString& error);
     void closed();
@@ -80,6 +88,8 @@ signals:
     // The port failed while in use (e.g. USB adapter unplugged): a PortError after which the
     // backend closed itself. Emitted once per open(); later requests get NotConnected.
     void connectionLost(const QString& error);
+    // Polling waits (a scan holds the bus) or goes on again.
+    void pollingHeldChanged(bool held);
     // A drive's line format was set or removed (setDriveLine).
     void driveLineChanged(int slave);
 
@@ -102,6 +112,7 @@ private:
     std::mutex m_pendingMutex; // submit() may be called from a thread other than this client's
     std::unordered_map<quint64, Pending> m_pending;
     std::unique_ptr<ModbusClientWorker> m_worker;
+    int m_pollHolds = 0;
 };
 
 } // namespace opentop

@@ -1,5 +1,6 @@
 #include "ModbusClientWorker.h"
 
+#include "DriveLineTable.h"
 #include "ModbusBackend.h"
 #include "RetryPolicy.h"
 #include "TransportLog.h"
@@ -35,6 +36,16 @@ struct ModbusClientWorker::State
     std::deque<Control> controls;
     quint64 inFlight = 0;
     bool stop = false;
+    bool pollingHeld = false; // a scan owns the bus: the Poll queue waits
+
+    // The queue served next (-1: none): the highest priority's, Poll's not while held.
+    int next() const
+    {
+        for (int q = 2; q >= 0; --q)
+            if (!queues[q].empty() && !(q == 0 && pollingHeld))
+                return q;
+        return -1;
+    }
 
     std::atomic<bool> interrupt{false};
     std::atomic<bool> open{false};
@@ -44,7 +55,7 @@ struct ModbusClientWorker::State
 
     std::unique_ptr<ModbusBackend> backend;
     ConnectionSettings settings;
-    QMap<int, LineFormat> driveLines; // guarded by mutex
+    DriveLineTable driveLines;
     QString description;
     mutable std::mutex reportMutex;
     SerialLineReport lineReport; // copied from the backend after each open
@@ -84,7 +95,7 @@ ModbusClientWorker::ModbusClientWorker(ModbusClient* client, std::unique_ptr<Mod
     Q_ASSERT(backend);
     m_state->client = client;
     m_state->settings = settings;
-    m_state->driveLines = settings.driveLines;
+    m_state->driveLines.reset(settings.line(), settings.driveLines);
     m_state->description = backend->describe();
     backend->setInterruptFlag(&m_state->interrupt);
     m_state->backend = std::move(backend);
@@ -222,6 +233,15 @@ void ModbusClientWorker::cancelAll()
                     QCoreApplication::translate("opentop::Transport", "cancelled before sending")));
 }
 
+void ModbusClientWorker::setPollingHeld(bool held)
+{
+    {
+        std::lock_guard<std::mutex> lock(m_state->mutex);
+        m_state->pollingHeld = held;
+    }
+    m_state->wake.notify_all();
+}
+
 int ModbusClientWorker::pendingCount() const
 {
     std::lock_guard<std::mutex> lock(m_state->mutex);
@@ -239,10 +259,7 @@ void ModbusClientWorker::run(std::shared_ptr<State> state)
     State& s = *state;
     for (;;) {
         std::unique_lock<std::mutex> lock(s.mutex);
-        s.wake.wait(lock, [&s] {
-            return s.stop || !s.controls.empty() || !s.queues[0].empty() || !s.queues[1].empty() ||
-                   !s.queues[2].empty();
-        });
+        s.wake.wait(lock, [&s] { return s.stop || !s.controls.empty() || s.next() >= 0; });
         if (s.stop)
             break;
         if (!s.controls.empty()) {
@@ -271,14 +288,9 @@ void ModbusClientWorker::run(std::shared_ptr<State> state)
             }
             continue;
         }
-        Item item;
-        for (int q = 2; q >= 0; --q) {
-            if (!s.queues[q].empty()) {
-                item = std::move(s.queues[q].front());
-                s.queues[q].pop_front();
-                break;
-            }
-        }
+        const int q = s.next();
+        Item item = std::move(s.queues[q].front());
+        s.queues[q].pop_front();
         s.inFlight = item.id;
         lock.unlock();
         ModbusResult result = execute(s, item);
@@ -320,34 +332,12 @@ void ModbusClientWorker::run(std::shared_ptr<State> state)
 
 void ModbusClientWorker::setDriveLine(int slave, const LineFormat& format)
 {
-    std::lock_guard<std::mutex> lock(m_state->mutex);
-    if (format.isSet() && format != m_state->settings.line())
-        m_state->driveLines.insert(slave, format);
-    else
-        m_state->driveLines.remove(slave);
-}
-
-QVector<LineFormat> ModbusClientWorker::formatsFor(State& s, const ModbusRequest& request)
-{
-    if (request.line.isSet())
-        return {request.line};
-    std::lock_guard<std::mutex> lock(s.mutex);
-    if (!request.isBroadcast())
-        return {s.driveLines.value(request.slave)};
-    // A broadcast reaches every drive only in a format it hears: the port's first (unset),
-    // then each of the table's that none before reaches.
-    QVector<LineFormat> formats{s.settings.line()};
-    for (const LineFormat& f : s.driveLines)
-        if (std::none_of(formats.begin(), formats.end(),
-                         [&f](const LineFormat& r) { return f.hears(r); }))
-            formats << f;
-    formats.first() = LineFormat();
-    return formats;
+    m_state->driveLines.set(slave, format);
 }
 
 ModbusResult ModbusClientWorker::execute(State& s, const Item& item)
 {
-    const QVector<LineFormat> formats = formatsFor(s, item.request);
+    const QVector<LineFormat> formats = s.driveLines.formatsFor(item.request);
     ModbusResult result;
     for (const LineFormat& format : formats) {
         Item one = item;
@@ -372,9 +362,11 @@ ModbusResult ModbusClientWorker::executeOne(State& s, const Item& item)
         request.isBroadcast() ? 0 : s.retryPolicy.retriesFor(request.retries, s.settings.retries);
     ModbusResult result;
     int lateFrom = -1; // a reply to an earlier request seen by any attempt (see below)
+    bool garbled = false;
     for (int attempt = 1;; ++attempt) {
         result = s.backend->transact(request, timeoutMs);
         result.attempts = attempt;
+        garbled |= result.discardedGarbled;
         // The frame taken in place of the answer names its sender; the drain after it may
         // also have swallowed this request's own answer, which is no news.
         if (result.error == ModbusError::WrongSlave && !result.reply.isEmpty())
@@ -412,6 +404,7 @@ ModbusResult ModbusClientWorker::executeOne(State& s, const Item& item)
     // scan still running asks that drive again (BusScanner listens to every result).
     if (result.lateReplyFrom < 0 && lateFrom != request.slave)
         result.lateReplyFrom = lateFrom;
+    result.discardedGarbled = garbled;
     return result;
 }
 

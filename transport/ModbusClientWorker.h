@@ -45,6 +45,8 @@ public:
     void setDriveLine(int slave, const LineFormat& format);
     void cancelAll();
     int pendingCount() const;
+    // While held, the Poll queue is not served (ModbusClient::holdPolling).
+    void setPollingHeld(bool held);
 
     static constexpr int kStopWaitMs = 1500;
 
@@ -52,8 +54,6 @@ private:
     struct State;
     struct Item;
     static void run(std::shared_ptr<State> state);
-    // Each format the request goes out in (a broadcast: every format of the table).
-    static QVector<LineFormat> formatsFor(State& state, const ModbusRequest& request);
     static ModbusResult execute(State& state, const Item& item);
     static ModbusResult executeOne(State& state, const Item& item);
     static void deliver(State& state, const Item& item, ModbusResult result);

@@ -42,6 +42,12 @@ struct ModbusRequest
     // The format of the drive it goes to; unset: the client's table for the slave, else the
     // port's (a broadcast with none goes out in every format the table holds).
     LineFormat line;
+    // A scan's question to a machine number that has not answered yet. After a request timed
+    // out, every other request waits until the longest reply to it could have ended (it may
+    // still be on the wire: LibmodbusBackend); a probe after a probe goes at once, because the
+    // scan sees a collision as a garbled frame and asks that address again. This keeps an empty
+    // address at one short wait.
+    bool probe = false;
 
     static ModbusRequest readHolding(quint8 slave, quint16 address, quint16 count);
     static ModbusRequest readInput(quint8 slave, quint16 address, quint16 count);

@@ -37,6 +37,10 @@ struct ModbusResult
     // A whole reply from this machine number came after its request had timed out and was
     // discarded before this request was sent (-1: none). A scan asks that drive again.
     int lateReplyFrom = -1;
+    // Bytes that were no whole frame (a reply garbled on the line: on a half-duplex line, a
+    // request sent into a reply destroys both) were discarded before this request was sent or
+    // while the line was drained after it. A scan asks the addresses it asked just before again.
+    bool discardedGarbled = false;
 
     bool ok() const { return error == ModbusError::Ok; }
     // One line for users: "timeout after 3 attempts", "exception 02 Illegal data address".

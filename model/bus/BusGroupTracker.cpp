@@ -9,7 +9,7 @@
 namespace opentop {
 
 BusGroupTracker::BusGroupTracker(BusDrives* drives)
-    : QObject(drives)
+    : GroupReach(drives)
     , m_drives(drives)
 {
     connect(drives, &BusDrives::driveAdded, this, &BusGroupTracker::track);
@@ -35,6 +35,15 @@ BusGroupTracker* BusGroupTracker::of(const QObject* object)
     const QObject* drives = object ? object->parent() : nullptr;
     return drives ? drives->findChild<BusGroupTracker*>(QString(), Qt::FindDirectChildrenOnly)
                   : nullptr;
+}
+
+QVector<DeviceSession*> BusGroupTracker::reachedBy(int slave) const
+{
+    QVector<DeviceSession*> sessions;
+    for (int child : m_groups.childrenOf(slave))
+        if (DeviceSession* s = m_drives->session(child))
+            sessions << s;
+    return sessions;
 }
 
 QString BusGroupTracker::groupParameterOf(int slave) const
@@ -63,6 +72,7 @@ void BusGroupTracker::track(int slave)
         return;
     }
     m_attached.insert(slave);
+    session->setGroupReach(this);
     connect(session, &DeviceSession::written, this,
             [this, slave](const QString& name) { onWritten(slave, name); });
     const QString parameter = BusGroups::groupParameter(session->profile());
@@ -111,7 +121,10 @@ void BusGroupTracker::readAll(std::function<void(int failed)> done)
 void BusGroupTracker::onWritten(int parent, const QString& name)
 {
     const QVector<int> children = m_groups.childrenOf(parent);
-    if (children.isEmpty())
+    // A setting is read back from the children by the write itself (ReachedDrives).
+    const DeviceSession* session = m_drives->session(parent);
+    const ParameterMeta* meta = session ? session->profile().parameter(name) : nullptr;
+    if (children.isEmpty() || (meta && meta->isReadable()))
         return;
     auto pending = std::make_shared<int>(1);
     auto finish = [this, pending, parent, children, name] {
@@ -122,18 +135,13 @@ void BusGroupTracker::onWritten(int parent, const QString& name)
         DeviceParameters* parameters = m_drives->parameters(child);
         if (!parameters)
             continue;
-        // A setting: that setting. A command (not readable, e.g. an initialisation or a start):
-        // every value of the child known so far, since any of them may have changed.
+        // A command (not readable, e.g. an initialisation or a start): every value of the child
+        // known so far, since any of them may have changed.
         QStringList names;
-        const DeviceParameters::Entry* entry = parameters->entry(name);
-        if (entry && entry->meta->isReadable()) {
-            names << name;
-        } else {
-            for (const ParameterMeta& m : parameters->profile().parameters) {
-                const DeviceParameters::Entry* e = parameters->entry(m.name);
-                if (e && e->device.valid && m.isReadable())
-                    names << m.name;
-            }
+        for (const ParameterMeta& m : parameters->profile().parameters) {
+            const DeviceParameters::Entry* e = parameters->entry(m.name);
+            if (e && e->device.valid && m.isReadable())
+                names << m.name;
         }
         if (names.isEmpty())
             continue;

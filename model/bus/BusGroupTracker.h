@@ -1,6 +1,7 @@
 #pragma once
 
 #include "bus/BusGroups.h"
+#include "session/GroupReach.h"
 
 #include <QObject>
 #include <QSet>
@@ -13,9 +14,11 @@ class BusDrives;
 
 // The communication groups of the bus the program is connected to, kept up to date: every
 // DBU's group setting is read when it is identified and whenever a read or write brings a new
-// value; what a drive acknowledges as written is re-read on its children, which executed it
-// too without replying (TROY manual 11-3), so their values are read, not assumed.
-class BusGroupTracker : public QObject
+// value. It is every session's GroupReach: a write to a parent is validated by its children and
+// read back from them by the session itself (ReachedDrives), since they execute it too without
+// replying (TROY manual 11-3); after a command (not readable) every value known of the children
+// is read again, so their values are read, not assumed.
+class BusGroupTracker : public GroupReach
 {
     Q_OBJECT
 public:
@@ -33,11 +36,13 @@ public:
     // Reads the group setting of every drive that has one; `done` once all answered.
     void readAll(std::function<void(int failed)> done = {});
     QString groupParameterOf(int slave) const;
+    // GroupReach: the sessions of the known children of `slave`.
+    QVector<DeviceSession*> reachedBy(int slave) const override;
 
 signals:
     void groupsChanged();
-    // After a write of `names` to `parent`, its children's values have been read again: the
-    // same setting, or after a command every value of theirs known so far.
+    // After a command (not readable) to `parent`, every value known so far of its children has
+    // been read again. (A setting is read back from them by the write itself.)
     void childrenReread(int parent, const QVector<int>& children, const QStringList& names);
 
 private:

@@ -27,13 +27,19 @@ BusScanner::BusScanner(ModbusClient* client, const ProfileRegistry& registry, QO
 {
     // A late reply can be taken by any request on the bus, not only the scan's: the program
     // polls the drives it has found meanwhile. Every result is looked at.
+    // The scan's own results are looked at in handleReply() (the callback comes first).
     connect(client, &ModbusClient::finished, this, [this](quint64 id, const ModbusResult& r) {
-        if (m_running && id != m_pendingId)
+        if (m_running && id != m_pendingId && id != m_handledId)
             noteLateAnswer(r);
     });
 }
 
-BusScanner::~BusScanner() = default;
+BusScanner::~BusScanner()
+{
+    // Deleted while running (its window closed): polling goes on.
+    if (m_held)
+        m_held->releasePolling();
+}
 
 int BusScanner::defaultWaitMs(const ConnectionSettings& settings, int adapterLatencyMs)
 {
@@ -42,6 +48,13 @@ int BusScanner::defaultWaitMs(const ConnectionSettings& settings, int adapterLat
     double ms = kReadRequestBytes * c + gap + kAnswerBudgetMs + kMarginMs + adapterLatencyMs;
     if (settings.kind == ConnectionSettings::Kind::Tcp)
         ms += kGatewayMs;
+    return std::clamp(int(std::ceil(ms)), kMinWaitMs, kMaxWaitMs);
+}
+
+int BusScanner::wholeReplyWaitMs(const ConnectionSettings& settings, int firstByteWaitMs,
+                                 int replyBytes)
+{
+    const double ms = firstByteWaitMs + replyBytes * settings.charTimeMs() + kMarginMs;
     return std::clamp(int(std::ceil(ms)), kMinWaitMs, kMaxWaitMs);
 }
 
@@ -63,14 +76,18 @@ int BusScanner::waitMs() const
 
 int BusScanner::waitFor(int slave) const
 {
-    if (m_waitMs > 0)
-        return m_waitMs;
+    return m_waitMs > 0 ? m_waitMs
+                        : defaultWaitMs(settingsFor(slave), m_client->adapterLatencyMs());
+}
+
+ConnectionSettings BusScanner::settingsFor(int slave) const
+{
     ConnectionSettings settings = m_client->settings();
     if (m_line.isSet())
         settings.setLine(m_line);
     else if (slave > 0)
         settings.setLine(m_client->driveLine(slave));
-    return defaultWaitMs(settings, m_client->adapterLatencyMs());
+    return settings;
 }
 
 double BusScanner::elapsedMs() const
@@ -85,8 +102,13 @@ void BusScanner::start()
     m_effectiveWaitMs = waitMs();
     m_cursor = m_from;
     m_slave = 0;
+    m_previous = 0;
+    m_earlier = 0;
     m_reasking = false;
     m_late.clear();
+    m_answered.clear();
+    m_reasks.clear();
+    m_retries.clear();
     m_lateAnswers = 0;
     m_done = 0;
     m_requests = 0;
@@ -97,6 +119,12 @@ void BusScanner::start()
     m_elapsedMs = 0;
     m_running = true;
     m_timer.start();
+    // The scan owns the bus: a poll sent while a reply may still be on the line would destroy
+    // both, and the scan would never know (issue 24: the DC controller's 25-byte reply).
+    if (!m_held) {
+        m_held = m_client;
+        m_client->holdPolling();
+    }
     qCDebug(lcModel) << "scan" << m_from << "to" << m_to << "wait" << m_effectiveWaitMs << "ms";
     nextAddress();
 }
@@ -111,29 +139,43 @@ void BusScanner::cancel()
     m_client->cancel(m_pendingId);
 }
 
+int BusScanner::requestTimeoutMs(int profileIndex, bool confirming) const
+{
+    const IdentifyRule& rule = m_registry.profiles()[profileIndex].identify;
+    // A drive of its own format is asked at its rate: the waits follow it.
+    const int wait = std::max(m_effectiveWaitMs, waitFor(m_slave));
+    const int whole = wholeReplyWaitMs(settingsFor(m_slave), wait, 5 + 2 * rule.count);
+    // A drive asked again (it answered late, or its identification failed): four waits, or the
+    // connection's timeout. The last address of the pass has no next request to catch its late
+    // reply: four waits.
+    if (m_reasking)
+        return std::clamp(std::max({4 * wait, m_client->settings().timeoutMs, whole}), kMinWaitMs,
+                          kMaxWaitMs);
+    if (m_slave == m_to)
+        return std::clamp(std::max(4 * wait, whole), kMinWaitMs, kMaxWaitMs);
+    // An address that has answered (another family's read, a garbled frame) is there: its
+    // identification waits for the whole reply, which may be longer than the first byte's wait.
+    if (profileIndex > 0 || confirming)
+        return whole;
+    return wait; // empty addresses cost this wait only
+}
+
 void BusScanner::askProfile(int profileIndex, bool confirming)
 {
     const IdentifyRule& rule = m_registry.profiles()[profileIndex].identify;
     ModbusRequest request =
         rule.function == 4 ? ModbusRequest::readInput(quint8(m_slave), rule.address, rule.count)
                            : ModbusRequest::readHolding(quint8(m_slave), rule.address, rule.count);
-    // A drive asked again because it answered late: four waits, or the connection's timeout.
-    // The last address of the pass has no next request to catch its late reply: four waits.
-    const bool last = !m_reasking && m_slave == m_to;
     request.line = m_line;
-    // A drive of its own format is asked at its rate: the wait follows it.
-    const int effectiveWaitMs = std::max(m_effectiveWaitMs, waitFor(m_slave));
-    request.timeoutMs =
-        m_reasking ? std::clamp(std::max(4 * effectiveWaitMs, m_client->settings().timeoutMs),
-                                kMinWaitMs, kMaxWaitMs)
-        : last     ? std::clamp(4 * effectiveWaitMs, kMinWaitMs, kMaxWaitMs)
-                   : effectiveWaitMs;
+    request.timeoutMs = requestTimeoutMs(profileIndex, confirming);
+    request.probe = !m_reasking && !confirming && profileIndex == 0;
     // Silence is the normal answer in a scan: retrying it would only double the scan time.
     request.retries = 0;
     request.priority = ModbusRequest::Priority::User;
     ++m_requests;
     m_pendingId =
         m_client->submit(request, this, [this, profileIndex, confirming](const ModbusResult& r) {
+            m_handledId = m_pendingId;
             handleReply(profileIndex, confirming, r);
         });
 }
@@ -154,10 +196,13 @@ void BusScanner::handleReply(int profileIndex, bool confirming, const ModbusResu
         finish();
         return;
     }
+    // A device that refuses a family's read is there, whatever it turns out to be.
+    if (info.state == DeviceInfo::State::Unidentified)
+        m_answered.insert(m_slave);
     // On a half-duplex line a late answer from the address before collides with this request:
     // both frames are garbled and the address before looked silent. Ask it again, with time.
     if (info.state == DeviceInfo::State::Garbled && !m_reasking)
-        askAgainLater(m_slave - 1);
+        askAgainLater(m_previous);
     // A single corrupt frame may be noise; two drives answering at once garble every reply.
     const bool confirm = info.state == DeviceInfo::State::Garbled && !confirming;
     // A device that refuses this family's read may be of another family.
@@ -181,11 +226,49 @@ void BusScanner::handleReply(int profileIndex, bool confirming, const ModbusResu
                           .arg(DeviceInfo::switchText(m_slave));
     else if (info.state == DeviceInfo::State::Unidentified)
         info.detail = tr("answers, but none of the device profiles matches (%1)").arg(info.detail);
+    else if (info.state == DeviceInfo::State::Absent && m_answered.contains(m_slave))
+        info = identificationFailed(info);
     addressDone(info);
+}
+
+DeviceInfo BusScanner::identificationFailed(DeviceInfo info)
+{
+    const int attempt = m_retries.value(m_slave) + 1;
+    if (attempt <= kIdentifyRetries) {
+        // Asked again next, with the long wait; until then it is not reported.
+        m_retries[m_slave] = attempt;
+        m_late.removeAll(m_slave);
+        m_late.prepend(m_slave);
+        emit identificationRetry(m_slave, attempt, kIdentifyRetries);
+        return info;
+    }
+    info.state = DeviceInfo::State::IdentifyFailed;
+    info.detail = tr("answered, but its identification read got no reply (%1), also when "
+                     "asked %2 more times: add it by hand, or scan with a longer wait")
+                      .arg(info.detail)
+                      .arg(kIdentifyRetries);
+    return info;
+}
+
+QVector<int> BusScanner::unidentified(const QVector<DeviceInfo>& devices)
+{
+    QVector<int> slaves;
+    for (const DeviceInfo& d : devices)
+        if (d.state == DeviceInfo::State::IdentifyFailed)
+            slaves << d.slave;
+    return slaves;
 }
 
 void BusScanner::noteLateAnswer(const ModbusResult& result)
 {
+    // A garbled frame thrown away before a request went out, or while the line was drained
+    // after one: a reply met a request on the line after both their waits (a slow drive, a busy
+    // machine). Its sender and the address the request asked were the two asked before.
+    if (result.discardedGarbled) {
+        qCDebug(lcModel) << "scan: a garbled frame was discarded while asking" << m_slave;
+        askAgainLater(m_previous);
+        askAgainLater(m_earlier);
+    }
     // A reply from an address already passed as silent: that drive answers slower than the
     // wait. Its reply spoiled this request; ask it again with a longer wait rather than lose it.
     // Or one the transport discarded before sending this request (it came after its wait).
@@ -196,6 +279,8 @@ void BusScanner::noteLateAnswer(const ModbusResult& result)
         return;
     const bool known = std::any_of(m_devices.begin(), m_devices.end(),
                                    [sender](const DeviceInfo& d) { return d.slave == sender; });
+    if (!known)
+        m_answered.insert(sender); // a whole frame with its number: it is there
     if (sender == m_slave || known)
         return;
     qCDebug(lcModel) << "scan: late answer from" << sender << "while asking" << m_slave;
@@ -207,9 +292,11 @@ void BusScanner::askAgainLater(int slave)
     // Only an address this pass has already judged silent.
     const bool known = std::any_of(m_devices.begin(), m_devices.end(),
                                    [slave](const DeviceInfo& d) { return d.slave == slave; });
-    if (slave < m_from || slave >= m_cursor || slave == m_slave || known || m_late.contains(slave))
+    if (slave < m_from || slave >= m_cursor || slave == m_slave || known ||
+        m_late.contains(slave) || m_reasks.value(slave) >= kIdentifyRetries)
         return;
     ++m_lateAnswers;
+    ++m_reasks[slave];
     m_late << slave;
 }
 
@@ -221,7 +308,7 @@ void BusScanner::addressDone(DeviceInfo info)
         info.line = m_line.isSet() ? m_line : LineFormat();
         if (!info.line.isSet() && m_client->hasOwnLine(info.slave))
             info.line = m_client->driveLine(info.slave);
-        if (m_reasking) {
+        if (m_reasking && info.state != DeviceInfo::State::IdentifyFailed) {
             const QString late = tr("answered late at first (after the %1 ms wait); a longer "
                                     "wait makes scans of this bus reliable")
                                      .arg(m_effectiveWaitMs);
@@ -246,7 +333,12 @@ void BusScanner::nextAddress()
         finish();
         return;
     }
+    // A late reply of the addresses asked just before may meet the next request; one asked
+    // again had a long wait, so its reply is not suspected.
+    const int asked = m_reasking ? 0 : m_slave;
     m_reasking = !m_late.isEmpty();
+    m_earlier = m_previous;
+    m_previous = asked;
     m_slave = m_reasking ? m_late.takeFirst() : m_cursor++;
     askProfile(0, false);
 }
@@ -254,6 +346,9 @@ void BusScanner::nextAddress()
 void BusScanner::finish()
 {
     m_running = false;
+    if (m_held)
+        m_held->releasePolling(); // before finished(): what listens may poll at once
+    m_held = nullptr;
     m_elapsedMs = double(m_timer.nsecsElapsed()) / 1e6;
     qCDebug(lcModel) << "scan finished:" << m_done << "addresses," << m_devices.size() << "found,"
                      << m_requests << "requests," << m_elapsedMs << "ms"

@@ -4,7 +4,10 @@
 #include "session/DeviceInfo.h"
 
 #include <QElapsedTimer>
+#include <QHash>
 #include <QObject>
+#include <QPointer>
+#include <QSet>
 #include <QVector>
 
 namespace opentop {
@@ -16,12 +19,11 @@ struct ConnectionSettings;
 struct ModbusResult;
 
 // Finds the drives on a bus: asks every machine number of a range with each profile's identify
-// read (DeviceIdentifier decodes the replies), one transaction at a time, asynchronously.
-// Absent addresses cost one request with a short wait derived from the baud rate; an address
-// that answers with garbled frames is asked once more before it is reported as a likely
-// duplicate machine number, and a drive whose reply turns up late (during the next address's
-// wait) is asked again with a longer wait instead of being lost. Usable from the GUI and the
-// command line alike.
+// read (DeviceIdentifier decodes the replies), one transaction at a time, asynchronously, while
+// it owns the bus (ModbusClient::holdPolling: polls wait). An empty address costs one short wait
+// for the first byte; one that answered gets a whole reply's wait, a second question when its
+// frames are garbled (a duplicate machine number?), more when its reply came late or it could
+// not be identified, and is then reported, never dropped (docs/communication.md, "Scans").
 class BusScanner : public QObject
 {
     Q_OBJECT
@@ -29,10 +31,11 @@ public:
     // ModbusRequest refuses timeouts below 10 ms; shorter waits are raised to it.
     static constexpr int kMinWaitMs = 10;
     static constexpr int kMaxWaitMs = 5000;
-    // What a present device is allowed for its answer after the request and the 3.5 character
-    // gap: the DBU manual's T3 "initial value 10 ms" (11-1). A slower drive is found by the
-    // late-answer rescue, not by making every empty address wait longer.
+    // A present device's time to answer after the request and the 3.5 character gap: the DBU
+    // manual's T3 "initial value 10 ms" (11-1); a slower one is found by the late-answer rescue.
     static constexpr double kAnswerBudgetMs = 10.0;
+    // Times an address that answered is asked again before it is reported unidentified.
+    static constexpr int kIdentifyRetries = 3;
 
     BusScanner(ModbusClient* client, const ProfileRegistry& registry, QObject* parent = nullptr);
     ~BusScanner() override;
@@ -42,6 +45,10 @@ public:
     // (a USB adapter without low latency holds received bytes up to its latency timer). Only
     // the first byte has to come within it; the rest of a reply is read by the byte timeout.
     static int defaultWaitMs(const ConnectionSettings& settings, int adapterLatencyMs = 0);
+    // The wait for a whole reply of `replyBytes` when its first byte may come as late as
+    // `firstByteWaitMs` (also where the adapter passes it on only whole).
+    static int wholeReplyWaitMs(const ConnectionSettings& settings, int firstByteWaitMs,
+                                int replyBytes);
 
     // Range and wait for the next start(); waitMs 0 uses defaultWaitMs().
     void setRange(int from, int to);
@@ -69,6 +76,8 @@ public:
     // Addresses asked again with a longer wait: a reply from them came after their wait, or a
     // garbled frame came while the next address was asked (a late reply colliding with it).
     int lateAnswers() const { return m_lateAnswers; }
+    // The addresses among `devices` that answered but could not be identified.
+    static QVector<int> unidentified(const QVector<DeviceInfo>& devices);
     double elapsedMs() const;
     // Every address that answered, in machine number order.
     QVector<DeviceInfo> devices() const { return m_devices; }
@@ -76,6 +85,9 @@ public:
 signals:
     void progress(int done, int total, int slave);
     void found(const opentop::DeviceInfo& info);
+    // `slave` answered, but its identification failed: it is asked again (`attempt` of
+    // kIdentifyRetries) before the scan gives up and reports it.
+    void identificationRetry(int slave, int attempt, int attempts);
     void finished(const QVector<opentop::DeviceInfo>& devices);
 
 private:
@@ -83,13 +95,19 @@ private:
     void handleReply(int profileIndex, bool confirming, const ModbusResult& result);
     void noteLateAnswer(const ModbusResult& result);
     void askAgainLater(int slave);
+    int requestTimeoutMs(int profileIndex, bool confirming) const;
+    // The address answered before; its identification has just failed.
+    DeviceInfo identificationFailed(DeviceInfo info);
     void addressDone(DeviceInfo info);
     // The wait for `slave`: the given one, else derived from the format it is asked in.
     int waitFor(int slave) const;
+    // The connection's settings in the format `slave` is asked in.
+    ConnectionSettings settingsFor(int slave) const;
     void nextAddress();
     void finish();
 
     ModbusClient* m_client;
+    QPointer<ModbusClient> m_held; // holding its polling while running
     const ProfileRegistry& m_registry;
     DeviceIdentifier* m_identifier;
     int m_from = 1;
@@ -97,14 +115,19 @@ private:
     int m_waitMs = 0;
     LineFormat m_line;
     int m_effectiveWaitMs = 0;
-    int m_cursor = 1; // the next address of the pass through the range
-    int m_slave = 0;  // the address being asked
+    int m_cursor = 1;                  // the next address of the pass through the range
+    int m_slave = 0;                   // the address being asked
+    int m_previous = 0, m_earlier = 0; // asked before it with a short wait (0: none)
     bool m_reasking = false;
-    QVector<int> m_late; // answered after the wait: to be asked again
+    QVector<int> m_late;       // answered after the wait: to be asked again
+    QSet<int> m_answered;      // sent a whole frame of some kind (an exception, a late reply)
+    QHash<int, int> m_reasks;  // times each address was asked again for a late reply
+    QHash<int, int> m_retries; // times each address was asked again after it answered
     int m_lateAnswers = 0;
     int m_done = 0;
     int m_requests = 0;
     quint64 m_pendingId = 0; // the request of ours that is queued or on the wire
+    quint64 m_handledId = 0; // the last of ours handed to handleReply()
     bool m_running = false;
     bool m_cancelled = false;
     bool m_cancelRequested = false;

@@ -1,5 +1,6 @@
 #include "bus/DriveStatusPoller.h"
 
+#include "ModbusClient.h"
 #include "bus/BusDrives.h"
 #include "profile/RoleEvaluator.h"
 #include "profile/ValueCodec.h"
@@ -137,11 +138,15 @@ DriveStatusPoller::DriveStatusPoller(BusDrives* drives, QObject* parent)
         m_queue.removeAll(slave);
         skipIfGone(slave);
     });
-    // Every light follows the link at once, not at the next poll.
-    connect(drives, &BusDrives::linkChanged, this, [this] {
+    // Every light follows the link at once, not at the next poll; so it does when a scan
+    // holds the bus (polling waits) and releases it.
+    const auto everyLight = [this] {
         for (int slave : m_status.keys())
             emit statusChanged(slave);
-    });
+    };
+    connect(drives, &BusDrives::linkChanged, this, everyLight);
+    if (drives->client())
+        connect(drives->client(), &ModbusClient::pollingHeldChanged, this, everyLight);
     // A drive identified again as another family (or as absent) starts afresh.
     connect(drives, &BusDrives::driveChanged, this, [this](int slave) {
         if (!m_drives->session(slave) && m_status.remove(slave))
@@ -381,8 +386,11 @@ void DriveStatusPoller::scheduleNext()
 Freshness::State DriveStatusPoller::freshness(int slave, const QDateTime& now) const
 {
     const DriveStatus s = m_status.value(slave);
+    // Not polled while a scan holds the bus: not live, however recent.
+    const bool held = m_drives->client() && m_drives->client()->isPollingHeld();
     return Freshness::of(s.lastAnswer, now, m_intervalMs,
-                         m_drives->linkUp() && s.consecutiveFailures < DriveStatus::kNoAnswerAfter);
+                         m_drives->linkUp() && !held &&
+                             s.consecutiveFailures < DriveStatus::kNoAnswerAfter);
 }
 
 DriveStatus::Led DriveStatusPoller::shownLed(int slave, const QDateTime& now) const

@@ -101,7 +101,7 @@ public:
     // The status of `slave`; a default (grey, not polled) one for drives not polled yet.
     DriveStatus status(int slave) const { return m_status.value(slave); }
     // Whether what the status says of `slave` is live (monitor/Freshness): answered within a
-    // few poll intervals while the link is up.
+    // few poll intervals while the link is up and no scan holds the bus (polling waits then).
     Freshness::State freshness(int slave, const QDateTime& now) const;
     // The light to show now: the status's colour while live, grey otherwise (never green for
     // a drive that is not answering or a link that is down).

@@ -310,6 +310,8 @@ QString RestorePlan::statusText(const Item& item)
     case Item::Status::Unchanged:
         return tr("unchanged");
     case Item::Status::Verified:
+        if (!item.error.isEmpty()) // held by the drive, not verified on every drive reached
+            return tr("written, not verified: %1").arg(item.error);
         return item.action == Item::Action::Store ? tr("written") : tr("written and verified");
     case Item::Status::Failed:
         return tr("failed: %1").arg(item.error);

@@ -2,6 +2,7 @@
 
 #include "profile/ValueCodec.h"
 #include "session/DeviceSession.h"
+#include "session/ReachedDrives.h"
 #include "session/StoreTracker.h"
 
 #include <algorithm>
@@ -71,10 +72,54 @@ void Restorer::readDrive()
             live.insert(name, self->m_session->cachedRegisters(name));
         self->m_plan.build(self->m_session->profile(), self->m_session->variant(), live,
                            StoreTracker::of(self->m_session)->unstored());
-        if (self->m_options.dryRun)
-            self->finish(RestorePlan::Outcome::Planned);
-        else
-            self->writeNext();
+        self->checkReached([self] {
+            if (self && self->m_options.dryRun)
+                self->finish(RestorePlan::Outcome::Planned);
+            else if (self)
+                self->writeNext();
+        });
+    });
+}
+
+void Restorer::checkReached(std::function<void()> then)
+{
+    const ReachedDrives reached(m_session, m_session->reachedDrives());
+    QVector<const ParameterMeta*> metas;
+    QStringList names;
+    for (const Item& item : std::as_const(m_plan.items)) {
+        const ParameterMeta* meta = m_session->profile().parameter(item.parameter);
+        if (item.action == Item::Action::Write && meta) {
+            metas << meta;
+            names << item.parameter;
+        }
+    }
+    if (reached.isEmpty() || metas.isEmpty()) {
+        then();
+        return;
+    }
+    QPointer<Restorer> self(this);
+    reached.ensureKnown(metas, names, [self, reached, names, then](const QString& problem) {
+        if (!self)
+            return;
+        RestorePlan& plan = self->m_plan;
+        if (!problem.isEmpty())
+            plan.problems << problem;
+        for (const Item& item : std::as_const(plan.items)) {
+            const ParameterMeta* meta = self->m_session->profile().parameter(item.parameter);
+            if (problem.isEmpty() && item.action == Item::Action::Write && meta) {
+                const QString refused = reached.problem(*meta, item.fileRegisters, names, true);
+                if (!refused.isEmpty())
+                    plan.problems << refused;
+            }
+        }
+        if (plan.problems.isEmpty()) {
+            then();
+            return;
+        }
+        plan.reason = tr("%n value(s) of the file may not be written to the drives of the "
+                         "communication group; nothing written",
+                         "", int(plan.problems.size()));
+        self->finish(RestorePlan::Outcome::Refused);
     });
 }
 
@@ -123,6 +168,7 @@ void Restorer::writeNext()
                 self->m_plan.count(Item::Action::Write) + self->m_plan.count(Item::Action::Store);
             if (o.ok) {
                 done.status = Item::Status::Verified;
+                done.error = o.notVerified; // held here, not read back from every drive reached
             } else {
                 done.status = o.unconfirmed ? Item::Status::NotConfirmed : Item::Status::Failed;
                 done.error = o.error;

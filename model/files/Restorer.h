@@ -15,7 +15,8 @@ class DeviceSession;
 // write by reading it back, stores what the drive would otherwise lose at power-off, and
 // reports parameter by parameter. Asynchronous; cancel() stops once the write in progress has
 // been read back (a write and its verification belong together), before the next one. Running
-// it again after an interruption or failure completes the restore.
+// it again after an interruption or failure completes the restore. A drive's communication
+// group children execute the writes too: they check every value first, and are read back.
 class Restorer : public QObject
 {
     Q_OBJECT
@@ -39,6 +40,9 @@ signals:
 
 private:
     void readDrive();
+    // The drives that execute the writes too (a group's children) must allow every value to be
+    // written: otherwise the restore is refused before anything is sent.
+    void checkReached(std::function<void()> then);
     void writeNext();
     void readBack();
     void stopRemaining(RestorePlan::Outcome outcome, const QString& reason);

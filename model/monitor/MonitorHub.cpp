@@ -1,5 +1,6 @@
 #include "monitor/MonitorHub.h"
 
+#include "ModbusClient.h"
 #include "ModelLog.h"
 #include "bus/BusDrives.h"
 #include "session/DeviceSession.h"
@@ -35,6 +36,14 @@ MonitorHub::MonitorHub(BusDrives* drives, QObject* parent)
     connect(drives, &BusDrives::driveAdded, this, &MonitorHub::identified);
     connect(drives, &BusDrives::driveChanged, this, &MonitorHub::identified);
     connect(drives, &BusDrives::linkChanged, this, &MonitorHub::linkChanged);
+    if (drives->client())
+        connect(drives->client(), &ModbusClient::pollingHeldChanged, this,
+                &MonitorHub::heldChanged);
+}
+
+bool MonitorHub::isHeld() const
+{
+    return m_drives->client() && m_drives->client()->isPollingHeld();
 }
 
 // A drive identified again may have a new session: the old monitor would poll a dead one.
@@ -304,10 +313,11 @@ Freshness::State MonitorHub::freshness(int slave, const QDateTime& now) const
     const auto it = m_list.find(slave);
     if (it == m_list.end() || !it->second->latest)
         return Freshness::State::None;
-    // A drive that failed its last polls does not answer, however recent its last value.
+    // A drive that failed its last polls does not answer, however recent its last value; a
+    // value not being polled (paused, or waiting for a scan) is not live either.
     const bool answers = it->second->stats.errorsInRow < 2;
     return Freshness::of(it->second->latest->timestamp, now, m_intervalMs,
-                         m_drives->linkUp() && answers && !m_paused);
+                         m_drives->linkUp() && answers && !m_paused && !isHeld());
 }
 
 DeviceMonitor* MonitorHub::monitor(int slave) const

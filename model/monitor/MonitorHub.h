@@ -76,6 +76,9 @@ public:
     // Stops and resumes every drive's polling (the views keep what they have).
     void setPaused(bool paused);
     bool isPaused() const { return m_paused; }
+    // Polling waits for a bus scan, which holds the bus (ModbusClient::holdPolling); the
+    // values shown age meanwhile.
+    bool isHeld() const;
 
     std::optional<MonitorSample> latest(int slave) const;
     const TrendHistory* history(int slave) const;
@@ -96,6 +99,7 @@ signals:
     void watchedChanged();
     void intervalChanged(int ms);
     void pausedChanged(bool paused);
+    void heldChanged(bool held);
     // The link went down or up: every drive's values changed freshness at once.
     void linkChanged(bool up);
 

@@ -15,6 +15,24 @@ QString CodeEntry::clearedByText(const QString& reset)
     return QCoreApplication::translate("opentop::CodeEntry", "—");
 }
 
+QString CodeEntry::explained() const
+{
+    const QString what = panel.isEmpty() ? name : panel + QLatin1Char(' ') + name;
+    QString text =
+        cause.isEmpty()
+            ? what
+            : QCoreApplication::translate("opentop::CodeEntry", "%1: %2").arg(what, cause);
+    if (!remedy.isEmpty()) {
+        // Remedies are lists ("A; B"): the message ends it as a sentence.
+        const QString ends = QStringLiteral(".!?\u3002\uFF01\uFF1F");
+        text += QLatin1Char(' ') +
+                QCoreApplication::translate("opentop::CodeEntry", "What to do: %1").arg(remedy);
+        if (!ends.contains(text.back()))
+            text += QLatin1Char('.');
+    }
+    return text;
+}
+
 const CodeEntry* CodeTable::find(qint64 code) const
 {
     for (const CodeEntry& e : entries) {

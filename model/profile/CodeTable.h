@@ -21,6 +21,9 @@ struct CodeEntry
 
     // How a code is cleared, for people: "Alarm-Reset", "power cycle", "by itself".
     static QString clearedByText(const QString& reset);
+    // The code with what it means and what to do, as one text for a message: "E2h Cannot
+    // execute command: <cause> What to do: <remedy>" (the profile's words, translated).
+    QString explained() const;
 };
 
 struct CodeTable

@@ -232,6 +232,7 @@ void RunControl::sendCommand(DeviceSession* session, const Plan& p, Done done)
                        o.ok = w.ok;
                        o.error = w.error;
                        o.deviceError = w.deviceError;
+                       o.explanation = w.explanation; // what the device's code means
                        if (w.ok) {
                            done(o);
                        } else if (!w.sent) {
@@ -260,9 +261,11 @@ void RunControl::explainRefusal(DeviceSession* session, Outcome o, Done done)
                 return r.value.valid ? std::optional<double>(r.value.raw) : std::nullopt;
             });
         if (active.value_or(false))
-            o.explanation = tr("An alarm is active: the drive refuses to run until it is cleared. "
-                               "See opentop-cli alarms %1, then alarms %1 --reset --yes.")
-                                .arg(session->slave());
+            o.explanation =
+                tr("An alarm is active: the drive refuses to run until it is cleared. "
+                   "See opentop-cli alarms %1, then alarms %1 --reset --yes.")
+                    .arg(session->slave()) +
+                (o.explanation.isEmpty() ? QString() : QLatin1Char('\n') + o.explanation);
         done(o);
     });
 }

@@ -133,7 +133,7 @@ void StartPreview::readGroups(const std::shared_ptr<Job>& job)
         for (int child : job->result.alsoReaches)
             job->result.alsoReachesNames << DriveName::listed(child, m_drives->name(child));
         job->result.reach = job->groups.reachText(job->result.slave);
-        job->done(job->result);
+        readFollowers(job);
         return;
     }
     const int slave = job->groupQueue.takeFirst();
@@ -153,6 +153,25 @@ void StartPreview::readGroups(const std::shared_ptr<Job>& job)
         else if (slave != job->result.slave)
             job->result.unread << tr("communication group of %1").arg(slave);
         self->readGroups(job);
+    });
+}
+
+void StartPreview::readFollowers(const std::shared_ptr<Job>& job)
+{
+    QVector<DeviceSession*> children;
+    for (int child : job->result.alsoReaches)
+        if (DeviceSession* session = m_drives->session(child))
+            children << session;
+    if (children.isEmpty()) {
+        job->done(job->result);
+        return;
+    }
+    QPointer<StartPreview> self(this);
+    GroupFollowers::readBefore(children, [self, job](const QVector<GroupFollowers::Drive>& d) {
+        if (!self)
+            return;
+        job->result.followers = d;
+        job->done(job->result);
     });
 }
 
@@ -178,6 +197,7 @@ QString StartPreview::Result::text() const
                      .arg(alsoReachesNames.isEmpty() ? BusGroups::listText(alsoReaches)
                                                      : alsoReachesNames.join(QStringLiteral(", ")),
                           reach);
+    lines += GroupFollowers::beforeLines(followers);
     if (!unread.isEmpty())
         lines << tr("Not read: %1.").arg(unread.join(QStringLiteral(", ")));
     return lines.join(QLatin1Char('\n'));

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "run/GroupFollowers.h"
+
 #include <QObject>
 #include <QStringList>
 #include <QVector>
@@ -13,7 +15,8 @@ class BusDrives;
 // What a start of a drive will do, read from the drives before it is asked for: which running
 // data (SPno) is selected, its speed and direction as the drive holds them, a deceleration the
 // manual advises against (RunningData), and the other drives the start also reaches through
-// their communication group (BusGroups, the groups read now, not assumed).
+// their communication group (BusGroups, the groups read now, not assumed), each with whether it
+// follows the start (GroupFollowers: its control priority and alarm, read now).
 class StartPreview : public QObject
 {
     Q_OBJECT
@@ -28,9 +31,10 @@ public:
         QString warning; // the deceleration advice, or empty
         QString drive;   // "1 (Infeed conveyor 3)": the number and the machine's name
         QVector<int> alsoReaches;
-        QStringList alsoReachesNames; // the same, named as `drive`
-        QString reach;                // BusGroups::reachText
-        QStringList unread;           // labels of what could not be read
+        QStringList alsoReachesNames;             // the same, named as `drive`
+        QString reach;                            // BusGroups::reachText
+        QVector<GroupFollowers::Drive> followers; // the drives reached: do they follow?
+        QStringList unread;                       // labels of what could not be read
         // The lines of the start confirmation.
         QString text() const;
         // The whole start question; `speedCommand`: a speed set point that starts the motor
@@ -51,6 +55,7 @@ private:
     void readSelection(const std::shared_ptr<Job>& job);
     void readSpno(const std::shared_ptr<Job>& job);
     void readGroups(const std::shared_ptr<Job>& job);
+    void readFollowers(const std::shared_ptr<Job>& job);
 
     BusDrives* m_drives;
 };

@@ -66,6 +66,9 @@ QString DeviceInfo::stateText(State state)
                                            "garbled replies (duplicate machine number?)");
     case State::Unidentified:
         return QCoreApplication::translate("opentop::DeviceInfo", "unknown device");
+    case State::IdentifyFailed:
+        return QCoreApplication::translate("opentop::DeviceInfo",
+                                           "answered, identification failed");
     }
     return QString();
 }

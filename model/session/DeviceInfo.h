@@ -18,6 +18,9 @@ struct DeviceInfo
         Absent,       // no answer
         Garbled,      // answered with corrupt frames: two drives with one machine number?
         Unidentified, // answered, but no profile matches
+        // Answered (an exception to one family's read, a late reply), but the identification
+        // read was never answered in time, also when asked again: there, but not known as what.
+        IdentifyFailed,
     };
 
     int slave = 0;

@@ -116,10 +116,21 @@ QString DeviceParameters::setPending(const QString& name, const QString& text)
         revert(name); // typing the device's own value back is no edit
         return QString();
     }
+    // The drives that execute this drive's writes too (a group's children) must allow it.
+    if (const QString refused = m_session->reachedProblem(name, encoded.registers);
+        !refused.isEmpty()) {
+        it->pendingText = text.trimmed();
+        it->pendingRegisters.clear();
+        it->state = State::Invalid;
+        it->message = refused;
+        emit entryChanged(name);
+        return refused;
+    }
     it->pendingText = text.trimmed();
     it->pendingRegisters = encoded.registers;
     it->state = State::Pending;
     it->message.clear();
+    it->notVerified.clear();
     emit entryChanged(name);
     // Edits whose allowed values depend on this one are checked again: they may become invalid,
     // or valid again.
@@ -145,6 +156,7 @@ void DeviceParameters::revert(const QString& name)
     it->pendingText.clear();
     it->pendingRegisters.clear();
     it->message.clear();
+    it->notVerified.clear();
     it->state = it->device.valid ? State::Clean : State::Unread;
     emit entryChanged(name);
 }
@@ -237,6 +249,46 @@ QStringList DeviceParameters::invalidSummary(const QStringList& names) const
     return lines;
 }
 
+QStringList DeviceParameters::failedSummary(const QStringList& names) const
+{
+    QStringList lines;
+    for (const ParameterMeta& m : profile().parameters) {
+        const auto it = m_entries.constFind(m.name);
+        if (it != m_entries.cend() && it->state == State::Failed && !it->message.isEmpty() &&
+            (names.isEmpty() || names.contains(m.name)))
+            lines << tr("%1: %2").arg(m.label, problemText(m.name));
+    }
+    return lines;
+}
+
+QStringList DeviceParameters::notVerifiedSummary(const QStringList& names) const
+{
+    QStringList lines;
+    for (const ParameterMeta& m : profile().parameters) {
+        const auto it = m_entries.constFind(m.name);
+        if (it != m_entries.cend() && !it->notVerified.isEmpty() &&
+            (names.isEmpty() || names.contains(m.name)))
+            lines << tr("%1: %2").arg(m.label, it->notVerified);
+    }
+    return lines;
+}
+
+QString DeviceParameters::writeResultText(const QStringList& names, int failed, bool* problem) const
+{
+    const QStringList unverified = notVerifiedSummary(names);
+    *problem = failed > 0 || !unverified.isEmpty();
+    QStringList lines;
+    if (failed > 0)
+        lines << tr("%n write(s) failed: %1", nullptr, failed)
+                     .arg(failedSummary(names).join(QLatin1Char(' ')));
+    if (!unverified.isEmpty())
+        lines << tr("Written, but not verified on every drive it reached: %1")
+                     .arg(unverified.join(QLatin1Char(' ')));
+    if (lines.isEmpty())
+        return tr("%n value(s) written and verified", nullptr, int(names.size()));
+    return lines.join(QLatin1Char('\n'));
+}
+
 QStringList DeviceParameters::orderForWrite(QStringList names) const
 {
     // A stable order in which every parameter comes after the ones it depends on.
@@ -299,6 +351,7 @@ void DeviceParameters::writeNext(std::shared_ptr<WriteState> state)
     m_session->write(name, m_entries.value(name).pendingText, options,
                      [this, name, state](const DeviceSession::Outcome& o) {
                          Entry& e = m_entries[name];
+                         e.notVerified = o.ok ? o.notVerified : QString();
                          if (o.ok) {
                              e.pendingText.clear();
                              e.pendingRegisters.clear();
@@ -308,7 +361,10 @@ void DeviceParameters::writeNext(std::shared_ptr<WriteState> state)
                                  e.device = o.value;
                          } else {
                              e.state = State::Failed;
-                             e.message = o.error;
+                             // What a device's error code means goes with it.
+                             e.message = o.explanation.isEmpty()
+                                             ? o.error
+                                             : o.error + QLatin1Char('\n') + o.explanation;
                              ++state->failed;
                          }
                          emit entryChanged(name);

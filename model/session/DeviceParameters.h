@@ -27,8 +27,8 @@ public:
         Pending, // edited, not written
         Writing, // on its way
         Failed,  // the last write failed or read back differently (message says why)
-        Invalid, // edited, but the text is refused (message says what is allowed); it is kept
-                 // so that it can be corrected or reverted, and nothing is written while it is
+        Invalid, // edited, refused (message says what is allowed); kept to be corrected or
+                 // reverted, and nothing is written while it is
     };
 
     struct Entry
@@ -38,7 +38,8 @@ public:
         QString pendingText; // the user's edit as typed (engineering units or label)
         QVector<quint16> pendingRegisters;
         State state = State::Unread;
-        QString message; // why a write failed; why a read failed
+        QString message;     // why a write failed; why a read failed
+        QString notVerified; // held here, not verified on every drive reached: which and why
     };
 
     explicit DeviceParameters(DeviceSession* session, QObject* parent = nullptr);
@@ -67,6 +68,15 @@ public:
     // What is wrong with the invalid edits among `names`, one line each, named by label:
     // "SPno2 speed: 5000 r/min is not allowed; allowed: 0 or 250–3000 r/min".
     QStringList invalidSummary(const QStringList& names = {}) const;
+    // The failed writes among `names` (all when empty), one line each, named by label.
+    QStringList failedSummary(const QStringList& names = {}) const;
+    // The writes among `names` (all when empty) held by the drive but not verified on every
+    // drive they reached, one line each, named by label.
+    QStringList notVerifiedSummary(const QStringList& names = {}) const;
+    // What a write of `names` came to, for a status line: "2 values written and verified", or
+    // which failed and which were not verified on every drive they reached, each saying why;
+    // *problem is set when not everything was written and verified.
+    QString writeResultText(const QStringList& names, int failed, bool* problem) const;
     // The warning for the value a field shows (the pending edit, else the drive's value) when it
     // is allowed but outside the profile's recommended range (ValueCodec::recommendationWarning),
     // without the parameter's name in front; empty otherwise.

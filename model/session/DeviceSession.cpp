@@ -1,35 +1,25 @@
 #include "session/DeviceSession.h"
 
-#include "session/DependentValues.h"
-
 #include "ModbusClient.h"
 #include "profile/ValueCodec.h"
-#include "session/ReadPlanner.h"
+#include "session/BlockReader.h"
+#include "session/BlockWriter.h"
+#include "session/DependentValues.h"
+#include "session/DeviceRefusal.h"
+#include "session/ReachedDrives.h"
 
 #include <utility>
 
 namespace opentop {
 
-namespace {
-
-ModbusRequest readRequest(int slave, const ParameterMeta& meta)
+QString DeviceSession::reachedProblem(const QString& name, const QVector<quint16>& registers) const
 {
-    return meta.readFunction == 4
-               ? ModbusRequest::readInput(quint8(slave), meta.address, quint16(meta.registerCount))
-               : ModbusRequest::readHolding(quint8(slave), meta.address,
-                                            quint16(meta.registerCount));
+    const ParameterMeta* meta = m_profile.parameter(name);
+    if (!meta || !m_reach)
+        return QString();
+    return ReachedDrives(const_cast<DeviceSession*>(this), reachedDrives())
+        .problem(*meta, registers, {}, false);
 }
-
-const ParameterMeta* commErrorParameter(const Profile& profile)
-{
-    for (const ParameterMeta& p : profile.parameters) {
-        if (p.codeTable == QLatin1String("comm_error") && p.isReadable())
-            return &p;
-    }
-    return nullptr;
-}
-
-} // namespace
 
 DeviceSession::DeviceSession(ModbusClient* client, const Profile& profile, int slave,
                              const QString& variant, QObject* parent)
@@ -104,7 +94,7 @@ void DeviceSession::read(const QString& name, Done done)
         return;
     }
     outcome.sent = true;
-    m_client->submit(readRequest(m_slave, *meta), this,
+    m_client->submit(BlockReader::requestFor(m_slave, *meta), this,
                      [this, meta, outcome, done](const ModbusResult& r) mutable {
                          if (!r.ok()) {
                              explainFailure(r, outcome, done);
@@ -117,25 +107,6 @@ void DeviceSession::read(const QString& name, Done done)
                          done(outcome);
                      });
 }
-
-namespace {
-
-// Blocks of one readMany queued on the bus at a time: the next is waiting when one completes,
-// so the worker goes on at once instead of waiting for this thread to hand it over. Two keep
-// that true and leave room for user requests to overtake.
-constexpr int kBlocksInFlight = 2;
-
-} // namespace
-
-struct DeviceSession::ManyState
-{
-    QVector<ReadBlockPlan> queue;
-    int inFlight = 0;
-    bool finished = false;
-    ReadManyOutcome outcome;
-    ManyDone done;
-    ModbusRequest::Priority priority = ModbusRequest::Priority::Normal;
-};
 
 void DeviceSession::acceptIdentification(const QVector<quint16>& identifyRegisters)
 {
@@ -153,75 +124,7 @@ void DeviceSession::acceptIdentification(const QVector<quint16>& identifyRegiste
 void DeviceSession::readMany(const QStringList& names, ManyDone done,
                              ModbusRequest::Priority priority)
 {
-    auto state = std::make_shared<ManyState>();
-    state->priority = priority;
-    state->done = std::move(done);
-    state->outcome.order = names;
-    QVector<const ParameterMeta*> metas;
-    for (const QString& name : names) {
-        Outcome o;
-        const ParameterMeta* meta = lookup(name, &o);
-        if (meta && !meta->isReadable())
-            o.error = tr("%1 cannot be read (it is a write-only command)").arg(name);
-        if (!o.error.isEmpty()) {
-            state->outcome.results.insert(name, o);
-            ++state->outcome.failed;
-            continue;
-        }
-        metas << meta;
-    }
-    state->queue = ReadPlanner::plan(m_profile, metas);
-    nextBlock(state);
-}
-
-void DeviceSession::nextBlock(std::shared_ptr<ManyState> state)
-{
-    if (state->queue.isEmpty() && state->inFlight == 0) {
-        if (!std::exchange(state->finished, true))
-            state->done(state->outcome);
-        return;
-    }
-    while (state->inFlight < kBlocksInFlight && !state->queue.isEmpty())
-        submitBlock(state, state->queue.takeFirst());
-}
-
-void DeviceSession::submitBlock(std::shared_ptr<ManyState> state, const ReadBlockPlan& plan)
-{
-    ModbusRequest request =
-        plan.function == 4 ? ModbusRequest::readInput(quint8(m_slave), plan.address, plan.count)
-                           : ModbusRequest::readHolding(quint8(m_slave), plan.address, plan.count);
-    request.priority = state->priority;
-    ++state->outcome.requests;
-    ++state->inFlight;
-    m_client->submit(request, this, [this, plan, state](const ModbusResult& r) {
-        --state->inFlight;
-        if (!r.ok() && r.error == ModbusError::Exception && plan.parameters.size() > 1) {
-            // The device refuses the block: ask for each parameter on its own.
-            const QVector<ReadBlockPlan> singles = ReadPlanner::singles(plan.parameters);
-            for (int i = singles.size() - 1; i >= 0; --i)
-                state->queue.prepend(singles[i]);
-            nextBlock(state);
-            return;
-        }
-        for (const ParameterMeta* meta : plan.parameters) {
-            Outcome o;
-            o.parameter = meta->name;
-            o.sent = true;
-            if (!r.ok()) {
-                o.error = r.errorText();
-                ++state->outcome.failed;
-            } else {
-                const QVector<quint16> regs =
-                    r.registers.mid(meta->address - plan.address, meta->registerCount);
-                acceptRegisters(meta->name, regs);
-                o.value = ValueCodec::decode(*meta, regs, context());
-                o.ok = o.value.valid;
-                o.error = o.value.error;
-            }
-            state->outcome.results.insert(meta->name, o);
-        }
-        nextBlock(state);
-    });
+    BlockReader::read(this, names, std::move(done), priority);
 }
 
 void DeviceSession::ensureControllingValues(const ParameterMeta& meta,
@@ -292,7 +195,20 @@ void DeviceSession::write(const QString& name, const QString& text, const WriteO
                 done(outcome);
                 return;
             }
-            send(meta, registers, options, outcome, done);
+            // The drives that execute it too must allow it as well, by their own profile,
+            // variant and values; nothing is sent before. They are read back after it.
+            const ReachedDrives reached(this, reachedDrives());
+            reached.check(*meta, registers, options.companions,
+                          [this, meta, registers, options, outcome, done,
+                           reached](const QString& refused) mutable {
+                              if (!refused.isEmpty()) {
+                                  outcome.error = refused; // nothing is sent
+                                  done(outcome);
+                                  return;
+                              }
+                              send(meta, registers, options, outcome,
+                                   reached.verifying(meta, registers, done));
+                          });
         });
     });
 }
@@ -318,41 +234,17 @@ void DeviceSession::ensureCached(QStringList names, std::function<void(QString)>
 void DeviceSession::send(const ParameterMeta* meta, const QVector<quint16>& registers,
                          const WriteOptions& options, Outcome outcome, Done done, int busyRetries)
 {
-    const BlockWrite& block = meta->writeBlock;
-    if (!block.isSet()) {
-        const ModbusRequest request =
-            meta->writeFunction == 16
-                ? ModbusRequest::writeMultiple(quint8(m_slave), meta->address, registers)
-                : ModbusRequest::writeSingle(quint8(m_slave), meta->address, registers.first());
-        submitWrite(meta, request, registers, options, outcome, done, busyRetries);
-        return;
-    }
-    // The device wants this setting in a larger frame (the DC controller's configuration and
-    // GPIO writes, which also store): read the rest of the block so it keeps its values.
-    m_client->submit(
-        ModbusRequest::readHolding(quint8(m_slave), block.address, quint16(block.readCount())),
-        this,
-        [this, meta, registers, options, outcome, done,
-         busyRetries](const ModbusResult& r) mutable {
-            const BlockWrite& b = meta->writeBlock;
-            if (!r.ok() || r.registers.size() != b.readCount()) {
-                outcome.error = tr("not written: %1 is written together with 0x%2–0x%3, and "
-                                   "reading those first failed: %4")
-                                    .arg(nameFor(meta->name))
-                                    .arg(b.address, 4, 16, QLatin1Char('0'))
-                                    .arg(b.address + b.count - 1, 4, 16, QLatin1Char('0'))
-                                    .arg(r.ok() ? tr("short reply") : r.errorText());
-                done(outcome);
-                return;
-            }
-            QVector<quint16> frame = r.registers;
-            const int at = meta->address - b.address;
-            for (int i = 0; i < registers.size(); ++i)
-                frame[at + i] = registers.at(i);
-            frame += b.tail;
-            submitWrite(meta, ModbusRequest::writeMultiple(quint8(m_slave), b.address, frame),
-                        registers, options, outcome, done, busyRetries);
-        });
+    BlockWriter::frame(this, *meta, registers,
+                       [this, meta, registers, options, outcome, done,
+                        busyRetries](const ModbusRequest& request, const QString& error) mutable {
+                           if (!error.isEmpty()) {
+                               outcome.error = error; // nothing was sent
+                               done(outcome);
+                               return;
+                           }
+                           submitWrite(meta, request, registers, options, outcome, done,
+                                       busyRetries);
+                       });
 }
 
 void DeviceSession::submitWrite(const ParameterMeta* meta, const ModbusRequest& request,
@@ -393,7 +285,7 @@ void DeviceSession::verifyWrite(const ParameterMeta& meta, const QVector<quint16
                                 Outcome outcome, Done done)
 {
     m_client->submit(
-        readRequest(m_slave, meta), this,
+        BlockReader::requestFor(m_slave, meta), this,
         [this, &meta, written, outcome, done](const ModbusResult& r) mutable {
             if (!r.ok()) {
                 outcome.error = tr("written, but reading it back failed: %1").arg(r.errorText());
@@ -422,30 +314,20 @@ void DeviceSession::explainFailure(const ModbusResult& result, Outcome outcome, 
                                    std::function<void()> onBusy)
 {
     outcome.error = result.errorText();
-    const ParameterMeta* errorRegister = commErrorParameter(m_profile);
-    if (result.error != ModbusError::Exception || !errorRegister) {
-        done(outcome);
-        return;
-    }
-    // The DBU leaves the reason for an exception in its communication error register.
-    m_client->submit(readRequest(m_slave, *errorRegister), this,
-                     [this, errorRegister, outcome, done, onBusy](const ModbusResult& r) mutable {
-                         if (r.ok() && !r.registers.isEmpty()) {
-                             const CodeTable* table = m_profile.codeTable(errorRegister->codeTable);
-                             const qint64 code = r.registers.first();
-                             const CodeEntry* entry = table ? table->find(code) : nullptr;
-                             if (entry && entry->retry && onBusy) {
-                                 onBusy();
-                                 return;
-                             }
-                             const QString hex =
-                                 QString::number(code, 16).toUpper() + QLatin1Char('h');
-                             outcome.deviceError = entry ? hex + QLatin1Char(' ') + entry->name
-                                                         : tr("error code %1").arg(hex);
-                             outcome.error += QStringLiteral(" — ") + outcome.deviceError;
-                         }
-                         done(outcome);
-                     });
+    DeviceRefusal::read(m_client, this, m_profile, m_slave, result,
+                        [outcome, done, onBusy](const DeviceRefusal::Reason& why) mutable {
+                            if (why.retry && onBusy) {
+                                onBusy();
+                                return;
+                            }
+                            if (!why.code.isEmpty()) {
+                                outcome.deviceError = why.code;
+                                outcome.error += QStringLiteral(" — ") + why.code;
+                            }
+                            if (why.entry)
+                                outcome.explanation = why.entry->explained();
+                            done(outcome);
+                        });
 }
 
 } // namespace opentop

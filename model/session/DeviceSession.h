@@ -4,16 +4,17 @@
 #include "profile/ParamValue.h"
 #include "profile/Profile.h"
 #include "profile/ValueContext.h"
+#include "session/GroupReach.h"
+#include "session/ReachedResult.h"
 
 #include <QHash>
 #include <QObject>
+#include <QPointer>
 #include <QVector>
 #include <functional>
 #include <memory>
 
 namespace opentop {
-
-struct ReadBlockPlan;
 
 class ModbusClient;
 struct ModbusResult;
@@ -22,8 +23,13 @@ struct ModbusResult;
 // validated against the profile before any frame is built, writes read back and verified, and
 // device errors explained (for the DBU, the communication error register is read and decoded).
 //
-// Values read from the device update the cache and emit valueUpdated(); they never cause a
-// write. Only write() sends values, and only ones the caller asked for.
+// Values read from the device update the cache and emit valueUpdated(), never a write: only
+// write() sends values, and only ones the caller asked for.
+//
+// A write reaches other drives too when they execute what is sent to this one (communication
+// group children, told by a GroupReach): each of them validates the value before anything is
+// sent, and each is read back afterwards (ReachedDrives); the write is verified only when every
+// drive it reached holds the value.
 class DeviceSession : public QObject
 {
     Q_OBJECT
@@ -35,16 +41,20 @@ public:
         ParamValue value;    // the value read (or read back after a write)
         QString error;       // what went wrong, for people
         QString deviceError; // decoded device error register, when there is one
-        // A value written although outside the profile's recommended range: the text naming
-        // that range (ValueCodec::recommendationWarning), for the caller to show. Set as soon as
-        // the value is accepted, whatever the write's result.
+        // What the device's error code means and what to do (the profile's words), when known.
+        QString explanation;
+        // Accepted but outside the recommended range: ValueCodec::recommendationWarning.
         QString warning;
         bool sent = false;     // whether anything reached the wire (false: refused before)
-        bool verified = false; // a write was read back and matched
-        bool mismatch = false; // a write was read back and differed
+        bool verified = false; // a write was read back and matched, on every drive it reached
+        bool mismatch = false; // a write was read back and differed (here or on a drive reached)
         // A write whose frame may have reached the drive but whose reply never came (the port
         // vanished, a timeout, a garbled reply): the drive may or may not hold the value.
         bool unconfirmed = false;
+        // The other drives the write reached (communication group children), each read back.
+        QVector<ReachedResult> reached;
+        // Written and held here, but not verified on every drive it reached: which, and why.
+        QString notVerified;
     };
     using Done = std::function<void(const Outcome&)>;
 
@@ -75,15 +85,25 @@ public:
     int slave() const { return m_slave; }
     QString variant() const { return m_variant; }
     void setVariant(const QString& variant) { m_variant = variant; }
-    // The name the user gave the machine ("Infeed conveyor 3", DriveName); empty: none.
-    QString machineName() const { return m_machineName; }
+    QString machineName() const { return m_machineName; } // "Infeed conveyor 3" (DriveName)
     void setMachineName(const QString& name) { m_machineName = name; }
-    // Whether messages name parameters by the profile's label (the program's windows) or by the
-    // internal name the command line types (the default).
+    // Messages name parameters by the profile's label (windows) or the internal name (default).
     void setLabelsInMessages(bool labels) { m_labelsInMessages = labels; }
     // A parameter as messages name it (see setLabelsInMessages).
     QString nameFor(const QString& parameter) const;
     ModbusClient* client() const { return m_client; }
+
+    // Who tells which other drives execute what is sent to this one (none: only this one).
+    void setGroupReach(GroupReach* reach) { m_reach = reach; }
+    // The other drives a frame to this one reaches, as the GroupReach knows them.
+    QVector<DeviceSession*> reachedDrives() const
+    {
+        return m_reach ? m_reach->reachedBy(m_slave) : QVector<DeviceSession*>();
+    }
+    // Why a drive that a write of `registers` to `name` also reaches would refuse it, naming it
+    // and what it allows; empty when all allow it or none is reached. With those drives' values
+    // as known: for checks before a question; write() checks again, reading what is missing.
+    QString reachedProblem(const QString& name, const QVector<quint16>& registers) const;
 
     // The variant and the cached raw values other parameters' allowed sets depend on.
     ValueContext context() const;
@@ -114,9 +134,7 @@ signals:
 
 private:
     const ParameterMeta* lookup(const QString& name, Outcome* outcome) const;
-    struct ManyState;
-    void nextBlock(std::shared_ptr<ManyState> state);
-    void submitBlock(std::shared_ptr<ManyState> state, const ReadBlockPlan& plan);
+    friend class BlockReader; // readMany's blocks name parameters as lookup() does
     void ensureControllingValues(const ParameterMeta& meta, std::function<void(QString)> then);
     // Reads those of `names` not cached yet; `then` gets the first failure, or nothing.
     void ensureCached(QStringList names, std::function<void(QString)> then);
@@ -142,6 +160,7 @@ private:
     QString m_machineName;
     bool m_labelsInMessages = false;
     QHash<QString, QVector<quint16>> m_cache;
+    QPointer<GroupReach> m_reach;
 };
 
 } // namespace opentop

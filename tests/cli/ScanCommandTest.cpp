@@ -99,6 +99,8 @@ TEST(ScanCommand, JsonDescribesTheScanAndEveryDevice)
                            QStringLiteral("switches"), QStringLiteral("variant")}));
     // A DBU's communication group, null when disabled.
     EXPECT_TRUE(dbu.value(QStringLiteral("group")).isNull());
+    // Answered at the port's own format: no per-drive line format.
+    EXPECT_EQ(dbu.value(QStringLiteral("line")).toString(), QString());
     EXPECT_EQ(dbu.value(QStringLiteral("slave")).toInt(), 2);
     EXPECT_EQ(dbu.value(QStringLiteral("hex")).toString(), QStringLiteral("02h"));
     EXPECT_EQ(dbu.value(QStringLiteral("switches")).toString(), QStringLiteral("SW1=0 SW2=2"));

@@ -107,6 +107,51 @@ TEST(ModbusClientTest, UserBeforeNormalBeforePollThenFifo)
     EXPECT_EQ(f.client->pendingCount(), 0);
 }
 
+TEST(ModbusClientTest, PollsWaitWhileTheBusIsHeldAndOtherRequestsGoOn)
+{
+    // A scan holds the bus: the poll queued before and the one queued during the hold stay in
+    // the queue, a user's request and a write still go, and the polls follow, in order, once
+    // the last of two nested holds is released.
+    MockClient f(echoDevice);
+    QVector<bool> heldChanges;
+    QObject::connect(f.client.get(), &ModbusClient::pollingHeldChanged,
+                     [&heldChanges](bool held) { heldChanges << held; });
+    f.client->holdPolling();
+    f.client->holdPolling();
+    EXPECT_TRUE(f.client->isPollingHeld());
+    int finished = 0;
+    QObject::connect(f.client.get(), &ModbusClient::finished, [&finished] { ++finished; });
+    auto submit = [&f](quint16 address, ModbusRequest::Priority priority) {
+        ModbusRequest r = ModbusRequest::readHolding(1, address, 1);
+        r.priority = priority;
+        return f.client->submit(r);
+    };
+    using P = ModbusRequest::Priority;
+    submit(1, P::Poll);
+    submit(2, P::User);
+    submit(3, P::Poll);
+    submit(4, P::Normal);
+    ASSERT_TRUE(waitUntil([&] { return finished == 2; }));
+    waitUntil([] { return false; }, 100); // the polls stay queued
+    EXPECT_EQ(finished, 2);
+    EXPECT_EQ(f.client->pendingCount(), 2);
+    f.client->releasePolling(); // one hold is left
+    waitUntil([] { return false; }, 100);
+    EXPECT_EQ(finished, 2);
+    f.client->releasePolling();
+    EXPECT_FALSE(f.client->isPollingHeld());
+    ASSERT_TRUE(waitUntil([&] { return finished == 4; }));
+    QVector<quint16> order;
+    for (const QByteArray& adu : f.mock->requests())
+        order << addressOf(adu);
+    EXPECT_EQ(order, QVector<quint16>({2, 4, 1, 3}));
+    EXPECT_EQ(heldChanges, QVector<bool>({true, false}));
+    // A release without a hold changes nothing.
+    f.client->releasePolling();
+    EXPECT_FALSE(f.client->isPollingHeld());
+    EXPECT_EQ(heldChanges.size(), 2);
+}
+
 TEST(ModbusClientTest, CancelRemovesOnlyQueuedRequests)
 {
     auto gate = std::make_shared<Gate>();

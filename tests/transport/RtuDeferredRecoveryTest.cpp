@@ -2,6 +2,10 @@
 // request to the same slave (or a broadcast), so that asking many absent machine numbers costs
 // one wait each, while a late reply is still never taken for another request's answer. At 1200
 // baud the quiet time after a one-register read is ceil(10.5 × 8.33) + 10 = 98 ms.
+// Any other request waits only while the timed-out request's reply could still be on the wire
+// (issue 24): until its longest reply (7 bytes: 58.3 ms) could have ended after the 50 ms wait,
+// plus the 3.5-character gap (29.2 ms), 137.5 ms after it was sent. A scan's probe after a probe
+// goes at once: the scan sees a collision and asks again.
 #include "RtuBackend.h"
 #include "RtuFrame.h"
 #include "TrafficLog.h"
@@ -37,9 +41,17 @@ Answer answer(quint8 slave, quint16 value, int delayMs = 0)
     return a;
 }
 
+// A scan's question to an address not asked before.
+ModbusRequest probe(quint8 slave)
+{
+    ModbusRequest r = ModbusRequest::readHolding(slave, 0, 1);
+    r.probe = true;
+    return r;
+}
+
 } // namespace
 
-TEST(RtuDeferredRecoveryTest, SilentTimeoutDoesNotDelayARequestToAnotherSlave)
+TEST(RtuDeferredRecoveryTest, SilentTimeoutDoesNotDelayAScanProbeOfAnotherSlave)
 {
     PtyDevice device;
     device.start([](const QByteArray& request) {
@@ -48,20 +60,78 @@ TEST(RtuDeferredRecoveryTest, SilentTimeoutDoesNotDelayARequestToAnotherSlave)
     TrafficLog log;
     auto backend = openBackend(device, &log);
     QThread::msleep(1100); // past the check of every reply that follows opening the port
-    EXPECT_EQ(backend->transact(ModbusRequest::readHolding(1, 0, 1), 50).error,
-              ModbusError::Timeout);
+    EXPECT_EQ(backend->transact(probe(1), 50).error, ModbusError::Timeout);
     QElapsedTimer timer;
     timer.start();
-    const ModbusResult r = backend->transact(ModbusRequest::readHolding(2, 0, 1), 300);
+    const ModbusResult r = backend->transact(probe(2), 300);
     ASSERT_EQ(r.error, ModbusError::Ok) << r.errorText().toStdString();
     EXPECT_EQ(r.registers, QVector<quint16>({22}));
-    EXPECT_LT(timer.elapsed(), 60); // not after the 98 ms quiet time
+    EXPECT_LT(timer.elapsed(), 60); // neither the 98 ms quiet time nor the held line
+}
+
+TEST(RtuDeferredRecoveryTest, AfterASilentTimeoutNoOtherRequestGoesOutWhileAReplyMayBeOnTheWire)
+{
+    // Slave 1 never answers; a poll of slave 2, a write and a scan's probe that follow a
+    // request that was not a probe each wait until slave 1's longest reply could have ended.
+    PtyDevice device;
+    device.start([](const QByteArray& request) {
+        if (quint8(request.at(0)) != 2)
+            return Answer();
+        Answer a;
+        a.bytes = request.at(1) == 0x06 ? request : RtuFrame::encodeReadReply(2, 0x03, {22});
+        return a;
+    });
+    TrafficLog log;
+    auto backend = openBackend(device, &log);
+    QThread::msleep(1100); // past the check of every reply that follows opening the port
+    ModbusRequest poll = ModbusRequest::readHolding(2, 0, 1);
+    poll.priority = ModbusRequest::Priority::Poll;
+    for (const ModbusRequest& next : {poll, ModbusRequest::writeSingle(2, 0, 5), probe(2)}) {
+        QElapsedTimer sent;
+        sent.start();
+        EXPECT_EQ(backend->transact(ModbusRequest::readHolding(1, 0, 1), 50).error,
+                  ModbusError::Timeout);
+        const ModbusResult r = backend->transact(next, 300);
+        ASSERT_EQ(r.error, ModbusError::Ok) << r.errorText().toStdString();
+        // Sent 137.5 ms after slave 1's request at the earliest; the reply took 8 more bytes
+        // each way at 1200 baud (no wire timing on a pty: a few ms).
+        EXPECT_GE(sent.elapsed(), 137) << next.describe().toStdString();
+        EXPECT_LT(sent.elapsed(), 250) << next.describe().toStdString();
+    }
+}
+
+TEST(RtuDeferredRecoveryTest, AReplyComingWhileTheLineIsHeldIsDiscardedAndNamed)
+{
+    // Slave 1's reply begins 40 ms after the 50 ms wait ended: the request to slave 2 waits
+    // for it instead of meeting it on the line, and its result names slave 1 (a scan asks it
+    // again). The wait ends once the line is quiet after it, before the held time is over.
+    PtyDevice device;
+    device.start([](const QByteArray& request) {
+        const quint8 slave = quint8(request.at(0));
+        return slave == 1 ? answer(1, 1111, 90) : answer(2, 2222);
+    });
+    TrafficLog log;
+    auto backend = openBackend(device, &log);
+    QElapsedTimer sent;
+    sent.start();
+    EXPECT_EQ(backend->transact(ModbusRequest::readHolding(1, 0, 1), 50).error,
+              ModbusError::Timeout);
+    const ModbusResult r = backend->transact(ModbusRequest::readHolding(2, 0, 1), 300);
+    ASSERT_EQ(r.error, ModbusError::Ok) << r.errorText().toStdString();
+    EXPECT_EQ(r.registers, QVector<quint16>({2222}));
+    EXPECT_EQ(r.lateReplyFrom, 1);
+    EXPECT_GE(sent.elapsed(), 90);
+    bool discarded = false;
+    for (const TrafficEntry& e : log.entries())
+        discarded |= e.error.contains(QStringLiteral("discarded")) &&
+                     e.bytes == RtuFrame::encodeReadReply(1, 0x03, {1111});
+    EXPECT_TRUE(discarded);
 }
 
 TEST(RtuDeferredRecoveryTest, LateReplyFromAnotherSlaveIsRejected)
 {
-    // Slave 1 answers 40 ms after the client gave up, while slave 2 is being asked: the late
-    // frame carries id 1 and must not pass for slave 2's answer.
+    // Slave 1 answers 40 ms after the scan's probe gave up, while the next probe (to slave 2)
+    // waits for its answer: the late frame carries id 1 and must not pass for slave 2's answer.
     PtyDevice device;
     device.start([](const QByteArray& request) {
         const quint8 slave = quint8(request.at(0));
@@ -69,9 +139,8 @@ TEST(RtuDeferredRecoveryTest, LateReplyFromAnotherSlaveIsRejected)
     });
     TrafficLog log;
     auto backend = openBackend(device, &log);
-    EXPECT_EQ(backend->transact(ModbusRequest::readHolding(1, 0, 1), 50).error,
-              ModbusError::Timeout);
-    ModbusResult r = backend->transact(ModbusRequest::readHolding(2, 0, 1), 300);
+    EXPECT_EQ(backend->transact(probe(1), 50).error, ModbusError::Timeout);
+    ModbusResult r = backend->transact(probe(2), 300);
     EXPECT_EQ(r.error, ModbusError::WrongSlave) << r.errorText().toStdString();
     EXPECT_FALSE(r.registers.contains(1111));
     // The rejection drained slave 2's own reply as well: the next answer is clean.
@@ -121,4 +190,29 @@ TEST(RtuDeferredRecoveryTest, BytesArrivingBeforeSendingAreDrainedFirst)
         discarded |= e.error.contains(QStringLiteral("discarded")) &&
                      e.bytes == RtuFrame::encodeReadReply(1, 0x03, {1111});
     EXPECT_TRUE(discarded);
+}
+
+TEST(RtuDeferredRecoveryTest, AGarbledFrameDiscardedBeforeARequestIsReportedWithIt)
+{
+    // Slave 1's reply comes 60 ms late and garbled (it met another request on the line): it
+    // is thrown away before the request to slave 2 goes out, and that request's result says
+    // so (a scan asks the addresses before again); it names no sender, for it has none.
+    PtyDevice device;
+    device.start([](const QByteArray& request) {
+        if (quint8(request.at(0)) == 2)
+            return answer(2, 2222);
+        Answer a = answer(1, 1111, 60);
+        a.bytes[a.bytes.size() - 1] = char(a.bytes.at(a.bytes.size() - 1) ^ 0xA5);
+        return a;
+    });
+    TrafficLog log;
+    auto backend = openBackend(device, &log);
+    EXPECT_EQ(backend->transact(probe(1), 50).error, ModbusError::Timeout);
+    QThread::msleep(40); // the wreck arrives
+    ModbusResult r = backend->transact(probe(2), 300);
+    ASSERT_EQ(r.error, ModbusError::Ok) << r.errorText().toStdString();
+    EXPECT_TRUE(r.discardedGarbled);
+    EXPECT_EQ(r.lateReplyFrom, -1);
+    r = backend->transact(probe(2), 300);
+    EXPECT_FALSE(r.discardedGarbled); // once
 }

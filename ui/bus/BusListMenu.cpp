@@ -4,9 +4,8 @@
 #include "bus/BusPanel.h"
 #include "bus/DriveLineDialog.h"
 #include "bus/DriveName.h"
-#include "profile/ProfileRegistry.h"
+#include "bus/VariantMenu.h"
 
-#include <QActionGroup>
 #include <QInputDialog>
 #include <QLineEdit>
 #include <QMenu>
@@ -25,7 +24,7 @@ QMenu* BusListMenu::menuFor(const QVector<int>& slaves, QWidget* parent)
     auto* menu = new QMenu(parent);
     if (slaves.isEmpty())
         return menu;
-    addVariants(menu, slaves);
+    VariantMenu::add(menu, m_drives, slaves);
     if (slaves.size() == 1) {
         QAction* name = menu->addAction(tr("&Name this machine…"));
         name->setObjectName(QStringLiteral("nameMachine"));
@@ -51,36 +50,6 @@ QMenu* BusListMenu::menuFor(const QVector<int>& slaves, QWidget* parent)
     });
     remove->setEnabled(!m_panel->isScanning());
     return menu;
-}
-
-void BusListMenu::addVariants(QMenu* menu, const QVector<int>& slaves)
-{
-    const DeviceInfo first = m_drives->info(slaves.first());
-    const Profile* profile = ProfileRegistry::builtIn().family(first.family);
-    // A variant applies to the selected drives of the same family.
-    QVector<int> sameFamily;
-    for (int s : slaves) {
-        if (m_drives->info(s).family == first.family &&
-            m_drives->info(s).state == DeviceInfo::State::Present)
-            sameFamily << s;
-    }
-    if (!profile || profile->variants.size() < 2 || sameFamily.isEmpty())
-        return;
-    QMenu* variants = menu->addMenu(tr("&Variant"));
-    variants->setToolTipsVisible(true);
-    auto* group = new QActionGroup(variants);
-    for (const ProfileVariant& v : profile->variants) {
-        QAction* a = variants->addAction(v.model);
-        a->setObjectName(v.id);
-        a->setToolTip(v.label);
-        a->setCheckable(true);
-        a->setChecked(first.variant == v.id);
-        group->addAction(a);
-        connect(a, &QAction::triggered, this, [this, sameFamily, id = v.id] {
-            for (int s : sameFamily)
-                m_drives->setVariant(s, id);
-        });
-    }
 }
 
 void BusListMenu::askName(int slave)

@@ -11,9 +11,10 @@ namespace opentop {
 class BusDrives;
 class BusPanel;
 
-// The bus list's context menu for the drives selected: their variant (where the bus does not
-// tell it), the machine's name (one drive), identify again, remove from the list. Naming asks
-// again, with the model's reason, until the name is taken or the user cancels.
+// The bus list's context menu for the drives selected: their variant (VariantMenu, where the
+// bus does not tell it), the machine's name (one drive), identify again, the line format, remove
+// from the list. Naming asks again, with the model's reason, until the name is taken or the user
+// cancels.
 class BusListMenu : public QObject
 {
     Q_OBJECT
@@ -30,8 +31,6 @@ signals:
     void message(const QString& text);
 
 private:
-    void addVariants(QMenu* menu, const QVector<int>& slaves);
-
     BusPanel* m_panel;
     BusDrives* m_drives;
 };

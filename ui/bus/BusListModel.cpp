@@ -71,6 +71,8 @@ QVariant BusListModel::headerData(int section, Qt::Orientation orientation, int 
     if (role == Qt::ToolTipRole && section == Switches)
         return tr("How each drive's machine number is set on its switches:\n%1")
             .arg(DeviceInfo::switchHelp());
+    if (role == Qt::ToolTipRole && section == MachineNumber)
+        return tr("Machine number: the drive's address on the bus (1–247)");
     if (role == Qt::ToolTipRole && section == Light)
         return tr("The drive's MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, "
                   "purple external interrupt, blue memory or communication error, grey no "
@@ -81,7 +83,7 @@ QVariant BusListModel::headerData(int section, Qt::Orientation orientation, int 
     case Light:
         return tr("LED");
     case MachineNumber:
-        return tr("Machine no.");
+        return tr("No."); // short: the list shows every column whole beside the pages
     case Switches:
         return tr("Address switches");
     case Family:
@@ -248,7 +250,8 @@ QVariant BusListModel::data(const QModelIndex& index, int role) const
                 return QBrush(kProblem);
             if (d.state == DeviceInfo::State::Present)
                 return QBrush(isStale(d.slave) ? StaleLook::grey() : kGood);
-            if (d.state == DeviceInfo::State::Absent)
+            if (d.state == DeviceInfo::State::Absent ||
+                d.state == DeviceInfo::State::IdentifyFailed)
                 return QBrush(kProblem);
         }
         return {};

@@ -110,8 +110,8 @@ BusPanel::BusPanel(BusDrives* drives, DriveStatusPoller* poller, QWidget* parent
     m_view->verticalHeader()->hide();
     m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_view->horizontalHeader()->setStretchLastSection(true);
-    // What one looks at first (which drive, what it is doing, who controls it) comes first, so
-    // that a narrow list on a laptop still shows it; the rest is a scroll away.
+    // What one looks at first (which drive, what it is doing, who controls it) comes first;
+    // the window divides itself so that every column shows whole (WindowGeometry::divide).
     QHeaderView* header = m_view->horizontalHeader();
     int to = BusListModel::MachineNumber + 1;
     for (int column :
@@ -121,13 +121,6 @@ BusPanel::BusPanel(BusDrives* drives, DriveStatusPoller* poller, QWidget* parent
     header->setSectionResizeMode(BusListModel::Name, QHeaderView::Interactive);
     header->resizeSection(BusListModel::Name,
                           m_view->fontMetrics().horizontalAdvance(QStringLiteral("Infeed 3")) + 20);
-    // A model name is short; "DBU — variant unknown" is shortened (the tooltip says why), so
-    // that the state and the priority stay in sight.
-    header->setSectionResizeMode(BusListModel::Model, QHeaderView::Interactive);
-    header->resizeSection(
-        BusListModel::Model,
-        std::max(header->sectionSizeHint(BusListModel::Model),
-                 m_view->fontMetrics().horizontalAdvance(QStringLiteral("DBU400-D4")) + 20));
     m_view->setTextElideMode(Qt::ElideRight);
     m_view->setWordWrap(false); // one line a drive, shortened where narrow
     m_view->setAccessibleName(tr("Drives on the bus"));
@@ -204,15 +197,22 @@ void BusPanel::startScan(int from, int to)
         m_progress->setValue(done);
         m_progress->setFormat(tr("%v of %m (machine number %1)").arg(slave));
     });
+    connect(m_scanner, &BusScanner::identificationRetry, this,
+            [this](int slave, int attempt, int attempts) {
+                showMessage(tr("Machine number %1 answered, identification failed: retrying "
+                               "(%2 of %3)… Polling waits until the scan is over.")
+                                .arg(slave)
+                                .arg(attempt)
+                                .arg(attempts),
+                            true);
+            });
     connect(m_scanner, &BusScanner::finished, this, &BusPanel::onScanFinished);
-    // The scan's short waits assume a quiet line: background polling pauses meanwhile.
-    m_resumePoller = m_poller && m_poller->isActive();
-    if (m_resumePoller)
-        m_poller->stop();
     m_progress->setRange(0, to - from + 1);
     m_progress->setValue(0);
     m_progress->setFormat(tr("%v of %m"));
-    showMessage(tr("Scanning machine numbers %1–%2 on %3, %4 ms each…")
+    // The scanner holds the bus: polling waits, and the values shown age meanwhile.
+    showMessage(tr("Scanning machine numbers %1–%2 on %3, %4 ms each… Polling waits until the "
+                   "scan is over.")
                     .arg(from)
                     .arg(to)
                     .arg(m_drives->client()->describe())
@@ -239,7 +239,8 @@ void BusPanel::onScanFinished()
 {
     const int from = m_scanner->from();
     const int scanned = m_scanner->scannedCount();
-    const int found = int(m_scanner->devices().size());
+    const QVector<int> unidentified = BusScanner::unidentified(m_scanner->devices());
+    const int found = int(m_scanner->devices().size() - unidentified.size());
     // Drives listed earlier that no longer answer in the range asked are shown as such.
     QVector<int> answered;
     for (const DeviceInfo& d : m_scanner->devices())
@@ -283,12 +284,17 @@ void BusPanel::onScanFinished()
         else if (!missed.isEmpty()) // a drive of its own format is added with it
             text += QLatin1Char(' ') + missed + QLatin1Char(' ') +
                     tr("If one is on this bus, add it with Add drive and its line format.");
-        showMessage(text, found == 0);
+        // Something answered there but never said what it is: not a drive of the list, and
+        // not nothing either.
+        for (int slave : unidentified)
+            text += QLatin1Char(' ') +
+                    tr("Machine number %1 answered, but its identification failed, also when "
+                       "asked again: add it by hand with Add drive…, or check its line settings "
+                       "and scan again.")
+                        .arg(slave);
+        showMessage(text, found == 0 || !unidentified.isEmpty());
         m_fixedLine->setVisible(offer);
     }
-    if (m_resumePoller && m_poller)
-        m_poller->start();
-    m_resumePoller = false;
     updateButtons();
     emit scanFinished();
 }

@@ -33,8 +33,8 @@ public:
     BusPanel(BusDrives* drives, DriveStatusPoller* poller, QWidget* parent = nullptr);
     ~BusPanel() override;
 
-    // Asks machine numbers from..to; drives appear in the list as they are found. The status
-    // poller pauses meanwhile so that the scan has the line to itself.
+    // Asks machine numbers from..to; drives appear in the list as they are found. Polling
+    // waits meanwhile (the scanner holds the bus), and the message says so.
     void startScan(int from, int to);
     bool isScanning() const;
     // Stops between transactions; the message says how far the scan got.
@@ -86,7 +86,6 @@ private:
     QLabel* m_message;
     QTableView* m_view;
     BusListMenu* m_menu;
-    bool m_resumePoller = false;
     int m_adding = 0;
 };
 

@@ -8,6 +8,7 @@
 #include "files/BackupFile.h"
 #include "files/BackupReader.h"
 #include "profile/ProfileRegistry.h"
+#include "widgets/ClearOfStopAll.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -98,6 +99,7 @@ RecipeEditor::RecipeEditor(std::function<BusDrives*()> drives, QWidget* parent)
     connect(m_problems, &QListWidget::itemActivated, this,
             [this](QListWidgetItem* item) { showProblem(item->data(Qt::UserRole).toString()); });
     resize(1000, 720);
+    ClearOfStopAll::keep(this);
     setDocument({});
 }
 

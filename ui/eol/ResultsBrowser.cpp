@@ -8,6 +8,7 @@
 #include "eol/ResultUrl.h"
 #include "eol/ResultWriter.h"
 #include "eol/YieldReport.h"
+#include "widgets/ClearOfStopAll.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -100,6 +101,7 @@ ResultsBrowser::ResultsBrowser(const QString& url, QWidget* parent)
     connect(m_certificate, &QPushButton::clicked, this, &ResultsBrowser::chooseCertificate);
     connect(m_table, &QTableWidget::itemSelectionChanged, this, &ResultsBrowser::showSelected);
     resize(1100, 700);
+    ClearOfStopAll::keep(this);
 
     QString text = url;
     if (text.trimmed().isEmpty())

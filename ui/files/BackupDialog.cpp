@@ -6,6 +6,7 @@
 #include "files/BackupReader.h"
 #include "profile/ProfileRegistry.h"
 #include "session/DeviceSession.h"
+#include "widgets/ClearOfStopAll.h"
 
 #include <QDateTime>
 #include <QHBoxLayout>
@@ -53,6 +54,7 @@ BackupDialog::BackupDialog(BusDrives* drives, const ConnectionSettings& connecti
     layout->addWidget(m_message);
     layout->addLayout(buttons);
     resize(640, 360);
+    ClearOfStopAll::keep(this);
 
     connect(m_cancelButton, &QPushButton::clicked, this, &BackupDialog::cancel);
     connect(m_saveRead, &QPushButton::clicked, this, &BackupDialog::saveReadDrives);

@@ -1,6 +1,7 @@
 #include "files/BackupViewer.h"
 
 #include "profile/ProfileRegistry.h"
+#include "widgets/ClearOfStopAll.h"
 
 #include <QFileDialog>
 #include <QFileInfo>
@@ -44,6 +45,7 @@ BackupViewer::BackupViewer(QWidget* parent)
     layout->addWidget(m_tree, 1);
     layout->addLayout(buttons);
     resize(820, 560);
+    ClearOfStopAll::keep(this);
     connect(openButton, &QPushButton::clicked, this, &BackupViewer::chooseFile);
     connect(close, &QPushButton::clicked, this, &QDialog::accept);
 }

@@ -5,6 +5,7 @@
 #include "files/Comparer.h"
 #include "profile/ProfileRegistry.h"
 #include "session/DeviceSession.h"
+#include "widgets/ClearOfStopAll.h"
 
 #include <QCheckBox>
 #include <QFileInfo>
@@ -82,6 +83,7 @@ CompareDialog::CompareDialog(BusDrives* drives, QWidget* parent)
     layout->addWidget(m_notes);
     layout->addLayout(bottom);
     resize(900, 640);
+    ClearOfStopAll::keep(this);
 
     connect(m_compare, &QPushButton::clicked, this, &CompareDialog::compare);
     connect(m_differencesOnly, &QCheckBox::toggled, this, &CompareDialog::applyFilter);

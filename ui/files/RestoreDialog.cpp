@@ -9,6 +9,7 @@
 #include "groups/GroupWriteCheck.h"
 #include "profile/ProfileRegistry.h"
 #include "session/DeviceSession.h"
+#include "widgets/ClearOfStopAll.h"
 #include "widgets/ConfirmBox.h"
 
 #include <QFileDialog>
@@ -73,6 +74,7 @@ RestoreDialog::RestoreDialog(BusDrives* drives, QWidget* parent)
     layout->addWidget(m_message);
     layout->addLayout(buttons);
     resize(900, 680);
+    ClearOfStopAll::keep(this);
 
     connect(browse, &QPushButton::clicked, this, &RestoreDialog::chooseFile);
     connect(m_previewButton, &QPushButton::clicked, this, &RestoreDialog::preview);

@@ -13,6 +13,7 @@
 #include <QLabel>
 #include <QMainWindow>
 #include <QScreen>
+#include <QScrollArea>
 #include <QTableView>
 #include <algorithm>
 
@@ -59,7 +60,13 @@ void BusDocks::fill(BusDrives* drives, MonitorHub* hub, BusGroupTracker* groups,
     m_trends = new TrendPanel(hub, dock(QStringLiteral("trendDock")));
     m_groupsView = new GroupsView(groups, dock(QStringLiteral("groupsDock")));
     replace(QStringLiteral("overviewDock"), m_overview);
-    replace(QStringLiteral("trendDock"), m_trends);
+    // The trends scroll in their dock rather than holding the window taller than a laptop's
+    // screen when it shares the bottom with the other docks.
+    auto* trendScroll = new QScrollArea(dock(QStringLiteral("trendDock")));
+    trendScroll->setWidgetResizable(true);
+    trendScroll->setFrameShape(QFrame::NoFrame);
+    trendScroll->setWidget(m_trends);
+    replace(QStringLiteral("trendDock"), trendScroll);
     replace(QStringLiteral("groupsDock"), m_groupsView);
 }
 

@@ -24,12 +24,15 @@ public:
     void save();
 
 private:
+    // The width that shows every column of the bus list whole, at its contents.
+    static int wholeWidth(BusPanel* panel);
     // The default or remembered geometry, brought within the screen's available area.
     void fitToScreen(bool remembered);
 
     QMainWindow* m_window;
     QSplitter* m_splitter;
     QByteArray m_splitterState;
+    bool m_userDivided = false; // the divider was moved by hand: kept where it was put
 };
 
 } // namespace opentop

@@ -139,6 +139,7 @@ MonitorPage::MonitorPage(MonitorHub* hub, DeviceParameters* parameters, QWidget*
             showFreshness();
     });
     connect(hub, &MonitorHub::linkChanged, m_look, &StaleLook::update);
+    connect(hub, &MonitorHub::heldChanged, m_look, &StaleLook::update);
     if (const auto latest = hub->latest(m_slave))
         showSample(*latest);
     m_look->update();
@@ -156,14 +157,15 @@ void MonitorPage::divide()
 {
     // Once the values are all there (built at the first sample) and the page has its height:
     // the values first, whole if they fit in three fifths (the lamps in sight on a laptop's
-    // screen), the chart the rest.
+    // screen) and leave the chart 200 px, the chart the rest.
     if (m_divided || !m_details->isBuilt() || !isVisible() || m_splitter->height() < 200)
         return;
     m_divided = true;
     const int height = m_splitter->height();
     const auto* values = static_cast<QScrollArea*>(m_splitter->widget(0));
     const int wanted = values->widget()->sizeHint().height() + 4;
-    const int top = std::min(wanted, height * 3 / 5);
+    // The chart keeps 200 px where the page has them: shorter, its axes lose their titles.
+    const int top = std::min({wanted, height * 3 / 5, std::max(height * 2 / 5, height - 200)});
     m_splitter->setSizes({top, height - top});
 }
 
@@ -185,7 +187,10 @@ QWidget* MonitorPage::buildReadouts()
     };
     big->addWidget(caption(kCurrent, tr("Speed")), 0, 0);
     big->addWidget(m_current, 1, 0);
-    big->addWidget(m_currentDisplay, 2, 0);
+    // "32.0 m/min on the drive's display" in large type wraps under the speed rather than
+    // pushing the drive's panel off the right edge of a laptop's window.
+    m_currentDisplay->setWordWrap(true);
+    big->addWidget(m_currentDisplay, 2, 0, 1, 4);
     // A family without a target speed or a load role shows neither caption nor value.
     for (const auto& [role, label, at] :
          {std::tuple(kTarget, m_target, 1), std::tuple(kLoad, m_load, 2)}) {

@@ -9,6 +9,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <QPushButton>
+#include <QVBoxLayout>
 
 namespace opentop {
 
@@ -20,8 +21,12 @@ MonitorPollBar::MonitorPollBar(MonitorHub* hub, int slave, QWidget* parent)
     , m_pause(new QPushButton(this))
     , m_status(new QLabel(this))
 {
-    auto* bar = new QHBoxLayout(this);
-    bar->setContentsMargins(0, 0, 0, 0);
+    // The controls on one row, what they mean under them across the page's width: beside
+    // them, the paused or lost-link sentence wrapped into three lines on a laptop.
+    auto* rows = new QVBoxLayout(this);
+    rows->setContentsMargins(0, 0, 0, 0);
+    auto* bar = new QHBoxLayout;
+    rows->addLayout(bar);
     bar->addWidget(new QLabel(tr("Poll every"), this));
     for (int hz : {1, 2, 5, 10, 20})
         m_rate->addItem(tr("%1 ms (%2 Hz)").arg(1000 / hz).arg(hz), 1000 / hz);
@@ -29,7 +34,11 @@ MonitorPollBar::MonitorPollBar(MonitorHub* hub, int slave, QWidget* parent)
                           "go first; the drives share what is left of the bus in turn."));
     bar->addWidget(m_rate);
     bar->addWidget(m_pause);
-    bar->addWidget(m_status, 1);
+    bar->addStretch(1);
+    // Wrapped, not one line: a line as wide as the sentence widened the whole window past a
+    // laptop's screen.
+    m_status->setWordWrap(true);
+    rows->addWidget(m_status);
     const auto showRate = [this](int ms) {
         const int i = m_rate->findData(ms);
         if (i < 0)
@@ -56,6 +65,8 @@ void MonitorPollBar::showFreshness(const StaleLook& look, const QString& lastErr
     if (m_hub->isPaused())
         text =
             tr("Polling paused: the values shown are the last ones read (%1).").arg(look.ageText());
+    else if (m_hub->isHeld() && m_hub->drives()->linkUp())
+        text = tr("Polling waits for the bus scan: %1.").arg(look.ageText());
     else if (!m_hub->drives()->linkUp())
         text = tr("Connection lost — not live: %1.").arg(look.ageText());
     else if (stale)

@@ -42,6 +42,10 @@ MotorSpeedBox::MotorSpeedBox(const ParameterMeta& speed, int slave, QWidget* par
     f.setBold(true);
     m_speed->setFont(f);
     m_speed->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // "set the commutations per revolution" in large type wraps in a narrow column (a laptop
+    // with a dock open) instead of widening the values past the page.
+    m_speed->setWordWrap(true);
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     form->addRow(tr("Motor speed"), m_speed);
     connect(m_commutations, &QDoubleSpinBox::valueChanged, this, [this](double v) {
         QSettings().setValue(settingsKey(m_slave), v);

@@ -5,6 +5,8 @@
 #include "profile/ProfileRegistry.h"
 #include "profile/RoleEvaluator.h"
 #include "profile/ValueCodec.h"
+#include "run/CommandReadBack.h"
+#include "run/DbuRunCommands.h"
 #include "run/DcRunCommands.h"
 #include "run/MotionPriorityBox.h"
 #include "run/RunLiveState.h"
@@ -14,12 +16,9 @@
 #include "widgets/ConfirmBox.h"
 #include "widgets/DriveHeading.h"
 
-#include <QDateTime>
-#include <QGridLayout>
+#include <QHBoxLayout>
 #include <QLabel>
-#include <QLocale>
 #include <QPointer>
-#include <QPushButton>
 #include <QVBoxLayout>
 
 namespace opentop {
@@ -63,6 +62,15 @@ TestRunPanel::TestRunPanel(BusDrives* drives, int slave, QWidget* parent)
     m_isDc =
         RoleEvaluator::parameter(profile, kSpeedCommand) && !profile.role(QStringLiteral("start"));
 
+    // Two columns: the commands first, where a laptop's short window still shows them with a
+    // dock open; why the drive refuses them and its live state beside them.
+    auto* columns = new QHBoxLayout;
+    layout->addLayout(columns, 1);
+    auto* left = new QVBoxLayout;
+    m_side = new QVBoxLayout;
+    columns->addLayout(left, 1);
+    columns->addLayout(m_side, 1);
+
     m_priorityBox = new MotionPriorityBox(drives, m_session, this);
     m_priorityBox->hide();
     connect(m_priorityBox, &MotionPriorityBox::switching, this, [this](const QString& text) {
@@ -76,10 +84,11 @@ TestRunPanel::TestRunPanel(BusDrives* drives, int slave, QWidget* parent)
                 setMessage(message, !ok);
                 refresh();
             });
-    layout->addWidget(m_priorityBox);
+    m_side->addWidget(m_priorityBox);
+    m_side->addStretch();
 
     m_commands = new QWidget(this);
-    layout->addWidget(m_commands);
+    left->addWidget(m_commands);
     if (m_isDc)
         buildDc();
     else
@@ -88,69 +97,25 @@ TestRunPanel::TestRunPanel(BusDrives* drives, int slave, QWidget* parent)
     m_warning->setWordWrap(true);
     m_warning->setStyleSheet(QStringLiteral("color: #a05000;"));
     m_warning->hide();
-    layout->addWidget(m_warning);
-    layout->addWidget(m_message);
-    m_state = new QLabel(this);
-    m_state->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    layout->addWidget(m_state);
-    layout->addStretch();
+    left->addWidget(m_warning);
+    left->addWidget(m_message);
+    m_state = new CommandReadBack(this);
+    left->addWidget(m_state);
+    left->addStretch();
     updateEnabled();
     refresh();
 }
 
-QPushButton* TestRunPanel::addButton(const QString& text, const QString& name,
-                                     const std::function<void()>& onClick)
-{
-    auto* button = new QPushButton(text, m_commands);
-    button->setObjectName(name);
-    connect(button, &QPushButton::clicked, this, onClick);
-    return button;
-}
-
 void TestRunPanel::buildDbu()
 {
-    using A = RunControl::Action;
-    auto* grid = new QGridLayout(m_commands);
-    const Profile& profile = m_session->profile();
-    const QPair<A, QString> items[] = {{A::Start, tr("&Start")}, {A::Stop, tr("S&top")},
-                                       {A::Cw, tr("&CW")},       {A::Ccw, tr("CC&W")},
-                                       {A::Hold, tr("&Hold")},   {A::Free, tr("&Free")}};
-    for (int i = 0; i < 6; ++i) {
-        RunControl::Command c;
-        c.action = items[i].first;
-        if (!RoleEvaluator::parameter(profile, RunControl::roleOf(c.action)))
-            continue;
-        const bool starts = c.action == A::Start;
-        QPushButton* b = addButton(items[i].second, RunControl::actionName(c.action),
-                                   [this, c, starts] { run(c, starts); });
-        if (c.action != A::Stop)
-            m_whileIdle << b;
-        grid->addWidget(b, i / 2, i % 2);
-    }
-    const ParameterMeta* select = RoleEvaluator::parameter(profile, QStringLiteral("select"));
-    if (!select)
-        return;
-    m_spno = new SpnoSelector(m_session, m_commands);
-    grid->addWidget(m_spno, 3, 0);
-    m_whileIdle << m_spno;
-    grid->addWidget(addButton(tr("Se&lect running data"), QStringLiteral("select"),
-                              [this] {
-                                  RunControl::Command c;
-                                  c.action = RunControl::Action::Select;
-                                  c.select = m_spno->currentData().toInt();
-                                  run(c, false);
-                              }),
-                    3, 1);
-    m_whileIdle << grid->itemAtPosition(3, 1)->widget();
-    // Back to the machine's own controls, as a TOP-1 offers.
-    if (const ProfileRole* io = profile.role(kIoPriority); io && io->value) {
-        m_ioButton = addButton(tr("Return to &I/O priority"), QStringLiteral("ioPriority"),
-                               [this] { m_priorityBox->askToReturn(this); });
-        m_ioButton->setToolTip(tr("Give run, stop, direction and speed selection back to the "
-                                  "drive's input terminals"));
-        grid->addWidget(m_ioButton, 4, 0, 1, 2);
-        m_whileIdle << m_ioButton;
-    }
+    auto* column = new QVBoxLayout(m_commands);
+    column->setContentsMargins(0, 0, 0, 0);
+    m_dbu = new DbuRunCommands(m_session, m_commands);
+    m_spno = m_dbu->spnoSelector();
+    connect(m_dbu, &DbuRunCommands::commandRequested, this, &TestRunPanel::run);
+    connect(m_dbu, &DbuRunCommands::ioPriorityRequested, this,
+            [this] { m_priorityBox->askToReturn(this); });
+    column->addWidget(m_dbu);
 }
 
 void TestRunPanel::buildDc()
@@ -279,23 +244,34 @@ void TestRunPanel::send(const RunControl::Command& command)
         if (o.failure == RunControl::Failure::Priority)
             self->refresh(); // the drive was switched to I/O priority meanwhile
         if (!o.sent) {
-            self->m_busy = false;
-            self->updateEnabled();
-            emit self->commandFinished(false);
+            self->finishCommand(false);
             return;
         }
-        self->m_control.readState(
-            self->m_session,
-            [self, ok = o.ok](const RunControl::State& state) {
+        // The drives of its communication group executed a motion command too, or ignored
+        // it: what each does is read from it, as is the drive's own state.
+        const bool motion = o.plan.meta && o.plan.meta->safety == QLatin1String("motion");
+        self->m_state->readAfter(
+            &self->m_control, self->m_session,
+            motion ? self->m_session->reachedDrives() : QVector<DeviceSession*>(), kSettleMs,
+            [self, ok = o.ok, start = command.action == RunControl::Action::Start](bool allRun) {
                 if (!self)
                     return;
-                self->showState(state);
-                self->m_busy = false;
-                self->updateEnabled();
-                emit self->commandFinished(ok);
-            },
-            kSettleMs);
+                // A start that left a child standing is said where the user looks first.
+                if (!allRun && start)
+                    self->setMessage(self->m_message->text() + QLatin1Char('\n') +
+                                         tr("Not every drive of its communication group runs: "
+                                            "see below."),
+                                     true);
+                self->finishCommand(ok);
+            });
     });
+}
+
+void TestRunPanel::finishCommand(bool ok)
+{
+    m_busy = false;
+    updateEnabled();
+    emit commandFinished(ok);
 }
 
 void TestRunPanel::showOutcome(const RunControl::Outcome& o)
@@ -304,27 +280,10 @@ void TestRunPanel::showOutcome(const RunControl::Outcome& o)
         setMessage(tr("Sent: %1").arg(o.plan.description), false);
         return;
     }
-    QString text = o.error;
-    if (!o.deviceError.isEmpty() && !text.contains(o.deviceError))
-        text += QStringLiteral(" (%1)").arg(o.deviceError);
+    QString text = o.error; // with the drive's error code, when it gave one
     if (!o.explanation.isEmpty())
         text += QStringLiteral("\n") + o.explanation;
     setMessage(text, true);
-}
-
-void TestRunPanel::showState(const RunControl::State& state)
-{
-    // A snapshot, and says so: what the drive does now is in the live box.
-    QStringList lines{
-        tr("Read back after the command at %1:")
-            .arg(QLocale().toString(QTime::currentTime(), QStringLiteral("HH:mm:ss")))};
-    if (state.running)
-        lines << (*state.running ? tr("The motor is running.") : tr("The motor is stopped."));
-    for (const auto& item : state.items)
-        lines << tr("%1: %2").arg(item.first, item.second);
-    if (!state.error.isEmpty())
-        lines << tr("(not read: %1)").arg(state.error);
-    m_state->setText(lines.join(QLatin1Char('\n')));
 }
 
 QString TestRunPanel::priorityExplanation() const
@@ -354,7 +313,7 @@ void TestRunPanel::setMonitorHub(MonitorHub* hub)
     if (!m_session || m_live || !hub)
         return;
     m_live = new RunLiveState(hub, m_slave, this);
-    static_cast<QVBoxLayout*>(layout())->insertWidget(1, m_live);
+    m_side->insertWidget(1, m_live); // under why the drive refuses commands, if it does
 }
 
 void TestRunPanel::setPollingActive(bool active)
@@ -368,10 +327,10 @@ void TestRunPanel::updateEnabled()
     if (!m_commands)
         return;
     m_commands->setEnabled(m_enabled);
-    if (m_ioButton)
-        m_ioButton->setVisible(m_enabled); // only a drive in communication priority goes back
-    for (QWidget* w : std::as_const(m_whileIdle))
-        w->setEnabled(!m_busy);
+    if (m_dbu) {
+        m_dbu->setIoReturnVisible(m_enabled); // only a drive in communication priority goes back
+        m_dbu->setBusy(m_busy);
+    }
     if (m_dc)
         m_dc->setBusy(m_busy);
     const bool explain = !m_enabled && !m_currentPriority.isEmpty() &&

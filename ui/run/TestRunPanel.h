@@ -4,15 +4,16 @@
 
 #include <QSet>
 #include <QWidget>
-#include <functional>
 #include <optional>
 
 class QLabel;
-class QPushButton;
+class QVBoxLayout;
 
 namespace opentop {
 
 class BusDrives;
+class CommandReadBack;
+class DbuRunCommands;
 class DcRunCommands;
 class DeviceSession;
 class MonitorHub;
@@ -28,9 +29,10 @@ class StartPreview;
 // explains how to switch and offers to do it after a confirmation, and once switched offers the
 // way back to I/O priority. Starting a motor asks once per drive and program run, and every
 // time the start also reaches other drives (communication group); the question says which
-// running data, speed and direction will run (StartPreview). With a MonitorHub the page shows
-// what the drive does now (RunLiveState, watched while visible); after each command the state
-// read back is shown with its time.
+// running data, speed and direction will run and which drives of its communication group follow
+// (StartPreview); after a motion command each of them is read and reported. With a MonitorHub the
+// page shows what the drive does now (RunLiveState, watched while visible); after each command the
+// state read back is shown with its time.
 class TestRunPanel : public QWidget
 {
     Q_OBJECT
@@ -70,12 +72,10 @@ signals:
 private:
     void buildDbu();
     void buildDc();
-    QPushButton* addButton(const QString& text, const QString& name,
-                           const std::function<void()>& onClick);
     void run(const RunControl::Command& command, bool starts);
     void send(const RunControl::Command& command);
     void showOutcome(const RunControl::Outcome& outcome);
-    void showState(const RunControl::State& state);
+    void finishCommand(bool ok);
     void updateEnabled();
     void updateWarning();
     void setMessage(const QString& text, bool error);
@@ -94,17 +94,17 @@ private:
 
     MotionPriorityBox* m_priorityBox = nullptr;
     QWidget* m_commands = nullptr;
-    QList<QWidget*> m_whileIdle; // disabled while a command is under way (stops never are)
+    QVBoxLayout* m_side = nullptr; // the right-hand column
     SpnoSelector* m_spno = nullptr;
     RunLiveState* m_live = nullptr;
     StartPreview* m_preview = nullptr;
-    QPushButton* m_ioButton = nullptr;
     std::optional<bool> m_commandedCcw; // a CW/CCW command sent since the last selection
     QString m_lastQuestion;
-    DcRunCommands* m_dc = nullptr; // the DC controller's commands
+    DbuRunCommands* m_dbu = nullptr; // a DBU's commands
+    DcRunCommands* m_dc = nullptr;   // the DC controller's commands
     QLabel* m_warning = nullptr;
     QLabel* m_message = nullptr;
-    QLabel* m_state = nullptr;
+    CommandReadBack* m_state = nullptr;
 
     static QSet<int> s_confirmed;
 };

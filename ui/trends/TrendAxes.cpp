@@ -28,26 +28,38 @@ void TrendAxes::setQuantities(const QVector<QPair<QString, QString>>& quantities
         if (!m_units.contains(q.second))
             m_units << q.second;
     }
-    QStringList titles;
-    QStringList units;
-    for (const QString& unit : m_units) {
+    // Per side, from the longest title to the shortest (see m_titles); the right-hand side
+    // joins the units after the first.
+    std::array<QList<QStringList>, 2> sides;
+    for (int u = 0; u < m_units.size(); ++u) {
+        const QString& unit = m_units[u];
         QStringList labels;
         for (const auto& q : quantities) {
             if (q.second == unit && !labels.contains(q.first))
                 labels << q.first;
         }
         const QString names = labels.join(QStringLiteral(", "));
-        titles << (unit.isEmpty() ? names : tr("%1 [%2]").arg(names, unit));
+        if (unit.isEmpty()) {
+            sides[u == 0 ? 0 : 1] << QStringList{names, names, names};
+            continue;
+        }
         // Too long for the axis: the word the labels share ("Current speed", "Target speed"
-        // -> "Speed [r/min]"), else the unit alone.
+        // -> "Speed [r/min]"), then the unit alone.
         const QString shared = sharedWord(labels);
-        units << (unit.isEmpty()     ? names
-                  : shared.isEmpty() ? tr("[%1]").arg(unit)
-                                     : tr("%1 [%2]").arg(shared, unit));
+        const QString bare = tr("[%1]").arg(unit);
+        sides[u == 0 ? 0 : 1] << QStringList{
+            tr("%1 [%2]").arg(names, unit),
+            shared.isEmpty() ? bare : tr("%1 [%2]").arg(shared, unit), bare};
     }
-    m_titles[0] = {titles.value(0), units.value(0)};
-    m_titles[1] = {titles.mid(1).join(QStringLiteral(" / ")),
-                   units.mid(1).join(QStringLiteral(" / "))};
+    for (int side = 0; side < 2; ++side) {
+        m_titles[side] = QStringList{QString(), QString(), QString()};
+        for (int level = 0; level < 3; ++level) {
+            QStringList parts;
+            for (const QStringList& t : sides[side])
+                parts << t[level];
+            m_titles[side][level] = parts.join(QStringLiteral(" / "));
+        }
+    }
     m_axes[1]->setVisible(m_units.size() > 1);
     fitTitles(0);
 }
@@ -76,9 +88,14 @@ void TrendAxes::fitTitles(double plotHeight)
 {
     for (int i = 0; i < 2; ++i) {
         const QFontMetricsF metrics(m_axes[i]->titleFont());
-        const bool fits =
-            plotHeight <= 0 || metrics.horizontalAdvance(m_titles[i].first) < plotHeight;
-        m_axes[i]->setTitleText(fits ? m_titles[i].first : m_titles[i].second);
+        QString title = m_titles[i].last();
+        for (const QString& candidate : std::as_const(m_titles[i])) {
+            if (plotHeight <= 0 || metrics.horizontalAdvance(candidate) < plotHeight) {
+                title = candidate;
+                break;
+            }
+        }
+        m_axes[i]->setTitleText(title);
     }
 }
 

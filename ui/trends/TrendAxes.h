@@ -35,7 +35,9 @@ public:
 private:
     std::array<QValueAxis*, 2> m_axes;
     QStringList m_units;
-    std::array<QPair<QString, QString>, 2> m_titles; // full title, short title
+    // Each side's titles from the longest to the shortest: the quantities and unit, the word
+    // they share and the unit, the unit alone; the longest that fits the plot is shown.
+    std::array<QStringList, 2> m_titles;
 };
 
 } // namespace opentop

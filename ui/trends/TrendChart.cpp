@@ -23,6 +23,19 @@ namespace opentop {
 
 namespace {
 
+// A short plot (a laptop's window with docks open) gives the time axis' title to the plot: the
+// times under it say what it is. Shown again with room to spare, so that it does not flicker.
+// The value axes keep their unit at least (TrendAxes::fitTitles).
+void fitTitles(const QChart* chart, QDateTimeAxis* timeAxis, TrendAxes& axes)
+{
+    const double plot = chart->plotArea().height();
+    const bool timeTitle = timeAxis->titleText().isEmpty() ? plot > 90 : plot >= 50;
+    const QString time = timeTitle ? TrendChart::tr("Time (hh:mm:ss)") : QString();
+    if (timeAxis->titleText() != time)
+        timeAxis->setTitleText(time);
+    axes.fitTitles(chart->plotArea().height());
+}
+
 constexpr int kRedrawMs = 200;      // 5 Hz is smooth enough to watch and cheap
 constexpr qint64 kMinSpanMs = 1000; // zooming further shows nothing useful
 
@@ -46,8 +59,9 @@ TrendChart::TrendChart(MonitorHub* hub, QWidget* parent)
     m_timeAxis->setTitleText(tr("Time (hh:mm:ss)"));
     m_timeAxis->setTickCount(7);
     m_chart->addAxis(m_timeAxis, Qt::AlignBottom);
-    // A chart still, in a dock on a laptop, also where CJK text makes every row taller.
-    m_view->setMinimumSize(320, 124);
+    // A chart still, in a dock on a laptop, also where CJK text makes every row taller: its
+    // plot tall enough for the unit on its axes (TrendAxes::fitTitles).
+    m_view->setMinimumSize(320, 154);
 
     m_readout->setTextFormat(Qt::PlainText);
     m_readout->setWordWrap(true);
@@ -63,7 +77,10 @@ TrendChart::TrendChart(MonitorHub* hub, QWidget* parent)
     connect(m_view, &TrendChartView::rangeSelected, this, &TrendChart::zoomTo);
     connect(m_view, &TrendChartView::wheelZoom, this, &TrendChart::zoomAround);
     connect(&m_timer, &QTimer::timeout, this, &TrendChart::refresh);
-    connect(m_chart, &QChart::plotAreaChanged, this, [this] { m_canvas->plotAreaChanged(); });
+    connect(m_chart, &QChart::plotAreaChanged, this, [this] {
+        m_canvas->plotAreaChanged();
+        fitTitles(m_chart, m_timeAxis, m_axes);
+    });
     // Identified again (another model at the number): the names must say so.
     connect(hub->drives(), &BusDrives::driveChanged, this, [this](int slave) {
         for (const TrendLines::Line& line : m_lines.lines()) {
@@ -220,7 +237,7 @@ void TrendChart::refresh()
         rebuild();
     // At most about two points per pixel column are worth drawing.
     const int buckets = std::max(100, int(m_chart->plotArea().width()));
-    m_axes.fitTitles(m_chart->plotArea().height());
+    fitTitles(m_chart, m_timeAxis, m_axes);
     m_lines.draw(m_from, m_to, buckets);
     m_canvas->update();
     if (m_markers[0] || m_markers[1])

@@ -1,6 +1,7 @@
 #include "tuning/TuningChart.h"
 
 #include <QChart>
+#include <QFontMetricsF>
 #include <QLineSeries>
 #include <QValueAxis>
 
@@ -56,13 +57,30 @@ TuningChart::TuningChart(QWidget* parent)
     setChart(chart);
     delete unused;
     setRenderHint(QPainter::Antialiasing);
-    setMinimumSize(360, 160);
+    setMinimumSize(360, 130);
     setSpeedUnit(QString());
+    connect(chart, &QChart::plotAreaChanged, this, &TuningChart::fitTitles);
 }
 
 void TuningChart::setSpeedUnit(const QString& unit)
 {
-    m_speed->setTitleText(unit.isEmpty() ? tr("Speed") : tr("Speed (%1)").arg(unit));
+    m_speedUnit = unit;
+    fitTitles();
+}
+
+void TuningChart::fitTitles()
+{
+    const double room = chart()->plotArea().height();
+    const auto show = [room](QValueAxis* axis, const QString& full, const QString& unit) {
+        const QString title =
+            room <= 0 || QFontMetricsF(axis->titleFont()).horizontalAdvance(full) < room ? full
+                                                                                         : unit;
+        if (axis->titleText() != title) // a new title lays the chart out again
+            axis->setTitleText(title);
+    };
+    show(m_speed, m_speedUnit.isEmpty() ? tr("Speed") : tr("Speed (%1)").arg(m_speedUnit),
+         m_speedUnit.isEmpty() ? QString() : tr("(%1)").arg(m_speedUnit));
+    show(m_current, tr("Current (A)"), tr("(%1)").arg(QStringLiteral("A")));
 }
 
 int TuningChart::curveCount() const

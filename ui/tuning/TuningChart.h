@@ -24,6 +24,11 @@ public:
     int curveCount() const;
 
 private:
+    // The axes' titles, or their units alone where the plot is too short for them (a laptop
+    // with docks open): never elided to "S…".
+    void fitTitles();
+
+    QString m_speedUnit;
     QValueAxis* m_time;
     QValueAxis* m_speed;
     QValueAxis* m_current;

@@ -70,6 +70,11 @@ TuningRunsView::TuningRunsView(const QString& drive, QWidget* parent)
     bottomScroll->setWidgetResizable(true);
     bottomScroll->setFrameShape(QFrame::NoFrame);
     bottomScroll->setMinimumHeight(90);
+    // The chart and its wrapped legend line whole: a splitter does not ask a wrapped label
+    // for its height, and squeezed them on top of each other with docks open.
+    chartBox->setMinimumHeight(m_chart->minimumHeight() + 2 * fontMetrics().lineSpacing() +
+                               chartColumn->contentsMargins().top() +
+                               chartColumn->contentsMargins().bottom() + chartColumn->spacing());
     split->addWidget(chartBox);
     split->addWidget(bottomScroll);
     // The chart takes what the runs and figures leave.

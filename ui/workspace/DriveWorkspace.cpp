@@ -123,10 +123,11 @@ ParameterPage* DriveWorkspace::page(const QString& title) const
     return nullptr;
 }
 
-void DriveWorkspace::setStatus(const QString& text)
+void DriveWorkspace::setStatus(const QString& text, bool problem)
 {
     m_refused = false;
     m_status->setText(text);
+    m_status->setStyleSheet(problem ? QStringLiteral("color: #b01c1c;") : QString());
 }
 
 void DriveWorkspace::updateRefusal()
@@ -233,9 +234,11 @@ void DriveWorkspace::writeAll()
         return;
     }
     setStatus(tr("Writing %n value(s)…", nullptr, count));
-    m_parameters->write({}, [this, count](int failed) {
-        setStatus(failed ? tr("%n write(s) failed; see the marked fields", nullptr, failed)
-                         : tr("%n value(s) written and verified", nullptr, count));
+    const QStringList pending = m_parameters->pendingNames();
+    m_parameters->write({}, [this, pending](int failed) {
+        bool problem = false;
+        // Red when a write failed or was not verified on every drive it reached.
+        setStatus(m_parameters->writeResultText(pending, failed, &problem), problem);
         updateButtons();
         emit operationFinished();
     });

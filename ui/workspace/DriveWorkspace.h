@@ -46,7 +46,8 @@ private:
     // "Nothing was written" for edits not accepted or a page's blocker follows the edits: it
     // goes (or says what is left) once its cause is gone.
     void updateRefusal();
-    void setStatus(const QString& text);
+    // `problem`: red (a write failed or was not verified on every drive it reached).
+    void setStatus(const QString& text, bool problem = false);
     bool m_refused = false;
 
     static QHash<QString, EditorFactory>& editors();

@@ -234,6 +234,13 @@ void MultiDriveWriteDialog::check()
             m_problem = tr("Not allowed on drive %1 (%2): %3")
                             .arg(m_drives->listed(slave))
                             .arg(m_drives->info(slave).model, e.error);
+        // A group parent's children execute it too, even unselected ones: they must allow it.
+        else if (const QString refused =
+                     m_drives->session(slave)->reachedProblem(meta(slave)->name, e.registers);
+                 !refused.isEmpty())
+            m_problem = tr("Not allowed on the communication group of drive %1: %2")
+                            .arg(slave)
+                            .arg(refused);
     }
     if (m_writable.isEmpty())
         m_problem = tr("None of the selected drives is identified.");
@@ -377,10 +384,16 @@ void MultiDriveWriteDialog::writeNext(QVector<int> queue, const QString& text, i
                 self->setCell(slave, CurrentValue,
                               ValueCodec::format(*session->profile().parameter(name), o.value,
                                                  session->context()));
+            // The drives of its communication group were read back too: named when not all
+            // hold the value. A device's error code comes with what it means.
+            const QString why =
+                o.explanation.isEmpty() ? o.error : o.error + QLatin1Char('\n') + o.explanation;
             self->setCell(slave, Result,
-                          ok     ? tr("Written and verified")
+                          ok ? tr("Written and verified")
+                          : o.ok && !o.notVerified.isEmpty()
+                              ? tr("Written, not verified: %1").arg(o.notVerified)
                           : o.ok ? tr("Written, not verified (cannot be read back)")
-                                 : tr("Failed: %1").arg(o.error),
+                                 : tr("Failed: %1").arg(why),
                           !ok);
             self->writeNext(queue, text, failed + (ok ? 0 : 1));
         });

@@ -39,6 +39,18 @@ QString anyLabel(const ParameterMeta& meta, qint64 code)
     return QString::number(code);
 }
 
+// A communication error code the drive holds (the DBU's E0h-E8h), in words with what to do: a
+// number alone tells a field engineer nothing. Empty for 0, other codes and other values.
+QString codeMeaning(const DeviceParameters& parameters, const ParameterMeta& meta,
+                    const ParamValue& value)
+{
+    const CodeTable* table =
+        meta.codeTable.isEmpty() ? nullptr : parameters.profile().codeTable(meta.codeTable);
+    const CodeEntry* entry =
+        table && value.valid && qint64(value.raw) != 0 ? table->find(qint64(value.raw)) : nullptr;
+    return entry && entry->exceptionCode != 0 ? entry->explained() : QString();
+}
+
 } // namespace
 
 ParameterField::ParameterField(DeviceParameters* parameters, const QString& name, QWidget* parent)
@@ -126,8 +138,11 @@ void ParameterField::check(const QString& text)
 {
     const DeviceParameters::Entry* e = m_parameters->entry(m_name);
     const ValueCodec::Encoded encoded = ValueCodec::encodeText(*e->meta, text, context());
-    m_problem =
-        text.trimmed().isEmpty() ? QString() : m_parameters->withoutName(m_name, encoded.error);
+    // A group parent's children execute the write too: their own ranges count as well.
+    const QString error = encoded.ok
+                              ? m_parameters->session()->reachedProblem(m_name, encoded.registers)
+                              : encoded.error;
+    m_problem = text.trimmed().isEmpty() ? QString() : m_parameters->withoutName(m_name, error);
     m_typingWarning = text.trimmed().isEmpty() || !encoded.ok
                           ? QString()
                           : m_parameters->withoutName(m_name, encoded.warning);
@@ -281,11 +296,15 @@ void ParameterField::applyStyle()
     // In words at the field, not only in a tooltip.
     // An allowed value outside the recommended range: said at the field too, in amber.
     const QString warning = this->warning();
-    const QString message = problem.isEmpty() ? warning
+    const QString meaning = problem.isEmpty() && warning.isEmpty()
+                                ? codeMeaning(*m_parameters, *e->meta, e->device)
+                                : QString();
+    const QString message = problem.isEmpty() ? (warning.isEmpty() ? meaning : warning)
                             : e->state == DeviceParameters::State::Invalid || !m_problem.isEmpty()
                                 ? tr("Not accepted: %1").arg(problem)
                                 : problem;
-    const QString messageStyle = problem.isEmpty() && !warning.isEmpty()
+    const QString messageStyle = !meaning.isEmpty() ? QStringLiteral("color: palette(text);")
+                                 : problem.isEmpty() && !warning.isEmpty()
                                      ? QStringLiteral("color: #a05000;")
                                      : QStringLiteral("color: #b01c1c;");
     if (m_message->styleSheet() != messageStyle)

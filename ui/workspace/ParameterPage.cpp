@@ -218,9 +218,9 @@ void ParameterPage::writePage()
     m_parameters->write(pending, [this, pending](int failed) {
         m_busy = false;
         updateButtons();
-        setStatus(failed ? tr("%n write(s) failed; see the marked fields", nullptr, failed)
-                         : tr("%n value(s) written and verified", nullptr, pending.size()),
-                  failed > 0);
+        bool problem = false;
+        const QString result = m_parameters->writeResultText(pending, failed, &problem);
+        setStatus(result, problem);
         emit operationFinished();
     });
 }

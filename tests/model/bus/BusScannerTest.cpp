@@ -5,6 +5,7 @@
 #include "MockBackend.h"
 #include "ModbusClient.h"
 #include "ModbusCrc.h"
+#include "RtuFrame.h"
 #include "SimBackend.h"
 #include "SimBus.h"
 #include "profile/ProfileRegistry.h"
@@ -86,6 +87,52 @@ struct ScanRecord
         loop.exec();
         ASSERT_EQ(finishedCount, 1) << "the scan did not finish";
     }
+};
+
+// Plays `bus`, except that the first request to each of `lost` gets no reply, and the first
+// request to `garbledAt` comes back with a garbled frame discarded before it was sent: on a
+// half-duplex line, the reply of the first of `lost` met the request to the second after both
+// waits had ended, and the transport threw the wreck away before the next request.
+class CollisionBackend : public ModbusBackend
+{
+public:
+    CollisionBackend(std::shared_ptr<SimBus> bus, QVector<int> lost, int garbledAt)
+        : m_bus(std::move(bus))
+        , m_lost(std::move(lost))
+        , m_garbledAt(garbledAt)
+    {
+    }
+    bool open(QString*) override { return m_open = true; }
+    void close() override { m_open = false; }
+    bool isOpen() const override { return m_open; }
+    QString describe() const override { return QStringLiteral("collisions"); }
+    ModbusResult transact(const ModbusRequest& request, int) override
+    {
+        ModbusResult result;
+        const QByteArray reply = m_bus->handleFrame(RtuFrame::encodeRequest(request)).reply;
+        if (m_lost.removeOne(request.slave)) {
+            result.error = ModbusError::Timeout;
+            return result;
+        }
+        if (request.slave == m_garbledAt) {
+            m_garbledAt = -1;
+            result.discardedGarbled = true;
+        }
+        if (reply.isEmpty()) {
+            result.error = ModbusError::Timeout;
+            return result;
+        }
+        const bool garbled = result.discardedGarbled;
+        RtuFrame::decodeReply(request, reply, &result);
+        result.discardedGarbled = garbled;
+        return result;
+    }
+
+private:
+    std::shared_ptr<SimBus> m_bus;
+    QVector<int> m_lost;
+    int m_garbledAt;
+    bool m_open = false;
 };
 
 QVector<int> slavesOf(const QVector<DeviceInfo>& devices)
@@ -330,6 +377,119 @@ TEST(BusScannerTest, ALateReplyTakenByAnotherRequestIsAskedAgain)
     EXPECT_EQ(scanner.lateAnswers(), 1);
 }
 
+TEST(BusScannerTest, AnAddressThatAnsweredButWasNotIdentifiedIsAskedAgainAndReported)
+{
+    // 7 refuses the DBU's read (exception 01) and never answers the DC controller's: it is
+    // there, but not known as what. It is asked again, said so, and reported, not dropped.
+    QString error;
+    auto bus = SimBus::fromSpec(QStringLiteral("dbu200@5"), &error);
+    ASSERT_TRUE(bus) << qPrintable(error);
+    auto backend = std::make_unique<MockBackend>([bus](const QByteArray& request) {
+        if (quint8(request.at(0)) != 7)
+            return bus->handleFrame(request).reply;
+        if (request.at(1) == 0x04) {
+            return ModbusCrc::append(QByteArray::fromHex("07 84 01"));
+        }
+        return QByteArray();
+    });
+    MockBackend* mock = backend.get();
+    ModbusClient client(std::move(backend), ConnectionSettings());
+    ASSERT_TRUE(client.openBlocking().isEmpty());
+    BusScanner scanner(&client, ProfileRegistry::builtIn());
+    scanner.setRange(4, 8);
+    scanner.setWaitMs(10);
+    QVector<int> retries;
+    QObject::connect(&scanner, &BusScanner::identificationRetry,
+                     [&retries](int slave, int attempt, int attempts) {
+                         EXPECT_EQ(slave, 7);
+                         EXPECT_EQ(attempts, BusScanner::kIdentifyRetries);
+                         retries << attempt;
+                     });
+    ScanRecord record(scanner);
+    scanner.start();
+    record.waitFinished();
+
+    EXPECT_EQ(retries, (QVector<int>{1, 2, 3}));
+    ASSERT_EQ(slavesOf(record.finished), (QVector<int>{5, 7}));
+    EXPECT_EQ(record.finished[0].state, DeviceInfo::State::Present);
+    const DeviceInfo& seven = record.finished[1];
+    EXPECT_EQ(seven.state, DeviceInfo::State::IdentifyFailed);
+    EXPECT_TRUE(seven.detail.contains(QStringLiteral("add it by hand")))
+        << qPrintable(seven.detail);
+    EXPECT_EQ(DeviceInfo::stateText(seven.state),
+              QStringLiteral("answered, identification failed"));
+    EXPECT_EQ(BusScanner::unidentified(scanner.devices()), QVector<int>{7});
+    EXPECT_EQ(slavesOf(record.found), (QVector<int>{5, 7}));
+    // 7: both families' reads in the pass and in each of the three retries.
+    int toSeven = 0;
+    for (const QByteArray& r : mock->requests())
+        toSeven += quint8(r.at(0)) == 7;
+    EXPECT_EQ(toSeven, 2 * (1 + BusScanner::kIdentifyRetries));
+    EXPECT_EQ(record.lastDone, 5);
+}
+
+TEST(BusScannerTest, TheScanHoldsPollingUntilItEnds)
+{
+    // While the scanner runs, the client holds polling; it lets go when the scan finishes, is
+    // cancelled, or is deleted while running.
+    auto client = simClient(QStringLiteral("dbu200@1"));
+    {
+        BusScanner scanner(client.get(), ProfileRegistry::builtIn());
+        scanner.setRange(1, 3);
+        scanner.setWaitMs(10);
+        bool heldAtEnd = true;
+        QObject::connect(&scanner, &BusScanner::finished,
+                         [&] { heldAtEnd = client->isPollingHeld(); });
+        ScanRecord record(scanner);
+        EXPECT_FALSE(client->isPollingHeld());
+        record.lastDone = 0;
+        scanner.start();
+        EXPECT_TRUE(client->isPollingHeld());
+        record.waitFinished();
+        EXPECT_FALSE(heldAtEnd); // released before finished(): its listeners may poll at once
+        EXPECT_FALSE(client->isPollingHeld());
+
+        record.lastDone = 0; // a new pass
+        scanner.start();
+        EXPECT_TRUE(client->isPollingHeld());
+        scanner.cancel();
+        QEventLoop loop;
+        QTimer::singleShot(300, &loop, &QEventLoop::quit);
+        loop.exec();
+        EXPECT_FALSE(scanner.isRunning());
+        EXPECT_FALSE(client->isPollingHeld());
+        record.lastDone = 0;
+        scanner.start();
+        EXPECT_TRUE(client->isPollingHeld());
+    }
+    EXPECT_FALSE(client->isPollingHeld()); // deleted while running
+}
+
+TEST(BusScannerTest, AGarbledFrameDiscardedBeforeARequestMakesTheTwoAddressesBeforeAskedAgain)
+{
+    // 3's reply came after its wait and met the request to 4 on the line (both lost); the wreck
+    // arrived after 4's wait too and was thrown away before the request to 5 went out.
+    QString error;
+    auto bus = SimBus::fromSpec(QStringLiteral("dbu200@3,dbu200@4"), &error);
+    ASSERT_TRUE(bus) << qPrintable(error);
+    ModbusClient client(std::make_unique<CollisionBackend>(bus, QVector<int>{3, 4}, 5),
+                        ConnectionSettings());
+    ASSERT_TRUE(client.openBlocking().isEmpty());
+    BusScanner scanner(&client, ProfileRegistry::builtIn());
+    scanner.setRange(2, 7);
+    scanner.setWaitMs(10);
+    ScanRecord record(scanner);
+    scanner.start();
+    record.waitFinished();
+
+    ASSERT_EQ(slavesOf(record.finished), (QVector<int>{3, 4}));
+    for (const DeviceInfo& d : record.finished) {
+        EXPECT_EQ(d.state, DeviceInfo::State::Present) << d.slave;
+        EXPECT_TRUE(d.detail.contains(QStringLiteral("answered late"))) << qPrintable(d.detail);
+    }
+    EXPECT_EQ(scanner.lateAnswers(), 2);
+}
+
 TEST(BusScannerTest, PortFailureStopsTheScan)
 {
     auto backend = std::make_unique<MockBackend>([](const QByteArray&) { return QByteArray(); });
@@ -375,4 +535,13 @@ TEST(BusScannerTest, WaitIsDerivedFromTheBaudRate)
     EXPECT_EQ(scanner.waitMs(), 120);
     scanner.setWaitMs(0);
     EXPECT_EQ(scanner.waitMs(), 18);
+
+    // Once an address has answered, identification waits for the whole reply: the DC
+    // controller's 10 registers are 25 bytes, 13.0 ms at 19200 8N1 after the first byte's
+    // 18 ms, + 2 ms margin.
+    s = ConnectionSettings();
+    s.baud = 19200;
+    EXPECT_EQ(BusScanner::wholeReplyWaitMs(s, 18, 25), 34);
+    s.baud = 9600; // 1.042 ms per character: 25 + 26.0 + 2
+    EXPECT_EQ(BusScanner::wholeReplyWaitMs(s, 25, 25), 54);
 }

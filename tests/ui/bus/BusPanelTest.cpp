@@ -222,14 +222,25 @@ TEST_F(BusPanelTest, APollThatChangesNothingRepaintsNothing)
     EXPECT_EQ(text(1, BusListModel::Priority), QStringLiteral("Communication priority"));
 }
 
-TEST_F(BusPanelTest, AScanPausesThePollerAndResumesIt)
+TEST_F(BusPanelTest, AScanHoldsTheBusAndTheLightsAreNotLiveMeanwhile)
 {
+    // The scanner holds the bus (polling waits in the client, not by a trick of this panel),
+    // the lights go grey at once and the message says why; afterwards polling goes on.
     open(QStringLiteral("dbu200@1"));
+    scan(1, 1);
     poller->start();
+    ASSERT_TRUE(waitFor([&] { return led(1) == Led::Green; }));
     panel->startScan(1, 3);
-    EXPECT_FALSE(poller->isActive());
-    ASSERT_TRUE(waitFor([&] { return !panel->isScanning(); }));
+    EXPECT_TRUE(made.client->isPollingHeld());
     EXPECT_TRUE(poller->isActive());
+    EXPECT_EQ(led(1), Led::Grey);
+    EXPECT_TRUE(panel->message().contains(QStringLiteral("Polling waits until the scan is over")))
+        << qPrintable(panel->message());
+    ASSERT_TRUE(waitFor([&] { return !panel->isScanning(); }));
+    EXPECT_FALSE(made.client->isPollingHeld());
+    const int cycles = poller->cyclesCompleted();
+    EXPECT_TRUE(waitFor([&] { return poller->cyclesCompleted() > cycles + 1; }));
+    EXPECT_TRUE(waitFor([&] { return led(1) == Led::Green; }));
 }
 
 TEST_F(BusPanelTest, TheVariantCanBeChosenWhereTheDriveDoesNotReportIt)

@@ -5,11 +5,14 @@
 // (class, objectName, text) and where it is, so that a failure says what to fix.
 #pragma once
 
+#include <QAbstractAxis>
 #include <QAbstractButton>
 #include <QAbstractItemView>
 #include <QAbstractScrollArea>
 #include <QAbstractSpinBox>
 #include <QApplication>
+#include <QChart>
+#include <QChartView>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QGraphicsView>
@@ -79,7 +82,75 @@ public:
             .arg(w->height());
     }
 
+    // Why `w` is not wholly in sight in its window (scrolled away, cut by a parent), or empty.
+    static QString outOfSight(const QWidget* w)
+    {
+        QRect seen = w->rect();
+        for (const QWidget* p = w; p->parentWidget() && !p->isWindow(); p = p->parentWidget()) {
+            seen.translate(p->pos());
+            seen &= p->parentWidget()->rect();
+        }
+        const QRect whole(w->mapTo(w->window(), QPoint(0, 0)), w->size());
+        if (seen == whole)
+            return QString();
+        return QStringLiteral("only %1×%2 px of %3×%4 in sight without scrolling")
+            .arg(std::max(0, seen.width()))
+            .arg(std::max(0, seen.height()))
+            .arg(whole.width())
+            .arg(whole.height());
+    }
+
+    // The cells of `view` whose text is cut (elided) and not explained by a tooltip.
+    static QStringList cutCells(const QAbstractItemView* view)
+    {
+        QStringList cut;
+        const QAbstractItemModel* model = view->model();
+        if (!model)
+            return cut;
+        for (int row = 0; row < std::min(model->rowCount(), 100); ++row) {
+            for (int column = 0; column < model->columnCount(); ++column) {
+                const QModelIndex index = model->index(row, column);
+                const QRect r = view->visualRect(index);
+                const QString text = index.data(Qt::DisplayRole).toString();
+                if (r.isEmpty() || text.isEmpty())
+                    continue;
+                // The style's text margins (focus frame margin + 1) either side, and a
+                // decoration if there is one.
+                int needed = view->fontMetrics().horizontalAdvance(text) + 6;
+                if (!index.data(Qt::DecorationRole).isNull())
+                    needed += view->iconSize().isValid() ? view->iconSize().width() + 4 : 20;
+                if (needed > r.width())
+                    cut << QStringLiteral("\"%1\" needs %2 px, has %3")
+                               .arg(text)
+                               .arg(needed)
+                               .arg(r.width());
+            }
+        }
+        return cut;
+    }
+
 private:
+    // A chart whose axis titles do not fit along its plot area is drawn with "S…" and "…".
+    void checkChart(const QChartView* view)
+    {
+        const QChart* chart = view->chart();
+        if (!chart || !view->isVisible())
+            return;
+        const QRectF plot = chart->plotArea();
+        for (const QAbstractAxis* axis : chart->axes()) {
+            if (!axis->isVisible() || axis->titleText().isEmpty())
+                continue;
+            const bool vertical = axis->orientation() == Qt::Vertical;
+            const int room = int(vertical ? plot.height() : plot.width());
+            const int needed = QFontMetrics(axis->titleFont()).horizontalAdvance(axis->titleText());
+            if (needed > room)
+                add(view, QStringLiteral("axis title \"%1\" needs %2 px, the plot has %3")
+                              .arg(axis->titleText())
+                              .arg(needed)
+                              .arg(room));
+        }
+    }
+
     static QString plain(QString text)
     {
         text.remove(QRegularExpression(QStringLiteral("&(?!&)")));
@@ -136,6 +207,8 @@ private:
         checkText(w);
         if (auto* bar = qobject_cast<QTabBar*>(w))
             checkTabs(bar);
+        if (auto* chart = qobject_cast<QChartView*>(w))
+            checkChart(chart);
         if (auto* table = qobject_cast<QAbstractItemView*>(w)) {
             for (QHeaderView* h :
                  table->findChildren<QHeaderView*>(QString(), Qt::FindDirectChildrenOnly))

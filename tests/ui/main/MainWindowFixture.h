@@ -56,6 +56,44 @@ inline bool waitFor(const std::function<bool()>& condition, int ms = 10000)
     return condition();
 }
 
+// The drive's Test run page, made current (so that it is visible and watches its drive).
+inline TestRunPanel* showTestRun(MainWindow& window, int slave)
+{
+    QTabWidget* tabs = window.workspace()->tabs();
+    TestRunPanel* panel = nullptr;
+    int tab = -1;
+    waitFor([&] {
+        for (TestRunPanel* p : window.findChildren<TestRunPanel*>()) {
+            for (int i = 0; i < tabs->count(); ++i) {
+                if (p->slave() == slave && tabs->widget(i)->isAncestorOf(p)) {
+                    panel = p;
+                    tab = i;
+                }
+            }
+        }
+        return panel != nullptr;
+    });
+    if (panel)
+        tabs->setCurrentIndex(tab);
+    return panel;
+}
+
+// Clicks `name` on the page and answers the start question with Yes; returns its text.
+inline QString clickAndConfirm(TestRunPanel* panel, const QString& name)
+{
+    panel->findChild<QPushButton*>(name)->click();
+    QMessageBox* box = nullptr;
+    waitFor([&] {
+        box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        return box != nullptr;
+    });
+    if (!box)
+        return QString();
+    const QString text = box->text();
+    box->button(QMessageBox::Yes)->click();
+    return text;
+}
+
 class MainWindowFixture : public ::testing::Test
 {
 protected:

@@ -1,7 +1,7 @@
 // Communication groups in the real window: a write to a group parent names the drives it also
 // reaches before anything is sent and reads their values back afterwards; the group view shows
 // who follows whom, flags what is wrong, and writes a plan proved by reading every drive back.
-#include "MainWindowFixture.h"
+#include "MainWindowGroupsFixture.h"
 #include "alarms/AlarmsPage.h"
 #include "bus/BusGroupTracker.h"
 #include "groups/GroupsView.h"
@@ -13,79 +13,7 @@ using namespace opentop::test;
 
 namespace {
 
-class MainWindowGroupsTest : public MainWindowFixture
-{
-protected:
-    // Answers the next message box named `name` with the button named `button` (Cancel when
-    // empty), after running `whileAsked`; returns the box's text.
-    std::shared_ptr<QString> answer(const QString& name, const QString& button,
-                                    std::function<void()> whileAsked = {})
-    {
-        auto text = std::make_shared<QString>();
-        auto* timer = new QTimer(window.get());
-        timer->setInterval(10);
-        QObject::connect(timer, &QTimer::timeout, window.get(), [=] {
-            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
-            if (!box || box->objectName() != name)
-                return;
-            timer->stop();
-            timer->deleteLater();
-            *text = box->text() + QLatin1Char('\n') + box->informativeText();
-            if (whileAsked)
-                whileAsked();
-            QAbstractButton* b = button.isEmpty() ? box->button(QMessageBox::Cancel)
-                                                  : box->findChild<QPushButton*>(button);
-            ASSERT_NE(b, nullptr);
-            b->click();
-        });
-        timer->start();
-        return text;
-    }
-
-    void setGroupInSimulator(int slave, int group)
-    {
-        ASSERT_TRUE(bus->control(slave, {QStringLiteral("set"), QStringLiteral("0x00F5"),
-                                         QString::number(group)})
-                        .ok);
-    }
-
-    // The group view's "Read groups again", and the window knowing the result.
-    void readGroups()
-    {
-        GroupsView* view = window->groupsView();
-        ASSERT_NE(view, nullptr);
-        view->readAgain();
-        ASSERT_TRUE(waitFor([&] { return !view->busy(); }));
-    }
-
-    // Drives 2 and 150 follow drive 1.
-    void makeGroupOfOne()
-    {
-        setGroupInSimulator(2, 1);
-        setGroupInSimulator(150, 1);
-        readGroups();
-        ASSERT_EQ(window->groups()->groups().childrenOf(1), (QVector<int>{2, 150}));
-    }
-
-    // The field on the shown drive's Running data page (pages of a drive shown before may
-    // still wait for their deletion).
-    ParameterField* field(const QString& name)
-    {
-        ParameterPage* page = window->workspace()->page(QStringLiteral("Running data"));
-        if (!page)
-            return nullptr;
-        for (ParameterField* f : page->findChildren<ParameterField*>())
-            if (f->parameterName() == name)
-                return f;
-        return nullptr;
-    }
-
-    double deviceNumber(int slave, const QString& name)
-    {
-        const DeviceParameters::Entry* e = window->drives()->parameters(slave)->entry(name);
-        return e && e->device.valid ? e->device.number : -1;
-    }
-};
+using MainWindowGroupsTest = MainWindowGroupsFixture;
 
 const QString kSpeed = QStringLiteral("spno2.speed");
 constexpr quint16 kSpeedAddress = 0xCA03;

@@ -1,9 +1,7 @@
 // Laptop first (issue 10 item 13): the whole program on a 1366×768 screen. Every page of a DBU
 // and of the DC controller, every dock and every dialog the menus open is shown in turn and
 // inspected (LayoutInspector): nothing larger than the screen, nothing overlapping, no text cut.
-#include "LayoutInspector.h"
-#include "MainWindowFixture.h"
-#include "TsIndex.h"
+#include "MainWindowLayoutFixture.h"
 #include "eol/RecipeEditor.h"
 #include "eol/ResultsBrowser.h"
 #include "files/BackupDialog.h"
@@ -23,128 +21,6 @@
 
 using namespace opentop;
 using namespace opentop::test;
-
-namespace {
-
-void settle(int ms = 120)
-{
-    QElapsedTimer timer;
-    timer.start();
-    while (timer.elapsed() < ms)
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-}
-
-std::string rect(const QRect& r)
-{
-    return QStringLiteral("%1,%2 %3×%4")
-        .arg(r.x())
-        .arg(r.y())
-        .arg(r.width())
-        .arg(r.height())
-        .toStdString();
-}
-
-} // namespace
-
-class MainWindowLayoutTest : public MainWindowFixture
-{
-protected:
-    void SetUp() override
-    {
-        MainWindowFixture::SetUp();
-        if (HasFatalFailure())
-            return;
-        screen = window->screen()->availableGeometry();
-        window->setGeometry(QRect(screen.topLeft(), QSize(1366, 768)));
-        settle();
-    }
-
-    // Records the problems of `top` under `where`.
-    void inspect(QWidget* top, const QString& where)
-    {
-        // Layouts settle over a few passes (a row that wraps asks its parent for more height):
-        // judged once they have, as the user sees them a moment later.
-        for (int pass = 0; pass < 5; ++pass) {
-            QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
-            QCoreApplication::processEvents();
-        }
-        for (const QString& p : LayoutInspector::problems(top, screen))
-            problems << QStringLiteral("[%1] %2").arg(where, p);
-    }
-
-    // The action a user finds by its text, in the window's language.
-    QAction* action(const QString& text)
-    {
-        const QStringList wanted = translationsOf(language, text);
-        for (QAction* a : window->findChildren<QAction*>()) {
-            if (wanted.contains(plainMenuText(a->text())))
-                return a;
-        }
-        ADD_FAILURE() << "no action " << qPrintable(text) << " ("
-                      << qPrintable(wanted.join(QStringLiteral(", "))) << ")";
-        return nullptr;
-    }
-
-    // Triggers `a`, which opens a modal dialog, inspects the dialog and closes it.
-    void inspectModal(QAction* a, const QString& where)
-    {
-        ASSERT_NE(a, nullptr);
-        bool seen = false;
-        QTimer poll;
-        poll.setInterval(30);
-        QObject::connect(&poll, &QTimer::timeout, [&] {
-            auto* dialog = qobject_cast<QDialog*>(QApplication::activeModalWidget());
-            if (!dialog || !dialog->isVisible())
-                return;
-            poll.stop();
-            settle();
-            inspect(dialog, where);
-            seen = true;
-            dialog->reject();
-        });
-        poll.start();
-        a->trigger();
-        poll.stop();
-        EXPECT_TRUE(seen) << qPrintable(where) << ": no dialog";
-    }
-
-    void inspectDialog(QDialog* dialog, const QString& where)
-    {
-        dialog->show();
-        settle();
-        inspect(dialog, where);
-        dialog->close();
-    }
-
-    // Every tab of the selected drive's workspace, each in front in turn.
-    void inspectPages(int slave, const QString& name)
-    {
-        select({slave});
-        DeviceParameters* params = window->drives()->parameters(slave);
-        ASSERT_NE(params, nullptr);
-        ASSERT_TRUE(waitFor([&] { return window->workspace()->drive() == params; }));
-        QTabWidget* tabs = window->workspace()->tabs();
-        settle(300); // the values read and shown
-        for (int i = 0; i < tabs->count(); ++i) {
-            tabs->setCurrentIndex(i);
-            settle();
-            inspect(window.get(), QStringLiteral("%1, page %2").arg(name, tabs->tabText(i)));
-        }
-        tabs->setCurrentIndex(0);
-    }
-
-    QString report() const
-    {
-        return QStringLiteral("%1 layout problem(s) at 1366×768:\n").arg(problems.size()) +
-               problems.join(QLatin1Char('\n'));
-    }
-
-    // Every page, dock and dialog, inspected in turn.
-    void inspectEverything();
-
-    QRect screen;
-    QStringList problems;
-};
 
 TEST_F(MainWindowLayoutTest, TheDefaultWindowFitsTheScreen)
 {
@@ -253,46 +129,7 @@ void MainWindowLayoutTest::inspectEverything()
     window->findChild<QDockWidget*>(QStringLiteral("trafficDock"))->show();
     settle(300);
     inspect(window.get(), QStringLiteral("all docks open"));
-    if (window->height() > screen.height()) {
-        // What holds the window up: the central area (as tall as its tallest page) and docks.
-        problems << QStringLiteral("  bus panel needs %1 px, workspace %2 px, central %3 px")
-                        .arg(window->busPanel()->minimumSizeHint().height())
-                        .arg(window->workspace()->minimumSizeHint().height())
-                        .arg(window->centralWidget()->minimumSizeHint().height());
-        problems << QStringLiteral("  window needs %1 px, menu bar %2, status bar %3")
-                        .arg(window->minimumSizeHint().height())
-                        .arg(window->menuBar()->sizeHint().height())
-                        .arg(window->statusBar()->minimumSizeHint().height());
-        for (QToolBar* bar : window->findChildren<QToolBar*>())
-            problems << QStringLiteral("  tool bar %1 needs %2 px")
-                            .arg(bar->windowTitle())
-                            .arg(bar->minimumSizeHint().height());
-        for (QDockWidget* dock : docks)
-            problems << QStringLiteral("  dock %1 needs %2 px")
-                            .arg(dock->windowTitle())
-                            .arg(dock->minimumSizeHint().height());
-        problems << QStringLiteral("  bus panel needs %1 px, workspace %2 px, central %3 px")
-                        .arg(window->busPanel()->minimumSizeHint().height())
-                        .arg(window->workspace()->minimumSizeHint().height())
-                        .arg(window->centralWidget()->minimumSizeHint().height());
-        problems << QStringLiteral("  window needs %1 px, menu bar %2, status bar %3")
-                        .arg(window->minimumSizeHint().height())
-                        .arg(window->menuBar()->sizeHint().height())
-                        .arg(window->statusBar()->minimumSizeHint().height());
-        for (QToolBar* bar : window->findChildren<QToolBar*>())
-            problems << QStringLiteral("  tool bar %1 needs %2 px")
-                            .arg(bar->windowTitle())
-                            .arg(bar->minimumSizeHint().height());
-        for (QDockWidget* dock : docks)
-            problems << QStringLiteral("  dock %1 needs %2 px")
-                            .arg(dock->windowTitle())
-                            .arg(dock->minimumSizeHint().height());
-        QTabWidget* tabs = window->workspace()->tabs();
-        for (int i = 0; i < tabs->count(); ++i)
-            problems << QStringLiteral("  page %1 needs %2 px")
-                            .arg(tabs->tabText(i))
-                            .arg(tabs->widget(i)->minimumSizeHint().height());
-    }
+    explainHeight();
     for (QDockWidget* dock : docks)
         dock->hide();
     settle();

@@ -2,6 +2,7 @@
 #include "trends/TrendAxes.h"
 
 #include <QChart>
+#include <QFontMetricsF>
 #include <QValueAxis>
 #include <gtest/gtest.h>
 
@@ -17,9 +18,19 @@ TEST(TrendAxesTest, TitlesNameQuantitiesAndUnitAndShortenKeepingTheUnit)
     EXPECT_EQ(axes.axis(0)->titleText(), QStringLiteral("Current speed, Target speed [r/min]"));
     EXPECT_EQ(axes.axis(1)->titleText(), QStringLiteral("Load rate [%]"));
     EXPECT_TRUE(axes.axis(1)->isVisible());
-    axes.fitTitles(60); // far too short for either full title
+    // Just tall enough for the shared word and the unit, not for the full title.
+    const QFontMetricsF metrics(axes.axis(0)->titleFont());
+    axes.fitTitles(metrics.horizontalAdvance(QStringLiteral("Speed [r/min]")) + 1);
     EXPECT_EQ(axes.axis(0)->titleText(), QStringLiteral("Speed [r/min]"));
-    EXPECT_EQ(axes.axis(1)->titleText(), QStringLiteral("[%]"));
+    // Too short for that too (a laptop's window with a dock open): the unit alone, never "S…".
+    const double shorter = metrics.horizontalAdvance(QStringLiteral("Speed [r/min]")) - 1;
+    axes.fitTitles(shorter);
+    EXPECT_EQ(axes.axis(0)->titleText(), QStringLiteral("[r/min]"));
+    const QFontMetricsF right(axes.axis(1)->titleFont());
+    EXPECT_EQ(axes.axis(1)->titleText(),
+              right.horizontalAdvance(QStringLiteral("Load rate [%]")) < shorter
+                  ? QStringLiteral("Load rate [%]")
+                  : QStringLiteral("[%]"));
     EXPECT_EQ(TrendAxes::sharedWord({QStringLiteral("Motor current"), QStringLiteral("PWM duty")}),
               QString());
 }
