@@ -260,177 +260,187 @@
         <translation>応答なし</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="48"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="49"/>
         <source>top level</source>
         <translation>最上位</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="51"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="52"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot; は 1 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="61"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="62"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot; は小文字の ID でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="71"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="70"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity は N、E、O のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="75"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="74"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial: baud は 1200–115200、stopBits は 1 または 2 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="81"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="86"/>
+        <source>serial.formats: &quot;%1&quot; is not a format such as 8N1 or 8E1</source>
+        <translation>serial.formats: &quot;%1&quot; は 8N1 や 8E1 のような形式ではありません</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="90"/>
+        <source>serial.formats must hold the default format %1</source>
+        <translation>serial.formats には既定の形式 %1 が含まれている必要があります</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="94"/>
         <source>serial.powerOnDelayMs must be 0–60000</source>
         <translation>serial.powerOnDelayMs は 0–60000 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="95"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="107"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits: maxReadRegisters は 1–125、maxWriteRegisters は 1–123 です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="97"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="109"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits: slaves は 1–247 の範囲でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="112"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="124"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1] には id、model、label が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="114"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="126"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]: id &quot;%2&quot; が重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="125"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="137"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1] には一意の id と label が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="136"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="148"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1] には function 3 または 4 と first ≤ last が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="180"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="192"/>
         <source>%1 has no name</source>
         <translation>%1 に名前がありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="182"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="194"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1: reset は %2 のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="185"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="197"/>
         <source>%1: code %2 repeated</source>
         <translation>%1: コード %2 が重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="207"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="219"/>
         <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
         <translation>%1: storeWith &quot;%2&quot; はコマンドパラメータではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="210"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="222"/>
         <source>%1: the default is not among its allowed values</source>
         <translation>%1: 初期値が許容値に含まれていません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="214"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="226"/>
         <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
         <translation>%1: ビットフィールド &quot;%2&quot;: function &quot;%3&quot; は読出し可能なパラメータではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="221"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
         <source>%1: condition on unknown parameter &quot;%2&quot;</source>
         <translation>%1: 不明なパラメータ &quot;%2&quot; に対する条件です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="223"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="235"/>
         <source>%1: the default is not allowed when %2</source>
         <translation>%1: %2 のときは初期値が許容されません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="245"/>
         <source>%1 runs past address 0xFFFF</source>
         <translation>%1 がアドレス 0xFFFF を超えています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="236"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="248"/>
         <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
         <translation>%1 が 0x%3 で &quot;%2&quot; と重なっています（%4 レジスタ）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="260"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="272"/>
         <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
         <translation>identify: &quot;%1&quot; は identify の読出し範囲内のパラメータでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="263"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
         <source>identify.nameMatch is not a valid regular expression</source>
         <translation>identify.nameMatch が正しい正規表現ではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="287"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1: 不明なパラメータ &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="303"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="315"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1 はパラメータ名、名前のリスト、またはオブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="312"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="324"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1: &quot;%2&quot; にビットフィールド &quot;%3&quot; はありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="318"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="330"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1: %2 は &quot;%3&quot; で書き込める値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="336"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="348"/>
         <source>decelerationKnobs need the &quot;selected&quot; role</source>
         <translation>decelerationKnobs には &quot;selected&quot; ロールが必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="352"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
         <source>%1 needs &quot;selected&quot; and &quot;maxSeconds&quot;</source>
         <translation>%1 には &quot;selected&quot; と &quot;maxSeconds&quot; が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="355"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="367"/>
         <source>%1: &quot;selected&quot; %2 is not a value of the &quot;selected&quot; role, or repeated</source>
         <translation>%1: &quot;selected&quot; %2 は &quot;selected&quot; ロールの値ではないか、重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="360"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="372"/>
         <source>%1: &quot;maxSeconds&quot; must be more than 0 and at most 600</source>
         <translation>%1: &quot;maxSeconds&quot; は 0 より大きく 600 以下でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="392"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="404"/>
         <source>%1: &quot;light&quot; must be one of %2, each once</source>
         <translation>%1: &quot;light&quot; は %2 のいずれかで、それぞれ 1 回だけでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="395"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
         <source>%1: &quot;colour&quot; must be #rrggbb</source>
         <translation>%1: &quot;colour&quot; は #rrggbb でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="397"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="409"/>
         <source>%1: &quot;label&quot; and &quot;meaning&quot; must not be empty</source>
         <translation>%1: &quot;label&quot; と &quot;meaning&quot; は空にできません</translation>
     </message>
@@ -440,7 +450,7 @@
         <translation> ほか %1 件</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="26"/>
+        <location filename="../cli/TuneCommand.cpp" line="27"/>
         <source>not reached</source>
         <translation>未到達</translation>
     </message>
@@ -1065,124 +1075,150 @@ Remedy: %5</source>
         <translation>オートチューニング…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="27"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="28"/>
         <source>Accept</source>
         <translation>採用</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="28"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="29"/>
         <source>Reject</source>
         <translation>不採用</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="29"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="30"/>
         <source>Store in the drive</source>
         <translation>ドライバに保存</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="43"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="48"/>
         <source>Writes the proposed gains to the drive (temporary until stored) and offers a step test to compare with the prediction</source>
         <translation>提案ゲインをドライバに書き込み（保存するまでは一時的）、予測と比較するためのステップ試験を提示します</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="45"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="50"/>
         <source>Writes back the gains the drive had before</source>
         <translation>ドライバの以前のゲインを書き戻します</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="46"/>
-        <source>Stores the gains in the drive so that they survive a power cycle</source>
-        <translation>電源再投入後も残るよう、ゲインをドライバに保存します</translation>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="51"/>
+        <source>Stores the gains in the drive so that they survive a power cycle; asks first unless the step after Accept passed the check</source>
+        <translation>電源再投入後も残るよう、ゲインをドライバに保存します。採用後のステップが確認に合格していなければ、先に確認を求めます</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="51"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="57"/>
         <source>Operating speed:</source>
         <translation>運転速度:</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="52"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="58"/>
         <source>Relay amplitude:</source>
         <translation>リレー振幅:</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="53"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="59"/>
         <source>%</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="54"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
         <source>Rule:</source>
         <translation>チューニングルール:</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="58"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="64"/>
         <source>Present</source>
         <translation>現在</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="59"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="65"/>
         <source>Proposed</source>
         <translation>提案</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="66"/>
         <source>P</source>
         <translation>P</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="66"/>
         <source>I</source>
         <translation>I</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="66"/>
         <source>D</source>
         <translation>D</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="66"/>
         <source>D period</source>
         <translation>D 周期</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="106"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="113"/>
         <source>Enter an operating speed above 0 %1.</source>
         <translation>0 %1 より大きい運転速度を入力してください。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="110"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="117"/>
         <source>Enter a relay amplitude of 1–50 %.</source>
         <translation>リレー振幅を 1–50 % で入力してください。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="123"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="130"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="183"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="138"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="145"/>
         <source>No autotune result yet.</source>
         <translation>オートチューニング結果はまだありません。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="146"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="153"/>
         <source>Autotune failed: %1</source>
         <translation>オートチューニング失敗: %1</translation>
     </message>
     <message>
         <location filename="../ui/tuning/AutotunePanel.cpp" line="155"/>
-        <source>Ku %1 %/%2, Tu %3 ms</source>
-        <translation>Ku %1 %/%2、Tu %3 ms</translation>
+        <source>What to change: %1</source>
+        <translation>変更すべき点: %1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="158"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="165"/>
+        <source>Relay: Ku %1 %/%2, Tu %3 ms measured, %4 readings per period (one every %5 ms)</source>
+        <translation>リレー: Ku %1 %/%2、Tu %3 ms（実測）、1 周期あたり読出し %4 回（%5 ms ごと）</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="175"/>
+        <source>The drive&apos;s own loop (model): Ku %1 %/%2, Tu %3 ms</source>
+        <translation>ドライバ自身のループ（モデル）: Ku %1 %/%2、Tu %3 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="180"/>
+        <source>Proposal: the rule&apos;s P × %1, Ti × %2; predicted overshoot %3 %, settling %4</source>
+        <translation>提案: ルールの P × %1、Ti × %2。予測オーバーシュート %3 %、整定 %4</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="184"/>
+        <source>not within the record</source>
+        <translation>記録時間内になし</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="208"/>
+        <source>Check after Accept: passed.</source>
+        <translation>採用後の確認: 合格。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="209"/>
+        <source>Check after Accept: FAILED. Reject writes back the gains the drive had.</source>
+        <translation>採用後の確認: 不合格。「不採用」でドライバの元のゲインを書き戻します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="171"/>
         <source>Model: K %1 %2/%, τ %3 ms, dead time %4 ms</source>
         <translation>モデル: K %1 %2/%、τ %3 ms、むだ時間 %4 ms</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="163"/>
-        <source>No model: %1</source>
-        <translation>モデルなし: %1</translation>
     </message>
 </context>
 <context>
@@ -1214,8 +1250,8 @@ Remedy: %5</source>
     </message>
     <message>
         <location filename="../cli/BackupCommand.cpp" line="60"/>
-        <location filename="../cli/BackupCommand.cpp" line="220"/>
         <location filename="../cli/BackupCommand.cpp" line="226"/>
+        <location filename="../cli/BackupCommand.cpp" line="232"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
@@ -1225,63 +1261,68 @@ Remedy: %5</source>
         <translation>バスのドライバをスキャン中…</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="99"/>
+        <location filename="../cli/BackupCommand.cpp" line="84"/>
+        <source>warning: machine number %1 answered, but its identification failed: it is not backed up; name it to try again (backup %1 -o FILE).</source>
+        <translation>警告: 局番 %1 は応答しましたが、識別に失敗しました: バックアップしていません。この局番を指定して再試行してください (backup %1 -o FILE)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/BackupCommand.cpp" line="105"/>
         <source>error: the port %1 was lost while reading %2 (%3)</source>
         <translation>エラー: %2 の読出し中にポート %1 が失われました (%3)</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="102"/>
-        <location filename="../cli/BackupCommand.cpp" line="222"/>
+        <location filename="../cli/BackupCommand.cpp" line="108"/>
+        <location filename="../cli/BackupCommand.cpp" line="228"/>
         <source>nothing written to %1</source>
         <translation>%1 には何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="110"/>
+        <location filename="../cli/BackupCommand.cpp" line="116"/>
         <source>error: give the file to write: backup ID... -o FILE</source>
         <translation>エラー: 書き込むファイルを指定してください: backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="114"/>
+        <location filename="../cli/BackupCommand.cpp" line="120"/>
         <source>error: %1; nothing read</source>
         <translation>エラー: %1。何も読み出していません</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="126"/>
+        <location filename="../cli/BackupCommand.cpp" line="132"/>
         <source>interrupted: nothing written</source>
         <translation>中断: 何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="130"/>
+        <location filename="../cli/BackupCommand.cpp" line="136"/>
         <source>error: no drive answers on %1; nothing written</source>
         <translation>エラー: %1 で応答するドライバがありません。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="149"/>
+        <location filename="../cli/BackupCommand.cpp" line="155"/>
         <source>machine number %1</source>
         <translation>局番 %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="164"/>
+        <location filename="../cli/BackupCommand.cpp" line="170"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>局番 %1 の読出し中に中断: 何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="172"/>
+        <location filename="../cli/BackupCommand.cpp" line="178"/>
         <source>%1: cannot read %2</source>
         <translation>%1: %2 を読み出せません</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="174"/>
+        <location filename="../cli/BackupCommand.cpp" line="180"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1 にプロファイルで許可されていない値があるため、このバックアップは復元できません: %2</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="188"/>
+        <location filename="../cli/BackupCommand.cpp" line="194"/>
         <source>%1: %2 settings read in %3 requests, %4 ms</source>
         <translation>%1: %2 個の設定を %3 回の要求で読出し、%4 ms</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="195"/>
+        <location filename="../cli/BackupCommand.cpp" line="201"/>
         <source>%1: reading failed, %2 of %3 settings read (%4 requests, %5 ms)</source>
         <translation>%1: 読出し失敗、%3 個中 %2 個の設定を読出し（%4 回の要求、%5 ms）</translation>
     </message>
@@ -1297,150 +1338,150 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupDialog</name>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="27"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="28"/>
         <source>&amp;Cancel</source>
         <translation>キャンセル(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="28"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="29"/>
         <source>&amp;Save the drives read</source>
         <translation>読み出したドライバを保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="29"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="30"/>
         <source>C&amp;lose</source>
         <translation>閉じる(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="31"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="32"/>
         <source>Back up drives</source>
         <translation>ドライバのバックアップ</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
         <source>Machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
         <source>Progress</source>
         <translation>進捗</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="40"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="41"/>
         <source>Save only the drives that were read; the others are left out</source>
         <translation>読み出せたドライバのみ保存します。その他は除外されます</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="42"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="43"/>
         <source>Stop after the drive being read</source>
         <translation>読出し中のドライバが終わったら停止します</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="87"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="89"/>
         <source>Waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="91"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="93"/>
         <source>%v of %m drives</source>
         <translation>%v / %m 台</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="92"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="94"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>%n 台のドライバの設定を読出し中…</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="102"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="104"/>
         <source>Stopping after the drive being read…</source>
         <translation>読出し中のドライバが終わったら停止します…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="119"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="121"/>
         <source>Not read (cancelled)</source>
         <translation>未読出し（キャンセル）</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="129"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="131"/>
         <source>drive %1: not identified, nothing read</source>
         <translation>ドライバ %1: 識別できません。何も読み出していません</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="130"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="132"/>
         <source>Not identified</source>
         <translation>識別不可</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="138"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="140"/>
         <source>Reading…</source>
         <translation>読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="150"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="152"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>%n 個の設定を %1 ms で読出し</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="155"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="157"/>
         <source>%1: cannot read %2</source>
         <translation>%1: %2 を読み出せません</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="157"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="159"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1 にプロファイルで許可されていない値があるため、このバックアップは復元できません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="162"/>
         <source>Value not allowed</source>
         <translation>許可されていない値</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="162"/>
         <source>Read failed</source>
         <translation>読出し失敗</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="180"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="182"/>
         <source>Not read: drive(s) %1. Nothing has been saved yet.</source>
         <translation>未読出し: ドライバ %1。まだ何も保存していません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="186"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="188"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>読み出した %n 台のドライバを保存しますか？</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="210"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="212"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>%n 台のドライバを %1 に保存しました。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="216"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="218"/>
         <source>Left out (not read): drive(s) %1.</source>
         <translation>除外（未読出し）: ドライバ %1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="220"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="222"/>
         <source>Could not save %1: %2</source>
         <translation>%1 を保存できませんでした: %2</translation>
     </message>
@@ -1607,87 +1648,87 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupViewer</name>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="22"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="23"/>
         <source>Backup file</source>
         <translation>バックアップファイル</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
         <source>Label</source>
         <translation>ラベル</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
         <source>Registers</source>
         <translation>レジスタ</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="34"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>&amp;Open…</source>
         <translation>開く(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="36"/>
         <source>Open another backup file</source>
         <translation>別のバックアップファイルを開きます</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="36"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="37"/>
         <source>C&amp;lose</source>
         <translation>閉じる(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="56"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="58"/>
         <source>%1: no such file</source>
         <translation>%1: ファイルがありません</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="62"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="64"/>
         <source>the file could not be read</source>
         <translation>ファイルを読み込めませんでした</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="63"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="65"/>
         <source>Backup file %1</source>
         <translation>バックアップファイル %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="71"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="73"/>
         <source>Open backup file</source>
         <translation>バックアップファイルを開く</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="72"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="74"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP バックアップ (*.json);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="94"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="96"/>
         <source>File: %1</source>
         <translation>ファイル: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="95"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="97"/>
         <source>Refused: %1</source>
         <translation>拒否: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="110"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="112"/>
         <source>, %1 bit/s, parity %2, %3 stop bit(s)</source>
         <translation>、%1 bit/s、パリティ %2、ストップビット %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="112"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="114"/>
         <source>File: %1
 Written by %2 on %3 (UTC)
 Read from: %4
@@ -1698,17 +1739,17 @@ Drives: %5</source>
 ドライバ: %5</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="121"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="123"/>
         <source>%1 %2, firmware %3</source>
         <translation>%1 %2、ファームウェア %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="123"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="125"/>
         <source>(variant unknown)</source>
         <translation>（機種不明）</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupViewer.cpp" line="125"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="127"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n 個の設定</numerusform>
@@ -1716,30 +1757,43 @@ Drives: %5</source>
     </message>
 </context>
 <context>
+    <name>opentop::BarHideButton</name>
+    <message>
+        <location filename="../ui/widgets/BarHideButton.cpp" line="9"/>
+        <source>Hide this bar</source>
+        <translation>このバーを非表示にします</translation>
+    </message>
+    <message>
+        <location filename="../ui/widgets/BarHideButton.cpp" line="10"/>
+        <source>Hide</source>
+        <translation>非表示</translation>
+    </message>
+</context>
+<context>
     <name>opentop::BusDocks</name>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="26"/>
+        <location filename="../ui/main/BusDocks.cpp" line="27"/>
         <source>Traffic log</source>
         <translation>通信ログ</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="33"/>
+        <location filename="../ui/main/BusDocks.cpp" line="34"/>
         <source>Bus overview</source>
         <translation>バス一覧</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="34"/>
+        <location filename="../ui/main/BusDocks.cpp" line="35"/>
         <source>Trends</source>
         <translation>トレンド</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="35"/>
+        <location filename="../ui/main/BusDocks.cpp" line="36"/>
         <source>Communication groups</source>
         <translation>通信グループ</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="38"/>
-        <location filename="../ui/main/BusDocks.cpp" line="70"/>
+        <location filename="../ui/main/BusDocks.cpp" line="39"/>
+        <location filename="../ui/main/BusDocks.cpp" line="77"/>
         <source>Not connected</source>
         <translation>未接続</translation>
     </message>
@@ -1796,94 +1850,110 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../ui/bus/BusListModel.cpp" line="75"/>
+        <source>Machine number: the drive&apos;s address on the bus (1–247)</source>
+        <translation>局番：バス上のドライブのアドレス（1～247）</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="77"/>
         <source>The drive&apos;s MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, purple external interrupt, blue memory or communication error, grey no answer</source>
         <translation>ドライバの MONITOR LED: 赤 アラーム、緑 準備完了、橙 CW、水色 CCW、紫 外部停止、青 メモリまたは通信異常、灰 応答なし</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="82"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="84"/>
         <source>LED</source>
         <translation>LED</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="84"/>
-        <source>Machine no.</source>
+        <location filename="../ui/bus/BusListModel.cpp" line="86"/>
+        <source>No.</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="86"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
         <source>Hex / switches</source>
         <translation>16 進 / スイッチ</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="88"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
         <source>Family</source>
         <translation>ファミリ</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="90"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="92"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
         <source>Firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="94"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="97"/>
         <source>State</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="96"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="99"/>
         <source>Control priority</source>
         <translation>制御優先</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="108"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="111"/>
         <source>Two drives may share machine number %1 (%2, %3): check the SW1/SW2 switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
         <translation>2 台のドライバが局番 %1 を共有している可能性があります (%2, %3): ライン上の全ドライバの SW1/SW2 スイッチを確認し、各ドライバに固有の局番を設定して電源を再投入してください。終端抵抗の不良や A/B 線の入れ違いでも応答が化けます。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="127"/>
         <location filename="../ui/bus/BusListModel.cpp" line="131"/>
+        <source>%1 at %2</source>
+        <translation>%1、%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
         <location filename="../ui/bus/BusListModel.cpp" line="133"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="137"/>
         <location filename="../ui/bus/BusListModel.cpp" line="139"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="145"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="130"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="136"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 機種不明</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="160"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="166"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>ステータスランプ %1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="164"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="170"/>
         <source>The drive&apos;s manual: %1</source>
         <translation>ドライバのマニュアル: %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="167"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="173"/>
         <source>Status light grey: not live — %1</source>
         <translation>ステータスランプ 灰: 更新停止 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="172"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="178"/>
+        <source>Requests to this drive go out at %1, its own line format, not the port&apos;s: the line is switched to it and back between transactions. Change it with Line format… in the context menu.</source>
+        <translation>このドライブへの要求は、ポートの形式ではなくドライブ自身の通信フォーマット %1 で送信されます。回線はトランザクションの合間にその形式へ切り替わり、また戻ります。右クリックメニューの「通信フォーマット…」で変更します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="185"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>ドライバが機種を通知しません。値が正しい範囲でチェックされるよう、コンテキストメニュー（機種）から選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="181"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="194"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>ドライバは I/O 端子から運転指令を受け付けています。バス経由の試運転には通信優先が必要です。</translation>
     </message>
@@ -1975,147 +2045,152 @@ Drives: %5</source>
 <context>
     <name>opentop::BusPanel</name>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="33"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="34"/>
         <source>&amp;Scan</source>
         <translation>スキャン(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="36"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="37"/>
         <source>A&amp;dd drive…</source>
         <translation>ドライバ追加(&amp;D)…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="38"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="39"/>
         <source>Ca&amp;ncel</source>
         <translation>キャンセル(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="47"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="48"/>
         <source>Ask every machine number of the range who answers</source>
         <translation>範囲内の各局番に応答を問い合わせます</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="49"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="50"/>
         <source>&amp;from</source>
         <translation>開始局番(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="51"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="52"/>
         <source>&amp;to</source>
         <translation>終了局番(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="56"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="57"/>
         <source>Machine numbers 1–247 (the DBU&apos;s SW1/SW2 switches in hex)</source>
         <translation>局番 1–247（DBU では SW1/SW2 スイッチの 16 進値）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="73"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="74"/>
         <source>Identify one machine number and add it to the list</source>
         <translation>局番を 1 つ識別してリストに追加します</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="78"/>
-        <location filename="../ui/bus/BusPanel.cpp" line="194"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="79"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="193"/>
         <source>%v of %m</source>
         <translation>%v / %m</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="79"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="80"/>
         <source>Scan progress</source>
         <translation>スキャン進捗</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="81"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="82"/>
         <source>Stop the scan after the request on the wire</source>
         <translation>送信中の要求が終わったらスキャンを停止します</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="90"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="91"/>
         <source>Rescan at %1</source>
         <translation>%1 で再スキャン</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="124"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="118"/>
         <source>Drives on the bus</source>
         <translation>バス上のドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="185"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="179"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%v / %m（局番 %1）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="195"/>
-        <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
-        <translation>%3 で局番 %1–%2 をスキャン中（各 %4 ms）…</translation>
+        <location filename="../ui/bus/BusPanel.cpp" line="183"/>
+        <source>Machine number %1 answered, identification failed: retrying (%2 of %3)… Polling waits until the scan is over.</source>
+        <translation>局番 %1 は応答しましたが、識別に失敗しました: 再試行中 (%3 回中 %2 回目)… ポーリングはスキャン終了まで待機します。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="214"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="195"/>
+        <source>Scanning machine numbers %1–%2 on %3, %4 ms each… Polling waits until the scan is over.</source>
+        <translation>%3 で局番 %1–%2 をスキャン中（各 %4 ms）… ポーリングはスキャン終了まで待機します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="267"/>
+        <source>If one is on this bus, add it with Add drive and its line format.</source>
+        <translation>このバスにそのようなドライブがある場合は、「ドライブ追加」で通信フォーマットとともに追加してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="272"/>
+        <source>Machine number %1 answered, but its identification failed, also when asked again: add it by hand with Add drive…, or check its line settings and scan again.</source>
+        <translation>局番 %1 は応答しましたが、再度問い合わせても識別に失敗しました:「ドライバ追加…」で手動で追加するか、通信設定を確認して再スキャンしてください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="215"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>送信中の要求が終わったらキャンセルします…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="231"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="233"/>
         <source>Did not answer the last scan.</source>
         <translation>前回のスキャンで応答しませんでした。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="237"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="239"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>局番 %1 でスキャンが停止しました: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="242"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="244"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>局番 %1–%2 の後でスキャンをキャンセルしました（%4 中 %3）: %n 台のドライバが見つかりました。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="250"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="252"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>局番 %1–%2 で %n 台のドライバが見つかりました（%3 s）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="275"/>
-        <source>Add drive</source>
-        <translation>ドライバ追加</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="275"/>
-        <source>Machine number (1–247; the DBU shows it in hex on SW1/SW2):</source>
-        <translation>局番（1–247。DBU では SW1/SW2 の 16 進値）:</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="285"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="293"/>
         <source>Asking machine number %1…</source>
         <translation>局番 %1 に問い合わせ中…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="290"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="298"/>
         <source>Machine number %1: %2 added.</source>
         <translation>局番 %1: %2 を追加しました。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="292"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="300"/>
         <source>Machine number %1: %2 %3</source>
         <translation>局番 %1: %2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="350"/>
+        <location filename="../ui/bus/VariantMenu.cpp" line="26"/>
         <source>&amp;Variant</source>
         <translation>機種(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="366"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="349"/>
         <source>&amp;Identify again</source>
         <translation>再識別(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="372"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="360"/>
         <source>&amp;Remove from list</source>
         <translation>リストから削除(&amp;R)</translation>
     </message>
@@ -2128,32 +2203,22 @@ Drives: %5</source>
         <translation>バスをスキャン(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="28"/>
-        <source>Hide this bar</source>
-        <translation>このバーを非表示にします</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="29"/>
-        <source>Hide</source>
-        <translation>非表示</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="42"/>
         <source>Last time on %1: %2.</source>
         <translation>前回 %1 では: %2。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="48"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="44"/>
         <source>&amp;Restore the drive last seen</source>
         <translation>前回のドライバを呼び出し(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="49"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="45"/>
         <source>&amp;Restore the %1 drives last seen</source>
         <translation>前回の %1 台のドライバを呼び出し(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="50"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
         <source>Identify the drives at these machine numbers again, with the variants set last time</source>
         <translation>前回設定した機種で、これらの局番のドライバを再識別します</translation>
     </message>
@@ -2166,17 +2231,22 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="163"/>
+        <location filename="../model/bus/BusScanner.cpp" line="222"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
         <translation>応答が 2 回化けました (%1): 2 台のドライバが局番 %2 を共有している可能性があります。SW1/SW2 スイッチを確認してください</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="168"/>
+        <location filename="../model/bus/BusScanner.cpp" line="227"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>応答はありますが、一致するデバイスプロファイルがありません (%1)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="207"/>
+        <location filename="../model/bus/BusScanner.cpp" line="245"/>
+        <source>answered, but its identification read got no reply (%1), also when asked %2 more times: add it by hand, or scan with a longer wait</source>
+        <translation>応答はありますが、識別の読出しに応答がありません (%1)。さらに %2 回問い合わせても同じです: 手動で追加するか、待ち時間を長くして再スキャンしてください</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/BusScanner.cpp" line="311"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>最初は応答が遅れました（%1 ms の待ち時間の後）。待ち時間を長くすると、このバスのスキャンが確実になります</translation>
     </message>
@@ -2535,49 +2605,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../cli/CliContext.cpp" line="75"/>
-        <location filename="../cli/CliContext.cpp" line="89"/>
-        <location filename="../cli/CliContext.cpp" line="97"/>
+        <location filename="../cli/CliContext.cpp" line="90"/>
+        <location filename="../cli/CliContext.cpp" line="104"/>
+        <location filename="../cli/CliContext.cpp" line="112"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="102"/>
+        <location filename="../cli/CliContext.cpp" line="117"/>
         <source>serial line: %1</source>
         <translation>シリアル回線: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="126"/>
+        <location filename="../cli/CliContext.cpp" line="141"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="189"/>
+        <location filename="../cli/CliContext.cpp" line="204"/>
         <source>machine number %1: no connection</source>
         <translation>局番 %1: 接続なし</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="194"/>
+        <location filename="../cli/CliContext.cpp" line="209"/>
         <source>machine number %1: %2%3</source>
         <translation>局番 %1: %2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="248"/>
+        <location filename="../cli/CliContext.cpp" line="264"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1: &quot;%2&quot; は局番 1–247 ではありません</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="252"/>
+        <location filename="../cli/CliContext.cpp" line="268"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1: &quot;%2&quot; はドライバの機種ではありません。%3 のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="270"/>
+        <location filename="../cli/CliContext.cpp" line="286"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; は局番 1–247 でも 3-8 のような範囲でもありません</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="280"/>
+        <location filename="../cli/CliContext.cpp" line="296"/>
         <source>no machine number given</source>
         <translation>局番が指定されていません</translation>
     </message>
@@ -2603,6 +2673,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <location filename="../model/profile/CodeTable.cpp" line="15"/>
         <source>—</source>
         <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/CodeTable.cpp" line="24"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/CodeTable.cpp" line="29"/>
+        <source>What to do: %1</source>
+        <translation>対処: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::CommandReadBack</name>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="42"/>
+        <source>Read back after the command at %1:</source>
+        <translation>%1 のコマンド後の読み戻し:</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="45"/>
+        <source>The motor is running.</source>
+        <translation>モータは運転中です。</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="45"/>
+        <source>The motor is stopped.</source>
+        <translation>モータは停止しています。</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="47"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="49"/>
+        <source>(not read: %1)</source>
+        <translation>（未読出し: %1）</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="56"/>
+        <source>The drives of its communication group, read after the command:</source>
+        <translation>コマンド後に読み出した通信グループのドライバ:</translation>
     </message>
 </context>
 <context>
@@ -2709,162 +2822,162 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareDialog</name>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="32"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="33"/>
         <source>&amp;Differences only</source>
         <translation>差異のみ(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="36"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="37"/>
         <source>Co&amp;mpare</source>
         <translation>比較(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="38"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="39"/>
         <source>Compare settings</source>
         <translation>設定の比較</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="39"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="40"/>
         <source>Side A</source>
         <translation>A 側</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="40"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="41"/>
         <source>Side B</source>
         <translation>B 側</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="54"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="55"/>
         <source>Filter by setting or parameter name</source>
         <translation>設定名またはパラメータ名で絞り込み</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="56"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
         <source>Read the chosen sides and compare them (drives are read fresh)</source>
         <translation>選択した両側を読み出して比較します（ドライバは改めて読み出します）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="66"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="67"/>
         <source>C&amp;lose</source>
         <translation>閉じる(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="98"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="100"/>
         <source>%1 refused: %2</source>
         <translation>%1 は使用できません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="112"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="114"/>
         <source>Reading…</source>
         <translation>読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="137"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="139"/>
         <source>side A</source>
         <translation>A 側</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="137"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="139"/>
         <source>side B</source>
         <translation>B 側</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="141"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="143"/>
         <source>Factory defaults</source>
         <translation>工場出荷時設定</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="148"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="150"/>
         <source>Choose a backup file and a drive in it for %1.</source>
         <translation>%1 のバックアップファイルと、その中のドライバを選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="152"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="154"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="162"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="164"/>
         <source>Choose an identified drive on the bus for %1.</source>
         <translation>%1 にはバス上の識別済みドライバを選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="170"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="172"/>
         <source>%1: cannot read %2</source>
         <translation>%1: %2 を読み出せません</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="195"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="197"/>
         <source>Unknown family %1</source>
         <translation>不明なファミリ %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="215"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="217"/>
         <source>B: %1</source>
         <translation>B: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="218"/>
         <source>factory defaults (%1)</source>
         <translation>工場出荷時設定 (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="226"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="228"/>
         <source>(no documented default)</source>
         <translation>（初期値の記載なし）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
         <location filename="../ui/files/CompareDialog.cpp" line="229"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="231"/>
         <source>(not held)</source>
         <translation>（含まれていません）</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/CompareDialog.cpp" line="245"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="247"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n 件の差異</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="246"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="248"/>
         <source> in %1 settings compared</source>
         <translation> （比較した設定 %1 個）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="249"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="251"/>
         <source>Note: %1</source>
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="256"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="258"/>
         <source>No factory default documented (never counted as a difference): %1</source>
         <translation>工場出荷時設定の記載なし（差異としては数えません）: %1</translation>
     </message>
@@ -2953,173 +3066,173 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::ConnectionDialog</name>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="62"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="63"/>
         <source>Connect to a bus</source>
         <translation>バスに接続</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="68"/>
         <source>&amp;Serial port</source>
         <translation>シリアルポート(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="68"/>
         <source>Modbus &amp;TCP gateway</source>
         <translation>Modbus TCP ゲートウェイ(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="68"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="69"/>
         <source>Si&amp;mulated bus</source>
         <translation>シミュレーションバス(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="84"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="85"/>
         <source>&amp;Advanced</source>
         <translation>詳細設定(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="107"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="108"/>
         <source>&amp;Connect</source>
         <translation>接続(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="128"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="129"/>
         <source>&amp;Refresh</source>
         <translation>更新(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="129"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="130"/>
         <source>List the serial ports again (after plugging in an adapter)</source>
         <translation>シリアルポートを再検索します（アダプタ接続後）</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="134"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="135"/>
         <source>&amp;Port:</source>
         <translation>ポート(&amp;P):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="143"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="144"/>
         <source>Custom</source>
         <translation>カスタム</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="145"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="146"/>
         <source>%1 (%2 %3%4%5)</source>
         <translation>%1 (%2 %3%4%5)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="152"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="153"/>
         <source>Fills in the factory line settings of a drive family</source>
         <translation>ドライバファミリの工場出荷時の通信設定を入力します</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="155"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="156"/>
         <source>&amp;Family defaults:</source>
         <translation>ファミリ既定値(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="159"/>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="289"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="160"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="293"/>
         <source>%1 bit/s</source>
         <translation>%1 bit/s</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="160"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="161"/>
         <source>&amp;Baud rate:</source>
         <translation>ボーレート(&amp;B):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="162"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
         <source>None (N)</source>
         <translation>なし (N)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
         <source>Even (E)</source>
         <translation>偶数 (E)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="165"/>
         <source>Odd (O)</source>
         <translation>奇数 (O)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="165"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="166"/>
         <source>P&amp;arity:</source>
         <translation>パリティ(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="167"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
         <source>1 bit</source>
         <translation>1 ビット</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="169"/>
         <source>2 bits</source>
         <translation>2 ビット</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="169"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="170"/>
         <source>S&amp;top bits:</source>
         <translation>ストップビット(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="184"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="186"/>
         <source>e.g. 192.168.1.10</source>
         <translation>例: 192.168.1.10</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="185"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="187"/>
         <source>&amp;Host:</source>
         <translation>ホスト(&amp;H):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="188"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="190"/>
         <source>Modbus TCP uses port 502</source>
         <translation>Modbus TCP はポート 502 を使用します</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="189"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="191"/>
         <source>TCP p&amp;ort:</source>
         <translation>TCP ポート(&amp;O):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="201"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="203"/>
         <source>Device types and machine numbers: TYPE@NUMBER, comma separated. Types: %1</source>
         <translation>デバイスタイプと局番: TYPE@NUMBER をカンマ区切りで指定。タイプ: %1</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="204"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="206"/>
         <source>&amp;Devices:</source>
         <translation>デバイス(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="218"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="220"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="219"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="221"/>
         <source>How long to wait for each reply</source>
         <translation>各応答の待ち時間</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="220"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="222"/>
         <source>Response &amp;timeout:</source>
         <translation>応答タイムアウト(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="223"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="225"/>
         <source>Extra attempts after a request got no valid reply</source>
         <translation>有効な応答がなかった要求の再試行回数</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="224"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="226"/>
         <source>R&amp;etries:</source>
         <translation>リトライ(&amp;E):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="326"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="333"/>
         <source>The device list is not valid.</source>
         <translation>デバイスリストが正しくありません。</translation>
     </message>
@@ -3282,114 +3395,134 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="85"/>
-        <location filename="../connection/ConnectionOptions.cpp" line="91"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="96"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="87"/>
+        <source>Drives that talk another line format than the port&apos;s, switched to between transactions: ID=[BAUD:]FORMAT,... e.g. 7=9600:8E1 or 7=8N2 (BAUD defaults to the port&apos;s). A DBU works only at 8N1; a DC controller at 8E1, 8O1 or 8N2.</source>
+        <translation>ポートと異なる通信フォーマットのドライブ。トランザクションの合間に切り替えます: ID=[BAUD:]FORMAT,... 例: 7=9600:8E1 または 7=8N2（BAUD の既定はポートの速度）。DBU は 8N1 のみ、DC コントローラは 8E1、8O1、8N2。</translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="90"/>
+        <source>LIST</source>
+        <translation>LIST</translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="92"/>
         <source>Response timeout per attempt in ms, 10–10000 (default 200).</source>
         <translation>1 回あたりの応答タイムアウト (ms)、10–10000（既定値 200）。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="87"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="92"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="89"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="94"/>
         <source>Extra attempts after no reply or a garbled one, 0–10 (default 3; 2 more while the line is noisy).</source>
         <translation>無応答または応答化けの後の再試行回数、0–10（既定値 3。回線にノイズが多い間は 2 回追加）。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="93"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="98"/>
         <source>Who switches the RS-485 direction (serial port only): off (default: the adapter itself, as USB–RS-485 adapters do), kernel (the driver&apos;s RS-485 mode), rts (RTS from the program) or auto (kernel where the driver has it, else rts).</source>
         <translation>RS-485 の送受信方向を切り替えるもの（シリアルポートのみ）: off（既定: USB–RS-485 アダプタのようにアダプタ自身が切替）、kernel（シリアルドライバの RS-485 モード）、rts（プログラムによる RTS 制御）、auto（シリアルドライバが対応していれば kernel、なければ rts）。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="96"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="101"/>
         <source>MODE</source>
         <translation>MODE</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="98"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
         <source>RTS level while sending with --rs485 kernel, rts or auto: high (default) or low.</source>
         <translation>--rs485 kernel、rts、auto 使用時の送信中の RTS レベル: high（既定）または low。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="99"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="104"/>
         <source>high|low</source>
         <translation>high|low</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="101"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="106"/>
         <source>RTS delay before and after sending in µs, 0–100000 (default 0: the driver&apos;s, or libmodbus&apos; one character time; the kernel rounds up to whole ms).</source>
         <translation>送信前後の RTS 遅延 (µs)、0–100000（既定 0: シリアルドライバの遅延、または libmodbus の 1 文字時間。カーネルは ms 単位に切り上げます）。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="108"/>
         <source>US</source>
         <translation>US</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="105"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="110"/>
         <source>Ask the serial driver to pass received bytes on at once (USB adapters otherwise hold them up to 16 ms): on (default) or off.</source>
         <translation>受信したバイトをすぐに渡すようシリアルドライバに要求します（要求しないと USB アダプタは最大 16 ms 保持）: on（既定）または off。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="107"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="112"/>
         <source>on|off</source>
         <translation>on|off</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="151"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="157"/>
         <source>give only one of --port, --tcp and --sim</source>
         <translation>--port、--tcp、--sim のいずれか 1 つだけを指定してください</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="153"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="159"/>
         <source>no bus given: use --port PATH, --tcp HOST:PORT or --sim SPEC</source>
         <translation>バスが指定されていません: --port PATH、--tcp HOST:PORT、--sim SPEC のいずれかを使用してください</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="162"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="168"/>
         <source>--family %1: unknown family; use one of %2</source>
         <translation>--family %1: 不明なファミリです。%2 のいずれかを使用してください</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="181"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="187"/>
         <source>--tcp: &quot;%1&quot; is not HOST:PORT</source>
         <translation>--tcp: &quot;%1&quot; は HOST:PORT ではありません</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="190"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="196"/>
         <source>--sim: %1</source>
         <translation>--sim: %1</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="203"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="209"/>
         <source>--baud %1: use a baud rate 1200–115200 (e.g. 9600, 19200, 38400)</source>
         <translation>--baud %1: ボーレートは 1200–115200 を指定してください（例: 9600、19200、38400）</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="207"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="213"/>
         <source>--stop-bits %1: use 1 or 2</source>
         <translation>--stop-bits %1: 1 または 2 を指定してください</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="209"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="215"/>
         <source>--timeout %1: use a response timeout of 10–10000 ms</source>
         <translation>--timeout %1: 応答タイムアウトは 10–10000 ms を指定してください</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="212"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="218"/>
         <source>--retries %1: use 0–10 extra attempts</source>
         <translation>--retries %1: 再試行回数は 0–10 を指定してください</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="217"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="223"/>
         <source>--parity %1: use N (none), E (even) or O (odd)</source>
         <translation>--parity %1: N（なし）、E（偶数）、O（奇数）を指定してください</translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="229"/>
+        <source>--drive-format applies to a serial port (--port) or a simulated bus, not to a Modbus TCP gateway (--tcp): the gateway sets its line itself</source>
+        <translation>--drive-format はシリアルポート（--port）またはシミュレーションバスに適用され、Modbus TCP ゲートウェイ（--tcp）には適用されません。ゲートウェイは回線を自分で設定します</translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="236"/>
+        <source>--drive-format: %1</source>
+        <translation>--drive-format: %1</translation>
     </message>
 </context>
 <context>
@@ -3942,6 +4075,11 @@ Configuration changes written but not stored are discarded.</source>
         <source>unknown device</source>
         <translation>不明なデバイス</translation>
     </message>
+    <message>
+        <location filename="../model/session/DeviceInfo.cpp" line="39"/>
+        <source>answered, identification failed</source>
+        <translation>応答あり、識別失敗</translation>
+    </message>
 </context>
 <context>
     <name>opentop::DeviceMonitor</name>
@@ -3989,73 +4127,190 @@ Configuration changes written but not stored are discarded.</source>
         <translation>%1 は設定ではなくコマンドです。コマンドは要求に応じて 1 つずつ送信します</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="227"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="239"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="250"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="262"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/session/DeviceParameters.cpp" line="273"/>
+        <source>%n write(s) failed: %1</source>
+        <translation>
+            <numerusform>%n 件の書込みに失敗しました: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/session/DeviceParameters.cpp" line="276"/>
+        <source>Written, but not verified on every drive it reached: %1</source>
+        <translation>書き込みましたが、届いたすべてのドライバでは確認できていません: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/session/DeviceParameters.cpp" line="279"/>
+        <source>%n value(s) written and verified</source>
+        <translation>
+            <numerusform>%n 個の値を書込み・照合しました</numerusform>
+        </translation>
     </message>
 </context>
 <context>
     <name>opentop::DeviceSession</name>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="92"/>
+        <location filename="../model/session/DeviceSession.cpp" line="82"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 にはパラメータ &quot;%2&quot; がありません</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="101"/>
-        <location filename="../model/session/DeviceSession.cpp" line="165"/>
+        <location filename="../model/session/BlockReader.cpp" line="50"/>
+        <location filename="../model/session/DeviceSession.cpp" line="91"/>
         <source>%1 cannot be read (it is a write-only command)</source>
         <translation>%1 は読み出せません（書込み専用コマンド）</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="236"/>
+        <location filename="../model/session/DeviceSession.cpp" line="139"/>
         <source>cannot check the value: reading %1 failed: %2</source>
         <translation>値をチェックできません: %1 の読出しに失敗しました: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="253"/>
+        <location filename="../model/session/DeviceSession.cpp" line="156"/>
         <source>%1 is read-only</source>
         <translation>%1 は読出し専用です</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="259"/>
+        <location filename="../model/session/DeviceSession.cpp" line="162"/>
         <source>%1 is a %2 command; it is only sent when explicitly requested</source>
         <translation>%1 は %2 コマンドです。明示的に要求した場合にのみ送信します</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="289"/>
+        <location filename="../model/session/DeviceSession.cpp" line="192"/>
         <source>%1 cannot be checked: %2</source>
         <translation>%1 はチェックできません: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="311"/>
+        <location filename="../model/session/DeviceSession.cpp" line="227"/>
         <source>reading %1 failed: %2</source>
         <translation>%1 の読出しに失敗しました: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="339"/>
+        <location filename="../model/session/BlockWriter.cpp" line="28"/>
         <source>not written: %1 is written together with 0x%2–0x%3, and reading those first failed: %4</source>
         <translation>未書込み: %1 は 0x%2–0x%3 と一緒に書き込まれますが、それらの事前読出しに失敗しました: %4</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="344"/>
+        <location filename="../model/session/BlockWriter.cpp" line="33"/>
         <source>short reply</source>
         <translation>応答が短すぎます</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="399"/>
+        <location filename="../model/session/DeviceSession.cpp" line="291"/>
         <source>written, but reading it back failed: %1</source>
         <translation>書き込みましたが、読み戻しに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="408"/>
+        <location filename="../model/session/DeviceSession.cpp" line="300"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>照合失敗: %1 を書き込みましたが、デバイスの値は %2 です</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="444"/>
+        <location filename="../model/session/DeviceRefusal.cpp" line="67"/>
         <source>error code %1</source>
         <translation>エラーコード %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::DriveFormatsField</name>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="28"/>
+        <source>none: every drive at the port&apos;s format</source>
+        <translation>なし: すべてのドライブがポートの形式</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="30"/>
+        <source>Drives set to another line format than the port&apos;s, e.g. 7=9600:8E1 or 7=8N2 (the baud rate may be left out): requests to them switch the line to their format and back between transactions. A DBU works only at 8N1; a DC controller at 8E1, 8O1 or 8N2. The bus list&apos;s context menu sets them too.</source>
+        <translation>ポートと異なる通信フォーマットに設定されたドライブ。例: 7=9600:8E1 または 7=8N2（ボーレートは省略可）。これらへの要求は、トランザクションの合間に回線をその形式へ切り替え、また戻します。DBU は 8N1 のみ、DC コントローラは 8E1、8O1、8N2。バス一覧の右クリックメニューでも設定できます。</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="36"/>
+        <source>&amp;Mixed bus…</source>
+        <translation>混在バス(&amp;M)…</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="37"/>
+        <source>How a drive of another format joins this bus</source>
+        <translation>別の形式のドライブをこのバスに加える方法</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="39"/>
+        <source>Drives of different line formats</source>
+        <translation>通信フォーマットの異なるドライブ</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="47"/>
+        <source>Drive f&amp;ormats:</source>
+        <translation>ドライブの形式(&amp;O):</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="68"/>
+        <source>Drive formats: %1</source>
+        <translation>ドライブの形式: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="74"/>
+        <source>Every drive hears only frames sent in its own line format: a DBU works only at 8N1 (19200 bit/s from the factory), a DC controller at 8E1 (9600 bit/s from the factory), 8O1 or 8N2. OpenTOP can talk to drives of different formats on one port: give each drive that is not at the port&apos;s format its own (Drive formats here, or Line format… in the bus list&apos;s context menu); the port is switched between transactions. To put all drives at one format for good, change the drives:</source>
+        <translation>各ドライブは自分の通信フォーマットで送られたフレームしか受信しません。DBU は 8N1 のみ（工場出荷時 19200 bit/s）、DC コントローラは 8E1（工場出荷時 9600 bit/s）、8O1、8N2 です。OpenTOP は 1 つのポートで形式の異なるドライブと通信できます。ポートの形式でないドライブにはそれぞれ自分の形式を設定してください（ここの「ドライブの形式」、またはバス一覧の右クリックメニューの「通信フォーマット…」）。ポートはトランザクションの合間に切り替わります。すべてのドライブを恒久的に 1 つの形式にするには、ドライブの設定を変更します:</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::DriveLineDialog</name>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="28"/>
+        <source>Line format of machine number %1</source>
+        <translation>局番 %1 の通信フォーマット</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="28"/>
+        <source>Add drive</source>
+        <translation>ドライブ追加</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="36"/>
+        <source>&amp;Machine number:</source>
+        <translation>局番(&amp;M):</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="44"/>
+        <source>The port&apos;s (%1)</source>
+        <translation>ポートの形式（%1）</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="56"/>
+        <source>The baud rate and format the drive is set to: requests to it switch the port to it and back between transactions. Type another as 38400 8E1.</source>
+        <translation>ドライブに設定されたボーレートと形式。このドライブへの要求は、トランザクションの合間にポートをその形式へ切り替え、また戻します。ほかの形式は 38400 8E1 のように入力します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="59"/>
+        <source>&amp;Line format:</source>
+        <translation>通信フォーマット(&amp;L):</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="67"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="140"/>
+        <source>Line &amp;format…</source>
+        <translation>通信フォーマット(&amp;F)…</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="145"/>
+        <source>Machine number %1 talks %2, not the port&apos;s %3</source>
+        <translation>局番 %1 はポートの %3 ではなく %2 で通信します</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="148"/>
+        <source>Machine number %1 talks the port&apos;s %2</source>
+        <translation>局番 %1 はポートの %2 で通信します</translation>
     </message>
 </context>
 <context>
@@ -4094,116 +4349,117 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveStatusPoller</name>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="31"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="32"/>
         <source>not polled yet</source>
         <translation>未ポーリング</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="33"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="34"/>
         <source>online</source>
         <translation>オンライン</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="35"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="36"/>
         <source>no answer (%n poll(s) in a row)</source>
         <translation>
             <numerusform>応答なし（%n 回連続）</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="37"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="38"/>
         <source>communication error (%n in a row)</source>
         <translation>
             <numerusform>通信エラー（%n 回連続）</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="43"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="44"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="56"/>
         <source>Status not known yet</source>
         <translation>状態不明</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="45"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="46"/>
         <source>No answer: %1</source>
         <translation>応答なし: %1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="48"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="59"/>
         <source>Alarm %1 %2</source>
         <translation>アラーム %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="50"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="61"/>
         <source>Alarm %1h (not in the alarm table)</source>
         <translation>アラーム %1h（アラーム表にありません）</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="52"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="63"/>
         <source>Alarm active</source>
         <translation>アラーム発生中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="55"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="49"/>
         <source>Communication error: %1</source>
         <translation>通信エラー: %1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="58"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="67"/>
         <source>Running</source>
         <translation>運転中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="59"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="68"/>
         <source>Running CCW</source>
         <translation>CCW 運転中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="60"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="69"/>
         <source>Running CW</source>
         <translation>CW 運転中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="62"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="71"/>
         <source>Stopped, no alarm</source>
         <translation>停止中、アラームなし</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="69"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="78"/>
         <source>grey</source>
         <translation>灰</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="71"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="80"/>
         <source>green</source>
         <translation>緑</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="73"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="82"/>
         <source>orange</source>
         <translation>橙</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="75"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="84"/>
         <source>sky blue</source>
         <translation>水色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="77"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="86"/>
         <source>red</source>
         <translation>赤</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="79"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="88"/>
         <source>purple</source>
         <translation>紫</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="81"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="90"/>
         <source>blue</source>
         <translation>青</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="118"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="127"/>
         <source>%1; %2</source>
         <translation>%1、%2</translation>
     </message>
@@ -4212,7 +4468,7 @@ Configuration changes written but not stored are discarded.</source>
     <name>opentop::DriveWorkspace</name>
     <message>
         <location filename="../ui/workspace/DriveWorkspace.cpp" line="33"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="133"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="135"/>
         <source>Write &amp;all pending</source>
         <translation>未書込みをすべて書込み(&amp;A)</translation>
     </message>
@@ -4237,63 +4493,49 @@ Configuration changes written but not stored are discarded.</source>
         <translation>設定するドライバをバスリストで選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="132"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="134"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>未書込みをすべて書込み(&amp;A) (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="154"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="156"/>
         <source>Reading the drive…</source>
         <translation>ドライバを読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="156"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="158"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 個の値を読み出せませんでした</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="168"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="170"/>
         <source>Nothing was written: %1</source>
         <translation>何も書き込んでいません: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="181"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="183"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1: %2 何も書き込んでいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="189"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="191"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>未書込みの %n 個の値を局番 %1 に書込み</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="191"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="193"/>
         <source>Nothing was written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="194"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="196"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>%n 個の値を書込み中…</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="196"/>
-        <source>%n write(s) failed; see the marked fields</source>
-        <translation>
-            <numerusform>%n 個の書込みに失敗しました。マークされた項目を確認してください</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="197"/>
-        <source>%n value(s) written and verified</source>
-        <translation>
-            <numerusform>%n 個の値を書込み・照合しました</numerusform>
         </translation>
     </message>
 </context>
@@ -5781,27 +6023,32 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::ExitActions</name>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="34"/>
+        <location filename="../model/run/ExitActions.cpp" line="50"/>
+        <source>Machine number %1: left in communication priority, as it was not confirmed stopped</source>
+        <translation>局番 %1: 停止を確認できなかったため、通信優先のままにしました</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitActions.cpp" line="75"/>
         <source>The stop broadcast to the %1 drives failed: %2</source>
         <translation>%1 ドライバへの停止ブロードキャストに失敗しました: %2</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="38"/>
+        <location filename="../model/run/ExitActions.cpp" line="81"/>
         <source>Machine number %1: STILL RUNNING (%2) %3</source>
         <translation>局番 %1: まだ運転中 (%2) %3</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="43"/>
+        <location filename="../model/run/ExitActions.cpp" line="86"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped %2</source>
         <translation>局番 %1: 応答なし、停止未確認 %2</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="68"/>
+        <location filename="../model/run/ExitActions.cpp" line="111"/>
         <source>Machine number %1: no way to give control back to its inputs is known</source>
         <translation>局番 %1: 入力端子に制御を戻す方法が不明です</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="80"/>
+        <location filename="../model/run/ExitActions.cpp" line="123"/>
         <source>Machine number %1: %2</source>
         <translation>局番 %1: %2</translation>
     </message>
@@ -5822,104 +6069,168 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::ExitGuard</name>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="44"/>
-        <source>Drives left in communication priority</source>
-        <translation>通信優先のままのドライバ</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="44"/>
-        <source>Drives are running</source>
-        <translation>運転中のドライバがあります</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="46"/>
-        <source>Before you %1: these drives are left in communication priority.</source>
-        <translation>%1の前に: これらのドライバは通信優先のままです。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="47"/>
-        <source>Before you %1: these drives are running or left in communication priority.</source>
-        <translation>%1の前に: これらのドライバは運転中、または通信優先のままです。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="51"/>
-        <source>In communication priority a drive takes run and stop only from the bus: once OpenTOP lets go, only another bus master or switching its power off stops it.</source>
-        <translation>通信優先では、ドライバはバスからのみ運転・停止を受け付けます: OpenTOP が制御を離すと、停止できるのは別のバスマスタか電源遮断だけです。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="55"/>
-        <source>&quot;Stop&quot; broadcasts every family&apos;s stop command to the whole bus and checks that each drive above has stopped.</source>
-        <translation>「停止」は全ファミリの停止コマンドをバス全体にブロードキャストし、上記の各ドライバが停止したことを確認します。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="59"/>
-        <source>&quot;Give control back&quot; sets I/O priority, so the machine&apos;s own inputs run the drives again.</source>
-        <translation>「制御を戻す」は I/O 優先に設定し、機械側の入力で再びドライバを運転できるようにします。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="63"/>
-        <source>Stop the drives</source>
-        <translation>ドライバを停止</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="67"/>
-        <source>Give control back (I/O priority)</source>
-        <translation>制御を戻す（I/O 優先）</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="69"/>
-        <source>Leave them so</source>
-        <translation>そのままにする</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="69"/>
-        <source>Leave them running</source>
-        <translation>運転したままにする</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="71"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="96"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="88"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="131"/>
+        <source>Stopping the drives, then giving control back to their inputs…</source>
+        <translation>ドライバを停止し、その後入力端子に制御を戻し中…</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/ExitGuard.cpp" line="132"/>
         <source>Stopping the drives…</source>
         <translation>ドライバを停止中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="88"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="129"/>
         <source>Giving control back to the drives&apos; inputs…</source>
         <translation>ドライバの入力端子に制御を戻し中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="97"/>
-        <source>stop</source>
-        <translation>停止</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="97"/>
-        <source>give control back</source>
-        <translation>制御の返却</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="113"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="156"/>
         <source>Not every drive is safe</source>
         <translation>安全でないドライバがあります</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="114"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="157"/>
         <source>Could not %1 every drive:</source>
         <translation>すべてのドライバで%1を完了できませんでした:</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="116"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="159"/>
         <source>Stay connected</source>
         <translation>接続したままにする</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="117"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="160"/>
         <source>Go on anyway</source>
         <translation>このまま続行</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ExitPlan</name>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="55"/>
+        <source>Stop and give control back</source>
+        <translation>停止して制御を戻す</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="56"/>
+        <source>Stop the drives</source>
+        <translation>ドライバを停止</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="56"/>
+        <source>Give control back (I/O priority)</source>
+        <translation>制御を戻す（I/O 優先）</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="58"/>
+        <source>Give control back only</source>
+        <translation>制御を戻すだけ</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="60"/>
+        <source>Leave them running</source>
+        <translation>運転したままにする</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="60"/>
+        <source>Leave them so</source>
+        <translation>そのままにする</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="70"/>
+        <location filename="../model/run/ExitPlan.cpp" line="73"/>
+        <source>give control back to</source>
+        <translation>制御の返却</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="71"/>
+        <source>stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="71"/>
+        <source>stop and give control back to</source>
+        <translation>停止と制御の返却</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="82"/>
+        <source>Drives are running</source>
+        <translation>運転中のドライバがあります</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="82"/>
+        <source>Drives left in communication priority</source>
+        <translation>通信優先のままのドライバ</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="88"/>
+        <source>Before you %1: these drives are left in communication priority.</source>
+        <translation>%1の前に: これらのドライバは通信優先のままです。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="89"/>
+        <source>Before you %1: these drives are running or left in communication priority.</source>
+        <translation>%1の前に: これらのドライバは運転中、または通信優先のままです。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="101"/>
+        <source>left as it is: it runs from its own inputs (I/O priority), which a stop over the bus does not override</source>
+        <translation>そのまま: 自身の入力端子で運転中（I/O 優先）で、バスからの停止指令では変えられません</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="104"/>
+        <source>stopped (confirmed by reading it), then given back to its own inputs (I/O priority, read back)</source>
+        <translation>停止（読み出して確認）し、その後自身の入力端子に戻す（I/O 優先、読み戻しで確認）</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="107"/>
+        <source>stopped (confirmed by reading it); its family has no I/O priority setting, so it stays under the bus&apos;s control</source>
+        <translation>停止（読み出して確認）。このファミリには I/O 優先の設定がないため、バスからの制御のままです</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="110"/>
+        <source>stopped (confirmed by reading it)</source>
+        <translation>停止（読み出して確認）</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="112"/>
+        <source>given back to its own inputs (I/O priority, read back)</source>
+        <translation>自身の入力端子に戻す（I/O 優先、読み戻しで確認）</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="114"/>
+        <source>left as it is: no way to give control back to its inputs is known</source>
+        <translation>そのまま: 入力端子に制御を戻す方法が不明です</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="115"/>
+        <source>   → %1</source>
+        <translation>   → %1</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="122"/>
+        <source>In communication priority a drive takes run and stop only from the bus: once OpenTOP lets go, only another bus master or switching its power off stops it.</source>
+        <translation>通信優先では、ドライバはバスからのみ運転・停止を受け付けます: OpenTOP が制御を離すと、停止できるのは別のバスマスタか電源遮断だけです。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="126"/>
+        <source>Stopping broadcasts every family&apos;s stop command to the whole bus and checks that each drive above has stopped; a drive that has not stopped is not given back to its inputs.</source>
+        <translation>停止では全ファミリの停止コマンドをバス全体にブロードキャストし、上記の各ドライバが停止したことを確認します。停止しなかったドライバは入力端子に戻しません。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="131"/>
+        <source>&quot;Give control back only&quot; sets I/O priority without a stop: the machine&apos;s own inputs decide at once whether the drives run.</source>
+        <translation>「制御を戻すだけ」は停止せずに I/O 優先に設定します: ドライバを運転するかどうかは、すぐに機械側の入力が決めます。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="135"/>
+        <source>&quot;Give control back&quot; sets I/O priority, so the machine&apos;s own inputs run the drives again.</source>
+        <translation>「制御を戻す」は I/O 優先に設定し、機械側の入力で再びドライバを運転できるようにします。</translation>
     </message>
 </context>
 <context>
@@ -6076,6 +6387,24 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
 </context>
 <context>
+    <name>opentop::GainDesign</name>
+    <message>
+        <location filename="../model/tuning/GainDesign.cpp" line="21"/>
+        <source>the model has no ultimate point</source>
+        <translation>モデルに限界点がありません</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/GainDesign.cpp" line="55"/>
+        <source>no gains from the %1 rule settle within %2 ms with at most %3 % overshoot on the motor&apos;s model, even with P at a tenth of the rule&apos;s</source>
+        <translation>P をルールの 1/10 まで下げても、モータのモデル上で %1 ルールのゲインが %2 ms 以内に、オーバーシュート %3 % 以下で整定しません</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/GainDesign.cpp" line="60"/>
+        <source>Try a rule that allows more overshoot or a smaller step (a lower operating speed), or raise the drive&apos;s current limit if the motor allows it.</source>
+        <translation>オーバーシュートの大きいルールか、小さいステップ（低い運転速度）を試すか、モータが許せばドライバの電流制限を上げてください。</translation>
+    </message>
+</context>
+<context>
     <name>opentop::GetCommand</name>
     <message>
         <location filename="../cli/GetCommand.cpp" line="43"/>
@@ -6214,65 +6543,163 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GroupCheck</name>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="56"/>
-        <location filename="../cli/GroupCheck.cpp" line="95"/>
+        <location filename="../cli/GroupCheck.cpp" line="62"/>
+        <location filename="../cli/GroupCheck.cpp" line="106"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="66"/>
+        <location filename="../cli/GroupCheck.cpp" line="72"/>
         <source>note: the other drives on the bus are not known, so drives in communication group %1 (which also execute what is sent to %1) were not looked for; name them with --bus-drives LIST or OPENTOP_BUS_DRIVES</source>
         <translation>注: バス上の他のドライバが不明なため、通信グループ %1 のドライバ（%1 宛の送信も実行するドライバ）は検索していません。--bus-drives LIST または OPENTOP_BUS_DRIVES で指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="87"/>
+        <location filename="../cli/GroupCheck.cpp" line="93"/>
         <source>warning: the communication group of %1 could not be read</source>
         <translation>警告: %1 の通信グループを読み出せませんでした</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="95"/>
+        <location filename="../cli/GroupCheck.cpp" line="106"/>
         <source>note: %1</source>
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="98"/>
+        <location filename="../cli/GroupCheck.cpp" line="109"/>
         <source>add --yes to send it to all of %1 and %2; nothing was sent</source>
         <translation>%1 と %2 のすべてに送信するには --yes を付けてください。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="128"/>
+        <location filename="../cli/GroupCheck.cpp" line="144"/>
         <source>not readable</source>
         <translation>読出し不可</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="139"/>
+        <location filename="../cli/GroupCheck.cpp" line="168"/>
         <source>Read back from the drives of the group:</source>
         <translation>グループのドライバから読み戻した値:</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="143"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <source>Result</source>
+        <translation>結果</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="172"/>
         <source>(not read: %1)</source>
         <translation>（未読出し: %1）</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="188"/>
+        <location filename="../cli/GroupCheck.cpp" line="173"/>
+        <source>verified</source>
+        <translation>確認済み</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="174"/>
+        <source>DIFFERS from what was written</source>
+        <translation>書き込んだ値と異なる</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="175"/>
+        <source>not verified</source>
+        <translation>未確認</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="223"/>
         <source>off</source>
         <translation>無効</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::GroupFollowers</name>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="76"/>
+        <source>could not be read</source>
+        <translation>読み出せませんでした</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="106"/>
+        <source>its control priority could not be read</source>
+        <translation>制御優先を読み出せませんでした</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="108"/>
+        <source>it is in %1: it takes run commands only from its input terminals and ignores them over the bus</source>
+        <translation>%1 です。運転コマンドは入力端子からしか受け付けず、通信で送られたものは無視します</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="112"/>
+        <source>an alarm is active: it runs only once the alarm is cleared</source>
+        <translation>アラームが発生しています。アラームが解除されるまで運転しません</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="126"/>
+        <source>error code %1h</source>
+        <translation>エラーコード %1h</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="146"/>
+        <source>Machine number %1 follows it.</source>
+        <translation>局番 %1 は従います。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="147"/>
+        <source>Machine number %1 follows it (%2).</source>
+        <translation>局番 %1 は従います（%2）。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="149"/>
+        <source>Machine number %1: not known whether it follows: %2.</source>
+        <translation>局番 %1: 従うかどうか不明です: %2。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="153"/>
+        <source>Machine number %1 does NOT follow it: %2. To run it with this drive, set its control priority to communication priority; otherwise it shows E2h &quot;Cannot execute command&quot;.</source>
+        <translation>局番 %1 は従いません: %2。このドライバと一緒に運転するには、制御優先を通信優先に設定してください。そうしないと E2h「コマンド実行不可」を表示します。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="168"/>
+        <source>Machine number %1: its run state could not be read.</source>
+        <translation>局番 %1: 運転状態を読み出せませんでした。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="170"/>
+        <source>Machine number %1 runs.</source>
+        <translation>局番 %1 は運転中です。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="171"/>
+        <source>Machine number %1 runs (%2).</source>
+        <translation>局番 %1 は運転中です（%2）。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="173"/>
+        <source>Machine number %1 does not run: %2.</source>
+        <translation>局番 %1 は運転していません: %2。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="175"/>
+        <source>Machine number %1 does not run.</source>
+        <translation>局番 %1 は運転していません。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="177"/>
+        <source>It shows %1</source>
+        <translation>表示: %1</translation>
     </message>
 </context>
 <context>
@@ -6811,6 +7238,137 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
 </context>
 <context>
+    <name>opentop::LineFormat</name>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="37"/>
+        <source>Baud rate %1 is not supported: use 1200–115200.</source>
+        <translation>ボーレート %1 は使用できません。1200–115200 を使ってください。</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="39"/>
+        <source>Parity &apos;%1&apos; is not supported: use N (none), E (even) or O (odd).</source>
+        <translation>パリティ「%1」は使用できません。N（なし）、E（偶数）、O（奇数）を使ってください。</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="42"/>
+        <source>%1 data bits are not supported: use 7 or 8.</source>
+        <translation>データビット %1 は使用できません。7 または 8 を使ってください。</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="44"/>
+        <source>%1 stop bits are not supported: use 1 or 2.</source>
+        <translation>ストップビット %1 は使用できません。1 または 2 を使ってください。</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="66"/>
+        <source>&quot;%1&quot; is not a line format: write DATA BITS, PARITY and STOP BITS as 8N1, 8E1, 8O1 or 8N2, with the baud rate before it if it differs from the port&apos;s (9600:8E1)</source>
+        <translation>&quot;%1&quot; は通信フォーマットではありません。データビット、パリティ、ストップビットを 8N1、8E1、8O1、8N2 のように書き、ボーレートがポートと異なる場合はその前に書いてください（9600:8E1）</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="81"/>
+        <source>&quot;%1&quot;: %2</source>
+        <translation>&quot;%1&quot;: %2</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="98"/>
+        <source>&quot;%1&quot;: write MACHINE NUMBER=FORMAT, e.g. 7=9600:8E1 or 7=8N2 (machine numbers 1–247)</source>
+        <translation>&quot;%1&quot;: 局番=形式 と書いてください。例: 7=9600:8E1 または 7=8N2（局番 1–247）</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="107"/>
+        <source>machine number %1: %2</source>
+        <translation>局番 %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::LineFormatHint</name>
+    <message>
+        <location filename="../model/bus/LineFormatHint.cpp" line="72"/>
+        <source>%1: %2 from the factory (it can be set to %3).</source>
+        <translation>%1: 工場出荷時 %2（%3 に設定可能）。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/LineFormatHint.cpp" line="77"/>
+        <source>Drives set to another line format than %1 do not answer it. %2</source>
+        <translation>%1 以外の通信フォーマットに設定されたドライブは応答しません。%2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::LinkLoss</name>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="31"/>
+        <source>Machine number %1 (%2): state never read</source>
+        <translation>局番 %1 (%2): 状態を一度も読み出していません</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="46"/>
+        <source>The connection to %1 was lost at %2.</source>
+        <translation>%1 との接続が %2 に切れました。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="54"/>
+        <source>• %1 — last answer %2 (%3 when the link dropped)</source>
+        <translation>• %1 — 最終応答 %2（接続が切れた時点で %3）</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="61"/>
+        <source>By the last values read, no drive was running or in communication priority.</source>
+        <translation>最後に読み出した値では、運転中または通信優先のドライバはありませんでした。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="62"/>
+        <source>When the link dropped, by the last values read:</source>
+        <translation>接続が切れた時点で、最後に読み出した値では:</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="70"/>
+        <source>OpenTOP cannot stop these drives or give control back to their inputs until the link is back: nothing is sent over a lost link. A drive in communication priority keeps its last command. Check on the machine: each drive&apos;s own STOP input, the emergency stop, and the drives&apos; power.</source>
+        <translation>接続が戻るまで、OpenTOP はこれらのドライバを停止することも、入力端子に制御を戻すこともできません: 切れた接続には何も送信しません。通信優先のドライバは最後の指令を保持します。機械側で確認してください: 各ドライバ自身の停止入力端子、非常停止、ドライバの電源。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="78"/>
+        <source>Before you %1: the connection to %2 was lost at %3, and OpenTOP cannot reach these drives.</source>
+        <translation>%1の前に: %2 との接続が %3 に切れたため、OpenTOP はこれらのドライバにアクセスできません。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="96"/>
+        <source>Running when it dropped, by the last values read: machine number %1.</source>
+        <translation>切れた時点で最後に読み出した値では運転中: 局番 %1。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="99"/>
+        <source>In communication priority: machine number %1.</source>
+        <translation>通信優先: 局番 %1。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/run/LinkLoss.cpp" line="102"/>
+        <source>%n drive(s) never read.</source>
+        <translation>
+            <numerusform>一度も読み出していないドライバ %n 台。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="104"/>
+        <source>OpenTOP cannot stop them until the link is back: check each drive&apos;s STOP input, the emergency stop and the power on the machine.</source>
+        <translation>接続が戻るまで OpenTOP はこれらを停止できません: 機械側で各ドライバの停止入力端子、非常停止、電源を確認してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="118"/>
+        <source>Machine number %1 (%2): no answer, its state is not known</source>
+        <translation>局番 %1 (%2): 応答なし、状態不明</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="126"/>
+        <source>Every drive read again: none is running or in communication priority.</source>
+        <translation>すべてのドライバを読み出し直しました: 運転中または通信優先のドライバはありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="127"/>
+        <source>Read again just now:</source>
+        <translation>今読み出し直した結果:</translation>
+    </message>
+</context>
+<context>
     <name>opentop::MainMenus</name>
     <message>
         <location filename="../ui/main/MainMenus.cpp" line="35"/>
@@ -6833,122 +7391,122 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>シリアルポート、ゲートウェイ、シミュレーションバスを選択します (Ctrl+K)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="43"/>
+        <location filename="../ui/main/MainMenus.cpp" line="45"/>
         <source>&amp;Scan bus</source>
         <translation>バスをスキャン(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="49"/>
+        <location filename="../ui/main/MainMenus.cpp" line="51"/>
         <source>&amp;Disconnect</source>
         <translation>切断(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="53"/>
+        <location filename="../ui/main/MainMenus.cpp" line="55"/>
         <source>Communication &amp;groups…</source>
         <translation>通信グループ(&amp;G)…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="57"/>
+        <location filename="../ui/main/MainMenus.cpp" line="59"/>
         <source>&amp;Export alarm histories…</source>
         <translation>アラーム履歴をエクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="59"/>
+        <location filename="../ui/main/MainMenus.cpp" line="61"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="62"/>
+        <location filename="../ui/main/MainMenus.cpp" line="64"/>
         <source>&amp;Files</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="67"/>
+        <location filename="../ui/main/MainMenus.cpp" line="69"/>
         <source>&amp;Drive</source>
         <translation>ドライバ(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="70"/>
+        <location filename="../ui/main/MainMenus.cpp" line="72"/>
         <source>&amp;Write all pending</source>
         <translation>未書込みをすべて書込み(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="72"/>
+        <location filename="../ui/main/MainMenus.cpp" line="74"/>
         <source>&amp;Re-read all</source>
         <translation>すべて再読出し(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="74"/>
+        <location filename="../ui/main/MainMenus.cpp" line="76"/>
         <source>Write a setting to the selected drives…</source>
         <translation>選択したドライバに設定を書込み…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="80"/>
+        <location filename="../ui/main/MainMenus.cpp" line="82"/>
         <source>&amp;Next page</source>
         <translation>次のページ(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="86"/>
+        <location filename="../ui/main/MainMenus.cpp" line="88"/>
         <source>&amp;Previous page</source>
         <translation>前のページ(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="100"/>
+        <location filename="../ui/main/MainMenus.cpp" line="104"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="106"/>
+        <location filename="../ui/main/MainMenus.cpp" line="110"/>
         <source>&amp;Traffic log</source>
         <translation>通信ログ(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="107"/>
+        <location filename="../ui/main/MainMenus.cpp" line="111"/>
         <source>Bus &amp;overview</source>
         <translation>バス一覧(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="109"/>
+        <location filename="../ui/main/MainMenus.cpp" line="113"/>
         <source>T&amp;rends</source>
         <translation>トレンド(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="110"/>
+        <location filename="../ui/main/MainMenus.cpp" line="114"/>
         <source>Communication &amp;groups</source>
         <translation>通信グループ(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="124"/>
+        <location filename="../ui/main/MainMenus.cpp" line="128"/>
         <source>Language</source>
         <translation>言語</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="125"/>
+        <location filename="../ui/main/MainMenus.cpp" line="129"/>
         <source>OpenTOP will be in %1 the next time it starts.</source>
         <translation>OpenTOP は次回の起動時から %1 で表示されます。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="131"/>
+        <location filename="../ui/main/MainMenus.cpp" line="135"/>
         <source>&amp;End of line</source>
         <translation>出荷検査(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="133"/>
+        <location filename="../ui/main/MainMenus.cpp" line="137"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="146"/>
+        <location filename="../ui/main/MainMenus.cpp" line="153"/>
         <source>connect elsewhere</source>
         <translation>別の接続先への接続</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="156"/>
+        <location filename="../ui/main/MainMenus.cpp" line="163"/>
         <source>Export alarm histories</source>
         <translation>アラーム履歴のエクスポート</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="157"/>
+        <location filename="../ui/main/MainMenus.cpp" line="164"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
@@ -6956,33 +7514,33 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="52"/>
+        <location filename="../ui/main/MainWindow.cpp" line="54"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="134"/>
+        <location filename="../ui/main/MainWindow.cpp" line="138"/>
         <source>connect elsewhere</source>
         <translation>別の接続先への接続</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="157"/>
+        <location filename="../ui/main/MainWindow.cpp" line="161"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>%1 に接続中…（%2 には接続したまま）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="196"/>
+        <location filename="../ui/main/MainWindow.cpp" line="200"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>接続済み: %1（新しい接続は失敗しました: %2）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="199"/>
-        <location filename="../ui/main/MainWindow.cpp" line="212"/>
+        <location filename="../ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="217"/>
         <source>Cannot connect</source>
         <translation>接続できません</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="200"/>
+        <location filename="../ui/main/MainWindow.cpp" line="204"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -6991,81 +7549,76 @@ Still connected to %2; nothing was changed.</source>
 %2 に接続したままです。何も変更していません。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="203"/>
-        <location filename="../ui/main/MainWindow.cpp" line="324"/>
+        <location filename="../ui/main/MainWindow.cpp" line="207"/>
+        <location filename="../ui/main/MainWindow.cpp" line="330"/>
         <source>Not connected: %1</source>
         <translation>未接続: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="261"/>
+        <location filename="../ui/main/MainWindow.cpp" line="269"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>通信グループ: %1（バス › 通信グループ）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="292"/>
-        <location filename="../ui/main/MainWindow.cpp" line="294"/>
+        <location filename="../ui/main/MainWindow.cpp" line="300"/>
+        <location filename="../ui/main/MainWindow.cpp" line="302"/>
         <source>Connection lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="295"/>
-        <source>Connection lost</source>
-        <translation>接続断</translation>
-    </message>
-    <message>
-        <location filename="../ui/main/MainWindow.cpp" line="303"/>
+        <location filename="../ui/main/MainWindow.cpp" line="307"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — シミュレーションバス（ハードウェアなし）— %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="304"/>
+        <location filename="../ui/main/MainWindow.cpp" line="308"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="305"/>
+        <location filename="../ui/main/MainWindow.cpp" line="309"/>
         <source>Connecting to %1…</source>
         <translation>%1 に接続中…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="323"/>
+        <location filename="../ui/main/MainWindow.cpp" line="329"/>
         <source>Connected: %1</source>
         <translation>接続済み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="330"/>
+        <location filename="../ui/main/MainWindow.cpp" line="336"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>接続済み: %1（シミュレーション、ハードウェアなし）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="357"/>
+        <location filename="../ui/main/MainWindow.cpp" line="364"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>ドライバが機種を通知しません。%1 は設定された機種です。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="387"/>
-        <location filename="../ui/main/MainWindow.cpp" line="398"/>
+        <location filename="../ui/main/MainWindow.cpp" line="394"/>
+        <location filename="../ui/main/MainWindow.cpp" line="404"/>
         <source>disconnect</source>
         <translation>切断</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="394"/>
+        <location filename="../ui/main/MainWindow.cpp" line="401"/>
         <source>Not connected (disconnected)</source>
         <translation>未接続（切断済み）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="405"/>
-        <location filename="../ui/main/MainWindow.cpp" line="430"/>
+        <location filename="../ui/main/MainWindow.cpp" line="417"/>
+        <location filename="../ui/main/MainWindow.cpp" line="442"/>
         <source>quit</source>
         <translation>終了</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="416"/>
+        <location filename="../ui/main/MainWindow.cpp" line="428"/>
         <source>Unwritten changes</source>
         <translation>未書込みの変更</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="417"/>
+        <location filename="../ui/main/MainWindow.cpp" line="429"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>%n 件の編集がドライバに書き込まれていません。破棄して終了しますか？</numerusform>
@@ -7210,37 +7763,37 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPage</name>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="175"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="177"/>
         <source>Live values</source>
         <translation>ライブ値</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="183"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="185"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="196"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="201"/>
         <source>State</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="261"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="266"/>
         <source>%1 %2 on the drive&apos;s display</source>
         <translation>%1 %2（ドライバの表示）</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="270"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="275"/>
         <source>Alarm %1 %2 — %3</source>
         <translation>アラーム %1 %2 — %3</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="273"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="278"/>
         <source>Alarm active (reading which one…)</source>
         <translation>アラーム発生中（内容を読出し中…）</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="328"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="333"/>
         <source>No live state: %1</source>
         <translation>ライブ状態なし: %1</translation>
     </message>
@@ -7248,67 +7801,72 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPollBar</name>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="25"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="30"/>
         <source>Poll every</source>
         <translation>ポーリング周期</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="27"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="32"/>
         <source>%1 ms (%2 Hz)</source>
         <translation>%1 ms (%2 Hz)</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="28"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="33"/>
         <source>How often every monitored drive is read. Commands you give always go first; the drives share what is left of the bus in turn.</source>
         <translation>モニタ中の各ドライバを読み出す頻度。操作したコマンドは常に優先され、各ドライバはバスの残りの帯域を順番に使用します。</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="36"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="45"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="44"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="53"/>
         <source>Resume polling</source>
         <translation>ポーリングを再開</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="44"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="53"/>
         <source>Pause polling</source>
         <translation>ポーリングを一時停止</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="58"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="67"/>
         <source>Polling paused: the values shown are the last ones read (%1).</source>
         <translation>ポーリング一時停止中: 表示値は最後に読み出した値です (%1)。</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="60"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="69"/>
+        <source>Polling waits for the bus scan: %1.</source>
+        <translation>ポーリングはバススキャンの終了待ち: %1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="71"/>
         <source>Connection lost — not live: %1.</source>
         <translation>接続断 — 更新停止: %1。</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="62"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="73"/>
         <source>Not live: %1.</source>
         <translation>更新停止: %1。</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="63"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="74"/>
         <source>The drive does not answer (%1) — not live: %2.</source>
         <translation>ドライバが応答しません (%1) — 更新停止: %2。</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="66"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="77"/>
         <source>Values %1 · %2 samples/s</source>
         <translation>値 %1 · %2 サンプル/s</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="70"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="81"/>
         <source>Not read yet.</source>
         <translation>未読出しです。</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="71"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="82"/>
         <source>Cannot read the drive: %1</source>
         <translation>ドライバを読み出せません: %1</translation>
     </message>
@@ -7385,7 +7943,7 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
     <name>opentop::MotorSpeedBox</name>
     <message>
         <location filename="../ui/monitor/MotorSpeedBox.cpp" line="23"/>
-        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="45"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="49"/>
         <source>Motor speed</source>
         <translation>モータ速度</translation>
     </message>
@@ -7405,12 +7963,12 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>1 回転あたりの転流回数</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="75"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="79"/>
         <source>set the commutations per revolution</source>
         <translation>1 回転あたりの転流回数を設定してください</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="79"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="83"/>
         <source>%1 r/min</source>
         <translation>%1 r/min</translation>
     </message>
@@ -7503,89 +8061,99 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>ドライバ %1 では許可されていません (%2): %3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="237"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="239"/>
+        <source>Not allowed on the communication group of drive %1: %2</source>
+        <translation>ドライバ %1 の通信グループでは許可されていません: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="244"/>
         <source>None of the selected drives is identified.</source>
         <translation>選択したドライバはいずれも識別されていません。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="252"/>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="297"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="259"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="304"/>
         <source>Drive %1: %2</source>
         <translation>ドライバ %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="255"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="262"/>
         <source>Allowed on %1</source>
         <translation>%1 で許可</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="263"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="270"/>
         <source>Warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="264"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="271"/>
         <source>Allowed on %1.</source>
         <translation>%1 で許可。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="305"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="312"/>
         <source>Set it on %n drive(s) anyway?</source>
         <translation>
             <numerusform>それでも %n 台のドライバに設定しますか？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="306"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="313"/>
         <source>&amp;Set it</source>
         <translation>設定する(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="329"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="336"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>%1 を局番 %2 に書込み</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="331"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="338"/>
         <source>Nothing was written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="336"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="343"/>
         <source>waiting…</source>
         <translation>待機中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="338"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="345"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>%1 を %n 台のドライバに書込み中…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="350"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="357"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>%n 台中 %1 台のドライバで書込み・照合完了。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="359"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="366"/>
         <source>writing…</source>
         <translation>書込み中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="372"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="383"/>
         <source>Written and verified</source>
         <translation>書込み・照合済み</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="373"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="385"/>
+        <source>Written, not verified: %1</source>
+        <translation>書込み済み、未確認: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="386"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>書込み済み、未照合（読み戻し不可）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="374"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="387"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
@@ -7737,27 +8305,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="184"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="199"/>
         <source>%1 (not valid now)</source>
         <translation>%1（現在は無効）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="213"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="228"/>
         <source>not read</source>
         <translation>未読出し</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="222"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="237"/>
         <source>Allowed: %1</source>
         <translation>許容: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="225"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="240"/>
         <source>On the drive: %1</source>
         <translation>ドライバの値: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="256"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="274"/>
         <source>Not accepted: %1</source>
         <translation>受け付けられません: %1</translation>
     </message>
@@ -8033,20 +8601,6 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>%n 個の値を書込み中…</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="179"/>
-        <source>%n write(s) failed; see the marked fields</source>
-        <translation>
-            <numerusform>%n 個の書込みに失敗しました。マークされた項目を確認してください</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="180"/>
-        <source>%n value(s) written and verified</source>
-        <translation>
-            <numerusform>%n 個の値を書込み・照合しました</numerusform>
         </translation>
     </message>
 </context>
@@ -8761,32 +9315,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="417"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="429"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>オフセット %1 で JSON が不正です: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="421"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="433"/>
         <source>the top level must be a JSON object</source>
         <translation>最上位は JSON オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="432"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="444"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot; が空です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="443"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
         <source>must be an object</source>
         <translation>オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="445"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="457"/>
         <source>name repeated</source>
         <translation>名前が重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="461"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="473"/>
         <source>%1: cannot open: %2</source>
         <translation>%1: 開けません: %2</translation>
     </message>
@@ -8865,39 +9419,137 @@ No unit can be tested until results can be recorded.</source>
     </message>
 </context>
 <context>
-    <name>opentop::Progress</name>
+    <name>opentop::ProposalFlow</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="75"/>
-        <source>scanning %1/%2 (%3 %), machine number %4, %5 found</source>
-        <translation>スキャン中 %1/%2 (%3 %)、局番 %4、%5 台検出</translation>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="57"/>
+        <source>Proposal rejected; the drive&apos;s gains were not changed.</source>
+        <translation>提案値を却下しました。ドライバのゲインは変更していません。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="90"/>
-        <source>scan: %1 % (%2 of %3 machine numbers), %4 found</source>
-        <translation>スキャン: %1 %（%3 局番中 %2）、%4 台検出</translation>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="60"/>
+        <source>Proposal rejected</source>
+        <translation>提案値を却下</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="71"/>
+        <source>The accepted gains failed the check: %1. Reject them, or store them only after looking at the step.</source>
+        <translation>採用したゲインは確認に不合格でした: %1。不採用にするか、ステップを確かめてから保存してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="85"/>
+        <source>no step test ran after Accept</source>
+        <translation>採用後にステップ試験を実行していません</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="87"/>
+        <source>Store gains that failed the check?</source>
+        <translation>確認に不合格のゲインを保存しますか?</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="88"/>
+        <source>The gains accepted on %1 did not pass the check after Accept.</source>
+        <translation>%1 で採用したゲインは、採用後の確認に合格しませんでした。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="90"/>
+        <source>Stored, they stay after a power cycle and the motor may oscillate or overshoot as measured. Reject writes back the gains the drive had.</source>
+        <translation>保存すると電源再投入後も残り、モータは測定どおり振動したりオーバーシュートしたりするおそれがあります。「不採用」でドライバの元のゲインを書き戻します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="94"/>
+        <source>Reject the gains</source>
+        <translation>ゲインを不採用</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="95"/>
+        <source>Store anyway</source>
+        <translation>それでも保存</translation>
     </message>
 </context>
 <context>
     <name>opentop::PtySimServer</name>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="50"/>
+        <location filename="../sim/PtySimServer.cpp" line="52"/>
         <source>cannot open a pseudo-terminal: %1</source>
         <translation>疑似端末を開けません: %1</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="67"/>
+        <location filename="../sim/PtySimServer.cpp" line="69"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1 は既に存在し、シンボリックリンクではありません。置き換えません</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="73"/>
+        <location filename="../sim/PtySimServer.cpp" line="75"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>シンボリックリンク %1 -&gt; %2 を作成できません</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="115"/>
+        <location filename="../sim/PtySimServer.cpp" line="117"/>
         <source>the port is plugged in: %1</source>
         <translation>ポートを接続しました: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ReachedDrives</name>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="47"/>
+        <source>%1, variant not known</source>
+        <translation>%1、機種不明</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="62"/>
+        <source>machine number %1 (%2) executes this write too (communication group %3), but has no such setting at 0x%4</source>
+        <translation>局番 %1（%2）もこの書込みを実行しますが（通信グループ %3）、0x%4 にその設定がありません</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="86"/>
+        <source>machine number %1 (%2) executes this write too (communication group %3) and does not allow it: %4</source>
+        <translation>局番 %1（%2）もこの書込みを実行しますが（通信グループ %3）、この値を許可していません: %4</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="95"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="110"/>
+        <source>%1 cannot be checked: %2</source>
+        <translation>%1 を確認できません: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="150"/>
+        <source>verification failed in communication group %1: %2</source>
+        <translation>通信グループ %1 で確認に失敗しました: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="209"/>
+        <source>reading %1 of machine number %2, which executes this write too, failed: %3</source>
+        <translation>この書込みも実行する局番 %2 の %1 の読出しに失敗しました: %3</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="245"/>
+        <source>machine number %1: not verified (the setting cannot be read there)</source>
+        <translation>局番 %1: 未確認（そのドライバでは設定を読み出せません）</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="258"/>
+        <source>machine number %1: not verified, reading it back failed: %2</source>
+        <translation>局番 %1: 未確認、読み戻しに失敗しました: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="260"/>
+        <source>the drive was removed</source>
+        <translation>ドライバが削除されました</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="273"/>
+        <source>machine number %1 holds %2</source>
+        <translation>局番 %1 の値は %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="274"/>
+        <source>machine number %1 holds %2, not %3</source>
+        <translation>局番 %1 の値は %3 ではなく %2</translation>
     </message>
 </context>
 <context>
@@ -9135,218 +9787,218 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="46"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="47"/>
         <source>Recipe editor</source>
         <translation>レシピエディタ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="66"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="402"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="67"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
         <source>Revision:</source>
         <translation>リビジョン:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="68"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="69"/>
         <source>Product:</source>
         <translation>製品:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="69"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
         <source>Description:</source>
         <translation>説明:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="71"/>
         <source>Position:</source>
         <translation>位置:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="107"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
         <source>New from drives on the bus…</source>
         <translation>バス上のドライバから新規作成…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>New from backup file…</source>
         <translation>バックアップファイルから新規作成…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>Open…</source>
         <translation>開く…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="112"/>
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="113"/>
         <source>Save as…</source>
         <translation>名前を付けて保存…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="152"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="154"/>
         <source>%1: %2%3</source>
         <translation>%1: %2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="155"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="157"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="226"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="228"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>マスター品のバス上のドライバまたはバックアップファイルからレシピを作成するか、既存のレシピを開いてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="230"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="232"/>
         <source>the recipe is empty</source>
         <translation>レシピが空です</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="241"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="243"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="245"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="247"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>レシピはチェックに合格しました: 保存して実行できます。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="250"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 件の問題: 修正するまでレシピを保存できません。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="260"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="262"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>レシピがチェックに合格しません（%n 件の問題）。何も保存していません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="276"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="278"/>
         <source>cannot read %1: %2</source>
         <translation>%1 を読み込めません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="288"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="290"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 は OpenTOP のレシピファイルではありません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="297"/>
         <source>Opened %1</source>
         <translation>%1 を開きました</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="298"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>%1 を開きましたが、そのままでは読み込めません (%2)。保存時にチェックし、再度署名します。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="316"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="318"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>%1 から新規レシピ: 設定と試験ステップの規格値を確認してから保存してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="328"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="330"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>局番 %1 はバス上の既知のドライバではありません。先にバスをスキャンしてください</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="333"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>マスター品の設定を読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="333"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="348"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="350"/>
         <source>cancelled: no recipe was made</source>
         <translation>キャンセル: レシピは作成していません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="374"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="376"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="387"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="389"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="388"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="390"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>レシピ (*.json);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="397"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="402"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="399"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
         <source>New recipe</source>
         <translation>新規レシピ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="397"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="399"/>
         <source>Product name:</source>
         <translation>製品名:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="410"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="412"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>マスター品のバックアップファイル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="411"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="413"/>
         <source>Backups (*.json)</source>
         <translation>バックアップ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="423"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="425"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>バス上にドライバがありません: 先に接続してスキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="431"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="433"/>
         <source>New recipe from drives</source>
         <translation>ドライバから新規レシピ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="432"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="434"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>マスター品のドライバの局番（検出: %1）:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="442"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="444"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot; は局番 (1–247) ではありません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="451"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="453"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>バス上のドライバから新規レシピ: 設定と試験ステップの規格値を確認してから保存してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="462"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="464"/>
         <source>Save recipe</source>
         <translation>レシピを保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="464"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="466"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="469"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="471"/>
         <source>Saved and signed: %1</source>
         <translation>保存・署名しました: %1</translation>
     </message>
@@ -10155,21 +10807,129 @@ No unit can be tested until results can be recorded.</source>
     </message>
 </context>
 <context>
+    <name>opentop::Reconnection</name>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="30"/>
+        <source>&amp;Reconnect</source>
+        <translation>再接続(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="37"/>
+        <source>Open the last connection again, with the same drives and page (Ctrl+R)</source>
+        <translation>同じドライバとページで前回の接続を開き直します (Ctrl+R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="91"/>
+        <source>Reconnecting to %1…</source>
+        <translation>%1 に再接続中…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="122"/>
+        <source>Reconnected to %1: reading every drive again…</source>
+        <translation>%1 に再接続しました: すべてのドライバを読み出し直し中…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="175"/>
+        <source>Reconnected to %1.</source>
+        <translation>%1 に再接続しました。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="199"/>
+        <source>Reconnecting failed: %1</source>
+        <translation>再接続に失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="217"/>
+        <location filename="../ui/main/Reconnection.cpp" line="259"/>
+        <source>Connection lost</source>
+        <translation>接続断</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="223"/>
+        <location filename="../ui/main/Reconnection.cpp" line="262"/>
+        <source>Reconnect</source>
+        <translation>再接続</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="263"/>
+        <source>Go on anyway</source>
+        <translation>このまま続行</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="264"/>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+</context>
+<context>
     <name>opentop::RelayAnalysis</name>
     <message>
-        <location filename="../model/tuning/RelayAnalysis.cpp" line="27"/>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="47"/>
         <source>no steady oscillation: %1 full cycles around %2, %3 needed</source>
         <translation>安定した振動がありません: %2 付近で完全な周期が %1 回（%3 回必要）</translation>
     </message>
     <message>
-        <location filename="../model/tuning/RelayAnalysis.cpp" line="59"/>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="51"/>
+        <source>Raise the relay amplitude, or choose an operating speed that leaves the output room on both sides.</source>
+        <translation>リレー振幅を上げるか、出力の上下に余裕が残る運転速度を選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="86"/>
         <source>the oscillation (±%1) is no larger than the hysteresis (%2)</source>
         <translation>振動 (±%1) がヒステリシス (%2) より大きくありません</translation>
     </message>
     <message>
-        <location filename="../model/tuning/RelayAnalysis.cpp" line="65"/>
-        <source>the oscillation is not steady: periods or amplitudes differ by %1 %</source>
-        <translation>振動が安定していません: 周期または振幅が %1 % 異なります</translation>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="89"/>
+        <source>Raise the relay amplitude.</source>
+        <translation>リレー振幅を上げてください。</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="97"/>
+        <source>the oscillation&apos;s period, %1 ms, holds only %2 readings (one every %3 ms): at least %4 are needed, or its period and amplitude are the bus&apos;s rather than the motor&apos;s</source>
+        <translation>振動の周期 %1 ms の間に読出しが %2 回しかありません（%3 ms ごと）: 少なくとも %4 回必要です。足りないと、周期と振幅はモータではなくバスのものになります</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="104"/>
+        <source>Raise the line rate (115200 bit/s if every drive on the bus allows it) or stop polling other drives on this bus during the test; a larger relay amplitude or another speed does not change this.</source>
+        <translation>通信速度を上げる（バス上のすべてのドライバが対応していれば 115200 bit/s）か、試験中はこのバスの他のドライバのポーリングを止めてください。リレー振幅や速度を変えても改善しません。</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="110"/>
+        <source>the oscillation is not steady: periods differ by %1 %, amplitudes by %2 % (at most %3 % and %4 %)</source>
+        <translation>振動が安定していません: 周期の差 %1 %、振幅の差 %2 %（上限は %3 % と %4 %）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="116"/>
+        <source>Raise the relay amplitude so that the oscillation stands out of friction and load changes, keep the load steady during the test, and stop polling other drives on this bus meanwhile.</source>
+        <translation>振動が摩擦や負荷変動に埋もれないようリレー振幅を上げ、試験中は負荷を一定に保ち、その間このバスの他のドライバのポーリングを止めてください。</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="123"/>
+        <source>the oscillation is lopsided: its time above and below %1 differ by %2 % of the period (at most %3 %)</source>
+        <translation>振動が偏っています: %1 より上と下の時間の差が周期の %2 %（上限 %3 %）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="128"/>
+        <source>The output for the operating speed was misjudged or the load changed: keep the load steady, choose an operating speed further from standstill and from full output, and repeat the test.</source>
+        <translation>運転速度に必要な出力の見積りが外れたか、負荷が変わりました。負荷を一定に保ち、停止と最大出力の両方から離れた運転速度を選んで、試験をやり直してください。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RelayTuning</name>
+    <message>
+        <location filename="../model/tuning/RelayTuning.cpp" line="28"/>
+        <source>Raise the relay amplitude.</source>
+        <translation>リレー振幅を上げてください。</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayTuning.cpp" line="49"/>
+        <source>the drive&apos;s own loop, as the model extrapolates it, would oscillate with a period of %1 ms, under %2 readings (one every %3 ms): the step after Accept could not show whether the gains work</source>
+        <translation>モデルから外挿したドライバ自身のループは周期 %1 ms で振動し、読出し %2 回分（%3 ms ごと）に満たないため、採用後のステップでゲインが機能するか確かめられません</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayTuning.cpp" line="55"/>
+        <source>Raise the line rate (115200 bit/s if every drive on the bus allows it) or stop polling other drives on this bus during the test.</source>
+        <translation>通信速度を上げる（バス上のすべてのドライバが対応していれば 115200 bit/s）か、試験中はこのバスの他のドライバのポーリングを止めてください。</translation>
     </message>
 </context>
 <context>
@@ -10342,201 +11102,201 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreDialog</name>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="35"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="36"/>
         <source>&amp;Preview</source>
         <translation>プレビュー(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="36"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
         <source>&amp;Write to drives…</source>
         <translation>ドライバに書込み(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
         <source>&amp;Cancel</source>
         <translation>キャンセル(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="39"/>
         <source>&amp;Save report…</source>
         <translation>レポートを保存(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="40"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="41"/>
         <source>Restore from a backup file</source>
         <translation>バックアップファイルから復元</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="42"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="43"/>
         <source>No file chosen</source>
         <translation>ファイル未選択</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="43"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="44"/>
         <source>&amp;Choose file…</source>
         <translation>ファイルを選択(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="45"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="46"/>
         <source>File:</source>
         <translation>ファイル:</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="56"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="57"/>
         <source>Read the drives and show what would change; writes nothing</source>
         <translation>ドライバを読み出して変更内容を表示します。何も書き込みません</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="57"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
         <source>Write the previewed changes, each verified by reading it back</source>
         <translation>プレビューした変更を書き込み、それぞれ読み戻して照合します</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
         <source>Stop after the write in progress has been verified</source>
         <translation>実行中の書込みの照合後に停止します</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
         <source>Save the report as text, or as CSV when the name ends in .csv</source>
         <translation>レポートをテキストで保存します（名前が .csv で終わる場合は CSV）</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
         <source>C&amp;lose</source>
         <translation>閉じる(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="96"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="98"/>
         <source>%1: no such file</source>
         <translation>%1: ファイルがありません</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="101"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="103"/>
         <source>the file could not be read</source>
         <translation>ファイルを読み込めませんでした</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="102"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="186"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="104"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="188"/>
         <source>Refused, nothing will be written: %1</source>
         <translation>拒否。何も書き込みません: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="107"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="109"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>ファイル内のドライバ %n 台。復元する内容を選択し、「プレビュー」を押してください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="148"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="150"/>
         <source>Refused, nothing written:</source>
         <translation>拒否。何も書き込んでいません:</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="150"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="152"/>
         <source>Drive %1 from %2: %3</source>
         <translation>ドライバ %1（%2 から）: %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="185"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="187"/>
         <source>Choose a backup file first.</source>
         <translation>先にバックアップファイルを選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="227"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="229"/>
         <source>not attempted</source>
         <translation>未実行</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="234"/>
         <source>Reading drive %1…</source>
         <translation>ドライバ %1 を読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="234"/>
         <source>Writing drive %1…</source>
         <translation>ドライバ %1 に書込み中…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="239"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="241"/>
         <source>drive %1: %2 (%v of %m)</source>
         <translation>ドライバ %1: %2 (%v / %m)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="267"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="269"/>
         <source>Stopping after the write in progress has been verified…</source>
         <translation>実行中の書込みの照合後に停止します…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="282"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="373"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="378"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="284"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
         <source>Drive %1: %2</source>
         <translation>ドライバ %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="285"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="287"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>書き込む設定 %n 個</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="292"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="294"/>
         <source>  Note: %1</source>
         <translation>  注: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="295"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="297"/>
         <source>Nothing written yet. Write to drives to apply.</source>
         <translation>まだ何も書き込んでいません。適用するには「ドライバに書込み」を押してください。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="296"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="298"/>
         <source>Nothing written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="354"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="356"/>
         <source>Restore from backup file</source>
         <translation>バックアップファイルから復元</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="355"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="357"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP バックアップ (*.json);;すべてのファイル (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="381"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="383"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>ドライバ %1 に %n 個の設定を書き込み、それぞれ読み戻して照合しますか？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="388"/>
         <source>Write to drives</source>
         <translation>ドライバに書込み</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="388"/>
         <source>&amp;Write</source>
         <translation>書込み(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="391"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="393"/>
         <source>Save restore report</source>
         <translation>復元レポートを保存</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="392"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="394"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>テキスト (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="397"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="399"/>
         <source>Could not save %1: %2</source>
         <translation>%1 を保存できませんでした: %2</translation>
     </message>
@@ -10596,57 +11356,62 @@ No unit can be tested until results can be recorded.</source>
         <translation>変更なし</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="272"/>
+        <location filename="../model/files/RestorePlan.cpp" line="273"/>
+        <source>written, not verified: %1</source>
+        <translation>書込み済み、未確認: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/files/RestorePlan.cpp" line="274"/>
         <source>written</source>
         <translation>書込み済み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="272"/>
+        <location filename="../model/files/RestorePlan.cpp" line="274"/>
         <source>written and verified</source>
         <translation>書込み・照合済み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="274"/>
+        <location filename="../model/files/RestorePlan.cpp" line="276"/>
         <source>failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="276"/>
+        <location filename="../model/files/RestorePlan.cpp" line="278"/>
         <source>not attempted</source>
         <translation>未実行</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="278"/>
+        <location filename="../model/files/RestorePlan.cpp" line="280"/>
         <source>not confirmed (%1): the drive may or may not hold it; run the restore again to read it back</source>
         <translation>未確認 (%1): ドライバがその値を保持しているかどうか不明です。復元を再実行して読み戻してください</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="303"/>
+        <location filename="../model/files/RestorePlan.cpp" line="305"/>
         <source>planned</source>
         <translation>計画済み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="305"/>
+        <location filename="../model/files/RestorePlan.cpp" line="307"/>
         <source>restored</source>
         <translation>復元済み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="307"/>
+        <location filename="../model/files/RestorePlan.cpp" line="309"/>
         <source>refused</source>
         <translation>拒否</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="309"/>
+        <location filename="../model/files/RestorePlan.cpp" line="311"/>
         <source>communication failure</source>
         <translation>通信失敗</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="311"/>
+        <location filename="../model/files/RestorePlan.cpp" line="313"/>
         <source>verification mismatch</source>
         <translation>照合不一致</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="313"/>
+        <location filename="../model/files/RestorePlan.cpp" line="315"/>
         <source>interrupted</source>
         <translation>中断</translation>
     </message>
@@ -10750,37 +11515,44 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Restorer</name>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="48"/>
+        <location filename="../model/files/Restorer.cpp" line="49"/>
         <source>interrupted before anything was written</source>
         <translation>何も書き込む前に中断しました</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="63"/>
+        <location filename="../model/files/Restorer.cpp" line="64"/>
         <source>reading the drive failed, nothing written (%1)</source>
         <translation>ドライバの読出しに失敗しました。何も書き込んでいません (%1)</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../model/files/Restorer.cpp" line="116"/>
+        <source>%n value(s) of the file may not be written to the drives of the communication group; nothing written</source>
+        <translation>
+            <numerusform>ファイルの %n 個の値は通信グループのドライバに書き込めません。何も書き込んでいません</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="99"/>
+        <location filename="../model/files/Restorer.cpp" line="144"/>
         <source>interrupted after %1 of %2 writes; run the restore again to complete it</source>
         <translation>%2 回中 %1 回の書込み後に中断しました。完了するには復元を再実行してください</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="134"/>
+        <location filename="../model/files/Restorer.cpp" line="180"/>
         <source>%1 not confirmed (%2): the drive may or may not hold it; run the restore again, it reads the drive back first</source>
         <translation>%1 未確認 (%2): ドライバがその値を保持しているかどうか不明です。復元を再実行してください（先にドライバを読み戻します）</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="168"/>
+        <location filename="../model/files/Restorer.cpp" line="214"/>
         <source>after storing, the drive holds %1</source>
         <translation>保存後のドライバの値は %1 です</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="173"/>
+        <location filename="../model/files/Restorer.cpp" line="219"/>
         <source>the settings could not be read back after storing</source>
         <translation>保存後に設定を読み戻せませんでした</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="206"/>
+        <location filename="../model/files/Restorer.cpp" line="252"/>
         <source>communication settings changed (%1): they take effect when the drive is next powered on; connect with the new settings after that</source>
         <translation>通信設定が変更されました (%1): 次回のドライバの電源投入時に有効になります。その後は新しい設定で接続してください</translation>
     </message>
@@ -10892,251 +11664,251 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="62"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>End-of-line results</source>
         <translation>出荷検査結果</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Started</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Serial</source>
         <translation>シリアル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Recipe</source>
         <translation>レシピ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Station</source>
         <translation>ステーション</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
         <source>Operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
         <source>Time (s)</source>
         <translation>時間 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="68"/>
         <source>First failure</source>
         <translation>最初の不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="84"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
         <source>Export CSV…</source>
         <translation>CSV エクスポート…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="86"/>
         <source>Certificate PDF…</source>
         <translation>検査成績書 PDF…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="119"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="121"/>
         <source>SQLite file or postgresql://user@host/database</source>
         <translation>SQLite ファイルまたは postgresql://user@host/database</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="120"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="122"/>
         <source>Open</source>
         <translation>開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="121"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="123"/>
         <source>File…</source>
         <translation>ファイル…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="128"/>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="130"/>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="132"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
         <source>any</source>
         <translation>指定なし</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
         <source>Today</source>
         <translation>今日</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="135"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
         <source>Last 24 hours</source>
         <translation>過去 24 時間</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="138"/>
         <source>Last 7 days</source>
         <translation>過去 7 日間</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="139"/>
         <source>Last 30 days</source>
         <translation>過去 30 日間</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="138"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
         <source>All</source>
         <translation>すべて</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="141"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="143"/>
         <source>Any</source>
         <translation>指定なし</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="145"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="147"/>
         <source>Search</source>
         <translation>検索</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="149"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
         <source>Serial:</source>
         <translation>シリアル:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="150"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
         <source>Recipe:</source>
         <translation>レシピ:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="153"/>
         <source>Station:</source>
         <translation>ステーション:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="154"/>
         <source>Period:</source>
         <translation>期間:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="153"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="155"/>
         <source>Verdict:</source>
         <translation>判定:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="161"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="163"/>
         <source>Database:</source>
         <translation>データベース:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="192"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="194"/>
         <source>There is no results database at %1 yet: a station makes it when it records its first unit.</source>
         <translation>%1 にはまだ結果データベースがありません: ステーションが最初の製品を記録するときに作成されます。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="198"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="200"/>
         <source>Opening the results database %1…</source>
         <translation>結果データベース %1 を開いています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="210"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="212"/>
         <source>Results database %1</source>
         <translation>結果データベース %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="244"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="246"/>
         <source>Searching…</source>
         <translation>検索しています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="256"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="350"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="258"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="352"/>
         <source>the results database is not open</source>
         <translation>結果データベースが開いていません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="291"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="293"/>
         <source>%1 rev. %2</source>
         <translation>%1 rev. %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="295"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="297"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="322"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="317"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="319"/>
         <source>%n unit(s), %1 passed · first-pass yield %2 (%3 of %4 serials)</source>
         <translation>
             <numerusform>製品 %n 台、合格 %1 台 · 直行率 %2（%4 シリアル中 %3）</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="322"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="331"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="377"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="333"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="379"/>
         <source>no unit is selected</source>
         <translation>製品が選択されていません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="335"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="337"/>
         <source>Reading unit %1…</source>
         <translation>製品 %1 を読み出しています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="378"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="380"/>
         <source>the unit&apos;s record is still being read</source>
         <translation>製品の記録をまだ読み出しています</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="387"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="389"/>
         <source>Open results database</source>
         <translation>結果データベースを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="388"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="390"/>
         <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
         <translation>SQLite データベース (*.db *.sqlite);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="400"/>
         <source>Export units as CSV</source>
         <translation>製品を CSV でエクスポート</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="400"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="403"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="405"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>製品 %n 台を %1 に書き込みました</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="414"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="416"/>
         <source>Save certificate</source>
         <translation>検査成績書を保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="415"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="417"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF ファイル (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="420"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="422"/>
         <source>Certificate written to %1</source>
         <translation>検査成績書を %1 に書き込みました</translation>
     </message>
@@ -11152,64 +11924,64 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RunCommand</name>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="48"/>
+        <location filename="../cli/RunCommand.cpp" line="49"/>
         <source>Test run: start, stop, direction, running data, hold/free, speed (needs --yes)</source>
         <translation>試運転: 運転開始、停止、回転方向、運転データ、保持/フリー、速度（--yes が必要）</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="53"/>
+        <location filename="../cli/RunCommand.cpp" line="54"/>
         <source>Send the command (it moves or stops a motor).</source>
         <translation>コマンドを送信します（モータが動作または停止します）。</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="63"/>
+        <location filename="../cli/RunCommand.cpp" line="64"/>
         <source>error: usage: %1 (one machine number; a negative speed after --)</source>
         <translation>エラー: 使い方: %1（局番を 1 つ指定。負の速度は -- の後に指定）</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="71"/>
-        <location filename="../cli/RunCommand.cpp" line="76"/>
-        <location filename="../cli/RunCommand.cpp" line="81"/>
-        <location filename="../cli/RunCommand.cpp" line="126"/>
+        <location filename="../cli/RunCommand.cpp" line="72"/>
+        <location filename="../cli/RunCommand.cpp" line="77"/>
+        <location filename="../cli/RunCommand.cpp" line="82"/>
+        <location filename="../cli/RunCommand.cpp" line="144"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="86"/>
+        <location filename="../cli/RunCommand.cpp" line="87"/>
         <source>Would send to machine number %1: %2
 This moves or stops a motor: add --yes to send it.</source>
         <translation>局番 %1 に送信する内容: %2
 モータが動作または停止します: 送信するには --yes を付けてください。</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="118"/>
+        <location filename="../cli/RunCommand.cpp" line="108"/>
+        <source>note: %1</source>
+        <translation>注: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/RunCommand.cpp" line="136"/>
         <source>Sent to machine number %1: %2</source>
         <translation>局番 %1 に送信しました: %2</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="120"/>
+        <location filename="../cli/RunCommand.cpp" line="138"/>
         <source>Sent to machine number %1, executed also by %2 (communication group): %3</source>
         <translation>局番 %1 に送信しました（%2 も実行、通信グループ）: %3</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="156"/>
+        <location filename="../cli/RunCommand.cpp" line="174"/>
         <source>(not read: %1)</source>
         <translation>（未読出し: %1）</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="165"/>
+        <location filename="../cli/RunCommand.cpp" line="183"/>
         <source>State of machine number %1:</source>
         <translation>局番 %1 の状態:</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="176"/>
-        <source>State of machine number %1 (communication group of %2): not read: %3</source>
-        <translation>局番 %1（%2 の通信グループ）の状態: 未読出し: %3</translation>
-    </message>
-    <message>
-        <location filename="../cli/RunCommand.cpp" line="184"/>
-        <source>State of machine number %1 (communication group of %2):</source>
-        <translation>局番 %1（%2 の通信グループ）の状態:</translation>
+        <location filename="../cli/RunCommand.cpp" line="199"/>
+        <source>Communication group of %1, read after the command:</source>
+        <translation>%1 の通信グループ、コマンド後の読出し:</translation>
     </message>
 </context>
 <context>
@@ -11265,7 +12037,7 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>&quot;%1&quot; では、ドライバは運転、停止、回転方向、速度選択を入力端子から受け付け、バス経由の運転コマンドを拒否します。ここから試運転するには &quot;%2&quot; に切り替えてください: opentop-cli set %3 %4=%5（機械側の操作で再び運転する場合は &quot;%1&quot; (=%6) に戻してください）。</translation>
     </message>
     <message>
-        <location filename="../model/run/RunControl.cpp" line="263"/>
+        <location filename="../model/run/RunControl.cpp" line="265"/>
         <source>An alarm is active: the drive refuses to run until it is cleared. See opentop-cli alarms %1, then alarms %1 --reset --yes.</source>
         <translation>アラームが発生しています: 解除するまでドライバは運転を拒否します。opentop-cli alarms %1 を確認し、alarms %1 --reset --yes を実行してください。</translation>
     </message>
@@ -11509,83 +12281,93 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="111"/>
+        <location filename="../cli/ScanCommand.cpp" line="64"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>バス上のドライバを検出・識別します（局番 1–247）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="70"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>問い合わせる最初の局番、1–247（既定 1）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="117"/>
-        <location filename="../cli/ScanCommand.cpp" line="118"/>
+        <location filename="../cli/ScanCommand.cpp" line="70"/>
+        <location filename="../cli/ScanCommand.cpp" line="71"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="118"/>
+        <location filename="../cli/ScanCommand.cpp" line="71"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>問い合わせる最後の局番、1–247（既定 247）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="120"/>
+        <location filename="../cli/ScanCommand.cpp" line="73"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>局番ごとの待ち時間 (ms)、10–5000（既定: ボーレートから算出。低速なアダプタやゲートウェイでは大きくしてください）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="122"/>
+        <location filename="../cli/ScanCommand.cpp" line="75"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="135"/>
+        <location filename="../cli/ScanCommand.cpp" line="77"/>
+        <source>Also ask the machine numbers not found in every other line format a drive can be set to (a DC controller at 8E1 on a DBU bus at 8N1): one more pass per format, off by default.</source>
+        <translation>見つからなかった局番を、ドライブが設定できるほかのすべての通信フォーマットでも問い合わせます（8N1 の DBU バス上の 8E1 の DC コントローラ）。形式ごとにスキャンが 1 回増えます。既定はオフ。</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="92"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>エラー: --%1 は %2–%3 の数値でなければなりません（&quot;%4&quot; は不可）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="147"/>
+        <location filename="../cli/ScanCommand.cpp" line="104"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>エラー: scan は引数を取りません。--from N --to N を使用してください</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="156"/>
+        <location filename="../cli/ScanCommand.cpp" line="113"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>エラー: --from %1 が --to %2 より後です</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="174"/>
+        <location filename="../cli/ScanCommand.cpp" line="131"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>%3 で局番 %1–%2 をスキャン中（各 %4 ms）…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="211"/>
+        <location filename="../cli/ScanCommand.cpp" line="178"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>局番をスキャンする前に中断しました。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="213"/>
+        <location filename="../cli/ScanCommand.cpp" line="180"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>中断: 局番 %1–%2 をスキャンしました（%4 中 %3）。%5–%6 は未問い合わせです。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="227"/>
+        <location filename="../cli/ScanCommand.cpp" line="194"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>エラー: 局番 %1 でスキャンが停止しました: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="237"/>
+        <location filename="../cli/ScanCommand.cpp" line="206"/>
         <source>warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="239"/>
+        <location filename="../cli/ScanCommand.cpp" line="208"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>注: %1 台のドライバが %2 ms の待ち時間の後に応答したため、再度問い合わせました。スキャンでドライバが見つからない場合は、--wait を長くしてください。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="245"/>
+        <location filename="../cli/ScanCommand.cpp" line="217"/>
+        <source>warning: machine number %1 answered, but its identification failed, also when asked again %2 more times; it is not counted as a drive. Add it by hand: name it in a command (it is identified again then, within --timeout; raise it for a slow device), or check its line settings and scan again with a longer --wait.</source>
+        <translation>警告: 局番 %1 は応答しましたが、さらに %2 回問い合わせても識別に失敗しました。ドライバとしては数えません。手動で追加してください: コマンドでこの局番を指定すると --timeout 内で再識別します (応答の遅い機器では長くしてください)。または通信設定を確認し、長めの --wait で再スキャンしてください。</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="226"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -11596,94 +12378,145 @@ This moves or stops a motor: add --yes to send it.</source>
   - 終端抵抗（バスの両端に 120 Ω）とドライバの電源</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="258"/>
+        <location filename="../cli/ScanCommand.cpp" line="239"/>
         <source>hint: %1 Retry with the same connection and: %2</source>
         <translation>ヒント: %1 同じ接続に次を加えて再試行してください: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="271"/>
+        <location filename="../cli/ScanCommand.cpp" line="252"/>
         <source>Serial line: %1</source>
         <translation>シリアル回線: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="274"/>
+        <location filename="../cli/ScanCommand.cpp" line="255"/>
         <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
         <translation>警告: %1 このため、スキャンは局番ごとに最大 %2 ms 長く待ちます。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="303"/>
+        <location filename="../cli/ScanCommand.cpp" line="284"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 機種不明</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="285"/>
         <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
         <translation>ドライバが機種を通知しません。--variant %1=VARIANT で指定してください (%2)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="320"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="320"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>hex</source>
         <translation>16 進</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="320"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>switches</source>
         <translation>スイッチ</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="320"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>family</source>
         <translation>ファミリ</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="321"/>
+        <location filename="../cli/ScanCommand.cpp" line="302"/>
         <source>model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="321"/>
+        <location filename="../cli/ScanCommand.cpp" line="302"/>
         <source>firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="321"/>
+        <location filename="../cli/ScanCommand.cpp" line="302"/>
         <source>state</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="327"/>
+        <location filename="../cli/ScanCommand.cpp" line="308"/>
         <source>comm. group</source>
         <translation>通信グループ</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="395"/>
+        <location filename="../cli/ScanCommand.cpp" line="313"/>
+        <source>line format</source>
+        <translation>通信フォーマット</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="328"/>
+        <source>the port&apos;s</source>
+        <translation>ポートの形式</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="387"/>
         <source>1 drive found in %1 s</source>
         <translation>1 台のドライバを検出（%1 s）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="396"/>
+        <location filename="../cli/ScanCommand.cpp" line="388"/>
         <source>%1 drives found in %2 s</source>
         <translation>%1 台のドライバを検出（%2 s）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="398"/>
+        <location filename="../cli/ScanCommand.cpp" line="390"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>。局番重複の可能性 1 件: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="400"/>
+        <location filename="../cli/ScanCommand.cpp" line="392"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>。局番重複の可能性 %1 件: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="411"/>
+        <location filename="../cli/ScanCommand.cpp" line="396"/>
+        <source>; answered, identification failed: %1 (add by hand)</source>
+        <translation>; 応答あり・識別失敗: %1 (手動で追加)</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="406"/>
         <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>警告: 局番 %1 (%2, %3) の応答が化けています: 2 台のドライバが同じ局番になっている可能性があります。このバス上のドライバの SW1/SW2 スイッチを確認し、各ドライバに固有の局番を設定して電源を入れ直し、再度スキャンしてください。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ScanFormats</name>
+    <message>
+        <location filename="../cli/ScanFormats.cpp" line="44"/>
+        <source>Scanning machine numbers %1–%2 at %3 (--try-formats), %4 ms each…</source>
+        <translation>%3 で局番 %1–%2 をスキャン中（--try-formats）、各 %4 ms…</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanFormats.cpp" line="71"/>
+        <source>Machine number %1 answered at %2: it is asked at that format from now on (--drive-format %1=%3).</source>
+        <translation>局番 %1 が %2 で応答しました。以後はその形式で問い合わせます（--drive-format %1=%3）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanFormats.cpp" line="99"/>
+        <source>hint: %1 If one is on this bus, give its machine number its format with --drive-format ID=BAUD:FORMAT (e.g. 7=9600:8E1), or scan with --try-formats: %2 more passes, %3 more requests, about %4 s more.</source>
+        <translation>ヒント: %1 このバスにそのようなドライブがある場合は、--drive-format ID=BAUD:FORMAT（例: 7=9600:8E1）でその局番の形式を指定するか、--try-formats でスキャンしてください: スキャン %2 回、要求 %3 件、約 %4 s 増えます。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ScanProgress</name>
+    <message>
+        <location filename="../cli/ScanProgress.cpp" line="34"/>
+        <source>scanning %1/%2 (%3 %), machine number %4, %5 found</source>
+        <translation>スキャン中 %1/%2 (%3 %)、局番 %4、%5 台検出</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanProgress.cpp" line="49"/>
+        <source>scan: %1 % (%2 of %3 machine numbers), %4 found</source>
+        <translation>スキャン: %1 %（%3 局番中 %2）、%4 台検出</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanProgress.cpp" line="60"/>
+        <source>scan: machine number %1 answered, identification failed: retrying (%2 of %3)…</source>
+        <translation>スキャン: 局番 %1 は応答しましたが、識別に失敗しました: 再試行中 (%3 回中 %2 回目)…</translation>
     </message>
 </context>
 <context>
@@ -11780,202 +12613,226 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="43"/>
+        <location filename="../cli/SetCommand.cpp" line="87"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>パラメータを名前で書き込み、検証・読み戻し・照合します</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="53"/>
+        <location filename="../cli/SetCommand.cpp" line="97"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>アドレスでレジスタに書き込みます: ADDR=VALUE（複数指定可。--fc 16 では VALUE,VALUE...）。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="54"/>
+        <location filename="../cli/SetCommand.cpp" line="98"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="55"/>
+        <location filename="../cli/SetCommand.cpp" line="99"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 書込みのファンクションコード: 6（既定）または 16。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="55"/>
+        <location filename="../cli/SetCommand.cpp" line="99"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="64"/>
+        <location filename="../cli/SetCommand.cpp" line="108"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>エラー: 使い方: set ID NAME=VALUE...（例: set 1 spno2.accel=2.5）、または set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="76"/>
+        <location filename="../cli/SetCommand.cpp" line="120"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>エラー: &quot;%1&quot; は NAME=VALUE ではありません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="83"/>
+        <location filename="../cli/SetCommand.cpp" line="127"/>
         <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
         <translation>エラー: %1 が 2 回指定されています（%2=%3 と %4）。各設定は 1 回だけ指定してください。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="94"/>
-        <location filename="../cli/SetCommand.cpp" line="227"/>
+        <location filename="../cli/SetCommand.cpp" line="76"/>
+        <location filename="../cli/SetCommand.cpp" line="138"/>
+        <location filename="../cli/SetCommand.cpp" line="272"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="104"/>
+        <location filename="../cli/SetCommand.cpp" line="148"/>
         <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>%1 にパラメータ &quot;%2&quot; はありません。&quot;opentop-cli params --family %1&quot; を参照してください</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="107"/>
+        <location filename="../cli/SetCommand.cpp" line="151"/>
         <source>%1 is read-only</source>
         <translation>%1 は読出し専用です</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="109"/>
+        <location filename="../cli/SetCommand.cpp" line="153"/>
         <source>%1 is a %2 command; add --yes to send it</source>
         <translation>%1 は %2 コマンドです。送信するには --yes を付けてください</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="164"/>
+        <location filename="../cli/SetCommand.cpp" line="208"/>
         <source>error: cannot read %1 to check the values; nothing written</source>
         <translation>エラー: 値をチェックするための %1 を読み出せません。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="148"/>
-        <location filename="../cli/SetCommand.cpp" line="210"/>
-        <location filename="../cli/SetCommand.cpp" line="221"/>
+        <location filename="../cli/SetCommand.cpp" line="192"/>
+        <location filename="../cli/SetCommand.cpp" line="255"/>
+        <location filename="../cli/SetCommand.cpp" line="266"/>
         <source>warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="94"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
         <translation>モータの運転、リセット、消去、初期化、保存を行うコマンドと、シリアル設定ロックの設定を確定します。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="198"/>
+        <location filename="../cli/SetCommand.cpp" line="243"/>
         <source>Add --yes to set it.</source>
         <translation>設定するには --yes を付けてください。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="228"/>
+        <location filename="../cli/SetCommand.cpp" line="78"/>
+        <location filename="../cli/SetCommand.cpp" line="273"/>
         <source>nothing was written</source>
         <translation>何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="251"/>
+        <location filename="../cli/SetCommand.cpp" line="301"/>
         <source>not written (interrupted)</source>
         <translation>未書込み（中断）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="264"/>
+        <location filename="../cli/SetCommand.cpp" line="314"/>
         <source>next: %1</source>
         <translation>次に: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="266"/>
+        <location filename="../cli/SetCommand.cpp" line="316"/>
         <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
         <translation>次に: opentop-cli --baud %1 --parity %2 --stop-bits %3 ...（工場出荷時の通信設定）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="304"/>
+        <location filename="../cli/SetCommand.cpp" line="360"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="304"/>
+        <location filename="../cli/SetCommand.cpp" line="360"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="304"/>
-        <location filename="../cli/SetCommand.cpp" line="422"/>
+        <location filename="../cli/SetCommand.cpp" line="360"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="310"/>
-        <location filename="../cli/SetCommand.cpp" line="457"/>
+        <location filename="../cli/SetCommand.cpp" line="366"/>
         <source>written, verified</source>
         <translation>書込み済み、照合済み</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="311"/>
+        <location filename="../cli/SetCommand.cpp" line="368"/>
+        <source>written, not verified: %1</source>
+        <translation>書込み済み、未確認: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="369"/>
         <source>written (command, not readable)</source>
         <translation>書込み済み（コマンド、読出し不可）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="313"/>
+        <location filename="../cli/SetCommand.cpp" line="371"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>未確認 (%1): ドライバがその値を保持しているかどうか不明です。&quot;get&quot; で読み戻してください</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="327"/>
+        <location filename="../cli/SetCommand.cpp" line="382"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="389"/>
         <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
         <translation>注: ドライバは次回の電源投入から %1 を使用します: ドライバの電源を入れ直し、新しい設定（--baud、--parity）で接続してください</translation>
     </message>
+</context>
+<context>
+    <name>opentop::SetRaw</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="342"/>
+        <location filename="../cli/SetRaw.cpp" line="30"/>
         <source>error: --fc for raw writes is 6 or 16</source>
         <translation>エラー: raw 書込みの --fc は 6 または 16 です</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="368"/>
+        <location filename="../cli/SetRaw.cpp" line="56"/>
         <source>error: &quot;%1&quot; is not ADDR=VALUE (0x.. or decimal, 0–65535; several values, comma separated, only with --fc 16)</source>
         <translation>エラー: &quot;%1&quot; は ADDR=VALUE ではありません（0x.. または 10 進、0–65535。カンマ区切りの複数値は --fc 16 の場合のみ）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="385"/>
+        <location filename="../cli/SetRaw.cpp" line="73"/>
         <source>error: 0x%1 is not a register the profile knows; add --yes to write it anyway; nothing was written</source>
         <translation>エラー: 0x%1 はプロファイルにないレジスタです。それでも書き込むには --yes を付けてください。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="395"/>
+        <location filename="../cli/SetRaw.cpp" line="83"/>
+        <location filename="../cli/SetRaw.cpp" line="128"/>
         <source>error: %1; nothing was written</source>
         <translation>エラー: %1。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="396"/>
+        <location filename="../cli/SetRaw.cpp" line="84"/>
         <source>%1 is a %2 command; add --yes</source>
         <translation>%1 は %2 コマンドです。--yes を付けてください</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="403"/>
+        <location filename="../cli/SetRaw.cpp" line="91"/>
         <source>error: the write covers part of %1; add --yes to write it anyway; nothing was written</source>
         <translation>エラー: この書込みは %1 の一部にかかります。それでも書き込むには --yes を付けてください。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="422"/>
+        <location filename="../cli/SetRaw.cpp" line="141"/>
         <source>Address</source>
         <translation>アドレス</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="422"/>
+        <location filename="../cli/SetRaw.cpp" line="141"/>
         <source>Written</source>
         <translation>書込み</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="455"/>
+        <location filename="../cli/SetRaw.cpp" line="141"/>
+        <source>Result</source>
+        <translation>結果</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetRaw.cpp" line="174"/>
         <source>written</source>
         <translation>書込み済み</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="459"/>
+        <location filename="../cli/SetRaw.cpp" line="176"/>
+        <source>written, verified</source>
+        <translation>書込み済み、照合済み</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetRaw.cpp" line="178"/>
         <source>written, but reads back differently</source>
         <translation>書き込みましたが、読み戻した値が異なります</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="462"/>
+        <location filename="../cli/SetRaw.cpp" line="181"/>
         <source>written (not readable back: %1)</source>
         <translation>書込み済み（読み戻し不可: %1）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="470"/>
+        <location filename="../cli/SetRaw.cpp" line="193"/>
         <source>Also written to %1 (communication group); not read back: no parameter of the profile</source>
         <translation>%1 にも書き込みました（通信グループ）。読み戻しなし: プロファイルのパラメータではありません</translation>
     </message>
@@ -12049,32 +12906,37 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimApp</name>
     <message>
-        <location filename="../sim/SimApp.cpp" line="110"/>
+        <location filename="../sim/SimApp.cpp" line="111"/>
+        <source>opentop-sim: %1@%2 talks %3 (its own line settings): it answers only frames sent in that format</source>
+        <translation>opentop-sim: %1@%2 は %3（自身の回線設定）で通信します。その形式で送られたフレームにのみ応答します</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimApp.cpp" line="117"/>
         <source>opentop-sim: warning: %1@%2 cannot use %3 %4 and will not answer</source>
         <translation>opentop-sim: 警告: %1@%2 は %3 %4 を使用できないため応答しません</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="124"/>
+        <location filename="../sim/SimApp.cpp" line="131"/>
         <source>opentop-sim: --defect %1:%2: no drive with machine number %1 on the bus %3</source>
         <translation>opentop-sim: --defect %1:%2: バス %3 に局番 %1 のドライバはありません</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="131"/>
+        <location filename="../sim/SimApp.cpp" line="138"/>
         <source>opentop-sim: --defect %1 (%2@%1): %3</source>
         <translation>opentop-sim: --defect %1 (%2@%1): %3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="169"/>
+        <location filename="../sim/SimApp.cpp" line="176"/>
         <source>the port is unplugged already</source>
         <translation>ポートはすでに切断されています</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="171"/>
+        <location filename="../sim/SimApp.cpp" line="178"/>
         <source>unplugged</source>
         <translation>切断しました</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="204"/>
+        <location filename="../sim/SimApp.cpp" line="211"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
@@ -12125,12 +12987,12 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>シミュレーションのアダプタが取り外されました</translation>
     </message>
     <message>
-        <location filename="../sim/SimBackend.cpp" line="80"/>
+        <location filename="../sim/SimBackend.cpp" line="85"/>
         <source>interrupted while waiting</source>
         <translation>待機中に中断しました</translation>
     </message>
     <message>
-        <location filename="../sim/SimBackend.cpp" line="87"/>
+        <location filename="../sim/SimBackend.cpp" line="92"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 以内に応答がありません</translation>
     </message>
@@ -12143,22 +13005,43 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>不明なデバイスタイプ &apos;%1&apos;。既知: %2</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="65"/>
+        <location filename="../sim/SimBus.cpp" line="66"/>
+        <location filename="../sim/SimBus.cpp" line="74"/>
         <source>%1@%2{%3}: %4</source>
         <translation>%1@%2{%3}: %4</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="81"/>
+        <location filename="../sim/SimBus.cpp" line="107"/>
+        <source>no device with machine number %1</source>
+        <translation>局番 %1 のデバイスはありません</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimBus.cpp" line="118"/>
+        <source>baud=%1: this drive talks at %2 bit/s</source>
+        <translation>baud=%1: このドライブの速度は %2 bit/s です</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimBus.cpp" line="126"/>
+        <source>format=%1: this drive offers %2 only</source>
+        <translation>format=%1: このドライブは %2 のみです</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimBus.cpp" line="132"/>
+        <source>this simulated drive has no line settings of its own</source>
+        <translation>このシミュレーションのドライブには自身の回線設定がありません</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimBus.cpp" line="145"/>
         <source>machine number %1 is outside 1..247</source>
         <translation>局番 %1 が 1..247 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="82"/>
+        <location filename="../sim/SimBus.cpp" line="146"/>
         <source>machine number %1 is used twice</source>
         <translation>局番 %1 が 2 回使用されています</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="233"/>
+        <location filename="../sim/SimBus.cpp" line="317"/>
         <source>no device with machine number %1 (bus: %2)</source>
         <translation>局番 %1 のデバイスがありません（バス: %2）</translation>
     </message>
@@ -12355,32 +13238,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimDevice</name>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="241"/>
+        <location filename="../sim/SimDevice.cpp" line="248"/>
         <source>missing command</source>
         <translation>コマンドがありません</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="250"/>
+        <location filename="../sim/SimDevice.cpp" line="257"/>
         <source>slave %1 power cycled</source>
         <translation>局番 %1 の電源を再投入しました</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="292"/>
+        <location filename="../sim/SimDevice.cpp" line="299"/>
         <source>usage: defect ID DEFECT[,DEFECT...] or defect ID clear; DEFECT: %1</source>
         <translation>使い方: defect ID DEFECT[,DEFECT...] または defect ID clear。DEFECT: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="299"/>
+        <location filename="../sim/SimDevice.cpp" line="306"/>
         <source>slave %1 defects: %2</source>
         <translation>局番 %1 の不具合: %2</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="301"/>
+        <location filename="../sim/SimDevice.cpp" line="308"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="306"/>
+        <location filename="../sim/SimDevice.cpp" line="313"/>
         <source>&apos;%1&apos; is not supported by a %2 device</source>
         <translation>&apos;%1&apos; は %2 デバイスではサポートされていません</translation>
     </message>
@@ -12393,10 +13276,15 @@ This moves or stops a motor: add --yes to send it.</source>
 Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 
   --devices SPEC     devices and machine numbers, e.g. dbu200@1,dbu400@150,dcpid@7
+                     a drive&apos;s own line settings in braces, e.g.
+                     dcpid@7{format=8E1,baud=19200}: it hears only frames sent in
+                     that format (a pty passes the client&apos;s rate and parity on)
   --pty [PATH]       serve on a pty (default); PATH: also create this symlink
   --tcp HOST:PORT    serve Modbus TCP (HOST defaults to 127.0.0.1, PORT 0: any)
-  --baud N           line speed for wire timing and device settings (19200)
-  --parity N|E|O     line parity (N)
+  --baud N           line speed for wire timing and device settings (19200); a
+                     drive hears a frame only at its own rate and parity
+  --parity N|E|O     line parity (N): the drives without settings of their own
+                     are set to --baud and --parity
   --wire-timing      delay replies as a real line at --baud would
   --turnaround MS    device turnaround with --wire-timing (2)
   --half-duplex      with --wire-timing: a request overlapping a reply on the line
@@ -12430,10 +13318,15 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 疑似端末上、または Modbus TCP ゲートウェイとして Modbus RTU ドライバをシミュレートします。
 
   --devices SPEC     デバイスと局番。例: dbu200@1,dbu400@150,dcpid@7
+                     ドライブ自身の回線設定は中かっこ内に。例:
+                     dcpid@7{format=8E1,baud=19200}: その形式で送られた
+                     フレームのみ受信（pty はクライアントの速度とパリティを渡す）
   --pty [PATH]       pty で提供（既定）。PATH: このシンボリックリンクも作成
   --tcp HOST:PORT    Modbus TCP で提供（HOST の既定は 127.0.0.1、PORT 0: 任意）
-  --baud N           回線タイミングとデバイス設定の通信速度 (19200)
-  --parity N|E|O     回線のパリティ (N)
+  --baud N           回線タイミングとデバイス設定の通信速度 (19200)。ドライブは
+                     自身の速度とパリティのフレームのみ受信
+  --parity N|E|O     回線のパリティ (N): 自身の設定を持たないドライブは
+                     --baud と --parity に設定される
   --wire-timing      --baud の実回線と同様に応答を遅延させる
   --turnaround MS    --wire-timing 時のデバイスのターンアラウンド (2)
   --half-duplex      --wire-timing と併用: 回線上で要求が応答と重なると
@@ -12465,82 +13358,82 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="87"/>
+        <location filename="../sim/SimOptions.cpp" line="92"/>
         <source>--lang needs a language code such as ko</source>
         <translation>--lang には ko などの言語コードが必要です</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="90"/>
+        <location filename="../sim/SimOptions.cpp" line="95"/>
         <source>--devices needs a device list such as dbu200@1,dcpid@7</source>
         <translation>--devices には dbu200@1,dcpid@7 のようなデバイスリストが必要です</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="99"/>
+        <location filename="../sim/SimOptions.cpp" line="104"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:5020</source>
         <translation>--tcp には HOST:PORT が必要です。例: 127.0.0.1:5020</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="105"/>
+        <location filename="../sim/SimOptions.cpp" line="110"/>
         <source>--tcp needs HOST:PORT with PORT 0..65535, got &apos;%1&apos;</source>
         <translation>--tcp には PORT が 0..65535 の HOST:PORT が必要です（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="117"/>
+        <location filename="../sim/SimOptions.cpp" line="122"/>
         <source>--baud must be one of %1, got &apos;%2&apos;</source>
         <translation>--baud は %1 のいずれかでなければなりません（指定値 &apos;%2&apos;）</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="124"/>
+        <location filename="../sim/SimOptions.cpp" line="129"/>
         <source>--parity must be N, E or O, got &apos;%1&apos;</source>
         <translation>--parity は N、E、O のいずれかでなければなりません（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="134"/>
+        <location filename="../sim/SimOptions.cpp" line="139"/>
         <source>--turnaround must be 0..1000 ms, got &apos;%1&apos;</source>
         <translation>--turnaround は 0..1000 ms でなければなりません（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="138"/>
+        <location filename="../sim/SimOptions.cpp" line="143"/>
         <source>--faults needs a list such as drop=0.02,crc=0.01</source>
         <translation>--faults には drop=0.02,crc=0.01 のようなリストが必要です</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="142"/>
+        <location filename="../sim/SimOptions.cpp" line="147"/>
         <source>--faults: %1</source>
         <translation>--faults: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="148"/>
+        <location filename="../sim/SimOptions.cpp" line="153"/>
         <source>--seed must be a whole number 0..4294967295, got &apos;%1&apos;</source>
         <translation>--seed は 0..4294967295 の整数でなければなりません（指定値 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="152"/>
+        <location filename="../sim/SimOptions.cpp" line="157"/>
         <source>--defect needs ID:DEFECT[,DEFECT...], e.g. 3:firmware=1.4; DEFECT: %1</source>
         <translation>--defect には ID:DEFECT[,DEFECT...] が必要です。例: 3:firmware=1.4。DEFECT: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="159"/>
+        <location filename="../sim/SimOptions.cpp" line="164"/>
         <source>--defect: %1</source>
         <translation>--defect: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="163"/>
+        <location filename="../sim/SimOptions.cpp" line="168"/>
         <source>--motor needs a list such as inertia=2e-4,load=0.05</source>
         <translation>--motor には inertia=2e-4,load=0.05 のようなリストが必要です</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="167"/>
+        <location filename="../sim/SimOptions.cpp" line="172"/>
         <source>--motor: %1</source>
         <translation>--motor: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="172"/>
+        <location filename="../sim/SimOptions.cpp" line="177"/>
         <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
         <translation>不明な引数 &apos;%1&apos;。オプション: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="181"/>
+        <location filename="../sim/SimOptions.cpp" line="186"/>
         <source>--devices SPEC is required, e.g. --devices dbu200@1,dcpid@7</source>
         <translation>--devices SPEC は必須です。例: --devices dbu200@1,dcpid@7</translation>
     </message>
@@ -12790,62 +13683,62 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>%1 の通信グループ</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="158"/>
+        <location filename="../model/run/StartPreview.cpp" line="177"/>
         <source>It runs with running data SPno%1</source>
         <translation>運転データ: SPno%1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="160"/>
+        <location filename="../model/run/StartPreview.cpp" line="179"/>
         <source> at %1</source>
         <translation> 速度 %1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="163"/>
+        <location filename="../model/run/StartPreview.cpp" line="182"/>
         <source>, direction %1 (the direction command sent since)</source>
         <translation>、回転方向 %1（その後に送信した回転方向指令）</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="164"/>
+        <location filename="../model/run/StartPreview.cpp" line="183"/>
         <source>, direction %1</source>
         <translation>、回転方向 %1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="167"/>
+        <location filename="../model/run/StartPreview.cpp" line="186"/>
         <source>Which running data it runs with could not be read.</source>
         <translation>どの運転データで運転するかを読み出せませんでした。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="170"/>
+        <location filename="../model/run/StartPreview.cpp" line="189"/>
         <source>Warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="172"/>
+        <location filename="../model/run/StartPreview.cpp" line="191"/>
         <source>The start also reaches machine number(s) %1: %2.</source>
         <translation>運転開始は局番 %1 にも届きます: %2。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="175"/>
+        <location filename="../model/run/StartPreview.cpp" line="195"/>
         <source>Not read: %1.</source>
         <translation>未読出し: %1。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="187"/>
+        <location filename="../model/run/StartPreview.cpp" line="207"/>
         <source>This starts the motor of machine number %1.</source>
         <translation>局番 %1 のモータを起動します。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="189"/>
+        <location filename="../model/run/StartPreview.cpp" line="209"/>
         <source>This sets the speed command of machine number %1 to %2: its motor runs.</source>
         <translation>局番 %1 の速度指令を %2 に設定します: モータが運転します。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="193"/>
+        <location filename="../model/run/StartPreview.cpp" line="213"/>
         <source>Make sure that nobody is near the machine and that it may move. STOP ALL stops every drive at any time.</source>
         <translation>機械の近くに人がいないこと、機械が動いてもよいことを確認してください。全停止でいつでも全ドライバを停止できます。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="196"/>
+        <location filename="../model/run/StartPreview.cpp" line="216"/>
         <source>You are asked once per drive while the program runs.</source>
         <translation>プログラム実行中、ドライバごとに 1 回確認します。</translation>
     </message>
@@ -13163,102 +14056,82 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>局番 %1 は既知のファミリのドライバとして識別されていません。試運転には識別が必要です。</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="111"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="120"/>
         <source>&amp;Start</source>
         <translation>運転開始(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="111"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="120"/>
         <source>S&amp;top</source>
         <translation>停止(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="112"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="121"/>
         <source>&amp;CW</source>
         <translation>&amp;CW</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="112"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="121"/>
         <source>CC&amp;W</source>
         <translation>CC&amp;W</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="113"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="122"/>
         <source>&amp;Hold</source>
         <translation>保持(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="113"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="122"/>
         <source>&amp;Free</source>
         <translation>フリー(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="132"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="141"/>
         <source>Se&amp;lect running data</source>
         <translation>運転データ選択(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="143"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="152"/>
         <source>Return to &amp;I/O priority</source>
         <translation>I/O 優先に戻す(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="145"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="154"/>
         <source>Give run, stop, direction and speed selection back to the drive&apos;s input terminals</source>
         <translation>運転、停止、回転方向、速度選択をドライバの入力端子に戻します</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="191"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="200"/>
         <source>Cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>ドライバが運転コマンドを受け付けるかを確認するための %1 を読み出せません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="227"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="236"/>
         <source>Reading what the start will run…</source>
         <translation>運転開始時の動作を読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="243"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="252"/>
         <source>Start the motor</source>
         <translation>モータの運転開始</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="257"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="266"/>
         <source>Sending %1…</source>
         <translation>%1 を送信中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="293"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="295"/>
+        <source>Not every drive of its communication group runs: see below.</source>
+        <translation>通信グループのすべてのドライバが運転しているわけではありません。下を参照してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/TestRunPanel.cpp" line="313"/>
         <source>Sent: %1</source>
         <translation>送信済み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="308"/>
-        <source>Read back after the command at %1:</source>
-        <translation>%1 のコマンド後の読み戻し:</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="311"/>
-        <source>The motor is running.</source>
-        <translation>モータは運転中です。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="311"/>
-        <source>The motor is stopped.</source>
-        <translation>モータは停止しています。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="313"/>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="315"/>
-        <source>(not read: %1)</source>
-        <translation>（未読出し: %1）</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="379"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="382"/>
         <source>Polling is paused: the controller brakes the motor %1 s after the last frame it receives (%2). Resume polling to keep the motor running.</source>
         <translation>ポーリングが一時停止中です: コントローラは最後のフレームを受信してから %1 s 後にモータにブレーキをかけます (%2)。モータの運転を続けるにはポーリングを再開してください。</translation>
     </message>
@@ -13528,32 +14401,37 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>RS-485 モード %1 はサポートされていません: off、auto、kernel、rts のいずれかを使用してください。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="50"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="52"/>
+        <source>Line format of machine number %1: %2 Use machine numbers 1–247.</source>
+        <translation>局番 %1 の通信フォーマット: %2 局番は 1–247 を使ってください。</translation>
+    </message>
+    <message>
+        <location filename="../transport/ConnectionSettings.cpp" line="60"/>
         <source>RTS delay %1 µs is not allowed: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own).</source>
         <translation>RTS 遅延 %1 µs は使用できません: 0–%2 µs を使用してください（0: シリアルドライバまたは libmodbus 自身の遅延）。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="59"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="69"/>
         <source>No host given: enter the gateway&apos;s address, e.g. 192.168.1.10.</source>
         <translation>ホストが指定されていません: ゲートウェイのアドレスを入力してください。例: 192.168.1.10。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="63"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="73"/>
         <source>TCP port %1 is not allowed: use 1–65535 (Modbus TCP uses 502).</source>
         <translation>TCP ポート %1 は使用できません: 1–65535 を使用してください（Modbus TCP は 502）。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="70"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="80"/>
         <source>No simulated devices given: use a list such as dbu200@1,dcpid@7.</source>
         <translation>シミュレーションデバイスが指定されていません: dbu200@1,dcpid@7 のようなリストを使用してください。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="76"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="86"/>
         <source>Timeout %1 ms is not allowed: use 10–10000 ms.</source>
         <translation>タイムアウト %1 ms は使用できません: 10–10000 ms を使用してください。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="80"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="90"/>
         <source>%1 retries are not allowed: use 0–10.</source>
         <translation>リトライ %1 回は使用できません: 0–10 を使用してください。</translation>
     </message>
@@ -13603,70 +14481,80 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>%1 を開けません: %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="129"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="325"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="131"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
         <source>%1 is not open</source>
         <translation>%1 が開いていません</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="151"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="169"/>
         <source>send failed</source>
         <translation>送信失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="177"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="195"/>
         <source>interrupted while waiting</source>
         <translation>待機中に中断しました</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="181"/>
-        <location filename="../transport/MockBackend.cpp" line="100"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="199"/>
+        <location filename="../transport/MockBackend.cpp" line="101"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 以内に応答がありません</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="211"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="232"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>別の応答が続きました: この応答は以前の要求に対するものの可能性があります</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="307"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="267"/>
+        <source>a drive&apos;s own line format needs a serial port; a Modbus TCP gateway sets its line itself</source>
+        <translation>ドライブ自身の通信フォーマットにはシリアルポートが必要です。Modbus TCP ゲートウェイは回線を自分で設定します</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="283"/>
+        <source>cannot switch the line to %1: %2</source>
+        <translation>回線を %1 に切り替えられません: %2</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="356"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>局番 %1 からの応答（期待値 %2）</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="318"/>
-        <location filename="../transport/RtuBackend.cpp" line="160"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="367"/>
+        <location filename="../transport/RtuBackend.cpp" line="158"/>
         <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>応答が不完全です</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="323"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="372"/>
         <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 不一致</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="330"/>
-        <location filename="../transport/RtuBackend.cpp" line="167"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="379"/>
+        <location filename="../transport/RtuBackend.cpp" line="165"/>
         <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>受信失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="404"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="453"/>
         <source> (connection closed)</source>
         <translation> (接続切断)</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="426"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="475"/>
         <source>stale bytes discarded before sending</source>
         <translation>送信前に残留バイトを破棄しました</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="510"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="559"/>
         <source>late bytes discarded after an error</source>
         <translation>エラー後に遅延バイトを破棄しました</translation>
     </message>
@@ -13691,18 +14579,18 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>エコー %1 ×%2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="201"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="220"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="214"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="233"/>
         <source>cancelled before sending</source>
         <translation>送信前にキャンセルしました</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="254"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="273"/>
         <source>cannot open %1</source>
         <translation>%1 を開けません</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="301"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="315"/>
         <source>client closed</source>
         <translation>クライアントが切断しました</translation>
     </message>
@@ -13727,72 +14615,72 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>リトライ %1 回は使用できません: 0–10、または既定値には -1 を使用してください。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="164"/>
+        <location filename="../transport/ModbusRequest.cpp" line="169"/>
         <source>Function 0x%1 cannot be broadcast: only functions 06h and 10h (writes) may be sent to machine number 0; use slave address 1–247.</source>
         <translation>ファンクション 0x%1 はブロードキャストできません: 局番 0 に送信できるのはファンクション 06h と 10h（書込み）のみです。スレーブアドレス 1–247 を使用してください。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="171"/>
+        <location filename="../transport/ModbusRequest.cpp" line="176"/>
         <source>Function code 0x%1 must be sent as a raw request.</source>
         <translation>ファンクションコード 0x%1 は raw 要求として送信する必要があります。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="175"/>
+        <location filename="../transport/ModbusRequest.cpp" line="180"/>
         <source>Raw request data of %1 bytes is too long: at most %2 bytes.</source>
         <translation>%1 バイトの raw 要求データは長すぎます: 最大 %2 バイトです。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="188"/>
+        <location filename="../transport/ModbusRequest.cpp" line="193"/>
         <source>Cannot read %1 registers at once: use 1–125 registers.</source>
         <translation>%1 レジスタを一度に読み出せません: 1–125 レジスタを使用してください。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="195"/>
+        <location filename="../transport/ModbusRequest.cpp" line="200"/>
         <source>Write single register needs exactly 1 value, not %1.</source>
         <translation>単一レジスタ書込みには値が 1 つだけ必要です（%1 個ではなく）。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="201"/>
+        <location filename="../transport/ModbusRequest.cpp" line="206"/>
         <source>Cannot write %1 registers at once: use 1–123 registers.</source>
         <translation>%1 レジスタを一度に書き込めません: 1–123 レジスタを使用してください。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="206"/>
+        <location filename="../transport/ModbusRequest.cpp" line="211"/>
         <source>%1 values given for %2 registers.</source>
         <translation>%2 レジスタに対して %1 個の値が指定されています。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="215"/>
+        <location filename="../transport/ModbusRequest.cpp" line="220"/>
         <source>Registers %1 ×%2 run past the last address 0xFFFF.</source>
         <translation>レジスタ %1 ×%2 が最終アドレス 0xFFFF を超えています。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="226"/>
+        <location filename="../transport/ModbusRequest.cpp" line="231"/>
         <source>device identification code %1 object %2</source>
         <translation>デバイス識別 コード %1 オブジェクト %2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="234"/>
+        <location filename="../transport/ModbusRequest.cpp" line="239"/>
         <source>raw %1 %2</source>
         <translation>raw %1 %2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="238"/>
+        <location filename="../transport/ModbusRequest.cpp" line="243"/>
         <source>read %1 %2 ×%3</source>
         <translation>読出し %1 %2 ×%3</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="242"/>
+        <location filename="../transport/ModbusRequest.cpp" line="247"/>
         <source>write %1 %2 = %3</source>
         <translation>書込み %1 %2 = %3</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="245"/>
+        <location filename="../transport/ModbusRequest.cpp" line="250"/>
         <source>write %1 %2 ×%3 = %4</source>
         <translation>書込み %1 %2 ×%3 = %4</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="251"/>
+        <location filename="../transport/ModbusRequest.cpp" line="256"/>
         <source>broadcast %1</source>
         <translation>ブロードキャスト %1</translation>
     </message>
@@ -13947,7 +14835,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>%1 は %2 (PID %3) が使用中です。先に終了してください。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="97"/>
+        <location filename="../transport/RtuBackend.cpp" line="95"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -13956,17 +14844,17 @@ then log out and in again (the group applies to new sessions only).</source>
 ログアウトして再ログインしてください（グループは新しいセッションにのみ適用されます）。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="103"/>
+        <location filename="../transport/RtuBackend.cpp" line="101"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> (デバイスがこのパリティに対応していない可能性があります。pty は N が必要です)</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="138"/>
+        <location filename="../transport/RtuBackend.cpp" line="136"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>応答が %1 バイトを示していますが、RTU フレームの最大長を超えています</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="159"/>
+        <location filename="../transport/RtuBackend.cpp" line="157"/>
         <source>no reply</source>
         <translation>応答なし</translation>
     </message>
@@ -14191,21 +15079,26 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>アダプタは受信したバイトを最大 %1 ms 保持してから渡します（%2）。対処: %3。</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineSetup.cpp" line="106"/>
+        <location filename="../transport/SerialLineSetup.cpp" line="107"/>
         <source>the driver left it off</source>
         <translation>シリアルドライバがオフのままにした</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineSetup.cpp" line="176"/>
+        <source>the port does not take %1</source>
+        <translation>ポートが %1 を受け付けません</translation>
     </message>
 </context>
 <context>
     <name>opentop::TrendAxes</name>
     <message>
-        <location filename="../ui/trends/TrendAxes.cpp" line="40"/>
-        <location filename="../ui/trends/TrendAxes.cpp" line="46"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="51"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="52"/>
         <source>%1 [%2]</source>
         <translation>%1 [%2]</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendAxes.cpp" line="45"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="49"/>
         <source>[%1]</source>
         <translation>[%1]</translation>
     </message>
@@ -14213,22 +15106,23 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendChart</name>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="45"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="32"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="58"/>
         <source>Time (hh:mm:ss)</source>
         <translation>時刻 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="88"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="105"/>
         <source>Drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="279"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="296"/>
         <source>There is no trend data to export yet.</source>
         <translation>エクスポートするトレンドデータがまだありません。</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="292"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="309"/>
         <source>Cannot write the picture %1.</source>
         <translation>画像 %1 を書き込めません。</translation>
     </message>
@@ -14411,228 +15305,278 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuneCommand</name>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="80"/>
+        <location filename="../cli/TuneCommand.cpp" line="81"/>
         <source>Speed-loop step test and relay autotune of a DC controller (needs --yes)</source>
         <translation>DC コントローラの速度ループのステップ試験とリレーオートチューニング（--yes が必要）</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="86"/>
+        <location filename="../cli/TuneCommand.cpp" line="87"/>
         <source>Run the test (it moves the motor).</source>
         <translation>試験を実行します（モータが動きます）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="87"/>
+        <location filename="../cli/TuneCommand.cpp" line="88"/>
         <source>step: speed before the step (default 0).</source>
         <translation>step: ステップ前の速度（既定 0）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="87"/>
         <location filename="../cli/TuneCommand.cpp" line="88"/>
-        <location filename="../cli/TuneCommand.cpp" line="91"/>
-        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <location filename="../cli/TuneCommand.cpp" line="89"/>
+        <location filename="../cli/TuneCommand.cpp" line="92"/>
+        <location filename="../cli/TuneCommand.cpp" line="106"/>
         <source>SPEED</source>
         <translation>SPEED</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="88"/>
+        <location filename="../cli/TuneCommand.cpp" line="89"/>
         <source>step: speed after the step.</source>
         <translation>step: ステップ後の速度。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="89"/>
+        <location filename="../cli/TuneCommand.cpp" line="90"/>
         <source>step: record this long after the step (default 1500).</source>
         <translation>step: ステップ後に記録する時間（既定 1500）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="90"/>
+        <location filename="../cli/TuneCommand.cpp" line="91"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="91"/>
+        <location filename="../cli/TuneCommand.cpp" line="92"/>
         <source>autotune: operating speed of the relay test.</source>
         <translation>autotune: リレー試験の運転速度。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="92"/>
+        <location filename="../cli/TuneCommand.cpp" line="93"/>
         <source>autotune: output swing, % of full output (default 10).</source>
         <translation>autotune: 出力の振り幅。フル出力に対する %（既定 10）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="93"/>
+        <location filename="../cli/TuneCommand.cpp" line="94"/>
         <source>PERCENT</source>
         <translation>PERCENT</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="95"/>
+        <location filename="../cli/TuneCommand.cpp" line="96"/>
         <source>autotune: soft, medium (default), stiff, tyreus-luyben or zn-pi.</source>
         <translation>autotune: soft、medium（既定）、stiff、tyreus-luyben、zn-pi のいずれか。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="95"/>
+        <location filename="../cli/TuneCommand.cpp" line="96"/>
         <source>RULE</source>
         <translation>RULE</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="96"/>
+        <location filename="../cli/TuneCommand.cpp" line="97"/>
         <source>autotune: write the proposed gains, then run a step test from half the operating speed to it.</source>
         <translation>autotune: 提案ゲインを書き込み、運転速度の半分から運転速度までのステップ試験を実行します。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="98"/>
-        <source>autotune: with --accept, store the gains in the drive.</source>
-        <translation>autotune: --accept と併用すると、ゲインをドライバに保存します。</translation>
+        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <source>autotune: with --accept, store the gains in the drive if the step measured with them passes the check.</source>
+        <translation>autotune: --accept と併用すると、そのゲインで測定したステップが確認に合格した場合にゲインをドライバに保存します。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <source>autotune: with --accept, keep (and with --store, store) gains whose measured step failed the check; without it they are written back to what the drive had.</source>
+        <translation>autotune: --accept と併用すると、測定したステップが確認に不合格でもゲインを残します（--store があれば保存します）。指定しなければドライバの元のゲインを書き戻します。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="106"/>
         <source>Stop at once beyond this speed (default 120 % of the test&apos;s highest).</source>
         <translation>速度がこの値を超えたら直ちに停止します（既定: 試験の最高速度の 120 %）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="101"/>
+        <location filename="../cli/TuneCommand.cpp" line="107"/>
         <source>Stop at once beyond this current in A (default 20).</source>
         <translation>電流がこの値 (A) を超えたら直ちに停止します（既定 20）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="102"/>
+        <location filename="../cli/TuneCommand.cpp" line="108"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <location filename="../cli/TuneCommand.cpp" line="109"/>
         <source>Write the samples to FILE.</source>
         <translation>サンプルを FILE に書き出します。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <location filename="../cli/TuneCommand.cpp" line="109"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="117"/>
+        <location filename="../cli/TuneCommand.cpp" line="123"/>
         <source>error: usage: %1</source>
         <translation>エラー: 使い方: %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="127"/>
+        <location filename="../cli/TuneCommand.cpp" line="133"/>
         <source>error: --%1 must be a number 0 or more, got &apos;%2&apos;</source>
         <translation>エラー: --%1 は 0 以上の数値でなければなりません（指定値 &apos;%2&apos;）</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="149"/>
-        <location filename="../cli/TuneCommand.cpp" line="160"/>
-        <location filename="../cli/TuneCommand.cpp" line="165"/>
-        <location filename="../cli/TuneCommand.cpp" line="319"/>
+        <location filename="../cli/TuneCommand.cpp" line="155"/>
+        <location filename="../cli/TuneCommand.cpp" line="166"/>
+        <location filename="../cli/TuneCommand.cpp" line="171"/>
+        <location filename="../cli/TuneCommand.cpp" line="374"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="150"/>
+        <location filename="../cli/TuneCommand.cpp" line="156"/>
         <source>step needs --to SPEED</source>
         <translation>step には --to SPEED が必要です</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="151"/>
+        <location filename="../cli/TuneCommand.cpp" line="157"/>
         <source>--rule must be one of %1</source>
         <translation>--rule は %1 のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="153"/>
+        <location filename="../cli/TuneCommand.cpp" line="159"/>
         <source>autotune needs --speed SPEED</source>
         <translation>autotune には --speed SPEED が必要です</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="169"/>
+        <location filename="../cli/TuneCommand.cpp" line="175"/>
         <source>Would run the motor of machine number %1 from %2 to %3 and record the step response.</source>
         <translation>局番 %1 のモータを %2 から %3 へ運転し、ステップ応答を記録します。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="174"/>
+        <location filename="../cli/TuneCommand.cpp" line="180"/>
         <source>Would run the motor of machine number %1 in a relay test around %2 (output ±%3 %).</source>
         <translation>局番 %1 のモータを %2 付近でリレー試験運転します（出力 ±%3 %）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="180"/>
+        <location filename="../cli/TuneCommand.cpp" line="186"/>
         <source>This moves the motor: add --yes to run it.</source>
         <translation>モータが動きます: 実行するには --yes を付けてください。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="229"/>
+        <location filename="../cli/TuneCommand.cpp" line="235"/>
         <source>Machine number %1, gains %2</source>
         <translation>局番 %1、ゲイン %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="231"/>
+        <location filename="../cli/TuneCommand.cpp" line="237"/>
         <source>  rise time (10–90 %): %1</source>
         <translation>  立ち上がり時間 (10–90 %): %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="232"/>
+        <location filename="../cli/TuneCommand.cpp" line="238"/>
         <source>  overshoot: %1 %</source>
         <translation>  オーバーシュート: %1 %</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="233"/>
+        <location filename="../cli/TuneCommand.cpp" line="239"/>
         <source>  settling time (2 %): %1</source>
         <translation>  整定時間 (2 %): %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="234"/>
+        <location filename="../cli/TuneCommand.cpp" line="240"/>
         <source>  steady-state error: %1 %2</source>
         <translation>  定常偏差: %1 %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="235"/>
+        <location filename="../cli/TuneCommand.cpp" line="241"/>
         <source>  peak current: %1 A</source>
         <translation>  ピーク電流: %1 A</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="249"/>
+        <location filename="../cli/TuneCommand.cpp" line="267"/>
         <source>Step %1 → %2 %3:</source>
         <translation>ステップ %1 → %2 %3:</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="253"/>
-        <source>Relay test: Ku %1, Tu %2 ms (amplitude ±%3 %4, %5 cycles)</source>
-        <translation>リレー試験: Ku %1、Tu %2 ms（振幅 ±%3 %4、%5 周期）</translation>
+        <location filename="../cli/TuneCommand.cpp" line="272"/>
+        <source>Relay test: Ku %1, Tu %2 ms measured (amplitude ±%3 %4, %5 cycles, %6 readings per period, one every %7 ms)</source>
+        <translation>リレー試験: Ku %1、Tu %2 ms（実測、振幅 ±%3 %4、%5 周期、1 周期あたり読出し %6 回、%7 ms ごと）</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="259"/>
+        <location filename="../cli/TuneCommand.cpp" line="364"/>
+        <source>What to change: %1</source>
+        <translation>変更すべき点: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="281"/>
         <source>Model: gain %1, time constant %2 ms, dead time %3 ms (the bus&apos;s %4 ms left out)</source>
         <translation>モデル: ゲイン %1、時定数 %2 ms、むだ時間 %3 ms（バスの %4 ms は除外）</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="265"/>
+        <location filename="../cli/TuneCommand.cpp" line="287"/>
+        <source>The drive&apos;s own loop on the model: Ku %1, Tu %2 ms</source>
+        <translation>モデル上のドライバ自身のループ: Ku %1、Tu %2 ms</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="290"/>
         <source>Proposed (%1): %2</source>
         <translation>提案値 (%1): %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="281"/>
+        <location filename="../cli/TuneCommand.cpp" line="291"/>
+        <source>  the rule&apos;s P × %1, Ti × %2; predicted step %3 → %4 %5: overshoot %6 %, settling time %7</source>
+        <translation>  ルールの P × %1、Ti × %2。予測ステップ %3 → %4 %5: オーバーシュート %6 %、整定時間 %7</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="307"/>
         <source>Writing the proposed gains failed: %1</source>
         <translation>提案ゲインの書込みに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="284"/>
+        <location filename="../cli/TuneCommand.cpp" line="310"/>
         <source>Proposed gains written (not stored).</source>
         <translation>提案ゲインを書き込みました（未保存）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="287"/>
+        <location filename="../cli/TuneCommand.cpp" line="313"/>
         <source>Measured step %1 → %2 %3 with them:</source>
         <translation>このゲインで測定したステップ %1 → %2 %3:</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="303"/>
+        <location filename="../cli/TuneCommand.cpp" line="321"/>
+        <source>interrupted</source>
+        <translation>中断</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="324"/>
+        <source>Check after Accept: passed. %1</source>
+        <translation>採用後の確認: 合格。%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="325"/>
+        <source>Check after Accept: FAILED. %1</source>
+        <translation>採用後の確認: 不合格。%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="334"/>
+        <source>The gains before were written back (%1); nothing was stored. --override-check keeps the proposal (and with --store stores it) all the same.</source>
+        <translation>元のゲインを書き戻しました (%1)。何も保存していません。--override-check を付けると、それでも提案値を残します（--store があれば保存します）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="338"/>
+        <source>Writing back the gains before failed: %1; the proposal is still in the drive (not stored).</source>
+        <translation>元のゲインの書き戻しに失敗しました: %1。提案値はドライバに残っています（未保存）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="345"/>
+        <source>Storing although the check failed (--override-check).</source>
+        <translation>確認は不合格ですが保存します (--override-check)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="354"/>
         <source>Gains stored in the drive.</source>
         <translation>ゲインをドライバに保存しました。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="304"/>
+        <location filename="../cli/TuneCommand.cpp" line="355"/>
         <source>Storing the gains failed: %1</source>
         <translation>ゲインの保存に失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="311"/>
+        <location filename="../cli/TuneCommand.cpp" line="362"/>
         <source>Test ended: %1</source>
         <translation>試験終了: %1</translation>
     </message>
@@ -14640,24 +15584,31 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningChart</name>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="40"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="41"/>
         <source>Time (ms)</source>
         <translation>時間 (ms)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="44"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="45"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="83"/>
         <source>Current (A)</source>
         <translation>電流 (A)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="65"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="81"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="65"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="81"/>
         <source>Speed (%1)</source>
         <translation>速度 (%1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="82"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="83"/>
+        <source>(%1)</source>
+        <translation>(%1)</translation>
     </message>
 </context>
 <context>
@@ -14824,163 +15775,153 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningPage</name>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="41"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="43"/>
         <source>STOP</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="52"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="55"/>
         <source>Cancels the running test: the motor is stopped and the stop confirmed</source>
         <translation>実行中の試験を中止します: モータを停止し、停止を確認します</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="68"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="245"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="71"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="269"/>
         <source>Step test</source>
         <translation>ステップ試験</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="69"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="72"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="289"/>
         <source>Relay autotune</source>
         <translation>リレーオートチューニング</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="107"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="131"/>
         <source>Ready. Nothing moves until you confirm a test.</source>
         <translation>準備完了。試験を確認するまでモータは動きません。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="198"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="222"/>
         <source>Could not read the speed mode: %1</source>
         <translation>速度モードを読み出せませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="201"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="225"/>
         <source>The drive is not in a closed-loop speed mode (now: %1). Choose one on its settings page first.</source>
         <translation>ドライバが閉ループ速度モードではありません（現在: %1）。先に設定ページで閉ループモードを選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="224"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="248"/>
         <source>Limits: %1 %2, %3.</source>
         <translation>制限値: %1 %2、%3。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="226"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="250"/>
         <source>%1 A</source>
         <translation>%1 A</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="226"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="250"/>
         <source>no current limit</source>
         <translation>電流制限なし</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="241"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
         <source>The motor of %1 will run from %2 to %3 %4 in its present speed mode, for about %5 s, and then stop.</source>
         <translation>%1 のモータが現在の速度モードで %2 から %3 %4 まで約 %5 s 運転し、その後停止します。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="245"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="269"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="289"/>
         <source>Run</source>
         <translation>実行</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="261"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="285"/>
         <source>The motor of %1 will run in open loop (the speed loop off) around %2 %3, its output switching by ±%4 %, for up to %5 s, and then stop.</source>
         <translation>%1 のモータが開ループ（速度ループ無効）で %2 %3 付近を運転し、出力を ±%4 % で切り替えます。最大 %5 s 後に停止します。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="283"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="307"/>
         <source>Stop command sent.</source>
         <translation>停止コマンドを送信しました。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="284"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="308"/>
         <source>Stop command failed: %1</source>
         <translation>停止コマンドが失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="294"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="318"/>
         <source>Stopping…</source>
         <translation>停止中…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="308"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="332"/>
         <source>Run %1: %2 → %3 %4</source>
         <translation>実行 %1: %2 → %3 %4</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="343"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="367"/>
         <source>Step test done.</source>
         <translation>ステップ試験が完了しました。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="343"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="367"/>
         <source>Step test ended: %1</source>
         <translation>ステップ試験終了: %1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="347"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="372"/>
         <source>The test was stopped</source>
         <translation>試験が停止されました</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="380"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="403"/>
         <source>Autotune ended: %1</source>
         <translation>オートチューニング終了: %1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="382"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="405"/>
         <source>The autotune was stopped</source>
         <translation>オートチューニングが停止されました</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="392"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="415"/>
         <source>Predicted: %1 → %2 %3</source>
         <translation>予測: %1 → %2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="400"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="423"/>
         <source>Autotune done: proposal %1. Accept writes it to the drive.</source>
         <translation>オートチューニング完了: 提案値 %1。採用するとドライバに書き込みます。</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="434"/>
-        <source>Proposal rejected; the drive&apos;s gains were not changed.</source>
-        <translation>提案値を却下しました。ドライバのゲインは変更していません。</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="438"/>
-        <source>Proposal rejected</source>
-        <translation>提案値を却下</translation>
     </message>
 </context>
 <context>
     <name>opentop::TuningRules</name>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="60"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="61"/>
         <source>Soft (no overshoot)</source>
         <translation>ソフト（オーバーシュートなし）</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="62"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="63"/>
         <source>Medium (some overshoot)</source>
         <translation>標準（若干のオーバーシュート）</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="64"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="65"/>
         <source>Stiff (Ziegler–Nichols)</source>
         <translation>高剛性（Ziegler–Nichols）</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="66"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="67"/>
         <source>Tyreus–Luyben (robust)</source>
         <translation>Tyreus–Luyben（ロバスト）</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="68"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="69"/>
         <source>PI only (Ziegler–Nichols)</source>
         <translation>PI のみ（Ziegler–Nichols）</translation>
     </message>
@@ -15019,129 +15960,134 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningRunner</name>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="190"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="205"/>
         <source>a tuning test is already running</source>
         <translation>チューニング試験がすでに実行中です</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="198"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="214"/>
         <source>Reading the drive&apos;s settings</source>
         <translation>ドライバの設定を読出し中</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="206"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="223"/>
         <source>could not read the drive&apos;s settings: %1</source>
         <translation>ドライバの設定を読み出せませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="231"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="250"/>
         <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
         <translation>ドライバが閉ループ速度モードではありません: 先に %1 (%2) を %3 に設定してください</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="233"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="252"/>
         <source> or </source>
         <translation> または </translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="248"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="267"/>
         <source>Setting the communication-loss braking time to %1 s</source>
         <translation>通信断停止時間を %1 s に設定中</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="272"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="291"/>
         <source>the drive stopped answering: %1</source>
         <translation>ドライバが応答しなくなりました: %1</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="290"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="316"/>
         <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
         <translation>速度 %1 %2 が試験の制限値 %3 %2 を超えました: 即時停止</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="297"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="323"/>
         <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
         <translation>電流 %1 A が試験の制限値 %2 A を超えました: 即時停止</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="303"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="329"/>
         <source>cancelled</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="364"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="391"/>
         <source>Stopping the motor</source>
         <translation>モータを停止中</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="370"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="396"/>
         <source>motor stopped (confirmed)</source>
         <translation>モータ停止（確認済み）</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="371"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="397"/>
         <source>the motor could not be confirmed stopped: check it</source>
         <translation>モータの停止を確認できません: モータを点検してください</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="406"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="435"/>
         <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
         <translation>ステップ試験はある速度から別の速度へ正転で行います: 開始速度と目標速度は異なる値で、0 以上でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="413"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="442"/>
         <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
         <translation>%1 %2 は試験の速度制限値 %3 %2 を超えています</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="421"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="450"/>
         <source>Running to %1 %2</source>
         <translation>%1 %2 まで運転中</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="457"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="486"/>
         <source>Step to %1 %2</source>
         <translation>%1 %2 へステップ</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="484"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="513"/>
         <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
         <translation>運転速度は 0 より大きく、試験の速度制限値 %1 %2 より小さくなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="491"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="520"/>
         <source>the relay amplitude must be 0–50 % of full output</source>
         <translation>リレー振幅は最大出力の 0–50 % でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="494"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="523"/>
         <source>Open loop: finding the output for %1 %2</source>
         <translation>開ループ: %1 %2 に必要な出力を探索中</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="542"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="581"/>
         <source>the motor did not turn at %1 % output</source>
         <translation>出力 %1 % でモータが回転しませんでした</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="578"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="617"/>
         <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
         <translation>運転速度には出力 %1 % が必要です: その上下に ±%2 % の余裕がありません</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="583"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="622"/>
         <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
         <translation>%1 %2 付近でリレー試験中 (出力 %3 % ± %4 %)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="616"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="657"/>
         <source>no steady oscillation within %1 s: %2</source>
         <translation>%1 s 以内に安定した振動が得られませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="618"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="659"/>
         <source>try a larger amplitude</source>
         <translation>振幅を大きくしてみてください</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="695"/>
+        <source>the relay result was refused: %1</source>
+        <translation>リレー試験の結果は採用できません: %1</translation>
     </message>
 </context>
 <context>
@@ -15172,34 +16118,34 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>実線: 速度 · 点線: 指令 · 一点鎖線: 電流（右軸） · 破線: 予測速度</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="169"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="174"/>
         <source>no run to save</source>
         <translation>保存する実行結果がありません</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="182"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="187"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="191"/>
         <source>Save run as CSV</source>
         <translation>実行結果を CSV で保存</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="183"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="188"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="191"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="194"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="196"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="199"/>
         <source>Save chart as PNG</source>
         <translation>グラフを PNG で保存</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="192"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="197"/>
         <source>PNG images (*.png)</source>
         <translation>PNG 画像 (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="194"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="199"/>
         <source>Could not write %1.</source>
         <translation>%1 に書き込めませんでした。</translation>
     </message>
@@ -15217,9 +16163,47 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>%1: プロファイルのチューニングにはロール pidP、pidI、pidD、pidDPeriod、pidStore、speedMode、speedCommand、commLossTime、loadCurrent、output が必要です</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningSpec.cpp" line="60"/>
+        <location filename="../model/tuning/TuningSpec.cpp" line="61"/>
         <source>%1: the profile&apos;s tuning section needs periodMs ≥ 1, outputFullScale &gt; 0, openLoopMode and closedLoopModes with known feedback parameters</source>
         <translation>%1: プロファイルのチューニングセクションには periodMs ≥ 1、outputFullScale &gt; 0、openLoopMode、およびフィードバックパラメータが既知の closedLoopModes が必要です</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningVerdict</name>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="11"/>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="12"/>
+        <source>none within the record</source>
+        <translation>記録時間内になし</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="20"/>
+        <source>no step was measured to its end with these gains: %1</source>
+        <translation>このゲインでステップを最後まで測定できませんでした: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="46"/>
+        <source>the speed did not settle within %1 ms (±2 % of the step)</source>
+        <translation>速度が %1 ms 以内に整定しませんでした（ステップの ±2 %）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="49"/>
+        <source>it overshot by %1 % where %2 % was predicted (at most %3 points more are accepted)</source>
+        <translation>オーバーシュートが %1 % でした（予測 %2 %、許容は予測 +%3 ポイントまで）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="60"/>
+        <source>Measured: overshoot %1 % (predicted %2 %), settling time %3 (predicted %4), peak current %5 A.</source>
+        <translation>実測: オーバーシュート %1 %（予測 %2 %）、整定時間 %3（予測 %4）、ピーク電流 %5 A。</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="70"/>
+        <source>Check failed: %1.</source>
+        <translation>確認不合格: %1。</translation>
     </message>
 </context>
 <context>
@@ -15366,7 +16350,12 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>&lt;h2&gt;OpenTOP によるドライバの立上げ&lt;/h2&gt;&lt;ol&gt;&lt;li&gt;&lt;b&gt;接続。&lt;/b&gt;バス ▸ 接続… で、シリアルポート（または USB–RS-485 変換アダプタ）、Modbus TCP ゲートウェイ、シミュレーションバスのいずれかを、バスのボーレート、パリティ、ストップビットとともに選択します。ステータスバーに接続先が表示されます。シミュレーションバスの場合はその旨が表示されます。&lt;/li&gt;&lt;li&gt;&lt;b&gt;ドライバの検出。&lt;/b&gt;バス ▸ バスをスキャン (F5) で局番 1–247 に問い合わせます。応答したドライバが識別され、状態と制御優先とともに左側に一覧表示されます。&lt;/li&gt;&lt;li&gt;&lt;b&gt;ドライバの選択。&lt;/b&gt;右側にそのドライバのページが開きます: モニタ（ライブ値）、プロファイルのパラメータページ、試運転、アラーム。&lt;/li&gt;&lt;li&gt;&lt;b&gt;設定の編集。&lt;/b&gt;編集した項目は、書き込むまで未書込みとしてマークされます。「ページ書込み」（またはドライバ ▸ 未書込みをすべて書込み、Ctrl+W）で書き込み、すべての値を読み戻して照合します。「元に戻す」で編集を破棄し、「再読出し」(Ctrl+R) でドライバを再度読み出します。ドライバが拒否する値は送信されず、項目に理由が表示されます。&lt;/li&gt;&lt;li&gt;&lt;b&gt;モータの試運転。&lt;/b&gt;試運転ページでは、通信優先でドライバの運転開始、停止、逆転を行います。各ドライバの最初の運転開始前に確認します。終了したらドライバを I/O 優先に戻し、機械側の入力で再び制御できるようにしてください。&lt;/li&gt;&lt;li&gt;&lt;b&gt;停止。&lt;/b&gt;ツールバーの全停止、または %1 で、プログラムのどのウィンドウからでもバス上の全ドライバを一斉に停止します。&lt;/li&gt;&lt;li&gt;&lt;b&gt;監視。&lt;/b&gt;表示 ▸ トレンド (Ctrl+G) で速度と負荷をグラフ表示します。表示 ▸ バス一覧で全ドライバの状態を一覧できます。表示 ▸ 通信ログ (Ctrl+T) でバス上の各フレームとその意味を表示します。&lt;/li&gt;&lt;li&gt;&lt;b&gt;設定の保管。&lt;/b&gt;ファイル ▸ バックアップで 1 台またはバス全体の設定をファイルに保存します。ファイル ▸ 比較でドライバ、ファイル、工場出荷時設定の差異を表示します。ファイル ▸ 復元で、プレビューの後にバックアップを書き戻します。&lt;/li&gt;&lt;/ol&gt;&lt;p&gt;すべてのキーボードショートカットは、ヘルプ ▸ キーボードショートカットに一覧表示されます。&lt;/p&gt;&lt;h3&gt;その他のドキュメント&lt;/h3&gt;&lt;p&gt;コマンドラインとシミュレータ: &lt;code&gt;man opentop&lt;/code&gt;、&lt;code&gt;man opentop-cli&lt;/code&gt;、&lt;code&gt;man opentop-sim&lt;/code&gt;。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/help/UserGuideDialog.cpp" line="70"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="66"/>
+        <source>&lt;h3&gt;Leaving a bus, and coming back after the link drops&lt;/h3&gt;&lt;p&gt;&lt;b&gt;Leaving.&lt;/b&gt; Quitting, Bus ▸ Disconnect or connecting elsewhere while drives run or are in communication priority names each of them and what will happen to it. The default stops every running drive, reads it back to confirm the stop, and then gives each drive back to its own inputs (I/O priority, read back), so that the machine works without OpenTOP. You may instead give control back only, leave the drives as they are, or stay.&lt;/p&gt;&lt;p&gt;&lt;b&gt;A lost link.&lt;/b&gt; When the adapter is pulled out or the gateway goes, every live value turns grey and a message says which drives were running or in communication priority when the link dropped, with the age of what is known. OpenTOP cannot stop them over a lost link: check the drive&apos;s STOP input, the emergency stop and the power on the machine. Bus ▸ Reconnect (Ctrl+R, also in the message and in the red bar) opens the same port again with the same drives, selected drive and page, reads every drive again and says at once if one is running. While connected, Ctrl+R re-reads the drive&apos;s pages.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;バスから離れるとき、接続が切れた後に再接続するとき&lt;/h3&gt;&lt;p&gt;&lt;b&gt;離れるとき。&lt;/b&gt;ドライバが運転中または通信優先のときに終了、バス ▸ 切断、または別の接続先への接続を行うと、各ドライバとそれに対して行う処理が表示されます。既定では、運転中のドライバをすべて停止し、読み出して停止を確認してから、各ドライバを自身の入力端子に戻し（I/O 優先、読み戻しで確認）、OpenTOP なしでも機械が動作するようにします。代わりに、制御を戻すだけ、ドライバをそのままにする、またはとどまることもできます。&lt;/p&gt;&lt;p&gt;&lt;b&gt;接続が切れたとき。&lt;/b&gt;アダプタが抜かれたりゲートウェイがなくなったりすると、すべてのライブ値がグレーになり、接続が切れた時点で運転中または通信優先だったドライバが、把握している値の経過時間とともにメッセージで示されます。切れた接続では OpenTOP はドライバを停止できません: 機械側でドライバの停止入力端子、非常停止、電源を確認してください。バス ▸ 再接続（Ctrl+R、メッセージと赤いバーにもあります）は、同じドライバ、選択中のドライバとページで同じポートを開き直し、すべてのドライバを読み出し直して、運転中のドライバがあればすぐに知らせます。接続中は、Ctrl+R でドライバのページを読み出し直します。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="86"/>
         <source>&lt;p&gt;The full description of the program: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;プログラムの詳細な説明: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</translation>
     </message>

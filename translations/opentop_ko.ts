@@ -260,177 +260,187 @@
         <translation>응답 없음</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="48"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="49"/>
         <source>top level</source>
         <translation>최상위</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="51"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="52"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot;는 1이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="61"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="62"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot;는 소문자 ID여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="71"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="70"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity는 N, E, O 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="75"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="74"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial: baud는 1200–115200, stopBits는 1 또는 2여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="81"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="86"/>
+        <source>serial.formats: &quot;%1&quot; is not a format such as 8N1 or 8E1</source>
+        <translation>serial.formats: &quot;%1&quot;은(는) 8N1, 8E1 같은 형식이 아닙니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="90"/>
+        <source>serial.formats must hold the default format %1</source>
+        <translation>serial.formats에 기본 형식 %1이(가) 있어야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="94"/>
         <source>serial.powerOnDelayMs must be 0–60000</source>
         <translation>serial.powerOnDelayMs는 0–60000이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="95"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="107"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits: maxReadRegisters는 1–125, maxWriteRegisters는 1–123</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="97"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="109"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits: slaves는 1–247 범위여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="112"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="124"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1]에는 id, model, label이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="114"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="126"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]: id &quot;%2&quot;가 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="125"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="137"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1]에는 고유한 id와 label이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="136"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="148"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1]에는 function 3 또는 4와 first ≤ last가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="180"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="192"/>
         <source>%1 has no name</source>
         <translation>%1에 이름이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="182"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="194"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1: reset은 %2 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="185"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="197"/>
         <source>%1: code %2 repeated</source>
         <translation>%1: 코드 %2가 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="207"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="219"/>
         <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
         <translation>%1: storeWith &quot;%2&quot;은(는) 명령 파라미터가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="210"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="222"/>
         <source>%1: the default is not among its allowed values</source>
         <translation>%1: 기본값이 허용 값에 포함되지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="214"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="226"/>
         <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
         <translation>%1: 비트 필드 &quot;%2&quot;: 기능 &quot;%3&quot;은(는) 읽을 수 있는 파라미터가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="221"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
         <source>%1: condition on unknown parameter &quot;%2&quot;</source>
         <translation>%1: 알 수 없는 파라미터 &quot;%2&quot;에 대한 조건</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="223"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="235"/>
         <source>%1: the default is not allowed when %2</source>
         <translation>%1: %2일 때는 기본값이 허용되지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="245"/>
         <source>%1 runs past address 0xFFFF</source>
         <translation>%1이(가) 주소 0xFFFF를 넘어갑니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="236"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="248"/>
         <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
         <translation>%1이(가) 0x%3에서 &quot;%2&quot;와(과) 겹칩니다(레지스터 %4개)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="260"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="272"/>
         <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
         <translation>identify: &quot;%1&quot;은(는) identify 읽기 범위 안의 파라미터여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="263"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
         <source>identify.nameMatch is not a valid regular expression</source>
         <translation>identify.nameMatch가 올바른 정규식이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="287"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1: 알 수 없는 파라미터 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="303"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="315"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1은(는) 파라미터 이름, 이름 목록 또는 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="312"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="324"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1: &quot;%2&quot;에 비트 필드 &quot;%3&quot;이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="318"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="330"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1: %2은(는) &quot;%3&quot;에 쓸 수 있는 값이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="336"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="348"/>
         <source>decelerationKnobs need the &quot;selected&quot; role</source>
         <translation>decelerationKnobs에는 &quot;selected&quot; 역할이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="352"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
         <source>%1 needs &quot;selected&quot; and &quot;maxSeconds&quot;</source>
         <translation>%1에는 &quot;selected&quot;와 &quot;maxSeconds&quot;가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="355"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="367"/>
         <source>%1: &quot;selected&quot; %2 is not a value of the &quot;selected&quot; role, or repeated</source>
         <translation>%1: &quot;selected&quot; %2은(는) &quot;selected&quot; 역할의 값이 아니거나 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="360"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="372"/>
         <source>%1: &quot;maxSeconds&quot; must be more than 0 and at most 600</source>
         <translation>%1: &quot;maxSeconds&quot;는 0보다 크고 600 이하여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="392"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="404"/>
         <source>%1: &quot;light&quot; must be one of %2, each once</source>
         <translation>%1: &quot;light&quot;는 %2 중 하나여야 하며 각각 한 번만 쓸 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="395"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
         <source>%1: &quot;colour&quot; must be #rrggbb</source>
         <translation>%1: &quot;colour&quot;는 #rrggbb 형식이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="397"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="409"/>
         <source>%1: &quot;label&quot; and &quot;meaning&quot; must not be empty</source>
         <translation>%1: &quot;label&quot;과 &quot;meaning&quot;은 비어 있으면 안 됩니다</translation>
     </message>
@@ -440,7 +450,7 @@
         <translation> 외 %1개</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="26"/>
+        <location filename="../cli/TuneCommand.cpp" line="27"/>
         <source>not reached</source>
         <translation>도달하지 않음</translation>
     </message>
@@ -1065,124 +1075,150 @@ Remedy: %5</source>
         <translation>오토튜닝…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="27"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="28"/>
         <source>Accept</source>
         <translation>수락</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="28"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="29"/>
         <source>Reject</source>
         <translation>거부</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="29"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="30"/>
         <source>Store in the drive</source>
         <translation>드라이버에 저장</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="43"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="48"/>
         <source>Writes the proposed gains to the drive (temporary until stored) and offers a step test to compare with the prediction</source>
         <translation>제안된 게인을 드라이버에 쓰고(저장하기 전까지는 임시), 예측과 비교할 스텝 시험을 제안합니다</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="45"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="50"/>
         <source>Writes back the gains the drive had before</source>
         <translation>드라이버의 이전 게인을 다시 씁니다</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="46"/>
-        <source>Stores the gains in the drive so that they survive a power cycle</source>
-        <translation>전원 재투입 후에도 유지되도록 게인을 드라이버에 저장합니다</translation>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="51"/>
+        <source>Stores the gains in the drive so that they survive a power cycle; asks first unless the step after Accept passed the check</source>
+        <translation>전원 재투입 후에도 유지되도록 게인을 드라이버에 저장합니다. 수락 후 스텝이 확인을 통과하지 못했으면 먼저 묻습니다</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="51"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="57"/>
         <source>Operating speed:</source>
         <translation>운전 속도:</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="52"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="58"/>
         <source>Relay amplitude:</source>
         <translation>릴레이 진폭:</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="53"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="59"/>
         <source>%</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="54"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
         <source>Rule:</source>
         <translation>튜닝 규칙:</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="58"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="64"/>
         <source>Present</source>
         <translation>현재</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="59"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="65"/>
         <source>Proposed</source>
         <translation>제안</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="66"/>
         <source>P</source>
         <translation>P</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="66"/>
         <source>I</source>
         <translation>I</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="66"/>
         <source>D</source>
         <translation>D</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="66"/>
         <source>D period</source>
         <translation>D 주기</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="106"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="113"/>
         <source>Enter an operating speed above 0 %1.</source>
         <translation>0 %1보다 큰 운전 속도를 입력하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="110"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="117"/>
         <source>Enter a relay amplitude of 1–50 %.</source>
         <translation>릴레이 진폭을 1–50 %로 입력하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="123"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="130"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="183"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="138"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="145"/>
         <source>No autotune result yet.</source>
         <translation>아직 오토튜닝 결과가 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="146"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="153"/>
         <source>Autotune failed: %1</source>
         <translation>오토튜닝 실패: %1</translation>
     </message>
     <message>
         <location filename="../ui/tuning/AutotunePanel.cpp" line="155"/>
-        <source>Ku %1 %/%2, Tu %3 ms</source>
-        <translation>Ku %1 %/%2, Tu %3 ms</translation>
+        <source>What to change: %1</source>
+        <translation>바꿀 점: %1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="158"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="165"/>
+        <source>Relay: Ku %1 %/%2, Tu %3 ms measured, %4 readings per period (one every %5 ms)</source>
+        <translation>릴레이: Ku %1 %/%2, 측정된 Tu %3 ms, 주기당 읽기 %4회(%5 ms마다)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="175"/>
+        <source>The drive&apos;s own loop (model): Ku %1 %/%2, Tu %3 ms</source>
+        <translation>드라이버 자체 루프(모델): Ku %1 %/%2, Tu %3 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="180"/>
+        <source>Proposal: the rule&apos;s P × %1, Ti × %2; predicted overshoot %3 %, settling %4</source>
+        <translation>제안: 규칙의 P × %1, Ti × %2; 예측 오버슈트 %3 %, 정정 %4</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="184"/>
+        <source>not within the record</source>
+        <translation>기록 시간 안에 없음</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="208"/>
+        <source>Check after Accept: passed.</source>
+        <translation>수락 후 확인: 통과.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="209"/>
+        <source>Check after Accept: FAILED. Reject writes back the gains the drive had.</source>
+        <translation>수락 후 확인: 실패. 거부하면 드라이버의 이전 게인을 다시 씁니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="171"/>
         <source>Model: K %1 %2/%, τ %3 ms, dead time %4 ms</source>
         <translation>모델: K %1 %2/%, τ %3 ms, 무효 시간 %4 ms</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="163"/>
-        <source>No model: %1</source>
-        <translation>모델 없음: %1</translation>
     </message>
 </context>
 <context>
@@ -1214,8 +1250,8 @@ Remedy: %5</source>
     </message>
     <message>
         <location filename="../cli/BackupCommand.cpp" line="60"/>
-        <location filename="../cli/BackupCommand.cpp" line="220"/>
         <location filename="../cli/BackupCommand.cpp" line="226"/>
+        <location filename="../cli/BackupCommand.cpp" line="232"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
@@ -1225,63 +1261,68 @@ Remedy: %5</source>
         <translation>버스에서 드라이버를 스캔하는 중…</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="99"/>
+        <location filename="../cli/BackupCommand.cpp" line="84"/>
+        <source>warning: machine number %1 answered, but its identification failed: it is not backed up; name it to try again (backup %1 -o FILE).</source>
+        <translation>경고: 국번 %1이(가) 응답했지만 식별에 실패했습니다: 백업하지 않았습니다. 이 국번을 지정해 다시 시도하십시오(backup %1 -o FILE).</translation>
+    </message>
+    <message>
+        <location filename="../cli/BackupCommand.cpp" line="105"/>
         <source>error: the port %1 was lost while reading %2 (%3)</source>
         <translation>오류: %2을(를) 읽는 중 포트 %1이(가) 끊어졌습니다(%3)</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="102"/>
-        <location filename="../cli/BackupCommand.cpp" line="222"/>
+        <location filename="../cli/BackupCommand.cpp" line="108"/>
+        <location filename="../cli/BackupCommand.cpp" line="228"/>
         <source>nothing written to %1</source>
         <translation>%1에 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="110"/>
+        <location filename="../cli/BackupCommand.cpp" line="116"/>
         <source>error: give the file to write: backup ID... -o FILE</source>
         <translation>오류: 저장할 파일을 지정하십시오: backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="114"/>
+        <location filename="../cli/BackupCommand.cpp" line="120"/>
         <source>error: %1; nothing read</source>
         <translation>오류: %1; 아무것도 읽지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="126"/>
+        <location filename="../cli/BackupCommand.cpp" line="132"/>
         <source>interrupted: nothing written</source>
         <translation>중단됨: 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="130"/>
+        <location filename="../cli/BackupCommand.cpp" line="136"/>
         <source>error: no drive answers on %1; nothing written</source>
         <translation>오류: %1에서 응답하는 드라이버가 없습니다. 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="149"/>
+        <location filename="../cli/BackupCommand.cpp" line="155"/>
         <source>machine number %1</source>
         <translation>국번 %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="164"/>
+        <location filename="../cli/BackupCommand.cpp" line="170"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>국번 %1을(를) 읽는 중 중단됨: 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="172"/>
+        <location filename="../cli/BackupCommand.cpp" line="178"/>
         <source>%1: cannot read %2</source>
         <translation>%1: %2을(를) 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="174"/>
+        <location filename="../cli/BackupCommand.cpp" line="180"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1에 프로파일이 허용하지 않는 값이 있어 이 백업은 복원할 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="188"/>
+        <location filename="../cli/BackupCommand.cpp" line="194"/>
         <source>%1: %2 settings read in %3 requests, %4 ms</source>
         <translation>%1: 설정 %2개를 요청 %3회로 읽음, %4 ms</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="195"/>
+        <location filename="../cli/BackupCommand.cpp" line="201"/>
         <source>%1: reading failed, %2 of %3 settings read (%4 requests, %5 ms)</source>
         <translation>%1: 읽기 실패, 설정 %3개 중 %2개 읽음(요청 %4회, %5 ms)</translation>
     </message>
@@ -1297,150 +1338,150 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupDialog</name>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="27"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="28"/>
         <source>&amp;Cancel</source>
         <translation>취소(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="28"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="29"/>
         <source>&amp;Save the drives read</source>
         <translation>읽은 드라이버 저장(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="29"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="30"/>
         <source>C&amp;lose</source>
         <translation>닫기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="31"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="32"/>
         <source>Back up drives</source>
         <translation>드라이버 백업</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
         <source>Machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
         <source>Progress</source>
         <translation>진행</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
         <source>Result</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="40"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="41"/>
         <source>Save only the drives that were read; the others are left out</source>
         <translation>읽은 드라이버만 저장합니다. 나머지는 제외됩니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="42"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="43"/>
         <source>Stop after the drive being read</source>
         <translation>지금 읽고 있는 드라이버까지 읽고 멈춥니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="87"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="89"/>
         <source>Waiting</source>
         <translation>대기 중</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="91"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="93"/>
         <source>%v of %m drives</source>
         <translation>드라이버 %m대 중 %v대</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="92"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="94"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>드라이버 %n대의 설정을 읽는 중…</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="102"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="104"/>
         <source>Stopping after the drive being read…</source>
         <translation>지금 읽고 있는 드라이버까지 읽고 멈추는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="119"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="121"/>
         <source>Not read (cancelled)</source>
         <translation>읽지 않음(취소됨)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="129"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="131"/>
         <source>drive %1: not identified, nothing read</source>
         <translation>드라이버 %1: 식별되지 않아 아무것도 읽지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="130"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="132"/>
         <source>Not identified</source>
         <translation>식별 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="138"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="140"/>
         <source>Reading…</source>
         <translation>읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="150"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="152"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>설정 %n개 읽음, %1 ms</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="155"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="157"/>
         <source>%1: cannot read %2</source>
         <translation>%1: %2을(를) 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="157"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="159"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1에 프로파일이 허용하지 않는 값이 있어 이 백업은 복원할 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="162"/>
         <source>Value not allowed</source>
         <translation>허용되지 않는 값</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="162"/>
         <source>Read failed</source>
         <translation>읽기 실패</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="180"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="182"/>
         <source>Not read: drive(s) %1. Nothing has been saved yet.</source>
         <translation>읽지 못한 드라이버: %1. 아직 아무것도 저장하지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="186"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="188"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>읽은 드라이버 %n대를 저장하시겠습니까?</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="210"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="212"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>드라이버 %n대를 %1에 저장했습니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="216"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="218"/>
         <source>Left out (not read): drive(s) %1.</source>
         <translation>제외됨(읽지 못함): 드라이버 %1.</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="220"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="222"/>
         <source>Could not save %1: %2</source>
         <translation>%1을(를) 저장할 수 없습니다: %2</translation>
     </message>
@@ -1607,87 +1648,87 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupViewer</name>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="22"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="23"/>
         <source>Backup file</source>
         <translation>백업 파일</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
         <source>Label</source>
         <translation>표시 이름</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
         <source>Registers</source>
         <translation>레지스터</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="34"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>&amp;Open…</source>
         <translation>열기(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="36"/>
         <source>Open another backup file</source>
         <translation>다른 백업 파일을 엽니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="36"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="37"/>
         <source>C&amp;lose</source>
         <translation>닫기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="56"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="58"/>
         <source>%1: no such file</source>
         <translation>%1: 파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="62"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="64"/>
         <source>the file could not be read</source>
         <translation>파일을 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="63"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="65"/>
         <source>Backup file %1</source>
         <translation>백업 파일 %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="71"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="73"/>
         <source>Open backup file</source>
         <translation>백업 파일 열기</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="72"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="74"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 백업 (*.json);;모든 파일 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="94"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="96"/>
         <source>File: %1</source>
         <translation>파일: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="95"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="97"/>
         <source>Refused: %1</source>
         <translation>거부됨: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="110"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="112"/>
         <source>, %1 bit/s, parity %2, %3 stop bit(s)</source>
         <translation>, %1 bit/s, 패리티 %2, 스톱 비트 %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="112"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="114"/>
         <source>File: %1
 Written by %2 on %3 (UTC)
 Read from: %4
@@ -1698,17 +1739,17 @@ Drives: %5</source>
 드라이버: %5</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="121"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="123"/>
         <source>%1 %2, firmware %3</source>
         <translation>%1 %2, 펌웨어 %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="123"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="125"/>
         <source>(variant unknown)</source>
         <translation>(기종 알 수 없음)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupViewer.cpp" line="125"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="127"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>설정 %n개</numerusform>
@@ -1716,30 +1757,43 @@ Drives: %5</source>
     </message>
 </context>
 <context>
+    <name>opentop::BarHideButton</name>
+    <message>
+        <location filename="../ui/widgets/BarHideButton.cpp" line="9"/>
+        <source>Hide this bar</source>
+        <translation>이 표시줄을 숨깁니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/widgets/BarHideButton.cpp" line="10"/>
+        <source>Hide</source>
+        <translation>숨기기</translation>
+    </message>
+</context>
+<context>
     <name>opentop::BusDocks</name>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="26"/>
+        <location filename="../ui/main/BusDocks.cpp" line="27"/>
         <source>Traffic log</source>
         <translation>통신 로그</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="33"/>
+        <location filename="../ui/main/BusDocks.cpp" line="34"/>
         <source>Bus overview</source>
         <translation>버스 개요</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="34"/>
+        <location filename="../ui/main/BusDocks.cpp" line="35"/>
         <source>Trends</source>
         <translation>트렌드</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="35"/>
+        <location filename="../ui/main/BusDocks.cpp" line="36"/>
         <source>Communication groups</source>
         <translation>통신 그룹</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="38"/>
-        <location filename="../ui/main/BusDocks.cpp" line="70"/>
+        <location filename="../ui/main/BusDocks.cpp" line="39"/>
+        <location filename="../ui/main/BusDocks.cpp" line="77"/>
         <source>Not connected</source>
         <translation>연결 안 됨</translation>
     </message>
@@ -1796,94 +1850,110 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../ui/bus/BusListModel.cpp" line="75"/>
+        <source>Machine number: the drive&apos;s address on the bus (1–247)</source>
+        <translation>국번: 버스에서 드라이브의 주소 (1–247)</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="77"/>
         <source>The drive&apos;s MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, purple external interrupt, blue memory or communication error, grey no answer</source>
         <translation>드라이버의 MONITOR LED: 빨강 알람, 초록 준비, 주황 CW, 하늘색 CCW, 보라 외부 인터럽트, 파랑 메모리 또는 통신 오류, 회색 응답 없음</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="82"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="84"/>
         <source>LED</source>
         <translation>LED</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="84"/>
-        <source>Machine no.</source>
+        <location filename="../ui/bus/BusListModel.cpp" line="86"/>
+        <source>No.</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="86"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
         <source>Hex / switches</source>
         <translation>16진수 / 스위치</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="88"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
         <source>Family</source>
         <translation>제품군</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="90"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="92"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
         <source>Firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="94"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="97"/>
         <source>State</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="96"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="99"/>
         <source>Control priority</source>
         <translation>제어 우선순위</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="108"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="111"/>
         <source>Two drives may share machine number %1 (%2, %3): check the SW1/SW2 switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
         <translation>두 드라이버가 국번 %1을(를) 함께 쓰고 있을 수 있습니다(%2, %3): 라인의 모든 드라이버의 SW1/SW2 스위치를 확인하고, 드라이버마다 다른 국번을 준 뒤 전원을 재투입하십시오. 종단 저항 불량이나 A/B 선이 바뀐 경우에도 응답이 깨집니다.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="127"/>
         <location filename="../ui/bus/BusListModel.cpp" line="131"/>
+        <source>%1 at %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
         <location filename="../ui/bus/BusListModel.cpp" line="133"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="137"/>
         <location filename="../ui/bus/BusListModel.cpp" line="139"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="145"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="130"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="136"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 기종 알 수 없음</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="160"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="166"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>상태등 %1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="164"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="170"/>
         <source>The drive&apos;s manual: %1</source>
         <translation>드라이버 매뉴얼: %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="167"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="173"/>
         <source>Status light grey: not live — %1</source>
         <translation>상태등 회색: 실시간 아님 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="172"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="178"/>
+        <source>Requests to this drive go out at %1, its own line format, not the port&apos;s: the line is switched to it and back between transactions. Change it with Line format… in the context menu.</source>
+        <translation>이 드라이브로 가는 요청은 포트의 형식이 아니라 드라이브 자체의 통신 형식 %1(으)로 나갑니다. 라인은 트랜잭션 사이에 그 형식으로 전환되었다가 다시 돌아옵니다. 컨텍스트 메뉴의 「통신 형식…」에서 변경하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="185"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>드라이버가 기종을 알려주지 않습니다. 올바른 한계값으로 값을 검사하도록 컨텍스트 메뉴(기종)에서 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="181"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="194"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>드라이버가 I/O 단자로 운전 명령을 받고 있습니다. 버스를 통한 시운전에는 통신 우선이 필요합니다.</translation>
     </message>
@@ -1975,147 +2045,152 @@ Drives: %5</source>
 <context>
     <name>opentop::BusPanel</name>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="33"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="34"/>
         <source>&amp;Scan</source>
         <translation>스캔(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="36"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="37"/>
         <source>A&amp;dd drive…</source>
         <translation>드라이버 추가(&amp;D)…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="38"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="39"/>
         <source>Ca&amp;ncel</source>
         <translation>취소(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="47"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="48"/>
         <source>Ask every machine number of the range who answers</source>
         <translation>범위 안의 모든 국번에 응답 여부를 묻습니다</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="49"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="50"/>
         <source>&amp;from</source>
         <translation>시작(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="51"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="52"/>
         <source>&amp;to</source>
         <translation>끝(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="56"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="57"/>
         <source>Machine numbers 1–247 (the DBU&apos;s SW1/SW2 switches in hex)</source>
         <translation>국번 1–247 (DBU의 SW1/SW2 스위치는 16진수)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="73"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="74"/>
         <source>Identify one machine number and add it to the list</source>
         <translation>국번 하나를 식별하여 목록에 추가합니다</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="78"/>
-        <location filename="../ui/bus/BusPanel.cpp" line="194"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="79"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="193"/>
         <source>%v of %m</source>
         <translation>%m 중 %v</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="79"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="80"/>
         <source>Scan progress</source>
         <translation>스캔 진행</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="81"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="82"/>
         <source>Stop the scan after the request on the wire</source>
         <translation>전송 중인 요청이 끝나면 스캔을 멈춥니다</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="90"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="91"/>
         <source>Rescan at %1</source>
         <translation>%1(으)로 다시 스캔</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="124"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="118"/>
         <source>Drives on the bus</source>
         <translation>버스의 드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="185"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="179"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%m 중 %v (국번 %1)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="195"/>
-        <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
-        <translation>%3에서 국번 %1–%2 스캔 중, 국번당 %4 ms…</translation>
+        <location filename="../ui/bus/BusPanel.cpp" line="183"/>
+        <source>Machine number %1 answered, identification failed: retrying (%2 of %3)… Polling waits until the scan is over.</source>
+        <translation>국번 %1이(가) 응답했지만 식별에 실패했습니다: 재시도 중(%3회 중 %2회째)… 폴링은 스캔이 끝날 때까지 기다립니다.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="214"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="195"/>
+        <source>Scanning machine numbers %1–%2 on %3, %4 ms each… Polling waits until the scan is over.</source>
+        <translation>%3에서 국번 %1–%2 스캔 중, 국번당 %4 ms… 폴링은 스캔이 끝날 때까지 기다립니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="267"/>
+        <source>If one is on this bus, add it with Add drive and its line format.</source>
+        <translation>버스에 이런 드라이브가 있으면 「드라이브 추가」로 통신 형식과 함께 추가하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="272"/>
+        <source>Machine number %1 answered, but its identification failed, also when asked again: add it by hand with Add drive…, or check its line settings and scan again.</source>
+        <translation>국번 %1이(가) 응답했지만 다시 물어도 식별에 실패했습니다: [드라이버 추가…]로 직접 추가하거나, 통신 설정을 확인한 뒤 다시 스캔하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="215"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>전송 중인 요청이 끝나면 취소합니다…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="231"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="233"/>
         <source>Did not answer the last scan.</source>
         <translation>마지막 스캔에서 응답하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="237"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="239"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>국번 %1에서 스캔이 멈췄습니다: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="242"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="244"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>국번 %1–%2 스캔 후 취소됨(%4 중 %3): 드라이버 %n대 발견.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="250"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="252"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>국번 %1–%2에서 드라이버 %n대 발견(%3 s).</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="275"/>
-        <source>Add drive</source>
-        <translation>드라이버 추가</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="275"/>
-        <source>Machine number (1–247; the DBU shows it in hex on SW1/SW2):</source>
-        <translation>국번 (1–247; DBU에서는 SW1/SW2에 16진수로 표시):</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="285"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="293"/>
         <source>Asking machine number %1…</source>
         <translation>국번 %1에 묻는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="290"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="298"/>
         <source>Machine number %1: %2 added.</source>
         <translation>국번 %1: %2 추가됨.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="292"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="300"/>
         <source>Machine number %1: %2 %3</source>
         <translation>국번 %1: %2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="350"/>
+        <location filename="../ui/bus/VariantMenu.cpp" line="26"/>
         <source>&amp;Variant</source>
         <translation>기종(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="366"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="349"/>
         <source>&amp;Identify again</source>
         <translation>다시 식별(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="372"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="360"/>
         <source>&amp;Remove from list</source>
         <translation>목록에서 제거(&amp;R)</translation>
     </message>
@@ -2128,32 +2203,22 @@ Drives: %5</source>
         <translation>버스 스캔(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="28"/>
-        <source>Hide this bar</source>
-        <translation>이 표시줄을 숨깁니다</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="29"/>
-        <source>Hide</source>
-        <translation>숨기기</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="42"/>
         <source>Last time on %1: %2.</source>
         <translation>지난번 %1: %2.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="48"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="44"/>
         <source>&amp;Restore the drive last seen</source>
         <translation>지난번 드라이버 복원(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="49"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="45"/>
         <source>&amp;Restore the %1 drives last seen</source>
         <translation>지난번 드라이버 %1대 복원(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="50"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
         <source>Identify the drives at these machine numbers again, with the variants set last time</source>
         <translation>지난번에 설정한 기종으로 이 국번들의 드라이버를 다시 식별합니다</translation>
     </message>
@@ -2166,17 +2231,22 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="163"/>
+        <location filename="../model/bus/BusScanner.cpp" line="222"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
         <translation>응답이 두 번 깨짐(%1): 두 드라이버가 국번 %2을(를) 함께 쓰고 있을 가능성이 큽니다. SW1/SW2 스위치를 확인하십시오</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="168"/>
+        <location filename="../model/bus/BusScanner.cpp" line="227"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>응답은 있지만 일치하는 장치 프로파일이 없습니다(%1)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="207"/>
+        <location filename="../model/bus/BusScanner.cpp" line="245"/>
+        <source>answered, but its identification read got no reply (%1), also when asked %2 more times: add it by hand, or scan with a longer wait</source>
+        <translation>응답은 있지만 식별 읽기에 응답이 없습니다(%1). %2번 더 물어도 마찬가지입니다: 직접 추가하거나 대기 시간을 늘려 다시 스캔하십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/BusScanner.cpp" line="311"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>처음에 늦게 응답했습니다(%1 ms 대기 후). 대기 시간을 늘리면 이 버스의 스캔이 안정됩니다</translation>
     </message>
@@ -2535,49 +2605,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../cli/CliContext.cpp" line="75"/>
-        <location filename="../cli/CliContext.cpp" line="89"/>
-        <location filename="../cli/CliContext.cpp" line="97"/>
+        <location filename="../cli/CliContext.cpp" line="90"/>
+        <location filename="../cli/CliContext.cpp" line="104"/>
+        <location filename="../cli/CliContext.cpp" line="112"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="102"/>
+        <location filename="../cli/CliContext.cpp" line="117"/>
         <source>serial line: %1</source>
         <translation>시리얼 라인: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="126"/>
+        <location filename="../cli/CliContext.cpp" line="141"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="189"/>
+        <location filename="../cli/CliContext.cpp" line="204"/>
         <source>machine number %1: no connection</source>
         <translation>국번 %1: 연결 없음</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="194"/>
+        <location filename="../cli/CliContext.cpp" line="209"/>
         <source>machine number %1: %2%3</source>
         <translation>국번 %1: %2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="248"/>
+        <location filename="../cli/CliContext.cpp" line="264"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1: &quot;%2&quot;은(는) 국번 1–247이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="252"/>
+        <location filename="../cli/CliContext.cpp" line="268"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1: &quot;%2&quot;은(는) 드라이버 기종이 아닙니다. 다음 중 하나를 사용하십시오: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="270"/>
+        <location filename="../cli/CliContext.cpp" line="286"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot;은(는) 국번 1–247 또는 3-8 같은 범위가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="280"/>
+        <location filename="../cli/CliContext.cpp" line="296"/>
         <source>no machine number given</source>
         <translation>국번이 지정되지 않았습니다</translation>
     </message>
@@ -2603,6 +2673,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <location filename="../model/profile/CodeTable.cpp" line="15"/>
         <source>—</source>
         <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/CodeTable.cpp" line="24"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/CodeTable.cpp" line="29"/>
+        <source>What to do: %1</source>
+        <translation>조치: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::CommandReadBack</name>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="42"/>
+        <source>Read back after the command at %1:</source>
+        <translation>%1 명령 후 다시 읽은 값:</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="45"/>
+        <source>The motor is running.</source>
+        <translation>모터가 운전 중입니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="45"/>
+        <source>The motor is stopped.</source>
+        <translation>모터가 정지해 있습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="47"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="49"/>
+        <source>(not read: %1)</source>
+        <translation>(읽지 않음: %1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="56"/>
+        <source>The drives of its communication group, read after the command:</source>
+        <translation>명령 후 읽은 통신 그룹의 드라이버:</translation>
     </message>
 </context>
 <context>
@@ -2709,162 +2822,162 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareDialog</name>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="32"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="33"/>
         <source>&amp;Differences only</source>
         <translation>차이만 표시(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="36"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="37"/>
         <source>Co&amp;mpare</source>
         <translation>비교(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="38"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="39"/>
         <source>Compare settings</source>
         <translation>설정 비교</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="39"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="40"/>
         <source>Side A</source>
         <translation>A쪽</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="40"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="41"/>
         <source>Side B</source>
         <translation>B쪽</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
         <source>Setting</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="54"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="55"/>
         <source>Filter by setting or parameter name</source>
         <translation>설정 이름 또는 파라미터 이름으로 필터</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="56"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
         <source>Read the chosen sides and compare them (drives are read fresh)</source>
         <translation>선택한 양쪽을 읽어 비교합니다(드라이버는 새로 읽음)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="66"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="67"/>
         <source>C&amp;lose</source>
         <translation>닫기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="98"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="100"/>
         <source>%1 refused: %2</source>
         <translation>%1 거부됨: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="112"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="114"/>
         <source>Reading…</source>
         <translation>읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="137"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="139"/>
         <source>side A</source>
         <translation>A쪽</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="137"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="139"/>
         <source>side B</source>
         <translation>B쪽</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="141"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="143"/>
         <source>Factory defaults</source>
         <translation>공장 출하값</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="148"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="150"/>
         <source>Choose a backup file and a drive in it for %1.</source>
         <translation>%1에 사용할 백업 파일과 그 안의 드라이버를 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="152"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="154"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="162"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="164"/>
         <source>Choose an identified drive on the bus for %1.</source>
         <translation>%1에 사용할 버스의 식별된 드라이버를 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="170"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="172"/>
         <source>%1: cannot read %2</source>
         <translation>%1: %2을(를) 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="195"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="197"/>
         <source>Unknown family %1</source>
         <translation>알 수 없는 제품군 %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="215"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="217"/>
         <source>B: %1</source>
         <translation>B: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="218"/>
         <source>factory defaults (%1)</source>
         <translation>공장 출하값 (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="226"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="228"/>
         <source>(no documented default)</source>
         <translation>(문서화된 기본값 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
         <location filename="../ui/files/CompareDialog.cpp" line="229"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="231"/>
         <source>(not held)</source>
         <translation>(포함 안 됨)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/CompareDialog.cpp" line="245"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="247"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>차이 %n건</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="246"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="248"/>
         <source> in %1 settings compared</source>
         <translation> (설정 %1개 비교)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="249"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="251"/>
         <source>Note: %1</source>
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="256"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="258"/>
         <source>No factory default documented (never counted as a difference): %1</source>
         <translation>문서화된 공장 출하값 없음(차이로 세지 않음): %1</translation>
     </message>
@@ -2953,173 +3066,173 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::ConnectionDialog</name>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="62"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="63"/>
         <source>Connect to a bus</source>
         <translation>버스에 연결</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="68"/>
         <source>&amp;Serial port</source>
         <translation>시리얼 포트(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="68"/>
         <source>Modbus &amp;TCP gateway</source>
         <translation>Modbus TCP 게이트웨이(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="68"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="69"/>
         <source>Si&amp;mulated bus</source>
         <translation>시뮬레이션 버스(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="84"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="85"/>
         <source>&amp;Advanced</source>
         <translation>고급(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="107"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="108"/>
         <source>&amp;Connect</source>
         <translation>연결(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="128"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="129"/>
         <source>&amp;Refresh</source>
         <translation>새로 고침(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="129"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="130"/>
         <source>List the serial ports again (after plugging in an adapter)</source>
         <translation>시리얼 포트 목록을 다시 불러옵니다(어댑터를 꽂은 후)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="134"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="135"/>
         <source>&amp;Port:</source>
         <translation>포트(&amp;P):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="143"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="144"/>
         <source>Custom</source>
         <translation>사용자 지정</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="145"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="146"/>
         <source>%1 (%2 %3%4%5)</source>
         <translation>%1 (%2 %3%4%5)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="152"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="153"/>
         <source>Fills in the factory line settings of a drive family</source>
         <translation>드라이버 제품군의 공장 출하 통신 설정을 채웁니다</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="155"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="156"/>
         <source>&amp;Family defaults:</source>
         <translation>제품군 기본값(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="159"/>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="289"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="160"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="293"/>
         <source>%1 bit/s</source>
         <translation>%1 bit/s</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="160"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="161"/>
         <source>&amp;Baud rate:</source>
         <translation>통신 속도(&amp;B):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="162"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
         <source>None (N)</source>
         <translation>없음 (N)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
         <source>Even (E)</source>
         <translation>짝수 (E)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="165"/>
         <source>Odd (O)</source>
         <translation>홀수 (O)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="165"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="166"/>
         <source>P&amp;arity:</source>
         <translation>패리티(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="167"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
         <source>1 bit</source>
         <translation>1 비트</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="169"/>
         <source>2 bits</source>
         <translation>2 비트</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="169"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="170"/>
         <source>S&amp;top bits:</source>
         <translation>스톱 비트(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="184"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="186"/>
         <source>e.g. 192.168.1.10</source>
         <translation>예: 192.168.1.10</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="185"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="187"/>
         <source>&amp;Host:</source>
         <translation>호스트(&amp;H):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="188"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="190"/>
         <source>Modbus TCP uses port 502</source>
         <translation>Modbus TCP는 포트 502를 사용합니다</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="189"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="191"/>
         <source>TCP p&amp;ort:</source>
         <translation>TCP 포트(&amp;O):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="201"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="203"/>
         <source>Device types and machine numbers: TYPE@NUMBER, comma separated. Types: %1</source>
         <translation>장치 유형과 국번: TYPE@NUMBER, 쉼표로 구분. 유형: %1</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="204"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="206"/>
         <source>&amp;Devices:</source>
         <translation>장치(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="218"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="220"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="219"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="221"/>
         <source>How long to wait for each reply</source>
         <translation>각 응답을 기다리는 시간</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="220"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="222"/>
         <source>Response &amp;timeout:</source>
         <translation>응답 타임아웃(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="223"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="225"/>
         <source>Extra attempts after a request got no valid reply</source>
         <translation>요청에 올바른 응답이 없을 때 추가로 시도하는 횟수</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="224"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="226"/>
         <source>R&amp;etries:</source>
         <translation>재시도(&amp;E):</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="326"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="333"/>
         <source>The device list is not valid.</source>
         <translation>장치 목록이 올바르지 않습니다.</translation>
     </message>
@@ -3282,114 +3395,134 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="85"/>
-        <location filename="../connection/ConnectionOptions.cpp" line="91"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="96"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="87"/>
+        <source>Drives that talk another line format than the port&apos;s, switched to between transactions: ID=[BAUD:]FORMAT,... e.g. 7=9600:8E1 or 7=8N2 (BAUD defaults to the port&apos;s). A DBU works only at 8N1; a DC controller at 8E1, 8O1 or 8N2.</source>
+        <translation>포트와 다른 통신 형식을 쓰는 드라이브. 트랜잭션 사이에 전환합니다: ID=[BAUD:]FORMAT,... 예: 7=9600:8E1 또는 7=8N2 (BAUD 기본값은 포트의 속도). DBU는 8N1만, DC 컨트롤러는 8E1, 8O1, 8N2를 씁니다.</translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="90"/>
+        <source>LIST</source>
+        <translation>LIST</translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="92"/>
         <source>Response timeout per attempt in ms, 10–10000 (default 200).</source>
         <translation>시도당 응답 타임아웃(ms), 10–10000 (기본값 200).</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="87"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="92"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="89"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="94"/>
         <source>Extra attempts after no reply or a garbled one, 0–10 (default 3; 2 more while the line is noisy).</source>
         <translation>응답이 없거나 깨졌을 때 추가 시도 횟수, 0–10 (기본값 3; 라인에 노이즈가 있으면 2회 추가).</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="93"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="98"/>
         <source>Who switches the RS-485 direction (serial port only): off (default: the adapter itself, as USB–RS-485 adapters do), kernel (the driver&apos;s RS-485 mode), rts (RTS from the program) or auto (kernel where the driver has it, else rts).</source>
         <translation>RS-485 송수신 방향을 누가 전환하는지 지정합니다(시리얼 포트 전용): off (기본값: USB–RS-485 어댑터처럼 어댑터가 직접 전환), kernel (시리얼 드라이버의 RS-485 모드), rts (프로그램이 RTS 제어) 또는 auto (시리얼 드라이버가 지원하면 kernel, 아니면 rts).</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="96"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="101"/>
         <source>MODE</source>
         <translation>MODE</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="98"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
         <source>RTS level while sending with --rs485 kernel, rts or auto: high (default) or low.</source>
         <translation>--rs485 kernel, rts 또는 auto 사용 시 송신 중 RTS 레벨: high (기본값) 또는 low.</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="99"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="104"/>
         <source>high|low</source>
         <translation>high|low</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="101"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="106"/>
         <source>RTS delay before and after sending in µs, 0–100000 (default 0: the driver&apos;s, or libmodbus&apos; one character time; the kernel rounds up to whole ms).</source>
         <translation>송신 전후의 RTS 지연(µs), 0–100000 (기본값 0: 시리얼 드라이버의 지연 또는 libmodbus의 1문자 시간; 커널은 ms 단위로 올림합니다).</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="108"/>
         <source>US</source>
         <translation>US</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="105"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="110"/>
         <source>Ask the serial driver to pass received bytes on at once (USB adapters otherwise hold them up to 16 ms): on (default) or off.</source>
         <translation>시리얼 드라이버가 수신한 바이트를 즉시 넘기도록 요청합니다(그렇지 않으면 USB 어댑터가 최대 16 ms 동안 보류): on (기본값) 또는 off.</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="107"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="112"/>
         <source>on|off</source>
         <translation>on|off</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="151"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="157"/>
         <source>give only one of --port, --tcp and --sim</source>
         <translation>--port, --tcp, --sim 중 하나만 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="153"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="159"/>
         <source>no bus given: use --port PATH, --tcp HOST:PORT or --sim SPEC</source>
         <translation>버스가 지정되지 않았습니다: --port PATH, --tcp HOST:PORT 또는 --sim SPEC을 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="162"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="168"/>
         <source>--family %1: unknown family; use one of %2</source>
         <translation>--family %1: 알 수 없는 제품군입니다. 다음 중 하나를 사용하십시오: %2</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="181"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="187"/>
         <source>--tcp: &quot;%1&quot; is not HOST:PORT</source>
         <translation>--tcp: &quot;%1&quot;은(는) HOST:PORT 형식이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="190"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="196"/>
         <source>--sim: %1</source>
         <translation>--sim: %1</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="203"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="209"/>
         <source>--baud %1: use a baud rate 1200–115200 (e.g. 9600, 19200, 38400)</source>
         <translation>--baud %1: 통신 속도는 1200–115200을 사용하십시오(예: 9600, 19200, 38400)</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="207"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="213"/>
         <source>--stop-bits %1: use 1 or 2</source>
         <translation>--stop-bits %1: 1 또는 2를 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="209"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="215"/>
         <source>--timeout %1: use a response timeout of 10–10000 ms</source>
         <translation>--timeout %1: 응답 타임아웃은 10–10000 ms를 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="212"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="218"/>
         <source>--retries %1: use 0–10 extra attempts</source>
         <translation>--retries %1: 추가 시도는 0–10회를 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="217"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="223"/>
         <source>--parity %1: use N (none), E (even) or O (odd)</source>
         <translation>--parity %1: N(없음), E(짝수) 또는 O(홀수)를 사용하십시오</translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="229"/>
+        <source>--drive-format applies to a serial port (--port) or a simulated bus, not to a Modbus TCP gateway (--tcp): the gateway sets its line itself</source>
+        <translation>--drive-format는 시리얼 포트(--port)나 시뮬레이션 버스에 적용되며 Modbus TCP 게이트웨이(--tcp)에는 적용되지 않습니다. 게이트웨이는 라인을 스스로 설정합니다</translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="236"/>
+        <source>--drive-format: %1</source>
+        <translation>--drive-format: %1</translation>
     </message>
 </context>
 <context>
@@ -3942,6 +4075,11 @@ Configuration changes written but not stored are discarded.</source>
         <source>unknown device</source>
         <translation>알 수 없는 장치</translation>
     </message>
+    <message>
+        <location filename="../model/session/DeviceInfo.cpp" line="39"/>
+        <source>answered, identification failed</source>
+        <translation>응답 있음, 식별 실패</translation>
+    </message>
 </context>
 <context>
     <name>opentop::DeviceMonitor</name>
@@ -3989,73 +4127,190 @@ Configuration changes written but not stored are discarded.</source>
         <translation>%1은(는) 설정이 아니라 명령입니다. 명령은 요청할 때 하나씩 보냅니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="227"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="239"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="250"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="262"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/session/DeviceParameters.cpp" line="273"/>
+        <source>%n write(s) failed: %1</source>
+        <translation>
+            <numerusform>쓰기 %n건 실패: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/session/DeviceParameters.cpp" line="276"/>
+        <source>Written, but not verified on every drive it reached: %1</source>
+        <translation>쓰기는 했지만, 받은 모든 드라이버에서 확인되지는 않았습니다: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/session/DeviceParameters.cpp" line="279"/>
+        <source>%n value(s) written and verified</source>
+        <translation>
+            <numerusform>값 %n개 쓰기 및 검증 완료</numerusform>
+        </translation>
     </message>
 </context>
 <context>
     <name>opentop::DeviceSession</name>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="92"/>
+        <location filename="../model/session/DeviceSession.cpp" line="82"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1에 파라미터 &quot;%2&quot;이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="101"/>
-        <location filename="../model/session/DeviceSession.cpp" line="165"/>
+        <location filename="../model/session/BlockReader.cpp" line="50"/>
+        <location filename="../model/session/DeviceSession.cpp" line="91"/>
         <source>%1 cannot be read (it is a write-only command)</source>
         <translation>%1은(는) 읽을 수 없습니다(쓰기 전용 명령)</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="236"/>
+        <location filename="../model/session/DeviceSession.cpp" line="139"/>
         <source>cannot check the value: reading %1 failed: %2</source>
         <translation>값을 검사할 수 없습니다: %1 읽기 실패: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="253"/>
+        <location filename="../model/session/DeviceSession.cpp" line="156"/>
         <source>%1 is read-only</source>
         <translation>%1은(는) 읽기 전용입니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="259"/>
+        <location filename="../model/session/DeviceSession.cpp" line="162"/>
         <source>%1 is a %2 command; it is only sent when explicitly requested</source>
         <translation>%1은(는) %2 명령입니다. 명시적으로 요청할 때만 보냅니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="289"/>
+        <location filename="../model/session/DeviceSession.cpp" line="192"/>
         <source>%1 cannot be checked: %2</source>
         <translation>%1을(를) 검사할 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="311"/>
+        <location filename="../model/session/DeviceSession.cpp" line="227"/>
         <source>reading %1 failed: %2</source>
         <translation>%1 읽기 실패: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="339"/>
+        <location filename="../model/session/BlockWriter.cpp" line="28"/>
         <source>not written: %1 is written together with 0x%2–0x%3, and reading those first failed: %4</source>
         <translation>쓰지 않음: %1은(는) 0x%2–0x%3과(와) 함께 쓰는데, 이 레지스터를 먼저 읽지 못했습니다: %4</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="344"/>
+        <location filename="../model/session/BlockWriter.cpp" line="33"/>
         <source>short reply</source>
         <translation>응답이 너무 짧음</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="399"/>
+        <location filename="../model/session/DeviceSession.cpp" line="291"/>
         <source>written, but reading it back failed: %1</source>
         <translation>썼지만 다시 읽기에 실패했습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="408"/>
+        <location filename="../model/session/DeviceSession.cpp" line="300"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>검증 실패: %1을(를) 썼지만 장치 값은 %2입니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="444"/>
+        <location filename="../model/session/DeviceRefusal.cpp" line="67"/>
         <source>error code %1</source>
         <translation>오류 코드 %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::DriveFormatsField</name>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="28"/>
+        <source>none: every drive at the port&apos;s format</source>
+        <translation>없음: 모든 드라이브가 포트 형식</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="30"/>
+        <source>Drives set to another line format than the port&apos;s, e.g. 7=9600:8E1 or 7=8N2 (the baud rate may be left out): requests to them switch the line to their format and back between transactions. A DBU works only at 8N1; a DC controller at 8E1, 8O1 or 8N2. The bus list&apos;s context menu sets them too.</source>
+        <translation>포트와 다른 통신 형식으로 설정된 드라이브. 예: 7=9600:8E1 또는 7=8N2 (통신 속도는 생략 가능). 이 드라이브로 가는 요청은 트랜잭션 사이에 라인을 그 형식으로 전환했다가 되돌립니다. DBU는 8N1만, DC 컨트롤러는 8E1, 8O1, 8N2를 씁니다. 버스 목록의 컨텍스트 메뉴에서도 설정할 수 있습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="36"/>
+        <source>&amp;Mixed bus…</source>
+        <translation>혼합 버스(&amp;M)…</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="37"/>
+        <source>How a drive of another format joins this bus</source>
+        <translation>다른 형식의 드라이브를 이 버스에 넣는 방법</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="39"/>
+        <source>Drives of different line formats</source>
+        <translation>통신 형식이 다른 드라이브</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="47"/>
+        <source>Drive f&amp;ormats:</source>
+        <translation>드라이브 형식(&amp;O):</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="68"/>
+        <source>Drive formats: %1</source>
+        <translation>드라이브 형식: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="74"/>
+        <source>Every drive hears only frames sent in its own line format: a DBU works only at 8N1 (19200 bit/s from the factory), a DC controller at 8E1 (9600 bit/s from the factory), 8O1 or 8N2. OpenTOP can talk to drives of different formats on one port: give each drive that is not at the port&apos;s format its own (Drive formats here, or Line format… in the bus list&apos;s context menu); the port is switched between transactions. To put all drives at one format for good, change the drives:</source>
+        <translation>각 드라이브는 자신의 통신 형식으로 보낸 프레임만 받습니다. DBU는 8N1만(공장 출하 19200 bit/s), DC 컨트롤러는 8E1(공장 출하 9600 bit/s), 8O1, 8N2를 씁니다. OpenTOP은 한 포트에서 형식이 다른 드라이브와 통신할 수 있습니다. 포트 형식이 아닌 드라이브마다 자체 형식을 지정하십시오(여기의 「드라이브 형식」 또는 버스 목록 컨텍스트 메뉴의 「통신 형식…」). 포트는 트랜잭션 사이에 전환됩니다. 모든 드라이브를 계속 한 형식으로 쓰려면 드라이브 설정을 바꾸십시오:</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::DriveLineDialog</name>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="28"/>
+        <source>Line format of machine number %1</source>
+        <translation>국번 %1의 통신 형식</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="28"/>
+        <source>Add drive</source>
+        <translation>드라이브 추가</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="36"/>
+        <source>&amp;Machine number:</source>
+        <translation>국번(&amp;M):</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="44"/>
+        <source>The port&apos;s (%1)</source>
+        <translation>포트 형식 (%1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="56"/>
+        <source>The baud rate and format the drive is set to: requests to it switch the port to it and back between transactions. Type another as 38400 8E1.</source>
+        <translation>드라이브에 설정된 통신 속도와 형식. 이 드라이브로 가는 요청은 트랜잭션 사이에 포트를 그 형식으로 전환했다가 되돌립니다. 다른 형식은 38400 8E1처럼 입력하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="59"/>
+        <source>&amp;Line format:</source>
+        <translation>통신 형식(&amp;L):</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="67"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="140"/>
+        <source>Line &amp;format…</source>
+        <translation>통신 형식(&amp;F)…</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="145"/>
+        <source>Machine number %1 talks %2, not the port&apos;s %3</source>
+        <translation>국번 %1은(는) 포트의 %3이(가) 아니라 %2(으)로 통신합니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="148"/>
+        <source>Machine number %1 talks the port&apos;s %2</source>
+        <translation>국번 %1은(는) 포트의 %2(으)로 통신합니다</translation>
     </message>
 </context>
 <context>
@@ -4094,116 +4349,117 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveStatusPoller</name>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="31"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="32"/>
         <source>not polled yet</source>
         <translation>아직 폴링 안 함</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="33"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="34"/>
         <source>online</source>
         <translation>온라인</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="35"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="36"/>
         <source>no answer (%n poll(s) in a row)</source>
         <translation>
             <numerusform>응답 없음(연속 %n회 폴링)</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="37"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="38"/>
         <source>communication error (%n in a row)</source>
         <translation>
             <numerusform>통신 오류(연속 %n회)</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="43"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="44"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="56"/>
         <source>Status not known yet</source>
         <translation>상태 아직 알 수 없음</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="45"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="46"/>
         <source>No answer: %1</source>
         <translation>응답 없음: %1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="48"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="59"/>
         <source>Alarm %1 %2</source>
         <translation>알람 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="50"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="61"/>
         <source>Alarm %1h (not in the alarm table)</source>
         <translation>알람 %1h (알람 표에 없음)</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="52"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="63"/>
         <source>Alarm active</source>
         <translation>알람 발생 중</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="55"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="49"/>
         <source>Communication error: %1</source>
         <translation>통신 오류: %1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="58"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="67"/>
         <source>Running</source>
         <translation>운전 중</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="59"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="68"/>
         <source>Running CCW</source>
         <translation>CCW 운전 중</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="60"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="69"/>
         <source>Running CW</source>
         <translation>CW 운전 중</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="62"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="71"/>
         <source>Stopped, no alarm</source>
         <translation>정지, 알람 없음</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="69"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="78"/>
         <source>grey</source>
         <translation>회색</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="71"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="80"/>
         <source>green</source>
         <translation>초록</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="73"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="82"/>
         <source>orange</source>
         <translation>주황</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="75"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="84"/>
         <source>sky blue</source>
         <translation>하늘색</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="77"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="86"/>
         <source>red</source>
         <translation>빨강</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="79"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="88"/>
         <source>purple</source>
         <translation>보라</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="81"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="90"/>
         <source>blue</source>
         <translation>파랑</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="118"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="127"/>
         <source>%1; %2</source>
         <translation>%1; %2</translation>
     </message>
@@ -4212,7 +4468,7 @@ Configuration changes written but not stored are discarded.</source>
     <name>opentop::DriveWorkspace</name>
     <message>
         <location filename="../ui/workspace/DriveWorkspace.cpp" line="33"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="133"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="135"/>
         <source>Write &amp;all pending</source>
         <translation>쓰기 대기 모두 쓰기(&amp;A)</translation>
     </message>
@@ -4237,63 +4493,49 @@ Configuration changes written but not stored are discarded.</source>
         <translation>설정할 드라이버를 버스 목록에서 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="132"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="134"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>쓰기 대기 모두 쓰기(&amp;A) (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="154"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="156"/>
         <source>Reading the drive…</source>
         <translation>드라이버를 읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="156"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="158"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>값 %n개를 읽을 수 없습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="168"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="170"/>
         <source>Nothing was written: %1</source>
         <translation>아무것도 쓰지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="181"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="183"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1: %2 아무것도 쓰지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="189"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="191"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>쓰기 대기 값 %n개를 국번 %1에 쓰기</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="191"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="193"/>
         <source>Nothing was written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="194"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="196"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>값 %n개 쓰는 중…</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="196"/>
-        <source>%n write(s) failed; see the marked fields</source>
-        <translation>
-            <numerusform>쓰기 %n건 실패. 표시된 항목을 확인하십시오</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="197"/>
-        <source>%n value(s) written and verified</source>
-        <translation>
-            <numerusform>값 %n개 쓰기 및 검증 완료</numerusform>
         </translation>
     </message>
 </context>
@@ -5781,27 +6023,32 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::ExitActions</name>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="34"/>
+        <location filename="../model/run/ExitActions.cpp" line="50"/>
+        <source>Machine number %1: left in communication priority, as it was not confirmed stopped</source>
+        <translation>국번 %1: 정지가 확인되지 않아 통신 우선으로 남겨 두었습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitActions.cpp" line="75"/>
         <source>The stop broadcast to the %1 drives failed: %2</source>
         <translation>드라이버 %1대에 보낸 정지 브로드캐스트가 실패했습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="38"/>
+        <location filename="../model/run/ExitActions.cpp" line="81"/>
         <source>Machine number %1: STILL RUNNING (%2) %3</source>
         <translation>국번 %1: 아직 운전 중 (%2) %3</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="43"/>
+        <location filename="../model/run/ExitActions.cpp" line="86"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped %2</source>
         <translation>국번 %1: 응답 없음, 정지 확인 안 됨 %2</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="68"/>
+        <location filename="../model/run/ExitActions.cpp" line="111"/>
         <source>Machine number %1: no way to give control back to its inputs is known</source>
         <translation>국번 %1: 입력 단자로 제어를 되돌리는 방법을 알 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="80"/>
+        <location filename="../model/run/ExitActions.cpp" line="123"/>
         <source>Machine number %1: %2</source>
         <translation>국번 %1: %2</translation>
     </message>
@@ -5822,104 +6069,168 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::ExitGuard</name>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="44"/>
-        <source>Drives left in communication priority</source>
-        <translation>통신 우선으로 남아 있는 드라이버</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="44"/>
-        <source>Drives are running</source>
-        <translation>운전 중인 드라이버가 있습니다</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="46"/>
-        <source>Before you %1: these drives are left in communication priority.</source>
-        <translation>%1하기 전에: 다음 드라이버가 통신 우선으로 남아 있습니다.</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="47"/>
-        <source>Before you %1: these drives are running or left in communication priority.</source>
-        <translation>%1하기 전에: 다음 드라이버가 운전 중이거나 통신 우선으로 남아 있습니다.</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="51"/>
-        <source>In communication priority a drive takes run and stop only from the bus: once OpenTOP lets go, only another bus master or switching its power off stops it.</source>
-        <translation>통신 우선에서는 드라이버가 버스로만 운전·정지 명령을 받습니다: OpenTOP이 연결을 놓으면 다른 버스 마스터나 전원 차단으로만 정지할 수 있습니다.</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="55"/>
-        <source>&quot;Stop&quot; broadcasts every family&apos;s stop command to the whole bus and checks that each drive above has stopped.</source>
-        <translation>&quot;정지&quot;는 모든 제품군의 정지 명령을 버스 전체에 브로드캐스트하고 위의 각 드라이버가 정지했는지 확인합니다.</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="59"/>
-        <source>&quot;Give control back&quot; sets I/O priority, so the machine&apos;s own inputs run the drives again.</source>
-        <translation>&quot;제어 반환&quot;은 I/O 우선으로 설정하여 설비 자체의 입력 단자로 드라이버를 다시 운전하게 합니다.</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="63"/>
-        <source>Stop the drives</source>
-        <translation>드라이버 정지</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="67"/>
-        <source>Give control back (I/O priority)</source>
-        <translation>제어 반환 (I/O 우선)</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="69"/>
-        <source>Leave them so</source>
-        <translation>그대로 두기</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="69"/>
-        <source>Leave them running</source>
-        <translation>운전 상태로 두기</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="71"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="96"/>
         <source>Cancel</source>
         <translation>취소</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="88"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="131"/>
+        <source>Stopping the drives, then giving control back to their inputs…</source>
+        <translation>드라이버를 정지한 뒤 입력 단자로 제어를 되돌리는 중…</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/ExitGuard.cpp" line="132"/>
         <source>Stopping the drives…</source>
         <translation>드라이버를 정지하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="88"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="129"/>
         <source>Giving control back to the drives&apos; inputs…</source>
         <translation>드라이버 입력 단자로 제어를 되돌리는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="97"/>
-        <source>stop</source>
-        <translation>정지</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="97"/>
-        <source>give control back</source>
-        <translation>제어 반환</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="113"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="156"/>
         <source>Not every drive is safe</source>
         <translation>안전하지 않은 드라이버가 있습니다</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="114"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="157"/>
         <source>Could not %1 every drive:</source>
         <translation>모든 드라이버의 %1에 성공하지 못했습니다:</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="116"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="159"/>
         <source>Stay connected</source>
         <translation>연결 유지</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="117"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="160"/>
         <source>Go on anyway</source>
         <translation>그래도 계속</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ExitPlan</name>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="55"/>
+        <source>Stop and give control back</source>
+        <translation>정지 후 제어 반환</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="56"/>
+        <source>Stop the drives</source>
+        <translation>드라이버 정지</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="56"/>
+        <source>Give control back (I/O priority)</source>
+        <translation>제어 반환 (I/O 우선)</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="58"/>
+        <source>Give control back only</source>
+        <translation>제어 반환만</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="60"/>
+        <source>Leave them running</source>
+        <translation>운전 상태로 두기</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="60"/>
+        <source>Leave them so</source>
+        <translation>그대로 두기</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="70"/>
+        <location filename="../model/run/ExitPlan.cpp" line="73"/>
+        <source>give control back to</source>
+        <translation>제어 반환</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="71"/>
+        <source>stop</source>
+        <translation>정지</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="71"/>
+        <source>stop and give control back to</source>
+        <translation>정지 및 제어 반환</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="82"/>
+        <source>Drives are running</source>
+        <translation>운전 중인 드라이버가 있습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="82"/>
+        <source>Drives left in communication priority</source>
+        <translation>통신 우선으로 남아 있는 드라이버</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="88"/>
+        <source>Before you %1: these drives are left in communication priority.</source>
+        <translation>%1하기 전에: 다음 드라이버가 통신 우선으로 남아 있습니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="89"/>
+        <source>Before you %1: these drives are running or left in communication priority.</source>
+        <translation>%1하기 전에: 다음 드라이버가 운전 중이거나 통신 우선으로 남아 있습니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="101"/>
+        <source>left as it is: it runs from its own inputs (I/O priority), which a stop over the bus does not override</source>
+        <translation>그대로 둠: 자체 입력 단자로 운전 중(I/O 우선)이며, 버스로 보낸 정지 명령으로는 바꿀 수 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="104"/>
+        <source>stopped (confirmed by reading it), then given back to its own inputs (I/O priority, read back)</source>
+        <translation>정지(읽어서 확인) 후 자체 입력 단자로 제어 반환(I/O 우선, 다시 읽기로 확인)</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="107"/>
+        <source>stopped (confirmed by reading it); its family has no I/O priority setting, so it stays under the bus&apos;s control</source>
+        <translation>정지(읽어서 확인). 이 제품군에는 I/O 우선 설정이 없으므로 계속 버스로 제어됩니다</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="110"/>
+        <source>stopped (confirmed by reading it)</source>
+        <translation>정지(읽어서 확인)</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="112"/>
+        <source>given back to its own inputs (I/O priority, read back)</source>
+        <translation>자체 입력 단자로 제어 반환(I/O 우선, 다시 읽기로 확인)</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="114"/>
+        <source>left as it is: no way to give control back to its inputs is known</source>
+        <translation>그대로 둠: 입력 단자로 제어를 되돌리는 방법을 알 수 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="115"/>
+        <source>   → %1</source>
+        <translation>   → %1</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="122"/>
+        <source>In communication priority a drive takes run and stop only from the bus: once OpenTOP lets go, only another bus master or switching its power off stops it.</source>
+        <translation>통신 우선에서는 드라이버가 버스로만 운전·정지 명령을 받습니다: OpenTOP이 연결을 놓으면 다른 버스 마스터나 전원 차단으로만 정지할 수 있습니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="126"/>
+        <source>Stopping broadcasts every family&apos;s stop command to the whole bus and checks that each drive above has stopped; a drive that has not stopped is not given back to its inputs.</source>
+        <translation>정지는 모든 제품군의 정지 명령을 버스 전체에 브로드캐스트하고 위의 각 드라이버가 정지했는지 확인합니다. 정지하지 않은 드라이버는 입력 단자로 제어를 되돌리지 않습니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="131"/>
+        <source>&quot;Give control back only&quot; sets I/O priority without a stop: the machine&apos;s own inputs decide at once whether the drives run.</source>
+        <translation>&quot;제어 반환만&quot;은 정지하지 않고 I/O 우선으로 설정합니다: 드라이버의 운전 여부는 즉시 설비 자체의 입력 단자가 정합니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="135"/>
+        <source>&quot;Give control back&quot; sets I/O priority, so the machine&apos;s own inputs run the drives again.</source>
+        <translation>&quot;제어 반환&quot;은 I/O 우선으로 설정하여 설비 자체의 입력 단자로 드라이버를 다시 운전하게 합니다.</translation>
     </message>
 </context>
 <context>
@@ -6076,6 +6387,24 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
     </message>
 </context>
 <context>
+    <name>opentop::GainDesign</name>
+    <message>
+        <location filename="../model/tuning/GainDesign.cpp" line="21"/>
+        <source>the model has no ultimate point</source>
+        <translation>모델에 한계점이 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/GainDesign.cpp" line="55"/>
+        <source>no gains from the %1 rule settle within %2 ms with at most %3 % overshoot on the motor&apos;s model, even with P at a tenth of the rule&apos;s</source>
+        <translation>P를 규칙 값의 1/10까지 낮춰도 모터 모델에서 %1 규칙의 게인이 오버슈트 %3 % 이하로 %2 ms 안에 정정되지 않습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/GainDesign.cpp" line="60"/>
+        <source>Try a rule that allows more overshoot or a smaller step (a lower operating speed), or raise the drive&apos;s current limit if the motor allows it.</source>
+        <translation>오버슈트를 더 허용하는 규칙이나 더 작은 스텝(더 낮은 운전 속도)을 시도하거나, 모터가 허용하면 드라이버의 전류 한계값을 올리십시오.</translation>
+    </message>
+</context>
+<context>
     <name>opentop::GetCommand</name>
     <message>
         <location filename="../cli/GetCommand.cpp" line="43"/>
@@ -6214,65 +6543,163 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::GroupCheck</name>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="56"/>
-        <location filename="../cli/GroupCheck.cpp" line="95"/>
+        <location filename="../cli/GroupCheck.cpp" line="62"/>
+        <location filename="../cli/GroupCheck.cpp" line="106"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="66"/>
+        <location filename="../cli/GroupCheck.cpp" line="72"/>
         <source>note: the other drives on the bus are not known, so drives in communication group %1 (which also execute what is sent to %1) were not looked for; name them with --bus-drives LIST or OPENTOP_BUS_DRIVES</source>
         <translation>참고: 버스의 다른 드라이버를 알 수 없어 통신 그룹 %1의 드라이버(%1(으)로 보낸 내용도 실행함)를 찾지 않았습니다. --bus-drives LIST 또는 OPENTOP_BUS_DRIVES로 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="87"/>
+        <location filename="../cli/GroupCheck.cpp" line="93"/>
         <source>warning: the communication group of %1 could not be read</source>
         <translation>경고: %1의 통신 그룹을 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="95"/>
+        <location filename="../cli/GroupCheck.cpp" line="106"/>
         <source>note: %1</source>
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="98"/>
+        <location filename="../cli/GroupCheck.cpp" line="109"/>
         <source>add --yes to send it to all of %1 and %2; nothing was sent</source>
         <translation>%1과(와) %2 모두에 보내려면 --yes를 추가하십시오. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="128"/>
+        <location filename="../cli/GroupCheck.cpp" line="144"/>
         <source>not readable</source>
         <translation>읽을 수 없음</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="139"/>
+        <location filename="../cli/GroupCheck.cpp" line="168"/>
         <source>Read back from the drives of the group:</source>
         <translation>그룹 드라이버에서 다시 읽은 값:</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="143"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <source>Result</source>
+        <translation>결과</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="172"/>
         <source>(not read: %1)</source>
         <translation>(읽지 않음: %1)</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="188"/>
+        <location filename="../cli/GroupCheck.cpp" line="173"/>
+        <source>verified</source>
+        <translation>확인됨</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="174"/>
+        <source>DIFFERS from what was written</source>
+        <translation>쓴 값과 다름</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="175"/>
+        <source>not verified</source>
+        <translation>확인 안 됨</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="223"/>
         <source>off</source>
         <translation>사용 안 함</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::GroupFollowers</name>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="76"/>
+        <source>could not be read</source>
+        <translation>읽을 수 없음</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="106"/>
+        <source>its control priority could not be read</source>
+        <translation>제어 우선순위를 읽을 수 없었습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="108"/>
+        <source>it is in %1: it takes run commands only from its input terminals and ignores them over the bus</source>
+        <translation>%1 상태입니다: 운전 명령은 입력 단자에서만 받고 통신으로 온 명령은 무시합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="112"/>
+        <source>an alarm is active: it runs only once the alarm is cleared</source>
+        <translation>알람이 발생해 있습니다: 알람이 해제되어야 운전합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="126"/>
+        <source>error code %1h</source>
+        <translation>오류 코드 %1h</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="146"/>
+        <source>Machine number %1 follows it.</source>
+        <translation>국번 %1은(는) 따릅니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="147"/>
+        <source>Machine number %1 follows it (%2).</source>
+        <translation>국번 %1은(는) 따릅니다(%2).</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="149"/>
+        <source>Machine number %1: not known whether it follows: %2.</source>
+        <translation>국번 %1: 따를지 알 수 없습니다: %2.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="153"/>
+        <source>Machine number %1 does NOT follow it: %2. To run it with this drive, set its control priority to communication priority; otherwise it shows E2h &quot;Cannot execute command&quot;.</source>
+        <translation>국번 %1은(는) 따르지 않습니다: %2. 이 드라이버와 함께 운전하려면 제어 우선순위를 통신 우선으로 설정하십시오. 그렇지 않으면 E2h &quot;명령 실행 불가&quot;를 표시합니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="168"/>
+        <source>Machine number %1: its run state could not be read.</source>
+        <translation>국번 %1: 운전 상태를 읽을 수 없었습니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="170"/>
+        <source>Machine number %1 runs.</source>
+        <translation>국번 %1 운전 중.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="171"/>
+        <source>Machine number %1 runs (%2).</source>
+        <translation>국번 %1 운전 중(%2).</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="173"/>
+        <source>Machine number %1 does not run: %2.</source>
+        <translation>국번 %1은(는) 운전하지 않습니다: %2.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="175"/>
+        <source>Machine number %1 does not run.</source>
+        <translation>국번 %1은(는) 운전하지 않습니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="177"/>
+        <source>It shows %1</source>
+        <translation>표시: %1</translation>
     </message>
 </context>
 <context>
@@ -6811,6 +7238,137 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
     </message>
 </context>
 <context>
+    <name>opentop::LineFormat</name>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="37"/>
+        <source>Baud rate %1 is not supported: use 1200–115200.</source>
+        <translation>통신 속도 %1은(는) 지원되지 않습니다. 1200–115200을 쓰십시오.</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="39"/>
+        <source>Parity &apos;%1&apos; is not supported: use N (none), E (even) or O (odd).</source>
+        <translation>패리티 &apos;%1&apos;은(는) 지원되지 않습니다. N(없음), E(짝수), O(홀수)를 쓰십시오.</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="42"/>
+        <source>%1 data bits are not supported: use 7 or 8.</source>
+        <translation>데이터 비트 %1개는 지원되지 않습니다. 7 또는 8을 쓰십시오.</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="44"/>
+        <source>%1 stop bits are not supported: use 1 or 2.</source>
+        <translation>스톱 비트 %1개는 지원되지 않습니다. 1 또는 2를 쓰십시오.</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="66"/>
+        <source>&quot;%1&quot; is not a line format: write DATA BITS, PARITY and STOP BITS as 8N1, 8E1, 8O1 or 8N2, with the baud rate before it if it differs from the port&apos;s (9600:8E1)</source>
+        <translation>&quot;%1&quot;은(는) 통신 형식이 아닙니다. 데이터 비트, 패리티, 스톱 비트를 8N1, 8E1, 8O1, 8N2처럼 쓰고, 통신 속도가 포트와 다르면 앞에 쓰십시오(9600:8E1)</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="81"/>
+        <source>&quot;%1&quot;: %2</source>
+        <translation>&quot;%1&quot;: %2</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="98"/>
+        <source>&quot;%1&quot;: write MACHINE NUMBER=FORMAT, e.g. 7=9600:8E1 or 7=8N2 (machine numbers 1–247)</source>
+        <translation>&quot;%1&quot;: 국번=형식으로 쓰십시오. 예: 7=9600:8E1 또는 7=8N2 (국번 1–247)</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="107"/>
+        <source>machine number %1: %2</source>
+        <translation>국번 %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::LineFormatHint</name>
+    <message>
+        <location filename="../model/bus/LineFormatHint.cpp" line="72"/>
+        <source>%1: %2 from the factory (it can be set to %3).</source>
+        <translation>%1: 공장 출하 시 %2 (%3(으)로 설정 가능).</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/LineFormatHint.cpp" line="77"/>
+        <source>Drives set to another line format than %1 do not answer it. %2</source>
+        <translation>%1이(가) 아닌 통신 형식으로 설정된 드라이브는 응답하지 않습니다. %2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::LinkLoss</name>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="31"/>
+        <source>Machine number %1 (%2): state never read</source>
+        <translation>국번 %1 (%2): 상태를 한 번도 읽지 못했습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="46"/>
+        <source>The connection to %1 was lost at %2.</source>
+        <translation>%1 연결이 %2에 끊겼습니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="54"/>
+        <source>• %1 — last answer %2 (%3 when the link dropped)</source>
+        <translation>• %1 — 마지막 응답 %2 (연결이 끊겼을 때 %3)</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="61"/>
+        <source>By the last values read, no drive was running or in communication priority.</source>
+        <translation>마지막으로 읽은 값으로는 운전 중이거나 통신 우선인 드라이버가 없었습니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="62"/>
+        <source>When the link dropped, by the last values read:</source>
+        <translation>연결이 끊겼을 때, 마지막으로 읽은 값으로는:</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="70"/>
+        <source>OpenTOP cannot stop these drives or give control back to their inputs until the link is back: nothing is sent over a lost link. A drive in communication priority keeps its last command. Check on the machine: each drive&apos;s own STOP input, the emergency stop, and the drives&apos; power.</source>
+        <translation>연결이 복구될 때까지 OpenTOP은 이 드라이버들을 정지하거나 입력 단자로 제어를 되돌릴 수 없습니다: 끊긴 연결로는 아무것도 보내지 않습니다. 통신 우선인 드라이버는 마지막 명령을 유지합니다. 설비에서 확인하십시오: 각 드라이버 자체의 정지 입력 단자, 비상 정지, 드라이버 전원.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="78"/>
+        <source>Before you %1: the connection to %2 was lost at %3, and OpenTOP cannot reach these drives.</source>
+        <translation>%1하기 전에: %2 연결이 %3에 끊겨 OpenTOP이 이 드라이버들에 접근할 수 없습니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="96"/>
+        <source>Running when it dropped, by the last values read: machine number %1.</source>
+        <translation>끊겼을 때 마지막으로 읽은 값으로 운전 중: 국번 %1.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="99"/>
+        <source>In communication priority: machine number %1.</source>
+        <translation>통신 우선: 국번 %1.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/run/LinkLoss.cpp" line="102"/>
+        <source>%n drive(s) never read.</source>
+        <translation>
+            <numerusform>한 번도 읽지 못한 드라이버 %n대.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="104"/>
+        <source>OpenTOP cannot stop them until the link is back: check each drive&apos;s STOP input, the emergency stop and the power on the machine.</source>
+        <translation>연결이 복구될 때까지 OpenTOP은 이들을 정지할 수 없습니다: 설비에서 각 드라이버의 정지 입력 단자, 비상 정지, 전원을 확인하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="118"/>
+        <source>Machine number %1 (%2): no answer, its state is not known</source>
+        <translation>국번 %1 (%2): 응답 없음, 상태를 알 수 없음</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="126"/>
+        <source>Every drive read again: none is running or in communication priority.</source>
+        <translation>모든 드라이버를 다시 읽었습니다: 운전 중이거나 통신 우선인 드라이버가 없습니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="127"/>
+        <source>Read again just now:</source>
+        <translation>방금 다시 읽음:</translation>
+    </message>
+</context>
+<context>
     <name>opentop::MainMenus</name>
     <message>
         <location filename="../ui/main/MainMenus.cpp" line="35"/>
@@ -6833,122 +7391,122 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>시리얼 포트, 게이트웨이 또는 시뮬레이션 버스를 선택합니다(Ctrl+K)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="43"/>
+        <location filename="../ui/main/MainMenus.cpp" line="45"/>
         <source>&amp;Scan bus</source>
         <translation>버스 스캔(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="49"/>
+        <location filename="../ui/main/MainMenus.cpp" line="51"/>
         <source>&amp;Disconnect</source>
         <translation>연결 해제(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="53"/>
+        <location filename="../ui/main/MainMenus.cpp" line="55"/>
         <source>Communication &amp;groups…</source>
         <translation>통신 그룹(&amp;G)…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="57"/>
+        <location filename="../ui/main/MainMenus.cpp" line="59"/>
         <source>&amp;Export alarm histories…</source>
         <translation>알람 이력 내보내기(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="59"/>
+        <location filename="../ui/main/MainMenus.cpp" line="61"/>
         <source>&amp;Quit</source>
         <translation>종료(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="62"/>
+        <location filename="../ui/main/MainMenus.cpp" line="64"/>
         <source>&amp;Files</source>
         <translation>파일(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="67"/>
+        <location filename="../ui/main/MainMenus.cpp" line="69"/>
         <source>&amp;Drive</source>
         <translation>드라이버(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="70"/>
+        <location filename="../ui/main/MainMenus.cpp" line="72"/>
         <source>&amp;Write all pending</source>
         <translation>쓰기 대기 모두 쓰기(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="72"/>
+        <location filename="../ui/main/MainMenus.cpp" line="74"/>
         <source>&amp;Re-read all</source>
         <translation>모두 다시 읽기(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="74"/>
+        <location filename="../ui/main/MainMenus.cpp" line="76"/>
         <source>Write a setting to the selected drives…</source>
         <translation>선택한 드라이버에 설정 하나 쓰기…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="80"/>
+        <location filename="../ui/main/MainMenus.cpp" line="82"/>
         <source>&amp;Next page</source>
         <translation>다음 페이지(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="86"/>
+        <location filename="../ui/main/MainMenus.cpp" line="88"/>
         <source>&amp;Previous page</source>
         <translation>이전 페이지(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="100"/>
+        <location filename="../ui/main/MainMenus.cpp" line="104"/>
         <source>&amp;View</source>
         <translation>보기(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="106"/>
+        <location filename="../ui/main/MainMenus.cpp" line="110"/>
         <source>&amp;Traffic log</source>
         <translation>통신 로그(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="107"/>
+        <location filename="../ui/main/MainMenus.cpp" line="111"/>
         <source>Bus &amp;overview</source>
         <translation>버스 개요(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="109"/>
+        <location filename="../ui/main/MainMenus.cpp" line="113"/>
         <source>T&amp;rends</source>
         <translation>트렌드(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="110"/>
+        <location filename="../ui/main/MainMenus.cpp" line="114"/>
         <source>Communication &amp;groups</source>
         <translation>통신 그룹(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="124"/>
+        <location filename="../ui/main/MainMenus.cpp" line="128"/>
         <source>Language</source>
         <translation>언어</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="125"/>
+        <location filename="../ui/main/MainMenus.cpp" line="129"/>
         <source>OpenTOP will be in %1 the next time it starts.</source>
         <translation>OpenTOP은 다음에 시작할 때 %1(으)로 표시됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="131"/>
+        <location filename="../ui/main/MainMenus.cpp" line="135"/>
         <source>&amp;End of line</source>
         <translation>출하 검사(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="133"/>
+        <location filename="../ui/main/MainMenus.cpp" line="137"/>
         <source>&amp;Help</source>
         <translation>도움말(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="146"/>
+        <location filename="../ui/main/MainMenus.cpp" line="153"/>
         <source>connect elsewhere</source>
         <translation>다른 곳에 연결</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="156"/>
+        <location filename="../ui/main/MainMenus.cpp" line="163"/>
         <source>Export alarm histories</source>
         <translation>알람 이력 내보내기</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="157"/>
+        <location filename="../ui/main/MainMenus.cpp" line="164"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
@@ -6956,33 +7514,33 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="52"/>
+        <location filename="../ui/main/MainWindow.cpp" line="54"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="134"/>
+        <location filename="../ui/main/MainWindow.cpp" line="138"/>
         <source>connect elsewhere</source>
         <translation>다른 곳에 연결</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="157"/>
+        <location filename="../ui/main/MainWindow.cpp" line="161"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>%1에 연결하는 중… (%2에 아직 연결되어 있음)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="196"/>
+        <location filename="../ui/main/MainWindow.cpp" line="200"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>연결됨: %1 (새 연결 실패: %2)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="199"/>
-        <location filename="../ui/main/MainWindow.cpp" line="212"/>
+        <location filename="../ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="217"/>
         <source>Cannot connect</source>
         <translation>연결할 수 없음</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="200"/>
+        <location filename="../ui/main/MainWindow.cpp" line="204"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -6991,81 +7549,76 @@ Still connected to %2; nothing was changed.</source>
 %2에 아직 연결되어 있습니다. 아무것도 변경하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="203"/>
-        <location filename="../ui/main/MainWindow.cpp" line="324"/>
+        <location filename="../ui/main/MainWindow.cpp" line="207"/>
+        <location filename="../ui/main/MainWindow.cpp" line="330"/>
         <source>Not connected: %1</source>
         <translation>연결 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="261"/>
+        <location filename="../ui/main/MainWindow.cpp" line="269"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>통신 그룹: %1 (버스 › 통신 그룹)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="292"/>
-        <location filename="../ui/main/MainWindow.cpp" line="294"/>
+        <location filename="../ui/main/MainWindow.cpp" line="300"/>
+        <location filename="../ui/main/MainWindow.cpp" line="302"/>
         <source>Connection lost: %1</source>
         <translation>연결 끊김: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="295"/>
-        <source>Connection lost</source>
-        <translation>연결 끊김</translation>
-    </message>
-    <message>
-        <location filename="../ui/main/MainWindow.cpp" line="303"/>
+        <location filename="../ui/main/MainWindow.cpp" line="307"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 시뮬레이션 버스 (실제 하드웨어 없음) — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="304"/>
+        <location filename="../ui/main/MainWindow.cpp" line="308"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="305"/>
+        <location filename="../ui/main/MainWindow.cpp" line="309"/>
         <source>Connecting to %1…</source>
         <translation>%1에 연결하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="323"/>
+        <location filename="../ui/main/MainWindow.cpp" line="329"/>
         <source>Connected: %1</source>
         <translation>연결됨: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="330"/>
+        <location filename="../ui/main/MainWindow.cpp" line="336"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>연결됨: %1 (시뮬레이션, 실제 하드웨어 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="357"/>
+        <location filename="../ui/main/MainWindow.cpp" line="364"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>드라이버가 기종을 알려주지 않습니다. %1은(는) 설정된 기종입니다.</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="387"/>
-        <location filename="../ui/main/MainWindow.cpp" line="398"/>
+        <location filename="../ui/main/MainWindow.cpp" line="394"/>
+        <location filename="../ui/main/MainWindow.cpp" line="404"/>
         <source>disconnect</source>
         <translation>연결 해제</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="394"/>
+        <location filename="../ui/main/MainWindow.cpp" line="401"/>
         <source>Not connected (disconnected)</source>
         <translation>연결 안 됨(연결 해제함)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="405"/>
-        <location filename="../ui/main/MainWindow.cpp" line="430"/>
+        <location filename="../ui/main/MainWindow.cpp" line="417"/>
+        <location filename="../ui/main/MainWindow.cpp" line="442"/>
         <source>quit</source>
         <translation>종료</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="416"/>
+        <location filename="../ui/main/MainWindow.cpp" line="428"/>
         <source>Unwritten changes</source>
         <translation>쓰지 않은 변경 사항</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="417"/>
+        <location filename="../ui/main/MainWindow.cpp" line="429"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>드라이버에 쓰지 않은 편집이 %n개 있습니다. 버리고 종료하시겠습니까?</numerusform>
@@ -7210,37 +7763,37 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPage</name>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="175"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="177"/>
         <source>Live values</source>
         <translation>실시간 값</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="183"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="185"/>
         <source>Speed</source>
         <translation>속도</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="196"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="201"/>
         <source>State</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="261"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="266"/>
         <source>%1 %2 on the drive&apos;s display</source>
         <translation>드라이버 표시부에 %1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="270"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="275"/>
         <source>Alarm %1 %2 — %3</source>
         <translation>알람 %1 %2 — %3</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="273"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="278"/>
         <source>Alarm active (reading which one…)</source>
         <translation>알람 발생 중 (어떤 알람인지 읽는 중…)</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="328"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="333"/>
         <source>No live state: %1</source>
         <translation>실시간 상태 없음: %1</translation>
     </message>
@@ -7248,67 +7801,72 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPollBar</name>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="25"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="30"/>
         <source>Poll every</source>
         <translation>폴링 주기</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="27"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="32"/>
         <source>%1 ms (%2 Hz)</source>
         <translation>%1 ms (%2 Hz)</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="28"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="33"/>
         <source>How often every monitored drive is read. Commands you give always go first; the drives share what is left of the bus in turn.</source>
         <translation>모니터링하는 각 드라이버를 읽는 주기. 사용자가 내린 명령이 항상 먼저 처리되고, 남은 버스 시간을 드라이버들이 차례로 나눠 씁니다.</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="36"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="45"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="44"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="53"/>
         <source>Resume polling</source>
         <translation>폴링 재개</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="44"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="53"/>
         <source>Pause polling</source>
         <translation>폴링 일시 정지</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="58"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="67"/>
         <source>Polling paused: the values shown are the last ones read (%1).</source>
         <translation>폴링 일시 정지됨: 표시된 값은 마지막으로 읽은 값입니다(%1).</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="60"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="69"/>
+        <source>Polling waits for the bus scan: %1.</source>
+        <translation>폴링이 버스 스캔을 기다리는 중: %1.</translation>
+    </message>
+    <message>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="71"/>
         <source>Connection lost — not live: %1.</source>
         <translation>연결 끊김 — 실시간 아님: %1.</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="62"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="73"/>
         <source>Not live: %1.</source>
         <translation>실시간 아님: %1.</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="63"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="74"/>
         <source>The drive does not answer (%1) — not live: %2.</source>
         <translation>드라이버가 응답하지 않습니다(%1) — 실시간 아님: %2.</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="66"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="77"/>
         <source>Values %1 · %2 samples/s</source>
         <translation>값 %1 · 초당 샘플 %2개</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="70"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="81"/>
         <source>Not read yet.</source>
         <translation>아직 읽지 않음.</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="71"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="82"/>
         <source>Cannot read the drive: %1</source>
         <translation>드라이버를 읽을 수 없습니다: %1</translation>
     </message>
@@ -7385,7 +7943,7 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
     <name>opentop::MotorSpeedBox</name>
     <message>
         <location filename="../ui/monitor/MotorSpeedBox.cpp" line="23"/>
-        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="45"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="49"/>
         <source>Motor speed</source>
         <translation>모터 속도</translation>
     </message>
@@ -7405,12 +7963,12 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>1회전당 정류 횟수</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="75"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="79"/>
         <source>set the commutations per revolution</source>
         <translation>1회전당 정류 횟수를 설정하십시오</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="79"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="83"/>
         <source>%1 r/min</source>
         <translation>%1 r/min</translation>
     </message>
@@ -7503,89 +8061,99 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>드라이버 %1에서 허용되지 않음(%2): %3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="237"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="239"/>
+        <source>Not allowed on the communication group of drive %1: %2</source>
+        <translation>드라이버 %1의 통신 그룹에서 허용되지 않습니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="244"/>
         <source>None of the selected drives is identified.</source>
         <translation>선택한 드라이버 중 식별된 것이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="252"/>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="297"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="259"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="304"/>
         <source>Drive %1: %2</source>
         <translation>드라이버 %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="255"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="262"/>
         <source>Allowed on %1</source>
         <translation>%1에서 허용</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="263"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="270"/>
         <source>Warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="264"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="271"/>
         <source>Allowed on %1.</source>
         <translation>%1에서 허용.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="305"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="312"/>
         <source>Set it on %n drive(s) anyway?</source>
         <translation>
             <numerusform>그래도 드라이버 %n대에 설정하시겠습니까?</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="306"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="313"/>
         <source>&amp;Set it</source>
         <translation>설정(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="329"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="336"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>%1을(를) 국번 %2에 쓰기</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="331"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="338"/>
         <source>Nothing was written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="336"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="343"/>
         <source>waiting…</source>
         <translation>대기 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="338"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="345"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>%1을(를) 드라이버 %n대에 쓰는 중…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="350"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="357"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>드라이버 %n대 중 %1대에 쓰기 및 검증 완료.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="359"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="366"/>
         <source>writing…</source>
         <translation>쓰는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="372"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="383"/>
         <source>Written and verified</source>
         <translation>쓰기 및 검증 완료</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="373"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="385"/>
+        <source>Written, not verified: %1</source>
+        <translation>쓰기 완료, 확인 안 됨: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="386"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>쓰기 완료, 검증 안 됨(다시 읽을 수 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="374"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="387"/>
         <source>Failed: %1</source>
         <translation>실패: %1</translation>
     </message>
@@ -7737,27 +8305,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="184"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="199"/>
         <source>%1 (not valid now)</source>
         <translation>%1 (현재 무효)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="213"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="228"/>
         <source>not read</source>
         <translation>읽지 않음</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="222"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="237"/>
         <source>Allowed: %1</source>
         <translation>허용: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="225"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="240"/>
         <source>On the drive: %1</source>
         <translation>드라이버 값: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="256"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="274"/>
         <source>Not accepted: %1</source>
         <translation>받아들일 수 없음: %1</translation>
     </message>
@@ -8033,20 +8601,6 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>값 %n개 쓰는 중…</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="179"/>
-        <source>%n write(s) failed; see the marked fields</source>
-        <translation>
-            <numerusform>쓰기 %n건 실패. 표시된 항목을 확인하십시오</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="180"/>
-        <source>%n value(s) written and verified</source>
-        <translation>
-            <numerusform>값 %n개 쓰기 및 검증 완료</numerusform>
         </translation>
     </message>
 </context>
@@ -8761,32 +9315,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="417"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="429"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>오프셋 %1에서 올바른 JSON이 아닙니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="421"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="433"/>
         <source>the top level must be a JSON object</source>
         <translation>최상위는 JSON 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="432"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="444"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot;가 비어 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="443"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
         <source>must be an object</source>
         <translation>객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="445"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="457"/>
         <source>name repeated</source>
         <translation>이름이 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="461"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="473"/>
         <source>%1: cannot open: %2</source>
         <translation>%1: 열 수 없습니다: %2</translation>
     </message>
@@ -8865,39 +9419,137 @@ No unit can be tested until results can be recorded.</source>
     </message>
 </context>
 <context>
-    <name>opentop::Progress</name>
+    <name>opentop::ProposalFlow</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="75"/>
-        <source>scanning %1/%2 (%3 %), machine number %4, %5 found</source>
-        <translation>스캔 중 %1/%2 (%3 %), 국번 %4, %5대 발견</translation>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="57"/>
+        <source>Proposal rejected; the drive&apos;s gains were not changed.</source>
+        <translation>제안값을 거부했습니다. 드라이버의 게인은 바뀌지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="90"/>
-        <source>scan: %1 % (%2 of %3 machine numbers), %4 found</source>
-        <translation>스캔: %1 % (국번 %3개 중 %2개), %4대 발견</translation>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="60"/>
+        <source>Proposal rejected</source>
+        <translation>제안값 거부됨</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="71"/>
+        <source>The accepted gains failed the check: %1. Reject them, or store them only after looking at the step.</source>
+        <translation>수락한 게인이 확인을 통과하지 못했습니다: %1. 거부하거나, 스텝을 확인한 뒤에만 저장하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="85"/>
+        <source>no step test ran after Accept</source>
+        <translation>수락 후 스텝 시험을 실행하지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="87"/>
+        <source>Store gains that failed the check?</source>
+        <translation>확인을 통과하지 못한 게인을 저장하시겠습니까?</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="88"/>
+        <source>The gains accepted on %1 did not pass the check after Accept.</source>
+        <translation>%1에서 수락한 게인이 수락 후 확인을 통과하지 못했습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="90"/>
+        <source>Stored, they stay after a power cycle and the motor may oscillate or overshoot as measured. Reject writes back the gains the drive had.</source>
+        <translation>저장하면 전원을 다시 켜도 유지되며, 모터가 측정된 대로 진동하거나 오버슈트할 수 있습니다. 거부하면 드라이버의 이전 게인을 다시 씁니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="94"/>
+        <source>Reject the gains</source>
+        <translation>게인 거부</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="95"/>
+        <source>Store anyway</source>
+        <translation>그래도 저장</translation>
     </message>
 </context>
 <context>
     <name>opentop::PtySimServer</name>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="50"/>
+        <location filename="../sim/PtySimServer.cpp" line="52"/>
         <source>cannot open a pseudo-terminal: %1</source>
         <translation>가상 터미널을 열 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="67"/>
+        <location filename="../sim/PtySimServer.cpp" line="69"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1이(가) 이미 있고 심볼릭 링크가 아닙니다. 교체하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="73"/>
+        <location filename="../sim/PtySimServer.cpp" line="75"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>심볼릭 링크 %1 -&gt; %2을(를) 만들 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="115"/>
+        <location filename="../sim/PtySimServer.cpp" line="117"/>
         <source>the port is plugged in: %1</source>
         <translation>포트가 연결되었습니다: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ReachedDrives</name>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="47"/>
+        <source>%1, variant not known</source>
+        <translation>%1, 기종 모름</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="62"/>
+        <source>machine number %1 (%2) executes this write too (communication group %3), but has no such setting at 0x%4</source>
+        <translation>국번 %1(%2)도 이 쓰기를 실행하지만(통신 그룹 %3), 0x%4에 해당 설정이 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="86"/>
+        <source>machine number %1 (%2) executes this write too (communication group %3) and does not allow it: %4</source>
+        <translation>국번 %1(%2)도 이 쓰기를 실행하는데(통신 그룹 %3) 이 값을 허용하지 않습니다: %4</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="95"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="110"/>
+        <source>%1 cannot be checked: %2</source>
+        <translation>%1을(를) 확인할 수 없습니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="150"/>
+        <source>verification failed in communication group %1: %2</source>
+        <translation>통신 그룹 %1에서 확인 실패: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="209"/>
+        <source>reading %1 of machine number %2, which executes this write too, failed: %3</source>
+        <translation>이 쓰기를 함께 실행하는 국번 %2의 %1 읽기 실패: %3</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="245"/>
+        <source>machine number %1: not verified (the setting cannot be read there)</source>
+        <translation>국번 %1: 확인 안 됨(그 드라이버에서는 설정을 읽을 수 없음)</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="258"/>
+        <source>machine number %1: not verified, reading it back failed: %2</source>
+        <translation>국번 %1: 확인 안 됨, 다시 읽기 실패: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="260"/>
+        <source>the drive was removed</source>
+        <translation>드라이버가 제거되었습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="273"/>
+        <source>machine number %1 holds %2</source>
+        <translation>국번 %1의 값은 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="274"/>
+        <source>machine number %1 holds %2, not %3</source>
+        <translation>국번 %1의 값은 %3이(가) 아니라 %2</translation>
     </message>
 </context>
 <context>
@@ -9135,218 +9787,218 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="46"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="47"/>
         <source>Recipe editor</source>
         <translation>레시피 편집기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="66"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="402"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="67"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
         <source>Revision:</source>
         <translation>개정:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="68"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="69"/>
         <source>Product:</source>
         <translation>제품:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="69"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
         <source>Description:</source>
         <translation>설명:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="71"/>
         <source>Position:</source>
         <translation>위치:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="107"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
         <source>New from drives on the bus…</source>
         <translation>버스의 드라이버로 새로 만들기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>New from backup file…</source>
         <translation>백업 파일로 새로 만들기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>Open…</source>
         <translation>열기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="112"/>
         <source>Save</source>
         <translation>저장</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="113"/>
         <source>Save as…</source>
         <translation>다른 이름으로 저장…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="152"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="154"/>
         <source>%1: %2%3</source>
         <translation>%1: %2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="155"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="157"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="226"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="228"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>버스에 있는 기준 제품의 드라이버나 그 백업 파일로 레시피를 만들거나, 레시피를 여십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="230"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="232"/>
         <source>the recipe is empty</source>
         <translation>레시피가 비어 있습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="241"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="243"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="245"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="247"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>레시피가 검사를 통과했습니다: 저장하고 실행할 수 있습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="250"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>문제 %n건: 수정할 때까지 레시피를 저장할 수 없습니다.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="260"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="262"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>레시피가 검사를 통과하지 못했습니다(문제 %n건). 아무것도 저장하지 않았습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="276"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="278"/>
         <source>cannot read %1: %2</source>
         <translation>%1을(를) 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="288"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="290"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1은(는) OpenTOP 레시피 파일이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="297"/>
         <source>Opened %1</source>
         <translation>%1 열림</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="298"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>%1을(를) 열었지만 그대로는 불러올 수 없습니다(%2). 저장하면 검사 후 다시 서명합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="316"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="318"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>%1에서 새 레시피를 만들었습니다: 설정과 검사 단계의 한계값을 확인한 뒤 저장하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="328"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="330"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>국번 %1은(는) 버스에 알려진 드라이버가 아닙니다. 먼저 버스를 스캔하십시오</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="333"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>기준 제품의 설정을 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="333"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
         <source>Cancel</source>
         <translation>취소</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="348"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="350"/>
         <source>cancelled: no recipe was made</source>
         <translation>취소됨: 레시피를 만들지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="374"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="376"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="387"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="389"/>
         <source>Open recipe</source>
         <translation>레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="388"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="390"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>레시피 (*.json);;모든 파일 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="397"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="402"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="399"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
         <source>New recipe</source>
         <translation>새 레시피</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="397"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="399"/>
         <source>Product name:</source>
         <translation>제품 이름:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="410"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="412"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>기준 제품의 백업 파일</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="411"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="413"/>
         <source>Backups (*.json)</source>
         <translation>백업 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="423"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="425"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>버스에 드라이버가 없습니다: 먼저 연결하고 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="431"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="433"/>
         <source>New recipe from drives</source>
         <translation>드라이버로 새 레시피 만들기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="432"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="434"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>기준 제품 드라이버의 국번 (발견: %1):</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="442"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="444"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot;은(는) 국번(1–247)이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="451"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="453"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>버스의 드라이버로 새 레시피를 만들었습니다: 설정과 검사 단계의 한계값을 확인한 뒤 저장하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="462"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="464"/>
         <source>Save recipe</source>
         <translation>레시피 저장</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="464"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="466"/>
         <source>Recipes (*.json)</source>
         <translation>레시피 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="469"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="471"/>
         <source>Saved and signed: %1</source>
         <translation>저장 및 서명 완료: %1</translation>
     </message>
@@ -10155,21 +10807,129 @@ No unit can be tested until results can be recorded.</source>
     </message>
 </context>
 <context>
+    <name>opentop::Reconnection</name>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="30"/>
+        <source>&amp;Reconnect</source>
+        <translation>다시 연결(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="37"/>
+        <source>Open the last connection again, with the same drives and page (Ctrl+R)</source>
+        <translation>같은 드라이버와 페이지로 마지막 연결을 다시 엽니다 (Ctrl+R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="91"/>
+        <source>Reconnecting to %1…</source>
+        <translation>%1에 다시 연결하는 중…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="122"/>
+        <source>Reconnected to %1: reading every drive again…</source>
+        <translation>%1에 다시 연결했습니다: 모든 드라이버를 다시 읽는 중…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="175"/>
+        <source>Reconnected to %1.</source>
+        <translation>%1에 다시 연결했습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="199"/>
+        <source>Reconnecting failed: %1</source>
+        <translation>다시 연결 실패: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="217"/>
+        <location filename="../ui/main/Reconnection.cpp" line="259"/>
+        <source>Connection lost</source>
+        <translation>연결 끊김</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="223"/>
+        <location filename="../ui/main/Reconnection.cpp" line="262"/>
+        <source>Reconnect</source>
+        <translation>다시 연결</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="263"/>
+        <source>Go on anyway</source>
+        <translation>그래도 계속</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="264"/>
+        <source>Cancel</source>
+        <translation>취소</translation>
+    </message>
+</context>
+<context>
     <name>opentop::RelayAnalysis</name>
     <message>
-        <location filename="../model/tuning/RelayAnalysis.cpp" line="27"/>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="47"/>
         <source>no steady oscillation: %1 full cycles around %2, %3 needed</source>
         <translation>안정된 진동 없음: %2 부근에서 완전한 주기 %1회, %3회 필요</translation>
     </message>
     <message>
-        <location filename="../model/tuning/RelayAnalysis.cpp" line="59"/>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="51"/>
+        <source>Raise the relay amplitude, or choose an operating speed that leaves the output room on both sides.</source>
+        <translation>릴레이 진폭을 키우거나, 출력 위아래에 여유가 남는 운전 속도를 고르십시오.</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="86"/>
         <source>the oscillation (±%1) is no larger than the hysteresis (%2)</source>
         <translation>진동(±%1)이 히스테리시스(%2)보다 크지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/tuning/RelayAnalysis.cpp" line="65"/>
-        <source>the oscillation is not steady: periods or amplitudes differ by %1 %</source>
-        <translation>진동이 안정되지 않았습니다: 주기 또는 진폭이 %1 % 차이 납니다</translation>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="89"/>
+        <source>Raise the relay amplitude.</source>
+        <translation>릴레이 진폭을 키우십시오.</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="97"/>
+        <source>the oscillation&apos;s period, %1 ms, holds only %2 readings (one every %3 ms): at least %4 are needed, or its period and amplitude are the bus&apos;s rather than the motor&apos;s</source>
+        <translation>진동 주기 %1 ms 동안 읽기가 %2회뿐입니다(%3 ms마다): 최소 %4회가 필요하며, 그렇지 않으면 주기와 진폭은 모터가 아니라 버스의 것입니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="104"/>
+        <source>Raise the line rate (115200 bit/s if every drive on the bus allows it) or stop polling other drives on this bus during the test; a larger relay amplitude or another speed does not change this.</source>
+        <translation>통신 속도를 올리거나(버스의 모든 드라이버가 지원하면 115200 bit/s), 시험 중에는 이 버스의 다른 드라이버 폴링을 멈추십시오. 릴레이 진폭이나 속도를 바꿔도 달라지지 않습니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="110"/>
+        <source>the oscillation is not steady: periods differ by %1 %, amplitudes by %2 % (at most %3 % and %4 %)</source>
+        <translation>진동이 안정되지 않았습니다: 주기 차이 %1 %, 진폭 차이 %2 % (한계 %3 %, %4 %)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="116"/>
+        <source>Raise the relay amplitude so that the oscillation stands out of friction and load changes, keep the load steady during the test, and stop polling other drives on this bus meanwhile.</source>
+        <translation>진동이 마찰과 부하 변동에 묻히지 않도록 릴레이 진폭을 키우고, 시험 중에는 부하를 일정하게 유지하며, 그동안 이 버스의 다른 드라이버 폴링을 멈추십시오.</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="123"/>
+        <source>the oscillation is lopsided: its time above and below %1 differ by %2 % of the period (at most %3 %)</source>
+        <translation>진동이 한쪽으로 치우쳤습니다: %1 위와 아래에 있는 시간이 주기의 %2 % 차이 납니다(한계 %3 %)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="128"/>
+        <source>The output for the operating speed was misjudged or the load changed: keep the load steady, choose an operating speed further from standstill and from full output, and repeat the test.</source>
+        <translation>운전 속도에 필요한 출력을 잘못 추정했거나 부하가 바뀌었습니다. 부하를 일정하게 유지하고, 정지와 최대 출력 양쪽에서 먼 운전 속도를 골라 시험을 다시 하십시오.</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RelayTuning</name>
+    <message>
+        <location filename="../model/tuning/RelayTuning.cpp" line="28"/>
+        <source>Raise the relay amplitude.</source>
+        <translation>릴레이 진폭을 키우십시오.</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayTuning.cpp" line="49"/>
+        <source>the drive&apos;s own loop, as the model extrapolates it, would oscillate with a period of %1 ms, under %2 readings (one every %3 ms): the step after Accept could not show whether the gains work</source>
+        <translation>모델로 외삽한 드라이버 자체 루프는 주기 %1 ms로 진동하여 읽기 %2회(%3 ms마다)에 못 미칩니다: 수락 후 스텝으로 게인이 통하는지 보여 줄 수 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayTuning.cpp" line="55"/>
+        <source>Raise the line rate (115200 bit/s if every drive on the bus allows it) or stop polling other drives on this bus during the test.</source>
+        <translation>통신 속도를 올리거나(버스의 모든 드라이버가 지원하면 115200 bit/s), 시험 중에는 이 버스의 다른 드라이버 폴링을 멈추십시오.</translation>
     </message>
 </context>
 <context>
@@ -10342,201 +11102,201 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreDialog</name>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="35"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="36"/>
         <source>&amp;Preview</source>
         <translation>미리 보기(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="36"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
         <source>&amp;Write to drives…</source>
         <translation>드라이버에 쓰기(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
         <source>&amp;Cancel</source>
         <translation>취소(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="39"/>
         <source>&amp;Save report…</source>
         <translation>보고서 저장(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="40"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="41"/>
         <source>Restore from a backup file</source>
         <translation>백업 파일에서 복원</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="42"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="43"/>
         <source>No file chosen</source>
         <translation>선택한 파일 없음</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="43"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="44"/>
         <source>&amp;Choose file…</source>
         <translation>파일 선택(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="45"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="46"/>
         <source>File:</source>
         <translation>파일:</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="56"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="57"/>
         <source>Read the drives and show what would change; writes nothing</source>
         <translation>드라이버를 읽고 바뀔 내용을 표시합니다. 아무것도 쓰지 않습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="57"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
         <source>Write the previewed changes, each verified by reading it back</source>
         <translation>미리 본 변경 사항을 쓰고, 각각 다시 읽어 검증합니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
         <source>Stop after the write in progress has been verified</source>
         <translation>진행 중인 쓰기의 검증이 끝나면 멈춥니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
         <source>Save the report as text, or as CSV when the name ends in .csv</source>
         <translation>보고서를 텍스트로 저장합니다. 이름이 .csv로 끝나면 CSV로 저장합니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
         <source>C&amp;lose</source>
         <translation>닫기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="96"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="98"/>
         <source>%1: no such file</source>
         <translation>%1: 파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="101"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="103"/>
         <source>the file could not be read</source>
         <translation>파일을 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="102"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="186"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="104"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="188"/>
         <source>Refused, nothing will be written: %1</source>
         <translation>거부됨, 아무것도 쓰지 않습니다: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="107"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="109"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>파일에 드라이버 %n대가 있습니다. 복원할 항목을 선택한 뒤 미리 보기를 누르십시오.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="148"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="150"/>
         <source>Refused, nothing written:</source>
         <translation>거부됨, 아무것도 쓰지 않았습니다:</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="150"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="152"/>
         <source>Drive %1 from %2: %3</source>
         <translation>드라이버 %1 (%2에서): %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="185"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="187"/>
         <source>Choose a backup file first.</source>
         <translation>먼저 백업 파일을 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="227"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="229"/>
         <source>not attempted</source>
         <translation>시도 안 함</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="234"/>
         <source>Reading drive %1…</source>
         <translation>드라이버 %1 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="234"/>
         <source>Writing drive %1…</source>
         <translation>드라이버 %1 쓰는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="239"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="241"/>
         <source>drive %1: %2 (%v of %m)</source>
         <translation>드라이버 %1: %2 (%m 중 %v)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="267"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="269"/>
         <source>Stopping after the write in progress has been verified…</source>
         <translation>진행 중인 쓰기의 검증이 끝나면 멈추는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="282"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="373"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="378"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="284"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
         <source>Drive %1: %2</source>
         <translation>드라이버 %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="285"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="287"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>쓸 설정 %n개</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="292"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="294"/>
         <source>  Note: %1</source>
         <translation>  참고: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="295"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="297"/>
         <source>Nothing written yet. Write to drives to apply.</source>
         <translation>아직 아무것도 쓰지 않았습니다. 적용하려면 드라이버에 쓰기를 누르십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="296"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="298"/>
         <source>Nothing written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="354"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="356"/>
         <source>Restore from backup file</source>
         <translation>백업 파일에서 복원</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="355"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="357"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 백업 (*.json);;모든 파일 (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="381"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="383"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>설정 %n개를 드라이버 %1에 쓰고 각각 다시 읽어 검증하시겠습니까?</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="388"/>
         <source>Write to drives</source>
         <translation>드라이버에 쓰기</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="388"/>
         <source>&amp;Write</source>
         <translation>쓰기(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="391"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="393"/>
         <source>Save restore report</source>
         <translation>복원 보고서 저장</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="392"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="394"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>텍스트 (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="397"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="399"/>
         <source>Could not save %1: %2</source>
         <translation>%1을(를) 저장할 수 없습니다: %2</translation>
     </message>
@@ -10596,57 +11356,62 @@ No unit can be tested until results can be recorded.</source>
         <translation>변경 없음</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="272"/>
+        <location filename="../model/files/RestorePlan.cpp" line="273"/>
+        <source>written, not verified: %1</source>
+        <translation>쓰기 완료, 확인 안 됨: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/files/RestorePlan.cpp" line="274"/>
         <source>written</source>
         <translation>쓰기 완료</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="272"/>
+        <location filename="../model/files/RestorePlan.cpp" line="274"/>
         <source>written and verified</source>
         <translation>쓰기 및 검증 완료</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="274"/>
+        <location filename="../model/files/RestorePlan.cpp" line="276"/>
         <source>failed: %1</source>
         <translation>실패: %1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="276"/>
+        <location filename="../model/files/RestorePlan.cpp" line="278"/>
         <source>not attempted</source>
         <translation>시도 안 함</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="278"/>
+        <location filename="../model/files/RestorePlan.cpp" line="280"/>
         <source>not confirmed (%1): the drive may or may not hold it; run the restore again to read it back</source>
         <translation>확인 안 됨(%1): 드라이버에 값이 들어갔는지 알 수 없습니다. 복원을 다시 실행하여 다시 읽으십시오</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="303"/>
+        <location filename="../model/files/RestorePlan.cpp" line="305"/>
         <source>planned</source>
         <translation>계획됨</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="305"/>
+        <location filename="../model/files/RestorePlan.cpp" line="307"/>
         <source>restored</source>
         <translation>복원됨</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="307"/>
+        <location filename="../model/files/RestorePlan.cpp" line="309"/>
         <source>refused</source>
         <translation>거부됨</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="309"/>
+        <location filename="../model/files/RestorePlan.cpp" line="311"/>
         <source>communication failure</source>
         <translation>통신 실패</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="311"/>
+        <location filename="../model/files/RestorePlan.cpp" line="313"/>
         <source>verification mismatch</source>
         <translation>검증 불일치</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="313"/>
+        <location filename="../model/files/RestorePlan.cpp" line="315"/>
         <source>interrupted</source>
         <translation>중단됨</translation>
     </message>
@@ -10750,37 +11515,44 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Restorer</name>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="48"/>
+        <location filename="../model/files/Restorer.cpp" line="49"/>
         <source>interrupted before anything was written</source>
         <translation>아무것도 쓰기 전에 중단됨</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="63"/>
+        <location filename="../model/files/Restorer.cpp" line="64"/>
         <source>reading the drive failed, nothing written (%1)</source>
         <translation>드라이버 읽기 실패, 아무것도 쓰지 않음(%1)</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../model/files/Restorer.cpp" line="116"/>
+        <source>%n value(s) of the file may not be written to the drives of the communication group; nothing written</source>
+        <translation>
+            <numerusform>파일의 값 %n개는 통신 그룹의 드라이버에 쓸 수 없습니다. 아무것도 쓰지 않았습니다</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="99"/>
+        <location filename="../model/files/Restorer.cpp" line="144"/>
         <source>interrupted after %1 of %2 writes; run the restore again to complete it</source>
         <translation>쓰기 %2건 중 %1건 후 중단됨. 완료하려면 복원을 다시 실행하십시오</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="134"/>
+        <location filename="../model/files/Restorer.cpp" line="180"/>
         <source>%1 not confirmed (%2): the drive may or may not hold it; run the restore again, it reads the drive back first</source>
         <translation>%1 확인 안 됨(%2): 드라이버에 값이 들어갔는지 알 수 없습니다. 복원을 다시 실행하십시오. 먼저 드라이버를 다시 읽습니다</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="168"/>
+        <location filename="../model/files/Restorer.cpp" line="214"/>
         <source>after storing, the drive holds %1</source>
         <translation>저장 후 드라이버 값은 %1입니다</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="173"/>
+        <location filename="../model/files/Restorer.cpp" line="219"/>
         <source>the settings could not be read back after storing</source>
         <translation>저장 후 설정을 다시 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="206"/>
+        <location filename="../model/files/Restorer.cpp" line="252"/>
         <source>communication settings changed (%1): they take effect when the drive is next powered on; connect with the new settings after that</source>
         <translation>통신 설정이 변경되었습니다(%1): 다음에 드라이버 전원을 켤 때 적용됩니다. 그 후에는 새 설정으로 연결하십시오</translation>
     </message>
@@ -10892,251 +11664,251 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="62"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>End-of-line results</source>
         <translation>출하 검사 결과</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Started</source>
         <translation>시작</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Serial</source>
         <translation>시리얼</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Recipe</source>
         <translation>레시피</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Station</source>
         <translation>스테이션</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
         <source>Operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
         <source>Verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
         <source>Time (s)</source>
         <translation>시간 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="68"/>
         <source>First failure</source>
         <translation>첫 불합격 항목</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="84"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
         <source>Export CSV…</source>
         <translation>CSV 내보내기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="86"/>
         <source>Certificate PDF…</source>
         <translation>성적서 PDF…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="119"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="121"/>
         <source>SQLite file or postgresql://user@host/database</source>
         <translation>SQLite 파일 또는 postgresql://user@host/database</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="120"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="122"/>
         <source>Open</source>
         <translation>열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="121"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="123"/>
         <source>File…</source>
         <translation>파일…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="128"/>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="130"/>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="132"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
         <source>any</source>
         <translation>모두</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
         <source>Today</source>
         <translation>오늘</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="135"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
         <source>Last 24 hours</source>
         <translation>최근 24시간</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="138"/>
         <source>Last 7 days</source>
         <translation>최근 7일</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="139"/>
         <source>Last 30 days</source>
         <translation>최근 30일</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="138"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
         <source>All</source>
         <translation>전체</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="141"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="143"/>
         <source>Any</source>
         <translation>모두</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="145"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="147"/>
         <source>Search</source>
         <translation>검색</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="149"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
         <source>Serial:</source>
         <translation>시리얼:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="150"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
         <source>Recipe:</source>
         <translation>레시피:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="153"/>
         <source>Station:</source>
         <translation>스테이션:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="154"/>
         <source>Period:</source>
         <translation>기간:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="153"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="155"/>
         <source>Verdict:</source>
         <translation>판정:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="161"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="163"/>
         <source>Database:</source>
         <translation>데이터베이스:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="192"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="194"/>
         <source>There is no results database at %1 yet: a station makes it when it records its first unit.</source>
         <translation>%1에 아직 결과 데이터베이스가 없습니다: 스테이션이 첫 제품을 기록할 때 만들어집니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="198"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="200"/>
         <source>Opening the results database %1…</source>
         <translation>결과 데이터베이스 %1을(를) 여는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="210"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="212"/>
         <source>Results database %1</source>
         <translation>결과 데이터베이스 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="244"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="246"/>
         <source>Searching…</source>
         <translation>검색하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="256"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="350"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="258"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="352"/>
         <source>the results database is not open</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="291"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="293"/>
         <source>%1 rev. %2</source>
         <translation>%1 개정 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="295"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="297"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="322"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="317"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="319"/>
         <source>%n unit(s), %1 passed · first-pass yield %2 (%3 of %4 serials)</source>
         <translation>
             <numerusform>제품 %n대, 합격 %1 · 직행률 %2 (시리얼 %4개 중 %3개)</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="322"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="331"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="377"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="333"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="379"/>
         <source>no unit is selected</source>
         <translation>선택한 제품이 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="335"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="337"/>
         <source>Reading unit %1…</source>
         <translation>제품 %1을(를) 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="378"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="380"/>
         <source>the unit&apos;s record is still being read</source>
         <translation>제품 기록을 아직 읽는 중입니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="387"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="389"/>
         <source>Open results database</source>
         <translation>결과 데이터베이스 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="388"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="390"/>
         <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
         <translation>SQLite 데이터베이스 (*.db *.sqlite);;모든 파일 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="400"/>
         <source>Export units as CSV</source>
         <translation>제품을 CSV로 내보내기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="400"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="403"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="405"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>제품 %n대를 %1에 저장했습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="414"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="416"/>
         <source>Save certificate</source>
         <translation>성적서 저장</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="415"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="417"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF 파일 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="420"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="422"/>
         <source>Certificate written to %1</source>
         <translation>성적서를 %1에 저장했습니다</translation>
     </message>
@@ -11152,64 +11924,64 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RunCommand</name>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="48"/>
+        <location filename="../cli/RunCommand.cpp" line="49"/>
         <source>Test run: start, stop, direction, running data, hold/free, speed (needs --yes)</source>
         <translation>시운전: 기동, 정지, 방향, 운전 데이터, hold/free, 속도 (--yes 필요)</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="53"/>
+        <location filename="../cli/RunCommand.cpp" line="54"/>
         <source>Send the command (it moves or stops a motor).</source>
         <translation>명령을 보냅니다(모터를 움직이거나 정지시킴).</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="63"/>
+        <location filename="../cli/RunCommand.cpp" line="64"/>
         <source>error: usage: %1 (one machine number; a negative speed after --)</source>
         <translation>오류: 사용법: %1 (국번 하나; 음수 속도는 -- 뒤에)</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="71"/>
-        <location filename="../cli/RunCommand.cpp" line="76"/>
-        <location filename="../cli/RunCommand.cpp" line="81"/>
-        <location filename="../cli/RunCommand.cpp" line="126"/>
+        <location filename="../cli/RunCommand.cpp" line="72"/>
+        <location filename="../cli/RunCommand.cpp" line="77"/>
+        <location filename="../cli/RunCommand.cpp" line="82"/>
+        <location filename="../cli/RunCommand.cpp" line="144"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="86"/>
+        <location filename="../cli/RunCommand.cpp" line="87"/>
         <source>Would send to machine number %1: %2
 This moves or stops a motor: add --yes to send it.</source>
         <translation>국번 %1에 보낼 명령: %2
 모터를 움직이거나 정지시킵니다: 보내려면 --yes를 추가하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="118"/>
+        <location filename="../cli/RunCommand.cpp" line="108"/>
+        <source>note: %1</source>
+        <translation>참고: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/RunCommand.cpp" line="136"/>
         <source>Sent to machine number %1: %2</source>
         <translation>국번 %1에 보냄: %2</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="120"/>
+        <location filename="../cli/RunCommand.cpp" line="138"/>
         <source>Sent to machine number %1, executed also by %2 (communication group): %3</source>
         <translation>국번 %1에 보냄, %2에서도 실행됨(통신 그룹): %3</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="156"/>
+        <location filename="../cli/RunCommand.cpp" line="174"/>
         <source>(not read: %1)</source>
         <translation>(읽지 않음: %1)</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="165"/>
+        <location filename="../cli/RunCommand.cpp" line="183"/>
         <source>State of machine number %1:</source>
         <translation>국번 %1의 상태:</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="176"/>
-        <source>State of machine number %1 (communication group of %2): not read: %3</source>
-        <translation>국번 %1의 상태(%2의 통신 그룹): 읽지 않음: %3</translation>
-    </message>
-    <message>
-        <location filename="../cli/RunCommand.cpp" line="184"/>
-        <source>State of machine number %1 (communication group of %2):</source>
-        <translation>국번 %1의 상태(%2의 통신 그룹):</translation>
+        <location filename="../cli/RunCommand.cpp" line="199"/>
+        <source>Communication group of %1, read after the command:</source>
+        <translation>%1의 통신 그룹, 명령 후 읽음:</translation>
     </message>
 </context>
 <context>
@@ -11265,7 +12037,7 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>&quot;%1&quot;에서는 드라이버가 운전, 정지, 방향, 속도 선택을 입력 단자로 받고 버스를 통한 운전 명령은 거부합니다. 여기서 시운전하려면 &quot;%2&quot;(으)로 전환하십시오: opentop-cli set %3 %4=%5 (설비 자체 조작으로 다시 운전하려면 &quot;%1&quot;(=%6)(으)로 되돌리십시오).</translation>
     </message>
     <message>
-        <location filename="../model/run/RunControl.cpp" line="263"/>
+        <location filename="../model/run/RunControl.cpp" line="265"/>
         <source>An alarm is active: the drive refuses to run until it is cleared. See opentop-cli alarms %1, then alarms %1 --reset --yes.</source>
         <translation>알람이 발생 중입니다: 해제할 때까지 드라이버는 운전을 거부합니다. opentop-cli alarms %1을(를) 확인한 뒤 alarms %1 --reset --yes를 실행하십시오.</translation>
     </message>
@@ -11509,83 +12281,93 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="111"/>
+        <location filename="../cli/ScanCommand.cpp" line="64"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>버스의 드라이버를 찾아 식별합니다(국번 1–247)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="70"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>조회할 첫 국번, 1–247 (기본값 1).</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="117"/>
-        <location filename="../cli/ScanCommand.cpp" line="118"/>
+        <location filename="../cli/ScanCommand.cpp" line="70"/>
+        <location filename="../cli/ScanCommand.cpp" line="71"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="118"/>
+        <location filename="../cli/ScanCommand.cpp" line="71"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>조회할 마지막 국번, 1–247 (기본값 247).</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="120"/>
+        <location filename="../cli/ScanCommand.cpp" line="73"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>국번당 대기 시간(ms), 10–5000 (기본값: 통신 속도에서 산출; 느린 어댑터나 게이트웨이는 늘리십시오).</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="122"/>
+        <location filename="../cli/ScanCommand.cpp" line="75"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="135"/>
+        <location filename="../cli/ScanCommand.cpp" line="77"/>
+        <source>Also ask the machine numbers not found in every other line format a drive can be set to (a DC controller at 8E1 on a DBU bus at 8N1): one more pass per format, off by default.</source>
+        <translation>찾지 못한 국번을 드라이브가 설정될 수 있는 다른 모든 통신 형식으로도 묻습니다(8N1의 DBU 버스에 있는 8E1의 DC 컨트롤러). 형식마다 스캔이 한 번 더 필요하며 기본은 꺼져 있습니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="92"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>오류: --%1은(는) %2–%3의 숫자여야 합니다. &quot;%4&quot;은(는) 안 됩니다</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="147"/>
+        <location filename="../cli/ScanCommand.cpp" line="104"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>오류: scan은 인수를 받지 않습니다. --from N --to N을 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="156"/>
+        <location filename="../cli/ScanCommand.cpp" line="113"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>오류: --from %1이(가) --to %2보다 뒤입니다</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="174"/>
+        <location filename="../cli/ScanCommand.cpp" line="131"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>%3에서 국번 %1–%2 스캔 중, 국번당 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="211"/>
+        <location filename="../cli/ScanCommand.cpp" line="178"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>국번을 하나도 스캔하기 전에 중단되었습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="213"/>
+        <location filename="../cli/ScanCommand.cpp" line="180"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>중단됨: 국번 %1–%2을(를) 스캔했습니다(%4개 중 %3개). %5–%6은(는) 조회하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="227"/>
+        <location filename="../cli/ScanCommand.cpp" line="194"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>오류: 국번 %1에서 스캔이 멈췄습니다: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="237"/>
+        <location filename="../cli/ScanCommand.cpp" line="206"/>
         <source>warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="239"/>
+        <location filename="../cli/ScanCommand.cpp" line="208"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>참고: 드라이버 %1대가 %2 ms 대기 후에야 응답하여 다시 조회했습니다. 스캔에서 드라이버가 누락되면 --wait를 늘리십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="245"/>
+        <location filename="../cli/ScanCommand.cpp" line="217"/>
+        <source>warning: machine number %1 answered, but its identification failed, also when asked again %2 more times; it is not counted as a drive. Add it by hand: name it in a command (it is identified again then, within --timeout; raise it for a slow device), or check its line settings and scan again with a longer --wait.</source>
+        <translation>경고: 국번 %1이(가) 응답했지만 %2번 더 물어도 식별에 실패했습니다. 드라이버로 세지 않습니다. 직접 추가하십시오: 명령에 이 국번을 지정하면 --timeout 안에 다시 식별합니다(응답이 느린 장치는 늘리십시오). 또는 통신 설정을 확인한 뒤 더 긴 --wait로 다시 스캔하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="226"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -11596,94 +12378,145 @@ This moves or stops a motor: add --yes to send it.</source>
   - 종단 저항 (버스 양 끝에 120 Ω)과 드라이버 전원.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="258"/>
+        <location filename="../cli/ScanCommand.cpp" line="239"/>
         <source>hint: %1 Retry with the same connection and: %2</source>
         <translation>힌트: %1 같은 연결에 다음을 추가하여 다시 시도하십시오: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="271"/>
+        <location filename="../cli/ScanCommand.cpp" line="252"/>
         <source>Serial line: %1</source>
         <translation>시리얼 라인: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="274"/>
+        <location filename="../cli/ScanCommand.cpp" line="255"/>
         <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
         <translation>경고: %1 이 때문에 스캔 시 국번마다 최대 %2 ms를 더 기다립니다.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="303"/>
+        <location filename="../cli/ScanCommand.cpp" line="284"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 기종 알 수 없음</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="285"/>
         <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
         <translation>드라이버가 기종을 알려주지 않습니다. --variant %1=VARIANT로 지정하십시오(%2)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="320"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="320"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>hex</source>
         <translation>16진수</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="320"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>switches</source>
         <translation>스위치</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="320"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>family</source>
         <translation>제품군</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="321"/>
+        <location filename="../cli/ScanCommand.cpp" line="302"/>
         <source>model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="321"/>
+        <location filename="../cli/ScanCommand.cpp" line="302"/>
         <source>firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="321"/>
+        <location filename="../cli/ScanCommand.cpp" line="302"/>
         <source>state</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="327"/>
+        <location filename="../cli/ScanCommand.cpp" line="308"/>
         <source>comm. group</source>
         <translation>통신 그룹</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="395"/>
+        <location filename="../cli/ScanCommand.cpp" line="313"/>
+        <source>line format</source>
+        <translation>통신 형식</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="328"/>
+        <source>the port&apos;s</source>
+        <translation>포트 형식</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="387"/>
         <source>1 drive found in %1 s</source>
         <translation>드라이버 1대 발견(%1 s)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="396"/>
+        <location filename="../cli/ScanCommand.cpp" line="388"/>
         <source>%1 drives found in %2 s</source>
         <translation>드라이버 %1대 발견(%2 s)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="398"/>
+        <location filename="../cli/ScanCommand.cpp" line="390"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>; 중복 가능성이 있는 국번 1개: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="400"/>
+        <location filename="../cli/ScanCommand.cpp" line="392"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>; 중복 가능성이 있는 국번 %1개: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="411"/>
+        <location filename="../cli/ScanCommand.cpp" line="396"/>
+        <source>; answered, identification failed: %1 (add by hand)</source>
+        <translation>; 응답 있음, 식별 실패: %1(직접 추가)</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="406"/>
         <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>경고: 국번 %1(%2, %3)의 응답이 깨져 있습니다: 두 드라이버가 같은 국번을 쓰고 있을 가능성이 큽니다. 이 버스에 있는 드라이버의 SW1/SW2 스위치를 확인하고 드라이버마다 다른 국번을 준 뒤, 전원을 껐다 켜고 다시 스캔하십시오.</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ScanFormats</name>
+    <message>
+        <location filename="../cli/ScanFormats.cpp" line="44"/>
+        <source>Scanning machine numbers %1–%2 at %3 (--try-formats), %4 ms each…</source>
+        <translation>%3(으)로 국번 %1–%2 스캔 중(--try-formats), 각 %4 ms…</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanFormats.cpp" line="71"/>
+        <source>Machine number %1 answered at %2: it is asked at that format from now on (--drive-format %1=%3).</source>
+        <translation>국번 %1이(가) %2(으)로 응답했습니다. 이제부터 그 형식으로 묻습니다(--drive-format %1=%3).</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanFormats.cpp" line="99"/>
+        <source>hint: %1 If one is on this bus, give its machine number its format with --drive-format ID=BAUD:FORMAT (e.g. 7=9600:8E1), or scan with --try-formats: %2 more passes, %3 more requests, about %4 s more.</source>
+        <translation>힌트: %1 버스에 이런 드라이브가 있으면 --drive-format ID=BAUD:FORMAT(예: 7=9600:8E1)으로 그 국번의 형식을 지정하거나 --try-formats로 스캔하십시오: 스캔 %2회, 요청 %3개, 약 %4 s가 더 걸립니다.</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ScanProgress</name>
+    <message>
+        <location filename="../cli/ScanProgress.cpp" line="34"/>
+        <source>scanning %1/%2 (%3 %), machine number %4, %5 found</source>
+        <translation>스캔 중 %1/%2 (%3 %), 국번 %4, %5대 발견</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanProgress.cpp" line="49"/>
+        <source>scan: %1 % (%2 of %3 machine numbers), %4 found</source>
+        <translation>스캔: %1 % (국번 %3개 중 %2개), %4대 발견</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanProgress.cpp" line="60"/>
+        <source>scan: machine number %1 answered, identification failed: retrying (%2 of %3)…</source>
+        <translation>스캔: 국번 %1이(가) 응답했지만 식별에 실패했습니다: 재시도 중(%3회 중 %2회째)…</translation>
     </message>
 </context>
 <context>
@@ -11780,202 +12613,226 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="43"/>
+        <location filename="../cli/SetCommand.cpp" line="87"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>파라미터를 이름으로 쓰고, 검사하고, 다시 읽어 검증합니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="53"/>
+        <location filename="../cli/SetCommand.cpp" line="97"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>주소로 레지스터를 씁니다: ADDR=VALUE (반복 가능; --fc 16이면 VALUE,VALUE...).</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="54"/>
+        <location filename="../cli/SetCommand.cpp" line="98"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="55"/>
+        <location filename="../cli/SetCommand.cpp" line="99"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 쓰기의 기능 코드: 6(기본값) 또는 16.</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="55"/>
+        <location filename="../cli/SetCommand.cpp" line="99"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="64"/>
+        <location filename="../cli/SetCommand.cpp" line="108"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>오류: 사용법: set ID NAME=VALUE... (예: set 1 spno2.accel=2.5) 또는 set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="76"/>
+        <location filename="../cli/SetCommand.cpp" line="120"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>오류: &quot;%1&quot;은(는) NAME=VALUE 형식이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="83"/>
+        <location filename="../cli/SetCommand.cpp" line="127"/>
         <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
         <translation>오류: %1이(가) 두 번 지정되었습니다(%2=%3 및 %4). 설정은 한 번씩만 지정하십시오. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="94"/>
-        <location filename="../cli/SetCommand.cpp" line="227"/>
+        <location filename="../cli/SetCommand.cpp" line="76"/>
+        <location filename="../cli/SetCommand.cpp" line="138"/>
+        <location filename="../cli/SetCommand.cpp" line="272"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="104"/>
+        <location filename="../cli/SetCommand.cpp" line="148"/>
         <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>%1에 파라미터 &quot;%2&quot;이(가) 없습니다. &quot;opentop-cli params --family %1&quot;을 참조하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="107"/>
+        <location filename="../cli/SetCommand.cpp" line="151"/>
         <source>%1 is read-only</source>
         <translation>%1은(는) 읽기 전용입니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="109"/>
+        <location filename="../cli/SetCommand.cpp" line="153"/>
         <source>%1 is a %2 command; add --yes to send it</source>
         <translation>%1은(는) %2 명령입니다. 보내려면 --yes를 추가하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="164"/>
+        <location filename="../cli/SetCommand.cpp" line="208"/>
         <source>error: cannot read %1 to check the values; nothing written</source>
         <translation>오류: 값을 검사하기 위해 %1을(를) 읽을 수 없습니다. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="148"/>
-        <location filename="../cli/SetCommand.cpp" line="210"/>
-        <location filename="../cli/SetCommand.cpp" line="221"/>
+        <location filename="../cli/SetCommand.cpp" line="192"/>
+        <location filename="../cli/SetCommand.cpp" line="255"/>
+        <location filename="../cli/SetCommand.cpp" line="266"/>
         <source>warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="94"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
         <translation>모터를 움직이거나 리셋, 삭제, 초기화, 저장하는 명령과 시리얼 설정 잠금의 설정을 확인합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="198"/>
+        <location filename="../cli/SetCommand.cpp" line="243"/>
         <source>Add --yes to set it.</source>
         <translation>설정하려면 --yes를 추가하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="228"/>
+        <location filename="../cli/SetCommand.cpp" line="78"/>
+        <location filename="../cli/SetCommand.cpp" line="273"/>
         <source>nothing was written</source>
         <translation>아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="251"/>
+        <location filename="../cli/SetCommand.cpp" line="301"/>
         <source>not written (interrupted)</source>
         <translation>쓰지 않음(중단됨)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="264"/>
+        <location filename="../cli/SetCommand.cpp" line="314"/>
         <source>next: %1</source>
         <translation>다음: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="266"/>
+        <location filename="../cli/SetCommand.cpp" line="316"/>
         <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
         <translation>다음: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (공장 출하 통신 설정)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="304"/>
+        <location filename="../cli/SetCommand.cpp" line="360"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="304"/>
+        <location filename="../cli/SetCommand.cpp" line="360"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="304"/>
-        <location filename="../cli/SetCommand.cpp" line="422"/>
+        <location filename="../cli/SetCommand.cpp" line="360"/>
         <source>Result</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="310"/>
-        <location filename="../cli/SetCommand.cpp" line="457"/>
+        <location filename="../cli/SetCommand.cpp" line="366"/>
         <source>written, verified</source>
         <translation>쓰기 완료, 검증됨</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="311"/>
+        <location filename="../cli/SetCommand.cpp" line="368"/>
+        <source>written, not verified: %1</source>
+        <translation>쓰기 완료, 확인 안 됨: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="369"/>
         <source>written (command, not readable)</source>
         <translation>쓰기 완료(명령, 읽기 불가)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="313"/>
+        <location filename="../cli/SetCommand.cpp" line="371"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>확인 안 됨(%1): 드라이버에 값이 들어갔는지 알 수 없습니다. &quot;get&quot;으로 다시 읽으십시오</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="327"/>
+        <location filename="../cli/SetCommand.cpp" line="382"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="389"/>
         <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
         <translation>참고: 드라이버는 다음 전원 투입부터 %1을(를) 사용합니다: 드라이버 전원을 껐다 켠 뒤 새 설정(--baud, --parity)으로 연결하십시오</translation>
     </message>
+</context>
+<context>
+    <name>opentop::SetRaw</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="342"/>
+        <location filename="../cli/SetRaw.cpp" line="30"/>
         <source>error: --fc for raw writes is 6 or 16</source>
         <translation>오류: raw 쓰기의 --fc는 6 또는 16입니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="368"/>
+        <location filename="../cli/SetRaw.cpp" line="56"/>
         <source>error: &quot;%1&quot; is not ADDR=VALUE (0x.. or decimal, 0–65535; several values, comma separated, only with --fc 16)</source>
         <translation>오류: &quot;%1&quot;은(는) ADDR=VALUE 형식이 아닙니다(0x.. 또는 10진수, 0–65535; 여러 값은 쉼표로 구분하며 --fc 16에서만)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="385"/>
+        <location filename="../cli/SetRaw.cpp" line="73"/>
         <source>error: 0x%1 is not a register the profile knows; add --yes to write it anyway; nothing was written</source>
         <translation>오류: 0x%1은(는) 프로파일에 없는 레지스터입니다. 그래도 쓰려면 --yes를 추가하십시오. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="395"/>
+        <location filename="../cli/SetRaw.cpp" line="83"/>
+        <location filename="../cli/SetRaw.cpp" line="128"/>
         <source>error: %1; nothing was written</source>
         <translation>오류: %1; 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="396"/>
+        <location filename="../cli/SetRaw.cpp" line="84"/>
         <source>%1 is a %2 command; add --yes</source>
         <translation>%1은(는) %2 명령입니다. --yes를 추가하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="403"/>
+        <location filename="../cli/SetRaw.cpp" line="91"/>
         <source>error: the write covers part of %1; add --yes to write it anyway; nothing was written</source>
         <translation>오류: 이 쓰기는 %1의 일부만 덮습니다. 그래도 쓰려면 --yes를 추가하십시오. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="422"/>
+        <location filename="../cli/SetRaw.cpp" line="141"/>
         <source>Address</source>
         <translation>주소</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="422"/>
+        <location filename="../cli/SetRaw.cpp" line="141"/>
         <source>Written</source>
         <translation>쓴 값</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="455"/>
+        <location filename="../cli/SetRaw.cpp" line="141"/>
+        <source>Result</source>
+        <translation>결과</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetRaw.cpp" line="174"/>
         <source>written</source>
         <translation>쓰기 완료</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="459"/>
+        <location filename="../cli/SetRaw.cpp" line="176"/>
+        <source>written, verified</source>
+        <translation>쓰기 완료, 검증됨</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetRaw.cpp" line="178"/>
         <source>written, but reads back differently</source>
         <translation>쓰기 완료, 다시 읽은 값이 다름</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="462"/>
+        <location filename="../cli/SetRaw.cpp" line="181"/>
         <source>written (not readable back: %1)</source>
         <translation>쓰기 완료(다시 읽기 불가: %1)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="470"/>
+        <location filename="../cli/SetRaw.cpp" line="193"/>
         <source>Also written to %1 (communication group); not read back: no parameter of the profile</source>
         <translation>%1에도 씀(통신 그룹). 다시 읽지 않음: 프로파일의 파라미터가 아님</translation>
     </message>
@@ -12049,32 +12906,37 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimApp</name>
     <message>
-        <location filename="../sim/SimApp.cpp" line="110"/>
+        <location filename="../sim/SimApp.cpp" line="111"/>
+        <source>opentop-sim: %1@%2 talks %3 (its own line settings): it answers only frames sent in that format</source>
+        <translation>opentop-sim: %1@%2은(는) %3(자체 라인 설정)으로 통신합니다. 그 형식으로 보낸 프레임에만 응답합니다</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimApp.cpp" line="117"/>
         <source>opentop-sim: warning: %1@%2 cannot use %3 %4 and will not answer</source>
         <translation>opentop-sim: 경고: %1@%2은(는) %3 %4을(를) 사용할 수 없으므로 응답하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="124"/>
+        <location filename="../sim/SimApp.cpp" line="131"/>
         <source>opentop-sim: --defect %1:%2: no drive with machine number %1 on the bus %3</source>
         <translation>opentop-sim: --defect %1:%2: 버스 %3에 국번 %1인 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="131"/>
+        <location filename="../sim/SimApp.cpp" line="138"/>
         <source>opentop-sim: --defect %1 (%2@%1): %3</source>
         <translation>opentop-sim: --defect %1 (%2@%1): %3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="169"/>
+        <location filename="../sim/SimApp.cpp" line="176"/>
         <source>the port is unplugged already</source>
         <translation>포트가 이미 분리되어 있습니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="171"/>
+        <location filename="../sim/SimApp.cpp" line="178"/>
         <source>unplugged</source>
         <translation>분리됨</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="204"/>
+        <location filename="../sim/SimApp.cpp" line="211"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
@@ -12125,12 +12987,12 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>시뮬레이션 어댑터가 분리되었습니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimBackend.cpp" line="80"/>
+        <location filename="../sim/SimBackend.cpp" line="85"/>
         <source>interrupted while waiting</source>
         <translation>대기 중 중단됨</translation>
     </message>
     <message>
-        <location filename="../sim/SimBackend.cpp" line="87"/>
+        <location filename="../sim/SimBackend.cpp" line="92"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 이내에 응답 없음</translation>
     </message>
@@ -12143,22 +13005,43 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>알 수 없는 장치 유형 &apos;%1&apos;; 알려진 유형: %2</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="65"/>
+        <location filename="../sim/SimBus.cpp" line="66"/>
+        <location filename="../sim/SimBus.cpp" line="74"/>
         <source>%1@%2{%3}: %4</source>
         <translation>%1@%2{%3}: %4</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="81"/>
+        <location filename="../sim/SimBus.cpp" line="107"/>
+        <source>no device with machine number %1</source>
+        <translation>국번 %1인 장치가 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimBus.cpp" line="118"/>
+        <source>baud=%1: this drive talks at %2 bit/s</source>
+        <translation>baud=%1: 이 드라이브의 통신 속도는 %2 bit/s입니다</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimBus.cpp" line="126"/>
+        <source>format=%1: this drive offers %2 only</source>
+        <translation>format=%1: 이 드라이브는 %2만 제공합니다</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimBus.cpp" line="132"/>
+        <source>this simulated drive has no line settings of its own</source>
+        <translation>이 시뮬레이션 드라이브에는 자체 라인 설정이 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimBus.cpp" line="145"/>
         <source>machine number %1 is outside 1..247</source>
         <translation>국번 %1이(가) 1..247 범위를 벗어납니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="82"/>
+        <location filename="../sim/SimBus.cpp" line="146"/>
         <source>machine number %1 is used twice</source>
         <translation>국번 %1이(가) 두 번 사용되었습니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="233"/>
+        <location filename="../sim/SimBus.cpp" line="317"/>
         <source>no device with machine number %1 (bus: %2)</source>
         <translation>국번 %1인 장치가 없습니다(버스: %2)</translation>
     </message>
@@ -12355,32 +13238,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimDevice</name>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="241"/>
+        <location filename="../sim/SimDevice.cpp" line="248"/>
         <source>missing command</source>
         <translation>명령 없음</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="250"/>
+        <location filename="../sim/SimDevice.cpp" line="257"/>
         <source>slave %1 power cycled</source>
         <translation>슬레이브 %1 전원 재투입함</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="292"/>
+        <location filename="../sim/SimDevice.cpp" line="299"/>
         <source>usage: defect ID DEFECT[,DEFECT...] or defect ID clear; DEFECT: %1</source>
         <translation>사용법: defect ID DEFECT[,DEFECT...] 또는 defect ID clear; DEFECT: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="299"/>
+        <location filename="../sim/SimDevice.cpp" line="306"/>
         <source>slave %1 defects: %2</source>
         <translation>슬레이브 %1 결함: %2</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="301"/>
+        <location filename="../sim/SimDevice.cpp" line="308"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="306"/>
+        <location filename="../sim/SimDevice.cpp" line="313"/>
         <source>&apos;%1&apos; is not supported by a %2 device</source>
         <translation>&apos;%1&apos;은(는) %2 장치에서 지원하지 않습니다</translation>
     </message>
@@ -12393,10 +13276,15 @@ This moves or stops a motor: add --yes to send it.</source>
 Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 
   --devices SPEC     devices and machine numbers, e.g. dbu200@1,dbu400@150,dcpid@7
+                     a drive&apos;s own line settings in braces, e.g.
+                     dcpid@7{format=8E1,baud=19200}: it hears only frames sent in
+                     that format (a pty passes the client&apos;s rate and parity on)
   --pty [PATH]       serve on a pty (default); PATH: also create this symlink
   --tcp HOST:PORT    serve Modbus TCP (HOST defaults to 127.0.0.1, PORT 0: any)
-  --baud N           line speed for wire timing and device settings (19200)
-  --parity N|E|O     line parity (N)
+  --baud N           line speed for wire timing and device settings (19200); a
+                     drive hears a frame only at its own rate and parity
+  --parity N|E|O     line parity (N): the drives without settings of their own
+                     are set to --baud and --parity
   --wire-timing      delay replies as a real line at --baud would
   --turnaround MS    device turnaround with --wire-timing (2)
   --half-duplex      with --wire-timing: a request overlapping a reply on the line
@@ -12430,10 +13318,15 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 Modbus RTU 드라이버를 가상 터미널 또는 Modbus TCP 게이트웨이로 시뮬레이션합니다.
 
   --devices SPEC     장치와 국번, 예: dbu200@1,dbu400@150,dcpid@7
+                     드라이브 자체 라인 설정은 중괄호 안에. 예:
+                     dcpid@7{format=8E1,baud=19200}: 그 형식으로 보낸
+                     프레임만 받음 (pty는 클라이언트의 속도와 패리티를 전달)
   --pty [PATH]       pty로 서비스 (기본값); PATH: 이 심볼릭 링크도 생성
   --tcp HOST:PORT    Modbus TCP로 서비스 (HOST 기본값 127.0.0.1, PORT 0: 임의)
-  --baud N           전송 타이밍과 장치 설정에 쓰는 통신 속도 (19200)
-  --parity N|E|O     라인 패리티 (N)
+  --baud N           전송 타이밍과 장치 설정에 쓰는 통신 속도 (19200). 드라이브는
+                     자체 속도와 패리티의 프레임만 받음
+  --parity N|E|O     라인 패리티 (N): 자체 설정이 없는 드라이브는
+                     --baud와 --parity로 설정됨
   --wire-timing      --baud의 실제 라인처럼 응답을 지연
   --turnaround MS    --wire-timing 사용 시 장치 응답 전환 시간 (2)
   --half-duplex      --wire-timing과 함께: 라인에서 요청이 응답과 겹치면
@@ -12465,82 +13358,82 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 </translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="87"/>
+        <location filename="../sim/SimOptions.cpp" line="92"/>
         <source>--lang needs a language code such as ko</source>
         <translation>--lang에는 ko 같은 언어 코드가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="90"/>
+        <location filename="../sim/SimOptions.cpp" line="95"/>
         <source>--devices needs a device list such as dbu200@1,dcpid@7</source>
         <translation>--devices에는 dbu200@1,dcpid@7 같은 장치 목록이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="99"/>
+        <location filename="../sim/SimOptions.cpp" line="104"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:5020</source>
         <translation>--tcp에는 HOST:PORT가 필요합니다. 예: 127.0.0.1:5020</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="105"/>
+        <location filename="../sim/SimOptions.cpp" line="110"/>
         <source>--tcp needs HOST:PORT with PORT 0..65535, got &apos;%1&apos;</source>
         <translation>--tcp에는 PORT가 0..65535인 HOST:PORT가 필요합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="117"/>
+        <location filename="../sim/SimOptions.cpp" line="122"/>
         <source>--baud must be one of %1, got &apos;%2&apos;</source>
         <translation>--baud는 %1 중 하나여야 합니다. 입력값: &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="124"/>
+        <location filename="../sim/SimOptions.cpp" line="129"/>
         <source>--parity must be N, E or O, got &apos;%1&apos;</source>
         <translation>--parity는 N, E 또는 O여야 합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="134"/>
+        <location filename="../sim/SimOptions.cpp" line="139"/>
         <source>--turnaround must be 0..1000 ms, got &apos;%1&apos;</source>
         <translation>--turnaround는 0..1000 ms여야 합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="138"/>
+        <location filename="../sim/SimOptions.cpp" line="143"/>
         <source>--faults needs a list such as drop=0.02,crc=0.01</source>
         <translation>--faults에는 drop=0.02,crc=0.01 같은 목록이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="142"/>
+        <location filename="../sim/SimOptions.cpp" line="147"/>
         <source>--faults: %1</source>
         <translation>--faults: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="148"/>
+        <location filename="../sim/SimOptions.cpp" line="153"/>
         <source>--seed must be a whole number 0..4294967295, got &apos;%1&apos;</source>
         <translation>--seed는 0..4294967295의 정수여야 합니다. 입력값: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="152"/>
+        <location filename="../sim/SimOptions.cpp" line="157"/>
         <source>--defect needs ID:DEFECT[,DEFECT...], e.g. 3:firmware=1.4; DEFECT: %1</source>
         <translation>--defect에는 ID:DEFECT[,DEFECT...]가 필요합니다. 예: 3:firmware=1.4; DEFECT: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="159"/>
+        <location filename="../sim/SimOptions.cpp" line="164"/>
         <source>--defect: %1</source>
         <translation>--defect: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="163"/>
+        <location filename="../sim/SimOptions.cpp" line="168"/>
         <source>--motor needs a list such as inertia=2e-4,load=0.05</source>
         <translation>--motor에는 inertia=2e-4,load=0.05 같은 목록이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="167"/>
+        <location filename="../sim/SimOptions.cpp" line="172"/>
         <source>--motor: %1</source>
         <translation>--motor: %1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="172"/>
+        <location filename="../sim/SimOptions.cpp" line="177"/>
         <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
         <translation>알 수 없는 인수 &apos;%1&apos;; 옵션: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="181"/>
+        <location filename="../sim/SimOptions.cpp" line="186"/>
         <source>--devices SPEC is required, e.g. --devices dbu200@1,dcpid@7</source>
         <translation>--devices SPEC이 필요합니다. 예: --devices dbu200@1,dcpid@7</translation>
     </message>
@@ -12790,62 +13683,62 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
         <translation>%1의 통신 그룹</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="158"/>
+        <location filename="../model/run/StartPreview.cpp" line="177"/>
         <source>It runs with running data SPno%1</source>
         <translation>기동 시 운전 데이터: SPno%1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="160"/>
+        <location filename="../model/run/StartPreview.cpp" line="179"/>
         <source> at %1</source>
         <translation> (%1)</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="163"/>
+        <location filename="../model/run/StartPreview.cpp" line="182"/>
         <source>, direction %1 (the direction command sent since)</source>
         <translation>, 방향 %1 (이후 보낸 방향 명령)</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="164"/>
+        <location filename="../model/run/StartPreview.cpp" line="183"/>
         <source>, direction %1</source>
         <translation>, 방향 %1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="167"/>
+        <location filename="../model/run/StartPreview.cpp" line="186"/>
         <source>Which running data it runs with could not be read.</source>
         <translation>어떤 운전 데이터로 운전할지 읽을 수 없습니다.</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="170"/>
+        <location filename="../model/run/StartPreview.cpp" line="189"/>
         <source>Warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="172"/>
+        <location filename="../model/run/StartPreview.cpp" line="191"/>
         <source>The start also reaches machine number(s) %1: %2.</source>
         <translation>기동 명령은 국번 %1에도 전달됩니다: %2.</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="175"/>
+        <location filename="../model/run/StartPreview.cpp" line="195"/>
         <source>Not read: %1.</source>
         <translation>읽지 않음: %1.</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="187"/>
+        <location filename="../model/run/StartPreview.cpp" line="207"/>
         <source>This starts the motor of machine number %1.</source>
         <translation>국번 %1의 모터를 기동합니다.</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="189"/>
+        <location filename="../model/run/StartPreview.cpp" line="209"/>
         <source>This sets the speed command of machine number %1 to %2: its motor runs.</source>
         <translation>국번 %1의 속도 명령을 %2(으)로 설정합니다: 모터가 운전합니다.</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="193"/>
+        <location filename="../model/run/StartPreview.cpp" line="213"/>
         <source>Make sure that nobody is near the machine and that it may move. STOP ALL stops every drive at any time.</source>
         <translation>설비 주변에 사람이 없고 설비가 움직여도 되는지 확인하십시오. 전체 정지로 언제든지 모든 드라이버를 정지할 수 있습니다.</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="196"/>
+        <location filename="../model/run/StartPreview.cpp" line="216"/>
         <source>You are asked once per drive while the program runs.</source>
         <translation>프로그램 실행 중 드라이버마다 한 번씩 확인합니다.</translation>
     </message>
@@ -13163,102 +14056,82 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
         <translation>국번 %1이(가) 알려진 제품군의 드라이버로 식별되지 않았습니다. 시운전에는 식별이 필요합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="111"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="120"/>
         <source>&amp;Start</source>
         <translation>기동(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="111"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="120"/>
         <source>S&amp;top</source>
         <translation>정지(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="112"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="121"/>
         <source>&amp;CW</source>
         <translation>CW(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="112"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="121"/>
         <source>CC&amp;W</source>
         <translation>CCW(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="113"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="122"/>
         <source>&amp;Hold</source>
         <translation>여자 유지(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="113"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="122"/>
         <source>&amp;Free</source>
         <translation>여자 해제(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="132"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="141"/>
         <source>Se&amp;lect running data</source>
         <translation>운전 데이터 선택(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="143"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="152"/>
         <source>Return to &amp;I/O priority</source>
         <translation>I/O 우선으로 복귀(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="145"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="154"/>
         <source>Give run, stop, direction and speed selection back to the drive&apos;s input terminals</source>
         <translation>운전, 정지, 방향, 속도 선택을 드라이버의 입력 단자로 되돌립니다</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="191"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="200"/>
         <source>Cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>드라이버가 운전 명령을 받는지 확인하기 위해 %1을(를) 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="227"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="236"/>
         <source>Reading what the start will run…</source>
         <translation>기동 시 운전할 내용을 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="243"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="252"/>
         <source>Start the motor</source>
         <translation>모터 기동</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="257"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="266"/>
         <source>Sending %1…</source>
         <translation>%1 보내는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="293"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="295"/>
+        <source>Not every drive of its communication group runs: see below.</source>
+        <translation>통신 그룹의 모든 드라이버가 운전 중인 것은 아닙니다: 아래를 보십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/TestRunPanel.cpp" line="313"/>
         <source>Sent: %1</source>
         <translation>보냄: %1</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="308"/>
-        <source>Read back after the command at %1:</source>
-        <translation>%1 명령 후 다시 읽은 값:</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="311"/>
-        <source>The motor is running.</source>
-        <translation>모터가 운전 중입니다.</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="311"/>
-        <source>The motor is stopped.</source>
-        <translation>모터가 정지해 있습니다.</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="313"/>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="315"/>
-        <source>(not read: %1)</source>
-        <translation>(읽지 않음: %1)</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="379"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="382"/>
         <source>Polling is paused: the controller brakes the motor %1 s after the last frame it receives (%2). Resume polling to keep the motor running.</source>
         <translation>폴링이 일시 정지되었습니다: 컨트롤러는 마지막 프레임을 받은 뒤 %1 s가 지나면 모터에 브레이크를 겁니다(%2). 모터를 계속 운전하려면 폴링을 재개하십시오.</translation>
     </message>
@@ -13528,32 +14401,37 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
         <translation>RS-485 모드 %1은(는) 지원하지 않습니다: off, auto, kernel 또는 rts를 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="50"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="52"/>
+        <source>Line format of machine number %1: %2 Use machine numbers 1–247.</source>
+        <translation>국번 %1의 통신 형식: %2 국번은 1–247을 쓰십시오.</translation>
+    </message>
+    <message>
+        <location filename="../transport/ConnectionSettings.cpp" line="60"/>
         <source>RTS delay %1 µs is not allowed: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own).</source>
         <translation>RTS 지연 %1 µs는 허용되지 않습니다: 0–%2 µs를 사용하십시오(0: 시리얼 드라이버 또는 libmodbus 자체 지연).</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="59"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="69"/>
         <source>No host given: enter the gateway&apos;s address, e.g. 192.168.1.10.</source>
         <translation>호스트가 지정되지 않았습니다: 게이트웨이 주소를 입력하십시오. 예: 192.168.1.10.</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="63"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="73"/>
         <source>TCP port %1 is not allowed: use 1–65535 (Modbus TCP uses 502).</source>
         <translation>TCP 포트 %1은(는) 허용되지 않습니다: 1–65535를 사용하십시오(Modbus TCP는 502 사용).</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="70"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="80"/>
         <source>No simulated devices given: use a list such as dbu200@1,dcpid@7.</source>
         <translation>시뮬레이션 장치가 지정되지 않았습니다: dbu200@1,dcpid@7 같은 목록을 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="76"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="86"/>
         <source>Timeout %1 ms is not allowed: use 10–10000 ms.</source>
         <translation>타임아웃 %1 ms는 허용되지 않습니다: 10–10000 ms를 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="80"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="90"/>
         <source>%1 retries are not allowed: use 0–10.</source>
         <translation>재시도 %1회는 허용되지 않습니다: 0–10을 사용하십시오.</translation>
     </message>
@@ -13603,70 +14481,80 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
         <translation>%1을(를) 열 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="129"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="325"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="131"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
         <source>%1 is not open</source>
         <translation>%1이(가) 열려 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="151"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="169"/>
         <source>send failed</source>
         <translation>송신 실패</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="177"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="195"/>
         <source>interrupted while waiting</source>
         <translation>대기 중 중단됨</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="181"/>
-        <location filename="../transport/MockBackend.cpp" line="100"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="199"/>
+        <location filename="../transport/MockBackend.cpp" line="101"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 이내에 응답 없음</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="211"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="232"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>다른 응답이 이어졌습니다: 이 응답은 이전 요청에 대한 것일 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="307"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="267"/>
+        <source>a drive&apos;s own line format needs a serial port; a Modbus TCP gateway sets its line itself</source>
+        <translation>드라이브 자체 통신 형식에는 시리얼 포트가 필요합니다. Modbus TCP 게이트웨이는 라인을 스스로 설정합니다</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="283"/>
+        <source>cannot switch the line to %1: %2</source>
+        <translation>라인을 %1(으)로 전환할 수 없습니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="356"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>슬레이브 %1의 응답, 기대값 %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="318"/>
-        <location filename="../transport/RtuBackend.cpp" line="160"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="367"/>
+        <location filename="../transport/RtuBackend.cpp" line="158"/>
         <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>응답 불완전</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="323"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="372"/>
         <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 불일치</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="330"/>
-        <location filename="../transport/RtuBackend.cpp" line="167"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="379"/>
+        <location filename="../transport/RtuBackend.cpp" line="165"/>
         <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>수신 실패</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="404"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="453"/>
         <source> (connection closed)</source>
         <translation> (연결 끊김)</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="426"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="475"/>
         <source>stale bytes discarded before sending</source>
         <translation>송신 전 남아 있던 바이트 버림</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="510"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="559"/>
         <source>late bytes discarded after an error</source>
         <translation>오류 후 늦게 온 바이트 버림</translation>
     </message>
@@ -13691,18 +14579,18 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
         <translation>에코 %1 ×%2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="201"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="220"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="214"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="233"/>
         <source>cancelled before sending</source>
         <translation>송신 전 취소됨</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="254"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="273"/>
         <source>cannot open %1</source>
         <translation>%1을(를) 열 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="301"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="315"/>
         <source>client closed</source>
         <translation>클라이언트 닫힘</translation>
     </message>
@@ -13727,72 +14615,72 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
         <translation>재시도 %1회는 허용되지 않습니다: 0–10을 사용하거나, 기본값은 -1을 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="164"/>
+        <location filename="../transport/ModbusRequest.cpp" line="169"/>
         <source>Function 0x%1 cannot be broadcast: only functions 06h and 10h (writes) may be sent to machine number 0; use slave address 1–247.</source>
         <translation>기능 코드 0x%1은(는) 브로드캐스트할 수 없습니다: 기능 코드 06h와 10h(쓰기)만 국번 0으로 보낼 수 있습니다. 슬레이브 주소 1–247을 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="171"/>
+        <location filename="../transport/ModbusRequest.cpp" line="176"/>
         <source>Function code 0x%1 must be sent as a raw request.</source>
         <translation>기능 코드 0x%1은(는) raw 요청으로 보내야 합니다.</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="175"/>
+        <location filename="../transport/ModbusRequest.cpp" line="180"/>
         <source>Raw request data of %1 bytes is too long: at most %2 bytes.</source>
         <translation>raw 요청 데이터 %1바이트는 너무 깁니다: 최대 %2바이트.</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="188"/>
+        <location filename="../transport/ModbusRequest.cpp" line="193"/>
         <source>Cannot read %1 registers at once: use 1–125 registers.</source>
         <translation>레지스터 %1개를 한 번에 읽을 수 없습니다: 1–125개를 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="195"/>
+        <location filename="../transport/ModbusRequest.cpp" line="200"/>
         <source>Write single register needs exactly 1 value, not %1.</source>
         <translation>단일 레지스터 쓰기에는 값이 정확히 1개 필요합니다(%1개가 아님).</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="201"/>
+        <location filename="../transport/ModbusRequest.cpp" line="206"/>
         <source>Cannot write %1 registers at once: use 1–123 registers.</source>
         <translation>레지스터 %1개를 한 번에 쓸 수 없습니다: 1–123개를 사용하십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="206"/>
+        <location filename="../transport/ModbusRequest.cpp" line="211"/>
         <source>%1 values given for %2 registers.</source>
         <translation>레지스터 %2개에 값 %1개가 주어졌습니다.</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="215"/>
+        <location filename="../transport/ModbusRequest.cpp" line="220"/>
         <source>Registers %1 ×%2 run past the last address 0xFFFF.</source>
         <translation>레지스터 %1 ×%2이(가) 마지막 주소 0xFFFF를 넘어갑니다.</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="226"/>
+        <location filename="../transport/ModbusRequest.cpp" line="231"/>
         <source>device identification code %1 object %2</source>
         <translation>장치 식별 코드 %1 오브젝트 %2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="234"/>
+        <location filename="../transport/ModbusRequest.cpp" line="239"/>
         <source>raw %1 %2</source>
         <translation>raw %1 %2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="238"/>
+        <location filename="../transport/ModbusRequest.cpp" line="243"/>
         <source>read %1 %2 ×%3</source>
         <translation>읽기 %1 %2 ×%3</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="242"/>
+        <location filename="../transport/ModbusRequest.cpp" line="247"/>
         <source>write %1 %2 = %3</source>
         <translation>쓰기 %1 %2 = %3</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="245"/>
+        <location filename="../transport/ModbusRequest.cpp" line="250"/>
         <source>write %1 %2 ×%3 = %4</source>
         <translation>쓰기 %1 %2 ×%3 = %4</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="251"/>
+        <location filename="../transport/ModbusRequest.cpp" line="256"/>
         <source>broadcast %1</source>
         <translation>브로드캐스트 %1</translation>
     </message>
@@ -13947,7 +14835,7 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
         <translation>%2(PID %3)이(가) %1을(를) 사용 중입니다. 먼저 닫으십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="97"/>
+        <location filename="../transport/RtuBackend.cpp" line="95"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -13956,17 +14844,17 @@ then log out and in again (the group applies to new sessions only).</source>
 로그아웃했다가 다시 로그인하십시오(그룹은 새 세션에만 적용됨).</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="103"/>
+        <location filename="../transport/RtuBackend.cpp" line="101"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> (장치가 이 패리티를 지원하지 않을 수 있습니다. pty는 N이 필요합니다)</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="138"/>
+        <location filename="../transport/RtuBackend.cpp" line="136"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>응답이 %1바이트라고 알리지만 RTU 프레임에 들어갈 수 있는 크기보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="159"/>
+        <location filename="../transport/RtuBackend.cpp" line="157"/>
         <source>no reply</source>
         <translation>응답 없음</translation>
     </message>
@@ -14191,21 +15079,26 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>어댑터가 수신한 바이트를 최대 %1 ms 동안 보류한 뒤 넘깁니다(%2). 해결 방법: %3.</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineSetup.cpp" line="106"/>
+        <location filename="../transport/SerialLineSetup.cpp" line="107"/>
         <source>the driver left it off</source>
         <translation>시리얼 드라이버가 꺼진 상태로 둠</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineSetup.cpp" line="176"/>
+        <source>the port does not take %1</source>
+        <translation>포트가 %1을(를) 받아들이지 않습니다</translation>
     </message>
 </context>
 <context>
     <name>opentop::TrendAxes</name>
     <message>
-        <location filename="../ui/trends/TrendAxes.cpp" line="40"/>
-        <location filename="../ui/trends/TrendAxes.cpp" line="46"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="51"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="52"/>
         <source>%1 [%2]</source>
         <translation>%1 [%2]</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendAxes.cpp" line="45"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="49"/>
         <source>[%1]</source>
         <translation>[%1]</translation>
     </message>
@@ -14213,22 +15106,23 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendChart</name>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="45"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="32"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="58"/>
         <source>Time (hh:mm:ss)</source>
         <translation>시간 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="88"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="105"/>
         <source>Drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="279"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="296"/>
         <source>There is no trend data to export yet.</source>
         <translation>아직 내보낼 트렌드 데이터가 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="292"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="309"/>
         <source>Cannot write the picture %1.</source>
         <translation>이미지 %1을(를) 저장할 수 없습니다.</translation>
     </message>
@@ -14411,228 +15305,278 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuneCommand</name>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="80"/>
+        <location filename="../cli/TuneCommand.cpp" line="81"/>
         <source>Speed-loop step test and relay autotune of a DC controller (needs --yes)</source>
         <translation>DC 컨트롤러의 속도 루프 스텝 시험과 릴레이 오토튜닝 (--yes 필요)</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="86"/>
+        <location filename="../cli/TuneCommand.cpp" line="87"/>
         <source>Run the test (it moves the motor).</source>
         <translation>시험을 실행합니다(모터가 움직입니다).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="87"/>
+        <location filename="../cli/TuneCommand.cpp" line="88"/>
         <source>step: speed before the step (default 0).</source>
         <translation>step: 스텝 전 속도 (기본값 0).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="87"/>
         <location filename="../cli/TuneCommand.cpp" line="88"/>
-        <location filename="../cli/TuneCommand.cpp" line="91"/>
-        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <location filename="../cli/TuneCommand.cpp" line="89"/>
+        <location filename="../cli/TuneCommand.cpp" line="92"/>
+        <location filename="../cli/TuneCommand.cpp" line="106"/>
         <source>SPEED</source>
         <translation>SPEED</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="88"/>
+        <location filename="../cli/TuneCommand.cpp" line="89"/>
         <source>step: speed after the step.</source>
         <translation>step: 스텝 후 속도.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="89"/>
+        <location filename="../cli/TuneCommand.cpp" line="90"/>
         <source>step: record this long after the step (default 1500).</source>
         <translation>step: 스텝 후 기록할 시간 (기본값 1500).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="90"/>
+        <location filename="../cli/TuneCommand.cpp" line="91"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="91"/>
+        <location filename="../cli/TuneCommand.cpp" line="92"/>
         <source>autotune: operating speed of the relay test.</source>
         <translation>autotune: 릴레이 시험의 운전 속도.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="92"/>
+        <location filename="../cli/TuneCommand.cpp" line="93"/>
         <source>autotune: output swing, % of full output (default 10).</source>
         <translation>autotune: 출력 스윙, 최대 출력에 대한 % (기본값 10).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="93"/>
+        <location filename="../cli/TuneCommand.cpp" line="94"/>
         <source>PERCENT</source>
         <translation>PERCENT</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="95"/>
+        <location filename="../cli/TuneCommand.cpp" line="96"/>
         <source>autotune: soft, medium (default), stiff, tyreus-luyben or zn-pi.</source>
         <translation>autotune: soft, medium (기본값), stiff, tyreus-luyben 또는 zn-pi.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="95"/>
+        <location filename="../cli/TuneCommand.cpp" line="96"/>
         <source>RULE</source>
         <translation>RULE</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="96"/>
+        <location filename="../cli/TuneCommand.cpp" line="97"/>
         <source>autotune: write the proposed gains, then run a step test from half the operating speed to it.</source>
         <translation>autotune: 제안된 게인을 쓴 뒤, 운전 속도의 절반에서 운전 속도까지 스텝 시험을 실행합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="98"/>
-        <source>autotune: with --accept, store the gains in the drive.</source>
-        <translation>autotune: --accept와 함께 쓰면 게인을 드라이버에 저장합니다.</translation>
+        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <source>autotune: with --accept, store the gains in the drive if the step measured with them passes the check.</source>
+        <translation>autotune: --accept와 함께 쓰면, 그 게인으로 측정한 스텝이 확인을 통과할 때 게인을 드라이버에 저장합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <source>autotune: with --accept, keep (and with --store, store) gains whose measured step failed the check; without it they are written back to what the drive had.</source>
+        <translation>autotune: --accept와 함께 쓰면 측정한 스텝이 확인을 통과하지 못해도 게인을 유지합니다(--store가 있으면 저장). 지정하지 않으면 드라이버의 이전 게인을 다시 씁니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="106"/>
         <source>Stop at once beyond this speed (default 120 % of the test&apos;s highest).</source>
         <translation>속도가 이 값을 넘으면 즉시 정지합니다(기본값: 시험 최고 속도의 120 %).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="101"/>
+        <location filename="../cli/TuneCommand.cpp" line="107"/>
         <source>Stop at once beyond this current in A (default 20).</source>
         <translation>전류가 이 값(A)을 넘으면 즉시 정지합니다(기본값 20).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="102"/>
+        <location filename="../cli/TuneCommand.cpp" line="108"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <location filename="../cli/TuneCommand.cpp" line="109"/>
         <source>Write the samples to FILE.</source>
         <translation>샘플을 FILE에 씁니다.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <location filename="../cli/TuneCommand.cpp" line="109"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="117"/>
+        <location filename="../cli/TuneCommand.cpp" line="123"/>
         <source>error: usage: %1</source>
         <translation>오류: 사용법: %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="127"/>
+        <location filename="../cli/TuneCommand.cpp" line="133"/>
         <source>error: --%1 must be a number 0 or more, got &apos;%2&apos;</source>
         <translation>오류: --%1은(는) 0 이상의 숫자여야 합니다. 입력값: &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="149"/>
-        <location filename="../cli/TuneCommand.cpp" line="160"/>
-        <location filename="../cli/TuneCommand.cpp" line="165"/>
-        <location filename="../cli/TuneCommand.cpp" line="319"/>
+        <location filename="../cli/TuneCommand.cpp" line="155"/>
+        <location filename="../cli/TuneCommand.cpp" line="166"/>
+        <location filename="../cli/TuneCommand.cpp" line="171"/>
+        <location filename="../cli/TuneCommand.cpp" line="374"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="150"/>
+        <location filename="../cli/TuneCommand.cpp" line="156"/>
         <source>step needs --to SPEED</source>
         <translation>step에는 --to SPEED가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="151"/>
+        <location filename="../cli/TuneCommand.cpp" line="157"/>
         <source>--rule must be one of %1</source>
         <translation>--rule은 %1 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="153"/>
+        <location filename="../cli/TuneCommand.cpp" line="159"/>
         <source>autotune needs --speed SPEED</source>
         <translation>autotune에는 --speed SPEED가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="169"/>
+        <location filename="../cli/TuneCommand.cpp" line="175"/>
         <source>Would run the motor of machine number %1 from %2 to %3 and record the step response.</source>
         <translation>국번 %1의 모터를 %2에서 %3(으)로 운전하고 스텝 응답을 기록합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="174"/>
+        <location filename="../cli/TuneCommand.cpp" line="180"/>
         <source>Would run the motor of machine number %1 in a relay test around %2 (output ±%3 %).</source>
         <translation>국번 %1의 모터를 %2 부근에서 릴레이 시험으로 운전합니다(출력 ±%3 %).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="180"/>
+        <location filename="../cli/TuneCommand.cpp" line="186"/>
         <source>This moves the motor: add --yes to run it.</source>
         <translation>모터가 움직입니다: 실행하려면 --yes를 추가하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="229"/>
+        <location filename="../cli/TuneCommand.cpp" line="235"/>
         <source>Machine number %1, gains %2</source>
         <translation>국번 %1, 게인 %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="231"/>
+        <location filename="../cli/TuneCommand.cpp" line="237"/>
         <source>  rise time (10–90 %): %1</source>
         <translation>  상승 시간 (10–90 %): %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="232"/>
+        <location filename="../cli/TuneCommand.cpp" line="238"/>
         <source>  overshoot: %1 %</source>
         <translation>  오버슈트: %1 %</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="233"/>
+        <location filename="../cli/TuneCommand.cpp" line="239"/>
         <source>  settling time (2 %): %1</source>
         <translation>  정정 시간 (2 %): %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="234"/>
+        <location filename="../cli/TuneCommand.cpp" line="240"/>
         <source>  steady-state error: %1 %2</source>
         <translation>  정상상태 오차: %1 %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="235"/>
+        <location filename="../cli/TuneCommand.cpp" line="241"/>
         <source>  peak current: %1 A</source>
         <translation>  피크 전류: %1 A</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="249"/>
+        <location filename="../cli/TuneCommand.cpp" line="267"/>
         <source>Step %1 → %2 %3:</source>
         <translation>스텝 %1 → %2 %3:</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="253"/>
-        <source>Relay test: Ku %1, Tu %2 ms (amplitude ±%3 %4, %5 cycles)</source>
-        <translation>릴레이 시험: Ku %1, Tu %2 ms (진폭 ±%3 %4, %5주기)</translation>
+        <location filename="../cli/TuneCommand.cpp" line="272"/>
+        <source>Relay test: Ku %1, Tu %2 ms measured (amplitude ±%3 %4, %5 cycles, %6 readings per period, one every %7 ms)</source>
+        <translation>릴레이 시험: Ku %1, 측정된 Tu %2 ms (진폭 ±%3 %4, %5주기, 주기당 읽기 %6회, %7 ms마다)</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="259"/>
+        <location filename="../cli/TuneCommand.cpp" line="364"/>
+        <source>What to change: %1</source>
+        <translation>바꿀 점: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="281"/>
         <source>Model: gain %1, time constant %2 ms, dead time %3 ms (the bus&apos;s %4 ms left out)</source>
         <translation>모델: 게인 %1, 시정수 %2 ms, 무효 시간 %3 ms (버스의 %4 ms는 제외)</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="265"/>
+        <location filename="../cli/TuneCommand.cpp" line="287"/>
+        <source>The drive&apos;s own loop on the model: Ku %1, Tu %2 ms</source>
+        <translation>모델상 드라이버 자체 루프: Ku %1, Tu %2 ms</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="290"/>
         <source>Proposed (%1): %2</source>
         <translation>제안값 (%1): %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="281"/>
+        <location filename="../cli/TuneCommand.cpp" line="291"/>
+        <source>  the rule&apos;s P × %1, Ti × %2; predicted step %3 → %4 %5: overshoot %6 %, settling time %7</source>
+        <translation>  규칙의 P × %1, Ti × %2; 예측 스텝 %3 → %4 %5: 오버슈트 %6 %, 정정 시간 %7</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="307"/>
         <source>Writing the proposed gains failed: %1</source>
         <translation>제안 게인 쓰기 실패: %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="284"/>
+        <location filename="../cli/TuneCommand.cpp" line="310"/>
         <source>Proposed gains written (not stored).</source>
         <translation>제안 게인을 썼습니다(저장 안 됨).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="287"/>
+        <location filename="../cli/TuneCommand.cpp" line="313"/>
         <source>Measured step %1 → %2 %3 with them:</source>
         <translation>이 게인으로 측정한 스텝 %1 → %2 %3:</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="303"/>
+        <location filename="../cli/TuneCommand.cpp" line="321"/>
+        <source>interrupted</source>
+        <translation>중단됨</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="324"/>
+        <source>Check after Accept: passed. %1</source>
+        <translation>수락 후 확인: 통과. %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="325"/>
+        <source>Check after Accept: FAILED. %1</source>
+        <translation>수락 후 확인: 실패. %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="334"/>
+        <source>The gains before were written back (%1); nothing was stored. --override-check keeps the proposal (and with --store stores it) all the same.</source>
+        <translation>이전 게인을 다시 썼습니다(%1). 아무것도 저장하지 않았습니다. --override-check를 주면 그래도 제안값을 유지합니다(--store가 있으면 저장).</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="338"/>
+        <source>Writing back the gains before failed: %1; the proposal is still in the drive (not stored).</source>
+        <translation>이전 게인 다시 쓰기 실패: %1. 제안값이 아직 드라이버에 있습니다(저장 안 됨).</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="345"/>
+        <source>Storing although the check failed (--override-check).</source>
+        <translation>확인을 통과하지 못했지만 저장합니다(--override-check).</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="354"/>
         <source>Gains stored in the drive.</source>
         <translation>게인을 드라이버에 저장했습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="304"/>
+        <location filename="../cli/TuneCommand.cpp" line="355"/>
         <source>Storing the gains failed: %1</source>
         <translation>게인 저장 실패: %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="311"/>
+        <location filename="../cli/TuneCommand.cpp" line="362"/>
         <source>Test ended: %1</source>
         <translation>시험 종료: %1</translation>
     </message>
@@ -14640,24 +15584,31 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningChart</name>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="40"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="41"/>
         <source>Time (ms)</source>
         <translation>시간 (ms)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="44"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="45"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="83"/>
         <source>Current (A)</source>
         <translation>전류 (A)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="65"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="81"/>
         <source>Speed</source>
         <translation>속도</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="65"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="81"/>
         <source>Speed (%1)</source>
         <translation>속도 (%1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="82"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="83"/>
+        <source>(%1)</source>
+        <translation>(%1)</translation>
     </message>
 </context>
 <context>
@@ -14824,163 +15775,153 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningPage</name>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="41"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="43"/>
         <source>STOP</source>
         <translation>정지</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="52"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="55"/>
         <source>Cancels the running test: the motor is stopped and the stop confirmed</source>
         <translation>진행 중인 시험을 취소합니다: 모터를 정지하고 정지를 확인합니다</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="68"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="245"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="71"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="269"/>
         <source>Step test</source>
         <translation>스텝 시험</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="69"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="72"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="289"/>
         <source>Relay autotune</source>
         <translation>릴레이 오토튜닝</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="107"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="131"/>
         <source>Ready. Nothing moves until you confirm a test.</source>
         <translation>준비 완료. 시험을 확인하기 전에는 아무것도 움직이지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="198"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="222"/>
         <source>Could not read the speed mode: %1</source>
         <translation>속도 모드를 읽을 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="201"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="225"/>
         <source>The drive is not in a closed-loop speed mode (now: %1). Choose one on its settings page first.</source>
         <translation>드라이버가 폐루프 속도 모드가 아닙니다(현재: %1). 먼저 설정 페이지에서 폐루프 모드를 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="224"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="248"/>
         <source>Limits: %1 %2, %3.</source>
         <translation>한계값: %1 %2, %3.</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="226"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="250"/>
         <source>%1 A</source>
         <translation>%1 A</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="226"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="250"/>
         <source>no current limit</source>
         <translation>전류 한계값 없음</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="241"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
         <source>The motor of %1 will run from %2 to %3 %4 in its present speed mode, for about %5 s, and then stop.</source>
         <translation>%1의 모터가 현재 속도 모드로 %2에서 %3 %4까지 약 %5 s 동안 운전한 뒤 정지합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="245"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="269"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="289"/>
         <source>Run</source>
         <translation>실행</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="261"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="285"/>
         <source>The motor of %1 will run in open loop (the speed loop off) around %2 %3, its output switching by ±%4 %, for up to %5 s, and then stop.</source>
         <translation>%1의 모터가 개루프(속도 루프 끔)로 %2 %3 부근에서 운전하며 출력을 ±%4 %씩 전환합니다. 최대 %5 s 후 정지합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="283"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="307"/>
         <source>Stop command sent.</source>
         <translation>정지 명령을 보냈습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="284"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="308"/>
         <source>Stop command failed: %1</source>
         <translation>정지 명령 실패: %1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="294"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="318"/>
         <source>Stopping…</source>
         <translation>정지하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="308"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="332"/>
         <source>Run %1: %2 → %3 %4</source>
         <translation>실행 %1: %2 → %3 %4</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="343"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="367"/>
         <source>Step test done.</source>
         <translation>스텝 시험 완료.</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="343"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="367"/>
         <source>Step test ended: %1</source>
         <translation>스텝 시험 종료: %1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="347"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="372"/>
         <source>The test was stopped</source>
         <translation>시험이 정지됨</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="380"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="403"/>
         <source>Autotune ended: %1</source>
         <translation>오토튜닝 종료: %1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="382"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="405"/>
         <source>The autotune was stopped</source>
         <translation>오토튜닝이 정지됨</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="392"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="415"/>
         <source>Predicted: %1 → %2 %3</source>
         <translation>예측: %1 → %2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="400"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="423"/>
         <source>Autotune done: proposal %1. Accept writes it to the drive.</source>
         <translation>오토튜닝 완료: 제안값 %1. 수락하면 드라이버에 씁니다.</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="434"/>
-        <source>Proposal rejected; the drive&apos;s gains were not changed.</source>
-        <translation>제안값을 거부했습니다. 드라이버의 게인은 바뀌지 않았습니다.</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="438"/>
-        <source>Proposal rejected</source>
-        <translation>제안값 거부됨</translation>
     </message>
 </context>
 <context>
     <name>opentop::TuningRules</name>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="60"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="61"/>
         <source>Soft (no overshoot)</source>
         <translation>부드러움 (오버슈트 없음)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="62"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="63"/>
         <source>Medium (some overshoot)</source>
         <translation>보통 (약간의 오버슈트)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="64"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="65"/>
         <source>Stiff (Ziegler–Nichols)</source>
         <translation>고강성 (Ziegler–Nichols)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="66"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="67"/>
         <source>Tyreus–Luyben (robust)</source>
         <translation>Tyreus–Luyben (강건)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="68"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="69"/>
         <source>PI only (Ziegler–Nichols)</source>
         <translation>PI만 (Ziegler–Nichols)</translation>
     </message>
@@ -15019,129 +15960,134 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningRunner</name>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="190"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="205"/>
         <source>a tuning test is already running</source>
         <translation>튜닝 시험이 이미 실행 중입니다</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="198"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="214"/>
         <source>Reading the drive&apos;s settings</source>
         <translation>드라이버 설정을 읽는 중</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="206"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="223"/>
         <source>could not read the drive&apos;s settings: %1</source>
         <translation>드라이버 설정을 읽을 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="231"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="250"/>
         <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
         <translation>드라이버가 폐루프 속도 모드가 아닙니다: 먼저 %1(%2)을(를) %3(으)로 설정하십시오</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="233"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="252"/>
         <source> or </source>
         <translation> 또는 </translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="248"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="267"/>
         <source>Setting the communication-loss braking time to %1 s</source>
         <translation>통신 두절 정지 시간을 %1 s로 설정하는 중</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="272"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="291"/>
         <source>the drive stopped answering: %1</source>
         <translation>드라이버가 응답하지 않습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="290"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="316"/>
         <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
         <translation>속도 %1 %2이(가) 시험 한계값 %3 %2을(를) 넘었습니다: 즉시 정지함</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="297"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="323"/>
         <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
         <translation>전류 %1 A가 시험 한계값 %2 A를 넘었습니다: 즉시 정지함</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="303"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="329"/>
         <source>cancelled</source>
         <translation>취소됨</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="364"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="391"/>
         <source>Stopping the motor</source>
         <translation>모터를 정지하는 중</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="370"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="396"/>
         <source>motor stopped (confirmed)</source>
         <translation>모터 정지됨(확인됨)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="371"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="397"/>
         <source>the motor could not be confirmed stopped: check it</source>
         <translation>모터 정지를 확인할 수 없습니다: 모터를 점검하십시오</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="406"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="435"/>
         <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
         <translation>스텝 시험은 한 속도에서 다른 속도로 정회전합니다: 시작 속도와 목표 속도는 서로 달라야 하며 0 이상이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="413"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="442"/>
         <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
         <translation>%1 %2이(가) 시험 속도 한계값 %3 %2을(를) 넘습니다</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="421"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="450"/>
         <source>Running to %1 %2</source>
         <translation>%1 %2까지 운전하는 중</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="457"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="486"/>
         <source>Step to %1 %2</source>
         <translation>%1 %2(으)로 스텝</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="484"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="513"/>
         <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
         <translation>운전 속도는 0보다 크고 시험 속도 한계값 %1 %2보다 작아야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="491"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="520"/>
         <source>the relay amplitude must be 0–50 % of full output</source>
         <translation>릴레이 진폭은 최대 출력의 0–50 %여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="494"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="523"/>
         <source>Open loop: finding the output for %1 %2</source>
         <translation>개루프: %1 %2에 필요한 출력을 찾는 중</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="542"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="581"/>
         <source>the motor did not turn at %1 % output</source>
         <translation>출력 %1 %에서 모터가 돌지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="578"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="617"/>
         <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
         <translation>운전 속도에 출력 %1 %가 필요합니다: 그 위아래로 ±%2 %의 여유가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="583"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="622"/>
         <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
         <translation>%1 %2 부근에서 릴레이 시험 중 (출력 %3 % ± %4 %)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="616"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="657"/>
         <source>no steady oscillation within %1 s: %2</source>
         <translation>%1 s 이내에 안정된 진동이 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="618"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="659"/>
         <source>try a larger amplitude</source>
         <translation>진폭을 크게 해 보십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="695"/>
+        <source>the relay result was refused: %1</source>
+        <translation>릴레이 시험 결과를 쓸 수 없습니다: %1</translation>
     </message>
 </context>
 <context>
@@ -15172,34 +16118,34 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>실선: 속도 · 점선: 명령 · 일점쇄선: 전류(오른쪽 축) · 파선: 예측 속도</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="169"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="174"/>
         <source>no run to save</source>
         <translation>저장할 실행 기록이 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="182"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="187"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="191"/>
         <source>Save run as CSV</source>
         <translation>실행 기록을 CSV로 저장</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="183"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="188"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="191"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="194"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="196"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="199"/>
         <source>Save chart as PNG</source>
         <translation>차트를 PNG로 저장</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="192"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="197"/>
         <source>PNG images (*.png)</source>
         <translation>PNG 이미지 (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="194"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="199"/>
         <source>Could not write %1.</source>
         <translation>%1에 쓸 수 없습니다.</translation>
     </message>
@@ -15217,9 +16163,47 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>%1: 프로파일의 튜닝에는 pidP, pidI, pidD, pidDPeriod, pidStore, speedMode, speedCommand, commLossTime, loadCurrent, output 역할이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningSpec.cpp" line="60"/>
+        <location filename="../model/tuning/TuningSpec.cpp" line="61"/>
         <source>%1: the profile&apos;s tuning section needs periodMs ≥ 1, outputFullScale &gt; 0, openLoopMode and closedLoopModes with known feedback parameters</source>
         <translation>%1: 프로파일의 튜닝 섹션에는 periodMs ≥ 1, outputFullScale &gt; 0, openLoopMode, 그리고 피드백 파라미터가 알려진 closedLoopModes가 필요합니다</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningVerdict</name>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="11"/>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="12"/>
+        <source>none within the record</source>
+        <translation>기록 시간 안에 없음</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="20"/>
+        <source>no step was measured to its end with these gains: %1</source>
+        <translation>이 게인으로 스텝을 끝까지 측정하지 못했습니다: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="46"/>
+        <source>the speed did not settle within %1 ms (±2 % of the step)</source>
+        <translation>속도가 %1 ms 안에 정정되지 않았습니다(스텝의 ±2 %)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="49"/>
+        <source>it overshot by %1 % where %2 % was predicted (at most %3 points more are accepted)</source>
+        <translation>오버슈트가 %1 %였습니다(예측 %2 %, 예측보다 %3 %p까지만 허용)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="60"/>
+        <source>Measured: overshoot %1 % (predicted %2 %), settling time %3 (predicted %4), peak current %5 A.</source>
+        <translation>측정: 오버슈트 %1 %(예측 %2 %), 정정 시간 %3(예측 %4), 피크 전류 %5 A.</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="70"/>
+        <source>Check failed: %1.</source>
+        <translation>확인 실패: %1.</translation>
     </message>
 </context>
 <context>
@@ -15366,7 +16350,12 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>&lt;h2&gt;OpenTOP으로 드라이버 커미셔닝하기&lt;/h2&gt;&lt;ol&gt;&lt;li&gt;&lt;b&gt;연결.&lt;/b&gt; 버스 ▸ 연결…에서 시리얼 포트(또는 USB–RS-485 어댑터), Modbus TCP 게이트웨이 또는 시뮬레이션 버스를 선택하고 버스의 통신 속도, 패리티, 스톱 비트를 지정합니다. 상태 표시줄에 연결 대상이 표시되며, 시뮬레이션 버스는 그렇게 표시됩니다.&lt;/li&gt;&lt;li&gt;&lt;b&gt;드라이버 찾기.&lt;/b&gt; 버스 ▸ 버스 스캔(F5)은 국번 1–247에 모두 묻습니다. 응답한 드라이버는 식별되어 왼쪽 목록에 상태, 제어 우선순위와 함께 표시됩니다.&lt;/li&gt;&lt;li&gt;&lt;b&gt;드라이버 선택.&lt;/b&gt; 오른쪽에 드라이버의 페이지가 열립니다: 모니터(실시간 값), 프로파일의 파라미터 페이지, 시운전, 알람.&lt;/li&gt;&lt;li&gt;&lt;b&gt;설정 편집.&lt;/b&gt; 편집한 항목은 쓸 때까지 쓰기 대기로 표시됩니다. 페이지 쓰기(또는 드라이버 ▸ 쓰기 대기 모두 쓰기, Ctrl+W)는 값을 쓰고 모두 다시 읽어 검증합니다. 되돌리기는 편집을 버리고, 다시 읽기(Ctrl+R)는 드라이버를 다시 읽습니다. 드라이버가 거부할 값은 보내지 않으며, 항목에 그 이유가 표시됩니다.&lt;/li&gt;&lt;li&gt;&lt;b&gt;모터 시운전.&lt;/b&gt; 시운전 페이지에서 통신 우선으로 드라이버를 기동, 정지, 역회전하며, 드라이버마다 첫 기동 전에 확인합니다. 끝나면 설비 자체의 입력으로 다시 제어하도록 드라이버를 I/O 우선으로 되돌리십시오.&lt;/li&gt;&lt;li&gt;&lt;b&gt;정지.&lt;/b&gt; 도구 모음의 전체 정지 또는 %1을(를) 누르면 프로그램의 어느 창에서든 버스의 모든 드라이버를 한 번에 정지합니다.&lt;/li&gt;&lt;li&gt;&lt;b&gt;감시.&lt;/b&gt; 보기 ▸ 트렌드(Ctrl+G)는 속도와 부하를 차트로 표시하고, 보기 ▸ 버스 개요는 모든 드라이버를 한눈에 보여 주며, 보기 ▸ 통신 로그(Ctrl+T)는 버스의 각 프레임과 그 의미를 표시합니다.&lt;/li&gt;&lt;li&gt;&lt;b&gt;설정 보관.&lt;/b&gt; 파일 ▸ 백업은 드라이버 한 대 또는 버스 전체의 설정을 파일로 저장합니다. 파일 ▸ 비교는 드라이버, 파일, 공장 출하값 사이의 차이를 표시합니다. 파일 ▸ 파일에서 복원은 미리 보기 후 백업을 다시 씁니다.&lt;/li&gt;&lt;/ol&gt;&lt;p&gt;모든 단축키는 도움말 ▸ 단축키에 있습니다.&lt;/p&gt;&lt;h3&gt;추가 문서&lt;/h3&gt;&lt;p&gt;명령줄과 시뮬레이터: &lt;code&gt;man opentop&lt;/code&gt;, &lt;code&gt;man opentop-cli&lt;/code&gt;, &lt;code&gt;man opentop-sim&lt;/code&gt;.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/help/UserGuideDialog.cpp" line="70"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="66"/>
+        <source>&lt;h3&gt;Leaving a bus, and coming back after the link drops&lt;/h3&gt;&lt;p&gt;&lt;b&gt;Leaving.&lt;/b&gt; Quitting, Bus ▸ Disconnect or connecting elsewhere while drives run or are in communication priority names each of them and what will happen to it. The default stops every running drive, reads it back to confirm the stop, and then gives each drive back to its own inputs (I/O priority, read back), so that the machine works without OpenTOP. You may instead give control back only, leave the drives as they are, or stay.&lt;/p&gt;&lt;p&gt;&lt;b&gt;A lost link.&lt;/b&gt; When the adapter is pulled out or the gateway goes, every live value turns grey and a message says which drives were running or in communication priority when the link dropped, with the age of what is known. OpenTOP cannot stop them over a lost link: check the drive&apos;s STOP input, the emergency stop and the power on the machine. Bus ▸ Reconnect (Ctrl+R, also in the message and in the red bar) opens the same port again with the same drives, selected drive and page, reads every drive again and says at once if one is running. While connected, Ctrl+R re-reads the drive&apos;s pages.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;버스에서 나가기, 연결이 끊긴 뒤 다시 연결하기&lt;/h3&gt;&lt;p&gt;&lt;b&gt;나가기.&lt;/b&gt; 드라이버가 운전 중이거나 통신 우선일 때 종료하거나 버스 ▸ 연결 해제 또는 다른 곳에 연결하면, 각 드라이버와 그 드라이버에 할 일을 보여 줍니다. 기본 동작은 운전 중인 드라이버를 모두 정지하고 다시 읽어 정지를 확인한 뒤, 각 드라이버를 자체 입력 단자로 되돌려(I/O 우선, 다시 읽기로 확인) OpenTOP 없이도 설비가 동작하게 합니다. 대신 제어 반환만 하거나, 드라이버를 그대로 두거나, 머무를 수도 있습니다.&lt;/p&gt;&lt;p&gt;&lt;b&gt;연결 끊김.&lt;/b&gt; 어댑터가 뽑히거나 게이트웨이가 사라지면 모든 실시간 값이 회색으로 바뀌고, 연결이 끊겼을 때 어떤 드라이버가 운전 중이거나 통신 우선이었는지 알려진 값의 경과 시간과 함께 메시지로 알려 줍니다. 끊긴 연결로는 OpenTOP이 드라이버를 정지할 수 없습니다: 설비에서 드라이버의 정지 입력 단자, 비상 정지, 전원을 확인하십시오. 버스 ▸ 다시 연결(Ctrl+R, 메시지와 빨간 표시줄에도 있음)은 같은 드라이버, 선택한 드라이버와 페이지로 같은 포트를 다시 열고, 모든 드라이버를 다시 읽어 운전 중인 드라이버가 있으면 바로 알려 줍니다. 연결되어 있을 때 Ctrl+R은 드라이버 페이지를 다시 읽습니다.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="86"/>
         <source>&lt;p&gt;The full description of the program: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;프로그램 전체 설명: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</translation>
     </message>

@@ -260,177 +260,187 @@
         <translation>无应答</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="48"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="49"/>
         <source>top level</source>
         <translation>顶层</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="51"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="52"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot; 必须为 1</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="61"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="62"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot; 必须是小写 id</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="71"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="70"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity 必须为 N、E 或 O</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="75"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="74"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial：baud 必须为 1200–115200，stopBits 必须为 1 或 2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="81"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="86"/>
+        <source>serial.formats: &quot;%1&quot; is not a format such as 8N1 or 8E1</source>
+        <translation>serial.formats：“%1”不是 8N1 或 8E1 这样的格式</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="90"/>
+        <source>serial.formats must hold the default format %1</source>
+        <translation>serial.formats 必须包含默认格式 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="94"/>
         <source>serial.powerOnDelayMs must be 0–60000</source>
         <translation>serial.powerOnDelayMs 必须为 0–60000</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="95"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="107"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits：maxReadRegisters 1–125，maxWriteRegisters 1–123</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="97"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="109"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits：slaves 必须在 1–247 范围内</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="112"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="124"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1] 需要 id、model 和 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="114"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="126"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]：id &quot;%2&quot; 重复</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="125"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="137"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1] 需要唯一的 id 和 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="136"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="148"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1] 需要功能码 3 或 4，且 first ≤ last</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="180"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="192"/>
         <source>%1 has no name</source>
         <translation>%1 没有名称</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="182"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="194"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1：reset 必须是 %2 之一</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="185"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="197"/>
         <source>%1: code %2 repeated</source>
         <translation>%1：代码 %2 重复</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="207"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="219"/>
         <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
         <translation>%1：storeWith &quot;%2&quot; 不是命令参数</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="210"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="222"/>
         <source>%1: the default is not among its allowed values</source>
         <translation>%1：默认值不在允许值范围内</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="214"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="226"/>
         <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
         <translation>%1：位域 &quot;%2&quot;：功能 &quot;%3&quot; 不是可读参数</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="221"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
         <source>%1: condition on unknown parameter &quot;%2&quot;</source>
         <translation>%1：条件引用了未知参数 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="223"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="235"/>
         <source>%1: the default is not allowed when %2</source>
         <translation>%1：当 %2 时不允许使用默认值</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="245"/>
         <source>%1 runs past address 0xFFFF</source>
         <translation>%1 超出地址 0xFFFF</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="236"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="248"/>
         <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
         <translation>%1 与 &quot;%2&quot; 在 0x%3 处重叠（%4 个寄存器）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="260"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="272"/>
         <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
         <translation>identify：&quot;%1&quot; 必须是 identify 读取范围内的参数</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="263"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
         <source>identify.nameMatch is not a valid regular expression</source>
         <translation>identify.nameMatch 不是有效的正则表达式</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="287"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1：未知参数 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="303"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="315"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1 必须是参数名、参数名列表或对象</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="312"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="324"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1：&quot;%2&quot; 没有位域 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="318"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="330"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1：%2 不是可用于写入 &quot;%3&quot; 的值</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="336"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="348"/>
         <source>decelerationKnobs need the &quot;selected&quot; role</source>
         <translation>decelerationKnobs 需要 &quot;selected&quot; 角色</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="352"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
         <source>%1 needs &quot;selected&quot; and &quot;maxSeconds&quot;</source>
         <translation>%1 需要 &quot;selected&quot; 和 &quot;maxSeconds&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="355"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="367"/>
         <source>%1: &quot;selected&quot; %2 is not a value of the &quot;selected&quot; role, or repeated</source>
         <translation>%1：&quot;selected&quot; %2 不是 &quot;selected&quot; 角色的值，或重复出现</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="360"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="372"/>
         <source>%1: &quot;maxSeconds&quot; must be more than 0 and at most 600</source>
         <translation>%1：&quot;maxSeconds&quot; 必须大于 0 且不超过 600</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="392"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="404"/>
         <source>%1: &quot;light&quot; must be one of %2, each once</source>
         <translation>%1：&quot;light&quot; 必须是 %2 之一，且每个只能出现一次</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="395"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
         <source>%1: &quot;colour&quot; must be #rrggbb</source>
         <translation>%1：&quot;colour&quot; 必须为 #rrggbb</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="397"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="409"/>
         <source>%1: &quot;label&quot; and &quot;meaning&quot; must not be empty</source>
         <translation>%1：&quot;label&quot; 和 &quot;meaning&quot; 不能为空</translation>
     </message>
@@ -440,7 +450,7 @@
         <translation> 及另外 %1 个</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="26"/>
+        <location filename="../cli/TuneCommand.cpp" line="27"/>
         <source>not reached</source>
         <translation>未达到</translation>
     </message>
@@ -1065,124 +1075,150 @@ Remedy: %5</source>
         <translation>自整定…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="27"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="28"/>
         <source>Accept</source>
         <translation>接受</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="28"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="29"/>
         <source>Reject</source>
         <translation>拒绝</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="29"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="30"/>
         <source>Store in the drive</source>
         <translation>保存到驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="43"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="48"/>
         <source>Writes the proposed gains to the drive (temporary until stored) and offers a step test to compare with the prediction</source>
         <translation>将建议增益写入驱动器（保存前仅临时有效），并提供阶跃测试以与预测结果比较</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="45"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="50"/>
         <source>Writes back the gains the drive had before</source>
         <translation>将驱动器原来的增益写回</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="46"/>
-        <source>Stores the gains in the drive so that they survive a power cycle</source>
-        <translation>将增益保存到驱动器，重新上电后仍保留</translation>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="51"/>
+        <source>Stores the gains in the drive so that they survive a power cycle; asks first unless the step after Accept passed the check</source>
+        <translation>将增益保存到驱动器，重新上电后仍保留；接受后的阶跃未通过检查时，会先询问</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="51"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="57"/>
         <source>Operating speed:</source>
         <translation>运行速度：</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="52"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="58"/>
         <source>Relay amplitude:</source>
         <translation>继电器幅值：</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="53"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="59"/>
         <source>%</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="54"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
         <source>Rule:</source>
         <translation>整定规则：</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="58"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="64"/>
         <source>Present</source>
         <translation>当前</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="59"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="65"/>
         <source>Proposed</source>
         <translation>建议</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="66"/>
         <source>P</source>
         <translation>P</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="66"/>
         <source>I</source>
         <translation>I</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="66"/>
         <source>D</source>
         <translation>D</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="66"/>
         <source>D period</source>
         <translation>D 周期</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="106"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="113"/>
         <source>Enter an operating speed above 0 %1.</source>
         <translation>请输入大于 0 %1 的运行速度。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="110"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="117"/>
         <source>Enter a relay amplitude of 1–50 %.</source>
         <translation>请输入 1–50 % 的继电器幅值。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="123"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="130"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="183"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="138"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="145"/>
         <source>No autotune result yet.</source>
         <translation>尚无自整定结果。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="146"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="153"/>
         <source>Autotune failed: %1</source>
         <translation>自整定失败：%1</translation>
     </message>
     <message>
         <location filename="../ui/tuning/AutotunePanel.cpp" line="155"/>
-        <source>Ku %1 %/%2, Tu %3 ms</source>
-        <translation>Ku %1 %/%2，Tu %3 ms</translation>
+        <source>What to change: %1</source>
+        <translation>应更改的项目：%1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="158"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="165"/>
+        <source>Relay: Ku %1 %/%2, Tu %3 ms measured, %4 readings per period (one every %5 ms)</source>
+        <translation>继电器：Ku %1 %/%2，实测 Tu %3 ms，每周期读取 %4 次（每 %5 ms 一次）</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="175"/>
+        <source>The drive&apos;s own loop (model): Ku %1 %/%2, Tu %3 ms</source>
+        <translation>驱动器自身的环路（模型）：Ku %1 %/%2，Tu %3 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="180"/>
+        <source>Proposal: the rule&apos;s P × %1, Ti × %2; predicted overshoot %3 %, settling %4</source>
+        <translation>建议值：规则的 P × %1，Ti × %2；预测超调 %3 %，调节 %4</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="184"/>
+        <source>not within the record</source>
+        <translation>记录时间内未稳定</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="208"/>
+        <source>Check after Accept: passed.</source>
+        <translation>接受后的检查：通过。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="209"/>
+        <source>Check after Accept: FAILED. Reject writes back the gains the drive had.</source>
+        <translation>接受后的检查：未通过。按“拒绝”会写回驱动器原来的增益。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="171"/>
         <source>Model: K %1 %2/%, τ %3 ms, dead time %4 ms</source>
         <translation>模型：K %1 %2/%，τ %3 ms，纯滞后时间 %4 ms</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="163"/>
-        <source>No model: %1</source>
-        <translation>无模型：%1</translation>
     </message>
 </context>
 <context>
@@ -1214,8 +1250,8 @@ Remedy: %5</source>
     </message>
     <message>
         <location filename="../cli/BackupCommand.cpp" line="60"/>
-        <location filename="../cli/BackupCommand.cpp" line="220"/>
         <location filename="../cli/BackupCommand.cpp" line="226"/>
+        <location filename="../cli/BackupCommand.cpp" line="232"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
@@ -1225,63 +1261,68 @@ Remedy: %5</source>
         <translation>正在扫描总线上的驱动器…</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="99"/>
+        <location filename="../cli/BackupCommand.cpp" line="84"/>
+        <source>warning: machine number %1 answered, but its identification failed: it is not backed up; name it to try again (backup %1 -o FILE).</source>
+        <translation>警告：站号 %1 有应答，但识别失败：未备份它；请指定这个站号再试一次（backup %1 -o FILE）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/BackupCommand.cpp" line="105"/>
         <source>error: the port %1 was lost while reading %2 (%3)</source>
         <translation>错误：读取 %2 时端口 %1 丢失（%3）</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="102"/>
-        <location filename="../cli/BackupCommand.cpp" line="222"/>
+        <location filename="../cli/BackupCommand.cpp" line="108"/>
+        <location filename="../cli/BackupCommand.cpp" line="228"/>
         <source>nothing written to %1</source>
         <translation>未写入 %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="110"/>
+        <location filename="../cli/BackupCommand.cpp" line="116"/>
         <source>error: give the file to write: backup ID... -o FILE</source>
         <translation>错误：请指定要写入的文件：backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="114"/>
+        <location filename="../cli/BackupCommand.cpp" line="120"/>
         <source>error: %1; nothing read</source>
         <translation>错误：%1；未读取任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="126"/>
+        <location filename="../cli/BackupCommand.cpp" line="132"/>
         <source>interrupted: nothing written</source>
         <translation>已中断：未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="130"/>
+        <location filename="../cli/BackupCommand.cpp" line="136"/>
         <source>error: no drive answers on %1; nothing written</source>
         <translation>错误：%1 上没有驱动器应答；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="149"/>
+        <location filename="../cli/BackupCommand.cpp" line="155"/>
         <source>machine number %1</source>
         <translation>站号 %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="164"/>
+        <location filename="../cli/BackupCommand.cpp" line="170"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>读取站号 %1 时中断：未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="172"/>
+        <location filename="../cli/BackupCommand.cpp" line="178"/>
         <source>%1: cannot read %2</source>
         <translation>%1：无法读取 %2</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="174"/>
+        <location filename="../cli/BackupCommand.cpp" line="180"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1 含有其设备描述不允许的值，因此该备份无法恢复：%2</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="188"/>
+        <location filename="../cli/BackupCommand.cpp" line="194"/>
         <source>%1: %2 settings read in %3 requests, %4 ms</source>
         <translation>%1：%3 次请求读取 %2 项设定，%4 ms</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="195"/>
+        <location filename="../cli/BackupCommand.cpp" line="201"/>
         <source>%1: reading failed, %2 of %3 settings read (%4 requests, %5 ms)</source>
         <translation>%1：读取失败，已读取 %3 项设定中的 %2 项（%4 次请求，%5 ms）</translation>
     </message>
@@ -1297,150 +1338,150 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupDialog</name>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="27"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="28"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="28"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="29"/>
         <source>&amp;Save the drives read</source>
         <translation>保存已读取的驱动器(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="29"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="30"/>
         <source>C&amp;lose</source>
         <translation>关闭(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="31"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="32"/>
         <source>Back up drives</source>
         <translation>备份驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
         <source>Machine number</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
         <source>Progress</source>
         <translation>进度</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="40"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="41"/>
         <source>Save only the drives that were read; the others are left out</source>
         <translation>仅保存已读取的驱动器；其余的不保存</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="42"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="43"/>
         <source>Stop after the drive being read</source>
         <translation>读完当前驱动器后停止</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="87"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="89"/>
         <source>Waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="91"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="93"/>
         <source>%v of %m drives</source>
         <translation>%v / %m 台驱动器</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="92"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="94"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>正在读取 %n 台驱动器的设定…</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="102"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="104"/>
         <source>Stopping after the drive being read…</source>
         <translation>读完当前驱动器后停止…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="119"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="121"/>
         <source>Not read (cancelled)</source>
         <translation>未读取（已取消）</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="129"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="131"/>
         <source>drive %1: not identified, nothing read</source>
         <translation>驱动器 %1：未识别，未读取任何内容</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="130"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="132"/>
         <source>Not identified</source>
         <translation>未识别</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="138"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="140"/>
         <source>Reading…</source>
         <translation>正在读取…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="150"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="152"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>%1 ms 内读取了 %n 项设定</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="155"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="157"/>
         <source>%1: cannot read %2</source>
         <translation>%1：无法读取 %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="157"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="159"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1 含有其设备描述不允许的值，因此该备份无法恢复：%2</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="162"/>
         <source>Value not allowed</source>
         <translation>值不允许</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="162"/>
         <source>Read failed</source>
         <translation>读取失败</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="180"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="182"/>
         <source>Not read: drive(s) %1. Nothing has been saved yet.</source>
         <translation>未读取：驱动器 %1。尚未保存任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="186"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="188"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>保存已读取的 %n 台驱动器？</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="210"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="212"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>已将 %n 台驱动器保存到 %1。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="216"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="218"/>
         <source>Left out (not read): drive(s) %1.</source>
         <translation>未保存（未读取）：驱动器 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="220"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="222"/>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
     </message>
@@ -1607,87 +1648,87 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupViewer</name>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="22"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="23"/>
         <source>Backup file</source>
         <translation>备份文件</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
         <source>Label</source>
         <translation>标签</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
         <source>Registers</source>
         <translation>寄存器</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="34"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>&amp;Open…</source>
         <translation>打开(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="36"/>
         <source>Open another backup file</source>
         <translation>打开另一个备份文件</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="36"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="37"/>
         <source>C&amp;lose</source>
         <translation>关闭(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="56"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="58"/>
         <source>%1: no such file</source>
         <translation>%1：文件不存在</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="62"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="64"/>
         <source>the file could not be read</source>
         <translation>无法读取该文件</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="63"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="65"/>
         <source>Backup file %1</source>
         <translation>备份文件 %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="71"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="73"/>
         <source>Open backup file</source>
         <translation>打开备份文件</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="72"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="74"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 备份 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="94"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="96"/>
         <source>File: %1</source>
         <translation>文件：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="95"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="97"/>
         <source>Refused: %1</source>
         <translation>已拒绝：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="110"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="112"/>
         <source>, %1 bit/s, parity %2, %3 stop bit(s)</source>
         <translation>，%1 bit/s，校验位 %2，停止位 %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="112"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="114"/>
         <source>File: %1
 Written by %2 on %3 (UTC)
 Read from: %4
@@ -1698,17 +1739,17 @@ Drives: %5</source>
 驱动器：%5</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="121"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="123"/>
         <source>%1 %2, firmware %3</source>
         <translation>%1 %2，固件 %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="123"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="125"/>
         <source>(variant unknown)</source>
         <translation>（机型未知）</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupViewer.cpp" line="125"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="127"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n 项设定</numerusform>
@@ -1716,30 +1757,43 @@ Drives: %5</source>
     </message>
 </context>
 <context>
+    <name>opentop::BarHideButton</name>
+    <message>
+        <location filename="../ui/widgets/BarHideButton.cpp" line="9"/>
+        <source>Hide this bar</source>
+        <translation>隐藏此栏</translation>
+    </message>
+    <message>
+        <location filename="../ui/widgets/BarHideButton.cpp" line="10"/>
+        <source>Hide</source>
+        <translation>隐藏</translation>
+    </message>
+</context>
+<context>
     <name>opentop::BusDocks</name>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="26"/>
+        <location filename="../ui/main/BusDocks.cpp" line="27"/>
         <source>Traffic log</source>
         <translation>报文日志</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="33"/>
+        <location filename="../ui/main/BusDocks.cpp" line="34"/>
         <source>Bus overview</source>
         <translation>总线总览</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="34"/>
+        <location filename="../ui/main/BusDocks.cpp" line="35"/>
         <source>Trends</source>
         <translation>趋势</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="35"/>
+        <location filename="../ui/main/BusDocks.cpp" line="36"/>
         <source>Communication groups</source>
         <translation>通信组</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="38"/>
-        <location filename="../ui/main/BusDocks.cpp" line="70"/>
+        <location filename="../ui/main/BusDocks.cpp" line="39"/>
+        <location filename="../ui/main/BusDocks.cpp" line="77"/>
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
@@ -1796,94 +1850,110 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../ui/bus/BusListModel.cpp" line="75"/>
+        <source>Machine number: the drive&apos;s address on the bus (1–247)</source>
+        <translation>站号：驱动器在总线上的地址（1–247）</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="77"/>
         <source>The drive&apos;s MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, purple external interrupt, blue memory or communication error, grey no answer</source>
         <translation>驱动器的 MONITOR 指示灯：红色报警，绿色就绪，橙色 CW，天蓝色 CCW，紫色外部中断，蓝色存储器或通信错误，灰色无应答</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="82"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="84"/>
         <source>LED</source>
         <translation>LED</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="84"/>
-        <source>Machine no.</source>
+        <location filename="../ui/bus/BusListModel.cpp" line="86"/>
+        <source>No.</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="86"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
         <source>Hex / switches</source>
         <translation>十六进制 / 开关</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="88"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
         <source>Family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="90"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="92"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
         <source>Firmware</source>
         <translation>固件</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="94"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="97"/>
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="96"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="99"/>
         <source>Control priority</source>
         <translation>控制优先级</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="108"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="111"/>
         <source>Two drives may share machine number %1 (%2, %3): check the SW1/SW2 switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
         <translation>可能有两台驱动器共用站号 %1（%2、%3）：请检查线路上每台驱动器的 SW1/SW2 开关，为每台驱动器设定不同的站号并重新上电；终端电阻不当或 A/B 线接反也会导致应答出错。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="127"/>
         <location filename="../ui/bus/BusListModel.cpp" line="131"/>
+        <source>%1 at %2</source>
+        <translation>%1，%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
         <location filename="../ui/bus/BusListModel.cpp" line="133"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="137"/>
         <location filename="../ui/bus/BusListModel.cpp" line="139"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="145"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="130"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="136"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 机型未知</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="160"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="166"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>状态灯 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="164"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="170"/>
         <source>The drive&apos;s manual: %1</source>
         <translation>驱动器手册：%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="167"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="173"/>
         <source>Status light grey: not live — %1</source>
         <translation>状态灯灰色：非实时 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="172"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="178"/>
+        <source>Requests to this drive go out at %1, its own line format, not the port&apos;s: the line is switched to it and back between transactions. Change it with Line format… in the context menu.</source>
+        <translation>发往该驱动器的请求以它自己的通信格式 %1 发送，而不是端口的格式：线路在两次通信之间切换过去再切换回来。可在右键菜单的“通信格式…”中更改。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="185"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>该驱动器未报告其机型。请在右键菜单（机型）中选择，以便按正确的限值检查数值。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="181"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="194"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>该驱动器通过 I/O 端子接收运行命令；通过总线试运行需要通信优先级。</translation>
     </message>
@@ -1975,147 +2045,152 @@ Drives: %5</source>
 <context>
     <name>opentop::BusPanel</name>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="33"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="34"/>
         <source>&amp;Scan</source>
         <translation>扫描(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="36"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="37"/>
         <source>A&amp;dd drive…</source>
         <translation>添加驱动器(&amp;D)…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="38"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="39"/>
         <source>Ca&amp;ncel</source>
         <translation>取消(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="47"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="48"/>
         <source>Ask every machine number of the range who answers</source>
         <translation>逐个询问范围内的每个站号是否应答</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="49"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="50"/>
         <source>&amp;from</source>
         <translation>从(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="51"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="52"/>
         <source>&amp;to</source>
         <translation>到(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="56"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="57"/>
         <source>Machine numbers 1–247 (the DBU&apos;s SW1/SW2 switches in hex)</source>
         <translation>站号 1–247（DBU 的 SW1/SW2 开关，十六进制）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="73"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="74"/>
         <source>Identify one machine number and add it to the list</source>
         <translation>识别一个站号并将其添加到列表</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="78"/>
-        <location filename="../ui/bus/BusPanel.cpp" line="194"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="79"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="193"/>
         <source>%v of %m</source>
         <translation>%v / %m</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="79"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="80"/>
         <source>Scan progress</source>
         <translation>扫描进度</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="81"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="82"/>
         <source>Stop the scan after the request on the wire</source>
         <translation>在当前线路上的请求完成后停止扫描</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="90"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="91"/>
         <source>Rescan at %1</source>
         <translation>以 %1 重新扫描</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="124"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="118"/>
         <source>Drives on the bus</source>
         <translation>总线上的驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="185"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="179"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%v / %m（站号 %1）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="195"/>
-        <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
-        <translation>正在扫描 %3 上的站号 %1–%2，每个 %4 ms…</translation>
+        <location filename="../ui/bus/BusPanel.cpp" line="183"/>
+        <source>Machine number %1 answered, identification failed: retrying (%2 of %3)… Polling waits until the scan is over.</source>
+        <translation>站号 %1 有应答，但识别失败：正在重试（第 %2 次，共 %3 次）… 轮询将等到扫描结束。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="214"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="195"/>
+        <source>Scanning machine numbers %1–%2 on %3, %4 ms each… Polling waits until the scan is over.</source>
+        <translation>正在扫描 %3 上的站号 %1–%2，每个 %4 ms… 轮询将等到扫描结束。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="267"/>
+        <source>If one is on this bus, add it with Add drive and its line format.</source>
+        <translation>如果总线上有这种驱动器，请用“添加驱动器”连同它的通信格式添加。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="272"/>
+        <source>Machine number %1 answered, but its identification failed, also when asked again: add it by hand with Add drive…, or check its line settings and scan again.</source>
+        <translation>站号 %1 有应答，但识别失败，重新询问也一样：请用“添加驱动器…”手动添加，或检查它的通信设定后重新扫描。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="215"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>正在等待线路上的请求完成后取消…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="231"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="233"/>
         <source>Did not answer the last scan.</source>
         <translation>上次扫描未应答。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="237"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="239"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>扫描在站号 %1 处停止：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="242"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="244"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>在站号 %1–%2 后取消扫描（%4 个中的 %3 个）：找到 %n 台驱动器。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="250"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="252"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>在 %3 s 内于站号 %1–%2 上找到 %n 台驱动器。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="275"/>
-        <source>Add drive</source>
-        <translation>添加驱动器</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="275"/>
-        <source>Machine number (1–247; the DBU shows it in hex on SW1/SW2):</source>
-        <translation>站号（1–247；DBU 在 SW1/SW2 上以十六进制表示）：</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="285"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="293"/>
         <source>Asking machine number %1…</source>
         <translation>正在询问站号 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="290"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="298"/>
         <source>Machine number %1: %2 added.</source>
         <translation>站号 %1：已添加 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="292"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="300"/>
         <source>Machine number %1: %2 %3</source>
         <translation>站号 %1：%2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="350"/>
+        <location filename="../ui/bus/VariantMenu.cpp" line="26"/>
         <source>&amp;Variant</source>
         <translation>机型(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="366"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="349"/>
         <source>&amp;Identify again</source>
         <translation>重新识别(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="372"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="360"/>
         <source>&amp;Remove from list</source>
         <translation>从列表中移除(&amp;R)</translation>
     </message>
@@ -2128,32 +2203,22 @@ Drives: %5</source>
         <translation>扫描总线(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="28"/>
-        <source>Hide this bar</source>
-        <translation>隐藏此栏</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="29"/>
-        <source>Hide</source>
-        <translation>隐藏</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="42"/>
         <source>Last time on %1: %2.</source>
         <translation>上次在 %1 上：%2。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="48"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="44"/>
         <source>&amp;Restore the drive last seen</source>
         <translation>恢复上次识别到的驱动器(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="49"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="45"/>
         <source>&amp;Restore the %1 drives last seen</source>
         <translation>恢复上次识别到的 %1 台驱动器(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="50"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
         <source>Identify the drives at these machine numbers again, with the variants set last time</source>
         <translation>按上次设定的机型，重新识别这些站号上的驱动器</translation>
     </message>
@@ -2166,17 +2231,22 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="163"/>
+        <location filename="../model/bus/BusScanner.cpp" line="222"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
         <translation>两次应答报文损坏（%1）：可能有两台驱动器共用站号 %2；请检查它们的 SW1/SW2 开关</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="168"/>
+        <location filename="../model/bus/BusScanner.cpp" line="227"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>有应答，但没有匹配的设备描述（%1）</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="207"/>
+        <location filename="../model/bus/BusScanner.cpp" line="245"/>
+        <source>answered, but its identification read got no reply (%1), also when asked %2 more times: add it by hand, or scan with a longer wait</source>
+        <translation>有应答，但识别读取没有回复（%1），再询问 %2 次仍然如此：请手动添加，或用更长的等待时间重新扫描</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/BusScanner.cpp" line="311"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>首次应答较迟（超过 %1 ms 等待时间）；加长等待时间可使该总线的扫描更可靠</translation>
     </message>
@@ -2535,49 +2605,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../cli/CliContext.cpp" line="75"/>
-        <location filename="../cli/CliContext.cpp" line="89"/>
-        <location filename="../cli/CliContext.cpp" line="97"/>
+        <location filename="../cli/CliContext.cpp" line="90"/>
+        <location filename="../cli/CliContext.cpp" line="104"/>
+        <location filename="../cli/CliContext.cpp" line="112"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="102"/>
+        <location filename="../cli/CliContext.cpp" line="117"/>
         <source>serial line: %1</source>
         <translation>串行线路：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="126"/>
+        <location filename="../cli/CliContext.cpp" line="141"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="189"/>
+        <location filename="../cli/CliContext.cpp" line="204"/>
         <source>machine number %1: no connection</source>
         <translation>站号 %1：无连接</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="194"/>
+        <location filename="../cli/CliContext.cpp" line="209"/>
         <source>machine number %1: %2%3</source>
         <translation>站号 %1：%2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="248"/>
+        <location filename="../cli/CliContext.cpp" line="264"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1：&quot;%2&quot; 不是站号 1–247</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="252"/>
+        <location filename="../cli/CliContext.cpp" line="268"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1：&quot;%2&quot; 不是驱动器机型；请使用 %3 之一</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="270"/>
+        <location filename="../cli/CliContext.cpp" line="286"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; 不是站号 1–247，也不是 3-8 这样的范围</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="280"/>
+        <location filename="../cli/CliContext.cpp" line="296"/>
         <source>no machine number given</source>
         <translation>未指定站号</translation>
     </message>
@@ -2603,6 +2673,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <location filename="../model/profile/CodeTable.cpp" line="15"/>
         <source>—</source>
         <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/CodeTable.cpp" line="24"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/CodeTable.cpp" line="29"/>
+        <source>What to do: %1</source>
+        <translation>处理方法：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::CommandReadBack</name>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="42"/>
+        <source>Read back after the command at %1:</source>
+        <translation>%1 发送命令后回读：</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="45"/>
+        <source>The motor is running.</source>
+        <translation>电机正在运行。</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="45"/>
+        <source>The motor is stopped.</source>
+        <translation>电机已停止。</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="47"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="49"/>
+        <source>(not read: %1)</source>
+        <translation>（未读取：%1）</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="56"/>
+        <source>The drives of its communication group, read after the command:</source>
+        <translation>命令后读取的通信组驱动器：</translation>
     </message>
 </context>
 <context>
@@ -2709,162 +2822,162 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareDialog</name>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="32"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="33"/>
         <source>&amp;Differences only</source>
         <translation>仅显示差异(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="36"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="37"/>
         <source>Co&amp;mpare</source>
         <translation>比较(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="38"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="39"/>
         <source>Compare settings</source>
         <translation>比较设定</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="39"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="40"/>
         <source>Side A</source>
         <translation>A 侧</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="40"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="41"/>
         <source>Side B</source>
         <translation>B 侧</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
         <source>Setting</source>
         <translation>设定</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="54"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="55"/>
         <source>Filter by setting or parameter name</source>
         <translation>按设定名或参数名筛选</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="56"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
         <source>Read the chosen sides and compare them (drives are read fresh)</source>
         <translation>读取所选两侧并进行比较（驱动器会重新读取）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="66"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="67"/>
         <source>C&amp;lose</source>
         <translation>关闭(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="98"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="100"/>
         <source>%1 refused: %2</source>
         <translation>%1 已拒绝：%2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="112"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="114"/>
         <source>Reading…</source>
         <translation>正在读取…</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="137"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="139"/>
         <source>side A</source>
         <translation>A 侧</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="137"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="139"/>
         <source>side B</source>
         <translation>B 侧</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="141"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="143"/>
         <source>Factory defaults</source>
         <translation>出厂默认值</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="148"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="150"/>
         <source>Choose a backup file and a drive in it for %1.</source>
         <translation>请为%1选择一个备份文件及其中的一台驱动器。</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="152"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="154"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="162"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="164"/>
         <source>Choose an identified drive on the bus for %1.</source>
         <translation>请为%1选择总线上一台已识别的驱动器。</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="170"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="172"/>
         <source>%1: cannot read %2</source>
         <translation>%1：无法读取 %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="195"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="197"/>
         <source>Unknown family %1</source>
         <translation>未知系列 %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
         <source>A: %1</source>
         <translation>A：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="215"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="217"/>
         <source>B: %1</source>
         <translation>B：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="218"/>
         <source>factory defaults (%1)</source>
         <translation>出厂默认值（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="226"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="228"/>
         <source>(no documented default)</source>
         <translation>（无文档默认值）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
         <location filename="../ui/files/CompareDialog.cpp" line="229"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="231"/>
         <source>(not held)</source>
         <translation>（无此项）</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/CompareDialog.cpp" line="245"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="247"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n 处差异</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="246"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="248"/>
         <source> in %1 settings compared</source>
         <translation> （共比较 %1 项设定）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="249"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="251"/>
         <source>Note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="256"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="258"/>
         <source>No factory default documented (never counted as a difference): %1</source>
         <translation>无文档出厂默认值（不计为差异）：%1</translation>
     </message>
@@ -2953,173 +3066,173 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::ConnectionDialog</name>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="62"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="63"/>
         <source>Connect to a bus</source>
         <translation>连接总线</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="68"/>
         <source>&amp;Serial port</source>
         <translation>串口(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="68"/>
         <source>Modbus &amp;TCP gateway</source>
         <translation>Modbus TCP 网关(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="68"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="69"/>
         <source>Si&amp;mulated bus</source>
         <translation>模拟总线(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="84"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="85"/>
         <source>&amp;Advanced</source>
         <translation>高级(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="107"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="108"/>
         <source>&amp;Connect</source>
         <translation>连接(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="128"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="129"/>
         <source>&amp;Refresh</source>
         <translation>刷新(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="129"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="130"/>
         <source>List the serial ports again (after plugging in an adapter)</source>
         <translation>重新列出串口（插入适配器后）</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="134"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="135"/>
         <source>&amp;Port:</source>
         <translation>端口(&amp;P)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="143"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="144"/>
         <source>Custom</source>
         <translation>自定义</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="145"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="146"/>
         <source>%1 (%2 %3%4%5)</source>
         <translation>%1（%2 %3%4%5）</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="152"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="153"/>
         <source>Fills in the factory line settings of a drive family</source>
         <translation>填入该驱动器系列的出厂通信设定</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="155"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="156"/>
         <source>&amp;Family defaults:</source>
         <translation>系列默认值(&amp;F)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="159"/>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="289"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="160"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="293"/>
         <source>%1 bit/s</source>
         <translation>%1 bit/s</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="160"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="161"/>
         <source>&amp;Baud rate:</source>
         <translation>波特率(&amp;B)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="162"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
         <source>None (N)</source>
         <translation>无 (N)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
         <source>Even (E)</source>
         <translation>偶校验 (E)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="165"/>
         <source>Odd (O)</source>
         <translation>奇校验 (O)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="165"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="166"/>
         <source>P&amp;arity:</source>
         <translation>校验位(&amp;A)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="167"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
         <source>1 bit</source>
         <translation>1 位</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="169"/>
         <source>2 bits</source>
         <translation>2 位</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="169"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="170"/>
         <source>S&amp;top bits:</source>
         <translation>停止位(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="184"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="186"/>
         <source>e.g. 192.168.1.10</source>
         <translation>例如 192.168.1.10</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="185"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="187"/>
         <source>&amp;Host:</source>
         <translation>主机(&amp;H)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="188"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="190"/>
         <source>Modbus TCP uses port 502</source>
         <translation>Modbus TCP 使用端口 502</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="189"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="191"/>
         <source>TCP p&amp;ort:</source>
         <translation>TCP 端口(&amp;O)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="201"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="203"/>
         <source>Device types and machine numbers: TYPE@NUMBER, comma separated. Types: %1</source>
         <translation>设备类型和站号：TYPE@NUMBER，以逗号分隔。类型：%1</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="204"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="206"/>
         <source>&amp;Devices:</source>
         <translation>设备(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="218"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="220"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="219"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="221"/>
         <source>How long to wait for each reply</source>
         <translation>等待每个应答的时间</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="220"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="222"/>
         <source>Response &amp;timeout:</source>
         <translation>应答超时(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="223"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="225"/>
         <source>Extra attempts after a request got no valid reply</source>
         <translation>请求未获得有效应答后的额外尝试次数</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="224"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="226"/>
         <source>R&amp;etries:</source>
         <translation>重试次数(&amp;E)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="326"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="333"/>
         <source>The device list is not valid.</source>
         <translation>设备列表无效。</translation>
     </message>
@@ -3282,114 +3395,134 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="85"/>
-        <location filename="../connection/ConnectionOptions.cpp" line="91"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="96"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="87"/>
+        <source>Drives that talk another line format than the port&apos;s, switched to between transactions: ID=[BAUD:]FORMAT,... e.g. 7=9600:8E1 or 7=8N2 (BAUD defaults to the port&apos;s). A DBU works only at 8N1; a DC controller at 8E1, 8O1 or 8N2.</source>
+        <translation>使用与端口不同通信格式的驱动器，在两次通信之间切换：ID=[BAUD:]FORMAT,...，例如 7=9600:8E1 或 7=8N2（BAUD 默认为端口的波特率）。DBU 只能用 8N1；DC 控制器用 8E1、8O1 或 8N2。</translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="90"/>
+        <source>LIST</source>
+        <translation>LIST</translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="92"/>
         <source>Response timeout per attempt in ms, 10–10000 (default 200).</source>
         <translation>每次尝试的应答超时（ms），10–10000（默认 200）。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="87"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="92"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="89"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="94"/>
         <source>Extra attempts after no reply or a garbled one, 0–10 (default 3; 2 more while the line is noisy).</source>
         <translation>无应答或应答损坏后的额外尝试次数，0–10（默认 3；线路有干扰时再加 2 次）。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="93"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="98"/>
         <source>Who switches the RS-485 direction (serial port only): off (default: the adapter itself, as USB–RS-485 adapters do), kernel (the driver&apos;s RS-485 mode), rts (RTS from the program) or auto (kernel where the driver has it, else rts).</source>
         <translation>由谁切换 RS-485 收发方向（仅限串口）：off（默认：由适配器自行切换，USB–RS-485 适配器即如此）、kernel（驱动程序的 RS-485 模式）、rts（由程序控制 RTS）或 auto（驱动程序支持时用 kernel，否则用 rts）。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="96"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="101"/>
         <source>MODE</source>
         <translation>MODE</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="98"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
         <source>RTS level while sending with --rs485 kernel, rts or auto: high (default) or low.</source>
         <translation>使用 --rs485 kernel、rts 或 auto 时发送期间的 RTS 电平：high（默认）或 low。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="99"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="104"/>
         <source>high|low</source>
         <translation>high|low</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="101"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="106"/>
         <source>RTS delay before and after sending in µs, 0–100000 (default 0: the driver&apos;s, or libmodbus&apos; one character time; the kernel rounds up to whole ms).</source>
         <translation>发送前后的 RTS 延时（µs），0–100000（默认 0：使用驱动程序的延时，或 libmodbus 的 1 个字符时间；内核会向上取整到整 ms）。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="108"/>
         <source>US</source>
         <translation>US</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="105"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="110"/>
         <source>Ask the serial driver to pass received bytes on at once (USB adapters otherwise hold them up to 16 ms): on (default) or off.</source>
         <translation>要求串口驱动程序立即转交收到的字节（否则 USB 适配器最多会缓存 16 ms）：on（默认）或 off。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="107"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="112"/>
         <source>on|off</source>
         <translation>on|off</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="151"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="157"/>
         <source>give only one of --port, --tcp and --sim</source>
         <translation>--port、--tcp 和 --sim 只能指定其中一个</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="153"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="159"/>
         <source>no bus given: use --port PATH, --tcp HOST:PORT or --sim SPEC</source>
         <translation>未指定总线：请使用 --port PATH、--tcp HOST:PORT 或 --sim SPEC</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="162"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="168"/>
         <source>--family %1: unknown family; use one of %2</source>
         <translation>--family %1：未知系列；请使用 %2 之一</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="181"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="187"/>
         <source>--tcp: &quot;%1&quot; is not HOST:PORT</source>
         <translation>--tcp：&quot;%1&quot; 不是 HOST:PORT</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="190"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="196"/>
         <source>--sim: %1</source>
         <translation>--sim：%1</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="203"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="209"/>
         <source>--baud %1: use a baud rate 1200–115200 (e.g. 9600, 19200, 38400)</source>
         <translation>--baud %1：请使用 1200–115200 的波特率（例如 9600、19200、38400）</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="207"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="213"/>
         <source>--stop-bits %1: use 1 or 2</source>
         <translation>--stop-bits %1：请使用 1 或 2</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="209"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="215"/>
         <source>--timeout %1: use a response timeout of 10–10000 ms</source>
         <translation>--timeout %1：请使用 10–10000 ms 的应答超时</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="212"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="218"/>
         <source>--retries %1: use 0–10 extra attempts</source>
         <translation>--retries %1：请使用 0–10 次额外尝试</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="217"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="223"/>
         <source>--parity %1: use N (none), E (even) or O (odd)</source>
         <translation>--parity %1：请使用 N（无）、E（偶）或 O（奇）</translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="229"/>
+        <source>--drive-format applies to a serial port (--port) or a simulated bus, not to a Modbus TCP gateway (--tcp): the gateway sets its line itself</source>
+        <translation>--drive-format 适用于串口（--port）或模拟总线，不适用于 Modbus TCP 网关（--tcp）：网关自行设定它的线路</translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="236"/>
+        <source>--drive-format: %1</source>
+        <translation>--drive-format：%1</translation>
     </message>
 </context>
 <context>
@@ -3942,6 +4075,11 @@ Configuration changes written but not stored are discarded.</source>
         <source>unknown device</source>
         <translation>未知设备</translation>
     </message>
+    <message>
+        <location filename="../model/session/DeviceInfo.cpp" line="39"/>
+        <source>answered, identification failed</source>
+        <translation>有应答，识别失败</translation>
+    </message>
 </context>
 <context>
     <name>opentop::DeviceMonitor</name>
@@ -3989,73 +4127,190 @@ Configuration changes written but not stored are discarded.</source>
         <translation>%1 是命令，不是设定；命令仅在请求时逐条发送</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="227"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="239"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="250"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="262"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/session/DeviceParameters.cpp" line="273"/>
+        <source>%n write(s) failed: %1</source>
+        <translation>
+            <numerusform>%n 个写入失败：%1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/session/DeviceParameters.cpp" line="276"/>
+        <source>Written, but not verified on every drive it reached: %1</source>
+        <translation>已写入，但未能在所有收到的驱动器上确认：%1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/session/DeviceParameters.cpp" line="279"/>
+        <source>%n value(s) written and verified</source>
+        <translation>
+            <numerusform>%n 个值已写入并校验</numerusform>
+        </translation>
     </message>
 </context>
 <context>
     <name>opentop::DeviceSession</name>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="92"/>
+        <location filename="../model/session/DeviceSession.cpp" line="82"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 没有参数 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="101"/>
-        <location filename="../model/session/DeviceSession.cpp" line="165"/>
+        <location filename="../model/session/BlockReader.cpp" line="50"/>
+        <location filename="../model/session/DeviceSession.cpp" line="91"/>
         <source>%1 cannot be read (it is a write-only command)</source>
         <translation>无法读取 %1（它是只写命令）</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="236"/>
+        <location filename="../model/session/DeviceSession.cpp" line="139"/>
         <source>cannot check the value: reading %1 failed: %2</source>
         <translation>无法检查该值：读取 %1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="253"/>
+        <location filename="../model/session/DeviceSession.cpp" line="156"/>
         <source>%1 is read-only</source>
         <translation>%1 为只读</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="259"/>
+        <location filename="../model/session/DeviceSession.cpp" line="162"/>
         <source>%1 is a %2 command; it is only sent when explicitly requested</source>
         <translation>%1 是%2命令；仅在明确请求时才发送</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="289"/>
+        <location filename="../model/session/DeviceSession.cpp" line="192"/>
         <source>%1 cannot be checked: %2</source>
         <translation>无法检查 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="311"/>
+        <location filename="../model/session/DeviceSession.cpp" line="227"/>
         <source>reading %1 failed: %2</source>
         <translation>读取 %1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="339"/>
+        <location filename="../model/session/BlockWriter.cpp" line="28"/>
         <source>not written: %1 is written together with 0x%2–0x%3, and reading those first failed: %4</source>
         <translation>未写入：%1 需与 0x%2–0x%3 一起写入，而预先读取这些寄存器失败：%4</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="344"/>
+        <location filename="../model/session/BlockWriter.cpp" line="33"/>
         <source>short reply</source>
         <translation>应答过短</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="399"/>
+        <location filename="../model/session/DeviceSession.cpp" line="291"/>
         <source>written, but reading it back failed: %1</source>
         <translation>已写入，但回读失败：%1</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="408"/>
+        <location filename="../model/session/DeviceSession.cpp" line="300"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>校验失败：写入 %1，设备中为 %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="444"/>
+        <location filename="../model/session/DeviceRefusal.cpp" line="67"/>
         <source>error code %1</source>
         <translation>错误代码 %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::DriveFormatsField</name>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="28"/>
+        <source>none: every drive at the port&apos;s format</source>
+        <translation>无：所有驱动器都用端口的格式</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="30"/>
+        <source>Drives set to another line format than the port&apos;s, e.g. 7=9600:8E1 or 7=8N2 (the baud rate may be left out): requests to them switch the line to their format and back between transactions. A DBU works only at 8N1; a DC controller at 8E1, 8O1 or 8N2. The bus list&apos;s context menu sets them too.</source>
+        <translation>设为与端口不同通信格式的驱动器，例如 7=9600:8E1 或 7=8N2（波特率可省略）：发往它们的请求会在两次通信之间把线路切换到它们的格式再切换回来。DBU 只能用 8N1；DC 控制器用 8E1、8O1 或 8N2。总线列表的右键菜单也可设定。</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="36"/>
+        <source>&amp;Mixed bus…</source>
+        <translation>混合总线(&amp;M)…</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="37"/>
+        <source>How a drive of another format joins this bus</source>
+        <translation>不同格式的驱动器如何加入此总线</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="39"/>
+        <source>Drives of different line formats</source>
+        <translation>不同通信格式的驱动器</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="47"/>
+        <source>Drive f&amp;ormats:</source>
+        <translation>驱动器格式(&amp;O)：</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="68"/>
+        <source>Drive formats: %1</source>
+        <translation>驱动器格式：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="74"/>
+        <source>Every drive hears only frames sent in its own line format: a DBU works only at 8N1 (19200 bit/s from the factory), a DC controller at 8E1 (9600 bit/s from the factory), 8O1 or 8N2. OpenTOP can talk to drives of different formats on one port: give each drive that is not at the port&apos;s format its own (Drive formats here, or Line format… in the bus list&apos;s context menu); the port is switched between transactions. To put all drives at one format for good, change the drives:</source>
+        <translation>每台驱动器只能收到以它自己的通信格式发送的帧：DBU 只能用 8N1（出厂 19200 bit/s），DC 控制器用 8E1（出厂 9600 bit/s）、8O1 或 8N2。OpenTOP 可以在同一个端口上与不同格式的驱动器通信：为每台不是端口格式的驱动器设定它自己的格式（在这里的“驱动器格式”，或总线列表右键菜单的“通信格式…”）；端口会在两次通信之间切换。若要让所有驱动器长期使用同一种格式，请更改驱动器的设定：</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::DriveLineDialog</name>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="28"/>
+        <source>Line format of machine number %1</source>
+        <translation>站号 %1 的通信格式</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="28"/>
+        <source>Add drive</source>
+        <translation>添加驱动器</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="36"/>
+        <source>&amp;Machine number:</source>
+        <translation>站号(&amp;M)：</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="44"/>
+        <source>The port&apos;s (%1)</source>
+        <translation>端口的格式（%1）</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="56"/>
+        <source>The baud rate and format the drive is set to: requests to it switch the port to it and back between transactions. Type another as 38400 8E1.</source>
+        <translation>驱动器设定的波特率和格式：发往它的请求会在两次通信之间把端口切换过去再切换回来。其他格式可输入，例如 38400 8E1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="59"/>
+        <source>&amp;Line format:</source>
+        <translation>通信格式(&amp;L)：</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="67"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="140"/>
+        <source>Line &amp;format…</source>
+        <translation>通信格式(&amp;F)…</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="145"/>
+        <source>Machine number %1 talks %2, not the port&apos;s %3</source>
+        <translation>站号 %1 使用 %2，而不是端口的 %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="148"/>
+        <source>Machine number %1 talks the port&apos;s %2</source>
+        <translation>站号 %1 使用端口的 %2</translation>
     </message>
 </context>
 <context>
@@ -4094,116 +4349,117 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveStatusPoller</name>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="31"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="32"/>
         <source>not polled yet</source>
         <translation>尚未轮询</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="33"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="34"/>
         <source>online</source>
         <translation>在线</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="35"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="36"/>
         <source>no answer (%n poll(s) in a row)</source>
         <translation>
             <numerusform>无应答（连续 %n 次轮询）</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="37"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="38"/>
         <source>communication error (%n in a row)</source>
         <translation>
             <numerusform>通信错误（连续 %n 次）</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="43"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="44"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="56"/>
         <source>Status not known yet</source>
         <translation>状态未知</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="45"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="46"/>
         <source>No answer: %1</source>
         <translation>无应答：%1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="48"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="59"/>
         <source>Alarm %1 %2</source>
         <translation>报警 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="50"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="61"/>
         <source>Alarm %1h (not in the alarm table)</source>
         <translation>报警 %1h（不在报警表中）</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="52"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="63"/>
         <source>Alarm active</source>
         <translation>报警中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="55"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="49"/>
         <source>Communication error: %1</source>
         <translation>通信错误：%1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="58"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="67"/>
         <source>Running</source>
         <translation>运行中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="59"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="68"/>
         <source>Running CCW</source>
         <translation>CCW 运行中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="60"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="69"/>
         <source>Running CW</source>
         <translation>CW 运行中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="62"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="71"/>
         <source>Stopped, no alarm</source>
         <translation>已停止，无报警</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="69"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="78"/>
         <source>grey</source>
         <translation>灰色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="71"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="80"/>
         <source>green</source>
         <translation>绿色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="73"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="82"/>
         <source>orange</source>
         <translation>橙色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="75"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="84"/>
         <source>sky blue</source>
         <translation>天蓝色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="77"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="86"/>
         <source>red</source>
         <translation>红色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="79"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="88"/>
         <source>purple</source>
         <translation>紫色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="81"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="90"/>
         <source>blue</source>
         <translation>蓝色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="118"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="127"/>
         <source>%1; %2</source>
         <translation>%1；%2</translation>
     </message>
@@ -4212,7 +4468,7 @@ Configuration changes written but not stored are discarded.</source>
     <name>opentop::DriveWorkspace</name>
     <message>
         <location filename="../ui/workspace/DriveWorkspace.cpp" line="33"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="133"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="135"/>
         <source>Write &amp;all pending</source>
         <translation>写入全部待写入项(&amp;A)</translation>
     </message>
@@ -4237,63 +4493,49 @@ Configuration changes written but not stored are discarded.</source>
         <translation>在总线列表中选择一台驱动器进行设定。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="132"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="134"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>写入全部待写入项(&amp;A)（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="154"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="156"/>
         <source>Reading the drive…</source>
         <translation>正在读取驱动器…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="156"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="158"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 个值无法读取</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="168"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="170"/>
         <source>Nothing was written: %1</source>
         <translation>未写入任何内容：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="181"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="183"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1：%2 未写入任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="189"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="191"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>向站号 %1 写入 %n 个待写入值</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="191"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="193"/>
         <source>Nothing was written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="194"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="196"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>正在写入 %n 个值…</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="196"/>
-        <source>%n write(s) failed; see the marked fields</source>
-        <translation>
-            <numerusform>%n 项写入失败；请查看标记的字段</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="197"/>
-        <source>%n value(s) written and verified</source>
-        <translation>
-            <numerusform>%n 个值已写入并校验</numerusform>
         </translation>
     </message>
 </context>
@@ -5781,27 +6023,32 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::ExitActions</name>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="34"/>
+        <location filename="../model/run/ExitActions.cpp" line="50"/>
+        <source>Machine number %1: left in communication priority, as it was not confirmed stopped</source>
+        <translation>站号 %1：未确认已停止，因此仍保持通信优先级</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitActions.cpp" line="75"/>
         <source>The stop broadcast to the %1 drives failed: %2</source>
         <translation>向 %1 台驱动器广播停止失败：%2</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="38"/>
+        <location filename="../model/run/ExitActions.cpp" line="81"/>
         <source>Machine number %1: STILL RUNNING (%2) %3</source>
         <translation>站号 %1：仍在运行（%2）%3</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="43"/>
+        <location filename="../model/run/ExitActions.cpp" line="86"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped %2</source>
         <translation>站号 %1：无应答，未确认已停止 %2</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="68"/>
+        <location filename="../model/run/ExitActions.cpp" line="111"/>
         <source>Machine number %1: no way to give control back to its inputs is known</source>
         <translation>站号 %1：没有已知的方法将控制权交还其输入端子</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="80"/>
+        <location filename="../model/run/ExitActions.cpp" line="123"/>
         <source>Machine number %1: %2</source>
         <translation>站号 %1：%2</translation>
     </message>
@@ -5822,104 +6069,168 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::ExitGuard</name>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="44"/>
-        <source>Drives left in communication priority</source>
-        <translation>驱动器仍处于通信优先级</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="44"/>
-        <source>Drives are running</source>
-        <translation>驱动器正在运行</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="46"/>
-        <source>Before you %1: these drives are left in communication priority.</source>
-        <translation>%1之前：这些驱动器仍处于通信优先级。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="47"/>
-        <source>Before you %1: these drives are running or left in communication priority.</source>
-        <translation>%1之前：这些驱动器正在运行或仍处于通信优先级。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="51"/>
-        <source>In communication priority a drive takes run and stop only from the bus: once OpenTOP lets go, only another bus master or switching its power off stops it.</source>
-        <translation>在通信优先级下，驱动器只接受来自总线的运行和停止命令：OpenTOP 释放后，只有其他总线主站或切断其电源才能使其停止。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="55"/>
-        <source>&quot;Stop&quot; broadcasts every family&apos;s stop command to the whole bus and checks that each drive above has stopped.</source>
-        <translation>“停止”会向整条总线广播所有系列的停止命令，并检查上述每台驱动器是否已停止。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="59"/>
-        <source>&quot;Give control back&quot; sets I/O priority, so the machine&apos;s own inputs run the drives again.</source>
-        <translation>“交还控制权”会设定为 I/O 优先级，使设备自身的输入端子重新控制驱动器运行。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="63"/>
-        <source>Stop the drives</source>
-        <translation>停止驱动器</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="67"/>
-        <source>Give control back (I/O priority)</source>
-        <translation>交还控制权（I/O 优先级）</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="69"/>
-        <source>Leave them so</source>
-        <translation>保持现状</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="69"/>
-        <source>Leave them running</source>
-        <translation>保持运行</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="71"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="96"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="88"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="131"/>
+        <source>Stopping the drives, then giving control back to their inputs…</source>
+        <translation>正在停止驱动器，然后将控制权交还其输入端子…</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/ExitGuard.cpp" line="132"/>
         <source>Stopping the drives…</source>
         <translation>正在停止驱动器…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="88"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="129"/>
         <source>Giving control back to the drives&apos; inputs…</source>
         <translation>正在将控制权交还驱动器的输入端子…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="97"/>
-        <source>stop</source>
-        <translation>停止</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="97"/>
-        <source>give control back</source>
-        <translation>交还控制权</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="113"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="156"/>
         <source>Not every drive is safe</source>
         <translation>并非所有驱动器都处于安全状态</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="114"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="157"/>
         <source>Could not %1 every drive:</source>
         <translation>以下驱动器未能%1：</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="116"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="159"/>
         <source>Stay connected</source>
         <translation>保持连接</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="117"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="160"/>
         <source>Go on anyway</source>
         <translation>仍然继续</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ExitPlan</name>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="55"/>
+        <source>Stop and give control back</source>
+        <translation>停止并交还控制权</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="56"/>
+        <source>Stop the drives</source>
+        <translation>停止驱动器</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="56"/>
+        <source>Give control back (I/O priority)</source>
+        <translation>交还控制权（I/O 优先级）</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="58"/>
+        <source>Give control back only</source>
+        <translation>仅交还控制权</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="60"/>
+        <source>Leave them running</source>
+        <translation>保持运行</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="60"/>
+        <source>Leave them so</source>
+        <translation>保持现状</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="70"/>
+        <location filename="../model/run/ExitPlan.cpp" line="73"/>
+        <source>give control back to</source>
+        <translation>交还控制权</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="71"/>
+        <source>stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="71"/>
+        <source>stop and give control back to</source>
+        <translation>停止并交还控制权</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="82"/>
+        <source>Drives are running</source>
+        <translation>驱动器正在运行</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="82"/>
+        <source>Drives left in communication priority</source>
+        <translation>驱动器仍处于通信优先级</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="88"/>
+        <source>Before you %1: these drives are left in communication priority.</source>
+        <translation>%1之前：这些驱动器仍处于通信优先级。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="89"/>
+        <source>Before you %1: these drives are running or left in communication priority.</source>
+        <translation>%1之前：这些驱动器正在运行或仍处于通信优先级。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="101"/>
+        <source>left as it is: it runs from its own inputs (I/O priority), which a stop over the bus does not override</source>
+        <translation>保持现状：它按自身的输入端子运行（I/O 优先级），通过总线发送的停止命令无法改变</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="104"/>
+        <source>stopped (confirmed by reading it), then given back to its own inputs (I/O priority, read back)</source>
+        <translation>停止（读取确认），然后交还其自身的输入端子（I/O 优先级，回读确认）</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="107"/>
+        <source>stopped (confirmed by reading it); its family has no I/O priority setting, so it stays under the bus&apos;s control</source>
+        <translation>停止（读取确认）；该系列没有 I/O 优先级设定，因此仍由总线控制</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="110"/>
+        <source>stopped (confirmed by reading it)</source>
+        <translation>停止（读取确认）</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="112"/>
+        <source>given back to its own inputs (I/O priority, read back)</source>
+        <translation>交还其自身的输入端子（I/O 优先级，回读确认）</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="114"/>
+        <source>left as it is: no way to give control back to its inputs is known</source>
+        <translation>保持现状：没有已知的方法将控制权交还其输入端子</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="115"/>
+        <source>   → %1</source>
+        <translation>   → %1</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="122"/>
+        <source>In communication priority a drive takes run and stop only from the bus: once OpenTOP lets go, only another bus master or switching its power off stops it.</source>
+        <translation>在通信优先级下，驱动器只接受来自总线的运行和停止命令：OpenTOP 释放后，只有其他总线主站或切断其电源才能使其停止。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="126"/>
+        <source>Stopping broadcasts every family&apos;s stop command to the whole bus and checks that each drive above has stopped; a drive that has not stopped is not given back to its inputs.</source>
+        <translation>停止时会向整条总线广播所有系列的停止命令，并检查上述每台驱动器是否已停止；未停止的驱动器不会交还其输入端子。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="131"/>
+        <source>&quot;Give control back only&quot; sets I/O priority without a stop: the machine&apos;s own inputs decide at once whether the drives run.</source>
+        <translation>“仅交还控制权”不先停止，直接设定为 I/O 优先级：由设备自身的输入端子立即决定驱动器是否运行。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="135"/>
+        <source>&quot;Give control back&quot; sets I/O priority, so the machine&apos;s own inputs run the drives again.</source>
+        <translation>“交还控制权”会设定为 I/O 优先级，使设备自身的输入端子重新控制驱动器运行。</translation>
     </message>
 </context>
 <context>
@@ -6076,6 +6387,24 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
     </message>
 </context>
 <context>
+    <name>opentop::GainDesign</name>
+    <message>
+        <location filename="../model/tuning/GainDesign.cpp" line="21"/>
+        <source>the model has no ultimate point</source>
+        <translation>模型没有临界点</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/GainDesign.cpp" line="55"/>
+        <source>no gains from the %1 rule settle within %2 ms with at most %3 % overshoot on the motor&apos;s model, even with P at a tenth of the rule&apos;s</source>
+        <translation>即使将 P 降到规则值的十分之一，%1 规则的增益在电机模型上也无法在 %2 ms 内以不超过 %3 % 的超调稳定</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/GainDesign.cpp" line="60"/>
+        <source>Try a rule that allows more overshoot or a smaller step (a lower operating speed), or raise the drive&apos;s current limit if the motor allows it.</source>
+        <translation>请改用允许较大超调的规则或较小的阶跃（较低的运行速度）；若电机允许，也可提高驱动器的电流限值。</translation>
+    </message>
+</context>
+<context>
     <name>opentop::GetCommand</name>
     <message>
         <location filename="../cli/GetCommand.cpp" line="43"/>
@@ -6214,65 +6543,163 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::GroupCheck</name>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="56"/>
-        <location filename="../cli/GroupCheck.cpp" line="95"/>
+        <location filename="../cli/GroupCheck.cpp" line="62"/>
+        <location filename="../cli/GroupCheck.cpp" line="106"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="66"/>
+        <location filename="../cli/GroupCheck.cpp" line="72"/>
         <source>note: the other drives on the bus are not known, so drives in communication group %1 (which also execute what is sent to %1) were not looked for; name them with --bus-drives LIST or OPENTOP_BUS_DRIVES</source>
         <translation>注意：总线上的其他驱动器未知，因此未查找通信组 %1 中的驱动器（它们也会执行发往 %1 的内容）；请用 --bus-drives LIST 或 OPENTOP_BUS_DRIVES 指定</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="87"/>
+        <location filename="../cli/GroupCheck.cpp" line="93"/>
         <source>warning: the communication group of %1 could not be read</source>
         <translation>警告：无法读取 %1 的通信组</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="95"/>
+        <location filename="../cli/GroupCheck.cpp" line="106"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="98"/>
+        <location filename="../cli/GroupCheck.cpp" line="109"/>
         <source>add --yes to send it to all of %1 and %2; nothing was sent</source>
         <translation>加上 --yes 才会发送给 %1 和 %2 全部；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="128"/>
+        <location filename="../cli/GroupCheck.cpp" line="144"/>
         <source>not readable</source>
         <translation>不可读</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="139"/>
+        <location filename="../cli/GroupCheck.cpp" line="168"/>
         <source>Read back from the drives of the group:</source>
         <translation>从该组的驱动器回读：</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="143"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="172"/>
         <source>(not read: %1)</source>
         <translation>（未读取：%1）</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="188"/>
+        <location filename="../cli/GroupCheck.cpp" line="173"/>
+        <source>verified</source>
+        <translation>已确认</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="174"/>
+        <source>DIFFERS from what was written</source>
+        <translation>与写入值不同</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="175"/>
+        <source>not verified</source>
+        <translation>未确认</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="223"/>
         <source>off</source>
         <translation>关闭</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::GroupFollowers</name>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="76"/>
+        <source>could not be read</source>
+        <translation>无法读取</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="106"/>
+        <source>its control priority could not be read</source>
+        <translation>无法读取其控制优先级</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="108"/>
+        <source>it is in %1: it takes run commands only from its input terminals and ignores them over the bus</source>
+        <translation>它处于 %1：只接受输入端子的运行命令，会忽略通过通信发送的运行命令</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="112"/>
+        <source>an alarm is active: it runs only once the alarm is cleared</source>
+        <translation>有报警：报警清除后才会运行</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="126"/>
+        <source>error code %1h</source>
+        <translation>错误代码 %1h</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="146"/>
+        <source>Machine number %1 follows it.</source>
+        <translation>站号 %1 会跟随。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="147"/>
+        <source>Machine number %1 follows it (%2).</source>
+        <translation>站号 %1 会跟随（%2）。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="149"/>
+        <source>Machine number %1: not known whether it follows: %2.</source>
+        <translation>站号 %1：不确定是否会跟随：%2。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="153"/>
+        <source>Machine number %1 does NOT follow it: %2. To run it with this drive, set its control priority to communication priority; otherwise it shows E2h &quot;Cannot execute command&quot;.</source>
+        <translation>站号 %1 不会跟随：%2。若要与此驱动器一起运行，请将其控制优先级设为通信优先级；否则它会显示 E2h“无法执行命令”。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="168"/>
+        <source>Machine number %1: its run state could not be read.</source>
+        <translation>站号 %1：无法读取其运行状态。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="170"/>
+        <source>Machine number %1 runs.</source>
+        <translation>站号 %1 正在运行。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="171"/>
+        <source>Machine number %1 runs (%2).</source>
+        <translation>站号 %1 正在运行（%2）。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="173"/>
+        <source>Machine number %1 does not run: %2.</source>
+        <translation>站号 %1 没有运行：%2。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="175"/>
+        <source>Machine number %1 does not run.</source>
+        <translation>站号 %1 没有运行。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="177"/>
+        <source>It shows %1</source>
+        <translation>它显示 %1</translation>
     </message>
 </context>
 <context>
@@ -6811,6 +7238,137 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
     </message>
 </context>
 <context>
+    <name>opentop::LineFormat</name>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="37"/>
+        <source>Baud rate %1 is not supported: use 1200–115200.</source>
+        <translation>不支持波特率 %1：请使用 1200–115200。</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="39"/>
+        <source>Parity &apos;%1&apos; is not supported: use N (none), E (even) or O (odd).</source>
+        <translation>不支持校验位“%1”：请使用 N（无）、E（偶）或 O（奇）。</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="42"/>
+        <source>%1 data bits are not supported: use 7 or 8.</source>
+        <translation>不支持 %1 位数据位：请使用 7 或 8。</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="44"/>
+        <source>%1 stop bits are not supported: use 1 or 2.</source>
+        <translation>不支持 %1 位停止位：请使用 1 或 2。</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="66"/>
+        <source>&quot;%1&quot; is not a line format: write DATA BITS, PARITY and STOP BITS as 8N1, 8E1, 8O1 or 8N2, with the baud rate before it if it differs from the port&apos;s (9600:8E1)</source>
+        <translation>“%1”不是通信格式：请按数据位、校验位、停止位写成 8N1、8E1、8O1 或 8N2，如果波特率与端口不同，写在前面（9600:8E1）</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="81"/>
+        <source>&quot;%1&quot;: %2</source>
+        <translation>“%1”：%2</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="98"/>
+        <source>&quot;%1&quot;: write MACHINE NUMBER=FORMAT, e.g. 7=9600:8E1 or 7=8N2 (machine numbers 1–247)</source>
+        <translation>“%1”：请写成 站号=格式，例如 7=9600:8E1 或 7=8N2（站号 1–247）</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="107"/>
+        <source>machine number %1: %2</source>
+        <translation>站号 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::LineFormatHint</name>
+    <message>
+        <location filename="../model/bus/LineFormatHint.cpp" line="72"/>
+        <source>%1: %2 from the factory (it can be set to %3).</source>
+        <translation>%1：出厂为 %2（可设为 %3）。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/LineFormatHint.cpp" line="77"/>
+        <source>Drives set to another line format than %1 do not answer it. %2</source>
+        <translation>设为 %1 以外通信格式的驱动器不会应答。%2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::LinkLoss</name>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="31"/>
+        <source>Machine number %1 (%2): state never read</source>
+        <translation>站号 %1（%2）：状态从未读取</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="46"/>
+        <source>The connection to %1 was lost at %2.</source>
+        <translation>与 %1 的连接于 %2 丢失。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="54"/>
+        <source>• %1 — last answer %2 (%3 when the link dropped)</source>
+        <translation>• %1 — 最后应答 %2（连接丢失时为 %3）</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="61"/>
+        <source>By the last values read, no drive was running or in communication priority.</source>
+        <translation>根据最后读取的数值，没有驱动器在运行或处于通信优先级。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="62"/>
+        <source>When the link dropped, by the last values read:</source>
+        <translation>连接丢失时，根据最后读取的数值：</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="70"/>
+        <source>OpenTOP cannot stop these drives or give control back to their inputs until the link is back: nothing is sent over a lost link. A drive in communication priority keeps its last command. Check on the machine: each drive&apos;s own STOP input, the emergency stop, and the drives&apos; power.</source>
+        <translation>在连接恢复之前，OpenTOP 无法停止这些驱动器，也无法将控制权交还其输入端子：丢失的连接上不会发送任何数据。处于通信优先级的驱动器会保持最后的命令。请在设备上检查：每台驱动器自身的停止输入端子、急停以及驱动器的电源。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="78"/>
+        <source>Before you %1: the connection to %2 was lost at %3, and OpenTOP cannot reach these drives.</source>
+        <translation>%1之前：与 %2 的连接已于 %3 丢失，OpenTOP 无法访问这些驱动器。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="96"/>
+        <source>Running when it dropped, by the last values read: machine number %1.</source>
+        <translation>丢失时根据最后读取的数值正在运行：站号 %1。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="99"/>
+        <source>In communication priority: machine number %1.</source>
+        <translation>处于通信优先级：站号 %1。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/run/LinkLoss.cpp" line="102"/>
+        <source>%n drive(s) never read.</source>
+        <translation>
+            <numerusform>%n 台驱动器从未读取。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="104"/>
+        <source>OpenTOP cannot stop them until the link is back: check each drive&apos;s STOP input, the emergency stop and the power on the machine.</source>
+        <translation>在连接恢复之前，OpenTOP 无法停止它们：请在设备上检查每台驱动器的停止输入端子、急停和电源。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="118"/>
+        <source>Machine number %1 (%2): no answer, its state is not known</source>
+        <translation>站号 %1（%2）：无应答，状态未知</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="126"/>
+        <source>Every drive read again: none is running or in communication priority.</source>
+        <translation>已重新读取所有驱动器：没有驱动器在运行或处于通信优先级。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="127"/>
+        <source>Read again just now:</source>
+        <translation>刚刚重新读取：</translation>
+    </message>
+</context>
+<context>
     <name>opentop::MainMenus</name>
     <message>
         <location filename="../ui/main/MainMenus.cpp" line="35"/>
@@ -6833,122 +7391,122 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <translation>选择串口、网关或模拟总线（Ctrl+K）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="43"/>
+        <location filename="../ui/main/MainMenus.cpp" line="45"/>
         <source>&amp;Scan bus</source>
         <translation>扫描总线(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="49"/>
+        <location filename="../ui/main/MainMenus.cpp" line="51"/>
         <source>&amp;Disconnect</source>
         <translation>断开连接(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="53"/>
+        <location filename="../ui/main/MainMenus.cpp" line="55"/>
         <source>Communication &amp;groups…</source>
         <translation>通信组(&amp;G)…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="57"/>
+        <location filename="../ui/main/MainMenus.cpp" line="59"/>
         <source>&amp;Export alarm histories…</source>
         <translation>导出报警履历(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="59"/>
+        <location filename="../ui/main/MainMenus.cpp" line="61"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="62"/>
+        <location filename="../ui/main/MainMenus.cpp" line="64"/>
         <source>&amp;Files</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="67"/>
+        <location filename="../ui/main/MainMenus.cpp" line="69"/>
         <source>&amp;Drive</source>
         <translation>驱动器(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="70"/>
+        <location filename="../ui/main/MainMenus.cpp" line="72"/>
         <source>&amp;Write all pending</source>
         <translation>写入全部待写入项(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="72"/>
+        <location filename="../ui/main/MainMenus.cpp" line="74"/>
         <source>&amp;Re-read all</source>
         <translation>全部重新读取(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="74"/>
+        <location filename="../ui/main/MainMenus.cpp" line="76"/>
         <source>Write a setting to the selected drives…</source>
         <translation>向所选驱动器写入一项设定…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="80"/>
+        <location filename="../ui/main/MainMenus.cpp" line="82"/>
         <source>&amp;Next page</source>
         <translation>下一页(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="86"/>
+        <location filename="../ui/main/MainMenus.cpp" line="88"/>
         <source>&amp;Previous page</source>
         <translation>上一页(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="100"/>
+        <location filename="../ui/main/MainMenus.cpp" line="104"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="106"/>
+        <location filename="../ui/main/MainMenus.cpp" line="110"/>
         <source>&amp;Traffic log</source>
         <translation>报文日志(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="107"/>
+        <location filename="../ui/main/MainMenus.cpp" line="111"/>
         <source>Bus &amp;overview</source>
         <translation>总线总览(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="109"/>
+        <location filename="../ui/main/MainMenus.cpp" line="113"/>
         <source>T&amp;rends</source>
         <translation>趋势(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="110"/>
+        <location filename="../ui/main/MainMenus.cpp" line="114"/>
         <source>Communication &amp;groups</source>
         <translation>通信组(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="124"/>
+        <location filename="../ui/main/MainMenus.cpp" line="128"/>
         <source>Language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="125"/>
+        <location filename="../ui/main/MainMenus.cpp" line="129"/>
         <source>OpenTOP will be in %1 the next time it starts.</source>
         <translation>OpenTOP 下次启动时将以 %1 显示。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="131"/>
+        <location filename="../ui/main/MainMenus.cpp" line="135"/>
         <source>&amp;End of line</source>
         <translation>下线检测(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="133"/>
+        <location filename="../ui/main/MainMenus.cpp" line="137"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="146"/>
+        <location filename="../ui/main/MainMenus.cpp" line="153"/>
         <source>connect elsewhere</source>
         <translation>连接到其他总线</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="156"/>
+        <location filename="../ui/main/MainMenus.cpp" line="163"/>
         <source>Export alarm histories</source>
         <translation>导出报警履历</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="157"/>
+        <location filename="../ui/main/MainMenus.cpp" line="164"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
@@ -6956,33 +7514,33 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="52"/>
+        <location filename="../ui/main/MainWindow.cpp" line="54"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="134"/>
+        <location filename="../ui/main/MainWindow.cpp" line="138"/>
         <source>connect elsewhere</source>
         <translation>连接到其他总线</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="157"/>
+        <location filename="../ui/main/MainWindow.cpp" line="161"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>正在连接 %1…（仍连接着 %2）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="196"/>
+        <location filename="../ui/main/MainWindow.cpp" line="200"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>已连接：%1（新连接失败：%2）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="199"/>
-        <location filename="../ui/main/MainWindow.cpp" line="212"/>
+        <location filename="../ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="217"/>
         <source>Cannot connect</source>
         <translation>无法连接</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="200"/>
+        <location filename="../ui/main/MainWindow.cpp" line="204"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -6991,81 +7549,76 @@ Still connected to %2; nothing was changed.</source>
 仍连接着 %2；未作任何更改。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="203"/>
-        <location filename="../ui/main/MainWindow.cpp" line="324"/>
+        <location filename="../ui/main/MainWindow.cpp" line="207"/>
+        <location filename="../ui/main/MainWindow.cpp" line="330"/>
         <source>Not connected: %1</source>
         <translation>未连接：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="261"/>
+        <location filename="../ui/main/MainWindow.cpp" line="269"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>通信组：%1（总线 › 通信组）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="292"/>
-        <location filename="../ui/main/MainWindow.cpp" line="294"/>
+        <location filename="../ui/main/MainWindow.cpp" line="300"/>
+        <location filename="../ui/main/MainWindow.cpp" line="302"/>
         <source>Connection lost: %1</source>
         <translation>连接丢失：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="295"/>
-        <source>Connection lost</source>
-        <translation>连接丢失</translation>
-    </message>
-    <message>
-        <location filename="../ui/main/MainWindow.cpp" line="303"/>
+        <location filename="../ui/main/MainWindow.cpp" line="307"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 模拟总线（无硬件）— %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="304"/>
+        <location filename="../ui/main/MainWindow.cpp" line="308"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="305"/>
+        <location filename="../ui/main/MainWindow.cpp" line="309"/>
         <source>Connecting to %1…</source>
         <translation>正在连接 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="323"/>
+        <location filename="../ui/main/MainWindow.cpp" line="329"/>
         <source>Connected: %1</source>
         <translation>已连接：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="330"/>
+        <location filename="../ui/main/MainWindow.cpp" line="336"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>已连接：%1（模拟，无硬件）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="357"/>
+        <location filename="../ui/main/MainWindow.cpp" line="364"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>驱动器未报告其机型；%1 为所设定的机型。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="387"/>
-        <location filename="../ui/main/MainWindow.cpp" line="398"/>
+        <location filename="../ui/main/MainWindow.cpp" line="394"/>
+        <location filename="../ui/main/MainWindow.cpp" line="404"/>
         <source>disconnect</source>
         <translation>断开连接</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="394"/>
+        <location filename="../ui/main/MainWindow.cpp" line="401"/>
         <source>Not connected (disconnected)</source>
         <translation>未连接（已断开）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="405"/>
-        <location filename="../ui/main/MainWindow.cpp" line="430"/>
+        <location filename="../ui/main/MainWindow.cpp" line="417"/>
+        <location filename="../ui/main/MainWindow.cpp" line="442"/>
         <source>quit</source>
         <translation>退出</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="416"/>
+        <location filename="../ui/main/MainWindow.cpp" line="428"/>
         <source>Unwritten changes</source>
         <translation>未写入的修改</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="417"/>
+        <location filename="../ui/main/MainWindow.cpp" line="429"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>有 %n 项修改尚未写入驱动器。退出并放弃这些修改？</numerusform>
@@ -7210,37 +7763,37 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPage</name>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="175"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="177"/>
         <source>Live values</source>
         <translation>实时值</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="183"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="185"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="196"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="201"/>
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="261"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="266"/>
         <source>%1 %2 on the drive&apos;s display</source>
         <translation>驱动器显示屏上为 %1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="270"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="275"/>
         <source>Alarm %1 %2 — %3</source>
         <translation>报警 %1 %2 — %3</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="273"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="278"/>
         <source>Alarm active (reading which one…)</source>
         <translation>报警中（正在读取报警内容…）</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="328"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="333"/>
         <source>No live state: %1</source>
         <translation>无实时状态：%1</translation>
     </message>
@@ -7248,67 +7801,72 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPollBar</name>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="25"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="30"/>
         <source>Poll every</source>
         <translation>轮询周期</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="27"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="32"/>
         <source>%1 ms (%2 Hz)</source>
         <translation>%1 ms（%2 Hz）</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="28"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="33"/>
         <source>How often every monitored drive is read. Commands you give always go first; the drives share what is left of the bus in turn.</source>
         <translation>读取每台被监视驱动器的频率。您发出的命令总是优先；各驱动器轮流使用剩余的总线时间。</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="36"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="45"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="44"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="53"/>
         <source>Resume polling</source>
         <translation>恢复轮询</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="44"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="53"/>
         <source>Pause polling</source>
         <translation>暂停轮询</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="58"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="67"/>
         <source>Polling paused: the values shown are the last ones read (%1).</source>
         <translation>轮询已暂停：显示的是最后读取的值（%1）。</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="60"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="69"/>
+        <source>Polling waits for the bus scan: %1.</source>
+        <translation>轮询正在等待总线扫描：%1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="71"/>
         <source>Connection lost — not live: %1.</source>
         <translation>连接丢失 — 非实时：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="62"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="73"/>
         <source>Not live: %1.</source>
         <translation>非实时：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="63"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="74"/>
         <source>The drive does not answer (%1) — not live: %2.</source>
         <translation>驱动器无应答（%1）— 非实时：%2。</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="66"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="77"/>
         <source>Values %1 · %2 samples/s</source>
         <translation>数值 %1 · %2 次采样/s</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="70"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="81"/>
         <source>Not read yet.</source>
         <translation>尚未读取。</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="71"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="82"/>
         <source>Cannot read the drive: %1</source>
         <translation>无法读取驱动器：%1</translation>
     </message>
@@ -7385,7 +7943,7 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
     <name>opentop::MotorSpeedBox</name>
     <message>
         <location filename="../ui/monitor/MotorSpeedBox.cpp" line="23"/>
-        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="45"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="49"/>
         <source>Motor speed</source>
         <translation>电机速度</translation>
     </message>
@@ -7405,12 +7963,12 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>每转换相次数</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="75"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="79"/>
         <source>set the commutations per revolution</source>
         <translation>请设定每转换相次数</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="79"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="83"/>
         <source>%1 r/min</source>
         <translation>%1 r/min</translation>
     </message>
@@ -7503,89 +8061,99 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>驱动器 %1（%2）不允许：%3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="237"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="239"/>
+        <source>Not allowed on the communication group of drive %1: %2</source>
+        <translation>驱动器 %1 的通信组不允许：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="244"/>
         <source>None of the selected drives is identified.</source>
         <translation>所选驱动器均未识别。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="252"/>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="297"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="259"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="304"/>
         <source>Drive %1: %2</source>
         <translation>驱动器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="255"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="262"/>
         <source>Allowed on %1</source>
         <translation>%1 上允许</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="263"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="270"/>
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="264"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="271"/>
         <source>Allowed on %1.</source>
         <translation>%1 上允许。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="305"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="312"/>
         <source>Set it on %n drive(s) anyway?</source>
         <translation>
             <numerusform>仍要在 %n 台驱动器上设置吗？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="306"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="313"/>
         <source>&amp;Set it</source>
         <translation>设置(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="329"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="336"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>将 %1 写入站号 %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="331"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="338"/>
         <source>Nothing was written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="336"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="343"/>
         <source>waiting…</source>
         <translation>等待中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="338"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="345"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>正在将 %1 写入 %n 台驱动器…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="350"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="357"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>已在 %n 台驱动器中的 %1 台上写入并校验。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="359"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="366"/>
         <source>writing…</source>
         <translation>正在写入…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="372"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="383"/>
         <source>Written and verified</source>
         <translation>已写入并校验</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="373"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="385"/>
+        <source>Written, not verified: %1</source>
+        <translation>已写入，未确认：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="386"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>已写入，未校验（无法回读）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="374"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="387"/>
         <source>Failed: %1</source>
         <translation>失败：%1</translation>
     </message>
@@ -7737,27 +8305,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="184"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="199"/>
         <source>%1 (not valid now)</source>
         <translation>%1（当前无效）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="213"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="228"/>
         <source>not read</source>
         <translation>未读取</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="222"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="237"/>
         <source>Allowed: %1</source>
         <translation>允许：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="225"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="240"/>
         <source>On the drive: %1</source>
         <translation>驱动器中：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="256"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="274"/>
         <source>Not accepted: %1</source>
         <translation>未接受：%1</translation>
     </message>
@@ -8033,20 +8601,6 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>正在写入 %n 个值…</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="179"/>
-        <source>%n write(s) failed; see the marked fields</source>
-        <translation>
-            <numerusform>%n 项写入失败；请查看标记的字段</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="180"/>
-        <source>%n value(s) written and verified</source>
-        <translation>
-            <numerusform>%n 个值已写入并校验</numerusform>
         </translation>
     </message>
 </context>
@@ -8761,32 +9315,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="417"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="429"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>偏移 %1 处不是有效的 JSON：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="421"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="433"/>
         <source>the top level must be a JSON object</source>
         <translation>顶层必须是 JSON 对象</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="432"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="444"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot; 为空</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="443"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
         <source>must be an object</source>
         <translation>必须是对象</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="445"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="457"/>
         <source>name repeated</source>
         <translation>名称重复</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="461"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="473"/>
         <source>%1: cannot open: %2</source>
         <translation>%1：无法打开：%2</translation>
     </message>
@@ -8865,39 +9419,137 @@ No unit can be tested until results can be recorded.</source>
     </message>
 </context>
 <context>
-    <name>opentop::Progress</name>
+    <name>opentop::ProposalFlow</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="75"/>
-        <source>scanning %1/%2 (%3 %), machine number %4, %5 found</source>
-        <translation>正在扫描 %1/%2（%3 %），站号 %4，已找到 %5 台</translation>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="57"/>
+        <source>Proposal rejected; the drive&apos;s gains were not changed.</source>
+        <translation>已拒绝建议值；驱动器的增益未改变。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="90"/>
-        <source>scan: %1 % (%2 of %3 machine numbers), %4 found</source>
-        <translation>扫描：%1 %（%3 个站号中的 %2 个），已找到 %4 台</translation>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="60"/>
+        <source>Proposal rejected</source>
+        <translation>已拒绝建议值</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="71"/>
+        <source>The accepted gains failed the check: %1. Reject them, or store them only after looking at the step.</source>
+        <translation>已接受的增益未通过检查：%1。请拒绝，或先查看阶跃后再保存。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="85"/>
+        <source>no step test ran after Accept</source>
+        <translation>接受后未执行阶跃测试</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="87"/>
+        <source>Store gains that failed the check?</source>
+        <translation>要保存未通过检查的增益吗？</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="88"/>
+        <source>The gains accepted on %1 did not pass the check after Accept.</source>
+        <translation>在 %1 接受的增益未通过接受后的检查。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="90"/>
+        <source>Stored, they stay after a power cycle and the motor may oscillate or overshoot as measured. Reject writes back the gains the drive had.</source>
+        <translation>保存后重新上电仍会保留，电机可能像实测那样振荡或超调。按“拒绝”会写回驱动器原来的增益。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="94"/>
+        <source>Reject the gains</source>
+        <translation>拒绝此增益</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="95"/>
+        <source>Store anyway</source>
+        <translation>仍要保存</translation>
     </message>
 </context>
 <context>
     <name>opentop::PtySimServer</name>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="50"/>
+        <location filename="../sim/PtySimServer.cpp" line="52"/>
         <source>cannot open a pseudo-terminal: %1</source>
         <translation>无法打开伪终端：%1</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="67"/>
+        <location filename="../sim/PtySimServer.cpp" line="69"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1 已存在且不是符号链接；拒绝替换</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="73"/>
+        <location filename="../sim/PtySimServer.cpp" line="75"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>无法创建符号链接 %1 -&gt; %2</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="115"/>
+        <location filename="../sim/PtySimServer.cpp" line="117"/>
         <source>the port is plugged in: %1</source>
         <translation>端口已插入：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ReachedDrives</name>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="47"/>
+        <source>%1, variant not known</source>
+        <translation>%1，机型未知</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="62"/>
+        <source>machine number %1 (%2) executes this write too (communication group %3), but has no such setting at 0x%4</source>
+        <translation>站号 %1（%2）也会执行此写入（通信组 %3），但在 0x%4 没有该设置</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="86"/>
+        <source>machine number %1 (%2) executes this write too (communication group %3) and does not allow it: %4</source>
+        <translation>站号 %1（%2）也会执行此写入（通信组 %3），但不允许此值：%4</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="95"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="110"/>
+        <source>%1 cannot be checked: %2</source>
+        <translation>无法检查 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="150"/>
+        <source>verification failed in communication group %1: %2</source>
+        <translation>通信组 %1 的确认失败：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="209"/>
+        <source>reading %1 of machine number %2, which executes this write too, failed: %3</source>
+        <translation>读取站号 %2（也会执行此写入）的 %1 失败：%3</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="245"/>
+        <source>machine number %1: not verified (the setting cannot be read there)</source>
+        <translation>站号 %1：未确认（该设置无法在此驱动器上读取）</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="258"/>
+        <source>machine number %1: not verified, reading it back failed: %2</source>
+        <translation>站号 %1：未确认，读回失败：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="260"/>
+        <source>the drive was removed</source>
+        <translation>驱动器已移除</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="273"/>
+        <source>machine number %1 holds %2</source>
+        <translation>站号 %1 的值为 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="274"/>
+        <source>machine number %1 holds %2, not %3</source>
+        <translation>站号 %1 的值为 %2，不是 %3</translation>
     </message>
 </context>
 <context>
@@ -9135,218 +9787,218 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="46"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="47"/>
         <source>Recipe editor</source>
         <translation>配方编辑器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="66"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="402"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="67"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
         <source>Revision:</source>
         <translation>版本：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="68"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="69"/>
         <source>Product:</source>
         <translation>产品：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="69"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
         <source>Description:</source>
         <translation>说明：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="71"/>
         <source>Position:</source>
         <translation>位置：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="107"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
         <source>New from drives on the bus…</source>
         <translation>从总线上的驱动器新建…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>New from backup file…</source>
         <translation>从备份文件新建…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>Open…</source>
         <translation>打开…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="112"/>
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="113"/>
         <source>Save as…</source>
         <translation>另存为…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="152"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="154"/>
         <source>%1: %2%3</source>
         <translation>%1：%2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="155"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="157"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="226"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="228"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>从标准样机在总线上的驱动器或其备份文件生成配方，或打开已有配方。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="230"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="232"/>
         <source>the recipe is empty</source>
         <translation>配方为空</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="241"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="243"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="245"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="247"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>配方通过检查：可以保存和运行。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="250"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 个问题：修正之前无法保存配方。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="260"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="262"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>配方未通过检查（%n 个问题）；未保存任何内容</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="276"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="278"/>
         <source>cannot read %1: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="288"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="290"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 不是 OpenTOP 配方文件</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="297"/>
         <source>Opened %1</source>
         <translation>已打开 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="298"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>已打开 %1，但它无法按原样载入（%2）。保存时会进行检查并重新签名。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="316"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="318"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>已从 %1 新建配方：请检查设定和测试步骤的限值，然后保存。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="328"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="330"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>站号 %1 不是总线上的已知驱动器；请先扫描总线</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="333"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>正在读取标准样机的设定…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="333"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="348"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="350"/>
         <source>cancelled: no recipe was made</source>
         <translation>已取消：未生成配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="374"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="376"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="387"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="389"/>
         <source>Open recipe</source>
         <translation>打开配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="388"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="390"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>配方 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="397"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="402"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="399"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
         <source>New recipe</source>
         <translation>新建配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="397"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="399"/>
         <source>Product name:</source>
         <translation>产品名称：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="410"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="412"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>标准样机的备份文件</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="411"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="413"/>
         <source>Backups (*.json)</source>
         <translation>备份 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="423"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="425"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>总线上没有驱动器：请先连接并扫描。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="431"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="433"/>
         <source>New recipe from drives</source>
         <translation>从驱动器新建配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="432"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="434"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>标准样机各驱动器的站号（已找到：%1）：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="442"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="444"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot; 不是站号（1–247）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="451"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="453"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>已从总线上的驱动器新建配方：请检查设定和测试步骤的限值，然后保存。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="462"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="464"/>
         <source>Save recipe</source>
         <translation>保存配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="464"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="466"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="469"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="471"/>
         <source>Saved and signed: %1</source>
         <translation>已保存并签名：%1</translation>
     </message>
@@ -10155,21 +10807,129 @@ No unit can be tested until results can be recorded.</source>
     </message>
 </context>
 <context>
+    <name>opentop::Reconnection</name>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="30"/>
+        <source>&amp;Reconnect</source>
+        <translation>重新连接(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="37"/>
+        <source>Open the last connection again, with the same drives and page (Ctrl+R)</source>
+        <translation>以相同的驱动器和页面重新打开上一次的连接（Ctrl+R）</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="91"/>
+        <source>Reconnecting to %1…</source>
+        <translation>正在重新连接 %1…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="122"/>
+        <source>Reconnected to %1: reading every drive again…</source>
+        <translation>已重新连接 %1：正在重新读取所有驱动器…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="175"/>
+        <source>Reconnected to %1.</source>
+        <translation>已重新连接 %1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="199"/>
+        <source>Reconnecting failed: %1</source>
+        <translation>重新连接失败：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="217"/>
+        <location filename="../ui/main/Reconnection.cpp" line="259"/>
+        <source>Connection lost</source>
+        <translation>连接丢失</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="223"/>
+        <location filename="../ui/main/Reconnection.cpp" line="262"/>
+        <source>Reconnect</source>
+        <translation>重新连接</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="263"/>
+        <source>Go on anyway</source>
+        <translation>仍然继续</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="264"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+</context>
+<context>
     <name>opentop::RelayAnalysis</name>
     <message>
-        <location filename="../model/tuning/RelayAnalysis.cpp" line="27"/>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="47"/>
         <source>no steady oscillation: %1 full cycles around %2, %3 needed</source>
         <translation>无稳定振荡：在 %2 附近只有 %1 个完整周期，需要 %3 个</translation>
     </message>
     <message>
-        <location filename="../model/tuning/RelayAnalysis.cpp" line="59"/>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="51"/>
+        <source>Raise the relay amplitude, or choose an operating speed that leaves the output room on both sides.</source>
+        <translation>请加大继电器幅值，或选择输出上下都留有余量的运行速度。</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="86"/>
         <source>the oscillation (±%1) is no larger than the hysteresis (%2)</source>
         <translation>振荡（±%1）不大于滞环（%2）</translation>
     </message>
     <message>
-        <location filename="../model/tuning/RelayAnalysis.cpp" line="65"/>
-        <source>the oscillation is not steady: periods or amplitudes differ by %1 %</source>
-        <translation>振荡不稳定：周期或幅值相差 %1 %</translation>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="89"/>
+        <source>Raise the relay amplitude.</source>
+        <translation>请加大继电器幅值。</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="97"/>
+        <source>the oscillation&apos;s period, %1 ms, holds only %2 readings (one every %3 ms): at least %4 are needed, or its period and amplitude are the bus&apos;s rather than the motor&apos;s</source>
+        <translation>振荡周期 %1 ms 内只读取了 %2 次（每 %3 ms 一次）：至少需要 %4 次，否则周期和幅值反映的是总线而不是电机</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="104"/>
+        <source>Raise the line rate (115200 bit/s if every drive on the bus allows it) or stop polling other drives on this bus during the test; a larger relay amplitude or another speed does not change this.</source>
+        <translation>请提高波特率（若总线上所有驱动器都支持，用 115200 bit/s），或在测试期间暂停轮询此总线上的其他驱动器；加大继电器幅值或改变速度都无法改善。</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="110"/>
+        <source>the oscillation is not steady: periods differ by %1 %, amplitudes by %2 % (at most %3 % and %4 %)</source>
+        <translation>振荡不稳定：周期相差 %1 %，幅值相差 %2 %（上限分别为 %3 % 和 %4 %）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="116"/>
+        <source>Raise the relay amplitude so that the oscillation stands out of friction and load changes, keep the load steady during the test, and stop polling other drives on this bus meanwhile.</source>
+        <translation>请加大继电器幅值，使振荡不被摩擦和负载变化淹没；测试期间保持负载稳定，并暂停轮询此总线上的其他驱动器。</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="123"/>
+        <source>the oscillation is lopsided: its time above and below %1 differ by %2 % of the period (at most %3 %)</source>
+        <translation>振荡不对称：高于和低于 %1 的时间相差周期的 %2 %（上限 %3 %）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="128"/>
+        <source>The output for the operating speed was misjudged or the load changed: keep the load steady, choose an operating speed further from standstill and from full output, and repeat the test.</source>
+        <translation>运行速度所需的输出估计有误或负载改变：请保持负载稳定，选择离静止和最大输出都较远的运行速度，再重新测试。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RelayTuning</name>
+    <message>
+        <location filename="../model/tuning/RelayTuning.cpp" line="28"/>
+        <source>Raise the relay amplitude.</source>
+        <translation>请加大继电器幅值。</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayTuning.cpp" line="49"/>
+        <source>the drive&apos;s own loop, as the model extrapolates it, would oscillate with a period of %1 ms, under %2 readings (one every %3 ms): the step after Accept could not show whether the gains work</source>
+        <translation>按模型外推，驱动器自身的环路会以 %1 ms 的周期振荡，不到 %2 次读取（每 %3 ms 一次）：接受后的阶跃无法显示增益是否可用</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayTuning.cpp" line="55"/>
+        <source>Raise the line rate (115200 bit/s if every drive on the bus allows it) or stop polling other drives on this bus during the test.</source>
+        <translation>请提高波特率（若总线上所有驱动器都支持，用 115200 bit/s），或在测试期间暂停轮询此总线上的其他驱动器。</translation>
     </message>
 </context>
 <context>
@@ -10342,201 +11102,201 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreDialog</name>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="35"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="36"/>
         <source>&amp;Preview</source>
         <translation>预览(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="36"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
         <source>&amp;Write to drives…</source>
         <translation>写入驱动器(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="39"/>
         <source>&amp;Save report…</source>
         <translation>保存报告(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="40"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="41"/>
         <source>Restore from a backup file</source>
         <translation>从备份文件恢复</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="42"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="43"/>
         <source>No file chosen</source>
         <translation>未选择文件</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="43"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="44"/>
         <source>&amp;Choose file…</source>
         <translation>选择文件(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="45"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="46"/>
         <source>File:</source>
         <translation>文件：</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="56"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="57"/>
         <source>Read the drives and show what would change; writes nothing</source>
         <translation>读取驱动器并显示将要改变的内容；不写入任何内容</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="57"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
         <source>Write the previewed changes, each verified by reading it back</source>
         <translation>写入预览的修改，每项都通过回读校验</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
         <source>Stop after the write in progress has been verified</source>
         <translation>当前写入校验完成后停止</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
         <source>Save the report as text, or as CSV when the name ends in .csv</source>
         <translation>将报告保存为文本；文件名以 .csv 结尾时保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
         <source>C&amp;lose</source>
         <translation>关闭(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="96"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="98"/>
         <source>%1: no such file</source>
         <translation>%1：文件不存在</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="101"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="103"/>
         <source>the file could not be read</source>
         <translation>无法读取该文件</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="102"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="186"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="104"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="188"/>
         <source>Refused, nothing will be written: %1</source>
         <translation>已拒绝，不会写入任何内容：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="107"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="109"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>文件中有 %n 台驱动器。请选择要恢复的内容，然后点击“预览”。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="148"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="150"/>
         <source>Refused, nothing written:</source>
         <translation>已拒绝，未写入任何内容：</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="150"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="152"/>
         <source>Drive %1 from %2: %3</source>
         <translation>来自 %2 的驱动器 %1：%3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="185"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="187"/>
         <source>Choose a backup file first.</source>
         <translation>请先选择备份文件。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="227"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="229"/>
         <source>not attempted</source>
         <translation>未尝试</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="234"/>
         <source>Reading drive %1…</source>
         <translation>正在读取驱动器 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="234"/>
         <source>Writing drive %1…</source>
         <translation>正在写入驱动器 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="239"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="241"/>
         <source>drive %1: %2 (%v of %m)</source>
         <translation>驱动器 %1：%2（%v / %m）</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="267"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="269"/>
         <source>Stopping after the write in progress has been verified…</source>
         <translation>正在等待当前写入校验完成后停止…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="282"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="373"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="378"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="284"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
         <source>Drive %1: %2</source>
         <translation>驱动器 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="285"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="287"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>%n 项设定待写入</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="292"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="294"/>
         <source>  Note: %1</source>
         <translation>  注意：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="295"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="297"/>
         <source>Nothing written yet. Write to drives to apply.</source>
         <translation>尚未写入任何内容。点击“写入驱动器”以应用。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="296"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="298"/>
         <source>Nothing written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="354"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="356"/>
         <source>Restore from backup file</source>
         <translation>从备份文件恢复</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="355"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="357"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 备份 (*.json);;所有文件 (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="381"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="383"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>将 %n 项设定写入驱动器 %1，每项都通过回读校验？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="388"/>
         <source>Write to drives</source>
         <translation>写入驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="388"/>
         <source>&amp;Write</source>
         <translation>写入(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="391"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="393"/>
         <source>Save restore report</source>
         <translation>保存恢复报告</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="392"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="394"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>文本 (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="397"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="399"/>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
     </message>
@@ -10596,57 +11356,62 @@ No unit can be tested until results can be recorded.</source>
         <translation>未变</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="272"/>
+        <location filename="../model/files/RestorePlan.cpp" line="273"/>
+        <source>written, not verified: %1</source>
+        <translation>已写入，未确认：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/files/RestorePlan.cpp" line="274"/>
         <source>written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="272"/>
+        <location filename="../model/files/RestorePlan.cpp" line="274"/>
         <source>written and verified</source>
         <translation>已写入并校验</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="274"/>
+        <location filename="../model/files/RestorePlan.cpp" line="276"/>
         <source>failed: %1</source>
         <translation>失败：%1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="276"/>
+        <location filename="../model/files/RestorePlan.cpp" line="278"/>
         <source>not attempted</source>
         <translation>未尝试</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="278"/>
+        <location filename="../model/files/RestorePlan.cpp" line="280"/>
         <source>not confirmed (%1): the drive may or may not hold it; run the restore again to read it back</source>
         <translation>未确认（%1）：驱动器可能保存了该值，也可能没有；请再次执行恢复以回读</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="303"/>
+        <location filename="../model/files/RestorePlan.cpp" line="305"/>
         <source>planned</source>
         <translation>已计划</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="305"/>
+        <location filename="../model/files/RestorePlan.cpp" line="307"/>
         <source>restored</source>
         <translation>已恢复</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="307"/>
+        <location filename="../model/files/RestorePlan.cpp" line="309"/>
         <source>refused</source>
         <translation>已拒绝</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="309"/>
+        <location filename="../model/files/RestorePlan.cpp" line="311"/>
         <source>communication failure</source>
         <translation>通信失败</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="311"/>
+        <location filename="../model/files/RestorePlan.cpp" line="313"/>
         <source>verification mismatch</source>
         <translation>校验不一致</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="313"/>
+        <location filename="../model/files/RestorePlan.cpp" line="315"/>
         <source>interrupted</source>
         <translation>已中断</translation>
     </message>
@@ -10750,37 +11515,44 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Restorer</name>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="48"/>
+        <location filename="../model/files/Restorer.cpp" line="49"/>
         <source>interrupted before anything was written</source>
         <translation>在写入任何内容之前已中断</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="63"/>
+        <location filename="../model/files/Restorer.cpp" line="64"/>
         <source>reading the drive failed, nothing written (%1)</source>
         <translation>读取驱动器失败，未写入任何内容（%1）</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../model/files/Restorer.cpp" line="116"/>
+        <source>%n value(s) of the file may not be written to the drives of the communication group; nothing written</source>
+        <translation>
+            <numerusform>文件中有 %n 个值不可写入通信组的驱动器；未写入任何值</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="99"/>
+        <location filename="../model/files/Restorer.cpp" line="144"/>
         <source>interrupted after %1 of %2 writes; run the restore again to complete it</source>
         <translation>在 %2 次写入中的第 %1 次后中断；请再次执行恢复以完成</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="134"/>
+        <location filename="../model/files/Restorer.cpp" line="180"/>
         <source>%1 not confirmed (%2): the drive may or may not hold it; run the restore again, it reads the drive back first</source>
         <translation>%1 未确认（%2）：驱动器可能保存了该值，也可能没有；请再次执行恢复，它会先回读驱动器</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="168"/>
+        <location filename="../model/files/Restorer.cpp" line="214"/>
         <source>after storing, the drive holds %1</source>
         <translation>保存后，驱动器中为 %1</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="173"/>
+        <location filename="../model/files/Restorer.cpp" line="219"/>
         <source>the settings could not be read back after storing</source>
         <translation>保存后无法回读设定</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="206"/>
+        <location filename="../model/files/Restorer.cpp" line="252"/>
         <source>communication settings changed (%1): they take effect when the drive is next powered on; connect with the new settings after that</source>
         <translation>通信设定已修改（%1）：驱动器下次上电时生效；之后请用新设定连接</translation>
     </message>
@@ -10892,251 +11664,251 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="62"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>End-of-line results</source>
         <translation>下线检测结果</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Started</source>
         <translation>开始时间</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Serial</source>
         <translation>序列号</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Station</source>
         <translation>工位</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
         <source>Time (s)</source>
         <translation>时间 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="68"/>
         <source>First failure</source>
         <translation>首个不合格项</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="84"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
         <source>Export CSV…</source>
         <translation>导出 CSV…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="86"/>
         <source>Certificate PDF…</source>
         <translation>检验证书 PDF…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="119"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="121"/>
         <source>SQLite file or postgresql://user@host/database</source>
         <translation>SQLite 文件或 postgresql://user@host/database</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="120"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="122"/>
         <source>Open</source>
         <translation>打开</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="121"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="123"/>
         <source>File…</source>
         <translation>文件…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="128"/>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="130"/>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="132"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
         <source>any</source>
         <translation>任意</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
         <source>Today</source>
         <translation>今天</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="135"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
         <source>Last 24 hours</source>
         <translation>最近 24 小时</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="138"/>
         <source>Last 7 days</source>
         <translation>最近 7 天</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="139"/>
         <source>Last 30 days</source>
         <translation>最近 30 天</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="138"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
         <source>All</source>
         <translation>全部</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="141"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="143"/>
         <source>Any</source>
         <translation>任意</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="145"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="147"/>
         <source>Search</source>
         <translation>搜索</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="149"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
         <source>Serial:</source>
         <translation>序列号：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="150"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="153"/>
         <source>Station:</source>
         <translation>工位：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="154"/>
         <source>Period:</source>
         <translation>时间段：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="153"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="155"/>
         <source>Verdict:</source>
         <translation>判定：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="161"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="163"/>
         <source>Database:</source>
         <translation>数据库：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="192"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="194"/>
         <source>There is no results database at %1 yet: a station makes it when it records its first unit.</source>
         <translation>%1 处尚无结果数据库：工位记录第一台产品时会创建它。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="198"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="200"/>
         <source>Opening the results database %1…</source>
         <translation>正在打开结果数据库 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="210"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="212"/>
         <source>Results database %1</source>
         <translation>结果数据库 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="244"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="246"/>
         <source>Searching…</source>
         <translation>正在搜索…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="256"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="350"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="258"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="352"/>
         <source>the results database is not open</source>
         <translation>结果数据库未打开</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="291"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="293"/>
         <source>%1 rev. %2</source>
         <translation>%1 版本 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="295"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="297"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="322"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="317"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="319"/>
         <source>%n unit(s), %1 passed · first-pass yield %2 (%3 of %4 serials)</source>
         <translation>
             <numerusform>%n 台产品，%1 台合格 · 直通率 %2（%4 个序列号中的 %3 个）</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="322"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="331"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="377"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="333"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="379"/>
         <source>no unit is selected</source>
         <translation>未选择产品</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="335"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="337"/>
         <source>Reading unit %1…</source>
         <translation>正在读取产品 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="378"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="380"/>
         <source>the unit&apos;s record is still being read</source>
         <translation>仍在读取该产品的记录</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="387"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="389"/>
         <source>Open results database</source>
         <translation>打开结果数据库</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="388"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="390"/>
         <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
         <translation>SQLite 数据库 (*.db *.sqlite);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="400"/>
         <source>Export units as CSV</source>
         <translation>将产品导出为 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="400"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="403"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="405"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>已将 %n 台产品写入 %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="414"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="416"/>
         <source>Save certificate</source>
         <translation>保存检验证书</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="415"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="417"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF 文件 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="420"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="422"/>
         <source>Certificate written to %1</source>
         <translation>检验证书已写入 %1</translation>
     </message>
@@ -11152,64 +11924,64 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RunCommand</name>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="48"/>
+        <location filename="../cli/RunCommand.cpp" line="49"/>
         <source>Test run: start, stop, direction, running data, hold/free, speed (needs --yes)</source>
         <translation>试运行：启动、停止、方向、运行数据、保持/释放、速度（需要 --yes）</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="53"/>
+        <location filename="../cli/RunCommand.cpp" line="54"/>
         <source>Send the command (it moves or stops a motor).</source>
         <translation>发送命令（会使电机运动或停止）。</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="63"/>
+        <location filename="../cli/RunCommand.cpp" line="64"/>
         <source>error: usage: %1 (one machine number; a negative speed after --)</source>
         <translation>错误：用法：%1（一个站号；负速度放在 -- 之后）</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="71"/>
-        <location filename="../cli/RunCommand.cpp" line="76"/>
-        <location filename="../cli/RunCommand.cpp" line="81"/>
-        <location filename="../cli/RunCommand.cpp" line="126"/>
+        <location filename="../cli/RunCommand.cpp" line="72"/>
+        <location filename="../cli/RunCommand.cpp" line="77"/>
+        <location filename="../cli/RunCommand.cpp" line="82"/>
+        <location filename="../cli/RunCommand.cpp" line="144"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="86"/>
+        <location filename="../cli/RunCommand.cpp" line="87"/>
         <source>Would send to machine number %1: %2
 This moves or stops a motor: add --yes to send it.</source>
         <translation>将向站号 %1 发送：%2
 这会使电机运动或停止：加上 --yes 才会发送。</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="118"/>
+        <location filename="../cli/RunCommand.cpp" line="108"/>
+        <source>note: %1</source>
+        <translation>注意：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/RunCommand.cpp" line="136"/>
         <source>Sent to machine number %1: %2</source>
         <translation>已发送到站号 %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="120"/>
+        <location filename="../cli/RunCommand.cpp" line="138"/>
         <source>Sent to machine number %1, executed also by %2 (communication group): %3</source>
         <translation>已发送到站号 %1，%2 也会执行（通信组）：%3</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="156"/>
+        <location filename="../cli/RunCommand.cpp" line="174"/>
         <source>(not read: %1)</source>
         <translation>（未读取：%1）</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="165"/>
+        <location filename="../cli/RunCommand.cpp" line="183"/>
         <source>State of machine number %1:</source>
         <translation>站号 %1 的状态：</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="176"/>
-        <source>State of machine number %1 (communication group of %2): not read: %3</source>
-        <translation>站号 %1 的状态（%2 的通信组）：未读取：%3</translation>
-    </message>
-    <message>
-        <location filename="../cli/RunCommand.cpp" line="184"/>
-        <source>State of machine number %1 (communication group of %2):</source>
-        <translation>站号 %1 的状态（%2 的通信组）：</translation>
+        <location filename="../cli/RunCommand.cpp" line="199"/>
+        <source>Communication group of %1, read after the command:</source>
+        <translation>%1 的通信组，命令后读取：</translation>
     </message>
 </context>
 <context>
@@ -11265,7 +12037,7 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>在“%1”下，驱动器通过输入端子接收运行、停止、方向和速度选择，并拒绝来自总线的运动命令。要在此处试运行，请将其切换为“%2”：opentop-cli set %3 %4=%5（当需要由设备自身的操作元件控制时，再改回“%1”，=%6）。</translation>
     </message>
     <message>
-        <location filename="../model/run/RunControl.cpp" line="263"/>
+        <location filename="../model/run/RunControl.cpp" line="265"/>
         <source>An alarm is active: the drive refuses to run until it is cleared. See opentop-cli alarms %1, then alarms %1 --reset --yes.</source>
         <translation>有报警发生：报警清除前驱动器拒绝运行。请查看 opentop-cli alarms %1，然后执行 alarms %1 --reset --yes。</translation>
     </message>
@@ -11509,83 +12281,93 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="111"/>
+        <location filename="../cli/ScanCommand.cpp" line="64"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>查找并识别总线上的驱动器（站号 1–247）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="70"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>询问的起始站号，1–247（默认 1）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="117"/>
-        <location filename="../cli/ScanCommand.cpp" line="118"/>
+        <location filename="../cli/ScanCommand.cpp" line="70"/>
+        <location filename="../cli/ScanCommand.cpp" line="71"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="118"/>
+        <location filename="../cli/ScanCommand.cpp" line="71"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>询问的结束站号，1–247（默认 247）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="120"/>
+        <location filename="../cli/ScanCommand.cpp" line="73"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>每个站号的等待时间（ms），10–5000（默认：根据波特率得出；适配器或网关较慢时请加大）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="122"/>
+        <location filename="../cli/ScanCommand.cpp" line="75"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="135"/>
+        <location filename="../cli/ScanCommand.cpp" line="77"/>
+        <source>Also ask the machine numbers not found in every other line format a drive can be set to (a DC controller at 8E1 on a DBU bus at 8N1): one more pass per format, off by default.</source>
+        <translation>对没有找到的站号，也以驱动器可设定的其他每种通信格式询问（8N1 的 DBU 总线上 8E1 的 DC 控制器）：每种格式多扫描一轮，默认关闭。</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="92"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>错误：--%1 必须是 %2–%3 的数字，而不是 &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="147"/>
+        <location filename="../cli/ScanCommand.cpp" line="104"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>错误：scan 不接受参数；请使用 --from N --to N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="156"/>
+        <location filename="../cli/ScanCommand.cpp" line="113"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>错误：--from %1 大于 --to %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="174"/>
+        <location filename="../cli/ScanCommand.cpp" line="131"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>正在扫描 %3 上的站号 %1–%2，每个 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="211"/>
+        <location filename="../cli/ScanCommand.cpp" line="178"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>在扫描任何站号之前已中断。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="213"/>
+        <location filename="../cli/ScanCommand.cpp" line="180"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>已中断：已扫描站号 %1–%2（%4 个中的 %3 个）；%5–%6 未询问。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="227"/>
+        <location filename="../cli/ScanCommand.cpp" line="194"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>错误：扫描在站号 %1 处停止：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="237"/>
+        <location filename="../cli/ScanCommand.cpp" line="206"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="239"/>
+        <location filename="../cli/ScanCommand.cpp" line="208"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>注意：%1 台驱动器在 %2 ms 等待时间之后才应答，已重新询问；如果扫描漏掉驱动器，请加大 --wait。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="245"/>
+        <location filename="../cli/ScanCommand.cpp" line="217"/>
+        <source>warning: machine number %1 answered, but its identification failed, also when asked again %2 more times; it is not counted as a drive. Add it by hand: name it in a command (it is identified again then, within --timeout; raise it for a slow device), or check its line settings and scan again with a longer --wait.</source>
+        <translation>警告：站号 %1 有应答，但识别失败，再询问 %2 次仍然如此；它不计为驱动器。请手动添加：在命令中指定这个站号（届时会在 --timeout 内重新识别；设备应答慢时请加大），或检查它的通信设定后用更长的 --wait 重新扫描。</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="226"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -11596,94 +12378,145 @@ This moves or stops a motor: add --yes to send it.</source>
   - 终端电阻（总线两端各 120 Ω），以及驱动器是否已通电。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="258"/>
+        <location filename="../cli/ScanCommand.cpp" line="239"/>
         <source>hint: %1 Retry with the same connection and: %2</source>
         <translation>提示：%1 请使用相同连接并加上以下选项重试：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="271"/>
+        <location filename="../cli/ScanCommand.cpp" line="252"/>
         <source>Serial line: %1</source>
         <translation>串行线路：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="274"/>
+        <location filename="../cli/ScanCommand.cpp" line="255"/>
         <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
         <translation>警告：%1 因此扫描时每个站号最多会多等待 %2 ms。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="303"/>
+        <location filename="../cli/ScanCommand.cpp" line="284"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 机型未知</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="285"/>
         <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
         <translation>驱动器未报告其机型；请用 --variant %1=VARIANT 指定（%2）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="320"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="320"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>hex</source>
         <translation>十六进制</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="320"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>switches</source>
         <translation>开关</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="320"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="321"/>
+        <location filename="../cli/ScanCommand.cpp" line="302"/>
         <source>model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="321"/>
+        <location filename="../cli/ScanCommand.cpp" line="302"/>
         <source>firmware</source>
         <translation>固件</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="321"/>
+        <location filename="../cli/ScanCommand.cpp" line="302"/>
         <source>state</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="327"/>
+        <location filename="../cli/ScanCommand.cpp" line="308"/>
         <source>comm. group</source>
         <translation>通信组</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="395"/>
+        <location filename="../cli/ScanCommand.cpp" line="313"/>
+        <source>line format</source>
+        <translation>通信格式</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="328"/>
+        <source>the port&apos;s</source>
+        <translation>端口的</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="387"/>
         <source>1 drive found in %1 s</source>
         <translation>在 %1 s 内找到 1 台驱动器</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="396"/>
+        <location filename="../cli/ScanCommand.cpp" line="388"/>
         <source>%1 drives found in %2 s</source>
         <translation>在 %2 s 内找到 %1 台驱动器</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="398"/>
+        <location filename="../cli/ScanCommand.cpp" line="390"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>；1 个可能重复的站号：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="400"/>
+        <location filename="../cli/ScanCommand.cpp" line="392"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>；%1 个可能重复的站号：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="411"/>
+        <location filename="../cli/ScanCommand.cpp" line="396"/>
+        <source>; answered, identification failed: %1 (add by hand)</source>
+        <translation>；有应答但识别失败：%1（请手动添加）</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="406"/>
         <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>警告：站号 %1（%2，%3）的应答报文损坏：可能有两台驱动器设为同一站号。请检查该总线上各驱动器的 SW1/SW2 开关，为每台驱动器设定不同的站号，断电后重新上电，再次扫描。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ScanFormats</name>
+    <message>
+        <location filename="../cli/ScanFormats.cpp" line="44"/>
+        <source>Scanning machine numbers %1–%2 at %3 (--try-formats), %4 ms each…</source>
+        <translation>以 %3 扫描站号 %1–%2（--try-formats），每个 %4 ms…</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanFormats.cpp" line="71"/>
+        <source>Machine number %1 answered at %2: it is asked at that format from now on (--drive-format %1=%3).</source>
+        <translation>站号 %1 以 %2 应答：之后都以该格式询问它（--drive-format %1=%3）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanFormats.cpp" line="99"/>
+        <source>hint: %1 If one is on this bus, give its machine number its format with --drive-format ID=BAUD:FORMAT (e.g. 7=9600:8E1), or scan with --try-formats: %2 more passes, %3 more requests, about %4 s more.</source>
+        <translation>提示：%1 如果总线上有这种驱动器，请用 --drive-format ID=BAUD:FORMAT（例如 7=9600:8E1）指定它的站号的格式，或用 --try-formats 扫描：多 %2 轮、多 %3 个请求，约多 %4 s。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ScanProgress</name>
+    <message>
+        <location filename="../cli/ScanProgress.cpp" line="34"/>
+        <source>scanning %1/%2 (%3 %), machine number %4, %5 found</source>
+        <translation>正在扫描 %1/%2（%3 %），站号 %4，已找到 %5 台</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanProgress.cpp" line="49"/>
+        <source>scan: %1 % (%2 of %3 machine numbers), %4 found</source>
+        <translation>扫描：%1 %（%3 个站号中的 %2 个），已找到 %4 台</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanProgress.cpp" line="60"/>
+        <source>scan: machine number %1 answered, identification failed: retrying (%2 of %3)…</source>
+        <translation>扫描：站号 %1 有应答，但识别失败：正在重试（第 %2 次，共 %3 次）…</translation>
     </message>
 </context>
 <context>
@@ -11780,202 +12613,226 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="43"/>
+        <location filename="../cli/SetCommand.cpp" line="87"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>按名称写入参数，经过验证、回读和校验</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="53"/>
+        <location filename="../cli/SetCommand.cpp" line="97"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>按地址写入寄存器：ADDR=VALUE（可重复；配合 --fc 16 时可写 VALUE,VALUE...）。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="54"/>
+        <location filename="../cli/SetCommand.cpp" line="98"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="55"/>
+        <location filename="../cli/SetCommand.cpp" line="99"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 写入的功能码：6（默认）或 16。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="55"/>
+        <location filename="../cli/SetCommand.cpp" line="99"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="64"/>
+        <location filename="../cli/SetCommand.cpp" line="108"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>错误：用法：set ID NAME=VALUE...（例如 set 1 spno2.accel=2.5），或 set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="76"/>
+        <location filename="../cli/SetCommand.cpp" line="120"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>错误：&quot;%1&quot; 不是 NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="83"/>
+        <location filename="../cli/SetCommand.cpp" line="127"/>
         <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
         <translation>错误：%1 指定了两次（%2=%3 和 %4）；每项设定只能指定一次；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="94"/>
-        <location filename="../cli/SetCommand.cpp" line="227"/>
+        <location filename="../cli/SetCommand.cpp" line="76"/>
+        <location filename="../cli/SetCommand.cpp" line="138"/>
+        <location filename="../cli/SetCommand.cpp" line="272"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="104"/>
+        <location filename="../cli/SetCommand.cpp" line="148"/>
         <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>%1 没有参数 &quot;%2&quot;；请参阅 &quot;opentop-cli params --family %1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="107"/>
+        <location filename="../cli/SetCommand.cpp" line="151"/>
         <source>%1 is read-only</source>
         <translation>%1 为只读</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="109"/>
+        <location filename="../cli/SetCommand.cpp" line="153"/>
         <source>%1 is a %2 command; add --yes to send it</source>
         <translation>%1 是%2命令；加上 --yes 才会发送</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="164"/>
+        <location filename="../cli/SetCommand.cpp" line="208"/>
         <source>error: cannot read %1 to check the values; nothing written</source>
         <translation>错误：无法读取 %1 来检查这些值；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="148"/>
-        <location filename="../cli/SetCommand.cpp" line="210"/>
-        <location filename="../cli/SetCommand.cpp" line="221"/>
+        <location filename="../cli/SetCommand.cpp" line="192"/>
+        <location filename="../cli/SetCommand.cpp" line="255"/>
+        <location filename="../cli/SetCommand.cpp" line="266"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="94"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
         <translation>确认会使电机运动、复位、清除、初始化或保存的命令，以及串口配置锁定的设定。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="198"/>
+        <location filename="../cli/SetCommand.cpp" line="243"/>
         <source>Add --yes to set it.</source>
         <translation>加上 --yes 才会设定。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="228"/>
+        <location filename="../cli/SetCommand.cpp" line="78"/>
+        <location filename="../cli/SetCommand.cpp" line="273"/>
         <source>nothing was written</source>
         <translation>未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="251"/>
+        <location filename="../cli/SetCommand.cpp" line="301"/>
         <source>not written (interrupted)</source>
         <translation>未写入（已中断）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="264"/>
+        <location filename="../cli/SetCommand.cpp" line="314"/>
         <source>next: %1</source>
         <translation>下一步：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="266"/>
+        <location filename="../cli/SetCommand.cpp" line="316"/>
         <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
         <translation>下一步：opentop-cli --baud %1 --parity %2 --stop-bits %3 ...（出厂通信设定）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="304"/>
+        <location filename="../cli/SetCommand.cpp" line="360"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="304"/>
+        <location filename="../cli/SetCommand.cpp" line="360"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="304"/>
-        <location filename="../cli/SetCommand.cpp" line="422"/>
+        <location filename="../cli/SetCommand.cpp" line="360"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="310"/>
-        <location filename="../cli/SetCommand.cpp" line="457"/>
+        <location filename="../cli/SetCommand.cpp" line="366"/>
         <source>written, verified</source>
         <translation>已写入，已校验</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="311"/>
+        <location filename="../cli/SetCommand.cpp" line="368"/>
+        <source>written, not verified: %1</source>
+        <translation>已写入，未确认：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="369"/>
         <source>written (command, not readable)</source>
         <translation>已写入（命令，不可读）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="313"/>
+        <location filename="../cli/SetCommand.cpp" line="371"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>未确认（%1）：驱动器可能保存了该值，也可能没有；可用 &quot;get&quot; 回读</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="327"/>
+        <location filename="../cli/SetCommand.cpp" line="382"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="389"/>
         <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
         <translation>注意：驱动器从下次上电起使用 %1：请将驱动器断电再上电，然后用新设定（--baud、--parity）连接</translation>
     </message>
+</context>
+<context>
+    <name>opentop::SetRaw</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="342"/>
+        <location filename="../cli/SetRaw.cpp" line="30"/>
         <source>error: --fc for raw writes is 6 or 16</source>
         <translation>错误：raw 写入的 --fc 为 6 或 16</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="368"/>
+        <location filename="../cli/SetRaw.cpp" line="56"/>
         <source>error: &quot;%1&quot; is not ADDR=VALUE (0x.. or decimal, 0–65535; several values, comma separated, only with --fc 16)</source>
         <translation>错误：&quot;%1&quot; 不是 ADDR=VALUE（0x.. 或十进制，0–65535；多个值以逗号分隔，仅限 --fc 16）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="385"/>
+        <location filename="../cli/SetRaw.cpp" line="73"/>
         <source>error: 0x%1 is not a register the profile knows; add --yes to write it anyway; nothing was written</source>
         <translation>错误：0x%1 不是设备描述中已知的寄存器；如仍要写入请加上 --yes；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="395"/>
+        <location filename="../cli/SetRaw.cpp" line="83"/>
+        <location filename="../cli/SetRaw.cpp" line="128"/>
         <source>error: %1; nothing was written</source>
         <translation>错误：%1；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="396"/>
+        <location filename="../cli/SetRaw.cpp" line="84"/>
         <source>%1 is a %2 command; add --yes</source>
         <translation>%1 是%2命令；请加上 --yes</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="403"/>
+        <location filename="../cli/SetRaw.cpp" line="91"/>
         <source>error: the write covers part of %1; add --yes to write it anyway; nothing was written</source>
         <translation>错误：此次写入只覆盖 %1 的一部分；如仍要写入请加上 --yes；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="422"/>
+        <location filename="../cli/SetRaw.cpp" line="141"/>
         <source>Address</source>
         <translation>地址</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="422"/>
+        <location filename="../cli/SetRaw.cpp" line="141"/>
         <source>Written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="455"/>
+        <location filename="../cli/SetRaw.cpp" line="141"/>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetRaw.cpp" line="174"/>
         <source>written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="459"/>
+        <location filename="../cli/SetRaw.cpp" line="176"/>
+        <source>written, verified</source>
+        <translation>已写入，已校验</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetRaw.cpp" line="178"/>
         <source>written, but reads back differently</source>
         <translation>已写入，但回读值不同</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="462"/>
+        <location filename="../cli/SetRaw.cpp" line="181"/>
         <source>written (not readable back: %1)</source>
         <translation>已写入（无法回读：%1）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="470"/>
+        <location filename="../cli/SetRaw.cpp" line="193"/>
         <source>Also written to %1 (communication group); not read back: no parameter of the profile</source>
         <translation>同时写入了 %1（通信组）；未回读：不是设备描述中的参数</translation>
     </message>
@@ -12049,32 +12906,37 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimApp</name>
     <message>
-        <location filename="../sim/SimApp.cpp" line="110"/>
+        <location filename="../sim/SimApp.cpp" line="111"/>
+        <source>opentop-sim: %1@%2 talks %3 (its own line settings): it answers only frames sent in that format</source>
+        <translation>opentop-sim：%1@%2 使用 %3（它自己的线路设定）：只应答以该格式发送的帧</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimApp.cpp" line="117"/>
         <source>opentop-sim: warning: %1@%2 cannot use %3 %4 and will not answer</source>
         <translation>opentop-sim：警告：%1@%2 无法使用 %3 %4，将不会应答</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="124"/>
+        <location filename="../sim/SimApp.cpp" line="131"/>
         <source>opentop-sim: --defect %1:%2: no drive with machine number %1 on the bus %3</source>
         <translation>opentop-sim：--defect %1:%2：总线 %3 上没有站号为 %1 的驱动器</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="131"/>
+        <location filename="../sim/SimApp.cpp" line="138"/>
         <source>opentop-sim: --defect %1 (%2@%1): %3</source>
         <translation>opentop-sim：--defect %1（%2@%1）：%3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="169"/>
+        <location filename="../sim/SimApp.cpp" line="176"/>
         <source>the port is unplugged already</source>
         <translation>端口已拔出</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="171"/>
+        <location filename="../sim/SimApp.cpp" line="178"/>
         <source>unplugged</source>
         <translation>已拔出</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="204"/>
+        <location filename="../sim/SimApp.cpp" line="211"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
@@ -12125,12 +12987,12 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>模拟适配器已拔出</translation>
     </message>
     <message>
-        <location filename="../sim/SimBackend.cpp" line="80"/>
+        <location filename="../sim/SimBackend.cpp" line="85"/>
         <source>interrupted while waiting</source>
         <translation>等待时被中断</translation>
     </message>
     <message>
-        <location filename="../sim/SimBackend.cpp" line="87"/>
+        <location filename="../sim/SimBackend.cpp" line="92"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 内无应答</translation>
     </message>
@@ -12143,22 +13005,43 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>未知设备类型 &apos;%1&apos;；已知：%2</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="65"/>
+        <location filename="../sim/SimBus.cpp" line="66"/>
+        <location filename="../sim/SimBus.cpp" line="74"/>
         <source>%1@%2{%3}: %4</source>
         <translation>%1@%2{%3}：%4</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="81"/>
+        <location filename="../sim/SimBus.cpp" line="107"/>
+        <source>no device with machine number %1</source>
+        <translation>没有站号 %1 的设备</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimBus.cpp" line="118"/>
+        <source>baud=%1: this drive talks at %2 bit/s</source>
+        <translation>baud=%1：该驱动器的波特率为 %2 bit/s</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimBus.cpp" line="126"/>
+        <source>format=%1: this drive offers %2 only</source>
+        <translation>format=%1：该驱动器只提供 %2</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimBus.cpp" line="132"/>
+        <source>this simulated drive has no line settings of its own</source>
+        <translation>该模拟驱动器没有自己的线路设定</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimBus.cpp" line="145"/>
         <source>machine number %1 is outside 1..247</source>
         <translation>站号 %1 超出 1..247</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="82"/>
+        <location filename="../sim/SimBus.cpp" line="146"/>
         <source>machine number %1 is used twice</source>
         <translation>站号 %1 重复使用</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="233"/>
+        <location filename="../sim/SimBus.cpp" line="317"/>
         <source>no device with machine number %1 (bus: %2)</source>
         <translation>没有站号为 %1 的设备（总线：%2）</translation>
     </message>
@@ -12355,32 +13238,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimDevice</name>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="241"/>
+        <location filename="../sim/SimDevice.cpp" line="248"/>
         <source>missing command</source>
         <translation>缺少命令</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="250"/>
+        <location filename="../sim/SimDevice.cpp" line="257"/>
         <source>slave %1 power cycled</source>
         <translation>从站 %1 已重新上电</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="292"/>
+        <location filename="../sim/SimDevice.cpp" line="299"/>
         <source>usage: defect ID DEFECT[,DEFECT...] or defect ID clear; DEFECT: %1</source>
         <translation>用法：defect ID DEFECT[,DEFECT...] 或 defect ID clear；DEFECT：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="299"/>
+        <location filename="../sim/SimDevice.cpp" line="306"/>
         <source>slave %1 defects: %2</source>
         <translation>从站 %1 的缺陷：%2</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="301"/>
+        <location filename="../sim/SimDevice.cpp" line="308"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="306"/>
+        <location filename="../sim/SimDevice.cpp" line="313"/>
         <source>&apos;%1&apos; is not supported by a %2 device</source>
         <translation>%2 设备不支持 &apos;%1&apos;</translation>
     </message>
@@ -12393,10 +13276,15 @@ This moves or stops a motor: add --yes to send it.</source>
 Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 
   --devices SPEC     devices and machine numbers, e.g. dbu200@1,dbu400@150,dcpid@7
+                     a drive&apos;s own line settings in braces, e.g.
+                     dcpid@7{format=8E1,baud=19200}: it hears only frames sent in
+                     that format (a pty passes the client&apos;s rate and parity on)
   --pty [PATH]       serve on a pty (default); PATH: also create this symlink
   --tcp HOST:PORT    serve Modbus TCP (HOST defaults to 127.0.0.1, PORT 0: any)
-  --baud N           line speed for wire timing and device settings (19200)
-  --parity N|E|O     line parity (N)
+  --baud N           line speed for wire timing and device settings (19200); a
+                     drive hears a frame only at its own rate and parity
+  --parity N|E|O     line parity (N): the drives without settings of their own
+                     are set to --baud and --parity
   --wire-timing      delay replies as a real line at --baud would
   --turnaround MS    device turnaround with --wire-timing (2)
   --half-duplex      with --wire-timing: a request overlapping a reply on the line
@@ -12430,10 +13318,15 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 在伪终端上或作为 Modbus TCP 网关模拟 Modbus RTU 驱动器。
 
   --devices SPEC     设备和站号，例如 dbu200@1,dbu400@150,dcpid@7
+                     驱动器自己的线路设定写在大括号内，例如
+                     dcpid@7{format=8E1,baud=19200}：只接收以该格式发送的
+                     帧（pty 会传递客户端的速率和校验位）
   --pty [PATH]       在 pty 上提供服务（默认）；PATH：同时创建该符号链接
   --tcp HOST:PORT    提供 Modbus TCP 服务（HOST 默认为 127.0.0.1，PORT 0：任意）
-  --baud N           用于线路时序和设备设定的线路速率（19200）
-  --parity N|E|O     线路校验位（N）
+  --baud N           用于线路时序和设备设定的线路速率（19200）；驱动器只接收
+                     自己速率和校验位的帧
+  --parity N|E|O     线路校验位（N）：没有自己设定的驱动器
+                     设为 --baud 和 --parity
   --wire-timing      按 --baud 下真实线路的时序延迟应答
   --turnaround MS    使用 --wire-timing 时设备的转换时间（2）
   --half-duplex      配合 --wire-timing：请求与线路上的应答重叠时
@@ -12465,82 +13358,82 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="87"/>
+        <location filename="../sim/SimOptions.cpp" line="92"/>
         <source>--lang needs a language code such as ko</source>
         <translation>--lang 需要语言代码，例如 ko</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="90"/>
+        <location filename="../sim/SimOptions.cpp" line="95"/>
         <source>--devices needs a device list such as dbu200@1,dcpid@7</source>
         <translation>--devices 需要设备列表，例如 dbu200@1,dcpid@7</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="99"/>
+        <location filename="../sim/SimOptions.cpp" line="104"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:5020</source>
         <translation>--tcp 需要 HOST:PORT，例如 127.0.0.1:5020</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="105"/>
+        <location filename="../sim/SimOptions.cpp" line="110"/>
         <source>--tcp needs HOST:PORT with PORT 0..65535, got &apos;%1&apos;</source>
         <translation>--tcp 需要 HOST:PORT，PORT 为 0..65535，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="117"/>
+        <location filename="../sim/SimOptions.cpp" line="122"/>
         <source>--baud must be one of %1, got &apos;%2&apos;</source>
         <translation>--baud 必须是 %1 之一，实际为 &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="124"/>
+        <location filename="../sim/SimOptions.cpp" line="129"/>
         <source>--parity must be N, E or O, got &apos;%1&apos;</source>
         <translation>--parity 必须为 N、E 或 O，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="134"/>
+        <location filename="../sim/SimOptions.cpp" line="139"/>
         <source>--turnaround must be 0..1000 ms, got &apos;%1&apos;</source>
         <translation>--turnaround 必须为 0..1000 ms，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="138"/>
+        <location filename="../sim/SimOptions.cpp" line="143"/>
         <source>--faults needs a list such as drop=0.02,crc=0.01</source>
         <translation>--faults 需要列表，例如 drop=0.02,crc=0.01</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="142"/>
+        <location filename="../sim/SimOptions.cpp" line="147"/>
         <source>--faults: %1</source>
         <translation>--faults：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="148"/>
+        <location filename="../sim/SimOptions.cpp" line="153"/>
         <source>--seed must be a whole number 0..4294967295, got &apos;%1&apos;</source>
         <translation>--seed 必须是 0..4294967295 的整数，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="152"/>
+        <location filename="../sim/SimOptions.cpp" line="157"/>
         <source>--defect needs ID:DEFECT[,DEFECT...], e.g. 3:firmware=1.4; DEFECT: %1</source>
         <translation>--defect 需要 ID:DEFECT[,DEFECT...]，例如 3:firmware=1.4；DEFECT：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="159"/>
+        <location filename="../sim/SimOptions.cpp" line="164"/>
         <source>--defect: %1</source>
         <translation>--defect：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="163"/>
+        <location filename="../sim/SimOptions.cpp" line="168"/>
         <source>--motor needs a list such as inertia=2e-4,load=0.05</source>
         <translation>--motor 需要列表，例如 inertia=2e-4,load=0.05</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="167"/>
+        <location filename="../sim/SimOptions.cpp" line="172"/>
         <source>--motor: %1</source>
         <translation>--motor：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="172"/>
+        <location filename="../sim/SimOptions.cpp" line="177"/>
         <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
         <translation>未知参数 &apos;%1&apos;；选项：--devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="181"/>
+        <location filename="../sim/SimOptions.cpp" line="186"/>
         <source>--devices SPEC is required, e.g. --devices dbu200@1,dcpid@7</source>
         <translation>必须指定 --devices SPEC，例如 --devices dbu200@1,dcpid@7</translation>
     </message>
@@ -12790,62 +13683,62 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>%1 的通信组</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="158"/>
+        <location filename="../model/run/StartPreview.cpp" line="177"/>
         <source>It runs with running data SPno%1</source>
         <translation>以运行数据 SPno%1 运行</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="160"/>
+        <location filename="../model/run/StartPreview.cpp" line="179"/>
         <source> at %1</source>
         <translation> （%1）</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="163"/>
+        <location filename="../model/run/StartPreview.cpp" line="182"/>
         <source>, direction %1 (the direction command sent since)</source>
         <translation>，方向 %1（此后已发送方向命令）</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="164"/>
+        <location filename="../model/run/StartPreview.cpp" line="183"/>
         <source>, direction %1</source>
         <translation>，方向 %1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="167"/>
+        <location filename="../model/run/StartPreview.cpp" line="186"/>
         <source>Which running data it runs with could not be read.</source>
         <translation>无法读取以哪组运行数据运行。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="170"/>
+        <location filename="../model/run/StartPreview.cpp" line="189"/>
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="172"/>
+        <location filename="../model/run/StartPreview.cpp" line="191"/>
         <source>The start also reaches machine number(s) %1: %2.</source>
         <translation>启动也会作用于站号 %1：%2。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="175"/>
+        <location filename="../model/run/StartPreview.cpp" line="195"/>
         <source>Not read: %1.</source>
         <translation>未读取：%1。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="187"/>
+        <location filename="../model/run/StartPreview.cpp" line="207"/>
         <source>This starts the motor of machine number %1.</source>
         <translation>这将启动站号 %1 的电机。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="189"/>
+        <location filename="../model/run/StartPreview.cpp" line="209"/>
         <source>This sets the speed command of machine number %1 to %2: its motor runs.</source>
         <translation>这将把站号 %1 的速度命令设定为 %2：其电机将运行。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="193"/>
+        <location filename="../model/run/StartPreview.cpp" line="213"/>
         <source>Make sure that nobody is near the machine and that it may move. STOP ALL stops every drive at any time.</source>
         <translation>请确认设备附近无人且设备可以运动。“全部停止”可随时停止所有驱动器。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="196"/>
+        <location filename="../model/run/StartPreview.cpp" line="216"/>
         <source>You are asked once per drive while the program runs.</source>
         <translation>程序运行期间，每台驱动器只询问一次。</translation>
     </message>
@@ -13163,102 +14056,82 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>站号 %1 尚未识别为已知系列的驱动器；试运行需要已识别的驱动器。</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="111"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="120"/>
         <source>&amp;Start</source>
         <translation>启动(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="111"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="120"/>
         <source>S&amp;top</source>
         <translation>停止(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="112"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="121"/>
         <source>&amp;CW</source>
         <translation>CW(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="112"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="121"/>
         <source>CC&amp;W</source>
         <translation>CCW(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="113"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="122"/>
         <source>&amp;Hold</source>
         <translation>保持(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="113"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="122"/>
         <source>&amp;Free</source>
         <translation>释放(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="132"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="141"/>
         <source>Se&amp;lect running data</source>
         <translation>选择运行数据(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="143"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="152"/>
         <source>Return to &amp;I/O priority</source>
         <translation>恢复为 I/O 优先级(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="145"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="154"/>
         <source>Give run, stop, direction and speed selection back to the drive&apos;s input terminals</source>
         <translation>将运行、停止、方向和速度选择交还给驱动器的输入端子</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="191"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="200"/>
         <source>Cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>无法读取 %1 以确认驱动器是否接受运动命令：%2</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="227"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="236"/>
         <source>Reading what the start will run…</source>
         <translation>正在读取启动后将运行的内容…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="243"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="252"/>
         <source>Start the motor</source>
         <translation>启动电机</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="257"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="266"/>
         <source>Sending %1…</source>
         <translation>正在发送 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="293"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="295"/>
+        <source>Not every drive of its communication group runs: see below.</source>
+        <translation>通信组中并非所有驱动器都在运行：见下方。</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/TestRunPanel.cpp" line="313"/>
         <source>Sent: %1</source>
         <translation>已发送：%1</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="308"/>
-        <source>Read back after the command at %1:</source>
-        <translation>%1 发送命令后回读：</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="311"/>
-        <source>The motor is running.</source>
-        <translation>电机正在运行。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="311"/>
-        <source>The motor is stopped.</source>
-        <translation>电机已停止。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="313"/>
-        <source>%1: %2</source>
-        <translation>%1：%2</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="315"/>
-        <source>(not read: %1)</source>
-        <translation>（未读取：%1）</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="379"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="382"/>
         <source>Polling is paused: the controller brakes the motor %1 s after the last frame it receives (%2). Resume polling to keep the motor running.</source>
         <translation>轮询已暂停：控制器在收到最后一帧报文 %1 s 后会使电机制动（%2）。请恢复轮询以保持电机运行。</translation>
     </message>
@@ -13528,32 +14401,37 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>不支持 RS-485 模式 %1：请使用 off、auto、kernel 或 rts。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="50"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="52"/>
+        <source>Line format of machine number %1: %2 Use machine numbers 1–247.</source>
+        <translation>站号 %1 的通信格式：%2 请使用站号 1–247。</translation>
+    </message>
+    <message>
+        <location filename="../transport/ConnectionSettings.cpp" line="60"/>
         <source>RTS delay %1 µs is not allowed: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own).</source>
         <translation>不允许 RTS 延时 %1 µs：请使用 0–%2 µs（0：使用驱动程序或 libmodbus 自身的延时）。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="59"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="69"/>
         <source>No host given: enter the gateway&apos;s address, e.g. 192.168.1.10.</source>
         <translation>未指定主机：请输入网关地址，例如 192.168.1.10。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="63"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="73"/>
         <source>TCP port %1 is not allowed: use 1–65535 (Modbus TCP uses 502).</source>
         <translation>不允许 TCP 端口 %1：请使用 1–65535（Modbus TCP 使用 502）。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="70"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="80"/>
         <source>No simulated devices given: use a list such as dbu200@1,dcpid@7.</source>
         <translation>未指定模拟设备：请使用 dbu200@1,dcpid@7 这样的列表。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="76"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="86"/>
         <source>Timeout %1 ms is not allowed: use 10–10000 ms.</source>
         <translation>不允许超时 %1 ms：请使用 10–10000 ms。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="80"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="90"/>
         <source>%1 retries are not allowed: use 0–10.</source>
         <translation>不允许重试 %1 次：请使用 0–10。</translation>
     </message>
@@ -13603,70 +14481,80 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="129"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="325"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="131"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
         <source>%1 is not open</source>
         <translation>%1 未打开</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="151"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="169"/>
         <source>send failed</source>
         <translation>发送失败</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="177"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="195"/>
         <source>interrupted while waiting</source>
         <translation>等待时被中断</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="181"/>
-        <location filename="../transport/MockBackend.cpp" line="100"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="199"/>
+        <location filename="../transport/MockBackend.cpp" line="101"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 内无应答</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="211"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="232"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>之后又收到一个应答：这个应答可能是对之前请求的应答</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="307"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="267"/>
+        <source>a drive&apos;s own line format needs a serial port; a Modbus TCP gateway sets its line itself</source>
+        <translation>驱动器自己的通信格式需要串口；Modbus TCP 网关自行设定它的线路</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="283"/>
+        <source>cannot switch the line to %1: %2</source>
+        <translation>无法把线路切换到 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="356"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>来自从站 %1 的应答，预期为 %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="318"/>
-        <location filename="../transport/RtuBackend.cpp" line="160"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="367"/>
+        <location filename="../transport/RtuBackend.cpp" line="158"/>
         <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>应答不完整</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="323"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="372"/>
         <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 不一致</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="330"/>
-        <location filename="../transport/RtuBackend.cpp" line="167"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="379"/>
+        <location filename="../transport/RtuBackend.cpp" line="165"/>
         <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>接收失败</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="404"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="453"/>
         <source> (connection closed)</source>
         <translation> （连接已关闭）</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="426"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="475"/>
         <source>stale bytes discarded before sending</source>
         <translation>发送前丢弃了残留字节</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="510"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="559"/>
         <source>late bytes discarded after an error</source>
         <translation>出错后丢弃了迟到的字节</translation>
     </message>
@@ -13691,18 +14579,18 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>回显 %1 ×%2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="201"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="220"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="214"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="233"/>
         <source>cancelled before sending</source>
         <translation>发送前已取消</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="254"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="273"/>
         <source>cannot open %1</source>
         <translation>无法打开 %1</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="301"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="315"/>
         <source>client closed</source>
         <translation>客户端已关闭</translation>
     </message>
@@ -13727,72 +14615,72 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>不允许重试 %1 次：请使用 0–10，或用 -1 表示默认值。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="164"/>
+        <location filename="../transport/ModbusRequest.cpp" line="169"/>
         <source>Function 0x%1 cannot be broadcast: only functions 06h and 10h (writes) may be sent to machine number 0; use slave address 1–247.</source>
         <translation>功能码 0x%1 不能广播：只有功能码 06h 和 10h（写入）可以发给站号 0；请使用从站地址 1–247。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="171"/>
+        <location filename="../transport/ModbusRequest.cpp" line="176"/>
         <source>Function code 0x%1 must be sent as a raw request.</source>
         <translation>功能码 0x%1 必须作为原始请求发送。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="175"/>
+        <location filename="../transport/ModbusRequest.cpp" line="180"/>
         <source>Raw request data of %1 bytes is too long: at most %2 bytes.</source>
         <translation>%1 字节的原始请求数据过长：最多 %2 字节。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="188"/>
+        <location filename="../transport/ModbusRequest.cpp" line="193"/>
         <source>Cannot read %1 registers at once: use 1–125 registers.</source>
         <translation>无法一次读取 %1 个寄存器：请使用 1–125 个寄存器。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="195"/>
+        <location filename="../transport/ModbusRequest.cpp" line="200"/>
         <source>Write single register needs exactly 1 value, not %1.</source>
         <translation>写单个寄存器需要且只需要 1 个值，而不是 %1 个。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="201"/>
+        <location filename="../transport/ModbusRequest.cpp" line="206"/>
         <source>Cannot write %1 registers at once: use 1–123 registers.</source>
         <translation>无法一次写入 %1 个寄存器：请使用 1–123 个寄存器。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="206"/>
+        <location filename="../transport/ModbusRequest.cpp" line="211"/>
         <source>%1 values given for %2 registers.</source>
         <translation>为 %2 个寄存器给出了 %1 个值。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="215"/>
+        <location filename="../transport/ModbusRequest.cpp" line="220"/>
         <source>Registers %1 ×%2 run past the last address 0xFFFF.</source>
         <translation>寄存器 %1 ×%2 超出最后地址 0xFFFF。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="226"/>
+        <location filename="../transport/ModbusRequest.cpp" line="231"/>
         <source>device identification code %1 object %2</source>
         <translation>设备识别代码 %1 对象 %2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="234"/>
+        <location filename="../transport/ModbusRequest.cpp" line="239"/>
         <source>raw %1 %2</source>
         <translation>原始 %1 %2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="238"/>
+        <location filename="../transport/ModbusRequest.cpp" line="243"/>
         <source>read %1 %2 ×%3</source>
         <translation>读取 %1 %2 ×%3</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="242"/>
+        <location filename="../transport/ModbusRequest.cpp" line="247"/>
         <source>write %1 %2 = %3</source>
         <translation>写入 %1 %2 = %3</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="245"/>
+        <location filename="../transport/ModbusRequest.cpp" line="250"/>
         <source>write %1 %2 ×%3 = %4</source>
         <translation>写入 %1 %2 ×%3 = %4</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="251"/>
+        <location filename="../transport/ModbusRequest.cpp" line="256"/>
         <source>broadcast %1</source>
         <translation>广播 %1</translation>
     </message>
@@ -13947,7 +14835,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>%1 正被 %2（PID %3）占用；请先将其关闭。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="97"/>
+        <location filename="../transport/RtuBackend.cpp" line="95"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -13956,17 +14844,17 @@ then log out and in again (the group applies to new sessions only).</source>
 然后注销并重新登录（该组仅对新会话生效）。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="103"/>
+        <location filename="../transport/RtuBackend.cpp" line="101"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> （设备可能不支持该校验位；pty 需要 N）</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="138"/>
+        <location filename="../transport/RtuBackend.cpp" line="136"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>应答声明 %1 字节，超过 RTU 帧的容量</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="159"/>
+        <location filename="../transport/RtuBackend.cpp" line="157"/>
         <source>no reply</source>
         <translation>无应答</translation>
     </message>
@@ -14191,21 +15079,26 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>适配器会将收到的字节缓存最多 %1 ms 后才转交（%2）。解决方法：%3。</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineSetup.cpp" line="106"/>
+        <location filename="../transport/SerialLineSetup.cpp" line="107"/>
         <source>the driver left it off</source>
         <translation>驱动程序仍保持关闭</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineSetup.cpp" line="176"/>
+        <source>the port does not take %1</source>
+        <translation>端口不接受 %1</translation>
     </message>
 </context>
 <context>
     <name>opentop::TrendAxes</name>
     <message>
-        <location filename="../ui/trends/TrendAxes.cpp" line="40"/>
-        <location filename="../ui/trends/TrendAxes.cpp" line="46"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="51"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="52"/>
         <source>%1 [%2]</source>
         <translation>%1 [%2]</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendAxes.cpp" line="45"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="49"/>
         <source>[%1]</source>
         <translation>[%1]</translation>
     </message>
@@ -14213,22 +15106,23 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendChart</name>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="45"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="32"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="58"/>
         <source>Time (hh:mm:ss)</source>
         <translation>时间 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="88"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="105"/>
         <source>Drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="279"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="296"/>
         <source>There is no trend data to export yet.</source>
         <translation>尚无可导出的趋势数据。</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="292"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="309"/>
         <source>Cannot write the picture %1.</source>
         <translation>无法写入图片 %1。</translation>
     </message>
@@ -14411,228 +15305,278 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuneCommand</name>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="80"/>
+        <location filename="../cli/TuneCommand.cpp" line="81"/>
         <source>Speed-loop step test and relay autotune of a DC controller (needs --yes)</source>
         <translation>直流控制器的速度环阶跃测试和继电器自整定（需要 --yes）</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="86"/>
+        <location filename="../cli/TuneCommand.cpp" line="87"/>
         <source>Run the test (it moves the motor).</source>
         <translation>执行测试（会使电机运动）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="87"/>
+        <location filename="../cli/TuneCommand.cpp" line="88"/>
         <source>step: speed before the step (default 0).</source>
         <translation>step：阶跃前的速度（默认 0）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="87"/>
         <location filename="../cli/TuneCommand.cpp" line="88"/>
-        <location filename="../cli/TuneCommand.cpp" line="91"/>
-        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <location filename="../cli/TuneCommand.cpp" line="89"/>
+        <location filename="../cli/TuneCommand.cpp" line="92"/>
+        <location filename="../cli/TuneCommand.cpp" line="106"/>
         <source>SPEED</source>
         <translation>SPEED</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="88"/>
+        <location filename="../cli/TuneCommand.cpp" line="89"/>
         <source>step: speed after the step.</source>
         <translation>step：阶跃后的速度。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="89"/>
+        <location filename="../cli/TuneCommand.cpp" line="90"/>
         <source>step: record this long after the step (default 1500).</source>
         <translation>step：阶跃后记录的时长（默认 1500）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="90"/>
+        <location filename="../cli/TuneCommand.cpp" line="91"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="91"/>
+        <location filename="../cli/TuneCommand.cpp" line="92"/>
         <source>autotune: operating speed of the relay test.</source>
         <translation>autotune：继电器测试的运行速度。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="92"/>
+        <location filename="../cli/TuneCommand.cpp" line="93"/>
         <source>autotune: output swing, % of full output (default 10).</source>
         <translation>autotune：输出摆幅，以满输出的 % 表示（默认 10）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="93"/>
+        <location filename="../cli/TuneCommand.cpp" line="94"/>
         <source>PERCENT</source>
         <translation>PERCENT</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="95"/>
+        <location filename="../cli/TuneCommand.cpp" line="96"/>
         <source>autotune: soft, medium (default), stiff, tyreus-luyben or zn-pi.</source>
         <translation>autotune：soft、medium（默认）、stiff、tyreus-luyben 或 zn-pi。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="95"/>
+        <location filename="../cli/TuneCommand.cpp" line="96"/>
         <source>RULE</source>
         <translation>RULE</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="96"/>
+        <location filename="../cli/TuneCommand.cpp" line="97"/>
         <source>autotune: write the proposed gains, then run a step test from half the operating speed to it.</source>
         <translation>autotune：写入建议增益，然后执行从运行速度的一半到运行速度的阶跃测试。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="98"/>
-        <source>autotune: with --accept, store the gains in the drive.</source>
-        <translation>autotune：配合 --accept 时，将增益保存到驱动器。</translation>
+        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <source>autotune: with --accept, store the gains in the drive if the step measured with them passes the check.</source>
+        <translation>autotune：配合 --accept 时，若用此增益测得的阶跃通过检查，便将增益保存到驱动器。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <source>autotune: with --accept, keep (and with --store, store) gains whose measured step failed the check; without it they are written back to what the drive had.</source>
+        <translation>autotune：配合 --accept 时，即使测得的阶跃未通过检查也保留增益（配合 --store 则保存）；不指定时会写回驱动器原来的增益。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="106"/>
         <source>Stop at once beyond this speed (default 120 % of the test&apos;s highest).</source>
         <translation>速度超过此值时立即停止（默认为测试最高速度的 120 %）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="101"/>
+        <location filename="../cli/TuneCommand.cpp" line="107"/>
         <source>Stop at once beyond this current in A (default 20).</source>
         <translation>电流超过此值（A）时立即停止（默认 20）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="102"/>
+        <location filename="../cli/TuneCommand.cpp" line="108"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <location filename="../cli/TuneCommand.cpp" line="109"/>
         <source>Write the samples to FILE.</source>
         <translation>将采样数据写入 FILE。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <location filename="../cli/TuneCommand.cpp" line="109"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="117"/>
+        <location filename="../cli/TuneCommand.cpp" line="123"/>
         <source>error: usage: %1</source>
         <translation>错误：用法：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="127"/>
+        <location filename="../cli/TuneCommand.cpp" line="133"/>
         <source>error: --%1 must be a number 0 or more, got &apos;%2&apos;</source>
         <translation>错误：--%1 必须是不小于 0 的数，实际为 &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="149"/>
-        <location filename="../cli/TuneCommand.cpp" line="160"/>
-        <location filename="../cli/TuneCommand.cpp" line="165"/>
-        <location filename="../cli/TuneCommand.cpp" line="319"/>
+        <location filename="../cli/TuneCommand.cpp" line="155"/>
+        <location filename="../cli/TuneCommand.cpp" line="166"/>
+        <location filename="../cli/TuneCommand.cpp" line="171"/>
+        <location filename="../cli/TuneCommand.cpp" line="374"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="150"/>
+        <location filename="../cli/TuneCommand.cpp" line="156"/>
         <source>step needs --to SPEED</source>
         <translation>step 需要 --to SPEED</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="151"/>
+        <location filename="../cli/TuneCommand.cpp" line="157"/>
         <source>--rule must be one of %1</source>
         <translation>--rule 必须是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="153"/>
+        <location filename="../cli/TuneCommand.cpp" line="159"/>
         <source>autotune needs --speed SPEED</source>
         <translation>autotune 需要 --speed SPEED</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="169"/>
+        <location filename="../cli/TuneCommand.cpp" line="175"/>
         <source>Would run the motor of machine number %1 from %2 to %3 and record the step response.</source>
         <translation>将使站号 %1 的电机从 %2 运行到 %3，并记录阶跃响应。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="174"/>
+        <location filename="../cli/TuneCommand.cpp" line="180"/>
         <source>Would run the motor of machine number %1 in a relay test around %2 (output ±%3 %).</source>
         <translation>将使站号 %1 的电机在 %2 附近进行继电器测试（输出 ±%3 %）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="180"/>
+        <location filename="../cli/TuneCommand.cpp" line="186"/>
         <source>This moves the motor: add --yes to run it.</source>
         <translation>这会使电机运动：加上 --yes 才会执行。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="229"/>
+        <location filename="../cli/TuneCommand.cpp" line="235"/>
         <source>Machine number %1, gains %2</source>
         <translation>站号 %1，增益 %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="231"/>
+        <location filename="../cli/TuneCommand.cpp" line="237"/>
         <source>  rise time (10–90 %): %1</source>
         <translation>  上升时间（10–90 %）：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="232"/>
+        <location filename="../cli/TuneCommand.cpp" line="238"/>
         <source>  overshoot: %1 %</source>
         <translation>  超调：%1 %</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="233"/>
+        <location filename="../cli/TuneCommand.cpp" line="239"/>
         <source>  settling time (2 %): %1</source>
         <translation>  调节时间（2 %）：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="234"/>
+        <location filename="../cli/TuneCommand.cpp" line="240"/>
         <source>  steady-state error: %1 %2</source>
         <translation>  稳态误差：%1 %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="235"/>
+        <location filename="../cli/TuneCommand.cpp" line="241"/>
         <source>  peak current: %1 A</source>
         <translation>  峰值电流：%1 A</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="249"/>
+        <location filename="../cli/TuneCommand.cpp" line="267"/>
         <source>Step %1 → %2 %3:</source>
         <translation>阶跃 %1 → %2 %3：</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="253"/>
-        <source>Relay test: Ku %1, Tu %2 ms (amplitude ±%3 %4, %5 cycles)</source>
-        <translation>继电器测试：Ku %1，Tu %2 ms（幅值 ±%3 %4，%5 个周期）</translation>
+        <location filename="../cli/TuneCommand.cpp" line="272"/>
+        <source>Relay test: Ku %1, Tu %2 ms measured (amplitude ±%3 %4, %5 cycles, %6 readings per period, one every %7 ms)</source>
+        <translation>继电器测试：Ku %1，实测 Tu %2 ms（幅值 ±%3 %4，%5 个周期，每周期读取 %6 次，每 %7 ms 一次）</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="259"/>
+        <location filename="../cli/TuneCommand.cpp" line="364"/>
+        <source>What to change: %1</source>
+        <translation>应更改的项目：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="281"/>
         <source>Model: gain %1, time constant %2 ms, dead time %3 ms (the bus&apos;s %4 ms left out)</source>
         <translation>模型：增益 %1，时间常数 %2 ms，纯滞后时间 %3 ms（已扣除总线的 %4 ms）</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="265"/>
+        <location filename="../cli/TuneCommand.cpp" line="287"/>
+        <source>The drive&apos;s own loop on the model: Ku %1, Tu %2 ms</source>
+        <translation>模型上驱动器自身的环路：Ku %1，Tu %2 ms</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="290"/>
         <source>Proposed (%1): %2</source>
         <translation>建议值（%1）：%2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="281"/>
+        <location filename="../cli/TuneCommand.cpp" line="291"/>
+        <source>  the rule&apos;s P × %1, Ti × %2; predicted step %3 → %4 %5: overshoot %6 %, settling time %7</source>
+        <translation>  规则的 P × %1，Ti × %2；预测阶跃 %3 → %4 %5：超调 %6 %，调节时间 %7</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="307"/>
         <source>Writing the proposed gains failed: %1</source>
         <translation>写入建议增益失败：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="284"/>
+        <location filename="../cli/TuneCommand.cpp" line="310"/>
         <source>Proposed gains written (not stored).</source>
         <translation>已写入建议增益（未保存）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="287"/>
+        <location filename="../cli/TuneCommand.cpp" line="313"/>
         <source>Measured step %1 → %2 %3 with them:</source>
         <translation>用该增益测得的阶跃 %1 → %2 %3：</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="303"/>
+        <location filename="../cli/TuneCommand.cpp" line="321"/>
+        <source>interrupted</source>
+        <translation>已中断</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="324"/>
+        <source>Check after Accept: passed. %1</source>
+        <translation>接受后的检查：通过。%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="325"/>
+        <source>Check after Accept: FAILED. %1</source>
+        <translation>接受后的检查：未通过。%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="334"/>
+        <source>The gains before were written back (%1); nothing was stored. --override-check keeps the proposal (and with --store stores it) all the same.</source>
+        <translation>已写回原来的增益（%1）；未保存任何内容。加上 --override-check 仍会保留建议值（配合 --store 则保存）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="338"/>
+        <source>Writing back the gains before failed: %1; the proposal is still in the drive (not stored).</source>
+        <translation>写回原来的增益失败：%1；建议值仍在驱动器中（未保存）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="345"/>
+        <source>Storing although the check failed (--override-check).</source>
+        <translation>检查未通过，仍予保存（--override-check）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="354"/>
         <source>Gains stored in the drive.</source>
         <translation>增益已保存到驱动器。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="304"/>
+        <location filename="../cli/TuneCommand.cpp" line="355"/>
         <source>Storing the gains failed: %1</source>
         <translation>保存增益失败：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="311"/>
+        <location filename="../cli/TuneCommand.cpp" line="362"/>
         <source>Test ended: %1</source>
         <translation>测试结束：%1</translation>
     </message>
@@ -14640,24 +15584,31 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningChart</name>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="40"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="41"/>
         <source>Time (ms)</source>
         <translation>时间 (ms)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="44"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="45"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="83"/>
         <source>Current (A)</source>
         <translation>电流 (A)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="65"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="81"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="65"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="81"/>
         <source>Speed (%1)</source>
         <translation>速度 (%1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="82"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="83"/>
+        <source>(%1)</source>
+        <translation>(%1)</translation>
     </message>
 </context>
 <context>
@@ -14824,163 +15775,153 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningPage</name>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="41"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="43"/>
         <source>STOP</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="52"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="55"/>
         <source>Cancels the running test: the motor is stopped and the stop confirmed</source>
         <translation>取消正在进行的测试：停止电机并确认已停止</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="68"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="245"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="71"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="269"/>
         <source>Step test</source>
         <translation>阶跃测试</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="69"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="72"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="289"/>
         <source>Relay autotune</source>
         <translation>继电器自整定</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="107"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="131"/>
         <source>Ready. Nothing moves until you confirm a test.</source>
         <translation>就绪。确认测试之前，电机不会运行。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="198"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="222"/>
         <source>Could not read the speed mode: %1</source>
         <translation>无法读取速度模式：%1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="201"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="225"/>
         <source>The drive is not in a closed-loop speed mode (now: %1). Choose one on its settings page first.</source>
         <translation>驱动器不处于闭环速度模式（当前：%1）。请先在其设定页面中选择一种闭环模式。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="224"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="248"/>
         <source>Limits: %1 %2, %3.</source>
         <translation>限值：%1 %2，%3。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="226"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="250"/>
         <source>%1 A</source>
         <translation>%1 A</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="226"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="250"/>
         <source>no current limit</source>
         <translation>无电流限值</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="241"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
         <source>The motor of %1 will run from %2 to %3 %4 in its present speed mode, for about %5 s, and then stop.</source>
         <translation>%1 的电机将以当前速度模式从 %2 运行到 %3 %4，持续约 %5 s，然后停止。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="245"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="269"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="289"/>
         <source>Run</source>
         <translation>执行</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="261"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="285"/>
         <source>The motor of %1 will run in open loop (the speed loop off) around %2 %3, its output switching by ±%4 %, for up to %5 s, and then stop.</source>
         <translation>%1 的电机将以开环方式（速度环关闭）在 %2 %3 附近运行，输出以 ±%4 % 切换，最长 %5 s，然后停止。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="283"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="307"/>
         <source>Stop command sent.</source>
         <translation>已发送停止命令。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="284"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="308"/>
         <source>Stop command failed: %1</source>
         <translation>停止命令失败：%1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="294"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="318"/>
         <source>Stopping…</source>
         <translation>正在停止…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="308"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="332"/>
         <source>Run %1: %2 → %3 %4</source>
         <translation>测试 %1：%2 → %3 %4</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="343"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="367"/>
         <source>Step test done.</source>
         <translation>阶跃测试完成。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="343"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="367"/>
         <source>Step test ended: %1</source>
         <translation>阶跃测试结束：%1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="347"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="372"/>
         <source>The test was stopped</source>
         <translation>测试已停止</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="380"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="403"/>
         <source>Autotune ended: %1</source>
         <translation>自整定结束：%1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="382"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="405"/>
         <source>The autotune was stopped</source>
         <translation>自整定已停止</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="392"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="415"/>
         <source>Predicted: %1 → %2 %3</source>
         <translation>预测：%1 → %2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="400"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="423"/>
         <source>Autotune done: proposal %1. Accept writes it to the drive.</source>
         <translation>自整定完成：建议值 %1。接受后将写入驱动器。</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="434"/>
-        <source>Proposal rejected; the drive&apos;s gains were not changed.</source>
-        <translation>已拒绝建议值；驱动器的增益未改变。</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="438"/>
-        <source>Proposal rejected</source>
-        <translation>已拒绝建议值</translation>
     </message>
 </context>
 <context>
     <name>opentop::TuningRules</name>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="60"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="61"/>
         <source>Soft (no overshoot)</source>
         <translation>柔和（无超调）</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="62"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="63"/>
         <source>Medium (some overshoot)</source>
         <translation>适中（少量超调）</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="64"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="65"/>
         <source>Stiff (Ziegler–Nichols)</source>
         <translation>高刚性（Ziegler–Nichols）</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="66"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="67"/>
         <source>Tyreus–Luyben (robust)</source>
         <translation>Tyreus–Luyben（鲁棒）</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="68"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="69"/>
         <source>PI only (Ziegler–Nichols)</source>
         <translation>仅 PI（Ziegler–Nichols）</translation>
     </message>
@@ -15019,129 +15960,134 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningRunner</name>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="190"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="205"/>
         <source>a tuning test is already running</source>
         <translation>已有整定测试正在进行</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="198"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="214"/>
         <source>Reading the drive&apos;s settings</source>
         <translation>正在读取驱动器设定</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="206"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="223"/>
         <source>could not read the drive&apos;s settings: %1</source>
         <translation>无法读取驱动器设定：%1</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="231"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="250"/>
         <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
         <translation>驱动器不处于闭环速度模式：请先将 %1（%2）设为 %3</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="233"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="252"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="248"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="267"/>
         <source>Setting the communication-loss braking time to %1 s</source>
         <translation>正在将通信中断停止时间设为 %1 s</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="272"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="291"/>
         <source>the drive stopped answering: %1</source>
         <translation>驱动器停止应答：%1</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="290"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="316"/>
         <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
         <translation>速度 %1 %2 超出测试限值 %3 %2：已立即停止</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="297"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="323"/>
         <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
         <translation>电流 %1 A 超出测试限值 %2 A：已立即停止</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="303"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="329"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="364"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="391"/>
         <source>Stopping the motor</source>
         <translation>正在停止电机</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="370"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="396"/>
         <source>motor stopped (confirmed)</source>
         <translation>电机已停止（已确认）</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="371"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="397"/>
         <source>the motor could not be confirmed stopped: check it</source>
         <translation>无法确认电机已停止：请检查电机</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="406"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="435"/>
         <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
         <translation>阶跃测试以正转从一个速度变到另一个速度：起始速度和目标速度必须不同，且不小于 0</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="413"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="442"/>
         <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
         <translation>%1 %2 超出测试的速度限值 %3 %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="421"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="450"/>
         <source>Running to %1 %2</source>
         <translation>正在运行至 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="457"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="486"/>
         <source>Step to %1 %2</source>
         <translation>阶跃至 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="484"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="513"/>
         <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
         <translation>运行速度必须大于 0 且小于测试的速度限值 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="491"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="520"/>
         <source>the relay amplitude must be 0–50 % of full output</source>
         <translation>继电器幅值必须为最大输出的 0–50 %</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="494"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="523"/>
         <source>Open loop: finding the output for %1 %2</source>
         <translation>开环：正在寻找 %1 %2 所需的输出</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="542"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="581"/>
         <source>the motor did not turn at %1 % output</source>
         <translation>输出 %1 % 时电机未转动</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="578"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="617"/>
         <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
         <translation>运行速度需要 %1 % 的输出：上下没有 ±%2 % 的余量</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="583"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="622"/>
         <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
         <translation>正在 %1 %2 附近进行继电器测试（输出 %3 % ± %4 %）</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="616"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="657"/>
         <source>no steady oscillation within %1 s: %2</source>
         <translation>%1 s 内未出现稳定振荡：%2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="618"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="659"/>
         <source>try a larger amplitude</source>
         <translation>请尝试加大幅值</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="695"/>
+        <source>the relay result was refused: %1</source>
+        <translation>继电器测试结果不予采用：%1</translation>
     </message>
 </context>
 <context>
@@ -15172,34 +16118,34 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>实线：速度 · 点线：命令 · 点划线：电流（右轴） · 虚线：预测速度</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="169"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="174"/>
         <source>no run to save</source>
         <translation>没有可保存的测试</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="182"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="187"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="191"/>
         <source>Save run as CSV</source>
         <translation>将测试保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="183"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="188"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="191"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="194"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="196"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="199"/>
         <source>Save chart as PNG</source>
         <translation>将图表保存为 PNG</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="192"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="197"/>
         <source>PNG images (*.png)</source>
         <translation>PNG 图片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="194"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="199"/>
         <source>Could not write %1.</source>
         <translation>无法写入 %1。</translation>
     </message>
@@ -15217,9 +16163,47 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>%1：设备描述的整定需要以下角色：pidP、pidI、pidD、pidDPeriod、pidStore、speedMode、speedCommand、commLossTime、loadCurrent 和 output</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningSpec.cpp" line="60"/>
+        <location filename="../model/tuning/TuningSpec.cpp" line="61"/>
         <source>%1: the profile&apos;s tuning section needs periodMs ≥ 1, outputFullScale &gt; 0, openLoopMode and closedLoopModes with known feedback parameters</source>
         <translation>%1：设备描述的整定部分需要 periodMs ≥ 1、outputFullScale &gt; 0、openLoopMode，以及反馈参数已知的 closedLoopModes</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningVerdict</name>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="11"/>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="12"/>
+        <source>none within the record</source>
+        <translation>记录时间内未稳定</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="20"/>
+        <source>no step was measured to its end with these gains: %1</source>
+        <translation>未能用此增益将阶跃测完：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="46"/>
+        <source>the speed did not settle within %1 ms (±2 % of the step)</source>
+        <translation>速度未在 %1 ms 内稳定（阶跃的 ±2 %）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="49"/>
+        <source>it overshot by %1 % where %2 % was predicted (at most %3 points more are accepted)</source>
+        <translation>超调为 %1 %，预测为 %2 %（最多只接受多出 %3 个百分点）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="60"/>
+        <source>Measured: overshoot %1 % (predicted %2 %), settling time %3 (predicted %4), peak current %5 A.</source>
+        <translation>实测：超调 %1 %（预测 %2 %），调节时间 %3（预测 %4），峰值电流 %5 A。</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="70"/>
+        <source>Check failed: %1.</source>
+        <translation>检查未通过：%1。</translation>
     </message>
 </context>
 <context>
@@ -15366,7 +16350,12 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>&lt;h2&gt;用 OpenTOP 调试驱动器&lt;/h2&gt;&lt;ol&gt;&lt;li&gt;&lt;b&gt;连接。&lt;/b&gt;总线 ▸ 连接… 选择串口（或 USB 转 RS-485 适配器）、Modbus TCP 网关或模拟总线，并设定总线的波特率、校验位和停止位。状态栏显示程序当前的连接；模拟总线会明确标示。&lt;/li&gt;&lt;li&gt;&lt;b&gt;查找驱动器。&lt;/b&gt;总线 ▸ 扫描总线（F5）逐个询问站号 1–247；应答的驱动器会被识别，并与其状态和控制优先级一起列在左侧。&lt;/li&gt;&lt;li&gt;&lt;b&gt;选择驱动器。&lt;/b&gt;其页面在右侧打开：监视（实时值）、其设备描述中的各参数页面、试运行和报警。&lt;/li&gt;&lt;li&gt;&lt;b&gt;编辑设定。&lt;/b&gt;编辑过的字段在写入前标记为待写入。写入本页（或 驱动器 ▸ 写入全部待写入项，Ctrl+W）会写入每个值并回读校验；还原会放弃修改；重新读取（Ctrl+R）会重新读取驱动器。驱动器会拒绝的值绝不会发送：字段会说明原因。&lt;/li&gt;&lt;li&gt;&lt;b&gt;试运行电机。&lt;/b&gt;试运行页面在通信优先级下启动、停止驱动器并切换其方向，每台驱动器首次启动前会先确认。完成后请将驱动器恢复为 I/O 优先级，使设备自身的输入端子重新控制它。&lt;/li&gt;&lt;li&gt;&lt;b&gt;停止。&lt;/b&gt;工具栏上的“全部停止”或 %1 可在程序的任何窗口中立即停止总线上的所有驱动器。&lt;/li&gt;&lt;li&gt;&lt;b&gt;观察。&lt;/b&gt;视图 ▸ 趋势（Ctrl+G）绘制速度和负载曲线；视图 ▸ 总线总览 一目了然地显示每台驱动器；视图 ▸ 报文日志（Ctrl+T）显示总线上的每一帧及其含义。&lt;/li&gt;&lt;li&gt;&lt;b&gt;保存设定。&lt;/b&gt;文件 ▸ 备份 将一台驱动器或整条总线的设定保存到文件；文件 ▸ 比较 显示驱动器、文件和出厂默认值之间的差异；文件 ▸ 恢复 在预览后将备份写回。&lt;/li&gt;&lt;/ol&gt;&lt;p&gt;所有键盘快捷键都列在 帮助 ▸ 键盘快捷键 中。&lt;/p&gt;&lt;h3&gt;更多文档&lt;/h3&gt;&lt;p&gt;命令行和模拟器：&lt;code&gt;man opentop&lt;/code&gt;、&lt;code&gt;man opentop-cli&lt;/code&gt;、&lt;code&gt;man opentop-sim&lt;/code&gt;。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/help/UserGuideDialog.cpp" line="70"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="66"/>
+        <source>&lt;h3&gt;Leaving a bus, and coming back after the link drops&lt;/h3&gt;&lt;p&gt;&lt;b&gt;Leaving.&lt;/b&gt; Quitting, Bus ▸ Disconnect or connecting elsewhere while drives run or are in communication priority names each of them and what will happen to it. The default stops every running drive, reads it back to confirm the stop, and then gives each drive back to its own inputs (I/O priority, read back), so that the machine works without OpenTOP. You may instead give control back only, leave the drives as they are, or stay.&lt;/p&gt;&lt;p&gt;&lt;b&gt;A lost link.&lt;/b&gt; When the adapter is pulled out or the gateway goes, every live value turns grey and a message says which drives were running or in communication priority when the link dropped, with the age of what is known. OpenTOP cannot stop them over a lost link: check the drive&apos;s STOP input, the emergency stop and the power on the machine. Bus ▸ Reconnect (Ctrl+R, also in the message and in the red bar) opens the same port again with the same drives, selected drive and page, reads every drive again and says at once if one is running. While connected, Ctrl+R re-reads the drive&apos;s pages.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;离开总线，以及连接丢失后重新连接&lt;/h3&gt;&lt;p&gt;&lt;b&gt;离开。&lt;/b&gt;在驱动器运行或处于通信优先级时退出、执行 总线 ▸ 断开连接 或连接到其他位置，会列出每台驱动器以及将对其执行的操作。默认会停止每台正在运行的驱动器、回读以确认已停止，然后将每台驱动器交还其自身的输入端子（I/O 优先级，回读确认），使设备无需 OpenTOP 也能运行。也可以选择仅交还控制权、保持驱动器现状，或留在当前连接。&lt;/p&gt;&lt;p&gt;&lt;b&gt;连接丢失。&lt;/b&gt;当适配器被拔出或网关消失时，所有实时数值都会变灰，并有消息说明连接丢失时哪些驱动器正在运行或处于通信优先级，以及已知数据的时间。OpenTOP 无法通过丢失的连接停止它们：请在设备上检查驱动器的停止输入端子、急停和电源。总线 ▸ 重新连接（Ctrl+R，消息和红色提示栏中也有）会以相同的驱动器、所选驱动器和页面重新打开同一个端口，重新读取所有驱动器，并立即告知是否有驱动器在运行。连接期间，Ctrl+R 会重新读取驱动器的页面。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="86"/>
         <source>&lt;p&gt;The full description of the program: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;程序的完整说明：&lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</translation>
     </message>

@@ -260,177 +260,187 @@
         <translation>無回應</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="48"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="49"/>
         <source>top level</source>
         <translation>最上層</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="51"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="52"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot; 必須為 1</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="61"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="62"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot; 必須是小寫的 id</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="71"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="70"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity 必須為 N、E 或 O</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="75"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="74"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial：baud 必須為 1200–115200，stopBits 必須為 1 或 2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="81"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="86"/>
+        <source>serial.formats: &quot;%1&quot; is not a format such as 8N1 or 8E1</source>
+        <translation>serial.formats：「%1」不是 8N1 或 8E1 這類的格式</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="90"/>
+        <source>serial.formats must hold the default format %1</source>
+        <translation>serial.formats 必須包含預設格式 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="94"/>
         <source>serial.powerOnDelayMs must be 0–60000</source>
         <translation>serial.powerOnDelayMs 必須為 0–60000</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="95"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="107"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits：maxReadRegisters 須為 1–125，maxWriteRegisters 須為 1–123</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="97"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="109"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits：slaves 必須在 1–247 範圍內</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="112"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="124"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1] 需要 id、model 與 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="114"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="126"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]：id &quot;%2&quot; 重複</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="125"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="137"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1] 需要唯一的 id 與 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="136"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="148"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1] 需要功能碼 3 或 4，且 first ≤ last</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="180"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="192"/>
         <source>%1 has no name</source>
         <translation>%1 沒有名稱</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="182"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="194"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1：reset 必須是 %2 其中之一</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="185"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="197"/>
         <source>%1: code %2 repeated</source>
         <translation>%1：代碼 %2 重複</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="207"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="219"/>
         <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
         <translation>%1：storeWith &quot;%2&quot; 不是指令參數</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="210"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="222"/>
         <source>%1: the default is not among its allowed values</source>
         <translation>%1：預設值不在允許值之內</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="214"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="226"/>
         <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
         <translation>%1：位元欄位 &quot;%2&quot;：function &quot;%3&quot; 不是可讀取的參數</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="221"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
         <source>%1: condition on unknown parameter &quot;%2&quot;</source>
         <translation>%1：條件引用了未知參數 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="223"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="235"/>
         <source>%1: the default is not allowed when %2</source>
         <translation>%1：當 %2 時不允許此預設值</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="245"/>
         <source>%1 runs past address 0xFFFF</source>
         <translation>%1 超出位址 0xFFFF</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="236"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="248"/>
         <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
         <translation>%1 與 &quot;%2&quot; 在 0x%3 重疊 (%4 個暫存器)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="260"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="272"/>
         <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
         <translation>identify：&quot;%1&quot; 必須是 identify 讀取範圍內的參數</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="263"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
         <source>identify.nameMatch is not a valid regular expression</source>
         <translation>identify.nameMatch 不是有效的正規表示式</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="287"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1：未知參數 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="303"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="315"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1 必須是參數名稱、名稱清單或物件</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="312"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="324"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1：&quot;%2&quot; 沒有位元欄位 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="318"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="330"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1：%2 不是 &quot;%3&quot; 可寫入的值</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="336"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="348"/>
         <source>decelerationKnobs need the &quot;selected&quot; role</source>
         <translation>decelerationKnobs 需要 &quot;selected&quot; 角色</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="352"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
         <source>%1 needs &quot;selected&quot; and &quot;maxSeconds&quot;</source>
         <translation>%1 需要 &quot;selected&quot; 與 &quot;maxSeconds&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="355"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="367"/>
         <source>%1: &quot;selected&quot; %2 is not a value of the &quot;selected&quot; role, or repeated</source>
         <translation>%1：&quot;selected&quot; %2 不是 &quot;selected&quot; 角色的值，或重複出現</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="360"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="372"/>
         <source>%1: &quot;maxSeconds&quot; must be more than 0 and at most 600</source>
         <translation>%1：&quot;maxSeconds&quot; 必須大於 0 且不超過 600</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="392"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="404"/>
         <source>%1: &quot;light&quot; must be one of %2, each once</source>
         <translation>%1：&quot;light&quot; 必須是 %2 其中之一，且每個只能出現一次</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="395"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
         <source>%1: &quot;colour&quot; must be #rrggbb</source>
         <translation>%1：&quot;colour&quot; 必須為 #rrggbb</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="397"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="409"/>
         <source>%1: &quot;label&quot; and &quot;meaning&quot; must not be empty</source>
         <translation>%1：&quot;label&quot; 與 &quot;meaning&quot; 不可為空</translation>
     </message>
@@ -440,7 +450,7 @@
         <translation> 及另外 %1 個</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="26"/>
+        <location filename="../cli/TuneCommand.cpp" line="27"/>
         <source>not reached</source>
         <translation>未達到</translation>
     </message>
@@ -1065,124 +1075,150 @@ Remedy: %5</source>
         <translation>自動調諧…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="27"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="28"/>
         <source>Accept</source>
         <translation>接受</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="28"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="29"/>
         <source>Reject</source>
         <translation>拒絕</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="29"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="30"/>
         <source>Store in the drive</source>
         <translation>保存至驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="43"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="48"/>
         <source>Writes the proposed gains to the drive (temporary until stored) and offers a step test to compare with the prediction</source>
         <translation>將建議增益寫入驅動器 (保存前僅暫時有效)，並提供步階測試以與預測結果比較</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="45"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="50"/>
         <source>Writes back the gains the drive had before</source>
         <translation>將驅動器原本的增益寫回</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="46"/>
-        <source>Stores the gains in the drive so that they survive a power cycle</source>
-        <translation>將增益保存至驅動器，斷電重新上電後仍保留</translation>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="51"/>
+        <source>Stores the gains in the drive so that they survive a power cycle; asks first unless the step after Accept passed the check</source>
+        <translation>將增益保存至驅動器，斷電重新上電後仍保留；接受後的步階未通過檢查時，會先詢問</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="51"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="57"/>
         <source>Operating speed:</source>
         <translation>運轉速度：</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="52"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="58"/>
         <source>Relay amplitude:</source>
         <translation>繼電器振幅：</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="53"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="59"/>
         <source>%</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="54"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
         <source>Rule:</source>
         <translation>調諧規則：</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="58"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="64"/>
         <source>Present</source>
         <translation>目前</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="59"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="65"/>
         <source>Proposed</source>
         <translation>建議</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="66"/>
         <source>P</source>
         <translation>P</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="66"/>
         <source>I</source>
         <translation>I</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="66"/>
         <source>D</source>
         <translation>D</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="60"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="66"/>
         <source>D period</source>
         <translation>D 週期</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="106"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="113"/>
         <source>Enter an operating speed above 0 %1.</source>
         <translation>請輸入大於 0 %1 的運轉速度。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="110"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="117"/>
         <source>Enter a relay amplitude of 1–50 %.</source>
         <translation>請輸入 1–50 % 的繼電器振幅。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="123"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="130"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="183"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="138"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="145"/>
         <source>No autotune result yet.</source>
         <translation>尚無自動調諧結果。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="146"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="153"/>
         <source>Autotune failed: %1</source>
         <translation>自動調諧失敗：%1</translation>
     </message>
     <message>
         <location filename="../ui/tuning/AutotunePanel.cpp" line="155"/>
-        <source>Ku %1 %/%2, Tu %3 ms</source>
-        <translation>Ku %1 %/%2，Tu %3 ms</translation>
+        <source>What to change: %1</source>
+        <translation>應變更的項目：%1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="158"/>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="165"/>
+        <source>Relay: Ku %1 %/%2, Tu %3 ms measured, %4 readings per period (one every %5 ms)</source>
+        <translation>繼電器：Ku %1 %/%2，實測 Tu %3 ms，每週期讀取 %4 次 (每 %5 ms 一次)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="175"/>
+        <source>The drive&apos;s own loop (model): Ku %1 %/%2, Tu %3 ms</source>
+        <translation>驅動器本身的迴路 (模型)：Ku %1 %/%2，Tu %3 ms</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="180"/>
+        <source>Proposal: the rule&apos;s P × %1, Ti × %2; predicted overshoot %3 %, settling %4</source>
+        <translation>建議值：規則的 P × %1，Ti × %2；預測超調 %3 %，安定 %4</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="184"/>
+        <source>not within the record</source>
+        <translation>記錄時間內未安定</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="208"/>
+        <source>Check after Accept: passed.</source>
+        <translation>接受後的檢查：通過。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="209"/>
+        <source>Check after Accept: FAILED. Reject writes back the gains the drive had.</source>
+        <translation>接受後的檢查：未通過。按「拒絕」會寫回驅動器原本的增益。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/AutotunePanel.cpp" line="171"/>
         <source>Model: K %1 %2/%, τ %3 ms, dead time %4 ms</source>
         <translation>模型：K %1 %2/%，τ %3 ms，延遲時間 %4 ms</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/AutotunePanel.cpp" line="163"/>
-        <source>No model: %1</source>
-        <translation>無模型：%1</translation>
     </message>
 </context>
 <context>
@@ -1214,8 +1250,8 @@ Remedy: %5</source>
     </message>
     <message>
         <location filename="../cli/BackupCommand.cpp" line="60"/>
-        <location filename="../cli/BackupCommand.cpp" line="220"/>
         <location filename="../cli/BackupCommand.cpp" line="226"/>
+        <location filename="../cli/BackupCommand.cpp" line="232"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
@@ -1225,63 +1261,68 @@ Remedy: %5</source>
         <translation>正在掃描匯流排上的驅動器…</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="99"/>
+        <location filename="../cli/BackupCommand.cpp" line="84"/>
+        <source>warning: machine number %1 answered, but its identification failed: it is not backed up; name it to try again (backup %1 -o FILE).</source>
+        <translation>警告：機號 %1 有回應，但識別失敗：未備份它；請指定這個機號再試一次 (backup %1 -o FILE)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/BackupCommand.cpp" line="105"/>
         <source>error: the port %1 was lost while reading %2 (%3)</source>
         <translation>錯誤：讀取 %2 時連接埠 %1 中斷 (%3)</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="102"/>
-        <location filename="../cli/BackupCommand.cpp" line="222"/>
+        <location filename="../cli/BackupCommand.cpp" line="108"/>
+        <location filename="../cli/BackupCommand.cpp" line="228"/>
         <source>nothing written to %1</source>
         <translation>未寫入任何資料至 %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="110"/>
+        <location filename="../cli/BackupCommand.cpp" line="116"/>
         <source>error: give the file to write: backup ID... -o FILE</source>
         <translation>錯誤：請指定要寫入的檔案：backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="114"/>
+        <location filename="../cli/BackupCommand.cpp" line="120"/>
         <source>error: %1; nothing read</source>
         <translation>錯誤：%1；未讀取任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="126"/>
+        <location filename="../cli/BackupCommand.cpp" line="132"/>
         <source>interrupted: nothing written</source>
         <translation>已中斷：未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="130"/>
+        <location filename="../cli/BackupCommand.cpp" line="136"/>
         <source>error: no drive answers on %1; nothing written</source>
         <translation>錯誤：%1 上沒有驅動器回應；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="149"/>
+        <location filename="../cli/BackupCommand.cpp" line="155"/>
         <source>machine number %1</source>
         <translation>機號 %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="164"/>
+        <location filename="../cli/BackupCommand.cpp" line="170"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>讀取機號 %1 時中斷：未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="172"/>
+        <location filename="../cli/BackupCommand.cpp" line="178"/>
         <source>%1: cannot read %2</source>
         <translation>%1：無法讀取 %2</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="174"/>
+        <location filename="../cli/BackupCommand.cpp" line="180"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1 含有定義檔不允許的值，此備份將無法還原：%2</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="188"/>
+        <location filename="../cli/BackupCommand.cpp" line="194"/>
         <source>%1: %2 settings read in %3 requests, %4 ms</source>
         <translation>%1：以 %3 次請求讀取 %2 項設定，%4 ms</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="195"/>
+        <location filename="../cli/BackupCommand.cpp" line="201"/>
         <source>%1: reading failed, %2 of %3 settings read (%4 requests, %5 ms)</source>
         <translation>%1：讀取失敗，已讀取 %3 項設定中的 %2 項 (%4 次請求，%5 ms)</translation>
     </message>
@@ -1297,150 +1338,150 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupDialog</name>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="27"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="28"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="28"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="29"/>
         <source>&amp;Save the drives read</source>
         <translation>儲存已讀取的驅動器(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="29"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="30"/>
         <source>C&amp;lose</source>
         <translation>關閉(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="31"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="32"/>
         <source>Back up drives</source>
         <translation>備份驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
         <source>Machine number</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
         <source>Model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
         <source>Progress</source>
         <translation>進度</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="40"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="41"/>
         <source>Save only the drives that were read; the others are left out</source>
         <translation>僅儲存已讀取的驅動器；其餘略過</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="42"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="43"/>
         <source>Stop after the drive being read</source>
         <translation>讀完目前這台驅動器後停止</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="87"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="89"/>
         <source>Waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="91"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="93"/>
         <source>%v of %m drives</source>
         <translation>%v / %m 台驅動器</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="92"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="94"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>正在讀取 %n 台驅動器的設定…</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="102"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="104"/>
         <source>Stopping after the drive being read…</source>
         <translation>讀完目前這台驅動器後將停止…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="119"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="121"/>
         <source>Not read (cancelled)</source>
         <translation>未讀取 (已取消)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="129"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="131"/>
         <source>drive %1: not identified, nothing read</source>
         <translation>驅動器 %1：無法識別，未讀取任何資料</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="130"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="132"/>
         <source>Not identified</source>
         <translation>無法識別</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="138"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="140"/>
         <source>Reading…</source>
         <translation>讀取中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="150"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="152"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>於 %1 ms 內讀取 %n 項設定</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="155"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="157"/>
         <source>%1: cannot read %2</source>
         <translation>%1：無法讀取 %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="157"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="159"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1 含有定義檔不允許的值，此備份將無法還原：%2</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="162"/>
         <source>Value not allowed</source>
         <translation>不允許的值</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="162"/>
         <source>Read failed</source>
         <translation>讀取失敗</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="180"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="182"/>
         <source>Not read: drive(s) %1. Nothing has been saved yet.</source>
         <translation>未讀取：驅動器 %1。尚未儲存任何資料。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="186"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="188"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>要儲存已讀取的 %n 台驅動器嗎？</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="210"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="212"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>已將 %n 台驅動器儲存至 %1。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="216"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="218"/>
         <source>Left out (not read): drive(s) %1.</source>
         <translation>已略過 (未讀取)：驅動器 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="220"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="222"/>
         <source>Could not save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
@@ -1607,87 +1648,87 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupViewer</name>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="22"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="23"/>
         <source>Backup file</source>
         <translation>備份檔</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
         <source>Label</source>
         <translation>標籤</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="30"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
         <source>Registers</source>
         <translation>暫存器</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="34"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>&amp;Open…</source>
         <translation>開啟(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="36"/>
         <source>Open another backup file</source>
         <translation>開啟其他備份檔</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="36"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="37"/>
         <source>C&amp;lose</source>
         <translation>關閉(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="56"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="58"/>
         <source>%1: no such file</source>
         <translation>%1：檔案不存在</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="62"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="64"/>
         <source>the file could not be read</source>
         <translation>無法讀取檔案</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="63"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="65"/>
         <source>Backup file %1</source>
         <translation>備份檔 %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="71"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="73"/>
         <source>Open backup file</source>
         <translation>開啟備份檔</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="72"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="74"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 備份檔 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="94"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="96"/>
         <source>File: %1</source>
         <translation>檔案：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="95"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="97"/>
         <source>Refused: %1</source>
         <translation>已拒絕：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="110"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="112"/>
         <source>, %1 bit/s, parity %2, %3 stop bit(s)</source>
         <translation>，%1 bit/s，同位元 %2，%3 個停止位元</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="112"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="114"/>
         <source>File: %1
 Written by %2 on %3 (UTC)
 Read from: %4
@@ -1698,17 +1739,17 @@ Drives: %5</source>
 驅動器：%5</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="121"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="123"/>
         <source>%1 %2, firmware %3</source>
         <translation>%1 %2，韌體 %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="123"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="125"/>
         <source>(variant unknown)</source>
         <translation>(機型未知)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupViewer.cpp" line="125"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="127"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n 項設定</numerusform>
@@ -1716,30 +1757,43 @@ Drives: %5</source>
     </message>
 </context>
 <context>
+    <name>opentop::BarHideButton</name>
+    <message>
+        <location filename="../ui/widgets/BarHideButton.cpp" line="9"/>
+        <source>Hide this bar</source>
+        <translation>隱藏此列</translation>
+    </message>
+    <message>
+        <location filename="../ui/widgets/BarHideButton.cpp" line="10"/>
+        <source>Hide</source>
+        <translation>隱藏</translation>
+    </message>
+</context>
+<context>
     <name>opentop::BusDocks</name>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="26"/>
+        <location filename="../ui/main/BusDocks.cpp" line="27"/>
         <source>Traffic log</source>
         <translation>通訊記錄</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="33"/>
+        <location filename="../ui/main/BusDocks.cpp" line="34"/>
         <source>Bus overview</source>
         <translation>匯流排總覽</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="34"/>
+        <location filename="../ui/main/BusDocks.cpp" line="35"/>
         <source>Trends</source>
         <translation>趨勢圖</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="35"/>
+        <location filename="../ui/main/BusDocks.cpp" line="36"/>
         <source>Communication groups</source>
         <translation>通訊群組</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="38"/>
-        <location filename="../ui/main/BusDocks.cpp" line="70"/>
+        <location filename="../ui/main/BusDocks.cpp" line="39"/>
+        <location filename="../ui/main/BusDocks.cpp" line="77"/>
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -1796,94 +1850,110 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../ui/bus/BusListModel.cpp" line="75"/>
+        <source>Machine number: the drive&apos;s address on the bus (1–247)</source>
+        <translation>機號：驅動器在匯流排上的位址（1–247）</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="77"/>
         <source>The drive&apos;s MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, purple external interrupt, blue memory or communication error, grey no answer</source>
         <translation>驅動器的 MONITOR LED：紅色為警報、綠色為就緒、橘色為 CW、天藍色為 CCW、紫色為外部中斷、藍色為記憶體或通訊錯誤、灰色為無回應</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="82"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="84"/>
         <source>LED</source>
         <translation>LED</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="84"/>
-        <source>Machine no.</source>
+        <location filename="../ui/bus/BusListModel.cpp" line="86"/>
+        <source>No.</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="86"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
         <source>Hex / switches</source>
         <translation>十六進位 / 開關</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="88"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
         <source>Family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="90"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
         <source>Model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="92"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
         <source>Firmware</source>
         <translation>韌體</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="94"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="97"/>
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="96"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="99"/>
         <source>Control priority</source>
         <translation>控制優先權</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="108"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="111"/>
         <source>Two drives may share machine number %1 (%2, %3): check the SW1/SW2 switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
         <translation>可能有兩台驅動器使用相同機號 %1 (%2、%3)：請檢查線上每台驅動器的 SW1/SW2 開關，讓每台使用不同的機號並重新上電；終端電阻設定不良或 A/B 線對調也會使回應資料損壞。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="127"/>
         <location filename="../ui/bus/BusListModel.cpp" line="131"/>
+        <source>%1 at %2</source>
+        <translation>%1，%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
         <location filename="../ui/bus/BusListModel.cpp" line="133"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="137"/>
         <location filename="../ui/bus/BusListModel.cpp" line="139"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="145"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="130"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="136"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 機型未知</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="160"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="166"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>狀態燈 %1：%2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="164"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="170"/>
         <source>The drive&apos;s manual: %1</source>
         <translation>驅動器手冊：%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="167"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="173"/>
         <source>Status light grey: not live — %1</source>
         <translation>狀態燈灰色：非即時 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="172"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="178"/>
+        <source>Requests to this drive go out at %1, its own line format, not the port&apos;s: the line is switched to it and back between transactions. Change it with Line format… in the context menu.</source>
+        <translation>送往此驅動器的要求以它自己的通訊格式 %1 送出，而非連接埠的格式：線路在交易之間切換過去再切換回來。可在右鍵選單的「通訊格式…」中變更。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="185"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>此驅動器不回報機型。請從右鍵選單 (機型) 中選擇，以便依正確的範圍檢查數值。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="181"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="194"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>此驅動器由 I/O 端子接收運轉指令；要透過匯流排試運轉，需設為通訊優先。</translation>
     </message>
@@ -1975,147 +2045,152 @@ Drives: %5</source>
 <context>
     <name>opentop::BusPanel</name>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="33"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="34"/>
         <source>&amp;Scan</source>
         <translation>掃描(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="36"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="37"/>
         <source>A&amp;dd drive…</source>
         <translation>新增驅動器(&amp;D)…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="38"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="39"/>
         <source>Ca&amp;ncel</source>
         <translation>取消(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="47"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="48"/>
         <source>Ask every machine number of the range who answers</source>
         <translation>逐一詢問範圍內的每個機號是否有回應</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="49"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="50"/>
         <source>&amp;from</source>
         <translation>從(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="51"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="52"/>
         <source>&amp;to</source>
         <translation>到(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="56"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="57"/>
         <source>Machine numbers 1–247 (the DBU&apos;s SW1/SW2 switches in hex)</source>
         <translation>機號 1–247 (DBU 的 SW1/SW2 開關以十六進位設定)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="73"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="74"/>
         <source>Identify one machine number and add it to the list</source>
         <translation>識別一個機號並加入清單</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="78"/>
-        <location filename="../ui/bus/BusPanel.cpp" line="194"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="79"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="193"/>
         <source>%v of %m</source>
         <translation>%v / %m</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="79"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="80"/>
         <source>Scan progress</source>
         <translation>掃描進度</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="81"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="82"/>
         <source>Stop the scan after the request on the wire</source>
         <translation>目前線上的請求完成後停止掃描</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="90"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="91"/>
         <source>Rescan at %1</source>
         <translation>以 %1 重新掃描</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="124"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="118"/>
         <source>Drives on the bus</source>
         <translation>匯流排上的驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="185"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="179"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%v / %m (機號 %1)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="195"/>
-        <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
-        <translation>正在 %3 上掃描機號 %1–%2，每個 %4 ms…</translation>
+        <location filename="../ui/bus/BusPanel.cpp" line="183"/>
+        <source>Machine number %1 answered, identification failed: retrying (%2 of %3)… Polling waits until the scan is over.</source>
+        <translation>機號 %1 有回應，但識別失敗：重試中 (第 %2 次，共 %3 次)… 輪詢會等到掃描結束。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="214"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="195"/>
+        <source>Scanning machine numbers %1–%2 on %3, %4 ms each… Polling waits until the scan is over.</source>
+        <translation>正在 %3 上掃描機號 %1–%2，每個 %4 ms… 輪詢會等到掃描結束。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="267"/>
+        <source>If one is on this bus, add it with Add drive and its line format.</source>
+        <translation>若匯流排上有這種驅動器，請用「新增驅動器」連同它的通訊格式加入。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="272"/>
+        <source>Machine number %1 answered, but its identification failed, also when asked again: add it by hand with Add drive…, or check its line settings and scan again.</source>
+        <translation>機號 %1 有回應，但識別失敗，重新詢問也一樣：請用「新增驅動器…」手動加入，或檢查它的通訊設定後重新掃描。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="215"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>目前線上的請求完成後取消…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="231"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="233"/>
         <source>Did not answer the last scan.</source>
         <translation>上次掃描未回應。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="237"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="239"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>掃描在機號 %1 停止：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="242"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="244"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>掃描於機號 %1–%2 後取消 (%3 / %4)：找到 %n 台驅動器。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="250"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="252"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>在機號 %1–%2 中找到 %n 台驅動器，耗時 %3 s。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="275"/>
-        <source>Add drive</source>
-        <translation>新增驅動器</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="275"/>
-        <source>Machine number (1–247; the DBU shows it in hex on SW1/SW2):</source>
-        <translation>機號 (1–247；DBU 以十六進位設定於 SW1/SW2)：</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="285"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="293"/>
         <source>Asking machine number %1…</source>
         <translation>正在詢問機號 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="290"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="298"/>
         <source>Machine number %1: %2 added.</source>
         <translation>機號 %1：已新增 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="292"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="300"/>
         <source>Machine number %1: %2 %3</source>
         <translation>機號 %1：%2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="350"/>
+        <location filename="../ui/bus/VariantMenu.cpp" line="26"/>
         <source>&amp;Variant</source>
         <translation>機型(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="366"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="349"/>
         <source>&amp;Identify again</source>
         <translation>重新識別(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="372"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="360"/>
         <source>&amp;Remove from list</source>
         <translation>從清單移除(&amp;R)</translation>
     </message>
@@ -2128,32 +2203,22 @@ Drives: %5</source>
         <translation>掃描匯流排(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="28"/>
-        <source>Hide this bar</source>
-        <translation>隱藏此列</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="29"/>
-        <source>Hide</source>
-        <translation>隱藏</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="42"/>
         <source>Last time on %1: %2.</source>
         <translation>上次在 %1：%2。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="48"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="44"/>
         <source>&amp;Restore the drive last seen</source>
         <translation>恢復上次出現的驅動器(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="49"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="45"/>
         <source>&amp;Restore the %1 drives last seen</source>
         <translation>恢復上次出現的 %1 台驅動器(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="50"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
         <source>Identify the drives at these machine numbers again, with the variants set last time</source>
         <translation>以上次設定的機型，重新識別這些機號上的驅動器</translation>
     </message>
@@ -2166,17 +2231,22 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="163"/>
+        <location filename="../model/bus/BusScanner.cpp" line="222"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
         <translation>兩次收到錯亂的回應 (%1)：可能有兩台驅動器使用相同機號 %2；請檢查其 SW1/SW2 開關</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="168"/>
+        <location filename="../model/bus/BusScanner.cpp" line="227"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>有回應，但沒有符合的定義檔 (%1)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="207"/>
+        <location filename="../model/bus/BusScanner.cpp" line="245"/>
+        <source>answered, but its identification read got no reply (%1), also when asked %2 more times: add it by hand, or scan with a longer wait</source>
+        <translation>有回應，但識別讀取沒有回覆 (%1)，再詢問 %2 次也一樣：請手動新增，或以較長的等待時間重新掃描</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/BusScanner.cpp" line="311"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>第一次回應過慢 (超過 %1 ms 等待時間)；加長等待時間可使此匯流排的掃描更可靠</translation>
     </message>
@@ -2535,49 +2605,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../cli/CliContext.cpp" line="75"/>
-        <location filename="../cli/CliContext.cpp" line="89"/>
-        <location filename="../cli/CliContext.cpp" line="97"/>
+        <location filename="../cli/CliContext.cpp" line="90"/>
+        <location filename="../cli/CliContext.cpp" line="104"/>
+        <location filename="../cli/CliContext.cpp" line="112"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="102"/>
+        <location filename="../cli/CliContext.cpp" line="117"/>
         <source>serial line: %1</source>
         <translation>序列線路：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="126"/>
+        <location filename="../cli/CliContext.cpp" line="141"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="189"/>
+        <location filename="../cli/CliContext.cpp" line="204"/>
         <source>machine number %1: no connection</source>
         <translation>機號 %1：未連線</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="194"/>
+        <location filename="../cli/CliContext.cpp" line="209"/>
         <source>machine number %1: %2%3</source>
         <translation>機號 %1：%2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="248"/>
+        <location filename="../cli/CliContext.cpp" line="264"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1：&quot;%2&quot; 不是 1–247 的機號</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="252"/>
+        <location filename="../cli/CliContext.cpp" line="268"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1：&quot;%2&quot; 不是驅動器機型；請使用下列其中之一：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="270"/>
+        <location filename="../cli/CliContext.cpp" line="286"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; 不是 1–247 的機號，也不是 3-8 這樣的範圍</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="280"/>
+        <location filename="../cli/CliContext.cpp" line="296"/>
         <source>no machine number given</source>
         <translation>未指定機號</translation>
     </message>
@@ -2603,6 +2673,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <location filename="../model/profile/CodeTable.cpp" line="15"/>
         <source>—</source>
         <translation>—</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/CodeTable.cpp" line="24"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/CodeTable.cpp" line="29"/>
+        <source>What to do: %1</source>
+        <translation>處理方式：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::CommandReadBack</name>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="42"/>
+        <source>Read back after the command at %1:</source>
+        <translation>%1 指令後回讀：</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="45"/>
+        <source>The motor is running.</source>
+        <translation>馬達運轉中。</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="45"/>
+        <source>The motor is stopped.</source>
+        <translation>馬達已停止。</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="47"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="49"/>
+        <source>(not read: %1)</source>
+        <translation>(未讀取：%1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/CommandReadBack.cpp" line="56"/>
+        <source>The drives of its communication group, read after the command:</source>
+        <translation>指令後讀取的通訊群組驅動器：</translation>
     </message>
 </context>
 <context>
@@ -2709,162 +2822,162 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareDialog</name>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="32"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="33"/>
         <source>&amp;Differences only</source>
         <translation>僅顯示差異(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="36"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="37"/>
         <source>Co&amp;mpare</source>
         <translation>比較(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="38"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="39"/>
         <source>Compare settings</source>
         <translation>比較設定</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="39"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="40"/>
         <source>Side A</source>
         <translation>A 側</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="40"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="41"/>
         <source>Side B</source>
         <translation>B 側</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="48"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="54"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="55"/>
         <source>Filter by setting or parameter name</source>
         <translation>依設定或參數名稱篩選</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="56"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
         <source>Read the chosen sides and compare them (drives are read fresh)</source>
         <translation>讀取所選的兩側並比較 (驅動器會重新讀取)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="66"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="67"/>
         <source>C&amp;lose</source>
         <translation>關閉(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="98"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="100"/>
         <source>%1 refused: %2</source>
         <translation>%1 被拒絕：%2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="112"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="114"/>
         <source>Reading…</source>
         <translation>讀取中…</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="137"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="139"/>
         <source>side A</source>
         <translation>A 側</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="137"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="139"/>
         <source>side B</source>
         <translation>B 側</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="141"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="143"/>
         <source>Factory defaults</source>
         <translation>出廠預設值</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="148"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="150"/>
         <source>Choose a backup file and a drive in it for %1.</source>
         <translation>請為 %1 選擇備份檔及其中的驅動器。</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="152"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="154"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="162"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="164"/>
         <source>Choose an identified drive on the bus for %1.</source>
         <translation>請為 %1 選擇匯流排上已識別的驅動器。</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="170"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="172"/>
         <source>%1: cannot read %2</source>
         <translation>%1：無法讀取 %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="195"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="197"/>
         <source>Unknown family %1</source>
         <translation>未知系列 %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="214"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
         <source>A: %1</source>
         <translation>A：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="215"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="217"/>
         <source>B: %1</source>
         <translation>B：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="218"/>
         <source>factory defaults (%1)</source>
         <translation>出廠預設值 (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="226"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="228"/>
         <source>(no documented default)</source>
         <translation>(手冊未列預設值)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
         <location filename="../ui/files/CompareDialog.cpp" line="229"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="231"/>
         <source>(not held)</source>
         <translation>(未包含)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/CompareDialog.cpp" line="245"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="247"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n 項差異</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="246"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="248"/>
         <source> in %1 settings compared</source>
         <translation> (共比較 %1 項設定)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="249"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="251"/>
         <source>Note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="256"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="258"/>
         <source>No factory default documented (never counted as a difference): %1</source>
         <translation>手冊未列出廠預設值 (不計為差異)：%1</translation>
     </message>
@@ -2953,173 +3066,173 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::ConnectionDialog</name>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="62"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="63"/>
         <source>Connect to a bus</source>
         <translation>連線至匯流排</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="68"/>
         <source>&amp;Serial port</source>
         <translation>序列埠(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="67"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="68"/>
         <source>Modbus &amp;TCP gateway</source>
         <translation>Modbus TCP 閘道器(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="68"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="69"/>
         <source>Si&amp;mulated bus</source>
         <translation>模擬匯流排(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="84"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="85"/>
         <source>&amp;Advanced</source>
         <translation>進階(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="107"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="108"/>
         <source>&amp;Connect</source>
         <translation>連線(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="128"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="129"/>
         <source>&amp;Refresh</source>
         <translation>重新整理(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="129"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="130"/>
         <source>List the serial ports again (after plugging in an adapter)</source>
         <translation>重新列出序列埠 (插入轉接器後使用)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="134"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="135"/>
         <source>&amp;Port:</source>
         <translation>連接埠(&amp;P)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="143"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="144"/>
         <source>Custom</source>
         <translation>自訂</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="145"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="146"/>
         <source>%1 (%2 %3%4%5)</source>
         <translation>%1 (%2 %3%4%5)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="152"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="153"/>
         <source>Fills in the factory line settings of a drive family</source>
         <translation>填入驅動器系列的出廠通訊設定</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="155"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="156"/>
         <source>&amp;Family defaults:</source>
         <translation>系列預設值(&amp;F)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="159"/>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="289"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="160"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="293"/>
         <source>%1 bit/s</source>
         <translation>%1 bit/s</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="160"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="161"/>
         <source>&amp;Baud rate:</source>
         <translation>鮑率(&amp;B)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="162"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
         <source>None (N)</source>
         <translation>無 (N)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="163"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
         <source>Even (E)</source>
         <translation>偶同位 (E)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="164"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="165"/>
         <source>Odd (O)</source>
         <translation>奇同位 (O)</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="165"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="166"/>
         <source>P&amp;arity:</source>
         <translation>同位元(&amp;A)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="167"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
         <source>1 bit</source>
         <translation>1 位元</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="168"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="169"/>
         <source>2 bits</source>
         <translation>2 位元</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="169"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="170"/>
         <source>S&amp;top bits:</source>
         <translation>停止位元(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="184"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="186"/>
         <source>e.g. 192.168.1.10</source>
         <translation>例如 192.168.1.10</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="185"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="187"/>
         <source>&amp;Host:</source>
         <translation>主機(&amp;H)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="188"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="190"/>
         <source>Modbus TCP uses port 502</source>
         <translation>Modbus TCP 使用連接埠 502</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="189"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="191"/>
         <source>TCP p&amp;ort:</source>
         <translation>TCP 連接埠(&amp;O)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="201"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="203"/>
         <source>Device types and machine numbers: TYPE@NUMBER, comma separated. Types: %1</source>
         <translation>裝置類型與機號：TYPE@NUMBER，以逗號分隔。類型：%1</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="204"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="206"/>
         <source>&amp;Devices:</source>
         <translation>裝置(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="218"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="220"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="219"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="221"/>
         <source>How long to wait for each reply</source>
         <translation>每次等待回應的時間</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="220"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="222"/>
         <source>Response &amp;timeout:</source>
         <translation>回應逾時(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="223"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="225"/>
         <source>Extra attempts after a request got no valid reply</source>
         <translation>請求未收到有效回應時的額外重試次數</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="224"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="226"/>
         <source>R&amp;etries:</source>
         <translation>重試次數(&amp;E)：</translation>
     </message>
     <message>
-        <location filename="../ui/connection/ConnectionDialog.cpp" line="326"/>
+        <location filename="../ui/connection/ConnectionDialog.cpp" line="333"/>
         <source>The device list is not valid.</source>
         <translation>裝置清單無效。</translation>
     </message>
@@ -3282,114 +3395,134 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="85"/>
-        <location filename="../connection/ConnectionOptions.cpp" line="91"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="96"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
         <location filename="../connection/ConnectionOptions.cpp" line="87"/>
+        <source>Drives that talk another line format than the port&apos;s, switched to between transactions: ID=[BAUD:]FORMAT,... e.g. 7=9600:8E1 or 7=8N2 (BAUD defaults to the port&apos;s). A DBU works only at 8N1; a DC controller at 8E1, 8O1 or 8N2.</source>
+        <translation>使用與連接埠不同通訊格式的驅動器，在交易之間切換：ID=[BAUD:]FORMAT,...，例如 7=9600:8E1 或 7=8N2（BAUD 預設為連接埠的鮑率）。DBU 只能用 8N1；DC 控制器用 8E1、8O1 或 8N2。</translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="90"/>
+        <source>LIST</source>
+        <translation>LIST</translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="92"/>
         <source>Response timeout per attempt in ms, 10–10000 (default 200).</source>
         <translation>每次嘗試的回應逾時，單位 ms，10–10000 (預設 200)。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="87"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="92"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="89"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="94"/>
         <source>Extra attempts after no reply or a garbled one, 0–10 (default 3; 2 more while the line is noisy).</source>
         <translation>無回應或回應錯亂時的額外重試次數，0–10 (預設 3；線路雜訊多時再加 2 次)。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="93"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="98"/>
         <source>Who switches the RS-485 direction (serial port only): off (default: the adapter itself, as USB–RS-485 adapters do), kernel (the driver&apos;s RS-485 mode), rts (RTS from the program) or auto (kernel where the driver has it, else rts).</source>
         <translation>由誰切換 RS-485 收發方向 (僅限序列埠)：off (預設：由轉接器自行切換，USB–RS-485 轉接器即是如此)、kernel (驅動程式的 RS-485 模式)、rts (由程式控制 RTS) 或 auto (驅動程式支援時用 kernel，否則用 rts)。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="96"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="101"/>
         <source>MODE</source>
         <translation>MODE</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="98"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
         <source>RTS level while sending with --rs485 kernel, rts or auto: high (default) or low.</source>
         <translation>使用 --rs485 kernel、rts 或 auto 時，傳送期間的 RTS 準位：high (預設) 或 low。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="99"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="104"/>
         <source>high|low</source>
         <translation>high|low</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="101"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="106"/>
         <source>RTS delay before and after sending in µs, 0–100000 (default 0: the driver&apos;s, or libmodbus&apos; one character time; the kernel rounds up to whole ms).</source>
         <translation>傳送前後的 RTS 延遲，單位 µs，0–100000 (預設 0：使用驅動程式的延遲，或 libmodbus 的 1 個字元時間；核心會進位到整數 ms)。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="103"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="108"/>
         <source>US</source>
         <translation>US</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="105"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="110"/>
         <source>Ask the serial driver to pass received bytes on at once (USB adapters otherwise hold them up to 16 ms): on (default) or off.</source>
         <translation>要求序列埠驅動程式立即轉交收到的位元組 (否則 USB 轉接器最多會保留 16 ms)：on (預設) 或 off。</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="107"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="112"/>
         <source>on|off</source>
         <translation>on|off</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="151"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="157"/>
         <source>give only one of --port, --tcp and --sim</source>
         <translation>--port、--tcp 與 --sim 只能指定其中一個</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="153"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="159"/>
         <source>no bus given: use --port PATH, --tcp HOST:PORT or --sim SPEC</source>
         <translation>未指定匯流排：請使用 --port PATH、--tcp HOST:PORT 或 --sim SPEC</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="162"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="168"/>
         <source>--family %1: unknown family; use one of %2</source>
         <translation>--family %1：未知系列；請使用下列其中之一：%2</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="181"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="187"/>
         <source>--tcp: &quot;%1&quot; is not HOST:PORT</source>
         <translation>--tcp：&quot;%1&quot; 不是 HOST:PORT 格式</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="190"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="196"/>
         <source>--sim: %1</source>
         <translation>--sim：%1</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="203"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="209"/>
         <source>--baud %1: use a baud rate 1200–115200 (e.g. 9600, 19200, 38400)</source>
         <translation>--baud %1：請使用 1200–115200 的鮑率 (例如 9600、19200、38400)</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="207"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="213"/>
         <source>--stop-bits %1: use 1 or 2</source>
         <translation>--stop-bits %1：請使用 1 或 2</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="209"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="215"/>
         <source>--timeout %1: use a response timeout of 10–10000 ms</source>
         <translation>--timeout %1：回應逾時請使用 10–10000 ms</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="212"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="218"/>
         <source>--retries %1: use 0–10 extra attempts</source>
         <translation>--retries %1：額外重試次數請使用 0–10</translation>
     </message>
     <message>
-        <location filename="../connection/ConnectionOptions.cpp" line="217"/>
+        <location filename="../connection/ConnectionOptions.cpp" line="223"/>
         <source>--parity %1: use N (none), E (even) or O (odd)</source>
         <translation>--parity %1：請使用 N (無)、E (偶同位) 或 O (奇同位)</translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="229"/>
+        <source>--drive-format applies to a serial port (--port) or a simulated bus, not to a Modbus TCP gateway (--tcp): the gateway sets its line itself</source>
+        <translation>--drive-format 適用於序列埠（--port）或模擬匯流排，不適用於 Modbus TCP 閘道器（--tcp）：閘道器自行設定它的線路</translation>
+    </message>
+    <message>
+        <location filename="../connection/ConnectionOptions.cpp" line="236"/>
+        <source>--drive-format: %1</source>
+        <translation>--drive-format：%1</translation>
     </message>
 </context>
 <context>
@@ -3942,6 +4075,11 @@ Configuration changes written but not stored are discarded.</source>
         <source>unknown device</source>
         <translation>未知裝置</translation>
     </message>
+    <message>
+        <location filename="../model/session/DeviceInfo.cpp" line="39"/>
+        <source>answered, identification failed</source>
+        <translation>有回應，識別失敗</translation>
+    </message>
 </context>
 <context>
     <name>opentop::DeviceMonitor</name>
@@ -3989,73 +4127,190 @@ Configuration changes written but not stored are discarded.</source>
         <translation>%1 是指令而非設定；指令只會依要求逐一送出</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="227"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="239"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="250"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="262"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/session/DeviceParameters.cpp" line="273"/>
+        <source>%n write(s) failed: %1</source>
+        <translation>
+            <numerusform>%n 筆寫入失敗：%1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/session/DeviceParameters.cpp" line="276"/>
+        <source>Written, but not verified on every drive it reached: %1</source>
+        <translation>已寫入，但未能在所有收到的驅動器上確認：%1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/session/DeviceParameters.cpp" line="279"/>
+        <source>%n value(s) written and verified</source>
+        <translation>
+            <numerusform>已寫入並驗證 %n 個值</numerusform>
+        </translation>
     </message>
 </context>
 <context>
     <name>opentop::DeviceSession</name>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="92"/>
+        <location filename="../model/session/DeviceSession.cpp" line="82"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 沒有參數 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="101"/>
-        <location filename="../model/session/DeviceSession.cpp" line="165"/>
+        <location filename="../model/session/BlockReader.cpp" line="50"/>
+        <location filename="../model/session/DeviceSession.cpp" line="91"/>
         <source>%1 cannot be read (it is a write-only command)</source>
         <translation>%1 無法讀取 (為僅可寫入的指令)</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="236"/>
+        <location filename="../model/session/DeviceSession.cpp" line="139"/>
         <source>cannot check the value: reading %1 failed: %2</source>
         <translation>無法檢查此值：讀取 %1 失敗：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="253"/>
+        <location filename="../model/session/DeviceSession.cpp" line="156"/>
         <source>%1 is read-only</source>
         <translation>%1 為唯讀</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="259"/>
+        <location filename="../model/session/DeviceSession.cpp" line="162"/>
         <source>%1 is a %2 command; it is only sent when explicitly requested</source>
         <translation>%1 是 %2 指令；僅在明確要求時才會送出</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="289"/>
+        <location filename="../model/session/DeviceSession.cpp" line="192"/>
         <source>%1 cannot be checked: %2</source>
         <translation>無法檢查 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="311"/>
+        <location filename="../model/session/DeviceSession.cpp" line="227"/>
         <source>reading %1 failed: %2</source>
         <translation>讀取 %1 失敗：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="339"/>
+        <location filename="../model/session/BlockWriter.cpp" line="28"/>
         <source>not written: %1 is written together with 0x%2–0x%3, and reading those first failed: %4</source>
         <translation>未寫入：%1 需與 0x%2–0x%3 一起寫入，而事先讀取這些暫存器失敗：%4</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="344"/>
+        <location filename="../model/session/BlockWriter.cpp" line="33"/>
         <source>short reply</source>
         <translation>回應過短</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="399"/>
+        <location filename="../model/session/DeviceSession.cpp" line="291"/>
         <source>written, but reading it back failed: %1</source>
         <translation>已寫入，但回讀失敗：%1</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="408"/>
+        <location filename="../model/session/DeviceSession.cpp" line="300"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>驗證失敗：寫入 %1，裝置中為 %2</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="444"/>
+        <location filename="../model/session/DeviceRefusal.cpp" line="67"/>
         <source>error code %1</source>
         <translation>錯誤碼 %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::DriveFormatsField</name>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="28"/>
+        <source>none: every drive at the port&apos;s format</source>
+        <translation>無：所有驅動器都用連接埠的格式</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="30"/>
+        <source>Drives set to another line format than the port&apos;s, e.g. 7=9600:8E1 or 7=8N2 (the baud rate may be left out): requests to them switch the line to their format and back between transactions. A DBU works only at 8N1; a DC controller at 8E1, 8O1 or 8N2. The bus list&apos;s context menu sets them too.</source>
+        <translation>設為與連接埠不同通訊格式的驅動器，例如 7=9600:8E1 或 7=8N2（鮑率可省略）：送往它們的要求會在交易之間把線路切換到它們的格式再切換回來。DBU 只能用 8N1；DC 控制器用 8E1、8O1 或 8N2。匯流排清單的右鍵選單也可設定。</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="36"/>
+        <source>&amp;Mixed bus…</source>
+        <translation>混合匯流排(&amp;M)…</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="37"/>
+        <source>How a drive of another format joins this bus</source>
+        <translation>不同格式的驅動器如何加入此匯流排</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="39"/>
+        <source>Drives of different line formats</source>
+        <translation>不同通訊格式的驅動器</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="47"/>
+        <source>Drive f&amp;ormats:</source>
+        <translation>驅動器格式(&amp;O)：</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="68"/>
+        <source>Drive formats: %1</source>
+        <translation>驅動器格式：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/connection/DriveFormatsField.cpp" line="74"/>
+        <source>Every drive hears only frames sent in its own line format: a DBU works only at 8N1 (19200 bit/s from the factory), a DC controller at 8E1 (9600 bit/s from the factory), 8O1 or 8N2. OpenTOP can talk to drives of different formats on one port: give each drive that is not at the port&apos;s format its own (Drive formats here, or Line format… in the bus list&apos;s context menu); the port is switched between transactions. To put all drives at one format for good, change the drives:</source>
+        <translation>每台驅動器只聽得到以它自己的通訊格式送出的訊框：DBU 只能用 8N1（出廠 19200 bit/s），DC 控制器用 8E1（出廠 9600 bit/s）、8O1 或 8N2。OpenTOP 可在同一個連接埠上與不同格式的驅動器通訊：為每台不是連接埠格式的驅動器設定它自己的格式（在這裡的「驅動器格式」，或匯流排清單右鍵選單的「通訊格式…」）；連接埠會在交易之間切換。若要讓所有驅動器永久使用同一種格式，請變更驅動器的設定：</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::DriveLineDialog</name>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="28"/>
+        <source>Line format of machine number %1</source>
+        <translation>機號 %1 的通訊格式</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="28"/>
+        <source>Add drive</source>
+        <translation>新增驅動器</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="36"/>
+        <source>&amp;Machine number:</source>
+        <translation>機號(&amp;M)：</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="44"/>
+        <source>The port&apos;s (%1)</source>
+        <translation>連接埠的格式 (%1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="56"/>
+        <source>The baud rate and format the drive is set to: requests to it switch the port to it and back between transactions. Type another as 38400 8E1.</source>
+        <translation>驅動器設定的鮑率與格式：送往它的要求會在交易之間把連接埠切換過去再切換回來。其他格式可輸入，例如 38400 8E1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="59"/>
+        <source>&amp;Line format:</source>
+        <translation>通訊格式(&amp;L)：</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="67"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="140"/>
+        <source>Line &amp;format…</source>
+        <translation>通訊格式(&amp;F)…</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="145"/>
+        <source>Machine number %1 talks %2, not the port&apos;s %3</source>
+        <translation>機號 %1 使用 %2，而非連接埠的 %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="148"/>
+        <source>Machine number %1 talks the port&apos;s %2</source>
+        <translation>機號 %1 使用連接埠的 %2</translation>
     </message>
 </context>
 <context>
@@ -4094,116 +4349,117 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveStatusPoller</name>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="31"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="32"/>
         <source>not polled yet</source>
         <translation>尚未輪詢</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="33"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="34"/>
         <source>online</source>
         <translation>連線中</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="35"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="36"/>
         <source>no answer (%n poll(s) in a row)</source>
         <translation>
             <numerusform>無回應 (連續 %n 次輪詢)</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="37"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="38"/>
         <source>communication error (%n in a row)</source>
         <translation>
             <numerusform>通訊錯誤 (連續 %n 次)</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="43"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="44"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="56"/>
         <source>Status not known yet</source>
         <translation>狀態尚未得知</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="45"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="46"/>
         <source>No answer: %1</source>
         <translation>無回應：%1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="48"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="59"/>
         <source>Alarm %1 %2</source>
         <translation>警報 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="50"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="61"/>
         <source>Alarm %1h (not in the alarm table)</source>
         <translation>警報 %1h (不在警報表中)</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="52"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="63"/>
         <source>Alarm active</source>
         <translation>警報發生中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="55"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="49"/>
         <source>Communication error: %1</source>
         <translation>通訊錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="58"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="67"/>
         <source>Running</source>
         <translation>運轉中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="59"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="68"/>
         <source>Running CCW</source>
         <translation>CCW 運轉中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="60"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="69"/>
         <source>Running CW</source>
         <translation>CW 運轉中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="62"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="71"/>
         <source>Stopped, no alarm</source>
         <translation>已停止，無警報</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="69"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="78"/>
         <source>grey</source>
         <translation>灰色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="71"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="80"/>
         <source>green</source>
         <translation>綠色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="73"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="82"/>
         <source>orange</source>
         <translation>橘色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="75"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="84"/>
         <source>sky blue</source>
         <translation>天藍色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="77"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="86"/>
         <source>red</source>
         <translation>紅色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="79"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="88"/>
         <source>purple</source>
         <translation>紫色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="81"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="90"/>
         <source>blue</source>
         <translation>藍色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="118"/>
+        <location filename="../model/bus/DriveStatusPoller.cpp" line="127"/>
         <source>%1; %2</source>
         <translation>%1；%2</translation>
     </message>
@@ -4212,7 +4468,7 @@ Configuration changes written but not stored are discarded.</source>
     <name>opentop::DriveWorkspace</name>
     <message>
         <location filename="../ui/workspace/DriveWorkspace.cpp" line="33"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="133"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="135"/>
         <source>Write &amp;all pending</source>
         <translation>寫入所有待寫入項目(&amp;A)</translation>
     </message>
@@ -4237,63 +4493,49 @@ Configuration changes written but not stored are discarded.</source>
         <translation>請在匯流排清單中選擇要設定的驅動器。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="132"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="134"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>寫入所有待寫入項目 (%1)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="154"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="156"/>
         <source>Reading the drive…</source>
         <translation>正在讀取驅動器…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="156"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="158"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 個值無法讀取</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="168"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="170"/>
         <source>Nothing was written: %1</source>
         <translation>未寫入任何資料：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="181"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="183"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1：%2 未寫入任何資料。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="189"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="191"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>將 %n 個待寫入的值寫入機號 %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="191"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="193"/>
         <source>Nothing was written.</source>
         <translation>未寫入任何資料。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="194"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="196"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>正在寫入 %n 個值…</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="196"/>
-        <source>%n write(s) failed; see the marked fields</source>
-        <translation>
-            <numerusform>%n 項寫入失敗；請查看標示的欄位</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="197"/>
-        <source>%n value(s) written and verified</source>
-        <translation>
-            <numerusform>已寫入並驗證 %n 個值</numerusform>
         </translation>
     </message>
 </context>
@@ -5781,27 +6023,32 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::ExitActions</name>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="34"/>
+        <location filename="../model/run/ExitActions.cpp" line="50"/>
+        <source>Machine number %1: left in communication priority, as it was not confirmed stopped</source>
+        <translation>機號 %1：未確認已停止，因此仍維持通訊優先</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitActions.cpp" line="75"/>
         <source>The stop broadcast to the %1 drives failed: %2</source>
         <translation>對 %1 驅動器的停止廣播失敗：%2</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="38"/>
+        <location filename="../model/run/ExitActions.cpp" line="81"/>
         <source>Machine number %1: STILL RUNNING (%2) %3</source>
         <translation>機號 %1：仍在運轉 (%2) %3</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="43"/>
+        <location filename="../model/run/ExitActions.cpp" line="86"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped %2</source>
         <translation>機號 %1：無回應，未確認停止 %2</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="68"/>
+        <location filename="../model/run/ExitActions.cpp" line="111"/>
         <source>Machine number %1: no way to give control back to its inputs is known</source>
         <translation>機號 %1：不知道如何將控制權交還給其輸入端子</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitActions.cpp" line="80"/>
+        <location filename="../model/run/ExitActions.cpp" line="123"/>
         <source>Machine number %1: %2</source>
         <translation>機號 %1：%2</translation>
     </message>
@@ -5822,104 +6069,168 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::ExitGuard</name>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="44"/>
-        <source>Drives left in communication priority</source>
-        <translation>仍處於通訊優先的驅動器</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="44"/>
-        <source>Drives are running</source>
-        <translation>驅動器運轉中</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="46"/>
-        <source>Before you %1: these drives are left in communication priority.</source>
-        <translation>在%1之前：以下驅動器仍處於通訊優先。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="47"/>
-        <source>Before you %1: these drives are running or left in communication priority.</source>
-        <translation>在%1之前：以下驅動器正在運轉或仍處於通訊優先。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="51"/>
-        <source>In communication priority a drive takes run and stop only from the bus: once OpenTOP lets go, only another bus master or switching its power off stops it.</source>
-        <translation>在通訊優先下，驅動器只接受來自匯流排的運轉與停止指令：OpenTOP 一旦放手，只有其他匯流排主站或切斷電源才能使其停止。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="55"/>
-        <source>&quot;Stop&quot; broadcasts every family&apos;s stop command to the whole bus and checks that each drive above has stopped.</source>
-        <translation>「停止驅動器」會向整個匯流排廣播各系列的停止指令，並確認上列每台驅動器均已停止。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="59"/>
-        <source>&quot;Give control back&quot; sets I/O priority, so the machine&apos;s own inputs run the drives again.</source>
-        <translation>「交還控制權」會設為 I/O 優先，讓機台本身的輸入端子再次控制驅動器。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="63"/>
-        <source>Stop the drives</source>
-        <translation>停止驅動器</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="67"/>
-        <source>Give control back (I/O priority)</source>
-        <translation>交還控制權 (I/O 優先)</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="69"/>
-        <source>Leave them so</source>
-        <translation>維持現狀</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="69"/>
-        <source>Leave them running</source>
-        <translation>讓其繼續運轉</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="71"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="96"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="88"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="131"/>
+        <source>Stopping the drives, then giving control back to their inputs…</source>
+        <translation>正在停止驅動器，接著將控制權交還給其輸入端子…</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/ExitGuard.cpp" line="132"/>
         <source>Stopping the drives…</source>
         <translation>正在停止驅動器…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="88"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="129"/>
         <source>Giving control back to the drives&apos; inputs…</source>
         <translation>正在將控制權交還給驅動器的輸入端子…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="97"/>
-        <source>stop</source>
-        <translation>停止</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="97"/>
-        <source>give control back</source>
-        <translation>交還控制權</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="113"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="156"/>
         <source>Not every drive is safe</source>
         <translation>並非所有驅動器都已處於安全狀態</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="114"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="157"/>
         <source>Could not %1 every drive:</source>
         <translation>無法對所有驅動器執行「%1」：</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="116"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="159"/>
         <source>Stay connected</source>
         <translation>保持連線</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="117"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="160"/>
         <source>Go on anyway</source>
         <translation>仍要繼續</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ExitPlan</name>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="55"/>
+        <source>Stop and give control back</source>
+        <translation>停止並交還控制權</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="56"/>
+        <source>Stop the drives</source>
+        <translation>停止驅動器</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="56"/>
+        <source>Give control back (I/O priority)</source>
+        <translation>交還控制權 (I/O 優先)</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="58"/>
+        <source>Give control back only</source>
+        <translation>僅交還控制權</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="60"/>
+        <source>Leave them running</source>
+        <translation>讓其繼續運轉</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="60"/>
+        <source>Leave them so</source>
+        <translation>維持現狀</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="70"/>
+        <location filename="../model/run/ExitPlan.cpp" line="73"/>
+        <source>give control back to</source>
+        <translation>交還控制權</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="71"/>
+        <source>stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="71"/>
+        <source>stop and give control back to</source>
+        <translation>停止並交還控制權</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="82"/>
+        <source>Drives are running</source>
+        <translation>驅動器運轉中</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="82"/>
+        <source>Drives left in communication priority</source>
+        <translation>仍處於通訊優先的驅動器</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="88"/>
+        <source>Before you %1: these drives are left in communication priority.</source>
+        <translation>在%1之前：以下驅動器仍處於通訊優先。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="89"/>
+        <source>Before you %1: these drives are running or left in communication priority.</source>
+        <translation>在%1之前：以下驅動器正在運轉或仍處於通訊優先。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="101"/>
+        <source>left as it is: it runs from its own inputs (I/O priority), which a stop over the bus does not override</source>
+        <translation>維持現狀：它依其本身的輸入端子運轉 (I/O 優先)，透過匯流排的停止指令無法改變</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="104"/>
+        <source>stopped (confirmed by reading it), then given back to its own inputs (I/O priority, read back)</source>
+        <translation>停止 (以讀取確認)，接著交還給其本身的輸入端子 (I/O 優先，回讀確認)</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="107"/>
+        <source>stopped (confirmed by reading it); its family has no I/O priority setting, so it stays under the bus&apos;s control</source>
+        <translation>停止 (以讀取確認)；此系列沒有 I/O 優先設定，因此仍由匯流排控制</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="110"/>
+        <source>stopped (confirmed by reading it)</source>
+        <translation>停止 (以讀取確認)</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="112"/>
+        <source>given back to its own inputs (I/O priority, read back)</source>
+        <translation>交還給其本身的輸入端子 (I/O 優先，回讀確認)</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="114"/>
+        <source>left as it is: no way to give control back to its inputs is known</source>
+        <translation>維持現狀：不知道如何將控制權交還給其輸入端子</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="115"/>
+        <source>   → %1</source>
+        <translation>   → %1</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="122"/>
+        <source>In communication priority a drive takes run and stop only from the bus: once OpenTOP lets go, only another bus master or switching its power off stops it.</source>
+        <translation>在通訊優先下，驅動器只接受來自匯流排的運轉與停止指令：OpenTOP 一旦放手，只有其他匯流排主站或切斷電源才能使其停止。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="126"/>
+        <source>Stopping broadcasts every family&apos;s stop command to the whole bus and checks that each drive above has stopped; a drive that has not stopped is not given back to its inputs.</source>
+        <translation>停止時會向整個匯流排廣播各系列的停止指令，並確認上列每台驅動器均已停止；未停止的驅動器不會交還給其輸入端子。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="131"/>
+        <source>&quot;Give control back only&quot; sets I/O priority without a stop: the machine&apos;s own inputs decide at once whether the drives run.</source>
+        <translation>「僅交還控制權」會直接設為 I/O 優先而不先停止：由機台本身的輸入端子立即決定驅動器是否運轉。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/ExitPlan.cpp" line="135"/>
+        <source>&quot;Give control back&quot; sets I/O priority, so the machine&apos;s own inputs run the drives again.</source>
+        <translation>「交還控制權」會設為 I/O 優先，讓機台本身的輸入端子再次控制驅動器。</translation>
     </message>
 </context>
 <context>
@@ -6076,6 +6387,24 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
 </context>
 <context>
+    <name>opentop::GainDesign</name>
+    <message>
+        <location filename="../model/tuning/GainDesign.cpp" line="21"/>
+        <source>the model has no ultimate point</source>
+        <translation>模型沒有臨界點</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/GainDesign.cpp" line="55"/>
+        <source>no gains from the %1 rule settle within %2 ms with at most %3 % overshoot on the motor&apos;s model, even with P at a tenth of the rule&apos;s</source>
+        <translation>即使將 P 降到規則值的十分之一，%1 規則的增益在馬達模型上也無法於 %2 ms 內以不超過 %3 % 的超調安定</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/GainDesign.cpp" line="60"/>
+        <source>Try a rule that allows more overshoot or a smaller step (a lower operating speed), or raise the drive&apos;s current limit if the motor allows it.</source>
+        <translation>請改用允許較大超調的規則或較小的步階 (較低的運轉速度)；若馬達允許，也可提高驅動器的電流限值。</translation>
+    </message>
+</context>
+<context>
     <name>opentop::GetCommand</name>
     <message>
         <location filename="../cli/GetCommand.cpp" line="43"/>
@@ -6214,65 +6543,163 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GroupCheck</name>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="56"/>
-        <location filename="../cli/GroupCheck.cpp" line="95"/>
+        <location filename="../cli/GroupCheck.cpp" line="62"/>
+        <location filename="../cli/GroupCheck.cpp" line="106"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="66"/>
+        <location filename="../cli/GroupCheck.cpp" line="72"/>
         <source>note: the other drives on the bus are not known, so drives in communication group %1 (which also execute what is sent to %1) were not looked for; name them with --bus-drives LIST or OPENTOP_BUS_DRIVES</source>
         <translation>注意：匯流排上的其他驅動器未知，因此未尋找通訊群組 %1 中的驅動器 (它們也會執行送往 %1 的指令)；請以 --bus-drives LIST 或 OPENTOP_BUS_DRIVES 指定</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="87"/>
+        <location filename="../cli/GroupCheck.cpp" line="93"/>
         <source>warning: the communication group of %1 could not be read</source>
         <translation>警告：無法讀取 %1 的通訊群組</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="95"/>
+        <location filename="../cli/GroupCheck.cpp" line="106"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="98"/>
+        <location filename="../cli/GroupCheck.cpp" line="109"/>
         <source>add --yes to send it to all of %1 and %2; nothing was sent</source>
         <translation>加上 --yes 才會送往 %1 及 %2 全部；未送出任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="128"/>
+        <location filename="../cli/GroupCheck.cpp" line="144"/>
         <source>not readable</source>
         <translation>無法讀取</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="139"/>
+        <location filename="../cli/GroupCheck.cpp" line="168"/>
         <source>Read back from the drives of the group:</source>
         <translation>從群組中的驅動器回讀：</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="140"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="143"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <source>Result</source>
+        <translation>結果</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="172"/>
         <source>(not read: %1)</source>
         <translation>(未讀取：%1)</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="188"/>
+        <location filename="../cli/GroupCheck.cpp" line="173"/>
+        <source>verified</source>
+        <translation>已確認</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="174"/>
+        <source>DIFFERS from what was written</source>
+        <translation>與寫入值不同</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="175"/>
+        <source>not verified</source>
+        <translation>未確認</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="223"/>
         <source>off</source>
         <translation>停用</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::GroupFollowers</name>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="76"/>
+        <source>could not be read</source>
+        <translation>無法讀取</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="106"/>
+        <source>its control priority could not be read</source>
+        <translation>無法讀取其控制優先權</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="108"/>
+        <source>it is in %1: it takes run commands only from its input terminals and ignores them over the bus</source>
+        <translation>它處於 %1：只接受輸入端子的運轉指令，會忽略經由通訊送來的運轉指令</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="112"/>
+        <source>an alarm is active: it runs only once the alarm is cleared</source>
+        <translation>有警報發生：警報解除後才會運轉</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="126"/>
+        <source>error code %1h</source>
+        <translation>錯誤代碼 %1h</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="146"/>
+        <source>Machine number %1 follows it.</source>
+        <translation>機號 %1 會跟隨。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="147"/>
+        <source>Machine number %1 follows it (%2).</source>
+        <translation>機號 %1 會跟隨 (%2)。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="149"/>
+        <source>Machine number %1: not known whether it follows: %2.</source>
+        <translation>機號 %1：不確定是否會跟隨：%2。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="153"/>
+        <source>Machine number %1 does NOT follow it: %2. To run it with this drive, set its control priority to communication priority; otherwise it shows E2h &quot;Cannot execute command&quot;.</source>
+        <translation>機號 %1 不會跟隨：%2。若要與此驅動器一起運轉，請將其控制優先權設為通訊優先；否則它會顯示 E2h「無法執行指令」。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="168"/>
+        <source>Machine number %1: its run state could not be read.</source>
+        <translation>機號 %1：無法讀取其運轉狀態。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="170"/>
+        <source>Machine number %1 runs.</source>
+        <translation>機號 %1 運轉中。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="171"/>
+        <source>Machine number %1 runs (%2).</source>
+        <translation>機號 %1 運轉中 (%2)。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="173"/>
+        <source>Machine number %1 does not run: %2.</source>
+        <translation>機號 %1 沒有運轉：%2。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="175"/>
+        <source>Machine number %1 does not run.</source>
+        <translation>機號 %1 沒有運轉。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/GroupFollowers.cpp" line="177"/>
+        <source>It shows %1</source>
+        <translation>它顯示 %1</translation>
     </message>
 </context>
 <context>
@@ -6811,6 +7238,137 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
 </context>
 <context>
+    <name>opentop::LineFormat</name>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="37"/>
+        <source>Baud rate %1 is not supported: use 1200–115200.</source>
+        <translation>不支援鮑率 %1：請使用 1200–115200。</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="39"/>
+        <source>Parity &apos;%1&apos; is not supported: use N (none), E (even) or O (odd).</source>
+        <translation>不支援同位元「%1」：請使用 N（無）、E（偶）或 O（奇）。</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="42"/>
+        <source>%1 data bits are not supported: use 7 or 8.</source>
+        <translation>不支援 %1 個資料位元：請使用 7 或 8。</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="44"/>
+        <source>%1 stop bits are not supported: use 1 or 2.</source>
+        <translation>不支援 %1 個停止位元：請使用 1 或 2。</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="66"/>
+        <source>&quot;%1&quot; is not a line format: write DATA BITS, PARITY and STOP BITS as 8N1, 8E1, 8O1 or 8N2, with the baud rate before it if it differs from the port&apos;s (9600:8E1)</source>
+        <translation>「%1」不是通訊格式：請依資料位元、同位元、停止位元寫成 8N1、8E1、8O1 或 8N2，若鮑率與連接埠不同則寫在前面（9600:8E1）</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="81"/>
+        <source>&quot;%1&quot;: %2</source>
+        <translation>「%1」：%2</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="98"/>
+        <source>&quot;%1&quot;: write MACHINE NUMBER=FORMAT, e.g. 7=9600:8E1 or 7=8N2 (machine numbers 1–247)</source>
+        <translation>「%1」：請寫成 機號=格式，例如 7=9600:8E1 或 7=8N2（機號 1–247）</translation>
+    </message>
+    <message>
+        <location filename="../transport/LineFormat.cpp" line="107"/>
+        <source>machine number %1: %2</source>
+        <translation>機號 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::LineFormatHint</name>
+    <message>
+        <location filename="../model/bus/LineFormatHint.cpp" line="72"/>
+        <source>%1: %2 from the factory (it can be set to %3).</source>
+        <translation>%1：出廠為 %2（可設為 %3）。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/LineFormatHint.cpp" line="77"/>
+        <source>Drives set to another line format than %1 do not answer it. %2</source>
+        <translation>設為 %1 以外通訊格式的驅動器不會回應它。%2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::LinkLoss</name>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="31"/>
+        <source>Machine number %1 (%2): state never read</source>
+        <translation>機號 %1 (%2)：狀態從未讀取</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="46"/>
+        <source>The connection to %1 was lost at %2.</source>
+        <translation>與 %1 的連線於 %2 中斷。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="54"/>
+        <source>• %1 — last answer %2 (%3 when the link dropped)</source>
+        <translation>• %1 — 最後回應 %2 (連線中斷時為 %3)</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="61"/>
+        <source>By the last values read, no drive was running or in communication priority.</source>
+        <translation>依最後讀取的數值，沒有驅動器正在運轉或處於通訊優先。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="62"/>
+        <source>When the link dropped, by the last values read:</source>
+        <translation>連線中斷時，依最後讀取的數值：</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="70"/>
+        <source>OpenTOP cannot stop these drives or give control back to their inputs until the link is back: nothing is sent over a lost link. A drive in communication priority keeps its last command. Check on the machine: each drive&apos;s own STOP input, the emergency stop, and the drives&apos; power.</source>
+        <translation>在連線恢復之前，OpenTOP 無法停止這些驅動器，也無法將控制權交還給其輸入端子：中斷的連線上不會送出任何資料。處於通訊優先的驅動器會維持最後的指令。請在機台上確認：每台驅動器本身的停止輸入端子、緊急停止，以及驅動器的電源。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="78"/>
+        <source>Before you %1: the connection to %2 was lost at %3, and OpenTOP cannot reach these drives.</source>
+        <translation>在%1之前：與 %2 的連線已於 %3 中斷，OpenTOP 無法存取這些驅動器。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="96"/>
+        <source>Running when it dropped, by the last values read: machine number %1.</source>
+        <translation>中斷時依最後讀取的數值正在運轉：機號 %1。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="99"/>
+        <source>In communication priority: machine number %1.</source>
+        <translation>處於通訊優先：機號 %1。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/run/LinkLoss.cpp" line="102"/>
+        <source>%n drive(s) never read.</source>
+        <translation>
+            <numerusform>%n 台驅動器從未讀取。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="104"/>
+        <source>OpenTOP cannot stop them until the link is back: check each drive&apos;s STOP input, the emergency stop and the power on the machine.</source>
+        <translation>在連線恢復之前，OpenTOP 無法停止它們：請在機台上確認每台驅動器的停止輸入端子、緊急停止與電源。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="118"/>
+        <source>Machine number %1 (%2): no answer, its state is not known</source>
+        <translation>機號 %1 (%2)：無回應，狀態不明</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="126"/>
+        <source>Every drive read again: none is running or in communication priority.</source>
+        <translation>已重新讀取所有驅動器：沒有驅動器正在運轉或處於通訊優先。</translation>
+    </message>
+    <message>
+        <location filename="../model/run/LinkLoss.cpp" line="127"/>
+        <source>Read again just now:</source>
+        <translation>剛剛重新讀取：</translation>
+    </message>
+</context>
+<context>
     <name>opentop::MainMenus</name>
     <message>
         <location filename="../ui/main/MainMenus.cpp" line="35"/>
@@ -6833,122 +7391,122 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>選擇序列埠、閘道器或模擬匯流排 (Ctrl+K)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="43"/>
+        <location filename="../ui/main/MainMenus.cpp" line="45"/>
         <source>&amp;Scan bus</source>
         <translation>掃描匯流排(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="49"/>
+        <location filename="../ui/main/MainMenus.cpp" line="51"/>
         <source>&amp;Disconnect</source>
         <translation>中斷連線(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="53"/>
+        <location filename="../ui/main/MainMenus.cpp" line="55"/>
         <source>Communication &amp;groups…</source>
         <translation>通訊群組(&amp;G)…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="57"/>
+        <location filename="../ui/main/MainMenus.cpp" line="59"/>
         <source>&amp;Export alarm histories…</source>
         <translation>匯出警報記錄(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="59"/>
+        <location filename="../ui/main/MainMenus.cpp" line="61"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="62"/>
+        <location filename="../ui/main/MainMenus.cpp" line="64"/>
         <source>&amp;Files</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="67"/>
+        <location filename="../ui/main/MainMenus.cpp" line="69"/>
         <source>&amp;Drive</source>
         <translation>驅動器(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="70"/>
+        <location filename="../ui/main/MainMenus.cpp" line="72"/>
         <source>&amp;Write all pending</source>
         <translation>寫入所有待寫入項目(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="72"/>
+        <location filename="../ui/main/MainMenus.cpp" line="74"/>
         <source>&amp;Re-read all</source>
         <translation>全部重新讀取(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="74"/>
+        <location filename="../ui/main/MainMenus.cpp" line="76"/>
         <source>Write a setting to the selected drives…</source>
         <translation>將設定寫入所選驅動器…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="80"/>
+        <location filename="../ui/main/MainMenus.cpp" line="82"/>
         <source>&amp;Next page</source>
         <translation>下一頁(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="86"/>
+        <location filename="../ui/main/MainMenus.cpp" line="88"/>
         <source>&amp;Previous page</source>
         <translation>上一頁(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="100"/>
+        <location filename="../ui/main/MainMenus.cpp" line="104"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="106"/>
+        <location filename="../ui/main/MainMenus.cpp" line="110"/>
         <source>&amp;Traffic log</source>
         <translation>通訊記錄(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="107"/>
+        <location filename="../ui/main/MainMenus.cpp" line="111"/>
         <source>Bus &amp;overview</source>
         <translation>匯流排總覽(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="109"/>
+        <location filename="../ui/main/MainMenus.cpp" line="113"/>
         <source>T&amp;rends</source>
         <translation>趨勢圖(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="110"/>
+        <location filename="../ui/main/MainMenus.cpp" line="114"/>
         <source>Communication &amp;groups</source>
         <translation>通訊群組(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="124"/>
+        <location filename="../ui/main/MainMenus.cpp" line="128"/>
         <source>Language</source>
         <translation>語言</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="125"/>
+        <location filename="../ui/main/MainMenus.cpp" line="129"/>
         <source>OpenTOP will be in %1 the next time it starts.</source>
         <translation>OpenTOP 下次啟動時將以 %1 顯示。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="131"/>
+        <location filename="../ui/main/MainMenus.cpp" line="135"/>
         <source>&amp;End of line</source>
         <translation>終檢(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="133"/>
+        <location filename="../ui/main/MainMenus.cpp" line="137"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="146"/>
+        <location filename="../ui/main/MainMenus.cpp" line="153"/>
         <source>connect elsewhere</source>
         <translation>連線至其他匯流排</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="156"/>
+        <location filename="../ui/main/MainMenus.cpp" line="163"/>
         <source>Export alarm histories</source>
         <translation>匯出警報記錄</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="157"/>
+        <location filename="../ui/main/MainMenus.cpp" line="164"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
@@ -6956,33 +7514,33 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="52"/>
+        <location filename="../ui/main/MainWindow.cpp" line="54"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="134"/>
+        <location filename="../ui/main/MainWindow.cpp" line="138"/>
         <source>connect elsewhere</source>
         <translation>連線至其他匯流排</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="157"/>
+        <location filename="../ui/main/MainWindow.cpp" line="161"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>正在連線至 %1… (仍連線於 %2)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="196"/>
+        <location filename="../ui/main/MainWindow.cpp" line="200"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>已連線：%1 (新連線失敗：%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="199"/>
-        <location filename="../ui/main/MainWindow.cpp" line="212"/>
+        <location filename="../ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="217"/>
         <source>Cannot connect</source>
         <translation>無法連線</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="200"/>
+        <location filename="../ui/main/MainWindow.cpp" line="204"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -6991,81 +7549,76 @@ Still connected to %2; nothing was changed.</source>
 仍連線於 %2；未做任何變更。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="203"/>
-        <location filename="../ui/main/MainWindow.cpp" line="324"/>
+        <location filename="../ui/main/MainWindow.cpp" line="207"/>
+        <location filename="../ui/main/MainWindow.cpp" line="330"/>
         <source>Not connected: %1</source>
         <translation>未連線：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="261"/>
+        <location filename="../ui/main/MainWindow.cpp" line="269"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>通訊群組：%1 (匯流排 › 通訊群組)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="292"/>
-        <location filename="../ui/main/MainWindow.cpp" line="294"/>
+        <location filename="../ui/main/MainWindow.cpp" line="300"/>
+        <location filename="../ui/main/MainWindow.cpp" line="302"/>
         <source>Connection lost: %1</source>
         <translation>連線中斷：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="295"/>
-        <source>Connection lost</source>
-        <translation>連線中斷</translation>
-    </message>
-    <message>
-        <location filename="../ui/main/MainWindow.cpp" line="303"/>
+        <location filename="../ui/main/MainWindow.cpp" line="307"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 模擬匯流排 (無實體硬體) — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="304"/>
+        <location filename="../ui/main/MainWindow.cpp" line="308"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="305"/>
+        <location filename="../ui/main/MainWindow.cpp" line="309"/>
         <source>Connecting to %1…</source>
         <translation>正在連線至 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="323"/>
+        <location filename="../ui/main/MainWindow.cpp" line="329"/>
         <source>Connected: %1</source>
         <translation>已連線：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="330"/>
+        <location filename="../ui/main/MainWindow.cpp" line="336"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>已連線：%1 (模擬，無實體硬體)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="357"/>
+        <location filename="../ui/main/MainWindow.cpp" line="364"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>此驅動器不回報機型；%1 為設定的機型。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="387"/>
-        <location filename="../ui/main/MainWindow.cpp" line="398"/>
+        <location filename="../ui/main/MainWindow.cpp" line="394"/>
+        <location filename="../ui/main/MainWindow.cpp" line="404"/>
         <source>disconnect</source>
         <translation>中斷連線</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="394"/>
+        <location filename="../ui/main/MainWindow.cpp" line="401"/>
         <source>Not connected (disconnected)</source>
         <translation>未連線 (已中斷連線)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="405"/>
-        <location filename="../ui/main/MainWindow.cpp" line="430"/>
+        <location filename="../ui/main/MainWindow.cpp" line="417"/>
+        <location filename="../ui/main/MainWindow.cpp" line="442"/>
         <source>quit</source>
         <translation>結束</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="416"/>
+        <location filename="../ui/main/MainWindow.cpp" line="428"/>
         <source>Unwritten changes</source>
         <translation>未寫入的變更</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="417"/>
+        <location filename="../ui/main/MainWindow.cpp" line="429"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>有 %n 項變更尚未寫入驅動器。要結束並捨棄這些變更嗎？</numerusform>
@@ -7210,37 +7763,37 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPage</name>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="175"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="177"/>
         <source>Live values</source>
         <translation>即時值</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="183"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="185"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="196"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="201"/>
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="261"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="266"/>
         <source>%1 %2 on the drive&apos;s display</source>
         <translation>驅動器顯示器上為 %1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="270"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="275"/>
         <source>Alarm %1 %2 — %3</source>
         <translation>警報 %1 %2 — %3</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="273"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="278"/>
         <source>Alarm active (reading which one…)</source>
         <translation>警報發生中 (正在讀取警報代碼…)</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="328"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="333"/>
         <source>No live state: %1</source>
         <translation>無即時狀態：%1</translation>
     </message>
@@ -7248,67 +7801,72 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPollBar</name>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="25"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="30"/>
         <source>Poll every</source>
         <translation>輪詢間隔</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="27"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="32"/>
         <source>%1 ms (%2 Hz)</source>
         <translation>%1 ms (%2 Hz)</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="28"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="33"/>
         <source>How often every monitored drive is read. Commands you give always go first; the drives share what is left of the bus in turn.</source>
         <translation>每台受監視驅動器的讀取頻率。您下達的指令一律優先；其餘的匯流排時間由各驅動器輪流使用。</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="36"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="45"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="44"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="53"/>
         <source>Resume polling</source>
         <translation>恢復輪詢</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="44"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="53"/>
         <source>Pause polling</source>
         <translation>暫停輪詢</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="58"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="67"/>
         <source>Polling paused: the values shown are the last ones read (%1).</source>
         <translation>輪詢已暫停：顯示的是最後讀取的值 (%1)。</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="60"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="69"/>
+        <source>Polling waits for the bus scan: %1.</source>
+        <translation>輪詢正在等候匯流排掃描：%1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="71"/>
         <source>Connection lost — not live: %1.</source>
         <translation>連線中斷 — 非即時：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="62"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="73"/>
         <source>Not live: %1.</source>
         <translation>非即時：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="63"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="74"/>
         <source>The drive does not answer (%1) — not live: %2.</source>
         <translation>驅動器無回應 (%1) — 非即時：%2。</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="66"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="77"/>
         <source>Values %1 · %2 samples/s</source>
         <translation>數值 %1 · %2 次取樣/s</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="70"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="81"/>
         <source>Not read yet.</source>
         <translation>尚未讀取。</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPollBar.cpp" line="71"/>
+        <location filename="../ui/monitor/MonitorPollBar.cpp" line="82"/>
         <source>Cannot read the drive: %1</source>
         <translation>無法讀取驅動器：%1</translation>
     </message>
@@ -7385,7 +7943,7 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
     <name>opentop::MotorSpeedBox</name>
     <message>
         <location filename="../ui/monitor/MotorSpeedBox.cpp" line="23"/>
-        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="45"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="49"/>
         <source>Motor speed</source>
         <translation>馬達速度</translation>
     </message>
@@ -7405,12 +7963,12 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>每轉換相次數</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="75"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="79"/>
         <source>set the commutations per revolution</source>
         <translation>請設定每轉換相次數</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="79"/>
+        <location filename="../ui/monitor/MotorSpeedBox.cpp" line="83"/>
         <source>%1 r/min</source>
         <translation>%1 r/min</translation>
     </message>
@@ -7503,89 +8061,99 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>驅動器 %1 (%2) 不允許：%3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="237"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="239"/>
+        <source>Not allowed on the communication group of drive %1: %2</source>
+        <translation>驅動器 %1 的通訊群組不允許：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="244"/>
         <source>None of the selected drives is identified.</source>
         <translation>所選驅動器均未識別。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="252"/>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="297"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="259"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="304"/>
         <source>Drive %1: %2</source>
         <translation>驅動器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="255"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="262"/>
         <source>Allowed on %1</source>
         <translation>%1 的允許值</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="263"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="270"/>
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="264"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="271"/>
         <source>Allowed on %1.</source>
         <translation>%1 的允許值。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="305"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="312"/>
         <source>Set it on %n drive(s) anyway?</source>
         <translation>
             <numerusform>仍要在 %n 台驅動器上設定嗎？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="306"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="313"/>
         <source>&amp;Set it</source>
         <translation>設定(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="329"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="336"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>將 %1 寫入機號 %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="331"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="338"/>
         <source>Nothing was written.</source>
         <translation>未寫入任何資料。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="336"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="343"/>
         <source>waiting…</source>
         <translation>等待中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="338"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="345"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>正在將 %1 寫入 %n 台驅動器…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="350"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="357"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>已於 %n 台驅動器中的 %1 台寫入並驗證。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="359"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="366"/>
         <source>writing…</source>
         <translation>寫入中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="372"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="383"/>
         <source>Written and verified</source>
         <translation>已寫入並驗證</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="373"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="385"/>
+        <source>Written, not verified: %1</source>
+        <translation>已寫入，未確認：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="386"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>已寫入，未驗證 (無法回讀)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="374"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="387"/>
         <source>Failed: %1</source>
         <translation>失敗：%1</translation>
     </message>
@@ -7737,27 +8305,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="184"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="199"/>
         <source>%1 (not valid now)</source>
         <translation>%1 (目前無效)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="213"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="228"/>
         <source>not read</source>
         <translation>未讀取</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="222"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="237"/>
         <source>Allowed: %1</source>
         <translation>允許值：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="225"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="240"/>
         <source>On the drive: %1</source>
         <translation>驅動器中：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="256"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="274"/>
         <source>Not accepted: %1</source>
         <translation>不接受：%1</translation>
     </message>
@@ -8033,20 +8601,6 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>正在寫入 %n 個值…</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="179"/>
-        <source>%n write(s) failed; see the marked fields</source>
-        <translation>
-            <numerusform>%n 項寫入失敗；請查看標示的欄位</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="180"/>
-        <source>%n value(s) written and verified</source>
-        <translation>
-            <numerusform>已寫入並驗證 %n 個值</numerusform>
         </translation>
     </message>
 </context>
@@ -8761,32 +9315,32 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="417"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="429"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>位移 %1 處不是有效的 JSON：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="421"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="433"/>
         <source>the top level must be a JSON object</source>
         <translation>最上層必須是 JSON 物件</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="432"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="444"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot; 為空</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="443"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
         <source>must be an object</source>
         <translation>必須是物件</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="445"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="457"/>
         <source>name repeated</source>
         <translation>名稱重複</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="461"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="473"/>
         <source>%1: cannot open: %2</source>
         <translation>%1：無法開啟：%2</translation>
     </message>
@@ -8865,39 +9419,137 @@ No unit can be tested until results can be recorded.</source>
     </message>
 </context>
 <context>
-    <name>opentop::Progress</name>
+    <name>opentop::ProposalFlow</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="75"/>
-        <source>scanning %1/%2 (%3 %), machine number %4, %5 found</source>
-        <translation>掃描中 %1/%2 (%3 %)，機號 %4，已找到 %5 台</translation>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="57"/>
+        <source>Proposal rejected; the drive&apos;s gains were not changed.</source>
+        <translation>已拒絕建議值；驅動器的增益未變更。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="90"/>
-        <source>scan: %1 % (%2 of %3 machine numbers), %4 found</source>
-        <translation>掃描：%1 % (%3 個機號中的第 %2 個)，已找到 %4 台</translation>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="60"/>
+        <source>Proposal rejected</source>
+        <translation>已拒絕建議值</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="71"/>
+        <source>The accepted gains failed the check: %1. Reject them, or store them only after looking at the step.</source>
+        <translation>已接受的增益未通過檢查：%1。請拒絕，或先查看步階後再保存。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="85"/>
+        <source>no step test ran after Accept</source>
+        <translation>接受後未執行步階測試</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="87"/>
+        <source>Store gains that failed the check?</source>
+        <translation>要保存未通過檢查的增益嗎？</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="88"/>
+        <source>The gains accepted on %1 did not pass the check after Accept.</source>
+        <translation>在 %1 接受的增益未通過接受後的檢查。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="90"/>
+        <source>Stored, they stay after a power cycle and the motor may oscillate or overshoot as measured. Reject writes back the gains the drive had.</source>
+        <translation>保存後斷電重新上電仍會保留，馬達可能如實測般振盪或超調。按「拒絕」會寫回驅動器原本的增益。</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="94"/>
+        <source>Reject the gains</source>
+        <translation>拒絕此增益</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="95"/>
+        <source>Store anyway</source>
+        <translation>仍要保存</translation>
     </message>
 </context>
 <context>
     <name>opentop::PtySimServer</name>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="50"/>
+        <location filename="../sim/PtySimServer.cpp" line="52"/>
         <source>cannot open a pseudo-terminal: %1</source>
         <translation>無法開啟虛擬終端機：%1</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="67"/>
+        <location filename="../sim/PtySimServer.cpp" line="69"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1 已存在且不是符號連結；拒絕取代</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="73"/>
+        <location filename="../sim/PtySimServer.cpp" line="75"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>無法建立符號連結 %1 -&gt; %2</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="115"/>
+        <location filename="../sim/PtySimServer.cpp" line="117"/>
         <source>the port is plugged in: %1</source>
         <translation>連接埠已接上：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ReachedDrives</name>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="47"/>
+        <source>%1, variant not known</source>
+        <translation>%1，機型不明</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="62"/>
+        <source>machine number %1 (%2) executes this write too (communication group %3), but has no such setting at 0x%4</source>
+        <translation>機號 %1 (%2) 也會執行此寫入 (通訊群組 %3)，但在 0x%4 沒有這個設定</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="86"/>
+        <source>machine number %1 (%2) executes this write too (communication group %3) and does not allow it: %4</source>
+        <translation>機號 %1 (%2) 也會執行此寫入 (通訊群組 %3)，但不允許此值：%4</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="95"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="110"/>
+        <source>%1 cannot be checked: %2</source>
+        <translation>無法檢查 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="150"/>
+        <source>verification failed in communication group %1: %2</source>
+        <translation>通訊群組 %1 的確認失敗：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="209"/>
+        <source>reading %1 of machine number %2, which executes this write too, failed: %3</source>
+        <translation>讀取機號 %2 (也會執行此寫入) 的 %1 失敗：%3</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="245"/>
+        <source>machine number %1: not verified (the setting cannot be read there)</source>
+        <translation>機號 %1：未確認 (該設定無法在此驅動器上讀取)</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="258"/>
+        <source>machine number %1: not verified, reading it back failed: %2</source>
+        <translation>機號 %1：未確認，讀回失敗：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="260"/>
+        <source>the drive was removed</source>
+        <translation>驅動器已移除</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="273"/>
+        <source>machine number %1 holds %2</source>
+        <translation>機號 %1 的值為 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ReachedDrives.cpp" line="274"/>
+        <source>machine number %1 holds %2, not %3</source>
+        <translation>機號 %1 的值為 %2，不是 %3</translation>
     </message>
 </context>
 <context>
@@ -9135,218 +9787,218 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RecipeEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="46"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="47"/>
         <source>Recipe editor</source>
         <translation>配方編輯器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="66"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="402"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="67"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
         <source>Revision:</source>
         <translation>版次：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="68"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="69"/>
         <source>Product:</source>
         <translation>產品：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="69"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
         <source>Description:</source>
         <translation>說明：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="71"/>
         <source>Position:</source>
         <translation>位置：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="107"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
         <source>New from drives on the bus…</source>
         <translation>從匯流排上的驅動器新建…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>New from backup file…</source>
         <translation>從備份檔新建…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>Open…</source>
         <translation>開啟…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="112"/>
         <source>Save</source>
         <translation>儲存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="113"/>
         <source>Save as…</source>
         <translation>另存新檔…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="152"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="154"/>
         <source>%1: %2%3</source>
         <translation>%1：%2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="155"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="157"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="226"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="228"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>由標準樣品在匯流排上的驅動器或其備份檔建立配方，或開啟既有配方。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="230"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="232"/>
         <source>the recipe is empty</source>
         <translation>配方為空</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="241"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="243"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="245"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="247"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>配方通過檢查：可儲存並執行。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="250"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 個問題：修正之前無法儲存配方。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="260"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="262"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>配方未通過檢查 (%n 個問題)；未儲存任何資料</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="276"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="278"/>
         <source>cannot read %1: %2</source>
         <translation>無法讀取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="288"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="290"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 不是 OpenTOP 配方檔</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="297"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="298"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>已開啟 %1，但無法直接載入 (%2)。儲存時會檢查並重新簽署。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="316"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="318"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>由 %1 建立的新配方：請檢查設定與測試步驟的限值後儲存。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="328"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="330"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>機號 %1 不是匯流排上已知的驅動器；請先掃描匯流排</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="333"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>正在讀取標準樣品的設定…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="333"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="348"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="350"/>
         <source>cancelled: no recipe was made</source>
         <translation>已取消：未建立配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="374"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="376"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="387"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="389"/>
         <source>Open recipe</source>
         <translation>開啟配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="388"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="390"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>配方 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="397"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="402"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="399"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
         <source>New recipe</source>
         <translation>新配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="397"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="399"/>
         <source>Product name:</source>
         <translation>產品名稱：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="410"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="412"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>標準樣品的備份檔</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="411"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="413"/>
         <source>Backups (*.json)</source>
         <translation>備份檔 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="423"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="425"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>匯流排上沒有驅動器：請先連線並掃描。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="431"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="433"/>
         <source>New recipe from drives</source>
         <translation>從驅動器新建配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="432"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="434"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>標準樣品驅動器的機號 (已找到：%1)：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="442"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="444"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot; 不是機號 (1–247)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="451"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="453"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>由匯流排上的驅動器建立的新配方：請檢查設定與測試步驟的限值後儲存。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="462"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="464"/>
         <source>Save recipe</source>
         <translation>儲存配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="464"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="466"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="469"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="471"/>
         <source>Saved and signed: %1</source>
         <translation>已儲存並簽署：%1</translation>
     </message>
@@ -10155,21 +10807,129 @@ No unit can be tested until results can be recorded.</source>
     </message>
 </context>
 <context>
+    <name>opentop::Reconnection</name>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="30"/>
+        <source>&amp;Reconnect</source>
+        <translation>重新連線(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="37"/>
+        <source>Open the last connection again, with the same drives and page (Ctrl+R)</source>
+        <translation>以相同的驅動器與頁面重新開啟上一次的連線 (Ctrl+R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="91"/>
+        <source>Reconnecting to %1…</source>
+        <translation>正在重新連線至 %1…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="122"/>
+        <source>Reconnected to %1: reading every drive again…</source>
+        <translation>已重新連線至 %1：正在重新讀取所有驅動器…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="175"/>
+        <source>Reconnected to %1.</source>
+        <translation>已重新連線至 %1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="199"/>
+        <source>Reconnecting failed: %1</source>
+        <translation>重新連線失敗：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="217"/>
+        <location filename="../ui/main/Reconnection.cpp" line="259"/>
+        <source>Connection lost</source>
+        <translation>連線中斷</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="223"/>
+        <location filename="../ui/main/Reconnection.cpp" line="262"/>
+        <source>Reconnect</source>
+        <translation>重新連線</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="263"/>
+        <source>Go on anyway</source>
+        <translation>仍要繼續</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/Reconnection.cpp" line="264"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+</context>
+<context>
     <name>opentop::RelayAnalysis</name>
     <message>
-        <location filename="../model/tuning/RelayAnalysis.cpp" line="27"/>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="47"/>
         <source>no steady oscillation: %1 full cycles around %2, %3 needed</source>
         <translation>無穩定振盪：在 %2 附近只有 %1 個完整週期，需要 %3 個</translation>
     </message>
     <message>
-        <location filename="../model/tuning/RelayAnalysis.cpp" line="59"/>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="51"/>
+        <source>Raise the relay amplitude, or choose an operating speed that leaves the output room on both sides.</source>
+        <translation>請加大繼電器振幅，或選擇輸出上下都留有餘裕的運轉速度。</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="86"/>
         <source>the oscillation (±%1) is no larger than the hysteresis (%2)</source>
         <translation>振盪 (±%1) 未大於遲滯 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/RelayAnalysis.cpp" line="65"/>
-        <source>the oscillation is not steady: periods or amplitudes differ by %1 %</source>
-        <translation>振盪不穩定：週期或振幅相差 %1 %</translation>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="89"/>
+        <source>Raise the relay amplitude.</source>
+        <translation>請加大繼電器振幅。</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="97"/>
+        <source>the oscillation&apos;s period, %1 ms, holds only %2 readings (one every %3 ms): at least %4 are needed, or its period and amplitude are the bus&apos;s rather than the motor&apos;s</source>
+        <translation>振盪週期 %1 ms 內只讀取了 %2 次 (每 %3 ms 一次)：至少需要 %4 次，否則週期與振幅反映的是匯流排而非馬達</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="104"/>
+        <source>Raise the line rate (115200 bit/s if every drive on the bus allows it) or stop polling other drives on this bus during the test; a larger relay amplitude or another speed does not change this.</source>
+        <translation>請提高鮑率 (若匯流排上所有驅動器都支援，用 115200 bit/s)，或在測試期間暫停輪詢此匯流排上的其他驅動器；加大繼電器振幅或改變速度都無法改善。</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="110"/>
+        <source>the oscillation is not steady: periods differ by %1 %, amplitudes by %2 % (at most %3 % and %4 %)</source>
+        <translation>振盪不穩定：週期相差 %1 %，振幅相差 %2 % (上限分別為 %3 % 與 %4 %)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="116"/>
+        <source>Raise the relay amplitude so that the oscillation stands out of friction and load changes, keep the load steady during the test, and stop polling other drives on this bus meanwhile.</source>
+        <translation>請加大繼電器振幅，使振盪不被摩擦與負載變化淹沒；測試期間保持負載穩定，並暫停輪詢此匯流排上的其他驅動器。</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="123"/>
+        <source>the oscillation is lopsided: its time above and below %1 differ by %2 % of the period (at most %3 %)</source>
+        <translation>振盪不對稱：高於與低於 %1 的時間相差週期的 %2 % (上限 %3 %)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAnalysis.cpp" line="128"/>
+        <source>The output for the operating speed was misjudged or the load changed: keep the load steady, choose an operating speed further from standstill and from full output, and repeat the test.</source>
+        <translation>運轉速度所需的輸出估計有誤或負載改變：請保持負載穩定，選擇離靜止與最大輸出都較遠的運轉速度，再重新測試。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RelayTuning</name>
+    <message>
+        <location filename="../model/tuning/RelayTuning.cpp" line="28"/>
+        <source>Raise the relay amplitude.</source>
+        <translation>請加大繼電器振幅。</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayTuning.cpp" line="49"/>
+        <source>the drive&apos;s own loop, as the model extrapolates it, would oscillate with a period of %1 ms, under %2 readings (one every %3 ms): the step after Accept could not show whether the gains work</source>
+        <translation>依模型外推，驅動器本身的迴路會以 %1 ms 的週期振盪，不到 %2 次讀取 (每 %3 ms 一次)：接受後的步階無法顯示增益是否可用</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayTuning.cpp" line="55"/>
+        <source>Raise the line rate (115200 bit/s if every drive on the bus allows it) or stop polling other drives on this bus during the test.</source>
+        <translation>請提高鮑率 (若匯流排上所有驅動器都支援，用 115200 bit/s)，或在測試期間暫停輪詢此匯流排上的其他驅動器。</translation>
     </message>
 </context>
 <context>
@@ -10342,201 +11102,201 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreDialog</name>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="35"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="36"/>
         <source>&amp;Preview</source>
         <translation>預覽(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="36"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
         <source>&amp;Write to drives…</source>
         <translation>寫入驅動器(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="39"/>
         <source>&amp;Save report…</source>
         <translation>儲存報告(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="40"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="41"/>
         <source>Restore from a backup file</source>
         <translation>從備份檔還原</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="42"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="43"/>
         <source>No file chosen</source>
         <translation>未選擇檔案</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="43"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="44"/>
         <source>&amp;Choose file…</source>
         <translation>選擇檔案(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="45"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="46"/>
         <source>File:</source>
         <translation>檔案：</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="56"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="57"/>
         <source>Read the drives and show what would change; writes nothing</source>
         <translation>讀取驅動器並顯示將變更的內容；不寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="57"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
         <source>Write the previewed changes, each verified by reading it back</source>
         <translation>寫入預覽的變更，每項皆以回讀驗證</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
         <source>Stop after the write in progress has been verified</source>
         <translation>目前進行中的寫入驗證完成後停止</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
         <source>Save the report as text, or as CSV when the name ends in .csv</source>
         <translation>將報告儲存為文字檔；檔名以 .csv 結尾時儲存為 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
         <source>C&amp;lose</source>
         <translation>關閉(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="96"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="98"/>
         <source>%1: no such file</source>
         <translation>%1：檔案不存在</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="101"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="103"/>
         <source>the file could not be read</source>
         <translation>無法讀取檔案</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="102"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="186"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="104"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="188"/>
         <source>Refused, nothing will be written: %1</source>
         <translation>已拒絕，不會寫入任何資料：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="107"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="109"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>檔案中有 %n 台驅動器。請選擇要還原的項目，然後按「預覽」。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="148"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="150"/>
         <source>Refused, nothing written:</source>
         <translation>已拒絕，未寫入任何資料：</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="150"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="152"/>
         <source>Drive %1 from %2: %3</source>
         <translation>驅動器 %1 (來自 %2)：%3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="185"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="187"/>
         <source>Choose a backup file first.</source>
         <translation>請先選擇備份檔。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="227"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="229"/>
         <source>not attempted</source>
         <translation>未執行</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="234"/>
         <source>Reading drive %1…</source>
         <translation>正在讀取驅動器 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="234"/>
         <source>Writing drive %1…</source>
         <translation>正在寫入驅動器 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="239"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="241"/>
         <source>drive %1: %2 (%v of %m)</source>
         <translation>驅動器 %1：%2 (%v / %m)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="267"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="269"/>
         <source>Stopping after the write in progress has been verified…</source>
         <translation>目前進行中的寫入驗證完成後將停止…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="282"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="373"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="378"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="284"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
         <source>Drive %1: %2</source>
         <translation>驅動器 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="285"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="287"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>%n 項設定待寫入</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="292"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="294"/>
         <source>  Note: %1</source>
         <translation>  注意：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="295"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="297"/>
         <source>Nothing written yet. Write to drives to apply.</source>
         <translation>尚未寫入任何資料。請按「寫入驅動器」以套用。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="296"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="298"/>
         <source>Nothing written.</source>
         <translation>未寫入任何資料。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="354"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="356"/>
         <source>Restore from backup file</source>
         <translation>從備份檔還原</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="355"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="357"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 備份檔 (*.json);;所有檔案 (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="381"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="383"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>要將 %n 項設定寫入驅動器 %1，並逐項以回讀驗證嗎？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="388"/>
         <source>Write to drives</source>
         <translation>寫入驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="386"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="388"/>
         <source>&amp;Write</source>
         <translation>寫入(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="391"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="393"/>
         <source>Save restore report</source>
         <translation>儲存還原報告</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="392"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="394"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>文字檔 (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="397"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="399"/>
         <source>Could not save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
@@ -10596,57 +11356,62 @@ No unit can be tested until results can be recorded.</source>
         <translation>未變更</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="272"/>
+        <location filename="../model/files/RestorePlan.cpp" line="273"/>
+        <source>written, not verified: %1</source>
+        <translation>已寫入，未確認：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/files/RestorePlan.cpp" line="274"/>
         <source>written</source>
         <translation>已寫入</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="272"/>
+        <location filename="../model/files/RestorePlan.cpp" line="274"/>
         <source>written and verified</source>
         <translation>已寫入並驗證</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="274"/>
+        <location filename="../model/files/RestorePlan.cpp" line="276"/>
         <source>failed: %1</source>
         <translation>失敗：%1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="276"/>
+        <location filename="../model/files/RestorePlan.cpp" line="278"/>
         <source>not attempted</source>
         <translation>未執行</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="278"/>
+        <location filename="../model/files/RestorePlan.cpp" line="280"/>
         <source>not confirmed (%1): the drive may or may not hold it; run the restore again to read it back</source>
         <translation>未確認 (%1)：驅動器可能已保有此值，也可能沒有；請再次執行還原以回讀</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="303"/>
+        <location filename="../model/files/RestorePlan.cpp" line="305"/>
         <source>planned</source>
         <translation>已規劃</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="305"/>
+        <location filename="../model/files/RestorePlan.cpp" line="307"/>
         <source>restored</source>
         <translation>已還原</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="307"/>
+        <location filename="../model/files/RestorePlan.cpp" line="309"/>
         <source>refused</source>
         <translation>已拒絕</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="309"/>
+        <location filename="../model/files/RestorePlan.cpp" line="311"/>
         <source>communication failure</source>
         <translation>通訊失敗</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="311"/>
+        <location filename="../model/files/RestorePlan.cpp" line="313"/>
         <source>verification mismatch</source>
         <translation>驗證不符</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="313"/>
+        <location filename="../model/files/RestorePlan.cpp" line="315"/>
         <source>interrupted</source>
         <translation>已中斷</translation>
     </message>
@@ -10750,37 +11515,44 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Restorer</name>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="48"/>
+        <location filename="../model/files/Restorer.cpp" line="49"/>
         <source>interrupted before anything was written</source>
         <translation>在寫入任何資料前中斷</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="63"/>
+        <location filename="../model/files/Restorer.cpp" line="64"/>
         <source>reading the drive failed, nothing written (%1)</source>
         <translation>讀取驅動器失敗，未寫入任何資料 (%1)</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../model/files/Restorer.cpp" line="116"/>
+        <source>%n value(s) of the file may not be written to the drives of the communication group; nothing written</source>
+        <translation>
+            <numerusform>檔案中有 %n 個值不可寫入通訊群組的驅動器；未寫入任何值</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="99"/>
+        <location filename="../model/files/Restorer.cpp" line="144"/>
         <source>interrupted after %1 of %2 writes; run the restore again to complete it</source>
         <translation>在 %2 項寫入中完成 %1 項後中斷；請再次執行還原以完成</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="134"/>
+        <location filename="../model/files/Restorer.cpp" line="180"/>
         <source>%1 not confirmed (%2): the drive may or may not hold it; run the restore again, it reads the drive back first</source>
         <translation>%1 未確認 (%2)：驅動器可能已保有此值，也可能沒有；請再次執行還原，它會先回讀驅動器</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="168"/>
+        <location filename="../model/files/Restorer.cpp" line="214"/>
         <source>after storing, the drive holds %1</source>
         <translation>保存後驅動器中為 %1</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="173"/>
+        <location filename="../model/files/Restorer.cpp" line="219"/>
         <source>the settings could not be read back after storing</source>
         <translation>保存後無法回讀設定</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="206"/>
+        <location filename="../model/files/Restorer.cpp" line="252"/>
         <source>communication settings changed (%1): they take effect when the drive is next powered on; connect with the new settings after that</source>
         <translation>通訊設定已變更 (%1)：將於驅動器下次上電時生效；之後請以新設定連線</translation>
     </message>
@@ -10892,251 +11664,251 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="62"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>End-of-line results</source>
         <translation>終檢結果</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Started</source>
         <translation>開始時間</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Serial</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>Station</source>
         <translation>工站</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
         <source>Operator</source>
         <translation>作業員</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
         <source>Time (s)</source>
         <translation>時間 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="68"/>
         <source>First failure</source>
         <translation>首個不合格項目</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="84"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
         <source>Export CSV…</source>
         <translation>匯出 CSV…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="86"/>
         <source>Certificate PDF…</source>
         <translation>測試證書 PDF…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="119"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="121"/>
         <source>SQLite file or postgresql://user@host/database</source>
         <translation>SQLite 檔或 postgresql://user@host/database</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="120"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="122"/>
         <source>Open</source>
         <translation>開啟</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="121"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="123"/>
         <source>File…</source>
         <translation>檔案…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="128"/>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="130"/>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="132"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
         <source>any</source>
         <translation>不限</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
         <source>Today</source>
         <translation>今天</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="135"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
         <source>Last 24 hours</source>
         <translation>最近 24 小時</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="138"/>
         <source>Last 7 days</source>
         <translation>最近 7 天</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="139"/>
         <source>Last 30 days</source>
         <translation>最近 30 天</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="138"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
         <source>All</source>
         <translation>全部</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="141"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="143"/>
         <source>Any</source>
         <translation>不限</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="145"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="147"/>
         <source>Search</source>
         <translation>搜尋</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="149"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
         <source>Serial:</source>
         <translation>序號：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="150"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="153"/>
         <source>Station:</source>
         <translation>工站：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="154"/>
         <source>Period:</source>
         <translation>期間：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="153"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="155"/>
         <source>Verdict:</source>
         <translation>判定：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="161"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="163"/>
         <source>Database:</source>
         <translation>資料庫：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="192"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="194"/>
         <source>There is no results database at %1 yet: a station makes it when it records its first unit.</source>
         <translation>%1 尚無結果資料庫：工站記錄第一台產品時會建立。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="198"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="200"/>
         <source>Opening the results database %1…</source>
         <translation>正在開啟結果資料庫 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="210"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="212"/>
         <source>Results database %1</source>
         <translation>結果資料庫 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="244"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="246"/>
         <source>Searching…</source>
         <translation>正在搜尋…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="256"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="350"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="258"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="352"/>
         <source>the results database is not open</source>
         <translation>結果資料庫未開啟</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="291"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="293"/>
         <source>%1 rev. %2</source>
         <translation>%1 版次 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="295"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="297"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="322"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="317"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="319"/>
         <source>%n unit(s), %1 passed · first-pass yield %2 (%3 of %4 serials)</source>
         <translation>
             <numerusform>%n 台產品，%1 台合格 · 一次良率 %2 (%4 個序號中的 %3 個)</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="322"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="331"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="377"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="333"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="379"/>
         <source>no unit is selected</source>
         <translation>未選擇產品</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="335"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="337"/>
         <source>Reading unit %1…</source>
         <translation>正在讀取產品 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="378"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="380"/>
         <source>the unit&apos;s record is still being read</source>
         <translation>仍在讀取該產品的記錄</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="387"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="389"/>
         <source>Open results database</source>
         <translation>開啟結果資料庫</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="388"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="390"/>
         <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
         <translation>SQLite 資料庫 (*.db *.sqlite);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="400"/>
         <source>Export units as CSV</source>
         <translation>將產品匯出為 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="400"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="403"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="405"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>已將 %n 台產品寫入 %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="414"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="416"/>
         <source>Save certificate</source>
         <translation>儲存測試證書</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="415"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="417"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF 檔 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="420"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="422"/>
         <source>Certificate written to %1</source>
         <translation>測試證書已寫入 %1</translation>
     </message>
@@ -11152,64 +11924,64 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RunCommand</name>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="48"/>
+        <location filename="../cli/RunCommand.cpp" line="49"/>
         <source>Test run: start, stop, direction, running data, hold/free, speed (needs --yes)</source>
         <translation>試運轉：啟動、停止、方向、運轉資料、保持/釋放、速度 (需要 --yes)</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="53"/>
+        <location filename="../cli/RunCommand.cpp" line="54"/>
         <source>Send the command (it moves or stops a motor).</source>
         <translation>送出指令 (會使馬達運轉或停止)。</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="63"/>
+        <location filename="../cli/RunCommand.cpp" line="64"/>
         <source>error: usage: %1 (one machine number; a negative speed after --)</source>
         <translation>錯誤：用法：%1 (一個機號；負速度請放在 -- 之後)</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="71"/>
-        <location filename="../cli/RunCommand.cpp" line="76"/>
-        <location filename="../cli/RunCommand.cpp" line="81"/>
-        <location filename="../cli/RunCommand.cpp" line="126"/>
+        <location filename="../cli/RunCommand.cpp" line="72"/>
+        <location filename="../cli/RunCommand.cpp" line="77"/>
+        <location filename="../cli/RunCommand.cpp" line="82"/>
+        <location filename="../cli/RunCommand.cpp" line="144"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="86"/>
+        <location filename="../cli/RunCommand.cpp" line="87"/>
         <source>Would send to machine number %1: %2
 This moves or stops a motor: add --yes to send it.</source>
         <translation>將送往機號 %1：%2
 此操作會使馬達運轉或停止：加上 --yes 才會送出。</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="118"/>
+        <location filename="../cli/RunCommand.cpp" line="108"/>
+        <source>note: %1</source>
+        <translation>注意：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/RunCommand.cpp" line="136"/>
         <source>Sent to machine number %1: %2</source>
         <translation>已送往機號 %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="120"/>
+        <location filename="../cli/RunCommand.cpp" line="138"/>
         <source>Sent to machine number %1, executed also by %2 (communication group): %3</source>
         <translation>已送往機號 %1，%2 也會執行 (通訊群組)：%3</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="156"/>
+        <location filename="../cli/RunCommand.cpp" line="174"/>
         <source>(not read: %1)</source>
         <translation>(未讀取：%1)</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="165"/>
+        <location filename="../cli/RunCommand.cpp" line="183"/>
         <source>State of machine number %1:</source>
         <translation>機號 %1 的狀態：</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="176"/>
-        <source>State of machine number %1 (communication group of %2): not read: %3</source>
-        <translation>機號 %1 的狀態 (%2 的通訊群組)：未讀取：%3</translation>
-    </message>
-    <message>
-        <location filename="../cli/RunCommand.cpp" line="184"/>
-        <source>State of machine number %1 (communication group of %2):</source>
-        <translation>機號 %1 的狀態 (%2 的通訊群組)：</translation>
+        <location filename="../cli/RunCommand.cpp" line="199"/>
+        <source>Communication group of %1, read after the command:</source>
+        <translation>%1 的通訊群組，指令後讀取：</translation>
     </message>
 </context>
 <context>
@@ -11265,7 +12037,7 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>在 &quot;%1&quot; 下，驅動器的運轉、停止、方向與速度選擇均來自輸入端子，並拒絕來自匯流排的運轉指令。若要從這裡試運轉，請切換為 &quot;%2&quot;：opentop-cli set %3 %4=%5 (當要由機台本身的控制再次運轉時，請切回 &quot;%1&quot;，=%6)。</translation>
     </message>
     <message>
-        <location filename="../model/run/RunControl.cpp" line="263"/>
+        <location filename="../model/run/RunControl.cpp" line="265"/>
         <source>An alarm is active: the drive refuses to run until it is cleared. See opentop-cli alarms %1, then alarms %1 --reset --yes.</source>
         <translation>警報發生中：警報解除前驅動器拒絕運轉。請參閱 opentop-cli alarms %1，然後執行 alarms %1 --reset --yes。</translation>
     </message>
@@ -11509,83 +12281,93 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="111"/>
+        <location filename="../cli/ScanCommand.cpp" line="64"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>尋找並識別匯流排上的驅動器 (機號 1–247)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="117"/>
+        <location filename="../cli/ScanCommand.cpp" line="70"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>起始詢問機號，1–247 (預設 1)。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="117"/>
-        <location filename="../cli/ScanCommand.cpp" line="118"/>
+        <location filename="../cli/ScanCommand.cpp" line="70"/>
+        <location filename="../cli/ScanCommand.cpp" line="71"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="118"/>
+        <location filename="../cli/ScanCommand.cpp" line="71"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>最後詢問機號，1–247 (預設 247)。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="120"/>
+        <location filename="../cli/ScanCommand.cpp" line="73"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>每個機號的等待時間，單位 ms，10–5000 (預設：依鮑率計算；轉接器或閘道器較慢時請加大)。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="122"/>
+        <location filename="../cli/ScanCommand.cpp" line="75"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="135"/>
+        <location filename="../cli/ScanCommand.cpp" line="77"/>
+        <source>Also ask the machine numbers not found in every other line format a drive can be set to (a DC controller at 8E1 on a DBU bus at 8N1): one more pass per format, off by default.</source>
+        <translation>對沒有找到的機號，也以驅動器可設定的其他每種通訊格式詢問（8N1 的 DBU 匯流排上 8E1 的 DC 控制器）：每種格式多掃描一輪，預設關閉。</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="92"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>錯誤：--%1 必須是 %2–%3 的數字，而非 &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="147"/>
+        <location filename="../cli/ScanCommand.cpp" line="104"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>錯誤：scan 不接受引數；請使用 --from N --to N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="156"/>
+        <location filename="../cli/ScanCommand.cpp" line="113"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>錯誤：--from %1 大於 --to %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="174"/>
+        <location filename="../cli/ScanCommand.cpp" line="131"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>正在 %3 上掃描機號 %1–%2，每個 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="211"/>
+        <location filename="../cli/ScanCommand.cpp" line="178"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>在掃描任何機號前中斷。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="213"/>
+        <location filename="../cli/ScanCommand.cpp" line="180"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>已中斷：已掃描機號 %1–%2 (%4 個中的 %3 個)；%5–%6 未詢問。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="227"/>
+        <location filename="../cli/ScanCommand.cpp" line="194"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>錯誤：掃描在機號 %1 停止：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="237"/>
+        <location filename="../cli/ScanCommand.cpp" line="206"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="239"/>
+        <location filename="../cli/ScanCommand.cpp" line="208"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>注意：%1 台驅動器在 %2 ms 等待時間後才回應，已重新詢問；若掃描遺漏驅動器，請加長 --wait。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="245"/>
+        <location filename="../cli/ScanCommand.cpp" line="217"/>
+        <source>warning: machine number %1 answered, but its identification failed, also when asked again %2 more times; it is not counted as a drive. Add it by hand: name it in a command (it is identified again then, within --timeout; raise it for a slow device), or check its line settings and scan again with a longer --wait.</source>
+        <translation>警告：機號 %1 有回應，但識別失敗，再詢問 %2 次也一樣；它不計為驅動器。請手動加入：在指令中指定這個機號 (屆時會在 --timeout 內重新識別；裝置回應慢時請加大)，或檢查它的通訊設定後以較長的 --wait 重新掃描。</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="226"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -11596,94 +12378,145 @@ This moves or stops a motor: add --yes to send it.</source>
   - 終端電阻 (匯流排兩端各 120 Ω) 以及驅動器是否已通電。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="258"/>
+        <location filename="../cli/ScanCommand.cpp" line="239"/>
         <source>hint: %1 Retry with the same connection and: %2</source>
         <translation>提示：%1 請以相同連線加上以下選項重試：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="271"/>
+        <location filename="../cli/ScanCommand.cpp" line="252"/>
         <source>Serial line: %1</source>
         <translation>序列線路：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="274"/>
+        <location filename="../cli/ScanCommand.cpp" line="255"/>
         <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
         <translation>警告：%1 因此掃描時每個機號最多會多等待 %2 ms。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="303"/>
+        <location filename="../cli/ScanCommand.cpp" line="284"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 機型未知</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="304"/>
+        <location filename="../cli/ScanCommand.cpp" line="285"/>
         <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
         <translation>驅動器不回報機型；請以 --variant %1=VARIANT 指定 (%2)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="320"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="320"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>hex</source>
         <translation>十六進位</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="320"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>switches</source>
         <translation>開關</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="320"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="321"/>
+        <location filename="../cli/ScanCommand.cpp" line="302"/>
         <source>model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="321"/>
+        <location filename="../cli/ScanCommand.cpp" line="302"/>
         <source>firmware</source>
         <translation>韌體</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="321"/>
+        <location filename="../cli/ScanCommand.cpp" line="302"/>
         <source>state</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="327"/>
+        <location filename="../cli/ScanCommand.cpp" line="308"/>
         <source>comm. group</source>
         <translation>通訊群組</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="395"/>
+        <location filename="../cli/ScanCommand.cpp" line="313"/>
+        <source>line format</source>
+        <translation>通訊格式</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="328"/>
+        <source>the port&apos;s</source>
+        <translation>連接埠的</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="387"/>
         <source>1 drive found in %1 s</source>
         <translation>於 %1 s 內找到 1 台驅動器</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="396"/>
+        <location filename="../cli/ScanCommand.cpp" line="388"/>
         <source>%1 drives found in %2 s</source>
         <translation>於 %2 s 內找到 %1 台驅動器</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="398"/>
+        <location filename="../cli/ScanCommand.cpp" line="390"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>；1 個可能重複的機號：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="400"/>
+        <location filename="../cli/ScanCommand.cpp" line="392"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>；%1 個可能重複的機號：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="411"/>
+        <location filename="../cli/ScanCommand.cpp" line="396"/>
+        <source>; answered, identification failed: %1 (add by hand)</source>
+        <translation>；有回應但識別失敗：%1 (請手動加入)</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="406"/>
         <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>警告：機號 %1 (%2，%3) 的回應錯亂：可能有兩台驅動器使用相同機號。請檢查此匯流排上驅動器的 SW1/SW2 開關，讓每台使用不同的機號，斷電重新上電後再次掃描。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ScanFormats</name>
+    <message>
+        <location filename="../cli/ScanFormats.cpp" line="44"/>
+        <source>Scanning machine numbers %1–%2 at %3 (--try-formats), %4 ms each…</source>
+        <translation>以 %3 掃描機號 %1–%2（--try-formats），每個 %4 ms…</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanFormats.cpp" line="71"/>
+        <source>Machine number %1 answered at %2: it is asked at that format from now on (--drive-format %1=%3).</source>
+        <translation>機號 %1 以 %2 回應：之後都以該格式詢問它（--drive-format %1=%3）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanFormats.cpp" line="99"/>
+        <source>hint: %1 If one is on this bus, give its machine number its format with --drive-format ID=BAUD:FORMAT (e.g. 7=9600:8E1), or scan with --try-formats: %2 more passes, %3 more requests, about %4 s more.</source>
+        <translation>提示：%1 若匯流排上有這種驅動器，請用 --drive-format ID=BAUD:FORMAT（例如 7=9600:8E1）指定它的機號的格式，或用 --try-formats 掃描：多 %2 輪、多 %3 個要求，約多 %4 s。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ScanProgress</name>
+    <message>
+        <location filename="../cli/ScanProgress.cpp" line="34"/>
+        <source>scanning %1/%2 (%3 %), machine number %4, %5 found</source>
+        <translation>掃描中 %1/%2 (%3 %)，機號 %4，已找到 %5 台</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanProgress.cpp" line="49"/>
+        <source>scan: %1 % (%2 of %3 machine numbers), %4 found</source>
+        <translation>掃描：%1 % (%3 個機號中的第 %2 個)，已找到 %4 台</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanProgress.cpp" line="60"/>
+        <source>scan: machine number %1 answered, identification failed: retrying (%2 of %3)…</source>
+        <translation>掃描：機號 %1 有回應，但識別失敗：重試中 (第 %2 次，共 %3 次)…</translation>
     </message>
 </context>
 <context>
@@ -11780,202 +12613,226 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="43"/>
+        <location filename="../cli/SetCommand.cpp" line="87"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>依名稱寫入參數，經檢查、回讀並驗證</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="53"/>
+        <location filename="../cli/SetCommand.cpp" line="97"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>依位址寫入暫存器：ADDR=VALUE (可重複指定；搭配 --fc 16 時可寫 VALUE,VALUE...)。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="54"/>
+        <location filename="../cli/SetCommand.cpp" line="98"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="55"/>
+        <location filename="../cli/SetCommand.cpp" line="99"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 寫入使用的功能碼：6 (預設) 或 16。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="55"/>
+        <location filename="../cli/SetCommand.cpp" line="99"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="64"/>
+        <location filename="../cli/SetCommand.cpp" line="108"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>錯誤：用法：set ID NAME=VALUE... (例如 set 1 spno2.accel=2.5)，或 set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="76"/>
+        <location filename="../cli/SetCommand.cpp" line="120"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>錯誤：&quot;%1&quot; 不是 NAME=VALUE 格式</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="83"/>
+        <location filename="../cli/SetCommand.cpp" line="127"/>
         <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
         <translation>錯誤：%1 重複指定 (%2=%3 與 %4)；每項設定只能指定一次；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="94"/>
-        <location filename="../cli/SetCommand.cpp" line="227"/>
+        <location filename="../cli/SetCommand.cpp" line="76"/>
+        <location filename="../cli/SetCommand.cpp" line="138"/>
+        <location filename="../cli/SetCommand.cpp" line="272"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="104"/>
+        <location filename="../cli/SetCommand.cpp" line="148"/>
         <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>%1 沒有參數 &quot;%2&quot;；請參閱 &quot;opentop-cli params --family %1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="107"/>
+        <location filename="../cli/SetCommand.cpp" line="151"/>
         <source>%1 is read-only</source>
         <translation>%1 為唯讀</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="109"/>
+        <location filename="../cli/SetCommand.cpp" line="153"/>
         <source>%1 is a %2 command; add --yes to send it</source>
         <translation>%1 是 %2 指令；加上 --yes 才會送出</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="164"/>
+        <location filename="../cli/SetCommand.cpp" line="208"/>
         <source>error: cannot read %1 to check the values; nothing written</source>
         <translation>錯誤：無法讀取 %1 以檢查數值；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="148"/>
-        <location filename="../cli/SetCommand.cpp" line="210"/>
-        <location filename="../cli/SetCommand.cpp" line="221"/>
+        <location filename="../cli/SetCommand.cpp" line="192"/>
+        <location filename="../cli/SetCommand.cpp" line="255"/>
+        <location filename="../cli/SetCommand.cpp" line="266"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="50"/>
+        <location filename="../cli/SetCommand.cpp" line="94"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
         <translation>確認會使馬達運轉、重置、清除、初始化或保存的指令，以及序列組態鎖定的設定。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="198"/>
+        <location filename="../cli/SetCommand.cpp" line="243"/>
         <source>Add --yes to set it.</source>
         <translation>加上 --yes 才會設定。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="228"/>
+        <location filename="../cli/SetCommand.cpp" line="78"/>
+        <location filename="../cli/SetCommand.cpp" line="273"/>
         <source>nothing was written</source>
         <translation>未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="251"/>
+        <location filename="../cli/SetCommand.cpp" line="301"/>
         <source>not written (interrupted)</source>
         <translation>未寫入 (已中斷)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="264"/>
+        <location filename="../cli/SetCommand.cpp" line="314"/>
         <source>next: %1</source>
         <translation>下一步：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="266"/>
+        <location filename="../cli/SetCommand.cpp" line="316"/>
         <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
         <translation>下一步：opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (出廠通訊設定)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="304"/>
+        <location filename="../cli/SetCommand.cpp" line="360"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="304"/>
+        <location filename="../cli/SetCommand.cpp" line="360"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="304"/>
-        <location filename="../cli/SetCommand.cpp" line="422"/>
+        <location filename="../cli/SetCommand.cpp" line="360"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="310"/>
-        <location filename="../cli/SetCommand.cpp" line="457"/>
+        <location filename="../cli/SetCommand.cpp" line="366"/>
         <source>written, verified</source>
         <translation>已寫入，已驗證</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="311"/>
+        <location filename="../cli/SetCommand.cpp" line="368"/>
+        <source>written, not verified: %1</source>
+        <translation>已寫入，未確認：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="369"/>
         <source>written (command, not readable)</source>
         <translation>已寫入 (指令，不可讀取)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="313"/>
+        <location filename="../cli/SetCommand.cpp" line="371"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>未確認 (%1)：驅動器可能已保有此值，也可能沒有；可用 &quot;get&quot; 回讀</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="327"/>
+        <location filename="../cli/SetCommand.cpp" line="382"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="389"/>
         <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
         <translation>注意：驅動器自下次上電起使用 %1：請將驅動器斷電再上電，然後以新設定 (--baud、--parity) 連線</translation>
     </message>
+</context>
+<context>
+    <name>opentop::SetRaw</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="342"/>
+        <location filename="../cli/SetRaw.cpp" line="30"/>
         <source>error: --fc for raw writes is 6 or 16</source>
         <translation>錯誤：raw 寫入的 --fc 為 6 或 16</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="368"/>
+        <location filename="../cli/SetRaw.cpp" line="56"/>
         <source>error: &quot;%1&quot; is not ADDR=VALUE (0x.. or decimal, 0–65535; several values, comma separated, only with --fc 16)</source>
         <translation>錯誤：&quot;%1&quot; 不是 ADDR=VALUE 格式 (0x.. 或十進位，0–65535；多個值以逗號分隔，僅限 --fc 16)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="385"/>
+        <location filename="../cli/SetRaw.cpp" line="73"/>
         <source>error: 0x%1 is not a register the profile knows; add --yes to write it anyway; nothing was written</source>
         <translation>錯誤：0x%1 不是定義檔中的暫存器；若仍要寫入請加上 --yes；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="395"/>
+        <location filename="../cli/SetRaw.cpp" line="83"/>
+        <location filename="../cli/SetRaw.cpp" line="128"/>
         <source>error: %1; nothing was written</source>
         <translation>錯誤：%1；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="396"/>
+        <location filename="../cli/SetRaw.cpp" line="84"/>
         <source>%1 is a %2 command; add --yes</source>
         <translation>%1 是 %2 指令；請加上 --yes</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="403"/>
+        <location filename="../cli/SetRaw.cpp" line="91"/>
         <source>error: the write covers part of %1; add --yes to write it anyway; nothing was written</source>
         <translation>錯誤：此寫入只涵蓋 %1 的一部分；若仍要寫入請加上 --yes；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="422"/>
+        <location filename="../cli/SetRaw.cpp" line="141"/>
         <source>Address</source>
         <translation>位址</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="422"/>
+        <location filename="../cli/SetRaw.cpp" line="141"/>
         <source>Written</source>
         <translation>寫入值</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="455"/>
+        <location filename="../cli/SetRaw.cpp" line="141"/>
+        <source>Result</source>
+        <translation>結果</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetRaw.cpp" line="174"/>
         <source>written</source>
         <translation>已寫入</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="459"/>
+        <location filename="../cli/SetRaw.cpp" line="176"/>
+        <source>written, verified</source>
+        <translation>已寫入，已驗證</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetRaw.cpp" line="178"/>
         <source>written, but reads back differently</source>
         <translation>已寫入，但回讀值不同</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="462"/>
+        <location filename="../cli/SetRaw.cpp" line="181"/>
         <source>written (not readable back: %1)</source>
         <translation>已寫入 (無法回讀：%1)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="470"/>
+        <location filename="../cli/SetRaw.cpp" line="193"/>
         <source>Also written to %1 (communication group); not read back: no parameter of the profile</source>
         <translation>也已寫入 %1 (通訊群組)；未回讀：不是定義檔中的參數</translation>
     </message>
@@ -12049,32 +12906,37 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimApp</name>
     <message>
-        <location filename="../sim/SimApp.cpp" line="110"/>
+        <location filename="../sim/SimApp.cpp" line="111"/>
+        <source>opentop-sim: %1@%2 talks %3 (its own line settings): it answers only frames sent in that format</source>
+        <translation>opentop-sim：%1@%2 使用 %3（它自己的線路設定）：只回應以該格式送出的訊框</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimApp.cpp" line="117"/>
         <source>opentop-sim: warning: %1@%2 cannot use %3 %4 and will not answer</source>
         <translation>opentop-sim：警告：%1@%2 無法使用 %3 %4，將不會回應</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="124"/>
+        <location filename="../sim/SimApp.cpp" line="131"/>
         <source>opentop-sim: --defect %1:%2: no drive with machine number %1 on the bus %3</source>
         <translation>opentop-sim：--defect %1:%2：匯流排 %3 上沒有機號 %1 的驅動器</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="131"/>
+        <location filename="../sim/SimApp.cpp" line="138"/>
         <source>opentop-sim: --defect %1 (%2@%1): %3</source>
         <translation>opentop-sim：--defect %1 (%2@%1)：%3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="169"/>
+        <location filename="../sim/SimApp.cpp" line="176"/>
         <source>the port is unplugged already</source>
         <translation>連接埠已拔除</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="171"/>
+        <location filename="../sim/SimApp.cpp" line="178"/>
         <source>unplugged</source>
         <translation>已拔除</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="204"/>
+        <location filename="../sim/SimApp.cpp" line="211"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
@@ -12125,12 +12987,12 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>模擬轉接器已拔除</translation>
     </message>
     <message>
-        <location filename="../sim/SimBackend.cpp" line="80"/>
+        <location filename="../sim/SimBackend.cpp" line="85"/>
         <source>interrupted while waiting</source>
         <translation>等待中被中斷</translation>
     </message>
     <message>
-        <location filename="../sim/SimBackend.cpp" line="87"/>
+        <location filename="../sim/SimBackend.cpp" line="92"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 內無回應</translation>
     </message>
@@ -12143,22 +13005,43 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>未知的裝置類型 &apos;%1&apos;；已知：%2</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="65"/>
+        <location filename="../sim/SimBus.cpp" line="66"/>
+        <location filename="../sim/SimBus.cpp" line="74"/>
         <source>%1@%2{%3}: %4</source>
         <translation>%1@%2{%3}：%4</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="81"/>
+        <location filename="../sim/SimBus.cpp" line="107"/>
+        <source>no device with machine number %1</source>
+        <translation>沒有機號 %1 的裝置</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimBus.cpp" line="118"/>
+        <source>baud=%1: this drive talks at %2 bit/s</source>
+        <translation>baud=%1：此驅動器的鮑率為 %2 bit/s</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimBus.cpp" line="126"/>
+        <source>format=%1: this drive offers %2 only</source>
+        <translation>format=%1：此驅動器只提供 %2</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimBus.cpp" line="132"/>
+        <source>this simulated drive has no line settings of its own</source>
+        <translation>此模擬驅動器沒有自己的線路設定</translation>
+    </message>
+    <message>
+        <location filename="../sim/SimBus.cpp" line="145"/>
         <source>machine number %1 is outside 1..247</source>
         <translation>機號 %1 超出 1..247</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="82"/>
+        <location filename="../sim/SimBus.cpp" line="146"/>
         <source>machine number %1 is used twice</source>
         <translation>機號 %1 重複使用</translation>
     </message>
     <message>
-        <location filename="../sim/SimBus.cpp" line="233"/>
+        <location filename="../sim/SimBus.cpp" line="317"/>
         <source>no device with machine number %1 (bus: %2)</source>
         <translation>沒有機號 %1 的裝置 (匯流排：%2)</translation>
     </message>
@@ -12355,32 +13238,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimDevice</name>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="241"/>
+        <location filename="../sim/SimDevice.cpp" line="248"/>
         <source>missing command</source>
         <translation>缺少指令</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="250"/>
+        <location filename="../sim/SimDevice.cpp" line="257"/>
         <source>slave %1 power cycled</source>
         <translation>從站 %1 已斷電重新上電</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="292"/>
+        <location filename="../sim/SimDevice.cpp" line="299"/>
         <source>usage: defect ID DEFECT[,DEFECT...] or defect ID clear; DEFECT: %1</source>
         <translation>用法：defect ID DEFECT[,DEFECT...] 或 defect ID clear；DEFECT：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="299"/>
+        <location filename="../sim/SimDevice.cpp" line="306"/>
         <source>slave %1 defects: %2</source>
         <translation>從站 %1 的缺陷：%2</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="301"/>
+        <location filename="../sim/SimDevice.cpp" line="308"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../sim/SimDevice.cpp" line="306"/>
+        <location filename="../sim/SimDevice.cpp" line="313"/>
         <source>&apos;%1&apos; is not supported by a %2 device</source>
         <translation>%2 裝置不支援 &apos;%1&apos;</translation>
     </message>
@@ -12393,10 +13276,15 @@ This moves or stops a motor: add --yes to send it.</source>
 Simulates Modbus RTU drives on a pseudo-terminal or as a Modbus TCP gateway.
 
   --devices SPEC     devices and machine numbers, e.g. dbu200@1,dbu400@150,dcpid@7
+                     a drive&apos;s own line settings in braces, e.g.
+                     dcpid@7{format=8E1,baud=19200}: it hears only frames sent in
+                     that format (a pty passes the client&apos;s rate and parity on)
   --pty [PATH]       serve on a pty (default); PATH: also create this symlink
   --tcp HOST:PORT    serve Modbus TCP (HOST defaults to 127.0.0.1, PORT 0: any)
-  --baud N           line speed for wire timing and device settings (19200)
-  --parity N|E|O     line parity (N)
+  --baud N           line speed for wire timing and device settings (19200); a
+                     drive hears a frame only at its own rate and parity
+  --parity N|E|O     line parity (N): the drives without settings of their own
+                     are set to --baud and --parity
   --wire-timing      delay replies as a real line at --baud would
   --turnaround MS    device turnaround with --wire-timing (2)
   --half-duplex      with --wire-timing: a request overlapping a reply on the line
@@ -12430,10 +13318,15 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 在虛擬終端機上或以 Modbus TCP 閘道器形式模擬 Modbus RTU 驅動器。
 
   --devices SPEC     裝置與機號，例如 dbu200@1,dbu400@150,dcpid@7
+                     驅動器自己的線路設定寫在大括號內，例如
+                     dcpid@7{format=8E1,baud=19200}：只接收以該格式送出的
+                     訊框（pty 會傳遞用戶端的速率與同位元）
   --pty [PATH]       在 pty 上提供服務 (預設)；PATH：同時建立此符號連結
   --tcp HOST:PORT    提供 Modbus TCP 服務 (HOST 預設為 127.0.0.1，PORT 0：任意)
-  --baud N           用於線路時序與裝置設定的鮑率 (19200)
-  --parity N|E|O     線路同位元 (N)
+  --baud N           用於線路時序與裝置設定的鮑率 (19200)；驅動器只接收
+                     自己速率與同位元的訊框
+  --parity N|E|O     線路同位元 (N)：沒有自己設定的驅動器
+                     設為 --baud 與 --parity
   --wire-timing      依實際線路在 --baud 下的速度延遲回應
   --turnaround MS    搭配 --wire-timing 的裝置回轉時間 (2)
   --half-duplex      搭配 --wire-timing：請求與線路上的回應重疊時
@@ -12465,82 +13358,82 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 </translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="87"/>
+        <location filename="../sim/SimOptions.cpp" line="92"/>
         <source>--lang needs a language code such as ko</source>
         <translation>--lang 需要語言代碼，例如 ko</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="90"/>
+        <location filename="../sim/SimOptions.cpp" line="95"/>
         <source>--devices needs a device list such as dbu200@1,dcpid@7</source>
         <translation>--devices 需要裝置清單，例如 dbu200@1,dcpid@7</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="99"/>
+        <location filename="../sim/SimOptions.cpp" line="104"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:5020</source>
         <translation>--tcp 需要 HOST:PORT，例如 127.0.0.1:5020</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="105"/>
+        <location filename="../sim/SimOptions.cpp" line="110"/>
         <source>--tcp needs HOST:PORT with PORT 0..65535, got &apos;%1&apos;</source>
         <translation>--tcp 需要 HOST:PORT，PORT 為 0..65535，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="117"/>
+        <location filename="../sim/SimOptions.cpp" line="122"/>
         <source>--baud must be one of %1, got &apos;%2&apos;</source>
         <translation>--baud 必須是 %1 其中之一，收到 &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="124"/>
+        <location filename="../sim/SimOptions.cpp" line="129"/>
         <source>--parity must be N, E or O, got &apos;%1&apos;</source>
         <translation>--parity 必須為 N、E 或 O，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="134"/>
+        <location filename="../sim/SimOptions.cpp" line="139"/>
         <source>--turnaround must be 0..1000 ms, got &apos;%1&apos;</source>
         <translation>--turnaround 必須為 0..1000 ms，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="138"/>
+        <location filename="../sim/SimOptions.cpp" line="143"/>
         <source>--faults needs a list such as drop=0.02,crc=0.01</source>
         <translation>--faults 需要清單，例如 drop=0.02,crc=0.01</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="142"/>
+        <location filename="../sim/SimOptions.cpp" line="147"/>
         <source>--faults: %1</source>
         <translation>--faults：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="148"/>
+        <location filename="../sim/SimOptions.cpp" line="153"/>
         <source>--seed must be a whole number 0..4294967295, got &apos;%1&apos;</source>
         <translation>--seed 必須是 0..4294967295 的整數，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="152"/>
+        <location filename="../sim/SimOptions.cpp" line="157"/>
         <source>--defect needs ID:DEFECT[,DEFECT...], e.g. 3:firmware=1.4; DEFECT: %1</source>
         <translation>--defect 需要 ID:DEFECT[,DEFECT...]，例如 3:firmware=1.4；DEFECT：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="159"/>
+        <location filename="../sim/SimOptions.cpp" line="164"/>
         <source>--defect: %1</source>
         <translation>--defect：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="163"/>
+        <location filename="../sim/SimOptions.cpp" line="168"/>
         <source>--motor needs a list such as inertia=2e-4,load=0.05</source>
         <translation>--motor 需要清單，例如 inertia=2e-4,load=0.05</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="167"/>
+        <location filename="../sim/SimOptions.cpp" line="172"/>
         <source>--motor: %1</source>
         <translation>--motor：%1</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="172"/>
+        <location filename="../sim/SimOptions.cpp" line="177"/>
         <source>unknown argument &apos;%1&apos;; options: --devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</source>
         <translation>未知引數 &apos;%1&apos;；選項：--devices, --pty, --tcp, --baud, --parity, --wire-timing, --half-duplex, --turnaround, --faults, --seed, --defect, --motor, --quiet, --help, --version</translation>
     </message>
     <message>
-        <location filename="../sim/SimOptions.cpp" line="181"/>
+        <location filename="../sim/SimOptions.cpp" line="186"/>
         <source>--devices SPEC is required, e.g. --devices dbu200@1,dcpid@7</source>
         <translation>必須指定 --devices SPEC，例如 --devices dbu200@1,dcpid@7</translation>
     </message>
@@ -12790,62 +13683,62 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>%1 的通訊群組</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="158"/>
+        <location filename="../model/run/StartPreview.cpp" line="177"/>
         <source>It runs with running data SPno%1</source>
         <translation>將以運轉資料 SPno%1 運轉</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="160"/>
+        <location filename="../model/run/StartPreview.cpp" line="179"/>
         <source> at %1</source>
         <translation> (速度 %1)</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="163"/>
+        <location filename="../model/run/StartPreview.cpp" line="182"/>
         <source>, direction %1 (the direction command sent since)</source>
         <translation>，方向 %1 (依之後送出的方向指令)</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="164"/>
+        <location filename="../model/run/StartPreview.cpp" line="183"/>
         <source>, direction %1</source>
         <translation>，方向 %1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="167"/>
+        <location filename="../model/run/StartPreview.cpp" line="186"/>
         <source>Which running data it runs with could not be read.</source>
         <translation>無法讀取將以哪一組運轉資料運轉。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="170"/>
+        <location filename="../model/run/StartPreview.cpp" line="189"/>
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="172"/>
+        <location filename="../model/run/StartPreview.cpp" line="191"/>
         <source>The start also reaches machine number(s) %1: %2.</source>
         <translation>啟動指令也會送達機號 %1：%2。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="175"/>
+        <location filename="../model/run/StartPreview.cpp" line="195"/>
         <source>Not read: %1.</source>
         <translation>未讀取：%1。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="187"/>
+        <location filename="../model/run/StartPreview.cpp" line="207"/>
         <source>This starts the motor of machine number %1.</source>
         <translation>這會啟動機號 %1 的馬達。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="189"/>
+        <location filename="../model/run/StartPreview.cpp" line="209"/>
         <source>This sets the speed command of machine number %1 to %2: its motor runs.</source>
         <translation>這會將機號 %1 的速度指令設為 %2：其馬達將運轉。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="193"/>
+        <location filename="../model/run/StartPreview.cpp" line="213"/>
         <source>Make sure that nobody is near the machine and that it may move. STOP ALL stops every drive at any time.</source>
         <translation>請確認機台附近沒有人員，且機台可以動作。「全部停止」可隨時停止所有驅動器。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="196"/>
+        <location filename="../model/run/StartPreview.cpp" line="216"/>
         <source>You are asked once per drive while the program runs.</source>
         <translation>程式執行期間，每台驅動器只會詢問一次。</translation>
     </message>
@@ -13163,102 +14056,82 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>機號 %1 尚未識別為已知系列的驅動器；試運轉需要已識別的驅動器。</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="111"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="120"/>
         <source>&amp;Start</source>
         <translation>啟動(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="111"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="120"/>
         <source>S&amp;top</source>
         <translation>停止(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="112"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="121"/>
         <source>&amp;CW</source>
         <translation>CW(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="112"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="121"/>
         <source>CC&amp;W</source>
         <translation>CCW(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="113"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="122"/>
         <source>&amp;Hold</source>
         <translation>保持(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="113"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="122"/>
         <source>&amp;Free</source>
         <translation>釋放(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="132"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="141"/>
         <source>Se&amp;lect running data</source>
         <translation>選擇運轉資料(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="143"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="152"/>
         <source>Return to &amp;I/O priority</source>
         <translation>恢復為 I/O 優先(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="145"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="154"/>
         <source>Give run, stop, direction and speed selection back to the drive&apos;s input terminals</source>
         <translation>將運轉、停止、方向與速度選擇交還給驅動器的輸入端子</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="191"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="200"/>
         <source>Cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>無法讀取 %1 以確認驅動器是否接受運轉指令：%2</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="227"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="236"/>
         <source>Reading what the start will run…</source>
         <translation>正在讀取啟動後的運轉內容…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="243"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="252"/>
         <source>Start the motor</source>
         <translation>啟動馬達</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="257"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="266"/>
         <source>Sending %1…</source>
         <translation>正在送出 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="293"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="295"/>
+        <source>Not every drive of its communication group runs: see below.</source>
+        <translation>通訊群組中並非所有驅動器都在運轉：請見下方。</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/TestRunPanel.cpp" line="313"/>
         <source>Sent: %1</source>
         <translation>已送出：%1</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="308"/>
-        <source>Read back after the command at %1:</source>
-        <translation>%1 指令後回讀：</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="311"/>
-        <source>The motor is running.</source>
-        <translation>馬達運轉中。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="311"/>
-        <source>The motor is stopped.</source>
-        <translation>馬達已停止。</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="313"/>
-        <source>%1: %2</source>
-        <translation>%1：%2</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="315"/>
-        <source>(not read: %1)</source>
-        <translation>(未讀取：%1)</translation>
-    </message>
-    <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="379"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="382"/>
         <source>Polling is paused: the controller brakes the motor %1 s after the last frame it receives (%2). Resume polling to keep the motor running.</source>
         <translation>輪詢已暫停：控制器會在收到最後一個訊框 %1 s 後煞車停止馬達 (%2)。請恢復輪詢以保持馬達運轉。</translation>
     </message>
@@ -13528,32 +14401,37 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>不支援 RS-485 模式 %1：請使用 off、auto、kernel 或 rts。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="50"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="52"/>
+        <source>Line format of machine number %1: %2 Use machine numbers 1–247.</source>
+        <translation>機號 %1 的通訊格式：%2 請使用機號 1–247。</translation>
+    </message>
+    <message>
+        <location filename="../transport/ConnectionSettings.cpp" line="60"/>
         <source>RTS delay %1 µs is not allowed: use 0–%2 µs (0: the driver&apos;s or libmodbus&apos; own).</source>
         <translation>不允許 RTS 延遲 %1 µs：請使用 0–%2 µs (0：使用驅動程式或 libmodbus 本身的延遲)。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="59"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="69"/>
         <source>No host given: enter the gateway&apos;s address, e.g. 192.168.1.10.</source>
         <translation>未指定主機：請輸入閘道器位址，例如 192.168.1.10。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="63"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="73"/>
         <source>TCP port %1 is not allowed: use 1–65535 (Modbus TCP uses 502).</source>
         <translation>不允許 TCP 連接埠 %1：請使用 1–65535 (Modbus TCP 使用 502)。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="70"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="80"/>
         <source>No simulated devices given: use a list such as dbu200@1,dcpid@7.</source>
         <translation>未指定模擬裝置：請使用清單，例如 dbu200@1,dcpid@7。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="76"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="86"/>
         <source>Timeout %1 ms is not allowed: use 10–10000 ms.</source>
         <translation>不允許逾時 %1 ms：請使用 10–10000 ms。</translation>
     </message>
     <message>
-        <location filename="../transport/ConnectionSettings.cpp" line="80"/>
+        <location filename="../transport/ConnectionSettings.cpp" line="90"/>
         <source>%1 retries are not allowed: use 0–10.</source>
         <translation>不允許重試 %1 次：請使用 0–10。</translation>
     </message>
@@ -13603,70 +14481,80 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="129"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="325"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="131"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
         <source>%1 is not open</source>
         <translation>%1 未開啟</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="151"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="169"/>
         <source>send failed</source>
         <translation>傳送失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="177"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="195"/>
         <source>interrupted while waiting</source>
         <translation>等待中被中斷</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="181"/>
-        <location filename="../transport/MockBackend.cpp" line="100"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="199"/>
+        <location filename="../transport/MockBackend.cpp" line="101"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 內無回應</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="211"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="232"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>之後又收到另一個回應：此回應可能是對先前請求的回應</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="307"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="267"/>
+        <source>a drive&apos;s own line format needs a serial port; a Modbus TCP gateway sets its line itself</source>
+        <translation>驅動器自己的通訊格式需要序列埠；Modbus TCP 閘道器自行設定它的線路</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="283"/>
+        <source>cannot switch the line to %1: %2</source>
+        <translation>無法把線路切換到 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="356"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>回應來自從站 %1，預期為 %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="318"/>
-        <location filename="../transport/RtuBackend.cpp" line="160"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="367"/>
+        <location filename="../transport/RtuBackend.cpp" line="158"/>
         <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>回應不完整</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="323"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="372"/>
         <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 不符</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="330"/>
-        <location filename="../transport/RtuBackend.cpp" line="167"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="379"/>
+        <location filename="../transport/RtuBackend.cpp" line="165"/>
         <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>接收失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="404"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="453"/>
         <source> (connection closed)</source>
         <translation> (連線已關閉)</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="426"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="475"/>
         <source>stale bytes discarded before sending</source>
         <translation>傳送前已捨棄殘留位元組</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="510"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="559"/>
         <source>late bytes discarded after an error</source>
         <translation>錯誤後已捨棄延遲到達的位元組</translation>
     </message>
@@ -13691,18 +14579,18 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>回傳 %1 ×%2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="201"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="220"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="214"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="233"/>
         <source>cancelled before sending</source>
         <translation>傳送前已取消</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="254"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="273"/>
         <source>cannot open %1</source>
         <translation>無法開啟 %1</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="301"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="315"/>
         <source>client closed</source>
         <translation>用戶端已關閉</translation>
     </message>
@@ -13727,72 +14615,72 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>不允許重試 %1 次：請使用 0–10，或以 -1 使用預設值。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="164"/>
+        <location filename="../transport/ModbusRequest.cpp" line="169"/>
         <source>Function 0x%1 cannot be broadcast: only functions 06h and 10h (writes) may be sent to machine number 0; use slave address 1–247.</source>
         <translation>功能碼 0x%1 無法廣播：只有功能碼 06h 與 10h (寫入) 可送往機號 0；請使用從站位址 1–247。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="171"/>
+        <location filename="../transport/ModbusRequest.cpp" line="176"/>
         <source>Function code 0x%1 must be sent as a raw request.</source>
         <translation>功能碼 0x%1 必須以原始請求送出。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="175"/>
+        <location filename="../transport/ModbusRequest.cpp" line="180"/>
         <source>Raw request data of %1 bytes is too long: at most %2 bytes.</source>
         <translation>原始請求資料 %1 位元組過長：最多 %2 位元組。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="188"/>
+        <location filename="../transport/ModbusRequest.cpp" line="193"/>
         <source>Cannot read %1 registers at once: use 1–125 registers.</source>
         <translation>無法一次讀取 %1 個暫存器：請使用 1–125 個暫存器。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="195"/>
+        <location filename="../transport/ModbusRequest.cpp" line="200"/>
         <source>Write single register needs exactly 1 value, not %1.</source>
         <translation>寫入單一暫存器需要恰好 1 個值，而非 %1 個。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="201"/>
+        <location filename="../transport/ModbusRequest.cpp" line="206"/>
         <source>Cannot write %1 registers at once: use 1–123 registers.</source>
         <translation>無法一次寫入 %1 個暫存器：請使用 1–123 個暫存器。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="206"/>
+        <location filename="../transport/ModbusRequest.cpp" line="211"/>
         <source>%1 values given for %2 registers.</source>
         <translation>為 %2 個暫存器指定了 %1 個值。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="215"/>
+        <location filename="../transport/ModbusRequest.cpp" line="220"/>
         <source>Registers %1 ×%2 run past the last address 0xFFFF.</source>
         <translation>暫存器 %1 ×%2 超出最後位址 0xFFFF。</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="226"/>
+        <location filename="../transport/ModbusRequest.cpp" line="231"/>
         <source>device identification code %1 object %2</source>
         <translation>裝置識別 代碼 %1 物件 %2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="234"/>
+        <location filename="../transport/ModbusRequest.cpp" line="239"/>
         <source>raw %1 %2</source>
         <translation>原始 %1 %2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="238"/>
+        <location filename="../transport/ModbusRequest.cpp" line="243"/>
         <source>read %1 %2 ×%3</source>
         <translation>讀取 %1 %2 ×%3</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="242"/>
+        <location filename="../transport/ModbusRequest.cpp" line="247"/>
         <source>write %1 %2 = %3</source>
         <translation>寫入 %1 %2 = %3</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="245"/>
+        <location filename="../transport/ModbusRequest.cpp" line="250"/>
         <source>write %1 %2 ×%3 = %4</source>
         <translation>寫入 %1 %2 ×%3 = %4</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusRequest.cpp" line="251"/>
+        <location filename="../transport/ModbusRequest.cpp" line="256"/>
         <source>broadcast %1</source>
         <translation>廣播 %1</translation>
     </message>
@@ -13947,7 +14835,7 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>%1 正被 %2 (PID %3) 使用；請先關閉該程式。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="97"/>
+        <location filename="../transport/RtuBackend.cpp" line="95"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -13956,17 +14844,17 @@ then log out and in again (the group applies to new sessions only).</source>
 然後登出再重新登入 (群組設定僅對新的登入工作階段生效)。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="103"/>
+        <location filename="../transport/RtuBackend.cpp" line="101"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> (裝置可能不支援此同位元；pty 需使用 N)</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="138"/>
+        <location filename="../transport/RtuBackend.cpp" line="136"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>回應宣告 %1 位元組，超過 RTU 訊框的容量</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="159"/>
+        <location filename="../transport/RtuBackend.cpp" line="157"/>
         <source>no reply</source>
         <translation>無回應</translation>
     </message>
@@ -14191,21 +15079,26 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>轉接器會將收到的位元組保留最多 %1 ms 才轉交 (%2)。解決方法：%3。</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineSetup.cpp" line="106"/>
+        <location filename="../transport/SerialLineSetup.cpp" line="107"/>
         <source>the driver left it off</source>
         <translation>驅動程式仍維持關閉</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineSetup.cpp" line="176"/>
+        <source>the port does not take %1</source>
+        <translation>連接埠不接受 %1</translation>
     </message>
 </context>
 <context>
     <name>opentop::TrendAxes</name>
     <message>
-        <location filename="../ui/trends/TrendAxes.cpp" line="40"/>
-        <location filename="../ui/trends/TrendAxes.cpp" line="46"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="51"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="52"/>
         <source>%1 [%2]</source>
         <translation>%1 [%2]</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendAxes.cpp" line="45"/>
+        <location filename="../ui/trends/TrendAxes.cpp" line="49"/>
         <source>[%1]</source>
         <translation>[%1]</translation>
     </message>
@@ -14213,22 +15106,23 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendChart</name>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="45"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="32"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="58"/>
         <source>Time (hh:mm:ss)</source>
         <translation>時間 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="88"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="105"/>
         <source>Drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="279"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="296"/>
         <source>There is no trend data to export yet.</source>
         <translation>尚無可匯出的趨勢資料。</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="292"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="309"/>
         <source>Cannot write the picture %1.</source>
         <translation>無法寫入圖片 %1。</translation>
     </message>
@@ -14411,228 +15305,278 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuneCommand</name>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="80"/>
+        <location filename="../cli/TuneCommand.cpp" line="81"/>
         <source>Speed-loop step test and relay autotune of a DC controller (needs --yes)</source>
         <translation>DC 控制器的速度迴路步階測試與繼電器自動調諧 (需要 --yes)</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="86"/>
+        <location filename="../cli/TuneCommand.cpp" line="87"/>
         <source>Run the test (it moves the motor).</source>
         <translation>執行測試 (會使馬達運轉)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="87"/>
+        <location filename="../cli/TuneCommand.cpp" line="88"/>
         <source>step: speed before the step (default 0).</source>
         <translation>step：步階前的速度 (預設 0)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="87"/>
         <location filename="../cli/TuneCommand.cpp" line="88"/>
-        <location filename="../cli/TuneCommand.cpp" line="91"/>
-        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <location filename="../cli/TuneCommand.cpp" line="89"/>
+        <location filename="../cli/TuneCommand.cpp" line="92"/>
+        <location filename="../cli/TuneCommand.cpp" line="106"/>
         <source>SPEED</source>
         <translation>SPEED</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="88"/>
+        <location filename="../cli/TuneCommand.cpp" line="89"/>
         <source>step: speed after the step.</source>
         <translation>step：步階後的速度。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="89"/>
+        <location filename="../cli/TuneCommand.cpp" line="90"/>
         <source>step: record this long after the step (default 1500).</source>
         <translation>step：步階後記錄的時間長度 (預設 1500)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="90"/>
+        <location filename="../cli/TuneCommand.cpp" line="91"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="91"/>
+        <location filename="../cli/TuneCommand.cpp" line="92"/>
         <source>autotune: operating speed of the relay test.</source>
         <translation>autotune：繼電器測試的運轉速度。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="92"/>
+        <location filename="../cli/TuneCommand.cpp" line="93"/>
         <source>autotune: output swing, % of full output (default 10).</source>
         <translation>autotune：輸出擺幅，以滿輸出的 % 表示 (預設 10)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="93"/>
+        <location filename="../cli/TuneCommand.cpp" line="94"/>
         <source>PERCENT</source>
         <translation>PERCENT</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="95"/>
+        <location filename="../cli/TuneCommand.cpp" line="96"/>
         <source>autotune: soft, medium (default), stiff, tyreus-luyben or zn-pi.</source>
         <translation>autotune：soft、medium (預設)、stiff、tyreus-luyben 或 zn-pi。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="95"/>
+        <location filename="../cli/TuneCommand.cpp" line="96"/>
         <source>RULE</source>
         <translation>RULE</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="96"/>
+        <location filename="../cli/TuneCommand.cpp" line="97"/>
         <source>autotune: write the proposed gains, then run a step test from half the operating speed to it.</source>
         <translation>autotune：寫入建議增益，然後執行從運轉速度的一半到運轉速度的步階測試。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="98"/>
-        <source>autotune: with --accept, store the gains in the drive.</source>
-        <translation>autotune：搭配 --accept 時，將增益保存至驅動器。</translation>
+        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <source>autotune: with --accept, store the gains in the drive if the step measured with them passes the check.</source>
+        <translation>autotune：搭配 --accept 時，若以此增益量測的步階通過檢查，便將增益保存至驅動器。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <source>autotune: with --accept, keep (and with --store, store) gains whose measured step failed the check; without it they are written back to what the drive had.</source>
+        <translation>autotune：搭配 --accept 時，即使量測的步階未通過檢查仍保留增益 (搭配 --store 則保存)；不指定時會寫回驅動器原本的增益。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="106"/>
         <source>Stop at once beyond this speed (default 120 % of the test&apos;s highest).</source>
         <translation>速度超過此值時立即停止 (預設為測試最高速度的 120 %)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="101"/>
+        <location filename="../cli/TuneCommand.cpp" line="107"/>
         <source>Stop at once beyond this current in A (default 20).</source>
         <translation>電流超過此值 (A) 時立即停止 (預設 20)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="102"/>
+        <location filename="../cli/TuneCommand.cpp" line="108"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <location filename="../cli/TuneCommand.cpp" line="109"/>
         <source>Write the samples to FILE.</source>
         <translation>將取樣資料寫入 FILE。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <location filename="../cli/TuneCommand.cpp" line="109"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="117"/>
+        <location filename="../cli/TuneCommand.cpp" line="123"/>
         <source>error: usage: %1</source>
         <translation>錯誤：用法：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="127"/>
+        <location filename="../cli/TuneCommand.cpp" line="133"/>
         <source>error: --%1 must be a number 0 or more, got &apos;%2&apos;</source>
         <translation>錯誤：--%1 必須是 0 以上的數字，收到 &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="149"/>
-        <location filename="../cli/TuneCommand.cpp" line="160"/>
-        <location filename="../cli/TuneCommand.cpp" line="165"/>
-        <location filename="../cli/TuneCommand.cpp" line="319"/>
+        <location filename="../cli/TuneCommand.cpp" line="155"/>
+        <location filename="../cli/TuneCommand.cpp" line="166"/>
+        <location filename="../cli/TuneCommand.cpp" line="171"/>
+        <location filename="../cli/TuneCommand.cpp" line="374"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="150"/>
+        <location filename="../cli/TuneCommand.cpp" line="156"/>
         <source>step needs --to SPEED</source>
         <translation>step 需要 --to SPEED</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="151"/>
+        <location filename="../cli/TuneCommand.cpp" line="157"/>
         <source>--rule must be one of %1</source>
         <translation>--rule 必須是 %1 其中之一</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="153"/>
+        <location filename="../cli/TuneCommand.cpp" line="159"/>
         <source>autotune needs --speed SPEED</source>
         <translation>autotune 需要 --speed SPEED</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="169"/>
+        <location filename="../cli/TuneCommand.cpp" line="175"/>
         <source>Would run the motor of machine number %1 from %2 to %3 and record the step response.</source>
         <translation>將使機號 %1 的馬達從 %2 運轉到 %3，並記錄步階響應。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="174"/>
+        <location filename="../cli/TuneCommand.cpp" line="180"/>
         <source>Would run the motor of machine number %1 in a relay test around %2 (output ±%3 %).</source>
         <translation>將使機號 %1 的馬達在 %2 附近進行繼電器測試 (輸出 ±%3 %)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="180"/>
+        <location filename="../cli/TuneCommand.cpp" line="186"/>
         <source>This moves the motor: add --yes to run it.</source>
         <translation>此操作會使馬達運轉：加上 --yes 才會執行。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="229"/>
+        <location filename="../cli/TuneCommand.cpp" line="235"/>
         <source>Machine number %1, gains %2</source>
         <translation>機號 %1，增益 %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="231"/>
+        <location filename="../cli/TuneCommand.cpp" line="237"/>
         <source>  rise time (10–90 %): %1</source>
         <translation>  上升時間 (10–90 %)：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="232"/>
+        <location filename="../cli/TuneCommand.cpp" line="238"/>
         <source>  overshoot: %1 %</source>
         <translation>  超調：%1 %</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="233"/>
+        <location filename="../cli/TuneCommand.cpp" line="239"/>
         <source>  settling time (2 %): %1</source>
         <translation>  安定時間 (2 %)：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="234"/>
+        <location filename="../cli/TuneCommand.cpp" line="240"/>
         <source>  steady-state error: %1 %2</source>
         <translation>  穩態誤差：%1 %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="235"/>
+        <location filename="../cli/TuneCommand.cpp" line="241"/>
         <source>  peak current: %1 A</source>
         <translation>  峰值電流：%1 A</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="249"/>
+        <location filename="../cli/TuneCommand.cpp" line="267"/>
         <source>Step %1 → %2 %3:</source>
         <translation>步階 %1 → %2 %3：</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="253"/>
-        <source>Relay test: Ku %1, Tu %2 ms (amplitude ±%3 %4, %5 cycles)</source>
-        <translation>繼電器測試：Ku %1，Tu %2 ms (振幅 ±%3 %4，%5 個週期)</translation>
+        <location filename="../cli/TuneCommand.cpp" line="272"/>
+        <source>Relay test: Ku %1, Tu %2 ms measured (amplitude ±%3 %4, %5 cycles, %6 readings per period, one every %7 ms)</source>
+        <translation>繼電器測試：Ku %1，實測 Tu %2 ms (振幅 ±%3 %4，%5 個週期，每週期讀取 %6 次，每 %7 ms 一次)</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="259"/>
+        <location filename="../cli/TuneCommand.cpp" line="364"/>
+        <source>What to change: %1</source>
+        <translation>應變更的項目：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="281"/>
         <source>Model: gain %1, time constant %2 ms, dead time %3 ms (the bus&apos;s %4 ms left out)</source>
         <translation>模型：增益 %1，時間常數 %2 ms，延遲時間 %3 ms (已扣除匯流排的 %4 ms)</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="265"/>
+        <location filename="../cli/TuneCommand.cpp" line="287"/>
+        <source>The drive&apos;s own loop on the model: Ku %1, Tu %2 ms</source>
+        <translation>模型上驅動器本身的迴路：Ku %1，Tu %2 ms</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="290"/>
         <source>Proposed (%1): %2</source>
         <translation>建議值 (%1)：%2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="281"/>
+        <location filename="../cli/TuneCommand.cpp" line="291"/>
+        <source>  the rule&apos;s P × %1, Ti × %2; predicted step %3 → %4 %5: overshoot %6 %, settling time %7</source>
+        <translation>  規則的 P × %1，Ti × %2；預測步階 %3 → %4 %5：超調 %6 %，安定時間 %7</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="307"/>
         <source>Writing the proposed gains failed: %1</source>
         <translation>寫入建議增益失敗：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="284"/>
+        <location filename="../cli/TuneCommand.cpp" line="310"/>
         <source>Proposed gains written (not stored).</source>
         <translation>已寫入建議增益 (未保存)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="287"/>
+        <location filename="../cli/TuneCommand.cpp" line="313"/>
         <source>Measured step %1 → %2 %3 with them:</source>
         <translation>以此增益量測的步階 %1 → %2 %3：</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="303"/>
+        <location filename="../cli/TuneCommand.cpp" line="321"/>
+        <source>interrupted</source>
+        <translation>已中斷</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="324"/>
+        <source>Check after Accept: passed. %1</source>
+        <translation>接受後的檢查：通過。%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="325"/>
+        <source>Check after Accept: FAILED. %1</source>
+        <translation>接受後的檢查：未通過。%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="334"/>
+        <source>The gains before were written back (%1); nothing was stored. --override-check keeps the proposal (and with --store stores it) all the same.</source>
+        <translation>已寫回原先的增益 (%1)；未保存任何內容。加上 --override-check 仍會保留建議值 (搭配 --store 則保存)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="338"/>
+        <source>Writing back the gains before failed: %1; the proposal is still in the drive (not stored).</source>
+        <translation>寫回原先的增益失敗：%1；建議值仍在驅動器中 (未保存)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="345"/>
+        <source>Storing although the check failed (--override-check).</source>
+        <translation>檢查未通過，仍予保存 (--override-check)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/TuneCommand.cpp" line="354"/>
         <source>Gains stored in the drive.</source>
         <translation>增益已保存至驅動器。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="304"/>
+        <location filename="../cli/TuneCommand.cpp" line="355"/>
         <source>Storing the gains failed: %1</source>
         <translation>保存增益失敗：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="311"/>
+        <location filename="../cli/TuneCommand.cpp" line="362"/>
         <source>Test ended: %1</source>
         <translation>測試已結束：%1</translation>
     </message>
@@ -14640,24 +15584,31 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningChart</name>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="40"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="41"/>
         <source>Time (ms)</source>
         <translation>時間 (ms)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="44"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="45"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="83"/>
         <source>Current (A)</source>
         <translation>電流 (A)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="65"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="81"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningChart.cpp" line="65"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="81"/>
         <source>Speed (%1)</source>
         <translation>速度 (%1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningChart.cpp" line="82"/>
+        <location filename="../ui/tuning/TuningChart.cpp" line="83"/>
+        <source>(%1)</source>
+        <translation>(%1)</translation>
     </message>
 </context>
 <context>
@@ -14824,163 +15775,153 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningPage</name>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="41"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="43"/>
         <source>STOP</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="52"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="55"/>
         <source>Cancels the running test: the motor is stopped and the stop confirmed</source>
         <translation>取消進行中的測試：停止馬達並確認已停止</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="68"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="245"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="71"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="269"/>
         <source>Step test</source>
         <translation>步階測試</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="69"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="72"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="289"/>
         <source>Relay autotune</source>
         <translation>繼電器自動調諧</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="107"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="131"/>
         <source>Ready. Nothing moves until you confirm a test.</source>
         <translation>就緒。確認測試之前，馬達不會運轉。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="198"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="222"/>
         <source>Could not read the speed mode: %1</source>
         <translation>無法讀取速度模式：%1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="201"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="225"/>
         <source>The drive is not in a closed-loop speed mode (now: %1). Choose one on its settings page first.</source>
         <translation>驅動器不在閉迴路速度模式 (目前：%1)。請先在其設定頁面中選擇閉迴路模式。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="224"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="248"/>
         <source>Limits: %1 %2, %3.</source>
         <translation>限值：%1 %2，%3。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="226"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="250"/>
         <source>%1 A</source>
         <translation>%1 A</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="226"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="250"/>
         <source>no current limit</source>
         <translation>無電流限值</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="241"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
         <source>The motor of %1 will run from %2 to %3 %4 in its present speed mode, for about %5 s, and then stop.</source>
         <translation>%1 的馬達將以目前的速度模式從 %2 運轉到 %3 %4，持續約 %5 s，然後停止。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="245"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="269"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="289"/>
         <source>Run</source>
         <translation>執行</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="261"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="285"/>
         <source>The motor of %1 will run in open loop (the speed loop off) around %2 %3, its output switching by ±%4 %, for up to %5 s, and then stop.</source>
         <translation>%1 的馬達將以開迴路 (速度迴路關閉) 在 %2 %3 附近運轉，輸出以 ±%4 % 切換，最長 %5 s，然後停止。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="283"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="307"/>
         <source>Stop command sent.</source>
         <translation>已送出停止指令。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="284"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="308"/>
         <source>Stop command failed: %1</source>
         <translation>停止指令失敗：%1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="294"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="318"/>
         <source>Stopping…</source>
         <translation>正在停止…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="308"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="332"/>
         <source>Run %1: %2 → %3 %4</source>
         <translation>測試 %1：%2 → %3 %4</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="343"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="367"/>
         <source>Step test done.</source>
         <translation>步階測試完成。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="343"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="367"/>
         <source>Step test ended: %1</source>
         <translation>步階測試已結束：%1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="347"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="372"/>
         <source>The test was stopped</source>
         <translation>測試已停止</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="380"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="403"/>
         <source>Autotune ended: %1</source>
         <translation>自動調諧已結束：%1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="382"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="405"/>
         <source>The autotune was stopped</source>
         <translation>自動調諧已停止</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="392"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="415"/>
         <source>Predicted: %1 → %2 %3</source>
         <translation>預測：%1 → %2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="400"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="423"/>
         <source>Autotune done: proposal %1. Accept writes it to the drive.</source>
         <translation>自動調諧完成：建議值 %1。接受後即寫入驅動器。</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="434"/>
-        <source>Proposal rejected; the drive&apos;s gains were not changed.</source>
-        <translation>已拒絕建議值；驅動器的增益未變更。</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="438"/>
-        <source>Proposal rejected</source>
-        <translation>已拒絕建議值</translation>
     </message>
 </context>
 <context>
     <name>opentop::TuningRules</name>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="60"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="61"/>
         <source>Soft (no overshoot)</source>
         <translation>柔和 (無超調)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="62"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="63"/>
         <source>Medium (some overshoot)</source>
         <translation>適中 (少量超調)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="64"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="65"/>
         <source>Stiff (Ziegler–Nichols)</source>
         <translation>高剛性 (Ziegler–Nichols)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="66"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="67"/>
         <source>Tyreus–Luyben (robust)</source>
         <translation>Tyreus–Luyben (強健)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRules.cpp" line="68"/>
+        <location filename="../model/tuning/TuningRules.cpp" line="69"/>
         <source>PI only (Ziegler–Nichols)</source>
         <translation>僅 PI (Ziegler–Nichols)</translation>
     </message>
@@ -15019,129 +15960,134 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningRunner</name>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="190"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="205"/>
         <source>a tuning test is already running</source>
         <translation>已有調諧測試正在進行</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="198"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="214"/>
         <source>Reading the drive&apos;s settings</source>
         <translation>正在讀取驅動器設定</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="206"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="223"/>
         <source>could not read the drive&apos;s settings: %1</source>
         <translation>無法讀取驅動器設定：%1</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="231"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="250"/>
         <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
         <translation>驅動器不在閉迴路速度模式：請先將 %1 (%2) 設為 %3</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="233"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="252"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="248"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="267"/>
         <source>Setting the communication-loss braking time to %1 s</source>
         <translation>正在將通訊中斷停止時間設為 %1 s</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="272"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="291"/>
         <source>the drive stopped answering: %1</source>
         <translation>驅動器停止回應：%1</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="290"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="316"/>
         <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
         <translation>速度 %1 %2 超過測試限值 %3 %2：已立即停止</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="297"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="323"/>
         <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
         <translation>電流 %1 A 超過測試限值 %2 A：已立即停止</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="303"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="329"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="364"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="391"/>
         <source>Stopping the motor</source>
         <translation>正在停止馬達</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="370"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="396"/>
         <source>motor stopped (confirmed)</source>
         <translation>馬達已停止 (已確認)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="371"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="397"/>
         <source>the motor could not be confirmed stopped: check it</source>
         <translation>無法確認馬達已停止：請檢查馬達</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="406"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="435"/>
         <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
         <translation>步階測試是從一個速度正轉到另一個速度：起始與目標速度必須不同，且須為 0 以上</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="413"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="442"/>
         <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
         <translation>%1 %2 超過測試的速度限值 %3 %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="421"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="450"/>
         <source>Running to %1 %2</source>
         <translation>正在運轉至 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="457"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="486"/>
         <source>Step to %1 %2</source>
         <translation>步階至 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="484"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="513"/>
         <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
         <translation>運轉速度必須大於 0 且小於測試的速度限值 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="491"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="520"/>
         <source>the relay amplitude must be 0–50 % of full output</source>
         <translation>繼電器振幅必須為最大輸出的 0–50 %</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="494"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="523"/>
         <source>Open loop: finding the output for %1 %2</source>
         <translation>開迴路：正在尋找 %1 %2 所需的輸出</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="542"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="581"/>
         <source>the motor did not turn at %1 % output</source>
         <translation>輸出 %1 % 時馬達未轉動</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="578"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="617"/>
         <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
         <translation>運轉速度需要 %1 % 的輸出：上下沒有 ±%2 % 的裕度</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="583"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="622"/>
         <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
         <translation>正在 %1 %2 附近進行繼電器測試 (輸出 %3 % ± %4 %)</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="616"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="657"/>
         <source>no steady oscillation within %1 s: %2</source>
         <translation>%1 s 內未出現穩定振盪：%2</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="618"/>
+        <location filename="../model/tuning/TuningRunner.cpp" line="659"/>
         <source>try a larger amplitude</source>
         <translation>請嘗試加大振幅</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningRunner.cpp" line="695"/>
+        <source>the relay result was refused: %1</source>
+        <translation>繼電器測試結果不予採用：%1</translation>
     </message>
 </context>
 <context>
@@ -15172,34 +16118,34 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>實線：速度 · 點線：指令 · 一點鏈線：電流 (右軸) · 虛線：預測速度</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="169"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="174"/>
         <source>no run to save</source>
         <translation>沒有可儲存的測試</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="182"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="186"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="187"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="191"/>
         <source>Save run as CSV</source>
         <translation>將測試儲存為 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="183"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="188"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="191"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="194"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="196"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="199"/>
         <source>Save chart as PNG</source>
         <translation>將圖表儲存為 PNG</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="192"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="197"/>
         <source>PNG images (*.png)</source>
         <translation>PNG 圖片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="194"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="199"/>
         <source>Could not write %1.</source>
         <translation>無法寫入 %1。</translation>
     </message>
@@ -15217,9 +16163,47 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>%1：定義檔的調諧需要以下角色：pidP、pidI、pidD、pidDPeriod、pidStore、speedMode、speedCommand、commLossTime、loadCurrent 與 output</translation>
     </message>
     <message>
-        <location filename="../model/tuning/TuningSpec.cpp" line="60"/>
+        <location filename="../model/tuning/TuningSpec.cpp" line="61"/>
         <source>%1: the profile&apos;s tuning section needs periodMs ≥ 1, outputFullScale &gt; 0, openLoopMode and closedLoopModes with known feedback parameters</source>
         <translation>%1：定義檔的調諧區段需要 periodMs ≥ 1、outputFullScale &gt; 0、openLoopMode，以及回授參數已知的 closedLoopModes</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningVerdict</name>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="11"/>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="12"/>
+        <source>none within the record</source>
+        <translation>記錄時間內未安定</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="20"/>
+        <source>no step was measured to its end with these gains: %1</source>
+        <translation>未能以此增益將步階量測完畢：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="46"/>
+        <source>the speed did not settle within %1 ms (±2 % of the step)</source>
+        <translation>速度未在 %1 ms 內安定 (步階的 ±2 %)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="49"/>
+        <source>it overshot by %1 % where %2 % was predicted (at most %3 points more are accepted)</source>
+        <translation>超調為 %1 %，預測為 %2 % (最多只接受多出 %3 個百分點)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="60"/>
+        <source>Measured: overshoot %1 % (predicted %2 %), settling time %3 (predicted %4), peak current %5 A.</source>
+        <translation>實測：超調 %1 % (預測 %2 %)，安定時間 %3 (預測 %4)，峰值電流 %5 A。</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningVerdict.cpp" line="70"/>
+        <source>Check failed: %1.</source>
+        <translation>檢查未通過：%1。</translation>
     </message>
 </context>
 <context>
@@ -15366,7 +16350,12 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>&lt;h2&gt;使用 OpenTOP 試車調機驅動器&lt;/h2&gt;&lt;ol&gt;&lt;li&gt;&lt;b&gt;連線。&lt;/b&gt;匯流排 ▸ 連線… 可選擇序列埠 (或 USB 轉 RS-485 轉接器)、Modbus TCP 閘道器或模擬匯流排，並設定匯流排的鮑率、同位元與停止位元。狀態列會顯示程式目前的連線對象；模擬匯流排會特別標示。&lt;/li&gt;&lt;li&gt;&lt;b&gt;尋找驅動器。&lt;/b&gt;匯流排 ▸ 掃描匯流排 (F5) 會詢問每個機號 1–247；有回應的驅動器會被識別，並連同其狀態與控制優先權列在左側。&lt;/li&gt;&lt;li&gt;&lt;b&gt;選擇驅動器。&lt;/b&gt;其頁面會在右側開啟：監視 (即時值)、依定義檔的參數頁、試運轉與警報。&lt;/li&gt;&lt;li&gt;&lt;b&gt;編輯設定。&lt;/b&gt;已編輯的欄位在寫入前會標示為待寫入。寫入本頁 (或 驅動器 ▸ 寫入所有待寫入項目，Ctrl+W) 會寫入每個值並回讀驗證；復原會捨棄變更；重新讀取 (Ctrl+R) 會重新讀取驅動器。驅動器會拒絕的值絕不會送出：欄位會說明原因。&lt;/li&gt;&lt;li&gt;&lt;b&gt;試運轉馬達。&lt;/b&gt;試運轉頁面會在通訊優先下啟動、停止及反轉驅動器，每台驅動器第一次啟動前會先詢問。完成後請將驅動器恢復為 I/O 優先，讓機台本身的輸入端子再次控制。&lt;/li&gt;&lt;li&gt;&lt;b&gt;停止。&lt;/b&gt;工具列上的「全部停止」或 %1，可從程式的任何視窗立即停止匯流排上的所有驅動器。&lt;/li&gt;&lt;li&gt;&lt;b&gt;監看。&lt;/b&gt;檢視 ▸ 趨勢圖 (Ctrl+G) 繪製速度與負載曲線；檢視 ▸ 匯流排總覽 可一覽所有驅動器；檢視 ▸ 通訊記錄 (Ctrl+T) 顯示匯流排上的每個訊框及其意義。&lt;/li&gt;&lt;li&gt;&lt;b&gt;保留設定。&lt;/b&gt;檔案 ▸ 備份 將單台驅動器或整個匯流排的設定儲存至檔案；檔案 ▸ 比較 顯示驅動器、檔案與出廠預設值之間的差異；檔案 ▸ 還原 會在預覽後將備份寫回。&lt;/li&gt;&lt;/ol&gt;&lt;p&gt;所有鍵盤快速鍵均列於 說明 ▸ 鍵盤快速鍵。&lt;/p&gt;&lt;h3&gt;更多文件&lt;/h3&gt;&lt;p&gt;命令列與模擬器：&lt;code&gt;man opentop&lt;/code&gt;、&lt;code&gt;man opentop-cli&lt;/code&gt;、&lt;code&gt;man opentop-sim&lt;/code&gt;。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/help/UserGuideDialog.cpp" line="70"/>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="66"/>
+        <source>&lt;h3&gt;Leaving a bus, and coming back after the link drops&lt;/h3&gt;&lt;p&gt;&lt;b&gt;Leaving.&lt;/b&gt; Quitting, Bus ▸ Disconnect or connecting elsewhere while drives run or are in communication priority names each of them and what will happen to it. The default stops every running drive, reads it back to confirm the stop, and then gives each drive back to its own inputs (I/O priority, read back), so that the machine works without OpenTOP. You may instead give control back only, leave the drives as they are, or stay.&lt;/p&gt;&lt;p&gt;&lt;b&gt;A lost link.&lt;/b&gt; When the adapter is pulled out or the gateway goes, every live value turns grey and a message says which drives were running or in communication priority when the link dropped, with the age of what is known. OpenTOP cannot stop them over a lost link: check the drive&apos;s STOP input, the emergency stop and the power on the machine. Bus ▸ Reconnect (Ctrl+R, also in the message and in the red bar) opens the same port again with the same drives, selected drive and page, reads every drive again and says at once if one is running. While connected, Ctrl+R re-reads the drive&apos;s pages.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;離開匯流排，以及連線中斷後重新連線&lt;/h3&gt;&lt;p&gt;&lt;b&gt;離開。&lt;/b&gt;在驅動器運轉中或處於通訊優先時結束程式、執行 匯流排 ▸ 中斷連線 或連線至其他位置，會列出每台驅動器及將對它執行的動作。預設會停止每台運轉中的驅動器、回讀以確認已停止，然後將每台驅動器交還給其本身的輸入端子 (I/O 優先，回讀確認)，讓機台不需 OpenTOP 也能運作。您也可以選擇僅交還控制權、維持驅動器現狀，或留下。&lt;/p&gt;&lt;p&gt;&lt;b&gt;連線中斷。&lt;/b&gt;當轉接器被拔出或閘道器消失時，所有即時數值會變成灰色，並以訊息說明連線中斷時哪些驅動器正在運轉或處於通訊優先，以及已知資料的時間。OpenTOP 無法透過中斷的連線停止它們：請在機台上確認驅動器的停止輸入端子、緊急停止與電源。匯流排 ▸ 重新連線 (Ctrl+R，訊息與紅色提示列中也有) 會以相同的驅動器、所選驅動器與頁面重新開啟同一個連接埠，重新讀取所有驅動器，並立即告知是否有驅動器正在運轉。連線中時，Ctrl+R 會重新讀取驅動器的頁面。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../ui/help/UserGuideDialog.cpp" line="86"/>
         <source>&lt;p&gt;The full description of the program: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;程式的完整說明：&lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</translation>
     </message>

@@ -26,7 +26,7 @@
 <context>
     <name>opentop::BackupDialog</name>
     <message numerus="yes">
-        <location filename="../../ui/files/BackupDialog.cpp" line="92"/>
+        <location filename="../../ui/files/BackupDialog.cpp" line="94"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>Reading the settings of %n drive…</numerusform>
@@ -34,7 +34,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/BackupDialog.cpp" line="150"/>
+        <location filename="../../ui/files/BackupDialog.cpp" line="152"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>%n setting read in %1 ms</numerusform>
@@ -42,7 +42,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/BackupDialog.cpp" line="186"/>
+        <location filename="../../ui/files/BackupDialog.cpp" line="188"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>Save the %n drive that was read?</numerusform>
@@ -50,7 +50,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/BackupDialog.cpp" line="210"/>
+        <location filename="../../ui/files/BackupDialog.cpp" line="212"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>Saved %n drive to %1.</numerusform>
@@ -61,7 +61,7 @@
 <context>
     <name>opentop::BackupViewer</name>
     <message numerus="yes">
-        <location filename="../../ui/files/BackupViewer.cpp" line="125"/>
+        <location filename="../../ui/files/BackupViewer.cpp" line="127"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n setting</numerusform>
@@ -72,7 +72,7 @@
 <context>
     <name>opentop::BusPanel</name>
     <message numerus="yes">
-        <location filename="../../ui/bus/BusPanel.cpp" line="242"/>
+        <location filename="../../ui/bus/BusPanel.cpp" line="244"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive found.</numerusform>
@@ -80,7 +80,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/bus/BusPanel.cpp" line="250"/>
+        <location filename="../../ui/bus/BusPanel.cpp" line="252"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>%n drive found on machine numbers %1–%2 in %3 s.</numerusform>
@@ -91,7 +91,7 @@
 <context>
     <name>opentop::CompareDialog</name>
     <message numerus="yes">
-        <location filename="../../ui/files/CompareDialog.cpp" line="245"/>
+        <location filename="../../ui/files/CompareDialog.cpp" line="247"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n difference</numerusform>
@@ -100,9 +100,28 @@
     </message>
 </context>
 <context>
+    <name>opentop::DeviceParameters</name>
+    <message numerus="yes">
+        <location filename="../../model/session/DeviceParameters.cpp" line="273"/>
+        <source>%n write(s) failed: %1</source>
+        <translation>
+            <numerusform>%n write failed: %1</numerusform>
+            <numerusform>%n writes failed: %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../model/session/DeviceParameters.cpp" line="279"/>
+        <source>%n value(s) written and verified</source>
+        <translation>
+            <numerusform>%n value written and verified</numerusform>
+            <numerusform>%n values written and verified</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>opentop::DriveStatusPoller</name>
     <message numerus="yes">
-        <location filename="../../model/bus/DriveStatusPoller.cpp" line="35"/>
+        <location filename="../../model/bus/DriveStatusPoller.cpp" line="36"/>
         <source>no answer (%n poll(s) in a row)</source>
         <translation>
             <numerusform>no answer (%n poll in a row)</numerusform>
@@ -110,7 +129,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../model/bus/DriveStatusPoller.cpp" line="37"/>
+        <location filename="../../model/bus/DriveStatusPoller.cpp" line="38"/>
         <source>communication error (%n in a row)</source>
         <translation>
             <numerusform>communication error (%n in a row)</numerusform>
@@ -121,7 +140,7 @@
 <context>
     <name>opentop::DriveWorkspace</name>
     <message numerus="yes">
-        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="156"/>
+        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="158"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n value could not be read</numerusform>
@@ -129,7 +148,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="189"/>
+        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="191"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>Write %n pending value to machine number %1</numerusform>
@@ -137,27 +156,11 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="194"/>
+        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="196"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>Writing %n value…</numerusform>
             <numerusform>Writing %n values…</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="196"/>
-        <source>%n write(s) failed; see the marked fields</source>
-        <translation>
-            <numerusform>%n write failed; see the marked fields</numerusform>
-            <numerusform>%n writes failed; see the marked fields</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="197"/>
-        <source>%n value(s) written and verified</source>
-        <translation>
-            <numerusform>%n value written and verified</numerusform>
-            <numerusform>%n values written and verified</numerusform>
         </translation>
     </message>
 </context>
@@ -265,9 +268,20 @@
     </message>
 </context>
 <context>
+    <name>opentop::LinkLoss</name>
+    <message numerus="yes">
+        <location filename="../../model/run/LinkLoss.cpp" line="102"/>
+        <source>%n drive(s) never read.</source>
+        <translation>
+            <numerusform>%n drive never read.</numerusform>
+            <numerusform>%n drives never read.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>opentop::MainWindow</name>
     <message numerus="yes">
-        <location filename="../../ui/main/MainWindow.cpp" line="417"/>
+        <location filename="../../ui/main/MainWindow.cpp" line="429"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>%n edit has not been written to the drives. Quit and discard it?</numerusform>
@@ -278,7 +292,7 @@
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message numerus="yes">
-        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="305"/>
+        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="312"/>
         <source>Set it on %n drive(s) anyway?</source>
         <translation>
             <numerusform>Set it on %n drive anyway?</numerusform>
@@ -286,7 +300,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="338"/>
+        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="345"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>Writing %1 to %n drive…</numerusform>
@@ -294,7 +308,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="350"/>
+        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="357"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>Written and verified on %1 of %n drive.</numerusform>
@@ -355,22 +369,6 @@
             <numerusform>Writing %n values…</numerusform>
         </translation>
     </message>
-    <message numerus="yes">
-        <location filename="../../ui/workspace/ParameterPage.cpp" line="179"/>
-        <source>%n write(s) failed; see the marked fields</source>
-        <translation>
-            <numerusform>%n write failed; see the marked fields</numerusform>
-            <numerusform>%n writes failed; see the marked fields</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../../ui/workspace/ParameterPage.cpp" line="180"/>
-        <source>%n value(s) written and verified</source>
-        <translation>
-            <numerusform>%n value written and verified</numerusform>
-            <numerusform>%n values written and verified</numerusform>
-        </translation>
-    </message>
 </context>
 <context>
     <name>opentop::ProductionView</name>
@@ -386,7 +384,7 @@
 <context>
     <name>opentop::RecipeEditor</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/RecipeEditor.cpp" line="248"/>
+        <location filename="../../ui/eol/RecipeEditor.cpp" line="250"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n problem: the recipe cannot be saved until it is fixed.</numerusform>
@@ -394,7 +392,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/eol/RecipeEditor.cpp" line="260"/>
+        <location filename="../../ui/eol/RecipeEditor.cpp" line="262"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>the recipe does not pass check (%n problem); nothing was saved</numerusform>
@@ -416,7 +414,7 @@
 <context>
     <name>opentop::RestoreDialog</name>
     <message numerus="yes">
-        <location filename="../../ui/files/RestoreDialog.cpp" line="107"/>
+        <location filename="../../ui/files/RestoreDialog.cpp" line="109"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>%n drive in the file. Choose what to restore, then Preview.</numerusform>
@@ -424,7 +422,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/RestoreDialog.cpp" line="285"/>
+        <location filename="../../ui/files/RestoreDialog.cpp" line="287"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>%n setting to write</numerusform>
@@ -432,7 +430,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/RestoreDialog.cpp" line="381"/>
+        <location filename="../../ui/files/RestoreDialog.cpp" line="383"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>Write %n setting to drive(s) %1, each verified by reading it back?</numerusform>
@@ -452,9 +450,20 @@
     </message>
 </context>
 <context>
+    <name>opentop::Restorer</name>
+    <message numerus="yes">
+        <location filename="../../model/files/Restorer.cpp" line="116"/>
+        <source>%n value(s) of the file may not be written to the drives of the communication group; nothing written</source>
+        <translation>
+            <numerusform>%n value of the file may not be written to the drives of the communication group; nothing written</numerusform>
+            <numerusform>%n values of the file may not be written to the drives of the communication group; nothing written</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>opentop::ResultsBrowser</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/ResultsBrowser.cpp" line="317"/>
+        <location filename="../../ui/eol/ResultsBrowser.cpp" line="319"/>
         <source>%n unit(s), %1 passed · first-pass yield %2 (%3 of %4 serials)</source>
         <translation>
             <numerusform>%n unit, %1 passed · first-pass yield %2 (%3 of %4 serials)</numerusform>
@@ -462,7 +471,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/eol/ResultsBrowser.cpp" line="403"/>
+        <location filename="../../ui/eol/ResultsBrowser.cpp" line="405"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>%n unit written to %1</numerusform>
