@@ -1,5 +1,6 @@
 #include "run/GroupFollowers.h"
 
+#include "bus/DriveName.h"
 #include "profile/RoleEvaluator.h"
 #include "profile/ValueCodec.h"
 #include "session/DeviceRefusal.h"
@@ -63,6 +64,7 @@ void GroupFollowers::read(const QVector<DeviceSession*>& children, bool after, D
         const int index = int(state->drives.size());
         Drive d;
         d.slave = child->slave();
+        d.name = child->machineName();
         state->drives << d;
         ++state->pending;
         QPointer<DeviceSession> session(child);
@@ -87,6 +89,7 @@ GroupFollowers::Drive GroupFollowers::decode(DeviceSession& session, bool after)
     const ValueContext context = session.context();
     Drive d;
     d.slave = session.slave();
+    d.name = session.machineName();
     auto raw = [&session](const QString& name) -> std::optional<double> {
         const ParamValue v = session.cachedValue(name);
         return v.valid ? std::optional<double>(v.raw) : std::nullopt;
@@ -137,24 +140,27 @@ QVector<int> GroupFollowers::notFollowing(const QVector<Drive>& drives)
     return out;
 }
 
+QString GroupFollowers::listed(const Drive& d)
+{
+    return DriveName::listed(d.slave, d.name);
+}
+
 QStringList GroupFollowers::beforeLines(const QVector<Drive>& drives)
 {
     QStringList lines;
     for (const Drive& d : drives) {
         if (d.follows.value_or(false))
             lines << (d.priority.isEmpty()
-                          ? tr("Machine number %1 follows it.").arg(d.slave)
-                          : tr("Machine number %1 follows it (%2).").arg(d.slave).arg(d.priority));
+                          ? tr("Machine number %1 follows it.").arg(listed(d))
+                          : tr("Machine number %1 follows it (%2).").arg(listed(d), d.priority));
         else if (!d.follows)
-            lines << tr("Machine number %1: not known whether it follows: %2.")
-                         .arg(d.slave)
-                         .arg(d.why);
+            lines
+                << tr("Machine number %1: not known whether it follows: %2.").arg(listed(d), d.why);
         else
             lines << tr("Machine number %1 does NOT follow it: %2. To run it with this drive, "
                         "set its control priority to communication priority; otherwise it "
                         "shows E2h \"Cannot execute command\".")
-                         .arg(d.slave)
-                         .arg(d.why);
+                         .arg(listed(d), d.why);
     }
     return lines;
 }
@@ -165,14 +171,14 @@ QStringList GroupFollowers::afterLines(const QVector<Drive>& drives)
     for (const Drive& d : drives) {
         QString line;
         if (!d.running)
-            line = tr("Machine number %1: its run state could not be read.").arg(d.slave);
+            line = tr("Machine number %1: its run state could not be read.").arg(listed(d));
         else if (*d.running)
-            line = d.speed.isEmpty() ? tr("Machine number %1 runs.").arg(d.slave)
-                                     : tr("Machine number %1 runs (%2).").arg(d.slave).arg(d.speed);
+            line = d.speed.isEmpty() ? tr("Machine number %1 runs.").arg(listed(d))
+                                     : tr("Machine number %1 runs (%2).").arg(listed(d), d.speed);
         else if (!d.why.isEmpty())
-            line = tr("Machine number %1 does not run: %2.").arg(d.slave).arg(d.why);
+            line = tr("Machine number %1 does not run: %2.").arg(listed(d), d.why);
         else
-            line = tr("Machine number %1 does not run.").arg(d.slave);
+            line = tr("Machine number %1 does not run.").arg(listed(d));
         if (d.running && !*d.running && !d.commError.isEmpty())
             line += QLatin1Char(' ') + tr("It shows %1").arg(d.commError);
         lines << line;

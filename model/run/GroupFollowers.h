@@ -24,6 +24,7 @@ public:
     struct Drive
     {
         int slave = 0;
+        QString name;                // the machine's name (DriveName), empty: none
         std::optional<bool> follows; // none: its priority could not be read
         QString priority;            // "I/O priority", as the drive's setting names it
         bool alarm = false;          // an alarm is active
@@ -51,6 +52,7 @@ public:
 private:
     static void read(const QVector<DeviceSession*>& children, bool after, Done done);
     static Drive decode(DeviceSession& session, bool after);
+    static QString listed(const Drive& d); // "2 (Infeed conveyor 3)"
 };
 
 } // namespace opentop
