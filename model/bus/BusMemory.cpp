@@ -53,7 +53,8 @@ QVector<BusMemory::Drive> BusMemory::present(const BusDrives& drives)
         const DeviceInfo info = drives.info(slave);
         if (info.state != DeviceInfo::State::Present || info.family.isEmpty())
             continue;
-        out << Drive{slave, info.variant.isEmpty() ? info.family : info.variant, info.model, info.line};
+        out << Drive{slave, info.variant.isEmpty() ? info.family : info.variant, info.model,
+                     info.line};
     }
     return out;
 }

@@ -94,8 +94,8 @@ TEST(ScanCommand, JsonDescribesTheScanAndEveryDevice)
         QStringList(dbu.keys()),
         (QStringList{QStringLiteral("detail"), QStringLiteral("family"), QStringLiteral("firmware"),
                      QStringLiteral("group"), QStringLiteral("hex"), QStringLiteral("line"),
-                     QStringLiteral("model"), QStringLiteral("slave"), QStringLiteral("state"), QStringLiteral("switches"),
-                     QStringLiteral("variant")}));
+                     QStringLiteral("model"), QStringLiteral("slave"), QStringLiteral("state"),
+                     QStringLiteral("switches"), QStringLiteral("variant")}));
     // A DBU's communication group, null when disabled.
     EXPECT_TRUE(dbu.value(QStringLiteral("group")).isNull());
     // Answered at the port's own format: no per-drive line format.
